@@ -1,0 +1,398 @@
+"""Rotation matrices from the ways a user can write an orientation.
+
+Convention
+----------
+A rotation matrix ``R`` maps a part's LOCAL coordinates to the BODY frame::
+
+    x_body = at + R @ x_local
+
+so the columns of ``R`` are the part's local x, y and z axes written in the body frame.
+Every constructor here returns a (3, 3) float ndarray that is a proper rotation
+(det = +1, orthonormal to round-off, ~1e-15) and raises :class:`ValueError` with a
+lower-case message for input that cannot describe one.
+
+The module uses numpy only: ``scipy.spatial.transform`` costs ~270 ms of start-up
+(see FACTS.md), and the few formulas needed are short. scipy's ``Rotation`` is the
+test oracle: :func:`euler` agrees with ``Rotation.from_euler(seq, angles).as_matrix()``
+for every sequence scipy accepts.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+__all__ = [
+    "identity",
+    "axis_to_z",
+    "axis_angle",
+    "euler",
+    "quaternion",
+    "from_matrix",
+    "rotate_tensor",
+]
+
+
+def _vector(v: object, n: int, what: str) -> np.ndarray:
+    """``v`` as a finite float vector of ``n`` components, or ValueError naming ``what``."""
+    try:
+        a = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{what} must be a list of {n} numbers") from None
+    if a.shape != (n,):
+        raise ValueError(f"{what} must have {n} components, got shape {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{what} must be finite")
+    return a
+
+
+def _unit(v: np.ndarray) -> np.ndarray | None:
+    """``v / |v|`` computed without overflow or underflow; None for a zero vector."""
+    scale = float(np.max(np.abs(v)))
+    if scale == 0.0 or not math.isfinite(scale):
+        return None
+    w = v / scale  # largest component is now +-1: no overflow/underflow in the norm
+    return w / math.sqrt(float(w @ w))
+
+
+def _cross_matrix(n: np.ndarray) -> np.ndarray:
+    """The matrix [n]x with [n]x @ v = n x v."""
+    return np.array(
+        [
+            [0.0, -n[2], n[1]],
+            [n[2], 0.0, -n[0]],
+            [-n[1], n[0], 0.0],
+        ]
+    )
+
+
+def _rodrigues(n: np.ndarray, c: float, s: float, one_minus_c: float) -> np.ndarray:
+    """R = c I + s [n]x + (1 - c) n nᵀ for a unit axis n (Rodrigues' formula).
+
+    ``one_minus_c`` is passed separately so callers can compute it without
+    cancellation (2 sin²(θ/2), or s²/(1 + c)).
+    """
+    return c * np.eye(3) + s * _cross_matrix(n) + one_minus_c * np.outer(n, n)
+
+
+def identity() -> np.ndarray:
+    """The identity rotation.
+
+    Returns
+    -------
+    (3, 3) ndarray
+    """
+    return np.eye(3)
+
+
+def axis_to_z(direction: Sequence[float] | np.ndarray) -> np.ndarray:
+    """The rotation that turns local +z onto the direction ``direction``.
+
+    This is what a part's ``axis: [x, y, z]`` means: the part's symmetry axis (local z)
+    is pointed along ``direction`` in the body frame.
+
+    Parameters
+    ----------
+    direction : (3,) array_like — any non-zero length (only the direction matters)
+
+    Returns
+    -------
+    (3, 3) ndarray
+        ``R`` with ``R @ [0, 0, 1] == direction / |direction|``.
+
+    Raises
+    ------
+    ValueError
+        ``"axis must be a non-zero vector"`` for a zero or non-finite vector.
+
+    Notes
+    -----
+    The choice of the rotation about the new axis is fixed so that the result is
+    deterministic: it is the *minimal* rotation, about the axis ``n = e_z x d / |e_z x d|``
+    by the angle between ``e_z`` and ``d``, by Rodrigues' formula
+    ``R = cos θ I + sin θ [n]x + (1 − cos θ) n nᵀ`` with ``cos θ = d_z`` and
+    ``sin θ = |e_z x d| = hypot(d_x, d_y)``. Working with the unit axis ``n`` (rather
+    than ``I + [v]x + [v]x²/(1 + c)``) keeps the result orthonormal to round-off even
+    for ``d`` within 1e-12 of −z. For ``d`` exactly along +z this is the identity; for
+    ``d`` exactly along −z (where the minimal axis is undefined) it is the half turn
+    about +x, ``diag(1, −1, −1)``.
+    """
+    try:
+        v = np.asarray(direction, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("axis must be a non-zero vector") from None
+    if v.shape != (3,) or not np.all(np.isfinite(v)):
+        raise ValueError("axis must be a non-zero vector")
+    d = _unit(v)
+    if d is None:
+        raise ValueError("axis must be a non-zero vector")
+    cross = np.array([-d[1], d[0], 0.0])  # e_z x d
+    n = _unit(cross)
+    if n is None:  # d is exactly +z or -z
+        if d[2] > 0:
+            return np.eye(3)
+        return np.diag([1.0, -1.0, -1.0])
+    c = float(d[2])
+    s = math.hypot(float(d[0]), float(d[1]))
+    # 1 - c without cancellation near c = 1: (1 - c)(1 + c) = s^2.
+    one_minus_c = s * s / (1.0 + c) if c > 0 else 1.0 - c
+    return _rodrigues(n, c, s, one_minus_c)
+
+
+def axis_angle(axis: Sequence[float] | np.ndarray, angle_rad: float) -> np.ndarray:
+    """The rotation by ``angle_rad`` about ``axis`` (right-hand rule).
+
+    Parameters
+    ----------
+    axis : (3,) array_like — any non-zero length
+    angle_rad : float — rad; positive turns counter-clockwise looking down the axis
+
+    Returns
+    -------
+    (3, 3) ndarray
+
+    Raises
+    ------
+    ValueError
+        For a zero or non-finite axis, or a non-finite angle.
+
+    Notes
+    -----
+    Rodrigues' formula ``R = cos θ I + sin θ [n]x + (1 − cos θ) n nᵀ`` with
+    ``n = axis / |axis|``; ``1 − cos θ`` is evaluated as ``2 sin²(θ/2)`` to avoid
+    cancellation at small angles. Equal to scipy's ``Rotation.from_rotvec(θ n)``.
+    """
+    try:
+        a = np.asarray(axis, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("axis must be a non-zero vector") from None
+    if a.shape != (3,) or not np.all(np.isfinite(a)):
+        raise ValueError("axis must be a non-zero vector")
+    n = _unit(a)
+    if n is None:
+        raise ValueError("axis must be a non-zero vector")
+    try:
+        theta = float(angle_rad)
+    except (TypeError, ValueError):
+        raise ValueError("angle must be a number") from None
+    if not math.isfinite(theta):
+        raise ValueError("angle must be finite")
+    half = math.sin(theta / 2.0)
+    return _rodrigues(n, math.cos(theta), math.sin(theta), 2.0 * half * half)
+
+
+def _elementary(axis: str, angle: float) -> np.ndarray:
+    """The right-hand rotation by ``angle`` about the coordinate axis ``axis`` (x, y or z)."""
+    c, s = math.cos(angle), math.sin(angle)
+    if axis == "x":
+        return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    if axis == "y":
+        return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+_EULER_HELP = (
+    "1 to 3 letters, all from xyz (extrinsic, fixed axes) or all from XYZ "
+    "(intrinsic, moving axes), consecutive letters different, e.g. ZYX, ZXZ, xyz"
+)
+
+
+def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndarray:
+    """The rotation of an Euler-angle sequence, exactly as scipy defines it.
+
+    Parameters
+    ----------
+    angles_rad : float or (len(seq),) array_like — rad, one angle per letter of ``seq``
+        (a bare number is allowed for a one-letter sequence)
+    seq : str
+        1 to 3 letters from ``xyz`` (extrinsic: every turn is about the fixed body
+        axes) or from ``XYZ`` (intrinsic: every turn is about the part's axes as already
+        turned); no mixing of cases; consecutive letters must differ. Covers proper
+        Euler sequences (``ZXZ``, ``zyz``, ...) and Tait–Bryan ones (``ZYX``, ``xyz``, ...).
+
+    Returns
+    -------
+    (3, 3) ndarray
+        Identical (to round-off) to
+        ``scipy.spatial.transform.Rotation.from_euler(seq, angles_rad).as_matrix()``.
+
+    Raises
+    ------
+    ValueError
+        For an invalid sequence (the message says what is allowed), a wrong number of
+        angles, or a non-finite angle.
+
+    Notes
+    -----
+    With elementary rotations ``R_a(θ)`` about the coordinate axis ``a``:
+    intrinsic ``"ABC"`` is ``R_A(α) R_B(β) R_C(γ)`` (each later turn about the already
+    turned axes, so it multiplies on the right); extrinsic ``"abc"`` is
+    ``R_c(γ) R_b(β) R_a(α)`` (each later turn about the fixed axes, multiplying on the
+    left). The two are the same rotation when the letters and angles are reversed — the
+    standard equivalence (Shuster, "A survey of attitude representations", 1993, §2).
+    The sequence rules are scipy's.
+    """
+    if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
+        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
+    if set(seq) <= set("xyz"):
+        intrinsic = False
+    elif set(seq) <= set("XYZ"):
+        intrinsic = True
+    else:
+        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
+    if any(seq[i] == seq[i + 1] for i in range(len(seq) - 1)):
+        raise ValueError(
+            f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
+            f"use {_EULER_HELP}"
+        )
+    try:
+        a = np.asarray(angles_rad, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("euler angles must be numbers") from None
+    if a.ndim == 0 and len(seq) == 1:
+        a = a.reshape(1)
+    if a.shape != (len(seq),):
+        raise ValueError(
+            f"euler sequence {seq!r} needs {len(seq)} angle{'s' if len(seq) > 1 else ''}, "
+            f"got {a.size}"
+        )
+    if not np.all(np.isfinite(a)):
+        raise ValueError("euler angles must be finite")
+    r = np.eye(3)
+    for letter, angle in zip(seq.lower(), a, strict=True):
+        e = _elementary(letter, float(angle))
+        r = r @ e if intrinsic else e @ r
+    return r
+
+
+def quaternion(q_wxyz: Sequence[float] | np.ndarray) -> np.ndarray:
+    """The rotation of a quaternion written scalar-first, ``[w, x, y, z]``.
+
+    Parameters
+    ----------
+    q_wxyz : (4,) array_like — ``w + x i + y j + z k``; any non-zero norm
+
+    Returns
+    -------
+    (3, 3) ndarray
+
+    Raises
+    ------
+    ValueError
+        For a zero, non-finite or wrongly sized quaternion.
+
+    Notes
+    -----
+    The quaternion is always divided by its norm first, so a quaternion that is not
+    quite unit (e.g. typed with 6 digits) — or not unit at all — is accepted as the
+    rotation it points to; ``q`` and ``−q`` give the same matrix. Beware that scipy's
+    ``Rotation.from_quat`` is scalar-LAST (``[x, y, z, w]``) by default; this one is
+    scalar-first, as in the body file. The matrix is the standard
+
+    ``R = (w² − v·v) I + 2 v vᵀ + 2 w [v]x`` with ``v = (x, y, z)``,
+
+    written out in components below.
+    """
+    q = _vector(q_wxyz, 4, "quaternion")
+    u = _unit(q)
+    if u is None:
+        raise ValueError("quaternion must be non-zero")
+    w, x, y, z = (float(c) for c in u)
+    return np.array(
+        [
+            [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)],
+            [2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x)],
+            [2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y)],
+        ]
+    )
+
+
+def _short(x: float) -> str:
+    """``3.2e-2`` style: two significant figures, no zero padding in the exponent."""
+    mant, exp = f"{x:.1e}".split("e")
+    return f"{mant}e{int(exp)}"
+
+
+def from_matrix(m: Sequence[Sequence[float]] | np.ndarray, tol: float = 1e-6) -> np.ndarray:
+    """Accept a user's 3x3 matrix as a rotation, and return the nearest exact one.
+
+    Parameters
+    ----------
+    m : (3, 3) array_like — the matrix as written (columns = local axes in the body frame)
+    tol : float — largest accepted ``max |MᵀM − I|``; the default 1e-6 admits a matrix
+        typed with about 6-7 significant figures
+
+    Returns
+    -------
+    (3, 3) ndarray
+        The proper rotation nearest to ``m`` in the Frobenius norm, orthonormal to
+        round-off, so the user's rounding does not leak into later results.
+
+    Raises
+    ------
+    ValueError
+        ``"rotation matrix is not orthonormal (|MᵀM − I| = 3.2e-2)"`` if the columns are
+        not orthonormal within ``tol``; ``"rotation matrix is a reflection (det = -1),
+        not a rotation"`` if it is orthonormal but has a negative determinant; also for
+        a wrong shape or non-finite entries.
+
+    Notes
+    -----
+    Nearest rotation by the polar decomposition: with the SVD ``M = U Σ Vᵀ`` the
+    orthogonal polar factor ``U Vᵀ`` minimises ``|M − R|_F`` over orthogonal ``R``
+    (Higham, "Computing the polar decomposition", 1986). For an accepted ``M``
+    (``det M > 0`` and every singular value within ~tol of 1) it is a proper rotation.
+    """
+    try:
+        a = np.asarray(m, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("rotation matrix must be a 3x3 list of numbers") from None
+    if a.shape != (3, 3):
+        raise ValueError(f"rotation matrix must be 3x3, got shape {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise ValueError("rotation matrix must be finite")
+    if not (math.isfinite(tol) and tol >= 0):
+        raise ValueError("tolerance must be a finite number >= 0")
+    err = float(np.max(np.abs(a.T @ a - np.eye(3))))
+    if err > tol:
+        raise ValueError(f"rotation matrix is not orthonormal (|MᵀM − I| = {_short(err)})")
+    det = float(np.linalg.det(a))
+    if det <= 0:
+        raise ValueError(f"rotation matrix is a reflection (det = {det:.3g}), not a rotation")
+    u, _, vt = np.linalg.svd(a)
+    r = u @ vt
+    if np.linalg.det(r) < 0:  # cannot happen for err <= tol < 1 and det > 0; be safe
+        raise ValueError(f"rotation matrix is a reflection (det = {det:.3g}), not a rotation")
+    return r
+
+
+def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N803
+    """A tensor given in a part's local axes, expressed in the body axes: ``R I Rᵀ``.
+
+    Parameters
+    ----------
+    R : (3, 3) ndarray — local-to-body rotation (see the module convention)
+    I : (3, 3) ndarray — e.g. an inertia tensor about some point, local axes, kg·m²
+
+    Returns
+    -------
+    (3, 3) ndarray
+        ``R @ I @ R.T``, the same tensor in body axes (about the same point). If ``I``
+        is exactly symmetric the result is made exactly symmetric too (the average with
+        its transpose, a change of round-off size only).
+
+    Raises
+    ------
+    ValueError
+        For arrays that are not 3x3.
+    """
+    r = np.asarray(R, dtype=float)
+    t = np.asarray(I, dtype=float)
+    if r.shape != (3, 3) or t.shape != (3, 3):
+        raise ValueError(f"rotate_tensor needs two 3x3 arrays, got {r.shape} and {t.shape}")
+    out = r @ t @ r.T
+    if np.array_equal(t, t.T):
+        out = 0.5 * (out + out.T)
+    return out
