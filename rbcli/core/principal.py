@@ -106,3 +106,124 @@ def _right_handed(axes: np.ndarray) -> np.ndarray:
     out[1] = _sign_fix(out[1])
     out[2] = np.cross(out[0], out[1])
     return out
+
+
+@dataclass(frozen=True)
+class PrincipalResult:
+    """Answer of ``rbcli principal``.
+
+    Attributes
+    ----------
+    mass : float — kg
+    reference : (3,) ndarray — m, the point the moments are about
+    axes_info : PrincipalAxes — moments (kg m^2, ascending) and axes (rows)
+    stable : tuple[bool, bool, bool] — is free rotation about each axis stable
+    equivalent_box : (3,) ndarray — m, side along each principal axis of the uniform box
+        with the same mass and principal moments
+    equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same for a uniform ellipsoid
+    rotation_axis : (3,) ndarray — unit axis of the rotation taking body axes to principal axes
+    rotation_angle_deg : float — its angle
+    """
+
+    mass: float
+    reference: np.ndarray
+    axes_info: PrincipalAxes
+    stable: tuple[bool, bool, bool]
+    equivalent_box: np.ndarray
+    equivalent_ellipsoid: np.ndarray
+    rotation_axis: np.ndarray
+    rotation_angle_deg: float
+
+    @property
+    def moments(self) -> np.ndarray:
+        return self.axes_info.moments
+
+    @property
+    def axes(self) -> np.ndarray:
+        return self.axes_info.axes
+
+    @property
+    def direction_angles_deg(self) -> np.ndarray:
+        """(3, 3) angle of principal axis i from body axis j, degrees."""
+        return np.degrees(np.arccos(np.clip(self.axes, -1.0, 1.0)))
+
+    def to_json(self) -> dict:
+        pa = self.axes_info
+        return {
+            "reference": self.reference,
+            "moments": pa.moments,
+            "axes": pa.axes,
+            "symmetry": pa.symmetry,
+            "stable": list(self.stable),
+            "mass": self.mass,
+            "free_axes": [i + 1 for i in pa.free_axes],
+            "direction_angles_deg": self.direction_angles_deg,
+            "rotation_axis": self.rotation_axis,
+            "rotation_angle_deg": self.rotation_angle_deg,
+            "equivalent_box": self.equivalent_box,
+            "equivalent_ellipsoid": self.equivalent_ellipsoid,
+        }
+
+
+def matrix_to_axis_angle(R: np.ndarray) -> tuple[np.ndarray, float]:
+    """Unit axis and angle (rad, in [0, π]) of a proper rotation matrix."""
+    R = np.asarray(R, dtype=float)
+    # quaternion from the matrix (Shepperd's method), robust at every angle
+    tr = float(np.trace(R))
+    cands = [tr, R[0, 0], R[1, 1], R[2, 2]]
+    k = int(np.argmax(cands))
+    if k == 0:
+        w = 0.5 * np.sqrt(1.0 + tr)
+        x, y, z = (R[2, 1] - R[1, 2]) / (4 * w), (R[0, 2] - R[2, 0]) / (4 * w), (R[1, 0] - R[0, 1]) / (4 * w)
+    elif k == 1:
+        x = 0.5 * np.sqrt(1.0 + 2 * R[0, 0] - tr)
+        w, y, z = (R[2, 1] - R[1, 2]) / (4 * x), (R[0, 1] + R[1, 0]) / (4 * x), (R[0, 2] + R[2, 0]) / (4 * x)
+    elif k == 2:
+        y = 0.5 * np.sqrt(1.0 + 2 * R[1, 1] - tr)
+        w, x, z = (R[0, 2] - R[2, 0]) / (4 * y), (R[0, 1] + R[1, 0]) / (4 * y), (R[1, 2] + R[2, 1]) / (4 * y)
+    else:
+        z = 0.5 * np.sqrt(1.0 + 2 * R[2, 2] - tr)
+        w, x, y = (R[1, 0] - R[0, 1]) / (4 * z), (R[0, 2] + R[2, 0]) / (4 * z), (R[1, 2] + R[2, 1]) / (4 * z)
+    v = np.array([x, y, z], dtype=float)
+    if w < 0:
+        w, v = -w, -v
+    s = float(np.linalg.norm(v))
+    if s < 1e-15:
+        return np.array([0.0, 0.0, 1.0]), 0.0
+    return v / s, float(2.0 * np.arctan2(s, w))
+
+
+def principal_report(mass: float, inertia: np.ndarray, reference: np.ndarray) -> PrincipalResult:
+    """Principal moments and axes of ``inertia`` (about ``reference``) with what they mean.
+
+    Notes
+    -----
+    Stability of free rotation: about the largest and the smallest principal moment
+    it is stable, about the intermediate one unstable (Euler's equations linearised;
+    Landau & Lifshitz §37). Where two moments are equal the body is symmetric and
+    every axis of the equal pair is equally principal; spherical: every axis is.
+    Equivalent uniform box of sides (a, b, c) along the principal axes:
+    ``I₁ = m (b² + c²)/12`` … so ``a² = 6 (I₂ + I₃ − I₁)/m``; ellipsoid of semi-axes
+    (a, b, c): ``I₁ = m (b² + c²)/5`` so ``a² = 5 (I₂ + I₃ − I₁)/(2 m)``.
+    """
+    pa = principal_axes(inertia)
+    I1, I2, I3 = pa.moments
+    if pa.symmetry == "asymmetric":
+        stable = (True, False, True)
+    else:
+        stable = (True, True, True)
+    s = np.array([I2 + I3 - I1, I1 + I3 - I2, I1 + I2 - I3])
+    s = np.clip(s, 0.0, None)
+    box = np.sqrt(6.0 * s / mass)
+    ell = np.sqrt(2.5 * s / mass)
+    axis, angle = matrix_to_axis_angle(pa.axes.T)
+    return PrincipalResult(
+        mass=float(mass),
+        reference=np.asarray(reference, dtype=float),
+        axes_info=pa,
+        stable=stable,
+        equivalent_box=box,
+        equivalent_ellipsoid=ell,
+        rotation_axis=axis,
+        rotation_angle_deg=float(np.degrees(angle)),
+    )

@@ -1,0 +1,140 @@
+"""``rbcli shapes``, ``rbcli schema`` and ``rbcli examples``."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from rbcli.cli import common as c
+from rbcli.cli.app import app
+
+SPECIAL = {
+    "mesh": (
+        "closed triangle mesh from a file: STL (binary or ASCII) or OBJ",
+        "file; optional scale, units (length unit of the coordinates), allow_open",
+        "mass or density",
+        "the mesh's own coordinates",
+        "exact volume, centroid and second moments of the closed polyhedron (divergence theorem)",
+    ),
+    "given": (
+        "measured or CAD-exported mass properties",
+        "mass, com (local frame), inertia about the com: a 3x3 tensor, or "
+        "{Ixx, Iyy, Izz, Ixy, Iyz, Izx, convention: tensor | positive}",
+        "mass",
+        "the part frame (com is given in it)",
+        "as given; checked to be symmetric and physically possible",
+    ),
+    "include": (
+        "another body file as a sub-assembly",
+        "file (relative to this file)",
+        "the included file's own",
+        "the included body's frame",
+        "the included body's parts, placed with at/axis/rotate",
+    ),
+}
+
+
+def examples_dir() -> Path:
+    """Where the bundled examples are: inside the installed package, or the source tree's."""
+    here = Path(__file__).resolve().parent.parent
+    for cand in (here / "examples", here.parent / "examples"):
+        if cand.is_dir():
+            return cand
+    return here / "examples"
+
+
+@app.command(help="The shape catalogue: parameters, local origin, mass keys and formulas.")
+def shapes(
+    name: str = typer.Argument(None, help="Show one shape only.", show_default=False),
+    json_: bool = c.JsonOpt,
+) -> None:
+    from rbcli.core.shapes import SHAPES
+    from rbcli.errors import InputError
+
+    rows = []
+    for info in SHAPES.values():
+        params = ", ".join([*info.required, *(f"[{o}]" for o in info.optional)]) or "—"
+        if info.name == "rod":
+            params += " (or from, to)"
+        rows.append((info.name, info.summary, params, info.density_keys, info.origin, info.formulas))
+    for key, (summary, params, mass, origin, formulas) in SPECIAL.items():
+        rows.append((key, summary, params, mass, origin, formulas))
+    if name is not None:
+        rows = [r for r in rows if r[0] == name]
+        if not rows:
+            import difflib
+
+            names = [*SHAPES, *SPECIAL]
+            close = difflib.get_close_matches(name, names, n=1)
+            hint = f"; did you mean '{close[0]}'?" if close else ""
+            raise InputError(f"unknown shape '{name}'{hint} (shapes: {', '.join(names)})")
+    e = c.env()
+    if json_:
+        from rbcli.render.jsonout import dumps
+
+        keys = ("shape", "summary", "parameters", "mass", "origin", "formulas")
+        e.write(dumps([dict(zip(keys, r)) for r in rows]))
+        return
+    text = []
+    for shape, summary, params, mass, origin, formulas in rows:
+        text.append(
+            f"{shape}\n  {summary}\n  parameters: {params}\n  mass: {mass}\n"
+            f"  local origin: {origin}\n  inertia: {formulas}\n"
+        )
+    text.append(
+        "Every part also takes name, at [x, y, z], axis [x, y, z] or rotate {...}, and\n"
+        "subtract: true (a hole; with cut_from: NAME it takes that part's density).\n"
+        "Symmetry axis = local z. Inertia formulas are about the part's centre of mass.\n"
+    )
+    e.write("\n".join(text))
+
+
+@app.command(help="The JSON Schema (draft-07) of the body file, for editors.")
+def schema(
+    path: bool = typer.Option(False, "--path", help="Print where the installed schema file is, for a yaml-language-server modeline."),
+) -> None:
+    from rbcli.io.schema import SCHEMA_PATH, schema_text
+
+    e = c.env()
+    if path:
+        e.write(f"{SCHEMA_PATH}\n")
+    else:
+        e.write(schema_text())
+
+
+@app.command(help="List the bundled example bodies, or print one.")
+def examples(
+    name: str = typer.Argument(None, help="Example to print (with or without .yaml).", show_default=False),
+    path: bool = typer.Option(False, "--path", help="Print the example's path instead of its text."),
+) -> None:
+    from rbcli.errors import InputError
+
+    d = examples_dir()
+    files = sorted(p for p in d.glob("*.yaml"))
+    e = c.env()
+    if name is None:
+        lines = []
+        for p in files:
+            first = _title(p)
+            lines.append(f"{p.stem:<24} {first}")
+        e.write("\n".join(lines) + ("\n" if lines else ""))
+        if path:
+            e.write(f"{d}\n")
+        return
+    stem = name[:-5] if name.endswith(".yaml") else name
+    match = [p for p in files if p.stem == stem]
+    if not match:
+        import difflib
+
+        close = difflib.get_close_matches(stem, [p.stem for p in files], n=1)
+        hint = f"; did you mean '{close[0]}'?" if close else ""
+        raise InputError(f"no bundled example '{name}'{hint} (see `rbcli examples`)")
+    e.write(f"{match[0]}\n" if path else match[0].read_text(encoding="utf-8"))
+
+
+def _title(p: Path) -> str:
+    for line in p.read_text(encoding="utf-8").splitlines():
+        if line.startswith("name:"):
+            return line[5:].strip().strip("'\"")
+    return ""

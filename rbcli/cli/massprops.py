@@ -1,0 +1,150 @@
+"""``rbcli inertia`` and ``rbcli principal``."""
+
+from __future__ import annotations
+
+import typer
+
+from rbcli.cli import common as c
+from rbcli.cli.app import app
+
+INERTIA_HELP = """Mass, centre of mass and the inertia tensor about a point.
+
+The tensor is about --about (default: the body's `reference`, else the origin) and
+about the com. With --axis n, the moment of inertia I = n.J.n about the axis n
+through that point; with --omega w, the angular momentum L = J.w, the angle
+between L and w, and the kinetic energy T = w.J.w/2. Several bodies at once: with
+--json, one JSON object per line (JSON Lines), each with a "file" key.
+"""
+
+PRINCIPAL_HELP = """Principal moments and axes, symmetry, and which free rotations are stable.
+
+Moments ascending; row i of "axes" is the unit axis of moment i (body frame), a
+right-handed set; the first two axes have their largest component positive. Where
+moments coincide the free axes are said and chosen along the body axes where
+possible. Also the direction angles, the rotation from body to principal axes and
+the equivalent uniform box and ellipsoid.
+"""
+
+
+def _reference(body, about: str | None):
+    """(point, label) for --about, else the body's reference, else the origin."""
+    import numpy as np
+
+    from rbcli.core.inertia import combine
+
+    mp = combine(body.parts)
+    if about is not None:
+        p = c.point(about, "--about")
+        if p == "com":
+            return mp, mp.com, "the com"
+        if p == "origin":
+            return mp, np.zeros(3), "the origin"
+        return mp, np.array(p), f"[{about}]"
+    if body.reference_is_com:
+        return mp, mp.com, "the com"
+    if body.reference is not None:
+        return mp, body.reference, "the body's reference point"
+    return mp, np.zeros(3), "the origin"
+
+
+@app.command(help=INERTIA_HELP)
+def inertia(
+    bodies: list[str] = c.BodiesArg,
+    expr: str = c.ExprOpt,
+    about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (m, or with units).", show_default=False),
+    axis: str = typer.Option(None, "--axis", help="Moment about this direction x,y,z through the point.", show_default=False),
+    omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s, or e.g. '0,0,300 rpm' per component).", show_default=False),
+    products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
+    json_: bool = c.JsonOpt,
+    digits: int = c.DigitsOpt,
+    units: str = c.UnitsOpt,
+) -> None:
+    from rbcli.errors import InputError
+
+    if products not in ("tensor", "positive"):
+        raise InputError(f"--products must be 'tensor' or 'positive', not '{products}'")
+    e = c.env()
+    from rbcli.render.fmt import DisplayUnits
+
+    du = DisplayUnits.parse(units)
+    n = c.direction(axis, "--axis") if axis is not None else None
+    w = c.vector(omega, "angular_speed", "--omega") if omega is not None else None
+    _run(bodies, expr, json_, e, lambda body: _inertia_one(body, about, n, w, json_, du, digits, products, e))
+
+
+def _run(bodies, expr, json_, e, one) -> None:
+    """Run ``one`` per body; go on past bad files, exit 2 at the end if any failed."""
+    srcs = c.sources(bodies, expr)
+    failed = False
+    from rbcli.errors import InputError
+
+    for src, body in c.each_body(bodies, expr, e):
+        if isinstance(body, InputError):
+            if len(srcs) == 1:
+                raise body
+            e.warn(f"rbcli: {body}")
+            failed = True
+            continue
+        try:
+            one(body)
+        except InputError as exc:
+            if len(srcs) == 1:
+                raise
+            e.warn(f"rbcli: {src}: {exc}")
+            failed = True
+    if failed:
+        c.finish(2)
+
+
+def _emit(e, body, data, doc_fn, json_: bool, many: bool) -> None:
+    if json_:
+        from rbcli.render.jsonout import dumps
+
+        e.write(dumps(data, lines=many))
+    else:
+        from rbcli.render.text import Doc
+
+        doc = Doc(e)
+        doc_fn(doc)
+        e.write(doc.render())
+
+
+def _inertia_one(body, about, n, w, json_, du, digits, products, e) -> None:
+    from rbcli.core.inertia import inertia_report
+    from rbcli.render import massprops as r
+
+    mp, ref, label = _reference(body, about)
+    res = inertia_report(mp, ref, axis=n, omega=w)
+    many = _MANY["n"] > 1
+    _emit(e, body, r.inertia_json(body, res) if json_ else None,
+          lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), json_, many)
+
+
+_MANY = {"n": 1}
+
+
+@app.command(help=PRINCIPAL_HELP)
+def principal(
+    bodies: list[str] = c.BodiesArg,
+    expr: str = c.ExprOpt,
+    about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (m, or with units)."),
+    json_: bool = c.JsonOpt,
+    digits: int = c.DigitsOpt,
+    units: str = c.UnitsOpt,
+) -> None:
+    e = c.env()
+    from rbcli.render.fmt import DisplayUnits
+
+    du = DisplayUnits.parse(units)
+    _run(bodies, expr, json_, e, lambda body: _principal_one(body, about, json_, du, digits, e))
+
+
+def _principal_one(body, about, json_, du, digits, e) -> None:
+    from rbcli.core.inertia import inertia_about
+    from rbcli.core.principal import principal_report
+    from rbcli.render import massprops as r
+
+    mp, ref, label = _reference(body, about)
+    res = principal_report(mp.mass, inertia_about(mp, ref), ref)
+    _emit(e, body, r.principal_json(body, res) if json_ else None,
+          lambda doc: r.principal_doc(doc, body, res, du, digits, label), json_, _MANY["n"] > 1)

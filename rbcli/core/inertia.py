@@ -1,0 +1,213 @@
+"""Mass properties of a body made of parts: mass, centre of mass, inertia tensors.
+
+Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
+off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
+An inertia is never without the point it is taken about: :class:`MassProps` keeps
+the tensor about the centre of mass, and :func:`inertia_about` moves it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import numpy as np
+
+from rbcli.model import Part
+
+
+@dataclass(frozen=True)
+class MassProps:
+    """Mass properties of a rigid body.
+
+    Attributes
+    ----------
+    mass : float — kg
+    com : (3,) ndarray — m, body frame
+    inertia_com : (3, 3) ndarray — kg m^2, about the com, body axes, tensor convention
+    """
+
+    mass: float
+    com: np.ndarray
+    inertia_com: np.ndarray
+
+
+def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
+    """Parallel-axis term ``m (d·d E − d dᵀ)`` (kg m^2) for an offset ``d`` (m)."""
+    d = np.asarray(d, dtype=float)
+    return mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
+
+
+def combine(parts: Iterable[Part]) -> MassProps:
+    """Mass properties of the union of ``parts`` (subtracted parts count negative).
+
+    Notes
+    -----
+    ``m = Σ sᵢ mᵢ``, ``c = Σ sᵢ mᵢ cᵢ / m`` and, by the parallel-axis (Huygens–Steiner)
+    theorem, ``J_c = Σ sᵢ [Jᵢ + mᵢ (dᵢ·dᵢ E − dᵢ dᵢᵀ)]`` with ``dᵢ = cᵢ − c`` and
+    ``sᵢ = −1`` for a subtracted part. Offsets are taken from a reference point near
+    the parts (the mass-weighted mean of the part centres) before the com is known,
+    which keeps digits for bodies placed far from the origin.
+
+    Raises
+    ------
+    ValueError
+        If the total mass is not positive.
+    """
+    parts = list(parts)
+    if not parts:
+        raise ValueError("the body has no parts")
+    m = np.array([p.signed_mass for p in parts])
+    c = np.array([p.com for p in parts], dtype=float)
+    total = float(m.sum())
+    if not total > 0.0:
+        raise ValueError(
+            f"the total mass is {total:.6g} kg; a body needs a positive mass "
+            "(do the subtracted parts remove more than there is?)"
+        )
+    # a point near the parts, so that far-away bodies keep their digits
+    w = np.abs(m)
+    origin = (w @ c) / w.sum()
+    rel = c - origin
+    com_rel = (m @ rel) / total
+    d = rel - com_rel
+    J = np.zeros((3, 3))
+    for p, mi, di in zip(parts, m, d):
+        sign = -1.0 if p.subtract else 1.0
+        J += sign * np.asarray(p.inertia_com, dtype=float)
+        J += mi * (float(di @ di) * np.eye(3) - np.outer(di, di))
+    J = 0.5 * (J + J.T)
+    return MassProps(total, origin + com_rel, J)
+
+
+def inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
+    """Inertia tensor (kg m^2, body axes) about ``point`` (m)."""
+    return mp.inertia_com + shift_term(mp.mass, np.asarray(point, dtype=float) - mp.com)
+
+
+def moment_about_axis(J: np.ndarray, axis: np.ndarray) -> float:
+    """Moment of inertia ``n·J·n`` (kg m^2) about the unit vector of ``axis``."""
+    n = np.asarray(axis, dtype=float)
+    norm = float(np.linalg.norm(n))
+    if not norm > 0.0 or not np.isfinite(norm):
+        raise ValueError("the axis must be a non-zero, finite vector")
+    n = n / norm
+    return float(n @ J @ n)
+
+
+def tensor_problem(J: np.ndarray, rtol: float = 1e-9) -> str | None:
+    """Why ``J`` cannot be an inertia tensor, or None if it can.
+
+    Checks symmetry, non-negative principal moments and the triangle inequality
+    (each principal moment at most the sum of the other two), each to ``rtol``
+    relative to the largest entry.
+    """
+    J = np.asarray(J, dtype=float)
+    if J.shape != (3, 3) or not np.all(np.isfinite(J)):
+        return "it must be a 3x3 matrix of finite numbers"
+    scale = float(np.max(np.abs(J)))
+    if scale == 0.0:
+        return None
+    asym = float(np.max(np.abs(J - J.T)))
+    if asym > rtol * scale:
+        return f"it is not symmetric (|J − Jᵀ| = {asym:.3g})"
+    w = np.linalg.eigvalsh(0.5 * (J + J.T))
+    if w[0] < -rtol * scale:
+        return f"it has a negative principal moment ({w[0]:.6g})"
+    if w[2] > w[0] + w[1] + rtol * scale:
+        return (
+            f"its principal moments ({w[0]:.6g}, {w[1]:.6g}, {w[2]:.6g}) break the "
+            "triangle inequality: no mass distribution has one moment larger than "
+            "the sum of the other two"
+        )
+    return None
+
+
+@dataclass(frozen=True)
+class InertiaResult:
+    """Answer of ``rbcli inertia``.
+
+    Attributes
+    ----------
+    mass : float — kg
+    com : (3,) ndarray — m
+    reference : (3,) ndarray — m, the point ``inertia`` is about
+    inertia : (3, 3) ndarray — kg m^2 about ``reference``
+    inertia_com : (3, 3) ndarray — kg m^2 about the com
+    axis : (3,) ndarray | None — unit axis asked for (through ``reference``)
+    axis_moment : float | None — kg m^2, ``n·J·n`` about ``reference``
+    omega : (3,) ndarray | None — rad/s
+    angular_momentum : (3,) ndarray | None — kg m^2/s, ``L = J ω`` about ``reference``
+    kinetic_energy : float | None — J, ``ω·J·ω/2`` (rotation about ``reference``)
+    angle_L_omega_deg : float | None — deg
+    """
+
+    mass: float
+    com: np.ndarray
+    reference: np.ndarray
+    inertia: np.ndarray
+    inertia_com: np.ndarray
+    axis: np.ndarray | None = None
+    axis_moment: float | None = None
+    omega: np.ndarray | None = None
+    angular_momentum: np.ndarray | None = None
+    kinetic_energy: float | None = None
+    angle_L_omega_deg: float | None = None
+
+    def to_json(self) -> dict:
+        out: dict = {
+            "mass": self.mass,
+            "com": self.com,
+            "reference": self.reference,
+            "inertia": self.inertia,
+            "inertia_com": self.inertia_com,
+        }
+        if self.axis is not None:
+            out["axis"] = self.axis
+            out["axis_moment"] = self.axis_moment
+        if self.omega is not None:
+            out["omega"] = self.omega
+            out["angular_momentum"] = self.angular_momentum
+            out["kinetic_energy"] = self.kinetic_energy
+            out["angle_L_omega_deg"] = self.angle_L_omega_deg
+        return out
+
+
+def angle_between_deg(a: np.ndarray, b: np.ndarray) -> float:
+    """Angle between two vectors in degrees (0 when either is zero), by atan2 for accuracy."""
+    na, nb = float(np.linalg.norm(a)), float(np.linalg.norm(b))
+    if na == 0.0 or nb == 0.0:
+        return 0.0
+    return float(np.degrees(np.arctan2(np.linalg.norm(np.cross(a, b)), float(a @ b))))
+
+
+def inertia_report(
+    mp: MassProps,
+    reference: np.ndarray,
+    axis: np.ndarray | None = None,
+    omega: np.ndarray | None = None,
+) -> InertiaResult:
+    """Inertia about a point, the moment about an axis through it, and L, T for a spin ω.
+
+    Notes
+    -----
+    ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G`` (parallel axis). ``I_n = n·J_P·n``.
+    ``L = J_P ω`` and ``T = ω·J_P·ω / 2`` for a rotation about the fixed point P
+    (Goldstein §5.3, §5.4); about the com they are the spin parts of L and T.
+    """
+    ref = np.asarray(reference, dtype=float)
+    J = inertia_about(mp, ref)
+    kw: dict = {}
+    if axis is not None:
+        n = np.asarray(axis, dtype=float)
+        n = n / np.linalg.norm(n)
+        kw["axis"] = n
+        kw["axis_moment"] = moment_about_axis(J, n)
+    if omega is not None:
+        w = np.asarray(omega, dtype=float)
+        L = J @ w
+        kw["omega"] = w
+        kw["angular_momentum"] = L
+        kw["kinetic_energy"] = 0.5 * float(w @ L)
+        kw["angle_L_omega_deg"] = angle_between_deg(L, w)
+    return InertiaResult(mp.mass, mp.com.copy(), ref, J, mp.inertia_com.copy(), **kw)

@@ -1,0 +1,776 @@
+"""Read a body file (YAML) into a validated :class:`rbcli.model.Body` in SI units.
+
+Every problem is an :class:`rbcli.errors.InputError` located at ``file:line:col``.
+The walk is strict: numbers must be numbers (``true`` is not 1.0), strings with
+units must have the right dimension, unknown keys are refused with a
+"did you mean" hint, and the finished body must be physically possible.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from rbcli.core import rotation as rot
+from rbcli.core import shapes as shp
+from rbcli.core.inertia import combine, tensor_problem
+from rbcli.errors import InputError, Location
+from rbcli.io import units as un
+from rbcli.io import yamlsafe as ys
+from rbcli.model import Body, Part, Shaft
+
+#: largest magnitude accepted for any number in a body file (SI); the Earth's mass
+#: (6e24 kg) and moment of inertia (8e37 kg m^2) are well inside.
+HUGE = 1e60
+MAX_INCLUDE_DEPTH = 16
+FORMAT_VERSION = 1
+
+BODY_KEYS = (
+    "rbcli", "name", "description", "units", "parts", "reference", "shaft", "pivot",
+    "rim_radius",
+)
+UNIT_KEYS = ("length", "mass", "time", "angle")
+PLACEMENT_KEYS = ("at", "axis", "rotate")
+MASS_KEYS = ("mass", "density", "areal_density", "linear_density")
+DENSITY_FOR = {
+    "volume": "density",
+    "area": "areal_density",
+    "length": "linear_density",
+}
+COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
+#: the kind of each shape parameter: "length", "lengths" (a vector), "points" (3x3), "bool"
+PARAM_KINDS: dict[str, str] = {
+    "radius": "length",
+    "inner_radius": "length",
+    "length": "length",
+    "height": "length",
+    "thickness": "length",
+    "major_radius": "length",
+    "minor_radius": "length",
+    "size": "lengths",
+    "semi_axes": "lengths",
+    "vertices": "points",
+    "shell": "bool",
+}
+SPECIAL_SHAPES = ("mesh", "given", "include")
+GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", *PLACEMENT_KEYS)
+INCLUDE_KEYS = ("name", "shape", "file", *PLACEMENT_KEYS)
+MESH_KEYS = (
+    "name", "shape", "file", "scale", "units", "allow_open", "subtract", "cut_from",
+    "mass", "density", *PLACEMENT_KEYS,
+)
+INERTIA_MAP_KEYS = ("Ixx", "Iyy", "Izz", "Ixy", "Iyz", "Izx", "convention")
+
+
+def all_shape_names() -> list[str]:
+    return [*shp.SHAPES.keys(), *SPECIAL_SHAPES]
+
+
+# --------------------------------------------------------------------------- context
+
+
+@dataclass
+class _Ctx:
+    file: str  # as shown in messages
+    base_dir: Path  # where relative paths start
+    stack: tuple[str, ...] = ()  # real paths of the files being included (cycle check)
+    base_units: dict[str, str] = field(default_factory=dict)
+    factors: dict[str, tuple[float, str]] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+    def where(self, node_or_mark: ys.Node | ys.Mark | None) -> Location:
+        if node_or_mark is None:
+            return Location(self.file)
+        mark = node_or_mark if isinstance(node_or_mark, ys.Mark) else node_or_mark.mark
+        return Location(self.file, mark.line, mark.col)
+
+    def error(self, node_or_mark: ys.Node | ys.Mark | None, message: str) -> InputError:
+        return InputError(message, self.where(node_or_mark))
+
+    def factor(self, kind: str, node: ys.Node | None = None) -> tuple[float, str]:
+        if kind not in self.factors:
+            try:
+                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
+            except un.UnitError as exc:
+                raise self.error(node, str(exc)) from None
+        return self.factors[kind]
+
+
+# --------------------------------------------------------------------------- scalars
+
+
+def _suggest(word: str, allowed: tuple[str, ...] | list[str]) -> str:
+    close = difflib.get_close_matches(word, list(allowed), n=1, cutoff=0.6)
+    return f"; did you mean '{close[0]}'?" if close else ""
+
+
+def _check_keys(
+    ctx: _Ctx,
+    node: ys.MapNode,
+    allowed: tuple[str, ...] | list[str],
+    what: str,
+    required: tuple[str, ...] = (),
+) -> None:
+    for key, (kmark, _v) in node.items.items():
+        if key not in allowed:
+            raise ctx.error(
+                kmark,
+                f"unknown key '{key}' in {what}{_suggest(key, allowed)} "
+                f"(allowed: {', '.join(allowed)})",
+            )
+    for key in required:
+        if key not in node.items:
+            raise ctx.error(node, f"{what} needs '{key}'")
+
+
+def _describe(node: ys.Node) -> str:
+    if isinstance(node, ys.MapNode):
+        return "a mapping"
+    if isinstance(node, ys.SeqNode):
+        return "a list"
+    assert isinstance(node, ys.ScalarNode)
+    if node.value is None:
+        return "nothing (null)"
+    if isinstance(node.value, bool):
+        return f"'{node.raw}' (a boolean)"
+    return f"'{node.raw}'"
+
+
+def _mapping(ctx: _Ctx, node: ys.Node, what: str) -> ys.MapNode:
+    if not isinstance(node, ys.MapNode):
+        raise ctx.error(node, f"{what} must be a mapping (key: value), not {_describe(node)}")
+    return node
+
+
+def _number(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> float:
+    """A scalar quantity in SI: a bare number (in the file's units) or a string with a unit."""
+    if not isinstance(node, ys.ScalarNode) or node.value is None or isinstance(node.value, bool):
+        raise ctx.error(node, f"{what} must be a number or a quantity like '30 cm', not {_describe(node)}")
+    value = node.value
+    if isinstance(value, str):
+        try:
+            x = un.to_si(value, kind)
+        except un.UnitError as exc:
+            raise ctx.error(node, f"{what}: {exc}") from None
+    else:
+        factor, _unit = ctx.factor(kind, node)
+        x = float(value) * factor
+    if not np.isfinite(x):
+        raise ctx.error(node, f"{what} must be finite, not {node.raw}")
+    if abs(x) > HUGE:
+        raise ctx.error(node, f"{what} is too large ({node.raw}); numbers are limited to 1e60 in SI units")
+    return float(x)
+
+
+def _vector(ctx: _Ctx, node: ys.Node, kind: str, what: str, n: int | tuple[int, ...] = 3) -> np.ndarray:
+    sizes = (n,) if isinstance(n, int) else n
+    want = " or ".join(str(s) for s in sizes)
+    if not isinstance(node, ys.SeqNode):
+        raise ctx.error(node, f"{what} must be a list of {want} numbers like [1, 0, 0], not {_describe(node)}")
+    if len(node.items) not in sizes:
+        raise ctx.error(node, f"{what} must have {want} components, not {len(node.items)}")
+    return np.array([_number(ctx, item, kind, what) for item in node.items])
+
+
+def _matrix(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> np.ndarray:
+    if not isinstance(node, ys.SeqNode) or len(node.items) != 3:
+        raise ctx.error(node, f"{what} must be a 3x3 matrix: a list of three rows of three numbers")
+    return np.array([_vector(ctx, row, kind, f"a row of {what}") for row in node.items])
+
+
+def _string(ctx: _Ctx, node: ys.Node, what: str) -> str:
+    if not isinstance(node, ys.ScalarNode) or not isinstance(node.value, str):
+        raise ctx.error(node, f"{what} must be a text, not {_describe(node)}")
+    return node.value
+
+
+def _bool(ctx: _Ctx, node: ys.Node, what: str) -> bool:
+    if not isinstance(node, ys.ScalarNode) or not isinstance(node.value, bool):
+        raise ctx.error(node, f"{what} must be true or false, not {_describe(node)}")
+    return node.value
+
+
+def _positive(ctx: _Ctx, node: ys.Node, kind: str, what: str, allow_zero: bool = False) -> float:
+    x = _number(ctx, node, kind, what)
+    if x < 0 or (x == 0 and not allow_zero):
+        raise ctx.error(node, f"{what} must be {'zero or ' if allow_zero else ''}positive, not {node.raw}")
+    return x
+
+
+def _point(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray | str:
+    """A point: a vector of lengths, or the words 'com' / 'origin'."""
+    if isinstance(node, ys.ScalarNode) and node.value in ("com", "origin"):
+        return str(node.value)
+    return _vector(ctx, node, "length", what)
+
+
+def _direction(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray:
+    v = _vector(ctx, node, "dimensionless", what)
+    if not np.linalg.norm(v) > 0:
+        raise ctx.error(node, f"{what} must be a non-zero vector")
+    return v / np.linalg.norm(v)
+
+
+# --------------------------------------------------------------------------- placement
+
+
+def _rotation(ctx: _Ctx, node: ys.Node) -> np.ndarray:
+    m = _mapping(ctx, node, "rotate")
+    keys = set(m.items)
+    forms = {
+        "axis-angle": {"axis", "angle"},
+        "euler": {"euler", "seq"},
+        "quaternion": {"quaternion"},
+        "matrix": {"matrix"},
+    }
+    allowed = ("axis", "angle", "euler", "seq", "quaternion", "matrix")
+    _check_keys(ctx, m, allowed, "rotate")
+    for name, form in forms.items():
+        if keys == form:
+            break
+    else:
+        raise ctx.error(
+            m,
+            "rotate takes one of {axis: [x, y, z], angle: A}, {euler: [a, b, c], seq: ZYX}, "
+            "{quaternion: [w, x, y, z]} or {matrix: [[..], [..], [..]]}",
+        )
+    try:
+        if name == "axis-angle":
+            axis = _direction(ctx, m.items["axis"][1], "rotate axis")
+            angle = _number(ctx, m.items["angle"][1], "angle", "rotate angle")
+            return rot.axis_angle(axis, angle)
+        if name == "euler":
+            seq_node = m.items["seq"][1]
+            seq = _string(ctx, seq_node, "seq")
+            angles_node = m.items["euler"][1]
+            n = len(angles_node.items) if isinstance(angles_node, ys.SeqNode) else 3
+            angles = _vector(ctx, angles_node, "angle", "euler angles", n=(len(seq),) if 1 <= len(seq) <= 3 else 3)
+            try:
+                return rot.euler(angles, seq)
+            except ValueError as exc:
+                raise ctx.error(seq_node, str(exc)) from None
+        if name == "quaternion":
+            q_node = m.items["quaternion"][1]
+            q = _vector(ctx, q_node, "dimensionless", "quaternion", n=4)
+            try:
+                return rot.quaternion(q)
+            except ValueError as exc:
+                raise ctx.error(q_node, str(exc)) from None
+        mat_node = m.items["matrix"][1]
+        mat = _matrix(ctx, mat_node, "dimensionless", "rotation matrix")
+        try:
+            return rot.from_matrix(mat)
+        except ValueError as exc:
+            raise ctx.error(mat_node, f"rotation matrix: {exc}") from None
+    except ValueError as exc:  # a ValueError not already located
+        raise ctx.error(m, str(exc)) from None
+
+
+def _placement(ctx: _Ctx, m: ys.MapNode) -> tuple[np.ndarray, np.ndarray]:
+    at = np.zeros(3)
+    R = np.eye(3)
+    if "at" in m.items:
+        at = _vector(ctx, m.items["at"][1], "length", "at")
+    if "axis" in m.items and "rotate" in m.items:
+        raise ctx.error(m.items["rotate"][0], "give either 'axis' or 'rotate', not both")
+    if "axis" in m.items:
+        R = rot.axis_to_z(_direction(ctx, m.items["axis"][1], "axis"))
+    elif "rotate" in m.items:
+        R = _rotation(ctx, m.items["rotate"][1])
+    return at, R
+
+
+# --------------------------------------------------------------------------- parts
+
+
+@dataclass
+class _Known:
+    """What later parts may need from earlier ones (cut_from)."""
+
+    density: float | None
+    measure_kind: str
+
+
+def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _Known], what: str):
+    """Return (mass or None, density or None, the node to blame)."""
+    given = [k for k in MASS_KEYS if k in m.items]
+    cut = m.items.get("cut_from")
+    if cut is not None:
+        given.append("cut_from")
+    if len(given) > 1:
+        raise ctx.error(
+            m.items[given[1]][0] if given[1] in m.items else m,
+            f"{what} gives both '{given[0]}' and '{given[1]}'; give exactly one of "
+            "mass, density, areal_density, linear_density (or cut_from for a hole)",
+        )
+    if not given:
+        want = DENSITY_FOR.get(measure_kind)
+        alt = f" or {want}" if want else ""
+        raise ctx.error(m, f"{what} needs its mass{alt}")
+    key = given[0]
+    kmark, node = (cut if key == "cut_from" else m.items[key])
+    if key == "mass":
+        return _positive(ctx, node, "mass", f"{what}: mass"), None, node
+    if key == "cut_from":
+        if "subtract" not in m.items or not _bool(ctx, m.items["subtract"][1], "subtract"):
+            raise ctx.error(kmark, "cut_from is for holes: it needs 'subtract: true'")
+        src = _string(ctx, node, "cut_from")
+        if src not in known:
+            raise ctx.error(node, f"cut_from: no earlier part is named '{src}'{_suggest(src, list(known))}")
+        k = known[src]
+        if k.density is None:
+            raise ctx.error(node, f"cut_from: part '{src}' has no density to take (it is a {k.measure_kind})")
+        if k.measure_kind != measure_kind:
+            raise ctx.error(
+                node,
+                f"cut_from: part '{src}' has a {DENSITY_FOR.get(k.measure_kind, k.measure_kind)} "
+                f"but this {measure_kind} part needs a {DENSITY_FOR.get(measure_kind, 'mass')}",
+            )
+        return None, k.density, node
+    want = DENSITY_FOR.get(measure_kind)
+    if key != want:
+        hint = f"; use '{want}'" if want else "; give its mass"
+        raise ctx.error(kmark, f"{what} is a {measure_kind} part, so '{key}' does not apply{hint}")
+    kind = key  # density, areal_density, linear_density are also unit kinds
+    return None, _positive(ctx, node, kind, f"{what}: {key}"), node
+
+
+def _part_name(ctx: _Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
+    if "name" in m.items:
+        name = _string(ctx, m.items["name"][1], "name")
+        if not name.strip():
+            raise ctx.error(m.items["name"][1], "a part name must not be empty")
+    else:
+        name = f"{shape}{index + 1}"
+    if name in names:
+        raise ctx.error(m.items["name"][1] if "name" in m.items else m, f"two parts are named '{name}'; names must differ")
+    names.add(name)
+    return name
+
+
+def _place(part_com, part_I, at, R):
+    return at + R @ part_com, R @ part_I @ R.T
+
+
+def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
+    if not isinstance(node, ys.SeqNode):
+        raise ctx.error(node, f"parts must be a list of parts, not {_describe(node)}")
+    if not node.items:
+        raise ctx.error(node, "parts is empty; a body needs at least one part")
+    out: list[Part] = []
+    names: set[str] = set()
+    known: dict[str, _Known] = {}
+    for i, item in enumerate(node.items):
+        out.extend(_part(ctx, item, i, names, known, prefix))
+    return out
+
+
+def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list[Part]:
+    m = _mapping(ctx, node, f"part {index + 1}")
+    if "shape" not in m.items:
+        raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
+    shape_node = m.items["shape"][1]
+    shape = _string(ctx, shape_node, "shape")
+    if shape not in shp.SHAPES and shape not in SPECIAL_SHAPES:
+        raise ctx.error(
+            shape_node,
+            f"unknown shape '{shape}'{_suggest(shape, all_shape_names())} (shapes: {', '.join(all_shape_names())})",
+        )
+    name = _part_name(ctx, m, index, shape, names)
+    what = f"part '{name}'"
+    if shape == "include":
+        return _include(ctx, m, name, prefix)
+    if shape == "given":
+        return [_given(ctx, m, name, prefix, known)]
+    if shape == "mesh":
+        return [_mesh(ctx, m, name, prefix, known)]
+    return [_primitive(ctx, m, shape, name, prefix, known, what)]
+
+
+def _subtract(ctx: _Ctx, m: ys.MapNode) -> bool:
+    return _bool(ctx, m.items["subtract"][1], "subtract") if "subtract" in m.items else False
+
+
+def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
+    info = shp.SHAPES[shape]
+    params_allowed = (*info.required, *info.optional)
+    extra_keys: tuple[str, ...] = ()
+    if shape == "rod":
+        extra_keys = ("from", "to")
+    _check_keys(ctx, m, (*COMMON_PART_KEYS, *params_allowed, *extra_keys), f"{what} ({shape})")
+    params: dict[str, object] = {}
+    nodes: dict[str, ys.Node] = {}
+    at, R = _placement(ctx, m)
+    if shape == "rod" and ("from" in m.items or "to" in m.items):
+        for k in ("from", "to"):
+            if k not in m.items:
+                raise ctx.error(m, f"{what}: a rod given by endpoints needs both 'from' and 'to'")
+        for k in ("length", *PLACEMENT_KEYS):
+            if k in m.items:
+                raise ctx.error(m.items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
+        a = _vector(ctx, m.items["from"][1], "length", "from")
+        b = _vector(ctx, m.items["to"][1], "length", "to")
+        if not np.linalg.norm(b - a) > 0:
+            raise ctx.error(m.items["to"][1], f"{what}: 'from' and 'to' are the same point")
+        params["length"] = float(np.linalg.norm(b - a))
+        at = 0.5 * (a + b)
+        R = rot.axis_to_z(b - a)
+    for key in info.required:
+        if key not in m.items and key not in params:
+            raise ctx.error(m, f"{what} ({shape}) needs '{key}' (parameters: {', '.join(params_allowed) or 'none'})")
+    for key in params_allowed:
+        if key not in m.items:
+            continue
+        vnode = m.items[key][1]
+        nodes[key] = vnode
+        kind = PARAM_KINDS.get(key, "length")
+        if kind == "length":
+            params[key] = _number(ctx, vnode, "length", key)
+        elif kind == "lengths":
+            n = 2 if shape == "plate" else 3
+            params[key] = _vector(ctx, vnode, "length", key, n=n)
+        elif kind == "points":
+            params[key] = _matrix(ctx, vnode, "length", key)
+        elif kind == "bool":
+            params[key] = _bool(ctx, vnode, key)
+    try:
+        geo = shp.geometry(shape, **params)
+    except shp.ShapeError as exc:
+        raise ctx.error(nodes.get(exc.param, m), f"{what}: {exc}") from None
+    except ValueError as exc:
+        raise ctx.error(m, f"{what}: {exc}") from None
+    mass, density, _src = _mass_source(ctx, m, geo.measure_kind, known, what)
+    measure = geo.measure if geo.measure_kind != "point" else None
+    if mass is None:
+        assert density is not None and measure is not None
+        mass = density * measure
+    elif measure:
+        density = mass / measure
+    if not mass > 0:
+        raise ctx.error(m, f"{what} has no mass")
+    known[name] = _Known(density if geo.measure_kind != "point" else None, geo.measure_kind)
+    com, J = _place(geo.com, mass * geo.unit_inertia, at, R)
+    return Part(
+        name=prefix + name,
+        shape=shape,
+        mass=float(mass),
+        subtract=_subtract(ctx, m),
+        com=com,
+        inertia_com=J,
+        measure=measure,
+        measure_kind=geo.measure_kind,
+        radius=_outer_radius(shape, params),
+        axis=R[:, 2].copy(),
+        where=ctx.where(m),
+    )
+
+
+def _outer_radius(shape: str, params: dict) -> float | None:
+    if shape == "torus":
+        return float(params["major_radius"]) + float(params["minor_radius"])  # type: ignore[arg-type]
+    if shape in ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone"):
+        return float(params["radius"])  # type: ignore[arg-type]
+    return None
+
+
+def _given(ctx, m, name, prefix, known) -> Part:
+    what = f"part '{name}' (given)"
+    _check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
+    mass = _positive(ctx, m.items["mass"][1], "mass", f"{what}: mass")
+    com = _vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
+    inode = m.items["inertia"][1]
+    if isinstance(inode, ys.MapNode):
+        _check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia", required=("Ixx", "Iyy", "Izz"))
+        g = {k: _number(ctx, inode.items[k][1], "inertia", k) if k in inode.items else 0.0 for k in INERTIA_MAP_KEYS[:6]}
+        has_products = any(k in inode.items for k in ("Ixy", "Iyz", "Izx"))
+        sign = -1.0
+        if "convention" in inode.items:
+            conv_node = inode.items["convention"][1]
+            conv = _string(ctx, conv_node, "convention")
+            if conv not in ("tensor", "positive"):
+                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
+            sign = 1.0 if conv == "tensor" else -1.0
+        elif has_products:
+            raise ctx.error(
+                inode,
+                "inertia with products needs 'convention: tensor' (Ixy = −∫xy dm, the tensor's "
+                "entry) or 'convention: positive' (Ixy = +∫xy dm, as many CAD tools print it)",
+            )
+        J = np.array(
+            [
+                [g["Ixx"], sign * g["Ixy"], sign * g["Izx"]],
+                [sign * g["Ixy"], g["Iyy"], sign * g["Iyz"]],
+                [sign * g["Izx"], sign * g["Iyz"], g["Izz"]],
+            ]
+        )
+    else:
+        J = _matrix(ctx, inode, "inertia", "inertia")
+    problem = tensor_problem(J)
+    if problem:
+        raise ctx.error(inode, f"{what}: the inertia is not physically possible: {problem}")
+    J = 0.5 * (J + J.T)
+    at, R = _placement(ctx, m)
+    known[name] = _Known(None, "given")
+    pc, PJ = _place(com, J, at, R)
+    return Part(
+        name=prefix + name, shape="given", mass=mass, subtract=_subtract(ctx, m), com=pc,
+        inertia_com=PJ, measure=None, measure_kind="given", axis=R[:, 2].copy(), where=ctx.where(m),
+    )
+
+
+def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
+    rel = _string(ctx, node, what)
+    path = Path(rel)
+    if not path.is_absolute():
+        path = ctx.base_dir / path
+    return path
+
+
+def _include(ctx, m, name, prefix) -> list[Part]:
+    what = f"part '{name}' (include)"
+    _check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
+    fnode = m.items["file"][1]
+    path = _resolve(ctx, fnode, "file")
+    real = os.path.realpath(path)
+    if real in ctx.stack:
+        chain = " -> ".join(os.path.basename(p) for p in (*ctx.stack, real))
+        raise ctx.error(fnode, f"include cycle: {chain}")
+    if len(ctx.stack) >= MAX_INCLUDE_DEPTH:
+        raise ctx.error(fnode, f"includes are nested more than {MAX_INCLUDE_DEPTH} deep")
+    data = _read_file(path, ctx.where(fnode))
+    sub = _load(data, str(path), path.parent, (*ctx.stack, real))
+    ctx.warnings.extend(sub.warnings)
+    at, R = _placement(ctx, m)
+    out = []
+    for p in sub.parts:
+        com, J = _place(p.com, p.inertia_com, at, R)
+        out.append(
+            Part(
+                name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
+                com=com, inertia_com=J, measure=p.measure, measure_kind=p.measure_kind,
+                radius=p.radius, axis=R @ p.axis, extra=p.extra, where=p.where,
+            )
+        )
+    return out
+
+
+def _mesh(ctx, m, name, prefix, known) -> Part:
+    what = f"part '{name}' (mesh)"
+    _check_keys(ctx, m, MESH_KEYS, what, required=("file",))
+    from rbcli.core import mesh as cmesh
+    from rbcli.io import meshfile
+
+    fnode = m.items["file"][1]
+    path = _resolve(ctx, fnode, "file")
+    scale = 1.0
+    if "scale" in m.items:
+        scale = _positive(ctx, m.items["scale"][1], "dimensionless", "scale")
+    if "units" in m.items:
+        unode = m.items["units"][1]
+        try:
+            factor, dim = un.parse_unit(_string(ctx, unode, "units"))
+        except un.UnitError as exc:
+            raise ctx.error(unode, f"units: {exc}") from None
+        if dim != un.KINDS["length"]:
+            raise ctx.error(unode, "units of a mesh is the length unit of its coordinates, e.g. mm")
+    else:
+        factor = ctx.factor("length", m)[0]
+    allow_open = _bool(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
+    try:
+        vertices, faces = meshfile.read_mesh(path)
+        props = cmesh.mass_properties(vertices * (scale * factor), faces, allow_open=allow_open)
+    except (ValueError, OSError) as exc:
+        raise ctx.error(fnode, f"{what}: {exc}") from None
+    if props.flipped:
+        ctx.warnings.append(
+            f"{ctx.where(fnode)}: warning: mesh '{path.name}' faces inward everywhere; turned it outward"
+        )
+    mass, density, _src = _mass_source(ctx, m, "volume", known, what)
+    if mass is None:
+        mass = density * props.volume
+    else:
+        density = mass / props.volume
+    known[name] = _Known(density, "volume")
+    at, R = _placement(ctx, m)
+    com, J = _place(np.asarray(props.centroid), mass * np.asarray(props.unit_inertia), at, R)
+    return Part(
+        name=prefix + name, shape="mesh", mass=float(mass), subtract=_subtract(ctx, m), com=com,
+        inertia_com=J, measure=props.volume, measure_kind="volume", axis=R[:, 2].copy(),
+        extra={"volume": float(props.volume), "area": float(props.area), "triangles": int(props.n_triangles)},
+        where=ctx.where(m),
+    )
+
+
+# --------------------------------------------------------------------------- body
+
+
+@dataclass
+class _Loaded:
+    parts: list[Part]
+    warnings: list[str]
+    root: ys.MapNode
+    ctx: _Ctx
+
+
+def _units(ctx: _Ctx, m: ys.MapNode) -> None:
+    if "units" not in m.items:
+        return
+    unode = _mapping(ctx, m.items["units"][1], "units")
+    _check_keys(ctx, unode, UNIT_KEYS, "units")
+    base = {}
+    for key, (_km, vnode) in unode.items.items():
+        base[key] = _string(ctx, vnode, f"units.{key}")
+        try:
+            un.unit_for_kind({key: base[key]}, key)
+        except un.UnitError as exc:
+            raise ctx.error(vnode, f"units.{key}: {exc}") from None
+    ctx.base_units = base
+    ctx.factors = {}
+
+
+def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...]) -> _Loaded:
+    root = ys.load(data, filename)
+    ctx = _Ctx(file=filename, base_dir=base_dir, stack=stack)
+    if not isinstance(root, ys.MapNode):
+        raise ctx.error(root, "a body file is a mapping with 'parts:' (a list of parts), or a single part with 'shape:'")
+    if "rbcli" in root.items:
+        vnode = root.items["rbcli"][1]
+        if not (isinstance(vnode, ys.ScalarNode) and vnode.value == FORMAT_VERSION and not isinstance(vnode.value, bool)):
+            raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
+    _units(ctx, root)
+    if "parts" in root.items:
+        _check_keys(ctx, root, BODY_KEYS, "the body")
+        parts = _parts(ctx, root.items["parts"][1])
+    elif "shape" in root.items:
+        # one-part shorthand: the mapping is the part (plus the body's units/version)
+        stripped = ys.MapNode.__new__(ys.MapNode)
+        items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
+        _copy_map(stripped, root, items)
+        parts = _part(ctx, stripped, 0, set(), {}, "")
+    else:
+        raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
+    return _Loaded(parts, ctx.warnings, root, ctx)
+
+
+def _copy_map(dst: ys.MapNode, src: ys.MapNode, items: dict) -> None:
+    for attr, value in vars(src).items():
+        object.__setattr__(dst, attr, value)
+    object.__setattr__(dst, "items", items)
+
+
+def _read_file(path: Path, where: Location | None = None) -> bytes:
+    try:
+        size = path.stat().st_size
+        if path.is_dir():
+            raise InputError(f"{path} is a directory, not a body file", where)
+        if size > ys.MAX_BYTES:
+            raise InputError(f"{path} is {size} bytes; body files are limited to {ys.MAX_BYTES // (1024 * 1024)} MiB", where)
+        return path.read_bytes()
+    except InputError:
+        raise
+    except FileNotFoundError:
+        raise InputError(f"no such file: {path}", where) from None
+    except PermissionError:
+        raise InputError(f"cannot read {path}: permission denied", where) from None
+    except OSError as exc:
+        raise InputError(f"cannot read {path}: {exc.strerror or exc}", where) from None
+
+
+def _body_defaults(loaded: _Loaded, name_default: str, source: str, text: str) -> Body:
+    ctx, root = loaded.ctx, loaded.root
+    items = root.items
+    name = name_default
+    if "name" in items:
+        name = _string(ctx, items["name"][1], "name")
+    description = _string(ctx, items["description"][1], "description") if "description" in items and "parts" in items else ""
+    reference = None
+    ref_com = False
+    pivot = None
+    shaft = None
+    rim = None
+    if "parts" in items:
+        if "reference" in items:
+            p = _point(ctx, items["reference"][1], "reference")
+            if isinstance(p, str):
+                ref_com = p == "com"
+                reference = None if ref_com else np.zeros(3)
+            else:
+                reference = p
+        if "pivot" in items:
+            p = _point(ctx, items["pivot"][1], "pivot")
+            if isinstance(p, str):
+                raise ctx.error(items["pivot"][1], "pivot must be a point [x, y, z]")
+            pivot = p
+        if "shaft" in items:
+            snode = _mapping(ctx, items["shaft"][1], "shaft")
+            _check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
+            axis = _direction(ctx, snode.items["axis"][1], "shaft axis")
+            through = _vector(ctx, snode.items["through"][1], "length", "shaft through") if "through" in snode.items else np.zeros(3)
+            shaft = Shaft(axis, through)
+        if "rim_radius" in items:
+            rim = _positive(ctx, items["rim_radius"][1], "length", "rim_radius")
+    parts = tuple(loaded.parts)
+    try:
+        mp = combine(parts)
+    except ValueError as exc:
+        node = items["parts"][1] if "parts" in items else root
+        raise ctx.error(node, str(exc)) from None
+    problem = tensor_problem(mp.inertia_com, rtol=1e-7)
+    if problem:
+        node = items["parts"][1] if "parts" in items else root
+        raise ctx.error(
+            node,
+            f"the body's inertia is not physically possible: {problem} "
+            "(is a subtracted part outside the material it is cut from?)",
+        )
+    return Body(
+        name=name, source=source, text=text, parts=parts, reference=reference,
+        reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
+        description=description, warnings=tuple(loaded.warnings),
+    )
+
+
+def load_body(source: str, *, stdin: object = None) -> Body:
+    """Load a body from a path, or ``-`` for standard input.
+
+    Raises
+    ------
+    InputError
+        For anything wrong with the file or its contents, located at file:line:col.
+    """
+    if source == "-":
+        stream = stdin if stdin is not None else sys.stdin.buffer
+        data = stream.read()  # type: ignore[attr-defined]
+        if len(data) > ys.MAX_BYTES:
+            raise InputError(f"standard input is {len(data)} bytes; body files are limited to {ys.MAX_BYTES // (1024 * 1024)} MiB", Location("<stdin>"))
+        return load_text(data, "<stdin>", Path.cwd(), name_default="body")
+    path = Path(source)
+    data = _read_file(path)
+    return load_text(data, source, path.parent, name_default=path.stem, stack=(os.path.realpath(path),))
+
+
+def load_expr(expr: str) -> Body:
+    """Load a body written inline (``-e/--expr``), e.g. ``{shape: box, mass: 2, size: [1, 2, 3]}``."""
+    return load_text(expr, "<expr>", Path.cwd(), name_default="expr")
+
+
+def load_text(
+    data: bytes | str,
+    filename: str,
+    base_dir: Path,
+    *,
+    name_default: str = "body",
+    stack: tuple[str, ...] = (),
+) -> Body:
+    """Load a body from text already read; ``base_dir`` anchors relative paths."""
+    loaded = _load(data, filename, base_dir, stack)
+    if isinstance(data, bytes):
+        text = data.decode("utf-8", errors="replace")
+    else:
+        text = data
+    return _body_defaults(loaded, name_default, filename, text)

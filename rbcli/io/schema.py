@@ -1,0 +1,162 @@
+"""The JSON Schema (draft-07) of the body file, generated from the same tables the
+loader validates with, so that editors' YAML language servers can check a file as
+it is typed. ``rbcli schema`` prints it; the installed copy is ``rbcli/data/body.schema.json``
+(a test keeps it equal to :func:`body_schema`).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rbcli.core.shapes import SHAPES
+from rbcli.io import body as b
+
+SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
+
+QUANTITY = {
+    "description": "a number in the file's units, or a string with a unit such as '30 cm'",
+    "anyOf": [{"type": "number"}, {"type": "string", "pattern": "^\\s*[-+]?[0-9.]"}],
+}
+
+
+def _vec(n: int) -> dict:
+    return {"type": "array", "items": {"$ref": "#/definitions/quantity"}, "minItems": n, "maxItems": n}
+
+
+def _param_schema(key: str) -> dict:
+    kind = b.PARAM_KINDS.get(key, "length")
+    if kind == "length":
+        return {"$ref": "#/definitions/quantity"}
+    if kind == "lengths":
+        return {"type": "array", "items": {"$ref": "#/definitions/quantity"}, "minItems": 2, "maxItems": 3}
+    if kind == "points":
+        return {"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3}
+    return {"type": "boolean"}
+
+
+COMMON = {
+    "name": {"type": "string"},
+    "subtract": {"type": "boolean", "description": "true for a hole or pocket: the mass is removed"},
+    "cut_from": {"type": "string", "description": "a hole takes the density of this part"},
+    "at": {**_vec(3), "description": "where the part's local origin sits in the body frame"},
+    "axis": {**_vec(3), "description": "turn the part's local z onto this direction"},
+    "rotate": {"$ref": "#/definitions/rotate"},
+    "mass": {"$ref": "#/definitions/quantity"},
+    "density": {"$ref": "#/definitions/quantity"},
+    "areal_density": {"$ref": "#/definitions/quantity"},
+    "linear_density": {"$ref": "#/definitions/quantity"},
+}
+
+
+def _part_variant(shape: str, props: dict, required: list[str]) -> dict:
+    return {
+        "if": {"properties": {"shape": {"const": shape}}, "required": ["shape"]},
+        "then": {"properties": props, "required": required, "additionalProperties": False},
+    }
+
+
+def body_schema() -> dict:
+    variants = []
+    for name, info in SHAPES.items():
+        props = {"shape": {"const": name}, **COMMON}
+        for key in (*info.required, *info.optional):
+            props[key] = _param_schema(key)
+        if name == "rod":
+            props["from"] = _vec(3)
+            props["to"] = _vec(3)
+        required = ["shape"] + ([] if name == "rod" else list(info.required))
+        variants.append(_part_variant(name, props, required))
+    given = {k: COMMON[k] for k in ("name", "subtract", "at", "axis", "rotate", "mass")}
+    given.update(
+        shape={"const": "given"},
+        com=_vec(3),
+        inertia={
+            "anyOf": [
+                {"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3},
+                {
+                    "type": "object",
+                    "properties": {
+                        **{k: {"$ref": "#/definitions/quantity"} for k in b.INERTIA_MAP_KEYS[:6]},
+                        "convention": {"enum": ["tensor", "positive"]},
+                    },
+                    "required": ["Ixx", "Iyy", "Izz"],
+                    "additionalProperties": False,
+                },
+            ]
+        },
+    )
+    variants.append(_part_variant("given", given, ["shape", "mass", "inertia"]))
+    include = {k: COMMON[k] for k in ("name", "at", "axis", "rotate")}
+    include.update(shape={"const": "include"}, file={"type": "string"})
+    variants.append(_part_variant("include", include, ["shape", "file"]))
+    mesh = {k: COMMON[k] for k in ("name", "subtract", "cut_from", "at", "axis", "rotate", "mass", "density")}
+    mesh.update(
+        shape={"const": "mesh"},
+        file={"type": "string", "description": "STL (binary or ASCII) or OBJ, relative to this file"},
+        scale={"type": "number", "exclusiveMinimum": 0},
+        units={"type": "string", "description": "length unit of the mesh coordinates"},
+        allow_open={"type": "boolean"},
+    )
+    variants.append(_part_variant("mesh", mesh, ["shape", "file"]))
+    shapes = [*SHAPES, *b.SPECIAL_SHAPES]
+    part = {
+        "type": "object",
+        "properties": {"shape": {"enum": shapes}},
+        "required": ["shape"],
+        "allOf": variants,
+    }
+    units = {
+        "type": "object",
+        "properties": {k: {"type": "string"} for k in b.UNIT_KEYS},
+        "additionalProperties": False,
+        "description": "what bare numbers mean (default SI; bare angles are degrees, bare angular speeds rad/s)",
+    }
+    point = {"anyOf": [_vec(3), {"enum": ["com", "origin"]}]}
+    body = {
+        "type": "object",
+        "properties": {
+            "rbcli": {"const": 1},
+            "name": {"type": "string"},
+            "description": {"type": "string"},
+            "units": {"$ref": "#/definitions/units"},
+            "parts": {"type": "array", "items": {"$ref": "#/definitions/part"}, "minItems": 1},
+            "reference": point,
+            "shaft": {
+                "type": "object",
+                "properties": {"axis": _vec(3), "through": _vec(3)},
+                "required": ["axis"],
+                "additionalProperties": False,
+            },
+            "pivot": _vec(3),
+            "rim_radius": {"$ref": "#/definitions/quantity"},
+        },
+        "required": ["parts"],
+        "additionalProperties": False,
+    }
+    shorthand = {
+        "allOf": [{"$ref": "#/definitions/part"}],
+        "required": ["shape"],
+    }
+    rotate = {
+        "type": "object",
+        "oneOf": [
+            {"properties": {"axis": _vec(3), "angle": {"$ref": "#/definitions/quantity"}}, "required": ["axis", "angle"], "additionalProperties": False},
+            {"properties": {"euler": {"type": "array", "items": {"$ref": "#/definitions/quantity"}, "minItems": 1, "maxItems": 3}, "seq": {"type": "string", "pattern": "^([xyz]{1,3}|[XYZ]{1,3})$"}}, "required": ["euler", "seq"], "additionalProperties": False},
+            {"properties": {"quaternion": {"type": "array", "items": {"type": "number"}, "minItems": 4, "maxItems": 4}}, "required": ["quaternion"], "additionalProperties": False},
+            {"properties": {"matrix": {"type": "array", "items": {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3}, "minItems": 3, "maxItems": 3}}, "required": ["matrix"], "additionalProperties": False},
+        ],
+    }
+    return {
+        "$schema": "http://json-schema.org/draft-07/schema#",
+        "$id": "https://rbcli.invalid/body.schema.json",
+        "title": "rbcli body file",
+        "description": "A rigid body for rbcli: parts with shapes, placement and mass (see `rbcli shapes`).",
+        "definitions": {"quantity": QUANTITY, "units": units, "part": part, "rotate": rotate, "body": body},
+        "anyOf": [{"$ref": "#/definitions/body"}, shorthand],
+    }
+
+
+def schema_text() -> str:
+    import json
+
+    return json.dumps(body_schema(), indent=2, ensure_ascii=False) + "\n"

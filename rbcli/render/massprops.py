@@ -1,0 +1,179 @@
+"""Tables and JSON for ``inertia`` and ``principal``."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rbcli.core.inertia import InertiaResult
+from rbcli.core.principal import PrincipalResult
+from rbcli.model import Body
+from rbcli.render.fmt import DisplayUnits, num, snap
+from rbcli.render.text import Doc
+
+AXES = ("x", "y", "z")
+
+
+def part_rows(body: Body) -> list[dict]:
+    """Each part's contribution, for JSON (mass is negative for a subtracted part)."""
+    rows = []
+    for p in body.parts:
+        row = {"name": p.name, "shape": p.shape, "mass": p.signed_mass, "com": p.com}
+        if p.subtract:
+            row["subtract"] = True
+        for key in ("volume", "area", "triangles"):
+            if key in p.extra:
+                row[key] = p.extra[key]
+        rows.append(row)
+    return rows
+
+
+def header(body: Body) -> dict:
+    return {"name": body.name, "file": body.source}
+
+
+def inertia_json(body: Body, r: InertiaResult) -> dict:
+    out = r.to_json()
+    out["inertia"] = snap(out["inertia"])
+    out["inertia_com"] = snap(out["inertia_com"])
+    return {**out, **header(body), "parts": part_rows(body)}
+
+
+def principal_json(body: Body, r: PrincipalResult) -> dict:
+    out = r.to_json()
+    out["axes"] = snap(out["axes"], scale=1.0, rtol=1e-15)
+    return {**out, **header(body)}
+
+
+def _vec_rows(label: str, v, du: DisplayUnits, kind: str, digits: int) -> list[tuple[str, str, str]]:
+    u = du.unit(kind)
+    return [(f"{label} {a}", du.show(x, kind, digits), u) for a, x in zip(AXES, v)]
+
+
+def _matrix(doc: Doc, title: str, J, du: DisplayUnits, digits: int, products: str) -> None:
+    J = snap(J)
+    f, unit = du.factor("inertia")
+    if products == "positive":
+        rows = [
+            ("Ixx", num(J[0, 0] * f, digits), unit),
+            ("Iyy", num(J[1, 1] * f, digits), unit),
+            ("Izz", num(J[2, 2] * f, digits), unit),
+            ("Ixy = +∫xy dm", num(-J[0, 1] * f, digits), unit),
+            ("Iyz = +∫yz dm", num(-J[1, 2] * f, digits), unit),
+            ("Izx = +∫zx dm", num(-J[2, 0] * f, digits), unit),
+        ]
+        doc.kv(title, rows)
+        doc.note("(positive products: Ixy = +∫xy dm; the tensor's off-diagonal entries are their negatives)")
+        return
+    rows = [[a] + [num(J[i, j] * f, digits) for j in range(3)] for i, a in enumerate(AXES)]
+    doc.table(f"{title} [{unit}]", ("", "x", "y", "z"), rows, right=(1, 2, 3))
+    doc.note("(the tensor: off-diagonal entries are −∫xy dm; --products positive shows +∫xy dm)")
+
+
+def _where(p) -> str:
+    return "origin" if not np.any(p) else ""
+
+
+def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits: int, products: str, ref_label: str) -> None:
+    doc.heading(f"{body.name}  ({body.source})")
+    rows = [("mass", du.show(r.mass, "mass", digits), du.unit("mass"))]
+    rows += _vec_rows("com", r.com, du, "length", digits)
+    rows += _vec_rows("reference", r.reference, du, "length", digits)
+    doc.kv("mass properties", rows)
+    if len(body.parts) > 1 or body.parts[0].extra:
+        prow = []
+        L = du.unit("length")
+        for p in body.parts:
+            extra = ""
+            if "volume" in p.extra:
+                extra = f"V = {du.show(p.extra['volume'], 'volume', digits)} {du.unit('volume')}, A = {du.show(p.extra['area'], 'area', digits)} {du.unit('area')}"
+            prow.append(
+                (
+                    p.name,
+                    p.shape + (" (hole)" if p.subtract else ""),
+                    du.show(p.signed_mass, "mass", digits),
+                    ", ".join(du.show(x, "length", digits) for x in p.com),
+                    extra,
+                )
+            )
+        has_mesh = any(row[4] for row in prow)
+        cols = ("part", "shape", f"mass [{du.unit('mass')}]", f"com [{L}]") + (("mesh",) if has_mesh else ())
+        doc.table("parts", cols, [row if has_mesh else row[:4] for row in prow], right=(2,))
+    _matrix(doc, f"inertia about {ref_label}", r.inertia, du, digits, products)
+    if not np.allclose(r.reference, r.com, rtol=0, atol=0):
+        _matrix(doc, "inertia about the com", r.inertia_com, du, digits, products)
+    if r.axis is not None:
+        doc.kv(
+            f"moment about the axis through {ref_label}",
+            [
+                ("axis (unit)", ", ".join(num(x, digits) for x in r.axis), ""),
+                ("I = n·J·n", du.show(r.axis_moment, "inertia", digits), du.unit("inertia")),
+            ],
+        )
+    if r.omega is not None:
+        rows = _vec_rows("ω", r.omega, du, "angular_speed", digits)
+        rows += _vec_rows("L = J·ω", r.angular_momentum, du, "angular_momentum", digits)
+        rows.append(("|L|", du.show(float(np.linalg.norm(r.angular_momentum)), "angular_momentum", digits), du.unit("angular_momentum")))
+        rows.append(("T = ω·J·ω/2", du.show(r.kinetic_energy, "energy", digits), du.unit("energy")))
+        rows.append(("angle between L and ω", num(r.angle_L_omega_deg, digits), "°"))
+        doc.kv(f"rotation about {ref_label}", rows)
+
+
+def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, digits: int, ref_label: str) -> None:
+    pa = r.axes_info
+    doc.heading(f"{body.name}  ({body.source})")
+    f, unit = du.factor("inertia")
+    rows = []
+    angles = r.direction_angles_deg
+    for i in range(3):
+        rows.append(
+            (
+                str(i + 1),
+                num(pa.moments[i] * f, digits),
+                ", ".join(num(x, digits) for x in snap(pa.axes[i], scale=1.0, rtol=1e-15)),
+                ", ".join(num(x, 4) for x in angles[i]),
+                "stable" if r.stable[i] else "unstable",
+            )
+        )
+    doc.table(
+        f"principal moments about {ref_label} [{unit}], ascending",
+        ("axis", "moment", "direction (body x, y, z)", "angles to x, y, z [°]", "free rotation"),
+        rows,
+        right=(1,),
+    )
+    doc.note(symmetry_sentence(r))
+    doc.note(
+        "rotation from body axes to principal axes: "
+        f"{num(r.rotation_angle_deg, digits)}° about [{', '.join(num(x, digits) for x in r.rotation_axis)}]"
+    )
+    L = du.unit("length")
+    doc.kv(
+        "equivalent uniform bodies (same mass and principal moments)",
+        [
+            ("box sides along axes 1, 2, 3", ", ".join(du.show(x, "length", digits) for x in r.equivalent_box), L),
+            ("ellipsoid semi-axes along 1, 2, 3", ", ".join(du.show(x, "length", digits) for x in r.equivalent_ellipsoid), L),
+        ],
+    )
+
+
+def symmetry_sentence(r: PrincipalResult) -> str:
+    pa = r.axes_info
+    if pa.symmetry == "spherical":
+        return (
+            "spherical: all three moments are equal, so every axis through the point is "
+            "principal (the axes shown are the body axes); rotation about any axis is steady."
+        )
+    if pa.symmetry == "symmetric":
+        u = (pa.unique_axis or 0) + 1
+        a, b = (i + 1 for i in pa.free_axes)
+        kind = "oblate (flattened, like a disk)" if u == 3 else "prolate (elongated, like a rod)"
+        return (
+            f"symmetric about axis {u}: moments {a} and {b} are equal, so every axis at right "
+            f"angles to axis {u} is principal (axes {a} and {b} are free to choose; shown aligned "
+            f"with the body axes where possible); {kind}. Rotation about axis {u} is stable; about "
+            f"an axis in the {a}-{b} plane the spin stays in that plane (neutral)."
+        )
+    return (
+        "asymmetric: three different moments; free rotation is stable about axes 1 and 3 "
+        "(smallest and largest moment) and unstable about axis 2 (the intermediate axis, "
+        "the tennis-racket flip)."
+    )
