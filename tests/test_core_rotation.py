@@ -285,14 +285,16 @@ def test_from_matrix_exact_rotation_round_trips() -> None:
 
 
 def test_from_matrix_refuses_a_reflection() -> None:
-    with pytest.raises(ValueError, match=r"^rotation matrix is a reflection \(det = -1\), not a rotation$"):
+    msg = r"^rotation matrix is a reflection \(det = -1\), not a rotation$"
+    with pytest.raises(ValueError, match=msg):
         rot.from_matrix(np.diag([1.0, 1.0, -1.0]))
 
 
 def test_from_matrix_refuses_a_shear() -> None:
     shear = [[1, 0.032, 0], [0, 1, 0], [0, 0, 1]]
     # MᵀM − I has 0.032 off the diagonal and 0.032² = 1.0e-3 on it: max 3.2e-2
-    with pytest.raises(ValueError, match=r"^rotation matrix is not orthonormal \(\|MᵀM − I\| = 3\.2e-2\)$"):
+    msg = r"^rotation matrix is not orthonormal \(\|MᵀM − I\| = 3\.2e-2\)$"
+    with pytest.raises(ValueError, match=msg):
         rot.from_matrix(shear)
 
 

@@ -1,0 +1,540 @@
+"""Geometry of the primitive shapes: measure, centre of mass and inertia per unit mass.
+
+Every shape lives in its own LOCAL frame (symmetry axis = local z). :func:`geometry`
+returns, in that frame and in SI units,
+
+- the *measure* a density multiplies (volume, area, length, or 1 for a point),
+- the centre of mass (the local origin is the centroid unless the shape says otherwise:
+  ``hemisphere`` — centre of the flat face; ``cone`` — centre of the base;
+  ``triangle`` — the frame the vertices are given in),
+- the inertia tensor about the centre of mass, local axes, per unit mass (m²), in the
+  *tensor* convention: diagonal ``∫(y² + z²) dm / m``, off-diagonal ``−∫x y dm / m``.
+
+The mass itself (``mass`` or ``density × measure``) and the placement (``at``,
+``axis``, ``rotate``) are the io layer's business, as are the shapes ``mesh``,
+``given`` and ``include``. Parameters arrive as SI floats (vectors as sequences).
+
+Formulas are the standard ones of any table of moments of inertia (e.g. Meriam &
+Kraige, *Engineering Mechanics: Dynamics*, Appendix B; Beer & Johnston, *Vector
+Mechanics for Engineers*, inside back cover); the catalogue :data:`SHAPES` prints them.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+__all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "SHAPES", "geometry"]
+
+
+class ShapeError(ValueError):
+    """A shape parameter is missing, unknown or impossible.
+
+    Attributes
+    ----------
+    param : str — the parameter at fault (e.g. ``"inner_radius"``), for the io layer to
+        point at the right line of the body file
+    """
+
+    def __init__(self, param: str, message: str) -> None:
+        super().__init__(message)
+        self.param = param
+        self.message = message
+
+    def __str__(self) -> str:
+        return self.message
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, dtype=float)  # a private copy
+    a.setflags(write=False)
+    return a
+
+
+@dataclass(frozen=True)
+class ShapeGeometry:
+    """What a primitive shape contributes, per unit of mass, in its local frame.
+
+    Attributes
+    ----------
+    measure : float — what a density multiplies: m³ (volume), m² (area), m (length),
+        or 1.0 (point)
+    measure_kind : str — ``"volume"``, ``"area"``, ``"length"`` or ``"point"``
+    com : (3,) ndarray — centre of mass in the local frame, m
+    unit_inertia : (3, 3) ndarray — inertia tensor about the com, local axes, per unit
+        mass, m² (tensor convention: off-diagonals ``−∫x y dm / m``); symmetric
+
+    The arrays are read-only.
+    """
+
+    measure: float
+    measure_kind: str
+    com: np.ndarray
+    unit_inertia: np.ndarray
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "measure", float(self.measure))
+        object.__setattr__(self, "com", _frozen(self.com))
+        object.__setattr__(self, "unit_inertia", _frozen(self.unit_inertia))
+
+    def unit_inertia_about(self, point: Any = (0.0, 0.0, 0.0)) -> np.ndarray:
+        """Inertia per unit mass about ``point`` (local frame, m), local axes — m².
+
+        Parallel-axis theorem: ``I_P = I_c + (|d|² E − d dᵀ)`` with ``d = com − P``.
+        The default ``point`` is the local origin.
+        """
+        d = self.com - np.asarray(point, dtype=float)
+        return self.unit_inertia + (float(d @ d) * np.eye(3) - np.outer(d, d))
+
+    def to_json(self) -> dict[str, Any]:
+        """Plain-Python form: ``measure``, ``measure_kind``, ``com`` (m), ``unit_inertia`` (m²)."""
+        return {
+            "measure": float(self.measure),
+            "measure_kind": self.measure_kind,
+            "com": [float(x) for x in self.com],
+            "unit_inertia": [[float(x) for x in row] for row in self.unit_inertia],
+        }
+
+
+@dataclass(frozen=True)
+class ShapeInfo:
+    """One entry of the shape catalogue (for ``rbcli shapes`` and for validation).
+
+    Attributes
+    ----------
+    name : str — the ``shape:`` value
+    summary : str — one line
+    required, optional : tuple of str — parameter names
+    measure_kind : str — what a density multiplies; for shapes where an option changes
+        it (``plate`` with ``thickness``, ``shell: true``) the default case
+    density_keys : str — which density keys make sense, as human text
+    origin : str — where the local origin is
+    formulas : str — the formulas, plain text, m = mass
+    """
+
+    name: str
+    summary: str
+    required: tuple[str, ...]
+    optional: tuple[str, ...]
+    measure_kind: str
+    density_keys: str
+    origin: str
+    formulas: str
+
+
+SHAPES: dict[str, ShapeInfo] = {
+    info.name: info
+    for info in (
+        ShapeInfo(
+            "point", "a point mass", (), (), "point", "mass only", "the point",
+            "I = 0 about the point",
+        ),
+        ShapeInfo(
+            "rod", "thin rod along local z", ("length",), (), "length",
+            "linear_density", "centroid (mid-length)",
+            "Ixx = Iyy = m L²/12; Izz = 0",
+        ),
+        ShapeInfo(
+            "ring", "thin hoop in the local xy plane", ("radius",), (), "length",
+            "linear_density", "centroid (centre of the hoop)",
+            "Izz = m R²; Ixx = Iyy = m R²/2; length 2πR",
+        ),
+        ShapeInfo(
+            "disk", "thin disk or annulus in the local xy plane", ("radius",),
+            ("inner_radius",), "area", "areal_density", "centroid (centre)",
+            "Izz = m(R² + r²)/2; Ixx = Iyy = m(R² + r²)/4; area π(R² − r²)",
+        ),
+        ShapeInfo(
+            "plate", "thin rectangle a x b in local x, y; with thickness t a box",
+            ("size",), ("thickness",), "area",
+            "areal_density (or density with thickness > 0)", "centroid",
+            "Ixx = m(b² + t²)/12; Iyy = m(a² + t²)/12; Izz = m(a² + b²)/12 (t = 0 if thin)",
+        ),
+        ShapeInfo(
+            "triangle", "thin triangular lamina", ("vertices",), (), "area",
+            "areal_density", "the frame the vertices are given in (com = centroid)",
+            "C = (1/12) Σ dᵢdᵢᵀ (dᵢ = vertex − centroid); I = m(tr(C) E − C)",
+        ),
+        ShapeInfo(
+            "box", "solid cuboid a x b x c", ("size",), (), "volume", "density",
+            "centroid", "Ixx = m(b² + c²)/12; Iyy = m(a² + c²)/12; Izz = m(a² + b²)/12",
+        ),
+        ShapeInfo(
+            "cylinder", "solid cylinder or tube along local z; shell: true for a thin wall",
+            ("radius", "length"), ("inner_radius", "shell"), "volume",
+            "density (or areal_density with shell: true)", "centroid",
+            "solid/tube: Izz = m(R² + r²)/2, Ixx = Iyy = m(3(R² + r²) + L²)/12; "
+            "shell (no end caps): Izz = m R², Ixx = Iyy = m(R²/2 + L²/12)",
+        ),
+        ShapeInfo(
+            "sphere", "solid or hollow sphere; shell: true for a thin shell", ("radius",),
+            ("inner_radius", "shell"), "volume",
+            "density (or areal_density with shell: true)", "centroid",
+            "solid/hollow: I = (2/5) m (R⁵ − r⁵)/(R³ − r³); shell: I = (2/3) m R²",
+        ),
+        ShapeInfo(
+            "hemisphere", "solid hemisphere, dome towards +z", ("radius",), (), "volume",
+            "density", "centre of the flat face",
+            "com z = 3R/8; about the com: Izz = (2/5) m R², Ixx = Iyy = (83/320) m R²; "
+            "about the origin: Ixx = Iyy = Izz = (2/5) m R²",
+        ),
+        ShapeInfo(
+            "cone", "solid right circular cone, apex at +z", ("radius", "height"), (),
+            "volume", "density", "centre of the base",
+            "com z = h/4; about the com: Izz = (3/10) m R², "
+            "Ixx = Iyy = m(3R²/20 + 3h²/80); about the origin: Ixx = Iyy = m(3R²/20 + h²/10)",
+        ),
+        ShapeInfo(
+            "ellipsoid", "solid ellipsoid with semi-axes a, b, c along local x, y, z",
+            ("semi_axes",), (), "volume", "density", "centroid",
+            "Ixx = m(b² + c²)/5; Iyy = m(a² + c²)/5; Izz = m(a² + b²)/5; volume 4πabc/3",
+        ),
+        ShapeInfo(
+            "torus", "solid torus (tyre, O-ring) about local z", ("major_radius", "minor_radius"),
+            (), "volume", "density", "centroid",
+            "Izz = m(R² + 3r²/4); Ixx = Iyy = m(R²/2 + 5r²/8); volume 2π²Rr²",
+        ),
+    )
+}
+
+_IO_SHAPES = {
+    "mesh": "a mesh file",
+    "given": "given mass properties",
+    "include": "an included body file",
+}
+
+
+# ---------------------------------------------------------------------------------------
+# parameter checks
+
+
+def _number(param: str, value: Any, label: str | None = None) -> float:
+    label = label or param
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ShapeError(param, f"{label} must be a number, not {type(value).__name__}")
+    x = float(value)
+    if not math.isfinite(x):
+        raise ShapeError(param, f"{label} must be finite (got {x})")
+    return x
+
+
+def _positive(param: str, value: Any) -> float:
+    x = _number(param, value)
+    if x <= 0:
+        raise ShapeError(param, f"{param} must be greater than 0 (got {x:g} m)")
+    return x
+
+
+def _non_negative(param: str, value: Any) -> float:
+    x = _number(param, value)
+    if x < 0:
+        raise ShapeError(param, f"{param} must not be negative (got {x:g} m)")
+    return x
+
+
+def _components(param: str, value: Any, n: int, label: str | None = None) -> list[Any]:
+    """The ``n`` items of a vector parameter; ``label`` names it in the message."""
+    label = label or param
+    if isinstance(value, (str, bytes, Mapping)):
+        raise ShapeError(param, f"{label} must be a list of {n} numbers")
+    try:
+        items = list(value)
+    except TypeError:
+        raise ShapeError(param, f"{label} must be a list of {n} numbers") from None
+    if len(items) != n:
+        raise ShapeError(param, f"{label} must have {n} components, got {len(items)}")
+    return items
+
+
+def _positive_vector(param: str, value: Any, n: int) -> np.ndarray:
+    items = _components(param, value, n)
+    out = []
+    for i, v in enumerate(items):
+        x = _number(param, v, f"{param}[{i}]")
+        if x <= 0:
+            raise ShapeError(
+                param, f"{param}[{i}] must be greater than 0 (got {x:g} m)"
+            )
+        out.append(x)
+    return np.array(out)
+
+
+def _flag(param: str, value: Any) -> bool:
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ShapeError(param, f"{param} must be true or false, not {value!r}")
+
+
+def _inner(params: dict[str, Any], radius: float) -> float:
+    r = params.get("inner_radius")
+    if r is None:
+        return 0.0
+    r = _non_negative("inner_radius", r)
+    if r >= radius:
+        raise ShapeError(
+            "inner_radius",
+            f"inner_radius ({r:g} m) must be less than radius ({radius:g} m)",
+        )
+    return r
+
+
+def _diag(x: float, y: float, z: float) -> np.ndarray:
+    return np.diag([x, y, z])
+
+
+_ZERO = np.zeros(3)
+
+
+# ---------------------------------------------------------------------------------------
+# the shapes; each takes the checked dict of parameters (required present, none unknown)
+
+
+def _point(p: dict[str, Any]) -> ShapeGeometry:
+    return ShapeGeometry(1.0, "point", _ZERO, np.zeros((3, 3)))
+
+
+def _rod(p: dict[str, Any]) -> ShapeGeometry:
+    # thin rod of length L along z, centred: Ixx = Iyy = mL²/12 (Meriam & Kraige B).
+    length = _positive("length", p["length"])
+    i = length * length / 12.0
+    return ShapeGeometry(length, "length", _ZERO, _diag(i, i, 0.0))
+
+
+def _ring(p: dict[str, Any]) -> ShapeGeometry:
+    # thin hoop: all mass at distance R from z: Izz = mR²; Ixx = Iyy = Izz/2 by the
+    # perpendicular-axis theorem.
+    r = _positive("radius", p["radius"])
+    return ShapeGeometry(2.0 * math.pi * r, "length", _ZERO, _diag(r * r / 2, r * r / 2, r * r))
+
+
+def _disk(p: dict[str, Any]) -> ShapeGeometry:
+    # annulus R > r >= 0: Izz = m(R² + r²)/2, Ixx = Iyy = Izz/2 (perpendicular axes).
+    big = _positive("radius", p["radius"])
+    small = _inner(p, big)
+    area = math.pi * (big - small) * (big + small)
+    izz = (big * big + small * small) / 2.0
+    return ShapeGeometry(area, "area", _ZERO, _diag(izz / 2, izz / 2, izz))
+
+
+def _box_geometry(a: float, b: float, c: float) -> np.ndarray:
+    # cuboid a x b x c about its centroid: Ixx = m(b² + c²)/12, ...
+    return _diag((b * b + c * c) / 12.0, (a * a + c * c) / 12.0, (a * a + b * b) / 12.0)
+
+
+def _plate(p: dict[str, Any]) -> ShapeGeometry:
+    a, b = _positive_vector("size", p["size"], 2)
+    t = p.get("thickness")
+    t = 0.0 if t is None else _non_negative("thickness", t)
+    if t > 0:
+        return ShapeGeometry(a * b * t, "volume", _ZERO, _box_geometry(a, b, t))
+    return ShapeGeometry(a * b, "area", _ZERO, _box_geometry(a, b, 0.0))
+
+
+def _triangle(p: dict[str, Any]) -> ShapeGeometry:
+    rows = _components("vertices", p["vertices"], 3)
+    v = np.empty((3, 3))
+    for i, row in enumerate(rows):
+        for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]")):
+            v[i, j] = _number("vertices", x, f"vertices[{i}][{j}]")
+    centroid = v.mean(axis=0)
+    d = v - centroid
+    twice_area_vec = np.cross(v[1] - v[0], v[2] - v[0])
+    twice_area = float(np.linalg.norm(twice_area_vec))
+    longest = max(float(np.linalg.norm(v[i] - v[j])) for i, j in ((0, 1), (1, 2), (0, 2)))
+    # Degenerate when the area is round-off compared with the square of the size.
+    if not twice_area > 1e-12 * longest * longest:
+        raise ShapeError("vertices", "the triangle's vertices are collinear (it has no area)")
+    # Second moment per unit area about the centroid: ∫ x xᵀ dA / A = (1/12) Σ dᵢ dᵢᵀ,
+    # the exact quadrature of a quadratic over a triangle (it is exact for quadratics
+    # because  ∫ x xᵀ dA / A = (1/12)(Σ vᵢvᵢᵀ + (Σvᵢ)(Σvᵢ)ᵀ), and Σ dᵢ = 0).
+    c = d.T @ d / 12.0
+    c = 0.5 * (c + c.T)
+    inertia = np.trace(c) * np.eye(3) - c
+    return ShapeGeometry(0.5 * twice_area, "area", centroid, inertia)
+
+
+def _box(p: dict[str, Any]) -> ShapeGeometry:
+    a, b, c = _positive_vector("size", p["size"], 3)
+    return ShapeGeometry(a * b * c, "volume", _ZERO, _box_geometry(a, b, c))
+
+
+def _cylinder(p: dict[str, Any]) -> ShapeGeometry:
+    big = _positive("radius", p["radius"])
+    length = _positive("length", p["length"])
+    shell = _flag("shell", p["shell"]) if p.get("shell") is not None else False
+    l2 = length * length / 12.0
+    if shell:
+        inner = p.get("inner_radius")
+        if inner is not None and _non_negative("inner_radius", inner) > 0:
+            raise ShapeError(
+                "inner_radius",
+                "inner_radius cannot be used with shell: true (a shell is a thin wall at radius)",
+            )
+        # open thin-walled tube, lateral surface only: Izz = mR²; Ixx = m(R²/2 + L²/12).
+        return ShapeGeometry(
+            2.0 * math.pi * big * length, "area", _ZERO,
+            _diag(big * big / 2 + l2, big * big / 2 + l2, big * big),
+        )
+    small = _inner(p, big)
+    s2 = big * big + small * small
+    # thick tube R > r >= 0: Izz = m(R² + r²)/2; Ixx = m(3(R² + r²) + L²)/12.
+    return ShapeGeometry(
+        math.pi * (big - small) * (big + small) * length, "volume", _ZERO,
+        _diag(s2 / 4 + l2, s2 / 4 + l2, s2 / 2),
+    )
+
+
+def _sphere(p: dict[str, Any]) -> ShapeGeometry:
+    big = _positive("radius", p["radius"])
+    shell = _flag("shell", p["shell"]) if p.get("shell") is not None else False
+    if shell:
+        inner = p.get("inner_radius")
+        if inner is not None and _non_negative("inner_radius", inner) > 0:
+            raise ShapeError(
+                "inner_radius",
+                "inner_radius cannot be used with shell: true (a shell is a thin wall at radius)",
+            )
+        # thin spherical shell: I = (2/3) m R².
+        i = 2.0 * big * big / 3.0
+        return ShapeGeometry(4.0 * math.pi * big * big, "area", _ZERO, _diag(i, i, i))
+    small = _inner(p, big)
+    q = small / big
+    # hollow sphere: I = (2/5) m (R⁵ − r⁵)/(R³ − r³). With q = r/R the ratio is
+    # R² (1 + q + q² + q³ + q⁴)/(1 + q + q²): no cancellation as r → R.
+    ratio = (1 + q + q**2 + q**3 + q**4) / (1 + q + q**2)
+    i = 0.4 * big * big * ratio
+    volume = 4.0 / 3.0 * math.pi * big**3 * (1 - q) * (1 + q + q * q)
+    return ShapeGeometry(volume, "volume", _ZERO, _diag(i, i, i))
+
+
+def _hemisphere(p: dict[str, Any]) -> ShapeGeometry:
+    r = _positive("radius", p["radius"])
+    # solid hemisphere, flat face on z = 0: com z = 3R/8; about the face centre every
+    # axis gives (2/5) mR² (half a sphere); about the com (parallel axes)
+    # Ixx = Iyy = (2/5 − 9/64) mR² = (83/320) mR², Izz = (2/5) mR².
+    ixx = 83.0 / 320.0 * r * r
+    return ShapeGeometry(
+        2.0 / 3.0 * math.pi * r**3, "volume", np.array([0.0, 0.0, 3.0 * r / 8.0]),
+        _diag(ixx, ixx, 0.4 * r * r),
+    )
+
+
+def _cone(p: dict[str, Any]) -> ShapeGeometry:
+    r = _positive("radius", p["radius"])
+    h = _positive("height", p["height"])
+    # solid right circular cone, base on z = 0, apex at z = h: com z = h/4;
+    # about the com Izz = (3/10) mR², Ixx = Iyy = m(3R²/20 + 3h²/80).
+    ixx = 3.0 * r * r / 20.0 + 3.0 * h * h / 80.0
+    return ShapeGeometry(
+        math.pi * r * r * h / 3.0, "volume", np.array([0.0, 0.0, h / 4.0]),
+        _diag(ixx, ixx, 0.3 * r * r),
+    )
+
+
+def _ellipsoid(p: dict[str, Any]) -> ShapeGeometry:
+    a, b, c = _positive_vector("semi_axes", p["semi_axes"], 3)
+    # solid ellipsoid: Ixx = m(b² + c²)/5, ...
+    return ShapeGeometry(
+        4.0 / 3.0 * math.pi * a * b * c, "volume", _ZERO,
+        _diag((b * b + c * c) / 5, (a * a + c * c) / 5, (a * a + b * b) / 5),
+    )
+
+
+def _torus(p: dict[str, Any]) -> ShapeGeometry:
+    big = _positive("major_radius", p["major_radius"])
+    small = _positive("minor_radius", p["minor_radius"])
+    if small > big:
+        raise ShapeError(
+            "minor_radius",
+            f"minor_radius ({small:g} m) must not exceed major_radius ({big:g} m): "
+            "the torus would intersect itself",
+        )
+    # solid torus (Pappus: volume 2π²Rr²): Izz = m(R² + 3r²/4); Ixx = Iyy = m(R²/2 + 5r²/8).
+    ixx = big * big / 2 + 5 * small * small / 8
+    return ShapeGeometry(
+        2.0 * math.pi**2 * big * small * small, "volume", _ZERO,
+        _diag(ixx, ixx, big * big + 0.75 * small * small),
+    )
+
+
+_BUILDERS: dict[str, Callable[[dict[str, Any]], ShapeGeometry]] = {
+    "point": _point,
+    "rod": _rod,
+    "ring": _ring,
+    "disk": _disk,
+    "plate": _plate,
+    "triangle": _triangle,
+    "box": _box,
+    "cylinder": _cylinder,
+    "sphere": _sphere,
+    "hemisphere": _hemisphere,
+    "cone": _cone,
+    "ellipsoid": _ellipsoid,
+    "torus": _torus,
+}
+
+
+def geometry(shape: str, **params: Any) -> ShapeGeometry:
+    """Measure, centre of mass and inertia per unit mass of a primitive shape.
+
+    Parameters
+    ----------
+    shape : str — one of :data:`SHAPES` (``point``, ``rod``, ``ring``, ``disk``,
+        ``plate``, ``triangle``, ``box``, ``cylinder``, ``sphere``, ``hemisphere``,
+        ``cone``, ``ellipsoid``, ``torus``)
+    **params
+        The shape's parameters in SI units: lengths in m as floats, vectors as sequences
+        (``size``, ``semi_axes``: 2 or 3 positive lengths; ``vertices``: three 3-vectors),
+        ``shell`` a bool. An optional parameter passed as ``None`` counts as absent.
+
+    Returns
+    -------
+    ShapeGeometry
+        ``measure`` (m³, m², m or 1), ``measure_kind``, ``com`` (3,) m in the local
+        frame, ``unit_inertia`` (3, 3) m² about the com per unit mass.
+
+    Raises
+    ------
+    ShapeError
+        (a ValueError) naming the parameter at fault: a missing or unknown parameter,
+        a length that is not finite and > 0 (``inner_radius`` and ``thickness`` may be
+        0), ``inner_radius`` not less than ``radius``, a vector with the wrong number of
+        components, collinear triangle vertices, ``minor_radius > major_radius``,
+        ``inner_radius`` with ``shell: true``. An unknown shape, or one of the shapes
+        the io layer handles (``mesh``, ``given``, ``include``), raises a ShapeError
+        with ``param = "shape"``.
+
+    Notes
+    -----
+    The formulas are listed per shape in :data:`SHAPES` (``formulas``); sources: Meriam
+    & Kraige, *Engineering Mechanics: Dynamics*, Appendix B, Table D/4; the triangle by
+    exact integration of a quadratic over a simplex. The hollow sphere's ratio
+    ``(R⁵ − r⁵)/(R³ − r³)`` is evaluated as ``R²(1 + q + … + q⁴)/(1 + q + q²)`` with
+    ``q = r/R`` so it stays accurate as the wall gets thin.
+    """
+    if shape in _IO_SHAPES:
+        raise ShapeError(
+            "shape",
+            f"shape {shape!r} ({_IO_SHAPES[shape]}) is handled by the body loader, "
+            "not by the primitive-shape geometry",
+        )
+    info = SHAPES.get(shape) if isinstance(shape, str) else None
+    if info is None:
+        known = ", ".join([*SHAPES, *_IO_SHAPES])
+        raise ShapeError("shape", f"unknown shape {shape!r}; the shapes are: {known}")
+    allowed = (*info.required, *info.optional)
+    for key in params:
+        if key not in allowed:
+            what = ", ".join(allowed) if allowed else "none"
+            raise ShapeError(
+                key, f"unknown parameter {key!r} for shape {shape!r} (allowed: {what})"
+            )
+    for key in info.required:
+        if params.get(key) is None:
+            raise ShapeError(key, f"shape {shape!r} needs {key!r}")
+    return _BUILDERS[shape](dict(params))
