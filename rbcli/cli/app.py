@@ -30,6 +30,11 @@ app = typer.Typer(
 
 STATE = {"debug": False}
 
+#: What the man pages say beyond the options, per command: "json" (the keys and their
+#: meaning, roff-free text), "examples" (list of (command, what it prints)), "notes".
+#: Each command module fills in its own entry; ``rbcli.cli.manpages`` writes man/.
+MANUAL: dict[str, dict] = {}
+
 
 def _version(value: bool) -> None:
     if value:

@@ -7,7 +7,7 @@ from pathlib import Path
 import typer
 
 from rbcli.cli import common as c
-from rbcli.cli.app import app
+from rbcli.cli.app import MANUAL, app
 
 SPECIAL = {
     "mesh": (
@@ -138,3 +138,38 @@ def _title(p: Path) -> str:
         if line.startswith("name:"):
             return line[5:].strip().strip("'\"")
     return ""
+
+
+MANUAL["shapes"] = {
+    "examples": [("rbcli shapes cylinder", "The cylinder's parameters, local origin and formulas.")],
+}
+MANUAL["schema"] = {
+    "notes": [
+        "Put '# yaml-language-server: $schema=PATH' as the first line of a body file, with "
+        "PATH from 'rbcli schema --path', and editors with the YAML language server check the "
+        "file as you type.",
+    ],
+    "examples": [("rbcli schema --path", "Where the installed schema file is.")],
+}
+MANUAL["examples"] = {
+    "examples": [
+        ("rbcli examples", "List the bundled examples."),
+        ("rbcli inertia \"$(rbcli examples cube --path)\"", "Run a bundled example."),
+    ],
+}
+MANUAL[""] = {
+    "notes": [
+        "A body file is YAML: a list of parts (point, rod, ring, disk, plate, triangle, box, "
+        "cylinder, sphere, hemisphere, cone, ellipsoid, torus, mesh, given, include), each placed "
+        "with at, axis or rotate, with a mass or a density, and subtract: true for holes. Bare "
+        "numbers are in the file's units (SI unless 'units:' says otherwise; bare angles are "
+        "degrees, bare angular speeds rad/s); any number may be a string with a unit, such as "
+        "'30 cm', '2.5 lb', '7850 kg/m^3', '12 deg' or '1200 rpm'. See rbcli-shapes(1).",
+        "Errors are one line on standard error, 'rbcli: file:line:column: message', with no "
+        "traceback.",
+    ],
+    "examples": [
+        ("rbcli inertia examples/square_lamina.yaml", "Mass properties of a bundled example."),
+        ("rbcli principal -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'", "An inline body."),
+    ],
+}

@@ -5,7 +5,7 @@ from __future__ import annotations
 import typer
 
 from rbcli.cli import common as c
-from rbcli.cli.app import app
+from rbcli.cli.app import MANUAL, app
 
 INERTIA_HELP = """Mass, centre of mass and the inertia tensor about a point.
 
@@ -148,3 +148,60 @@ def _principal_one(body, about, json_, du, digits, e) -> None:
     res = principal_report(mp.mass, inertia_about(mp, ref), ref)
     _emit(e, body, r.principal_json(body, res) if json_ else None,
           lambda doc: r.principal_doc(doc, body, res, du, digits, label), json_, _MANY["n"] > 1)
+
+
+MANUAL["inertia"] = {
+    "notes": [
+        "The inertia tensor is the tensor: its off-diagonal entries are the negated products "
+        "(Ixy = -sum m x y). --products positive shows the positive engineering products "
+        "instead, and says so. Tables use six significant figures (--digits) and SI units "
+        "unless --units is given; JSON is always SI with full precision.",
+    ],
+    "json": [
+        ("mass", "total mass, kg."),
+        ("com", "[3] centre of mass, m, body frame."),
+        ("reference", "[3] the point the inertia is about, m."),
+        ("inertia", "[3x3] inertia tensor about reference, kg m^2 (off-diagonals -sum m x y)."),
+        ("inertia_com", "[3x3] inertia tensor about the com, kg m^2."),
+        ("axis, axis_moment", "with --axis: the unit axis [3] and n.J.n about it through reference, kg m^2."),
+        ("omega, angular_momentum, kinetic_energy, angle_L_omega_deg",
+         "with --omega: w [3] rad/s, L = J.w [3] kg m^2/s, T = w.J.w/2 J, and the angle between L and w in degrees."),
+        ("name, file", "the body's name and where it was read from."),
+        ("parts", "[{name, shape, mass, com}] each part's contribution (mass negative for a "
+                  "subtracted part; mesh parts add volume m^3, area m^2 and triangles)."),
+    ],
+    "examples": [
+        ("rbcli inertia examples/square_lamina.yaml --axis 1,1,0",
+         "The square lamina of mass 1 kg and side 1 m about its corner: I about the diagonal is 0.0833333 kg m^2 (m a^2/12)."),
+        ("rbcli inertia -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}' --json",
+         "A box written inline; JSON for scripts."),
+        ("rbcli inertia examples/*.yaml --json | jq .mass",
+         "Several bodies at once: one JSON object per line."),
+    ],
+}
+
+MANUAL["principal"] = {
+    "notes": [
+        "Free rotation about the axes of the largest and the smallest principal moment is "
+        "stable, about the intermediate one unstable (the tennis-racket flip). The equivalent "
+        "uniform box and ellipsoid have the same mass and principal moments.",
+    ],
+    "json": [
+        ("reference", "[3] the point the moments are about, m."),
+        ("moments", "[3] principal moments, ascending, kg m^2."),
+        ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set."),
+        ("symmetry", "asymmetric, symmetric or spherical."),
+        ("stable", "[3] whether free rotation about each axis is stable."),
+        ("free_axes", "axes (1-based) that are free to choose where moments coincide."),
+        ("direction_angles_deg", "[3x3] angle of principal axis i from body axis j."),
+        ("rotation_axis, rotation_angle_deg", "the rotation taking the body axes onto the principal axes."),
+        ("equivalent_box, equivalent_ellipsoid", "[3] box sides and ellipsoid semi-axes along the principal axes, m."),
+        ("mass, name, file", "the body's mass (kg), name and source."),
+    ],
+    "examples": [
+        ("rbcli principal examples/square_lamina.yaml --about origin",
+         "Principal axes of the lamina about its corner: along the diagonal (m a^2/12) and across it (7 m a^2/12)."),
+        ("rbcli principal examples/two_blade_fan.yaml",
+         "The two-blade fan: principal axes at 45 degrees (tan 2 theta = 2 Ixy/(Ixx - Iyy))."),
+    ],
+}

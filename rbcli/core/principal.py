@@ -144,8 +144,13 @@ class PrincipalResult:
 
     @property
     def direction_angles_deg(self) -> np.ndarray:
-        """(3, 3) angle of principal axis i from body axis j, degrees."""
-        return np.degrees(np.arccos(np.clip(self.axes, -1.0, 1.0)))
+        """(3, 3) angle of principal axis i from body axis j, degrees (by atan2, exact near 0°)."""
+        a = self.axes
+        out = np.empty((3, 3))
+        for j in range(3):
+            others = [k for k in range(3) if k != j]
+            out[:, j] = np.degrees(np.arctan2(np.linalg.norm(a[:, others], axis=1), a[:, j]))
+        return out
 
     def to_json(self) -> dict:
         pa = self.axes_info
