@@ -538,14 +538,21 @@ def _circle_arrays(
         W2 = np.where(beta > 0.0, num / np.where(den > 0.0, den, 1.0), 0.0)
     W = np.sqrt(W2)
     w3 = W * RG / a
-    kappa = (
+    return W, w3, _kappa(m, A, C, a, g, beta, W, w3)
+
+
+def _kappa(m: float, A: float, C: float, a: float, g: float, beta: Any, W: Any, w3: Any) -> Any:
+    """kappa (N m) of the steady circle at lean beta, turn rate W, spin w3 (sheet §3.3)."""
+    sb, cb = np.sin(beta), np.cos(beta)
+    Cc = C + m * a * a
+    W2 = W * W
+    return (
         A * W2 * np.cos(2.0 * beta)
         - Cc * W * w3 * sb
         - m * g * a * cb
         + (2.0 * A * W * sb + Cc * w3) * (2.0 * A * W * sb + C * w3) / A
         + m * a * a * W2 * cb * cb
     )
-    return W, w3, kappa
 
 
 def _knife_edge_only(r: float) -> None:
@@ -558,9 +565,18 @@ def _knife_edge_only(r: float) -> None:
         )
 
 
-def _make_circle(wheel: Wheel, a: float, g: float, beta: float, RG: float) -> CircleMotion:
+def _make_circle(
+    wheel: Wheel, a: float, g: float, beta: float, RG: float, v: float | None = None
+) -> CircleMotion:
     W, w3, k = _circle_arrays(wheel.mass, wheel.A, wheel.C, a, g, beta, RG)
     W, w3, k = float(W), float(w3), float(k)
+    if v is not None and RG > 0.0:
+        # lean_for: the speed and the circle are the given data and the lean the solved
+        # unknown. Near 90° one ulp of the lean moves tan(beta), hence Omega, by far more
+        # than round-off, so report Omega = v / R_G and omega_3 = v / a exactly and take
+        # kappa at those rates (the relation holds to the lean's float resolution).
+        W, w3 = v / RG, v / a
+        k = float(_kappa(wheel.mass, wheel.A, wheel.C, a, g, beta, W, w3))
     Ac = wheel.A + wheel.mass * a * a
     stable = k > 0.0
     return CircleMotion(
@@ -707,7 +723,7 @@ def lean_for(
             f"radius {RG:.6g} m: the wheel would have to lie flat"
         )
     beta = brentq(f, lo, hi, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=500)
-    return _make_circle(wheel, a, g, float(beta), RG)
+    return _make_circle(wheel, a, g, float(beta), RG, v=v)
 
 
 def radius_for(
