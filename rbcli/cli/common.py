@@ -133,9 +133,10 @@ def direction(text: str, option: str) -> list[float]:
     if t in named:
         return named[t]
     v = vector(t, "dimensionless", option)
-    if not any(abs(x) > 0 for x in v):
+    big = max(abs(x) for x in v)
+    if not big > 0:
         raise InputError(f"{option}: the direction must be a non-zero vector")
-    return v
+    return [x / big for x in v]  # largest component ±1: no under/overflow when normalised
 
 
 def finish(status: int | ExitStatus) -> None:

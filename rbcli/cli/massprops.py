@@ -73,8 +73,12 @@ def inertia(
 
 
 def _run(bodies, expr, json_, e, one) -> None:
-    """Run ``one`` per body; go on past bad files, exit 2 at the end if any failed."""
+    """Run ``one`` per body; go on past bad files, exit 2 at the end if any failed.
+
+    With more than one body, ``--json`` prints JSON Lines (one compact object per body).
+    """
     srcs = c.sources(bodies, expr)
+    _MANY["n"] = len(srcs)
     failed = False
     from rbcli.errors import InputError
 
@@ -109,12 +113,23 @@ def _emit(e, body, data, doc_fn, json_: bool, many: bool) -> None:
         e.write(doc.render())
 
 
+def _option_for(param: str, about: str | None) -> str:
+    """The option (or body key) that an InputOverflow's ``param`` refers to."""
+    if param == "reference":
+        return "--about" if about is not None else "the body's reference point"
+    return f"--{param}"
+
+
 def _inertia_one(body, about, n, w, json_, du, digits, products, e) -> None:
-    from rbcli.core.inertia import inertia_report
+    from rbcli.core.inertia import InputOverflow, inertia_report
+    from rbcli.errors import InputError
     from rbcli.render import massprops as r
 
     mp, ref, label = _reference(body, about)
-    res = inertia_report(mp, ref, axis=n, omega=w)
+    try:
+        res = inertia_report(mp, ref, axis=n, omega=w)
+    except InputOverflow as exc:
+        raise InputError(f"{_option_for(exc.param, about)}: {exc}") from None
     many = _MANY["n"] > 1
     _emit(e, body, r.inertia_json(body, res) if json_ else None,
           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), json_, many)
@@ -140,12 +155,20 @@ def principal(
 
 
 def _principal_one(body, about, json_, du, digits, e) -> None:
+    import numpy as np
+
     from rbcli.core.inertia import inertia_about
     from rbcli.core.principal import principal_report
+    from rbcli.errors import InputError
     from rbcli.render import massprops as r
 
     mp, ref, label = _reference(body, about)
-    res = principal_report(mp.mass, inertia_about(mp, ref), ref)
+    with np.errstate(over="ignore", invalid="ignore"):
+        J = inertia_about(mp, ref)
+    if not np.all(np.isfinite(J)):
+        raise InputError(f"{_option_for('reference', about)}: the inertia about this point overflows: "
+                         "the point is too far from the body")
+    res = principal_report(mp.mass, J, ref)
     _emit(e, body, r.principal_json(body, res) if json_ else None,
           lambda doc: r.principal_doc(doc, body, res, du, digits, label), json_, _MANY["n"] > 1)
 

@@ -16,6 +16,19 @@ import numpy as np
 from rbcli.model import Part
 
 
+class InputOverflow(ValueError):
+    """An input that makes a result impossible or not finite.
+
+    Attributes
+    ----------
+    param : str — the input at fault: ``"reference"``, ``"axis"`` or ``"omega"``
+    """
+
+    def __init__(self, param: str, message: str) -> None:
+        super().__init__(message)
+        self.param = param
+
+
 @dataclass(frozen=True)
 class MassProps:
     """Mass properties of a rigid body.
@@ -85,13 +98,25 @@ def inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
     return mp.inertia_com + shift_term(mp.mass, np.asarray(point, dtype=float) - mp.com)
 
 
+def unit_vector(v: np.ndarray, what: str = "the axis") -> np.ndarray:
+    """``v / |v|``, exact for tiny (1e-320) and huge components alike.
+
+    Raises
+    ------
+    ValueError
+        If ``v`` is zero or not finite.
+    """
+    v = np.asarray(v, dtype=float)
+    big = float(np.max(np.abs(v))) if v.size else 0.0
+    if not (big > 0.0 and np.isfinite(big)):
+        raise ValueError(f"{what} must be a non-zero, finite vector")
+    v = v / big  # the largest component is now ±1: the norm neither under- nor overflows
+    return v / np.linalg.norm(v)
+
+
 def moment_about_axis(J: np.ndarray, axis: np.ndarray) -> float:
     """Moment of inertia ``n·J·n`` (kg m^2) about the unit vector of ``axis``."""
-    n = np.asarray(axis, dtype=float)
-    norm = float(np.linalg.norm(n))
-    if not norm > 0.0 or not np.isfinite(norm):
-        raise ValueError("the axis must be a non-zero, finite vector")
-    n = n / norm
+    n = unit_vector(axis)
     return float(n @ J @ n)
 
 
@@ -175,9 +200,11 @@ class InertiaResult:
 
 def angle_between_deg(a: np.ndarray, b: np.ndarray) -> float:
     """Angle between two vectors in degrees (0 when either is zero), by atan2 for accuracy."""
-    na, nb = float(np.linalg.norm(a)), float(np.linalg.norm(b))
-    if na == 0.0 or nb == 0.0:
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    if not (np.any(a) and np.any(b)):
         return 0.0
+    a, b = unit_vector(a, "a vector"), unit_vector(b, "a vector")
     return float(np.degrees(np.arctan2(np.linalg.norm(np.cross(a, b)), float(a @ b))))
 
 
@@ -189,6 +216,13 @@ def inertia_report(
 ) -> InertiaResult:
     """Inertia about a point, the moment about an axis through it, and L, T for a spin ω.
 
+    Raises
+    ------
+    InputOverflow
+        (a ValueError; ``param`` names the input) If ``axis`` is zero or not finite, or a
+        result overflows (a reference point or an angular velocity so large that
+        ``m d²`` or ``ω·J·ω`` exceeds 1e308).
+
     Notes
     -----
     ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G`` (parallel axis). ``I_n = n·J_P·n``.
@@ -196,18 +230,31 @@ def inertia_report(
     (Goldstein §5.3, §5.4); about the com they are the spin parts of L and T.
     """
     ref = np.asarray(reference, dtype=float)
-    J = inertia_about(mp, ref)
+    with np.errstate(over="ignore", invalid="ignore"):
+        J = inertia_about(mp, ref)
+    if not np.all(np.isfinite(J)):
+        raise InputOverflow(
+            "reference", "the inertia about this point overflows: the point is too far from the body"
+        )
     kw: dict = {}
     if axis is not None:
-        n = np.asarray(axis, dtype=float)
-        n = n / np.linalg.norm(n)
+        try:
+            n = unit_vector(axis)
+        except ValueError as exc:
+            raise InputOverflow("axis", str(exc)) from None
         kw["axis"] = n
         kw["axis_moment"] = moment_about_axis(J, n)
     if omega is not None:
         w = np.asarray(omega, dtype=float)
-        L = J @ w
+        with np.errstate(over="ignore", invalid="ignore"):
+            L = J @ w
+            T = 0.5 * float(w @ L)
+        if not (np.all(np.isfinite(L)) and np.isfinite(T)):
+            raise InputOverflow(
+                "omega", "the angular momentum or kinetic energy overflows: the angular velocity is too large"
+            )
         kw["omega"] = w
         kw["angular_momentum"] = L
-        kw["kinetic_energy"] = 0.5 * float(w @ L)
+        kw["kinetic_energy"] = T
         kw["angle_L_omega_deg"] = angle_between_deg(L, w)
     return InertiaResult(mp.mass, mp.com.copy(), ref, J, mp.inertia_com.copy(), **kw)

@@ -57,6 +57,11 @@ def principal_axes(inertia: np.ndarray) -> PrincipalAxes:
     -------
     PrincipalAxes
 
+    Raises
+    ------
+    ValueError
+        If ``inertia`` is not a 3x3 matrix of finite numbers.
+
     Notes
     -----
     ``numpy.linalg.eigh`` gives an orthonormal eigenbasis. For a degenerate pair the
@@ -64,6 +69,8 @@ def principal_axes(inertia: np.ndarray) -> PrincipalAxes:
     on the plane is projected and normalised, and the other completes the plane.
     """
     J = np.asarray(inertia, dtype=float)
+    if J.shape != (3, 3) or not np.all(np.isfinite(J)):
+        raise ValueError("the inertia tensor must be a 3x3 matrix of finite numbers")
     J = 0.5 * (J + J.T)
     w, v = np.linalg.eigh(J)
     scale = max(float(np.max(np.abs(w))), np.finfo(float).tiny)
@@ -105,6 +112,7 @@ def _right_handed(axes: np.ndarray) -> np.ndarray:
     out[0] = _sign_fix(out[0])
     out[1] = _sign_fix(out[1])
     out[2] = np.cross(out[0], out[1])
+    out[2] /= np.linalg.norm(out[2])  # unit to round-off, like the other two
     return out
 
 
@@ -219,8 +227,8 @@ def principal_report(mass: float, inertia: np.ndarray, reference: np.ndarray) ->
         stable = (True, True, True)
     s = np.array([I2 + I3 - I1, I1 + I3 - I2, I1 + I2 - I3])
     s = np.clip(s, 0.0, None)
-    box = np.sqrt(6.0 * s / mass)
-    ell = np.sqrt(2.5 * s / mass)
+    box = np.sqrt(s / mass) * np.sqrt(6.0)  # divide first: 6 s may overflow where s/m does not
+    ell = np.sqrt(s / mass) * np.sqrt(2.5)
     axis, angle = matrix_to_axis_angle(pa.axes.T)
     return PrincipalResult(
         mass=float(mass),

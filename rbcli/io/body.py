@@ -71,6 +71,11 @@ def all_shape_names() -> list[str]:
     return [*shp.SHAPES.keys(), *SPECIAL_SHAPES]
 
 
+def _a(word: str) -> str:
+    """``word`` with its indefinite article: "an area", "a volume"."""
+    return f"{'an' if word[:1] in 'aeiou' else 'a'} {word}"
+
+
 # --------------------------------------------------------------------------- context
 
 
@@ -211,8 +216,10 @@ def _point(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray | str:
 
 def _direction(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray:
     v = _vector(ctx, node, "dimensionless", what)
-    if not np.linalg.norm(v) > 0:
+    big = float(np.max(np.abs(v)))
+    if not big > 0:
         raise ctx.error(node, f"{what} must be a non-zero vector")
+    v = v / big  # so that tiny (1e-320) or huge components do not under/overflow the norm
     return v / np.linalg.norm(v)
 
 
@@ -328,14 +335,14 @@ def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _
         if k.measure_kind != measure_kind:
             raise ctx.error(
                 node,
-                f"cut_from: part '{src}' has a {DENSITY_FOR.get(k.measure_kind, k.measure_kind)} "
-                f"but this {measure_kind} part needs a {DENSITY_FOR.get(measure_kind, 'mass')}",
+                f"cut_from: part '{src}' has {_a(DENSITY_FOR.get(k.measure_kind, k.measure_kind))} "
+                f"but this {measure_kind} part needs {_a(DENSITY_FOR.get(measure_kind, 'mass'))}",
             )
         return None, k.density, node
     want = DENSITY_FOR.get(measure_kind)
     if key != want:
         hint = f"; use '{want}'" if want else "; give its mass"
-        raise ctx.error(kmark, f"{what} is a {measure_kind} part, so '{key}' does not apply{hint}")
+        raise ctx.error(kmark, f"{what} is {_a(measure_kind)} part, so '{key}' does not apply{hint}")
     kind = key  # density, areal_density, linear_density are also unit kinds
     return None, _positive(ctx, node, kind, f"{what}: {key}"), node
 
@@ -444,11 +451,12 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
         raise ctx.error(nodes.get(exc.param, m), f"{what}: {exc}") from None
     except ValueError as exc:
         raise ctx.error(m, f"{what}: {exc}") from None
-    mass, density, _src = _mass_source(ctx, m, geo.measure_kind, known, what)
+    mass, density, src = _mass_source(ctx, m, geo.measure_kind, known, what)
     measure = geo.measure if geo.measure_kind != "point" else None
     if mass is None:
         assert density is not None and measure is not None
         mass = density * measure
+        _check_mass(ctx, src, what, mass, f"density × {geo.measure_kind}")
     elif measure:
         density = mass / measure
     if not mass > 0:
@@ -468,6 +476,16 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
         axis=R[:, 2].copy(),
         where=ctx.where(m),
     )
+
+
+def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
+    """A mass computed from a density must stay within the limits of any number (HUGE)."""
+    if not mass <= HUGE:  # also refuses inf and nan
+        raise ctx.error(
+            node,
+            f"{what}: its mass ({how}) is {mass:.3g} kg, too large; "
+            "numbers are limited to 1e60 in SI units",
+        )
 
 
 def _outer_radius(shape: str, params: dict) -> float | None:
@@ -590,9 +608,10 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         ctx.warnings.append(
             f"{ctx.where(fnode)}: warning: mesh '{path.name}' faces inward everywhere; turned it outward"
         )
-    mass, density, _src = _mass_source(ctx, m, "volume", known, what)
+    mass, density, src = _mass_source(ctx, m, "volume", known, what)
     if mass is None:
         mass = density * props.volume
+        _check_mass(ctx, src, what, mass, "density × volume")
     else:
         density = mass / props.volume
     known[name] = _Known(density, "volume")
@@ -628,7 +647,8 @@ def _units(ctx: _Ctx, m: ys.MapNode) -> None:
         try:
             un.unit_for_kind({key: base[key]}, key)
         except un.UnitError as exc:
-            raise ctx.error(vnode, f"units.{key}: {exc}") from None
+            msg = str(exc)
+            raise ctx.error(vnode, msg if msg.startswith("units:") else f"units: {key}: {msg}") from None
     ctx.base_units = base
     ctx.factors = {}
 
@@ -715,14 +735,20 @@ def _body_defaults(loaded: _Loaded, name_default: str, source: str, text: str) -
         if "rim_radius" in items:
             rim = _positive(ctx, items["rim_radius"][1], "length", "rim_radius")
     parts = tuple(loaded.parts)
+    node = items["parts"][1] if "parts" in items else root
     try:
-        mp = combine(parts)
+        with np.errstate(over="ignore", invalid="ignore"):
+            mp = combine(parts)
     except ValueError as exc:
-        node = items["parts"][1] if "parts" in items else root
         raise ctx.error(node, str(exc)) from None
+    if not (np.all(np.isfinite(mp.com)) and np.all(np.isfinite(mp.inertia_com))):
+        raise ctx.error(
+            node,
+            "the body's mass properties overflow (a mass times a squared distance exceeds "
+            "1e308); numbers are limited to 1e60 in SI units",
+        )
     problem = tensor_problem(mp.inertia_com, rtol=1e-7)
     if problem:
-        node = items["parts"][1] if "parts" in items else root
         raise ctx.error(
             node,
             f"the body's inertia is not physically possible: {problem} "
