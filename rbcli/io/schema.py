@@ -23,12 +23,12 @@ def _vec(n: int) -> dict:
     return {"type": "array", "items": {"$ref": "#/definitions/quantity"}, "minItems": n, "maxItems": n}
 
 
-def _param_schema(key: str) -> dict:
+def _param_schema(key: str, shape: str) -> dict:
     kind = b.PARAM_KINDS.get(key, "length")
     if kind == "length":
         return {"$ref": "#/definitions/quantity"}
     if kind == "lengths":
-        return {"type": "array", "items": {"$ref": "#/definitions/quantity"}, "minItems": 2, "maxItems": 3}
+        return _vec(2 if shape == "plate" else 3)  # plate size [a, b]; box size, semi_axes [a, b, c]
     if kind == "points":
         return {"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3}
     return {"type": "boolean"}
@@ -55,18 +55,21 @@ def _part_variant(shape: str, props: dict, required: list[str]) -> dict:
     }
 
 
-def body_schema() -> dict:
+def _variants(extra: dict) -> list[dict]:
+    """One if/then per shape; ``extra`` adds keys every shape accepts (the single-part form
+    also takes the body's ``units`` and ``rbcli``)."""
     variants = []
     for name, info in SHAPES.items():
-        props = {"shape": {"const": name}, **COMMON}
+        props = {"shape": {"const": name}, **COMMON, **extra}
         for key in (*info.required, *info.optional):
-            props[key] = _param_schema(key)
+            props[key] = _param_schema(key, name)
         if name == "rod":
             props["from"] = _vec(3)
             props["to"] = _vec(3)
         required = ["shape"] + ([] if name == "rod" else list(info.required))
         variants.append(_part_variant(name, props, required))
     given = {k: COMMON[k] for k in ("name", "subtract", "at", "axis", "rotate", "mass")}
+    given.update(extra)
     given.update(
         shape={"const": "given"},
         com=_vec(3),
@@ -87,9 +90,11 @@ def body_schema() -> dict:
     )
     variants.append(_part_variant("given", given, ["shape", "mass", "inertia"]))
     include = {k: COMMON[k] for k in ("name", "at", "axis", "rotate")}
+    include.update(extra)
     include.update(shape={"const": "include"}, file={"type": "string"})
     variants.append(_part_variant("include", include, ["shape", "file"]))
     mesh = {k: COMMON[k] for k in ("name", "subtract", "cut_from", "at", "axis", "rotate", "mass", "density")}
+    mesh.update(extra)
     mesh.update(
         shape={"const": "mesh"},
         file={"type": "string", "description": "STL (binary or ASCII) or OBJ, relative to this file"},
@@ -98,12 +103,16 @@ def body_schema() -> dict:
         allow_open={"type": "boolean"},
     )
     variants.append(_part_variant("mesh", mesh, ["shape", "file"]))
+    return variants
+
+
+def body_schema() -> dict:
     shapes = [*SHAPES, *b.SPECIAL_SHAPES]
     part = {
         "type": "object",
         "properties": {"shape": {"enum": shapes}},
         "required": ["shape"],
-        "allOf": variants,
+        "allOf": _variants({}),
     }
     units = {
         "type": "object",
@@ -133,17 +142,20 @@ def body_schema() -> dict:
         "required": ["parts"],
         "additionalProperties": False,
     }
+    # the one-part shorthand: a part that may also carry the body's units and version
     shorthand = {
-        "allOf": [{"$ref": "#/definitions/part"}],
+        "type": "object",
+        "properties": {"shape": {"enum": shapes}},
         "required": ["shape"],
+        "allOf": _variants({"units": {"$ref": "#/definitions/units"}, "rbcli": {"const": 1}}),
     }
     rotate = {
         "type": "object",
         "oneOf": [
             {"properties": {"axis": _vec(3), "angle": {"$ref": "#/definitions/quantity"}}, "required": ["axis", "angle"], "additionalProperties": False},
             {"properties": {"euler": {"type": "array", "items": {"$ref": "#/definitions/quantity"}, "minItems": 1, "maxItems": 3}, "seq": {"type": "string", "pattern": "^([xyz]{1,3}|[XYZ]{1,3})$"}}, "required": ["euler", "seq"], "additionalProperties": False},
-            {"properties": {"quaternion": {"type": "array", "items": {"type": "number"}, "minItems": 4, "maxItems": 4}}, "required": ["quaternion"], "additionalProperties": False},
-            {"properties": {"matrix": {"type": "array", "items": {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3}, "minItems": 3, "maxItems": 3}}, "required": ["matrix"], "additionalProperties": False},
+            {"properties": {"quaternion": _vec(4)}, "required": ["quaternion"], "additionalProperties": False},
+            {"properties": {"matrix": {"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3}}, "required": ["matrix"], "additionalProperties": False},
         ],
     }
     return {
