@@ -19,6 +19,9 @@ class Env:
     color: bool
     width: int | None = None
     debug: bool = False
+    #: set once standard output has been closed by its reader (``| head -1``): there is no
+    #: one left to read, so a batch may stop early
+    pipe_closed: bool = False
 
     @classmethod
     def from_process(cls) -> "Env":
@@ -35,6 +38,7 @@ class Env:
             self.stdout.write(text)
             self.stdout.flush()
         except BrokenPipeError:
+            self.pipe_closed = True
             _silence_stdout()
 
     def warn(self, text: str) -> None:

@@ -83,6 +83,8 @@ def _run(bodies, expr, json_, e, one) -> None:
     from rbcli.errors import InputError
 
     for src, body in c.each_body(bodies, expr, e):
+        if e.pipe_closed:  # the reader has gone (| head -1): nobody reads the rest
+            break
         if isinstance(body, InputError):
             if len(srcs) == 1:
                 raise body
