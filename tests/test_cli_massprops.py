@@ -1,0 +1,328 @@
+"""Behaviour of ``rbcli inertia`` and ``rbcli principal`` through the command line.
+
+Most cases run in-process (typer's CliRunner, or ``rbcli.cli.main`` for exit codes and
+standard error); what only a real process shows (exit status, standard error with no
+traceback, colour, a closed pipe, ``python -m rbcli``, the import budget) runs through
+``[sys.executable, "-m", "rbcli", ...]``.
+
+Expected numbers are closed forms worked here (the course's square lamina about a
+corner: m a^2 [[1/3, -1/4, 0], [-1/4, 1/3, 0], [0, 0, 2/3]]), not rbcli's own output.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import rbcli.cli
+from rbcli.cli import app
+
+ROOT = Path(__file__).resolve().parent.parent
+EX = ROOT / "examples"
+LAMINA = str(EX / "square_lamina.yaml")  # m = 1 kg, a = 1 m, corner at the origin
+FAN = str(EX / "two_blade_fan.yaml")
+CUBE = str(EX / "cube.yaml")
+BOX = "{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}"
+ANSI = re.compile(r"\x1b\[")
+
+INERTIA_KEYS = {"mass", "com", "reference", "inertia", "inertia_com"}
+AXIS_KEYS = {"axis", "axis_moment"}
+OMEGA_KEYS = {"omega", "angular_momentum", "kinetic_energy", "angle_L_omega_deg"}
+PRINCIPAL_KEYS = {"reference", "moments", "axes", "symmetry", "stable"}
+
+
+def run(*args: str, input: str | None = None):
+    r = CliRunner().invoke(app, list(args), input=input)
+    if r.exception and not isinstance(r.exception, SystemExit):
+        raise r.exception
+    return r
+
+
+def js(*args: str, input: str | None = None) -> dict:
+    r = run(*args, "--json", input=input)
+    assert r.exit_code == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def main(capsys, *args: str) -> tuple[int, str, str]:
+    """rbcli.cli.main in-process: (exit status, stdout, stderr)."""
+    with pytest.raises(SystemExit) as info:
+        rbcli.cli.main(list(args))
+    out = capsys.readouterr()
+    code = info.value.code
+    return (0 if code is None else int(code)), out.out, out.err
+
+
+def proc(*args: str, env: dict | None = None, **kw) -> subprocess.CompletedProcess:
+    e = {**os.environ, **(env or {})}
+    e.pop("NO_COLOR", None) if env is None or "NO_COLOR" not in env else None
+    return subprocess.run([sys.executable, "-m", "rbcli", *args], capture_output=True, text=True,
+                          env=e, cwd=ROOT, timeout=60, **kw)
+
+
+# --------------------------------------------------------------------------- JSON keys
+
+def test_inertia_json_has_exactly_the_spec_keys_and_the_asked_ones():
+    plain = js("inertia", LAMINA)
+    assert INERTIA_KEYS <= set(plain) and not (AXIS_KEYS | OMEGA_KEYS) & set(plain)
+    with_axis = js("inertia", LAMINA, "--axis", "1,1,0")
+    assert INERTIA_KEYS | AXIS_KEYS <= set(with_axis) and not OMEGA_KEYS & set(with_axis)
+    with_omega = js("inertia", LAMINA, "--omega", "1,0,0")
+    assert INERTIA_KEYS | OMEGA_KEYS <= set(with_omega) and not AXIS_KEYS & set(with_omega)
+    both = js("inertia", LAMINA, "--omega", "1,0,0", "--axis", "1,1,0")
+    assert INERTIA_KEYS | AXIS_KEYS | OMEGA_KEYS <= set(both)
+    # SPEC keys first, in the order SPEC lists them; the extras come after
+    assert list(plain)[:5] == ["mass", "com", "reference", "inertia", "inertia_com"]
+    assert plain["file"] == LAMINA and plain["name"] == "Square lamina about a corner"
+
+
+def test_inertia_json_values_are_the_course_lamina():
+    j = js("inertia", LAMINA, "--axis", "1,1,0", "--omega", "1,0,0")
+    # m = 1, a = 1: one multiplication each, so round-off only (rel 1e-12)
+    assert j["mass"] == pytest.approx(1.0, rel=1e-12)
+    assert j["com"] == pytest.approx([0.5, 0.5, 0.0], rel=1e-12)
+    course = [[1 / 3, -1 / 4, 0], [-1 / 4, 1 / 3, 0], [0, 0, 2 / 3]]
+    for row, want in zip(j["inertia"], course):
+        assert row == pytest.approx(want, rel=1e-12, abs=1e-15)
+    assert j["axis"] == pytest.approx([1 / math.sqrt(2), 1 / math.sqrt(2), 0], rel=1e-12)
+    assert j["axis_moment"] == pytest.approx(1 / 12, rel=1e-12)  # m a^2/12 about the diagonal
+    assert j["angular_momentum"] == pytest.approx([1 / 3, -1 / 4, 0], rel=1e-12, abs=1e-15)
+    assert j["kinetic_energy"] == pytest.approx(1 / 6, rel=1e-12)
+    assert j["angle_L_omega_deg"] == pytest.approx(math.degrees(math.atan(0.75)), rel=1e-12)
+
+
+def test_principal_json_keys_and_values():
+    j = js("principal", LAMINA, "--about", "origin")
+    assert PRINCIPAL_KEYS <= set(j) and list(j)[:5] == ["reference", "moments", "axes", "symmetry", "stable"]
+    assert j["moments"] == pytest.approx([1 / 12, 7 / 12, 2 / 3], rel=1e-12)
+    assert j["symmetry"] == "asymmetric" and j["stable"] == [True, False, True]
+    cube = js("principal", CUBE)
+    assert cube["symmetry"] == "spherical" and cube["axes"] == [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+
+
+def test_omega_with_units_and_about_a_point():
+    # 60 rpm = 2 pi rad/s about z; the lamina about its corner: Izz = 2/3
+    j = js("inertia", LAMINA, "--omega", "0,0,60 rpm")
+    assert j["omega"] == pytest.approx([0, 0, 2 * math.pi], rel=1e-15)
+    assert j["angular_momentum"][2] == pytest.approx(2 / 3 * 2 * math.pi, rel=1e-12)
+    # about the com (0.5, 0.5, 0): the lamina's centroidal tensor, diag(1/12, 1/12, 1/6)
+    c = js("inertia", LAMINA, "--about", "com")
+    assert c["reference"] == pytest.approx([0.5, 0.5, 0])
+    assert [c["inertia"][i][i] for i in range(3)] == pytest.approx([1 / 12, 1 / 12, 1 / 6], rel=1e-12)
+    mm = js("inertia", LAMINA, "--about", "500 mm,50 cm,0")
+    assert mm["inertia"] == c["inertia"]
+
+
+# --------------------------------------------------------------------------- batches, stdin, -e
+
+def test_several_bodies_with_json_give_json_lines_each_with_file():
+    for cmd in ("inertia", "principal"):
+        r = run(cmd, LAMINA, FAN, CUBE, "--json")
+        lines = r.stdout.splitlines()
+        assert r.exit_code == 0 and len(lines) == 3
+        assert [json.loads(line)["file"] for line in lines] == [LAMINA, FAN, CUBE]
+
+
+def test_a_bad_file_in_a_batch_does_not_stop_the_others(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("parts:\n  - {shape: box, size: [1, 1, 1], mass: true}\n")
+    r = run("inertia", LAMINA, str(bad), CUBE, "--json")
+    assert r.exit_code == 2
+    assert [json.loads(x)["file"] for x in r.stdout.splitlines()] == [LAMINA, CUBE]
+    assert f"rbcli: {bad}:2:41: " in r.stderr  # at the value true
+
+
+def test_stdin_and_expr():
+    text = Path(LAMINA).read_text()
+    j = js("inertia", "-", input=text)
+    assert j["file"] == "<stdin>" and j["inertia"][0][1] == pytest.approx(-0.25, rel=1e-12)
+    e = js("inertia", "-e", BOX)
+    # box 0.1 x 0.2 x 0.3 of 2 kg about its centre: Ixx = m (b^2 + c^2)/12 = 2 (0.04 + 0.09)/12
+    assert e["file"] == "<expr>" and e["inertia"][0][0] == pytest.approx(2 * 0.13 / 12, rel=1e-12)
+
+
+# --------------------------------------------------------------------------- tables
+
+def test_tables_are_deterministic_bytes():
+    for args in (("inertia", LAMINA, "--axis", "1,1,0", "--omega", "1,2,3"), ("principal", FAN),
+                 ("inertia", LAMINA, FAN, "--json"), ("principal", CUBE, "--json")):
+        assert run(*args).stdout == run(*args).stdout
+
+
+def test_digits():
+    six = run("inertia", LAMINA, "--axis", "1,1,0").stdout
+    three = run("inertia", LAMINA, "--axis", "1,1,0", "--digits", "3").stdout
+    assert "0.0833333" in six and "0.333333" in six  # 1/12 and 1/3 to six figures
+    assert "0.0833 " in three and "0.0833333" not in three
+
+
+def test_display_units_convert_the_numbers():
+    out = run("inertia", LAMINA, "--about", "com", "--units", "mm,g").stdout
+    # 1/12 kg m^2 = 1000 g x 1e6 mm^2 / 12 = 8.33333e+07 g mm^2; the com 0.5 m = 500 mm
+    assert "g·mm²" in out and "8.33333e+07" in out
+    assert re.search(r"com x\s*\|\s*500\s*\|\s*mm", out)
+    js_mm = js("inertia", LAMINA, "--units", "mm,g")
+    assert js_mm["mass"] == 1.0  # JSON stays SI
+
+
+def test_products_positive_flips_the_signs_and_says_so():
+    tensor = run("inertia", LAMINA).stdout
+    positive = run("inertia", LAMINA, "--products", "positive").stdout
+    # the tensor's entry is -1/4; the positive product Ixy = +integral(x y dm) = +1/4
+    assert re.search(r"x\s*\|\s*0\.333333\s*\|\s*-0\.25", tensor)
+    assert re.search(r"Ixy = \+∫xy dm\s*\|\s*0\.25\s*\|", positive)
+    assert "positive products" in positive and "-0.25" not in positive
+
+
+def test_principal_table_says_the_symmetry():
+    assert "spherical" in run("principal", CUBE).stdout
+    fan = run("principal", FAN).stdout
+    assert "asymmetric" in fan and "unstable" in fan
+
+
+# --------------------------------------------------------------------------- errors, in-process
+
+@pytest.mark.parametrize(
+    "args, fragment",
+    [
+        (("inertia", "-e", "{shape: box, mass: true, size: [1, 2, 3]}"),
+         "rbcli: <expr>:1:20: part 'box1': mass must be a number"),
+        (("inertia", "nothere.yaml"), "rbcli: no such file: nothere.yaml"),
+        (("inertia", LAMINA, "--products", "pos"), "--products must be 'tensor' or 'positive'"),
+        (("inertia", LAMINA, "--axis", "0,0,0"), "--axis: the direction must be a non-zero vector"),
+        (("inertia", LAMINA, "--omega", "1 Hz,0,0"), "--omega: '1 Hz' is a frequency"),
+        (("inertia", LAMINA, "--omega", "1e300,0,0"), "--omega: the angular momentum or kinetic energy overflows"),
+        (("inertia", LAMINA, "--about", "1e300,0,0"), "--about: the inertia about this point overflows"),
+        (("principal", LAMINA, "--about", "1e300,0,0"), "--about: the inertia about this point overflows"),
+        (("inertia", LAMINA, "--units", "deg"), "--units: 'deg' is not a length, mass or time unit"),
+        (("inertia",), "no body given"),
+        (("inertia", LAMINA, "-e", BOX), "give either BODY files or -e/--expr, not both"),
+    ],
+)
+def test_bad_input_exits_2_with_one_line(capsys, args, fragment):
+    code, out, err = main(capsys, *args)
+    assert code == 2 and out == ""
+    assert fragment in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_tiny_axis_is_a_direction(capsys):
+    code, out, _ = main(capsys, "inertia", LAMINA, "--axis", "1e-320,1e-320,0", "--json")
+    assert code == 0 and json.loads(out)["axis_moment"] == pytest.approx(1 / 12, rel=1e-12)
+
+
+def test_internal_error_exits_70_with_a_this_is_a_bug_line(capsys, monkeypatch):
+    import rbcli.core.inertia as core
+
+    def boom(*a, **k):
+        raise ZeroDivisionError("boom")
+
+    monkeypatch.setattr(core, "inertia_report", boom)
+    code, out, err = main(capsys, "inertia", "-e", BOX)
+    assert code == 70
+    assert err.startswith("rbcli: internal error (ZeroDivisionError: boom); this is a bug")
+    assert err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_ctrl_c_exits_130(capsys, monkeypatch):
+    import rbcli.core.inertia as core
+
+    def interrupted(*a, **k):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(core, "inertia_report", interrupted)
+    code, _, err = main(capsys, "inertia", "-e", BOX)
+    assert code == 130 and "Traceback" not in err
+
+
+# --------------------------------------------------------------------------- real processes
+
+def test_exit_codes_and_one_line_errors_in_a_real_process(tmp_path):
+    ok = proc("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0")
+    assert ok.returncode == 0 and "0.0833333" in ok.stdout and ok.stderr == ""
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("parts:\n  - shape: box\n    size: [1, 1, 1]\n    mass: '3 m'\n")
+    r = proc("inertia", str(bad))
+    assert r.returncode == 2 and r.stdout == ""
+    assert r.stderr == f"rbcli: {bad}:4:11: part 'box1': mass: '3 m' is a length, but a mass is needed here (e.g. kg, g, lb)\n"
+
+
+def test_stdin_in_a_real_process():
+    r = proc("principal", "-", "--json", input=Path(CUBE).read_text())
+    assert r.returncode == 0 and json.loads(r.stdout)["symmetry"] == "spherical"
+
+
+def test_no_ansi_escapes_in_a_pipe_or_with_no_color():
+    r = proc("inertia", "examples/cube.yaml")
+    assert r.returncode == 0 and not ANSI.search(r.stdout)
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="needs a pseudo-terminal")
+def test_a_terminal_gets_colour_unless_no_color():
+    import pty
+
+    def on_tty(extra_env: dict) -> bytes:
+        master, slave = pty.openpty()
+        env = {k: v for k, v in os.environ.items() if k != "NO_COLOR"}
+        env.update(extra_env, TERM="xterm")
+        p = subprocess.Popen([sys.executable, "-m", "rbcli", "inertia", "examples/cube.yaml"],
+                             stdout=slave, stderr=subprocess.DEVNULL, cwd=ROOT, env=env)
+        os.close(slave)
+        chunks = []
+        while True:
+            try:
+                data = os.read(master, 65536)
+            except OSError:  # EIO once the child has closed the terminal
+                break
+            if not data:
+                break
+            chunks.append(data)
+        p.wait(timeout=60)
+        os.close(master)
+        return b"".join(chunks)
+
+    assert b"\x1b[" in on_tty({})  # the test can tell: a terminal does get bold headings
+    plain = on_tty({"NO_COLOR": "1"})
+    assert b"Steel cube" in plain and b"\x1b[" not in plain
+
+
+def test_a_closed_pipe_is_quiet():
+    # enough output to fill the pipe (~200 tables), then the reader goes away after one line
+    for extra in ((), ("--json",)):
+        p = subprocess.Popen([sys.executable, "-m", "rbcli", "inertia", *extra, *["examples/bracket.yaml"] * 200],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+        p.stdout.readline()
+        p.stdout.close()
+        err = p.stderr.read()
+        p.stderr.close()
+        assert p.wait(timeout=60) == 0
+        assert err == b"", err
+
+
+def test_version_help_and_python_m_rbcli():
+    from rbcli import __version__
+
+    v = proc("--version")
+    assert v.returncode == 0 and v.stdout == f"rbcli {__version__}\n"
+    h = proc("--help")
+    assert h.returncode == 0 and "inertia" in h.stdout and "principal" in h.stdout
+    ih = proc("inertia", "--help")
+    assert ih.returncode == 0 and "--products" in ih.stdout and "--omega" in ih.stdout
+
+
+def test_importing_the_cli_loads_no_heavy_modules():
+    code = (
+        "import sys, rbcli.cli\n"
+        "print(','.join(m for m in ('numpy', 'scipy', 'matplotlib', 'pint', 'yaml', 'rich', 'trimesh')"
+        " if m in sys.modules))"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "", f"import rbcli.cli loaded: {r.stdout.strip()}"
