@@ -1,0 +1,158 @@
+"""Fuzz-style tests: whatever a body file holds, loading it ends in a body or a located
+InputError (exit 2), never any other exception, never a numpy warning on standard error.
+
+Inputs: random text and bytes, YAML-ish text, and random mutations of the bundled
+examples (lines deleted, duplicated, swapped, re-indented; numbers replaced by strings,
+booleans, nulls, huge, tiny, negative or non-finite values, quantities of the wrong
+dimension; tags, anchors and flow punctuation inserted; keys renamed to other keys; random
+unicode). A few mutated files also go through a real ``python -m rbcli`` process.
+"""
+
+from __future__ import annotations
+
+import os
+import random
+import re
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rbcli.errors import InputError
+from rbcli.io.body import load_text
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
+TEXTS = [p.read_text(encoding="utf-8") for p in EXAMPLES]
+
+TOKENS = [
+    "true", "false", "null", "~", "", "0", "-1", "-0.0", "1e999", "-1e999", "1e300", "1e61", "1e-320",
+    ".inf", "-.inf", ".nan", "0x1F", "0o17", "017", "1:30", "no", "yes", "on", "'x'", '"3 Hz"', "'1 rpm'",
+    "'12 deg'", "'1e400 m'", "'5 kg/m^3'", "'2 lb'", "'-3 mm'", "[1, 2]", "[]", "{}", "{a: 1}", "[[1, 2, 3]]",
+    "!!python/object/apply:os.system ['true']", "!!str 1", "&a 1", "*a", "<<: {x: 1}", "? complex",
+    "{", "}", "[", "]", ":", ",", "- ", "-", "#", "|", ">", "'", '"', "\t", "%YAML 1.2", "---", "...",
+    "\u2028", "\x85", "\ufeff", "\x00", "\x1b", "é", "😀", "1" * 400,
+    "shape: include\n    file: cube.yaml", "shape: include\n    file: nothere.yaml", "shape: given",
+    "subtract: true", "cut_from: base", "cut_from: nothere", "axis: [0, 0, 0]", "rotate: {quaternion: [0, 0, 0, 0]}",
+    "rotate: {euler: [1, 2, 3], seq: ZZZ}", "rotate: {matrix: [[1, 0, 0], [0, 1, 0], [0, 0, -1]]}",
+    "units: {length: mm}", "units: {length: kg}", "rbcli: 2", "reference: com", "pivot: com",
+]
+KEYS = [
+    "name", "shape", "size", "mass", "density", "areal_density", "linear_density", "at", "axis", "rotate",
+    "radius", "inner_radius", "length", "height", "thickness", "shell", "from", "to", "vertices",
+    "semi_axes", "major_radius", "minor_radius", "com", "inertia", "file", "subtract", "cut_from",
+    "units", "parts", "reference", "shaft", "pivot", "rim_radius", "rbcli", "description", "colour",
+]
+NUMBER = re.compile(r"-?\d+(\.\d+)?")
+KEY = re.compile(r"\b[a-z_]+(?=:)")
+
+
+@st.composite
+def mutated(draw) -> str:
+    lines = draw(st.sampled_from(TEXTS)).split("\n")
+    for _ in range(draw(st.integers(1, 4))):
+        i = draw(st.integers(0, len(lines) - 1))
+        op = draw(st.sampled_from(["delete", "duplicate", "swap", "number", "insert", "unicode", "key", "indent"]))
+        if op == "delete" and len(lines) > 1:
+            del lines[i]
+        elif op == "duplicate":
+            lines.insert(i, lines[draw(st.integers(0, len(lines) - 1))])
+        elif op == "swap":
+            j = draw(st.integers(0, len(lines) - 1))
+            lines[i], lines[j] = lines[j], lines[i]
+        elif op == "number":
+            token = draw(st.sampled_from(TOKENS))
+            lines[i] = NUMBER.sub(lambda m: token, lines[i], count=1)
+        elif op == "insert":
+            k = draw(st.integers(0, len(lines[i])))
+            lines[i] = lines[i][:k] + draw(st.sampled_from(TOKENS)) + lines[i][k:]
+        elif op == "unicode":
+            k = draw(st.integers(0, len(lines[i])))
+            lines[i] = lines[i][:k] + draw(st.text(min_size=1, max_size=3)) + lines[i][k:]
+        elif op == "key":
+            key = draw(st.sampled_from(KEYS))
+            lines[i] = KEY.sub(lambda m: key, lines[i], count=1)
+        else:
+            lines[i] = " " * draw(st.integers(0, 6)) + lines[i].lstrip()
+    return "\n".join(lines)
+
+
+def load_or_input_error(data: str | bytes) -> None:
+    """The property: a body, or an InputError with a location; nothing else, no warnings."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # numpy overflow/invalid would be noise
+        try:
+            body = load_text(data, "fuzz.yaml", ROOT / "examples")
+        except InputError as exc:
+            assert exc.where is not None and exc.where.file, exc
+            assert "\n" not in str(exc) and exc.message, repr(str(exc))
+            return
+    assert body.parts  # a loaded body always has parts
+
+
+FUZZ = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+@FUZZ
+@given(text=mutated())
+def test_mutated_examples_load_or_give_an_input_error(text):
+    load_or_input_error(text)
+
+
+@settings(max_examples=150, deadline=None)
+@given(text=st.text(max_size=300))
+def test_random_text_loads_or_gives_an_input_error(text):
+    load_or_input_error(text)
+
+
+YAMLISH = st.text(alphabet=list("parts:shape box{}[],-&*!|>'\"#\n 0123456789.e+-mass:size\t~nul"), max_size=200)
+
+
+@settings(max_examples=150, deadline=None)
+@given(text=YAMLISH)
+def test_yaml_like_text_loads_or_gives_an_input_error(text):
+    load_or_input_error(text)
+
+
+@settings(max_examples=100, deadline=None)
+@given(data=st.binary(max_size=200))
+def test_random_bytes_load_or_give_an_input_error(data):
+    load_or_input_error(data)
+
+
+def test_hostile_classics():
+    nested = "parts: " + "[" * 10000 + "]" * 10000
+    billion_laughs = "a: &a [1, 1]\nb: &b [*a, *a]\nc: [*b, *b]\nparts: *c\n"
+    for text in (nested, billion_laughs, "parts:\n  - {shape: point, mass: !!python/object/apply:os.system ['true']}\n",
+                 "\x00" * 10, "---\nparts: []\n---\nparts: []\n", "1" * 10_000):
+        load_or_input_error(text)
+
+
+def test_mutated_files_through_a_real_process(tmp_path):
+    rng = random.Random(20240613)  # fixed: the same files every run
+    files = []
+    for k in range(25):
+        lines = rng.choice(TEXTS).split("\n")
+        for _ in range(rng.randint(1, 3)):
+            i = rng.randrange(len(lines))
+            token = rng.choice(TOKENS)
+            if rng.random() < 0.5:
+                lines[i] = NUMBER.sub(lambda m: token, lines[i], count=1)
+            else:
+                j = rng.randint(0, len(lines[i]))
+                lines[i] = lines[i][:j] + token + lines[i][j:]
+        f = tmp_path / f"m{k}.yaml"
+        f.write_text("\n".join(lines), encoding="utf-8", errors="surrogatepass")
+        files.append(str(f))
+    env = {k: v for k, v in os.environ.items() if k != "NO_COLOR"}
+    r = subprocess.run([sys.executable, "-m", "rbcli", "inertia", "--json", *files],
+                       capture_output=True, text=True, cwd=ROOT, env=env, timeout=120)
+    assert r.returncode in (0, 2), r.stderr
+    assert "Traceback" not in r.stderr and "Warning" not in r.stderr
+    for line in r.stderr.splitlines():
+        assert line.startswith("rbcli: "), line
+    # every file either printed a result or gave exactly one error line
+    assert len(r.stdout.splitlines()) + len(r.stderr.splitlines()) == len(files)
