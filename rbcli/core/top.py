@@ -1,0 +1,1149 @@
+"""Heavy symmetric top on a fixed pivot, and the gyrocompass: exact closed forms.
+
+Everything here is pure physics in SI units: no I/O, no printing. The formulas and
+their sources are in the physics sheet ``/work/shared/physics/dynamics.md`` §2 (the
+heavy top, Goldstein 3rd ed. §5.7 notation) and §4b (implementation pitfalls).
+
+Conventions
+-----------
+- ``theta`` is the tilt of the symmetry axis from the upward vertical, ``phi`` the
+  azimuth of the axis about the vertical (from the space x axis towards y), ``psi``
+  the spin angle. The attitude is ``R = Rz(phi) Ry(theta) Rz(psi)``, so the axis
+  (body z) points along ``(sin θ cos φ, sin θ sin φ, cos θ)`` and the angular velocity
+  is ``ω = φ' ẑ + θ' Rz(φ)ŷ + ψ' e3``.
+- ``spin`` S is the component of the angular velocity along the symmetry axis
+  (ω3 = ψ' + φ' cos θ), never the Euler-angle rate ψ'.
+- ``u = cos θ``. The turning points of the cubic are ``u1 <= u2 <= 1 < u3``; the axis
+  moves between ``θ1 = arccos u2`` (least tilt) and ``θ2 = arccos u1`` (greatest tilt).
+
+Numerics
+--------
+The cubic ``f(u)`` is solved in the shifted variable ``x = u - u0`` whose coefficients
+come straight from the initial data (``f(u0) = sin²θ0 θ0'²``). Near steady precession
+the two lower roots are then as well conditioned as the data, so no separate "steady"
+branch is needed and nothing turns into NaN as the band closes (the elliptic formulas
+tend smoothly to m = 0). Incomplete and complete integrals of the first and third
+kinds are built from Carlson's ``elliprf``/``elliprj`` with the complementary
+quantities (1 - m, 1 - n, 1 - u) carried separately so that no digits are lost.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+#: Standard gravity, m/s^2 (SPEC §2 default of ``--g``).
+STANDARD_GRAVITY = 9.80665
+#: Earth's sidereal rotation rate, rad/s (sheet §2, gyrocompass).
+EARTH_RATE = 7.2921150e-5
+#: A motion whose nutation band u2 - u1 is within this many round-off units of the
+#: cubic's coefficients (see ``analyse``) is reported as steady precession.
+STEADY_ULPS = 1e3
+#: The apex point u' = b/a within this fraction of the band of a turning point: cusps.
+CUSP_RTOL = 1e-9
+#: Pivot closer to the com than this fraction of the body's size: no top.
+PIVOT_AT_COM_RTOL = 1e-9
+#: |cos θ0| below this: the axis is horizontal and the fast steady root is infinite.
+HORIZONTAL_COS = 4.0 * np.finfo(float).eps
+
+
+class PivotAtCom(ValueError):
+    """The pivot is at the centre of mass: there is no gravity torque, no heavy top."""
+
+
+# --------------------------------------------------------------------------------------
+# small helpers
+
+
+def _num(x: float) -> str:
+    """A short number for messages: 1.2e-3, 0.04, 22."""
+    x = float(x)
+    if x == 0.0:
+        return "0"
+    if 1e-2 <= abs(x) < 1e4:
+        return f"{x:.3g}"
+    mant, exp = f"{x:.2e}".split("e")
+    mant = mant.rstrip("0").rstrip(".")
+    return f"{mant}e{int(exp)}"
+
+
+def _finite(name: str, x: float) -> float:
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, not {x!r}") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be a finite number, not {v}")
+    return v
+
+
+def _j(x: float | None) -> float | None:
+    """A JSON-safe float: None for None or a non-finite value."""
+    if x is None:
+        return None
+    v = float(x)
+    return v if math.isfinite(v) else None
+
+
+def _carlson_F(phi: np.ndarray, m1: float) -> np.ndarray:
+    """F(φ|m) for |φ| <= π/2, from RF, with m1 = 1 - m given exactly."""
+    from scipy.special import elliprf
+
+    s = np.sin(phi)
+    c = np.cos(phi)
+    return s * elliprf(c * c, c * c + m1 * s * s, 1.0)
+
+
+def _carlson_Pi(n: float, n1: float, phi: np.ndarray, m1: float) -> np.ndarray:
+    """Π(n; φ|m) for |φ| <= π/2 (sheet §0): s RF(c², 1-ms², 1) + n/3 s³ RJ(c², 1-ms², 1, 1-ns²).
+
+    ``n1 = 1 - n`` and ``m1 = 1 - m`` are passed separately so that 1 - m s² = c² + m1 s²
+    and 1 - n s² = c² + n1 s² keep their digits.
+    """
+    from scipy.special import elliprc, elliprf, elliprj
+
+    s = np.sin(phi)
+    c = np.cos(phi)
+    c2 = c * c
+    s2 = s * s
+    y = c2 + m1 * s2
+    if n < -1.0:
+        # F and n/3 s³ RJ nearly cancel for n ≪ -1. Use n·ω = m (DLMF 19.7.9 in Carlson form):
+        # Π(n) = F - Π(ω) + s RC(c²Δ², (1-ns²)(1-ωs²)) and F - Π(ω) = -ω/3 s³ RJ(.., 1-ωs²),
+        # two positive terms.
+        om = (1.0 - m1) / n
+        out = -(om / 3.0) * s * s2 * elliprj(c2, y, 1.0, 1.0 - om * s2)
+        return out + s * elliprc(c2 * y, (c2 + n1 * s2) * (1.0 - om * s2))
+    out = s * elliprf(c2, y, 1.0)
+    if n != 0.0:
+        out = out + (n / 3.0) * s * s2 * elliprj(c2, y, 1.0, c2 + n1 * s2)
+    return out
+
+
+def _complete_Pi(n: float, n1: float, m1: float) -> float:
+    """Π(n|m) = RF(0, 1-m, 1) + n/3 RJ(0, 1-m, 1, 1-n) (sheet §0); see _carlson_Pi for n < -1."""
+    if n < -1.0:
+        return float(_carlson_Pi(n, n1, np.asarray(0.5 * np.pi), m1))
+    from scipy.special import elliprf, elliprj
+
+    out = float(elliprf(0.0, m1, 1.0))
+    if n != 0.0:
+        out += n / 3.0 * float(elliprj(0.0, m1, 1.0, n1))
+    return out
+
+
+# --------------------------------------------------------------------------------------
+# the top's parameters
+
+
+@dataclass(frozen=True)
+class TopParams:
+    """Mass properties of a symmetric top about its pivot.
+
+    Attributes
+    ----------
+    mass : float — kg
+    length : float — m, distance l from the pivot to the centre of mass
+    I : float — kg m^2, moment about the pivot across the symmetry axis (I_cm + m l²)
+    Is : float — kg m^2, moment about the symmetry axis
+    axis : tuple[float, float, float] | None — unit symmetry axis e3 in the body frame,
+        pointing from the pivot to the com (None when built from numbers)
+    pivot : tuple[float, float, float] | None — m, body frame
+    com : tuple[float, float, float] | None — m, body frame
+    """
+
+    mass: float
+    length: float
+    I: float  # noqa: E741 - the sheet's name
+    Is: float
+    axis: tuple[float, float, float] | None = None
+    pivot: tuple[float, float, float] | None = None
+    com: tuple[float, float, float] | None = None
+
+    def __post_init__(self) -> None:
+        for name in ("mass", "length", "I", "Is"):
+            v = _finite(name, getattr(self, name))
+            if v <= 0.0:
+                raise ValueError(f"{name} of a top must be positive, not {v}")
+
+    def to_json(self) -> dict:
+        out: dict = {"mass": self.mass, "length": self.length, "I": self.I, "Is": self.Is}
+        for k in ("axis", "pivot", "com"):
+            v = getattr(self, k)
+            out[k] = None if v is None else [float(c) for c in v]
+        return out
+
+
+def top_from_body(
+    mass: float,
+    com: np.ndarray,
+    inertia_com: np.ndarray,
+    pivot: np.ndarray,
+    *,
+    sym_rtol: float = 1e-6,
+) -> TopParams:
+    """Reduce a body's mass properties to a symmetric top on a pivot.
+
+    Parameters
+    ----------
+    mass : float — kg, > 0
+    com : (3,) array_like — m, centre of mass in the body frame
+    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
+        convention: off-diagonals are -∫xy dm)
+    pivot : (3,) array_like — m, the fixed point, body frame
+    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis"
+
+    Returns
+    -------
+    TopParams
+
+    Raises
+    ------
+    PivotAtCom
+        The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
+        no gravity torque; the motion is free precession (``rbcli precess``).
+    ValueError
+        The two moments across the axis differ by more than ``sym_rtol`` (relative to
+        their mean), the axis is not a principal axis (its products of inertia with the
+        transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
+        about the axis is zero (a pendulum), or an input is not finite.
+
+    Notes
+    -----
+    The symmetry axis is e3 = (com - pivot)/l, l = |com - pivot| (SPEC §2 ``top``).
+    Parallel-axis theorem: I_pivot = I_com + m (l² E - d dᵀ), d = com - pivot.
+    Is = e3·I_pivot·e3 (= e3·I_com·e3); the moments across are the eigenvalues of the
+    2x2 block of I_pivot on a basis (e1, e2) of the plane normal to e3
+    (sheet §2 "Setup", §4b item 6).
+    """
+    m = _finite("mass", mass)
+    if m <= 0.0:
+        raise ValueError(f"the mass of a top must be positive, not {m}")
+    c = np.asarray(com, dtype=float).reshape(3)
+    p = np.asarray(pivot, dtype=float).reshape(3)
+    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+    if not (np.all(np.isfinite(c)) and np.all(np.isfinite(p)) and np.all(np.isfinite(J))):
+        raise ValueError("the com, pivot and inertia tensor must be finite numbers")
+    J = 0.5 * (J + J.T)
+    d = c - p
+    length = float(np.linalg.norm(d))
+    r_gyr = math.sqrt(max(float(np.trace(J)), 0.0) / (2.0 * m))
+    size = max(r_gyr, float(np.linalg.norm(c)), float(np.linalg.norm(p)))
+    if length == 0.0 or length <= PIVOT_AT_COM_RTOL * size:
+        raise PivotAtCom(
+            f"the pivot is at the centre of mass (they are {_num(length)} m apart): gravity "
+            "exerts no torque about it, so this is not a heavy top; for torque-free motion "
+            "use `rbcli precess`"
+        )
+    e3 = d / length
+    Ip = J + m * (length**2 * np.eye(3) - np.outer(d, d))
+    Is = float(e3 @ Ip @ e3)
+    # a basis of the transverse plane
+    k = int(np.argmin(np.abs(e3)))
+    e1 = np.cross(e3, np.eye(3)[k])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(e3, e1)
+    b11, b22, b12 = float(e1 @ Ip @ e1), float(e2 @ Ip @ e2), float(e1 @ Ip @ e2)
+    mean = 0.5 * (b11 + b22)
+    half = math.hypot(0.5 * (b11 - b22), b12)
+    Ia, Ib = mean - half, mean + half
+    if mean <= 0.0:
+        raise ValueError("the moment of inertia across the pivot–com axis is zero")
+    rel = (Ib - Ia) / mean
+    if rel > sym_rtol:
+        raise ValueError(
+            "the body is not symmetric about the pivot–com axis: the moments across it are "
+            f"{_num(Ia)} and {_num(Ib)} kg m² (differ by {rel * 100:.2g} %); a top needs them "
+            f"equal to a relative {_num(sym_rtol)}"
+        )
+    coupling = math.hypot(float(e1 @ Ip @ e3), float(e2 @ Ip @ e3))
+    if coupling > sym_rtol * mean:
+        raise ValueError(
+            "the pivot–com axis is not a principal axis of the body: its products of inertia "
+            f"with the plane across it are {_num(coupling)} kg m² "
+            f"({coupling / mean * 100:.2g} % of the moment across, {_num(mean)} kg m²); "
+            f"a top needs them zero to a relative {_num(sym_rtol)}"
+        )
+    if Is <= 1e-12 * mean:
+        raise ValueError(
+            f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
+            "kg m²: a point mass or a thin rod along the axis): it cannot carry spin, so it "
+            "is a spherical pendulum, not a top"
+        )
+    return TopParams(
+        mass=m,
+        length=length,
+        I=mean,
+        Is=Is,
+        axis=tuple(float(v) for v in e3),  # type: ignore[arg-type]
+        pivot=tuple(float(v) for v in p),  # type: ignore[arg-type]
+        com=tuple(float(v) for v in c),  # type: ignore[arg-type]
+    )
+
+
+# --------------------------------------------------------------------------------------
+# results
+
+
+@dataclass(frozen=True)
+class FastTop:
+    """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top").
+
+    Attributes
+    ----------
+    nutation_frequency : float — rad/s, |a| = Is|S|/I
+    nutation_amplitude : float | None — rad, θ2 - θ1 ≈ (2 I m g l/(Is S)²) sin θ0; only
+        for release from rest (θ0' = φ0' = 0), else None
+    mean_precession_rate : float — rad/s, m g l/(Is S) = β/(2a)
+    nutation_frequency_rel_error, nutation_amplitude_rel_error,
+    mean_precession_rate_rel_error : float | None — (estimate - exact)/exact; None where
+        the exact value is zero or undefined
+    """
+
+    nutation_frequency: float
+    nutation_amplitude: float | None
+    mean_precession_rate: float
+    nutation_frequency_rel_error: float | None
+    nutation_amplitude_rel_error: float | None
+    mean_precession_rate_rel_error: float | None
+
+    def to_json(self) -> dict:
+        amp = self.nutation_amplitude
+        return {
+            "nutation_frequency": _j(self.nutation_frequency),
+            "nutation_amplitude_deg": None if amp is None else _j(math.degrees(amp)),
+            "mean_precession_rate": _j(self.mean_precession_rate),
+            "nutation_frequency_rel_error": _j(self.nutation_frequency_rel_error),
+            "nutation_amplitude_rel_error": _j(self.nutation_amplitude_rel_error),
+            "mean_precession_rate_rel_error": _j(self.mean_precession_rate_rel_error),
+        }
+
+
+@dataclass(frozen=True)
+class EllipticSolution:
+    """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t).
+
+    Attributes
+    ----------
+    m, m1 : float — elliptic parameter (u2-u1)/(u3-u1) and its complement 1 - m
+    lam : float — 1/s, λ = ½ sqrt(β (u3 - u1))
+    tau0 : float — the phase at t = 0, in [-K, K] (τ = 0 is the greatest tilt, u = u1)
+    am0 : float — rad, am(τ0 | m)
+    K : float — K(m)
+    band : float — u2 - u1
+    one_minus_u1, one_plus_u1, one_minus_u2 : float — 1 - u1, 1 + u1, 1 - u2
+    cp, cm : float — 1/s, (b - a)/(2(1 - u1)) and (b + a)/(2(1 + u1))
+    n_plus, n_plus1 : float — n+ = (u2-u1)/(1-u1) and 1 - n+
+    n_minus, n_minus1 : float — the characteristic -(u2-u1)/(1+u1) and 1 minus it
+    Pi_plus, Pi_minus : float — Π(n+|m), Π(n-|m) (with n- the negative characteristic)
+    top_jump, bottom_jump : float — ±1 when the axis passes exactly through the upward
+        (u2 = 1) or downward (u1 = -1) vertical, where φ jumps by ±π at each passage; else 0
+    """
+
+    m: float
+    m1: float
+    lam: float
+    tau0: float
+    am0: float
+    K: float
+    band: float
+    one_minus_u1: float
+    one_plus_u1: float
+    one_minus_u2: float
+    cp: float
+    cm: float
+    n_plus: float
+    n_plus1: float
+    n_minus: float
+    n_minus1: float
+    Pi_plus: float
+    Pi_minus: float
+    top_jump: float = 0.0
+    bottom_jump: float = 0.0
+
+
+@dataclass(frozen=True)
+class TopMotion:
+    """The exact motion of a heavy symmetric top from a given start.
+
+    Attributes
+    ----------
+    params : TopParams — mass (kg), length l (m), I and Is (kg m², about the pivot)
+    spin : float — rad/s, S = ω3 (component of ω along the axis)
+    theta0 : float — rad, initial tilt from the upward vertical, in (0, π)
+    theta_dot0, phi_dot0 : float — rad/s, initial θ' and φ'
+    g : float — m/s²
+    a, b : float — 1/s, Goldstein's a = Is S/I and b = p_φ/I
+    alpha, beta : float — 1/s², Goldstein's α = 2E'/I and β = 2 m g l/I
+    u1, u2, u3 : float — roots of f(u), u1 <= u2 <= 1 < u3 (u = cos θ)
+    theta1, theta2 : float — rad, least and greatest tilt (arccos u2, arccos u1)
+    nutation_period : float | None — s, T_n = 2 K(m)/λ (None if infinite)
+    nutation_frequency : float | None — rad/s, 2π/T_n
+    precession_per_nutation, spin_per_nutation : float | None — rad, Δφ and Δψ per T_n
+    mean_precession_rate, mean_spin_rate : float | None — rad/s, <φ'> and <ψ'>
+    steady_precession_rates : tuple[float, ...] — rad/s, (slow, fast) at θ0; () when
+        |S| is below ``minimum_spin_for_steady``; (slow,) for a horizontal axis, where
+        the fast root is infinite
+    steady_nutation_frequencies : tuple[float, ...] — rad/s, small-nutation frequency
+        about each steady precession, same order
+    minimum_spin_for_steady : float — rad/s, sqrt(4 I m g l cos θ0)/Is (0 for θ0 >= 90°)
+    horizontal_precession_rate : float — rad/s, m g l/(Is S)
+    critical_spin : float — rad/s, sleeping-top threshold S_c = sqrt(4 I m g l)/Is
+    sleeps : bool — |S| > S_c (a top started upright would stay up)
+    apex_u : float — the u at which φ' = 0, b/a
+    path : str — "waves" (φ' keeps its sign), "loops" (φ' reverses inside the band) or
+        "cusps" (φ' = 0 at a turning point); steady precession is "waves" with
+        ``steady`` true (a wave of zero height)
+    steady : bool — θ1 = θ2 to round-off: u2 - u1 <= STEADY_ULPS · eps ·
+        (β sin²θ0 + 2|u0|(θ0'² + φ0'² sin²θ0) + 2|a φ0'| sin²θ0) / (|c2| + β(1 - u0)),
+        the band that round-off of the linear coefficient c1 alone would open
+    fast_top : FastTop — the a² ≫ β estimates and their relative errors
+    elliptic : EllipticSolution — constants used by :func:`path_at`
+    """
+
+    params: TopParams
+    spin: float
+    theta0: float
+    theta_dot0: float
+    phi_dot0: float
+    g: float
+    a: float
+    b: float
+    alpha: float
+    beta: float
+    u1: float
+    u2: float
+    u3: float
+    theta1: float
+    theta2: float
+    nutation_period: float | None
+    nutation_frequency: float | None
+    precession_per_nutation: float | None
+    spin_per_nutation: float | None
+    mean_precession_rate: float | None
+    mean_spin_rate: float | None
+    steady_precession_rates: tuple[float, ...]
+    steady_nutation_frequencies: tuple[float, ...]
+    minimum_spin_for_steady: float
+    horizontal_precession_rate: float
+    critical_spin: float
+    sleeps: bool
+    apex_u: float
+    path: str
+    steady: bool
+    fast_top: FastTop
+    elliptic: EllipticSolution = field(repr=False)
+
+    def to_json(self) -> dict:
+        """SPEC §3 ``top`` keys (SI, angles in degrees under ``*_deg``), plus extras."""
+        p = self.params
+        return {
+            "mass": float(p.mass),
+            "length": float(p.length),
+            "I": float(p.I),
+            "Is": float(p.Is),
+            "spin": float(self.spin),
+            "steady_precession_rates": [float(r) for r in self.steady_precession_rates],
+            "horizontal_precession_rate": _j(self.horizontal_precession_rate),
+            "critical_spin": _j(self.critical_spin),
+            "theta1_deg": _j(math.degrees(self.theta1)),
+            "theta2_deg": _j(math.degrees(self.theta2)),
+            "nutation_period": _j(self.nutation_period),
+            "mean_precession_rate": _j(self.mean_precession_rate),
+            "path": self.path,
+            # extras
+            "g": float(self.g),
+            "theta0_deg": math.degrees(self.theta0),
+            "theta_dot0": float(self.theta_dot0),
+            "phi_dot0": float(self.phi_dot0),
+            "steady": bool(self.steady),
+            "sleeps": bool(self.sleeps),
+            "minimum_spin_for_steady": _j(self.minimum_spin_for_steady),
+            "steady_nutation_frequencies": [float(r) for r in self.steady_nutation_frequencies],
+            "nutation_amplitude_deg": _j(math.degrees(self.theta2 - self.theta1)),
+            "nutation_frequency": _j(self.nutation_frequency),
+            "mean_spin_rate": _j(self.mean_spin_rate),
+            "precession_per_nutation": _j(self.precession_per_nutation),
+            "spin_per_nutation": _j(self.spin_per_nutation),
+            "goldstein": {
+                "a": float(self.a),
+                "b": float(self.b),
+                "alpha": float(self.alpha),
+                "beta": float(self.beta),
+            },
+            "turning_points": [float(self.u1), float(self.u2), float(self.u3)],
+            "elliptic_parameter": float(self.elliptic.m),
+            "apex_u": _j(self.apex_u),
+            "fast_top": self.fast_top.to_json(),
+        }
+
+
+# --------------------------------------------------------------------------------------
+# the analysis
+
+
+def _cubic_roots_shifted(
+    c0: float, c1: float, c2: float, beta: float, lo: float, hi: float, f_lo: float, f_hi: float
+) -> tuple[float, float, float]:
+    """Roots x1 <= 0 <= x2 < x3 of P(x) = β x³ + c2 x² + c1 x + c0, c0 >= 0.
+
+    ``lo = -(1 + u0)`` and ``hi = 1 - u0`` bracket x1 and x2 (u = ±1); ``f_lo`` and ``f_hi``
+    are the exact values -(b + a)² and -(b - a)² there.
+    """
+
+    def P(x: float) -> float:
+        return ((beta * x + c2) * x + c1) * x + c0
+
+    def dP(x: float) -> float:
+        return (3.0 * beta * x + 2.0 * c2) * x + c1
+
+    if c0 == 0.0:
+        # x = 0 is a root (released with θ0' = 0, sheet §2 "Released from rest"): deflate.
+        disc = max(c2 * c2 - 4.0 * beta * c1, 0.0)
+        q = -0.5 * (c2 + math.copysign(math.sqrt(disc), c2))
+        ra = q / beta
+        rb = c1 / q if q != 0.0 else 0.0
+        x1, x2, x3 = sorted((0.0, ra, rb))
+        return x1, x2, x3
+
+    from scipy.optimize import brentq
+
+    def bracketed(a_: float, fa: float, b_: float, fb: float) -> float:
+        if fa == 0.0:
+            return a_
+        if fb == 0.0:
+            return b_
+
+        def g(x: float) -> float:
+            if x == a_:
+                return fa
+            if x == b_:
+                return fb
+            return P(x)
+
+        return float(brentq(g, a_, b_, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=500))
+
+    x1 = bracketed(lo, f_lo, 0.0, c0)
+    x2 = bracketed(0.0, c0, hi, f_hi)
+    x3 = -c2 / beta - x1 - x2  # Vieta
+    for _ in range(3):  # Newton polish of the isolated large root
+        d = dP(x3)
+        if d == 0.0:
+            break
+        step = P(x3) / d
+        x3 -= step
+        if abs(step) <= 1e-16 * abs(x3):
+            break
+    return x1, x2, x3
+
+
+def _pole_root(e0: float, e1: float, e2: float, e3: float, d: float) -> float:
+    """Polish the small root d >= 0 of e0 + e1 d + e2 d² + e3 d³ (f about a pole) by Newton."""
+    for _ in range(60):
+        g = ((e3 * d + e2) * d + e1) * d + e0
+        dg = (3.0 * e3 * d + 2.0 * e2) * d + e1
+        if dg == 0.0:
+            break
+        new = max(d - g / dg, 0.0)
+        if new == d or abs(new - d) <= 1e-15 * max(d, new):
+            d = new
+            break
+        d = new
+    return d
+
+
+def analyse(
+    params: TopParams,
+    spin: float,
+    theta0: float,
+    theta_dot0: float = 0.0,
+    phi_dot0: float = 0.0,
+    g: float = STANDARD_GRAVITY,
+) -> TopMotion:
+    """The exact motion of a heavy symmetric top: turning points, periods, rates, path.
+
+    Parameters
+    ----------
+    params : TopParams — mass (kg), l (m), I and Is about the pivot (kg m²)
+    spin : float — rad/s, S = ω3, nonzero (either sign)
+    theta0 : float — rad, initial tilt of the axis from the upward vertical, in (0, π)
+    theta_dot0, phi_dot0 : float — rad/s, initial θ' and φ' (default 0: release from rest)
+    g : float — m/s², > 0
+
+    Returns
+    -------
+    TopMotion
+
+    Raises
+    ------
+    ValueError
+        θ0 not in (0, π), g <= 0, spin = 0 (that is a spherical pendulum, not a top),
+        or a non-finite input.
+
+    Notes
+    -----
+    Sheet §2. a = Is S/I, β = 2 m g l/I, b = φ0' sin²θ0 + a u0,
+    α = θ0'² + φ0'² sin²θ0 + β u0; f(u) = (1-u²)(α-βu) - (b-au)². The roots are found
+    in x = u - u0: P(x) = βx³ + c2 x² + c1 x + c0 with c0 = sin²θ0 θ0'²,
+    c1 = -β sin²θ0 - 2u0(θ0'² + φ0'² sin²θ0) + 2a φ0' sin²θ0,
+    c2 = 2u0β - θ0'² - φ0'² sin²θ0 - a². For θ0' = 0 the root x = 0 is exact and the
+    other two come from the quadratic (cancellation-free pair); otherwise x1 and x2 are
+    bracketed by u = -1, u0, 1 and found by Brent's method to 4 ulp, and x3 by Vieta
+    plus Newton. Then m = (u2-u1)/(u3-u1), λ = ½ sqrt(β(u3-u1)), T_n = 2K(m)/λ,
+    <φ'> = [cp Π(n+|m) + cm Π(-n-|m)]/K and <ψ'> = S - a - [cp Π(n+|m) - cm Π(-n-|m)]/K
+    with cp = (b-a)/(2(1-u1)), cm = (b+a)/(2(1+u1)), n± = (u2-u1)/(1∓u1).
+    Steady rates: q = ½(Is S + sign(Is S) sqrt(Is²S² - 4 I m g l cos θ0)),
+    φ'_slow = m g l/q, φ'_fast = q/(I cos θ0); small nutation about each:
+    ω² = (a - 2φ' cos θ)² + φ'² sin²θ. Path (sheet §2 "Locus"): the apex point u' = b/a,
+    where φ' = 0, is compared with [u1, u2]: within CUSP_RTOL·(u2 - u1) of a turning
+    point → "cusps"; strictly inside → "loops"; outside → "waves". Steady precession
+    (``steady`` true) and an apex at a pole (b = ±a, where φ' = ±a/(1 ± u) cannot vanish)
+    are "waves". The relative errors of the fast-top estimates are (estimate - exact)/exact.
+    Near a pole, 1 - u2 (1 + u1) is re-solved from f expanded about u = 1 (u = -1), since
+    it is ~(b - a)² and may be far below the spacing of floats near u = 1. If the axis
+    passes exactly through the vertical (b = a) or the bottom (b = -a), the azimuth of the
+    axis jumps by π at each passage and that is counted in φ(t) and <φ'> (sign of b ∓ a;
+    + when it is exactly zero).
+    """
+    S = _finite("spin", spin)
+    th0 = _finite("theta0", theta0)
+    thd = _finite("theta_dot0", theta_dot0)
+    w = _finite("phi_dot0", phi_dot0)
+    gg = _finite("g", g)
+    if not (0.0 < th0 < math.pi):
+        raise ValueError(
+            f"the initial tilt theta0 must be strictly between 0 and 180 degrees, not "
+            f"{math.degrees(th0):.6g} deg (at 0 or 180 the axis is vertical and the "
+            "precession angle is undefined; start it slightly tilted)"
+        )
+    if gg <= 0.0:
+        raise ValueError(f"gravity g must be positive, not {gg}")
+    if S == 0.0:
+        raise ValueError(
+            "the spin is 0: a top without spin is a spherical pendulum, not a top; "
+            "give a nonzero spin"
+        )
+    m_, l_, I, Is = params.mass, params.length, params.I, params.Is
+    mgl = m_ * gg * l_
+
+    u0 = math.cos(th0)
+    s0 = math.sin(th0)
+    s0sq = s0 * s0
+    omu0 = 2.0 * math.sin(0.5 * th0) ** 2  # 1 - u0 without cancellation
+    opu0 = 2.0 * math.cos(0.5 * th0) ** 2  # 1 + u0
+
+    a = Is * S / I
+    beta = 2.0 * mgl / I
+    A0 = thd * thd + w * w * s0sq  # α - β u0
+    B0 = w * s0sq  # b - a u0
+    b = B0 + a * u0
+    alpha = A0 + beta * u0
+
+    c0 = s0sq * thd * thd
+    c1 = -beta * s0sq - 2.0 * u0 * A0 + 2.0 * a * B0
+    c2 = 2.0 * u0 * beta - A0 - a * a
+    bpa = B0 + a * opu0  # b + a
+    bma = B0 - a * omu0  # b - a
+    x1, x2, x3 = _cubic_roots_shifted(c0, c1, c2, beta, -opu0, omu0, -(bpa**2), -(bma**2))
+    # a root exactly at u = ±1 (the axis passes through a pole): snap it there
+    x1 = -opu0 if bpa == 0.0 else max(x1, -opu0)
+    x2 = omu0 if bma == 0.0 else min(x2, omu0)
+    band = x2 - x1
+    span = x3 - x1
+    m = band / span
+    m1 = (x3 - x2) / span
+    lam = 0.5 * math.sqrt(beta * span)
+    omu1, opu1 = omu0 - x1, opu0 + x1
+    omu2, opu2 = omu0 - x2, opu0 + x2
+    # Near a pole, 1 - u2 (or 1 + u1) can be far below the ulp of u: it is ~(b ∓ a)²/|f'|.
+    # Re-solve for it with f expanded about u = ±1, whose coefficients are exact.
+    near = 1e-3 * band
+    if 0.0 < omu2 < near and not (c0 == 0.0 and x2 == 0.0):
+        A1 = A0 - beta * omu0  # α - β
+        omu2 = _pole_root(
+            -(bma**2), 2.0 * (A1 - a * bma), 2.0 * beta - A1 - a * a, -beta, omu2
+        )
+    if 0.0 < opu1 < near and not (c0 == 0.0 and x1 == 0.0):
+        A2 = A0 + beta * opu0  # α + β
+        opu1 = _pole_root(
+            -(bpa**2), 2.0 * (A2 + a * bpa), -2.0 * beta - A2 - a * a, beta, opu1
+        )
+    u1, u2, u3 = u0 + x1, u0 + x2, u0 + x3
+
+    def tilt(one_minus: float, one_plus: float) -> float:
+        return 2.0 * math.atan2(math.sqrt(max(one_minus, 0.0)), math.sqrt(max(one_plus, 0.0)))
+
+    theta1 = tilt(omu2, opu2)
+    theta2 = tilt(omu1, opu1)
+
+    # The axis passing exactly through the upward (u2 = 1, b = a) or downward (u1 = -1,
+    # b = -a) vertical: the tip crosses the pole, so its azimuth φ jumps by π once per
+    # nutation period (and ψ by ∓π, keeping the attitude continuous). The Π term of that
+    # pole is then dropped (it would be 0 × ∞). The sign of the jump is the sign of b - a
+    # (resp. b + a), the limit from that side; + when it is exactly zero.
+    top_pass = omu2 <= 0.0
+    bottom_pass = opu1 <= 0.0
+    top_sign = -1.0 if bma < 0.0 else 1.0
+    bottom_sign = -1.0 if bpa < 0.0 else 1.0
+
+    # elliptic constants
+    cp = bma / (2.0 * omu1) if not top_pass else 0.0
+    cm = bpa / (2.0 * opu1) if not bottom_pass else 0.0
+    n_plus, n_plus1 = band / omu1, omu2 / omu1
+    if opu1 > 0.0:
+        n_minus, n_minus1 = -band / opu1, opu2 / opu1
+    else:
+        n_minus, n_minus1 = 0.0, 1.0  # u1 = -1 exactly: cm = 0, the term drops out
+    K = _complete_Pi(0.0, 1.0, m1)
+    Pi_p = _complete_Pi(n_plus, n_plus1, m1) if cp != 0.0 else K
+    Pi_m = _complete_Pi(n_minus, n_minus1, m1) if cm != 0.0 else K
+    jt = top_sign if top_pass else 0.0
+    jb = bottom_sign if bottom_pass else 0.0
+    if math.isfinite(K):
+        T_n: float | None = 2.0 * K / lam
+        term_p = cp * Pi_p if cp != 0.0 else 0.0
+        term_m = cm * Pi_m if cm != 0.0 else 0.0
+        jump = 0.5 * math.pi * lam  # π per nutation period, in the units of term/K * K
+        mean_phi: float | None = (term_p + term_m + jump * (jt + jb)) / K
+        mean_psi: float | None = S - a - (term_p - term_m + jump * (jt - jb)) / K
+        nut_freq: float | None = 2.0 * math.pi / T_n
+        dphi: float | None = mean_phi * T_n
+        dpsi: float | None = mean_psi * T_n
+    else:  # m = 1: separatrix, no finite period
+        T_n = mean_phi = mean_psi = nut_freq = dphi = dpsi = None
+
+    # phase at t = 0
+    if band > 0.0:
+        r, r1 = -x1 / band, x2 / band  # sn²(τ0) and cn²(τ0)
+        am0 = math.atan2(math.sqrt(max(r, 0.0)), math.sqrt(max(r1, 0.0)))
+        F0 = float(_carlson_F(np.asarray(am0), m1))
+        if thd > 0.0:  # θ increasing: u decreasing, τ0 in [-K, 0]
+            am0, F0 = -am0, -F0
+    else:
+        am0 = F0 = 0.0
+    ell = EllipticSolution(
+        m=m, m1=m1, lam=lam, tau0=F0, am0=am0, K=K, band=band, one_minus_u1=omu1,
+        one_plus_u1=opu1, one_minus_u2=omu2, cp=cp, cm=cm, n_plus=n_plus, n_plus1=n_plus1, n_minus=n_minus,
+        n_minus1=n_minus1, Pi_plus=Pi_p, Pi_minus=Pi_m, top_jump=jt, bottom_jump=jb,
+    )  # fmt: skip
+
+    # steady precession at θ0 (sheet §2 "Steady precession")
+    IsS = Is * S
+    cos0 = u0
+    if abs(cos0) <= HORIZONTAL_COS:
+        rates: tuple[float, ...] = (mgl / IsS,)
+    else:
+        D = IsS * IsS - 4.0 * I * mgl * cos0
+        if D >= 0.0:
+            q = 0.5 * (IsS + math.copysign(math.sqrt(D), IsS))
+            rates = (mgl / q, q / (I * cos0))
+        else:
+            rates = ()
+    nut_steady = tuple(
+        math.sqrt((a - 2.0 * r_ * cos0) ** 2 + (r_ * s0) ** 2) for r_ in rates
+    )
+    min_spin = math.sqrt(4.0 * I * mgl * cos0) / Is if cos0 > HORIZONTAL_COS else 0.0
+    S_c = math.sqrt(4.0 * I * mgl) / Is
+
+    # the kind of path (sheet §2 "Locus of the symmetry-axis apex")
+    xstar = B0 / a  # u' - u0, where φ' = 0
+    c1_scale = beta * s0sq + 2.0 * abs(u0) * A0 + 2.0 * abs(a * B0)
+    band_noise = np.finfo(float).eps * c1_scale / (abs(c2) + beta * omu0)
+    steady = band <= STEADY_ULPS * band_noise
+    tol = CUSP_RTOL * band
+    if steady:
+        path = "waves"  # a wave of zero height
+    elif top_pass or bottom_pass or abs(bma / a) <= tol or abs(bpa / a) <= tol:
+        # the apex u' = b/a at a pole: φ' = (b - au)/(1 - u²) = ±a/(1 ± u) does not vanish
+        # (or only on a loop too small to see); the axis passes through the vertical
+        path = "waves"
+    elif abs(xstar - x2) <= tol or abs(xstar - x1) <= tol:
+        path = "cusps"
+    elif x1 < xstar < x2:
+        path = "loops"
+    else:
+        path = "waves"
+
+    # fast-top estimates (sheet §2 "Fast top")
+    ft_freq = abs(a)
+    ft_prec = mgl / IsS
+    released = thd == 0.0 and w == 0.0
+    ft_amp = (2.0 * I * mgl / IsS**2) * s0 if released else None
+    exact_amp = theta2 - theta1
+
+    def rel(est: float | None, exact: float | None) -> float | None:
+        if est is None or exact is None or exact == 0.0:
+            return None
+        return (est - exact) / exact
+
+    fast = FastTop(
+        nutation_frequency=ft_freq,
+        nutation_amplitude=ft_amp,
+        mean_precession_rate=ft_prec,
+        nutation_frequency_rel_error=rel(ft_freq, nut_freq),
+        nutation_amplitude_rel_error=rel(ft_amp, exact_amp),
+        mean_precession_rate_rel_error=rel(ft_prec, mean_phi),
+    )
+
+    return TopMotion(
+        params=params, spin=S, theta0=th0, theta_dot0=thd, phi_dot0=w, g=gg,
+        a=a, b=b, alpha=alpha, beta=beta, u1=u1, u2=u2, u3=u3,
+        theta1=theta1, theta2=theta2, nutation_period=T_n, nutation_frequency=nut_freq,
+        precession_per_nutation=dphi, spin_per_nutation=dpsi,
+        mean_precession_rate=mean_phi, mean_spin_rate=mean_psi,
+        steady_precession_rates=rates, steady_nutation_frequencies=nut_steady,
+        minimum_spin_for_steady=min_spin, horizontal_precession_rate=mgl / IsS,
+        critical_spin=S_c, sleeps=abs(S) > S_c, apex_u=u0 + xstar, path=path,
+        steady=steady, fast_top=fast, elliptic=ell,
+    )  # fmt: skip
+
+
+# --------------------------------------------------------------------------------------
+# the motion in time
+
+
+def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The exact Euler angles of the top at times ``t``.
+
+    Parameters
+    ----------
+    motion : TopMotion
+    t : array_like — s, any shape (negative times are fine)
+
+    Returns
+    -------
+    theta, phi, psi : ndarray, shape of ``t`` — rad; θ is the tilt from the upward
+        vertical; φ and ψ are continuous (not wrapped) and start at 0 at t = 0.
+
+    Notes
+    -----
+    Sheet §2 "Closed form": u(t) = u1 + (u2-u1) sn²(τ|m), τ = λ t + τ0, and with
+    ∫dt/(1 - n sn²(λt)) = Π(n; am(λt)|m)/λ:
+    φ(t) = [cp ΔΠ(n+) + cm ΔΠ(n-)]/λ, ψ(t) = (S - a) t - [cp ΔΠ(n+) - cm ΔΠ(n-)]/λ,
+    where ΔΠ(n) = Π(n; am τ|m) - Π(n; am τ0|m). τ is reduced to τr in [-K, K] with
+    τ = τr + 2Kj, so am τ = am τr + jπ and Π(n; am τ) = Π(n; am τr) + 2j Π(n|m)
+    (quasi-periodicity).
+    """
+    from scipy.special import ellipj
+
+    e = motion.elliptic
+    tt = np.asarray(t, dtype=float)
+    if not np.isfinite(e.K):
+        raise ValueError("the motion is on the separatrix (m = 1): no periodic closed form")
+    tau = e.lam * tt + e.tau0
+    j = np.rint(tau / (2.0 * e.K))
+    tau_r = tau - 2.0 * e.K * j
+    sn, cn, _dn, ph = ellipj(tau_r, e.m)
+    ph = np.clip(ph, -0.5 * np.pi, 0.5 * np.pi)
+    # 1 - u = (1 - u2) + (u2 - u1) cn² and 1 + u = (1 + u1) + (u2 - u1) sn²: sums of
+    # non-negative terms, accurate near either pole
+    one_minus_u = e.one_minus_u2 + e.band * cn * cn
+    one_plus_u = e.one_plus_u1 + e.band * sn * sn
+    theta = 2.0 * np.arctan2(np.sqrt(one_minus_u), np.sqrt(one_plus_u))
+
+    am0 = np.asarray(e.am0)
+
+    def dPi(n: float, n1: float, Pc: float) -> np.ndarray:
+        now = _carlson_Pi(n, n1, ph, e.m1) + 2.0 * j * Pc
+        return now - _carlson_Pi(n, n1, am0, e.m1)
+
+    zero = np.zeros_like(tt)
+    dp = dPi(e.n_plus, e.n_plus1, e.Pi_plus) if e.cp != 0.0 else zero
+    dm = dPi(e.n_minus, e.n_minus1, e.Pi_minus) if e.cm != 0.0 else zero
+    phi = (e.cp * dp + e.cm * dm) / e.lam
+    psi = (motion.spin - motion.a) * tt - (e.cp * dp - e.cm * dm) / e.lam
+    if e.top_jump:  # u = 1 at τ = K (mod 2K): φ += ±π, ψ -= ±π per passage
+        k = np.floor((tau - e.K) / (2.0 * e.K)) - math.floor((e.tau0 - e.K) / (2.0 * e.K))
+        phi = phi + e.top_jump * np.pi * k
+        psi = psi - e.top_jump * np.pi * k
+    if e.bottom_jump:  # u = -1 at τ = 0 (mod 2K): φ += ±π, ψ += ±π per passage
+        k = np.floor(tau / (2.0 * e.K)) - math.floor(e.tau0 / (2.0 * e.K))
+        phi = phi + e.bottom_jump * np.pi * k
+        psi = psi + e.bottom_jump * np.pi * k
+    return theta, phi, psi
+
+
+def axis_at(motion: TopMotion, t: np.ndarray) -> np.ndarray:
+    """Unit vector of the symmetry axis in space at times ``t``: shape ``t.shape + (3,)``.
+
+    (sin θ cos φ, sin θ sin φ, cos θ) with θ, φ from :func:`path_at`; z is up, φ(0) = 0.
+    """
+    theta, phi, _ = path_at(motion, t)
+    st = np.sin(theta)
+    return np.stack([st * np.cos(phi), st * np.sin(phi), np.cos(theta)], axis=-1)
+
+
+# --------------------------------------------------------------------------------------
+# numerical check
+
+
+@dataclass(frozen=True)
+class VerifyResult:
+    """Closed form against a direct integration of the equations of motion.
+
+    Attributes
+    ----------
+    t_end : float — s, length of the integration (``periods`` nutation periods)
+    samples : int — number of comparison times
+    rtol : float — relative tolerance given to DOP853
+    max_axis_error : float — rad (chord), max |e3_closed - e3_numeric|; well conditioned
+        even where the axis passes near the vertical
+    max_theta_error, max_phi_error, max_psi_error : float — rad, largest differences of
+        the Euler angles (φ and ψ compared modulo 2π)
+    energy_drift : float — max |E - E0| / (T0 + m g l) along the numerical path
+    p_phi_drift, p_psi_drift : float — max relative drift of L·ẑ and L·e3 (the exact
+        invariants p_φ and p_ψ), relative to |L0|
+    theta_min, theta_max : float — rad, tilt range seen by the integrator (at the samples)
+    mean_precession_rate : float — rad/s, (φ(t_end) - φ(0))/t_end from the integrator
+    nfev : int — right-hand-side evaluations
+    """
+
+    t_end: float
+    samples: int
+    rtol: float
+    max_axis_error: float
+    max_theta_error: float
+    max_phi_error: float
+    max_psi_error: float
+    energy_drift: float
+    p_phi_drift: float
+    p_psi_drift: float
+    theta_min: float
+    theta_max: float
+    mean_precession_rate: float
+    nfev: int
+
+    def to_json(self) -> dict:
+        return {
+            "t_end": _j(self.t_end),
+            "samples": int(self.samples),
+            "rtol": float(self.rtol),
+            "max_axis_error": _j(self.max_axis_error),
+            "max_theta_error_deg": _j(math.degrees(self.max_theta_error)),
+            "max_phi_error_deg": _j(math.degrees(self.max_phi_error)),
+            "max_psi_error_deg": _j(math.degrees(self.max_psi_error)),
+            "energy_drift": _j(self.energy_drift),
+            "p_phi_drift": _j(self.p_phi_drift),
+            "p_psi_drift": _j(self.p_psi_drift),
+            "theta_min_deg": _j(math.degrees(self.theta_min)),
+            "theta_max_deg": _j(math.degrees(self.theta_max)),
+            "mean_precession_rate": _j(self.mean_precession_rate),
+            "nfev": int(self.nfev),
+        }
+
+
+def _wrap(x: np.ndarray) -> np.ndarray:
+    return (x + np.pi) % (2.0 * np.pi) - np.pi
+
+
+def verify(
+    motion: TopMotion,
+    periods: float = 3,
+    *,
+    rtol: float = 1e-12,
+    samples_per_period: int = 200,
+) -> VerifyResult:
+    """Integrate the top's equations of motion numerically and compare with the closed form.
+
+    Parameters
+    ----------
+    motion : TopMotion
+    periods : float — number of nutation periods to integrate (> 0)
+    rtol : float — DOP853 relative tolerance (absolute tolerance rtol/10 on a state of
+        order 1: unit vectors and L/|L0|)
+    samples_per_period : int — comparison times per nutation period
+
+    Returns
+    -------
+    VerifyResult
+
+    Notes
+    -----
+    Singularity-free form, no Euler angles: the state is the axis e3 (unit vector), a
+    body-fixed unit vector e1 normal to it, and the angular momentum L about the pivot,
+    all in space axes (z up). For a symmetric top ω = (L - (L·e3)e3)/I + (L·e3/Is) e3;
+    e3' = ω × e3 = (L × e3)/I, e1' = ω × e1, L' = l e3 × (-m g ẑ) = m g l ẑ × e3.
+    Initial state from R0 = Ry(θ0) (φ = ψ = 0) and ω0 = φ0' ẑ + θ0' ŷ + (S - φ0' cos θ0) e3.
+    The angles are read back as θ = atan2(|e3 × ẑ|, e3·ẑ), φ = atan2(e3y, e3x) (unwrapped),
+    ψ = atan2(e1·n2, e1·n1) with n1 = Rz(φ)Ry(θ)x̂, n2 = Rz(φ)ŷ.
+    """
+    from scipy.integrate import solve_ivp
+
+    if not (periods > 0 and math.isfinite(periods)):
+        raise ValueError(f"periods must be a positive number, not {periods}")
+    if motion.nutation_period is None:
+        raise ValueError("the motion has no finite nutation period to integrate over")
+    p = motion.params
+    I, Is = p.I, p.Is
+    mgl = p.mass * motion.g * p.length
+    S = motion.spin
+    th0, thd, w = motion.theta0, motion.theta_dot0, motion.phi_dot0
+    c0, s0 = math.cos(th0), math.sin(th0)
+    e3 = np.array([s0, 0.0, c0])
+    e1 = np.array([c0, 0.0, -s0])
+    zhat = np.array([0.0, 0.0, 1.0])
+    om = w * zhat + thd * np.array([0.0, 1.0, 0.0]) + (S - w * c0) * e3
+    om3 = float(om @ e3)
+    L = I * (om - om3 * e3) + Is * om3 * e3
+    Ls = float(np.linalg.norm(L))  # > 0 since Is S != 0
+
+    def rhs(_t: float, y: np.ndarray) -> np.ndarray:
+        n = y[0:3]
+        e = y[3:6]
+        Lv = y[6:9] * Ls
+        L3 = float(Lv @ n)
+        omega = (Lv - L3 * n) / I + (L3 / Is) * n
+        dn = np.cross(omega, n)
+        de = np.cross(omega, e)
+        dL = mgl * np.cross(zhat, n) / Ls
+        return np.concatenate([dn, de, dL])
+
+    T = float(motion.nutation_period) * float(periods)
+    n_s = max(int(math.ceil(samples_per_period * periods)), 2) + 1
+    ts = np.linspace(0.0, T, n_s)
+    y0 = np.concatenate([e3, e1, L / Ls])
+    sol = solve_ivp(
+        rhs, (0.0, T), y0, method="DOP853", t_eval=ts, rtol=rtol, atol=rtol * 0.1
+    )
+    if not sol.success:  # pragma: no cover - DOP853 on a smooth ODE
+        raise RuntimeError(f"numerical integration failed: {sol.message}")
+    n = sol.y[0:3].T
+    e = sol.y[3:6].T
+    Lv = sol.y[6:9].T * Ls
+
+    theta_n = np.arctan2(np.hypot(n[:, 0], n[:, 1]), n[:, 2])
+    phi_n = np.unwrap(np.arctan2(n[:, 1], n[:, 0]))
+    phi_n -= phi_n[0]
+    ct, st = np.cos(theta_n), np.sin(theta_n)
+    cf, sf = np.cos(phi_n), np.sin(phi_n)
+    n1 = np.stack([ct * cf, ct * sf, -st], axis=-1)
+    n2 = np.stack([-sf, cf, np.zeros_like(sf)], axis=-1)
+    psi_n = np.arctan2(np.sum(e * n2, axis=1), np.sum(e * n1, axis=1))
+
+    theta_c, phi_c, psi_c = path_at(motion, ts)
+    stc = np.sin(theta_c)
+    axis_c = np.stack([stc * np.cos(phi_c), stc * np.sin(phi_c), np.cos(theta_c)], axis=-1)
+
+    L3 = np.sum(Lv * n, axis=1)
+    Lperp2 = np.sum(Lv * Lv, axis=1) - L3**2
+    E = 0.5 * Lperp2 / I + 0.5 * L3**2 / Is + mgl * n[:, 2]
+    T0 = 0.5 * Lperp2[0] / I + 0.5 * L3[0] ** 2 / Is
+    return VerifyResult(
+        t_end=T,
+        samples=n_s,
+        rtol=rtol,
+        max_axis_error=float(np.max(np.linalg.norm(axis_c - n, axis=1))),
+        max_theta_error=float(np.max(np.abs(theta_c - theta_n))),
+        max_phi_error=float(np.max(np.abs(_wrap(phi_c - phi_n)))),
+        max_psi_error=float(np.max(np.abs(_wrap(psi_c - psi_n)))),
+        energy_drift=float(np.max(np.abs(E - E[0])) / (T0 + mgl)),
+        p_phi_drift=float(np.max(np.abs(Lv[:, 2] - Lv[0, 2])) / Ls),
+        p_psi_drift=float(np.max(np.abs(L3 - L3[0])) / Ls),
+        theta_min=float(np.min(theta_n)),
+        theta_max=float(np.max(theta_n)),
+        mean_precession_rate=float(phi_n[-1] / T),
+        nfev=int(sol.nfev),
+    )
+
+
+# --------------------------------------------------------------------------------------
+# gyrocompass
+
+
+@dataclass(frozen=True)
+class Gyrocompass:
+    """Small oscillation of a gyrocompass about the meridian (sheet §2 "Gyrocompass").
+
+    Attributes
+    ----------
+    C_over_A : float — axial moment over the moment about the vertical (flat disk: 2)
+    spin : float — rad/s, rotor spin about its axis
+    latitude : float — rad
+    earth_rate : float — rad/s, Ω_E
+    directive : float — 1/s², C S Ω_E cos λ / A (the gyroscopic restoring coefficient)
+    omega0 : float | None — rad/s, sqrt(|directive| - Ω_E² cos² λ); None when there is
+        no restoring torque (at a pole, or a spin too slow to beat the Ω_E² term)
+    omega0_approx : float | None — rad/s, sqrt(|directive|), the usual approximation
+    period : float | None — s, 2π/omega0
+    settles_to : str | None — where the rotor's +axis settles: "north" for S > 0 (the
+        spin vector points north, along the Earth's rotation), "south" for S < 0
+    """
+
+    C_over_A: float
+    spin: float
+    latitude: float
+    earth_rate: float
+    directive: float
+    omega0: float | None
+    omega0_approx: float | None
+    period: float | None
+    settles_to: str | None
+
+    def to_json(self) -> dict:
+        return {
+            "C_over_A": float(self.C_over_A),
+            "spin": float(self.spin),
+            "latitude_deg": math.degrees(self.latitude),
+            "earth_rate": float(self.earth_rate),
+            "directive": _j(self.directive),
+            "omega0": _j(self.omega0),
+            "omega0_approx": _j(self.omega0_approx),
+            "period": _j(self.period),
+            "settles_to": self.settles_to,
+        }
+
+
+def gyrocompass(
+    C_over_A: float,
+    spin_rad_s: float,
+    latitude_rad: float,
+    earth_rate: float = EARTH_RATE,
+) -> Gyrocompass:
+    """Period of small oscillation of a gyrocompass about north.
+
+    Parameters
+    ----------
+    C_over_A : float — axial moment C over the moment A about the vertical, > 0
+    spin_rad_s : float — rad/s, rotor spin S, nonzero
+    latitude_rad : float — rad, in [-π/2, π/2]
+    earth_rate : float — rad/s, Ω_E > 0 (default sidereal 7.2921150e-5)
+
+    Returns
+    -------
+    Gyrocompass
+
+    Notes
+    -----
+    Sheet §2: axis held horizontal, free in azimuth α from north,
+    A α'' = -C S Ω_E cos λ sin α + A Ω_E² cos²λ sin α cos α. Linearised about α = 0
+    (S > 0) or α = π (S < 0): ω0² = |C S Ω_E cos λ|/A - Ω_E² cos²λ, T = 2π/ω0.
+    """
+    r = _finite("C_over_A", C_over_A)
+    S = _finite("spin", spin_rad_s)
+    lat = _finite("latitude", latitude_rad)
+    W = _finite("earth_rate", earth_rate)
+    if r <= 0.0:
+        raise ValueError(f"C/A must be positive, not {r}")
+    if W <= 0.0:
+        raise ValueError(f"the Earth's rotation rate must be positive, not {W}")
+    if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
+        raise ValueError(f"latitude must be between -90 and 90 degrees, not {math.degrees(lat):.6g}")
+    if S == 0.0:
+        raise ValueError("a gyrocompass needs a spinning rotor: the spin is 0")
+    cl = math.cos(lat) if abs(lat) < 0.5 * math.pi else 0.0
+    k = r * S * W * cl
+    w2 = abs(k) - (W * cl) ** 2
+    if w2 > 0.0:
+        w0: float | None = math.sqrt(w2)
+        w0a: float | None = math.sqrt(abs(k))
+        per: float | None = 2.0 * math.pi / w0
+        where: str | None = "north" if S > 0 else "south"
+    else:
+        w0 = per = where = None
+        w0a = math.sqrt(abs(k)) if k != 0.0 else None
+    return Gyrocompass(
+        C_over_A=r, spin=S, latitude=lat, earth_rate=W, directive=k, omega0=w0,
+        omega0_approx=w0a, period=per, settles_to=where,
+    )  # fmt: skip
