@@ -668,19 +668,12 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
         parts = _parts(ctx, root.items["parts"][1])
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
-        stripped = ys.MapNode.__new__(ys.MapNode)
         items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
-        _copy_map(stripped, root, items)
+        stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
         parts = _part(ctx, stripped, 0, set(), {}, "")
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
     return _Loaded(parts, ctx.warnings, root, ctx)
-
-
-def _copy_map(dst: ys.MapNode, src: ys.MapNode, items: dict) -> None:
-    for attr, value in vars(src).items():
-        object.__setattr__(dst, attr, value)
-    object.__setattr__(dst, "items", items)
 
 
 def _read_file(path: Path, where: Location | None = None) -> bytes:
