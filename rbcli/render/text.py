@@ -1,29 +1,51 @@
-"""Tables for people (rich): units in headers, plain text when not a terminal."""
+"""Documents of headings, tables and notes — rendered for a terminal (rich) or,
+by :mod:`rbcli.render.report`, as HTML or Markdown.
+
+A command's render module fills a :class:`Doc` with neutral items; how they look is
+decided only when the document is rendered. Tables for people: units in headers,
+plain ASCII without colour when not a terminal.
+"""
 
 from __future__ import annotations
 
 import io
+import shutil
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 
 from rbcli.env import Env
 
 
+@dataclass(frozen=True)
+class Heading:
+    text: str
+
+
+@dataclass(frozen=True)
+class Note:
+    text: str
+
+
+@dataclass(frozen=True)
+class Table:
+    title: str
+    columns: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+    right: tuple[int, ...] = ()
+
+
+@dataclass
 class Doc:
     """A document of titled tables and notes, rendered once to text."""
 
-    def __init__(self, env: Env) -> None:
-        self.env = env
-        self.items: list = []
+    env: Env | None = None
+    items: list = field(default_factory=list)
 
     def heading(self, text: str) -> None:
-        from rich.text import Text
-
-        self.items.append(Text(text, style="bold"))
+        self.items.append(Heading(text))
 
     def note(self, text: str) -> None:
-        from rich.text import Text
-
-        self.items.append(Text(text))
+        self.items.append(Note(text))
 
     def table(
         self,
@@ -33,45 +55,65 @@ class Doc:
         *,
         right: Sequence[int] = (),
     ) -> None:
-        from rich import box
-        from rich.table import Table
-
-        t = Table(
-            title=title,
-            title_justify="left",
-            box=box.SIMPLE_HEAD if self.env.color else box.ASCII2,
-            show_edge=False,
-            pad_edge=False,
-            title_style="bold" if self.env.color else None,
-            header_style="bold" if self.env.color else None,
+        self.items.append(
+            Table(title, tuple(columns), tuple(tuple(str(x) for x in r) for r in rows), tuple(right))
         )
-        for i, c in enumerate(columns):
-            t.add_column(c, justify="right" if i in right else "left", overflow="fold")
-        for r in rows:
-            t.add_row(*r)
-        self.items.append(t)
 
     def kv(self, title: str, rows: Sequence[tuple[str, str, str]]) -> None:
         """A quantity / value / unit table."""
         self.table(title, ("quantity", "value", "unit"), rows, right=(1,))
 
     def render(self) -> str:
+        """The document for a terminal or a pipe (rich; colour only on a terminal)."""
+        from rich import box
         from rich.console import Console
+        from rich.table import Table as RichTable
+        from rich.text import Text
 
+        env = self.env
+        color = bool(env and env.color)
+        width = env.width if env and env.width else None
+        if width is None:
+            width = shutil.get_terminal_size((100, 24)).columns if env and env.stdout_isatty else _columns()
         buf = io.StringIO()
         console = Console(
             file=buf,
-            force_terminal=self.env.color,
-            no_color=not self.env.color,
-            color_system="standard" if self.env.color else None,
-            width=self.env.width or 100,
+            force_terminal=color,
+            no_color=not color,
+            color_system="standard" if color else None,
+            width=width,
             highlight=False,
             emoji=False,
             markup=False,
             legacy_windows=False,
         )
-        for i, item in enumerate(self.items):
-            if i and not isinstance(item, str):
-                pass
-            console.print(item)
+        for item in self.items:
+            if isinstance(item, Heading):
+                console.print(Text(item.text, style="bold" if color else ""))
+            elif isinstance(item, Note):
+                console.print(Text(item.text))
+            else:
+                t = RichTable(
+                    title=item.title or None,
+                    title_justify="left",
+                    box=box.SIMPLE_HEAD if color else box.ASCII2,
+                    show_edge=False,
+                    pad_edge=False,
+                    title_style="bold" if color else None,
+                    header_style="bold" if color else None,
+                )
+                for i, c in enumerate(item.columns):
+                    t.add_column(c, justify="right" if i in item.right else "left", overflow="fold")
+                for r in item.rows:
+                    t.add_row(*r)
+                console.print(t)
         return buf.getvalue()
+
+
+def _columns() -> int:
+    import os
+
+    try:
+        return max(40, int(os.environ.get("COLUMNS", "100")))
+    except ValueError:
+        return 100
