@@ -341,6 +341,17 @@ def test_degenerate_axes_are_the_body_axes_where_possible():
     assert principal_report(1.0, J, np.zeros(3)).to_json()["free_axes"] == [2, 3]
 
 
+@pytest.mark.parametrize("tilt", [1e-7, 1e-10, 1e-13])
+def test_a_slightly_tilted_symmetric_body_keeps_its_tilt(tilt):
+    # the unique axis of a cylinder tilted by `tilt` rad about x is (0, -sin t, cos t):
+    # it must not be snapped onto z (an error of `tilt` rad, not round-off)
+    R = Rotation.from_rotvec([tilt, 0, 0]).as_matrix()
+    pa = principal_axes(combine([part("cylinder", 1.0, R=R, radius=0.05, length=1.0)]).inertia_com)
+    assert pa.unique_axis == 0
+    # eigh on a well-separated pair: ~1e-16 absolute; the old snap erred by `tilt` (>= 1e-13)
+    assert_close(pa.axes[0], [0, -math.sin(tilt), math.cos(tilt)], rtol=1e-15, scale=1.0)
+
+
 def test_symmetry_threshold_is_relative_1e_9():
     assert principal_axes(np.diag([1.0, 1.0 + 1e-11, 1.5])).symmetry == "symmetric"
     assert principal_axes(np.diag([1.0, 1.0 + 1e-6, 1.5])).symmetry == "asymmetric"

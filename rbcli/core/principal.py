@@ -84,9 +84,12 @@ def principal_axes(inertia: np.ndarray) -> PrincipalAxes:
         u = 2 if d01 else 0  # the unique moment
         pair = (0, 1) if d01 else (1, 2)
         n = _sign_fix(v[:, u])
-        # snap the unique axis to a body axis if it is one to round-off
+        # snap the unique axis to a body axis if it is one to round-off: the other two
+        # components (the sine of the angle from that body axis) below 1e-14. (Testing
+        # |n_k| against 1 instead would snap axes up to ~1.4e-6 rad away, since
+        # 1 - cos(t) ~ t^2/2, and move them by that much.)
         k = int(np.argmax(np.abs(n)))
-        if abs(abs(n[k]) - 1.0) < 1e-12:
+        if float(np.max(np.abs(np.delete(n, k)))) <= 1e-14:
             n = E[k].copy()
         proj = E - np.outer(E @ n, n)  # body axes projected on the plane
         norms = np.linalg.norm(proj, axis=1)
