@@ -239,10 +239,13 @@ def wheel_from_body(
     offset = float(np.linalg.norm(off))
     L = math.sqrt(C / m) if radius is None else _positive("the rim radius", radius)
     if offset > off_axis_rtol * L:
-        where = "the body origin" if axle_through is None else f"{_vec(P)}"
+        def _pt(v: Any) -> str:
+            return "[" + ", ".join(f"{float(x):.6g}" for x in v) + "]"
+
+        where = "the body origin" if axle_through is None else f"{_pt(P)} m"
         raise ValueError(
             f"the centre of mass is {_fmt_length(offset)} off the axle (the axle line "
-            f"runs along {_vec(n)} through {where}); a rolling wheel needs its centre of "
+            f"runs along {_pt(n)} through {where}); a rolling wheel needs its centre of "
             "mass on the axle"
         )
     return Wheel(mass=m, A=A, C=C, com=_vec(G), axle=_vec(n), com_offset=offset)
