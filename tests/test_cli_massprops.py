@@ -62,8 +62,8 @@ def main(capsys, *args: str) -> tuple[int, str, str]:
 
 
 def proc(*args: str, env: dict | None = None, **kw) -> subprocess.CompletedProcess:
-    e = {**os.environ, **(env or {})}
-    e.pop("NO_COLOR", None) if env is None or "NO_COLOR" not in env else None
+    e = {k: v for k, v in os.environ.items() if k != "NO_COLOR"}  # no colour must come from the pipe
+    e.update(env or {})
     return subprocess.run([sys.executable, "-m", "rbcli", *args], capture_output=True, text=True,
                           env=e, cwd=ROOT, timeout=60, **kw)
 
