@@ -843,11 +843,14 @@ def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     one_plus_u = e.one_plus_u1 + e.band * sn * sn
     theta = 2.0 * np.arctan2(np.sqrt(one_minus_u), np.sqrt(one_plus_u))
 
-    am0 = np.asarray(e.am0)
+    # the phase at t = 0 reduced and evaluated exactly as at any t (not the stored atan2
+    # value, equal to it within ~1 ulp), so that φ(0) and ψ(0) are exactly 0
+    j0 = float(np.rint(e.tau0 / (2.0 * e.K)))
+    am0 = np.clip(ellipj(e.tau0 - 2.0 * e.K * j0, e.m)[3], -0.5 * np.pi, 0.5 * np.pi)
 
     def dPi(n: float, n1: float, Pc: float) -> np.ndarray:
         now = _carlson_Pi(n, n1, ph, e.m1) + 2.0 * j * Pc
-        return now - _carlson_Pi(n, n1, am0, e.m1)
+        return now - (_carlson_Pi(n, n1, am0, e.m1) + 2.0 * j0 * Pc)
 
     zero = np.zeros_like(tt)
     dp = dPi(e.n_plus, e.n_plus1, e.Pi_plus) if e.cp != 0.0 else zero
