@@ -93,10 +93,6 @@ def test_two_blade_fan_principal_axes_at_45_degrees():
     np.testing.assert_allclose(j["axes"][0], [s, -s, 0], atol=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "examples/two_blade_fan.yaml's header says 'axis 1 = (0.707107, 0.707107, 0)', but axis 1 "
-    "(the smallest moment, m L^2/12) is across the bisector, (0.707107, -0.707107, 0); "
-    "(0.707107, 0.707107, 0) is axis 2. The header is not this test's to fix: reported."))
 def test_two_blade_fan_header_claim_for_axis_1():
     header = (ROOT / "examples" / "two_blade_fan.yaml").read_text()
     claim = re.search(r"axis 1 = \(([^)]*)\)", header).group(1)
