@@ -1,0 +1,579 @@
+"""The safe YAML loader that every body file goes through.
+
+``load`` turns the text of a body file into a small tree of :class:`Node` objects,
+each carrying the 1-based line and column where it starts, so that later layers can
+report ``file:line:col: message`` for any value. It refuses, with a located
+:class:`~rbcli.errors.InputError` and never any other exception:
+
+- files over :data:`MAX_BYTES`, text that is not UTF-8, control characters;
+- nesting deeper than :data:`MAX_DEPTH` (checked on libyaml's iterative event
+  stream; the tree is built from those events, so PyYAML's recursive composer,
+  which crashes at ~30 000 levels, is never used);
+- anchors and aliases (the "billion laughs" file), explicit tags (``!!python/...``),
+  more than one document, an empty document;
+- keys that are not names, duplicate keys, merge keys (``<<``);
+- integers with more than 300 digits.
+
+Plain (unquoted) scalars are resolved by the YAML 1.2 *core* schema, not by
+PyYAML's YAML 1.1 resolver: ``1e3`` is the float 1000.0, ``no``/``off``/``yes`` are
+strings, ``1:30`` is a string, ``017`` is the integer 17. Quoted and block scalars
+are always strings.
+"""
+
+from __future__ import annotations
+
+import gc
+import re
+from dataclasses import dataclass
+
+import yaml
+from yaml.reader import ReaderError
+
+from rbcli.errors import InputError, Location
+
+__all__ = [
+    "MAX_BYTES",
+    "MAX_DEPTH",
+    "MapNode",
+    "Mark",
+    "Node",
+    "ScalarNode",
+    "SeqNode",
+    "load",
+    "to_python",
+    "where",
+]
+
+MAX_BYTES = 8 * 1024 * 1024
+"""Body files larger than this (in bytes of UTF-8) are refused before parsing."""
+
+MAX_DEPTH = 64
+"""Nesting of mappings and sequences deeper than this is refused before composing."""
+
+_MAX_DIGITS = 300  # integers longer than this are refused ("number too long")
+
+# libyaml's loader when PyYAML was built with it; the pure-Python one otherwise.
+_LOADER: type = (
+    yaml.CSafeLoader if getattr(yaml, "__with_libyaml__", False) else yaml.SafeLoader
+)
+
+_EMPTY = "the file is empty; a body needs `parts:` or a single part"
+
+
+# --------------------------------------------------------------------------- nodes
+
+
+@dataclass(frozen=True, slots=True)
+class Mark:
+    """Where a node starts: 1-based line and column (columns count characters)."""
+
+    line: int
+    col: int
+
+    def __str__(self) -> str:
+        return f"{self.line}:{self.col}"
+
+
+@dataclass(frozen=True, repr=False, slots=True)
+class Node:
+    """Base of the loaded tree. Every node has ``.mark`` and ``.tag``.
+
+    ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
+    ``"bool"``, ``"null"``.
+    """
+
+    mark: Mark
+
+    @property
+    def tag(self) -> str:  # pragma: no cover - every subclass overrides it
+        raise NotImplementedError
+
+
+@dataclass(frozen=True, repr=False, slots=True)
+class ScalarNode(Node):
+    """A scalar.
+
+    value : the resolved value (YAML 1.2 core schema for plain scalars; ``str`` for
+        quoted and block scalars).
+    raw : the scalar's text before type resolution (quotes removed, escapes and
+        folding applied), e.g. ``"1e3"`` for the value 1000.0.
+    quoted : True for quoted (``'...'``, ``"..."``) and block (``|``, ``>``)
+        scalars, which are always strings; False for plain scalars.
+    """
+
+    value: str | int | float | bool | None
+    raw: str
+    quoted: bool
+
+    @property
+    def tag(self) -> str:
+        v = self.value
+        if v is None:
+            return "null"
+        if isinstance(v, bool):
+            return "bool"
+        if isinstance(v, int):
+            return "int"
+        if isinstance(v, float):
+            return "float"
+        return "str"
+
+    def __repr__(self) -> str:
+        q = " quoted" if self.quoted else ""
+        return f"ScalarNode({self.tag}{q} {self.value!r} at {self.mark})"
+
+
+@dataclass(frozen=True, repr=False, slots=True)
+class MapNode(Node):
+    """A mapping: ``items`` maps each key to (the key's mark, the value node), in
+    source order."""
+
+    items: dict[str, tuple[Mark, Node]]
+
+    @property
+    def tag(self) -> str:
+        return "map"
+
+    def __repr__(self) -> str:
+        return f"MapNode(keys={list(self.items)!r} at {self.mark})"
+
+
+@dataclass(frozen=True, repr=False, slots=True)
+class SeqNode(Node):
+    """A sequence of nodes."""
+
+    items: list[Node]
+
+    @property
+    def tag(self) -> str:
+        return "seq"
+
+    def __repr__(self) -> str:
+        return f"SeqNode({len(self.items)} items at {self.mark})"
+
+
+def where(filename: str, mark: Mark) -> Location:
+    """The :class:`~rbcli.errors.Location` of ``mark`` in ``filename``."""
+    return Location(filename, mark.line, mark.col)
+
+
+def to_python(node: Node) -> object:
+    """Plain Python data (dict / list / str / int / float / bool / None) of a tree."""
+    if isinstance(node, ScalarNode):
+        return node.value
+    if isinstance(node, MapNode):
+        return {key: to_python(value) for key, (_, value) in node.items.items()}
+    if isinstance(node, SeqNode):
+        return [to_python(item) for item in node.items]
+    raise TypeError(f"not a yamlsafe node: {node!r}")
+
+
+# ------------------------------------------------------------- positions and errors
+
+_BREAK = re.compile("\r\n|[\r\n\x85\u2028\u2029]")  # the line breaks libyaml counts
+
+
+def _mark_of_prefix(prefix: str) -> Mark:
+    """The 1-based mark of the character that follows ``prefix``."""
+    line = 1
+    last_end = 0
+    for m in _BREAK.finditer(prefix):
+        line += 1
+        last_end = m.end()
+    return Mark(line, len(prefix) - last_end + 1)
+
+
+def _yaml_mark(mark: object | None) -> Mark:
+    """A yaml Mark (0-based line/column) as a 1-based :class:`Mark`."""
+    if mark is None:
+        return Mark(1, 1)
+    return Mark(int(getattr(mark, "line", 0)) + 1, int(getattr(mark, "column", 0)) + 1)
+
+
+def _error(message: str, filename: str, mark: Mark) -> InputError:
+    return InputError(message, where=where(filename, mark))
+
+
+def _one_line(text: object) -> str:
+    return " ".join(str(text).split())
+
+
+def _marked_error(exc: yaml.MarkedYAMLError, filename: str) -> InputError:
+    problem = _one_line(exc.problem) if exc.problem else ""
+    mark = exc.problem_mark if exc.problem_mark is not None else exc.context_mark
+    message = f"invalid YAML: {problem}" if problem else "invalid YAML"
+    if exc.context:
+        context = _one_line(exc.context)
+        if exc.context_mark is not None and exc.problem_mark is not None:
+            cm = _yaml_mark(exc.context_mark)
+            context += f" that starts at line {cm.line}, column {cm.col}"
+        message += f" ({context})" if problem else f": {context}"
+    return _error(message, filename, _yaml_mark(mark))
+
+
+def _reader_error(exc: ReaderError, text: str, filename: str) -> InputError:
+    position = exc.position if isinstance(exc.position, int) else 0
+    if _LOADER is not yaml.SafeLoader:
+        # libyaml reads the UTF-8 encoding of the text: the position is a byte offset.
+        prefix = text.encode("utf-8", "surrogatepass")[:position].decode("utf-8", "replace")
+    else:
+        prefix = text[:position]
+    char = exc.character
+    if isinstance(char, int):
+        what = f"character U+{char:04X}"
+    elif isinstance(char, str) and len(char) == 1:
+        what = f"character U+{ord(char):04X}"
+    else:
+        what = "character"
+    message = (
+        f"invalid {what}: {_one_line(exc.reason)}; body files must be printable text "
+        "(tabs and line breaks are fine)"
+    )
+    return _error(message, filename, _mark_of_prefix(prefix))
+
+
+def _size_text(n: int) -> str:
+    if n % (1024 * 1024) == 0:
+        return f"{n // (1024 * 1024)} MiB"
+    if n % 1024 == 0:
+        return f"{n // 1024} KiB"
+    return f"{n} bytes"
+
+
+# ---------------------------------------------------------------------- decoding
+
+
+def _decode(text: str | bytes, filename: str) -> str:
+    """Check the size, decode UTF-8, drop a leading BOM; refuse lone surrogates."""
+    if isinstance(text, (bytes, bytearray, memoryview)):
+        data = bytes(text)
+        if len(data) > MAX_BYTES:
+            raise _error(
+                f"file is {len(data)} bytes; body files are limited to {_size_text(MAX_BYTES)}",
+                filename,
+                Mark(1, 1),
+            )
+        try:
+            decoded = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            prefix = data[: exc.start].decode("utf-8", "replace").removeprefix("\ufeff")
+            raise _error(
+                f"the file is not valid UTF-8 (byte 0x{data[exc.start]:02x} cannot be "
+                "decoded here); body files must be UTF-8 text",
+                filename,
+                _mark_of_prefix(prefix),
+            ) from exc
+        return decoded.removeprefix("\ufeff")
+    if not isinstance(text, str):
+        raise TypeError(f"load() needs str or bytes, not {type(text).__name__}")
+    size = len(text.encode("utf-8", "surrogatepass"))
+    if size > MAX_BYTES:
+        raise _error(
+            f"file is {size} bytes; body files are limited to {_size_text(MAX_BYTES)}",
+            filename,
+            Mark(1, 1),
+        )
+    text = text.removeprefix("\ufeff")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError as exc:
+        raise _error(
+            f"invalid character U+{ord(text[exc.start]):04X} (a lone surrogate); "
+            "body files must be UTF-8 text",
+            filename,
+            _mark_of_prefix(text[: exc.start]),
+        ) from exc
+    return text
+
+
+
+# ------------------------------------------------------------- YAML 1.2 core schema
+
+_NULLS = frozenset({"", "~", "null", "Null", "NULL"})
+_BOOLS = {
+    "true": True, "True": True, "TRUE": True,
+    "false": False, "False": False, "FALSE": False,
+}  # fmt: skip
+_INT10 = re.compile(r"[-+]?[0-9]+")
+_INT8 = re.compile(r"0o[0-7]+")
+_INT16 = re.compile(r"0x[0-9a-fA-F]+")
+_FLOAT = re.compile(r"[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?")
+_INF = re.compile(r"[-+]?(\.inf|\.Inf|\.INF)")
+_NAN = re.compile(r"\.nan|\.NaN|\.NAN")
+# Every non-string of the core schema starts with one of these (or is empty).
+_MAYBE_NOT_STR = frozenset("~nNtTfF+-.0123456789")
+
+
+def _int(digits: str, base: int, filename: str, mark: Mark) -> int:
+    count = len(digits.lstrip("+-"))
+    if count <= _MAX_DIGITS:
+        try:
+            return int(digits, base)
+        except ValueError:  # defensive: the patterns only admit valid, short digits
+            pass
+    raise _error(
+        f"number too long: {count} digits; numbers may have at most {_MAX_DIGITS} digits",
+        filename,
+        mark,
+    )
+
+
+def _resolve_plain(raw: str, filename: str, mark: Mark) -> str | int | float | bool | None:
+    """The value of a plain scalar by the YAML 1.2 core schema (spec §10.3.2)."""
+    if raw and raw[0] not in _MAYBE_NOT_STR:
+        return raw
+    if raw in _NULLS:
+        return None
+    if raw in _BOOLS:
+        return _BOOLS[raw]
+    if _INT10.fullmatch(raw):
+        return _int(raw, 10, filename, mark)
+    if _INT8.fullmatch(raw):
+        return _int(raw[2:], 8, filename, mark)
+    if _INT16.fullmatch(raw):
+        return _int(raw[2:], 16, filename, mark)
+    if _FLOAT.fullmatch(raw):
+        return float(raw)  # overflow (1e999) gives inf; validation refuses it, located
+    if _INF.fullmatch(raw):
+        return float("-inf") if raw.startswith("-") else float("inf")
+    if _NAN.fullmatch(raw):
+        return float("nan")
+    return raw
+
+
+_KIND = {type(None): "null", bool: "a boolean", int: "a number", float: "a number"}
+
+
+# ---------------------------------------------------------------- event-driven build
+
+
+class _OpenMap:
+    """A mapping being built: its items so far and the key awaiting its value."""
+
+    __slots__ = ("mark", "items", "key", "key_mark")
+
+    def __init__(self, mark: Mark) -> None:
+        self.mark = mark
+        self.items: dict[str, tuple[Mark, Node]] = {}
+        self.key: str | None = None
+        self.key_mark = mark
+
+
+class _OpenSeq:
+    __slots__ = ("mark", "items")
+
+    def __init__(self, mark: Mark) -> None:
+        self.mark = mark
+        self.items: list[Node] = []
+
+
+def _show_tag(tag: str) -> str:
+    prefix = "tag:yaml.org,2002:"
+    return "!!" + tag[len(prefix) :] if tag.startswith(prefix) else tag
+
+
+def _check_node_event(event: yaml.NodeEvent, filename: str) -> None:
+    """Refuse anchors, aliases and explicit tags."""
+    if isinstance(event, yaml.AliasEvent) or event.anchor is not None:
+        raise _error(
+            "anchors and aliases (&, *) are not allowed in body files; "
+            "write each value out in full",
+            filename,
+            _yaml_mark(event.start_mark),
+        )
+    tag = getattr(event, "tag", None)
+    if tag is not None:
+        raise _error(
+            f"tags such as !!python/object are not allowed in body files (found "
+            f"{_show_tag(tag)!r}); write plain values, and quote a value to make it a string",
+            filename,
+            _yaml_mark(event.start_mark),
+        )
+
+
+def _set_key(parent: _OpenMap, event: yaml.ScalarEvent, mark: Mark, filename: str) -> None:
+    """Take a scalar event as the next key of ``parent``, checking it is a new name."""
+    raw = event.value
+    if event.style in (None, ""):  # plain: must resolve to a string
+        if raw == "<<":
+            raise _error(
+                "merge keys (<<) are not allowed in body files; write the keys out in full",
+                filename,
+                mark,
+            )
+        value = _resolve_plain(raw, filename, mark)
+        if not isinstance(value, str):
+            shown = raw if raw else "an empty key"
+            raise _error(
+                f"keys must be names, not {_KIND[type(value)]} ({shown}); "
+                f'quote it ("{raw}") if it is meant as a name',
+                filename,
+                mark,
+            )
+    if raw in parent.items:
+        first = parent.items[raw][0]
+        raise _error(
+            f"duplicate key {raw!r} (first at line {first.line}, column {first.col}); "
+            "each key may appear only once in a mapping",
+            filename,
+            mark,
+        )
+    parent.key = raw
+    parent.key_mark = mark
+
+
+_SCALAR = yaml.ScalarEvent
+_MAP_START = yaml.MappingStartEvent
+_SEQ_START = yaml.SequenceStartEvent
+_MAP_END = yaml.MappingEndEvent
+_SEQ_END = yaml.SequenceEndEvent
+_DOC_START = yaml.DocumentStartEvent
+_ALIAS = yaml.AliasEvent
+
+
+def _parse(text: str, filename: str) -> Node | None:
+    """Build the node tree from libyaml's (iterative) event stream in one pass.
+
+    Anchors, aliases, tags, nesting deeper than MAX_DEPTH and a second document are
+    refused as soon as their event arrives, so a hostile file costs milliseconds and
+    no recursive composer ever sees it. Returns None for a stream with no document.
+    """
+    loader = _LOADER(text)
+    stack: list[_OpenMap | _OpenSeq] = []
+    root: Node | None = None
+    documents = 0
+    max_depth = MAX_DEPTH
+    try:
+        while loader.check_event():
+            event = loader.get_event()
+            kind = type(event)
+            node: Node
+            if kind is _SCALAR or kind is _MAP_START or kind is _SEQ_START:
+                if event.anchor is not None or event.tag is not None:
+                    _check_node_event(event, filename)  # raises
+                start = event.start_mark
+                mark = Mark(start.line + 1, start.column + 1)
+                parent = stack[-1] if stack else None
+                awaiting_key = type(parent) is _OpenMap and parent.key is None
+                if kind is _SCALAR:
+                    if awaiting_key:
+                        _set_key(parent, event, mark, filename)  # type: ignore[arg-type]
+                        continue
+                    raw = event.value
+                    if event.style in (None, ""):
+                        node = ScalarNode(mark, _resolve_plain(raw, filename, mark), raw, False)
+                    else:
+                        node = ScalarNode(mark, raw, raw, True)
+                else:
+                    if awaiting_key:
+                        what = "a mapping" if kind is _MAP_START else "a list"
+                        raise _error(
+                            f"keys must be names, not {what}; write `name: value`",
+                            filename,
+                            mark,
+                        )
+                    if len(stack) >= max_depth:
+                        raise _error(
+                            f"nesting is too deep: more than {max_depth} levels of lists and "
+                            f"mappings; body files allow at most {max_depth}",
+                            filename,
+                            mark,
+                        )
+                    stack.append(_OpenMap(mark) if kind is _MAP_START else _OpenSeq(mark))
+                    continue
+            elif kind is _MAP_END or kind is _SEQ_END:
+                done = stack.pop()
+                if type(done) is _OpenMap:
+                    node = MapNode(done.mark, done.items)
+                else:
+                    node = SeqNode(done.mark, done.items)
+            elif kind is _ALIAS:
+                _check_node_event(event, filename)  # raises
+                continue
+            elif kind is _DOC_START:
+                documents += 1
+                if documents > 1:
+                    raise _error(
+                        "more than one YAML document in the file (a second one starts "
+                        "here); a body file holds exactly one document",
+                        filename,
+                        _yaml_mark(event.start_mark),
+                    )
+                continue
+            else:  # stream start/end, document end
+                continue
+            # Attach the finished node to its parent (or make it the root).
+            if not stack:
+                root = node
+            else:
+                parent = stack[-1]
+                if type(parent) is _OpenMap:
+                    parent.items[parent.key] = (parent.key_mark, node)  # type: ignore[index]
+                    parent.key = None
+                else:
+                    parent.items.append(node)  # type: ignore[arg-type]
+    finally:
+        loader.dispose()
+    return root
+
+
+# ----------------------------------------------------------------------------- load
+
+
+def load(text: str | bytes, filename: str) -> Node:
+    """Parse a body file safely.
+
+    Parameters
+    ----------
+    text : str or bytes
+        The file's contents (bytes are decoded as UTF-8; a leading BOM is dropped).
+    filename : str
+        Used only in error locations.
+
+    Returns
+    -------
+    Node
+        The root node; every node carries its 1-based :class:`Mark`.
+
+    Raises
+    ------
+    InputError
+        For every problem, located at ``filename:line:col`` (1-based).
+
+    Notes
+    -----
+    Steps: size limit, UTF-8 decoding, then one pass over libyaml's event stream
+    (``CSafeLoader``'s parser, which is iterative) that refuses anchors, aliases,
+    tags, deep nesting and extra documents as their events arrive and builds the
+    tree, resolving plain scalars by the YAML 1.2 core schema. PyYAML's composer
+    (recursive in C, and resolving by YAML 1.1) is never used.
+    """
+    text = _decode(text, filename)
+    # The tree is acyclic; pausing the cyclic garbage collector while it is built
+    # halves the time for large files (it would otherwise rescan every new node).
+    gc_was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        root = _parse(text, filename)
+    except yaml.MarkedYAMLError as exc:
+        raise _marked_error(exc, filename) from exc
+    except ReaderError as exc:
+        raise _reader_error(exc, text, filename) from exc
+    except yaml.YAMLError as exc:  # defensive: PyYAML's other errors carry no mark
+        raise _error(f"invalid YAML: {_one_line(exc)}", filename, Mark(1, 1)) from exc
+    except RecursionError as exc:  # defensive: nothing here recurses
+        raise _error(
+            f"nesting is too deep; body files allow at most {MAX_DEPTH} levels",
+            filename,
+            Mark(1, 1),
+        ) from exc
+    except ValueError as exc:  # defensive: e.g. an encoding problem inside PyYAML
+        raise _error(
+            f"cannot read the file as YAML: {_one_line(exc)}", filename, Mark(1, 1)
+        ) from exc
+    finally:
+        if gc_was_enabled:
+            gc.enable()
+    if root is None or (isinstance(root, ScalarNode) and not root.quoted and root.raw == ""):
+        raise _error(_EMPTY, filename, Mark(1, 1))
+    return root
