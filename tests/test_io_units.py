@@ -187,7 +187,9 @@ def test_table_has_the_required_units():
     assert set(required) <= set(known_units())
 
 
-_NAMES = known_units()
+# Single-word names only: an alias with an operator in it ("r/min") cannot take an
+# exponent the way the generator below writes one ("r/min^2" is r / min^2).
+_NAMES = [n for n in known_units() if "/" not in n]
 
 
 @st.composite
@@ -240,7 +242,11 @@ def test_products_of_units_agree_with_pint(ureg, case):
 
 @settings(max_examples=50, deadline=None)
 @given(
-    st.floats(min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinity=False),
+    # Normal floats only: a subnormal x has fewer significant bits, so "one rounding
+    # against two" no longer bounds the difference by one ulp of the result.
+    st.floats(
+        min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinity=False, allow_subnormal=False
+    ),
     st.sampled_from(_NAMES),
 )
 def test_quantities_agree_with_pint(ureg, x, name):
