@@ -419,7 +419,7 @@ MANUAL["top"] = {
         "theta0, 0, 0). phi and psi are continuous (not wrapped to 360). An existing file is "
         "replaced, as --plot replaces a figure, but never a file given as input; --csv - "
         "writes the CSV to standard output instead of the tables. --plot draws the same span "
-        "(with at least 400 points per nutation period). --verify integrates over 3 "
+        "(400 points per nutation period, at least 2000 and at most 200000). --verify integrates over 3 "
         "nutation periods and prints the largest differences of the axis, theta, phi and psi "
         "from the closed form and the drift of energy and of the two conserved momenta; exit "
         "status 1 when the axis differs by more than 1e-6 rad or the energy drifts by more "
