@@ -334,8 +334,10 @@ def markdown(report: Report, files_dir: str) -> tuple[str, dict[str, str]]:
         out.append(f"| {md_inline(label)} | {v} |")
     out += ["", "## Contents", ""]
     for i, s in enumerate(report.sections, 1):
-        extra = " (not included)" if s.skipped is not None else ""
-        out.append(f"{i}. [{md_inline(s.title)}](#{s.key}){extra}")
+        if s.skipped is None:
+            out.append(f"{i}. [{md_inline(s.title)}](#{s.key})")
+        else:  # no heading to link to: the one line below says why
+            out.append(f"{i}. {md_inline(s.title)} (not included)")
     out += [f"{len(report.sections) + 1}. [Input file](#{INPUT_KEY})", ""]
     for s in report.sections:
         if s.skipped is not None:

@@ -1,0 +1,659 @@
+"""``rbcli report``: every answer that applies to a body, in one HTML or Markdown file."""
+
+from __future__ import annotations
+
+import typer
+
+from rbcli.cli import common as c
+from rbcli.cli.app import MANUAL, app
+
+HELP = """One document with every answer that applies to the body, its tables and figures.
+
+Writes -o FILE.html (one self-contained file: inline CSS and SVG figures, no scripts,
+no network references; prints to PDF from a browser) or -o FILE.md (Markdown with its
+figures in FILE_files/*.svg beside it). The report has the body (name, input file and
+its SHA-256, rbcli version, date), a parts table with each part's contribution, mass
+properties (as `inertia`), principal axes (as `principal`) with a picture of the
+equivalent ellipsoid and box, and - where the body file or the options give what they
+need - balance (the body's shaft or --shaft), free precession (--omega), the heavy top
+(the body's pivot or --pivot, with --spin and --theta) and rolling stability (a rim
+radius or a round part). A section that does not apply, or cannot be computed for this
+body, says why in one line. The same input gives the same bytes when SOURCE_DATE_EPOCH
+is set. Exit status 1 when a check asked for fails (--grade, rolling at --speed); the
+report is written first.
+"""
+
+SECTIONS = ("parts", "mass-properties", "principal-axes", "balance", "free-precession", "heavy-top",
+            "rolling-stability")
+FORMATS = (".html", ".md")
+
+
+@app.command(help=HELP)
+def report(
+    body: str = c.BodyArg,
+    expr: str = c.ExprOpt,
+    output: str = typer.Option(None, "-o", "--output", help="The report file: .html (self-contained) or .md (figures in FILE_files/). Required.", show_default=False),
+    force: bool = typer.Option(False, "--force", help="Replace an existing report (never an input file)."),
+    shaft: str = typer.Option(None, "--shaft", help="Balance and rolling: shaft (axle) direction x,y,z (or x, y, z). Default: the body's shaft; without either there is no balance section.", show_default=False),
+    through: str = typer.Option(None, "--through", help="Balance and rolling: a point of the shaft: com, origin or x,y,z (m, or with units). Default: the body's shaft point, else the origin.", show_default=False),
+    planes: str = typer.Option(None, "--planes", help="Balance: correction planes zA,zB along the shaft (m, or e.g. '-100,100 mm').", show_default=False),
+    radius: str = typer.Option(None, "--radius", help="Balance: correction radius r, or rA,rB (m, or with units). Default: the body's rim_radius.", show_default=False),
+    bearings: str = typer.Option(None, "--bearings", help="Balance: bearing positions z1,z2 along the shaft (m, or with units).", show_default=False),
+    grade: str = typer.Option(None, "--grade", help="Balance: ISO 21940-11 grade, e.g. G6.3; needs an angular --speed and --bearings.", show_default=False),
+    speed: str = typer.Option(None, "--speed", help="With a unit: an angular speed ('3000 rpm', rad/s) is the balance rotor speed and the rolling spin; a speed ('20 km/h', m/s) is the rolling speed.", show_default=False),
+    omega: str = typer.Option(None, "--omega", help="Free precession: initial angular velocity x,y,z, body frame (rad/s, or with units per component).", show_default=False),
+    pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (m, or with units). Default: the body's pivot; without either there is no top section.", show_default=False),
+    spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (rad/s, or e.g. '3000 rpm').", show_default=False),
+    theta: str = typer.Option(None, "--theta", help="Heavy top: start tilt of the axis from the upward vertical (degrees, or with units).", show_default=False),
+    theta_dot: str = typer.Option("0", "--theta-dot", help="Heavy top: start rate theta' (rad/s, or with units)."),
+    phi_dot: str = typer.Option("0", "--phi-dot", help="Heavy top: start precession rate phi' (rad/s, or with units)."),
+    rim_radius: str = typer.Option(None, "--rim-radius", help="Rolling: rim radius (m, or with units). Default: the body's rim_radius, else the largest round part coaxial with the axle.", show_default=False),
+    tyre_radius: str = typer.Option("0", "--tyre-radius", help="Rolling: tube radius of a rounded rim (m, or with units); 0 = knife edge."),
+    g: str = typer.Option("9.80665", "--g", help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units)."),
+    digits: int = c.DigitsOpt,
+    units: str = c.UnitsOpt,
+) -> None:
+    import time
+
+    from rbcli.errors import InputError
+    from rbcli.render.fmt import DisplayUnits
+
+    t0 = time.monotonic()
+    e = c.env()
+    du = DisplayUnits.parse(units)
+    if output is None:
+        raise InputError("-o/--output: required: the report file, e.g. -o report.html or -o report.md")
+    opts = _Options.parse(
+        shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings, grade=grade,
+        speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
+        phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g,
+    )
+    date = _date()
+    srcs = c.sources([body] if body is not None else None, expr, single=True)
+    fmt, out, files_dir = _check_output(output, force, srcs[0])
+    b = c.load(srcs[0], expr, e)
+
+    progress = _Progress(t0)
+    try:
+        rep, failed = build(b, opts, du, digits, date, progress)
+        progress.step("writing")
+        from rbcli.render import report as R
+
+        if fmt == ".html":
+            _write(out, R.html(rep))
+        else:
+            text, figs = R.markdown(rep, files_dir.name)
+            if figs:
+                files_dir.mkdir(exist_ok=True)
+                for name, svg in figs.items():
+                    _write(files_dir / name, svg)
+            _write(out, text)
+    finally:
+        progress.stop()
+    if failed:
+        e.warn(f"rbcli: {out}: written; a check failed: {'; '.join(failed)}")
+    c.finish(1 if failed else 0)
+
+
+# ----------------------------------------------------------------------------- options
+
+
+class _Options:
+    """The section options, parsed to SI (bad usage is found before the body is read)."""
+
+    @classmethod
+    def parse(cls, **kw) -> "_Options":
+        import math
+
+        from rbcli.cli import balance as cb
+        from rbcli.errors import InputError
+        from rbcli.io import units as un
+
+        o = cls()
+        o.given = [(f"--{k.replace('_', '-')}", v) for k, v in kw.items()
+                   if v is not None and not (k in ("theta_dot", "phi_dot", "tyre_radius") and v == "0")
+                   and not (k == "g" and v == "9.80665")]
+        o.shaft = c.direction(kw["shaft"], "--shaft") if kw["shaft"] is not None else None
+        o.through = c.point(kw["through"], "--through") if kw["through"] is not None else None
+        o.planes = (cb._distinct(cb._values(kw["planes"], "length", "--planes", (2,)), "--planes", "correction planes")
+                    if kw["planes"] is not None else None)
+        o.radius = None
+        if kw["radius"] is not None:
+            o.radius = [cb._positive(x, "--radius", "the correction radius")
+                        for x in cb._values(kw["radius"], "length", "--radius", (1, 2))]
+            if o.planes is None:
+                raise InputError("--radius: needs the correction planes, --planes zA,zB")
+        o.bearings = (cb._distinct(cb._values(kw["bearings"], "length", "--bearings", (2,)), "--bearings", "bearings")
+                      if kw["bearings"] is not None else None)
+        o.grade = cb._grade(kw["grade"]) if kw["grade"] is not None else None
+        o.rotor_speed = o.roll_speed = o.roll_spin = None
+        if kw["speed"] is not None:
+            text = kw["speed"]
+            try:
+                w = un.to_si(text, "angular_speed")
+            except un.UnitError:
+                try:
+                    o.roll_speed = un.to_si(text, "speed")
+                except un.UnitError:
+                    raise InputError(
+                        f"--speed: give a unit: an angular speed (e.g. '3000 rpm', '100 rad/s') for balance "
+                        f"and rolling, or a speed (e.g. '20 km/h', '5 m/s') for rolling; got '{text}'"
+                    ) from None
+            else:
+                if not (w > 0.0 and math.isfinite(w)):
+                    raise InputError(f"--speed: must be a positive angular speed, got '{text}'")
+                o.rotor_speed = o.roll_spin = w
+            if o.roll_speed is not None and not math.isfinite(o.roll_speed):
+                raise InputError("--speed: must be a finite number")
+        if o.grade is not None:
+            if o.rotor_speed is None:
+                raise InputError("--grade: needs an angular --speed, the maximum service speed (e.g. --speed '3000 rpm')")
+            if o.bearings is None:
+                raise InputError("--grade: needs --bearings z1,z2, the planes ISO 21940-11 allocates the tolerance to")
+        o.omega = c.vector(kw["omega"], "angular_speed", "--omega") if kw["omega"] is not None else None
+        if o.omega is not None and not all(math.isfinite(x) for x in o.omega):
+            raise InputError("--omega: must be finite numbers")
+        o.pivot = c.point(kw["pivot"], "--pivot") if kw["pivot"] is not None else None
+        o.spin = _finite(c.quantity(kw["spin"], "angular_speed", "--spin"), "--spin") if kw["spin"] is not None else None
+        if o.spin == 0.0:
+            raise InputError("--spin: must not be 0: a top without spin cannot stand; give e.g. --spin '3000 rpm'")
+        o.theta = None
+        if kw["theta"] is not None:
+            o.theta = _finite(c.quantity(kw["theta"], "angle", "--theta", bare="deg"), "--theta")
+            if not (0.0 < o.theta < math.pi):
+                raise InputError(f"--theta: the start tilt must be strictly between 0 and 180 degrees, got {kw['theta']}")
+        o.theta_dot = _finite(c.quantity(kw["theta_dot"], "angular_speed", "--theta-dot"), "--theta-dot")
+        o.phi_dot = _finite(c.quantity(kw["phi_dot"], "angular_speed", "--phi-dot"), "--phi-dot")
+        o.rim_radius = None
+        if kw["rim_radius"] is not None:
+            o.rim_radius = c.quantity(kw["rim_radius"], "length", "--rim-radius")
+            if not (o.rim_radius > 0.0 and math.isfinite(o.rim_radius)):
+                raise InputError(f"--rim-radius: must be a positive length, got {kw['rim_radius']}")
+        o.tyre_radius = c.quantity(kw["tyre_radius"], "length", "--tyre-radius")
+        if not (o.tyre_radius >= 0.0 and math.isfinite(o.tyre_radius)):
+            raise InputError(f"--tyre-radius: must be 0 (knife edge) or a positive length, got {kw['tyre_radius']}")
+        o.g = c.quantity(kw["g"], "acceleration", "--g")
+        if not (o.g > 0.0 and math.isfinite(o.g)):
+            raise InputError(f"--g: gravity must be a positive number, got {kw['g']}")
+        return o
+
+    def text(self) -> str:
+        import shlex
+
+        return " ".join(f"{k} {shlex.quote(v)}" for k, v in self.given)
+
+
+def _finite(x: float, option: str) -> float:
+    import math
+
+    from rbcli.errors import InputError
+
+    if not math.isfinite(x):
+        raise InputError(f"{option}: must be a finite number")
+    return x
+
+
+def _date() -> str:
+    """The report's date: SOURCE_DATE_EPOCH when set (reproducible builds), else now; UTC."""
+    import datetime as dt
+    import os
+
+    from rbcli.errors import InputError
+
+    raw = os.environ.get("SOURCE_DATE_EPOCH")
+    if raw is None or raw == "":
+        t = dt.datetime.now(dt.timezone.utc)
+    else:
+        try:
+            t = dt.datetime.fromtimestamp(int(raw.strip()), dt.timezone.utc)
+        except (ValueError, OverflowError, OSError):
+            raise InputError(
+                f"SOURCE_DATE_EPOCH: must be a whole number of seconds since 1970-01-01 UTC, got '{raw}'"
+            ) from None
+    return t.strftime("%Y-%m-%d %H:%M UTC")
+
+
+def _check_output(output: str, force: bool, source: str):
+    """(format, path, figures folder) for -o; refuses inputs, existing files without --force."""
+    import os
+    from pathlib import Path
+
+    from rbcli.errors import InputError
+
+    p = Path(output)
+    ext = p.suffix.lower()
+    if ext not in FORMATS:
+        raise InputError(
+            f"-o: cannot tell the format of '{output}' from its extension; use one of " + ", ".join(FORMATS)
+        )
+    files = p.with_name(p.stem + "_files")
+    targets = [p] + ([files] if ext == ".md" else [])
+    if source and not source.startswith("<") and source != "-":
+        real = os.path.realpath(source)
+        for t in targets:
+            if os.path.realpath(t) == real or (t is files and real.startswith(os.path.realpath(t) + os.sep)):
+                raise InputError(f"-o: '{t}' is the input file; rbcli never overwrites its inputs")
+    if p.parent and not p.parent.is_dir():
+        raise InputError(f"-o: the folder '{p.parent}' does not exist")
+    if p.is_dir():
+        raise InputError(f"-o: '{output}' is a folder; give a file name")
+    if files.exists() and not files.is_dir() and ext == ".md":
+        raise InputError(f"-o: '{files}' (for the figures) exists and is not a folder")
+    if not force:
+        for t in targets:
+            if t.exists():
+                raise InputError(f"-o: '{t}' exists; use --force to replace it")
+    return ext, p, files
+
+
+def _write(path, text: str) -> None:
+    """Write atomically (a temporary file in the same folder, then rename)."""
+    import os
+    import tempfile
+
+    from rbcli.errors import InputError
+
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=".rbcli-", suffix=".tmp", dir=str(path.parent) or ".")
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
+                fh.write(text)
+            mask = os.umask(0)
+            os.umask(mask)
+            os.chmod(tmp, 0o666 & ~mask)
+            os.replace(tmp, path)
+        except BaseException:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+            raise
+    except OSError as exc:
+        raise InputError(f"-o: cannot write '{path}': {exc.strerror or exc}") from None
+
+
+class _Progress:
+    """A transient progress line on standard error, only on a terminal and only once
+    the report has taken more than a second."""
+
+    def __init__(self, t0: float, console=None) -> None:
+        import sys
+
+        self.t0 = t0
+        self.console = console  # a rich Console (tests); default: standard error
+        self.bar = None
+        self.task = None
+        try:
+            self.tty = sys.stderr.isatty()
+        except (AttributeError, ValueError):
+            self.tty = False
+
+    def step(self, what: str, done: int = 0, total: int = 0) -> None:
+        import time
+
+        if not self.tty:
+            return
+        if self.bar is None:
+            if time.monotonic() - self.t0 < 1.0:
+                return
+            from rich.console import Console
+            from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn
+
+            self.bar = Progress(SpinnerColumn(), TextColumn("rbcli report: {task.description}"), BarColumn(),
+                                console=self.console or Console(stderr=True), transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task(what, total=total or None, completed=done)
+        self.bar.update(self.task, description=what, completed=done, total=total or None)
+
+    def stop(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+            self.bar = None
+
+
+# ----------------------------------------------------------------------------- the report
+
+
+def build(b, opts: _Options, du, digits: int, date: str, progress=None):
+    """The Report of a body, and the checks that failed ([] if none)."""
+    import hashlib
+    import tempfile
+    from pathlib import Path
+
+    from rbcli import __version__
+    from rbcli.render import report as R
+
+    steps = [
+        ("parts", _parts), ("mass properties", _massprops), ("principal axes", _principal),
+        ("balance", _balance), ("free precession", _precess), ("heavy top", _top),
+        ("rolling stability", _rollcheck),
+    ]
+    failed: list[str] = []
+    sections = []
+    with tempfile.TemporaryDirectory(prefix="rbcli-report-") as tmp:
+        ctx = _Ctx(b, opts, du, digits, Path(tmp), failed)
+        for i, (what, fn) in enumerate(steps):
+            if progress is not None:
+                progress.step(what, i, len(steps))
+            sections.append(fn(ctx))
+    meta = [("body", b.name)]
+    if b.description:
+        meta.append(("description", b.description))
+    meta += [
+        ("input file", b.source),
+        ("SHA-256 of the input file", hashlib.sha256(b.text.encode("utf-8")).hexdigest()),
+        ("options", opts.text() or "(none)"),
+        ("units in tables", "SI" if du.si else ", ".join(u for _, u in (du.length, du.mass, du.time))),
+        ("rbcli version", __version__),
+        ("date", date),
+    ]
+    rep = R.Report(title=f"rbcli report: {b.name}", meta=meta, sections=sections, input_name=b.source,
+                   input_text=b.text, generator=f"rbcli {__version__}")
+    return rep, failed
+
+
+class _Ctx:
+    def __init__(self, body, opts, du, digits, tmp, failed):
+        from rbcli.core.inertia import combine
+
+        self.body = body
+        self.opts = opts
+        self.du = du
+        self.digits = digits
+        self.tmp = tmp
+        self.failed = failed
+        self.mp = combine(body.parts)
+
+    def svg(self, draw, name: str) -> str:
+        """Run ``draw(path)`` (a command's plot function) on a temporary .svg; its text."""
+        path = self.tmp / f"{name}.svg"
+        draw(path)
+        return path.read_text(encoding="utf-8")
+
+    def figure_svg(self, fig, name: str) -> str:
+        from rbcli.render.plots import save
+
+        return self.svg(lambda p: save(fig, p), name)
+
+
+def _section(key: str, title: str):
+    from rbcli.render.report import Section
+
+    return Section(key, title)
+
+
+def _skip(key: str, title: str, reason: str):
+    from rbcli.render.report import Section
+
+    return Section.skip(key, title, reason)
+
+
+def _parts(ctx: _Ctx):
+    from rbcli.render.report import parts_table
+    from rbcli.render.text import Doc
+
+    s = _section("parts", "Parts")
+    doc = Doc()
+    parts_table(doc, ctx.body, ctx.mp, ctx.du, ctx.digits)
+    s.add_doc(doc)
+    return s
+
+
+def _massprops(ctx: _Ctx):
+    from rbcli.cli.massprops import _reference
+    from rbcli.core.inertia import inertia_report
+    from rbcli.render import massprops as r
+    from rbcli.render.text import Doc, Table
+
+    mp, ref, label = _reference(ctx.body, None)
+    res = inertia_report(mp, ref)
+    doc = Doc()
+    r.inertia_doc(doc, ctx.body, res, ctx.du, ctx.digits, "tensor", label)
+    # the report has its own parts table (with each part's contribution)
+    doc.items = [it for it in doc.items if not (isinstance(it, Table) and it.title == "parts")]
+    s = _section("mass-properties", "Mass properties")
+    s.add_doc(doc, drop_heading_prefix=ctx.body.name)
+    return s
+
+
+def _principal(ctx: _Ctx):
+    from rbcli.core.principal import principal_report
+    from rbcli.render import massprops as r
+    from rbcli.render.bodyplot import body_figure
+    from rbcli.render.report import Figure
+    from rbcli.render.text import Doc
+
+    mp = ctx.mp
+    pr = principal_report(mp.mass, mp.inertia_com, mp.com)
+    doc = Doc()
+    r.principal_doc(doc, ctx.body, pr, ctx.du, ctx.digits, "the com")
+    s = _section("principal-axes", "Principal axes")
+    s.add_doc(doc, drop_heading_prefix=ctx.body.name)
+    fig = body_figure(ctx.body, mp.com, pr, ctx.du, f"{ctx.body.name}: equivalent ellipsoid, box and principal axes")
+    s.items.append(Figure(
+        "body", "The equivalent uniform ellipsoid (filled) and box (dashed) — same mass and principal "
+        "moments about the centre of mass — and the principal axes 1, 2, 3 (ascending moments), in the "
+        "body frame: a 3-D view and three views along the body axes at one scale.",
+        ctx.figure_svg(fig, "body")))
+    return s
+
+
+def _reason(exc) -> str:
+    return str(exc).removeprefix("rbcli: ")
+
+
+def _balance(ctx: _Ctx):
+    from rbcli.errors import InputError
+
+    key, title = "balance", "Balance"
+    b, o = ctx.body, ctx.opts
+    asked = o.planes is not None or o.bearings is not None or o.grade is not None or o.rotor_speed is not None
+    if o.shaft is None and b.shaft is None and not asked:
+        return _skip(key, title, "balance: no shaft in the body file and no --shaft, --planes, --bearings or "
+                     "rotation --speed option")
+    from rbcli.cli import balance as cb
+    from rbcli.render import balance as rb
+    from rbcli.render.text import Doc
+
+    try:
+        res = cb._compute(b, o.shaft, o.through, None, 0.0, "with", o.planes, o.radius, None, None, None,
+                          o.rotor_speed, o.bearings, o.g, o.grade, "bearings")
+    except InputError as exc:
+        return _skip(key, title, f"balance: not computed: {_reason(exc)}")
+    doc = Doc()
+    su = rb.ShopUnits(_units_text(ctx.du))
+    rb.document(doc, res, su, ctx.digits)
+    s = _section(key, title)
+    s.add_doc(doc, drop_heading_prefix=b.name)
+    for w in res.warnings:
+        s.items.append(_note(f"warning: {w}"))
+    if res.iso is not None and not res.iso.passed:
+        ctx.failed.append("balance: the residual unbalance is over the ISO 21940-11 grade")
+    if not (o.planes or o.rotor_speed or o.bearings):
+        s.items.append(_note("(corrections, bearing forces and the ISO grade need --planes, --speed with "
+                             "a rotation unit, --bearings and --grade)"))
+    _plot(ctx, s, rb, "balance", lambda p: rb.plot(p, res), "Balance figure (as rbcli balance --plot).")
+    return s
+
+
+def _units_text(du) -> str | None:
+    return None if du.si else ",".join(u for _, u in (du.length, du.mass, du.time))
+
+
+def _note(text: str):
+    from rbcli.render.text import Note
+
+    return Note(text)
+
+
+def _plot(ctx: _Ctx, s, module, name: str, draw, caption: str) -> None:
+    """Add a command's figure when its render module has a plot function."""
+    from rbcli.render.report import Figure
+
+    if not hasattr(module, "plot"):
+        return
+    s.items.append(Figure(name, caption, ctx.svg(draw, name)))
+
+
+def _precess(ctx: _Ctx):
+    from rbcli.errors import InputError
+
+    key, title = "free-precession", "Free precession"
+    if ctx.opts.omega is None:
+        return _skip(key, title, "free precession: no --omega given (the initial angular velocity, body frame)")
+    import numpy as np
+
+    from rbcli.core import freemotion as fm
+    from rbcli.render import precess as rp
+    from rbcli.render.text import Doc
+
+    b = ctx.body
+    try:
+        try:
+            motion = fm.analyse(ctx.mp.inertia_com, np.array(ctx.opts.omega))
+        except ValueError as exc:
+            raise InputError(f"{b.source if str(exc).startswith('inertia') else '--omega'}: {exc}") from None
+    except InputError as exc:
+        return _skip(key, title, f"free precession: not computed: {_reason(exc)}")
+    doc = Doc()
+    rp.document(doc, b, motion, rp.Extras(), ctx.du, ctx.digits)
+    s = _section(key, title)
+    s.add_doc(doc, drop_heading_prefix=b.name)
+    _plot(ctx, s, rp, "precess", lambda p: rp.plot(p, b, motion, None, ctx.du),
+          "The angular velocity in the body frame against time and the polhode (as rbcli precess --plot).")
+    return s
+
+
+def _top(ctx: _Ctx):
+    from rbcli.errors import InputError
+
+    key, title = "heavy-top", "Heavy top"
+    b, o = ctx.body, ctx.opts
+    if o.pivot is None and b.pivot is None:
+        return _skip(key, title, "heavy top: no pivot in the body file and no --pivot option")
+    if o.spin is None or o.theta is None:
+        missing = " and ".join(x for x, v in (("--spin", o.spin), ("--theta", o.theta)) if v is None)
+        return _skip(key, title, f"heavy top: the body has a pivot, but no {missing} given "
+                     "(the spin about the symmetry axis and the start tilt from the vertical)")
+    from rbcli.cli import top as ct
+    from rbcli.core import top as core
+    from rbcli.render import top as rt
+    from rbcli.render.text import Doc
+
+    try:
+        params, pivot_label = ct._params(b, o.pivot)
+        try:
+            motion = core.analyse(params, o.spin, o.theta, o.theta_dot, o.phi_dot, o.g)
+        except (ValueError, OverflowError, ArithmeticError) as exc:
+            raise InputError(f"{ct._which(exc)}: {exc}") from None
+        ct._check_finite(motion)
+    except InputError as exc:
+        return _skip(key, title, f"heavy top: not computed: {_reason(exc)}")
+    span = ct._default_duration(motion)
+    info = rt.Info(body=b, pivot_label=pivot_label, released=o.theta_dot == 0.0 and o.phi_dot == 0.0,
+                   verify_axis_tol=ct.VERIFY_AXIS_TOL, verify_energy_tol=ct.VERIFY_ENERGY_TOL,
+                   plot=None, csv=None, duration=span, samples=None)
+    doc = Doc()
+    rt.document(doc, motion, info, ctx.du, ctx.digits, None)
+    s = _section(key, title)
+    s.add_doc(doc, drop_heading_prefix=b.name)
+    _plot(ctx, s, rt, "top", lambda p: rt.plot(p, motion, info, span),
+          "The path of the axis (as rbcli top --plot), over three nutation periods.")
+    return s
+
+
+def _rollcheck(ctx: _Ctx):
+    from rbcli.errors import InputError
+
+    key, title = "rolling-stability", "Rolling stability"
+    b, o = ctx.body, ctx.opts
+    from rbcli.cli import rollcheck as cr
+
+    round_parts = [p for p in b.parts if not p.subtract and p.radius is not None and p.shape in cr.ROUND]
+    if o.rim_radius is None and b.rim_radius is None and not round_parts:
+        return _skip(key, title, "rolling stability: no rim radius: none in the body file (rim_radius), no "
+                     "--rim-radius option and no round part")
+    from rbcli.core import rolling as rl
+    from rbcli.render import rollcheck as rr
+    from rbcli.render.text import Doc
+
+    try:
+        setup = cr._setup(b, o.shaft, o.through, o.rim_radius)
+        if o.tyre_radius >= setup.radius:
+            raise InputError(f"--tyre-radius: must be smaller than the rim radius a = {setup.radius:.6g} m")
+        try:
+            res = rl.rollcheck(setup.wheel, setup.radius, o.tyre_radius, o.g, speed=o.roll_speed, spin=o.roll_spin)
+        except ValueError as exc:
+            raise InputError(f"--speed: {exc}") from None
+    except InputError as exc:
+        return _skip(key, title, f"rolling stability: not computed: {_reason(exc)}")
+    info = rr.Info(body=b, radius_source=setup.radius_source, radius_kind=setup.radius_kind,
+                   radius_part=setup.radius_part, axle_source=setup.axle_source, axle_through=setup.through,
+                   speed_given=o.roll_speed is not None, spin_given=o.roll_spin is not None,
+                   straight_asked=res.verdict is not None)
+    doc = Doc()
+    rr.document(doc, res, info, ctx.du, ctx.digits)
+    s = _section(key, title)
+    s.add_doc(doc, drop_heading_prefix=b.name)
+    for w in getattr(setup, "warnings", []):
+        s.items.append(_note("warning: " + _reason(w)))
+    if res.verdict is not None and not res.verdict.stable:
+        ctx.failed.append("rolling: straight rolling at --speed is unstable")
+    _plot(ctx, s, rr, "rollcheck", lambda p: rr.plot(p, res, info),
+          "Lean frequency squared and growth rate against speed (as rbcli rollcheck --plot).")
+    return s
+
+
+MANUAL["report"] = {
+    "notes": [
+        "Sections, in order: parts (each part's mass, share, centre and its contribution to Ixx, "
+        "Iyy, Izz about the body's centre of mass; the total row is the body), mass properties "
+        "(as rbcli inertia: about the body's reference point, else the origin, and about the com), "
+        "principal axes (as rbcli principal, about the com) with a figure of the equivalent "
+        "uniform ellipsoid and box and the principal axes (a 3-D view and views from +z, -y and "
+        "+x at one scale), balance, free precession, heavy top and rolling stability. The tables "
+        "are the same as the commands print (--digits, --units).",
+        "When a section is in the report: balance when the body file has a shaft or one of "
+        "--shaft, --planes, --bearings, --grade or a rotation --speed is given (the shaft "
+        "defaults as in rbcli balance); free precession with --omega; heavy top when the body "
+        "file has a pivot or --pivot is given, and --spin and --theta are given; rolling "
+        "stability when the body has a rim_radius, --rim-radius is given or a part is round "
+        "(ring, disk, cylinder, ...). Otherwise the report says why in one line, and so it does "
+        "when a section cannot be computed for this body (e.g. rolling for a body that is not "
+        "of revolution about its axle): the report is still written.",
+        "--speed takes its meaning from its unit: an angular speed ('3000 rpm', '100 rad/s') is "
+        "the rotor speed of the balance section and the spin of the rolling section; a speed "
+        "('20 km/h', '5 m/s') is the rolling speed. A bare number is refused. --radius is the "
+        "balance correction radius and --rim-radius the rolling rim radius; --spin and --theta "
+        "are the heavy top's. The figures are those of the commands' --plot.",
+        "FILE.html is one self-contained file: CSS inline, figures inline SVG, no scripts, no "
+        "fonts or images fetched; it prints to PDF from a browser (tables and figures are not "
+        "split across pages). FILE.md is GitHub-flavoured Markdown with its figures in "
+        "FILE_files/ beside it (relative links). All text from the body file (names, the "
+        "description, the input file itself) is escaped: it shows as text and never acts as "
+        "HTML or Markdown.",
+        "The header gives the body's name, the input file, the SHA-256 of its text (UTF-8; "
+        "included files and meshes are not covered), the options that shaped the report, the "
+        "rbcli version and the date: from SOURCE_DATE_EPOCH (seconds since 1970, UTC) when set, "
+        "so that the same input gives the same bytes; otherwise the current time.",
+        "An existing report (or FILE_files/ folder for Markdown) is replaced only with --force; "
+        "the input file never. The report is written to a temporary file and renamed, so a "
+        "failed run leaves no half-written report. When a report takes more than a second and "
+        "standard error is a terminal, a progress line shows which section is being computed.",
+        "Exit status 1 after writing the report when a check it was asked for failed: the "
+        "balance grade (--grade) or straight rolling at --speed.",
+    ],
+    "examples": [
+        ("rbcli report examples/bracket.yaml -o bracket.html",
+         "The bracket's parts, mass properties and principal axes with the figure; balance, "
+         "precession, top and rolling each say in one line why they are not there."),
+        ("rbcli report examples/two_disk_rotor.yaml -o rotor.html --planes 0,400mm --radius 100mm "
+         "--speed '3000 rpm' --bearings 0,400mm --grade G6.3",
+         "Adds the balance section: add 8.5 g at 208.072° and 12.2577 g at 258.232°, bearing "
+         "forces 83.8916 N and 120.978 N, G6.3 FAIL as given and PASS after the corrections."),
+        ("rbcli report examples/top.yaml -o top.md --spin 150 --theta 30 --g 9.81",
+         "Markdown, with its figures in top_files/ beside it; the heavy top nutates between "
+         "30° and 34.5082° (and the top, round, also gets a rolling section)."),
+        ("SOURCE_DATE_EPOCH=0 rbcli report examples/penny.yaml -o penny.html --speed '0.1 m/s'",
+         "The penny's rolling section: critical speed 0.176454 m/s, so at 0.1 m/s it falls over: "
+         "the report is written and the exit status is 1. Run again (with --force): the same bytes."),
+    ],
+}
