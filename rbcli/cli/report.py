@@ -427,7 +427,7 @@ def _principal(ctx: _Ctx):
     r.principal_doc(doc, ctx.body, pr, ctx.du, ctx.digits, "the com")
     s = _section("principal-axes", "Principal axes")
     s.add_doc(doc, drop_heading_prefix=ctx.body.name)
-    fig = body_figure(ctx.body, mp.com, pr, ctx.du, f"{ctx.body.name}: equivalent ellipsoid, box and principal axes")
+    fig = body_figure(ctx.body, mp.com, pr, ctx.du, f"principal: {ctx.body.name} — equivalent ellipsoid, box and principal axes")
     s.items.append(Figure(
         "body", "The equivalent uniform ellipsoid (filled) and box (dashed) — same mass and principal "
         "moments about the centre of mass — and the principal axes 1, 2, 3 (ascending moments), in the "

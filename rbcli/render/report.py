@@ -164,7 +164,7 @@ h3 { font-size: 1.02rem; margin: 1.2rem 0 .4rem; break-after: avoid; page-break-
 .wide { overflow-x: auto; }
 table { border-collapse: collapse; margin: .4rem 0 .9rem; font-size: .9rem; break-inside: avoid;
   page-break-inside: avoid; }
-caption { text-align: left; font-weight: 600; padding: 0 0 .25rem; }
+caption { text-align: left; font-weight: 600; padding: 0 0 .25rem; width: max-content; max-width: min(58rem, 90vw); }
 th, td { padding: .18rem .65rem .18rem 0; border-bottom: 1px solid #ddd; text-align: left; vertical-align: top; }
 th { border-bottom: 1.5px solid #333; font-weight: 600; }
 .r { text-align: right; font-variant-numeric: tabular-nums; }
@@ -179,7 +179,7 @@ nav ol { margin: .3rem 0 1rem; padding-left: 1.4rem; columns: 2; }
 nav li.skip { color: #666; }
 a { color: #1a4f8a; }
 figure { margin: .8rem 0 1.2rem; break-inside: avoid; page-break-inside: avoid; }
-figure svg { display: block; width: 100%; max-width: 48rem; height: auto; }
+figure svg { display: block; max-width: 100%; height: auto; }
 figcaption { font-size: .88rem; color: #333; margin-top: .3rem; }
 pre { background: #f5f5f5; border: 1px solid #ddd; padding: .6rem .8rem; font-size: .82rem;
   white-space: pre-wrap; overflow-wrap: anywhere; }
