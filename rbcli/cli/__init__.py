@@ -11,6 +11,7 @@ import sys
 from rbcli.cli.app import STATE, app
 from rbcli.cli import massprops as _massprops  # noqa: F401  (registers inertia, principal)
 from rbcli.cli import catalog as _catalog  # noqa: F401  (registers shapes, schema, examples)
+from rbcli.cli import balance as _balance  # noqa: F401  (registers balance)
 from rbcli.cli import rollcheck as _rollcheck  # noqa: F401  (registers rollcheck)
 from rbcli.cli import top as _top  # noqa: F401  (registers top, gyrocompass)
 from rbcli.cli import report as _report  # noqa: F401  (registers report)

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli.core.principal import principal_axes
+from rbcli.core.principal import DEGENERATE_RTOL
 
 STANDARD_GRAVITY = 9.80665
 """m/s^2, the default g (SPEC §2)."""
@@ -472,32 +472,42 @@ class Unbalance:
 def _tilt(J_body: np.ndarray, frame: ShaftFrame) -> tuple[float, complex, float, float]:
     """Tilt (rad) of the nearest principal axis, its shaft-frame lean (complex), gap, max |moment|.
 
-    The eigenspace (a line, a plane or all of space when moments coincide) with the largest
+    The eigenspace (a line, a plane or all of space when moments coincide to
+    DEGENERATE_RTOL, as in :func:`rbcli.core.principal.principal_axes`) with the largest
     projection of e_z is the nearest principal direction; v is the projection of e_z onto it
     (so v . e_z >= 0). tilt = atan2(|v_perp|, v_z) is exact and accurate for small angles.
+    numpy's eigh basis is used directly: principal_axes snaps an axis within 1e-12 of a body
+    axis in |cos| (1.4e-6 rad) onto it, which would hide small tilts.
     """
-    pa = principal_axes(J_body)
-    ez = frame.rotation[2]
-    if pa.symmetry == "spherical":
+    w, V = np.linalg.eigh(0.5 * (J_body + J_body.T))
+    axes = V.T  # rows: unit eigenvectors, moments ascending
+    scale = max(float(np.max(np.abs(w))), np.finfo(float).tiny)
+
+    def close(i: int, j: int) -> bool:
+        return abs(float(w[i]) - float(w[j])) <= DEGENERATE_RTOL * scale
+
+    if close(0, 1) and close(1, 2):
         groups: list[tuple[int, ...]] = [(0, 1, 2)]
-    elif pa.symmetry == "symmetric":
-        assert pa.unique_axis is not None
-        groups = [tuple(pa.free_axes), (pa.unique_axis,)]
+    elif close(0, 1):
+        groups = [(0, 1), (2,)]
+    elif close(1, 2):
+        groups = [(0,), (1, 2)]
     else:
         groups = [(0,), (1,), (2,)]
+    ez = frame.rotation[2]
     best, best_w, best_v = groups[0], -1.0, ez
     for g in groups:
-        comps = pa.axes[list(g)] @ ez
-        w = float(comps @ comps)
-        if w > best_w:
-            best, best_w = g, w
-            best_v = ez if len(g) == 3 else comps @ pa.axes[list(g)]
+        comps = axes[list(g)] @ ez
+        wt = float(comps @ comps)
+        if wt > best_w:
+            best, best_w = g, wt
+            best_v = ez if len(g) == 3 else comps @ axes[list(g)]
     vs = frame.rotation @ best_v
     tilt = math.atan2(math.hypot(vs[0], vs[1]), vs[2])
-    lam = float(pa.moments[best[0]])
-    others = [abs(lam - float(pa.moments[k])) for k in range(3) if k not in best]
+    lam = float(np.mean(w[list(best)]))
+    others = [abs(lam - float(w[k])) for k in range(3) if k not in best]
     gap = min(others) if others else 0.0
-    return tilt, complex(vs[0], vs[1]), gap, float(np.max(np.abs(pa.moments)))
+    return tilt, complex(vs[0], vs[1]), gap, float(np.max(np.abs(w)))
 
 
 def unbalance(
@@ -839,13 +849,20 @@ class Corrections:
 
 
 def _residual(
-    unb: Unbalance, planes: tuple[float, float], a: PlaneCorrection, b: PlaneCorrection
+    unb: Unbalance,
+    planes: tuple[float, float],
+    a: PlaneCorrection,
+    b: PlaneCorrection,
+    added: tuple[float, float] | None = None,
 ) -> Residual:
+    """Residual of the rotor with corrections a, b added; ``added`` = the masses actually
+    added in each plane (kg) when they differ from |C|/r (masses split onto positions)."""
     zA, zB = planes
+    mA, mB = (a.mass, b.mass) if added is None else added
     Ures = unb.static + a.unbalance + b.unbalance
     Pres = unb.moment + zA * a.unbalance + zB * b.unbalance
-    Mn = unb.mass + a.mass + b.mass
-    zg = (unb.mass * float(unb.com_shaft[2]) + a.mass * zA + b.mass * zB) / Mn
+    Mn = unb.mass + mA + mB
+    zg = (unb.mass * float(unb.com_shaft[2]) + mA * zA + mB * zB) / Mn
     PGres = Pres - zg * Ures
     ua, ub = plane_unbalances(Ures, Pres, zA, zB)
     return Residual(
@@ -889,6 +906,7 @@ def _finish(
     mass_step: float | None,
     angle_step_deg: float | None,
     ideal: Corrections | None,
+    added: tuple[float, float] | None = None,
 ) -> Corrections:
     bz = None if bearings is None else _pair(bearings, "bearings")
     narrow, ratio, ref, kind = _narrow(unb, planes, bz)
@@ -899,7 +917,7 @@ def _finish(
             f"less than {NARROW_PLANE_FRACTION:g} of the {kind} {ref:.4g} m): the couple needs "
             "large masses and angle errors are amplified"
         )
-    if a.mass + b.mass > LARGE_CORRECTION_FRACTION * unb.mass:
+    if (sum(added) if added is not None else a.mass + b.mass) > LARGE_CORRECTION_FRACTION * unb.mass:
         warns.append(
             "the correction masses add up to more than "
             f"{LARGE_CORRECTION_FRACTION:.0%} of the rotor mass: use larger radii or planes "
@@ -917,7 +935,7 @@ def _finish(
         narrow_reference=ref,
         narrow_reference_kind=kind,
         bearings=bz,
-        residual=_residual(unb, planes, a, b),
+        residual=_residual(unb, planes, a, b, added),
         rounded=rounded,
         mass_step=mass_step,
         angle_step_deg=angle_step_deg,
@@ -1086,10 +1104,29 @@ def apply_corrections(corr: Corrections) -> Unbalance:
     The full mass properties are rebuilt (parallel-axis theorem) and analysed with the same
     shaft, mark, sense and rtol; so the tilt after correction is available too.
     """
-    unb = corr.source
+    return add_point_masses(corr.source, correction_points(corr))
+
+
+def add_point_masses(unb: Unbalance, points: Sequence[tuple[float, object]]) -> Unbalance:
+    """Unbalance of the rotor with point masses added.
+
+    Parameters
+    ----------
+    unb : Unbalance
+    points : sequence of (mass kg, (3,) position m, body frame)
+
+    Returns
+    -------
+    Unbalance — same shaft, reference mark, angle sense and rtol.
+
+    Notes
+    -----
+    Mass, com and the tensor about the new com by the parallel-axis theorem (sheet §2.2,
+    a point mass has J = 0 about itself).
+    """
     M = unb.mass
     c = np.array(unb.com)
-    pts = correction_points(corr)
+    pts = [(float(m), _vec3(p, "point position")) for m, p in points]
     Mn = M + sum(m for m, _ in pts)
     cn = (M * c + sum(m * p for m, p in pts)) / Mn
 
@@ -1206,6 +1243,142 @@ def split_to_positions(
     if frac == 0.0:
         m1, m2 = m, 0.0
     return Split((max(m1, 0.0), max(m2, 0.0)), sp.angles_deg, (k, (k + 1) % n))
+
+
+@dataclass(frozen=True, eq=False)
+class PositionCorrections:
+    """Two-plane corrections split onto n equally spaced positions (holes, blades).
+
+    Attributes
+    ----------
+    ideal : Corrections — the unrounded two-plane corrections that were split
+    n_positions : int
+    pitch_deg : float — deg, 360 / n
+    offset_deg : float — deg, reported angle of position 1 (default 0: on the mark)
+    splits : (Split, Split) — planes A and B: masses (kg, rounded if ``mass_step``) at
+        reported angles; ``positions`` are 1-based position numbers (position k sits at
+        offset + (k - 1) pitch in the reported sense)
+    mass_step : float | None — kg
+    corrections : Corrections — each plane's net correction (the vector sum of its two
+        masses) with the residual of the rotor with all four masses added (their real
+        masses in the com shift); ``rounded`` iff ``mass_step`` was given
+    """
+
+    ideal: Corrections
+    n_positions: int
+    pitch_deg: float
+    offset_deg: float
+    splits: tuple[Split, Split]
+    mass_step: float | None
+    corrections: Corrections
+
+    def points(self) -> tuple[tuple[str, int, float, np.ndarray], ...]:
+        """(plane name, position number, mass kg, (3,) body-frame position m); zero masses left out."""
+        out = []
+        unb = self.ideal.source
+        for pc, sp in zip(self.ideal.pair, self.splits):
+            assert pc.z is not None
+            for m, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
+                if m <= 0.0:
+                    continue
+                phi = math.radians(_internal_deg(a, unb.angle_sense))
+                s = np.array([pc.radius * math.cos(phi), pc.radius * math.sin(phi), pc.z])
+                out.append((pc.name, int(k), float(m), unb.frame.to_body(s)))
+        return tuple(out)
+
+    def to_json(self) -> dict:
+        rows = []
+        for pc, sp in zip(self.ideal.pair, self.splits):
+            for m, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
+                rows.append(
+                    {
+                        "plane": float(pc.z) if pc.z is not None else None,
+                        "name": pc.name,
+                        "position": int(k),
+                        "angle_deg": float(a),
+                        "mass": float(m),
+                        "radius": float(pc.radius),
+                    }
+                )
+        return {
+            "n_positions": int(self.n_positions),
+            "pitch_deg": float(self.pitch_deg),
+            "offset_deg": float(self.offset_deg),
+            "masses": rows,
+            "mass_step": None if self.mass_step is None else float(self.mass_step),
+            "rounded": self.mass_step is not None,
+            "residual": self.corrections.residual.to_json(),
+        }
+
+
+def split_corrections(
+    corr: Corrections,
+    n_positions: int,
+    *,
+    mass_step: float | None = None,
+    offset_deg: float = 0.0,
+) -> PositionCorrections:
+    """Split each plane's correction onto the two neighbouring of n fixed positions.
+
+    Parameters
+    ----------
+    corr : Corrections — ideal (or rounded: its ideal corrections are split)
+    n_positions : int — >= 3, equally spaced positions per plane (holes, blades)
+    mass_step : float, optional — kg, > 0; each split mass rounded half-up to a multiple
+    offset_deg : float — deg, reported angle of position 1 (default 0: on the reference mark)
+
+    Returns
+    -------
+    PositionCorrections
+
+    Notes
+    -----
+    Sheet §2.5 ("fixed positions"): ``m1 = |C| sin(a2 - phi)/sin(a2 - a1)``,
+    ``m2 = |C| sin(phi - a1)/sin(a2 - a1)`` (:func:`split_to_positions`), in the reported
+    angle sense (the set of positions is the same in either sense). The two masses sum to C
+    exactly; after rounding, each plane's net correction is their vector sum and the residual
+    (sheet §1.5 step 4) is that of the rotor with all the masses added.
+    """
+    if mass_step is not None:
+        mass_step = _positive(mass_step, "mass step")
+    ideal = corr.ideal if corr.ideal is not None else corr
+    unb = ideal.source
+    s = unb.angle_sense
+    tol = unb.plane_tolerance(*ideal.planes)
+    n = int(n_positions)
+    splits = []
+    nets = []
+    added = []
+    for pc in ideal.pair:
+        sp = split_to_positions(pc.mass if pc.angle_defined else 0.0, pc.angle_deg, n, offset_deg)
+        ms = sp.masses
+        if mass_step is not None:
+            ms = tuple(math.floor(m / mass_step + 0.5) * mass_step for m in ms)
+        pos = tuple(k + 1 for k in sp.positions)
+        sp = Split((ms[0], ms[1]), sp.angles_deg, (pos[0], pos[1]))
+        C = sum(
+            (complex(cmath.rect(m * pc.radius, math.radians(_internal_deg(a, s))))
+             for m, a in zip(sp.masses, sp.angles_deg)),
+            0j,
+        )
+        splits.append(sp)
+        nets.append(_plane_correction(pc.name, pc.z, pc.radius, C, tol, s))
+        added.append(ms[0] + ms[1])
+    st = ideal.static
+    rounded = mass_step is not None
+    net = _finish(
+        unb, ideal.planes, ideal.radii, nets[0], nets[1], st, ideal.bearings, rounded,
+        mass_step, None, ideal if rounded else None, (added[0], added[1]),
+    )
+    return PositionCorrections(
+        ideal=ideal,
+        n_positions=n,
+        pitch_deg=360.0 / n,
+        offset_deg=_wrap_deg(_finite(offset_deg, "offset")),
+        splits=(splits[0], splits[1]),
+        mass_step=mass_step,
+        corrections=net,
+    )
 
 
 def mass_at_radius(mass: float, radius: float, new_radius: float) -> float:

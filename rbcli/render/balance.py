@@ -1,0 +1,481 @@
+"""Tables and JSON of ``rbcli balance``.
+
+Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
+correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
+forces in N, speeds in rpm (and rad/s). With ``--units`` (e.g. ``in,oz``) lengths and masses
+follow it (unbalance in oz·in, the rotor mass in oz); forces stay in N. JSON is always SI.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rbcli.core import balance as B
+from rbcli.model import Body
+from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.text import Doc
+
+RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
+SQUARE = "²"
+
+
+# ----------------------------------------------------------------------------- units
+
+
+class ShopUnits:
+    """Display units of the balance tables (JSON is always SI)."""
+
+    def __init__(self, spec: str | None) -> None:
+        if not spec:
+            self.length = (1e-3, "mm")
+            self.mass = (1e-3, "g")
+            self.rotor = (1.0, "kg")
+            self.ecc = (1e-6, "µm")
+        else:
+            du = DisplayUnits.parse(spec)
+            self.length = du.length
+            self.mass = du.mass
+            self.rotor = du.mass
+            self.ecc = du.length
+        m, L = self.mass[1], self.length[1]
+        self._kinds: dict[str, tuple[float, str]] = {
+            "length": self.length,
+            "mass": self.mass,
+            "rotor_mass": self.rotor,
+            "eccentricity": self.ecc,
+            "unbalance": (self.mass[0] * self.length[0], f"{m}·{L}"),
+            "couple": (self.mass[0] * self.length[0] ** 2, f"{m}·{L}{SQUARE}"),
+            "force": (1.0, "N"),
+            "torque": (1.0, "N·m"),
+            "angular_momentum": (1.0, "kg·m²/s"),
+            "grade": (1e-3, "mm/s"),
+            "acceleration": (1.0, "m/s²"),
+        }
+
+    def unit(self, kind: str) -> str:
+        return self._kinds[kind][1]
+
+    def show(self, x: float | None, kind: str, digits: int) -> str:
+        if x is None:
+            return "—"
+        return num(float(x) / self._kinds[kind][0], digits)
+
+
+def angle(value: float, defined: bool, digits: int) -> str:
+    return num(value, digits) if defined else "—"
+
+
+def mag(su: "ShopUnits", x: float, defined: bool, kind: str, digits: int) -> str:
+    """A magnitude, or 0 when it is zero to the tolerance (its angle undefined): tables do
+    not show round-off like 1e-12 g·mm; JSON keeps the computed number."""
+    return su.show(x if defined else 0.0, kind, digits)
+
+
+def _snap(x: float, tol: float) -> float:
+    return 0.0 if abs(x) <= tol else x
+
+
+def yes(b: bool) -> str:
+    return "yes" if b else "no"
+
+
+# ----------------------------------------------------------------------------- result
+
+
+@dataclass
+class Result:
+    """Everything ``rbcli balance`` computed, and where its inputs came from."""
+
+    body: Body
+    unb: B.Unbalance
+    shaft_source: str
+    through_source: str
+    mark_source: str
+    corrections: B.Corrections | None = None  # ideal
+    final: B.Corrections | None = None  # what to install (rounded or ideal; net of positions)
+    positions: B.PositionCorrections | None = None
+    radius_source: str = "--radius"
+    corrected: B.Unbalance | None = None  # the rotor with what to install added
+    speed: float | None = None
+    bearings: tuple[float, float] | None = None
+    forces: B.BearingForces | None = None
+    forces_after: B.BearingForces | None = None
+    iso: B.IsoCheck | None = None
+    apply_path: str | None = None
+    apply_parts: list[dict] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+
+
+# ----------------------------------------------------------------------------- conventions
+
+
+def _vec(v, digits: int = 6) -> str:
+    return "[" + ", ".join(num(0.0 if abs(x) < 1e-15 else float(x), digits) for x in v) + "]"
+
+
+def convention(r: Result) -> str:
+    """The angle convention, in words (printed with every result)."""
+    u = r.unb
+    against = u.angle_sense == "against"
+    towards = "−y" if against else "+y"
+    sense = (
+        "against the direction of rotation for a positive speed (--angle-sense against)"
+        if against
+        else "in the direction of rotation for a positive speed"
+    )
+    return (
+        f"angles: degrees about the shaft axis (+z) from +x, the 0° mark, towards {towards} — "
+        f"{sense}; a correction is a mass to add (remove the same mass at +180°)"
+    )
+
+
+def frame_sentence(r: Result) -> str | None:
+    """For a shaft frame that is not the body frame: how its axes were chosen."""
+    fr = r.unb.frame
+    if np.array_equal(fr.rotation, np.eye(3)):
+        return None
+    return (
+        f"shaft frame (body components): z = {_vec(fr.rotation[2])} along the shaft; "
+        f"x = {_vec(fr.rotation[0])}, the 0° mark ({r.mark_source}); "
+        f"y = z × x = {_vec(fr.rotation[1])}"
+    )
+
+
+def mark_source(axis, mark_given: bool, zero_mark_deg: float) -> str:
+    """How the 0° mark was chosen (for the frame sentence and JSON)."""
+    if mark_given:
+        text = "the --mark direction projected at right angles to the shaft"
+    else:
+        ez = np.asarray(axis, dtype=float)
+        ez = ez / np.linalg.norm(ez)
+        if abs(ez[0]) > B.FRAME_SWITCH_COS:
+            text = (
+                "body y projected at right angles to the shaft, as the shaft is within 25.8° "
+                "of body x"
+            )
+        else:
+            text = "body x projected at right angles to the shaft"
+    if zero_mark_deg:
+        text += f", turned {num(zero_mark_deg)}° about the shaft by --zero-mark-deg"
+    return text
+
+
+# ----------------------------------------------------------------------------- JSON
+
+
+def _forces_rows(f: B.BearingForces) -> list[dict]:
+    return f.to_json()["bearing_forces"]
+
+
+def to_json(r: Result) -> dict:
+    """SPEC §3 keys first (via core's balance_json), then rbcli's extras."""
+    u = r.unb
+    corr = r.corrections if r.positions is not None else r.final
+    forces = r.forces if r.speed is not None else None
+    d = B.balance_json(u, corr, forces, r.iso)
+    if r.positions is not None:
+        pj = r.positions.to_json()
+        det = d["correction_details"]
+        det["residual"] = pj["residual"]
+        det["rounded"] = pj["rounded"]
+        det["mass_step"] = pj["mass_step"]
+        d["positions"] = {k: v for k, v in pj.items() if k != "residual"}
+    if r.final is not None:
+        d["correction_details"]["radius_source"] = r.radius_source
+    if r.corrected is not None:
+        cj = r.corrected.to_json()
+        d["corrected"] = {
+            k: cj[k]
+            for k in (
+                "mass", "eccentricity", "static_unbalance", "couple_unbalance", "tilt_deg",
+                "statically_balanced", "dynamically_balanced",
+            )
+        }
+    if r.bearings is not None and r.forces is not None:
+        d["bearings"] = [
+            {"plane": float(z), "name": str(i + 1), "static_load": float(w)}
+            for i, (z, w) in enumerate(zip(r.bearings, r.forces.static_loads))
+        ]
+        if "dynamics" not in d:
+            d["static_load_assumption"] = "shaft horizontal, gravity at right angles to it"
+    if r.forces_after is not None:
+        d["bearing_forces_after"] = [
+            {k: row[k] for k in ("plane", "name", "force", "angle_deg", "angle_defined")}
+            for row in _forces_rows(r.forces_after)
+        ]
+    d["angle_convention"] = convention(r)
+    d["shaft_source"] = r.shaft_source
+    d["through_source"] = r.through_source
+    d["mark_source"] = r.mark_source
+    if r.apply_path is not None:
+        d["apply"] = {"file": r.apply_path, "parts": r.apply_parts}
+    d["warnings"] = list(r.warnings)
+    d["name"] = r.body.name
+    d["file"] = r.body.source
+    return d
+
+
+# ----------------------------------------------------------------------------- tables
+
+
+def document(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+    u = r.unb
+    doc.heading(f"{r.body.name}  ({r.body.source})")
+    fr = u.frame
+    doc.note(
+        f"shaft: {_vec(fr.axis)} ({r.shaft_source}) through {_vec(np.asarray(fr.origin) / su.length[0])} "
+        f"{su.unit('length')} ({r.through_source}); positions z along the shaft from that point"
+    )
+    fs = frame_sentence(r)
+    if fs:
+        doc.note(fs)
+    doc.note(convention(r))
+    _unbalance(doc, r, su, digits)
+    if r.final is not None:
+        _corrections(doc, r, su, digits)
+    if r.bearings is not None or r.speed is not None:
+        _bearings(doc, r, su, digits)
+    if r.iso is not None:
+        _iso(doc, r, su, digits)
+    if r.apply_path is not None:
+        doc.note(
+            f"written {r.apply_path}: the body with "
+            + ", ".join(f"'{p['name']}'" for p in r.apply_parts)
+            + " added as point parts"
+        )
+
+
+def _unbalance(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+    u = r.unb
+    L = su.unit("length")
+    rows = [
+        ("rotor mass M", su.show(u.mass, "rotor_mass", digits), su.unit("rotor_mass")),
+        ("com along the shaft z_G", su.show(_snap(float(u.com_shaft[2]), u.tol_eccentricity), "length", digits), L),
+        ("eccentricity e (com from the shaft)", mag(su, u.eccentricity, u.static_angle_defined, "eccentricity", digits), su.unit("eccentricity")),
+        ("static unbalance U = M e", mag(su, u.static_unbalance, u.static_angle_defined, "unbalance", digits), su.unit("unbalance")),
+        ("  its angle (heavy side)", angle(u.static_angle_deg, u.static_angle_defined, digits), "°"),
+        ("couple unbalance P_G (about the com)", mag(su, u.couple_unbalance, u.couple_angle_defined, "couple", digits), su.unit("couple")),
+        ("  its angle", angle(u.couple_angle_deg, u.couple_angle_defined, digits), "°"),
+        ("moment unbalance P (about z = 0)", mag(su, u.moment_unbalance, u.angle_of(u.moment, u.tol_moment)[1], "couple", digits), su.unit("couple")),
+        ("  its angle", angle(*u.angle_of(u.moment, u.tol_moment), digits), "°"),
+        ("tilt of the nearest principal axis", num(u.tilt_deg if u.tilt_azimuth_defined else 0.0, digits) + ("" if u.tilt_well_defined else " (ill-defined)"), "°"),
+        ("  direction its +z end leans", angle(u.tilt_azimuth_deg, u.tilt_azimuth_defined, digits), "°"),
+        ("statically balanced", yes(u.statically_balanced), ""),
+        ("dynamically balanced", yes(u.dynamically_balanced), ""),
+    ]
+    doc.kv("unbalance about the shaft", rows)
+    doc.note(
+        "balanced means: e ≤ "
+        f"{num(u.tol_eccentricity, 3)} m (rtol {num(u.rtol, 3)} × {num(u.length_scale, 6)} m, the "
+        "rotor's size) and |P_G| ≤ "
+        f"{num(u.tol_couple, 3)} kg·m² (rtol × trace of the inertia about the com): balanced to the "
+        "accuracy of the input; --grade judges against a real tolerance"
+    )
+
+
+def _corrections(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+    final = r.final
+    assert final is not None
+    ideal = r.corrections
+    assert ideal is not None
+    L, m = su.unit("length"), su.unit("mass")
+    rounded = r.positions is None and final.rounded
+    how = ""
+    if rounded:
+        steps = []
+        if final.mass_step is not None:
+            steps.append(f"masses to {su.show(final.mass_step, 'mass', digits)} {m}")
+        if final.angle_step_deg is not None:
+            steps.append(f"angles to {num(final.angle_step_deg, digits)}°")
+        how = ", rounded: " + " and ".join(steps)
+    cols = ["plane", f"z [{L}]", f"radius [{L}]"]
+    if rounded:
+        cols += [f"ideal mass [{m}]", "ideal angle [°]"]
+    cols += [f"mass [{m}]", "angle [°]", "remove at [°]", f"unbalance [{su.unit('unbalance')}]"]
+    rows = []
+    pairs = zip(ideal.pair, final.pair) if r.positions is None else zip(ideal.pair, ideal.pair)
+    for pi, pc in pairs:
+        row = [pc.name, su.show(pc.z, "length", digits), su.show(pc.radius, "length", digits)]
+        if rounded:
+            row += [mag(su, pi.mass, pi.angle_defined, "mass", digits), angle(pi.angle_deg, pi.angle_defined, digits)]
+        row += [
+            mag(su, pc.mass, pc.angle_defined or pc.mass > 0 and r.positions is None and final.rounded, "mass", digits),
+            angle(pc.angle_deg, pc.angle_defined, digits),
+            angle(pc.remove_angle_deg, pc.angle_defined, digits),
+            mag(su, abs(pc.unbalance), pc.angle_defined, "unbalance", digits),
+        ]
+        rows.append(row)
+    doc.table(
+        f"two-plane correction: masses to add{how} (radius from {r.radius_source})",
+        cols,
+        rows,
+        right=tuple(range(1, len(cols))),
+    )
+    st = (final if r.positions is None else ideal).static
+    if st.angle_defined:
+        doc.note(
+            f"single-plane (static) correction: {su.show(st.mass, 'mass', digits)} {m} at "
+            f"{angle(st.angle_deg, st.angle_defined, digits)}° on radius {su.show(st.radius, 'length', digits)} {L}, "
+            "in any plane (cancels U only; the couple stays)"
+        )
+    else:
+        doc.note("single-plane (static) correction: none (the rotor is statically balanced)")
+    if r.positions is not None:
+        p = r.positions
+        prow = []
+        for pc, sp in zip(ideal.pair, p.splits):
+            for mass, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
+                prow.append([pc.name, str(k), num(a, digits), su.show(mass, "mass", digits)])
+        rtxt = f", rounded to {su.show(p.mass_step, 'mass', digits)} {m}" if p.mass_step else ""
+        doc.table(
+            f"masses to add at {p.n_positions} positions{rtxt}",
+            ["plane", "position", "angle [°]", f"mass [{m}]"],
+            prow,
+            right=(1, 2, 3),
+        )
+        doc.note(
+            f"positions every {num(p.pitch_deg, digits)}°, position 1 on the 0° mark; each plane's "
+            "correction split onto the two positions either side of it"
+        )
+    res = final.residual
+    tol = res.tol_static
+    which = "the masses at the positions" if r.positions is not None else (
+        "the rounded corrections" if final.rounded else "the corrections")
+    s_ang = r.unb.angle_of(res.static, tol)
+    c_ang = r.unb.angle_of(res.couple, res.tol_couple)
+    rrows = [
+        ("static unbalance", mag(su, abs(res.static), s_ang[1], "unbalance", digits), su.unit("unbalance")),
+        ("  its angle", angle(*s_ang, digits), "°"),
+        ("couple unbalance (about the new com)", mag(su, abs(res.couple), c_ang[1], "couple", digits), su.unit("couple")),
+        ("  its angle", angle(*c_ang, digits), "°"),
+    ]
+    for name, z, uu in zip(("A", "B"), res.planes, res.plane_unbalances):
+        rrows.append(
+            (f"residual in plane {name} (z = {su.show(z, 'length', digits)} {L})",
+             mag(su, abs(uu), r.unb.angle_of(uu, res.tol_plane)[1], "unbalance", digits), su.unit("unbalance"))
+        )
+    if r.corrected is not None:
+        c = r.corrected
+        rrows += [
+            ("tilt of the nearest principal axis", num(c.tilt_deg if c.tilt_azimuth_defined else 0.0, digits), "°"),
+            ("statically balanced", yes(c.statically_balanced), ""),
+            ("dynamically balanced", yes(c.dynamically_balanced), ""),
+        ]
+    doc.kv(f"after adding {which}", rrows)
+
+
+def _bearings(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+    f = r.forces
+    assert f is not None
+    L = su.unit("length")
+    if r.bearings is not None:
+        has_speed = r.speed is not None
+        cols = ["bearing", f"z [{L}]"]
+        if has_speed:
+            cols += ["rotating force [N]", "angle [°]", f"equivalent unbalance [{su.unit('unbalance')}]"]
+            if r.forces_after is not None:
+                cols += ["after correction [N]"]
+        cols += ["static load [N]"]
+        rows = []
+        for i, z in enumerate(r.bearings):
+            row = [str(i + 1), su.show(z, "length", digits)]
+            if has_speed:
+                F = f.forces[i]
+                a, ok = r.unb.angle_of(F, f.tol_force)
+                row += [num(abs(F), digits), angle(a, ok, digits), su.show(abs(f.plane_unbalances[i]), "unbalance", digits)]
+                if r.forces_after is not None:
+                    fa = r.forces_after
+                    row += [num(abs(fa.forces[i]) if abs(fa.forces[i]) > fa.tol_force else 0.0, digits)]
+            row += [num(f.static_loads[i], digits)]
+            rows.append(row)
+        title = (
+            f"bearings at {num(r.speed * RPM, digits)} rpm ({num(r.speed, digits)} rad/s)"
+            if has_speed
+            else "bearings (give --speed for the rotating forces)"
+        )
+        doc.table(title, cols, rows, right=tuple(range(1, len(cols))))
+        notes = []
+        if has_speed:
+            notes.append(
+                "rotating force: the force the rotor exerts on each bearing, Ω² × the equivalent "
+                "unbalance in its plane; fixed in the rotor (its angle is in the rotor's frame), it "
+                "turns with the rotor"
+            )
+        notes.append(
+            f"static load: M g by the lever rule with the shaft horizontal (g = {num(f.g, digits)} m/s²); "
+            "negative means the bearing holds the rotor down"
+        )
+        doc.note("; ".join(notes))
+    if r.speed is not None:
+        torque = np.asarray(f.torque)
+        tz = complex(float(torque[0]), float(torque[1]))
+        ta, tok = r.unb.angle_of(tz, r.speed**2 * r.unb.tol_couple)
+        rows = [
+            ("speed", f"{num(r.speed * RPM, digits)} rpm = {num(r.speed, digits)}", "rad/s"),
+            ("total rotating force Ω² U", num(abs(f.centrifugal_force), digits), "N"),
+            ("|L| about the com (L = J_G ω)", num(float(np.linalg.norm(f.angular_momentum)), digits), "kg·m²/s"),
+            ("torque ω × L (about the com)", num(float(np.linalg.norm(torque)), digits), "N·m"),
+            ("  its direction (rotor frame)", angle(ta, tok, digits), "°"),
+        ]
+        doc.kv("dynamics", rows)
+
+
+def _iso(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+    iso = r.iso
+    assert iso is not None
+    U = su.unit("unbalance")
+    L = su.unit("length")
+    rows = [
+        ("balance quality grade", f"G {num(iso.grade, digits)}", "mm/s"),
+        ("maximum service speed", f"{num(iso.speed * RPM, digits)} rpm = {num(iso.speed, digits)}", "rad/s"),
+        ("permissible eccentricity e_per = G/Ω", su.show(iso.permissible_eccentricity, "eccentricity", digits), su.unit("eccentricity")),
+        ("permissible residual unbalance U_per = e_per M", su.show(iso.permissible_unbalance, "unbalance", digits), U),
+    ]
+    doc.kv("ISO 21940-11 tolerance", rows)
+    al = iso.allocation
+    if iso.planes_are == "bearing":
+        planes = "the bearing planes (ISO 21940-11)"
+        names = ("1", "2")
+    else:
+        planes = "the correction planes (older practice, ISO 1940/1:1986; --tolerance-planes corrections)"
+        names = ("A", "B")
+    doc.note(f"tolerance planes: {planes}; the com is {al.kind} ({'between' if al.kind == 'inboard' else 'outside'} them); allocation: {al.rule}")
+    cols = ["plane", f"z [{L}]", f"allowed [{U}]", f"as given [{U}]", "ratio"]
+    after = iso.after
+    if after is not None:
+        cols += [f"after [{U}]", "ratio"]
+    cols += ["achieved G [mm/s]"]
+    rows = []
+    st = iso.state
+    tol = iso.tol_plane
+
+    def cells(state: B.IsoState, i: int) -> tuple[str, str, str]:
+        zero = not abs(state.residual[i]) > tol  # zero to round-off: shown as 0
+        return (
+            su.show(0.0 if zero else abs(state.residual[i]), "unbalance", digits),
+            num(0.0 if zero else state.ratio[i], 4),
+            num(0.0 if zero else state.achieved_grade[i], 4),
+        )
+
+    for i in range(2):
+        b = cells(iso.before, i)
+        row = [names[i], su.show(iso.planes[i], "length", digits), su.show(al.allowed[i], "unbalance", digits), b[0], b[1]]
+        if after is not None:
+            a = cells(after, i)
+            row += [a[0], a[1]]
+        row += [cells(st, i)[2]]
+        rows.append(row)
+    doc.table("residual unbalance per plane", cols, rows, right=tuple(range(1, len(cols))))
+    verdict = "PASS" if iso.passed else "FAIL"
+    text = f"{verdict}: G {num(iso.grade)} {iso.judged}"
+    if after is not None:
+        text += f" (as given: {'PASS' if iso.before.passed else 'FAIL'})"
+    text += (
+        f"; whole-rotor static figure |U|/M Ω = "
+        f"{num(st.static_achieved_grade if st.static_unbalance > r.unb.tol_static else 0.0, 4)} mm/s; "
+        "PASS when each plane's residual is within its allowed share"
+    )
+    doc.note(text)
