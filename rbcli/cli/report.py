@@ -401,17 +401,23 @@ def _massprops(ctx: _Ctx):
     from rbcli.cli.massprops import _reference
     from rbcli.core.inertia import inertia_report
     from rbcli.render import massprops as r
-    from rbcli.render.text import Doc, Table
+    from rbcli.render.text import Doc
 
     mp, ref, label = _reference(ctx.body, None)
     res = inertia_report(mp, ref)
     doc = Doc()
     r.inertia_doc(doc, ctx.body, res, ctx.du, ctx.digits, "tensor", label)
-    # the report has its own parts table (with each part's contribution)
-    doc.items = [it for it in doc.items if not (isinstance(it, Table) and it.title == "parts")]
+    _drop_parts_tables(doc)
     s = _section("mass-properties", "Mass properties")
     s.add_doc(doc, drop_heading_prefix=ctx.body.name)
     return s
+
+
+def _drop_parts_tables(doc) -> None:
+    """The report has one parts table (with each part's contribution, and the mesh facts)."""
+    from rbcli.render.text import Table
+
+    doc.items = [it for it in doc.items if not (isinstance(it, Table) and it.title in ("parts", "mesh parts"))]
 
 
 def _principal(ctx: _Ctx):
@@ -425,6 +431,7 @@ def _principal(ctx: _Ctx):
     pr = principal_report(mp.mass, mp.inertia_com, mp.com)
     doc = Doc()
     r.principal_doc(doc, ctx.body, pr, ctx.du, ctx.digits, "the com")
+    _drop_parts_tables(doc)
     s = _section("principal-axes", "Principal axes")
     s.add_doc(doc, drop_heading_prefix=ctx.body.name)
     fig = body_figure(ctx.body, mp.com, pr, ctx.du, f"principal: {ctx.body.name} — equivalent ellipsoid, box and principal axes")

@@ -116,6 +116,11 @@ def parts_table(doc: Doc, body, mp, du: DisplayUnits, digits: int) -> None:
         rows,
         right=(2, 3, 4, 5, 6, 7, 8, 9),
     )
+    for p in body.parts:
+        if "volume" in p.extra:
+            tri = f", {p.extra['triangles']} triangles" if "triangles" in p.extra else ""
+            doc.note(f"mesh part '{p.name}': volume {du.show(p.extra['volume'], 'volume', digits)} "
+                     f"{du.unit('volume')}, area {du.show(p.extra['area'], 'area', digits)} {du.unit('area')}{tri}")
     doc.note(
         "A part's contribution is its own inertia about its centre plus the parallel-axis term "
         "m (d·d − d dᵀ), d from the body's centre of mass to the part's; holes count negative. "
