@@ -456,17 +456,32 @@ def test_progress_shows_on_a_terminal_after_a_second():
     from rbcli.cli.report import _Progress
 
     buf = io.StringIO()
-    quick = _Progress(t0=time.monotonic(), console=Console(file=buf, force_terminal=True))
-    quick.tty = True
+    quick = _Progress(t0=time.monotonic(), console=Console(file=buf, force_terminal=True), tty=True)
     quick.step("parts", 0, 7)  # within the first second: nothing yet
     assert quick.bar is None
-    slow = _Progress(t0=time.monotonic() - 2.0, console=Console(file=buf, force_terminal=True))
-    slow.tty = True
+    quick.stop()  # done before a second: never shown
+    assert quick.bar is None and buf.getvalue() == ""
+    slow = _Progress(t0=time.monotonic() - 2.0, console=Console(file=buf, force_terminal=True), tty=True)
     slow.step("balance", 3, 7)
     assert slow.bar is not None
     slow.bar.refresh()
     slow.stop()
     assert "rbcli report: balance" in buf.getvalue()
+    # one long section: the timer shows the line without waiting for the next step
+    buf2 = io.StringIO()
+    long = _Progress(t0=time.monotonic() - 0.9, console=Console(file=buf2, force_terminal=True), tty=True)
+    long.step("free precession", 4, 7)
+    deadline = time.monotonic() + 10.0  # the timer is due after ~0.1 s; a loaded machine may lag
+    while long.bar is None and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert long.bar is not None
+    long.bar.refresh()
+    long.stop()
+    assert "rbcli report: free precession" in buf2.getvalue()
+    # not a terminal: never
+    off = _Progress(t0=time.monotonic() - 5.0, console=Console(file=io.StringIO()), tty=False)
+    off.step("parts", 0, 7)
+    assert off.bar is None and off.timer is None
 
 
 # ----------------------------------------------------------------------------- a real browser

@@ -272,41 +272,69 @@ def _write(path, text: str) -> None:
 
 class _Progress:
     """A transient progress line on standard error, only on a terminal and only once
-    the report has taken more than a second."""
+    the report has taken more than a second (a timer shows it even while one long
+    section is being computed)."""
 
-    def __init__(self, t0: float, console=None) -> None:
+    def __init__(self, t0: float, console=None, tty: bool | None = None) -> None:
         import sys
+        import threading
+        import time
 
         self.t0 = t0
         self.console = console  # a rich Console (tests); default: standard error
         self.bar = None
         self.task = None
-        try:
-            self.tty = sys.stderr.isatty()
-        except (AttributeError, ValueError):
-            self.tty = False
+        self.state = ("starting", 0, 0)
+        self.stopped = False
+        self.lock = threading.Lock()
+        self.timer = None
+        if tty is None:
+            try:
+                tty = sys.stderr.isatty()
+            except (AttributeError, ValueError):
+                tty = False
+        self.tty = tty
+        if tty:
+            delay = max(0.0, 1.0 - (time.monotonic() - t0))
+            self.timer = threading.Timer(delay, self._show)
+            self.timer.daemon = True
+            self.timer.start()
+
+    def _show(self) -> None:
+        with self.lock:
+            if self.bar is not None or self.stopped:
+                return
+            from rich.console import Console
+            from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn
+
+            what, done, total = self.state
+            self.bar = Progress(SpinnerColumn(), TextColumn("rbcli report: {task.description}"), BarColumn(),
+                                console=self.console or Console(stderr=True), transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task(what, total=total or None, completed=done)
 
     def step(self, what: str, done: int = 0, total: int = 0) -> None:
         import time
 
         if not self.tty:
             return
-        if self.bar is None:
-            if time.monotonic() - self.t0 < 1.0:
-                return
-            from rich.console import Console
-            from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn
-
-            self.bar = Progress(SpinnerColumn(), TextColumn("rbcli report: {task.description}"), BarColumn(),
-                                console=self.console or Console(stderr=True), transient=True)
-            self.bar.start()
-            self.task = self.bar.add_task(what, total=total or None, completed=done)
-        self.bar.update(self.task, description=what, completed=done, total=total or None)
+        with self.lock:
+            self.state = (what, done, total)
+            bar = self.bar
+        if bar is None:
+            if time.monotonic() - self.t0 >= 1.0:
+                self._show()
+            return
+        bar.update(self.task, description=what, completed=done, total=total or None)
 
     def stop(self) -> None:
-        if self.bar is not None:
-            self.bar.stop()
-            self.bar = None
+        with self.lock:
+            self.stopped = True
+            if self.timer is not None:
+                self.timer.cancel()
+            if self.bar is not None:
+                self.bar.stop()
+                self.bar = None
 
 
 # ----------------------------------------------------------------------------- the report
