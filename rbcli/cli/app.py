@@ -30,6 +30,133 @@ app = typer.Typer(
 
 STATE = {"debug": False}
 
+
+# ----------------------------------------------------------------------------- start-up
+# typer 0.29 coerces the value of every non-flag parameter of the invoked command
+# (and its -h/--help) through a pydantic TypeAdapter. Building the first one imports
+# pydantic.fields/types/main/json_schema and pydantic's plug-in loader
+# (importlib.metadata, email, zipfile, ...): ~50 ms of CPU on every `rbcli <command>`,
+# a quarter of `import typer, numpy, yaml, pydantic` — while rbcli's parameters are
+# only str, list[str], int, float and bool (bench/README.md, "Start-up").
+# _Plain gives the value typer's adapter gives in the cases where that value is
+# obvious (a str; a plain decimal number inside its min/max; None) and hands every
+# other value to typer's own pydantic coercion, built lazily, so the result and every
+# error message stay typer's. Any other typer layout leaves typer untouched.
+
+_INT = None  # compiled on first use: re is imported by typer already, but keep it lazy
+_FLOAT = None
+
+
+def _int_text(value: str) -> int | None:
+    global _INT
+    if _INT is None:
+        import re
+
+        _INT = re.compile(r"[+-]?[0-9]{1,18}")
+    return int(value) if _INT.fullmatch(value) else None
+
+
+def _float_text(value: str) -> float | None:
+    global _FLOAT
+    if _FLOAT is None:
+        import re
+
+        _FLOAT = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]{1,3})?")
+    if not _FLOAT.fullmatch(value):
+        return None
+    x = float(value)
+    return x if x - x == 0.0 else None  # inf (1e999) goes to pydantic
+
+
+class _Plain:
+    """typer's coercion of a str, int, float or bool parameter (or a list of one)."""
+
+    __slots__ = ("_desc", "_kind", "_lo", "_hi", "_slow", "_build")
+
+    def __init__(self, desc, kind: type, build) -> None:
+        self._desc = desc
+        self._kind = kind
+        self._lo = desc.parameter_info.min
+        self._hi = desc.parameter_info.max
+        self._slow = None
+        self._build = build
+
+    def _one(self, v):
+        """(True, coerced) when the result is certain, else (False, None)."""
+        k = self._kind
+        t = type(v)
+        if k is str:
+            return (True, v) if t is str else (False, None)
+        if k is bool:
+            return (True, v) if t is bool else (False, None)
+        if k is int:
+            x = v if t is int else (_int_text(v) if t is str else None)
+        else:  # float
+            x = float(v) if t is float or t is int else (_float_text(v) if t is str else None)
+        if x is None or (self._lo is not None and x < self._lo) or (self._hi is not None and x > self._hi):
+            return False, None
+        return True, x
+
+    def coerce(self, value, param, ctx):
+        multi = param.multiple or param.nargs == -1
+        if value is None:
+            return () if multi else None
+        if multi:
+            if isinstance(value, (list, tuple)):
+                out = []
+                for v in value:
+                    ok, x = self._one(v)
+                    if not ok:
+                        break
+                    out.append(x)
+                else:
+                    return out
+        else:
+            ok, x = self._one(value)
+            if ok:
+                return x
+        if self._slow is None:
+            self._slow = self._build(self._desc)
+        return self._slow.coerce(value, param=param, ctx=ctx)
+
+
+def _fast_coercion() -> None:
+    try:
+        from typer import core as tcore
+        from typer._coercion import build_runtime_param
+    except ImportError:  # another typer: leave it alone
+        return
+    if getattr(tcore, "build_runtime_param", None) is not build_runtime_param or not hasattr(
+        getattr(tcore, "_TyperParameter", None), "get_runtime_param"
+    ):
+        return
+    from typing import get_args, get_origin
+
+    plain = (str, int, float, bool)
+
+    def build(desc):
+        info = desc.parameter_info
+        ann = desc.annotation
+        kind = ann
+        if get_origin(ann) is list and len(get_args(ann)) == 1:
+            kind = get_args(ann)[0]
+        if (
+            kind in plain
+            and getattr(desc, "file_annotation", 0) is None
+            and getattr(info, "parser", 0) is None
+            and getattr(info, "click_type", None) is None
+            and not getattr(info, "clamp", True)
+            and hasattr(info, "min")
+            and hasattr(info, "max")
+        ):
+            return _Plain(desc, kind, build_runtime_param)
+        return build_runtime_param(desc)
+
+    tcore.build_runtime_param = build
+
+
+_fast_coercion()
+
 #: What the man pages say beyond the options, per command: "json" (the keys and their
 #: meaning, roff-free text), "examples" (list of (command, what it prints)), "notes".
 #: Each command module fills in its own entry; ``rbcli.cli.manpages`` writes man/.
