@@ -646,3 +646,118 @@ def test_exit_status_through_the_real_entry_point():
     p = _cli(TWO_DISK, "--grade", "G6.3")
     assert p.returncode == 2 and p.stdout == ""
     assert p.stderr.count("\n") == 1 and p.stderr.startswith("rbcli: --grade")
+
+
+# ------------------------------------------------------------------------- field balancing
+
+
+def field(capsys, *args: str, code: int = 0) -> dict:
+    with pytest.raises(SystemExit) as exc:
+        main(["field-balance", *args, "--json"])
+    out, err = capsys.readouterr()
+    assert (exc.value.code or 0) == code, err
+    return json.loads(out) if code == 0 else {"err": err}
+
+
+T20 = ["--initial", "170@112,53@78", "--trial", "1.15 g@0", "--run", "235@94,58@68",
+       "--trial", "1.15 g@0", "--run", "185@115,77@104"]
+T21 = ["--initial", "21.6076@49.52,12.0102@299.16", "--trial", "5 g@0", "--run", "31.5134@46.51,12.6512@310.41",
+       "--trial", "5 g@0", "--run", "24.4405@51.98,12.1788@342.84"]
+
+
+def test_field_t19_single_plane(capsys):
+    d = field(capsys, "--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110")
+    (c,) = d["corrections"]
+    # the sheet's §5.2: W = 9.0800 g @ 36.594°, trial left on 6.0533 g @ 116.594°,
+    # H = 0.66079 (mm/s)/g @ 173.406° (the JSON is per kg)
+    assert c["mass"] * 1e3 == pytest.approx(9.0800, **sheet(9.0800, 5))
+    assert c["angle_deg"] == pytest.approx(36.594, **dp(36.594, 3))
+    assert c["mass_trial_on"] * 1e3 == pytest.approx(6.0533, **sheet(6.0533, 5))
+    assert c["angle_trial_on_deg"] == pytest.approx(116.594, **dp(116.594, 3))
+    h = d["influence"][0][0]
+    assert h["magnitude"] * 1e-3 == pytest.approx(0.66079, **sheet(0.66079, 5))
+    assert h["angle_deg"] == pytest.approx(173.406, **dp(173.406, 3))
+    # closed form: W = -V0 T / (V1 - V0)
+    V0, V1, T = cmath.rect(6, math.radians(30)), cmath.rect(4, math.radians(110)), 0.010
+    W = -V0 * T / (V1 - V0)
+    assert c["mass"] == pytest.approx(abs(W), rel=1e-12)  # a handful of complex operations
+
+
+def test_field_t20_published_two_plane(capsys):
+    d = field(capsys, *T20)
+    A, B = d["corrections"]
+    # B&K 17-227 example 6 as reproduced in the hsbalance docs: 1.979 g @ 236.2°, 1.071 g @ 121.8°
+    assert A["mass"] * 1e3 == pytest.approx(1.979, **sheet(1.979, 4))
+    assert A["angle_deg"] == pytest.approx(236.2, **dp(236.2, 1))
+    assert B["mass"] * 1e3 == pytest.approx(1.071, **sheet(1.071, 4))
+    assert B["angle_deg"] == pytest.approx(121.8, **dp(121.8, 1))
+    assert d["cond"] == pytest.approx(2.70, **dp(2.70, 2))
+    alpha = [[78.433, 58.4, 15.340, 145.3], [9.462, 10.2, 32.560, 142.4]]  # the sheet's α
+    for row, want in zip(d["influence"], alpha):
+        assert row[0]["magnitude"] * 1e-3 == pytest.approx(want[0], **dp(want[0], 3))
+        assert row[0]["angle_deg"] == pytest.approx(want[1], **dp(want[1], 1))
+        assert row[1]["magnitude"] * 1e-3 == pytest.approx(want[2], **dp(want[2], 3))
+        assert row[1]["angle_deg"] == pytest.approx(want[3], **dp(want[3], 1))
+
+
+def test_field_t21_synthetic_two_plane_and_mirrored_sense(capsys):
+    d = field(capsys, *T21)
+    A, B = d["corrections"]
+    assert A["mass"] * 1e3 == pytest.approx(12.0002, **sheet(12.0002))
+    assert A["angle_deg"] == pytest.approx(200.007, **dp(200.007, 3))
+    assert B["mass"] * 1e3 == pytest.approx(8.0002, **sheet(8.0002, 5))
+    assert B["angle_deg"] == pytest.approx(45.001, **dp(45.001, 3))
+    assert d["cond"] == pytest.approx(1.83, **dp(1.83, 2))
+    # every phase counted the other way (trials at 0° stay): the result is mirrored
+    # (sheet §5.1: 200.007° -> 159.993°)
+    flipped = []
+    for a in T21:
+        if "@" in a and " g@" not in a:
+            a = ",".join(f"{p.split('@')[0]}@{-float(p.split('@')[1])}" for p in a.split(","))
+        flipped.append(a)
+    m = field(capsys, *flipped)
+    assert m["corrections"][0]["angle_deg"] == pytest.approx(159.993, **dp(159.993, 3))
+    assert m["corrections"][0]["mass"] == pytest.approx(A["mass"], rel=1e-12)
+
+
+def test_field_radius_change_t23(capsys):
+    # T23: the same unbalance at another radius, m2 = m1 r1 / r2 (10 g at 100 mm = 8 g at 125 mm)
+    base = ["--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110"]
+    d0 = field(capsys, *base)
+    d1 = field(capsys, *base, "--trial-radius", "100mm", "--radius", "125mm")
+    assert d1["corrections"][0]["mass"] == pytest.approx(d0["corrections"][0]["mass"] * 0.8, rel=1e-15)
+    assert d1["corrections"][0]["angle_deg"] == d0["corrections"][0]["angle_deg"]
+
+
+def test_field_table_and_warnings(capsys):
+    with pytest.raises(SystemExit):
+        main(["field-balance", *T20])
+    out, err = capsys.readouterr()
+    assert "1.97947" in out and "236.17" in out and "2.701" in out
+    # a trial that hardly changed the reading: warned
+    with pytest.raises(SystemExit):
+        main(["field-balance", "--initial", "6.0@30", "--trial", "1 g@0", "--run", "6.1@32"])
+    out, err = capsys.readouterr()
+    assert "larger trial" in err
+    # nearly dependent columns: ill-conditioned
+    with pytest.raises(SystemExit):
+        main(["field-balance", "--initial", "10@0,10@0", "--trial", "5 g@0", "--run", "20@0,20@0",
+              "--trial", "5 g@0", "--run", "20@1,20@0"])
+    out, err = capsys.readouterr()
+    assert "ill-conditioned" in err
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--initial", "6@30", "--trial", "10 g@0", "--run", "4@110", "--run", "5@3"], "--run"),
+    (["--initial", "6@30", "--trial", "0 g@0", "--run", "4@110"], "--trial"),
+    (["--initial", "6@30", "--trial", "10 g", "--run", "4@110"], "--trial"),
+    (["--initial", "6@30,5@3", "--trial", "10 g@0", "--run", "4@110"], "--initial"),
+    (["--initial", "6@30", "--trial", "10 g@0", "--run", "6@30"], "--run"),
+    (["--initial", "6@30", "--trial", "10 g@0", "--run", "4@110", "--radius", "0.1"], "--radius"),
+    (["--initial", "1@0,1@0", "--trial", "1 g@0", "--run", "2@0,2@0", "--trial", "1 g@0", "--run", "3@0,3@0"], "singular"),
+    (["--initial", "6@30", "--trial", "10 m@0", "--run", "4@110"], "--trial"),
+])
+def test_field_bad_input_exit_2(capsys, args, says):
+    d = field(capsys, *args, code=2)
+    lines = d["err"].strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("rbcli: ") and says in lines[0], d["err"]

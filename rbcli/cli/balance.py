@@ -434,3 +434,150 @@ MANUAL["balance"] = {
          "Writes the wheel with its two 45 g weights; 'rbcli balance wheel_balanced.yaml' shows the residual."),
     ],
 }
+
+
+# ----------------------------------------------------------------------------- field balancing
+
+FIELD_HELP = """Field (trial-weight) balancing from vibration readings: the influence-coefficient method.
+
+Readings are amplitude@phase (any one vibration unit: µm, mils, mm/s; the phase in degrees
+from the keyphasor), trial masses mass@angle ('10 g@0'). One plane: --initial V0, one
+--trial T and one --run V1 (with the trial on) give H = (V1 - V0)/T and the correction
+W = -V0/H (trial removed; with it left on, add W - T). Two planes: two sensors per run
+(--initial V1,V2), --trial twice (planes A and B) and --run twice (trial A on, then trial B
+on and A removed, or left on with --cumulative) give the 2x2 influence matrix and W =
+-alpha^-1 V0, with its condition number (a warning above 50) and a warning for a trial that
+changed no reading by 25 % or 25°. The correction angles are counted in the same sense as
+the trial angles and the phases (they must agree). --trial-radius and --radius move the
+corrections to another radius (m = m_trial r_trial / r).
+"""
+
+_READING = re.compile(r"\s*(?P<num>[^@]+?)\s*@\s*(?P<ang>.+?)\s*")
+
+
+def _phasor_text(text: str, option: str, *, mass: bool):
+    """'6.0@30' (a reading) or '10 g@0' (a mass, kg) -> complex; the angle in degrees."""
+    import cmath
+    import math
+
+    from rbcli.errors import InputError
+
+    m = _READING.fullmatch(text)
+    if not m:
+        what = "mass@angle, e.g. '10 g@0'" if mass else "amplitude@phase, e.g. '6.0@30'"
+        raise InputError(f"{option}: '{text}' is not {what}")
+    if mass:
+        amp = c.quantity(m["num"], "mass", option)
+    else:
+        num = _NUMBER.match(m["num"])
+        if not num:
+            raise InputError(f"{option}: '{text}': the amplitude must be a number (a unit after it is a label)")
+        amp = float(m["num"][: num.end()])
+    ang = math.degrees(c.quantity(m["ang"], "angle", option, bare="deg"))
+    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
+        raise InputError(f"{option}: '{text}': amplitude must be a finite number >= 0 and the angle finite")
+    return complex(cmath.rect(amp, math.radians(ang)))
+
+
+def _readings(text: str, option: str, n: int) -> list[complex]:
+    from rbcli.errors import InputError
+
+    parts = [p for p in text.split(",")]
+    if len(parts) != n:
+        raise InputError(
+            f"{option}: expected {n} reading{'s' if n > 1 else ''} (one per sensor, as many as "
+            f"trial planes), got {len(parts)} in '{text}'"
+        )
+    return [_phasor_text(p, option, mass=False) for p in parts]
+
+
+@app.command("field-balance", help=FIELD_HELP)
+def field_balance(
+    initial: str = typer.Option(..., "--initial", help="Readings without trial: amplitude@phase, one per sensor (1 or 2), e.g. '6.0@30' or '170@112,53@78'.", show_default=False),
+    trial: list[str] = typer.Option(..., "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (give it twice for two planes; a bare mass is kg).", show_default=False),
+    run_: list[str] = typer.Option(..., "--run", help="Readings with each trial on, in the order of --trial (same form as --initial).", show_default=False),
+    cumulative: bool = typer.Option(False, "--cumulative", help="Two planes: trial A was left on during the run with trial B."),
+    trial_radius: str = typer.Option(None, "--trial-radius", help="Radius the trials sat at (m, or with units); with --radius.", show_default=False),
+    radius: str = typer.Option(None, "--radius", help="Radius the corrections go at (m, or with units); needs --trial-radius.", show_default=False),
+    json_: bool = c.JsonOpt,
+    digits: int = c.DigitsOpt,
+    units: str = c.UnitsOpt,
+) -> None:
+    from rbcli.errors import InputError
+    from rbcli.render.balance import ShopUnits
+
+    e = c.env()
+    su = ShopUnits(units)
+    n = len(trial)
+    if n not in (1, 2):
+        raise InputError(f"--trial: give one trial (one plane) or two (two planes), not {n}")
+    if len(run_) != n:
+        raise InputError(f"--run: give one run per trial ({n}), not {len(run_)}")
+    if cumulative and n != 2:
+        raise InputError("--cumulative: only for two planes")
+    if (trial_radius is None) != (radius is None):
+        raise InputError("--radius and --trial-radius go together (the corrections move from the trial radius to --radius)")
+    scale = 1.0
+    radii = None
+    if radius is not None:
+        rt = _positive(c.quantity(trial_radius, "length", "--trial-radius"), "--trial-radius", "the trial radius")
+        rc = _positive(c.quantity(radius, "length", "--radius"), "--radius", "the correction radius")
+        scale, radii = rt / rc, (rt, rc)
+    v0 = _readings(initial, "--initial", n)
+    runs = [_readings(r, "--run", n) for r in run_]
+    trials = [_phasor_text(t, "--trial", mass=True) for t in trial]
+    for t in trials:
+        if t == 0:
+            raise InputError("--trial: the trial mass must not be zero")
+    from rbcli.core import balance as B
+
+    try:
+        if n == 1:
+            res = B.field_single_plane(v0[0], runs[0][0], trials[0])
+        else:
+            res = B.field_two_plane(v0, runs[0], runs[1], trials[0], trials[1], cumulative=cumulative)
+    except ValueError as exc:
+        raise InputError(f"--run: {exc}") from None
+    for w in res.warnings:
+        e.warn(f"rbcli: warning: {w}")
+    from rbcli.render import balance as rb
+
+    if json_:
+        from rbcli.render.jsonout import dumps
+
+        e.write(dumps(rb.field_json(res, trials, scale, radii)))
+    else:
+        from rbcli.render.text import Doc
+
+        doc = Doc(e)
+        rb.field_document(doc, res, trials, scale, radii, su, digits)
+        e.write(doc.render())
+
+
+MANUAL["field-balance"] = {
+    "notes": [
+        "Physics notes balance.md §5: readings are complex numbers V = amplitude e^{i phase}; "
+        "trials T = mass e^{i angle}. One plane: H = (V1 - V0)/T, W = -V0/H (trial removed), "
+        "W - T with the trial left on; the predicted residual V0 + H W is 0 in the linear model. "
+        "Two planes, two sensors: alpha_iA = (V_iA - V_i0)/T_A, alpha_iB = (V_iB - V_i0)/T_B "
+        "(V_iB - V_iA with --cumulative), W = -alpha^-1 V0. Warnings: cond(alpha) > 50 (planes "
+        "not well separated), a trial run that changed no reading by 25 % in amplitude or 25° "
+        "in phase (use a larger trial).",
+        "The trial angles and the phases must be counted in the same sense; the correction "
+        "angles come out in that sense. Correction masses are in the trial's mass unit scaled "
+        "by --trial-radius / --radius when given.",
+    ],
+    "json": [
+        ("planes", "1 or 2."),
+        ("corrections", "[{name, mass (kg), angle_deg, mass_trial_on, angle_trial_on_deg, radius (m or null)}]; trial removed, and with that plane's trial left on."),
+        ("influence", "[[{magnitude (reading unit per kg), angle_deg}]] row = sensor, column = plane."),
+        ("cond, det_magnitude", "2-norm condition number and |det| of the influence matrix (two planes)."),
+        ("small_response, predicted_residual, cumulative, warnings", "checks as in the notes."),
+    ],
+    "examples": [
+        ("rbcli field-balance --initial '6.0@30' --trial '10 g@0' --run '4.0@110'",
+         "One plane: H = 0.66079 (mm/s)/g at 173.406°, add 9.08 g at 36.594° (trial removed)."),
+        ("rbcli field-balance --initial '170@112,53@78' --trial '1.15 g@0' --run '235@94,58@68' --trial '1.15 g@0' --run '185@115,77@104'",
+         "The B&K two-plane example: 1.979 g at 236.2° and 1.071 g at 121.8°, cond 2.70."),
+    ],
+}

@@ -1199,7 +1199,16 @@ def split_between(mass: float, angle_deg: float, angle1_deg: float, angle2_deg: 
         raise ValueError("cannot split onto two positions that coincide or are opposite")
     m1 = m * math.sin(a2 - phi) / den
     m2 = m * math.sin(phi - a1) / den
-    return Split((m1, m2), (_wrap_deg(angle1_deg), _wrap_deg(angle2_deg)), (-1, -1))
+    return Split((m1, m2), (_plain_wrap(angle1_deg), _plain_wrap(angle2_deg)), (-1, -1))
+
+
+def _plain_wrap(a: float) -> float:
+    """Angle in [0, 360) without _wrap_deg's snap of the last 1e-9 deg to 0: a position
+    angle is where a mass goes, and moving it by 1e-9 deg is a vector error of 1.7e-11 m."""
+    a = math.fmod(float(a), 360.0)
+    if a < 0.0:
+        a += 360.0
+    return 0.0 if a >= 360.0 else a + 0.0
 
 
 def split_to_positions(
@@ -1231,7 +1240,11 @@ def split_to_positions(
     n = int(n_positions)
     pitch = 360.0 / n
     off = _finite(offset_deg, "offset")
-    rel = _wrap_deg(_finite(angle_deg, "angle") - off)
+    # plain wrap into [0, 360): _wrap_deg's snap of the last 1e-9 deg to 0 would move the
+    # mass by up to 1e-9 deg, i.e. a vector error of ~1.7e-11 m
+    rel = math.fmod(_finite(angle_deg, "angle") - off, 360.0)
+    if rel < 0.0:
+        rel += 360.0
     k = int(math.floor(rel / pitch))
     frac = rel / pitch - k
     if k >= n:  # rel within round-off of 360
@@ -1242,7 +1255,10 @@ def split_to_positions(
     m1, m2 = sp.masses
     if frac == 0.0:
         m1, m2 = m, 0.0
-    return Split((max(m1, 0.0), max(m2, 0.0)), sp.angles_deg, (k, (k + 1) % n))
+    # the positions' angles from their indices (a1 + pitch can land a hair below 360 for
+    # position 0, e.g. n = 34)
+    angles = (_plain_wrap(off + k * pitch), _plain_wrap(off + ((k + 1) % n) * pitch))
+    return Split((max(m1, 0.0), max(m2, 0.0)), angles, (k, (k + 1) % n))
 
 
 @dataclass(frozen=True, eq=False)

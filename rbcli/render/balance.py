@@ -479,3 +479,110 @@ def _iso(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
         "PASS when each plane's residual is within its allowed share"
     )
     doc.note(text)
+
+
+# ----------------------------------------------------------------------------- field balancing
+
+
+def _field_rows(res, trials, scale):
+    """(name, W, W - T) per plane, masses in kg at the correction radius."""
+    if isinstance(res, B.FieldSinglePlane):
+        return [("A", res.correction * scale, res.correction_trial_on * scale)]
+    return [(name, complex(w) * scale, complex(w_on) * scale)
+            for name, w, w_on in zip("AB", res.corrections, res.corrections_trials_on)]
+
+
+def _field_influence(res) -> list[list[complex]]:
+    if isinstance(res, B.FieldSinglePlane):
+        return [[res.influence]]
+    return [[complex(a) for a in row] for row in res.influence]
+
+
+def _deg(z: complex) -> float:
+    return B._wrap_deg(math.degrees(math.atan2(z.imag, z.real)))
+
+
+def field_json(res, trials, scale: float, radii) -> dict:
+    rows = _field_rows(res, trials, scale)
+    out: dict = {
+        "planes": len(rows),
+        "corrections": [
+            {
+                "name": name,
+                "mass": abs(w),
+                "angle_deg": _deg(w) if w != 0 else 0.0,
+                "mass_trial_on": abs(w_on),
+                "angle_trial_on_deg": _deg(w_on) if w_on != 0 else 0.0,
+                "radius": None if radii is None else float(radii[1]),
+            }
+            for name, w, w_on in rows
+        ],
+        "influence": [[{"magnitude": abs(a), "angle_deg": _deg(a)} for a in row] for row in _field_influence(res)],
+        "trials": [{"mass": abs(t), "angle_deg": _deg(t)} for t in trials],
+        "trial_radius": None if radii is None else float(radii[0]),
+    }
+    if isinstance(res, B.FieldTwoPlane):
+        out["cond"] = float(res.cond)
+        out["det_magnitude"] = float(abs(res.det))
+        out["ill_conditioned"] = bool(res.ill_conditioned)
+        out["small_response"] = list(res.small_response)
+        out["predicted_residual"] = [float(abs(v)) for v in res.predicted_residual]
+        out["cumulative"] = bool(res.cumulative)
+    else:
+        out["small_response"] = [bool(res.small_response)]
+        out["predicted_residual"] = [float(abs(res.predicted_residual))]
+        out["cumulative"] = False
+    out["angle_convention"] = (
+        "angles and phases in degrees, counted in the same sense as the trial angles and the "
+        "phase readings (they must agree)"
+    )
+    out["warnings"] = list(res.warnings)
+    return out
+
+
+def field_document(doc: Doc, res, trials, scale: float, radii, su: ShopUnits, digits: int) -> None:
+    m = su.unit("mass")
+    n = 1 if isinstance(res, B.FieldSinglePlane) else 2
+    doc.heading(f"field balancing, {'one plane' if n == 1 else 'two planes, two sensors'} (influence coefficients)")
+    doc.note(
+        "angles in degrees, counted in the same sense as the trial angles and the phase readings "
+        "(they must agree); a correction is a mass to add"
+    )
+    names = ["A", "B"][:n]
+    inf = _field_influence(res)
+    rows = []
+    for i, row in enumerate(inf):
+        cells = [str(i + 1)]
+        for a in row:
+            per = abs(a) * su.mass[0]  # reading per display mass unit
+            cells += [num(per, digits), num(_deg(a), digits)]
+        rows.append(cells)
+    cols = ["sensor"]
+    for name in names:
+        cols += [f"plane {name}: per {m}", "phase [°]"]
+    doc.table("influence coefficients (reading per unit trial mass)", cols, rows, right=tuple(range(1, len(cols))))
+    crow = []
+    for name, w, w_on in _field_rows(res, trials, scale):
+        crow.append([name, su.show(abs(w), "mass", digits), num(_deg(w), digits),
+                     su.show(abs(w_on), "mass", digits), num(_deg(w_on), digits)])
+    where = "" if radii is None else (
+        f" at radius {su.show(radii[1], 'length', digits)} {su.unit('length')} (trials at "
+        f"{su.show(radii[0], 'length', digits)} {su.unit('length')})")
+    doc.table(
+        f"corrections to add{where}",
+        ["plane", f"mass [{m}]", "angle [°]", f"trial left on: add [{m}]", "angle [°]"],
+        crow,
+        right=(1, 2, 3, 4),
+    )
+    if n == 2:
+        doc.note(
+            f"condition number of the influence matrix {num(res.cond, 4)}"
+            + (" (ill-conditioned: the planes are not well separated)" if res.ill_conditioned else "")
+            + ("; trial A left on during run B (--cumulative)" if res.cumulative else "")
+        )
+    pr = res.predicted_residual
+    vals = [abs(pr)] if isinstance(res, B.FieldSinglePlane) else [abs(complex(v)) for v in pr]
+    doc.note(
+        "predicted residual reading after the corrections (linear model, 0 up to round-off): "
+        + ", ".join(num(v, 3) for v in vals)
+    )
