@@ -13,6 +13,7 @@ from rbcli.cli import massprops as _massprops  # noqa: F401  (registers inertia,
 from rbcli.cli import catalog as _catalog  # noqa: F401  (registers shapes, schema, examples)
 from rbcli.cli import balance as _balance  # noqa: F401  (registers balance)
 from rbcli.cli import rollcheck as _rollcheck  # noqa: F401  (registers rollcheck)
+from rbcli.cli import precess as _precess  # noqa: F401  (registers precess)
 from rbcli.cli import top as _top  # noqa: F401  (registers top, gyrocompass)
 from rbcli.cli import report as _report  # noqa: F401  (registers report)
 from rbcli.errors import ExitStatus, RbcliError

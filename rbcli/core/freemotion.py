@@ -71,6 +71,8 @@ SNAP_RTOL = 8 * np.finfo(float).eps
 SEPARATRIX_RTOL = 1e-14
 
 _TWO_PI = 2.0 * math.pi
+#: smallest |L|^2 (kg^2 m^4/s^2) kept at full relative precision (a normal double / eps)
+_TINY = float(np.finfo(float).tiny / np.finfo(float).eps)
 
 
 # ----------------------------------------------------------------------------------------
@@ -628,13 +630,28 @@ def analyse(
             moments[pair] = moments[pair].mean()
     J_model = axes.T @ np.diag(moments) @ axes
 
-    wp = axes @ w0
-    wn = float(np.linalg.norm(w0))
-    wp = np.where(np.abs(wp) <= SNAP_RTOL * wn, 0.0, wp)
-    Mp = moments * wp
-    L_body = axes.T @ Mp
-    G = float(np.linalg.norm(Mp))
-    T = 0.5 * float(wp @ Mp)
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        wp = axes @ w0
+        wn = float(np.linalg.norm(w0))
+        wp = np.where(np.abs(wp) <= SNAP_RTOL * wn, 0.0, wp)
+        Mp = moments * wp
+        L_body = axes.T @ Mp
+        G = float(np.linalg.norm(Mp))
+        T = 0.5 * float(wp @ Mp)
+        G2 = G * G
+    # The closed forms square L and multiply 2T by a moment: those must be normal doubles.
+    # (Found through the CLI: |omega| = 1e200 rad/s overflowed |omega| and was classified
+    # "rest"; 1e-300 underflowed G^2 and divided by zero.)
+    if not (math.isfinite(wn) and math.isfinite(G2) and math.isfinite(2.0 * T * float(moments[2]))):
+        raise ValueError(
+            "omega is too large for this body: |L|^2 or the kinetic energy overflows double "
+            "precision"
+        )
+    if bool(np.any(w0 != 0.0)) and not (G2 >= _TINY and T > 0.0):
+        raise ValueError(
+            "omega is too small for this body: |L|^2 or the kinetic energy underflows double "
+            "precision"
+        )
     coefs, kinds, rates = _linear(moments, G)
 
     common: dict[str, Any] = dict(

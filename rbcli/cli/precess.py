@@ -1,0 +1,274 @@
+"""``rbcli precess``: the exact torque-free motion of a rigid body."""
+
+from __future__ import annotations
+
+import typer
+
+from rbcli.cli import common as c
+from rbcli.cli.app import MANUAL, app
+
+HELP = """Torque-free motion from an initial angular velocity: L, T, precession, period, flips.
+
+The body turns freely about its centre of mass (no torque, no gravity), starting
+with the angular velocity --omega given in the body frame. Reported: L in the body
+frame, |L| and T; whether the body is symmetric; which principal axis w circles
+(1 = smallest moment, 3 = largest) and whether that is stable; the period of w in
+the body frame; for rotation near the intermediate axis the time between flips and
+the time of the first flip (the tennis-racket or Dzhanibekov effect); on the
+separatrix, that there is no period. A symmetric body also gets the body-frame
+precession rate W = w3 (Is/I - 1), the body and space cone semi-angles, the space
+precession rate |L|/I and the wobble-to-spin ratio. The motion is the exact
+solution (Jacobi elliptic functions; the orientation through the elliptic integral
+of the third kind), so --at T costs the same for T = 1 s or 1e9 s. The space frame
+is the body frame at t = 0.
+"""
+
+OMEGA_HELP = (
+    "Initial angular velocity x,y,z in the body frame (rad/s; units per component, "
+    "e.g. '0,0,300 rpm'). Required."
+)
+AT_HELP = (
+    "Also give w, L and the orientation (quaternion, axis and angle) at this time (s, or "
+    "with units, e.g. '7320 h'; negative = before t = 0)."
+)
+DURATION_HELP = (
+    "Span of the --csv time series, from t = 0 (s, or with units); also the span of "
+    "--plot (default: 3 periods of w)."
+)
+SAMPLES_HELP = "Rows of the --csv time series, evenly spaced from t = 0 to --duration inclusive (2 to 10000000)."
+CSV_HELP = (
+    "Write the time series t, wx, wy, wz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body to "
+    "space) to this CSV file, or '-' for standard output instead of the tables. Needs "
+    "--duration. An existing file is replaced; an input file never."
+)
+PLOT_HELP = (
+    "Save a figure (.png, .svg, .pdf): the body-frame components of w against time and the "
+    "polhode (the path of L/|L| on the unit sphere, principal frame) in two views."
+)
+VERIFY_HELP = (
+    "Check the exact motion against a numerical integration of Euler's equations and the "
+    "attitude (scipy DOP853, rtol 1e-12) over 3 periods; exit status 1 if they differ by "
+    "more than 1e-8."
+)
+
+#: --samples default and limit
+DEFAULT_SAMPLES = 1001
+MAX_SAMPLES = 10_000_000
+#: the phase of the motion at time t is known to about eps * rate * |t| rad (t itself is a
+#: double); beyond this rate * |t| it would be known to worse than 0.1 rad
+MAX_PHASE = 1e15
+
+
+@app.command(help=HELP)
+def precess(
+    body: str = c.BodyArg,
+    expr: str = c.ExprOpt,
+    omega: str = typer.Option(None, "--omega", help=OMEGA_HELP, show_default=False),
+    at: str = typer.Option(None, "--at", help=AT_HELP, show_default=False),
+    duration: str = typer.Option(None, "--duration", help=DURATION_HELP, show_default=False),
+    samples: str = typer.Option(None, "--samples", help=SAMPLES_HELP + f" Default {DEFAULT_SAMPLES}.", show_default=False),
+    csv: str = typer.Option(None, "--csv", help=CSV_HELP, show_default=False),
+    plot: str = typer.Option(None, "--plot", help=PLOT_HELP, show_default=False),
+    verify: bool = typer.Option(False, "--verify", help=VERIFY_HELP),
+    json_: bool = c.JsonOpt,
+    digits: int = c.DigitsOpt,
+    units: str = c.UnitsOpt,
+) -> None:
+    from rbcli.errors import InputError
+    from rbcli.render.fmt import DisplayUnits
+
+    e = c.env()
+    du = DisplayUnits.parse(units)
+
+    # --- option values, checked before the body is read (bad usage is bad usage)
+    if omega is None:
+        raise InputError(
+            "--omega: the initial angular velocity is required: x,y,z in the body frame, "
+            "e.g. --omega 0,0,10 (rad/s) or --omega '0,0,300 rpm'"
+        )
+    w = [_finite(x, "--omega") for x in c.vector(omega, "angular_speed", "--omega")]
+    t_at = _finite(c.quantity(at, "time", "--at"), "--at") if at is not None else None
+    span = None
+    if duration is not None:
+        span = _finite(c.quantity(duration, "time", "--duration"), "--duration")
+        if not span > 0.0:
+            raise InputError(f"--duration: must be a positive time, got '{duration}'")
+    n_rows = None
+    if samples is not None:
+        n_rows = _count(samples)
+        if csv is None:
+            raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE and --duration T")
+    if csv is not None:
+        if span is None:
+            raise InputError("--csv: needs --duration T, the span of the time series (from t = 0)")
+        if csv == "-" and json_:
+            raise InputError("--csv -: the time series would go to standard output, so it cannot be combined with --json; write it to a file")
+        if n_rows is None:
+            n_rows = DEFAULT_SAMPLES
+    elif span is not None and plot is None:
+        raise InputError("--duration: sets the span of --csv or --plot; add one of them")
+
+    # --- the body, and the output paths checked before any computing
+    srcs = c.sources([body] if body is not None else None, expr, single=True)
+    b = c.load(srcs[0], expr, e)
+    plot_path = None
+    if plot is not None:
+        from rbcli.render.plots import check_path
+
+        plot_path = check_path(plot, inputs=(b.source,))
+    csv_path = _check_csv(csv, b.source, plot_path) if csv not in (None, "-") else None
+
+    import numpy as np
+
+    from rbcli.core import freemotion as fm
+    from rbcli.core.inertia import combine
+    from rbcli.render import precess as rp
+
+    mp = combine(b.parts)
+    try:
+        motion = fm.analyse(mp.inertia_com, np.array(w))
+    except ValueError as exc:
+        where = b.source if str(exc).startswith("inertia") else "--omega"
+        raise InputError(f"{where}: {exc}") from None
+    rate = rp.fastest_rate(motion)
+    for t, opt in ((t_at, "--at"), (span, "--duration")):
+        if t is not None and rate * abs(t) > MAX_PHASE:
+            raise InputError(
+                f"{opt}: {t:.6g} s is about {rate * abs(t) / (2 * 3.141592653589793):.3g} turns "
+                "away; the phase of the motion there is not determined by a double-precision "
+                f"time (keep rate x |t| below {MAX_PHASE:.0e} rad)"
+            )
+
+    state = rp.state_at(motion, t_at) if t_at is not None else None
+    check = fm.verify(motion) if verify else None
+    csv_info = None
+    if csv is not None:
+        csv_info = {"file": csv, "samples": n_rows, "duration": span}
+        if csv == "-":
+            rp.write_csv(e.stdout, motion, span, n_rows)
+        else:
+            try:
+                with open(csv_path, "w", encoding="utf-8", newline="") as fh:
+                    rp.write_csv(fh, motion, span, n_rows)
+            except OSError as exc:
+                raise InputError(f"--csv: cannot write '{csv}': {exc.strerror or exc}") from None
+    if plot_path is not None:
+        rp.plot(plot_path, b, motion, span, du)
+
+    extras = rp.Extras(at=state, verify=check, csv=csv_info, plot=str(plot_path) if plot_path else None)
+    if csv == "-":
+        pass  # the time series is the output
+    elif json_:
+        from rbcli.render.jsonout import dumps
+
+        e.write(dumps(rp.to_json(b, motion, extras)))
+    else:
+        from rbcli.render.text import Doc
+
+        doc = Doc(e)
+        rp.document(doc, b, motion, extras, du, digits)
+        e.write(doc.render())
+    if check is not None and not check.ok:
+        c.finish(1)
+
+
+def _finite(x: float, option: str) -> float:
+    from rbcli.errors import InputError
+
+    if x != x or x in (float("inf"), float("-inf")):
+        raise InputError(f"{option}: must be a finite number")
+    return x
+
+
+def _count(text: str) -> int:
+    from rbcli.errors import InputError
+
+    try:
+        n = int(text.strip())
+    except ValueError:
+        raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got '{text}'") from None
+    if not 2 <= n <= MAX_SAMPLES:
+        raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got {n}")
+    return n
+
+
+def _check_csv(path: str, source: str, plot_path):
+    """The CSV path: not an input, not the plot, in a folder that exists, not a folder."""
+    import os
+    from pathlib import Path
+
+    from rbcli.errors import InputError
+
+    p = Path(path)
+    real = os.path.realpath(p)
+    if source and not source.startswith("<") and os.path.realpath(source) == real:
+        raise InputError(f"--csv: '{path}' is an input file; rbcli never overwrites its inputs")
+    if plot_path is not None and os.path.realpath(plot_path) == real:
+        raise InputError(f"--csv: '{path}' is also the --plot file; give two different files")
+    if p.is_dir():
+        raise InputError(f"--csv: '{path}' is a folder; give a file name")
+    if p.parent and not p.parent.exists():
+        raise InputError(f"--csv: the folder '{p.parent}' does not exist")
+    return p
+
+
+MANUAL["precess"] = {
+    "notes": [
+        "Frames: --omega and every vector are in the body frame (the frame of the body file); "
+        "the analysis uses the principal frame about the com (moments ascending: axis 1 the "
+        "smallest, axis 3 the largest, as rbcli principal prints them). The space frame is the "
+        "body frame at t = 0, so L in space is the initial L and the orientation at t = 0 is the "
+        "identity. Quaternions are w, x, y, z (scalar first) and turn body coordinates into "
+        "space coordinates.",
+        "Which motion: w circles axis 3 when G^2 > 2 T I2 (G = |L|, T the kinetic energy), axis "
+        "1 when G^2 < 2 T I2; both are stable for a rigid body (a body that dissipates energy "
+        "ends up turning about axis 3, the major-axis rule). G^2 = 2 T I2 is the separatrix: no "
+        "period, w creeps towards the intermediate axis and the body turns over once. The "
+        "intermediate component w2 changes sign every flip_interval = 2K(m)/lambda: near the "
+        "intermediate axis that is the tennis-racket (Dzhanibekov) flip.",
+        "Symmetric body (I1 = I2 = I, I3 = Is, or the prolate I2 = I3): in the body w circles the "
+        "symmetry axis at W = w3 (Is/I - 1) (period 2 pi/|W|); in space the axis and w turn "
+        "about L at |L|/I. For the Earth (Is/I = 1.00327, one turn a sidereal day) the rigid "
+        "value is 304.975 days; the observed Chandler wobble, about 433 days, is not a "
+        "rigid-body result (the elastic mantle, the oceans and the fluid core lengthen it).",
+        "The CSV has a header line and one row per time, numbers written with full precision "
+        "(shortest repr that reads back exactly); the quaternion's sign is kept continuous along "
+        "the series (q and -q are the same orientation). An existing CSV or plot file is "
+        "replaced, an input file never. Time units on the command line: s, ms, min, h.",
+    ],
+    "json": [
+        ("angular_momentum", "[3] L = J w at t = 0, kg m^2/s, body frame (= the constant L in space)."),
+        ("kinetic_energy", "T = w.J.w/2, J."),
+        ("symmetric", "true when two (or three) principal moments are equal."),
+        ("period", "period of w in the body frame, s; null when not periodic (rest, steady rotation, a spherical body, the separatrix)."),
+        ("circles_axis", "1 or 3: the principal axis w circles (or turns steadily about); null at rest, for a spherical body, on the separatrix or steadily about the intermediate (or a transverse) axis."),
+        ("precession_rate", "symmetric bodies: W = w3 (Is/I - 1), rad/s, signed about the symmetry axis; null otherwise."),
+        ("space_precession_rate", "symmetric bodies: |L|/I, rad/s, the rate the symmetry axis turns about L."),
+        ("body_cone_deg, space_cone_deg", "symmetric bodies: the semi-angles of the body cone (w to the axis) and the space cone (w to L), degrees."),
+        ("flip_interval", "asymmetric periodic motion: time between sign changes of w2, s (the tennis-racket flips near the intermediate axis); null otherwise."),
+        ("first_flip, flip_interval_estimate", "the first t > 0 at which w2 changes sign, s; the near-separatrix estimate (2/sigma) ln(4/k'), s."),
+        ("omega, angular_momentum_norm, symmetry, principal_moments, principal_axes", "the input w [3] rad/s; |L|; asymmetric/symmetric/spherical; moments ascending [3] and axes [3x3] (rows, body frame)."),
+        ("case, description, stable", "rest, spherical, steady, circulates_max, circulates_min or separatrix; one sentence; whether the motion is stable (null where neutral or n/a)."),
+        ("nutation_deg, symmetry_axis, oblate, spin_rate, wobble_to_spin, wobble_period, space_precession_period", "symmetric bodies: angle of L from the axis; the axis [3]; Is > I; psi' = -W; |phi'/psi'|; 2 pi/|W| s (also for steady spin about the axis: the period of a small wobble); 2 pi I/|L| s."),
+        ("precession_per_period, mean_precession_rate", "angle the body turns about L per period of w, rad; that over the period, rad/s."),
+        ("elliptic_parameter, elliptic_complement, elliptic_rate", "asymmetric motion: m, 1 - m and lambda (1/s) of the Jacobi solution."),
+        ("linear_rates, linear_kinds", "[3] for steady rotation about each principal axis with this |L|: the small-oscillation frequency (rad/s) or growth rate (1/s), and which."),
+        ("notes", "[strings] what the tables say in words (near the intermediate axis, the separatrix, the Earth's Chandler wobble, ...)."),
+        ("at", "with --at: {t (s), omega [3], angular_momentum [3] (body frame at t), quaternion [4] (w, x, y, z), rotation_axis [3] (null for no rotation), rotation_angle_deg, rotation_matrix [3x3], periods (t/period or null)}."),
+        ("verify", "with --verify: {t_end, samples, rtol, nfev, omega_error, attitude_error (rad), numeric_energy_drift, numeric_momentum_drift, numeric_L_drift, exact_energy_drift, exact_momentum_drift, exact_L_drift, tol, ok}."),
+        ("csv, plot", "with --csv: {file, samples, duration}; with --plot: the file written."),
+        ("name, file", "the body's name and where it was read from."),
+    ],
+    "examples": [
+        ("rbcli precess examples/frisbee.yaml --omega 0.871557,0,9.96195",
+         "A thin disk spinning at 10 rad/s, 5 degrees off its axis: the wobble is about twice the spin (wobble/spin 2.00191), W = 9.96195 rad/s, space cone 2.49523 degrees."),
+        ("rbcli precess examples/earth.yaml --omega 0,0,7.292115855e-5",
+         "The rigid Earth: a small wobble has the period 2.63499e7 s = 304.975 days (not the observed 433-day Chandler wobble)."),
+        ("rbcli precess examples/book.yaml --omega 0.01,1,0.01",
+         "Spin about the intermediate axis: the book flips every 19.5529 s, first at 10.9169 s."),
+        ("rbcli precess examples/book.yaml --omega 0.01,1,0.01 --at 1e9 --json | jq .at",
+         "w and the orientation 10^9 s later, at the cost of t = 1 s."),
+        ("rbcli precess examples/football.yaml --omega 1.73648,0,9.84808 --duration 5 --samples 501 --csv ball.csv --plot ball.svg",
+         "A time series and a figure of the wobbling football."),
+    ],
+}
