@@ -22,6 +22,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from rbcli.cli import app, main
@@ -761,3 +763,45 @@ def test_field_bad_input_exit_2(capsys, args, says):
     d = field(capsys, *args, code=2)
     lines = d["err"].strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("rbcli: ") and says in lines[0], d["err"]
+
+
+# ------------------------------------------------------------------------- robustness
+
+
+def _exit_code(*argv: str) -> tuple[int, str]:
+    import contextlib
+    import io
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            main(list(argv))
+            code = 0
+        except SystemExit as exc:
+            code = 0 if exc.code is None else int(exc.code)
+    return code, err.getvalue()
+
+
+finite = st.floats(allow_nan=False, allow_infinity=False)
+positive = st.floats(min_value=0.0, exclude_min=True, allow_infinity=False)
+
+
+@given(za=finite, zb=finite, r=positive, w=positive, b1=finite, b2=finite, step=positive)
+@settings(max_examples=40, deadline=None)
+def test_any_numbers_give_a_result_or_a_one_line_error(za, zb, r, w, b1, b2, step):
+    """Whatever numbers the options get (huge, tiny, negative, subnormal): exit 0, 1 or 2
+    with a one-line message, never an internal error (70) or a traceback."""
+    code, err = _exit_code("balance", TWO_DISK, "--planes", f"{za!r},{zb!r}", "--radius", repr(r),
+                           "--speed", repr(w), "--bearings", f"{b1!r},{b2!r}", "--grade", "G6.3",
+                           "--mass-step", f"{step!r} kg", "--json")
+    assert code in (0, 1, 2), err
+    if code == 2:
+        assert len([ln for ln in err.splitlines() if not ln.startswith("rbcli: warning:")]) == 1, err
+
+
+@given(a=positive, p=finite, t=positive, a1=positive)
+@settings(max_examples=30, deadline=None)
+def test_field_any_numbers_give_a_result_or_a_one_line_error(a, p, t, a1):
+    code, err = _exit_code("field-balance", "--initial", f"{a!r}@{p!r}", "--trial", f"{t!r} g@0",
+                           "--run", f"{a1!r}@{p!r}", "--json")
+    assert code in (0, 2), err

@@ -197,8 +197,26 @@ def balance(
 
         out_path = check_output(apply, b, force=force)
 
-    res = _compute(b, n_shaft, p_through, v_mark, zero_mark_deg, angle_sense, z_planes, r_opt,
-                   m_step, a_step, positions, W, z_bear, gv, G, tolerance_planes)
+    import numpy as np
+
+    from rbcli.render import balance as rb
+    from rbcli.render.jsonout import jsonable
+
+    given = [o for o, v in (("--planes", planes), ("--radius", radius), ("--bearings", bearings),
+                            ("--speed", speed), ("--mass-step", mass_step), ("--through", through),
+                            ("--g", None if g == "9.80665" else g)) if v is not None]
+    try:
+        with np.errstate(all="ignore"):
+            res = _compute(b, n_shaft, p_through, v_mark, zero_mark_deg, angle_sense, z_planes, r_opt,
+                           m_step, a_step, positions, W, z_bear, gv, G, tolerance_planes)
+            data = jsonable(rb.to_json(res))  # refuses inf and NaN
+    except (ValueError, OverflowError, ZeroDivisionError) as exc:
+        if isinstance(exc, ValueError) and "finite" not in str(exc):
+            raise InputError(f"{', '.join(given) or 'balance'}: {exc}") from None
+        raise InputError(
+            f"{', '.join(given) or 'balance'}: the result overflows (a number beyond 1e308): "
+            "an option value is too large or too small for this body"
+        ) from None
     if m_step is not None and res.corrections is not None:
         biggest = max(pc.mass for pc in res.corrections.pair)
         if m_step > biggest:
@@ -219,12 +237,10 @@ def balance(
         _apply(res, out_path, apply, b, check)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    from rbcli.render import balance as rb
-
     if json_:
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(rb.to_json(res)))
+        e.write(dumps(rb.to_json(res) if out_path is not None else data))
     else:
         from rbcli.render.text import Doc
 
@@ -531,21 +547,31 @@ def field_balance(
             raise InputError("--trial: the trial mass must not be zero")
     from rbcli.core import balance as B
 
+    import numpy as np
+
+    from rbcli.render import balance as rb
+    from rbcli.render.jsonout import jsonable
+
     try:
-        if n == 1:
-            res = B.field_single_plane(v0[0], runs[0][0], trials[0])
-        else:
-            res = B.field_two_plane(v0, runs[0], runs[1], trials[0], trials[1], cumulative=cumulative)
-    except ValueError as exc:
-        raise InputError(f"--run: {exc}") from None
+        with np.errstate(all="ignore"):
+            if n == 1:
+                res = B.field_single_plane(v0[0], runs[0][0], trials[0])
+            else:
+                res = B.field_two_plane(v0, runs[0], runs[1], trials[0], trials[1], cumulative=cumulative)
+            data = jsonable(rb.field_json(res, trials, scale, radii))  # refuses inf and NaN
+    except (ValueError, OverflowError, ZeroDivisionError, np.linalg.LinAlgError) as exc:
+        if isinstance(exc, ValueError) and "finite" not in str(exc):
+            raise InputError(f"--run: {exc}") from None
+        raise InputError(
+            "--initial, --trial, --run: the result overflows (a number beyond 1e308); "
+            "the readings or trial masses are too large or too small"
+        ) from None
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    from rbcli.render import balance as rb
-
     if json_:
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(rb.field_json(res, trials, scale, radii)))
+        e.write(dumps(data))
     else:
         from rbcli.render.text import Doc
 
