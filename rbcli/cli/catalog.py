@@ -11,11 +11,21 @@ from rbcli.cli.app import MANUAL, app
 
 SPECIAL = {
     "mesh": (
-        "closed triangle mesh from a file: STL (binary or ASCII) or OBJ",
-        "file; optional scale, units (length unit of the coordinates), allow_open",
-        "mass or density",
-        "the mesh's own coordinates",
-        "exact volume, centroid and second moments of the closed polyhedron (divergence theorem)",
+        "a uniform solid bounded by a closed triangle mesh from a file: STL (binary or ASCII) "
+        "or OBJ (polygons are fanned into triangles); the table and JSON add its volume, "
+        "surface area and triangle count",
+        "file (relative to the body file); optional scale (a plain factor), units (the length "
+        "unit of the mesh's coordinates, e.g. mm; default: the body file's length unit), "
+        "allow_open (true: accept boundary edges, with a warning)",
+        "mass or density (a hole in a mesh, or a mesh hole, may use cut_from)",
+        "the mesh's own coordinate origin (file coordinates x scale x units), not its centroid",
+        "exact volume, centroid and second moments of the polyhedron (divergence theorem over "
+        "the triangles, integrated about the mesh's bounding-box centre so a part far from the "
+        "origin keeps its digits). Checked, each an error naming the file: unreadable, truncated "
+        "or malformed file; NaN or infinite coordinates; not closed (says how many boundary "
+        "edges) unless allow_open; non-manifold edges (shared by three or more triangles); mixed "
+        "orientation; no volume (flat or degenerate). A mesh facing inward everywhere is turned "
+        "outward with a warning. Binary STL stores float32 coordinates (about 7 digits)",
     ),
     "given": (
         "measured or CAD-exported mass properties",
@@ -141,7 +151,24 @@ def _title(p: Path) -> str:
 
 
 MANUAL["shapes"] = {
-    "examples": [("rbcli shapes cylinder", "The cylinder's parameters, local origin and formulas.")],
+    "notes": [
+        "A mesh part (shape: mesh) reads a closed triangle mesh from file: (binary or ASCII STL, "
+        "or OBJ, relative to the body file), scaled by scale and by units (the length unit of its "
+        "coordinates, e.g. mm; default the body file's length unit), with mass or density and the "
+        "usual placement; its local origin is the mesh's own coordinate origin. Its volume, "
+        "centroid and second moments are those of the polyhedron, exact to rounding, integrated "
+        "about the mesh's bounding-box centre. A file that cannot be read (missing, truncated, "
+        "malformed, NaN coordinates) or a mesh that does not bound a solid (not closed, with the "
+        "number of boundary edges; non-manifold edges; mixed orientation; no volume) is an error "
+        "naming the file, exit status 2; allow_open: true accepts boundary edges with a warning. "
+        "A mesh that faces inward everywhere is turned outward with a warning on standard error. "
+        "inertia and principal show each mesh part's volume, surface area and triangle count, and "
+        "put them in --json under parts[i].volume, .area and .triangles.",
+    ],
+    "examples": [
+        ("rbcli shapes cylinder", "The cylinder's parameters, local origin and formulas."),
+        ("rbcli shapes mesh", "The mesh part's keys and what rbcli checks in a mesh file."),
+    ],
 }
 MANUAL["schema"] = {
     "notes": [

@@ -578,51 +578,98 @@ def _include(ctx, m, name, prefix) -> list[Part]:
 
 
 def _mesh(ctx, m, name, prefix, known) -> Part:
+    """A ``shape: mesh`` part: a closed triangle mesh read from an STL or OBJ file.
+
+    Everything in the YAML is checked first (keys, scale, units, mass, placement), then
+    the file is read and checked. The mesh modules are imported here only, so that
+    bodies without meshes do not pay for them at start-up.
+    """
     what = f"part '{name}' (mesh)"
     _check_keys(ctx, m, MESH_KEYS, what, required=("file",))
-    from rbcli.core import mesh as cmesh
-    from rbcli.io import meshfile
-
     fnode = m.items["file"][1]
-    path = _resolve(ctx, fnode, "file")
+    path = _mesh_path(ctx, fnode)
     scale = 1.0
     if "scale" in m.items:
-        scale = _positive(ctx, m.items["scale"][1], "dimensionless", "scale")
+        scale = _positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
     if "units" in m.items:
         unode = m.items["units"][1]
+        text = _string(ctx, unode, "units")
         try:
-            factor, dim = un.parse_unit(_string(ctx, unode, "units"))
+            factor, dim = un.parse_unit(text)
         except un.UnitError as exc:
-            raise ctx.error(unode, f"units: {exc}") from None
+            raise ctx.error(unode, f"{what}: units: {exc}") from None
         if dim != un.KINDS["length"]:
-            raise ctx.error(unode, "units of a mesh is the length unit of its coordinates, e.g. mm")
+            raise ctx.error(
+                unode,
+                f"{what}: units is the length unit of the mesh's coordinates (m, mm, in, ...), not '{text}'",
+            )
     else:
         factor = ctx.factor("length", m)[0]
     allow_open = _bool(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
+    mass, density, src = _mass_source(ctx, m, "volume", known, what)
+    subtract = _subtract(ctx, m)
+    at, R = _placement(ctx, m)
+
+    from rbcli.core import mesh as cmesh
+    from rbcli.io import meshfile
+
+    shown = str(path)
     try:
         vertices, faces = meshfile.read_mesh(path)
-        props = cmesh.mass_properties(vertices * (scale * factor), faces, allow_open=allow_open)
-    except (ValueError, OSError) as exc:
+    except meshfile.MeshFileError as exc:  # its message starts with the path
         raise ctx.error(fnode, f"{what}: {exc}") from None
-    if props.flipped:
-        ctx.warnings.append(
-            f"{ctx.where(fnode)}: warning: mesh '{path.name}' faces inward everywhere; turned it outward"
-        )
-    mass, density, src = _mass_source(ctx, m, "volume", known, what)
+    k = scale * factor
+    if k != 1.0:
+        with np.errstate(over="ignore"):
+            vertices *= k  # in place: a private float64 array
+        if not np.isfinite(vertices).all():
+            raise ctx.error(
+                fnode,
+                f"{what}: {shown}: the coordinates times scale and units overflow "
+                "(numbers are limited to 1e60 in SI units)",
+            )
+    if float(np.abs(vertices).max()) > HUGE:
+        raise ctx.error(fnode, f"{what}: {shown}: coordinates are too large; numbers are limited to 1e60 in SI units")
+    try:
+        props = cmesh.mass_properties(vertices, faces, allow_open=allow_open)
+    except ValueError as exc:  # MeshError: says what is wrong, not which file
+        msg = str(exc)
+        if "not closed" in msg:
+            msg += "; allow_open: true accepts small holes, with a warning"
+        raise ctx.error(fnode, f"{what}: {shown}: {msg}") from None
+    del vertices, faces
+    for w in props.warnings:
+        ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {shown}: {w}")
     if mass is None:
+        assert density is not None
         mass = density * props.volume
         _check_mass(ctx, src, what, mass, "density × volume")
     else:
         density = mass / props.volume
     known[name] = _Known(density, "volume")
-    at, R = _placement(ctx, m)
     com, J = _place(np.asarray(props.centroid), mass * np.asarray(props.unit_inertia), at, R)
     return Part(
-        name=prefix + name, shape="mesh", mass=float(mass), subtract=_subtract(ctx, m), com=com,
+        name=prefix + name, shape="mesh", mass=float(mass), subtract=subtract, com=com,
         inertia_com=J, measure=props.volume, measure_kind="volume", axis=R[:, 2].copy(),
         extra={"volume": float(props.volume), "area": float(props.area), "triangles": int(props.n_triangles)},
         where=ctx.where(m),
     )
+
+
+def _mesh_path(ctx: _Ctx, fnode: ys.Node) -> Path:
+    """The mesh file, relative to the body file's folder; as written when that is the cwd."""
+    rel = _string(ctx, fnode, "file")
+    if not rel.strip():
+        raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
+    path = Path(rel)
+    if path.is_absolute():
+        return path
+    try:
+        if ctx.base_dir.is_absolute() and ctx.base_dir == Path.cwd():
+            return path  # standard input or -e: show the path the user wrote
+    except OSError:  # the cwd is gone
+        pass
+    return ctx.base_dir / path
 
 
 # --------------------------------------------------------------------------- body

@@ -41,7 +41,34 @@ def inertia_json(body: Body, r: InertiaResult) -> dict:
 def principal_json(body: Body, r: PrincipalResult) -> dict:
     out = r.to_json()
     out["axes"] = snap(out["axes"], scale=1.0, rtol=1e-15)
-    return {**out, **header(body)}
+    return {**out, **header(body), "parts": part_rows(body)}
+
+
+def has_mesh(body: Body) -> bool:
+    return any("volume" in p.extra for p in body.parts)
+
+
+def mesh_columns(du: DisplayUnits) -> tuple[str, str, str]:
+    return (f"volume [{du.unit('volume')}]", f"area [{du.unit('area')}]", "triangles")
+
+
+def _mesh_cells(p, du: DisplayUnits, digits: int) -> list[str]:
+    """Volume, surface area and triangle count of a mesh part ("" for other parts)."""
+    if "volume" not in p.extra:
+        return ["", "", ""]
+    return [
+        du.show(p.extra["volume"], "volume", digits),
+        du.show(p.extra["area"], "area", digits),
+        str(p.extra["triangles"]),
+    ]
+
+
+def mesh_table(doc: Doc, body: Body, du: DisplayUnits, digits: int) -> None:
+    """A table of the body's mesh parts (name, volume, area, triangles), if it has any."""
+    rows = [(p.name + (" (hole)" if p.subtract else ""), *_mesh_cells(p, du, digits))
+            for p in body.parts if "volume" in p.extra]
+    if rows:
+        doc.table("mesh parts", ("part", *mesh_columns(du)), rows, right=(1, 2, 3))
 
 
 def _vec_rows(label: str, v, du: DisplayUnits, kind: str, digits: int) -> list[tuple[str, str, str]]:
@@ -80,24 +107,23 @@ def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits
     rows += _vec_rows("reference", r.reference, du, "length", digits)
     doc.kv("mass properties", rows)
     if len(body.parts) > 1 or body.parts[0].extra:
-        prow = []
         L = du.unit("length")
+        meshes = has_mesh(body)
+        prow = []
         for p in body.parts:
-            extra = ""
-            if "volume" in p.extra:
-                extra = f"V = {du.show(p.extra['volume'], 'volume', digits)} {du.unit('volume')}, A = {du.show(p.extra['area'], 'area', digits)} {du.unit('area')}"
-            prow.append(
-                (
-                    p.name,
-                    p.shape + (" (hole)" if p.subtract else ""),
-                    du.show(p.signed_mass, "mass", digits),
-                    ", ".join(du.show(x, "length", digits) for x in p.com),
-                    extra,
-                )
-            )
-        has_mesh = any(row[4] for row in prow)
-        cols = ("part", "shape", f"mass [{du.unit('mass')}]", f"com [{L}]") + (("mesh",) if has_mesh else ())
-        doc.table("parts", cols, [row if has_mesh else row[:4] for row in prow], right=(2,))
+            row = [
+                p.name,
+                p.shape + (" (hole)" if p.subtract else ""),
+                du.show(p.signed_mass, "mass", digits),
+                ", ".join(du.show(x, "length", digits) for x in p.com),
+            ]
+            if meshes:
+                row += _mesh_cells(p, du, digits)
+            prow.append(tuple(row))
+        cols = ("part", "shape", f"mass [{du.unit('mass')}]", f"com [{L}]")
+        if meshes:
+            cols += mesh_columns(du)
+        doc.table("parts", cols, prow, right=(2, 4, 5, 6) if meshes else (2,))
     _matrix(doc, f"inertia about {ref_label}", r.inertia, du, digits, products)
     if not np.allclose(r.reference, r.com, rtol=0, atol=0):
         _matrix(doc, "inertia about the com", r.inertia_com, du, digits, products)
@@ -153,6 +179,7 @@ def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, di
             ("ellipsoid semi-axes along 1, 2, 3", ", ".join(du.show(x, "length", digits) for x in r.equivalent_ellipsoid), L),
         ],
     )
+    mesh_table(doc, body, du, digits)
 
 
 def symmetry_sentence(r: PrincipalResult) -> str:
