@@ -222,6 +222,8 @@ MANUAL["principal"] = {
         ("rotation_axis, rotation_angle_deg", "the rotation taking the body axes onto the principal axes."),
         ("equivalent_box, equivalent_ellipsoid", "[3] box sides and ellipsoid semi-axes along the principal axes, m."),
         ("mass, name, file", "the body's mass (kg), name and source."),
+        ("parts", "[{name, shape, mass, com}] each part's contribution, as in inertia (mesh parts "
+                  "add volume m^3, area m^2 and triangles)."),
     ],
     "examples": [
         ("rbcli principal examples/square_lamina.yaml --about origin",
