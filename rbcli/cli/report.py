@@ -15,16 +15,14 @@ figures in FILE_files/*.svg beside it). The report has the body (name, input fil
 its SHA-256, rbcli version, date), a parts table with each part's contribution, mass
 properties (as `inertia`), principal axes (as `principal`) with a picture of the
 equivalent ellipsoid and box, and - where the body file or the options give what they
-need - balance (the body's shaft or --shaft), free precession (--omega), the heavy top
-(the body's pivot or --pivot, with --spin and --theta) and rolling stability (a rim
-radius or a round part). A section that does not apply, or cannot be computed for this
+need - balance (the body's shaft, or --shaft, --planes, --bearings, --grade or a rotation
+--speed), free precession (--omega), the heavy top (the body's pivot or --pivot, with
+--spin and --theta) and rolling stability (a rim radius or a round part). A section that does not apply, or cannot be computed for this
 body, says why in one line. The same input gives the same bytes when SOURCE_DATE_EPOCH
 is set. Exit status 1 when a check asked for fails (--grade, rolling at --speed); the
 report is written first.
 """
 
-SECTIONS = ("parts", "mass-properties", "principal-axes", "balance", "free-precession", "heavy-top",
-            "rolling-stability")
 FORMATS = (".html", ".md")
 
 
