@@ -863,8 +863,10 @@ def test_non_z_shaft_cyclic_axes():
 # random rotors (hypothesis)
 # ---------------------------------------------------------------------------------------
 
-coord = st.floats(-0.2, 0.2)
-zpos = st.floats(-0.5, 0.5)
+# Normal floats only: a subnormal coordinate (~1e-313) has fewer significant bits than
+# the 1e-12 relative round-off budgets below assume.
+coord = st.floats(-0.2, 0.2, allow_subnormal=False)
+zpos = st.floats(-0.5, 0.5, allow_subnormal=False)
 pt = st.tuples(st.floats(1e-3, 1.0), coord, coord, zpos)
 
 
@@ -904,7 +906,9 @@ def test_t26_round_trip(parts, za, dz, sign, ra, rb):
     c = corrections(u, (za, zb), (ra, rb))
     added = []
     for pc, z, r in ((c.a, za, ra), (c.b, zb, rb)):
-        phi = pc.angle_deg if pc.angle_defined else 0.0
+        # the correction's direction from its phasor, also when it is below the tolerance
+        # that makes the reported angle "undefined" (a 5e-13 kg mass still has a direction)
+        phi = float(np.degrees(np.angle(pc.unbalance))) if pc.mass > 0 else 0.0
         added.append(point(pc.mass, r, phi, z))
     M2, c2, J2 = mass_props(parts + added)
     allp = parts + added
