@@ -157,7 +157,10 @@ def test_thin_disk_lean_frequency_closed_form(a, m, ratio):
     # compare with an absolute tolerance scaled to the terms
     assert d["lean_frequency_squared"] == pytest.approx(nu2, abs=1e-12 * 2.4 * s * s + 1e-12 * G0 / a)
     assert d["critical_spin"] ** 2 == pytest.approx(G0 / (3 * a), rel=RT)
-    assert d["stable"] is (ratio > 1.0)
+    # at the threshold itself (ratio 1 to round-off) the verdict is decided by the last
+    # bits of v and s_c, computed two ways; only judge it clearly away from the boundary
+    if abs(ratio - 1.0) > 1e-9:
+        assert d["stable"] is (ratio > 1.0)
 
 
 @settings(max_examples=25, deadline=None)
