@@ -248,6 +248,7 @@ _UNITS: tuple[_Unit, ...] = (
     _Unit(("ms",), _F(1, 1000), 0, Dim(T=1), "millisecond"),
     _Unit(("min",), _F(60), 0, Dim(T=1), "minute"),
     _Unit(("h",), _F(3600), 0, Dim(T=1), "hour"),
+    _Unit(("d", "day"), _F(86400), 0, Dim(T=1), "day (86 400 s)"),
     # angle
     _Unit(("rad",), _F(1), 0, Dim(A=1), "radian"),
     _Unit(("mrad",), _F(1, 1000), 0, Dim(A=1), "milliradian"),
