@@ -25,10 +25,11 @@ class _App(typer.Typer):
 
     typer builds the whole click command tree on every call: each registered
     command's signature read, its annotations evaluated and its parameters made
-    (~0.6 ms a command; bench/README.md "Start-up"). When the arguments name a known
+    (~0.5 ms a command; bench/README.md "Start-up"). When the arguments name a known
     command after at most the root's --debug, only that command is registered for the
-    call; for anything else (--help, --version, an unknown name, no command) the whole
-    tree is built as before, so help, errors and suggestions are unchanged.
+    call, and none for --version (eager: it prints and exits first); for anything else
+    (--help, an unknown name, no command) the whole tree is built as before, so help,
+    errors and suggestions are unchanged.
     ``typer.main.get_command(app)`` (tests, man pages) always sees every command.
     """
 
@@ -46,12 +47,14 @@ class _App(typer.Typer):
 
 
 def _invoked(typer_app: typer.Typer, argv: list[str]) -> list | None:
-    """[the CommandInfo] of the command named in argv, or None to build them all."""
+    """The CommandInfos to build for argv ([] for --version), or None to build them all."""
     from typer.main import get_command_name
 
     for tok in argv:
         if tok == "--debug":
             continue
+        if tok == "--version":  # eager: prints and exits before any command is looked up
+            return []
         if tok.startswith("-"):
             return None
         hits = [
