@@ -1,7 +1,9 @@
 """The one small error hierarchy of rbcli, and the exit status each error means.
 
 Every layer raises these; only :mod:`rbcli.cli` prints them (as
-``rbcli: file:line:col: message``) and turns them into exit codes.
+``rbcli: file:line:col: message``) and turns them into exit codes. A check the user
+asked for that fails (exit 1) is not an error: the command prints its full result and
+exits 1 itself.
 """
 
 from __future__ import annotations
@@ -56,7 +58,7 @@ class InputError(RbcliError):
     exit_status = ExitStatus.BAD_INPUT
 
 
-class CheckFailed(RbcliError):
-    """A check the user asked for failed (grade, stability). Exit 1."""
-
-    exit_status = ExitStatus.CHECK_FAILED
+class NonFiniteResult(InputError):
+    """A result came out as inf or NaN: the inputs are too large or too small to compute
+    with (not a bug). Exit 2, like any other bad input.
+    """

@@ -119,8 +119,10 @@ def test_car_wheel_example_b_t15(capsys):
     assert d["dynamics"]["torque_magnitude"] == pytest.approx(W * W * P, rel=1e-9)
 
 
-def test_car_wheel_iso_g40_rounded_to_5g_passes(capsys):
-    d = js(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g")
+def test_car_wheel_iso_g40_fails_as_given_and_would_pass_with_5g_weights(capsys):
+    # the verdict and the exit status judge the wheel as given (exit 1); the wheel with the
+    # rounded 45 g weights is a prediction under iso.after
+    d = js(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g", code=1)
     W = 1500 * RPM
     iso = d["iso"]
     U_per = 40e-3 / W * 20.0  # e_per M
@@ -131,20 +133,25 @@ def test_car_wheel_iso_g40_rounded_to_5g_passes(capsys):
     assert iso["allowed"][1] == pytest.approx(0.3 * U_per, rel=RT)
     assert [x * 1e6 for x in iso["allowed"]] == [pytest.approx(3565.07, **sheet(3565.07)),
                                                  pytest.approx(1527.89, **sheet(1527.89))]
-    # as given: 8726.2 g·mm per bearing plane, ratios 2.45 and 5.71 -> FAIL
+    # as given: 8726.2 g·mm per bearing plane, ratios 2.45 and 5.71 -> FAIL (T15 "before")
     assert [round(r, 2) for r in iso["before"]["ratio"]] == [2.45, 5.71]
     assert iso["before"]["pass"] is False
+    assert iso["pass"] is False and iso["judged"] == "as given"
+    assert iso["residual"] == iso["before"]["residual"] and iso["ratio"] == iso["before"]["ratio"]
+    assert iso["residual"][0] * 1e6 == pytest.approx(8726.20, **sheet(8726.20))
     # 45 g weights: residual P = -P0 + 2 (45 g)(200 mm)(100 mm), per bearing plane P_res/L
     P0 = 20 * 0.04 / 8 * math.sin(math.radians(1.0))
     Pres = 2 * 0.045 * 0.2 * 0.1 - P0
     assert [c["mass"] for c in d["corrections"]] == [pytest.approx(0.045, rel=1e-15)] * 2
-    assert iso["residual"][0] == pytest.approx(Pres / 0.2, rel=1e-9)
-    assert iso["residual"][0] * 1e6 == pytest.approx(273.80, **dp(273.80, 2))  # T15
-    assert iso["residual"][1] * 1e6 == pytest.approx(273.80, **dp(273.80, 2))
+    after = iso["after"]
+    assert after["prediction"] is True and after["state"] == "after rounded corrections"
+    assert after["residual"][0] == pytest.approx(Pres / 0.2, rel=1e-9)
+    assert after["residual"][0] * 1e6 == pytest.approx(273.80, **dp(273.80, 2))  # T15
+    assert after["residual"][1] * 1e6 == pytest.approx(273.80, **dp(273.80, 2))
     # ratios 0.077 and 0.1792 (the sheet's own numbers give 0.1792; its table prints 0.178)
-    assert iso["ratio"][0] == pytest.approx(0.0768, abs=5e-5)
-    assert iso["ratio"][1] == pytest.approx(0.1792, abs=5e-5)
-    assert iso["pass"] is True and iso["judged"] == "after rounded corrections"
+    assert after["ratio"][0] == pytest.approx(0.0768, abs=5e-5)
+    assert after["ratio"][1] == pytest.approx(0.1792, abs=5e-5)
+    assert after["pass"] is True
     # residual forces 6.76 N (T15)
     for row in d["bearing_forces_after"]:
         assert row["force"] == pytest.approx(6.76, **dp(6.76, 2))
@@ -155,12 +162,15 @@ def test_car_wheel_iso_g40_rounded_to_5g_passes(capsys):
 
 def test_car_wheel_table_shows_shop_units_and_the_convention(capsys):
     rc, out, err = run(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g")
-    assert rc == 0, err
-    assert "43.631" in out and "215.31" in out and "273.797" in out and "PASS" in out
+    assert rc == 1, err  # the wheel as given fails G40
+    assert "43.631" in out and "215.31" in out and "273.797" in out
     assert "g·mm²" in out and "[g]" in out and "[mm]" in out
     flat = " ".join(out.split())  # notes wrap at the table width
     assert "from +x, the 0° mark, towards +y" in flat and "direction of rotation" in flat
     assert "remove the same mass at +180°" in flat
+    assert "FAIL: G 40, the rotor as given (exit status 1)" in flat
+    assert "prediction, not the verdict" in flat
+    assert "with the rounded corrections fitted the rotor would PASS G 40" in flat
 
 
 # ------------------------------------------------------------------------- Example A: two disks
@@ -217,7 +227,7 @@ def test_two_disk_rotor_example_a_t13(capsys):
 
 
 def test_two_disk_rotor_iso_g63(capsys):
-    d = js(capsys, TWO_DISK, *TWO_DISK_ARGS, "--grade", "G6.3")
+    d = js(capsys, TWO_DISK, *TWO_DISK_ARGS, "--grade", "G6.3", code=1)  # fails as given
     iso = d["iso"]
     # §3.1: e_per = 20.0535 µm, U_per = 100.869 g·mm, inboard -> 50.385 / 50.485 g·mm
     assert iso["permissible_eccentricity"] * 1e6 == pytest.approx(20.0535, **sheet(20.0535))
@@ -236,9 +246,13 @@ def test_two_disk_rotor_iso_g63(capsys):
     assert [round(r, 2) for r in iso["before"]["ratio"]] == [16.87, 24.28]
     assert iso["before"]["static_achieved_grade"] == pytest.approx(117.84, **dp(117.84, 2))
     assert iso["before"]["pass"] is False
-    # after the ideal corrections the residual is round-off and the grade passes
-    assert iso["pass"] is True and iso["judged"] == "after corrections"
-    assert max(iso["residual"]) < 1e-12 * 1e-3  # round-off of ~1 g·mm values: < 1e-9 g·mm
+    # the verdict is the rotor's as given, whether or not --planes is given (F7)
+    assert iso["pass"] is False and iso["judged"] == "as given"
+    assert iso["residual"] == iso["before"]["residual"]
+    # predicted: after the ideal corrections the residual is round-off and the grade passes
+    after = iso["after"]
+    assert after["pass"] is True and after["state"] == "after corrections" and after["prediction"]
+    assert max(after["residual"]) < 1e-12 * 1e-3  # round-off of ~1 g·mm values: < 1e-9 g·mm
 
 
 def test_two_disk_rotor_tilt_against_eigh(capsys):
@@ -329,7 +343,7 @@ def test_fan_overhung_static_loads_and_outboard_rule(capsys):
 
 def test_fan_corrections_split_onto_blades(capsys):
     d = js(capsys, FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm",
-           "--positions", "6", "--mass-step", "0.5 g")
+           "--positions", "6", "--mass-step", "0.5 g", code=1)  # the fan as given fails
     M, zG, U, P = fan_by_hand()
     zA, zB, r = 0.32, 0.38, 0.19
     CA, CB = (P - zB * U) / (zB - zA), (zA * U - P) / (zB - zA)
@@ -360,13 +374,15 @@ def test_fan_corrections_split_onto_blades(capsys):
     assert res["static_unbalance"] == pytest.approx(abs(Ures), rel=1e-9)
     ua = (zB * Ures - Pres) / (zB - zA)
     assert res["planes"][0]["unbalance"] == pytest.approx(abs(ua), rel=1e-9)
-    # the ISO verdict is for that state, with the exact bearing-plane residuals
+    # the ISO prediction is for that state, with the exact bearing-plane residuals; the
+    # verdict stays the fan's as given
     W = 1480 * RPM
     U_per = 6.3e-3 / W * M
     u1 = (0.2 * Ures - Pres) / 0.2
-    assert d["iso"]["residual"][0] == pytest.approx(abs(u1), rel=1e-9)
-    assert d["iso"]["ratio"][0] == pytest.approx(abs(u1) / (U_per * (zG - 0.2) / 0.2), rel=1e-9)
-    assert d["iso"]["pass"] is True
+    after = d["iso"]["after"]
+    assert after["residual"][0] == pytest.approx(abs(u1), rel=1e-9)
+    assert after["ratio"][0] == pytest.approx(abs(u1) / (U_per * (zG - 0.2) / 0.2), rel=1e-9)
+    assert after["pass"] is True and d["iso"]["pass"] is False
 
 
 def test_t22_split_example(capsys, tmp_path):
@@ -394,7 +410,7 @@ SPEC_TOP = ("mass", "eccentricity", "static_unbalance", "static_unbalance_angle_
 
 
 def test_spec_json_keys(capsys):
-    d = js(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40")
+    d = js(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", code=1)  # the wheel as given fails G40
     for k in SPEC_TOP:
         assert k in d
     assert len(d["corrections"]) == 2
@@ -643,8 +659,18 @@ def _cli(*args: str) -> subprocess.CompletedProcess:
 def test_exit_status_through_the_real_entry_point():
     p = _cli(FAN, *FAN_ARGS)  # the fan as given fails G6.3: exit 1, full result printed
     assert p.returncode == 1 and "FAIL" in p.stdout and "residual unbalance per plane" in p.stdout
+    # with --planes the verdict is still the fan's as given (exit 1); the corrected fan is a
+    # prediction, said as such
     p = _cli(FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm")
-    assert p.returncode == 0 and "PASS" in p.stdout
+    flat = " ".join(p.stdout.split())
+    assert p.returncode == 1 and "FAIL: G 6.3, the rotor as given" in flat
+    assert "the rotor would PASS G 6.3" in flat
+    # the two-disk rotor at G6.3 fails as given, with or without --planes
+    for extra in ([], ["--planes", "0,400mm", "--radius", "100mm"]):
+        p = _cli(TWO_DISK, "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3", *extra)
+        flat = " ".join(p.stdout.split())
+        assert p.returncode == 1 and "FAIL: G 6.3, the rotor as given" in flat, p.stderr
+        assert ("the rotor would PASS G 6.3" in flat) == bool(extra)
     p = _cli(TWO_DISK, "--grade", "G6.3")
     assert p.returncode == 2 and p.stdout == ""
     assert p.stderr.count("\n") == 1 and p.stderr.startswith("rbcli: --grade")

@@ -5,8 +5,6 @@ Module level imports only typer and the standard library (start-up is a feature)
 
 from __future__ import annotations
 
-import sys
-
 import typer
 
 from rbcli import __version__
@@ -20,53 +18,7 @@ scripts. Exit status: 0 done, 1 a check you asked for failed, 2 bad usage or
 input, 70 internal error (a bug).
 """
 
-class _App(typer.Typer):
-    """The typer app; a run builds only the command it runs (start-up is a feature).
-
-    typer builds the whole click command tree on every call: each registered
-    command's signature read, its annotations evaluated and its parameters made
-    (~0.5 ms a command; bench/README.md "Start-up"). When the arguments name a known
-    command after at most the root's --debug, only that command is registered for the
-    call, and none for --version (eager: it prints and exits first); for anything else
-    (--help, an unknown name, no command) the whole tree is built as before, so help,
-    errors and suggestions are unchanged.
-    ``typer.main.get_command(app)`` (tests, man pages) always sees every command.
-    """
-
-    def __call__(self, *args, **kwargs):
-        argv = kwargs.get("args")
-        only = _invoked(self, sys.argv[1:] if argv is None else list(argv))
-        if only is None:
-            return super().__call__(*args, **kwargs)
-        every = self.registered_commands
-        self.registered_commands = only
-        try:
-            return super().__call__(*args, **kwargs)
-        finally:
-            self.registered_commands = every
-
-
-def _invoked(typer_app: typer.Typer, argv: list[str]) -> list | None:
-    """The CommandInfos to build for argv ([] for --version), or None to build them all."""
-    from typer.main import get_command_name
-
-    for tok in argv:
-        if tok == "--debug":
-            continue
-        if tok == "--version":  # eager: prints and exits before any command is looked up
-            return []
-        if tok.startswith("-"):
-            return None
-        hits = [
-            c
-            for c in typer_app.registered_commands
-            if (c.name or (c.callback and get_command_name(c.callback.__name__))) == tok
-        ]
-        return hits if len(hits) == 1 else None
-    return None
-
-
-app = _App(
+app = typer.Typer(
     name="rbcli",
     help=HELP,
     add_completion=False,
@@ -222,6 +174,8 @@ def root(
     version: bool = typer.Option(
         False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
     ),
-    debug: bool = typer.Option(False, "--debug", help="Show a traceback for internal errors."),
+    debug: bool = typer.Option(
+        False, "--debug", help="Show a traceback for internal errors (also: RBCLI_DEBUG=1)."
+    ),
 ) -> None:
     STATE["debug"] = debug

@@ -24,47 +24,21 @@ recomputed. With --speed and --bearings z1,z2: the rotating force on each bearin
 static gravity loads (shaft horizontal; negative on an overhung rotor) and the torque
 w x L. With --grade G6.3 (and --speed, the maximum service speed, and --bearings): the ISO
 21940-11 permissible residual unbalance, its allocation to the bearing planes, the exact
-residual per plane as given and after the (rounded) corrections, the achieved grade and
-PASS or FAIL (exit status 1 on FAIL). --apply OUT.yaml writes the body with the corrections
-added as point parts.
+residual per plane, the achieved grade and PASS or FAIL for the rotor as given (exit status
+1 on FAIL, with or without --planes); with --planes also the residuals and verdict predicted
+for the rotor with the (rounded) corrections fitted. --apply OUT.yaml writes the body with
+the corrections added as point parts.
 
 Angles are degrees about the shaft (+z) from +x (the 0° mark) towards +y, in the direction
 of rotation for a positive speed (--angle-sense against counts the other way). Positions
-and lengths are in metres unless a unit is given; a unit after the last of several numbers
-applies to all ('-100,100 mm'). Tables show g, mm, g·mm and N unless --units is given.
+and lengths are in metres unless a unit is given; in a list a unit after the last number
+applies to every bare number before it ('-100,100 mm' is both in mm). Tables show g, mm,
+g·mm and N unless --units is given.
 """
 
-_NUMBER = re.compile(r"\s*[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
-
-
 def _values(text: str, kind: str, option: str, counts: tuple[int, ...]) -> list[float]:
-    """Comma-separated quantities; a unit after the last applies to the bare ones before it."""
-    import math
-
-    from rbcli.errors import InputError
-
-    parts = [p.strip() for p in text.split(",")]
-    if len(parts) not in counts or any(not p for p in parts):
-        want = " or ".join(str(n) for n in counts)
-        raise InputError(f"{option}: expected {want} comma-separated values, got '{text}'")
-    last = parts[-1]
-    m = _NUMBER.match(last)
-    unit = last[m.end():].strip() if m else ""
-    if unit and len(parts) > 1 and all(_bare(p) for p in parts[:-1]):
-        parts = [f"{p} {unit}" for p in parts[:-1]] + [last]
-    vals = [c.quantity(p, kind, option) for p in parts]
-    for v in vals:
-        if not math.isfinite(v):
-            raise InputError(f"{option}: values must be finite numbers, got '{text}'")
-    return vals
-
-
-def _bare(text: str) -> bool:
-    try:
-        float(text)
-        return True
-    except ValueError:
-        return False
+    """Only for rbcli/cli/report.py until it calls :func:`rbcli.cli.common.numbers` itself."""
+    return c.numbers(text, kind, option, counts=counts)
 
 
 def _grade(text: str) -> float:
@@ -113,20 +87,20 @@ def balance(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
     shaft: str = typer.Option(None, "--shaft", help="Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the shaft (z = 0 there): com, origin or x,y,z (m, or with units). Default: the body's shaft point, else the origin.", show_default=False),
+    through: str = typer.Option(None, "--through", help="A point of the shaft (z = 0 there): com, origin or x,y,z (m; a unit after the last number applies to all). Default: the body's shaft point, else the origin.", show_default=False),
     mark: str = typer.Option(None, "--mark", help="Direction x,y,z (body frame) of the 0° reference mark; only its part at right angles to the shaft counts. Default: body x projected (body y for a shaft near body x).", show_default=False),
-    zero_mark_deg: float = typer.Option(0.0, "--zero-mark-deg", help="Turn the 0° mark this many degrees about the shaft (in the direction of rotation)."),
+    zero_mark_deg: str = typer.Option(None, "--zero-mark-deg", help="Turn the 0° mark this far about the shaft, in the direction of rotation (degrees, or with units, e.g. '0.5 rad'). Default: 0.", show_default=False),
     angle_sense: str = typer.Option("with", "--angle-sense", help="Count angles with the rotation (with) or against it (against)."),
-    planes: str = typer.Option(None, "--planes", help="Correction planes zA,zB along the shaft (m, or e.g. '-100,100 mm').", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Correction radius r, or rA,rB per plane (m, or with units). Default: the body's rim_radius.", show_default=False),
+    planes: str = typer.Option(None, "--planes", help="Correction planes zA,zB along the shaft (m; a unit after the last number applies to both, e.g. '-100,100 mm').", show_default=False),
+    radius: str = typer.Option(None, "--radius", help="Correction radius r, or rA,rB per plane (m, or with units as for --planes). Default: the body's rim_radius.", show_default=False),
     mass_step: str = typer.Option(None, "--mass-step", help="Round correction masses to multiples of this (e.g. '1 g'; a bare number is kg).", show_default=False),
     angle_step: str = typer.Option(None, "--angle-step", help="Round correction angles to multiples of this (degrees, or with units).", show_default=False),
     positions: int = typer.Option(None, "--positions", help="N equally spaced fixed positions (holes, blades), position 1 on the 0° mark: split each correction onto the two neighbouring ones.", show_default=False),
     speed: str = typer.Option(None, "--speed", help="Rotor speed (rad/s, or e.g. '1500 rpm'); with --grade the maximum service speed.", show_default=False),
-    bearings: str = typer.Option(None, "--bearings", help="Bearing positions z1,z2 along the shaft (m, or e.g. '-50,150 mm').", show_default=False),
-    g: str = typer.Option("9.80665", "--g", help="Gravity for the static bearing loads (m/s^2, or with units)."),
+    bearings: str = typer.Option(None, "--bearings", help="Bearing positions z1,z2 along the shaft (m; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
+    g: str = typer.Option(None, "--g", help="Gravity for the static bearing loads (m/s^2, or with units). Default: 9.80665 m/s^2.", show_default=False),
     grade: str = typer.Option(None, "--grade", help="ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs --speed and --bearings.", show_default=False),
-    tolerance_planes: str = typer.Option("bearings", "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11) or corrections (older practice)."),
+    tolerance_planes: str = typer.Option(None, "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11, the default) or corrections (older practice).", show_default=False),
     apply: str = typer.Option(None, "--apply", help="Write the body with the correction masses added as point parts to this YAML file.", show_default=False),
     force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input file)."),
     json_: bool = c.JsonOpt,
@@ -143,28 +117,32 @@ def balance(
     # --- option values, checked before the body is read (bad usage is bad usage)
     if angle_sense not in ("with", "against"):
         raise InputError(f"--angle-sense must be 'with' or 'against', not '{angle_sense}'")
-    if tolerance_planes not in ("bearings", "corrections"):
+    if tolerance_planes not in (None, "bearings", "corrections"):
         raise InputError(f"--tolerance-planes must be 'bearings' or 'corrections', not '{tolerance_planes}'")
-    if not math.isfinite(zero_mark_deg):
-        raise InputError("--zero-mark-deg: must be a finite number of degrees")
+    t_planes = tolerance_planes or "bearings"
+    zero_deg = 0.0
+    if zero_mark_deg is not None:
+        zero_deg = c.degrees(zero_mark_deg, "--zero-mark-deg")
+        if not math.isfinite(zero_deg):
+            raise InputError("--zero-mark-deg: must be a finite angle")
     n_shaft = c.direction(shaft, "--shaft") if shaft is not None else None
     p_through = c.point(through, "--through") if through is not None else None
     v_mark = c.vector(mark, "dimensionless", "--mark") if mark is not None else None
-    z_planes = _distinct(_values(planes, "length", "--planes", (2,)), "--planes", "correction planes") if planes is not None else None
+    z_planes = _distinct(c.numbers(planes, "length", "--planes", counts=(2,)), "--planes", "correction planes") if planes is not None else None
     r_opt = None
     if radius is not None:
-        r_opt = [_positive(x, "--radius", "the correction radius") for x in _values(radius, "length", "--radius", (1, 2))]
+        r_opt = [_positive(x, "--radius", "the correction radius") for x in c.numbers(radius, "length", "--radius", counts=(1, 2))]
     m_step = _positive(c.quantity(mass_step, "mass", "--mass-step"), "--mass-step", "the mass step") if mass_step is not None else None
     a_step = None
     if angle_step is not None:
-        a_step = math.degrees(c.quantity(angle_step, "angle", "--angle-step", bare="deg"))
+        a_step = c.degrees(angle_step, "--angle-step")
         if not (0.0 < a_step <= 360.0):
             raise InputError(f"--angle-step: must be more than 0 and at most 360 degrees, got {angle_step}")
     if positions is not None and positions < 3:
         raise InputError(f"--positions: needs at least 3 equally spaced positions, got {positions}")
     W = _positive(c.quantity(speed, "angular_speed", "--speed"), "--speed", "the speed (to turn the other way, reverse --shaft)") if speed is not None else None
-    z_bear = _distinct(_values(bearings, "length", "--bearings", (2,)), "--bearings", "bearings") if bearings is not None else None
-    gv = _positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity")
+    z_bear = _distinct(c.numbers(bearings, "length", "--bearings", counts=(2,)), "--bearings", "bearings") if bearings is not None else None
+    gv = _positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity") if g is not None else 9.80665
     G = _grade(grade) if grade is not None else None
     # --- which options need which
     if z_planes is None:
@@ -177,14 +155,14 @@ def balance(
     if G is not None:
         if W is None:
             raise InputError("--grade: needs --speed, the maximum service speed (e.g. --speed '3000 rpm')")
-        if tolerance_planes == "bearings" and z_bear is None:
+        if t_planes == "bearings" and z_bear is None:
             raise InputError(
                 "--grade: needs --bearings z1,z2, the planes ISO 21940-11 allocates the tolerance to "
                 "(or --tolerance-planes corrections with --planes)"
             )
-        if tolerance_planes == "corrections" and z_planes is None:
+        if t_planes == "corrections" and z_planes is None:
             raise InputError("--tolerance-planes corrections: needs --planes zA,zB")
-    elif tolerance_planes != "bearings":
+    elif tolerance_planes is not None:
         raise InputError("--tolerance-planes: only used with --grade")
     if force and apply is None:
         raise InputError("--force: only used with --apply")
@@ -199,21 +177,22 @@ def balance(
 
     import numpy as np
 
+    from rbcli.errors import NonFiniteResult
     from rbcli.render import balance as rb
     from rbcli.render.jsonout import jsonable
 
     given = [o for o, v in (("--planes", planes), ("--radius", radius), ("--bearings", bearings),
                             ("--speed", speed), ("--mass-step", mass_step), ("--through", through),
-                            ("--g", None if g == "9.80665" else g)) if v is not None]
+                            ("--g", g)) if v is not None]
     try:
         with np.errstate(all="ignore"):
-            res = _compute(b, n_shaft, p_through, v_mark, zero_mark_deg, angle_sense, z_planes, r_opt,
-                           m_step, a_step, positions, W, z_bear, gv, G, tolerance_planes)
+            res = _compute(b, n_shaft, p_through, v_mark, zero_deg, angle_sense, z_planes, r_opt,
+                           m_step, a_step, positions, W, z_bear, gv, G, t_planes)
             data = jsonable(rb.to_json(res))  # refuses inf and NaN
-    except (ValueError, OverflowError, ZeroDivisionError) as exc:
-        if isinstance(exc, ValueError) and "finite" not in str(exc):
+    except (ValueError, OverflowError, ZeroDivisionError, NonFiniteResult) as exc:
+        if isinstance(exc, ValueError):
             raise InputError(f"{', '.join(given) or 'balance'}: {exc}") from None
-        raise InputError(
+        raise NonFiniteResult(
             f"{', '.join(given) or 'balance'}: the result overflows (a number beyond 1e308): "
             "an option value is too large or too small for this body"
         ) from None
@@ -229,7 +208,7 @@ def balance(
         import shlex
 
         given = [("--shaft", shaft), ("--through", through), ("--mark", mark),
-                 ("--zero-mark-deg", str(zero_mark_deg) if zero_mark_deg else None),
+                 ("--zero-mark-deg", zero_mark_deg),
                  ("--angle-sense", "against" if angle_sense == "against" else None),
                  ("--planes", planes), ("--radius", radius), ("--bearings", bearings),
                  ("--speed", speed), ("--grade", grade)]
@@ -246,7 +225,7 @@ def balance(
 
         doc = Doc(e)
         rb.document(doc, res, su, digits)
-        e.write(doc.render())
+        c.write_doc(e, doc)
     c.finish(1 if (res.iso is not None and not res.iso.passed) else 0)
 
 
@@ -403,8 +382,11 @@ MANUAL["balance"] = {
         "outside (an overhung rotor) rbcli's own rule, flagged in the output: each plane gets "
         "the load U_per at the com would put on it, the far share floored at 0.3 U_per (the "
         "standard's clause for outboard rotors was not available to check). The exact residual "
-        "in each plane is compared with its share, as given and after the (rounded) "
-        "corrections; the verdict is that of the corrected rotor when --planes is given. "
+        "in each plane is compared with its share. The verdict, PASS or FAIL, and the exit status "
+        "are those of the rotor as given, with or without --planes; with --planes the residuals "
+        "and verdict of the rotor with the (rounded) corrections fitted are shown too, as a "
+        "prediction (JSON iso.after): fit them and run rbcli balance on the corrected rotor to "
+        "check it. "
         "Achieved grade per plane G |U_i|/U_per,i. Exit status 1 on FAIL, after the full result.",
         "--apply OUT.yaml writes the body's document again (comments are lost) with the "
         "correction masses (rounded, or at the positions, when asked) as point parts 'balance "
@@ -430,7 +412,7 @@ MANUAL["balance"] = {
         ("bearing_forces_after", "the same forces after the corrections."),
         ("bearings, static_load_assumption", "with --bearings: [{plane, name, static_load (N)}] (shaft horizontal)."),
         ("dynamics", "with --speed: {speed (rad/s), centrifugal_force (N), angular_momentum [3] (kg m²/s, about the com, shaft frame), torque [3] (N m), torque_magnitude, torque_origin [3]}."),
-        ("iso", "with --grade: {grade (G, mm/s), grade_si (m/s), speed, permissible_eccentricity (m), permissible_unbalance (kg m), allowed [2] (kg m), residual [2] (kg m, the judged state), ratio [2], achieved_grade [2] (mm/s), pass, judged, planes, planes_are, allocation {rule, kind, rbcli_rule, ...}, before, after}."),
+        ("iso", "with --grade: {grade (G, mm/s), grade_si (m/s), speed, permissible_eccentricity (m), permissible_unbalance (kg m), allowed [2] (kg m), residual [2] (kg m), ratio [2], achieved_grade [2] (mm/s) and pass, all of the rotor as given; judged ('as given'), planes, planes_are, allocation {rule, kind, rbcli_rule, ...}, before (the same state in full), after (with --planes: the prediction for the corrected rotor {residual, ratio, achieved_grade, pass, state, prediction: true}, else null)}."),
         ("angle_convention, shaft, shaft_source, through_source, mark_source", "the convention in words; the shaft frame {axis, through, x_axis, y_axis}; where each came from."),
         ("apply", "with --apply: {file, parts [{name, mass, at}]}."),
         ("warnings, name, file", "the warnings also printed on standard error; the body's name and source."),
@@ -440,9 +422,11 @@ MANUAL["balance"] = {
          "The course text's car wheel, tilted 0.5°: statically balanced, couple 1.74524e+06 g·mm²; "
          "43.631 g at 180° (z = −100 mm) and at 0° (z = +100 mm); 215.31 N on each bearing."),
         ("rbcli balance examples/car_wheel.yaml --planes=-100,100mm --speed '1500 rpm' --bearings=-50,150mm --grade G40 --mass-step '5 g'",
-         "Clip-on weights in 5 g steps: 45 g each; residual 273.797 g·mm per bearing plane, PASS G40."),
+         "Clip-on weights in 5 g steps: 45 g each. The wheel as given fails G40 (8726.2 g·mm per "
+         "bearing plane, exit status 1); with the weights fitted it would pass (residual 273.797 g·mm)."),
         ("rbcli balance examples/two_disk_rotor.yaml --planes 0,400mm --radius 100mm --speed '3000 rpm' --bearings 0,400mm --grade G6.3",
-         "8.5 g at 208.072° and 12.2577 g at 258.232°; bearing forces 83.8916 N and 120.978 N."),
+         "8.5 g at 208.072° and 12.2577 g at 258.232°; bearing forces 83.8916 N and 120.978 N; "
+         "FAIL G6.3 as given (exit status 1), PASS predicted with the corrections fitted."),
         ("rbcli balance examples/fan_impeller.yaml --planes 320,380mm --radius 190mm --bearings 0,200mm --speed '1480 rpm' --grade G6.3 --positions 6 --mass-step '0.5 g'",
          "An overhung fan: a negative static load on the far bearing, weights on the blades, "
          "rbcli's outboard allocation rule flagged."),
@@ -485,7 +469,7 @@ def _phasor_text(text: str, option: str, *, mass: bool):
     if mass:
         amp = c.quantity(m["num"], "mass", option)
     else:
-        num = _NUMBER.match(m["num"])
+        num = c.NUMBER.match(m["num"])
         if not num:
             raise InputError(f"{option}: '{text}': the amplitude must be a number (a unit after it is a label)")
         amp = float(m["num"][: num.end()])
@@ -549,6 +533,7 @@ def field_balance(
 
     import numpy as np
 
+    from rbcli.errors import NonFiniteResult
     from rbcli.render import balance as rb
     from rbcli.render.jsonout import jsonable
 
@@ -559,10 +544,10 @@ def field_balance(
             else:
                 res = B.field_two_plane(v0, runs[0], runs[1], trials[0], trials[1], cumulative=cumulative)
             data = jsonable(rb.field_json(res, trials, scale, radii))  # refuses inf and NaN
-    except (ValueError, OverflowError, ZeroDivisionError, np.linalg.LinAlgError) as exc:
-        if isinstance(exc, ValueError) and "finite" not in str(exc):
+    except (ValueError, OverflowError, ZeroDivisionError, np.linalg.LinAlgError, NonFiniteResult) as exc:
+        if isinstance(exc, ValueError):  # LinAlgError too
             raise InputError(f"--run: {exc}") from None
-        raise InputError(
+        raise NonFiniteResult(
             "--initial, --trial, --run: the result overflows (a number beyond 1e308); "
             "the readings or trial masses are too large or too small"
         ) from None
@@ -577,7 +562,7 @@ def field_balance(
 
         doc = Doc(e)
         rb.field_document(doc, res, trials, scale, radii, su, digits)
-        e.write(doc.render())
+        c.write_doc(e, doc)
 
 
 MANUAL["field-balance"] = {

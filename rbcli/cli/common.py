@@ -6,6 +6,7 @@ layer are imported inside the functions.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from typing import Any
 
@@ -27,12 +28,20 @@ DigitsOpt = typer.Option(6, "--digits", min=1, max=17, help=DIGITS_HELP)
 UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 
 
-def env():
+def debug() -> bool:
+    """Tracebacks for internal errors: the root ``--debug`` or ``RBCLI_DEBUG=1``."""
+    import os
+
     from rbcli.cli.app import STATE
+
+    return bool(STATE["debug"]) or os.environ.get("RBCLI_DEBUG", "").strip() not in ("", "0")
+
+
+def env():
     from rbcli.env import Env
 
     e = Env.from_process()
-    e.debug = bool(STATE["debug"])
+    e.debug = debug()
     return e
 
 
@@ -62,9 +71,10 @@ def load(source: str, expr: str | None, e: Any):
     return body
 
 
-def each_body(bodies: list[str] | None, expr: str | None, e: Any) -> Iterator[tuple[str, Any]]:
-    """Yield (source, Body or InputError) so batch runs go on past a bad file."""
-    for src in sources(bodies, expr):
+def each_body(srcs: list[str], expr: str | None, e: Any) -> Iterator[tuple[str, Any]]:
+    """Yield (source, Body or InputError) for the sources of :func:`sources`, so batch runs
+    go on past a bad file."""
+    for src in srcs:
         try:
             yield src, load(src, expr, e)
         except InputError as exc:
@@ -83,7 +93,7 @@ def quantity(text: str, kind: str, option: str, *, bare: str | None = None) -> f
         value, dim = un.parse_quantity(s)
     except un.UnitError as exc:
         raise InputError(f"{option}: {exc}") from None
-    if dim == un.Dim() and not _has_unit(s):
+    if dim == un.Dim() and _bare(s):
         if bare is None:
             return value
         factor, _ = un.parse_unit(bare)
@@ -94,32 +104,75 @@ def quantity(text: str, kind: str, option: str, *, bare: str | None = None) -> f
         raise InputError(f"{option}: {exc}") from None
 
 
-def _has_unit(s: str) -> bool:
-    try:
-        float(s)
-        return False
-    except ValueError:
-        return True
+def degrees(text: str, option: str) -> float:
+    """An angle option in degrees: a bare number is degrees (kept exactly), else any angle
+    unit (``'0.5 rad'``, ``'30 arcmin'``)."""
+    import math
+
+    if _bare(text.strip()):
+        quantity(text, "angle", option, bare="deg")  # its errors (inf, 1e999, ...)
+        return float(text.strip().replace("\u2212", "-"))
+    return math.degrees(quantity(text, "angle", option, bare="deg"))
+
+
+#: a number at the start of a value: what is left after it is the value's unit
+NUMBER = re.compile(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+
+#: how the unit rule reads, for help texts
+UNIT_RULE = "a unit after the last number applies to every bare number before it"
+
+
+def _bare(s: str) -> bool:
+    """A number with no unit after it."""
+    return NUMBER.fullmatch(s) is not None
+
+
+def numbers(text: str, kind: str, option: str, *, counts: tuple[int, ...] = (3,),
+            bare: str | None = None) -> list[float]:
+    """Comma-separated quantities of one kind, in SI: the one rule for list options.
+
+    A unit after the LAST number applies to every bare number before it: ``1,1,1 mm`` is
+    all millimetres, ``100,0,300 rpm`` all rpm, ``-100,100 mm`` both. A number with its own
+    unit keeps it (``10 mm,0,2 cm``). A list with no unit at all is in the option's bare
+    unit: ``bare`` (e.g. ``"deg"``), else SI. A list whose last number is bare but which has
+    a unit elsewhere is refused unless its bare numbers are 0 (``10 mm,0,0``): which unit a
+    bare 5 in ``10 mm,5,0`` means is a guess. Every value must be finite.
+    """
+    import math
+
+    parts = [p.strip() for p in text.split(",")]
+    if len(parts) not in counts or not all(parts):
+        want = " or ".join(str(n) for n in counts)
+        raise InputError(f"{option}: expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
+                         f"got '{text}'")
+    last = quantity(parts[-1], kind, option, bare=bare)  # its own errors first
+    m = NUMBER.match(parts[-1])
+    unit = parts[-1][m.end():].strip() if m else ""
+    if unit:
+        parts = [f"{p} {unit}" if _bare(p) else p for p in parts]
+    elif not all(_bare(p) for p in parts):
+        stray = [p for p in parts if _bare(p) and float(p.replace("\u2212", "-")) != 0.0]
+        if stray:
+            raise InputError(
+                f"{option}: '{text}' has a unit on some numbers but none after the last, so the "
+                f"unit of {stray[0]} is unclear; put the unit after the last number (it then "
+                "applies to every bare number before it) or after each number"
+            )
+    vals = [quantity(p, kind, option, bare=bare) for p in parts[:-1]] + [last]
+    if not all(math.isfinite(v) for v in vals):
+        raise InputError(f"{option}: values must be finite numbers, got '{text}'")
+    return vals
 
 
 def vector(text: str, kind: str, option: str, n: int = 3, *, bare: str | None = None) -> list[float]:
-    """A comma-separated vector like ``1,0,0`` or ``10 mm,0,5 mm``."""
-    parts = [p for p in text.split(",")]
-    if len(parts) != n:
+    """A vector like ``1,0,0``, ``0,0,300 rpm`` or ``10,0,5 mm`` (see :func:`numbers`)."""
+    if len(text.split(",")) != n:
         raise InputError(f"{option}: expected {n} comma-separated numbers like 1,0,0, got '{text}'")
-    return [quantity(p, kind, option, bare=bare) for p in parts]
-
-
-def numbers(text: str, kind: str, option: str, *, counts: tuple[int, ...], bare: str | None = None) -> list[float]:
-    parts = [p for p in text.split(",")]
-    if len(parts) not in counts:
-        want = " or ".join(str(c) for c in counts)
-        raise InputError(f"{option}: expected {want} comma-separated values, got '{text}'")
-    return [quantity(p, kind, option, bare=bare) for p in parts]
+    return numbers(text, kind, option, counts=(n,), bare=bare)
 
 
 def point(text: str, option: str) -> str | list[float]:
-    """``com``, ``origin`` or ``x,y,z`` (metres unless a unit is given)."""
+    """``com``, ``origin`` or ``x,y,z`` (metres, unless a unit follows the last number)."""
     t = text.strip()
     if t in ("com", "origin"):
         return t
@@ -137,6 +190,52 @@ def direction(text: str, option: str) -> list[float]:
     if not big > 0:
         raise InputError(f"{option}: the direction must be a non-zero vector")
     return [x / big for x in v]  # largest component ±1: no under/overflow when normalised
+
+
+# ----------------------------------------------------------------------------- output
+
+
+#: what :func:`rbcli.render.fmt.num` prints for a number that is not finite
+_NON_FINITE = frozenset({"inf", "-inf", "+inf", "nan", "-nan"})
+_CELL_SPLIT = re.compile(r"[\s\[\](),;=]+")
+
+
+def check_finite_doc(doc: Any) -> None:
+    """Refuse a table that would show inf or NaN as a number.
+
+    Looks at the numeric (right-aligned) columns of every table: a whole word there that
+    reads inf or nan is what ``num()`` prints for a result that overflowed. Names, notes
+    and left-aligned text are not looked at (a part may be called "nan").
+
+    Raises
+    ------
+    NonFiniteResult
+        (exit 2, one line) naming the table and the row.
+    """
+    from rbcli.errors import NonFiniteResult
+    from rbcli.render.text import Table
+
+    for item in doc.items:
+        if not isinstance(item, Table):
+            continue
+        for row in item.rows:
+            for i in item.right:
+                if i >= len(row):
+                    continue
+                bad = [w for w in _CELL_SPLIT.split(row[i].lower()) if w in _NON_FINITE]
+                if bad:
+                    what = row[0].strip() if row and i != 0 else item.title
+                    raise NonFiniteResult(
+                        f"'{what}' in the table '{item.title}' is not a finite number ({bad[0]}): "
+                        "a value is too large or too small to compute with; check the options "
+                        "and the body's numbers"
+                    )
+
+
+def write_doc(e: Any, doc: Any) -> None:
+    """Render a document of tables to standard output, after :func:`check_finite_doc`."""
+    check_finite_doc(doc)
+    e.write(doc.render())
 
 
 def finish(status: int | ExitStatus) -> None:

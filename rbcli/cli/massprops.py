@@ -51,9 +51,9 @@ def _reference(body, about: str | None):
 def inertia(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
-    about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (m, or with units).", show_default=False),
+    about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '10,0,5 mm').", show_default=False),
     axis: str = typer.Option(None, "--axis", help="Moment about this direction x,y,z through the point.", show_default=False),
-    omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s, or e.g. '0,0,300 rpm' per component).", show_default=False),
+    omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
     products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
@@ -69,20 +69,21 @@ def inertia(
     du = DisplayUnits.parse(units)
     n = c.direction(axis, "--axis") if axis is not None else None
     w = c.vector(omega, "angular_speed", "--omega") if omega is not None else None
-    _run(bodies, expr, json_, e, lambda body: _inertia_one(body, about, n, w, json_, du, digits, products, e))
+    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, n, w, json_, du, digits, products, e, many))
 
 
-def _run(bodies, expr, json_, e, one) -> None:
-    """Run ``one`` per body; go on past bad files, exit 2 at the end if any failed.
+def _run(bodies, expr, e, one) -> None:
+    """Run ``one(body, many)`` per body; go on past bad files, exit 2 at the end if any failed.
 
-    With more than one body, ``--json`` prints JSON Lines (one compact object per body).
+    ``many`` is true when more than one body was named: ``--json`` then prints JSON Lines
+    (one compact object per body).
     """
     srcs = c.sources(bodies, expr)
-    _MANY["n"] = len(srcs)
+    many = len(srcs) > 1
     failed = False
     from rbcli.errors import InputError
 
-    for src, body in c.each_body(bodies, expr, e):
+    for src, body in c.each_body(srcs, expr, e):
         if e.pipe_closed:  # the reader has gone (| head -1): nobody reads the rest
             break
         if isinstance(body, InputError):
@@ -92,7 +93,7 @@ def _run(bodies, expr, json_, e, one) -> None:
             failed = True
             continue
         try:
-            one(body)
+            one(body, many)
         except InputError as exc:
             if len(srcs) == 1:
                 raise
@@ -102,7 +103,7 @@ def _run(bodies, expr, json_, e, one) -> None:
         c.finish(2)
 
 
-def _emit(e, body, data, doc_fn, json_: bool, many: bool) -> None:
+def _emit(e, data, doc_fn, json_: bool, many: bool) -> None:
     if json_:
         from rbcli.render.jsonout import dumps
 
@@ -112,7 +113,7 @@ def _emit(e, body, data, doc_fn, json_: bool, many: bool) -> None:
 
         doc = Doc(e)
         doc_fn(doc)
-        e.write(doc.render())
+        c.write_doc(e, doc)
 
 
 def _option_for(param: str, about: str | None) -> str:
@@ -122,7 +123,7 @@ def _option_for(param: str, about: str | None) -> str:
     return f"--{param}"
 
 
-def _inertia_one(body, about, n, w, json_, du, digits, products, e) -> None:
+def _inertia_one(body, about, n, w, json_, du, digits, products, e, many: bool) -> None:
     from rbcli.core.inertia import InputOverflow, inertia_report
     from rbcli.errors import InputError
     from rbcli.render import massprops as r
@@ -132,19 +133,15 @@ def _inertia_one(body, about, n, w, json_, du, digits, products, e) -> None:
         res = inertia_report(mp, ref, axis=n, omega=w)
     except InputOverflow as exc:
         raise InputError(f"{_option_for(exc.param, about)}: {exc}") from None
-    many = _MANY["n"] > 1
-    _emit(e, body, r.inertia_json(body, res) if json_ else None,
+    _emit(e, r.inertia_json(body, res) if json_ else None,
           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), json_, many)
-
-
-_MANY = {"n": 1}
 
 
 @app.command(help=PRINCIPAL_HELP)
 def principal(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
-    about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (m, or with units)."),
+    about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
@@ -153,10 +150,10 @@ def principal(
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    _run(bodies, expr, json_, e, lambda body: _principal_one(body, about, json_, du, digits, e))
+    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, json_, du, digits, e, many))
 
 
-def _principal_one(body, about, json_, du, digits, e) -> None:
+def _principal_one(body, about, json_, du, digits, e, many: bool) -> None:
     import numpy as np
 
     from rbcli.core.inertia import inertia_about
@@ -171,8 +168,8 @@ def _principal_one(body, about, json_, du, digits, e) -> None:
         raise InputError(f"{_option_for('reference', about)}: the inertia about this point overflows: "
                          "the point is too far from the body")
     res = principal_report(mp.mass, J, ref)
-    _emit(e, body, r.principal_json(body, res) if json_ else None,
-          lambda doc: r.principal_doc(doc, body, res, du, digits, label), json_, _MANY["n"] > 1)
+    _emit(e, r.principal_json(body, res) if json_ else None,
+          lambda doc: r.principal_doc(doc, body, res, du, digits, label), json_, many)
 
 
 MANUAL["inertia"] = {

@@ -1736,10 +1736,11 @@ class IsoCheck:
     planes : (float, float) — m, tolerance planes
     planes_are : str — "bearing" or "correction"
     allocation : Allocation
-    before : IsoState — the rotor as given
-    after : IsoState | None — with the corrections added (rounded ones if rounded)
-    judged : str — "as given", "after corrections" or "after rounded corrections"
-    passed : bool — the judged state's verdict
+    before : IsoState — the rotor as given: what ``passed`` judges
+    after : IsoState | None — a prediction: the rotor with the corrections added (rounded
+        ones if rounded); it never sets the verdict
+    after_state : str | None — "after corrections" or "after rounded corrections"
+    passed : bool — the verdict on the rotor as given (``before.passed``)
     tol_plane : float — kg m, for the angle flags
     angle_sense : str
     warnings : tuple[str, ...]
@@ -1755,19 +1756,19 @@ class IsoCheck:
     allocation: Allocation
     before: IsoState
     after: IsoState | None
-    judged: str
+    after_state: str | None
     passed: bool
     tol_plane: float
     angle_sense: str
     warnings: tuple[str, ...]
 
-    @property
-    def state(self) -> IsoState:
-        """The judged state (after if corrections were given, else before)."""
-        return self.after if self.after is not None else self.before
-
     def to_json(self) -> dict:
-        st = self.state
+        st = self.before  # residual, ratio, pass: the rotor as given (SPEC §3)
+        after = None
+        if self.after is not None:
+            after = self.after.to_json(self.tol_plane, self.angle_sense)
+            after["state"] = self.after_state
+            after["prediction"] = True
         return {
             "grade": float(self.grade),
             "grade_si": float(self.grade) * 1e-3,
@@ -1781,14 +1782,12 @@ class IsoCheck:
             "achieved_grade": [_f(g) for g in st.achieved_grade],
             "static_achieved_grade": float(st.static_achieved_grade),
             "pass": bool(self.passed),
-            "judged": self.judged,
+            "judged": "as given",
             "planes": [float(z) for z in self.planes],
             "planes_are": self.planes_are,
             "allocation": self.allocation.to_json(),
             "before": self.before.to_json(self.tol_plane, self.angle_sense),
-            "after": (
-                None if self.after is None else self.after.to_json(self.tol_plane, self.angle_sense)
-            ),
+            "after": after,
             "warnings": list(self.warnings),
         }
 
@@ -1839,8 +1838,9 @@ def iso_check(
     speed : float — rad/s, maximum service speed, > 0
     planes : (z_1, z_2) — m, tolerance planes: the bearings (ISO 21940-11) or, with
         ``planes_are="correction"``, the correction planes (older practice, sheet §1.4b)
-    corrections : Corrections, optional — if given, the rotor is also judged with these
-        (ideal or rounded) corrections added, and that is the verdict
+    corrections : Corrections, optional — if given, the rotor with these (ideal or
+        rounded) corrections added is evaluated too (``after``, a prediction); the verdict
+        stays that of the rotor as given
     clamp, outboard_floor : see :func:`allocate_permissible`
 
     Returns
@@ -1868,18 +1868,17 @@ def iso_check(
     )
     before = _iso_state(unb.static, unb.moment, unb.mass, (z1, z2), alloc, G, W)
     after = None
-    judged = "as given"
+    after_state = None
     if corrections is not None:
         src = corrections.source
         if (src.mass, src.static, src.moment) != (unb.mass, unb.static, unb.moment):
             raise ValueError("the corrections were computed for another rotor")
         r = corrections.residual
         after = _iso_state(r.static, r.moment, r.mass, (z1, z2), alloc, G, W)
-        judged = "after rounded corrections" if corrections.rounded else "after corrections"
+        after_state = "after rounded corrections" if corrections.rounded else "after corrections"
     warns = []
     if alloc.rbcli_rule:
         warns.append("the com lies outside the tolerance planes: allocation uses " + alloc.rule)
-    passed = (after if after is not None else before).passed
     return IsoCheck(
         grade=G,
         speed=W,
@@ -1891,8 +1890,8 @@ def iso_check(
         allocation=alloc,
         before=before,
         after=after,
-        judged=judged,
-        passed=passed,
+        after_state=after_state,
+        passed=before.passed,
         tol_plane=unb.plane_tolerance(z1, z2),
         angle_sense=unb.angle_sense,
         warnings=tuple(warns),
@@ -2179,7 +2178,7 @@ def balance_json(
     [{``plane``, ``name``, ``force``, ``angle_deg``, ``static_load``, ...}] (only when
     bearings were given) and ``dynamics`` (speed, angular momentum, torque); with iso:
     ``iso`` {``grade``, ``permissible_unbalance``, ``allowed`` [2], ``residual`` [2],
-    ``pass``, ...}.
+    ``pass``, ...} (the rotor as given; ``iso.after`` predicts the corrected rotor).
     """
     d = unb.to_json()
     if corrections is not None:

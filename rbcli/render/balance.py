@@ -443,13 +443,11 @@ def _iso(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
         planes = "the correction planes (older practice, ISO 1940/1:1986; --tolerance-planes corrections)"
         names = ("A", "B")
     doc.note(f"tolerance planes: {planes}; the com is {al.kind} ({'between' if al.kind == 'inboard' else 'outside'} them); allocation: {al.rule}")
-    cols = ["plane", f"z [{L}]", f"allowed [{U}]", f"as given [{U}]", "ratio"]
     after = iso.after
+    cols = ["plane", f"z [{L}]", f"allowed [{U}]", f"as given [{U}]", "ratio", "achieved G [mm/s]"]
     if after is not None:
-        cols += [f"after [{U}]", "ratio"]
-    cols += ["achieved G [mm/s]"]
+        cols += [f"predicted [{U}]", "ratio"]  # with the corrections fitted: see the note
     rows = []
-    st = iso.state
     tol = iso.tol_plane
 
     def cells(state: B.IsoState, i: int) -> tuple[str, str, str]:
@@ -462,23 +460,33 @@ def _iso(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
 
     for i in range(2):
         b = cells(iso.before, i)
-        row = [names[i], su.show(iso.planes[i], "length", digits), su.show(al.allowed[i], "unbalance", digits), b[0], b[1]]
+        row = [names[i], su.show(iso.planes[i], "length", digits), su.show(al.allowed[i], "unbalance", digits),
+               b[0], b[1], b[2]]
         if after is not None:
             a = cells(after, i)
             row += [a[0], a[1]]
-        row += [cells(st, i)[2]]
         rows.append(row)
     doc.table("residual unbalance per plane", cols, rows, right=tuple(range(1, len(cols))))
-    verdict = "PASS" if iso.passed else "FAIL"
-    text = f"{verdict}: G {num(iso.grade)} {iso.judged}"
-    if after is not None:
-        text += f" (as given: {'PASS' if iso.before.passed else 'FAIL'})"
-    text += (
-        f"; whole-rotor static figure |U|/M Ω = "
+    st = iso.before
+    text = (
+        f"{'PASS' if iso.passed else 'FAIL'}: G {num(iso.grade)}, the rotor as given"
+        + ("" if iso.passed else " (exit status 1)")
+        + "; whole-rotor static figure |U|/M Ω = "
         f"{num(st.static_achieved_grade if st.static_unbalance > r.unb.tol_static else 0.0, 4)} mm/s; "
         "PASS when each plane's residual is within its allowed share"
     )
     doc.note(text)
+    if after is not None:
+        doc.note(
+            f"prediction, not the verdict (the predicted columns): with {after_words(iso)} fitted the rotor would "
+            f"{'PASS' if after.passed else 'FAIL'} G {num(iso.grade)}; fit them, then run "
+            "rbcli balance on the corrected rotor (e.g. the file --apply writes) to check it"
+        )
+
+
+def after_words(iso: B.IsoCheck) -> str:
+    """What the ISO prediction assumes is fitted: the corrections, rounded or not."""
+    return "the rounded corrections" if iso.after_state == "after rounded corrections" else "the corrections"
 
 
 # ----------------------------------------------------------------------------- field balancing
