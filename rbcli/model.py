@@ -76,6 +76,9 @@ class Body:
     rim_radius : float | None — m
     description : str
     warnings : tuple[str, ...] — located warnings to show on standard error
+    inputs : tuple[str, ...] — real paths of every file read to build the body: the body
+        file, every include at any depth and every mesh file (outputs must avoid them);
+        empty for standard input or ``-e`` unless those include files or meshes
     """
 
     name: str
@@ -89,3 +92,4 @@ class Body:
     rim_radius: float | None = None
     description: str = ""
     warnings: tuple[str, ...] = ()
+    inputs: tuple[str, ...] = ()

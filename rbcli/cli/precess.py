@@ -39,11 +39,12 @@ SAMPLES_HELP = "Rows of the --csv time series, evenly spaced from t = 0 to --dur
 CSV_HELP = (
     "Write the time series t, wx, wy, wz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body to "
     "space) to this CSV file, or '-' for standard output instead of the tables. Needs "
-    "--duration. An existing file is replaced; an input file never."
+    "--duration. An existing file is replaced (atomically); an input file never."
 )
 PLOT_HELP = (
     "Save a figure (.png, .svg, .pdf): the body-frame components of w against time and the "
-    "polhode (the path of L/|L| on the unit sphere, principal frame) in two views."
+    "polhode (the path of L/|L| on the unit sphere, principal frame) in two views. An "
+    "existing figure is replaced (atomically); an input file never."
 )
 VERIFY_HELP = (
     "Check the exact motion against a numerical integration of Euler's equations and the "
@@ -111,12 +112,15 @@ def precess(
     # --- the body, and the output paths checked before any computing
     srcs = c.sources([body] if body is not None else None, expr, single=True)
     b = c.load(srcs[0], expr, e)
-    plot_path = None
+    plot_path = csv_path = None
     if plot is not None:
         from rbcli.render.plots import check_path
 
-        plot_path = check_path(plot, inputs=(b.source,))
-    csv_path = _check_csv(csv, b.source, plot_path) if csv not in (None, "-") else None
+        plot_path = check_path(plot, b)
+    if csv not in (None, "-"):
+        from rbcli.io.outfile import check
+
+        csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
 
     import numpy as np
 
@@ -144,14 +148,13 @@ def precess(
     csv_info = None
     if csv is not None:
         csv_info = {"file": csv, "samples": n_rows, "duration": span}
-        if csv == "-":
-            rp.write_csv(e.stdout, motion, span, n_rows)
+        from rbcli.render import csvout
+
+        blocks = rp.csv_blocks(motion, span, n_rows)
+        if csv_path is None:  # '-': standard output, instead of the tables
+            csvout.to_stdout(e, rp.CSV_HEADER, blocks)
         else:
-            try:
-                with open(csv_path, "w", encoding="utf-8", newline="") as fh:
-                    rp.write_csv(fh, motion, span, n_rows)
-            except OSError as exc:
-                raise InputError(f"--csv: cannot write '{csv}': {exc.strerror or exc}") from None
+            csvout.save(csv_path, rp.CSV_HEADER, blocks)
     if plot_path is not None:
         rp.plot(plot_path, b, motion, span, du)
 
@@ -190,26 +193,6 @@ def _count(text: str) -> int:
     if not 2 <= n <= MAX_SAMPLES:
         raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got {n}")
     return n
-
-
-def _check_csv(path: str, source: str, plot_path):
-    """The CSV path: not an input, not the plot, in a folder that exists, not a folder."""
-    import os
-    from pathlib import Path
-
-    from rbcli.errors import InputError
-
-    p = Path(path)
-    real = os.path.realpath(p)
-    if source and not source.startswith("<") and os.path.realpath(source) == real:
-        raise InputError(f"--csv: '{path}' is an input file; rbcli never overwrites its inputs")
-    if plot_path is not None and os.path.realpath(plot_path) == real:
-        raise InputError(f"--csv: '{path}' is also the --plot file; give two different files")
-    if p.is_dir():
-        raise InputError(f"--csv: '{path}' is a folder; give a file name")
-    if p.parent and not p.parent.exists():
-        raise InputError(f"--csv: the folder '{p.parent}' does not exist")
-    return p
 
 
 MANUAL["precess"] = {

@@ -68,8 +68,8 @@ def report(
     )
     date = _date()
     srcs = c.sources([body] if body is not None else None, expr, single=True)
-    fmt, out, files_dir = _check_output(output, force, srcs[0])
     b = c.load(srcs[0], expr, e)
+    fmt, out, files_dir = _check_output(output, force, b)
 
     progress = _Progress(t0)
     try:
@@ -211,61 +211,34 @@ def _date() -> str:
     return t.strftime("%Y-%m-%d %H:%M UTC")
 
 
-def _check_output(output: str, force: bool, source: str):
-    """(format, path, figures folder) for -o; refuses inputs, existing files without --force."""
+def _check_output(output: str, force: bool, body):
+    """(format, path, figures folder) for -o, checked by rbcli.io.outfile.check: never an
+    input file (the body, its includes, its meshes), an existing report or figures folder
+    only with --force."""
     import os
-    from pathlib import Path
 
     from rbcli.errors import InputError
+    from rbcli.io import outfile
 
-    p = Path(output)
+    p = outfile.check(output, body, "-o", force=force, exts=FORMATS)
     ext = p.suffix.lower()
-    if ext not in FORMATS:
-        raise InputError(
-            f"-o: cannot tell the format of '{output}' from its extension; use one of " + ", ".join(FORMATS)
-        )
     files = p.with_name(p.stem + "_files")
-    targets = [p] + ([files] if ext == ".md" else [])
-    if source and not source.startswith("<") and source != "-":
-        real = os.path.realpath(source)
-        for t in targets:
-            if os.path.realpath(t) == real or (t is files and real.startswith(os.path.realpath(t) + os.sep)):
-                raise InputError(f"-o: '{t}' is the input file; rbcli never overwrites its inputs")
-    if p.parent and not p.parent.is_dir():
-        raise InputError(f"-o: the folder '{p.parent}' does not exist")
-    if p.is_dir():
-        raise InputError(f"-o: '{output}' is a folder; give a file name")
-    if files.exists() and not files.is_dir() and ext == ".md":
-        raise InputError(f"-o: '{files}' (for the figures) exists and is not a folder")
-    if not force:
-        for t in targets:
-            if t.exists():
-                raise InputError(f"-o: '{t}' exists; use --force to replace it")
+    if ext == ".md":
+        folder = os.path.realpath(files)
+        if any(i == folder or i.startswith(folder + os.sep) for i in outfile.input_files(body)):
+            raise InputError(f"-o: '{files}' (for the figures) holds an input file; rbcli never overwrites its inputs")
+        if files.exists() and not files.is_dir():
+            raise InputError(f"-o: '{files}' (for the figures) exists and is not a folder")
+        if files.exists() and not force:
+            raise InputError(f"-o: '{files}' exists; use --force to replace it")
     return ext, p, files
 
 
 def _write(path, text: str) -> None:
     """Write atomically (a temporary file in the same folder, then rename)."""
-    import os
-    import tempfile
+    from rbcli.io.outfile import write_atomic
 
-    from rbcli.errors import InputError
-
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=".rbcli-", suffix=".tmp", dir=str(path.parent) or ".")
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
-                fh.write(text)
-            mask = os.umask(0)
-            os.umask(mask)
-            os.chmod(tmp, 0o666 & ~mask)
-            os.replace(tmp, path)
-        except BaseException:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-            raise
-    except OSError as exc:
-        raise InputError(f"-o: cannot write '{path}': {exc.strerror or exc}") from None
+    write_atomic(path, text, "-o")
 
 
 class _Progress:

@@ -42,7 +42,7 @@ def rollcheck(
     spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or e.g. '300 rpm'); speed = a x spin.", show_default=False),
     lean: str = typer.Option(None, "--lean", help="Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.", show_default=False),
     circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (m, or with units); 0 = spinning in place.", show_default=False),
-    plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane.", show_default=False),
+    plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane. An existing figure is replaced (atomically); an input file never.", show_default=False),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
@@ -96,7 +96,7 @@ def rollcheck(
     if plot is not None:
         from rbcli.render.plots import check_path
 
-        plot_path = check_path(plot, inputs=(b.source,))
+        plot_path = check_path(plot, b)
 
     setup = _setup(b, n_axle, p_through, a_opt)
     for w in setup.warnings:

@@ -54,8 +54,8 @@ def top(
     phi_dot: str = typer.Option("0", "--phi-dot", help="Start precession rate phi' about the vertical (rad/s, or with units)."),
     g: str = typer.Option("9.80665", "--g", help="Gravity (m/s^2, or with units)."),
     verify: bool = typer.Option(False, "--verify", help="Integrate the equations of motion numerically (no Euler angles, DOP853, rtol 1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ by more than 1e-6 rad or the energy drifts by more than 1e-9."),
-    plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): the path of the axis tip, theta against phi and seen from above, theta1 and theta2 marked, over --duration.", show_default=False),
-    csv: str = typer.Option(None, "--csv", help="Write t, theta_deg, phi_deg, psi_deg (s, degrees) at --samples times over --duration to this file ('-' = standard output, instead of the tables). An existing file is replaced; an input file never.", show_default=False),
+    plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): the path of the axis tip, theta against phi and seen from above, theta1 and theta2 marked, over --duration. An existing figure is replaced (atomically); an input file never.", show_default=False),
+    csv: str = typer.Option(None, "--csv", help="Write t, theta_deg, phi_deg, psi_deg (s, degrees) at --samples times over --duration to this file ('-' = standard output, instead of the tables). An existing file is replaced (atomically); an input file never.", show_default=False),
     duration: str = typer.Option(None, "--duration", help="Time span of --csv and --plot (s, or with units). Default: 3 nutation periods.", show_default=False),
     samples: int = typer.Option(600, "--samples", help="Rows of --csv, evenly spaced from t = 0 to --duration inclusive (2 to 1000000)."),
     json_: bool = c.JsonOpt,
@@ -105,12 +105,15 @@ def top(
 
     srcs = c.sources([body] if body is not None else None, expr, single=True)
     b = c.load(srcs[0], expr, e)
-    plot_path = None
+    plot_path = csv_path = None
     if plot is not None:
         from rbcli.render.plots import check_path
 
-        plot_path = check_path(plot, inputs=(b.source,))
-    csv_path = _check_csv(csv, b.source, plot) if csv is not None else None
+        plot_path = check_path(plot, b)
+    if csv not in (None, "-"):
+        from rbcli.io.outfile import check
+
+        csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
 
     params, pivot_label = _params(b, p_opt)
     from rbcli.core import top as core
@@ -152,16 +155,14 @@ def top(
     if plot_path is not None:
         rt.plot(plot_path, motion, info, span)
     if csv is not None:
-        text = rt.csv_text(motion, span, samples)
+        from rbcli.render import csvout
+
+        blocks = rt.csv_blocks(motion, span, samples)
         if csv_path is None:  # '-': standard output, instead of the tables
-            e.write(text)
+            csvout.to_stdout(e, rt.CSV_HEADER, blocks)
             c.finish(_status(check))
             return
-        try:
-            with open(csv_path, "w", encoding="utf-8", newline="") as fh:
-                fh.write(text)
-        except OSError as exc:
-            raise InputError(f"--csv: cannot write '{csv}': {exc.strerror or exc}") from None
+        csvout.save(csv_path, rt.CSV_HEADER, blocks)
     if json_:
         from rbcli.render.jsonout import dumps
 
@@ -224,28 +225,6 @@ def _default_duration(motion) -> float:
             "infinite time): it has no nutation period and no periodic closed form to sample"
         )
     return 3.0 * motion.nutation_period
-
-
-def _check_csv(csv: str, source: str, plot: str | None):
-    """The CSV path ('-' gives None: standard output), checked like a plot path."""
-    import os
-    from pathlib import Path
-
-    from rbcli.errors import InputError
-
-    if csv == "-":
-        return None
-    p = Path(csv)
-    real = os.path.realpath(p)
-    if source and not source.startswith("<") and os.path.realpath(source) == real:
-        raise InputError(f"--csv: '{csv}' is an input file; rbcli never overwrites its inputs")
-    if plot is not None and os.path.realpath(plot) == real:
-        raise InputError(f"--csv: '{csv}' is also the --plot file; give two different files")
-    if p.is_dir():
-        raise InputError(f"--csv: '{csv}' is a folder; give a file name")
-    if p.parent and not p.parent.exists():
-        raise InputError(f"--csv: the folder '{p.parent}' does not exist")
-    return p
 
 
 def _params(body, p_opt):

@@ -87,6 +87,8 @@ class _Ctx:
     base_units: dict[str, str] = field(default_factory=dict)
     factors: dict[str, tuple[float, str]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    #: real paths of the files read below this one (includes at any depth, meshes)
+    inputs: list[str] = field(default_factory=list)
 
     def where(self, node_or_mark: ys.Node | ys.Mark | None) -> Location:
         if node_or_mark is None:
@@ -563,6 +565,8 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     data = _read_file(path, ctx.where(fnode))
     sub = _load(data, str(path), path.parent, (*ctx.stack, real))
     ctx.warnings.extend(sub.warnings)
+    ctx.inputs.append(real)
+    ctx.inputs.extend(sub.ctx.inputs)
     at, R = _placement(ctx, m)
     out = []
     for p in sub.parts:
@@ -618,6 +622,7 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         vertices, faces = meshfile.read_mesh(path)
     except meshfile.MeshFileError as exc:  # its message starts with the path
         raise ctx.error(fnode, f"{what}: {exc}") from None
+    ctx.inputs.append(os.path.realpath(path))
     k = scale * factor
     if k != 1.0:
         with np.errstate(over="ignore"):
@@ -741,7 +746,9 @@ def _read_file(path: Path, where: Location | None = None) -> bytes:
         raise InputError(f"cannot read {path}: {exc.strerror or exc}", where) from None
 
 
-def _body_defaults(loaded: _Loaded, name_default: str, source: str, text: str) -> Body:
+def _body_defaults(
+    loaded: _Loaded, name_default: str, source: str, text: str, inputs: tuple[str, ...] = ()
+) -> Body:
     ctx, root = loaded.ctx, loaded.root
     items = root.items
     name = name_default
@@ -797,7 +804,7 @@ def _body_defaults(loaded: _Loaded, name_default: str, source: str, text: str) -
     return Body(
         name=name, source=source, text=text, parts=parts, reference=reference,
         reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
-        description=description, warnings=tuple(loaded.warnings),
+        description=description, warnings=tuple(loaded.warnings), inputs=inputs,
     )
 
 
@@ -833,10 +840,16 @@ def load_text(
     name_default: str = "body",
     stack: tuple[str, ...] = (),
 ) -> Body:
-    """Load a body from text already read; ``base_dir`` anchors relative paths."""
+    """Load a body from text already read; ``base_dir`` anchors relative paths.
+
+    ``stack`` holds the real path of the file the text was read from (if any): it is the
+    first of the body's ``inputs``, followed by every file the text includes or meshes it
+    reads, at any depth, each once.
+    """
     loaded = _load(data, filename, base_dir, stack)
     if isinstance(data, bytes):
         text = data.decode("utf-8", errors="replace")
     else:
         text = data
-    return _body_defaults(loaded, name_default, filename, text)
+    inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
+    return _body_defaults(loaded, name_default, filename, text, inputs)

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rbcli.errors import InputError
+from rbcli.io import outfile
 from rbcli.io import yamlsafe as ys
 from rbcli.model import Body
 
@@ -48,29 +49,16 @@ def base_dir(body: Body) -> Path:
 def check_output(out: str, body: Body, *, force: bool, option: str = "--apply") -> Path:
     """The output path, checked: not an input file, folder exists, not existing without force.
 
+    The inputs are every file the body was read from (``Body.inputs``: the body file, its
+    includes at any depth, its meshes); see :func:`rbcli.io.outfile.check`.
+
     Raises
     ------
     InputError
-        (exit 2) for the input file itself (or a file it includes), a missing folder, a
+        (exit 2) for an input file (whatever ``force`` says), a missing folder, a
         directory, or an existing file without ``force``.
     """
-    p = Path(out)
-    real = os.path.realpath(p)
-    inputs = []
-    if _is_file(body.source):
-        inputs.append(body.source)
-    inputs += [str(base_dir(body) / f) for f in _referenced_files(body)]
-    for src in inputs:
-        if os.path.realpath(src) == real:
-            raise InputError(f"{option}: '{out}' is an input file; rbcli never overwrites its inputs")
-    if p.is_dir():
-        raise InputError(f"{option}: '{out}' is a directory; give a file name like balanced.yaml")
-    parent = p.parent
-    if str(parent) and not parent.exists():
-        raise InputError(f"{option}: the folder '{parent}' does not exist")
-    if p.exists() and not force:
-        raise InputError(f"{option}: '{out}' exists; add --force to replace it")
-    return p
+    return outfile.check(out, body, option, force=force)
 
 
 def _document(body: Body) -> dict:
@@ -78,20 +66,6 @@ def _document(body: Body) -> dict:
     if not isinstance(data, dict):  # the loader accepted it, so this cannot happen
         raise InputError(f"{body.source}: the body is not a mapping")
     return data
-
-
-def _referenced_files(body: Body) -> list[str]:
-    try:
-        data = _document(body)
-    except InputError:
-        return []
-    parts = data.get("parts") if "parts" in data else [data]
-    out = []
-    for part in parts if isinstance(parts, list) else []:
-        if isinstance(part, dict) and part.get("shape") in _FILE_SHAPES and isinstance(part.get("file"), str):
-            if not os.path.isabs(part["file"]):
-                out.append(part["file"])
-    return out
 
 
 def _num(x: float) -> str:
@@ -197,6 +171,8 @@ def write_balanced(
 ) -> Path:
     """Write ``body`` with ``points`` added to ``out`` (YAML); returns the path written.
 
+    The file is written atomically (a temporary file in its folder, then renamed).
+
     Raises
     ------
     InputError
@@ -206,8 +182,5 @@ def write_balanced(
     data = balanced_document(body, points, path)
     text = "".join(f"# {line}\n" if line else "#\n" for line in header)
     text += dump(data)
-    try:
-        path.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"--apply: cannot write '{out}': {exc.strerror or exc}") from None
+    outfile.write_atomic(path, text, "--apply")
     return path

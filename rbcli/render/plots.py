@@ -1,4 +1,4 @@
-"""The one look of every rbcli figure, and saving it safely.
+"""The one look of every rbcli figure, and saving it safely (never over an input, atomically).
 
 matplotlib is imported only inside these functions (it costs ~400 ms), through its
 Figure API without pyplot, so nothing is ever drawn on screen. Figures are readable
@@ -9,10 +9,7 @@ SOURCE_DATE_EPOCH), so the same input gives the same bytes.
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
-
-from rbcli.errors import InputError
 
 FORMATS = ("png", "svg", "pdf")
 #: line styles for successive curves: (colour, linestyle, marker)
@@ -41,28 +38,22 @@ RC = {
 }
 
 
-def check_path(path: str, inputs: tuple[str, ...] = ()) -> Path:
-    """The plot path, checked: a known extension and not one of the input files.
+def check_path(path: str, inputs=(), *, others=None) -> Path:
+    """The plot path, checked before anything is computed (see :func:`rbcli.io.outfile.check`).
+
+    ``inputs`` is the Body (every file it was read from: the body file, includes at any
+    depth, meshes) or a tuple of input paths. An existing figure is replaced (as plotting
+    tools do), an input file never.
 
     Raises
     ------
     InputError
-        For an unknown extension (listing the allowed ones) or a path that is an input.
+        For an unknown extension (listing the allowed ones), a path that is an input, a
+        folder, or a folder that does not exist.
     """
-    p = Path(path)
-    ext = p.suffix.lower().lstrip(".")
-    if ext not in FORMATS:
-        raise InputError(
-            f"--plot: cannot tell the format of '{path}' from its extension; use one of "
-            + ", ".join(f".{f}" for f in FORMATS)
-        )
-    real = os.path.realpath(p)
-    for src in inputs:
-        if src and not src.startswith("<") and os.path.realpath(src) == real:
-            raise InputError(f"--plot: '{path}' is an input file; rbcli never overwrites its inputs")
-    if p.parent and not p.parent.exists():
-        raise InputError(f"--plot: the folder '{p.parent}' does not exist")
-    return p
+    from rbcli.io import outfile
+
+    return outfile.check(path, inputs, "--plot", exts=FORMATS, replace_ok=True, others=others)
 
 
 def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (7.0, 4.2)):
@@ -88,14 +79,17 @@ def style(i: int) -> dict:
 
 
 def save(fig, path: Path) -> None:
-    """Save with deterministic metadata; the format follows the extension."""
+    """Save with deterministic metadata, atomically; the format follows the extension."""
+    import io
+
+    from rbcli.io.outfile import write_atomic
+
     ext = path.suffix.lower().lstrip(".")
     metadata = {}
     if ext == "svg":
         metadata = {"Date": None}
     elif ext == "pdf":
         metadata = {"CreationDate": None, "ModDate": None}
-    try:
-        fig.savefig(path, format=ext, metadata=metadata or None)
-    except OSError as exc:
-        raise InputError(f"--plot: cannot write '{path}': {exc.strerror or exc}") from None
+    buf = io.BytesIO()
+    fig.savefig(buf, format=ext, metadata=metadata or None)
+    write_atomic(path, buf.getvalue(), "--plot")

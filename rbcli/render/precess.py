@@ -5,7 +5,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, Any
+from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 
@@ -19,13 +20,12 @@ SPEC_KEYS = (
     "angular_momentum", "kinetic_energy", "symmetric", "period", "circles_axis",
     "precession_rate", "space_precession_rate", "body_cone_deg", "space_cone_deg", "flip_interval",
 )
-CSV_HEADER = "t,wx,wy,wz,Lx,Ly,Lz,qw,qx,qy,qz"
+CSV_HEADER = ("t", "wx", "wy", "wz", "Lx", "Ly", "Lz", "qw", "qx", "qy", "qz")
 #: 1 - m below this: "close to the separatrix", the flips are the story (as in core's description)
 NEAR_SEPARATRIX = 0.01
 #: an oblate symmetric body with Is/I - 1 below this is "Earth-like" (nearly spherical)
 EARTH_LIKE = 0.01
 _DAY = 86400.0
-_CHUNK = 100_000
 
 
 @dataclass
@@ -84,17 +84,16 @@ def state_at(motion: fm.FreeMotion, t: float) -> dict:
     }
 
 
-def write_csv(out: IO[str], motion: fm.FreeMotion, duration: float, samples: int) -> None:
-    """The time series t, w (body), L (body), q (body -> space), evaluated in chunks.
+def csv_blocks(motion: fm.FreeMotion, duration: float, samples: int) -> Iterator[np.ndarray]:
+    """Rows t, w (body), L (body), q (body -> space) at ``samples`` times from t = 0 to
+    ``duration`` inclusive, in blocks for :func:`rbcli.render.csvout.write`.
 
-    Numbers are Python's shortest round-trip repr; the quaternion's sign is continuous along
-    the series (starting with w = +1 at t = 0).
+    The quaternion's sign is continuous along the series (starting with w = +1 at t = 0).
     """
-    t_all = np.linspace(0.0, float(duration), int(samples))
-    out.write(CSV_HEADER + "\n")
+    from rbcli.render.csvout import times
+
     prev = None
-    for i in range(0, t_all.size, _CHUNK):
-        t = t_all[i:i + _CHUNK]
+    for t in times(duration, samples):
         w, L, q = _evaluate(motion, t)
         # continuous sign: flip each q whose dot with the one before is negative
         ref = np.vstack([q[:1] if prev is None else prev[None, :], q[:-1]])
@@ -102,9 +101,7 @@ def write_csv(out: IO[str], motion: fm.FreeMotion, duration: float, samples: int
         sign = np.where(np.cumsum(flips) % 2 == 1, -1.0, 1.0)
         q = q * sign[:, None]
         prev = q[-1].copy()
-        block = np.column_stack([t, w, L, q]) + 0.0  # + 0.0: no negative zeros
-        out.write("\n".join(",".join(map(repr, row)) for row in block.tolist()))
-        out.write("\n")
+        yield np.column_stack([t, w, L, q])
 
 
 # ----------------------------------------------------------------------------- notes

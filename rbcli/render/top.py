@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -253,18 +254,19 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
 # ----------------------------------------------------------------------------- CSV
 
 
-def csv_text(motion: TopMotion, duration: float, samples: int) -> str:
-    """Header ``t,theta_deg,phi_deg,psi_deg`` and ``samples`` rows from t = 0 to ``duration``
-    inclusive; each number is Python's shortest round-trip repr (deterministic)."""
-    from rbcli.core.top import path_at
+#: the columns of ``top --csv``
+CSV_HEADER = ("t", "theta_deg", "phi_deg", "psi_deg")
 
-    t = np.linspace(0.0, float(duration), int(samples))
-    theta, phi, psi = path_at(motion, t)
-    cols = [t, np.degrees(theta), np.degrees(phi), np.degrees(psi)]
-    lines = ["t,theta_deg,phi_deg,psi_deg"]
-    for row in zip(*(c.tolist() for c in cols)):
-        lines.append(",".join(repr(float(x) + 0.0) for x in row))
-    return "\n".join(lines) + "\n"
+
+def csv_blocks(motion: TopMotion, duration: float, samples: int) -> Iterator[np.ndarray]:
+    """Rows t, theta, phi, psi (s, degrees) at ``samples`` times from t = 0 to ``duration``
+    inclusive, in blocks for :func:`rbcli.render.csvout.write`."""
+    from rbcli.core.top import path_at
+    from rbcli.render.csvout import times
+
+    for t in times(duration, samples):
+        theta, phi, psi = path_at(motion, t)
+        yield np.column_stack([t, np.degrees(theta), np.degrees(phi), np.degrees(psi)])
 
 
 # ----------------------------------------------------------------------------- plot

@@ -1,0 +1,64 @@
+"""The one CSV writer of rbcli's time series (``top --csv``, ``precess --csv``).
+
+A header line, then one row per time; every number is Python's shortest round-trip
+``repr`` (reads back exactly, the same bytes every run), with no negative zeros. Rows
+come in blocks (2-D arrays) so that millions of rows never sit in memory at once; a file
+is written atomically (:func:`rbcli.io.outfile.atomic_open`), standard output as it goes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from pathlib import Path
+
+import numpy as np
+
+#: rows evaluated and written at a time
+CHUNK = 100_000
+
+
+def times(duration: float, samples: int, chunk: int = CHUNK) -> Iterator[np.ndarray]:
+    """``samples`` evenly spaced times from 0 to ``duration`` inclusive (s), in chunks."""
+    t_all = np.linspace(0.0, float(duration), int(samples))
+    for i in range(0, t_all.size, chunk):
+        yield t_all[i:i + chunk]
+
+
+def rows_text(block: np.ndarray) -> str:
+    """The CSV lines of a (rows, columns) block, each ending in a newline."""
+    rows = (np.asarray(block, dtype=float) + 0.0).tolist()  # + 0.0: no negative zeros
+    return "".join(",".join(map(repr, row)) + "\n" for row in rows)
+
+
+def write(sink: Callable[[str], object], header: Sequence[str], blocks: Iterable[np.ndarray]) -> int:
+    """Write the header and the blocks through ``sink`` (e.g. ``fh.write``); the rows written.
+
+    A sink that returns ``False`` (a closed pipe) stops the writing early.
+    """
+    if sink(",".join(header) + "\n") is False:
+        return 0
+    n = 0
+    for block in blocks:
+        n += len(block)
+        if sink(rows_text(block)) is False:
+            break
+    return n
+
+
+def to_stdout(env, header: Sequence[str], blocks: Iterable[np.ndarray]) -> int:
+    """Write the CSV to standard output through ``env`` (an rbcli.env.Env); a closed pipe
+    (``| head``) stops it quietly."""
+
+    def sink(text: str) -> bool:
+        env.write(text)
+        return not env.pipe_closed
+
+    return write(sink, header, blocks)
+
+
+def save(path: Path, header: Sequence[str], blocks: Iterable[np.ndarray], option: str = "--csv") -> int:
+    """Write the CSV to ``path`` atomically (checked before with rbcli.io.outfile.check)."""
+    from rbcli.io.outfile import atomic_open
+
+    with atomic_open(path, option) as fh:
+        return write(fh.write, header, blocks)
