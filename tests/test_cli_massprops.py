@@ -222,12 +222,12 @@ def test_internal_error_exits_70_with_a_this_is_a_bug_line(capsys, monkeypatch):
     import rbcli.core.inertia as core
 
     def boom(*a, **k):
-        raise ZeroDivisionError("boom")
+        raise RuntimeError("boom")  # not an arithmetic error (those are bad input, exit 2)
 
     monkeypatch.setattr(core, "inertia_report", boom)
     code, out, err = main(capsys, "inertia", "-e", BOX)
     assert code == 70
-    assert err.startswith("rbcli: internal error (ZeroDivisionError: boom); this is a bug")
+    assert err.startswith("rbcli: internal error (RuntimeError: boom); this is a bug")
     assert err.count("\n") == 1 and "Traceback" not in err
 
 

@@ -472,7 +472,7 @@ def _balance(ctx: _Ctx):
     for w in res.warnings:
         s.items.append(_note(f"warning: {w}"))
     if res.iso is not None and not res.iso.passed:
-        ctx.failed.append("balance: the residual unbalance is over the ISO 21940-11 grade")
+        ctx.failed.append(f"balance: the rotor as given fails ISO 21940-11 G{res.iso.grade:g}")
     if not (o.planes or o.rotor_speed or o.bearings):
         s.items.append(_note("(corrections, bearing forces and the ISO grade need --planes, --speed with "
                              "a rotation unit, --bearings and --grade)"))
@@ -654,7 +654,8 @@ MANUAL["report"] = {
         ("rbcli report examples/two_disk_rotor.yaml -o rotor.html --planes 0,400mm --radius 100mm "
          "--speed '3000 rpm' --bearings 0,400mm --grade G6.3",
          "Adds the balance section: add 8.5 g at 208.072° and 12.2577 g at 258.232°, bearing "
-         "forces 83.8916 N and 120.978 N, G6.3 FAIL as given and PASS after the corrections."),
+         "forces 83.8916 N and 120.978 N, G6.3 FAIL as given (the report is written, exit status 1) "
+         "and PASS predicted with the corrections fitted."),
         ("rbcli report examples/top.yaml -o top.md --spin 150 --theta 30 --g 9.81",
          "Markdown, with its figures in top_files/ beside it; the heavy top nutates between "
          "30° and 34.5082° (and the top, round, also gets a rolling section)."),
