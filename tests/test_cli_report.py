@@ -301,6 +301,24 @@ def test_a_section_that_cannot_be_computed_says_why(capsys, tmp_path):
     assert "no --spin and --theta" in Page(out.read_text(encoding="utf-8")).skips["heavy-top"]
 
 
+@pytest.mark.parametrize("args, key, needle", [
+    # balance.compute's own error mapping (report used to get an OverflowError, exit 70)
+    (["examples/car_wheel.yaml", "--planes=-100,100mm", "--speed", "1e300 rpm", "--bearings", "0,1"],
+     "balance", "balance: not computed: --planes, --bearings, --speed: the result overflows"),
+    # an arithmetic error in the physics (a critical spin that underflows to 0)
+    (["examples/penny.yaml", "--rim-radius", "1e300", "--speed", "1 m/s"],
+     "rolling-stability", "rolling stability: not computed: a value is too large or too small"),
+    # a table cell that overflows to inf is refused, as rbcli rollcheck refuses it
+    (["examples/penny.yaml", "--speed", "1e300 m/s"],
+     "rolling-stability", "rolling stability: not computed: 'lean oscillation frequency"),
+])
+def test_a_section_whose_numbers_overflow_says_why(capsys, tmp_path, args, key, needle):
+    out, err = report(capsys, tmp_path, *args)  # written, exit 0: a section not there checks nothing
+    page = Page(out.read_text(encoding="utf-8"))
+    assert key not in page.sections and page.skips[key].startswith(needle), page.skips.get(key)
+    assert "inf" not in page.cells and err == ""
+
+
 # ----------------------------------------------------------------------------- escaping, references
 
 

@@ -447,7 +447,7 @@ def test_com_off_the_axle(capsys):
     [
         (["--radius", "-0.1"], "--radius"),
         (["--radius", "0"], "--radius"),
-        (["--tyre-radius", "0.6"], "--tyre-radius: the tyre radius 0.6 must be smaller"),
+        (["--tyre-radius", "0.6"], "--tyre-radius: the tyre radius 0.6 m must be smaller"),
         (["--tyre-radius", "-1 mm"], "--tyre-radius"),
         (["--g", "-9.81"], "--g: gravity must be a positive"),
         (["--g", "9.81 m"], "--g"),

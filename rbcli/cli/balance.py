@@ -36,52 +36,6 @@ applies to every bare number before it ('-100,100 mm' is both in mm). Tables sho
 g·mm and N unless --units is given.
 """
 
-def _values(text: str, kind: str, option: str, counts: tuple[int, ...]) -> list[float]:
-    """Only for rbcli/cli/report.py until it calls :func:`rbcli.cli.common.numbers` itself."""
-    return c.numbers(text, kind, option, counts=counts)
-
-
-def _grade(text: str) -> float:
-    """'G6.3', 'g 2.5', '6.3' or '6.3 mm/s' -> 6.3 (mm/s)."""
-    import math
-
-    from rbcli.core.balance import ISO_GRADE_MAX, ISO_GRADE_MIN
-    from rbcli.errors import InputError
-
-    t = text.strip()
-    m = re.fullmatch(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?", t)
-    if not m:
-        raise InputError(
-            f"--grade: '{text}' is not a balance quality grade; write e.g. G6.3, 6.3 or g2.5 "
-            "(G in mm/s, from G0.4 to G4000)"
-        )
-    G = float(m.group(1))
-    if not (math.isfinite(G) and ISO_GRADE_MIN <= G <= ISO_GRADE_MAX):
-        raise InputError(
-            f"--grade: ISO 21940-11 grades run from G{ISO_GRADE_MIN:g} to G{ISO_GRADE_MAX:g} "
-            f"(mm/s), got {text}"
-        )
-    return G
-
-
-def _positive(x: float, option: str, what: str) -> float:
-    import math
-
-    from rbcli.errors import InputError
-
-    if not (x > 0.0 and math.isfinite(x)):
-        raise InputError(f"{option}: {what} must be a positive number, got {x:.6g}")
-    return x
-
-
-def _distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
-    from rbcli.errors import InputError
-
-    if vals[0] == vals[1]:
-        raise InputError(f"{option}: the two {what} are both at z = {vals[0]:.6g} m; they must differ")
-    return vals[0], vals[1]
-
-
 @app.command(help=HELP)
 def balance(
     body: str = c.BodyArg,
@@ -128,11 +82,11 @@ def balance(
     n_shaft = c.direction(shaft, "--shaft") if shaft is not None else None
     p_through = c.point(through, "--through") if through is not None else None
     v_mark = c.vector(mark, "dimensionless", "--mark") if mark is not None else None
-    z_planes = _distinct(c.numbers(planes, "length", "--planes", counts=(2,)), "--planes", "correction planes") if planes is not None else None
+    z_planes = c.distinct(c.numbers(planes, "length", "--planes", counts=(2,)), "--planes", "correction planes") if planes is not None else None
     r_opt = None
     if radius is not None:
-        r_opt = [_positive(x, "--radius", "the correction radius") for x in c.numbers(radius, "length", "--radius", counts=(1, 2))]
-    m_step = _positive(c.quantity(mass_step, "mass", "--mass-step"), "--mass-step", "the mass step") if mass_step is not None else None
+        r_opt = [c.positive(x, "--radius", "the correction radius") for x in c.numbers(radius, "length", "--radius", counts=(1, 2))]
+    m_step = c.positive(c.quantity(mass_step, "mass", "--mass-step"), "--mass-step", "the mass step") if mass_step is not None else None
     a_step = None
     if angle_step is not None:
         a_step = c.degrees(angle_step, "--angle-step")
@@ -140,10 +94,10 @@ def balance(
             raise InputError(f"--angle-step: must be more than 0 and at most 360 degrees, got {angle_step}")
     if positions is not None and positions < 3:
         raise InputError(f"--positions: needs at least 3 equally spaced positions, got {positions}")
-    W = _positive(c.quantity(speed, "angular_speed", "--speed"), "--speed", "the speed (to turn the other way, reverse --shaft)") if speed is not None else None
-    z_bear = _distinct(c.numbers(bearings, "length", "--bearings", counts=(2,)), "--bearings", "bearings") if bearings is not None else None
-    gv = _positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity") if g is not None else 9.80665
-    G = _grade(grade) if grade is not None else None
+    W = c.positive(c.quantity(speed, "angular_speed", "--speed"), "--speed", "the speed (to turn the other way, reverse --shaft)") if speed is not None else None
+    z_bear = c.distinct(c.numbers(bearings, "length", "--bearings", counts=(2,)), "--bearings", "bearings") if bearings is not None else None
+    gv = c.positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity") if g is not None else None
+    G = c.grade(grade) if grade is not None else None
     # --- which options need which
     if z_planes is None:
         for opt, val in (("--radius", radius), ("--mass-step", mass_step), ("--angle-step", angle_step),
@@ -175,27 +129,12 @@ def balance(
 
         out_path = check_output(apply, b, force=force)
 
-    import numpy as np
-
-    from rbcli.errors import NonFiniteResult
     from rbcli.render import balance as rb
-    from rbcli.render.jsonout import jsonable
 
-    given = [o for o, v in (("--planes", planes), ("--radius", radius), ("--bearings", bearings),
-                            ("--speed", speed), ("--mass-step", mass_step), ("--through", through),
-                            ("--g", g)) if v is not None]
-    try:
-        with np.errstate(all="ignore"):
-            res = _compute(b, n_shaft, p_through, v_mark, zero_deg, angle_sense, z_planes, r_opt,
-                           m_step, a_step, positions, W, z_bear, gv, G, t_planes)
-            data = jsonable(rb.to_json(res))  # refuses inf and NaN
-    except (ValueError, OverflowError, ZeroDivisionError, NonFiniteResult) as exc:
-        if isinstance(exc, ValueError):
-            raise InputError(f"{', '.join(given) or 'balance'}: {exc}") from None
-        raise NonFiniteResult(
-            f"{', '.join(given) or 'balance'}: the result overflows (a number beyond 1e308): "
-            "an option value is too large or too small for this body"
-        ) from None
+    res = compute(b, shaft=n_shaft, through=p_through, mark=v_mark, zero_mark_deg=zero_deg,
+                  angle_sense=angle_sense, planes=z_planes, radius=r_opt, mass_step=m_step,
+                  angle_step=a_step, positions=positions, speed=W, bearings=z_bear, g=gv, grade=G,
+                  tolerance_planes=t_planes)
     if m_step is not None and res.corrections is not None:
         biggest = max(pc.mass for pc in res.corrections.pair)
         if m_step > biggest:
@@ -219,7 +158,7 @@ def balance(
     if json_:
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(rb.to_json(res) if out_path is not None else data))
+        e.write(dumps(rb.to_json(res)))
     else:
         from rbcli.render.text import Doc
 
@@ -229,9 +168,50 @@ def balance(
     c.finish(1 if (res.iso is not None and not res.iso.passed) else 0)
 
 
-def _compute(b, n_shaft, p_through, v_mark, zero_mark_deg, sense, z_planes, r_opt, m_step, a_step,
-             n_pos, W, z_bear, gv, G, tolerance_planes):
-    """Load → core: everything the command reports, as a render Result."""
+def compute(body, *, shaft=None, through=None, mark=None, zero_mark_deg: float = 0.0,
+            angle_sense: str = "with", planes=None, radius=None, mass_step=None, angle_step=None,
+            positions=None, speed=None, bearings=None, g=None, grade=None,
+            tolerance_planes: str = "bearings"):
+    """Everything ``rbcli balance`` reports for a body, as a render Result (shared with report).
+
+    Options are parsed values in SI (None = not given): ``shaft`` a direction, ``through``
+    "com", "origin" or [x, y, z], ``mark`` a direction, ``planes``/``bearings`` (z1, z2),
+    ``radius`` [r] or [rA, rB], ``mass_step`` kg, ``angle_step`` and ``zero_mark_deg``
+    degrees, ``positions`` N, ``speed`` rad/s, ``g`` m/s² (default 9.80665), ``grade`` G in
+    mm/s. Errors come back as the command reports them: a ValueError of the physics as an
+    InputError naming the options given, a result that overflows (or is inf or NaN anywhere
+    in its JSON) as NonFiniteResult; both exit 2.
+    """
+    import numpy as np
+
+    from rbcli.errors import InputError, NonFiniteResult
+    from rbcli.render import balance as rb
+    from rbcli.render.jsonout import jsonable
+
+    given = [o for o, v in (("--planes", planes), ("--radius", radius), ("--bearings", bearings),
+                            ("--speed", speed), ("--mass-step", mass_step), ("--through", through),
+                            ("--g", g)) if v is not None]
+    try:
+        with np.errstate(all="ignore"):
+            res = _compute(body, n_shaft=shaft, p_through=through, v_mark=mark,
+                           zero_mark_deg=zero_mark_deg, sense=angle_sense, z_planes=planes,
+                           r_opt=radius, m_step=mass_step, a_step=angle_step, n_pos=positions,
+                           W=speed, z_bear=bearings, gv=9.80665 if g is None else g, G=grade,
+                           tolerance_planes=tolerance_planes)
+            jsonable(rb.to_json(res))  # refuses inf and NaN
+    except (ValueError, OverflowError, ZeroDivisionError, NonFiniteResult) as exc:
+        if isinstance(exc, ValueError):
+            raise InputError(f"{', '.join(given) or 'balance'}: {exc}") from None
+        raise NonFiniteResult(
+            f"{', '.join(given) or 'balance'}: the result overflows (a number beyond 1e308): "
+            "an option value is too large or too small for this body"
+        ) from None
+    return res
+
+
+def _compute(b, *, n_shaft, p_through, v_mark, zero_mark_deg, sense, z_planes, r_opt, m_step, a_step,
+              n_pos, W, z_bear, gv, G, tolerance_planes):
+    """The work of :func:`compute`, without its error mapping."""
     import numpy as np
 
     from rbcli.core import balance as B
@@ -520,8 +500,8 @@ def field_balance(
     scale = 1.0
     radii = None
     if radius is not None:
-        rt = _positive(c.quantity(trial_radius, "length", "--trial-radius"), "--trial-radius", "the trial radius")
-        rc = _positive(c.quantity(radius, "length", "--radius"), "--radius", "the correction radius")
+        rt = c.positive(c.quantity(trial_radius, "length", "--trial-radius"), "--trial-radius", "the trial radius")
+        rc = c.positive(c.quantity(radius, "length", "--radius"), "--radius", "the correction radius")
         scale, radii = rt / rc, (rt, rc)
     v0 = _readings(initial, "--initial", n)
     runs = [_readings(r, "--run", n) for r in run_]

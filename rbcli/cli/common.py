@@ -164,6 +164,57 @@ def numbers(text: str, kind: str, option: str, *, counts: tuple[int, ...] = (3,)
     return vals
 
 
+def finite(x: float, option: str) -> float:
+    """``x`` if it is a finite number, else an InputError naming ``option``."""
+    import math
+
+    if not math.isfinite(x):
+        raise InputError(f"{option}: must be a finite number")
+    return x
+
+
+def positive(x: float, option: str, what: str) -> float:
+    """``x`` if it is a positive finite number, else an InputError saying ``what`` it is."""
+    import math
+
+    if not (x > 0.0 and math.isfinite(x)):
+        raise InputError(f"{option}: {what} must be a positive number, got {x:.6g}")
+    return x
+
+
+def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
+    """Two positions along a shaft that must differ (``--planes``, ``--bearings``)."""
+    if vals[0] == vals[1]:
+        raise InputError(f"{option}: the two {what} are both at z = {vals[0]:.6g} m; they must differ")
+    return vals[0], vals[1]
+
+
+#: an ISO 21940-11 balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s'
+_GRADE = re.compile(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
+
+
+def grade(text: str, option: str = "--grade") -> float:
+    """A balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s' -> 6.3 (mm/s), within the
+    grades ISO 21940-11 defines (G0.4 to G4000)."""
+    import math
+
+    from rbcli.core.balance import ISO_GRADE_MAX, ISO_GRADE_MIN
+
+    m = _GRADE.fullmatch(text.strip())
+    if not m:
+        raise InputError(
+            f"{option}: '{text}' is not a balance quality grade; write e.g. G6.3, 6.3 or g2.5 "
+            "(G in mm/s, from G0.4 to G4000)"
+        )
+    G = float(m.group(1))
+    if not (math.isfinite(G) and ISO_GRADE_MIN <= G <= ISO_GRADE_MAX):
+        raise InputError(
+            f"{option}: ISO 21940-11 grades run from G{ISO_GRADE_MIN:g} to G{ISO_GRADE_MAX:g} "
+            f"(mm/s), got {text}"
+        )
+    return G
+
+
 def vector(text: str, kind: str, option: str, n: int = 3, *, bare: str | None = None) -> list[float]:
     """A vector like ``1,0,0``, ``0,0,300 rpm`` or ``10,0,5 mm`` (see :func:`numbers`)."""
     if len(text.split(",")) != n:

@@ -26,8 +26,9 @@ the equivalent uniform box and ellipsoid.
 """
 
 
-def _reference(body, about: str | None):
-    """(point, label) for --about, else the body's reference, else the origin."""
+def reference(body, *, about: str | None = None):
+    """(mass properties, point, label): the point the inertia is about — ``about`` (the
+    text of --about: com, origin or x,y,z), else the body's reference, else the origin."""
     import numpy as np
 
     from rbcli.core.inertia import combine
@@ -128,7 +129,7 @@ def _inertia_one(body, about, n, w, json_, du, digits, products, e, many: bool) 
     from rbcli.errors import InputError
     from rbcli.render import massprops as r
 
-    mp, ref, label = _reference(body, about)
+    mp, ref, label = reference(body, about=about)
     try:
         res = inertia_report(mp, ref, axis=n, omega=w)
     except InputOverflow as exc:
@@ -161,7 +162,7 @@ def _principal_one(body, about, json_, du, digits, e, many: bool) -> None:
     from rbcli.errors import InputError
     from rbcli.render import massprops as r
 
-    mp, ref, label = _reference(body, about)
+    mp, ref, label = reference(body, about=about)
     with np.errstate(over="ignore", invalid="ignore"):
         J = inertia_about(mp, ref)
     if not np.all(np.isfinite(J)):

@@ -87,11 +87,11 @@ def precess(
             "--omega: the initial angular velocity is required: x,y,z in the body frame, "
             "e.g. --omega 0,0,10 (rad/s) or --omega '0,0,300 rpm'"
         )
-    w = [_finite(x, "--omega") for x in c.vector(omega, "angular_speed", "--omega")]
-    t_at = _finite(c.quantity(at, "time", "--at"), "--at") if at is not None else None
+    w = c.vector(omega, "angular_speed", "--omega")  # finite, or an InputError
+    t_at = c.finite(c.quantity(at, "time", "--at"), "--at") if at is not None else None
     span = None
     if duration is not None:
-        span = _finite(c.quantity(duration, "time", "--duration"), "--duration")
+        span = c.finite(c.quantity(duration, "time", "--duration"), "--duration")
         if not span > 0.0:
             raise InputError(f"--duration: must be a positive time, got '{duration}'")
     n_rows = None
@@ -122,18 +122,10 @@ def precess(
 
         csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
 
-    import numpy as np
-
     from rbcli.core import freemotion as fm
-    from rbcli.core.inertia import combine
     from rbcli.render import precess as rp
 
-    mp = combine(b.parts)
-    try:
-        motion = fm.analyse(mp.inertia_com, np.array(w))
-    except ValueError as exc:
-        where = b.source if str(exc).startswith("inertia") else "--omega"
-        raise InputError(f"{where}: {exc}") from None
+    motion = prepare(b, omega=w)
     rate = rp.fastest_rate(motion)
     for t, opt in ((t_at, "--at"), (span, "--duration")):
         if t is not None and rate * abs(t) > MAX_PHASE:
@@ -175,12 +167,22 @@ def precess(
         c.finish(1)
 
 
-def _finite(x: float, option: str) -> float:
+def prepare(body, *, omega):
+    """The exact torque-free motion of a body from ``omega`` [x, y, z] (rad/s, body frame);
+    shared with report. A core ValueError is an InputError naming the body file (its
+    inertia) or --omega."""
+    import numpy as np
+
+    from rbcli.core import freemotion as fm
+    from rbcli.core.inertia import combine
     from rbcli.errors import InputError
 
-    if x != x or x in (float("inf"), float("-inf")):
-        raise InputError(f"{option}: must be a finite number")
-    return x
+    mp = combine(body.parts)
+    try:
+        return fm.analyse(mp.inertia_com, np.array(omega, dtype=float))
+    except ValueError as exc:
+        where = body.source if str(exc).startswith("inertia") else "--omega"
+        raise InputError(f"{where}: {exc}") from None
 
 
 def _count(text: str) -> int:

@@ -43,11 +43,11 @@ def report(
     pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (m, or with units). Default: the body's pivot; without either there is no top section.", show_default=False),
     spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (rad/s, or e.g. '3000 rpm').", show_default=False),
     theta: str = typer.Option(None, "--theta", help="Heavy top: start tilt of the axis from the upward vertical (degrees, or with units).", show_default=False),
-    theta_dot: str = typer.Option("0", "--theta-dot", help="Heavy top: start rate theta' (rad/s, or with units)."),
-    phi_dot: str = typer.Option("0", "--phi-dot", help="Heavy top: start precession rate phi' (rad/s, or with units)."),
+    theta_dot: str = typer.Option(None, "--theta-dot", help="Heavy top: start rate theta' (rad/s, or with units). Default: 0.", show_default=False),
+    phi_dot: str = typer.Option(None, "--phi-dot", help="Heavy top: start precession rate phi' (rad/s, or with units). Default: 0.", show_default=False),
     rim_radius: str = typer.Option(None, "--rim-radius", help="Rolling: rim radius (m, or with units). Default: the body's rim_radius, else the largest round part coaxial with the axle.", show_default=False),
-    tyre_radius: str = typer.Option("0", "--tyre-radius", help="Rolling: tube radius of a rounded rim (m, or with units); 0 = knife edge."),
-    g: str = typer.Option("9.80665", "--g", help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units)."),
+    tyre_radius: str = typer.Option(None, "--tyre-radius", help="Rolling: tube radius of a rounded rim (m, or with units). Default: 0, a knife edge.", show_default=False),
+    g: str = typer.Option(None, "--g", help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units). Default: 9.80665 m/s^2.", show_default=False),
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -103,27 +103,25 @@ class _Options:
     def parse(cls, **kw) -> "_Options":
         import math
 
-        from rbcli.cli import balance as cb
         from rbcli.errors import InputError
         from rbcli.io import units as un
 
         o = cls()
         o.given = [(f"--{k.replace('_', '-')}", v) for k, v in kw.items()
-                   if v is not None and not (k in ("theta_dot", "phi_dot", "tyre_radius") and v == "0")
-                   and not (k == "g" and v == "9.80665")]
+                   if v is not None]
         o.shaft = c.direction(kw["shaft"], "--shaft") if kw["shaft"] is not None else None
         o.through = c.point(kw["through"], "--through") if kw["through"] is not None else None
-        o.planes = (cb._distinct(cb._values(kw["planes"], "length", "--planes", (2,)), "--planes", "correction planes")
+        o.planes = (c.distinct(c.numbers(kw["planes"], "length", "--planes", counts=(2,)), "--planes", "correction planes")
                     if kw["planes"] is not None else None)
         o.radius = None
         if kw["radius"] is not None:
-            o.radius = [cb._positive(x, "--radius", "the correction radius")
-                        for x in cb._values(kw["radius"], "length", "--radius", (1, 2))]
+            o.radius = [c.positive(x, "--radius", "the correction radius")
+                        for x in c.numbers(kw["radius"], "length", "--radius", counts=(1, 2))]
             if o.planes is None:
                 raise InputError("--radius: needs the correction planes, --planes zA,zB")
-        o.bearings = (cb._distinct(cb._values(kw["bearings"], "length", "--bearings", (2,)), "--bearings", "bearings")
+        o.bearings = (c.distinct(c.numbers(kw["bearings"], "length", "--bearings", counts=(2,)), "--bearings", "bearings")
                       if kw["bearings"] is not None else None)
-        o.grade = cb._grade(kw["grade"]) if kw["grade"] is not None else None
+        o.grade = c.grade(kw["grade"]) if kw["grade"] is not None else None
         o.rotor_speed = o.roll_speed = o.roll_spin = None
         if kw["speed"] is not None:
             text = kw["speed"]
@@ -152,25 +150,29 @@ class _Options:
         if o.omega is not None and not all(math.isfinite(x) for x in o.omega):
             raise InputError("--omega: must be finite numbers")
         o.pivot = c.point(kw["pivot"], "--pivot") if kw["pivot"] is not None else None
-        o.spin = _finite(c.quantity(kw["spin"], "angular_speed", "--spin"), "--spin") if kw["spin"] is not None else None
+        o.spin = c.finite(c.quantity(kw["spin"], "angular_speed", "--spin"), "--spin") if kw["spin"] is not None else None
         if o.spin == 0.0:
             raise InputError("--spin: must not be 0: a top without spin cannot stand; give e.g. --spin '3000 rpm'")
         o.theta = None
         if kw["theta"] is not None:
-            o.theta = _finite(c.quantity(kw["theta"], "angle", "--theta", bare="deg"), "--theta")
+            o.theta = c.finite(c.quantity(kw["theta"], "angle", "--theta", bare="deg"), "--theta")
             if not (0.0 < o.theta < math.pi):
                 raise InputError(f"--theta: the start tilt must be strictly between 0 and 180 degrees, got {kw['theta']}")
-        o.theta_dot = _finite(c.quantity(kw["theta_dot"], "angular_speed", "--theta-dot"), "--theta-dot")
-        o.phi_dot = _finite(c.quantity(kw["phi_dot"], "angular_speed", "--phi-dot"), "--phi-dot")
+        o.theta_dot = o.phi_dot = 0.0
+        if kw["theta_dot"] is not None:
+            o.theta_dot = c.finite(c.quantity(kw["theta_dot"], "angular_speed", "--theta-dot"), "--theta-dot")
+        if kw["phi_dot"] is not None:
+            o.phi_dot = c.finite(c.quantity(kw["phi_dot"], "angular_speed", "--phi-dot"), "--phi-dot")
         o.rim_radius = None
         if kw["rim_radius"] is not None:
             o.rim_radius = c.quantity(kw["rim_radius"], "length", "--rim-radius")
             if not (o.rim_radius > 0.0 and math.isfinite(o.rim_radius)):
                 raise InputError(f"--rim-radius: must be a positive length, got {kw['rim_radius']}")
-        o.tyre_radius = c.quantity(kw["tyre_radius"], "length", "--tyre-radius")
+        o.tyre_radius = c.quantity(kw["tyre_radius"], "length", "--tyre-radius") if kw["tyre_radius"] is not None else 0.0
         if not (o.tyre_radius >= 0.0 and math.isfinite(o.tyre_radius)):
             raise InputError(f"--tyre-radius: must be 0 (knife edge) or a positive length, got {kw['tyre_radius']}")
-        o.g = c.quantity(kw["g"], "acceleration", "--g")
+        o.g_given = kw["g"] is not None  # balance names --g among the options of an error only then
+        o.g = c.quantity(kw["g"], "acceleration", "--g") if o.g_given else 9.80665
         if not (o.g > 0.0 and math.isfinite(o.g)):
             raise InputError(f"--g: gravity must be a positive number, got {kw['g']}")
         return o
@@ -179,16 +181,6 @@ class _Options:
         import shlex
 
         return " ".join(f"{k} {shlex.quote(v)}" for k, v in self.given)
-
-
-def _finite(x: float, option: str) -> float:
-    import math
-
-    from rbcli.errors import InputError
-
-    if not math.isfinite(x):
-        raise InputError(f"{option}: must be a finite number")
-    return x
 
 
 def _date() -> str:
@@ -320,19 +312,23 @@ def build(b, opts: _Options, du, digits: int, date: str, progress=None):
     from rbcli import __version__
     from rbcli.render import report as R
 
-    steps = [
-        ("parts", _parts), ("mass properties", _massprops), ("principal axes", _principal),
-        ("balance", _balance), ("free precession", _precess), ("heavy top", _top),
-        ("rolling stability", _rollcheck),
+    steps = [  # (progress text, section key, title, builder)
+        ("parts", "parts", "Parts", _parts),
+        ("mass properties", "mass-properties", "Mass properties", _massprops),
+        ("principal axes", "principal-axes", "Principal axes", _principal),
+        ("balance", "balance", "Balance", _balance),
+        ("free precession", "free-precession", "Free precession", _precess),
+        ("heavy top", "heavy-top", "Heavy top", _top),
+        ("rolling stability", "rolling-stability", "Rolling stability", _rollcheck),
     ]
     failed: list[str] = []
     sections = []
     with tempfile.TemporaryDirectory(prefix="rbcli-report-") as tmp:
         ctx = _Ctx(b, opts, du, digits, Path(tmp), failed)
-        for i, (what, fn) in enumerate(steps):
+        for i, (what, key, title, fn) in enumerate(steps):
             if progress is not None:
                 progress.step(what, i, len(steps))
-            sections.append(fn(ctx))
+            sections.append(_guarded(ctx, what, key, title, fn))
     meta = [("body", b.name)]
     if b.description:
         meta.append(("description", b.description))
@@ -347,6 +343,24 @@ def build(b, opts: _Options, du, digits: int, date: str, progress=None):
     rep = R.Report(title=f"rbcli report: {b.name}", meta=meta, sections=sections, input_name=b.source,
                    input_text=b.text, generator=f"rbcli {__version__}")
     return rep, failed
+
+
+def _guarded(ctx, what: str, key: str, title: str, fn):
+    """``fn(ctx)``, the section, or one line saying why it is not there when its numbers are
+    too large or too small to compute with (an arithmetic error, or inf/NaN in one of its
+    tables, which the commands refuse too): that is this body and these options, not a bug."""
+    from rbcli.errors import NonFiniteResult
+
+    n_failed = len(ctx.failed)
+    try:
+        s = fn(ctx)
+        c.check_finite_doc(s)
+    except (OverflowError, ZeroDivisionError, FloatingPointError, NonFiniteResult) as exc:
+        del ctx.failed[n_failed:]  # a check of a section that is not there has not failed
+        if not isinstance(exc, NonFiniteResult):
+            exc = f"a value is too large or too small to compute with ({exc})"
+        return _skip(key, title, f"{what}: not computed: {exc}")
+    return s
 
 
 class _Ctx:
@@ -397,12 +411,12 @@ def _parts(ctx: _Ctx):
 
 
 def _massprops(ctx: _Ctx):
-    from rbcli.cli.massprops import _reference
+    from rbcli.cli.massprops import reference
     from rbcli.core.inertia import inertia_report
     from rbcli.render import massprops as r
     from rbcli.render.text import Doc
 
-    mp, ref, label = _reference(ctx.body, None)
+    mp, ref, label = reference(ctx.body)
     res = inertia_report(mp, ref)
     doc = Doc()
     r.inertia_doc(doc, ctx.body, res, ctx.du, ctx.digits, "tensor", label)
@@ -442,10 +456,6 @@ def _principal(ctx: _Ctx):
     return s
 
 
-def _reason(exc) -> str:
-    return str(exc).removeprefix("rbcli: ")
-
-
 def _balance(ctx: _Ctx):
     from rbcli.errors import InputError
 
@@ -460,10 +470,11 @@ def _balance(ctx: _Ctx):
     from rbcli.render.text import Doc
 
     try:
-        res = cb._compute(b, o.shaft, o.through, None, 0.0, "with", o.planes, o.radius, None, None, None,
-                          o.rotor_speed, o.bearings, o.g, o.grade, "bearings")
+        res = cb.compute(b, shaft=o.shaft, through=o.through, planes=o.planes, radius=o.radius,
+                         speed=o.rotor_speed, bearings=o.bearings, g=o.g if o.g_given else None,
+                         grade=o.grade)
     except InputError as exc:
-        return _skip(key, title, f"balance: not computed: {_reason(exc)}")
+        return _skip(key, title, f"balance: not computed: {exc}")
     doc = Doc()
     su = rb.ShopUnits(_units_text(ctx.du))
     rb.document(doc, res, su, ctx.digits)
@@ -505,20 +516,15 @@ def _precess(ctx: _Ctx):
     key, title = "free-precession", "Free precession"
     if ctx.opts.omega is None:
         return _skip(key, title, "free precession: no --omega given (the initial angular velocity, body frame)")
-    import numpy as np
-
-    from rbcli.core import freemotion as fm
+    from rbcli.cli import precess as cp
     from rbcli.render import precess as rp
     from rbcli.render.text import Doc
 
     b = ctx.body
     try:
-        try:
-            motion = fm.analyse(ctx.mp.inertia_com, np.array(ctx.opts.omega))
-        except ValueError as exc:
-            raise InputError(f"{b.source if str(exc).startswith('inertia') else '--omega'}: {exc}") from None
+        motion = cp.prepare(b, omega=ctx.opts.omega)
     except InputError as exc:
-        return _skip(key, title, f"free precession: not computed: {_reason(exc)}")
+        return _skip(key, title, f"free precession: not computed: {exc}")
     doc = Doc()
     rp.document(doc, b, motion, rp.Extras(), ctx.du, ctx.digits)
     s = _section(key, title)
@@ -540,20 +546,15 @@ def _top(ctx: _Ctx):
         return _skip(key, title, f"heavy top: the body has a pivot, but no {missing} given "
                      "(the spin about the symmetry axis and the start tilt from the vertical)")
     from rbcli.cli import top as ct
-    from rbcli.core import top as core
     from rbcli.render import top as rt
     from rbcli.render.text import Doc
 
     try:
-        params, pivot_label = ct._params(b, o.pivot)
-        try:
-            motion = core.analyse(params, o.spin, o.theta, o.theta_dot, o.phi_dot, o.g)
-        except (ValueError, OverflowError, ArithmeticError) as exc:
-            raise InputError(f"{ct._which(exc)}: {exc}") from None
-        ct._check_finite(motion)
+        motion, pivot_label = ct.prepare(b, pivot=o.pivot, spin=o.spin, theta=o.theta,
+                                         theta_dot=o.theta_dot, phi_dot=o.phi_dot, g=o.g)
+        span = ct.default_duration(motion)
     except InputError as exc:
-        return _skip(key, title, f"heavy top: not computed: {_reason(exc)}")
-    span = ct._default_duration(motion)
+        return _skip(key, title, f"heavy top: not computed: {exc}")
     info = rt.Info(body=b, pivot_label=pivot_label, released=o.theta_dot == 0.0 and o.phi_dot == 0.0,
                    verify_axis_tol=ct.VERIFY_AXIS_TOL, verify_energy_tol=ct.VERIFY_ENERGY_TOL,
                    plot=None, csv=None, duration=span, samples=None)
@@ -582,15 +583,13 @@ def _rollcheck(ctx: _Ctx):
     from rbcli.render.text import Doc
 
     try:
-        setup = cr._setup(b, o.shaft, o.through, o.rim_radius)
-        if o.tyre_radius >= setup.radius:
-            raise InputError(f"--tyre-radius: must be smaller than the rim radius a = {setup.radius:.6g} m")
+        setup = cr.prepare(b, axle=o.shaft, through=o.through, radius=o.rim_radius, tyre_radius=o.tyre_radius)
         try:
             res = rl.rollcheck(setup.wheel, setup.radius, o.tyre_radius, o.g, speed=o.roll_speed, spin=o.roll_spin)
         except ValueError as exc:
             raise InputError(f"--speed: {exc}") from None
     except InputError as exc:
-        return _skip(key, title, f"rolling stability: not computed: {_reason(exc)}")
+        return _skip(key, title, f"rolling stability: not computed: {exc}")
     info = rr.Info(body=b, radius_source=setup.radius_source, radius_kind=setup.radius_kind,
                    radius_part=setup.radius_part, axle_source=setup.axle_source, axle_through=setup.through,
                    speed_given=o.roll_speed is not None, spin_given=o.roll_spin is not None,
@@ -599,8 +598,8 @@ def _rollcheck(ctx: _Ctx):
     rr.document(doc, res, info, ctx.du, ctx.digits)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    for w in getattr(setup, "warnings", []):
-        s.items.append(_note("warning: " + _reason(w)))
+    for w in setup.warnings:
+        s.items.append(_note("warning: " + w))
     if res.verdict is not None and not res.verdict.stable:
         ctx.failed.append("rolling: straight rolling at --speed is unstable")
     _plot(ctx, s, rr, "rollcheck", lambda p: rr.plot(p, res, info),

@@ -55,13 +55,13 @@ def rollcheck(
     # --- option values (checked before the body is read: bad usage is bad usage)
     n_axle = c.direction(axle, "--axle") if axle is not None else None
     p_through = c.point(through, "--through") if through is not None else None
-    a_opt = _positive(c.quantity(radius, "length", "--radius"), "--radius", "the rim radius") if radius is not None else None
+    a_opt = c.positive(c.quantity(radius, "length", "--radius"), "--radius", "the rim radius") if radius is not None else None
     r = c.quantity(tyre_radius, "length", "--tyre-radius")
     if not r >= 0.0 or r != r or r == float("inf"):
         raise InputError(f"--tyre-radius: must be 0 (knife edge) or a positive length, got {tyre_radius}")
-    gv = _positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity")
-    v = _finite(c.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
-    s = _finite(c.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
+    gv = c.positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity")
+    v = c.finite(c.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
+    s = c.finite(c.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
     beta = None
     if lean is not None:
         import math
@@ -98,14 +98,9 @@ def rollcheck(
 
         plot_path = check_path(plot, b)
 
-    setup = _setup(b, n_axle, p_through, a_opt)
+    setup = prepare(b, axle=n_axle, through=p_through, radius=a_opt, tyre_radius=r)
     for w in setup.warnings:
-        e.warn(w)
-    if r >= setup.radius:
-        raise InputError(
-            f"--tyre-radius: the tyre radius {tyre_radius} must be smaller than the rim radius "
-            f"a = {setup.radius:.6g} m ({setup.radius_source})"
-        )
+        e.warn(f"rbcli: {w}")
     if beta is not None or R_G is not None:
         if r != 0.0:
             raise InputError(
@@ -159,22 +154,6 @@ def rollcheck(
     c.finish(1 if failed else 0)
 
 
-def _positive(x: float, option: str, what: str) -> float:
-    from rbcli.errors import InputError
-
-    if not (x > 0.0 and x != float("inf")):
-        raise InputError(f"{option}: {what} must be a positive number, got {x:.6g}")
-    return x
-
-
-def _finite(x: float, option: str) -> float:
-    from rbcli.errors import InputError
-
-    if x != x or x in (float("inf"), float("-inf")):
-        raise InputError(f"{option}: must be a finite number")
-    return x
-
-
 def _option_for(msg: str, beta, R_G, v, s) -> str:
     """The options a core error is about, for the one-line message."""
     if "disagree" in msg:
@@ -194,6 +173,27 @@ class _Setup:
         self.radius_part = radius_part
         self.axle_source = axle_source
         self.through = through
+
+
+def prepare(body, *, axle=None, through=None, radius=None, tyre_radius: float = 0.0) -> _Setup:
+    """The rolling wheel of a body, its rim radius and where each came from; shared with report.
+
+    ``axle`` a direction (default the body's shaft, else body z), ``through`` "com",
+    "origin" or [x, y, z] (m; default the body's shaft point, else the origin), ``radius``
+    the rim radius (m; default the body's rim_radius, else the largest round part coaxial
+    with the axle), ``tyre_radius`` (m), which must be smaller than the rim radius. A body
+    that cannot roll, or a tyre as large as the rim, is an InputError (exit 2). Warnings
+    (without the "rbcli: " prefix) are in the result's ``warnings``.
+    """
+    setup = _setup(body, axle, through, radius)
+    if tyre_radius >= setup.radius:
+        from rbcli.errors import InputError
+
+        raise InputError(
+            f"--tyre-radius: the tyre radius {tyre_radius:.6g} m must be smaller than the rim radius "
+            f"a = {setup.radius:.6g} m ({setup.radius_source})"
+        )
+    return setup
 
 
 def _setup(body, n_axle, p_through, a_opt) -> _Setup:
@@ -240,7 +240,7 @@ def _setup(body, n_axle, p_through, a_opt) -> _Setup:
         dz = float(np.dot(np.asarray(rim.com, dtype=float) - mp.com, n))
         if abs(dz) > 1e-6 * a:
             warnings.append(
-                f"rbcli: {body.source}: the rim part '{part}' is centred {abs(dz):.6g} m from the "
+                f"{body.source}: the rim part '{part}' is centred {abs(dz):.6g} m from the "
                 "centre of mass along the axle; the model takes the rim circle in the plane of the "
                 "centre of mass"
             )

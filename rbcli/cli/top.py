@@ -74,28 +74,28 @@ def top(
         raise InputError("--spin: required: the spin w3 about the symmetry axis, e.g. --spin 150 (rad/s) or --spin '3000 rpm'")
     if theta is None:
         raise InputError("--theta: required: the start tilt of the axis from the upward vertical, e.g. --theta 30 (degrees)")
-    S = _finite(c.quantity(spin, "angular_speed", "--spin"), "--spin")
+    S = c.finite(c.quantity(spin, "angular_speed", "--spin"), "--spin")
     if S == 0.0:
         raise InputError(
             "--spin: must not be 0: a top without spin is a spherical pendulum (it cannot stand); "
             "give the spin w3, e.g. --spin 150 or --spin '3000 rpm'"
         )
-    th = _finite(c.quantity(theta, "angle", "--theta", bare="deg"), "--theta")
+    th = c.finite(c.quantity(theta, "angle", "--theta", bare="deg"), "--theta")
     if not (0.0 < th < math.pi):
         raise InputError(
             f"--theta: the start tilt must be strictly between 0 and 180 degrees, got {theta} "
             "(at 0 or 180 the axis is vertical and the precession angle is undefined; start it "
             "slightly tilted, e.g. --theta 0.1)"
         )
-    thd = _finite(c.quantity(theta_dot, "angular_speed", "--theta-dot"), "--theta-dot")
-    phd = _finite(c.quantity(phi_dot, "angular_speed", "--phi-dot"), "--phi-dot")
-    gv = _finite(c.quantity(g, "acceleration", "--g"), "--g")
+    thd = c.finite(c.quantity(theta_dot, "angular_speed", "--theta-dot"), "--theta-dot")
+    phd = c.finite(c.quantity(phi_dot, "angular_speed", "--phi-dot"), "--phi-dot")
+    gv = c.finite(c.quantity(g, "acceleration", "--g"), "--g")
     if not gv > 0.0:
         raise InputError(f"--g: gravity must be positive (it points down, towards -z), got {g}")
     p_opt = c.point(pivot, "--pivot") if pivot is not None else None
     dur = None
     if duration is not None:
-        dur = _finite(c.quantity(duration, "time", "--duration"), "--duration")
+        dur = c.finite(c.quantity(duration, "time", "--duration"), "--duration")
         if not dur > 0.0:
             raise InputError(f"--duration: must be a positive time, got {duration}")
     if not 2 <= samples <= MAX_SAMPLES:
@@ -115,29 +115,19 @@ def top(
 
         csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
 
-    params, pivot_label = _params(b, p_opt)
-    from rbcli.core import top as core
-
-    try:
-        motion = core.analyse(params, S, th, thd, phd, gv)
-    except (OverflowError, ArithmeticError):
-        raise InputError(
-            "--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
-            "top's equations; give values of a physical size"
-        ) from None
-    except ValueError as exc:
-        raise InputError(f"{_which(exc)}: {exc}") from None
-    _check_finite(motion)
+    motion, pivot_label = prepare(b, pivot=p_opt, spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv)
 
     check = None
     if verify:
+        from rbcli.core import top as core
+
         try:
             check = core.verify(motion, periods=3)
         except (ValueError, OverflowError, ArithmeticError) as exc:
             raise InputError(f"--verify: {exc}") from None
     span = None
     if plot_path is not None or csv is not None:
-        span = dur if dur is not None else _default_duration(motion)
+        span = dur if dur is not None else default_duration(motion)
 
     from rbcli.render import top as rt
 
@@ -183,14 +173,6 @@ def _status(check) -> int:
     return 0 if ok else 1
 
 
-def _finite(x: float, option: str) -> float:
-    from rbcli.errors import InputError
-
-    if x != x or x in (float("inf"), float("-inf")):
-        raise InputError(f"{option}: must be a finite number")
-    return x
-
-
 def _which(exc: BaseException) -> str:
     """The option a core error from ``analyse`` is about."""
     msg = str(exc)
@@ -210,13 +192,11 @@ def _check_finite(motion) -> None:
     vals = [motion.a, motion.b, motion.alpha, motion.beta, motion.u1, motion.u2, motion.u3,
             motion.theta1, motion.theta2, motion.critical_spin, motion.horizontal_precession_rate]
     if not all(math.isfinite(v) for v in vals):
-        raise InputError(
-            "--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
-            "top's equations; give values of a physical size"
-        )
+        raise InputError(_OVERFLOW)
 
 
-def _default_duration(motion) -> float:
+def default_duration(motion) -> float:
+    """The span of --csv and --plot when --duration is not given: 3 nutation periods."""
     from rbcli.errors import InputError
 
     if motion.nutation_period is None:
@@ -225,6 +205,34 @@ def _default_duration(motion) -> float:
             "infinite time): it has no nutation period and no periodic closed form to sample"
         )
     return 3.0 * motion.nutation_period
+
+
+def prepare(body, *, pivot=None, spin: float, theta: float, theta_dot: float = 0.0,
+            phi_dot: float = 0.0, g: float = 9.80665):
+    """The heavy top's closed-form motion for a body: (TopMotion, pivot label); shared with report.
+
+    ``pivot`` is "com", "origin", [x, y, z] (m) or None (the body's pivot, else the origin);
+    ``spin`` w3 (rad/s), ``theta`` the start tilt (rad), ``theta_dot``, ``phi_dot`` (rad/s),
+    ``g`` (m/s²). Errors come back as the command reports them (InputError, exit 2): a body
+    that is not a top about this pivot, a core ValueError with the option it is about, and
+    values that overflow the top's equations.
+    """
+    from rbcli.core import top as core
+    from rbcli.errors import InputError
+
+    params, pivot_label = _params(body, pivot)
+    try:
+        motion = core.analyse(params, spin, theta, theta_dot, phi_dot, g)
+    except (OverflowError, ArithmeticError):
+        raise InputError(_OVERFLOW) from None
+    except ValueError as exc:
+        raise InputError(f"{_which(exc)}: {exc}") from None
+    _check_finite(motion)
+    return motion, pivot_label
+
+
+_OVERFLOW = ("--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
+             "top's equations; give values of a physical size")
 
 
 def _params(body, p_opt):
@@ -286,19 +294,19 @@ def gyrocompass(
         raise InputError("--spin: required: the rotor's spin about its axis, e.g. --spin '6000 rpm'")
     if latitude is None:
         raise InputError("--latitude: required: the latitude in degrees, -90 to 90 (negative = south), e.g. --latitude 52")
-    S = _finite(c.quantity(spin, "angular_speed", "--spin"), "--spin")
+    S = c.finite(c.quantity(spin, "angular_speed", "--spin"), "--spin")
     if S == 0.0:
         raise InputError("--spin: must not be 0: a gyrocompass needs a spinning rotor")
-    lat = _finite(c.quantity(latitude, "angle", "--latitude", bare="deg"), "--latitude")
+    lat = c.finite(c.quantity(latitude, "angle", "--latitude", bare="deg"), "--latitude")
     if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
         raise InputError(f"--latitude: must be from -90 to 90 degrees, got {latitude}")
-    W = _finite(c.quantity(earth_rate, "angular_speed", "--earth-rate"), "--earth-rate")
+    W = c.finite(c.quantity(earth_rate, "angular_speed", "--earth-rate"), "--earth-rate")
     if not W > 0.0:
         raise InputError(f"--earth-rate: must be positive, got {earth_rate}")
     n_axis = c.direction(axis, "--axis") if axis is not None else None
     r = None
     if ratio is not None:
-        r = _finite(c.quantity(ratio, "dimensionless", "--ratio"), "--ratio")
+        r = c.finite(c.quantity(ratio, "dimensionless", "--ratio"), "--ratio")
         if not r > 0.0:
             raise InputError(f"--ratio: C/A must be positive, got {ratio}")
         if body is not None or expr is not None:

@@ -507,7 +507,10 @@ def _field_influence(res) -> list[list[complex]]:
 
 
 def _deg(z: complex) -> float:
-    return B._wrap_deg(math.degrees(math.atan2(z.imag, z.real)))
+    """arg z in degrees in [0, 360), as core.balance reports angles (within 1e-9° below 360
+    is 0, since 360 - 1e-17 would print as 360; never -0.0)."""
+    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
+    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
 
 
 def field_json(res, trials, scale: float, radii) -> dict:
