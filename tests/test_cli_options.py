@@ -271,18 +271,18 @@ def test_numbers_too_large_or_small_exit_2_on_one_line(args):
     assert line.endswith("check the options and the body's numbers")
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "needs rbcli/cli/top.py (not this change's file): gyrocompass must refuse an overflowed "
-    "result (its table through common.write_doc; its JSON gives null directive and period 0)"))
-def test_gyrocompass_overflow_exits_2_on_one_line():
-    one_line(cli("gyrocompass", "--ratio", "1e308", "--spin", "1e308", "--latitude", "30"))
+@pytest.mark.parametrize("extra", [[], ["--json"]])
+def test_gyrocompass_overflow_exits_2_on_one_line(extra):
+    # C S W cos(lat)/A = 1e308 * 1e308 * 7.3e-5 * cos 30° overflows: no table of inf and a
+    # period of 0, no JSON with a null directive
+    line = one_line(cli("gyrocompass", "--ratio", "1e308", "--spin", "1e308", "--latitude", "30", *extra))
+    assert line.startswith("rbcli: --ratio, --spin, --earth-rate: the directive torque") and "overflows" in line
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "needs rbcli/cli/rollcheck.py (not this change's file) to print its tables through "
-    "common.write_doc, which refuses inf/nan cells"))
 def test_rollcheck_table_with_an_overflowed_number_exits_2():
-    one_line(cli("rollcheck", PENNY, "--speed", "1e300"))
+    # at 1e300 m/s the lean frequency overflows to inf: the table refuses it as the JSON does
+    line = one_line(cli("rollcheck", PENNY, "--speed", "1e300"))
+    assert "'lean oscillation frequency" in line and "is not a finite number (inf)" in line
 
 
 def main(capsys, *args: str) -> tuple[int, str, str]:

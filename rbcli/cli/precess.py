@@ -162,7 +162,7 @@ def precess(
 
         doc = Doc(e)
         rp.document(doc, b, motion, extras, du, digits)
-        e.write(doc.render())
+        c.write_doc(e, doc)
     if check is not None and not check.ok:
         c.finish(1)
 

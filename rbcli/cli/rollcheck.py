@@ -150,7 +150,7 @@ def rollcheck(
         rr.document(doc, res, info, du, digits)
         if plot_path is not None:
             doc.note(f"plot written to {plot_path}")
-        e.write(doc.render())
+        c.write_doc(e, doc)
     c.finish(1 if failed else 0)
 
 

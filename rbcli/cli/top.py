@@ -162,7 +162,7 @@ def top(
 
         doc = Doc(e)
         rt.document(doc, motion, info, du, digits, check)
-        e.write(doc.render())
+        c.write_doc(e, doc)
     c.finish(_status(check))
 
 
@@ -325,8 +325,9 @@ def gyrocompass(
 
     try:
         res = gc(r, S, lat, W)
-    except (ValueError, OverflowError, ArithmeticError) as exc:
-        raise InputError(f"gyrocompass: {exc}") from None
+    except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
+        who = ["--ratio" if rotor is None else rotor["body"].source, "--spin", "--earth-rate"]
+        raise InputError(f"{', '.join(who)}: {exc}") from None
     from rbcli.render import top as rt
 
     if json_:
@@ -338,7 +339,7 @@ def gyrocompass(
 
         doc = Doc(e)
         rt.gyro_document(doc, res, rotor, du, digits)
-        e.write(doc.render())
+        c.write_doc(e, doc)
 
 
 def _rotor(body, n_axis) -> dict:

@@ -1117,6 +1117,12 @@ def gyrocompass(
     -------
     Gyrocompass
 
+    Raises
+    ------
+    ValueError
+        for inputs out of range, or so large that the directive C S Ω_E cos λ / A (or
+        Ω_E² cos²λ) overflows to inf or NaN.
+
     Notes
     -----
     Sheet §2: axis held horizontal, free in azimuth α from north,
@@ -1137,7 +1143,13 @@ def gyrocompass(
         raise ValueError("a gyrocompass needs a spinning rotor: the spin is 0")
     cl = math.cos(lat) if abs(lat) < 0.5 * math.pi else 0.0
     k = r * S * W * cl
-    w2 = abs(k) - (W * cl) ** 2
+    w2 = abs(k) - (W * cl) * (W * cl)
+    if not (math.isfinite(k) and math.isfinite(w2)):
+        raise ValueError(
+            f"the directive torque per unit moment C S W cos(latitude)/A overflows floating point "
+            f"(C/A = {r:.6g}, spin {S:.6g} rad/s, Earth rate {W:.6g} rad/s); give values of a "
+            "physical size"
+        )
     if w2 > 0.0:
         w0: float | None = math.sqrt(w2)
         w0a: float | None = math.sqrt(abs(k))
