@@ -56,7 +56,7 @@ def balance(
     grade: str = typer.Option(None, "--grade", help="ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs --speed and --bearings.", show_default=False),
     tolerance_planes: str = typer.Option(None, "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11, the default) or corrections (older practice).", show_default=False),
     apply: str = typer.Option(None, "--apply", help="Write the body with the correction masses added as point parts to this YAML file.", show_default=False),
-    force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input file)."),
+    force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input: the body file, a file it includes or a mesh it reads)."),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
@@ -372,7 +372,10 @@ MANUAL["balance"] = {
         "correction masses (rounded, or at the positions, when asked) as point parts 'balance "
         "A' and 'balance B' (with numbers in explicit units), a one-part shorthand turned into a "
         "parts: list and relative include/mesh paths rewritten for OUT's folder. It never writes "
-        "over an input file, nor over an existing OUT without --force (exit 2).",
+        "over an input — the body file, any file it includes (at any depth) or any mesh it reads, "
+        "also not through a link to one — nor over an existing OUT without --force (exit 2); it "
+        "writes a temporary file beside OUT and renames it, so a failed run leaves no half-written "
+        "body.",
     ],
     "json": [
         ("mass", "rotor mass, kg."),

@@ -24,8 +24,8 @@ is the body frame at t = 0.
 """
 
 OMEGA_HELP = (
-    "Initial angular velocity x,y,z in the body frame (rad/s; units per component, "
-    "e.g. '0,0,300 rpm'). Required."
+    "Initial angular velocity x,y,z in the body frame (rad/s; a unit after the last number "
+    "applies to every bare number before it, e.g. '0,0,300 rpm'). Required."
 )
 AT_HELP = (
     "Also give w, L and the orientation (quaternion, axis and angle) at this time (s, or "

@@ -31,16 +31,16 @@ def report(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
     output: str = typer.Option(None, "-o", "--output", help="The report file: .html (self-contained) or .md (figures in FILE_files/). Required.", show_default=False),
-    force: bool = typer.Option(False, "--force", help="Replace an existing report (never an input file)."),
+    force: bool = typer.Option(False, "--force", help="Replace an existing report (never an input: the body file, a file it includes or a mesh it reads)."),
     shaft: str = typer.Option(None, "--shaft", help="Balance and rolling: shaft (axle) direction x,y,z (or x, y, z). Default: the body's shaft; without either there is no balance section.", show_default=False),
-    through: str = typer.Option(None, "--through", help="Balance and rolling: a point of the shaft: com, origin or x,y,z (m, or with units). Default: the body's shaft point, else the origin.", show_default=False),
-    planes: str = typer.Option(None, "--planes", help="Balance: correction planes zA,zB along the shaft (m, or e.g. '-100,100 mm').", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Balance: correction radius r, or rA,rB (m, or with units). Default: the body's rim_radius.", show_default=False),
-    bearings: str = typer.Option(None, "--bearings", help="Balance: bearing positions z1,z2 along the shaft (m, or with units).", show_default=False),
+    through: str = typer.Option(None, "--through", help="Balance and rolling: a point of the shaft: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '0,0,50 mm'). Default: the body's shaft point, else the origin.", show_default=False),
+    planes: str = typer.Option(None, "--planes", help="Balance: correction planes zA,zB along the shaft (m; a unit after the last number applies to both, e.g. '-100,100 mm').", show_default=False),
+    radius: str = typer.Option(None, "--radius", help="Balance: correction radius r, or rA,rB (m, or with units as for --planes). Default: the body's rim_radius.", show_default=False),
+    bearings: str = typer.Option(None, "--bearings", help="Balance: bearing positions z1,z2 along the shaft (m; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
     grade: str = typer.Option(None, "--grade", help="Balance: ISO 21940-11 grade, e.g. G6.3; needs an angular --speed and --bearings.", show_default=False),
     speed: str = typer.Option(None, "--speed", help="With a unit: an angular speed ('3000 rpm', rad/s) is the balance rotor speed and the rolling spin; a speed ('20 km/h', m/s) is the rolling speed.", show_default=False),
-    omega: str = typer.Option(None, "--omega", help="Free precession: initial angular velocity x,y,z, body frame (rad/s, or with units per component).", show_default=False),
-    pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (m, or with units). Default: the body's pivot; without either there is no top section.", show_default=False),
+    omega: str = typer.Option(None, "--omega", help="Free precession: initial angular velocity x,y,z, body frame (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
+    pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot; without either there is no top section.", show_default=False),
     spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (rad/s, or e.g. '3000 rpm').", show_default=False),
     theta: str = typer.Option(None, "--theta", help="Heavy top: start tilt of the axis from the upward vertical (degrees, or with units).", show_default=False),
     theta_dot: str = typer.Option(None, "--theta-dot", help="Heavy top: start rate theta' (rad/s, or with units). Default: 0.", show_default=False),
@@ -640,7 +640,8 @@ MANUAL["report"] = {
         "rbcli version and the date: from SOURCE_DATE_EPOCH (seconds since 1970, UTC) when set, "
         "so that the same input gives the same bytes; otherwise the current time.",
         "An existing report (or FILE_files/ folder for Markdown) is replaced only with --force; "
-        "the input file never. The report is written to a temporary file and renamed, so a "
+        "an input never: the body file, any file it includes (at any depth) or any mesh it reads, "
+        "also not through a link to one, nor a FILE_files/ folder holding one. The report is written to a temporary file and renamed, so a "
         "failed run leaves no half-written report. When a report takes more than a second and "
         "standard error is a terminal, a progress line shows which section is being computed.",
         "Exit status 1 after writing the report when a check it was asked for failed: the "

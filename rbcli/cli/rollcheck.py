@@ -34,7 +34,7 @@ def rollcheck(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
     axle: str = typer.Option(None, "--axle", help="Axle direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft axis, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the axle line: com, origin or x,y,z. Default: the body's shaft point, else the origin.", show_default=False),
+    through: str = typer.Option(None, "--through", help="A point of the axle line: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the origin.", show_default=False),
     radius: str = typer.Option(None, "--radius", help=RADIUS_HELP, show_default=False),
     tyre_radius: str = typer.Option("0", "--tyre-radius", help="Tube radius r of a rounded rim (m, or with units); 0 = knife edge."),
     g: str = typer.Option("9.80665", "--g", help="Gravity (m/s^2, or with units, e.g. '1 g0')."),

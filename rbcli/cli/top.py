@@ -47,7 +47,7 @@ MAX_SAMPLES = 1_000_000
 def top(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    pivot: str = typer.Option(None, "--pivot", help="The fixed point: com, origin or x,y,z (m, or with units). Default: the body's pivot, else the origin.", show_default=False),
+    pivot: str = typer.Option(None, "--pivot", help="The fixed point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot, else the origin.", show_default=False),
     spin: str = typer.Option(None, "--spin", help="Required. Spin S = w3 about the symmetry axis (rad/s, or e.g. '3000 rpm'); negative = the other way.", show_default=False),
     theta: str = typer.Option(None, "--theta", help="Required. Start tilt of the axis from the upward vertical, strictly between 0 and 180 (degrees, or with units, e.g. '0.5 rad').", show_default=False),
     theta_dot: str = typer.Option("0", "--theta-dot", help="Start rate theta' (rad/s, or e.g. '10 deg/s'); positive = tilting further."),
