@@ -155,16 +155,7 @@ def balance(
         _apply(res, out_path, apply, b, check)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(rb.to_json(res)))
-    else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
-        rb.document(doc, res, su, digits)
-        c.write_doc(e, doc)
+    c.emit(e, json_, lambda: rb.to_json(res), lambda doc: rb.document(doc, res, su, digits))
     c.finish(1 if (res.iso is not None and not res.iso.passed) else 0)
 
 
@@ -536,16 +527,7 @@ def field_balance(
         ) from None
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(data))
-    else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
-        rb.field_document(doc, res, trials, scale, radii, su, digits)
-        c.write_doc(e, doc)
+    c.emit(e, json_, lambda: data, lambda doc: rb.field_document(doc, res, trials, scale, radii, su, digits))
 
 
 MANUAL["field-balance"] = {

@@ -289,6 +289,23 @@ def write_doc(e: Any, doc: Any) -> None:
     e.write(doc.render())
 
 
+def emit(e: Any, json_: bool, data_fn: Any, doc_fn: Any, *, lines: bool = False) -> None:
+    """Print a command's result: ``--json`` gives the JSON of ``data_fn()`` (one compact line
+    with ``lines``, for JSON Lines), else the tables ``doc_fn(doc)`` puts in a Doc. Both
+    refuse inf and NaN (one line, exit 2): :func:`rbcli.render.jsonout.jsonable` and
+    :func:`write_doc`. Only the one that is printed is built."""
+    if json_:
+        from rbcli.render.jsonout import dumps
+
+        e.write(dumps(data_fn(), lines=lines))
+    else:
+        from rbcli.render.text import Doc
+
+        doc = Doc(e)
+        doc_fn(doc)
+        write_doc(e, doc)
+
+
 def finish(status: int | ExitStatus) -> None:
     if int(status) != 0:
         raise typer.Exit(int(status))

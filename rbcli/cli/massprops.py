@@ -104,19 +104,6 @@ def _run(bodies, expr, e, one) -> None:
         c.finish(2)
 
 
-def _emit(e, data, doc_fn, json_: bool, many: bool) -> None:
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(data, lines=many))
-    else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
-        doc_fn(doc)
-        c.write_doc(e, doc)
-
-
 def _option_for(param: str, about: str | None) -> str:
     """The option (or body key) that an InputOverflow's ``param`` refers to."""
     if param == "reference":
@@ -134,8 +121,8 @@ def _inertia_one(body, about, n, w, json_, du, digits, products, e, many: bool) 
         res = inertia_report(mp, ref, axis=n, omega=w)
     except InputOverflow as exc:
         raise InputError(f"{_option_for(exc.param, about)}: {exc}") from None
-    _emit(e, r.inertia_json(body, res) if json_ else None,
-          lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), json_, many)
+    c.emit(e, json_, lambda: r.inertia_json(body, res),
+           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), lines=many)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -169,8 +156,8 @@ def _principal_one(body, about, json_, du, digits, e, many: bool) -> None:
         raise InputError(f"{_option_for('reference', about)}: the inertia about this point overflows: "
                          "the point is too far from the body")
     res = principal_report(mp.mass, J, ref)
-    _emit(e, r.principal_json(body, res) if json_ else None,
-          lambda doc: r.principal_doc(doc, body, res, du, digits, label), json_, many)
+    c.emit(e, json_, lambda: r.principal_json(body, res),
+           lambda doc: r.principal_doc(doc, body, res, du, digits, label), lines=many)
 
 
 MANUAL["inertia"] = {

@@ -153,16 +153,9 @@ def precess(
     extras = rp.Extras(at=state, verify=check, csv=csv_info, plot=str(plot_path) if plot_path else None)
     if csv == "-":
         pass  # the time series is the output
-    elif json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(rp.to_json(b, motion, extras)))
     else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
-        rp.document(doc, b, motion, extras, du, digits)
-        c.write_doc(e, doc)
+        c.emit(e, json_, lambda: rp.to_json(b, motion, extras),
+               lambda doc: rp.document(doc, b, motion, extras, du, digits))
     if check is not None and not check.ok:
         c.finish(1)
 

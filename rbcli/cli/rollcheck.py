@@ -139,18 +139,12 @@ def rollcheck(
     )
     if plot_path is not None:
         rr.plot(plot_path, res, info)
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(rr.to_json(res, info)))
-    else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
+    def tables(doc) -> None:
         rr.document(doc, res, info, du, digits)
         if plot_path is not None:
             doc.note(f"plot written to {plot_path}")
-        c.write_doc(e, doc)
+
+    c.emit(e, json_, lambda: rr.to_json(res, info), tables)
     c.finish(1 if failed else 0)
 
 

@@ -153,16 +153,8 @@ def top(
             c.finish(_status(check))
             return
         csvout.save(csv_path, rt.CSV_HEADER, blocks)
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(rt.to_json(motion, info, check)))
-    else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
-        rt.document(doc, motion, info, du, digits, check)
-        c.write_doc(e, doc)
+    c.emit(e, json_, lambda: rt.to_json(motion, info, check),
+           lambda doc: rt.document(doc, motion, info, du, digits, check))
     c.finish(_status(check))
 
 
@@ -330,16 +322,7 @@ def gyrocompass(
         raise InputError(f"{', '.join(who)}: {exc}") from None
     from rbcli.render import top as rt
 
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps(rt.gyro_json(res, rotor)))
-    else:
-        from rbcli.render.text import Doc
-
-        doc = Doc(e)
-        rt.gyro_document(doc, res, rotor, du, digits)
-        c.write_doc(e, doc)
+    c.emit(e, json_, lambda: rt.gyro_json(res, rotor), lambda doc: rt.gyro_document(doc, res, rotor, du, digits))
 
 
 def _rotor(body, n_axis) -> dict:
