@@ -419,18 +419,10 @@ def _massprops(ctx: _Ctx):
     mp, ref, label = reference(ctx.body)
     res = inertia_report(mp, ref)
     doc = Doc()
-    r.inertia_doc(doc, ctx.body, res, ctx.du, ctx.digits, "tensor", label)
-    _drop_parts_tables(doc)
+    r.inertia_doc(doc, ctx.body, res, ctx.du, ctx.digits, "tensor", label, parts=False)
     s = _section("mass-properties", "Mass properties")
     s.add_doc(doc, drop_heading_prefix=ctx.body.name)
     return s
-
-
-def _drop_parts_tables(doc) -> None:
-    """The report has one parts table (with each part's contribution, and the mesh facts)."""
-    from rbcli.render.text import Table
-
-    doc.items = [it for it in doc.items if not (isinstance(it, Table) and it.title in ("parts", "mesh parts"))]
 
 
 def _principal(ctx: _Ctx):
@@ -443,8 +435,7 @@ def _principal(ctx: _Ctx):
     mp = ctx.mp
     pr = principal_report(mp.mass, mp.inertia_com, mp.com)
     doc = Doc()
-    r.principal_doc(doc, ctx.body, pr, ctx.du, ctx.digits, "the com")
-    _drop_parts_tables(doc)
+    r.principal_doc(doc, ctx.body, pr, ctx.du, ctx.digits, "the com", parts=False)
     s = _section("principal-axes", "Principal axes")
     s.add_doc(doc, drop_heading_prefix=ctx.body.name)
     fig = body_figure(ctx.body, mp.com, pr, ctx.du, f"principal: {ctx.body.name} — equivalent ellipsoid, box and principal axes")
@@ -487,7 +478,6 @@ def _balance(ctx: _Ctx):
     if not (o.planes or o.rotor_speed or o.bearings):
         s.items.append(_note("(corrections, bearing forces and the ISO grade need --planes, --speed with "
                              "a rotation unit, --bearings and --grade)"))
-    _plot(ctx, s, rb, "balance", lambda p: rb.plot(p, res), "Balance figure (as rbcli balance --plot).")
     return s
 
 
@@ -501,12 +491,10 @@ def _note(text: str):
     return Note(text)
 
 
-def _plot(ctx: _Ctx, s, module, name: str, draw, caption: str) -> None:
-    """Add a command's figure when its render module has a plot function."""
+def _plot(ctx: _Ctx, s, name: str, draw, caption: str) -> None:
+    """Add a command's figure: ``draw(path)`` is its --plot, on a temporary .svg."""
     from rbcli.render.report import Figure
 
-    if not hasattr(module, "plot"):
-        return
     s.items.append(Figure(name, caption, ctx.svg(draw, name)))
 
 
@@ -529,7 +517,7 @@ def _precess(ctx: _Ctx):
     rp.document(doc, b, motion, rp.Extras(), ctx.du, ctx.digits)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    _plot(ctx, s, rp, "precess", lambda p: rp.plot(p, b, motion, None, ctx.du),
+    _plot(ctx, s, "precess", lambda p: rp.plot(p, b, motion, None, ctx.du),
           "The angular velocity in the body frame against time and the polhode (as rbcli precess --plot).")
     return s
 
@@ -562,7 +550,7 @@ def _top(ctx: _Ctx):
     rt.document(doc, motion, info, ctx.du, ctx.digits, None)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    _plot(ctx, s, rt, "top", lambda p: rt.plot(p, motion, info, span),
+    _plot(ctx, s, "top", lambda p: rt.plot(p, motion, info, span),
           "The path of the axis (as rbcli top --plot), over three nutation periods.")
     return s
 
@@ -602,7 +590,7 @@ def _rollcheck(ctx: _Ctx):
         s.items.append(_note("warning: " + w))
     if res.verdict is not None and not res.verdict.stable:
         ctx.failed.append("rolling: straight rolling at --speed is unstable")
-    _plot(ctx, s, rr, "rollcheck", lambda p: rr.plot(p, res, info),
+    _plot(ctx, s, "rollcheck", lambda p: rr.plot(p, res, info),
           "Lean frequency squared and growth rate against speed (as rbcli rollcheck --plot).")
     return s
 

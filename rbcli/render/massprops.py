@@ -100,13 +100,16 @@ def _where(p) -> str:
     return "origin" if not np.any(p) else ""
 
 
-def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits: int, products: str, ref_label: str) -> None:
+def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits: int, products: str,
+                ref_label: str, *, parts: bool = True) -> None:
+    """The tables of ``rbcli inertia``; ``parts=False`` leaves out the parts table (the
+    report has its own, with each part's contribution)."""
     doc.heading(f"{body.name}  ({body.source})")
     rows = [("mass", du.show(r.mass, "mass", digits), du.unit("mass"))]
     rows += _vec_rows("com", r.com, du, "length", digits)
     rows += _vec_rows("reference", r.reference, du, "length", digits)
     doc.kv("mass properties", rows)
-    if len(body.parts) > 1 or body.parts[0].extra:
+    if parts and (len(body.parts) > 1 or body.parts[0].extra):
         L = du.unit("length")
         meshes = has_mesh(body)
         prow = []
@@ -144,7 +147,10 @@ def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits
         doc.kv(f"rotation about {ref_label}", rows)
 
 
-def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, digits: int, ref_label: str) -> None:
+def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, digits: int, ref_label: str,
+                  *, parts: bool = True) -> None:
+    """The tables of ``rbcli principal``; ``parts=False`` leaves out the mesh parts table
+    (the report has its own parts table, with the mesh facts)."""
     pa = r.axes_info
     doc.heading(f"{body.name}  ({body.source})")
     f, unit = du.factor("inertia")
@@ -179,7 +185,8 @@ def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, di
             ("ellipsoid semi-axes along 1, 2, 3", ", ".join(du.show(x, "length", digits) for x in r.equivalent_ellipsoid), L),
         ],
     )
-    mesh_table(doc, body, du, digits)
+    if parts:
+        mesh_table(doc, body, du, digits)
 
 
 def symmetry_sentence(r: PrincipalResult) -> str:
