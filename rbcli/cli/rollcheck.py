@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Any
+
 import typer
 
 from rbcli.cli import common as c
@@ -156,20 +159,31 @@ def _option_for(msg: str, beta, R_G, v, s) -> str:
     return ", ".join(given) or "rollcheck"
 
 
-class _Setup:
-    """The wheel and where its axle and radius came from."""
+@dataclass(frozen=True)
+class Setup:
+    """The wheel of a body and where its axle and rim radius came from (:func:`prepare`).
 
-    def __init__(self, wheel, radius, radius_source, radius_kind, radius_part, axle_source, through):
-        self.wheel = wheel
-        self.radius = radius
-        self.radius_source = radius_source
-        self.radius_kind = radius_kind
-        self.radius_part = radius_part
-        self.axle_source = axle_source
-        self.through = through
+    wheel : core.rolling.Wheel — A, C about the com, the axle
+    radius : float — m, the rim radius a
+    radius_source : str — where a came from, in words
+    radius_kind : str — "--radius", "rim_radius" or "largest_round_part"
+    radius_part : str | None — the part's name for "largest_round_part"
+    axle_source : str — where the axle and its point came from, in words
+    through : (3,) ndarray — m, the point of the axle line
+    warnings : tuple[str, ...] — for standard error (without the "rbcli: " prefix)
+    """
+
+    wheel: Any
+    radius: float
+    radius_source: str
+    radius_kind: str
+    radius_part: str | None
+    axle_source: str
+    through: Any
+    warnings: tuple[str, ...] = ()
 
 
-def prepare(body, *, axle=None, through=None, radius=None, tyre_radius: float = 0.0) -> _Setup:
+def prepare(body, *, axle=None, through=None, radius=None, tyre_radius: float = 0.0) -> Setup:
     """The rolling wheel of a body, its rim radius and where each came from; shared with report.
 
     ``axle`` a direction (default the body's shaft, else body z), ``through`` "com",
@@ -190,7 +204,7 @@ def prepare(body, *, axle=None, through=None, radius=None, tyre_radius: float = 
     return setup
 
 
-def _setup(body, n_axle, p_through, a_opt) -> _Setup:
+def _setup(body, n_axle, p_through, a_opt) -> Setup:
     """Axle line, rim radius and the Wheel (A, C about the com) of a body."""
     import numpy as np
 
@@ -242,9 +256,8 @@ def _setup(body, n_axle, p_through, a_opt) -> _Setup:
         wheel = wheel_from_body(mp.mass, mp.com, mp.inertia_com, n, axle_through=P, radius=a)
     except ValueError as exc:
         raise InputError(f"{body.source}: {exc}") from None
-    out = _Setup(wheel, float(a), source, kind, part, f"{axle_source}, through {through_source}", P)
-    out.warnings = warnings
-    return out
+    return Setup(wheel, float(a), source, kind, part, f"{axle_source}, through {through_source}", P,
+                 tuple(warnings))
 
 
 ROUND = ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone", "torus")
