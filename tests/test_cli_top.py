@@ -665,6 +665,9 @@ def test_gyrocompass_from_a_body(capsys):
     assert d["C_over_A"] == pytest.approx(2.0, rel=1e-14)
     assert d["period"] == pytest.approx(22.3040, **sheet(22.3040))
     assert d["C"] == pytest.approx(0.005, rel=1e-14) and d["A"] == pytest.approx(0.0025, rel=1e-14)
+    # the same moments under top's and rollcheck's names; the old keys stay
+    assert (d["Is"], d["I"], d["Is_over_I"]) == (d["C"], d["A"], d["C_over_A"])
+    assert list(d)[:2] == ["C_over_A", "Is_over_I"]
     # the same disk turned to spin about body x, named with --axis
     x = gyro(capsys, "-e", "{shape: disk, radius: 0.1, mass: 1, axis: [1, 0, 0]}", "--axis", "x",
              "--spin", "6000 rpm", "--latitude", "30")

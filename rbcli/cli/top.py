@@ -456,7 +456,7 @@ MANUAL["gyrocompass"] = {
         "degrees unless a unit is given; negative is south.",
     ],
     "json": [
-        ("C_over_A", "the ratio C/A."),
+        ("C_over_A, Is_over_I", "the ratio C/A (the same number under both names)."),
         ("spin", "rad/s."),
         ("latitude_deg", "degrees."),
         ("earth_rate", "W, rad/s."),
@@ -465,6 +465,7 @@ MANUAL["gyrocompass"] = {
         ("period, period_approx", "2 pi/omega0 and 2 pi/omega0_approx, s (null with no directive torque)."),
         ("settles_to", "north (S > 0) or south (S < 0): where the rotor's +axis settles; null with no directive torque."),
         ("C, A, mass, axis, axis_source, name, file", "with a body: the moments about the com (kg m^2), its mass, the unit spin axis and where it came from, its name and source."),
+        ("Is, I", "with a body: C and A again under the names top and rollcheck use (Is about the spin axis, I across it)."),
     ],
     "examples": [
         ("rbcli gyrocompass --ratio 2 --spin '6000 rpm' --latitude 30",

@@ -327,11 +327,20 @@ def _cos_lat(lat: float) -> float:
 
 
 def gyro_json(res: Gyrocompass, rotor: dict | None) -> dict:
-    out: dict[str, Any] = res.to_json()
+    """The gyrocompass's JSON. The moments are named twice: C, A and C_over_A as in the
+    gyrocompass literature, and Is (about the spin axis), I (across it, about the com) and
+    Is_over_I as top and rollcheck name them (the older keys stay, so scripts keep working)."""
+    out: dict[str, Any] = {}
+    for k, v in res.to_json().items():
+        out[k] = v
+        if k == "C_over_A":
+            out["Is_over_I"] = v
     out["period_approx"] = (2.0 * math.pi / res.omega0_approx) if (res.omega0_approx and res.period) else None
     if rotor is not None:
         out["C"] = rotor["C"]
         out["A"] = rotor["A"]
+        out["Is"] = rotor["C"]
+        out["I"] = rotor["A"]
         out["mass"] = rotor["mass"]
         out["axis"] = rotor["axis"]
         out["axis_source"] = rotor["axis_source"]
