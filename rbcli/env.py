@@ -39,7 +39,7 @@ class Env:
             self.stdout.flush()
         except BrokenPipeError:
             self.pipe_closed = True
-            _silence_stdout()
+            silence_stdout()
 
     def warn(self, text: str) -> None:
         try:
@@ -49,7 +49,7 @@ class Env:
             pass
 
 
-def _silence_stdout() -> None:
+def silence_stdout() -> None:
     """After a closed pipe, point stdout at /dev/null so the final flush is quiet."""
     try:
         devnull = os.open(os.devnull, os.O_WRONLY)

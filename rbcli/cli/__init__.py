@@ -63,9 +63,9 @@ def main(argv: list[str] | None = None) -> None:
         )
         sys.exit(int(ExitStatus.BAD_INPUT))
     except BrokenPipeError:
-        from rbcli.env import _silence_stdout
+        from rbcli.env import silence_stdout
 
-        _silence_stdout()
+        silence_stdout()
         sys.exit(0)
     except KeyboardInterrupt:
         sys.exit(int(ExitStatus.INTERRUPTED))
