@@ -121,8 +121,7 @@ def balance(
     if force and apply is None:
         raise InputError("--force: only used with --apply")
 
-    srcs = c.sources([body] if body is not None else None, expr, single=True)
-    b = c.load(srcs[0], expr, e)
+    b = c.load_one(body, expr, e)
     out_path = None
     if apply is not None:
         from rbcli.io.writebody import check_output

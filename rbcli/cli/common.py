@@ -71,6 +71,28 @@ def load(source: str, expr: str | None, e: Any):
     return body
 
 
+def load_one(body: str | None, expr: str | None, e: Any):
+    """The one body of a single-body command (a path, '-', or -e), with its warnings shown."""
+    return load(sources([body] if body is not None else None, expr, single=True)[0], expr, e)
+
+
+def output_paths(b: Any, *, plot: str | None = None, csv: str | None = None) -> tuple:
+    """(plot path, csv path), each checked against the body's inputs before any computing.
+
+    ``--csv -`` (standard output) gives None; a CSV may not be the plot file.
+    """
+    plot_path = csv_path = None
+    if plot is not None:
+        from rbcli.render.plots import check_path
+
+        plot_path = check_path(plot, b)
+    if csv not in (None, "-"):
+        from rbcli.io.outfile import check
+
+        csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
+    return plot_path, csv_path
+
+
 def each_body(srcs: list[str], expr: str | None, e: Any) -> Iterator[tuple[str, Any]]:
     """Yield (source, Body or InputError) for the sources of :func:`sources`, so batch runs
     go on past a bad file."""

@@ -110,17 +110,8 @@ def precess(
         raise InputError("--duration: sets the span of --csv or --plot; add one of them")
 
     # --- the body, and the output paths checked before any computing
-    srcs = c.sources([body] if body is not None else None, expr, single=True)
-    b = c.load(srcs[0], expr, e)
-    plot_path = csv_path = None
-    if plot is not None:
-        from rbcli.render.plots import check_path
-
-        plot_path = check_path(plot, b)
-    if csv not in (None, "-"):
-        from rbcli.io.outfile import check
-
-        csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
+    b = c.load_one(body, expr, e)
+    plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
 
     from rbcli.core import freemotion as fm
     from rbcli.render import precess as rp

@@ -67,8 +67,7 @@ def report(
         phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g,
     )
     date = _date()
-    srcs = c.sources([body] if body is not None else None, expr, single=True)
-    b = c.load(srcs[0], expr, e)
+    b = c.load_one(body, expr, e)
     fmt, out, files_dir = _check_output(output, force, b)
 
     progress = _Progress(t0)

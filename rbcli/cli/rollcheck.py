@@ -93,8 +93,7 @@ def rollcheck(
             "lean; give --lean instead"
         )
 
-    srcs = c.sources([body] if body is not None else None, expr, single=True)
-    b = c.load(srcs[0], expr, e)
+    b = c.load_one(body, expr, e)
     plot_path = None
     if plot is not None:
         from rbcli.render.plots import check_path

@@ -103,17 +103,8 @@ def top(
     if csv == "-" and json_:
         raise InputError("--csv -: the CSV would go to standard output together with --json; write it to a file")
 
-    srcs = c.sources([body] if body is not None else None, expr, single=True)
-    b = c.load(srcs[0], expr, e)
-    plot_path = csv_path = None
-    if plot is not None:
-        from rbcli.render.plots import check_path
-
-        plot_path = check_path(plot, b)
-    if csv not in (None, "-"):
-        from rbcli.io.outfile import check
-
-        csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
+    b = c.load_one(body, expr, e)
+    plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
 
     motion, pivot_label = prepare(b, pivot=p_opt, spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv)
 
@@ -309,8 +300,7 @@ def gyrocompass(
     if r is None:
         if body is None and expr is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give --ratio C/A")
-        srcs = c.sources([body] if body is not None else None, expr, single=True)
-        b = c.load(srcs[0], expr, e)
+        b = c.load_one(body, expr, e)
         rotor = _rotor(b, n_axis)
         r = rotor["C"] / rotor["A"]
     from rbcli.core.top import gyrocompass as gc
