@@ -201,6 +201,15 @@ def _one_line(text: object) -> str:
 def _marked_error(exc: yaml.MarkedYAMLError, filename: str) -> InputError:
     problem = _one_line(exc.problem) if exc.problem else ""
     mark = exc.problem_mark if exc.problem_mark is not None else exc.context_mark
+    if "maximum nesting depth" in problem:
+        # libyaml >= 0.2.5 stops at 1000 levels while scanning ahead, before the event
+        # that would meet rbcli's own, lower, limit: one message either way
+        return _error(
+            f"nesting is too deep: more than {MAX_DEPTH} levels of lists and mappings; body "
+            f"files allow at most {MAX_DEPTH}",
+            filename,
+            _yaml_mark(mark),
+        )
     message = f"invalid YAML: {problem}" if problem else "invalid YAML"
     if exc.context:
         context = _one_line(exc.context)

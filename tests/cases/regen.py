@@ -1,0 +1,180 @@
+"""Write (or rewrite) the golden cases: ``python tests/cases/regen.py [--new-only]``.
+
+A case is ``tests/cases/<command>/<name>.yaml`` holding ``args`` (the command line after
+``rbcli``, paths relative to the repository root) and ``exit``; beside it ``<name>.out``
+and ``<name>.err`` hold standard output and standard error, byte for byte. The test
+``tests/test_golden.py`` runs every case in-process and compares. Rewriting them is a
+deliberate act: say in the commit which outputs changed and why.
+
+``CASES`` below lists the command lines; run this script after adding one.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(HERE.parent))
+
+EXAMPLES = sorted(p.stem for p in (ROOT / "examples").glob("*.yaml"))
+
+#: bodies of revolution about z (a wheel, a top, a disk): rollcheck and top apply
+ROUND = ["bicycle_wheel", "car_wheel", "frisbee", "gyroscope", "hoop", "penny", "spoked_wheel",
+         "thick_coin", "top"]
+
+
+def cases() -> dict[str, list[list[str]]]:
+    """name -> args, grouped by command."""
+    out: dict[str, dict[str, list[str]]] = {}
+
+    def add(cmd: str, name: str, *args: str) -> None:
+        out.setdefault(cmd, {})[name] = [cmd, *args]
+
+    for ex in EXAMPLES:
+        f = f"examples/{ex}.yaml"
+        add("inertia", ex, f)
+        add("inertia", f"{ex}-json", f, "--json")
+        add("principal", ex, f)
+        add("principal", f"{ex}-json", f, "--json")
+        add("balance", ex, f)
+        add("balance", f"{ex}-json", f, "--json")
+        add("precess", ex, f, "--omega", "0.3,1,0.2")
+        add("precess", f"{ex}-json", f, "--omega", "0.3,1,0.2", "--json")
+    for ex in ROUND:
+        f = f"examples/{ex}.yaml"
+        add("rollcheck", ex, f)
+        add("rollcheck", f"{ex}-json", f, "--json")
+        add("rollcheck", f"{ex}-speed", f, "--speed", "3 m/s")
+        add("rollcheck", f"{ex}-speed-json", f, "--speed", "3 m/s", "--json")
+        add("top", ex, f, "--spin", "150", "--theta", "30")
+        add("top", f"{ex}-json", f, "--spin", "150", "--theta", "30", "--json")
+    # the documented command lines (README and man pages)
+    add("inertia", "lamina-axis", "examples/square_lamina.yaml", "--axis", "1,1,0")
+    add("inertia", "lamina-omega", "examples/square_lamina.yaml", "--omega", "1,0,0")
+    add("inertia", "lamina-about-omega-json", "examples/square_lamina.yaml", "--about", "1,1,0",
+        "--omega", "0,0,300 rpm", "--axis", "z", "--json")
+    add("inertia", "bracket-units", "examples/bracket.yaml", "--units", "in,lb")
+    add("inertia", "bracket-positive", "examples/bracket.yaml", "--products", "positive", "--digits", "4")
+    add("inertia", "housing-axis", "examples/housing.yaml", "--axis", "z")
+    add("inertia", "expr-json", "-e", "{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}", "--json")
+    add("inertia", "many-json", "examples/cube.yaml", "examples/square_lamina.yaml", "--json")
+    add("inertia", "many", "examples/cube.yaml", "examples/square_lamina.yaml")
+    add("inertia", "error-about", "examples/cube.yaml", "--about", "1,2")
+    add("inertia", "error-missing", "examples/nope.yaml")
+    add("principal", "lamina-origin", "examples/square_lamina.yaml", "--about", "origin")
+    add("principal", "expr", "-e", "{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}")
+    add("balance", "wheel-planes", "examples/car_wheel.yaml", "--planes=-100,100mm", "--speed",
+        "1500 rpm", "--bearings=-50,150mm")
+    add("balance", "wheel-grade", "examples/car_wheel.yaml", "--planes=-100,100mm", "--speed",
+        "1500 rpm", "--bearings=-50,150mm", "--grade", "G40", "--mass-step", "5 g")
+    add("balance", "wheel-grade-json", "examples/car_wheel.yaml", "--planes=-100,100mm", "--speed",
+        "1500 rpm", "--bearings=-50,150mm", "--grade", "G40", "--mass-step", "5 g", "--json")
+    add("balance", "fan-grade", "examples/fan_impeller.yaml", "--bearings", "0,200mm", "--speed",
+        "1480 rpm", "--grade", "G6.3")
+    add("balance", "fan-positions", "examples/fan_impeller.yaml", "--planes", "320,380mm", "--radius",
+        "190mm", "--bearings", "0,200mm", "--speed", "1480 rpm", "--grade", "G6.3", "--positions", "6",
+        "--mass-step", "0.5 g")
+    add("balance", "fan-positions-json", "examples/fan_impeller.yaml", "--planes", "320,380mm",
+        "--radius", "190mm", "--bearings", "0,200mm", "--speed", "1480 rpm", "--grade", "G6.3",
+        "--positions", "6", "--mass-step", "0.5 g", "--json")
+    add("balance", "rotor-grade", "examples/two_disk_rotor.yaml", "--planes", "0,400mm", "--radius",
+        "100mm", "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3")
+    add("balance", "rotor-grade-json", "examples/two_disk_rotor.yaml", "--planes", "0,400mm",
+        "--radius", "100mm", "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3", "--json")
+    add("balance", "rotor-against", "examples/two_disk_rotor.yaml", "--planes", "0,400mm", "--radius",
+        "100mm", "--angle-sense", "against", "--zero-mark-deg", "30", "--angle-step", "15",
+        "--tolerance-planes", "corrections", "--grade", "G2.5", "--speed", "3000 rpm", "--units", "mm,kg")
+    add("balance", "error-radius", "examples/two_disk_rotor.yaml", "--radius", "100mm")
+    add("field-balance", "one-plane", "--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110")
+    add("field-balance", "one-plane-json", "--initial", "6.0@30", "--trial", "10 g@0", "--run",
+        "4.0@110", "--json")
+    add("field-balance", "two-plane", "--initial", "170@112,53@78", "--trial", "1.15 g@0", "--run",
+        "235@94,58@68", "--trial", "1.15 g@0", "--run", "185@115,77@104")
+    add("field-balance", "two-plane-json", "--initial", "170@112,53@78", "--trial", "1.15 g@0",
+        "--run", "235@94,58@68", "--trial", "1.15 g@0", "--run", "185@115,77@104", "--json")
+    add("precess", "book", "examples/book.yaml", "--omega", "0.01,1,0.01")
+    add("precess", "book-at-json", "examples/book.yaml", "--omega", "0.01,1,0.01", "--at", "1e9", "--json")
+    add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5")
+    add("precess", "frisbee", "examples/frisbee.yaml", "--omega", "0.8715574275,0,9.961946981")
+    add("precess", "frisbee-json", "examples/frisbee.yaml", "--omega", "0.8715574275,0,9.961946981", "--json")
+    add("precess", "football-csv", "examples/football.yaml", "--omega", "1.73648,0,9.84808",
+        "--duration", "5", "--samples", "21", "--csv", "-")
+    add("top", "sheet", "examples/top.yaml", "--spin", "150", "--theta", "30", "--g", "9.81")
+    add("top", "sheet-json", "examples/top.yaml", "--spin", "150", "--theta", "30", "--g", "9.81", "--json")
+    add("top", "gyro-horizontal", "examples/gyroscope.yaml", "--spin", "3000 rpm", "--theta", "90")
+    add("top", "phidot", "examples/top.yaml", "--spin", "150", "--theta", "30", "--phi-dot", "10")
+    add("top", "csv", "examples/top.yaml", "--spin", "150", "--theta", "30", "--csv", "-", "--samples", "5")
+    add("top", "verify-json", "examples/top.yaml", "--spin", "150", "--theta", "30", "--verify", "--json")
+    add("top", "sleeping", "examples/top.yaml", "--spin", "1000", "--theta", "0.5")
+    add("gyrocompass", "ratio", "--ratio", "2", "--spin", "6000 rpm", "--latitude", "30")
+    add("gyrocompass", "ratio-json", "--ratio", "2", "--spin", "20000 rpm", "--latitude", "45", "--json")
+    add("gyrocompass", "expr", "-e", "{shape: disk, radius: 0.1, mass: 1}", "--spin", "6000 rpm",
+        "--latitude", "30")
+    add("gyrocompass", "gyroscope-json", "examples/gyroscope.yaml", "--spin", "6000 rpm", "--latitude",
+        "30", "--json")
+    add("rollcheck", "bicycle-5kmh", "examples/bicycle_wheel.yaml", "--speed", "5 km/h")
+    add("rollcheck", "hoop-circle", "examples/hoop.yaml", "--lean", "20", "--circle", "2")
+    add("rollcheck", "hoop-circle-json", "examples/hoop.yaml", "--lean", "20", "--circle", "1", "--json")
+    add("rollcheck", "penny-json", "examples/penny.yaml", "--speed", "0.1", "--json")
+    add("rollcheck", "coin-tyre", "examples/thick_coin.yaml", "--tyre-radius", "1 mm", "--speed", "1")
+    add("shapes", "all")
+    add("shapes", "cylinder", "cylinder")
+    add("shapes", "mesh", "mesh")
+    add("examples", "list")
+    return {cmd: [[n, *a] for n, a in d.items()] for cmd, d in out.items()}
+
+
+def run(args: list[str]) -> tuple[int, str, str]:
+    """Run rbcli in-process as a script would: not a terminal, no colour, 100 columns."""
+    import contextlib
+    import io
+    import os
+
+    from rbcli.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    old = os.getcwd()
+    saved = {k: os.environ.get(k) for k in ("COLUMNS", "NO_COLOR", "TERM")}
+    os.environ.update(COLUMNS="100", NO_COLOR="1")
+    os.environ.pop("TERM", None)
+    os.chdir(ROOT)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                main(list(args))
+                code = 0
+            except SystemExit as exc:
+                code = 0 if exc.code is None else int(exc.code)
+    finally:
+        os.chdir(old)
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+    return code, out.getvalue(), err.getvalue()
+
+
+def main() -> None:
+    import json
+
+    new_only = "--new-only" in sys.argv
+    for cmd, items in cases().items():
+        d = HERE / cmd
+        d.mkdir(exist_ok=True)
+        for name, *args in items:
+            case = d / f"{name}.yaml"
+            if new_only and case.exists():
+                continue
+            code, out, err = run(args)
+            case.write_text(f"args: {json.dumps(args)}\nexit: {code}\n", encoding="utf-8")
+            (d / f"{name}.out").write_text(out, encoding="utf-8")
+            (d / f"{name}.err").write_text(err, encoding="utf-8")
+            print(f"{cmd}/{name}: exit {code}")
+
+
+if __name__ == "__main__":
+    main()
