@@ -1,3 +1,66 @@
-"""rbcli — a command-line calculator for the general motion of rigid bodies."""
+"""rbcli — rigid-body mechanics: a command-line calculator and a Python library.
+
+The Python API runs the same computations as the commands::
+
+    import rbcli
+    body = rbcli.load("examples/two_disk_rotor.yaml")
+    r = rbcli.balance(body, planes="0,400 mm", radius="100 mm", speed="3000 rpm")
+    r.corrections[0].mass        # kg
+    r.to_json()                  # what `rbcli balance ... --json` prints (less "file")
+
+Functions: :func:`load`, :func:`load_text`, :func:`inertia`, :func:`principal`,
+:func:`balance`, :func:`field_balance`, :func:`precess`, :func:`top`,
+:func:`gyrocompass`, :func:`rollcheck`, :func:`report`. Keyword arguments take SI numbers
+or quantity strings (``"30 cm"``, ``"3000 rpm"``) read exactly as the command line reads
+them. Bad input raises :class:`InputError` (``.message``, ``.where``, ``.param``) with
+the message the command line prints. ``import rbcli`` is cheap: each function loads its
+modules on first use.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
+
+#: public name -> the module that defines it (loaded on first use, PEP 562)
+_API = {
+    "load": "rbcli.api.load",
+    "load_text": "rbcli.api.load",
+    "inertia": "rbcli.api.massprops",
+    "principal": "rbcli.api.massprops",
+    "balance": "rbcli.api.balance",
+    "field_balance": "rbcli.api.balance",
+    "precess": "rbcli.api.precess",
+    "top": "rbcli.api.top",
+    "gyrocompass": "rbcli.api.top",
+    "rollcheck": "rbcli.api.rollcheck",
+    "report": "rbcli.api.report",
+    "Body": "rbcli.model",
+    "InputError": "rbcli.errors",
+    "ParamError": "rbcli.errors",
+    "NonFiniteResult": "rbcli.errors",
+    "ExitStatus": "rbcli.errors",
+}
+
+__all__ = ["__version__", *_API]
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.load import load, load_text  # noqa: F401
+    from rbcli.errors import ExitStatus, InputError, NonFiniteResult, ParamError  # noqa: F401
+    from rbcli.model import Body  # noqa: F401
+
+
+def __getattr__(name: str) -> Any:
+    module = _API.get(name)
+    if module is None:
+        raise AttributeError(f"module 'rbcli' has no attribute '{name}'")
+    import importlib
+
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # the next lookup is a plain attribute
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)

@@ -53,9 +53,53 @@ class RbcliError(Exception):
 
 
 class InputError(RbcliError):
-    """Bad input: a body file, an option value, a mesh file. Exit 2."""
+    """Bad input: a body file, an option value, a mesh file. Exit 2.
+
+    Attributes
+    ----------
+    message : str — what is wrong and what is allowed, one line (as the CLI prints it)
+    where : Location | None — the file, line and column, for an error in an input file
+    param : str | None — the keyword argument (command-line option) at fault, if one is:
+        ``"about"`` for ``--about``; :func:`option_name` spells it as an option
+    """
 
     exit_status = ExitStatus.BAD_INPUT
+
+    def __init__(self, message: str, where: Location | None = None, *,
+                 param: str | None = None) -> None:
+        super().__init__(message, where)
+        self.param = param
+
+
+class ParamError(InputError):
+    """A value given for one parameter is wrong; the message is prefixed with its option.
+
+    Raised by the physics (``core``) and the services with the parameter's Python name
+    (``ParamError("planes", "the two planes must differ")``); ``str()`` and ``message``
+    read ``--planes: the two planes must differ``, exactly as the command line prints it.
+    No code ever reads the message text to find the parameter: it is ``param``.
+    """
+
+    def __init__(self, param: str, message: str, where: Location | None = None) -> None:
+        super().__init__(f"{option_name(param)}: {message}", where, param=param)
+        self.reason = message
+
+
+#: parameters whose option (or body key) is not simply ``--`` + the name with dashes; the one
+#: table that maps a parameter to what the user typed
+OPTIONS: dict[str, str] = {
+    "expr": "-e/--expr",
+    "output": "-o/--output",
+    "body_reference": "the body's reference point",
+    "body_shaft": "the body's shaft",
+    "body_pivot": "the body's pivot",
+    "body_rim_radius": "the body's rim_radius",
+}
+
+
+def option_name(param: str) -> str:
+    """How the user wrote parameter ``param``: ``"zero_mark_deg"`` -> ``"--zero-mark-deg"``."""
+    return OPTIONS.get(param) or "--" + param.replace("_", "-")
 
 
 class NonFiniteResult(InputError):

@@ -79,6 +79,8 @@ class Body:
     inputs : tuple[str, ...] — real paths of every file read to build the body: the body
         file, every include at any depth and every mesh file (outputs must avoid them);
         empty for standard input or ``-e`` unless those include files or meshes
+    units : dict[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its bare
+        numbers mean; empty for SI
     """
 
     name: str
@@ -93,3 +95,4 @@ class Body:
     description: str = ""
     warnings: tuple[str, ...] = ()
     inputs: tuple[str, ...] = ()
+    units: dict = field(default_factory=dict)

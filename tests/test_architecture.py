@@ -15,9 +15,11 @@ PKG = Path(__file__).resolve().parent.parent / "rbcli"
 
 #: third-party or rbcli modules each layer must never import
 FORBIDDEN = {
-    "core": {"yaml", "typer", "rich", "matplotlib", "pydantic", "rbcli.io", "rbcli.render", "rbcli.cli"},
+    "core": {"yaml", "typer", "rich", "matplotlib", "pydantic", "rbcli.io", "rbcli.render", "rbcli.cli", "rbcli.api"},
     "model": {"yaml", "typer", "rich", "matplotlib", "pydantic", "scipy", "rbcli.io", "rbcli.render", "rbcli.cli", "rbcli.core"},
-    "io": {"typer", "rich", "matplotlib", "rbcli.render", "rbcli.cli"},
+    "io": {"typer", "rich", "matplotlib", "rbcli.render", "rbcli.cli", "rbcli.api"},
+    # the services (the Python API): compute and return results; never print or draw
+    "api": {"typer", "rich", "matplotlib", "rbcli.cli", "rbcli.render"},
     "render": {"yaml", "typer", "rbcli.cli", "rbcli.io.yamlsafe", "rbcli.io.body"},
     "errors": {"numpy", "scipy", "yaml", "typer", "rich", "matplotlib", "rbcli"},
     "env": {"numpy", "scipy", "yaml", "typer", "rich", "matplotlib", "rbcli.core", "rbcli.io", "rbcli.render", "rbcli.cli"},
@@ -26,7 +28,7 @@ FORBIDDEN = {
 
 def _layer(path: Path) -> str | None:
     rel = path.relative_to(PKG)
-    if rel.parts[0] in ("core", "io", "render", "cli"):
+    if rel.parts[0] in ("core", "io", "render", "cli", "api"):
         return rel.parts[0]
     if rel.name in ("model.py", "errors.py", "env.py"):
         return rel.stem

@@ -705,9 +705,20 @@ def _units(ctx: _Ctx, m: ys.MapNode) -> None:
     ctx.factors = {}
 
 
-def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...]) -> _Loaded:
+def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...],
+          units: dict[str, str] | None = None) -> _Loaded:
     root = ys.load(data, filename)
     ctx = _Ctx(file=filename, base_dir=base_dir, stack=stack)
+    if units:  # the caller's default units (rbcli.load_text(..., units=...)); the file's win
+        for key, unit in units.items():
+            if key not in UNIT_KEYS:
+                raise InputError(f"units: unknown kind '{key}'; allowed: {', '.join(UNIT_KEYS)}",
+                                 Location(filename))
+            try:
+                un.unit_for_kind({key: unit}, key)
+            except un.UnitError as exc:
+                raise InputError(f"units: {key}: {exc}", Location(filename)) from None
+        ctx.base_units = dict(units)
     if not isinstance(root, ys.MapNode):
         raise ctx.error(root, "a body file is a mapping with 'parts:' (a list of parts), or a single part with 'shape:'")
     if "rbcli" in root.items:
@@ -805,6 +816,7 @@ def _body_defaults(
         name=name, source=source, text=text, parts=parts, reference=reference,
         reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
         description=description, warnings=tuple(loaded.warnings), inputs=inputs,
+        units=dict(loaded.ctx.base_units),
     )
 
 
@@ -839,6 +851,7 @@ def load_text(
     *,
     name_default: str = "body",
     stack: tuple[str, ...] = (),
+    units: dict[str, str] | None = None,
 ) -> Body:
     """Load a body from text already read; ``base_dir`` anchors relative paths.
 
@@ -846,7 +859,7 @@ def load_text(
     first of the body's ``inputs``, followed by every file the text includes or meshes it
     reads, at any depth, each once.
     """
-    loaded = _load(data, filename, base_dir, stack)
+    loaded = _load(data, filename, base_dir, stack, units)
     if isinstance(data, bytes):
         text = data.decode("utf-8", errors="replace")
     else:

@@ -129,33 +129,10 @@ def cases() -> dict[str, list[list[str]]]:
 
 def run(args: list[str]) -> tuple[int, str, str]:
     """Run rbcli in-process as a script would: not a terminal, no colour, 100 columns."""
-    import contextlib
-    import io
-    import os
+    from conftest import run_inprocess
 
-    from rbcli.cli import main
-
-    out, err = io.StringIO(), io.StringIO()
-    old = os.getcwd()
-    saved = {k: os.environ.get(k) for k in ("COLUMNS", "NO_COLOR", "TERM")}
-    os.environ.update(COLUMNS="100", NO_COLOR="1")
-    os.environ.pop("TERM", None)
-    os.chdir(ROOT)
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            try:
-                main(list(args))
-                code = 0
-            except SystemExit as exc:
-                code = 0 if exc.code is None else int(exc.code)
-    finally:
-        os.chdir(old)
-        for k, v in saved.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
-    return code, out.getvalue(), err.getvalue()
+    r = run_inprocess(*args)
+    return r.code, r.out, r.err
 
 
 def main() -> None:

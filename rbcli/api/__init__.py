@@ -1,0 +1,21 @@
+"""The services layer: rbcli's public Python API, one module per question.
+
+Each module holds, for its command(s): a frozen options object parsed and checked once
+(``XOptions.parse(body, **kwargs)``: values accepted as SI numbers or quantity strings by
+:mod:`rbcli.api.options`, the body's defaults and their provenance resolved here), a
+``run(body, options) -> XResult`` and the public function ``x(body, **kwargs)`` that does
+both. Results are frozen dataclasses (:class:`rbcli.api.result.Result`) with ``to_json()``
+and ``return_code``. Nothing here prints, draws or imports the command line.
+
+=================  ==========================================
+module             public functions (re-exported by ``rbcli``)
+=================  ==========================================
+``load``           ``load``, ``load_text``
+``massprops``      ``inertia``, ``principal``
+``balance``        ``balance``, ``field_balance``
+``precess``        ``precess``
+``top``            ``top``, ``gyrocompass``
+``rollcheck``      ``rollcheck``
+``report``         ``report``
+=================  ==========================================
+"""

@@ -1,0 +1,211 @@
+"""How option values are read: the one place a number typed by a user gets its meaning.
+
+Every keyword argument of the Python API and every option of the command line goes
+through these functions, so ``rbcli.balance(body, radius="100 mm")`` and
+``rbcli balance BODY --radius '100 mm'`` read the value the same way. A value may be
+
+- a Python number (already SI: m, kg, s, rad/s; angles in degrees),
+- a sequence of numbers or strings (a vector: ``[0, 0, 300]``),
+- a string as typed on the command line: ``"30 cm"``, ``"1,1,1 mm"``, ``"3000 rpm"``.
+
+Strings follow one rule for lists (:data:`UNIT_RULE`): a unit after the last number
+applies to every bare number before it. Errors are :class:`rbcli.errors.InputError`
+whose message starts with the option as the user wrote it (``--radius: ...``).
+
+Standard library only at module level; :mod:`rbcli.io.units` is imported on first use.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from typing import Any
+
+from rbcli.errors import InputError
+
+#: a number at the start of a value: what is left after it is the value's unit
+NUMBER = re.compile(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+
+#: how the unit rule reads, for help texts
+UNIT_RULE = "a unit after the last number applies to every bare number before it"
+
+#: a value as the API accepts it: a number (SI), a string with or without a unit, a sequence
+Value = Any
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool) or (
+        hasattr(v, "dtype") and getattr(v, "shape", None) == ())
+
+
+def _text(v: Value, option: str) -> str:
+    """A value as the text a user would have typed (numbers exactly, via repr)."""
+    if isinstance(v, str):
+        return v
+    if _is_number(v):
+        return repr(float(v))
+    if isinstance(v, Sequence) or hasattr(v, "tolist"):
+        items = v.tolist() if hasattr(v, "tolist") else list(v)
+        return ",".join(_text(x, option) for x in items)
+    raise InputError(f"{option}: expected a number, a quantity string or a list, got "
+                     f"{type(v).__name__}")
+
+
+def _bare(s: str) -> bool:
+    """A number with no unit after it."""
+    return NUMBER.fullmatch(s) is not None
+
+
+def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) -> float:
+    """A scalar quantity in SI. A bare number is in ``bare`` (default: SI)."""
+    from rbcli.io import units as un
+
+    if _is_number(text) and bare is None:
+        return finite(float(text), option)
+    s = _text(text, option).strip()
+    try:
+        value, dim = un.parse_quantity(s)
+    except un.UnitError as exc:
+        raise InputError(f"{option}: {exc}") from None
+    if dim == un.Dim() and _bare(s):
+        if bare is None:
+            return value
+        factor, _ = un.parse_unit(bare)
+        return value * factor
+    try:
+        return un.to_si(s, kind)
+    except un.UnitError as exc:
+        raise InputError(f"{option}: {exc}") from None
+
+
+def degrees(text: Value, option: str) -> float:
+    """An angle in degrees: a bare number is degrees (kept exactly), else any angle unit
+    (``'0.5 rad'``, ``'30 arcmin'``)."""
+    s = _text(text, option).strip()
+    if _bare(s):
+        quantity(s, "angle", option, bare="deg")  # its errors (inf, 1e999, ...)
+        return float(s.replace("\u2212", "-"))
+    return math.degrees(quantity(s, "angle", option, bare="deg"))
+
+
+def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3,),
+            bare: str | None = None) -> list[float]:
+    """Comma-separated quantities of one kind, in SI: the one rule for list options.
+
+    A unit after the LAST number applies to every bare number before it: ``1,1,1 mm`` is
+    all millimetres, ``100,0,300 rpm`` all rpm, ``-100,100 mm`` both. A number with its own
+    unit keeps it (``10 mm,0,2 cm``). A list with no unit at all is in the option's bare
+    unit: ``bare`` (e.g. ``"deg"``), else SI. A list whose last number is bare but which has
+    a unit elsewhere is refused unless its bare numbers are 0 (``10 mm,0,0``): which unit a
+    bare 5 in ``10 mm,5,0`` means is a guess. Every value must be finite. A Python
+    sequence of numbers is taken as SI; a single number as a list of one.
+    """
+    text = _text(text, option)
+    parts = [p.strip() for p in text.split(",")]
+    if len(parts) not in counts or not all(parts):
+        want = " or ".join(str(n) for n in counts)
+        raise InputError(f"{option}: expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
+                         f"got '{text}'")
+    last = quantity(parts[-1], kind, option, bare=bare)  # its own errors first
+    m = NUMBER.match(parts[-1])
+    unit = parts[-1][m.end():].strip() if m else ""
+    if unit:
+        parts = [f"{p} {unit}" if _bare(p) else p for p in parts]
+    elif not all(_bare(p) for p in parts):
+        stray = [p for p in parts if _bare(p) and float(p.replace("\u2212", "-")) != 0.0]
+        if stray:
+            raise InputError(
+                f"{option}: '{text}' has a unit on some numbers but none after the last, so the "
+                f"unit of {stray[0]} is unclear; put the unit after the last number (it then "
+                "applies to every bare number before it) or after each number"
+            )
+    vals = [quantity(p, kind, option, bare=bare) for p in parts[:-1]] + [last]
+    if not all(math.isfinite(v) for v in vals):
+        raise InputError(f"{option}: values must be finite numbers, got '{text}'")
+    return vals
+
+
+def finite(x: float, option: str) -> float:
+    """``x`` if it is a finite number, else an InputError naming ``option``."""
+    if not math.isfinite(x):
+        raise InputError(f"{option}: must be a finite number")
+    return x
+
+
+def positive(x: float, option: str, what: str) -> float:
+    """``x`` if it is a positive finite number, else an InputError saying ``what`` it is."""
+    if not (x > 0.0 and math.isfinite(x)):
+        raise InputError(f"{option}: {what} must be a positive number, got {x:.6g}")
+    return x
+
+
+def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
+    """Two positions along a shaft that must differ (``--planes``, ``--bearings``)."""
+    if vals[0] == vals[1]:
+        raise InputError(f"{option}: the two {what} are both at z = {vals[0]:.6g} m; they must differ")
+    return vals[0], vals[1]
+
+
+#: an ISO 21940-11 balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s'
+_GRADE = re.compile(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
+
+
+def grade(text: Value, option: str = "--grade") -> float:
+    """A balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s' -> 6.3 (mm/s), within the
+    grades ISO 21940-11 defines (G0.4 to G4000)."""
+    from rbcli.core.balance import ISO_GRADE_MAX, ISO_GRADE_MIN
+
+    text = _text(text, option)
+    m = _GRADE.fullmatch(text.strip())
+    if not m:
+        raise InputError(
+            f"{option}: '{text}' is not a balance quality grade; write e.g. G6.3, 6.3 or g2.5 "
+            "(G in mm/s, from G0.4 to G4000)"
+        )
+    G = float(m.group(1))
+    if not (math.isfinite(G) and ISO_GRADE_MIN <= G <= ISO_GRADE_MAX):
+        raise InputError(
+            f"{option}: ISO 21940-11 grades run from G{ISO_GRADE_MIN:g} to G{ISO_GRADE_MAX:g} "
+            f"(mm/s), got {text}"
+        )
+    return G
+
+
+def vector(text: Value, kind: str, option: str, n: int = 3, *, bare: str | None = None) -> list[float]:
+    """A vector like ``1,0,0``, ``0,0,300 rpm``, ``10,0,5 mm`` or ``[1, 0, 0]`` (see
+    :func:`numbers`)."""
+    t = _text(text, option)
+    if len(t.split(",")) != n:
+        raise InputError(f"{option}: expected {n} comma-separated numbers like 1,0,0, got '{t}'")
+    return numbers(t, kind, option, counts=(n,), bare=bare)
+
+
+def point(text: Value, option: str) -> str | list[float]:
+    """``com``, ``origin`` or ``x,y,z`` (metres, unless a unit follows the last number)."""
+    t = _text(text, option).strip()
+    if t in ("com", "origin"):
+        return t
+    return vector(t, "length", option)
+
+
+def direction(text: Value, option: str) -> list[float]:
+    """A non-zero direction ``x,y,z`` (or a sequence); also ``x``, ``y``, ``z`` for the body
+    axes. Scaled so its largest component is ±1."""
+    t = _text(text, option).strip().lower()
+    named = {"x": [1.0, 0.0, 0.0], "y": [0.0, 1.0, 0.0], "z": [0.0, 0.0, 1.0]}
+    if t in named:
+        return named[t]
+    v = vector(t, "dimensionless", option)
+    big = max(abs(x) for x in v)
+    if not big > 0:
+        raise InputError(f"{option}: the direction must be a non-zero vector")
+    return [x / big for x in v]  # largest component ±1: no under/overflow when normalised
+
+
+def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
+    """One of ``allowed`` (e.g. ``--products tensor|positive``)."""
+    if text not in allowed:
+        ways = " or ".join(f"'{a}'" for a in allowed)
+        raise InputError(f"{option} must be {ways}, not '{text}'")
+    return str(text)

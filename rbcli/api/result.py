@@ -1,0 +1,99 @@
+"""What every service result shares: plain JSON data, one finiteness check, an exit status.
+
+A result is a frozen dataclass (:class:`Result` is the mixin) that knows its JSON form
+(``to_json()``: exactly the object ``rbcli <command> --json`` prints, less ``file``) and
+its own exit status (``return_code``: 0, or 1 when a check the user asked for failed; the
+model is black's ``Report.return_code``). The command line only renders a result and
+exits with its status.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from rbcli.errors import ExitStatus, NonFiniteResult
+
+
+class Result:
+    """Mixin of every service result (use with ``@dataclass(frozen=True)``)."""
+
+    #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
+    warnings: tuple[str, ...] = ()
+
+    def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
+        raise NotImplementedError
+
+    @property
+    def return_code(self) -> int:
+        """0, or 1 (:attr:`ExitStatus.CHECK_FAILED`) when a check asked for failed."""
+        return int(ExitStatus.OK)
+
+
+def jsonable(obj: Any) -> Any:
+    """Plain JSON data from results: numpy arrays to lists, -0.0 to 0.0.
+
+    This is the one finiteness check of a result's numbers: every JSON document and every
+    result of the Python API passes through it.
+
+    Raises
+    ------
+    NonFiniteResult
+        for an inf or NaN anywhere (an InputError, exit 2: the inputs were too large or too
+        small to compute with), naming the key it was found under.
+    """
+    if hasattr(obj, "to_json"):
+        return jsonable(obj.to_json())
+    if isinstance(obj, dict):
+        out = {}
+        for k, v in obj.items():
+            try:
+                out[str(k)] = jsonable(v)
+            except _NonFinite as exc:
+                exc.path.insert(0, str(k))
+                raise
+        return out
+    if isinstance(obj, (list, tuple)):
+        out_list = []
+        for i, v in enumerate(obj):
+            try:
+                out_list.append(jsonable(v))
+            except _NonFinite as exc:
+                exc.path.insert(0, i)
+                raise
+        return out_list
+    if hasattr(obj, "tolist"):  # numpy arrays and scalars
+        return jsonable(obj.tolist())
+    if isinstance(obj, bool) or obj is None or isinstance(obj, str):
+        return obj
+    if isinstance(obj, int):
+        return obj
+    if isinstance(obj, float):
+        if not math.isfinite(obj):
+            raise _NonFinite(obj)
+        return 0.0 if obj == 0.0 else obj
+    raise TypeError(f"cannot write {type(obj).__name__} as JSON")
+
+
+class _NonFinite(NonFiniteResult):
+    """NonFiniteResult that collects the key path on its way up through :func:`jsonable`."""
+
+    def __init__(self, value: float) -> None:
+        self.value = value
+        self.path: list[str | int] = []
+        super().__init__("")
+
+    @property
+    def message(self) -> str:  # the path is known only once the error has left jsonable
+        return str(self)
+
+    @message.setter
+    def message(self, _text: str) -> None:
+        pass
+
+    def __str__(self) -> str:
+        where = "".join(f"[{p}]" if isinstance(p, int) else (f".{p}" if i else p)
+                        for i, p in enumerate(self.path))
+        what = f"the result '{where}'" if where else "a result"
+        return (f"{what} is not a finite number ({self.value}): a value is too large or too "
+                "small to compute with; check the options and the body's numbers")
