@@ -83,14 +83,50 @@ def output_paths(b: Any, *, plot: str | None = None, csv: str | None = None) -> 
     """
     plot_path = csv_path = None
     if plot is not None:
-        from rbcli.render.plots import check_path
-
-        plot_path = check_path(plot, b)
+        plot_path = check_plot(plot, b)
     if csv not in (None, "-"):
         from rbcli.io.outfile import check
 
         csv_path = check(csv, b, "--csv", replace_ok=True, others={"--plot": plot_path})
     return plot_path, csv_path
+
+
+#: figure formats --plot writes (the extension decides)
+PLOT_FORMATS = ("png", "svg", "pdf")
+
+
+def check_plot(path: str, inputs: Any = (), *, others: Any = None):
+    """The --plot path, checked before anything is computed (:func:`rbcli.io.outfile.check`):
+    a known extension, not an input (the Body or input paths), an existing figure replaced."""
+    from rbcli.io import outfile
+
+    return outfile.check(path, inputs, "--plot", exts=PLOT_FORMATS, replace_ok=True, others=others)
+
+
+def save_plot(fig: Any, path: Any, option: str = "--plot") -> None:
+    """Write a figure made by render to ``path`` (checked), atomically; format from the
+    extension."""
+    from rbcli.io.outfile import write_atomic
+    from rbcli.render.plots import figure_bytes
+
+    write_atomic(path, figure_bytes(fig, path.suffix), option)
+
+
+def write_csv(e: Any, path: Any, header: Any, blocks: Any, option: str = "--csv") -> int:
+    """The CSV of a time series: to ``path`` atomically, or (path None) to standard output,
+    where a closed pipe (``| head``) stops it quietly. Returns the rows written."""
+    from rbcli.render.csvout import write
+
+    if path is None:
+        def sink(text: str) -> bool:
+            e.write(text)
+            return not e.pipe_closed
+
+        return write(sink, header, blocks)
+    from rbcli.io.outfile import atomic_open
+
+    with atomic_open(path, option) as fh:
+        return write(fh.write, header, blocks)
 
 
 def each_body(srcs: list[str], expr: str | None, e: Any) -> Iterator[tuple[str, Any]]:

@@ -131,15 +131,10 @@ def precess(
     csv_info = None
     if csv is not None:
         csv_info = {"file": csv, "samples": n_rows, "duration": span}
-        from rbcli.render import csvout
-
         blocks = rp.csv_blocks(motion, span, n_rows)
-        if csv_path is None:  # '-': standard output, instead of the tables
-            csvout.to_stdout(e, rp.CSV_HEADER, blocks)
-        else:
-            csvout.save(csv_path, rp.CSV_HEADER, blocks)
+        c.write_csv(e, csv_path, rp.CSV_HEADER, blocks)  # csv_path None: standard output
     if plot_path is not None:
-        rp.plot(plot_path, b, motion, span, du)
+        c.save_plot(rp.plot(b, motion, span, du), plot_path)
 
     extras = rp.Extras(at=state, verify=check, csv=csv_info, plot=str(plot_path) if plot_path else None)
     if csv == "-":

@@ -305,8 +305,6 @@ class _Progress:
 def build(b, opts: _Options, du, digits: int, date: str, progress=None):
     """The Report of a body, and the checks that failed ([] if none)."""
     import hashlib
-    import tempfile
-    from pathlib import Path
 
     from rbcli import __version__
     from rbcli.render import report as R
@@ -322,12 +320,11 @@ def build(b, opts: _Options, du, digits: int, date: str, progress=None):
     ]
     failed: list[str] = []
     sections = []
-    with tempfile.TemporaryDirectory(prefix="rbcli-report-") as tmp:
-        ctx = _Ctx(b, opts, du, digits, Path(tmp), failed)
-        for i, (what, key, title, fn) in enumerate(steps):
-            if progress is not None:
-                progress.step(what, i, len(steps))
-            sections.append(_guarded(ctx, what, key, title, fn))
+    ctx = _Ctx(b, opts, du, digits, failed)
+    for i, (what, key, title, fn) in enumerate(steps):
+        if progress is not None:
+            progress.step(what, i, len(steps))
+        sections.append(_guarded(ctx, what, key, title, fn))
     meta = [("body", b.name)]
     if b.description:
         meta.append(("description", b.description))
@@ -363,27 +360,21 @@ def _guarded(ctx, what: str, key: str, title: str, fn):
 
 
 class _Ctx:
-    def __init__(self, body, opts, du, digits, tmp, failed):
+    def __init__(self, body, opts, du, digits, failed):
         from rbcli.core.inertia import combine
 
         self.body = body
         self.opts = opts
         self.du = du
         self.digits = digits
-        self.tmp = tmp
         self.failed = failed
         self.mp = combine(body.parts)
 
-    def svg(self, draw, name: str) -> str:
-        """Run ``draw(path)`` (a command's plot function) on a temporary .svg; its text."""
-        path = self.tmp / f"{name}.svg"
-        draw(path)
-        return path.read_text(encoding="utf-8")
-
     def figure_svg(self, fig, name: str) -> str:
-        from rbcli.render.plots import save
+        """The SVG text of a figure made by render (in memory, no temporary file)."""
+        from rbcli.render.plots import figure_bytes
 
-        return self.svg(lambda p: save(fig, p), name)
+        return figure_bytes(fig, "svg").decode("utf-8")
 
 
 def _section(key: str, title: str):
@@ -490,11 +481,11 @@ def _note(text: str):
     return Note(text)
 
 
-def _plot(ctx: _Ctx, s, name: str, draw, caption: str) -> None:
-    """Add a command's figure: ``draw(path)`` is its --plot, on a temporary .svg."""
+def _plot(ctx: _Ctx, s, name: str, fig, caption: str) -> None:
+    """Add a command's figure (what its --plot draws), as inline SVG."""
     from rbcli.render.report import Figure
 
-    s.items.append(Figure(name, caption, ctx.svg(draw, name)))
+    s.items.append(Figure(name, caption, ctx.figure_svg(fig, name)))
 
 
 def _precess(ctx: _Ctx):
@@ -516,7 +507,7 @@ def _precess(ctx: _Ctx):
     rp.document(doc, b, motion, rp.Extras(), ctx.du, ctx.digits)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    _plot(ctx, s, "precess", lambda p: rp.plot(p, b, motion, None, ctx.du),
+    _plot(ctx, s, "precess", rp.plot(b, motion, None, ctx.du),
           "The angular velocity in the body frame against time and the polhode (as rbcli precess --plot).")
     return s
 
@@ -549,7 +540,7 @@ def _top(ctx: _Ctx):
     rt.document(doc, motion, info, ctx.du, ctx.digits, None)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    _plot(ctx, s, "top", lambda p: rt.plot(p, motion, info, span),
+    _plot(ctx, s, "top", rt.plot(motion, info, span),
           "The path of the axis (as rbcli top --plot), over three nutation periods.")
     return s
 
@@ -589,7 +580,7 @@ def _rollcheck(ctx: _Ctx):
         s.items.append(_note("warning: " + w))
     if res.verdict is not None and not res.verdict.stable:
         ctx.failed.append("rolling: straight rolling at --speed is unstable")
-    _plot(ctx, s, "rollcheck", lambda p: rr.plot(p, res, info),
+    _plot(ctx, s, "rollcheck", rr.plot(res, info),
           "Lean frequency squared and growth rate against speed (as rbcli rollcheck --plot).")
     return s
 

@@ -96,9 +96,7 @@ def rollcheck(
     b = c.load_one(body, expr, e)
     plot_path = None
     if plot is not None:
-        from rbcli.render.plots import check_path
-
-        plot_path = check_path(plot, b)
+        plot_path = c.check_plot(plot, b)
 
     setup = prepare(b, axle=n_axle, through=p_through, radius=a_opt, tyre_radius=r)
     for w in setup.warnings:
@@ -140,7 +138,7 @@ def rollcheck(
         circle_asked=circle_asked,
     )
     if plot_path is not None:
-        rr.plot(plot_path, res, info)
+        c.save_plot(rr.plot(res, info), plot_path)
     def tables(doc) -> None:
         rr.document(doc, res, info, du, digits)
         if plot_path is not None:

@@ -134,16 +134,13 @@ def top(
         samples=samples if csv is not None else None,
     )
     if plot_path is not None:
-        rt.plot(plot_path, motion, info, span)
+        c.save_plot(rt.plot(motion, info, span), plot_path)
     if csv is not None:
-        from rbcli.render import csvout
-
         blocks = rt.csv_blocks(motion, span, samples)
+        c.write_csv(e, csv_path, rt.CSV_HEADER, blocks)
         if csv_path is None:  # '-': standard output, instead of the tables
-            csvout.to_stdout(e, rt.CSV_HEADER, blocks)
             c.finish(_status(check))
             return
-        csvout.save(csv_path, rt.CSV_HEADER, blocks)
     c.emit(e, json_, lambda: rt.to_json(motion, info, check),
            lambda doc: rt.document(doc, motion, info, du, digits, check))
     c.finish(_status(check))

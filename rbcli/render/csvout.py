@@ -2,14 +2,13 @@
 
 A header line, then one row per time; every number is Python's shortest round-trip
 ``repr`` (reads back exactly, the same bytes every run), with no negative zeros. Rows
-come in blocks (2-D arrays) so that millions of rows never sit in memory at once; a file
-is written atomically (:func:`rbcli.io.outfile.atomic_open`), standard output as it goes.
+come in blocks (2-D arrays) so that millions of rows never sit in memory at once. The
+cli sends them to a file (atomically, rbcli.io.outfile) or to standard output.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from pathlib import Path
 
 import numpy as np
 
@@ -43,22 +42,3 @@ def write(sink: Callable[[str], object], header: Sequence[str], blocks: Iterable
         if sink(rows_text(block)) is False:
             break
     return n
-
-
-def to_stdout(env, header: Sequence[str], blocks: Iterable[np.ndarray]) -> int:
-    """Write the CSV to standard output through ``env`` (an rbcli.env.Env); a closed pipe
-    (``| head``) stops it quietly."""
-
-    def sink(text: str) -> bool:
-        env.write(text)
-        return not env.pipe_closed
-
-    return write(sink, header, blocks)
-
-
-def save(path: Path, header: Sequence[str], blocks: Iterable[np.ndarray], option: str = "--csv") -> int:
-    """Write the CSV to ``path`` atomically (checked before with rbcli.io.outfile.check)."""
-    from rbcli.io.outfile import atomic_open
-
-    with atomic_open(path, option) as fh:
-        return write(fh.write, header, blocks)

@@ -1,4 +1,4 @@
-"""The one look of every rbcli figure, and saving it safely (never over an input, atomically).
+"""The one look of every rbcli figure, and its bytes in memory (the cli writes them).
 
 matplotlib is imported only inside these functions (it costs ~400 ms), through its
 Figure API without pyplot, so nothing is ever drawn on screen. Figures are readable
@@ -8,8 +8,6 @@ SOURCE_DATE_EPOCH), so the same input gives the same bytes.
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 FORMATS = ("png", "svg", "pdf")
 #: line styles for successive curves: (colour, linestyle, marker)
@@ -38,24 +36,6 @@ RC = {
 }
 
 
-def check_path(path: str, inputs=(), *, others=None) -> Path:
-    """The plot path, checked before anything is computed (see :func:`rbcli.io.outfile.check`).
-
-    ``inputs`` is the Body (every file it was read from: the body file, includes at any
-    depth, meshes) or a tuple of input paths. An existing figure is replaced (as plotting
-    tools do), an input file never.
-
-    Raises
-    ------
-    InputError
-        For an unknown extension (listing the allowed ones), a path that is an input, a
-        folder, or a folder that does not exist.
-    """
-    from rbcli.io import outfile
-
-    return outfile.check(path, inputs, "--plot", exts=FORMATS, replace_ok=True, others=others)
-
-
 def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (7.0, 4.2)):
     """A new Figure (no pyplot) with rbcli's style, a suptitle, and its axes."""
     import matplotlib
@@ -78,18 +58,17 @@ def style(i: int) -> dict:
     return kw
 
 
-def save(fig, path: Path) -> None:
-    """Save with deterministic metadata, atomically; the format follows the extension."""
+def figure_bytes(fig, fmt: str) -> bytes:
+    """The figure as a ``fmt`` file (png, svg or pdf), in memory, with deterministic metadata
+    (no dates; SOURCE_DATE_EPOCH honoured). Writing it is the caller's (rbcli.io.outfile)."""
     import io
 
-    from rbcli.io.outfile import write_atomic
-
-    ext = path.suffix.lower().lstrip(".")
+    fmt = fmt.lower().lstrip(".")
     metadata = {}
-    if ext == "svg":
+    if fmt == "svg":
         metadata = {"Date": None}
-    elif ext == "pdf":
+    elif fmt == "pdf":
         metadata = {"CreationDate": None, "ModDate": None}
     buf = io.BytesIO()
-    fig.savefig(buf, format=ext, metadata=metadata or None)
-    write_atomic(path, buf.getvalue(), "--plot")
+    fig.savefig(buf, format=fmt, metadata=metadata or None)
+    return buf.getvalue()

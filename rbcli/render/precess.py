@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from collections.abc import Iterator
 from typing import Any
 
@@ -379,9 +378,9 @@ def polhode_family(moments: np.ndarray, levels: int = 5) -> list[np.ndarray]:
     return curves
 
 
-def plot(path: Path, body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits) -> None:
+def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits):
     """w(t) in the body frame (three panels) and the polhode seen along axes 3 and 1."""
-    from rbcli.render.plots import figure, save, style
+    from rbcli.render.plots import figure, style
 
     t0, t1 = plot_span(motion, duration)
     per = motion.period or (t1 - t0)
@@ -447,4 +446,4 @@ def plot(path: Path, body: Body, motion: fm.FreeMotion, duration: float | None, 
         ax.set_ylabel(f"L{hy + 1}/|L|, {names[hy]}")
         side = ">" if front > 0 else "<"
         ax.set_title(f"polhode seen along axis {view + 1} (L{view + 1} {side} 0 side)")
-    save(fig, path)
+    return fig

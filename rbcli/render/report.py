@@ -35,7 +35,7 @@ class Figure:
 
     name : str — file stem (Markdown writes ``FILE_files/<name>.svg``); letters, digits, -, _
     caption : str — one sentence under the figure
-    svg : str — the SVG document as matplotlib wrote it (rbcli.render.plots.save)
+    svg : str — the SVG document as matplotlib wrote it (rbcli.render.plots.figure_bytes)
     """
 
     name: str

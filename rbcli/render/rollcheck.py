@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -208,12 +207,12 @@ def _circle_how(info: Info) -> str:
 # ----------------------------------------------------------------------------- plot
 
 
-def plot(path: Path, res: RollCheck, info: Info) -> None:
+def plot(res: RollCheck, info: Info):
     """nu^2 and the lean frequency / growth rate against speed (critical speed marked);
     with a circle, the stable region in the (lean, circle radius) plane instead of the
     second panel."""
     from rbcli.core.rolling import margin_curve, stability_map
-    from rbcli.render.plots import figure, save, style
+    from rbcli.render.plots import figure, style
 
     st = res.straight
     w = st.wheel
@@ -280,7 +279,7 @@ def plot(path: Path, res: RollCheck, info: Info) -> None:
         ax.set_xlabel("radius of the centre's circle R_G [m]")
         ax.set_ylabel("inward lean β [°] (dotted: speed of the centre)")
         ax.set_title("steady circles (shaded: unstable, κ ≤ 0)")
-    save(fig, path)
+    return fig
 
 
 def _speed_levels(V) -> list[float]:

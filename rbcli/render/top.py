@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from collections.abc import Iterator
 from typing import Any
 
@@ -272,11 +271,11 @@ def csv_blocks(motion: TopMotion, duration: float, samples: int) -> Iterator[np.
 # ----------------------------------------------------------------------------- plot
 
 
-def plot(path: Path, motion: TopMotion, info: Info, duration: float) -> None:
+def plot(motion: TopMotion, info: Info, duration: float):
     """The path of the axis tip: θ against φ (up is up) and the view from above, θ1 and
     θ2 marked, over ``duration`` seconds from the start."""
     from rbcli.core.top import path_at
-    from rbcli.render.plots import figure, save, style
+    from rbcli.render.plots import figure, style
 
     tn = motion.nutation_period or duration
     n = int(min(200_000, max(2_000, 400 * duration / tn)))
@@ -315,7 +314,7 @@ def plot(path: Path, motion: TopMotion, info: Info, duration: float) -> None:
     ax.set_ylabel("y")
     ax.set_title("seen from above")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2)
-    save(fig, path)
+    return fig
 
 
 # ----------------------------------------------------------------------------- gyrocompass
