@@ -10,7 +10,7 @@ import sys
 
 import typer
 
-from rbcli.cli.app import app
+from rbcli.cli.app import COMPLETE_VAR, app, completion_init
 from rbcli.cli import massprops as _massprops  # noqa: F401  (registers inertia, principal)
 from rbcli.cli import catalog as _catalog  # noqa: F401  (registers shapes, schema, examples)
 from rbcli.cli import balance as _balance  # noqa: F401  (registers balance)
@@ -35,6 +35,10 @@ def main(argv: list[str] | None = None) -> None:
     from rbcli.cli.common import debug
 
     args = sys.argv[1:] if argv is None else list(argv)
+    import os
+
+    if os.environ.get(COMPLETE_VAR):  # a shell asks for completions (rbcli --show-completion)
+        completion_init()
     if not debug():
         import warnings
 

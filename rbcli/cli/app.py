@@ -21,7 +21,7 @@ input, 70 internal error (a bug).
 app = typer.Typer(
     name="rbcli",
     help=HELP,
-    add_completion=False,
+    add_completion=False,  # rbcli declares --show-completion SHELL itself (below)
     no_args_is_help=True,
     pretty_exceptions_enable=False,
     rich_markup_mode=None,
@@ -169,10 +169,68 @@ def _version(value: bool) -> None:
         raise typer.Exit()
 
 
+#: shells typer's completion scripts support
+SHELLS = ("bash", "zsh", "fish", "powershell", "pwsh")
+#: the environment variable a completion script sets when it asks rbcli for candidates
+COMPLETE_VAR = "_RBCLI_COMPLETE"
+
+
+def completion_init() -> None:
+    """Register typer's completion classes (its scripts for bash, zsh, fish, PowerShell).
+
+    Called only when a shell asks for completions or a script is wanted, so start-up is
+    unchanged otherwise."""
+    from typer.completion import completion_init as init
+
+    init()
+
+
+def _shell(value: str) -> str:
+    shell = value.strip().lower()
+    if shell not in SHELLS:
+        raise typer.BadParameter(f"'{value}' is not a shell rbcli completes; use one of "
+                                 f"{', '.join(SHELLS)}")
+    return shell
+
+
+def _show_completion(value: str | None) -> None:
+    if value is None:
+        return
+    shell = _shell(value)
+    completion_init()
+    from typer._completion_shared import get_completion_script
+
+    typer.echo(get_completion_script(prog_name="rbcli", complete_var=COMPLETE_VAR, shell=shell))
+    raise typer.Exit()
+
+
+def _install_completion(value: str | None) -> None:
+    if value is None:
+        return
+    shell = _shell(value)
+    completion_init()
+    from typer._completion_shared import install
+
+    shell, path = install(shell=shell, prog_name="rbcli", complete_var=COMPLETE_VAR)
+    typer.echo(f"{shell} completion installed in {path}; it takes effect in a new shell")
+    raise typer.Exit()
+
+
 @app.callback()
 def root(
     version: bool = typer.Option(
         False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
+    ),
+    show_completion: str = typer.Option(
+        None, "--show-completion", callback=_show_completion, is_eager=True, metavar="SHELL",
+        expose_value=False, show_default=False,
+        help="Print the completion script for SHELL (bash, zsh, fish, powershell), e.g. "
+             "'eval \"$(rbcli --show-completion bash)\"'.",
+    ),
+    install_completion: str = typer.Option(
+        None, "--install-completion", callback=_install_completion, is_eager=True,
+        metavar="SHELL", expose_value=False, show_default=False,
+        help="Install completion for SHELL (bash, zsh, fish, powershell) in its start-up file.",
     ),
     debug: bool = typer.Option(
         False, "--debug", help="Show a traceback for internal errors (also: RBCLI_DEBUG=1)."
