@@ -24,6 +24,11 @@ BodiesArg = typer.Argument(None, metavar="BODY...", help=BODY_HELP, show_default
 BodyArg = typer.Argument(None, metavar="BODY", help="Body file (YAML); '-' reads standard input.", show_default=False)
 ExprOpt = typer.Option(None, "-e", "--expr", help=EXPR_HELP, show_default=False)
 JsonOpt = typer.Option(False, "--json", help=JSON_HELP)
+FORMAT_HELP = "Output: table (for people), json (= --json) or csv (the tables, for spreadsheets)."
+FormatOpt = typer.Option(None, "--format", metavar="table|json|csv", help=FORMAT_HELP, show_default=False)
+
+#: the output formats of every command that prints tables
+FORMATS = ("table", "json", "csv")
 DigitsOpt = typer.Option(6, "--digits", min=1, max=17, help=DIGITS_HELP)
 UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 
@@ -194,20 +199,44 @@ def write_doc(e: Any, doc: Any) -> None:
     e.write(doc.render())
 
 
-def emit(e: Any, json_: bool, data_fn: Any, doc_fn: Any, *, lines: bool = False) -> None:
-    """Print a command's result: ``--json`` gives the JSON of ``data_fn()`` (one compact line
-    with ``lines``, for JSON Lines), else the tables ``doc_fn(doc)`` puts in a Doc. Both
-    refuse inf and NaN (one line, exit 2): :func:`rbcli.render.jsonout.jsonable` and
-    :func:`write_doc`. Only the one that is printed is built."""
-    if json_:
+def output_format(json_: bool, fmt: str | None, extra: tuple[str, ...] = ()) -> str:
+    """The output format from ``--json`` and ``--format`` (``--json`` is ``--format json``):
+    "table", "json", "csv" or one of ``extra`` (e.g. inertia's "urdf")."""
+    allowed = FORMATS + tuple(extra)
+    if fmt is None:
+        return "json" if json_ else "table"
+    f = fmt.strip().lower()
+    if f not in allowed:
+        raise InputError(f"--format must be {', '.join(allowed[:-1])} or {allowed[-1]}, not '{fmt}'")
+    if json_ and f != "json":
+        raise InputError(f"--json and --format {f} ask for two formats; give one")
+    return f
+
+
+def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = False,
+         file: str | None = None) -> None:
+    """Print a command's result in format ``fmt`` (:func:`output_format`; True = "json",
+    False = "table"): JSON of ``data_fn()`` (one compact line with ``lines``, for JSON
+    Lines), or the tables ``doc_fn(doc)`` puts in a Doc, as text or as CSV (with a ``file``
+    column when ``file`` is given). All refuse inf and NaN (one line, exit 2):
+    :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
+    printed is built."""
+    fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
+    if fmt == "json":
         from rbcli.render.jsonout import dumps
 
         e.write(dumps(data_fn(), lines=lines))
-    else:
-        from rbcli.render.text import Doc
+        return
+    from rbcli.render.text import Doc
 
-        doc = Doc(e)
-        doc_fn(doc)
+    doc = Doc(e)
+    doc_fn(doc)
+    if fmt == "csv":
+        from rbcli.render import tablecsv
+
+        check_finite_doc(doc)
+        e.write(tablecsv.render(doc, file))
+    else:
         write_doc(e, doc)
 
 
