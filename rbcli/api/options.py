@@ -209,3 +209,94 @@ def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
         ways = " or ".join(f"'{a}'" for a in allowed)
         raise InputError(f"{option} must be {ways}, not '{text}'")
     return str(text)
+
+
+# ----------------------------------------------------------------------------- the bare-number rule
+
+
+class Units:
+    """What a bare number means for one body: the one place of the bare-number rule.
+
+    A bare number typed for an option (``--radius 180``, ``radius="180"``) means what it
+    would mean in that body's file: lengths and masses in the file's ``units`` (SI for
+    ``-e``, for standard input without ``units`` and for files without ``units``), angles
+    in degrees, angular speeds in rad/s unless the file's ``units`` name another
+    (``angular_speed: rpm``); every other kind (a speed in m/s, gravity in m/s², a time in
+    s) is SI, since a body file has no bare speed or gravity to follow. A Python number
+    passed to the API is always SI (it never went through a file). Commands without a
+    body use SI.
+
+    Parameters
+    ----------
+    base : mapping, optional
+        The body's ``units`` block (:attr:`rbcli.model.Body.units`), e.g.
+        ``{"length": "mm", "mass": "g"}``.
+    """
+
+    __slots__ = ("base", "_cache")
+
+    def __init__(self, base: dict[str, str] | None = None) -> None:
+        self.base = dict(base or {})
+        self._cache: dict[str, str | None] = {}
+
+    @classmethod
+    def of(cls, body: Any) -> "Units":
+        """The rule for ``body`` (None: SI)."""
+        return cls(getattr(body, "units", None) if body is not None else None)
+
+    def bare(self, kind: str) -> str | None:
+        """The unit a bare number of ``kind`` is in (None: SI)."""
+        if kind in self._cache:
+            return self._cache[kind]
+        unit: str | None
+        if kind == "angle":
+            unit = "deg"
+        elif kind == "angular_speed":
+            unit = self.base.get("angular_speed")
+        elif kind in ("length", "mass") and kind in self.base:
+            from rbcli.io import units as un
+
+            factor, text = un.unit_for_kind({kind: self.base[kind]}, kind)
+            unit = text if factor != 1.0 else None
+        else:  # speeds, accelerations, times, ...: SI (a body file has no bare g or speed)
+            unit = None
+        self._cache[kind] = unit
+        return unit
+
+    def label(self, kind: str) -> str:
+        """How help and echo lines name the bare unit of ``kind`` (``"mm"``, ``"SI"``...)."""
+        return self.bare(kind) or {"length": "m", "mass": "kg", "angular_speed": "rad/s",
+                                   "speed": "m/s", "acceleration": "m/s^2", "time": "s"}.get(kind, "SI")
+
+    def quantity(self, value: Value, kind: str, option: str) -> float:
+        """:func:`quantity` with this body's bare unit."""
+        if _is_number(value):
+            return finite(float(value), option)
+        return quantity(value, kind, option, bare=self.bare(kind))
+
+    def numbers(self, value: Value, kind: str, option: str, *,
+                counts: tuple[int, ...] = (3,)) -> list[float]:
+        """:func:`numbers` with this body's bare unit (a Python sequence of numbers is SI)."""
+        if _is_sequence_of_numbers(value):
+            return numbers(value, kind, option, counts=counts)
+        return numbers(value, kind, option, counts=counts, bare=self.bare(kind))
+
+    def vector(self, value: Value, kind: str, option: str, n: int = 3) -> list[float]:
+        """:func:`vector` with this body's bare unit."""
+        if _is_sequence_of_numbers(value):
+            return vector(value, kind, option, n)
+        return vector(value, kind, option, n, bare=self.bare(kind))
+
+    def point(self, value: Value, option: str) -> str | list[float]:
+        """:func:`point` (``com``, ``origin`` or x,y,z) with this body's bare length unit."""
+        if isinstance(value, str) and value.strip() in ("com", "origin"):
+            return value.strip()
+        return self.vector(value, "length", option)
+
+
+def _is_sequence_of_numbers(v: Any) -> bool:
+    if isinstance(v, str):
+        return False
+    if hasattr(v, "tolist"):
+        v = v.tolist()
+    return isinstance(v, (list, tuple)) and all(_is_number(x) for x in v)
