@@ -68,7 +68,7 @@ def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = M
 
 #: what a unit symbol or a sign becomes on a terminal that cannot show it (PYTHONIOENCODING=ascii)
 ASCII_FALLBACK = {
-    "·": "*", "⋅": "*", "²": "^2", "³": "^3", "¹": "^1", "⁻": "^-", "°": " deg", "µ": "u",
+    "·": "*", "⋅": "*", "²": "^2", "³": "^3", "¹": "^1", "⁻": "^-", "°": "deg", "µ": "u",
     "μ": "u", "—": "--", "–": "-", "−": "-", "…": "...", "±": "+/-", "×": "x", "≈": "~",
     "≤": "<=", "≥": ">=", "→": "->", "θ": "theta", "ω": "omega", "φ": "phi", "ψ": "psi",
     "Ω": "Omega", "π": "pi", "Δ": "Delta", "‘": "'", "’": "'", "“": '"', "”": '"',
@@ -232,8 +232,20 @@ class Terminated(KeyboardInterrupt):
         self.signum = signum
 
 
+#: the signal that ended the run, if one did (typer turns any KeyboardInterrupt into exit
+#: 130, so the signal is recorded here too)
+SIGNALLED: dict[str, int] = {}
+
+
 def _raise_terminated(signum, frame):  # noqa: ARG001
+    SIGNALLED["signum"] = signum
     raise Terminated(signum)
+
+
+def signalled_status(code: int) -> int:
+    """``code``, or 128 + the signal when SIGTERM or SIGHUP ended the run."""
+    signum = SIGNALLED.get("signum")
+    return 128 + signum if signum else code
 
 
 def handle_signals() -> dict:
@@ -243,6 +255,7 @@ def handle_signals() -> dict:
     import threading
 
     old: dict = {}
+    SIGNALLED.clear()
     if threading.current_thread() is not threading.main_thread():
         return old
     for name in ("SIGTERM", "SIGHUP"):

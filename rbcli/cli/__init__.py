@@ -45,7 +45,7 @@ def main(argv: list[str] | None = None) -> None:
     old_signals = _env.handle_signals()
     try:
         code = _run(args)
-        code = _env.finish_stdout(code)
+        code = _env.finish_stdout(_env.signalled_status(code))
     except KeyboardInterrupt as exc:  # a signal while finishing
         code = _interrupted(exc)
     finally:
@@ -94,8 +94,9 @@ def _run_app(args: list[str]) -> int:
         return int(exc.exit_status)
     except typer.TyperException as exc:  # click's UsageError, BadParameter, NoSuchOption, ...
         return _usage_error(exc, args)
-    except typer.Abort:
-        return int(ExitStatus.INTERRUPTED)
+    except typer.Abort as exc:  # click turns Ctrl-C (and our SIGTERM) into Abort
+        cause = exc.__cause__ or exc.__context__
+        return _interrupted(cause) if isinstance(cause, KeyboardInterrupt) else int(ExitStatus.INTERRUPTED)
     except (OverflowError, ZeroDivisionError, FloatingPointError) as exc:
         _say(
             f"rbcli: a value is too large or too small to compute with ({exc or type(exc).__name__}); "
