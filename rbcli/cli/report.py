@@ -550,37 +550,28 @@ def _rollcheck(ctx: _Ctx):
 
     key, title = "rolling-stability", "Rolling stability"
     b, o = ctx.body, ctx.opts
-    from rbcli.cli import rollcheck as cr
+    from rbcli.api import rollcheck as ar
 
-    round_parts = [p for p in b.parts if not p.subtract and p.radius is not None and p.shape in cr.ROUND]
-    if o.rim_radius is None and b.rim_radius is None and not round_parts:
+    if o.rim_radius is None and b.rim_radius is None and not ar.round_parts(b):
         return _skip(key, title, "rolling stability: no rim radius: none in the body file (rim_radius), no "
                      "--rim-radius option and no round part")
-    from rbcli.core import rolling as rl
     from rbcli.render import rollcheck as rr
     from rbcli.render.text import Doc
 
     try:
-        setup = cr.prepare(b, axle=o.shaft, through=o.through, radius=o.rim_radius, tyre_radius=o.tyre_radius)
-        try:
-            res = rl.rollcheck(setup.wheel, setup.radius, o.tyre_radius, o.g, speed=o.roll_speed, spin=o.roll_spin)
-        except ValueError as exc:
-            raise InputError(f"--speed: {exc}") from None
+        res = ar.rollcheck(b, axle=o.shaft, through=o.through, radius=o.rim_radius, tyre_radius=o.tyre_radius,
+                           g=o.g, speed=o.roll_speed, spin=o.roll_spin)
     except InputError as exc:
         return _skip(key, title, f"rolling stability: not computed: {exc}")
-    info = rr.Info(body=b, radius_source=setup.radius_source, radius_kind=setup.radius_kind,
-                   radius_part=setup.radius_part, axle_source=setup.axle_source, axle_through=setup.through,
-                   speed_given=o.roll_speed is not None, spin_given=o.roll_spin is not None,
-                   straight_asked=res.verdict is not None)
     doc = Doc()
-    rr.document(doc, res, info, ctx.du, ctx.digits)
+    rr.document(doc, res, ctx.du, ctx.digits)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    for w in setup.warnings:
+    for w in res.warnings:
         s.items.append(_note("warning: " + w))
-    if res.verdict is not None and not res.verdict.stable:
+    if res.return_code:
         ctx.failed.append("rolling: straight rolling at --speed is unstable")
-    _plot(ctx, s, "rollcheck", rr.plot(res, info),
+    _plot(ctx, s, "rollcheck", rr.plot(res, res.curves()),
           "Lean frequency squared and growth rate against speed (as rbcli rollcheck --plot).")
     return s
 
