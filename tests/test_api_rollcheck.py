@@ -16,6 +16,8 @@ import rbcli
 from rbcli.api.rollcheck import RollcheckOptions, RollcheckResult, run
 
 ROUND = ["penny", "hoop", "bicycle_wheel", "spoked_wheel", "thick_coin", "frisbee", "top", "gyroscope"]
+#: round, but the rim circle is far off the plane of the centre of mass: refused (issue 14.3)
+OFF_CENTRE = {"top", "toy_top"}
 
 #: (CLI options, the same as API keywords): strings as typed, and SI numbers
 OPTION_SETS = [
@@ -43,13 +45,21 @@ def _cli_json(cli, name, args):
 @pytest.mark.parametrize("name", ROUND)
 @pytest.mark.parametrize("args, kw", OPTION_SETS, ids=[" ".join(a) or "default" for a, _ in OPTION_SETS])
 def test_api_json_is_the_cli_json(cli, name, args, kw):
+    body = rbcli.load(f"examples/{name}.yaml")
+    if name in OFF_CENTRE:  # refused alike, with the CLI's line
+        r = cli("rollcheck", f"examples/{name}.yaml", *args, "--json")
+        with pytest.raises(rbcli.InputError) as e:
+            rbcli.rollcheck(body, **kw)
+        assert r.code == 2 and r.out == "" and r.err == f"rbcli: {e.value}\n"
+        return
     r, d = _cli_json(cli, name, args)
-    res = rbcli.rollcheck(rbcli.load(f"examples/{name}.yaml"), **kw)
+    res = rbcli.rollcheck(body, **kw)
     assert res.to_json() == d
     assert list(res.to_json()) == list(d)  # the same key order
     assert res.return_code == r.code
-    # the warnings the CLI prints are the result's
-    assert r.err == "".join(f"rbcli: {w}\n" for w in res.warnings)
+    # the warnings the CLI prints are the result's, and in the JSON
+    assert r.err == "".join(f"rbcli: {res.source}: warning: {w}\n" for w in res.warnings)
+    assert d["warnings"] == list(res.warnings)
 
 
 def test_options_with_units_and_body_defaults():
@@ -149,3 +159,54 @@ def test_result_is_frozen():
     res = rbcli.rollcheck(rbcli.load("examples/penny.yaml"))
     with pytest.raises(AttributeError):
         res.name = "x"  # type: ignore[misc]
+
+
+@pytest.mark.parametrize("text, offset, shape", [
+    # a cone, radius 50 mm, height 100 mm: com h/4 = 25 mm above its base rim
+    ("{shape: cone, radius: 50 mm, height: 100 mm, mass: 1}", -0.025, "cone"),
+    # a hemisphere, radius 50 mm: com 3R/8 = 18.75 mm from its flat face's rim
+    ("{shape: hemisphere, radius: 50 mm, mass: 1}", -0.01875, "hemisphere"),
+])
+def test_cone_and_hemisphere_on_their_base_rims_are_refused(cli, text, offset, shape):
+    body = rbcli.load_text(text)
+    o = RollcheckOptions.parse(body)
+    assert o.rim is not None and o.rim.parts[0][1] == shape
+    assert o.rim.offset == pytest.approx(offset, rel=1e-12) and not o.rim.upright_equilibrium
+    for kw, args in [({}, []), ({"speed": 3}, ["--speed", "3"]), ({"lean": 20, "circle": 1}, ["--lean", "20", "--circle", "1"])]:
+        with pytest.raises(rbcli.InputError) as e:
+            rbcli.rollcheck(body, **kw)
+        msg = e.value.message
+        assert f"{abs(offset) * 1e3:.3g} mm from the centre of mass along the axle" in msg
+        assert "not an equilibrium" in msg and "no critical speed" in msg
+        assert ("(--lean/--circle) is not computed" in msg) == ("lean" in kw)
+        r = cli("rollcheck", "-e", text, *args)
+        assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+        assert r.err == f"rbcli: <expr>: {msg}\n"
+
+
+def test_the_offset_is_the_rim_circles_not_the_parts_centre():
+    # issue 14.3: a toy top's cone has its centre of mass 1.52 mm from the body's, but its
+    # base rim (the widest circle) is 8.48 mm away: the refusal quotes the rim
+    body = rbcli.load("examples/toy_top.yaml")
+    o = RollcheckOptions.parse(body)
+    com_z = 0.03151898734177215  # rbcli inertia examples/toy_top.yaml
+    assert o.rim.offset == pytest.approx(0.04 - com_z, rel=1e-12)
+    with pytest.raises(rbcli.InputError, match="is 8.48 mm from the centre of mass"):
+        run(body, o)
+
+
+def test_rims_in_the_plane_of_the_com_are_unchanged():
+    for name in ("penny", "hoop", "bicycle_wheel", "spoked_wheel", "thick_coin", "frisbee"):
+        o = RollcheckOptions.parse(rbcli.load(f"examples/{name}.yaml"))
+        assert o.rim is not None and abs(o.rim.offset) <= 1e-12 * o.radius and o.warnings == ()
+    # small offsets: a warning with the real offset, and the answer
+    res = rbcli.rollcheck(rbcli.load("examples/gyroscope.yaml"))
+    (w,) = res.warnings
+    assert "284 µm from the centre of mass" in w and "0.379 %" in w and res.critical_speed > 0
+    # two wheels on an axle, one each side of the com: the rim's mid-plane is the com's
+    pair = rbcli.load_text("{parts: [{shape: disk, radius: 0.1, mass: 1, at: [0, 0, 0.05]},"
+                           " {shape: disk, radius: 0.1, mass: 1, at: [0, 0, -0.05]}]}")
+    o = RollcheckOptions.parse(pair)
+    assert len(o.rim.parts) == 2 and o.rim.offset == 0.0
+    # a radius no part has: nothing to measure
+    assert RollcheckOptions.parse(rbcli.load("examples/top.yaml"), radius="5 cm").rim is None

@@ -610,3 +610,41 @@ def test_import_is_cheap():
             "print(any(k.split('.')[0] in ('numpy', 'scipy', 'matplotlib') for k in sys.modules))")
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert p.stdout.strip() == "False"
+
+
+# ----------------------------------------------------------------------------- rims off the com (issue 14.3)
+
+
+def test_warnings_are_in_the_json_too(cli):
+    # issue 13.6: as in balance, "warnings" is always there ([] when none), before name/file
+    d = ok(cli("rollcheck", str(EX / "penny.yaml"), "--json"))
+    assert d["warnings"] == [] and list(d)[-3:] == ["warnings", "name", "file"]
+    r = cli("rollcheck", "examples/gyroscope.yaml", "--json")
+    (w,) = r.json()["warnings"]
+    assert r.code == 0 and r.err == f"rbcli: examples/gyroscope.yaml: warning: {w}\n"
+    # the real offset of the rotor's rim circle: its mid-plane at z = 80 mm, the com at
+    # (m_rotor 0.08 + m_axle 0.06) / (m_rotor + m_axle)
+    m_rotor = 7850 * math.pi * 0.075**2 * 0.025
+    d = 0.08 - (m_rotor * 0.08 + 0.05 * 0.06) / (m_rotor + 0.05)
+    assert f"is {d * 1e6:.3g} µm from the centre of mass" in w
+
+
+@pytest.mark.parametrize("args", [[], ["--speed", "3"], ["--lean", "20", "--circle", "1"], ["--json"]])
+def test_a_top_on_its_rim_is_refused(cli, args):
+    r = cli("rollcheck", "examples/top.yaml", *args)
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+    assert r.err.startswith("rbcli: examples/top.yaml: the rim circle of part 'disk' (disk) is 10 mm "
+                            "from the centre of mass along the axle (12.5 % of the rim radius 80 mm)")
+
+
+def test_report_leaves_out_rolling_for_an_off_centre_rim(cli, tmp_path):
+    r = cli("report", "examples/toy_top.yaml", "-o", str(tmp_path / "t.md"))
+    assert r.code == 0, r.err
+    text = (tmp_path / "t.md").read_text(encoding="utf-8")
+    assert "Rolling stability (not included)" in text
+    (why,) = [line for line in text.splitlines() if line.startswith("*rolling stability: ")]
+    assert why.startswith("*rolling stability: left out: the rim circle of part 'cone' (cone) is 8.48 mm")
+    # a rim within 1 %: the section is there, with its warning
+    r = cli("report", "examples/gyroscope.yaml", "-o", str(tmp_path / "g.md"))
+    text = (tmp_path / "g.md").read_text(encoding="utf-8")
+    assert r.code == 0 and "## Rolling stability" in text and "warning: the rim circle of part 'rotor'" in text

@@ -18,17 +18,13 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rbcli.api.result import Result
+from rbcli.errors import InputError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.core.rolling import CircleMotion, Curves, StraightRolling, Verdict, Wheel
+    from rbcli.core.rolling import CircleMotion, Curves, RimOffset, StraightRolling, Verdict, Wheel
     from rbcli.model import Body, Part
 
-__all__ = ["RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
-
-#: shapes whose ``radius`` (a Part's outer radius) can be a rim: round about their axis.
-#: NOTE for the shape registry (issue 12.5): this is a shape fact ("is it round") and
-#: belongs in :mod:`rbcli.core.shapes` once the registry carries it.
-ROUND = ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone", "torus")
+__all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
 
 STANDARD_GRAVITY = 9.80665  # m/s^2
 
@@ -36,7 +32,9 @@ STANDARD_GRAVITY = 9.80665  # m/s^2
 def round_parts(body: Body) -> list[Part]:
     """The parts of ``body`` that could make a rim: round, with an outer radius, not holes
     (whatever their axis; :class:`RollcheckOptions` keeps those coaxial with the axle)."""
-    return [p for p in body.parts if not p.subtract and p.radius is not None and p.shape in ROUND]
+    from rbcli.core.rolling import ROUND_SHAPES
+
+    return [p for p in body.parts if not p.subtract and p.radius is not None and p.shape in ROUND_SHAPES]
 
 
 @dataclass(frozen=True)
@@ -73,9 +71,13 @@ class RollcheckOptions:
         rad, inward lean of a steady circle from the vertical, [0, pi/2).
     circle : float or None
         m, radius of the circle the centre runs on (0: spinning in place).
+    rim : rbcli.core.rolling.RimOffset or None
+        Where the rim circle lies along the axle, measured from the parts whose outer
+        radius is the rim radius (``offset`` m from the centre of mass, ``fraction`` of the
+        radius); None when no part has that radius.
     warnings : tuple of str
-        Located one-line warnings about the resolved defaults (printed by the command line
-        after ``rbcli: ``).
+        One-line warnings about the resolved defaults (the command line prints them as
+        ``rbcli: FILE: warning: ...``).
     """
 
     axle: tuple[float, float, float]
@@ -91,6 +93,7 @@ class RollcheckOptions:
     spin: float | None = None
     lean: float | None = None
     circle: float | None = None
+    rim: RimOffset | None = None
     warnings: tuple[str, ...] = ()
 
     @property
@@ -156,7 +159,7 @@ class RollcheckOptions:
                 "--circle 0: spinning in place the centre does not move, so --speed cannot fix "
                 "the lean; give --lean instead", param="circle")
 
-        axle_v, P, axle_source, a, source, kind, part, warns = _resolve(body, n_axle, p_through, a_opt)
+        axle_v, P, axle_source, a, source, kind, part, rim, warns = _resolve(body, n_axle, p_through, a_opt)
         if r >= a:
             raise ParamError("tyre_radius", f"the tyre radius {r:.6g} m must be smaller than the rim "
                              f"radius a = {a:.6g} m ({source})")
@@ -167,7 +170,7 @@ class RollcheckOptions:
                 "rounded rim")
         return cls(axle=axle_v, through=P, axle_source=axle_source, radius=a, radius_source=source,
                    radius_kind=kind, radius_part=part, tyre_radius=r, g=gv, speed=v, spin=s,
-                   lean=beta, circle=R_G, warnings=warns)
+                   lean=beta, circle=R_G, rim=rim, warnings=warns)
 
 
 def _resolve(body: Body, n_axle, p_through, a_opt):
@@ -175,6 +178,7 @@ def _resolve(body: Body, n_axle, p_through, a_opt):
     import numpy as np
 
     from rbcli.core.inertia import combine
+    from rbcli.core.rolling import RIM_OFFSET_LIMIT, rim_offset
 
     mp = combine(body.parts)
     if n_axle is not None:
@@ -200,40 +204,33 @@ def _resolve(body: Body, n_axle, p_through, a_opt):
         P = np.zeros(3)
         through_source = "the origin"
     part = None
-    warnings: list[str] = []
     if a_opt is not None:
         a, source, kind = a_opt, "--radius", "--radius"
     elif body.rim_radius is not None:
         a, source, kind = float(body.rim_radius), "the body's rim_radius", "rim_radius"
     else:
-        rim = _largest_round_part(body, n, P, mp)
-        a, part, kind = float(rim.radius), rim.name, "largest_round_part"
-        source = f"the largest round part '{rim.name}' ({rim.shape}, coaxial with the axle)"
-        dz = float(np.dot(np.asarray(rim.com, dtype=float) - mp.com, n))
-        if abs(dz) > 1e-6 * a:
-            warnings.append(
-                f"{body.source}: the rim part '{part}' is centred {abs(dz):.6g} m from the "
-                "centre of mass along the axle; the model takes the rim circle in the plane of the "
-                "centre of mass"
-            )
+        best = _largest_round_part(body, n, P, mp)
+        a, part, kind = float(best.radius), best.name, "largest_round_part"
+        source = f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)"
+    rim = rim_offset(body.parts, mp.com, n, P, a)
+    warnings: list[str] = []
+    if rim is not None and abs(rim.offset) > 1e-6 * a and rim.upright_equilibrium:
+        warnings.append(
+            f"{rim.describe()}; the model takes the rim circle in the plane of the centre of mass "
+            f"(rollcheck refuses rims more than {100 * RIM_OFFSET_LIMIT:g} % of the radius off it)"
+        )
     return (tuple(float(x) for x in n), tuple(float(x) for x in P),
-            f"{axle_source}, through {through_source}", float(a), source, kind, part, tuple(warnings))
+            f"{axle_source}, through {through_source}", float(a), source, kind, part, rim,
+            tuple(warnings))
 
 
 def _largest_round_part(body: Body, n, P, mp) -> Part:
     """The round, non-subtracted part coaxial with the axle with the largest outer radius."""
-    import numpy as np
-
+    from rbcli.core.rolling import rim_candidates
     from rbcli.errors import InputError
 
     best = None
-    for p in round_parts(body):
-        if p.shape != "sphere" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9:
-            continue  # round about another axis: not a rim for this axle
-        d = np.asarray(p.com, dtype=float) - P
-        off = float(np.linalg.norm(d - np.dot(d, n) * n))
-        if off > 1e-6 * p.radius:
-            continue  # not centred on the axle line
+    for p in rim_candidates(body.parts, n, P):
         if best is None or p.radius > best.radius:
             best = p
     if best is None:
@@ -359,6 +356,7 @@ class RollcheckResult(Result):
         out["axle_through"] = list(self.options.through)
         out["com"] = list(self.wheel.com)
         out["model"] = self.model
+        out["warnings"] = list(self.warnings)
         out["name"] = self.name
         return jsonable(out)
 
@@ -367,21 +365,62 @@ _SPEC_TOP = ("radius", "mass", "I", "Is", "critical_spin", "critical_speed")
 _SPEC_SPEED = ("speed", "stable", "margin")
 
 
+class OffCentreRim(InputError):
+    """The rim circle is too far off the plane of the centre of mass to roll upright
+    (:data:`rbcli.core.rolling.RIM_OFFSET_LIMIT`): no straight-rolling threshold, no steady
+    circle. Exit 2, like any bad input.
+
+    Attributes
+    ----------
+    rim : rbcli.core.rolling.RimOffset — the measured offset
+    reason : str — the short reason, one line (the report's)
+    """
+
+    def __init__(self, message: str, where: Any, rim: RimOffset, reason: str) -> None:
+        super().__init__(message, where)
+        self.rim = rim
+        self.reason = reason
+
+
+def _refuse_off_centre_rim(body: Body, o: RollcheckOptions) -> None:
+    """A rim off the plane of the centre of mass (a cone or hemisphere on its base rim, a
+    top): upright rolling is not an equilibrium, so there is no straight-rolling threshold,
+    and the circle model (rim in that plane) does not describe its curves either."""
+    from rbcli.core.rolling import RIM_OFFSET_LIMIT
+    from rbcli.errors import Location
+
+    rim = o.rim
+    assert rim is not None
+    asked = ("the steady circle asked for (--lean/--circle) is not computed either: the circle "
+             "model takes the rim in that plane" if o.circle_asked else
+             "the steady-circle model, which takes the rim in that plane, does not apply either")
+    raise OffCentreRim(
+        f"{rim.describe()}: upright rolling is not an equilibrium (the centre of mass is not "
+        "above the contact point: gravity tips the body over or steers it into a curve), so "
+        f"straight rolling has no critical speed; {asked}; rollcheck analyses rims within "
+        f"{100 * RIM_OFFSET_LIMIT:g} % of the radius of the plane of the centre of mass",
+        Location(body.source), rim, f"{rim.describe()}, so upright rolling is not an equilibrium")
+
+
 def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     """The rolling check of ``body`` with parsed ``options`` (:meth:`RollcheckOptions.parse`).
 
     Raises
     ------
     rbcli.InputError
-        The body is not of revolution about the axle or its centre of mass is off it
-        (located at the body), or the options ask for a circle that does not exist (naming
-        the options).
+        The body is not of revolution about the axle or its centre of mass is off it, or its
+        rim circle is more than :data:`rbcli.core.rolling.RIM_OFFSET_LIMIT` of the radius
+        off the plane of the centre of mass (a cone or hemisphere on its base rim: upright
+        rolling is no equilibrium) — located at the body; or the options ask for a circle
+        that does not exist (naming the options).
     """
     from rbcli.core import rolling as rl
     from rbcli.core.inertia import combine
 
     o = options
     wheel = _wheel(body, combine(body.parts), o.axle, o.through, o.radius)
+    if o.rim is not None and not o.rim.upright_equilibrium:
+        _refuse_off_centre_rim(body, o)
     res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, speed=o.speed, spin=o.spin,
                        lean_rad=o.lean, circle_radius=o.circle)
     return RollcheckResult(name=body.name, source=body.source, options=o, wheel=wheel,

@@ -561,6 +561,8 @@ def _rollcheck(ctx: _Ctx):
     try:
         res = ar.rollcheck(b, axle=o.shaft, through=o.through, radius=o.rim_radius, tyre_radius=o.tyre_radius,
                            g=o.g, speed=o.roll_speed, spin=o.roll_spin)
+    except ar.OffCentreRim as exc:  # a cone or a top on its base rim: not a wheel
+        return _skip(key, title, f"rolling stability: left out: {exc.reason}")
     except InputError as exc:
         return _skip(key, title, f"rolling stability: not computed: {exc}")
     doc = Doc()

@@ -10,7 +10,8 @@ from rbcli.cli.app import MANUAL, app
 HELP = """Stability of a wheel, disk or hoop rolling on a rough floor: the critical speed.
 
 The body must be a body of revolution about its axle (--axle, default the body's
-shaft, else body z) with its centre of mass on the axle. It rolls without slipping
+shaft, else body z) with its centre of mass on the axle and its rim circle in the
+plane of the centre of mass (within 1 % of the radius; a cone on its base rim is refused). It rolls without slipping
 on its rim, radius a (--radius, default the body's rim_radius, else the largest
 round part coaxial with the axle; the output says which). Straight upright rolling
 is stable (neutrally: undamped, a small lean oscillates) when the spin s satisfies
@@ -60,7 +61,7 @@ def rollcheck(
     plot_path = c.check_plot(plot, b) if plot is not None else None
     res = run(b, opts)
     for w in res.warnings:
-        e.warn(f"rbcli: {w}")
+        e.warn(f"rbcli: {res.source}: warning: {w}")
     if plot_path is not None:
         c.save_plot(rr.plot(res, res.curves()), plot_path)
 
@@ -93,6 +94,18 @@ MANUAL["rollcheck"] = {
         "else the body's rim_radius, else the largest outer radius of the round parts (ring, "
         "disk, cylinder, torus, sphere, hemisphere, cone; not holes) centred on and coaxial "
         "with the axle; the output says which.",
+        "Rims off the centre of mass: rollcheck measures where the rim circle lies along the "
+        "axle from the parts whose outer radius is the rim radius (disk, ring, sphere, torus: "
+        "their own plane; cylinder: the mid-plane of its two end circles; hemisphere: its flat "
+        "face, 3R/8 from its centre of mass; cone: its base, h/4 from its centre of mass; several "
+        "such parts: the mid-plane of the outermost circles). A rim circle off the plane of the "
+        "centre of mass makes upright rolling no equilibrium: the centre of mass is to the side "
+        "of the contact point. Up to 1 % of the rim radius (a lean of 0.57° would bring the centre "
+        "of mass over the rim) the model takes the rim in that plane and warns with the real "
+        "offset; beyond 1 % both straight rolling and steady circles are refused with the offset "
+        "and that reason (exit 2): a cone or hemisphere on its base rim, a top. With a --radius or "
+        "rim_radius that no round part has, there is nothing to measure and the rim is taken in "
+        "the plane of the centre of mass.",
         "Straight rolling: --speed (m/s, or e.g. '20 km/h'; negative = backwards, the verdict "
         "uses |speed|) or --spin (rad/s, or '300 rpm'); both may be given if they agree "
         "(speed = a x spin). The margin is |speed| / critical speed.",
@@ -133,7 +146,8 @@ MANUAL["rollcheck"] = {
          "was negative."),
         ("axle, axle_through, com", "[3] unit axle, a point of the axle line and the centre "
          "of mass, body frame, m."),
-        ("model, name, file", "the model's one-line description; the body's name and source."),
+        ("model, warnings, name, file", "the model's one-line description; the warnings also "
+         "printed on standard error (a list, [] when none); the body's name and source."),
     ],
     "examples": [
         ("rbcli rollcheck examples/penny.yaml",
@@ -147,5 +161,8 @@ MANUAL["rollcheck"] = {
          "Steady circular rolling of a hoop leaning 20 degrees on a 1 m circle."),
         ("rbcli rollcheck examples/spoked_wheel.yaml --plot margin.svg",
          "The spoked wheel's threshold and a plot of the lean frequency against speed."),
+        ("rbcli rollcheck examples/toy_top.yaml",
+         "Refused, exit status 2: the cone's base rim is 8.48 mm (28.3 % of its radius) from the "
+         "centre of mass along the axle, so upright rolling is not an equilibrium."),
     ],
 }
