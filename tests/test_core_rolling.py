@@ -763,7 +763,7 @@ def test_json_keys_and_types():
     doc = slow.to_json()
     for k in ("speed", "stable", "margin"):
         assert k in doc
-    assert doc["stable"] is False and doc["lean_frequency"] is None and not slow.ok
+    assert doc["stable"] is False and doc["lean_frequency"] is None
     full = rollcheck(w, a, 0.0, 9.80665, speed=3.0, lean_rad=math.radians(15), circle_radius=4.0)
     doc = full.to_json()
     assert set(doc["circle"]) >= {"lean_deg", "radius", "turn_rate", "spin", "speed", "stable"}
@@ -848,3 +848,31 @@ def test_a_speed_too_small_for_its_circle_is_refused_by_name(v):
     # a small speed whose lean is still a float is solved
     c = lean_for(w, 0.05, 1e-100, 1.0)
     assert 0.0 < c.lean < 1e-190 and c.speed == pytest.approx(1e-100, rel=1e-12)
+
+
+def test_rim_circle_centres_of_the_round_shapes():
+    """The rim circle of each round shape, from its centre of mass (core.rim): a hemisphere's
+    flat face is 3R/8 below its com, a cone's base h/4 (with h from its volume pi R^2 h/3);
+    the others' rim circle is in the plane of their com. Turned over (axis -z), the offset
+    turns too."""
+    from types import SimpleNamespace
+
+    from rbcli.core.rim import rim_circle_centre, rim_offset
+
+    def part(shape, axis=(0.0, 0.0, 1.0), R=0.05, measure=None, com=(0.0, 0.0, 0.0)):
+        return SimpleNamespace(name=shape, shape=shape, radius=R, measure=measure, subtract=False,
+                               com=np.array(com), axis=np.array(axis))
+
+    assert rim_circle_centre(part("hemisphere"))[2] == pytest.approx(-3 * 0.05 / 8, rel=1e-15)
+    h = 0.1
+    cone = part("cone", measure=math.pi * 0.05**2 * h / 3)
+    assert rim_circle_centre(cone)[2] == pytest.approx(-h / 4, rel=1e-14)
+    down = part("cone", axis=(0.0, 0.0, -1.0), measure=math.pi * 0.05**2 * h / 3)
+    assert rim_circle_centre(down)[2] == pytest.approx(h / 4, rel=1e-14)
+    for shape in ("disk", "ring", "cylinder", "sphere", "torus"):
+        assert list(rim_circle_centre(part(shape, com=(0, 0, 0.3)))) == [0.0, 0.0, 0.3]
+    # a rim radius no part has: nothing to measure; a part on another axis is no rim
+    assert rim_offset([part("disk")], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.07) is None
+    assert rim_offset([part("disk", axis=(1.0, 0.0, 0.0))], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.05) is None
+    off = rim_offset([part("hemisphere")], [0, 0, 0.01], [0, 0, 1], [0, 0, 0], 0.05)
+    assert off.offset == pytest.approx(-3 * 0.05 / 8 - 0.01) and not off.upright_equilibrium

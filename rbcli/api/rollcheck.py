@@ -21,7 +21,8 @@ from rbcli.api.result import Result
 from rbcli.errors import InputError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.core.rolling import CircleMotion, Curves, RimOffset, StraightRolling, Verdict, Wheel
+    from rbcli.core.rim import RimOffset
+    from rbcli.core.rolling import CircleMotion, Curves, StraightRolling, Verdict, Wheel
     from rbcli.model import Body, Part
 
 __all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
@@ -32,7 +33,7 @@ STANDARD_GRAVITY = 9.80665  # m/s^2
 def round_parts(body: Body) -> list[Part]:
     """The parts of ``body`` that could make a rim: round, with an outer radius, not holes
     (whatever their axis; :class:`RollcheckOptions` keeps those coaxial with the axle)."""
-    from rbcli.core.rolling import ROUND_SHAPES
+    from rbcli.core.rim import ROUND_SHAPES
 
     return [p for p in body.parts if not p.subtract and p.radius is not None and p.shape in ROUND_SHAPES]
 
@@ -71,7 +72,7 @@ class RollcheckOptions:
         rad, inward lean of a steady circle from the vertical, [0, pi/2).
     circle : float or None
         m, radius of the circle the centre runs on (0: spinning in place).
-    rim : rbcli.core.rolling.RimOffset or None
+    rim : rbcli.core.rim.RimOffset or None
         Where the rim circle lies along the axle, measured from the parts whose outer
         radius is the rim radius (``offset`` m from the centre of mass, ``fraction`` of the
         radius); None when no part has that radius.
@@ -124,7 +125,7 @@ class RollcheckOptions:
             not smaller than the rim radius, or a body with no rim radius.
         """
         from rbcli.api import options as o
-        from rbcli.errors import InputError, ParamError
+        from rbcli.errors import ParamError
 
         n_axle = o.direction(axle, "--axle") if axle is not None else None
         p_through = o.point(through, "--through") if through is not None else None
@@ -178,7 +179,7 @@ def _resolve(body: Body, n_axle, p_through, a_opt):
     import numpy as np
 
     from rbcli.core.inertia import combine
-    from rbcli.core.rolling import RIM_OFFSET_LIMIT, rim_offset
+    from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_offset
 
     mp = combine(body.parts)
     if n_axle is not None:
@@ -226,8 +227,8 @@ def _resolve(body: Body, n_axle, p_through, a_opt):
 
 def _largest_round_part(body: Body, n, P, mp) -> Part:
     """The round, non-subtracted part coaxial with the axle with the largest outer radius."""
-    from rbcli.core.rolling import rim_candidates
-    from rbcli.errors import InputError
+    from rbcli.core.rim import rim_candidates
+    from rbcli.errors import Location
 
     best = None
     for p in rim_candidates(body.parts, n, P):
@@ -236,10 +237,9 @@ def _largest_round_part(body: Body, n, P, mp) -> Part:
     if best is None:
         _wheel(body, mp, n, P, None)  # a body that cannot roll at all says so first
         raise InputError(
-            f"{body.source}: no rim radius: give --radius, or rim_radius in the body file (no "
-            "round part — ring, disk, cylinder, torus, sphere, ... — is centred on the axle and "
-            "coaxial with it)"
-        )
+            "no rim radius: give --radius, or rim_radius in the body file (no round part — ring, "
+            "disk, cylinder, torus, sphere, ... — is centred on the axle and coaxial with it)",
+            Location(body.source))
     return best
 
 
@@ -247,7 +247,7 @@ def _wheel(body: Body, mp, axle, through, radius) -> Wheel:
     """The body reduced to a rolling wheel; a body that cannot roll is an InputError
     located at the body."""
     from rbcli.core.rolling import wheel_from_body
-    from rbcli.errors import InputError, Location
+    from rbcli.errors import Location
 
     try:
         return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through, radius=radius)
@@ -367,12 +367,12 @@ _SPEC_SPEED = ("speed", "stable", "margin")
 
 class OffCentreRim(InputError):
     """The rim circle is too far off the plane of the centre of mass to roll upright
-    (:data:`rbcli.core.rolling.RIM_OFFSET_LIMIT`): no straight-rolling threshold, no steady
+    (:data:`rbcli.core.rim.RIM_OFFSET_LIMIT`): no straight-rolling threshold, no steady
     circle. Exit 2, like any bad input.
 
     Attributes
     ----------
-    rim : rbcli.core.rolling.RimOffset — the measured offset
+    rim : rbcli.core.rim.RimOffset — the measured offset
     reason : str — the short reason, one line (the report's)
     """
 
@@ -386,7 +386,7 @@ def _refuse_off_centre_rim(body: Body, o: RollcheckOptions) -> None:
     """A rim off the plane of the centre of mass (a cone or hemisphere on its base rim, a
     top): upright rolling is not an equilibrium, so there is no straight-rolling threshold,
     and the circle model (rim in that plane) does not describe its curves either."""
-    from rbcli.core.rolling import RIM_OFFSET_LIMIT
+    from rbcli.core.rim import RIM_OFFSET_LIMIT
     from rbcli.errors import Location
 
     rim = o.rim
@@ -409,7 +409,7 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     ------
     rbcli.InputError
         The body is not of revolution about the axle or its centre of mass is off it, or its
-        rim circle is more than :data:`rbcli.core.rolling.RIM_OFFSET_LIMIT` of the radius
+        rim circle is more than :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` of the radius
         off the plane of the centre of mass (a cone or hemisphere on its base rim: upright
         rolling is no equilibrium) — located at the body; or the options ask for a circle
         that does not exist (naming the options).

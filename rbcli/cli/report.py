@@ -629,7 +629,7 @@ MANUAL["report"] = {
          "and PASS predicted with the corrections fitted."),
         ("rbcli report examples/top.yaml -o top.md --spin 150 --theta 30 --g 9.81",
          "Markdown, with its figures in top_files/ beside it; the heavy top nutates between "
-         "30° and 34.5082° (and the top, round, also gets a rolling section)."),
+         "30° and 34.5082° (its rolling section is left out: the disk's rim is 10 mm off the centre of mass)."),
         ("SOURCE_DATE_EPOCH=0 rbcli report examples/penny.yaml -o penny.html --speed '0.1 m/s'",
          "The penny's rolling section: critical speed 0.176454 m/s, so at 0.1 m/s it falls over: "
          "the report is written and the exit status is 1. Run again (with --force): the same bytes."),
