@@ -25,26 +25,17 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
-from rbcli.cli import app, main
+from rbcli.cli import app
 
 ROOT = Path(__file__).resolve().parent.parent
 EX = ROOT / "examples"
 G0 = 9.80665
 
 
-def run(capsys, *args: str) -> tuple[int, str, str]:
-    """Run rbcli in-process through main() (the error-to-exit-code map included)."""
-    with pytest.raises(SystemExit) as exc:
-        main(["rollcheck", *args])
-    out, err = capsys.readouterr()
-    code = exc.value.code
-    return (0 if code is None else int(code)), out, err
-
-
-def js(capsys, *args: str, code: int = 0) -> dict:
-    rc, out, err = run(capsys, *args, "--json")
-    assert rc == code, err
-    return json.loads(out)
+def ok(r, code: int = 0) -> dict:
+    """The JSON document of a run of the ``cli`` fixture that exited with ``code``."""
+    assert r.code == code, r.err
+    return r.json()
 
 
 def sheet(x: float, digits: int = 6) -> dict:
@@ -62,8 +53,8 @@ RT = 1e-12
 # ----------------------------------------------------------------------------- R1-R4
 
 
-def test_R1_penny_example_default_g(capsys):
-    d = js(capsys, str(EX / "penny.yaml"))
+def test_R1_penny_example_default_g(cli):
+    d = ok(cli("rollcheck", str(EX / "penny.yaml"), "--json"))
     a = 9.525e-3
     assert d["radius"] == pytest.approx(a, rel=RT)
     assert d["g"] == G0
@@ -76,68 +67,68 @@ def test_R1_penny_example_default_g(capsys):
     assert d["mass"] == pytest.approx(2.5e-3, rel=RT)
 
 
-def test_R1_penny_g981(capsys):
-    d = js(capsys, str(EX / "penny.yaml"), "--g", "9.81")
+def test_R1_penny_g981(cli):
+    d = ok(cli("rollcheck", str(EX / "penny.yaml"), "--g", "9.81", "--json"))
     assert d["critical_spin"] == pytest.approx(18.5285, **sheet(18.5285))
     assert d["critical_speed"] == pytest.approx(0.176484, **sheet(0.176484))
     assert d["g"] == 9.81
 
 
-def test_R2_uk_penny(capsys):
-    d = js(capsys, "-e", "{shape: disk, radius: 10.16 mm, mass: 3.56 g}", "--g", "9.81")
+def test_R2_uk_penny(cli):
+    d = ok(cli("rollcheck", "-e", "{shape: disk, radius: 10.16 mm, mass: 3.56 g}", "--g", "9.81", "--json"))
     assert d["critical_spin"] == pytest.approx(17.9402, **sheet(17.9402))
     assert d["critical_speed"] == pytest.approx(0.182272, **sheet(0.182272))
 
 
 @pytest.mark.parametrize("a, vc", [(0.34, 0.913154), (0.30, 0.857759)])
-def test_R3_hoops(capsys, a, vc):
-    d = js(capsys, "-e", f"{{shape: ring, radius: {a}, mass: 1.3}}", "--g", "9.81")
+def test_R3_hoops(cli, a, vc):
+    d = ok(cli("rollcheck", "-e", f"{{shape: ring, radius: {a}, mass: 1.3}}", "--g", "9.81", "--json"))
     assert d["critical_speed"] == pytest.approx(vc, **sheet(vc))
     assert d["critical_speed"] == pytest.approx(math.sqrt(9.81 * a / 4), rel=RT)
 
 
-def test_R3_bicycle_wheel_example(capsys):
-    d = js(capsys, str(EX / "bicycle_wheel.yaml"), "--g", "9.81")
+def test_R3_bicycle_wheel_example(cli):
+    d = ok(cli("rollcheck", str(EX / "bicycle_wheel.yaml"), "--g", "9.81", "--json"))
     assert d["critical_spin"] == pytest.approx(2.64710, **sheet(2.64710))
     assert d["critical_speed"] == pytest.approx(0.926485, **sheet(0.926485))
     # default g: sqrt(9.80665 x 0.35 / 4) = 0.926327, "about 1 m/s" (header)
-    d = js(capsys, str(EX / "bicycle_wheel.yaml"))
+    d = ok(cli("rollcheck", str(EX / "bicycle_wheel.yaml"), "--json"))
     assert d["critical_speed"] == pytest.approx(math.sqrt(G0 * 0.35 / 4), rel=RT)
     assert d["critical_speed"] == pytest.approx(0.926327, **sheet(0.926327))
     assert d["radius_source"] == "rim_radius" and "radius_part" not in d
     # header: at 5 km/h stable with margin 1.49935
-    d = js(capsys, str(EX / "bicycle_wheel.yaml"), "--speed", "5 km/h")
+    d = ok(cli("rollcheck", str(EX / "bicycle_wheel.yaml"), "--speed", "5 km/h", "--json"))
     assert d["speed"] == pytest.approx(5 / 3.6, rel=1e-15)  # exact unit factor, one division
     assert d["stable"] is True
     assert d["margin"] == pytest.approx(1.49935, **sheet(1.49935))
 
 
-def test_R4_thick_coin_example(capsys):
+def test_R4_thick_coin_example(cli):
     a, h = 9.525e-3, 1.52e-3
-    d = js(capsys, str(EX / "thick_coin.yaml"), "--g", "9.81")
+    d = ok(cli("rollcheck", str(EX / "thick_coin.yaml"), "--g", "9.81", "--json"))
     assert d["critical_spin"] == pytest.approx(18.6070, **sheet(18.6070))
     assert d["critical_speed"] == pytest.approx(0.177232, **sheet(0.177232))
     assert d["critical_spin"] == pytest.approx(math.sqrt(9.81 * (3 * a * a + h * h) / (9 * a**3)), rel=RT)
     thin = math.sqrt(9.81 * a / 3)
     assert d["critical_speed"] / thin == pytest.approx(1.00424, **sheet(1.00424))
     # header: the default g prints 0.177202
-    d = js(capsys, str(EX / "thick_coin.yaml"))
+    d = ok(cli("rollcheck", str(EX / "thick_coin.yaml"), "--json"))
     assert d["critical_speed"] == pytest.approx(0.177202, **sheet(0.177202))
 
 
 # ----------------------------------------------------------------------------- R7: lean dynamics
 
 
-def test_R7_lean_frequency_and_growth(capsys):
+def test_R7_lean_frequency_and_growth(cli):
     a = 9.525e-3
     sc = math.sqrt(9.81 / (3 * a))
     pen = str(EX / "penny.yaml")
-    d = js(capsys, pen, "--g", "9.81", "--spin", repr(1.5 * sc))
+    d = ok(cli("rollcheck", pen, "--g", "9.81", "--spin", repr(1.5 * sc), "--json"))
     assert d["stable"] is True and d["growth_rate"] is None
     assert d["lean_frequency"] == pytest.approx(32.0924, **sheet(32.0924))
     assert d["margin"] == pytest.approx(1.5, rel=RT)
     assert d["lean_frequency_hz"] == pytest.approx(d["lean_frequency"] / (2 * math.pi), rel=1e-15)
-    d = js(capsys, pen, "--g", "9.81", "--spin", repr(0.9 * sc), code=1)
+    d = ok(cli("rollcheck", pen, "--g", "9.81", "--spin", repr(0.9 * sc), "--json"), 1)
     assert d["stable"] is False and d["lean_frequency"] is None
     assert d["growth_rate"] == pytest.approx(12.5119, **sheet(12.5119))
 
@@ -176,22 +167,22 @@ def test_thin_disk_and_hoop_limits(a, m, g):
         assert d["critical_speed"] == pytest.approx(math.sqrt(g * a / k), rel=RT)
 
 
-def test_rounded_rim(capsys):
+def test_rounded_rim(cli):
     # sheet §3.2: a rounded rim only weakens gravity, a -> a - r in the gravity term:
     # thin disk s_c^2 = g (a - r) / (3 a^2)
     a, r = 0.3, 0.02
-    d = js(capsys, "-e", "{shape: disk, radius: 0.3, mass: 2}", "--tyre-radius", "2 cm")
+    d = ok(cli("rollcheck", "-e", "{shape: disk, radius: 0.3, mass: 2}", "--tyre-radius", "2 cm", "--json"))
     assert d["tyre_radius"] == pytest.approx(r, rel=1e-15)
     assert d["critical_spin"] ** 2 == pytest.approx(G0 * (a - r) / (3 * a * a), rel=RT)
     assert "rounded rim" in d["model"]
 
 
-def test_nonlinear_threshold_penny(capsys):
+def test_nonlinear_threshold_penny(cli):
     """The CLI's critical spin is a true threshold of the sheet's reduced equations (§3.1):
     a 1e-5 rad lean grows far below it and stays small just above it."""
     from scipy.integrate import solve_ivp
 
-    d = js(capsys, str(EX / "penny.yaml"))
+    d = ok(cli("rollcheck", str(EX / "penny.yaml"), "--json"))
     m, A, C, a, g = d["mass"], d["I"], d["Is"], d["radius"], d["g"]
     Cc, Ac = C + m * a * a, A + m * a * a
 
@@ -218,9 +209,9 @@ def test_nonlinear_threshold_penny(capsys):
 # ----------------------------------------------------------------------------- circles: R8, R9
 
 
-def test_R8_steady_circle(capsys):
-    d = js(capsys, "-e", "{shape: disk, radius: 0.05, mass: 1}", "--lean", "20", "--circle", "0.5",
-           "--g", "9.81")
+def test_R8_steady_circle(cli):
+    d = ok(cli("rollcheck", "-e", "{shape: disk, radius: 0.05, mass: 1}", "--lean", "20", "--circle", "0.5",
+           "--g", "9.81", "--json"))
     c = d["circle"]
     assert list(c)[:6] == ["lean_deg", "radius", "turn_rate", "spin", "speed", "stable"]
     assert c["lean_deg"] == pytest.approx(20.0, rel=1e-14)  # deg -> rad -> deg, two roundings
@@ -238,9 +229,9 @@ def test_R8_steady_circle(capsys):
     assert "speed" not in d and "stable" not in d and "margin" not in d
 
 
-def test_R9_spinning_in_place(capsys):
-    d = js(capsys, "-e", "{shape: disk, radius: 0.05, mass: 1}", "--lean", "60", "--circle", "0",
-           "--g", "9.81")
+def test_R9_spinning_in_place(cli):
+    d = ok(cli("rollcheck", "-e", "{shape: disk, radius: 0.05, mass: 1}", "--lean", "60", "--circle", "0",
+           "--g", "9.81", "--json"))
     c = d["circle"]
     b = math.radians(60)
     assert c["turn_rate"] == pytest.approx(39.6182, **sheet(39.6182))
@@ -252,11 +243,11 @@ def test_R9_spinning_in_place(capsys):
 
 
 @pytest.mark.parametrize("lean", [5.0, 30.0, 75.0])
-def test_spinning_in_place_limit_hoop(capsys, lean):
+def test_spinning_in_place_limit_hoop(cli, lean):
     # R_G = 0: Omega^2 = m g a/(A cos b), kappa = (3 A sin^2 b + m a^2 cos^2 b) Omega^2 > 0
     m, a = 0.7, 0.4
     A = m * a * a / 2
-    d = js(capsys, "-e", f"{{shape: ring, radius: {a}, mass: {m}}}", "--lean", str(lean), "--circle", "0")
+    d = ok(cli("rollcheck", "-e", f"{{shape: ring, radius: {a}, mass: {m}}}", "--lean", str(lean), "--circle", "0", "--json"))
     c = d["circle"]
     b = math.radians(lean)
     W2 = m * G0 * a / (A * math.cos(b))
@@ -268,12 +259,12 @@ def test_spinning_in_place_limit_hoop(capsys, lean):
     assert c["lean_frequency"] == pytest.approx(math.sqrt(kappa / (A + m * a * a)), rel=1e-10)
 
 
-def test_circle_tends_to_straight_rolling(capsys):
+def test_circle_tends_to_straight_rolling(cli):
     # R_G -> infinity at fixed speed: small lean tan b ~ (C + m a^2) v^2 / (m g a^2 R_G) and
     # the lean frequency of the circle -> that of straight rolling (sheet §3.3 limits)
     m, a, v, R = 1.0, 0.05, 1.0, 1.0e4
     A, C = m * a * a / 4, m * a * a / 2
-    d = js(capsys, "-e", f"{{shape: disk, radius: {a}, mass: {m}}}", "--speed", str(v), "--circle", str(R))
+    d = ok(cli("rollcheck", "-e", f"{{shape: disk, radius: {a}, mass: {m}}}", "--speed", str(v), "--circle", str(R), "--json"))
     c = d["circle"]
     approx_tan = (C + m * a * a) * v * v / (m * G0 * a * a * R)
     # the neglected term is A a sin(b) / ((C + m a^2) R_G) ~ 1e-9 relative
@@ -284,12 +275,12 @@ def test_circle_tends_to_straight_rolling(capsys):
     assert c["stable"] is d["stable"] is True
 
 
-def test_lean_from_speed_and_circle_vs_brentq(capsys):
+def test_lean_from_speed_and_circle_vs_brentq(cli):
     from scipy.optimize import brentq
 
     m, a, v, R = 0.4, 0.5, 1.5, 1.2
     A, C = m * a * a / 2, m * a * a
-    d = js(capsys, str(EX / "hoop.yaml"), "--speed", str(v), "--circle", str(R))
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--speed", str(v), "--circle", str(R), "--json"))
 
     def f(b):  # the circle relation with Omega = v / R_G (sheet §3.3)
         W = v / R
@@ -300,10 +291,10 @@ def test_lean_from_speed_and_circle_vs_brentq(capsys):
     assert d["circle"]["turn_rate"] == pytest.approx(v / R, rel=1e-14)
 
 
-def test_radius_from_speed_and_lean(capsys):
+def test_radius_from_speed_and_lean(cli):
     m, a, v, lean = 0.4, 0.5, 2.0, 25.0
     A, C = m * a * a / 2, m * a * a
-    d = js(capsys, str(EX / "hoop.yaml"), "--speed", str(v), "--lean", str(lean))
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--speed", str(v), "--lean", str(lean), "--json"))
     c = d["circle"]
     b = math.radians(lean)
     R = c["radius"]
@@ -314,11 +305,11 @@ def test_radius_from_speed_and_lean(capsys):
     assert c["speed"] == pytest.approx(v, rel=1e-12)
 
 
-def test_hoop_example_header(capsys):
-    d = js(capsys, str(EX / "hoop.yaml"))
+def test_hoop_example_header(cli):
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--json"))
     assert d["critical_speed"] == pytest.approx(math.sqrt(G0 * 0.5 / 4), rel=RT)
     assert d["critical_speed"] == pytest.approx(1.10717, **sheet(1.10717))
-    d = js(capsys, str(EX / "hoop.yaml"), "--lean", "20", "--circle", "2")
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--lean", "20", "--circle", "2", "--json"))
     c = d["circle"]
     m, a, R, b = 0.4, 0.5, 2.0, math.radians(20)
     A, C = m * a * a / 2, m * a * a
@@ -327,7 +318,8 @@ def test_hoop_example_header(capsys):
     assert c["turn_rate"] == pytest.approx(0.934696, **sheet(0.934696))
     assert c["speed"] == pytest.approx(1.86939, **sheet(1.86939))
     assert c["stable"] is True
-    rc, _, _ = run(capsys, str(EX / "hoop.yaml"), "--speed", "0.8")
+    r = cli("rollcheck", str(EX / "hoop.yaml"), "--speed", "0.8")
+    rc, _, _ = r.code, r.out, r.err
     assert rc == 1
 
 
@@ -361,10 +353,10 @@ def _spoked_oracle() -> tuple[float, float, float, float]:
     return M, (J[0, 0] + J[1, 1]) / 2, J[2, 2], a
 
 
-def test_spoked_wheel_example(capsys):
+def test_spoked_wheel_example(cli):
     m, A, C, a = _spoked_oracle()
     vc = a * math.sqrt(m * G0 * a * A / (C * (C + m * a * a)))
-    d = js(capsys, str(EX / "spoked_wheel.yaml"))
+    d = ok(cli("rollcheck", str(EX / "spoked_wheel.yaml"), "--json"))
     # rbcli places each rod with a rotation and sums 35 tensors: ~1e-13 relative round-off
     assert d["I"] == pytest.approx(A, rel=1e-12)
     assert d["Is"] == pytest.approx(C, rel=1e-12)
@@ -375,70 +367,78 @@ def test_spoked_wheel_example(capsys):
     assert d["radius_source"] == "largest_round_part" and d["radius_part"] == "tyre"
     # hub and spokes raise the critical speed above the bare hoop of the same radius
     assert d["critical_speed"] > math.sqrt(G0 * a / 4)
-    d = js(capsys, str(EX / "spoked_wheel.yaml"), "--speed", "1", code=1)
+    d = ok(cli("rollcheck", str(EX / "spoked_wheel.yaml"), "--speed", "1", "--json"), 1)
     assert d["margin"] == pytest.approx(1.0 / vc, rel=1e-12)
     assert d["margin"] == pytest.approx(0.967582, **sheet(0.967582))
-    d = js(capsys, str(EX / "spoked_wheel.yaml"), "--speed", "1.2")
+    d = ok(cli("rollcheck", str(EX / "spoked_wheel.yaml"), "--speed", "1.2", "--json"))
     assert d["stable"] is True and d["margin"] == pytest.approx(1.16110, **sheet(1.16110))
 
 
 # ----------------------------------------------------------------------------- radius and axle defaults
 
 
-def test_radius_sources_in_text(capsys):
-    rc, out, _ = run(capsys, str(EX / "bicycle_wheel.yaml"))
+def test_radius_sources_in_text(cli):
+    r = cli("rollcheck", str(EX / "bicycle_wheel.yaml"))
+    rc, out, _ = r.code, r.out, r.err
     assert rc == 0 and "rim radius from the body's rim_radius" in out
-    rc, out, _ = run(capsys, str(EX / "penny.yaml"))
+    r = cli("rollcheck", str(EX / "penny.yaml"))
+    rc, out, _ = r.code, r.out, r.err
     assert "rim radius from the largest round part 'coin' (disk" in out
-    rc, out, _ = run(capsys, str(EX / "penny.yaml"), "--radius", "1 cm")
+    r = cli("rollcheck", str(EX / "penny.yaml"), "--radius", "1 cm")
+    rc, out, _ = r.code, r.out, r.err
     assert "rim radius from --radius" in out
-    d = js(capsys, str(EX / "penny.yaml"), "--radius", "1 cm")
+    d = ok(cli("rollcheck", str(EX / "penny.yaml"), "--radius", "1 cm", "--json"))
     assert d["radius"] == pytest.approx(0.01, rel=1e-15) and d["radius_source"] == "--radius"
 
 
-def test_largest_round_part_ignores_holes_and_other_axes(capsys):
+def test_largest_round_part_ignores_holes_and_other_axes(cli):
     body = ("{parts: [{name: wheel, shape: disk, radius: 0.2, mass: 1},"
             " {name: bore, shape: disk, radius: 0.05, mass: 0.01, subtract: true},"
             " {name: big hole, shape: cylinder, radius: 0.5, length: 0.001, mass: 0.001, subtract: true},"
             " {name: crossbar, shape: cylinder, radius: 0.3, length: 0.01, mass: 0.001, axis: [1, 0, 0]},"
             " {name: crossbar2, shape: cylinder, radius: 0.3, length: 0.01, mass: 0.001, axis: [0, 1, 0]}]}")
-    d = js(capsys, "-e", body)
+    d = ok(cli("rollcheck", "-e", body, "--json"))
     assert d["radius"] == 0.2 and d["radius_part"] == "wheel"
 
 
-def test_axle_from_shaft_and_option(capsys):
+def test_axle_from_shaft_and_option(cli):
     # a ring turned onto x: the body's shaft (axis x, through a point) is the default axle
     body = "{shaft: {axis: [1, 0, 0], through: [0, 0.1, 0]}, parts: [{shape: ring, radius: 0.3, mass: 1, axis: [1, 0, 0], at: [0, 0.1, 0]}]}"
-    d = js(capsys, "-e", body)
+    d = ok(cli("rollcheck", "-e", body, "--json"))
     assert d["axle"] == [1.0, 0.0, 0.0] and d["axle_through"] == [0.0, 0.1, 0.0]
     assert d["critical_speed"] == pytest.approx(math.sqrt(G0 * 0.3 / 4), rel=RT)
-    d = js(capsys, "-e", "{shape: ring, radius: 0.3, mass: 1, axis: [0, 1, 0]}", "--axle", "y")
+    d = ok(cli("rollcheck", "-e", "{shape: ring, radius: 0.3, mass: 1, axis: [0, 1, 0]}", "--axle", "y", "--json"))
     assert d["critical_speed"] == pytest.approx(math.sqrt(G0 * 0.3 / 4), rel=RT)
-    rc, _, err = run(capsys, "-e", "{shape: ring, radius: 0.3, mass: 1, axis: [0, 1, 0]}")
+    r = cli("rollcheck", "-e", "{shape: ring, radius: 0.3, mass: 1, axis: [0, 1, 0]}")
+    rc, _, err = r.code, r.out, r.err
     assert rc == 2 and "not a body of revolution about the axle" in err
 
 
 # ----------------------------------------------------------------------------- errors and exit codes
 
 
-def test_not_of_revolution_names_the_difference(capsys):
-    rc, out, err = run(capsys, "-e", "{shape: box, mass: 1, size: [0.1, 0.2, 0.3]}", "--radius", "0.1")
+def test_not_of_revolution_names_the_difference(cli):
+    r = cli("rollcheck", "-e", "{shape: box, mass: 1, size: [0.1, 0.2, 0.3]}", "--radius", "0.1")
+    rc, out, err = r.code, r.out, r.err
     assert rc == 2 and out == ""
     # box: Ixx = m (b^2 + c^2)/12 = 0.0108333, Iyy = m (a^2 + c^2)/12 = 0.00833333, 23 % apart
     assert err.count("\n") == 1 and err.startswith("rbcli: <expr>: not a body of revolution")
     assert "0.00833333 and 0.0108333 kg m²" in err and "23 %" in err
 
 
-def test_com_off_the_axle(capsys):
-    rc, out, err = run(capsys, "-e", "{shape: ring, radius: 0.3, mass: 1, at: [0.01, 0, 0]}")
+def test_com_off_the_axle(cli):
+    r = cli("rollcheck", "-e", "{shape: ring, radius: 0.3, mass: 1, at: [0.01, 0, 0]}")
+    rc, out, err = r.code, r.out, r.err
     assert rc == 2 and "10 mm off the axle" in err and err.count("\n") == 1
     # a rim and hub modelled 2 mm (in x) and 1.5 mm (in y) off the origin: 2.5 mm off
     body = ("{parts: [{shape: ring, radius: 0.3, mass: 1, at: [0.002, 0.0015, 0]},"
             " {shape: disk, radius: 0.03, mass: 0.2, at: [0.002, 0.0015, 0]}]}")
-    rc, out, err = run(capsys, "-e", body)
+    r = cli("rollcheck", "-e", body)
+    rc, out, err = r.code, r.out, r.err
     assert rc == 2 and "2.5 mm off the axle" in err
     # the axle placed through the com is accepted (--through com) if the body is of revolution
-    rc, out, err = run(capsys, "-e", "{shape: ring, radius: 0.3, mass: 1, at: [0.01, 0, 0]}", "--through", "com")
+    r = cli("rollcheck", "-e", "{shape: ring, radius: 0.3, mass: 1, at: [0.01, 0, 0]}", "--through", "com")
+    rc, out, err = r.code, r.out, r.err
     assert rc == 0
 
 
@@ -466,98 +466,101 @@ def test_com_off_the_axle(capsys):
         (["--axle", "0,0,0"], "--axle"),
     ],
 )
-def test_bad_options_exit_2(capsys, args, needle):
-    rc, out, err = run(capsys, str(EX / "hoop.yaml"), *args)
+def test_bad_options_exit_2(cli, args, needle):
+    r = cli("rollcheck", str(EX / "hoop.yaml"), *args)
+    rc, out, err = r.code, r.out, r.err
     assert rc == 2 and out == ""
     assert err.startswith("rbcli: ") and err.count("\n") == 1, err
     assert needle in err
 
 
-def test_no_rim_radius(capsys):
-    rc, _, err = run(capsys, str(EX / "cube.yaml"))
+def test_no_rim_radius(cli):
+    r = cli("rollcheck", str(EX / "cube.yaml"))
+    rc, _, err = r.code, r.out, r.err
     assert rc == 2 and "no rim radius: give --radius" in err
 
 
-def test_exit_codes_subprocess(tmp_path):
+def test_exit_codes_subprocess(cli_proc):
     pen = str(EX / "penny.yaml")
-    cmd = [sys.executable, "-m", "rbcli", "rollcheck", pen]
-    p = subprocess.run([*cmd, "--speed", "0.1", "--json"], capture_output=True, text=True)
-    assert p.returncode == 1 and json.loads(p.stdout)["stable"] is False  # full result printed
-    p = subprocess.run([*cmd, "--speed", "25 cm/s"], capture_output=True, text=True)
-    assert p.returncode == 0 and "STABLE" in p.stdout
-    p = subprocess.run([*cmd, "--radius", "-1"], capture_output=True, text=True)
-    assert p.returncode == 2 and p.stdout == "" and p.stderr.startswith("rbcli: --radius")
-    assert p.stderr.count("\n") == 1
+    p = cli_proc("rollcheck", pen, "--speed", "0.1", "--json")
+    assert p.code == 1 and p.json()["stable"] is False  # full result printed
+    p = cli_proc("rollcheck", pen, "--speed", "25 cm/s")
+    assert p.code == 0 and "STABLE" in p.out
+    p = cli_proc("rollcheck", pen, "--radius", "-1")
+    assert p.code == 2 and p.out == "" and p.err.startswith("rbcli: --radius")
+    assert p.err.count("\n") == 1
 
 
-def test_exit_status_follows_the_motion_asked_about(capsys):
+def test_exit_status_follows_the_motion_asked_about(cli):
     pen = str(EX / "penny.yaml")
     # straight rolling at 0.1 m/s is unstable, but the asked steady circle (R_G = 5 mm) is
     # stable: the circle sets the exit status, the straight verdict is shown alongside
-    d = js(capsys, pen, "--speed", "0.1", "--circle", "0.005")
+    d = ok(cli("rollcheck", pen, "--speed", "0.1", "--circle", "0.005", "--json"))
     assert d["stable"] is False and d["circle"]["stable"] is True
     # ... and a stable straight speed with an unstable circle exits 1
-    d = js(capsys, pen, "--speed", "0.1", "--circle", "0.02", code=1)
+    d = ok(cli("rollcheck", pen, "--speed", "0.1", "--circle", "0.02", "--json"), 1)
     assert d["circle"]["stable"] is False
     # all three given: both verdicts are asked; the straight one fails here
-    d = js(capsys, pen, "--speed", "0.1", "--lean", "60", "--circle", "0", code=1)
+    d = ok(cli("rollcheck", pen, "--speed", "0.1", "--lean", "60", "--circle", "0", "--json"), 1)
     assert d["circle"]["stable"] is True and d["stable"] is False
     # exactly at the critical speed: not stable (the lean drifts)
-    crit = js(capsys, pen)["critical_speed"]
-    d = js(capsys, pen, "--speed", repr(crit), code=1)
+    crit = ok(cli("rollcheck", pen, "--json"))["critical_speed"]
+    d = ok(cli("rollcheck", pen, "--speed", repr(crit), "--json"), 1)
     assert d["growth_rate"] == pytest.approx(0.0, abs=1e-6)
 
 
 # ----------------------------------------------------------------------------- JSON, text, units
 
 
-def test_json_keys_and_order(capsys):
-    d = js(capsys, str(EX / "hoop.yaml"))
+def test_json_keys_and_order(cli):
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--json"))
     assert list(d)[:6] == ["radius", "mass", "I", "Is", "critical_spin", "critical_speed"]
     assert "speed" not in d and "circle" not in d
-    d = js(capsys, str(EX / "hoop.yaml"), "--speed", "3", "--lean", "20", "--circle", "2")
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--speed", "3", "--lean", "20", "--circle", "2", "--json"))
     assert list(d)[:10] == ["radius", "mass", "I", "Is", "critical_spin", "critical_speed",
                             "speed", "stable", "margin", "circle"]
     assert {"radius_source", "tyre_radius", "g", "lean_frequency", "growth_rate", "model"} <= set(d)
     assert "neutral stability (undamped)" in d["model"]
 
 
-def test_json_deterministic(capsys):
-    a = run(capsys, str(EX / "spoked_wheel.yaml"), "--speed", "2", "--json")
-    b = run(capsys, str(EX / "spoked_wheel.yaml"), "--speed", "2", "--json")
-    assert a == b and a[0] == 0
+def test_json_deterministic(cli, cli_proc):
+    args = ("rollcheck", str(EX / "spoked_wheel.yaml"), "--speed", "2", "--json")
+    a, b = cli(*args), cli(*args)
+    assert a == b and a.code == 0
     # and across processes, the same bytes as in-process
-    cmd = [sys.executable, "-m", "rbcli", "rollcheck", str(EX / "spoked_wheel.yaml"), "--speed", "2", "--json"]
-    p1 = subprocess.run(cmd, capture_output=True)
-    p2 = subprocess.run(cmd, capture_output=True)
-    assert p1.returncode == 0 and p1.stdout == p2.stdout == a[1].encode()
+    p1, p2 = cli_proc(*args), cli_proc(*args)
+    assert p1.code == 0 and p1.out == p2.out == a.out
 
 
-def test_units_and_speed_units(capsys):
-    d = js(capsys, str(EX / "bicycle_wheel.yaml"), "--speed", "20 km/h")
+def test_units_and_speed_units(cli):
+    d = ok(cli("rollcheck", str(EX / "bicycle_wheel.yaml"), "--speed", "20 km/h", "--json"))
     assert d["speed"] == pytest.approx(20 / 3.6, rel=1e-15)
-    d = js(capsys, str(EX / "bicycle_wheel.yaml"), "--spin", "300 rpm")
+    d = ok(cli("rollcheck", str(EX / "bicycle_wheel.yaml"), "--spin", "300 rpm", "--json"))
     assert d["spin"] == pytest.approx(300 * 2 * math.pi / 60, rel=1e-15)
     assert d["speed"] == pytest.approx(0.35 * 300 * 2 * math.pi / 60, rel=1e-15)
-    d = js(capsys, str(EX / "hoop.yaml"), "--lean", "0.3 rad", "--circle", "50 cm")
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--lean", "0.3 rad", "--circle", "50 cm", "--json"))
     assert d["circle"]["lean_deg"] == pytest.approx(math.degrees(0.3), rel=1e-14)
     assert d["circle"]["radius"] == 0.5
-    d = js(capsys, str(EX / "hoop.yaml"), "--g", "1 g0")
+    d = ok(cli("rollcheck", str(EX / "hoop.yaml"), "--g", "1 g0", "--json"))
     assert d["g"] == G0
-    rc, out, _ = run(capsys, str(EX / "penny.yaml"), "--units", "mm,g", "--speed", "0.5")
+    r = cli("rollcheck", str(EX / "penny.yaml"), "--units", "mm,g", "--speed", "0.5")
+    rc, out, _ = r.code, r.out, r.err
     # 0.176454 m/s shown in mm/s
     assert rc == 0 and "176.454" in out and "mm/s" in out
 
 
-def test_text_output_content(capsys):
-    rc, out, _ = run(capsys, str(EX / "penny.yaml"), "--speed", "0.1")
+def test_text_output_content(cli):
+    r = cli("rollcheck", str(EX / "penny.yaml"), "--speed", "0.1")
+    rc, out, _ = r.code, r.out, r.err
     assert rc == 1
     for needle in ("critical speed", "0.176454", "UNSTABLE", "margin", "growth rate",
                    "about the contact point", "neutral stability (undamped)", "knife-edge"):
         assert needle in out, needle
-    rc, out, _ = run(capsys, str(EX / "penny.yaml"), "--speed", "0.5")
+    r = cli("rollcheck", str(EX / "penny.yaml"), "--speed", "0.5")
+    rc, out, _ = r.code, r.out, r.err
     assert rc == 0 and "STABLE" in out and "Hz" in out
-    rc, out, _ = run(capsys, str(EX / "hoop.yaml"), "--lean", "20", "--circle", "2")
+    r = cli("rollcheck", str(EX / "hoop.yaml"), "--lean", "20", "--circle", "2")
+    rc, out, _ = r.code, r.out, r.err
     assert rc == 0 and "turn rate" in out and "κ" in out and "R_P" in out
 
 
@@ -565,36 +568,39 @@ def test_text_output_content(capsys):
 
 
 @pytest.mark.parametrize("ext, magic", [("png", b"\x89PNG"), ("svg", b"<svg"), ("pdf", b"%PDF")])
-def test_plots_written(capsys, tmp_path, ext, magic):
+def test_plots_written(cli, tmp_path, ext, magic):
     out = tmp_path / f"roll.{ext}"
-    rc, text, _ = run(capsys, str(EX / "penny.yaml"), "--speed", "0.3", "--plot", str(out))
+    r = cli("rollcheck", str(EX / "penny.yaml"), "--speed", "0.3", "--plot", str(out))
+    rc, text, _ = r.code, r.out, r.err
     assert rc == 0 and out.exists() and str(out) in text
     head = out.read_bytes()[:400]
     assert magic in head
     out2 = tmp_path / f"circle.{ext}"
-    rc, _, _ = run(capsys, str(EX / "hoop.yaml"), "--lean", "20", "--circle", "2", "--plot", str(out2))
+    r = cli("rollcheck", str(EX / "hoop.yaml"), "--lean", "20", "--circle", "2", "--plot", str(out2))
+    rc, _, _ = r.code, r.out, r.err
     assert rc == 0 and magic in out2.read_bytes()[:400]
 
 
-def test_plot_svg_deterministic(capsys, tmp_path):
+def test_plot_svg_deterministic(cli, tmp_path):
     a, b = tmp_path / "a.svg", tmp_path / "b.svg"
-    run(capsys, str(EX / "hoop.yaml"), "--speed", "2", "--plot", str(a))
-    run(capsys, str(EX / "hoop.yaml"), "--speed", "2", "--plot", str(b))
+    cli("rollcheck", str(EX / "hoop.yaml"), "--speed", "2", "--plot", str(a))
+    cli("rollcheck", str(EX / "hoop.yaml"), "--speed", "2", "--plot", str(b))
     assert a.read_bytes() == b.read_bytes()
 
 
-def test_plot_unknown_extension(capsys, tmp_path):
-    rc, out, err = run(capsys, str(EX / "hoop.yaml"), "--plot", str(tmp_path / "x.jpg"))
+def test_plot_unknown_extension(cli, tmp_path):
+    r = cli("rollcheck", str(EX / "hoop.yaml"), "--plot", str(tmp_path / "x.jpg"))
+    rc, out, err = r.code, r.out, r.err
     assert rc == 2 and ".png, .svg, .pdf" in err and not (tmp_path / "x.jpg").exists()
 
 
-def test_plot_never_overwrites_input(capsys, tmp_path, monkeypatch):
+def test_plot_never_overwrites_input(cli, tmp_path):
     body = tmp_path / "wheel.svg"  # a body file whose name has a plot extension
     shutil.copy(EX / "hoop.yaml", body)
     before = body.read_bytes()
-    monkeypatch.chdir(tmp_path)
     for target in (str(body), "./wheel.svg"):
-        rc, out, err = run(capsys, str(body), "--plot", target)
+        r = cli("rollcheck", str(body), "--plot", target, cwd=tmp_path)
+        rc, out, err = r.code, r.out, r.err
         assert rc == 2 and "input file" in err
     assert body.read_bytes() == before
 
@@ -604,3 +610,41 @@ def test_import_is_cheap():
             "print(any(k.split('.')[0] in ('numpy', 'scipy', 'matplotlib') for k in sys.modules))")
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert p.stdout.strip() == "False"
+
+
+# ----------------------------------------------------------------------------- rims off the com (issue 14.3)
+
+
+def test_warnings_are_in_the_json_too(cli):
+    # issue 13.6: as in balance, "warnings" is always there ([] when none), before name/file
+    d = ok(cli("rollcheck", str(EX / "penny.yaml"), "--json"))
+    assert d["warnings"] == [] and list(d)[-3:] == ["warnings", "name", "file"]
+    r = cli("rollcheck", "examples/gyroscope.yaml", "--json")
+    (w,) = r.json()["warnings"]
+    assert r.code == 0 and r.err == f"rbcli: examples/gyroscope.yaml: warning: {w}\n"
+    # the real offset of the rotor's rim circle: its mid-plane at z = 80 mm, the com at
+    # (m_rotor 0.08 + m_axle 0.06) / (m_rotor + m_axle)
+    m_rotor = 7850 * math.pi * 0.075**2 * 0.025
+    d = 0.08 - (m_rotor * 0.08 + 0.05 * 0.06) / (m_rotor + 0.05)
+    assert f"is {d * 1e6:.3g} µm from the centre of mass" in w
+
+
+@pytest.mark.parametrize("args", [[], ["--speed", "3"], ["--lean", "20", "--circle", "1"], ["--json"]])
+def test_a_top_on_its_rim_is_refused(cli, args):
+    r = cli("rollcheck", "examples/top.yaml", *args)
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+    assert r.err.startswith("rbcli: examples/top.yaml: the rim circle of part 'disk' (disk) is 10 mm "
+                            "from the centre of mass along the axle (12.5 % of the rim radius 80 mm)")
+
+
+def test_report_leaves_out_rolling_for_an_off_centre_rim(cli, tmp_path):
+    r = cli("report", "examples/toy_top.yaml", "-o", str(tmp_path / "t.md"))
+    assert r.code == 0, r.err
+    text = (tmp_path / "t.md").read_text(encoding="utf-8")
+    assert "Rolling stability (not included)" in text
+    (why,) = [line for line in text.splitlines() if line.startswith("*rolling stability: ")]
+    assert why.startswith("*rolling stability: left out: the rim circle of part 'cone' (cone) is 8.48 mm")
+    # a rim within 1 %: the section is there, with its warning
+    r = cli("report", "examples/gyroscope.yaml", "-o", str(tmp_path / "g.md"))
+    text = (tmp_path / "g.md").read_text(encoding="utf-8")
+    assert r.code == 0 and "## Rolling stability" in text and "warning: the rim circle of part 'rotor'" in text

@@ -24,6 +24,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rbcli.core import rolling as R
+from rbcli.errors import InputError
 from rbcli.core.rolling import (
     CircleMotion,
     StraightRolling,
@@ -266,7 +267,7 @@ def test_verdict_speed_spin_and_direction():
     assert back.backwards and not by_speed.backwards
     assert back.spin == pytest.approx(-v / a, rel=1e-15)
     assert by_speed.margin == pytest.approx(1.3, rel=1e-14)
-    with pytest.raises(ValueError, match="disagree"):
+    with pytest.raises(InputError, match="disagree"):
         at_speed(st_, v=v, spin=1.01 * v / a)
     with pytest.raises(ValueError, match="speed or a spin"):
         at_speed(st_)
@@ -304,14 +305,14 @@ def test_rounded_rim_only_weakens_gravity():
 
 @pytest.mark.parametrize("r", [0.34, 0.5, -0.01, math.nan])
 def test_bad_tyre_radius_refused(r):
-    with pytest.raises(ValueError, match="tyre radius"):
+    with pytest.raises(InputError, match="tyre radius"):
         straight(Wheel(1.0, 0.09, 0.13), 0.34, r)
 
 
 @pytest.mark.parametrize("a, g", [(0.0, 9.81), (-1.0, 9.81), (0.3, 0.0), (0.3, -9.81),
                                   (math.inf, 9.81)])
 def test_bad_radius_or_gravity_refused(a, g):
-    with pytest.raises(ValueError):
+    with pytest.raises(InputError):
         straight(Wheel(1.0, 0.09, 0.13), a, 0.0, g)
 
 
@@ -586,13 +587,13 @@ def test_lean_for_and_radius_for_round_trip():
     z = lean_for(w, a, 0.0, 0.5, g)
     assert z.lean == 0.0 and z.turn_rate == 0.0 and not z.stable
     assert radius_for(w, a, 0.0, 0.5, g).radius == 0.0
-    with pytest.raises(ValueError, match="no lean"):
+    with pytest.raises(InputError, match="no lean"):
         lean_for(w, a, 1.0, 0.0, g)
-    with pytest.raises(ValueError, match="give the lean"):
+    with pytest.raises(InputError, match="give the lean"):
         lean_for(w, a, 0.0, 0.0, g)
-    with pytest.raises(ValueError, match="straight"):
+    with pytest.raises(InputError, match="straight"):
         radius_for(w, a, 1.0, 0.0, g)
-    with pytest.raises(ValueError, match="lie flat"):
+    with pytest.raises(InputError, match="lie flat"):
         lean_for(w, a, 1e12, 1e-6, g)
 
 
@@ -622,18 +623,18 @@ def test_zero_lean_is_standing_still():
 
 def test_circle_refusals():
     w = thin_disk(0.05)
-    with pytest.raises(ValueError, match="knife-edge"):
+    with pytest.raises(InputError, match="knife-edge"):
         circle(w, 0.05, 0.3, 0.5, 9.81, r=0.01)
-    with pytest.raises(ValueError, match="knife-edge"):
+    with pytest.raises(InputError, match="knife-edge"):
         lean_for(w, 0.05, 1.0, 0.5, 9.81, r=0.01)
-    with pytest.raises(ValueError, match="knife-edge"):
+    with pytest.raises(InputError, match="knife-edge"):
         rollcheck(w, 0.05, 0.01, 9.81, lean_rad=0.3, circle_radius=0.5)
     for bad in (-0.1, math.pi / 2, 2.0):
-        with pytest.raises(ValueError, match="lean"):
+        with pytest.raises(InputError, match="lean"):
             circle(w, 0.05, bad, 0.5, 9.81)
-    with pytest.raises(ValueError, match="circle radius"):
+    with pytest.raises(InputError, match="circle radius"):
         circle(w, 0.05, 0.3, -1.0, 9.81)
-    with pytest.raises(ValueError, match="two of"):
+    with pytest.raises(InputError, match="two of"):
         rollcheck(w, 0.05, lean_rad=0.3)
 
 
@@ -762,7 +763,7 @@ def test_json_keys_and_types():
     doc = slow.to_json()
     for k in ("speed", "stable", "margin"):
         assert k in doc
-    assert doc["stable"] is False and doc["lean_frequency"] is None and not slow.ok
+    assert doc["stable"] is False and doc["lean_frequency"] is None
     full = rollcheck(w, a, 0.0, 9.80665, speed=3.0, lean_rad=math.radians(15), circle_radius=4.0)
     doc = full.to_json()
     assert set(doc["circle"]) >= {"lean_deg", "radius", "turn_rate", "spin", "speed", "stable"}
@@ -815,3 +816,63 @@ def test_lean_for_round_trip_property(v, RG, Ak, CA):
     b = c.lean
     tol = 1e-9 + 8 * np.finfo(float).eps * b / (math.sin(b) * math.cos(b))
     assert radius_for(w, a, v, c.lean, g).radius == pytest.approx(RG, rel=tol)
+
+
+def test_errors_name_their_parameters():
+    """Core errors carry the parameter (no caller reads the message to find the option)."""
+    w = thin_disk(0.05)
+    st_ = straight(w, 0.05)
+    with pytest.raises(InputError) as e:
+        at_speed(st_, v=1.0, spin=1.0)
+    assert e.value.param == "speed" and str(e.value).startswith("--speed, --spin: ")
+    with pytest.raises(InputError) as e:
+        rollcheck(w, 0.05, spin=20.0, circle_radius=0.0)
+    assert e.value.param == "circle" and str(e.value).startswith("--circle, --spin: no lean")
+    with pytest.raises(InputError) as e:
+        rollcheck(w, 0.05, speed=1.0, lean_rad=0.0)
+    assert e.value.param == "lean" and str(e.value).startswith("--lean, --speed: an upright")
+    with pytest.raises(InputError) as e:
+        straight(w, 0.05, 0.06)
+    assert e.value.param == "tyre_radius"
+
+
+@pytest.mark.parametrize("v", [1e-300, 1e-200, 5e-324])
+def test_a_speed_too_small_for_its_circle_is_refused_by_name(v):
+    # issue 15: the lean, ~ (C + m a^2) v^2/(m g a^2 R_G), is below any float: brentq used to
+    # say "f(a) and f(b) must have different signs"
+    w = thin_disk(0.05)
+    with pytest.raises(InputError) as e:
+        rollcheck(w, 0.05, speed=v, circle_radius=1.0)
+    assert e.value.param == "circle" and str(e.value).startswith("--circle, --speed: the speed ")
+    assert "too small" in str(e.value)
+    # a small speed whose lean is still a float is solved
+    c = lean_for(w, 0.05, 1e-100, 1.0)
+    assert 0.0 < c.lean < 1e-190 and c.speed == pytest.approx(1e-100, rel=1e-12)
+
+
+def test_rim_circle_centres_of_the_round_shapes():
+    """The rim circle of each round shape, from its centre of mass (core.rim): a hemisphere's
+    flat face is 3R/8 below its com, a cone's base h/4 (with h from its volume pi R^2 h/3);
+    the others' rim circle is in the plane of their com. Turned over (axis -z), the offset
+    turns too."""
+    from types import SimpleNamespace
+
+    from rbcli.core.rim import rim_circle_centre, rim_offset
+
+    def part(shape, axis=(0.0, 0.0, 1.0), R=0.05, measure=None, com=(0.0, 0.0, 0.0)):
+        return SimpleNamespace(name=shape, shape=shape, radius=R, measure=measure, subtract=False,
+                               com=np.array(com), axis=np.array(axis))
+
+    assert rim_circle_centre(part("hemisphere"))[2] == pytest.approx(-3 * 0.05 / 8, rel=1e-15)
+    h = 0.1
+    cone = part("cone", measure=math.pi * 0.05**2 * h / 3)
+    assert rim_circle_centre(cone)[2] == pytest.approx(-h / 4, rel=1e-14)
+    down = part("cone", axis=(0.0, 0.0, -1.0), measure=math.pi * 0.05**2 * h / 3)
+    assert rim_circle_centre(down)[2] == pytest.approx(h / 4, rel=1e-14)
+    for shape in ("disk", "ring", "cylinder", "sphere", "torus"):
+        assert list(rim_circle_centre(part(shape, com=(0, 0, 0.3)))) == [0.0, 0.0, 0.3]
+    # a rim radius no part has: nothing to measure; a part on another axis is no rim
+    assert rim_offset([part("disk")], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.07) is None
+    assert rim_offset([part("disk", axis=(1.0, 0.0, 0.0))], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.05) is None
+    off = rim_offset([part("hemisphere")], [0, 0, 0.01], [0, 0, 1], [0, 0, 0], 0.05)
+    assert off.offset == pytest.approx(-3 * 0.05 / 8 - 0.01) and not off.upright_equilibrium

@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any
-
 import typer
 
 from rbcli.cli import common as c
@@ -13,7 +10,8 @@ from rbcli.cli.app import MANUAL, app
 HELP = """Stability of a wheel, disk or hoop rolling on a rough floor: the critical speed.
 
 The body must be a body of revolution about its axle (--axle, default the body's
-shaft, else body z) with its centre of mass on the axle. It rolls without slipping
+shaft, else body z) with its centre of mass on the axle and its rim circle in the
+plane of the centre of mass (within 1 % of the radius; a cone on its base rim is refused). It rolls without slipping
 on its rim, radius a (--radius, default the body's rim_radius, else the largest
 round part coaxial with the axle; the output says which). Straight upright rolling
 is stable (neutrally: undamped, a small lean oscillates) when the spin s satisfies
@@ -50,250 +48,30 @@ def rollcheck(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    from rbcli.errors import InputError
+    from rbcli.api.rollcheck import RollcheckOptions, run
+    from rbcli.render import rollcheck as rr
     from rbcli.render.fmt import DisplayUnits
 
     e = c.env()
     du = DisplayUnits.parse(units)
-    # --- option values (checked before the body is read: bad usage is bad usage)
-    n_axle = c.direction(axle, "--axle") if axle is not None else None
-    p_through = c.point(through, "--through") if through is not None else None
-    a_opt = c.positive(c.quantity(radius, "length", "--radius"), "--radius", "the rim radius") if radius is not None else None
-    r = c.quantity(tyre_radius, "length", "--tyre-radius")
-    if not r >= 0.0 or r != r or r == float("inf"):
-        raise InputError(f"--tyre-radius: must be 0 (knife edge) or a positive length, got {tyre_radius}")
-    gv = c.positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity")
-    v = c.finite(c.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
-    s = c.finite(c.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
-    beta = None
-    if lean is not None:
-        import math
-
-        beta = c.quantity(lean, "angle", "--lean", bare="deg")
-        if not (0.0 <= beta < 0.5 * math.pi):
-            raise InputError(
-                f"--lean: the inward lean from the vertical must be from 0 up to (not including) "
-                f"90 degrees, got {lean}"
-            )
-    R_G = None
-    if circle is not None:
-        R_G = c.quantity(circle, "length", "--circle")
-        if not (R_G >= 0.0 and R_G != float("inf")):
-            raise InputError(f"--circle: the circle radius must be 0 (spinning in place) or positive, got {circle}")
-    asked_speed = v is not None or s is not None
-    if (beta is None) != (R_G is None) and not asked_speed:
-        have, need = ("--lean", "--circle") if beta is not None else ("--circle", "--lean")
-        raise InputError(
-            f"{have}: a steady circle needs two of --lean, --circle and --speed (or --spin); "
-            f"add {need} or --speed"
-        )
-    if R_G is not None and R_G == 0.0 and beta is None and asked_speed:
-        raise InputError(
-            "--circle 0: spinning in place the centre does not move, so --speed cannot fix the "
-            "lean; give --lean instead"
-        )
-
     b = c.load_one(body, expr, e)
-    plot_path = None
-    if plot is not None:
-        plot_path = c.check_plot(plot, b)
-
-    setup = prepare(b, axle=n_axle, through=p_through, radius=a_opt, tyre_radius=r)
-    for w in setup.warnings:
-        e.warn(f"rbcli: {w}")
-    if beta is not None or R_G is not None:
-        if r != 0.0:
-            raise InputError(
-                "--tyre-radius: steady circular rolling (--lean/--circle) is computed for a "
-                "knife-edge rim only (tyre radius 0); the straight-rolling threshold takes a "
-                "rounded rim"
-            )
-    from rbcli.core import rolling as rl
-
-    try:
-        res = rl.rollcheck(setup.wheel, setup.radius, r, gv, speed=v, spin=s, lean_rad=beta, circle_radius=R_G)
-    except ValueError as exc:
-        which = _option_for(str(exc), beta, R_G, v, s)
-        raise InputError(f"{which}: {exc}") from None
-
-    # which verdicts the user asked for (SPEC §4: exit 1 when one is unstable)
-    straight_asked = res.verdict is not None and (res.circle is None or (beta is not None and R_G is not None))
-    circle_asked = res.circle is not None
-    failed = (straight_asked and not res.verdict.stable) or (circle_asked and not res.circle.stable)
-
-    from rbcli.render import rollcheck as rr
-
-    info = rr.Info(
-        body=b,
-        radius_source=setup.radius_source,
-        radius_kind=setup.radius_kind,
-        radius_part=setup.radius_part,
-        axle_source=setup.axle_source,
-        axle_through=setup.through,
-        speed_given=v is not None,
-        spin_given=s is not None,
-        lean_given=beta is not None,
-        circle_given=R_G is not None,
-        straight_asked=straight_asked,
-        circle_asked=circle_asked,
-    )
+    opts = RollcheckOptions.parse(b, axle=axle, through=through, radius=radius,
+                                  tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
+                                  lean=lean, circle=circle)
+    plot_path = c.check_plot(plot, b) if plot is not None else None
+    res = run(b, opts)
+    for w in res.warnings:
+        e.warn(f"rbcli: {res.source}: warning: {w}")
     if plot_path is not None:
-        c.save_plot(rr.plot(res, info), plot_path)
+        c.save_plot(rr.plot(res, res.curves()), plot_path)
+
     def tables(doc) -> None:
-        rr.document(doc, res, info, du, digits)
+        rr.document(doc, res, du, digits)
         if plot_path is not None:
             doc.note(f"plot written to {plot_path}")
 
-    c.emit(e, json_, lambda: rr.to_json(res, info), tables)
-    c.finish(1 if failed else 0)
-
-
-def _option_for(msg: str, beta, R_G, v, s) -> str:
-    """The options a core error is about, for the one-line message."""
-    if "disagree" in msg:
-        return "--speed, --spin"
-    given = [o for o, x in (("--lean", beta), ("--circle", R_G), ("--speed", v), ("--spin", s)) if x is not None]
-    return ", ".join(given) or "rollcheck"
-
-
-@dataclass(frozen=True)
-class Setup:
-    """The wheel of a body and where its axle and rim radius came from (:func:`prepare`).
-
-    wheel : core.rolling.Wheel — A, C about the com, the axle
-    radius : float — m, the rim radius a
-    radius_source : str — where a came from, in words
-    radius_kind : str — "--radius", "rim_radius" or "largest_round_part"
-    radius_part : str | None — the part's name for "largest_round_part"
-    axle_source : str — where the axle and its point came from, in words
-    through : (3,) ndarray — m, the point of the axle line
-    warnings : tuple[str, ...] — for standard error (without the "rbcli: " prefix)
-    """
-
-    wheel: Any
-    radius: float
-    radius_source: str
-    radius_kind: str
-    radius_part: str | None
-    axle_source: str
-    through: Any
-    warnings: tuple[str, ...] = ()
-
-
-def prepare(body, *, axle=None, through=None, radius=None, tyre_radius: float = 0.0) -> Setup:
-    """The rolling wheel of a body, its rim radius and where each came from; shared with report.
-
-    ``axle`` a direction (default the body's shaft, else body z), ``through`` "com",
-    "origin" or [x, y, z] (m; default the body's shaft point, else the origin), ``radius``
-    the rim radius (m; default the body's rim_radius, else the largest round part coaxial
-    with the axle), ``tyre_radius`` (m), which must be smaller than the rim radius. A body
-    that cannot roll, or a tyre as large as the rim, is an InputError (exit 2). Warnings
-    (without the "rbcli: " prefix) are in the result's ``warnings``.
-    """
-    setup = _setup(body, axle, through, radius)
-    if tyre_radius >= setup.radius:
-        from rbcli.errors import InputError
-
-        raise InputError(
-            f"--tyre-radius: the tyre radius {tyre_radius:.6g} m must be smaller than the rim radius "
-            f"a = {setup.radius:.6g} m ({setup.radius_source})"
-        )
-    return setup
-
-
-def _setup(body, n_axle, p_through, a_opt) -> Setup:
-    """Axle line, rim radius and the Wheel (A, C about the com) of a body."""
-    import numpy as np
-
-    from rbcli.core.inertia import combine
-    from rbcli.core.rolling import wheel_from_body
-    from rbcli.errors import InputError
-
-    mp = combine(body.parts)
-    if n_axle is not None:
-        n = np.asarray(n_axle, dtype=float)
-        axle_source = "--axle"
-    elif body.shaft is not None:
-        n = np.asarray(body.shaft.axis, dtype=float)
-        axle_source = "the body's shaft"
-    else:
-        n = np.array([0.0, 0.0, 1.0])
-        axle_source = "body z (default)"
-    n = n / np.linalg.norm(n)
-    if isinstance(p_through, str):
-        P = mp.com.copy() if p_through == "com" else np.zeros(3)
-        through_source = f"--through {p_through}"
-    elif p_through is not None:
-        P = np.asarray(p_through, dtype=float)
-        through_source = "--through"
-    elif body.shaft is not None:
-        P = np.asarray(body.shaft.through, dtype=float)
-        through_source = "the body's shaft"
-    else:
-        P = np.zeros(3)
-        through_source = "the origin"
-    part = None
-    warnings: list[str] = []
-    if a_opt is not None:
-        a, source, kind = a_opt, "--radius", "--radius"
-    elif body.rim_radius is not None:
-        a, source, kind = float(body.rim_radius), "the body's rim_radius", "rim_radius"
-    else:
-        a, source, part = _largest_round_part(body, n, P)
-        kind = "largest_round_part"
-        rim = next(p for p in body.parts if p.name == part)
-        dz = float(np.dot(np.asarray(rim.com, dtype=float) - mp.com, n))
-        if abs(dz) > 1e-6 * a:
-            warnings.append(
-                f"{body.source}: the rim part '{part}' is centred {abs(dz):.6g} m from the "
-                "centre of mass along the axle; the model takes the rim circle in the plane of the "
-                "centre of mass"
-            )
-    try:
-        wheel = wheel_from_body(mp.mass, mp.com, mp.inertia_com, n, axle_through=P, radius=a)
-    except ValueError as exc:
-        raise InputError(f"{body.source}: {exc}") from None
-    return Setup(wheel, float(a), source, kind, part, f"{axle_source}, through {through_source}", P,
-                 tuple(warnings))
-
-
-ROUND = ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone", "torus")
-
-
-def _largest_round_part(body, n, P) -> tuple[float, str, str]:
-    """The largest outer radius of the round, non-subtracted parts coaxial with the axle."""
-    import numpy as np
-
-    from rbcli.errors import InputError
-
-    best = None
-    for p in body.parts:
-        if p.subtract or p.radius is None or p.shape not in ROUND:
-            continue
-        if p.shape != "sphere" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9:
-            continue  # round about another axis: not a rim for this axle
-        d = np.asarray(p.com, dtype=float) - P
-        off = float(np.linalg.norm(d - np.dot(d, n) * n))
-        if off > 1e-6 * p.radius:
-            continue  # not centred on the axle line
-        if best is None or p.radius > best.radius:
-            best = p
-    if best is None:
-        from rbcli.core.inertia import combine
-        from rbcli.core.rolling import wheel_from_body
-
-        mp = combine(body.parts)
-        try:  # a body that cannot roll at all says so first (not of revolution, com off the axle)
-            wheel_from_body(mp.mass, mp.com, mp.inertia_com, n, axle_through=P)
-        except ValueError as exc:
-            raise InputError(f"{body.source}: {exc}") from None
-        raise InputError(
-            f"{body.source}: no rim radius: give --radius, or rim_radius in the body file (no "
-            "round part — ring, disk, cylinder, torus, sphere, ... — is centred on the axle and "
-            "coaxial with it)"
-        )
-    return (float(best.radius), f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)",
-            best.name)
+    c.emit(e, json_, lambda: {**res.to_json(), "file": res.source}, tables)
+    c.finish(res.return_code)
 
 
 MANUAL["rollcheck"] = {
@@ -316,6 +94,18 @@ MANUAL["rollcheck"] = {
         "else the body's rim_radius, else the largest outer radius of the round parts (ring, "
         "disk, cylinder, torus, sphere, hemisphere, cone; not holes) centred on and coaxial "
         "with the axle; the output says which.",
+        "Rims off the centre of mass: rollcheck measures where the rim circle lies along the "
+        "axle from the parts whose outer radius is the rim radius (disk, ring, sphere, torus: "
+        "their own plane; cylinder: the mid-plane of its two end circles; hemisphere: its flat "
+        "face, 3R/8 from its centre of mass; cone: its base, h/4 from its centre of mass; several "
+        "such parts: the mid-plane of the outermost circles). A rim circle off the plane of the "
+        "centre of mass makes upright rolling no equilibrium: the centre of mass is to the side "
+        "of the contact point. Up to 1 % of the rim radius (a lean of 0.57° would bring the centre "
+        "of mass over the rim) the model takes the rim in that plane and warns with the real "
+        "offset; beyond 1 % both straight rolling and steady circles are refused with the offset "
+        "and that reason (exit 2): a cone or hemisphere on its base rim, a top. With a --radius or "
+        "rim_radius that no round part has, there is nothing to measure and the rim is taken in "
+        "the plane of the centre of mass.",
         "Straight rolling: --speed (m/s, or e.g. '20 km/h'; negative = backwards, the verdict "
         "uses |speed|) or --spin (rad/s, or '300 rpm'); both may be given if they agree "
         "(speed = a x spin). The margin is |speed| / critical speed.",
@@ -356,7 +146,8 @@ MANUAL["rollcheck"] = {
          "was negative."),
         ("axle, axle_through, com", "[3] unit axle, a point of the axle line and the centre "
          "of mass, body frame, m."),
-        ("model, name, file", "the model's one-line description; the body's name and source."),
+        ("model, warnings, name, file", "the model's one-line description; the warnings also "
+         "printed on standard error (a list, [] when none); the body's name and source."),
     ],
     "examples": [
         ("rbcli rollcheck examples/penny.yaml",
@@ -370,5 +161,8 @@ MANUAL["rollcheck"] = {
          "Steady circular rolling of a hoop leaning 20 degrees on a 1 m circle."),
         ("rbcli rollcheck examples/spoked_wheel.yaml --plot margin.svg",
          "The spoked wheel's threshold and a plot of the lean frequency against speed."),
+        ("rbcli rollcheck examples/toy_top.yaml",
+         "Refused, exit status 2: the cone's base rim is 8.48 mm (28.3 % of its radius) from the "
+         "centre of mass along the axle, so upright rolling is not an equilibrium."),
     ],
 }

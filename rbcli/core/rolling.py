@@ -27,6 +27,8 @@ from typing import Any
 
 import numpy as np
 
+from rbcli.core.rim import fmt_length as _fmt_length
+
 STANDARD_GRAVITY = 9.80665  # m/s^2
 
 MODEL_NOTE = (
@@ -52,28 +54,41 @@ def _positive(name: str, x: float) -> float:
     return x
 
 
+def _blame(params: tuple[str, ...], message: str) -> Exception:
+    """The error for bad values of the parameters ``params`` (the first one is ``param``):
+    a :class:`rbcli.errors.ParamError` for one, an InputError naming each option for more
+    (``--circle, --speed: ...``). Callers ``raise`` it."""
+    from rbcli.errors import InputError, ParamError, option_name
+
+    if len(params) == 1:
+        return ParamError(params[0], message)
+    return InputError(", ".join(option_name(p) for p in params) + ": " + message, param=params[0])
+
+
+def _param_finite(param: str, what: str, x: float) -> float:
+    x = float(x)
+    if not math.isfinite(x):
+        raise _blame((param,), f"{what} must be a finite number, got {x!r}")
+    return x
+
+
 def _check_geometry(a: float, r: float, g: float) -> tuple[float, float, float]:
-    a = _positive("the rim radius a", a)
-    r = _finite("the tyre radius r", r)
-    g = _positive("gravity g", g)
+    """a, r, g checked; errors are ParamErrors naming ``radius``, ``tyre_radius``, ``g``."""
+    a = _param_finite("radius", "the rim radius a", a)
+    if a <= 0.0:
+        raise _blame(("radius",), f"the rim radius a must be positive, got {a:.6g}")
+    r = _param_finite("tyre_radius", "the tyre radius r", r)
+    g = _param_finite("g", "gravity g", g)
+    if g <= 0.0:
+        raise _blame(("g",), f"gravity g must be positive, got {g:.6g}")
     if r < 0.0:
-        raise ValueError(f"the tyre radius r must be >= 0 (0 = knife edge), got {r:.6g} m")
+        raise _blame(("tyre_radius",), f"the tyre radius r must be >= 0 (0 = knife edge), got {r:.6g} m")
     if r >= a:
-        raise ValueError(
-            f"the tyre radius r = {r:.6g} m must be smaller than the rim radius a = {a:.6g} m"
+        raise _blame(
+            ("tyre_radius",),
+            f"the tyre radius r = {r:.6g} m must be smaller than the rim radius a = {a:.6g} m",
         )
     return a, r, g
-
-
-def _fmt_length(d: float) -> str:
-    d = abs(float(d))
-    if d >= 1.0:
-        return f"{d:.3g} m"
-    if d >= 1e-3:
-        return f"{d * 1e3:.3g} mm"
-    if d >= 1e-6:
-        return f"{d * 1e6:.3g} µm"
-    return f"{d:.3g} m"
 
 
 def _vec(v: Any) -> tuple[float, float, float]:
@@ -412,12 +427,12 @@ def at_speed(
     if v is None and spin is None:
         raise ValueError("give a speed or a spin")
     if v is not None:
-        v = _finite("the speed", v)
+        v = _param_finite("speed", "the speed", v)
     if spin is not None:
-        spin = _finite("the spin", spin)
+        spin = _param_finite("spin", "the spin", spin)
     if v is not None and spin is not None:
         if abs(v - a * spin) > 1e-9 * max(abs(v), abs(a * spin)):
-            raise ValueError(
+            raise _blame(("speed", "spin"),
                 f"the speed {v:.6g} m/s and the spin {spin:.6g} rad/s disagree: rolling "
                 f"needs speed = radius x spin = {a * spin:.6g} m/s"
             )
@@ -559,9 +574,9 @@ def _kappa(m: float, A: float, C: float, a: float, g: float, beta: Any, W: Any, 
 
 
 def _knife_edge_only(r: float) -> None:
-    r = _finite("the tyre radius r", r)
+    r = _param_finite("tyre_radius", "the tyre radius r", r)
     if r != 0.0:
-        raise ValueError(
+        raise _blame(("tyre_radius",),
             "steady circular rolling is computed for a knife-edge rim only (tyre radius 0): "
             "the physics sheet gives the circle relation and its stability for r = 0, and "
             f"a rounded rim (r = {r:.6g} m) changes both beyond a simple a -> a - r"
@@ -599,9 +614,9 @@ def _make_circle(
 
 
 def _check_lean(beta: float) -> float:
-    beta = _finite("the lean", beta)
+    beta = _param_finite("lean", "the lean", beta)
     if not 0.0 <= beta < 0.5 * math.pi:
-        raise ValueError(
+        raise _blame(("lean",),
             f"the lean must be inwards, from 0° up to (not including) 90°; got "
             f"{math.degrees(beta):.6g}°"
         )
@@ -609,9 +624,9 @@ def _check_lean(beta: float) -> float:
 
 
 def _check_RG(RG: float) -> float:
-    RG = _finite("the circle radius", RG)
+    RG = _param_finite("circle", "the circle radius", RG)
     if RG < 0.0:
-        raise ValueError(f"the circle radius must be >= 0, got {RG:.6g} m")
+        raise _blame(("circle",), f"the circle radius must be >= 0, got {RG:.6g} m")
     return RG
 
 
@@ -673,6 +688,7 @@ def lean_for(
     g: float = STANDARD_GRAVITY,
     *,
     r: float = 0.0,
+    params: tuple[str, ...] = ("circle", "speed"),
 ) -> CircleMotion:
     """The steady circle with its centre moving at speed v on a circle of radius R_G.
 
@@ -684,23 +700,26 @@ def lean_for(
 
     Special cases: v = 0 with R_G > 0 returns beta = 0 (standing upright at rest);
     R_G = 0 (spinning in place, the centre does not move) with v != 0 has no lean — a
-    ValueError says so; R_G = 0 with v = 0 is satisfied by every lean — a ValueError asks
-    for the lean. A lean so close to 90° that it cannot be resolved also raises.
-    Knife edge only (r must be 0). Sheet §3.3.
+    :class:`rbcli.errors.InputError` says so; R_G = 0 with v = 0 is satisfied by every lean —
+    an InputError asks for the lean. A lean so close to 90° that it cannot be resolved, or so
+    close to 0 that it is below the smallest float (a speed like 1e-300 m/s), also raises.
+    These errors name ``params``, the parameters that gave the circle radius and the speed
+    (default ``("circle", "speed")``). Knife edge only (r must be 0). Sheet §3.3.
     """
     from scipy.optimize import brentq
 
     _knife_edge_only(r)
     a, _, g = _check_geometry(a, 0.0, g)
-    v = abs(_finite("the speed", v))
+    v = abs(_param_finite(params[-1], "the speed", v))
     RG = _check_RG(R_G)
     if RG == 0.0:
         if v == 0.0:
-            raise ValueError(
+            raise _blame(params,
                 "spinning in place (circle radius 0) has the centre at rest at every lean: "
                 "give the lean instead of the speed"
             )
-        raise ValueError(
+        raise _blame(
+            params,
             f"no lean in (0°, 90°) gives speed {v:.6g} m/s on a circle of radius 0: "
             "spinning in place the centre does not move (its speed is 0)"
         )
@@ -710,7 +729,10 @@ def lean_for(
 
     def f(beta: float) -> float:
         W, _, _ = _circle_arrays(m, A, C, a, g, beta, RG)
-        return math.log(float(W) * RG / v)
+        ratio = float(W) * RG / v
+        if ratio == 0.0 or ratio == math.inf:  # under- or overflow: still the right sign
+            return -800.0 if ratio == 0.0 else 800.0
+        return math.log(ratio)
 
     lo = 1e-300
     # the small-lean solution tan(beta) ~ (C + m a^2) v^2 / (m g a^2 R_G) underestimates
@@ -719,9 +741,21 @@ def lean_for(
     lo = max(lo, 0.5 * approx)
     if f(lo) > 0.0:
         lo = 1e-300
+        if f(lo) > 0.0:
+            # tan(beta) ~ (C + m a^2) v^2 / (m g a^2 R_G), in logarithms (it underflows)
+            e10 = (math.log10(C + m * a * a) + 2.0 * math.log10(v)
+                   - math.log10(m * g * a * a * RG))
+            raise _blame(
+                params,
+                f"the speed {v:.6g} m/s is too small for a circle of radius {RG:.6g} m: the "
+                f"steady circle would lean about 1e{math.floor(e10)} rad, below the smallest "
+                f"lean that can be resolved ({lo:g} rad); give a larger speed, or the lean "
+                "instead of the speed",
+            )
     hi = 0.5 * math.pi * (1.0 - 1e-15)
     if not f(hi) > 0.0:
-        raise ValueError(
+        raise _blame(
+            params,
             f"no lean in (0°, 90°) can be resolved for speed {v:.6g} m/s on a circle of "
             f"radius {RG:.6g} m: the wheel would have to lie flat"
         )
@@ -737,6 +771,7 @@ def radius_for(
     g: float = STANDARD_GRAVITY,
     *,
     r: float = 0.0,
+    params: tuple[str, ...] = ("lean", "speed"),
 ) -> CircleMotion:
     """The steady circle at lean beta whose centre moves at speed |v|.
 
@@ -744,17 +779,19 @@ def radius_for(
     R_G >= 0 in closed form (the positive root of the quadratic, cancellation free):
     R_G = [c v^2 + sqrt(c^2 v^4 + 4 K v^2 A a sin beta)] / (2 K), c = C + m a^2,
     K = m g a^2 tan beta. v = 0 gives R_G = 0 (spinning in place). beta = 0 with v != 0 is
-    straight rolling (R_G -> oo): ValueError. Knife edge only.
+    straight rolling (R_G -> oo): an :class:`rbcli.errors.InputError` naming ``params`` (the
+    parameters that gave the lean and the speed). Knife edge only.
     """
     _knife_edge_only(r)
     a, _, g = _check_geometry(a, 0.0, g)
-    v = abs(_finite("the speed", v))
+    v = abs(_param_finite(params[-1], "the speed", v))
     beta = _check_lean(lean_rad)
     m, A, C = wheel.mass, wheel.A, wheel.C
     if beta == 0.0:
         if v == 0.0:
             return _make_circle(wheel, a, g, 0.0, 0.0)
-        raise ValueError(
+        raise _blame(
+            params,
             "an upright wheel (lean 0) moving at a speed rolls straight (circle radius "
             "infinite): use the straight-rolling verdict"
         )
@@ -811,15 +848,6 @@ class RollCheck:
     verdict: Verdict | None = None
     circle: CircleMotion | None = None
 
-    @property
-    def ok(self) -> bool:
-        """False when a stability the user asked about fails (straight at the speed, or the
-        circle): SPEC §4 exit code 1."""
-        bad = (self.verdict is not None and not self.verdict.stable) or (
-            self.circle is not None and not self.circle.stable
-        )
-        return not bad
-
     def to_json(self) -> dict[str, Any]:
         """The ``rollcheck`` JSON document (SPEC §3): the keys of
         :meth:`StraightRolling.to_json`, then those of :meth:`Verdict.to_json` only when a
@@ -850,8 +878,9 @@ def rollcheck(
     - ``lean_rad`` and ``circle_radius``: :func:`circle`;
     - ``circle_radius`` and a speed, no lean: :func:`lean_for`;
     - ``lean_rad`` and a speed, no circle radius: :func:`radius_for`;
-    - ``lean_rad`` or ``circle_radius`` alone: ValueError.
-    A circle with a rounded rim (r > 0) raises ValueError (knife edge only).
+    - ``lean_rad`` or ``circle_radius`` alone: :class:`rbcli.errors.ParamError`.
+    A circle with a rounded rim (r > 0) raises a ParamError (knife edge only). Errors of
+    the circle name the parameters given (``lean``, ``circle``, ``speed``, ``spin``).
     """
     st = straight(wheel, a, r, g)
     verdict = None
@@ -863,13 +892,78 @@ def rollcheck(
             circ = circle(wheel, a, lean_rad, circle_radius, g, r=r)
         elif verdict is None:
             which = "lean" if lean_rad is not None else "circle radius"
-            raise ValueError(
+            raise _blame(
+                ("lean",) if lean_rad is not None else ("circle",),
                 f"a steady circle needs two of lean, circle radius and speed; only the "
                 f"{which} was given"
             )
-        elif circle_radius is not None:
-            circ = lean_for(wheel, a, verdict.speed, circle_radius, g, r=r)
         else:
-            assert lean_rad is not None
-            circ = radius_for(wheel, a, verdict.speed, lean_rad, g, r=r)
+            given = tuple(p for p, x in (("speed", speed), ("spin", spin)) if x is not None)
+            if circle_radius is not None:
+                circ = lean_for(wheel, a, verdict.speed, circle_radius, g, r=r,
+                                params=("circle", *given))
+            else:
+                assert lean_rad is not None
+                circ = radius_for(wheel, a, verdict.speed, lean_rad, g, r=r,
+                                  params=("lean", *given))
     return RollCheck(st, verdict, circ)
+
+
+# --------------------------------------------------------------------------- figure data
+
+
+@dataclass(frozen=True)
+class Curves:
+    """The arrays of the ``rollcheck`` figure (:func:`curves`), ready to draw.
+
+    Attributes
+    ----------
+    speeds : (N,) ndarray — m/s, speed of the centre from 0 to ``max(2.5 v_c, 1.25 |v|)``
+    nu2 : (N,) ndarray — rad^2/s^2, squared lean frequency of straight rolling at each speed
+    lean_frequency : (N,) ndarray — rad/s, sqrt(nu2) where nu2 > 0, else 0
+    growth_rate : (N,) ndarray — 1/s, sqrt(-nu2) where nu2 < 0, else 0
+    critical_speed : float — m/s, v_c
+    circle_radii : (M,) ndarray or None — m, R_G from 0 to ``max(10 a, 2 R_G asked)``
+        (only with a circle)
+    circle_leans_deg : (K,) ndarray or None — degrees, 0.25 to 85
+    circle_kappa : (K, M) ndarray or None — N m, lean stiffness of each steady circle
+        (> 0 stable)
+    circle_speed : (K, M) ndarray or None — m/s, speed of the centre Omega R_G on each
+    """
+
+    speeds: np.ndarray
+    nu2: np.ndarray
+    lean_frequency: np.ndarray
+    growth_rate: np.ndarray
+    critical_speed: float
+    circle_radii: np.ndarray | None = None
+    circle_leans_deg: np.ndarray | None = None
+    circle_kappa: np.ndarray | None = None
+    circle_speed: np.ndarray | None = None
+
+
+def curves(check: RollCheck, n_speeds: int = 501, n_leans: int = 200, n_radii: int = 220) -> Curves:
+    """The figure's arrays for a :class:`RollCheck`: nu^2 against speed (:func:`margin_curve`)
+    and, when a circle was asked for, kappa and the speed of the centre on a (lean, circle
+    radius) grid (:func:`stability_map`, sheet §3.3)."""
+    st = check.straight
+    w = st.wheel
+    vc = st.critical_speed
+    vmax = 2.5 * vc
+    if check.verdict is not None:
+        vmax = max(vmax, 1.25 * abs(check.verdict.speed))
+    speeds = np.linspace(0.0, vmax, n_speeds)
+    nu2 = margin_curve(w, st.radius, st.tyre_radius, st.g, speeds)
+    out = dict(speeds=speeds, nu2=nu2, lean_frequency=np.sqrt(np.clip(nu2, 0.0, None)),
+               growth_rate=np.sqrt(np.clip(-nu2, 0.0, None)), critical_speed=vc)
+    if check.circle is not None:
+        a = st.radius
+        rmax = max(10.0 * a, 2.0 * check.circle.radius)
+        leans_deg = np.linspace(0.25, 85.0, n_leans)
+        radii = np.linspace(0.0, rmax, n_radii)
+        kappa = stability_map(w, a, st.g, np.radians(leans_deg), radii)
+        W, _, _ = _circle_arrays(w.mass, w.A, w.C, a, st.g, np.radians(leans_deg)[:, None],
+                                 radii[None, :])
+        out.update(circle_radii=radii, circle_leans_deg=leans_deg, circle_kappa=kappa,
+                   circle_speed=W * radii[None, :])
+    return Curves(**out)

@@ -1,78 +1,23 @@
-"""Tables, JSON and the figure of ``rbcli rollcheck``."""
+"""Tables and the figure of ``rbcli rollcheck`` (the JSON is the result's ``to_json()``).
+
+Everything here is formatting: the numbers and the figure's arrays come finished from
+:class:`rbcli.api.rollcheck.RollcheckResult` (``curves()``)."""
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.core.rolling import RollCheck
-from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num
 from rbcli.render.text import Doc
 
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.rollcheck import RollcheckResult
+    from rbcli.core.rolling import Curves
+
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
-
-
-@dataclass(frozen=True)
-class Info:
-    """What the command knows besides the physics: where the inputs came from."""
-
-    body: Body
-    radius_source: str
-    axle_source: str
-    axle_through: Any
-    radius_kind: str = "--radius"
-    radius_part: str | None = None
-    speed_given: bool = False
-    spin_given: bool = False
-    lean_given: bool = False
-    circle_given: bool = False
-    straight_asked: bool = False
-    circle_asked: bool = False
-
-
-# ----------------------------------------------------------------------------- JSON
-
-SPEC_TOP = ("radius", "mass", "I", "Is", "critical_spin", "critical_speed")
-SPEC_SPEED = ("speed", "stable", "margin")
-
-
-def to_json(res: RollCheck, info: Info) -> dict:
-    """SPEC §3 keys first (radius, mass, I, Is, critical_spin, critical_speed; speed,
-    stable, margin with a speed; circle {...} when asked), then the extras."""
-    core = res.to_json()
-    out: dict[str, Any] = {k: core[k] for k in SPEC_TOP}
-    if res.verdict is not None:
-        out.update({k: core[k] for k in SPEC_SPEED})
-    if res.circle is not None:
-        out["circle"] = core["circle"]
-    out["radius_source"] = info.radius_kind
-    if info.radius_part is not None:
-        out["radius_part"] = info.radius_part
-    for k, v in core.items():
-        if k not in out and k != "model":
-            out[k] = v
-    w = res.straight.wheel
-    out["axle"] = list(w.axle)
-    out["axle_through"] = [float(x) for x in info.axle_through]
-    out["com"] = list(w.com)
-    out["model"] = model_sentence(res)
-    out["name"] = info.body.name
-    out["file"] = info.body.source
-    return out
-
-
-def model_sentence(res: RollCheck) -> str:
-    r = res.straight.tyre_radius
-    rim = "knife-edge rim (tyre radius 0)" if r == 0.0 else f"rounded rim of tube radius r = {r:.6g} m (gravity term a - r)"
-    return (
-        f"{rim} rolling without slip on a rough level floor; I and Is about the centre of "
-        "mass, Is + m a^2 about the contact point; stable means neutral stability (undamped): "
-        "a small lean oscillates, it does not decay"
-    )
 
 
 # ----------------------------------------------------------------------------- tables
@@ -86,12 +31,13 @@ def _rate(du: DisplayUnits, x: float | None, digits: int) -> tuple[str, str]:
     return num(x / f, digits), f"1/{t}"
 
 
-def document(doc: Doc, res: RollCheck, info: Info, du: DisplayUnits, digits: int) -> None:
+def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> None:
+    """The tables of a rolling check, into ``doc``."""
     st = res.straight
     w = st.wheel
-    b = info.body
+    o = res.options
     L, M, I = du.unit("length"), du.unit("mass"), du.unit("inertia")
-    doc.heading(f"{b.name}  ({b.source})")
+    doc.heading(f"{res.name}  ({res.source})")
     rows = [
         ("rim radius a", du.show(st.radius, "length", digits), L),
         ("tyre radius r" + (" (knife edge)" if st.tyre_radius == 0.0 else " (rounded rim)"),
@@ -104,9 +50,9 @@ def document(doc: Doc, res: RollCheck, info: Info, du: DisplayUnits, digits: int
         ("g", du.show(st.g, "acceleration", digits), du.unit("acceleration")),
     ]
     doc.kv("wheel", rows)
-    doc.note(f"rim radius from {info.radius_source}; axle along "
-             f"[{', '.join(num(x, digits) for x in w.axle)}] ({info.axle_source}).")
-    doc.note("model: " + model_sentence(res) + ".")
+    doc.note(f"rim radius from {o.radius_source}; axle along "
+             f"[{', '.join(num(x, digits) for x in w.axle)}] ({o.axle_source}).")
+    doc.note("model: " + res.model + ".")
     doc.kv(
         "straight upright rolling: threshold",
         [
@@ -120,8 +66,8 @@ def document(doc: Doc, res: RollCheck, info: Info, du: DisplayUnits, digits: int
              "m g (a − r) I / (Is (Is + m a²)).")
     v = res.verdict
     if v is not None:
-        given = "--speed" if info.speed_given else "--spin"
-        speed_arg = (_speed_text(v.speed, du, digits) if info.speed_given
+        given = "--speed" if o.speed is not None else "--spin"
+        speed_arg = (_speed_text(v.speed, du, digits) if o.speed is not None
                      else f"{du.show(v.spin, 'angular_speed', digits)} rad/s")
         rows = [
             ("speed v" + (" (backwards)" if v.backwards else ""), du.show(v.speed, "speed", digits), du.unit("speed")),
@@ -139,14 +85,14 @@ def document(doc: Doc, res: RollCheck, info: Info, du: DisplayUnits, digits: int
             if v.growth_rate:
                 rows.append(("e-folding time", num(1.0 / v.growth_rate, digits), "s"))
         doc.kv(f"straight rolling at {given} {speed_arg}", rows)
-        if info.straight_asked:
+        if o.straight_asked:
             doc.note(_straight_verdict(res, du, digits))
         else:
             doc.note("(straight rolling at this speed, for comparison; the steady circle below is "
                      "the motion asked about and sets the exit status)")
     circ = res.circle
     if circ is not None:
-        how = _circle_how(info)
+        how = _circle_how(res)
         rows = [
             ("lean β from the vertical (inwards)", num(circ.lean_deg, digits), "°"),
             ("radius of the centre's circle R_G", du.show(circ.radius, "length", digits), L),
@@ -179,7 +125,7 @@ def _speed_text(v: float, du: DisplayUnits, digits: int) -> str:
     return f"{du.show(v, 'speed', digits)} {du.unit('speed')}"
 
 
-def _straight_verdict(res: RollCheck, du: DisplayUnits, digits: int) -> str:
+def _straight_verdict(res: RollcheckResult, du: DisplayUnits, digits: int) -> str:
     v = res.verdict
     st = res.straight
     assert v is not None
@@ -195,11 +141,12 @@ def _straight_verdict(res: RollCheck, du: DisplayUnits, digits: int) -> str:
             f"roll faster than {_speed_text(st.critical_speed, du, digits)}.")
 
 
-def _circle_how(info: Info) -> str:
-    sp = "--speed" if info.speed_given else "--spin"
-    if info.lean_given and info.circle_given:
+def _circle_how(res: RollcheckResult) -> str:
+    o = res.options
+    sp = "--speed" if o.speed is not None else "--spin"
+    if o.lean is not None and o.circle is not None:
         return "from --lean and --circle"
-    if info.circle_given:
+    if o.circle is not None:
         return f"lean solved from {sp} and --circle"
     return f"circle radius solved from {sp} and --lean"
 
@@ -207,22 +154,16 @@ def _circle_how(info: Info) -> str:
 # ----------------------------------------------------------------------------- plot
 
 
-def plot(res: RollCheck, info: Info):
+def plot(res: RollcheckResult, cv: Curves):
     """nu^2 and the lean frequency / growth rate against speed (critical speed marked);
     with a circle, the stable region in the (lean, circle radius) plane instead of the
-    second panel."""
-    from rbcli.core.rolling import margin_curve, stability_map
+    second panel. ``cv`` is ``res.curves()``. Returns the matplotlib Figure."""
     from rbcli.render.plots import figure, style
 
-    st = res.straight
-    w = st.wheel
-    vc = st.critical_speed
-    vmax = 2.5 * vc
-    if res.verdict is not None:
-        vmax = max(vmax, 1.25 * abs(res.verdict.speed))
-    speeds = np.linspace(0.0, vmax, 501)
-    nu2 = margin_curve(w, st.radius, st.tyre_radius, st.g, speeds)
-    fig, axes = figure(f"rollcheck: {info.body.name}", nrows=1, ncols=2, size=(9.0, 4.0))
+    vc = cv.critical_speed
+    speeds, nu2 = cv.speeds, cv.nu2
+    vmax = float(speeds[-1])
+    fig, axes = figure(f"rollcheck: {res.name}", nrows=1, ncols=2, size=(9.0, 4.0))
     ax = axes[0][0]
     ax.axhline(0.0, color="0.6", linewidth=0.8)
     ax.plot(speeds, nu2, label="ν² (> 0 stable: oscillation; < 0 unstable: growth)", **style(0))
@@ -239,12 +180,10 @@ def plot(res: RollCheck, info: Info):
     ax.legend(loc="upper left")
 
     ax = axes[0][1]
-    if res.circle is None:
-        freq = np.sqrt(np.clip(nu2, 0.0, None))
-        grow = np.sqrt(np.clip(-nu2, 0.0, None))
+    if res.circle is None or cv.circle_kappa is None:
         above = speeds >= vc
-        ax.plot(speeds[above], freq[above], label="lean frequency ν [rad/s]", **style(0))
-        ax.plot(speeds[~above], grow[~above], label="growth rate √(−ν²) [1/s]", **style(1))
+        ax.plot(speeds[above], cv.lean_frequency[above], label="lean frequency ν [rad/s]", **style(0))
+        ax.plot(speeds[~above], cv.growth_rate[~above], label="growth rate √(−ν²) [1/s]", **style(1))
         ax.axvline(vc, **style(2))
         ax.axvspan(0.0, vc, color="0.92", zorder=0)
         if res.verdict is not None:
@@ -257,19 +196,11 @@ def plot(res: RollCheck, info: Info):
         ax.legend(loc="upper right")
     else:
         c = res.circle
-        a = st.radius
-        rmax = max(10.0 * a, 2.0 * c.radius)
-        leans_deg = np.linspace(0.25, 85.0, 200)
-        radii = np.linspace(0.0, rmax, 220)
-        kappa = stability_map(w, a, st.g, np.radians(leans_deg), radii)
-        X, Y = np.meshgrid(radii, leans_deg)
+        X, Y = np.meshgrid(cv.circle_radii, cv.circle_leans_deg)
+        kappa, V = cv.circle_kappa, cv.circle_speed
         ax.contourf(X, Y, (kappa > 0.0).astype(float), levels=[-0.5, 0.5, 1.5], colors=["0.92", "white"])
         ax.contour(X, Y, kappa, levels=[0.0], colors="black", linewidths=1.2)
-        # speed of the centre along the steady circles: v = Omega R_G
-        Cc = w.C + w.mass * a * a
-        b = np.radians(Y)
-        W = np.sqrt(w.mass * st.g * a * a * np.tan(b) / (w.A * a * np.sin(b) + Cc * X))
-        V = W * X
+        # dotted: the speed of the centre along the steady circles, v = Omega R_G
         cs = ax.contour(X, Y, V, levels=_speed_levels(V), colors="0.5", linewidths=0.7,
                         linestyles=":")
         ax.clabel(cs, fmt=lambda x: f"{x:g} m/s", fontsize=7)

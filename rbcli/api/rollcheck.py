@@ -1,0 +1,493 @@
+"""When does a rolling wheel, coin or hoop stay up? The service behind ``rbcli rollcheck``.
+
+:func:`rollcheck` reduces a body of revolution to a rolling wheel (mass, the moment I
+across the axle and Is about it, both about the centre of mass), finds its rim radius
+and answers: the critical speed of straight upright rolling; with a speed, the verdict at
+that speed; with two of lean, circle and speed, the steady circle. The physics is
+:mod:`rbcli.core.rolling` (physics sheet ``dynamics.md`` §3, in the repository's
+documentation); this module reads the options once (:class:`RollcheckOptions`), resolves
+the body's defaults and says where each came from.
+
+Only the standard library at module level: numpy and the core load on first use.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from rbcli.api.result import Result
+from rbcli.errors import InputError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.core.rim import RimOffset
+    from rbcli.core.rolling import CircleMotion, Curves, StraightRolling, Verdict, Wheel
+    from rbcli.model import Body, Part
+
+__all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
+
+STANDARD_GRAVITY = 9.80665  # m/s^2
+
+
+def round_parts(body: Body) -> list[Part]:
+    """The parts of ``body`` that could make a rim: round, with an outer radius, not holes
+    (whatever their axis; :class:`RollcheckOptions` keeps those coaxial with the axle)."""
+    from rbcli.core.rim import ROUND_SHAPES
+
+    return [p for p in body.parts if not p.subtract and p.radius is not None and p.shape in ROUND_SHAPES]
+
+
+@dataclass(frozen=True)
+class RollcheckOptions:
+    """The options of a rolling check, parsed and checked, the body's defaults resolved.
+
+    Attributes
+    ----------
+    axle : tuple of 3 floats
+        Unit axle direction in the body frame.
+    through : tuple of 3 floats
+        m, a point of the axle line, body frame.
+    axle_source : str
+        Where the axle and its point came from, in words (``"the body's shaft, through the
+        body's shaft"``, ``"--axle, through the origin"``, ...).
+    radius : float
+        m, the rim radius a (centre to floor when upright).
+    radius_source : str
+        Where a came from, in words: ``"--radius"``, ``"the body's rim_radius"`` or ``"the
+        largest round part 'rim' (ring, coaxial with the axle)"``.
+    radius_kind : str
+        ``"--radius"``, ``"rim_radius"`` or ``"largest_round_part"`` (JSON ``radius_source``).
+    radius_part : str or None
+        The part's name when ``radius_kind`` is ``"largest_round_part"``.
+    tyre_radius : float
+        m, tube radius r of a rounded rim; 0 is a knife edge.
+    g : float
+        m/s², gravity.
+    speed : float or None
+        m/s, speed of the centre for straight rolling (negative: backwards).
+    spin : float or None
+        rad/s, spin about the axle (speed = a x spin).
+    lean : float or None
+        rad, inward lean of a steady circle from the vertical, [0, pi/2).
+    circle : float or None
+        m, radius of the circle the centre runs on (0: spinning in place).
+    rim : rbcli.core.rim.RimOffset or None
+        Where the rim circle lies along the axle, measured from the parts whose outer
+        radius is the rim radius (``offset`` m from the centre of mass, ``fraction`` of the
+        radius); None when no part has that radius.
+    warnings : tuple of str
+        One-line warnings about the resolved defaults (the command line prints them as
+        ``rbcli: FILE: warning: ...``).
+    """
+
+    axle: tuple[float, float, float]
+    through: tuple[float, float, float]
+    axle_source: str
+    radius: float
+    radius_source: str
+    radius_kind: str
+    radius_part: str | None
+    tyre_radius: float = 0.0
+    g: float = STANDARD_GRAVITY
+    speed: float | None = None
+    spin: float | None = None
+    lean: float | None = None
+    circle: float | None = None
+    rim: RimOffset | None = None
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def straight_asked(self) -> bool:
+        """The straight-rolling verdict is a motion asked about (sets the exit status):
+        a speed or spin with no circle, or with both lean and circle."""
+        asked_speed = self.speed is not None or self.spin is not None
+        no_circle = self.lean is None and self.circle is None
+        both = self.lean is not None and self.circle is not None
+        return asked_speed and (no_circle or both)
+
+    @property
+    def circle_asked(self) -> bool:
+        """A steady circle is asked about (lean and/or circle given)."""
+        return self.lean is not None or self.circle is not None
+
+    @classmethod
+    def parse(cls, body: Body, *, axle: Any = None, through: Any = None, radius: Any = None,
+              tyre_radius: Any = None, g: Any = None, speed: Any = None, spin: Any = None,
+              lean: Any = None, circle: Any = None) -> RollcheckOptions:
+        """Read the options of :func:`rollcheck` (see there) and resolve the body's defaults.
+
+        Raises
+        ------
+        rbcli.InputError
+            A value that is not what its option takes (the message starts with the
+            option), a steady circle without two of lean, circle and speed, a tyre radius
+            not smaller than the rim radius, or a body with no rim radius.
+        """
+        from rbcli.api import options as o
+        from rbcli.errors import ParamError
+
+        n_axle = o.direction(axle, "--axle") if axle is not None else None
+        p_through = o.point(through, "--through") if through is not None else None
+        a_opt = (o.positive(o.quantity(radius, "length", "--radius"), "--radius", "the rim radius")
+                 if radius is not None else None)
+        r = o.quantity(tyre_radius, "length", "--tyre-radius") if tyre_radius is not None else 0.0
+        if not (r >= 0.0 and math.isfinite(r)):
+            raise ParamError("tyre_radius", f"must be 0 (knife edge) or a positive length, got {tyre_radius}")
+        gv = (o.positive(o.quantity(g, "acceleration", "--g"), "--g", "gravity")
+              if g is not None else STANDARD_GRAVITY)
+        v = o.finite(o.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
+        s = o.finite(o.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
+        beta = None
+        if lean is not None:
+            beta = o.quantity(lean, "angle", "--lean", bare="deg")
+            if not (0.0 <= beta < 0.5 * math.pi):
+                raise ParamError("lean", "the inward lean from the vertical must be from 0 up to "
+                                 f"(not including) 90 degrees, got {lean}")
+        R_G = None
+        if circle is not None:
+            R_G = o.quantity(circle, "length", "--circle")
+            if not (R_G >= 0.0 and R_G != math.inf):
+                raise ParamError("circle", f"the circle radius must be 0 (spinning in place) or "
+                                 f"positive, got {circle}")
+        asked_speed = v is not None or s is not None
+        if (beta is None) != (R_G is None) and not asked_speed:
+            have, need = ("lean", "--circle") if beta is not None else ("circle", "--lean")
+            raise ParamError(have, "a steady circle needs two of --lean, --circle and --speed (or "
+                             f"--spin); add {need} or --speed")
+        if R_G is not None and R_G == 0.0 and beta is None and asked_speed:
+            raise InputError(
+                "--circle 0: spinning in place the centre does not move, so --speed cannot fix "
+                "the lean; give --lean instead", param="circle")
+
+        axle_v, P, axle_source, a, source, kind, part, rim, warns = _resolve(body, n_axle, p_through, a_opt)
+        if r >= a:
+            raise ParamError("tyre_radius", f"the tyre radius {r:.6g} m must be smaller than the rim "
+                             f"radius a = {a:.6g} m ({source})")
+        if (beta is not None or R_G is not None) and r != 0.0:
+            raise ParamError(
+                "tyre_radius", "steady circular rolling (--lean/--circle) is computed for a "
+                "knife-edge rim only (tyre radius 0); the straight-rolling threshold takes a "
+                "rounded rim")
+        return cls(axle=axle_v, through=P, axle_source=axle_source, radius=a, radius_source=source,
+                   radius_kind=kind, radius_part=part, tyre_radius=r, g=gv, speed=v, spin=s,
+                   lean=beta, circle=R_G, rim=rim, warnings=warns)
+
+
+def _resolve(body: Body, n_axle, p_through, a_opt):
+    """Axle, its point, the rim radius, where each came from, and warnings."""
+    import numpy as np
+
+    from rbcli.core.inertia import combine
+    from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_offset
+
+    mp = combine(body.parts)
+    if n_axle is not None:
+        n = np.asarray(n_axle, dtype=float)
+        axle_source = "--axle"
+    elif body.shaft is not None:
+        n = np.asarray(body.shaft.axis, dtype=float)
+        axle_source = "the body's shaft"
+    else:
+        n = np.array([0.0, 0.0, 1.0])
+        axle_source = "body z (default)"
+    n = n / np.linalg.norm(n)
+    if isinstance(p_through, str):
+        P = mp.com.copy() if p_through == "com" else np.zeros(3)
+        through_source = f"--through {p_through}"
+    elif p_through is not None:
+        P = np.asarray(p_through, dtype=float)
+        through_source = "--through"
+    elif body.shaft is not None:
+        P = np.asarray(body.shaft.through, dtype=float)
+        through_source = "the body's shaft"
+    else:
+        P = np.zeros(3)
+        through_source = "the origin"
+    part = None
+    if a_opt is not None:
+        a, source, kind = a_opt, "--radius", "--radius"
+    elif body.rim_radius is not None:
+        a, source, kind = float(body.rim_radius), "the body's rim_radius", "rim_radius"
+    else:
+        best = _largest_round_part(body, n, P, mp)
+        a, part, kind = float(best.radius), best.name, "largest_round_part"
+        source = f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)"
+    rim = rim_offset(body.parts, mp.com, n, P, a)
+    warnings: list[str] = []
+    if rim is not None and abs(rim.offset) > 1e-6 * a and rim.upright_equilibrium:
+        warnings.append(
+            f"{rim.describe()}; the model takes the rim circle in the plane of the centre of mass "
+            f"(rollcheck refuses rims more than {100 * RIM_OFFSET_LIMIT:g} % of the radius off it)"
+        )
+    return (tuple(float(x) for x in n), tuple(float(x) for x in P),
+            f"{axle_source}, through {through_source}", float(a), source, kind, part, rim,
+            tuple(warnings))
+
+
+def _largest_round_part(body: Body, n, P, mp) -> Part:
+    """The round, non-subtracted part coaxial with the axle with the largest outer radius."""
+    from rbcli.core.rim import rim_candidates
+    from rbcli.errors import Location
+
+    best = None
+    for p in rim_candidates(body.parts, n, P):
+        if best is None or p.radius > best.radius:
+            best = p
+    if best is None:
+        _wheel(body, mp, n, P, None)  # a body that cannot roll at all says so first
+        raise InputError(
+            "no rim radius: give --radius, or rim_radius in the body file (no round part — ring, "
+            "disk, cylinder, torus, sphere, ... — is centred on the axle and coaxial with it)",
+            Location(body.source))
+    return best
+
+
+def _wheel(body: Body, mp, axle, through, radius) -> Wheel:
+    """The body reduced to a rolling wheel; a body that cannot roll is an InputError
+    located at the body."""
+    from rbcli.core.rolling import wheel_from_body
+    from rbcli.errors import Location
+
+    try:
+        return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through, radius=radius)
+    except ValueError as exc:
+        raise InputError(str(exc), Location(body.source)) from None
+
+
+@dataclass(frozen=True)
+class RollcheckResult(Result):
+    """The answer of :func:`rollcheck`.
+
+    Attributes
+    ----------
+    name : str
+        The body's name.
+    source : str
+        The body's file (``"<expr>"``, ``"<text>"`` for bodies given as text).
+    options : RollcheckOptions
+        The options as used (SI), with the provenance of the axle and the rim radius.
+    wheel : rbcli.core.rolling.Wheel
+        mass (kg), ``A`` = I across the axle and ``C`` = Is about it (kg m², about the
+        centre of mass), ``com`` (m) and unit ``axle``.
+    straight : rbcli.core.rolling.StraightRolling
+        The threshold of straight upright rolling: ``critical_spin`` (rad/s),
+        ``critical_speed`` (m/s), ``C_contact`` = Is + m a², ``A_contact`` = I + m a²
+        (kg m²), ``nu2(spin)``.
+    verdict : rbcli.core.rolling.Verdict or None
+        With a speed or spin: ``speed`` (m/s), ``spin`` (rad/s), ``stable``, ``margin``
+        (|speed| / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
+        ``lean_frequency_hz``, ``growth_rate`` (1/s), ``backwards``.
+    circle : rbcli.core.rolling.CircleMotion or None
+        With a steady circle: ``lean`` (rad), ``lean_deg``, ``radius`` R_G (m),
+        ``turn_rate`` (rad/s), ``spin`` (rad/s), ``speed`` (m/s), ``contact_radius`` (m),
+        ``kappa`` (N m), ``stable``, ``lean_frequency`` (rad/s), ``growth_rate`` (1/s).
+    warnings : tuple of str
+        Located one-line warnings (the command line prints them on standard error).
+    """
+
+    name: str
+    source: str
+    options: RollcheckOptions
+    wheel: Wheel
+    straight: StraightRolling
+    verdict: Verdict | None = None
+    circle: CircleMotion | None = None
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def critical_speed(self) -> float:
+        """m/s, the speed above which straight upright rolling is (neutrally) stable."""
+        return self.straight.critical_speed
+
+    @property
+    def critical_spin(self) -> float:
+        """rad/s, critical_speed / radius."""
+        return self.straight.critical_spin
+
+    @property
+    def model(self) -> str:
+        """The model in one sentence (JSON ``model``)."""
+        r = self.straight.tyre_radius
+        rim = ("knife-edge rim (tyre radius 0)" if r == 0.0
+               else f"rounded rim of tube radius r = {r:.6g} m (gravity term a - r)")
+        return (
+            f"{rim} rolling without slip on a rough level floor; I and Is about the centre of "
+            "mass, Is + m a^2 about the contact point; stable means neutral stability (undamped): "
+            "a small lean oscillates, it does not decay"
+        )
+
+    @property
+    def return_code(self) -> int:
+        """1 when a motion asked about is unstable (straight rolling at the speed given,
+        the steady circle asked for), else 0."""
+        failed = ((self.options.straight_asked and self.verdict is not None and not self.verdict.stable)
+                  or (self.circle is not None and not self.circle.stable))
+        return 1 if failed else 0
+
+    def curves(self) -> Curves:
+        """The arrays of the command's figure (:class:`rbcli.core.rolling.Curves`): the
+        squared lean frequency, lean frequency and growth rate against speed and, with a
+        circle, the lean stiffness and speed of steady circles on a (lean, radius) grid."""
+        from rbcli.core.rolling import RollCheck, curves
+
+        return curves(RollCheck(self.straight, self.verdict, self.circle))
+
+    def to_json(self) -> dict[str, Any]:
+        """The JSON ``rbcli rollcheck --json`` prints, less ``file``: SPEC keys first
+        (radius, mass, I, Is, critical_spin, critical_speed; speed, stable, margin with a
+        speed; circle when asked), then the extras."""
+        from rbcli.api.result import jsonable
+        from rbcli.core.rolling import RollCheck
+
+        core = RollCheck(self.straight, self.verdict, self.circle).to_json()
+        out: dict[str, Any] = {k: core[k] for k in _SPEC_TOP}
+        if self.verdict is not None:
+            out.update({k: core[k] for k in _SPEC_SPEED})
+        if self.circle is not None:
+            out["circle"] = core["circle"]
+        out["radius_source"] = self.options.radius_kind
+        if self.options.radius_part is not None:
+            out["radius_part"] = self.options.radius_part
+        for k, v in core.items():
+            if k not in out and k != "model":
+                out[k] = v
+        out["axle"] = list(self.wheel.axle)
+        out["axle_through"] = list(self.options.through)
+        out["com"] = list(self.wheel.com)
+        out["model"] = self.model
+        out["warnings"] = list(self.warnings)
+        out["name"] = self.name
+        return jsonable(out)
+
+
+_SPEC_TOP = ("radius", "mass", "I", "Is", "critical_spin", "critical_speed")
+_SPEC_SPEED = ("speed", "stable", "margin")
+
+
+class OffCentreRim(InputError):
+    """The rim circle is too far off the plane of the centre of mass to roll upright
+    (:data:`rbcli.core.rim.RIM_OFFSET_LIMIT`): no straight-rolling threshold, no steady
+    circle. Exit 2, like any bad input.
+
+    Attributes
+    ----------
+    rim : rbcli.core.rim.RimOffset — the measured offset
+    reason : str — the short reason, one line (the report's)
+    """
+
+    def __init__(self, message: str, where: Any, rim: RimOffset, reason: str) -> None:
+        super().__init__(message, where)
+        self.rim = rim
+        self.reason = reason
+
+
+def _refuse_off_centre_rim(body: Body, o: RollcheckOptions) -> None:
+    """A rim off the plane of the centre of mass (a cone or hemisphere on its base rim, a
+    top): upright rolling is not an equilibrium, so there is no straight-rolling threshold,
+    and the circle model (rim in that plane) does not describe its curves either."""
+    from rbcli.core.rim import RIM_OFFSET_LIMIT
+    from rbcli.errors import Location
+
+    rim = o.rim
+    assert rim is not None
+    asked = ("the steady circle asked for (--lean/--circle) is not computed either: the circle "
+             "model takes the rim in that plane" if o.circle_asked else
+             "the steady-circle model, which takes the rim in that plane, does not apply either")
+    raise OffCentreRim(
+        f"{rim.describe()}: upright rolling is not an equilibrium (the centre of mass is not "
+        "above the contact point: gravity tips the body over or steers it into a curve), so "
+        f"straight rolling has no critical speed; {asked}; rollcheck analyses rims within "
+        f"{100 * RIM_OFFSET_LIMIT:g} % of the radius of the plane of the centre of mass",
+        Location(body.source), rim, f"{rim.describe()}, so upright rolling is not an equilibrium")
+
+
+def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
+    """The rolling check of ``body`` with parsed ``options`` (:meth:`RollcheckOptions.parse`).
+
+    Raises
+    ------
+    rbcli.InputError
+        The body is not of revolution about the axle or its centre of mass is off it, or its
+        rim circle is more than :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` of the radius
+        off the plane of the centre of mass (a cone or hemisphere on its base rim: upright
+        rolling is no equilibrium) — located at the body; or the options ask for a circle
+        that does not exist (naming the options).
+    """
+    from rbcli.core import rolling as rl
+    from rbcli.core.inertia import combine
+
+    o = options
+    wheel = _wheel(body, combine(body.parts), o.axle, o.through, o.radius)
+    if o.rim is not None and not o.rim.upright_equilibrium:
+        _refuse_off_centre_rim(body, o)
+    res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, speed=o.speed, spin=o.spin,
+                       lean_rad=o.lean, circle_radius=o.circle)
+    return RollcheckResult(name=body.name, source=body.source, options=o, wheel=wheel,
+                           straight=res.straight, verdict=res.verdict, circle=res.circle,
+                           warnings=o.warnings)
+
+
+def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any = None,
+              tyre_radius: Any = None, g: Any = None, speed: Any = None, spin: Any = None,
+              lean: Any = None, circle: Any = None) -> RollcheckResult:
+    """Stability of a wheel, disk or hoop rolling without slipping on a rough level floor.
+
+    The body must be of revolution about its axle with its centre of mass on it. Straight
+    upright rolling is (neutrally) stable when the spin s satisfies
+    s² > m g (a − r) I / (Is (Is + m a²)), I across the axle and Is about it, both about
+    the centre of mass (physics sheet ``dynamics.md`` §3.2; thin disk v_c = sqrt(g a/3),
+    hoop sqrt(g a/4)). Every value may be a number in SI units (angles in degrees) or a
+    string as typed on the command line (``"5 km/h"``, ``"300 rpm"``, ``"20 deg"``).
+
+    Parameters
+    ----------
+    body : rbcli.Body
+        From :func:`rbcli.load` or :func:`rbcli.load_text`.
+    axle : str or sequence of 3, optional
+        Axle direction in the body frame (``"x"``, ``[0, 0, 1]``). Default: the body's
+        shaft axis, else body z.
+    through : str or sequence of 3, optional
+        m, a point of the axle line, or ``"com"``/``"origin"``. Default: the body's shaft
+        point, else the origin.
+    radius : float or str, optional
+        m, the rim radius a. Default: the body's ``rim_radius``, else the largest round
+        part (ring, disk, cylinder, torus, sphere, hemisphere, cone; not a hole) centred
+        on the axle and coaxial with it.
+    tyre_radius : float or str, optional
+        m, tube radius r of a rounded rim, 0 <= r < a. Default 0 (knife edge).
+    g : float or str, optional
+        m/s², gravity. Default 9.80665.
+    speed : float or str, optional
+        m/s, speed of the centre for straight rolling (negative: backwards).
+    spin : float or str, optional
+        rad/s, spin about the axle (speed = a x spin); with ``speed`` they must agree.
+    lean : float or str, optional
+        Degrees (a number) or an angle with its unit: inward lean of a steady circle,
+        0 <= lean < 90.
+    circle : float or str, optional
+        m, radius of the circle the centre runs on; 0 = spinning in place. A steady circle
+        needs two of ``lean``, ``circle`` and a speed (knife edge only).
+
+    Returns
+    -------
+    RollcheckResult
+        ``return_code`` is 1 when the motion asked about is unstable.
+
+    Raises
+    ------
+    rbcli.InputError
+        With the message the command line prints (``--speed: ...``, or the body's file
+        for a body that cannot roll).
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> penny = rbcli.load("examples/penny.yaml")
+    >>> r = rbcli.rollcheck(penny, speed="10 cm/s")
+    >>> round(r.critical_speed, 6), r.verdict.stable, r.return_code
+    (0.176454, False, 1)
+    """
+    return run(body, RollcheckOptions.parse(body, axle=axle, through=through, radius=radius,
+                                            tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
+                                            lean=lean, circle=circle))

@@ -1,0 +1,212 @@
+"""``rbcli.rollcheck`` (the Python API) against ``rbcli rollcheck`` (the command line).
+
+The oracle is the command line itself: for every round example and several option sets
+the API's ``to_json()`` is the CLI's ``--json`` less ``file``, its ``return_code`` the
+CLI's exit status, its errors the CLI's one line. The physics is checked in
+``test_cli_rollcheck.py`` and ``test_core_rolling.py``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import rbcli
+from rbcli.api.rollcheck import RollcheckOptions, RollcheckResult, run
+
+ROUND = ["penny", "hoop", "bicycle_wheel", "spoked_wheel", "thick_coin", "frisbee", "top", "gyroscope"]
+#: round, but the rim circle is far off the plane of the centre of mass: refused (issue 14.3)
+OFF_CENTRE = {"top", "toy_top"}
+
+#: (CLI options, the same as API keywords): strings as typed, and SI numbers
+OPTION_SETS = [
+    ([], {}),
+    (["--speed", "3 m/s"], {"speed": "3 m/s"}),
+    (["--speed", "0.1"], {"speed": 0.1}),
+    (["--spin", "300 rpm"], {"spin": "300 rpm"}),
+    (["--speed", "-2", "--g", "9.81"], {"speed": -2.0, "g": 9.81}),
+    (["--lean", "20", "--circle", "1"], {"lean": 20, "circle": 1}),
+    (["--speed", "2", "--circle", "0.5"], {"speed": 2, "circle": "50 cm"}),
+    (["--speed", "1", "--lean", "10"], {"speed": "1 m/s", "lean": "10 deg"}),
+    (["--lean", "30", "--circle", "0"], {"lean": 30.0, "circle": 0}),
+    (["--speed", "1", "--lean", "40", "--circle", "0.3"], {"speed": 1, "lean": 40, "circle": 0.3}),
+]
+
+
+def _cli_json(cli, name, args):
+    r = cli("rollcheck", f"examples/{name}.yaml", *args, "--json")
+    assert r.code in (0, 1), r.err
+    d = r.json()
+    assert d.pop("file") == f"examples/{name}.yaml"
+    return r, d
+
+
+@pytest.mark.parametrize("name", ROUND)
+@pytest.mark.parametrize("args, kw", OPTION_SETS, ids=[" ".join(a) or "default" for a, _ in OPTION_SETS])
+def test_api_json_is_the_cli_json(cli, name, args, kw):
+    body = rbcli.load(f"examples/{name}.yaml")
+    if name in OFF_CENTRE:  # refused alike, with the CLI's line
+        r = cli("rollcheck", f"examples/{name}.yaml", *args, "--json")
+        with pytest.raises(rbcli.InputError) as e:
+            rbcli.rollcheck(body, **kw)
+        assert r.code == 2 and r.out == "" and r.err == f"rbcli: {e.value}\n"
+        return
+    r, d = _cli_json(cli, name, args)
+    res = rbcli.rollcheck(body, **kw)
+    assert res.to_json() == d
+    assert list(res.to_json()) == list(d)  # the same key order
+    assert res.return_code == r.code
+    # the warnings the CLI prints are the result's, and in the JSON
+    assert r.err == "".join(f"rbcli: {res.source}: warning: {w}\n" for w in res.warnings)
+    assert d["warnings"] == list(res.warnings)
+
+
+def test_options_with_units_and_body_defaults():
+    hoop = rbcli.load("examples/hoop.yaml")
+    o = RollcheckOptions.parse(hoop, speed="18 km/h", tyre_radius="1 mm", g="1 g0")
+    assert o.speed == pytest.approx(5.0, rel=1e-15) and o.tyre_radius == pytest.approx(1e-3)
+    assert o.g == 9.80665 and o.axle == (0.0, 0.0, 1.0) and o.through == (0.0, 0.0, 0.0)
+    assert o.radius_kind in ("rim_radius", "largest_round_part", "--radius")
+    assert o.straight_asked and not o.circle_asked
+    o = RollcheckOptions.parse(hoop, lean="0.5 rad", circle=2)
+    assert o.lean == 0.5 and o.circle == 2.0 and o.circle_asked and not o.straight_asked
+    o = RollcheckOptions.parse(hoop, radius="30 cm", axle=[0, 0, 2], through="com")
+    assert o.radius == pytest.approx(0.3) and o.radius_source == "--radius"
+    assert o.axle == (0.0, 0.0, 1.0) and o.axle_source == "--axle, through --through com"
+
+
+def test_typed_fields_penny():
+    penny = rbcli.load("examples/penny.yaml")
+    res = rbcli.rollcheck(penny, speed="10 cm/s")
+    assert isinstance(res, RollcheckResult)
+    a = 9.525e-3
+    assert res.options.radius == pytest.approx(a, rel=1e-12)
+    assert res.critical_speed == pytest.approx(math.sqrt(9.80665 * a / 3), rel=1e-12)
+    assert res.critical_spin == pytest.approx(res.critical_speed / a, rel=1e-15)
+    assert res.wheel.mass == pytest.approx(2.5e-3) and res.wheel.C == pytest.approx(2 * res.wheel.A)
+    assert res.verdict is not None and not res.verdict.stable and res.verdict.margin < 1
+    assert res.circle is None and res.return_code == 1 and res.warnings == ()
+    assert res.name == penny.name and res.source == "examples/penny.yaml"
+    # run(body, parse(...)) is the same answer
+    same = run(penny, RollcheckOptions.parse(penny, speed=0.1))
+    assert same.to_json() == res.to_json()
+
+
+def test_curves_for_the_figure():
+    hoop = rbcli.load("examples/hoop.yaml")
+    res = rbcli.rollcheck(hoop, speed=1.0)
+    cv = res.curves()
+    vc = res.critical_speed
+    assert cv.critical_speed == vc and cv.speeds[0] == 0.0
+    assert cv.speeds[-1] == pytest.approx(max(2.5 * vc, 1.25), rel=1e-15)
+    i = int((cv.speeds > vc).argmax())
+    assert cv.nu2[i - 1] <= 0.0 < cv.nu2[i]  # the sign changes at the critical speed
+    assert cv.nu2 == pytest.approx(res.straight.nu2(cv.speeds / res.options.radius), rel=1e-14)
+    assert cv.circle_kappa is None
+    res = rbcli.rollcheck(hoop, lean=20, circle=2)
+    cv = res.curves()
+    assert cv.circle_kappa.shape == (cv.circle_leans_deg.size, cv.circle_radii.size)
+    assert cv.circle_speed.shape == cv.circle_kappa.shape and (cv.circle_speed >= 0).all()
+
+
+@pytest.mark.parametrize("args, kw", [
+    (["--speed", "abc"], {"speed": "abc"}),
+    (["--radius", "-0.1"], {"radius": -0.1}),
+    (["--tyre-radius", "0.6"], {"tyre_radius": 0.6}),
+    (["--lean", "10"], {"lean": 10}),
+    (["--lean", "90", "--circle", "1"], {"lean": 90, "circle": 1}),
+    (["--speed", "1", "--spin", "1"], {"speed": 1, "spin": 1}),
+    (["--speed", "1", "--circle", "0"], {"speed": 1, "circle": 0}),
+    (["--speed", "1", "--lean", "0"], {"speed": 1, "lean": 0}),
+    (["--circle", "1", "--speed", "1e-300"], {"circle": 1, "speed": 1e-300}),
+    (["--tyre-radius", "1 cm", "--lean", "10", "--circle", "1"], {"tyre_radius": "1 cm", "lean": 10, "circle": 1}),
+    (["--axle", "0,0,0"], {"axle": [0, 0, 0]}),
+    (["--axle", "x"], {"axle": "x"}),
+])
+def test_errors_are_the_cli_line(cli, args, kw):
+    r = cli("rollcheck", "examples/hoop.yaml", *args)
+    assert r.code == 2 and r.err.count("\n") == 1
+    with pytest.raises(rbcli.InputError) as e:
+        rbcli.rollcheck(rbcli.load("examples/hoop.yaml"), **kw)
+    assert r.err == f"rbcli: {e.value}\n"
+
+
+def test_errors_name_their_parameter():
+    hoop = rbcli.load("examples/hoop.yaml")
+    for kw, param in [({"speed": 1, "spin": 1}, "speed"), ({"circle": 1, "speed": 1e-300}, "circle"),
+                      ({"spin": 1, "lean": 0}, "lean"), ({"tyre_radius": 0.6}, "tyre_radius"),
+                      ({"lean": 95, "circle": 1}, "lean")]:
+        with pytest.raises(rbcli.InputError) as e:
+            rbcli.rollcheck(hoop, **kw)
+        assert e.value.param == param, (kw, e.value)
+
+
+def test_body_that_cannot_roll_is_located(cli):
+    block = rbcli.load("examples/rectangular_block.yaml")
+    with pytest.raises(rbcli.InputError) as e:
+        rbcli.rollcheck(block, radius=0.2)
+    assert e.value.where is not None and e.value.where.file == "examples/rectangular_block.yaml"
+    assert "not a body of revolution" in e.value.message
+    r = cli("rollcheck", "examples/rectangular_block.yaml", "--radius", "0.2")
+    assert r.code == 2 and r.err == f"rbcli: {e.value}\n"
+    cube = rbcli.load("examples/cube.yaml")
+    with pytest.raises(rbcli.InputError, match="no rim radius"):
+        rbcli.rollcheck(cube)
+
+
+def test_result_is_frozen():
+    res = rbcli.rollcheck(rbcli.load("examples/penny.yaml"))
+    with pytest.raises(AttributeError):
+        res.name = "x"  # type: ignore[misc]
+
+
+@pytest.mark.parametrize("text, offset, shape", [
+    # a cone, radius 50 mm, height 100 mm: com h/4 = 25 mm above its base rim
+    ("{shape: cone, radius: 50 mm, height: 100 mm, mass: 1}", -0.025, "cone"),
+    # a hemisphere, radius 50 mm: com 3R/8 = 18.75 mm from its flat face's rim
+    ("{shape: hemisphere, radius: 50 mm, mass: 1}", -0.01875, "hemisphere"),
+])
+def test_cone_and_hemisphere_on_their_base_rims_are_refused(cli, text, offset, shape):
+    body = rbcli.load_text(text)
+    o = RollcheckOptions.parse(body)
+    assert o.rim is not None and o.rim.parts[0][1] == shape
+    assert o.rim.offset == pytest.approx(offset, rel=1e-12) and not o.rim.upright_equilibrium
+    for kw, args in [({}, []), ({"speed": 3}, ["--speed", "3"]), ({"lean": 20, "circle": 1}, ["--lean", "20", "--circle", "1"])]:
+        with pytest.raises(rbcli.InputError) as e:
+            rbcli.rollcheck(body, **kw)
+        msg = e.value.message
+        assert f"{abs(offset) * 1e3:.3g} mm from the centre of mass along the axle" in msg
+        assert "not an equilibrium" in msg and "no critical speed" in msg
+        assert ("(--lean/--circle) is not computed" in msg) == ("lean" in kw)
+        r = cli("rollcheck", "-e", text, *args)
+        assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+        assert r.err == f"rbcli: <expr>: {msg}\n"
+
+
+def test_the_offset_is_the_rim_circles_not_the_parts_centre():
+    # issue 14.3: a toy top's cone has its centre of mass 1.52 mm from the body's, but its
+    # base rim (the widest circle) is 8.48 mm away: the refusal quotes the rim
+    body = rbcli.load("examples/toy_top.yaml")
+    o = RollcheckOptions.parse(body)
+    com_z = 0.03151898734177215  # rbcli inertia examples/toy_top.yaml
+    assert o.rim.offset == pytest.approx(0.04 - com_z, rel=1e-12)
+    with pytest.raises(rbcli.InputError, match="is 8.48 mm from the centre of mass"):
+        run(body, o)
+
+
+def test_rims_in_the_plane_of_the_com_are_unchanged():
+    for name in ("penny", "hoop", "bicycle_wheel", "spoked_wheel", "thick_coin", "frisbee"):
+        o = RollcheckOptions.parse(rbcli.load(f"examples/{name}.yaml"))
+        assert o.rim is not None and abs(o.rim.offset) <= 1e-12 * o.radius and o.warnings == ()
+    # small offsets: a warning with the real offset, and the answer
+    res = rbcli.rollcheck(rbcli.load("examples/gyroscope.yaml"))
+    (w,) = res.warnings
+    assert "284 µm from the centre of mass" in w and "0.379 %" in w and res.critical_speed > 0
+    # two wheels on an axle, one each side of the com: the rim's mid-plane is the com's
+    pair = rbcli.load_text("{parts: [{shape: disk, radius: 0.1, mass: 1, at: [0, 0, 0.05]},"
+                           " {shape: disk, radius: 0.1, mass: 1, at: [0, 0, -0.05]}]}")
+    o = RollcheckOptions.parse(pair)
+    assert len(o.rim.parts) == 2 and o.rim.offset == 0.0
+    # a radius no part has: nothing to measure
+    assert RollcheckOptions.parse(rbcli.load("examples/top.yaml"), radius="5 cm").rim is None
