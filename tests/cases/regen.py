@@ -23,7 +23,7 @@ EXAMPLES = sorted(p.stem for p in (ROOT / "examples").glob("*.yaml"))
 
 #: bodies of revolution about z (a wheel, a top, a disk): rollcheck and top apply
 ROUND = ["bicycle_wheel", "car_wheel", "frisbee", "gyroscope", "hoop", "penny", "spoked_wheel",
-         "thick_coin", "top"]
+         "thick_coin", "top", "toy_top"]
 
 
 def cases() -> dict[str, list[list[str]]]:
