@@ -19,6 +19,8 @@ Part 11: Procedures and tolerances for rotors with rigid behaviour".
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -120,42 +122,56 @@ class BalanceOptions:
         rbcli.InputError
             with the message the command line prints (``--planes: ...``).
         """
-        angle_sense = op.choice(angle_sense if angle_sense is not None else "with",
-                                "--angle-sense", ("with", "against"))
+        with _param("angle_sense"):
+            angle_sense = op.choice(angle_sense if angle_sense is not None else "with",
+                                    "--angle-sense", ("with", "against"))
         if tolerance_planes is not None:
-            op.choice(tolerance_planes, "--tolerance-planes", ("bearings", "corrections"))
+            with _param("tolerance_planes"):
+                op.choice(tolerance_planes, "--tolerance-planes", ("bearings", "corrections"))
         t_planes = tolerance_planes or "bearings"
         zero_deg = 0.0
         if zero_mark_deg is not None:
-            zero_deg = op.degrees(zero_mark_deg, "--zero-mark-deg")
+            with _param("zero_mark_deg"):
+                zero_deg = op.degrees(zero_mark_deg, "--zero-mark-deg")
             if not math.isfinite(zero_deg):
                 raise InputError("--zero-mark-deg: must be a finite angle", param="zero_mark_deg")
-        n_shaft = op.direction(shaft, "--shaft") if shaft is not None else None
-        p_through = op.point(through, "--through") if through is not None else None
-        v_mark = op.vector(mark, "dimensionless", "--mark") if mark is not None else None
-        z_planes = (op.distinct(op.numbers(planes, "length", "--planes", counts=(2,)), "--planes",
-                                "correction planes") if planes is not None else None)
+        with _param("shaft"):
+            n_shaft = op.direction(shaft, "--shaft") if shaft is not None else None
+        with _param("through"):
+            p_through = op.point(through, "--through") if through is not None else None
+        with _param("mark"):
+            v_mark = op.vector(mark, "dimensionless", "--mark") if mark is not None else None
+        with _param("planes"):
+            z_planes = (op.distinct(op.numbers(planes, "length", "--planes", counts=(2,)),
+                                    "--planes", "correction planes") if planes is not None else None)
         r_opt = None
         if radius is not None:
-            r_opt = [op.positive(x, "--radius", "the correction radius")
-                     for x in op.numbers(radius, "length", "--radius", counts=(1, 2))]
-        m_step = (op.positive(op.quantity(mass_step, "mass", "--mass-step"), "--mass-step",
-                              "the mass step") if mass_step is not None else None)
+            with _param("radius"):
+                r_opt = [op.positive(x, "--radius", "the correction radius")
+                         for x in op.numbers(radius, "length", "--radius", counts=(1, 2))]
+        with _param("mass_step"):
+            m_step = (op.positive(op.quantity(mass_step, "mass", "--mass-step"), "--mass-step",
+                                  "the mass step") if mass_step is not None else None)
         a_step = None
         if angle_step is not None:
-            a_step = op.degrees(angle_step, "--angle-step")
+            with _param("angle_step"):
+                a_step = op.degrees(angle_step, "--angle-step")
             if not (0.0 < a_step <= 360.0):
                 raise InputError(f"--angle-step: must be more than 0 and at most 360 degrees, got "
                                  f"{angle_step}", param="angle_step")
         n_pos = _positions(positions)
-        W = (op.positive(op.quantity(speed, "angular_speed", "--speed"), "--speed",
-                         "the speed (to turn the other way, reverse --shaft)")
-             if speed is not None else None)
-        z_bear = (op.distinct(op.numbers(bearings, "length", "--bearings", counts=(2,)), "--bearings",
-                              "bearings") if bearings is not None else None)
-        gv = (op.positive(op.quantity(g, "acceleration", "--g"), "--g", "gravity")
-              if g is not None else None)
-        G = op.grade(grade) if grade is not None else None
+        with _param("speed"):
+            W = (op.positive(op.quantity(speed, "angular_speed", "--speed"), "--speed",
+                             "the speed (to turn the other way, reverse --shaft)")
+                 if speed is not None else None)
+        with _param("bearings"):
+            z_bear = (op.distinct(op.numbers(bearings, "length", "--bearings", counts=(2,)),
+                                  "--bearings", "bearings") if bearings is not None else None)
+        with _param("g"):
+            gv = (op.positive(op.quantity(g, "acceleration", "--g"), "--g", "gravity")
+                  if g is not None else None)
+        with _param("grade"):
+            G = op.grade(grade) if grade is not None else None
         # --- which options need which
         if z_planes is None:
             for name, val in (("radius", radius), ("mass_step", mass_step),
@@ -216,6 +232,17 @@ class BalanceOptions:
             g=STANDARD_GRAVITY if gv is None else gv, g_given=gv is not None, grade=G,
             tolerance_planes=t_planes, given=given,
         )
+
+
+@contextmanager
+def _param(name: str) -> Iterator[None]:
+    """An InputError of the option reader (:mod:`rbcli.api.options`) names ``name``."""
+    try:
+        yield
+    except InputError as exc:
+        if exc.param is None:
+            exc.param = name
+        raise
 
 
 def _as_text(v: Any) -> str:

@@ -305,10 +305,10 @@ def _round_one(
 ) -> PlaneCorrection:
     m = pc.mass
     if mass_step is not None:
-        m = math.floor(m / mass_step + 0.5) * mass_step
+        m = _round_to(m, mass_step, "mass_step", "kg")
     reported = pc.angle_deg
     if angle_step is not None and pc.angle_defined:
-        reported = wrap_deg(math.floor(reported / angle_step + 0.5) * angle_step)
+        reported = wrap_deg(_round_to(reported, angle_step, "angle_step_deg", "degrees"))
     if pc.angle_defined:
         phi = math.radians(internal_deg(reported, sense))
     else:  # a zero correction: keep its (meaningless) direction
@@ -325,6 +325,16 @@ def _round_one(
         angle_defined=ok,
         remove_angle_deg=wrap_deg(a + 180.0) if ok else 0.0,
     )
+
+
+def _round_to(x: float, step: float, param: str, unit: str) -> float:
+    """``x`` rounded half up to a multiple of ``step``; a step too small for ``x`` (more
+    multiples than a float can count) is ``param``'s fault."""
+    q = x / step + 0.5
+    if not math.isfinite(q):
+        raise BalanceValueError(
+            param, f"the step {step:g} {unit} is too small to round {x:g} {unit} to a multiple of it")
+    return math.floor(q) * step
 
 
 def round_corrections(
@@ -594,7 +604,7 @@ def split_corrections(
         sp = split_to_positions(pc.mass if pc.angle_defined else 0.0, pc.angle_deg, n, offset_deg)
         ms = sp.masses
         if mass_step is not None:
-            ms = tuple(math.floor(m / mass_step + 0.5) * mass_step for m in ms)
+            ms = tuple(_round_to(m, mass_step, "mass_step", "kg") for m in ms)
         pos = tuple(k + 1 for k in sp.positions)
         sp = Split((ms[0], ms[1]), sp.angles_deg, (pos[0], pos[1]))
         C = sum(
