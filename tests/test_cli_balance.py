@@ -797,3 +797,120 @@ def test_field_any_numbers_give_a_result_or_a_one_line_error(a, p, t, a1):
     code, err = _exit_code("field-balance", "--initial", f"{a!r}@{p!r}", "--trial", f"{t!r} g@0",
                            "--run", f"{a1!r}@{p!r}", "--json")
     assert code in (0, 2), err
+
+
+# ------------------------------------------------------------------------- readings with units
+
+
+def test_field_readings_with_units_issue_example(cli):
+    """Issue 13: '6 mm@30', '10 g@0', '4000 um@110' is 9.08 g, not 0.015 g. By hand (sheet
+    §5.1): V0 = 6 mm at 30°, V1 = 4 mm at 110°, T = 10 g at 0°; |V1 - V0|² = 36 + 16 -
+    48 cos 80° mm², so |W| = |V0| |T| / |V1 - V0| = 60 / 6.60794 = 9.07998 g, and
+    arg W = arg(-V0) - arg(V1 - V0) = 210° - 173.406° = 36.594°."""
+    d = field(cli, "--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4000 um@110")
+    (c,) = d["corrections"]
+    by_hand = 6 * 10 / math.sqrt(36 + 16 - 48 * math.cos(math.radians(80)))
+    assert c["mass"] * 1e3 == pytest.approx(by_hand, rel=1e-12)
+    assert c["mass"] * 1e3 == pytest.approx(9.08, abs=0.005)
+    assert c["angle_deg"] == pytest.approx(36.594, abs=1e-3)
+    assert d["readings"] == {"kind": "displacement", "unit": "m"}
+    # the influence coefficient is in SI: (4 mm - 6 mm)/10 g -> m per kg
+    assert d["influence"][0][0]["magnitude"] == pytest.approx(6.60794e-3 / 0.010, rel=1e-5)
+    # the same readings bare (a relative scale) give the same correction
+    bare = field(cli, "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110")
+    assert bare["corrections"][0]["mass"] == pytest.approx(c["mass"], rel=1e-14)
+    assert bare["readings"] == {"kind": "relative", "unit": None}
+    r = cli("field-balance", "--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4000 um@110")
+    assert r.code == 0 and "µm per g" in r.out and "9.07998" in r.out
+
+
+def test_field_velocity_units_mix_exactly(cli):
+    # in/s and mm/s are one kind: converted exactly (1 in = 25.4 mm), so '0.15748 in/s' is 4 mm/s
+    d = field(cli, "--initial", "6.0 mm/s@30", "--trial", "10 g@0", "--run", "0.15748031496062992 in/s@110")
+    ref = field(cli, "--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110")
+    assert d["readings"]["kind"] == "velocity"
+    assert d["corrections"][0]["mass"] == pytest.approx(ref["corrections"][0]["mass"], rel=1e-12)
+    # mil (25.4 µm) and g (standard gravity, an acceleration) are readings' units
+    assert field(cli, "--initial", "2 mil@30", "--trial", "10 g@0", "--run", "40 um@110")["readings"]["kind"] == "displacement"
+    assert field(cli, "--initial", "0.5 g@30", "--trial", "10 g@0", "--run", "2 m/s^2@110")["readings"]["kind"] == "acceleration"
+
+
+def test_field_trial_mass_bare_is_grams(cli):
+    assert (field(cli, "--initial", "6@30", "--trial", "10@0", "--run", "4@110")["trials"][0]["mass"]
+            == field(cli, "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110")["trials"][0]["mass"] == 0.01)
+    assert "a bare mass is in grams" in " ".join(cli("field-balance", "--help").out.split())
+
+
+@pytest.mark.parametrize("args, says", [
+    # mixed dimensions
+    (["--initial", "6 mm/s@30", "--trial", "10 g@0", "--run", "4 mm@110"], "is a displacement but '6 mm/s@30'"),
+    # bare and unit readings mixed
+    (["--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4.0@110"], "is a bare number but '6 mm@30'"),
+    # an unknown unit is not a label any more
+    (["--initial", "6.0 xyz 12@30", "--trial", "10 g@0", "--run", "4@110"], "unknown unit 'xyz'"),
+    # a unit that is not a vibration reading
+    (["--initial", "6 kg@30", "--trial", "10 g@0", "--run", "4 kg@110"], "not a vibration reading"),
+    # two planes: the sensors' readings must agree too
+    (["--initial", "170 um@112,53 mm/s@78", "--trial", "1.15 g@0", "--run", "235 um@94,58 um@68",
+      "--trial", "1.15 g@0", "--run", "185 um@115,77 um@104"], "--initial: '53 mm/s@78'"),
+])
+def test_field_readings_refused_with_what_was_found(cli, args, says):
+    d = field(cli, *args, code=2)
+    lines = d["err"].strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("rbcli: --") and says in lines[0], d["err"]
+
+
+# ------------------------------------------------------------------------- polar diagrams
+
+
+def _svg_texts(path) -> str:
+    import xml.etree.ElementTree as ET
+
+    root = ET.parse(path).getroot()  # a well-formed SVG document
+    assert root.tag.endswith("svg")
+    return " ".join(t for t in root.itertext())
+
+
+@pytest.mark.parametrize("args", [
+    [TWO_DISK, "--planes", "0,400mm", "--radius", "100mm", "--mass-step", "0.5 g"],
+    [FAN, "--planes", "320,380mm", "--radius", "190mm", "--positions", "6", "--angle-sense", "against"],
+    [TWO_DISK],
+])
+def test_balance_plot_renders(cli, tmp_path, args):
+    path = tmp_path / "polar.svg"
+    r = cli("balance", *args, "--plot", str(path))
+    assert r.code == 0, r.err
+    _svg_texts(path)
+    assert path.stat().st_size > 5000
+    # the figure is what the result's diagram says: arrows per plane, as printed
+    import rbcli
+
+    kw = {"planes": args[2], "radius": args[4]} if len(args) > 1 else {}
+    res = rbcli.balance(rbcli.load(args[0]), **kw)
+    diagram = res.diagram()
+    if kw:
+        assert [p.title.split()[1] for p in diagram.panels] == ["A", "B"]
+        for p, c in zip(diagram.panels, res.to_json()["corrections"] if "--positions" not in args else []):
+            (add,) = [a for a in p.arrows if a.role == "correction"]
+            assert add.mass == c["mass"] and add.angle_deg == c["angle_deg"]
+    else:
+        assert [p.quantity for p in diagram.panels] == ["unbalance", "couple"]
+
+
+def test_field_balance_plot_renders(cli, tmp_path):
+    path = tmp_path / "sheet.svg"
+    r = cli("field-balance", *T20, "--plot", str(path))
+    assert r.code == 0, r.err
+    _svg_texts(path)
+    png = tmp_path / "sheet.png"
+    assert cli("field-balance", "--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4000 um@110",
+               "--plot", str(png)).code == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_plot_path_checked_before_computing(cli, tmp_path):
+    r = cli("balance", TWO_DISK, "--plot", str(tmp_path / "x.txt"))
+    assert r.code == 2 and r.err.startswith("rbcli: --plot") and r.out == ""
+    r = cli("field-balance", "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110",
+            "--plot", str(tmp_path / "x.jpg"))
+    assert r.code == 2 and r.err.startswith("rbcli: --plot") and r.out == ""

@@ -382,6 +382,49 @@ class BalanceResult(Result):
             return int(ExitStatus.CHECK_FAILED)
         return int(ExitStatus.OK)
 
+    def diagram(self):
+        """The polar balancing diagram (what ``--plot`` draws), an
+        :class:`rbcli.api.diagram.Diagram`: with ``planes`` one clock face per correction
+        plane with the rotor's unbalance in that plane as given, the masses to add (as
+        unbalances m r, with their masses) and the residual after adding them; without, the
+        static unbalance U and the couple unbalance P_G. Angles as the command prints them."""
+        from rbcli.api.diagram import Arrow, Diagram, Panel
+        from rbcli.core import balance as B
+
+        u = self.unbalance
+        panels = []
+        if self.installed is None:
+            a, ok = u.angle_of(u.static, u.tol_static)
+            panels.append(Panel("static unbalance U", "unbalance",
+                                (Arrow("initial", "U, as given", abs(u.static), a, ok),)))
+            a, ok = u.angle_of(u.couple, u.tol_couple)
+            panels.append(Panel("couple unbalance P_G (about the com)", "couple",
+                                (Arrow("initial", "P_G, as given", abs(u.couple), a, ok),)))
+        else:
+            fit = self.installed
+            res = fit.residual
+            initial = B.plane_unbalances(u.static, u.moment, *fit.planes)
+            for i, pc in enumerate(fit.pair):
+                arrows = []
+                a, ok = u.angle_of(initial[i], res.tol_plane)
+                arrows.append(Arrow("initial", f"{pc.name}: unbalance as given", abs(initial[i]), a, ok))
+                if self.positions is not None:
+                    sp = self.positions.splits[i]
+                    for m, ang, k in zip(sp.masses, sp.angles_deg, sp.positions):
+                        arrows.append(Arrow("correction", f"{pc.name}: add at position {k}",
+                                            m * pc.radius, ang, m > 0.0, mass=m))
+                else:
+                    arrows.append(Arrow("correction", f"{pc.name}: add", abs(pc.unbalance), pc.angle_deg,
+                                        pc.angle_defined or pc.mass > 0.0, mass=pc.mass))
+                a, ok = u.angle_of(res.plane_unbalances[i], res.tol_plane)
+                arrows.append(Arrow("residual", f"{pc.name}: residual", abs(res.plane_unbalances[i]), a, ok))
+                panels.append(Panel(f"plane {pc.name} (z = {_num(pc.z * 1e3)} mm)", "unbalance", tuple(arrows)))
+        sense = "against" if u.angle_sense == "against" else "with"
+        note = ("seen from the +z end of the shaft, the rotor turning counterclockwise; angles from "
+                "the 0° mark " + ("against" if sense == "against" else "in")
+                + " the direction of rotation, as printed")
+        return Diagram(f"balance: {self.body.name}", tuple(panels), sense, note)
+
     def to_json(self) -> dict[str, Any]:
         """The document ``rbcli balance --json`` prints, less ``file`` (and ``apply``)."""
         from rbcli.api import balancejson as J

@@ -55,6 +55,7 @@ def balance(
     tolerance_planes: str = typer.Option(None, "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11, the default) or corrections (older practice).", show_default=False),
     apply: str = typer.Option(None, "--apply", help="Write the body with the correction masses added as point parts to this YAML file.", show_default=False),
     force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input: the body file, a file it includes or a mesh it reads)."),
+    plot: str = typer.Option(None, "--plot", help="Write the polar balancing diagram (png, svg or pdf): per correction plane the unbalance as given, the masses to add and the residual, on the rotor's clock face (without --planes: U and P_G).", show_default=False),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
@@ -80,7 +81,12 @@ def balance(
         from rbcli.io.writebody import check_output
 
         out_path = check_output(apply, b, force=force)
+    plot_path = c.check_plot(plot, b, others={"--apply": out_path}) if plot is not None else None
     res = api.run(b, o)
+    if plot_path is not None:
+        from rbcli.render import balanceplot
+
+        c.save_plot(balanceplot.plot(res.diagram(), su), plot_path)
     applied = None
     if out_path is not None:
         given = [("--shaft", shaft), ("--through", through), ("--mark", mark),
@@ -187,6 +193,15 @@ MANUAL["balance"] = {
         "also not through a link to one — nor over an existing OUT without --force (exit 2); it "
         "writes a temporary file beside OUT and renames it, so a failed run leaves no half-written "
         "body.",
+        "--plot FILE (png, svg or pdf, by the extension; checked before anything is computed, never "
+        "an input) draws the polar balancing diagram: with --planes one clock face per correction "
+        "plane with the rotor's unbalance in that plane as given (solid), the masses to add as "
+        "unbalances m r (dashed; one arrow per position with --positions, labelled with the mass) "
+        "and the residual after adding them (dotted), in g·mm (or the --units); without --planes "
+        "the static unbalance U and the couple unbalance P_G. The dial reads the angles the "
+        "command prints, 0° (the mark) on the right; the rotor is seen from the +z end of the "
+        "shaft turning counterclockwise, so angles counted against the rotation (--angle-sense "
+        "against) run clockwise on the dial and every vector sits where it is on the rotor.",
     ],
     "json": [
         ("mass", "rotor mass, kg."),
@@ -224,6 +239,8 @@ MANUAL["balance"] = {
         ("rbcli balance examples/fan_impeller.yaml --planes 320,380mm --radius 190mm --bearings 0,200mm --speed '1480 rpm' --grade G6.3 --positions 6 --mass-step '0.5 g'",
          "An overhung fan: a negative static load on the far bearing, weights on the blades, "
          "rbcli's outboard allocation rule flagged."),
+        ("rbcli balance examples/two_disk_rotor.yaml --planes 0,400mm --radius 100mm --mass-step '0.5 g' --plot polar.svg",
+         "The polar diagram: per plane the unbalance as given, the 8.5 g and 12.5 g to add and the residual."),
         ("rbcli balance examples/car_wheel.yaml --planes=-100,100mm --mass-step '5 g' --apply wheel_balanced.yaml",
          "Writes the wheel with its two 45 g weights; 'rbcli balance wheel_balanced.yaml' shows the residual."),
     ],
@@ -234,26 +251,31 @@ MANUAL["balance"] = {
 
 FIELD_HELP = """Field (trial-weight) balancing from vibration readings: the influence-coefficient method.
 
-Readings are amplitude@phase (any one vibration unit: µm, mils, mm/s; the phase in degrees
-from the keyphasor), trial masses mass@angle ('10 g@0'). One plane: --initial V0, one
---trial T and one --run V1 (with the trial on) give H = (V1 - V0)/T and the correction
-W = -V0/H (trial removed; with it left on, add W - T). Two planes: two sensors per run
-(--initial V1,V2), --trial twice (planes A and B) and --run twice (trial A on, then trial B
-on and A removed, or left on with --cumulative) give the 2x2 influence matrix and W =
--alpha^-1 V0, with its condition number (a warning above 50) and a warning for a trial that
-changed no reading by 25 % or 25°. The correction angles are counted in the same sense as
-the trial angles and the phases (they must agree). --trial-radius and --radius move the
-corrections to another radius (m = m_trial r_trial / r).
+Readings are amplitude@phase, the phase in degrees from the keyphasor: all bare numbers
+('6.0@30', one relative scale: the corrections do not depend on it) or all with units of one
+kind, converted exactly: displacement µm, mm, mil ('40 um@30'), velocity mm/s, in/s
+('6 mm/s@30') or acceleration g (standard gravity), m/s² ('0.5 g@30'). Mixed kinds, unknown
+units and a mix of bare and unit readings are refused. Trial masses are mass@angle
+('10 g@0'; a bare mass is in grams). One plane: --initial V0, one --trial T and one --run V1
+(with the trial on) give H = (V1 - V0)/T and the correction W = -V0/H (trial removed; with it
+left on, add W - T). Two planes: two sensors per run (--initial V1,V2), --trial twice (planes
+A and B) and --run twice (trial A on, then trial B on and A removed, or left on with
+--cumulative) give the 2x2 influence matrix and W = -alpha^-1 V0, with its condition number
+(a warning above 50) and a warning for a trial that changed no reading by 25 % or 25°. The
+correction angles are counted in the same sense as the trial angles and the phases (they
+must agree). --trial-radius and --radius (m unless a unit is given) move the corrections to
+another radius (m = m_trial r_trial / r). --plot FILE draws the polar diagram.
 """
 
 @app.command("field-balance", help=FIELD_HELP)
 def field_balance(
-    initial: str = typer.Option(..., "--initial", help="Readings without trial: amplitude@phase, one per sensor (1 or 2), e.g. '6.0@30' or '170@112,53@78'.", show_default=False),
-    trial: list[str] = typer.Option(..., "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (give it twice for two planes; a bare mass is kg).", show_default=False),
+    initial: str = typer.Option(..., "--initial", help="Readings without trial: amplitude@phase, one per sensor (1 or 2), e.g. '6.0@30', '6 mm/s@30' or '170@112,53@78' (all bare, or all with units of one kind: µm, mm, mil; mm/s, in/s; g, m/s²).", show_default=False),
+    trial: list[str] = typer.Option(..., "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (give it twice for two planes; a bare mass is in grams).", show_default=False),
     run_: list[str] = typer.Option(..., "--run", help="Readings with each trial on, in the order of --trial (same form as --initial).", show_default=False),
     cumulative: bool = typer.Option(False, "--cumulative", help="Two planes: trial A was left on during the run with trial B."),
     trial_radius: str = typer.Option(None, "--trial-radius", help="Radius the trials sat at (m, or with units); with --radius.", show_default=False),
     radius: str = typer.Option(None, "--radius", help="Radius the corrections go at (m, or with units); needs --trial-radius.", show_default=False),
+    plot: str = typer.Option(None, "--plot", help="Write the polar diagram of the balancing sheet (png, svg or pdf): per sensor the readings O, O+T and the trial's effect; per plane the trial and the correction mass.", show_default=False),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
@@ -263,9 +285,15 @@ def field_balance(
 
     e = c.env()
     su = rb.ShopUnits(units)
+    plot_path = c.check_plot(plot) if plot is not None else None
     o = api.FieldBalanceOptions.parse(None, initial=initial, trial=trial, run=run_,
                                       cumulative=cumulative, trial_radius=trial_radius, radius=radius)
     res = api.run(None, o)
+    if plot_path is not None:
+        from rbcli.render import balanceplot
+
+        reading = rb.READING_DISPLAY.get(res.reading_kind, (1.0, ""))
+        c.save_plot(balanceplot.plot(res.diagram(), su, reading), plot_path)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
     c.emit(e, json_, res.to_json, lambda doc: rb.field_document(doc, res, su, digits))
@@ -281,19 +309,36 @@ MANUAL["field-balance"] = {
         "not well separated), a trial run that changed no reading by 25 % in amplitude or 25° "
         "in phase (use a larger trial).",
         "The trial angles and the phases must be counted in the same sense; the correction "
-        "angles come out in that sense. Correction masses are in the trial's mass unit scaled "
+        "angles come out in that sense. Correction masses (kg in JSON, g in tables) are scaled "
         "by --trial-radius / --radius when given.",
+        "Readings and units: all readings (--initial and every --run) are either bare numbers, "
+        "one relative scale (the corrections do not depend on it; JSON readings.kind "
+        "'relative'), or all carry units of one kind, converted exactly to SI: displacement "
+        "(µm, um, mm, mil = 25.4 µm; JSON in m), velocity (mm/s, in/s, m/s; m/s) or "
+        "acceleration (g = standard gravity 9.80665 m/s², m/s²; m/s²). Influence coefficients "
+        "are then per kg in SI and the tables show µm, mm/s or m/s² per g. Refused (exit 2), "
+        "naming the readings found: readings of two kinds, a mix of bare and unit readings, an "
+        "unknown unit or one that is not a vibration reading. A trial mass needs no unit: a "
+        "bare mass is in grams ('10@0' = '10 g@0'), as balancing sheets write it; --trial-radius "
+        "and --radius are metres unless a unit is given.",
+        "--plot FILE (png, svg or pdf) draws the balancing sheet's polar diagram: per sensor the "
+        "reading O without trial, each run O+T and the change T the trial made (from O's tip to "
+        "O+T's), and per plane the trial mass and the correction to add; angles as given, 0° on "
+        "the right, counterclockwise.",
     ],
     "json": [
         ("planes", "1 or 2."),
         ("corrections", "[{name, mass (kg), angle_deg, mass_trial_on, angle_trial_on_deg, radius (m or null)}]; trial removed, and with that plane's trial left on."),
         ("influence", "[[{magnitude (reading unit per kg), angle_deg}]] row = sensor, column = plane."),
         ("cond, det_magnitude", "2-norm condition number and |det| of the influence matrix (two planes)."),
+        ("readings", "{kind: relative, displacement, velocity or acceleration; unit: null, m, m/s or m/s^2}: what the reading numbers (influence, predicted_residual) are in."),
         ("small_response, predicted_residual, cumulative, warnings", "checks as in the notes."),
     ],
     "examples": [
-        ("rbcli field-balance --initial '6.0@30' --trial '10 g@0' --run '4.0@110'",
-         "One plane: H = 0.66079 (mm/s)/g at 173.406°, add 9.08 g at 36.594° (trial removed)."),
+        ("rbcli field-balance --initial '6.0 mm/s@30' --trial '10 g@0' --run '4.0 mm/s@110'",
+         "One plane: H = 0.660794 (mm/s)/g at 173.406°, add 9.07998 g at 36.594° (trial removed)."),
+        ("rbcli field-balance --initial '6 mm@30' --trial '10 g@0' --run '4000 um@110' --plot sheet.png",
+         "Displacement readings in mm and µm, converted: the same 9.08 g at 36.594°, and the polar diagram."),
         ("rbcli field-balance --initial '170@112,53@78' --trial '1.15 g@0' --run '235@94,58@68' --trial '1.15 g@0' --run '185@115,77@104'",
          "The B&K two-plane example: 1.979 g at 236.2° and 1.071 g at 121.8°, cond 2.70."),
     ],

@@ -60,6 +60,10 @@ class ShopUnits:
     def unit(self, kind: str) -> str:
         return self._kinds[kind][1]
 
+    def factor(self, kind: str) -> float:
+        """SI per display unit of ``kind``."""
+        return self._kinds[kind][0]
+
     def show(self, x: float | None, kind: str, digits: int) -> str:
         if x is None:
             return "—"
@@ -379,6 +383,10 @@ def after_words(iso: B.IsoCheck) -> str:
 # ----------------------------------------------------------------------------- field balancing
 
 
+#: how the tables show readings of each kind: (SI per display unit, display unit)
+READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
+
+
 def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
     """The tables of ``rbcli field-balance`` (from the result's finished numbers)."""
     d = res.to_json()
@@ -390,17 +398,23 @@ def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int
         "(they must agree); a correction is a mass to add"
     )
     names = ["A", "B"][:n]
+    kind = d["readings"]["kind"]
+    scale, ru = READING_DISPLAY.get(kind, (1.0, ""))
+    if ru:
+        doc.note(f"readings: {kind}, shown in {ru} (JSON: SI, {d['readings']['unit']})")
     rows = []
     for i, row in enumerate(d["influence"]):
         cells = [str(i + 1)]
         for a in row:
-            per = a["magnitude"] * su.mass[0]  # reading per display mass unit
+            per = a["magnitude"] * su.mass[0] / scale  # reading per display mass unit
             cells += [num(per, digits), num(a["angle_deg"], digits)]
         rows.append(cells)
     cols = ["sensor"]
     for name in names:
-        cols += [f"plane {name}: per {m}", "phase [°]"]
-    doc.table("influence coefficients (reading per unit trial mass)", cols, rows, right=tuple(range(1, len(cols))))
+        cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
+    title = ("influence coefficients (reading per unit trial mass)" if not ru
+             else f"influence coefficients ({ru} per {m})")
+    doc.table(title, cols, rows, right=tuple(range(1, len(cols))))
     crow = []
     for c in d["corrections"]:
         crow.append([c["name"], su.show(c["mass"], "mass", digits), num(c["angle_deg"], digits),
@@ -423,5 +437,5 @@ def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int
         )
     doc.note(
         "predicted residual reading after the corrections (linear model, 0 up to round-off): "
-        + ", ".join(num(v, 3) for v in d["predicted_residual"])
+        + ", ".join(num(v / scale, 3) for v in d["predicted_residual"]) + (f" {ru}" if ru else "")
     )
