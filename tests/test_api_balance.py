@@ -63,6 +63,11 @@ FIELD = [
     (["--initial", "10@0,10@0", "--trial", "5 g@0", "--run", "20@0,20@0", "--trial", "5 g@0", "--run",
       "20@1,20@0", "--cumulative"],
      dict(initial="10@0,10@0", trial=["5 g@0", "5 g@0"], run=["20@0,20@0", "20@1,20@0"], cumulative=True)),
+    # readings with units (converted to SI) and a bare trial mass (grams)
+    (["--initial", "6 mm@30", "--trial", "10@0", "--run", "4000 um@110"],
+     dict(initial="6 mm@30", trial="10@0", run="4000 um@110")),
+    (["--initial", "6.0 mm/s@30", "--trial", "10 g@0", "--run", "0.2 in/s@110"],
+     dict(initial=["6.0 mm/s@30"], trial=["10 g@0"], run=["0.2 in/s@110"])),
 ]
 
 
@@ -126,6 +131,17 @@ def test_field_typed_fields():
     # sheet §5.2 (T19): W = 9.0800 g @ 36.594°
     assert c.mass == pytest.approx(9.08e-3, rel=1e-4) and c.angle_deg == pytest.approx(36.594, abs=1e-3)
     assert r.planes == 1 and r.return_code == 0 and r.cond is None
+    assert r.reading_kind is None and r.reading_unit is None
+    u = rbcli.field_balance(initial="6 mm@30", trial="10 g@0", run="4000 um@110")
+    assert u.reading_kind == "displacement" and u.reading_unit == "m"
+    assert u.initial[0] == pytest.approx(0.006 * complex(math.cos(math.pi / 6), 0.5), rel=1e-15)
+    assert u.corrections[0].mass == pytest.approx(c.mass, rel=1e-14)
+    # the diagram: readings O, O+T and the trial's effect (from O's tip), then the masses
+    d = u.diagram()
+    assert [p.quantity for p in d.panels] == ["reading", "mass"]
+    o, run, effect = d.panels[0].arrows
+    assert (o.magnitude, o.angle_deg) == pytest.approx((0.006, 30.0))
+    assert effect.tail == (o.magnitude, o.angle_deg)
 
 
 @pytest.mark.parametrize("kwargs, param", [

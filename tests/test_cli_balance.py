@@ -914,3 +914,16 @@ def test_plot_path_checked_before_computing(cli, tmp_path):
     r = cli("field-balance", "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110",
             "--plot", str(tmp_path / "x.jpg"))
     assert r.code == 2 and r.err.startswith("rbcli: --plot") and r.out == ""
+
+
+def test_plot_function_returns_a_figure():
+    """render.balanceplot.plot returns the Figure (the cli writes it): one polar panel per
+    panel of the result's diagram."""
+    import rbcli
+    from rbcli.render.balance import ShopUnits
+    from rbcli.render.balanceplot import plot
+
+    res = rbcli.balance(rbcli.load(TWO_DISK), planes="0,400mm", radius="100mm")
+    fig = plot(res.diagram(), ShopUnits(None))
+    assert type(fig).__name__ == "Figure"
+    assert [ax.name for ax in fig.axes] == ["polar", "polar"]

@@ -376,6 +376,29 @@ class BalanceResult(Result):
         return None if c is None else c.pair
 
     @property
+    def angular_momentum_magnitude(self) -> float | None:
+        """kg m²/s, |L| about the com at ``speed`` (None without a speed)."""
+        import numpy as np
+
+        return None if self.speed is None else float(np.linalg.norm(self.forces.angular_momentum))
+
+    @property
+    def torque_magnitude(self) -> float | None:
+        """N m, |ω × L| about the com at ``speed`` (None without a speed)."""
+        import numpy as np
+
+        return None if self.speed is None else float(np.linalg.norm(self.forces.torque))
+
+    @property
+    def torque_direction(self) -> tuple[float, bool] | None:
+        """(deg, defined): the direction of the torque ω × L in the rotor frame, as printed;
+        not defined when the torque is zero to Ω² times the couple tolerance."""
+        if self.speed is None:
+            return None
+        tz = complex(float(self.forces.torque[0]), float(self.forces.torque[1]))
+        return self.unbalance.angle_of(tz, self.speed**2 * self.unbalance.tol_couple)
+
+    @property
     def return_code(self) -> int:
         """1 when the rotor as given fails the ISO grade asked for, else 0."""
         if self.iso is not None and not self.iso.passed:

@@ -301,14 +301,12 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
         )
         doc.note("; ".join(notes))
     if r.speed is not None:
-        torque = np.asarray(f.torque)
-        tz = complex(float(torque[0]), float(torque[1]))
-        ta, tok = r.unbalance.angle_of(tz, r.speed**2 * r.unbalance.tol_couple)
+        ta, tok = r.torque_direction
         rows = [
             ("speed", f"{num(r.speed * RPM, digits)} rpm = {num(r.speed, digits)}", "rad/s"),
             ("total rotating force Ω² U", num(abs(f.centrifugal_force), digits), "N"),
-            ("|L| about the com (L = J_G ω)", num(float(np.linalg.norm(f.angular_momentum)), digits), "kg·m²/s"),
-            ("torque ω × L (about the com)", num(float(np.linalg.norm(torque)), digits), "N·m"),
+            ("|L| about the com (L = J_G ω)", num(r.angular_momentum_magnitude, digits), "kg·m²/s"),
+            ("torque ω × L (about the com)", num(r.torque_magnitude, digits), "N·m"),
             ("  its direction (rotor frame)", angle(ta, tok, digits), "°"),
         ]
         doc.kv("dynamics", rows)
