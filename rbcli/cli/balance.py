@@ -25,7 +25,7 @@ w x L. With --grade G6.3 (and --speed, the maximum service speed, and --bearings
 residual per plane, the achieved grade and PASS or FAIL for the rotor as given (exit status
 1 on FAIL, with or without --planes); with --planes also the residuals and verdict predicted
 for the rotor with the (rounded) corrections fitted. --apply OUT.yaml writes the body with
-the corrections added as point parts.
+the corrections added as point parts; --plot FILE draws the polar balancing diagram.
 
 Angles are degrees about the shaft (+z) from +x (the 0° mark) towards +y, in the direction
 of rotation for a positive speed (--angle-sense against counts the other way). Positions
