@@ -329,7 +329,7 @@ MANUAL["field-balance"] = {
     "json": [
         ("planes", "1 or 2."),
         ("corrections", "[{name, mass (kg), angle_deg, mass_trial_on, angle_trial_on_deg, radius (m or null)}]; trial removed, and with that plane's trial left on."),
-        ("influence", "[[{magnitude (reading unit per kg), angle_deg}]] row = sensor, column = plane."),
+        ("influence", "[[{magnitude (per kg: the readings' SI unit, m, m/s or m/s^2, or their relative scale), angle_deg}]] row = sensor, column = plane."),
         ("cond, det_magnitude", "2-norm condition number and |det| of the influence matrix (two planes)."),
         ("readings", "{kind: relative, displacement, velocity or acceleration; unit: null, m, m/s or m/s^2}: what the reading numbers (influence, predicted_residual) are in."),
         ("small_response, predicted_residual, cumulative, warnings", "checks as in the notes."),
