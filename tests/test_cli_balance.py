@@ -14,9 +14,6 @@ from __future__ import annotations
 import cmath
 import json
 import math
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -24,9 +21,8 @@ import pytest
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from typer.testing import CliRunner
 
-from rbcli.cli import app, main
+from conftest import run_inprocess
 
 ROOT = Path(__file__).resolve().parent.parent
 EX = ROOT / "examples"
@@ -41,19 +37,11 @@ TWO_DISK_ARGS = ["--planes", "0,400mm", "--radius", "100mm", "--speed", "3000 rp
 FAN_ARGS = ["--bearings", "0,200mm", "--speed", "1480 rpm", "--grade", "G6.3"]
 
 
-def run(capsys, *args: str) -> tuple[int, str, str]:
-    """rbcli balance in-process through main() (the error-to-exit-code map included)."""
-    with pytest.raises(SystemExit) as exc:
-        main(["balance", *args])
-    out, err = capsys.readouterr()
-    code = exc.value.code
-    return (0 if code is None else int(code)), out, err
-
-
-def js(capsys, *args: str, code: int = 0) -> dict:
-    rc, out, err = run(capsys, *args, "--json")
-    assert rc == code, err
-    return json.loads(out)
+def js(cli, *args: str, code: int = 0) -> dict:
+    """``rbcli balance ARGS --json`` through the ``cli`` fixture, its JSON."""
+    r = cli("balance", *args, "--json")
+    assert r.code == code, r.err
+    return r.json()
 
 
 def sheet(x: float, digits: int = 6) -> dict:
@@ -80,8 +68,8 @@ RT = 1e-12
 # ------------------------------------------------------------------------- Example B: car wheel
 
 
-def test_car_wheel_example_b_t15(capsys):
-    d = js(capsys, WHEEL, *WHEEL_ARGS)
+def test_car_wheel_example_b_t15(cli):
+    d = js(cli, WHEEL, *WHEEL_ARGS)
     m, a, b, th = 20.0, 0.2, 0.1, math.radians(0.5)
     # closed forms (sheet §3.2): P = -(m a²/8) sin 2θ (disk normal tilted towards 0°), U = 0
     P = m * a * a / 8 * math.sin(2 * th)
@@ -119,10 +107,10 @@ def test_car_wheel_example_b_t15(capsys):
     assert d["dynamics"]["torque_magnitude"] == pytest.approx(W * W * P, rel=1e-9)
 
 
-def test_car_wheel_iso_g40_fails_as_given_and_would_pass_with_5g_weights(capsys):
+def test_car_wheel_iso_g40_fails_as_given_and_would_pass_with_5g_weights(cli):
     # the verdict and the exit status judge the wheel as given (exit 1); the wheel with the
     # rounded 45 g weights is a prediction under iso.after
-    d = js(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g", code=1)
+    d = js(cli, WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g", code=1)
     W = 1500 * RPM
     iso = d["iso"]
     U_per = 40e-3 / W * 20.0  # e_per M
@@ -160,12 +148,12 @@ def test_car_wheel_iso_g40_fails_as_given_and_would_pass_with_5g_weights(capsys)
     assert planes[0]["unbalance"] == pytest.approx(Pres / 0.2, rel=1e-9)
 
 
-def test_car_wheel_table_shows_shop_units_and_the_convention(capsys):
-    rc, out, err = run(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g")
-    assert rc == 1, err  # the wheel as given fails G40
-    assert "43.631" in out and "215.31" in out and "273.797" in out
-    assert "g·mm²" in out and "[g]" in out and "[mm]" in out
-    flat = " ".join(out.split())  # notes wrap at the table width
+def test_car_wheel_table_shows_shop_units_and_the_convention(cli):
+    r = cli("balance", WHEEL, *WHEEL_ARGS, "--grade", "G40", "--mass-step", "5 g")
+    assert r.code == 1, r.err  # the wheel as given fails G40
+    assert "43.631" in r.out and "215.31" in r.out and "273.797" in r.out
+    assert "g·mm²" in r.out and "[g]" in r.out and "[mm]" in r.out
+    flat = " ".join(r.out.split())  # notes wrap at the table width
     assert "from +x, the 0° mark, towards +y" in flat and "direction of rotation" in flat
     assert "remove the same mass at +180°" in flat
     assert "FAIL: G 40, the rotor as given (exit status 1)" in flat
@@ -194,8 +182,8 @@ def two_disk_mass_properties():
     return M, c, J
 
 
-def test_two_disk_rotor_example_a_t13(capsys):
-    d = js(capsys, TWO_DISK, *TWO_DISK_ARGS)
+def test_two_disk_rotor_example_a_t13(cli):
+    d = js(cli, TWO_DISK, *TWO_DISK_ARGS)
     # Example A's unbalance (hand check of §3.1): U = 1000 + 1600i g·mm, P = 1e5 + 4.8e5i g·mm²
     U = complex(1000, 1600) * 1e-6
     P = complex(1e5, 4.8e5) * 1e-9
@@ -226,8 +214,8 @@ def test_two_disk_rotor_example_a_t13(capsys):
     assert d["corrected"]["statically_balanced"] and d["corrected"]["dynamically_balanced"]
 
 
-def test_two_disk_rotor_iso_g63(capsys):
-    d = js(capsys, TWO_DISK, *TWO_DISK_ARGS, "--grade", "G6.3", code=1)  # fails as given
+def test_two_disk_rotor_iso_g63(cli):
+    d = js(cli, TWO_DISK, *TWO_DISK_ARGS, "--grade", "G6.3", code=1)  # fails as given
     iso = d["iso"]
     # §3.1: e_per = 20.0535 µm, U_per = 100.869 g·mm, inboard -> 50.385 / 50.485 g·mm
     assert iso["permissible_eccentricity"] * 1e6 == pytest.approx(20.0535, **sheet(20.0535))
@@ -255,20 +243,20 @@ def test_two_disk_rotor_iso_g63(capsys):
     assert max(after["residual"]) < 1e-12 * 1e-3  # round-off of ~1 g·mm values: < 1e-9 g·mm
 
 
-def test_two_disk_rotor_tilt_against_eigh(capsys):
+def test_two_disk_rotor_tilt_against_eigh(cli):
     M, c, J = two_disk_mass_properties()
     w, V = np.linalg.eigh(J)
     k = int(np.argmax(np.abs(V[2])))
     v = V[:, k] * np.sign(V[2, k])
     tilt = math.degrees(math.atan2(math.hypot(v[0], v[1]), v[2]))
-    d = js(capsys, TWO_DISK)
+    d = js(cli, TWO_DISK)
     assert d["mass"] == pytest.approx(M, rel=RT)
     # eigenvector round-off ~ eps |J| / gap (gap ~ 0.08 kg m², |J| ~ 0.2): ~1e-15 rad
     assert d["tilt_deg"] == pytest.approx(tilt, abs=1e-9)
     assert d["tilt_azimuth_deg"] == pytest.approx(math.degrees(math.atan2(v[1], v[0])) % 360, abs=1e-6)
 
 
-def test_example_a_exact_body_tilt_and_couple(capsys, tmp_path):
+def test_example_a_exact_body_tilt_and_couple(cli, tmp_path):
     """The sheet's Example A body itself (5 kg shaft and two point masses): T13's tilt."""
     body = tmp_path / "example_a.yaml"
     body.write_text(
@@ -277,7 +265,7 @@ def test_example_a_exact_body_tilt_and_couple(capsys, tmp_path):
         "  - {shape: point, mass: 0.01, at: [100, 0, 100]}\n"
         "  - {shape: point, mass: 0.02, at: [0, 80, 300]}\n"
     )
-    d = js(capsys, str(body))
+    d = js(cli, str(body))
     assert d["tilt_deg"] == pytest.approx(0.162797, **sheet(0.162797))
     assert d["tilt_azimuth_deg"] == pytest.approx(122.10, **dp(122.10, 2))
     assert d["couple_unbalance"] * 1e9 == pytest.approx(188516, **sheet(188516))
@@ -285,8 +273,8 @@ def test_example_a_exact_body_tilt_and_couple(capsys, tmp_path):
     assert d["eccentricity"] * 1e6 == pytest.approx(375.11, **dp(375.11, 2))
 
 
-def test_t14_radius_per_plane(capsys):
-    d = js(capsys, TWO_DISK, "--planes", "0,400mm", "--radius", "100,50mm")
+def test_t14_radius_per_plane(cli):
+    d = js(cli, TWO_DISK, "--planes", "0,400mm", "--radius", "100,50mm")
     A, B = d["corrections"]
     assert A["mass"] * 1e3 == pytest.approx(8.5000, **sheet(8.5000, 5))
     assert B["mass"] * 1e3 == pytest.approx(24.5153, **sheet(24.5153))  # T14
@@ -311,10 +299,10 @@ def fan_by_hand():
     return M, zG, U, P
 
 
-def test_fan_overhung_static_loads_and_outboard_rule(capsys):
-    rc, out, err = run(capsys, FAN, *FAN_ARGS, "--json")
-    assert rc == 1, err  # the fan as given fails G6.3
-    d = json.loads(out)
+def test_fan_overhung_static_loads_and_outboard_rule(cli):
+    r = cli("balance", FAN, *FAN_ARGS, "--json")
+    assert r.code == 1, r.err  # the fan as given fails G6.3
+    d = json.loads(r.out)
     M, zG, U, P = fan_by_hand()
     assert d["mass"] == pytest.approx(M, rel=RT)
     assert d["static_unbalance"] == pytest.approx(abs(U), rel=RT)
@@ -337,12 +325,12 @@ def test_fan_overhung_static_loads_and_outboard_rule(capsys):
     assert iso["allowed"][0] == pytest.approx(U_per * (zG - 0.2) / 0.2, rel=1e-12)  # far bearing
     assert iso["allowed"][1] == pytest.approx(U_per * zG / 0.2, rel=1e-12)  # near bearing
     assert iso["pass"] is False and iso["judged"] == "as given"
-    assert "rbcli's own rule" in err and "outboard" in err
+    assert "rbcli's own rule" in r.err and "outboard" in r.err
     assert any("rbcli's own rule" in w for w in d["warnings"])
 
 
-def test_fan_corrections_split_onto_blades(capsys):
-    d = js(capsys, FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm",
+def test_fan_corrections_split_onto_blades(cli):
+    d = js(cli, FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm",
            "--positions", "6", "--mass-step", "0.5 g", code=1)  # the fan as given fails
     M, zG, U, P = fan_by_hand()
     zA, zB, r = 0.32, 0.38, 0.19
@@ -385,7 +373,7 @@ def test_fan_corrections_split_onto_blades(capsys):
     assert after["pass"] is True and d["iso"]["pass"] is False
 
 
-def test_t22_split_example(capsys, tmp_path):
+def test_t22_split_example(cli, tmp_path):
     """T22: 18 g @ 100° onto 8 positions (45° apart) -> 14.6009 g @ 90°, 4.4204 g @ 135°.
     A rotor whose plane-A correction is exactly 18 g @ 100° at r = 100 mm: a 18 g point at
     280° in plane A (z = 0), with plane B (z = 1 m) then needing nothing."""
@@ -395,7 +383,7 @@ def test_t22_split_example(capsys, tmp_path):
         "parts:\n  - {shape: cylinder, radius: 0.05, length: 1, mass: 10, at: [0, 0, 0.5]}\n"
         f"  - {{shape: point, mass: 0.018, at: [{x!r}, {y!r}, 0]}}\n"
     )
-    d = js(capsys, str(body), "--planes", "0,1", "--radius", "0.1", "--positions", "8")
+    d = js(cli, str(body), "--planes", "0,1", "--radius", "0.1", "--positions", "8")
     got = [x for x in d["positions"]["masses"] if x["name"] == "A"]
     assert [g["angle_deg"] for g in got] == [90.0, 135.0]
     assert got[0]["mass"] * 1e3 == pytest.approx(14.6009, **sheet(14.6009))
@@ -409,8 +397,8 @@ SPEC_TOP = ("mass", "eccentricity", "static_unbalance", "static_unbalance_angle_
             "couple_unbalance", "tilt_deg", "statically_balanced", "dynamically_balanced")
 
 
-def test_spec_json_keys(capsys):
-    d = js(capsys, WHEEL, *WHEEL_ARGS, "--grade", "G40", code=1)  # the wheel as given fails G40
+def test_spec_json_keys(cli):
+    d = js(cli, WHEEL, *WHEEL_ARGS, "--grade", "G40", code=1)  # the wheel as given fails G40
     for k in SPEC_TOP:
         assert k in d
     assert len(d["corrections"]) == 2
@@ -424,43 +412,43 @@ def test_spec_json_keys(capsys):
     assert d["iso"]["grade"] == 40.0  # G in mm/s, the grade's name
 
 
-def test_json_keys_only_when_asked(capsys):
-    d = js(capsys, WHEEL)
+def test_json_keys_only_when_asked(cli):
+    d = js(cli, WHEEL)
     for k in SPEC_TOP:
         assert k in d
     assert "corrections" not in d and "bearing_forces" not in d and "iso" not in d
-    d = js(capsys, WHEEL, "--bearings=-50,150mm")  # no speed: static loads only
+    d = js(cli, WHEEL, "--bearings=-50,150mm")  # no speed: static loads only
     assert "bearing_forces" not in d and [b["static_load"] for b in d["bearings"]]
-    d = js(capsys, WHEEL, "--speed", "100")  # no bearings: dynamics, no per-bearing forces
+    d = js(cli, WHEEL, "--speed", "100")  # no bearings: dynamics, no per-bearing forces
     assert "bearing_forces" not in d and "dynamics" in d
 
 
-def test_output_is_deterministic():
+def test_output_is_deterministic(cli):
     args = ["balance", FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm",
             "--positions", "6", "--mass-step", "0.5 g"]
-    r1, r2 = CliRunner().invoke(app, args), CliRunner().invoke(app, args)
-    assert r1.stdout == r2.stdout and r1.stdout
-    j1, j2 = CliRunner().invoke(app, args + ["--json"]), CliRunner().invoke(app, args + ["--json"])
-    assert j1.stdout == j2.stdout and j1.stdout
+    r1, r2 = cli(*args), cli(*args)
+    assert r1.out == r2.out and r1.out
+    j1, j2 = cli(*args, "--json"), cli(*args, "--json")
+    assert j1.out == j2.out and j1.out
 
 
-def test_zero_unbalance_gives_zero_masses_and_no_angle(capsys):
-    d = js(capsys, "-e", "{shape: cylinder, radius: 0.1, length: 0.2, mass: 3}", "--planes", "-0.1,0.1",
+def test_zero_unbalance_gives_zero_masses_and_no_angle(cli):
+    d = js(cli, "-e", "{shape: cylinder, radius: 0.1, length: 0.2, mass: 3}", "--planes", "-0.1,0.1",
            "--radius", "0.1")
     assert d["statically_balanced"] and d["dynamically_balanced"]
     for c in d["corrections"]:
         assert c["mass"] == 0.0 and c["angle_defined"] is False  # T25: 0 g and angle "—"
-    rc, out, err = run(capsys, "-e", "{shape: cylinder, radius: 0.1, length: 0.2, mass: 3}",
-                       "--planes", "-0.1,0.1", "--radius", "0.1")
-    assert rc == 0 and "—" in out
+    r = cli("balance", "-e", "{shape: cylinder, radius: 0.1, length: 0.2, mass: 3}",
+            "--planes", "-0.1,0.1", "--radius", "0.1")
+    assert r.code == 0 and "—" in r.out
 
 
 # ------------------------------------------------------------------------- conventions
 
 
-def test_angle_sense_against_mirrors_every_angle(capsys):
-    w = js(capsys, TWO_DISK, *TWO_DISK_ARGS)
-    a = js(capsys, TWO_DISK, *TWO_DISK_ARGS, "--angle-sense", "against")
+def test_angle_sense_against_mirrors_every_angle(cli):
+    w = js(cli, TWO_DISK, *TWO_DISK_ARGS)
+    a = js(cli, TWO_DISK, *TWO_DISK_ARGS, "--angle-sense", "against")
     assert angdiff(a["static_unbalance_angle_deg"], 360 - w["static_unbalance_angle_deg"]) < 1e-9
     assert angdiff(a["couple_unbalance_angle_deg"], 360 - w["couple_unbalance_angle_deg"]) < 1e-9
     for cw, ca in zip(w["corrections"], a["corrections"]):
@@ -473,15 +461,15 @@ def test_angle_sense_against_mirrors_every_angle(capsys):
     assert "against" in a["angle_convention"] and "−y" in a["angle_convention"]
 
 
-def test_zero_mark_turns_every_angle(capsys):
-    w = js(capsys, TWO_DISK, *TWO_DISK_ARGS)
-    z = js(capsys, TWO_DISK, *TWO_DISK_ARGS, "--zero-mark-deg", "30")
+def test_zero_mark_turns_every_angle(cli):
+    w = js(cli, TWO_DISK, *TWO_DISK_ARGS)
+    z = js(cli, TWO_DISK, *TWO_DISK_ARGS, "--zero-mark-deg", "30")
     for cw, cz in zip(w["corrections"], z["corrections"]):
         assert cz["mass"] == pytest.approx(cw["mass"], rel=1e-12)
         assert angdiff(cz["angle_deg"], cw["angle_deg"] - 30) < 1e-9
 
 
-def test_shaft_along_x_uses_the_stated_frame(capsys, tmp_path):
+def test_shaft_along_x_uses_the_stated_frame(cli, tmp_path):
     """Example A turned so the shaft is body x: the shaft frame is e_x = body y, e_y = body z
     (api notes), so a point at shaft (sx, sy, sz) sits at body (sz, sx, sy)."""
     body = tmp_path / "a_along_x.yaml"
@@ -491,7 +479,7 @@ def test_shaft_along_x_uses_the_stated_frame(capsys, tmp_path):
         "  - {shape: point, mass: 0.01, at: [100, 100, 0]}\n"
         "  - {shape: point, mass: 0.02, at: [300, 0, 80]}\n"
     )
-    d = js(capsys, str(body), "--shaft", "x", "--planes", "0,400mm", "--radius", "100mm")
+    d = js(cli, str(body), "--shaft", "x", "--planes", "0,400mm", "--radius", "100mm")
     A, B = d["corrections"]
     assert A["mass"] * 1e3 == pytest.approx(8.5000, **sheet(8.5000, 5))
     assert A["angle_deg"] == pytest.approx(208.072, **dp(208.072, 3))
@@ -499,44 +487,44 @@ def test_shaft_along_x_uses_the_stated_frame(capsys, tmp_path):
     assert B["angle_deg"] == pytest.approx(258.232, **dp(258.232, 3))
     assert d["shaft"]["x_axis"] == [0.0, 1.0, 0.0] and d["shaft"]["y_axis"] == [0.0, 0.0, 1.0]
     assert d["tilt_deg"] == pytest.approx(0.162797, **sheet(0.162797))
-    rc, out, err = run(capsys, str(body), "--shaft", "x")
-    assert "x = [0, 1, 0], the 0° mark (body y projected" in " ".join(out.split())
+    r = cli("balance", str(body), "--shaft", "x")
+    assert "x = [0, 1, 0], the 0° mark (body y projected" in " ".join(r.out.split())
     # --mark z: e_x = body z, e_y = x × z = -body y: every angle turns by -90°
-    m = js(capsys, str(body), "--shaft", "x", "--mark", "0,0,1", "--planes", "0,400mm", "--radius", "100mm")
+    m = js(cli, str(body), "--shaft", "x", "--mark", "0,0,1", "--planes", "0,400mm", "--radius", "100mm")
     assert angdiff(m["corrections"][0]["angle_deg"], 208.072 - 90) < 1e-3
 
 
-def test_units_in_oz(capsys):
-    rc, out, err = run(capsys, TWO_DISK, "--units", "in,oz")
-    assert rc == 0, err
+def test_units_in_oz(cli):
+    r = cli("balance", TWO_DISK, "--units", "in,oz")
+    assert r.code == 0, r.err
     oz_in = 0.45359237 / 16 * 0.0254  # kg m, exact definitions (NIST SP 811)
     assert oz_in * 1e6 == pytest.approx(720.078, **dp(720.078, 3))  # sheet T6
     U = abs(complex(1000, 1600)) * 1e-6  # Example A's |U|, kg m
     assert f"{U / oz_in:.6g}" == "2.62027"
-    assert "2.62027" in out and "oz·in" in out
+    assert "2.62027" in r.out and "oz·in" in r.out
 
 
 # ------------------------------------------------------------------------- --apply
 
 
-def test_apply_round_trip_balances_the_rotor(capsys, tmp_path):
-    out = tmp_path / "fan_balanced.yaml"
-    rc, _, err = run(capsys, FAN, "--planes", "320,380mm", "--radius", "190mm", "--apply", str(out))
-    assert rc == 0, err
-    assert yaml.safe_load(out.read_text())["parts"][-1]["name"] == "balance B"
-    d = js(capsys, str(out))
+def test_apply_round_trip_balances_the_rotor(cli, tmp_path):
+    path = tmp_path / "fan_balanced.yaml"
+    r = cli("balance", FAN, "--planes", "320,380mm", "--radius", "190mm", "--apply", str(path))
+    assert r.code == 0, r.err
+    assert yaml.safe_load(path.read_text())["parts"][-1]["name"] == "balance B"
+    d = js(cli, str(path))
     # the written masses cancel U and P_G to the verdict's tolerance (1e-9 of the rotor)
     assert d["statically_balanced"] is True and d["dynamically_balanced"] is True
     assert d["mass"] == pytest.approx(fan_by_hand()[0] + sum(
-        c["mass"] for c in js(capsys, FAN, "--planes", "320,380mm", "--radius", "190mm")["corrections"]), rel=1e-12)
+        c["mass"] for c in js(cli, FAN, "--planes", "320,380mm", "--radius", "190mm")["corrections"]), rel=1e-12)
 
 
-def test_apply_rounded_residual_matches_the_printed_one(capsys, tmp_path):
+def test_apply_rounded_residual_matches_the_printed_one(cli, tmp_path):
     out = tmp_path / "wheel_balanced.yaml"
-    first = js(capsys, WHEEL, "--planes=-100,100mm", "--mass-step", "5 g", "--apply", str(out))
+    first = js(cli, WHEEL, "--planes=-100,100mm", "--mass-step", "5 g", "--apply", str(out))
     assert first["apply"]["file"] == str(out)
     res = first["correction_details"]["residual"]
-    again = js(capsys, str(out), "--planes=-100,100mm")
+    again = js(cli, str(out), "--planes=-100,100mm")
     # the re-run sees exactly the residual printed: static, couple and per plane (the
     # masses are written to 15 significant figures: ~1e-15 relative)
     assert again["static_unbalance"] == pytest.approx(res["static_unbalance"], abs=1e-12 * 0.009)
@@ -546,15 +534,15 @@ def test_apply_rounded_residual_matches_the_printed_one(capsys, tmp_path):
     assert res["planes"][0]["unbalance"] * 1e6 == pytest.approx(273.80, **dp(273.80, 2))
 
 
-def test_apply_shorthand_and_relative_include(capsys, tmp_path):
+def test_apply_shorthand_and_relative_include(cli, tmp_path):
     # a one-part shorthand from -e becomes a parts: list
-    out = tmp_path / "o.yaml"
-    rc, _, err = run(capsys, "-e", "{shape: disk, radius: 0.2, mass: 20, rotate: {axis: [0, 1, 0], angle: 0.5}}",
-                     "--planes=-0.1,0.1", "--radius", "0.2", "--apply", str(out))
-    assert rc == 0, err
-    data = yaml.safe_load(out.read_text())
+    path = tmp_path / "o.yaml"
+    r = cli("balance", "-e", "{shape: disk, radius: 0.2, mass: 20, rotate: {axis: [0, 1, 0], angle: 0.5}}",
+            "--planes=-0.1,0.1", "--radius", "0.2", "--apply", str(path))
+    assert r.code == 0, r.err
+    data = yaml.safe_load(path.read_text())
     assert data["parts"][0]["shape"] == "disk" and len(data["parts"]) == 3
-    assert js(capsys, str(out))["dynamically_balanced"] is True
+    assert js(cli, str(path))["dynamically_balanced"] is True
     # an include with a relative path still resolves from OUT's folder
     src = tmp_path / "src"
     (src / "sub").mkdir(parents=True)
@@ -562,49 +550,49 @@ def test_apply_shorthand_and_relative_include(capsys, tmp_path):
     (src / "rotor.yaml").write_text("parts:\n  - {shape: include, file: sub/wheel.yaml}\n")
     dst = tmp_path / "elsewhere"
     dst.mkdir()
-    rc, _, err = run(capsys, str(src / "rotor.yaml"), "--planes=-0.1,0.1", "--radius", "0.2",
-                     "--apply", str(dst / "out.yaml"))
-    assert rc == 0, err
+    r = cli("balance", str(src / "rotor.yaml"), "--planes=-0.1,0.1", "--radius", "0.2",
+            "--apply", str(dst / "out.yaml"))
+    assert r.code == 0, r.err
     inc = yaml.safe_load((dst / "out.yaml").read_text())["parts"][0]["file"]
     assert inc == "../src/sub/wheel.yaml"
-    assert js(capsys, str(dst / "out.yaml"))["dynamically_balanced"] is True
+    assert js(cli, str(dst / "out.yaml"))["dynamically_balanced"] is True
 
 
-def test_apply_never_overwrites_inputs_or_existing_files(capsys, tmp_path):
+def test_apply_never_overwrites_inputs_or_existing_files(cli, tmp_path):
     body = tmp_path / "wheel.yaml"
     text = Path(WHEEL).read_bytes()
     body.write_bytes(text)
-    rc, out, err = run(capsys, str(body), "--planes=-0.1,0.1", "--apply", str(body))
-    assert rc == 2 and "input file" in err and out == ""
+    r = cli("balance", str(body), "--planes=-0.1,0.1", "--apply", str(body))
+    assert r.code == 2 and "input file" in r.err and r.out == ""
     assert body.read_bytes() == text
-    rc, _, err = run(capsys, str(body), "--planes=-0.1,0.1", "--apply", str(tmp_path / "." / "wheel.yaml"), "--force")
-    assert rc == 2 and body.read_bytes() == text  # --force never applies to an input
+    r = cli("balance", str(body), "--planes=-0.1,0.1", "--apply", str(tmp_path / "." / "wheel.yaml"), "--force")
+    assert r.code == 2 and body.read_bytes() == text  # --force never applies to an input
     other = tmp_path / "exists.yaml"
     other.write_text("keep me\n")
-    rc, _, err = run(capsys, str(body), "--planes=-0.1,0.1", "--apply", str(other))
-    assert rc == 2 and "--force" in err and other.read_text() == "keep me\n"
-    rc, _, err = run(capsys, str(body), "--planes=-0.1,0.1", "--apply", str(other), "--force")
-    assert rc == 0, err
+    r = cli("balance", str(body), "--planes=-0.1,0.1", "--apply", str(other))
+    assert r.code == 2 and "--force" in r.err and other.read_text() == "keep me\n"
+    r = cli("balance", str(body), "--planes=-0.1,0.1", "--apply", str(other), "--force")
+    assert r.code == 0, r.err
     assert "balance A" in other.read_text()
 
 
 # ------------------------------------------------------------------------- warnings
 
 
-def test_warnings_on_stderr(capsys):
+def test_warnings_on_stderr(cli):
     # planes 20 mm apart in a 400 mm bearing span: narrow
-    rc, out, err = run(capsys, TWO_DISK, "--planes", "190,210mm", "--radius", "100mm", "--bearings", "0,400mm")
-    assert rc == 0 and "close together" in err
+    r = cli("balance", TWO_DISK, "--planes", "190,210mm", "--radius", "100mm", "--bearings", "0,400mm")
+    assert r.code == 0 and "close together" in r.err
     # an isotropic rotor (a sphere): the tilt is ill-defined
-    rc, out, err = run(capsys, "-e", "{shape: sphere, radius: 0.1, mass: 2}")
-    assert rc == 0 and "isotropic" in err and "ill-defined" in out
+    r = cli("balance", "-e", "{shape: sphere, radius: 0.1, mass: 2}")
+    assert r.code == 0 and "isotropic" in r.err and "ill-defined" in r.out
     # corrections heavier than 10 % of the rotor
-    rc, out, err = run(capsys, "-e", "{shape: point, mass: 1, at: [0.1, 0, 0.5]}", "--planes", "0,1",
-                       "--radius", "0.01")
-    assert rc == 0 and "10%" in err
+    r = cli("balance", "-e", "{shape: point, mass: 1, at: [0.1, 0, 0.5]}", "--planes", "0,1",
+            "--radius", "0.01")
+    assert r.code == 0 and "10%" in r.err
     # a mass step larger than the corrections (a bare number is kg)
-    rc, out, err = run(capsys, WHEEL, "--planes=-0.1,0.1", "--mass-step", "5")
-    assert rc == 0 and "did you mean grams" in err
+    r = cli("balance", WHEEL, "--planes=-0.1,0.1", "--mass-step", "5")
+    assert r.code == 0 and "did you mean grams" in r.err
 
 
 # ------------------------------------------------------------------------- exit status
@@ -636,55 +624,47 @@ def test_warnings_on_stderr(capsys):
     (["--shaft", "z", "--mark", "0,0,1"], "--mark"),
     (["--tolerance-planes", "corrections", "--grade", "G6.3", "--speed", "100"], "--tolerance-planes"),
 ])
-def test_bad_options_exit_2_with_one_line(capsys, args, says):
-    rc, out, err = run(capsys, TWO_DISK, *args)
-    assert rc == 2, (args, err)
-    assert out == ""
-    lines = err.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("rbcli: ") and says in lines[0], err
+def test_bad_options_exit_2_with_one_line(cli, args, says):
+    r = cli("balance", TWO_DISK, *args)
+    assert r.code == 2, (args, r.err)
+    assert r.out == ""
+    lines = r.err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("rbcli: ") and says in lines[0], r.err
 
 
-def test_planes_without_radius_uses_rim_radius_else_error(capsys):
-    rc, out, err = run(capsys, TWO_DISK, "--planes", "0,0.4")
-    assert rc == 2 and "--radius" in err  # no rim_radius in that file
-    assert js(capsys, WHEEL, "--planes=-0.1,0.1")["corrections"][0]["radius"] == 0.2
+def test_planes_without_radius_uses_rim_radius_else_error(cli):
+    r = cli("balance", TWO_DISK, "--planes", "0,0.4")
+    assert r.code == 2 and "--radius" in r.err  # no rim_radius in that file
+    assert js(cli, WHEEL, "--planes=-0.1,0.1")["corrections"][0]["radius"] == 0.2
 
 
-def _cli(*args: str) -> subprocess.CompletedProcess:
-    env = dict(os.environ, NO_COLOR="1")
-    return subprocess.run([sys.executable, "-m", "rbcli", "balance", *args], capture_output=True,
-                          text=True, env=env, cwd=ROOT, timeout=60)
-
-
-def test_exit_status_through_the_real_entry_point():
-    p = _cli(FAN, *FAN_ARGS)  # the fan as given fails G6.3: exit 1, full result printed
-    assert p.returncode == 1 and "FAIL" in p.stdout and "residual unbalance per plane" in p.stdout
+def test_exit_status_through_the_real_entry_point(cli_proc):
+    p = cli_proc("balance", FAN, *FAN_ARGS)  # the fan as given fails G6.3: exit 1, full result printed
+    assert p.code == 1 and "FAIL" in p.out and "residual unbalance per plane" in p.out
     # with --planes the verdict is still the fan's as given (exit 1); the corrected fan is a
     # prediction, said as such
-    p = _cli(FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm")
-    flat = " ".join(p.stdout.split())
-    assert p.returncode == 1 and "FAIL: G 6.3, the rotor as given" in flat
+    p = cli_proc("balance", FAN, *FAN_ARGS, "--planes", "320,380mm", "--radius", "190mm")
+    flat = " ".join(p.out.split())
+    assert p.code == 1 and "FAIL: G 6.3, the rotor as given" in flat
     assert "the rotor would PASS G 6.3" in flat
     # the two-disk rotor at G6.3 fails as given, with or without --planes
     for extra in ([], ["--planes", "0,400mm", "--radius", "100mm"]):
-        p = _cli(TWO_DISK, "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3", *extra)
-        flat = " ".join(p.stdout.split())
-        assert p.returncode == 1 and "FAIL: G 6.3, the rotor as given" in flat, p.stderr
+        p = cli_proc("balance", TWO_DISK, "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3", *extra)
+        flat = " ".join(p.out.split())
+        assert p.code == 1 and "FAIL: G 6.3, the rotor as given" in flat, p.err
         assert ("the rotor would PASS G 6.3" in flat) == bool(extra)
-    p = _cli(TWO_DISK, "--grade", "G6.3")
-    assert p.returncode == 2 and p.stdout == ""
-    assert p.stderr.count("\n") == 1 and p.stderr.startswith("rbcli: --grade")
+    p = cli_proc("balance", TWO_DISK, "--grade", "G6.3")
+    assert p.code == 2 and p.out == ""
+    assert p.err.count("\n") == 1 and p.err.startswith("rbcli: --grade")
 
 
 # ------------------------------------------------------------------------- field balancing
 
 
-def field(capsys, *args: str, code: int = 0) -> dict:
-    with pytest.raises(SystemExit) as exc:
-        main(["field-balance", *args, "--json"])
-    out, err = capsys.readouterr()
-    assert (exc.value.code or 0) == code, err
-    return json.loads(out) if code == 0 else {"err": err}
+def field(cli, *args: str, code: int = 0) -> dict:
+    r = cli("field-balance", *args, "--json")
+    assert r.code == code, r.err
+    return r.json() if code == 0 else {"err": r.err}
 
 
 T20 = ["--initial", "170@112,53@78", "--trial", "1.15 g@0", "--run", "235@94,58@68",
@@ -693,8 +673,8 @@ T21 = ["--initial", "21.6076@49.52,12.0102@299.16", "--trial", "5 g@0", "--run",
        "--trial", "5 g@0", "--run", "24.4405@51.98,12.1788@342.84"]
 
 
-def test_field_t19_single_plane(capsys):
-    d = field(capsys, "--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110")
+def test_field_t19_single_plane(cli):
+    d = field(cli, "--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110")
     (c,) = d["corrections"]
     # the sheet's §5.2: W = 9.0800 g @ 36.594°, trial left on 6.0533 g @ 116.594°,
     # H = 0.66079 (mm/s)/g @ 173.406° (the JSON is per kg)
@@ -711,8 +691,8 @@ def test_field_t19_single_plane(capsys):
     assert c["mass"] == pytest.approx(abs(W), rel=1e-12)  # a handful of complex operations
 
 
-def test_field_t20_published_two_plane(capsys):
-    d = field(capsys, *T20)
+def test_field_t20_published_two_plane(cli):
+    d = field(cli, *T20)
     A, B = d["corrections"]
     # B&K 17-227 example 6 as reproduced in the hsbalance docs: 1.979 g @ 236.2°, 1.071 g @ 121.8°
     assert A["mass"] * 1e3 == pytest.approx(1.979, **sheet(1.979, 4))
@@ -728,8 +708,8 @@ def test_field_t20_published_two_plane(capsys):
         assert row[1]["angle_deg"] == pytest.approx(want[3], **dp(want[3], 1))
 
 
-def test_field_t21_synthetic_two_plane_and_mirrored_sense(capsys):
-    d = field(capsys, *T21)
+def test_field_t21_synthetic_two_plane_and_mirrored_sense(cli):
+    d = field(cli, *T21)
     A, B = d["corrections"]
     assert A["mass"] * 1e3 == pytest.approx(12.0002, **sheet(12.0002))
     assert A["angle_deg"] == pytest.approx(200.007, **dp(200.007, 3))
@@ -743,36 +723,30 @@ def test_field_t21_synthetic_two_plane_and_mirrored_sense(capsys):
         if "@" in a and " g@" not in a:
             a = ",".join(f"{p.split('@')[0]}@{-float(p.split('@')[1])}" for p in a.split(","))
         flipped.append(a)
-    m = field(capsys, *flipped)
+    m = field(cli, *flipped)
     assert m["corrections"][0]["angle_deg"] == pytest.approx(159.993, **dp(159.993, 3))
     assert m["corrections"][0]["mass"] == pytest.approx(A["mass"], rel=1e-12)
 
 
-def test_field_radius_change_t23(capsys):
+def test_field_radius_change_t23(cli):
     # T23: the same unbalance at another radius, m2 = m1 r1 / r2 (10 g at 100 mm = 8 g at 125 mm)
     base = ["--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110"]
-    d0 = field(capsys, *base)
-    d1 = field(capsys, *base, "--trial-radius", "100mm", "--radius", "125mm")
+    d0 = field(cli, *base)
+    d1 = field(cli, *base, "--trial-radius", "100mm", "--radius", "125mm")
     assert d1["corrections"][0]["mass"] == pytest.approx(d0["corrections"][0]["mass"] * 0.8, rel=1e-15)
     assert d1["corrections"][0]["angle_deg"] == d0["corrections"][0]["angle_deg"]
 
 
-def test_field_table_and_warnings(capsys):
-    with pytest.raises(SystemExit):
-        main(["field-balance", *T20])
-    out, err = capsys.readouterr()
-    assert "1.97947" in out and "236.17" in out and "2.701" in out
+def test_field_table_and_warnings(cli):
+    r = cli("field-balance", *T20)
+    assert "1.97947" in r.out and "236.17" in r.out and "2.701" in r.out
     # a trial that hardly changed the reading: warned
-    with pytest.raises(SystemExit):
-        main(["field-balance", "--initial", "6.0@30", "--trial", "1 g@0", "--run", "6.1@32"])
-    out, err = capsys.readouterr()
-    assert "larger trial" in err
+    r = cli("field-balance", "--initial", "6.0@30", "--trial", "1 g@0", "--run", "6.1@32")
+    assert "larger trial" in r.err
     # nearly dependent columns: ill-conditioned
-    with pytest.raises(SystemExit):
-        main(["field-balance", "--initial", "10@0,10@0", "--trial", "5 g@0", "--run", "20@0,20@0",
-              "--trial", "5 g@0", "--run", "20@1,20@0"])
-    out, err = capsys.readouterr()
-    assert "ill-conditioned" in err
+    r = cli("field-balance", "--initial", "10@0,10@0", "--trial", "5 g@0", "--run", "20@0,20@0",
+            "--trial", "5 g@0", "--run", "20@1,20@0")
+    assert "ill-conditioned" in r.err
 
 
 @pytest.mark.parametrize("args, says", [
@@ -785,8 +759,8 @@ def test_field_table_and_warnings(capsys):
     (["--initial", "1@0,1@0", "--trial", "1 g@0", "--run", "2@0,2@0", "--trial", "1 g@0", "--run", "3@0,3@0"], "singular"),
     (["--initial", "6@30", "--trial", "10 m@0", "--run", "4@110"], "--trial"),
 ])
-def test_field_bad_input_exit_2(capsys, args, says):
-    d = field(capsys, *args, code=2)
+def test_field_bad_input_exit_2(cli, args, says):
+    d = field(cli, *args, code=2)
     lines = d["err"].strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("rbcli: ") and says in lines[0], d["err"]
 
@@ -795,17 +769,9 @@ def test_field_bad_input_exit_2(capsys, args, says):
 
 
 def _exit_code(*argv: str) -> tuple[int, str]:
-    import contextlib
-    import io
-
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            main(list(argv))
-            code = 0
-        except SystemExit as exc:
-            code = 0 if exc.code is None else int(exc.code)
-    return code, err.getvalue()
+    """(exit code, standard error) of an in-process run (hypothesis cannot take fixtures)."""
+    r = run_inprocess(*argv)
+    return r.code, r.err
 
 
 finite = st.floats(allow_nan=False, allow_infinity=False)
@@ -831,3 +797,133 @@ def test_field_any_numbers_give_a_result_or_a_one_line_error(a, p, t, a1):
     code, err = _exit_code("field-balance", "--initial", f"{a!r}@{p!r}", "--trial", f"{t!r} g@0",
                            "--run", f"{a1!r}@{p!r}", "--json")
     assert code in (0, 2), err
+
+
+# ------------------------------------------------------------------------- readings with units
+
+
+def test_field_readings_with_units_issue_example(cli):
+    """Issue 13: '6 mm@30', '10 g@0', '4000 um@110' is 9.08 g, not 0.015 g. By hand (sheet
+    §5.1): V0 = 6 mm at 30°, V1 = 4 mm at 110°, T = 10 g at 0°; |V1 - V0|² = 36 + 16 -
+    48 cos 80° mm², so |W| = |V0| |T| / |V1 - V0| = 60 / 6.60794 = 9.07998 g, and
+    arg W = arg(-V0) - arg(V1 - V0) = 210° - 173.406° = 36.594°."""
+    d = field(cli, "--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4000 um@110")
+    (c,) = d["corrections"]
+    by_hand = 6 * 10 / math.sqrt(36 + 16 - 48 * math.cos(math.radians(80)))
+    assert c["mass"] * 1e3 == pytest.approx(by_hand, rel=1e-12)
+    assert c["mass"] * 1e3 == pytest.approx(9.08, abs=0.005)
+    assert c["angle_deg"] == pytest.approx(36.594, abs=1e-3)
+    assert d["readings"] == {"kind": "displacement", "unit": "m"}
+    # the influence coefficient is in SI: (4 mm - 6 mm)/10 g -> m per kg
+    assert d["influence"][0][0]["magnitude"] == pytest.approx(6.60794e-3 / 0.010, rel=1e-5)
+    # the same readings bare (a relative scale) give the same correction
+    bare = field(cli, "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110")
+    assert bare["corrections"][0]["mass"] == pytest.approx(c["mass"], rel=1e-14)
+    assert bare["readings"] == {"kind": "relative", "unit": None}
+    r = cli("field-balance", "--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4000 um@110")
+    assert r.code == 0 and "µm per g" in r.out and "9.07998" in r.out
+
+
+def test_field_velocity_units_mix_exactly(cli):
+    # in/s and mm/s are one kind: converted exactly (1 in = 25.4 mm), so '0.15748 in/s' is 4 mm/s
+    d = field(cli, "--initial", "6.0 mm/s@30", "--trial", "10 g@0", "--run", "0.15748031496062992 in/s@110")
+    ref = field(cli, "--initial", "6.0@30", "--trial", "10 g@0", "--run", "4.0@110")
+    assert d["readings"]["kind"] == "velocity"
+    assert d["corrections"][0]["mass"] == pytest.approx(ref["corrections"][0]["mass"], rel=1e-12)
+    # mil (25.4 µm) and g (standard gravity, an acceleration) are readings' units
+    assert field(cli, "--initial", "2 mil@30", "--trial", "10 g@0", "--run", "40 um@110")["readings"]["kind"] == "displacement"
+    assert field(cli, "--initial", "0.5 g@30", "--trial", "10 g@0", "--run", "2 m/s^2@110")["readings"]["kind"] == "acceleration"
+
+
+def test_field_trial_mass_bare_is_grams(cli):
+    assert (field(cli, "--initial", "6@30", "--trial", "10@0", "--run", "4@110")["trials"][0]["mass"]
+            == field(cli, "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110")["trials"][0]["mass"] == 0.01)
+    assert "a bare mass is in grams" in " ".join(cli("field-balance", "--help").out.split())
+
+
+@pytest.mark.parametrize("args, says", [
+    # mixed dimensions
+    (["--initial", "6 mm/s@30", "--trial", "10 g@0", "--run", "4 mm@110"], "is a displacement but '6 mm/s@30'"),
+    # bare and unit readings mixed
+    (["--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4.0@110"], "is a bare number but '6 mm@30'"),
+    # an unknown unit is not a label any more
+    (["--initial", "6.0 xyz 12@30", "--trial", "10 g@0", "--run", "4@110"], "unknown unit 'xyz'"),
+    # a unit that is not a vibration reading
+    (["--initial", "6 kg@30", "--trial", "10 g@0", "--run", "4 kg@110"], "not a vibration reading"),
+    # two planes: the sensors' readings must agree too
+    (["--initial", "170 um@112,53 mm/s@78", "--trial", "1.15 g@0", "--run", "235 um@94,58 um@68",
+      "--trial", "1.15 g@0", "--run", "185 um@115,77 um@104"], "--initial: '53 mm/s@78'"),
+])
+def test_field_readings_refused_with_what_was_found(cli, args, says):
+    d = field(cli, *args, code=2)
+    lines = d["err"].strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("rbcli: --") and says in lines[0], d["err"]
+
+
+# ------------------------------------------------------------------------- polar diagrams
+
+
+def _svg_texts(path) -> str:
+    import xml.etree.ElementTree as ET
+
+    root = ET.parse(path).getroot()  # a well-formed SVG document
+    assert root.tag.endswith("svg")
+    return " ".join(t for t in root.itertext())
+
+
+@pytest.mark.parametrize("args", [
+    [TWO_DISK, "--planes", "0,400mm", "--radius", "100mm", "--mass-step", "0.5 g"],
+    [FAN, "--planes", "320,380mm", "--radius", "190mm", "--positions", "6", "--angle-sense", "against"],
+    [TWO_DISK],
+])
+def test_balance_plot_renders(cli, tmp_path, args):
+    path = tmp_path / "polar.svg"
+    r = cli("balance", *args, "--plot", str(path))
+    assert r.code == 0, r.err
+    _svg_texts(path)
+    assert path.stat().st_size > 5000
+    # the figure is what the result's diagram says: arrows per plane, as printed
+    import rbcli
+
+    kw = {"planes": args[2], "radius": args[4]} if len(args) > 1 else {}
+    res = rbcli.balance(rbcli.load(args[0]), **kw)
+    diagram = res.diagram()
+    if kw:
+        assert [p.title.split()[1] for p in diagram.panels] == ["A", "B"]
+        for p, c in zip(diagram.panels, res.to_json()["corrections"] if "--positions" not in args else []):
+            (add,) = [a for a in p.arrows if a.role == "correction"]
+            assert add.mass == c["mass"] and add.angle_deg == c["angle_deg"]
+    else:
+        assert [p.quantity for p in diagram.panels] == ["unbalance", "couple"]
+
+
+def test_field_balance_plot_renders(cli, tmp_path):
+    path = tmp_path / "sheet.svg"
+    r = cli("field-balance", *T20, "--plot", str(path))
+    assert r.code == 0, r.err
+    _svg_texts(path)
+    png = tmp_path / "sheet.png"
+    assert cli("field-balance", "--initial", "6 mm@30", "--trial", "10 g@0", "--run", "4000 um@110",
+               "--plot", str(png)).code == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_plot_path_checked_before_computing(cli, tmp_path):
+    r = cli("balance", TWO_DISK, "--plot", str(tmp_path / "x.txt"))
+    assert r.code == 2 and r.err.startswith("rbcli: --plot") and r.out == ""
+    r = cli("field-balance", "--initial", "6@30", "--trial", "10 g@0", "--run", "4@110",
+            "--plot", str(tmp_path / "x.jpg"))
+    assert r.code == 2 and r.err.startswith("rbcli: --plot") and r.out == ""
+
+
+def test_plot_function_returns_a_figure():
+    """render.balanceplot.plot returns the Figure (the cli writes it): one polar panel per
+    panel of the result's diagram."""
+    import rbcli
+    from rbcli.render.balance import ShopUnits
+    from rbcli.render.balanceplot import plot
+
+    res = rbcli.balance(rbcli.load(TWO_DISK), planes="0,400mm", radius="100mm")
+    fig = plot(res.diagram(), ShopUnits(None))
+    assert type(fig).__name__ == "Figure"
+    assert [ax.name for ax in fig.axes] == ["polar", "polar"]

@@ -23,12 +23,13 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
+from rbcli.api import balancejson as J
+from rbcli.api.balancejson import balance_json
 from rbcli.core import balance as bal
 from rbcli.core.balance import (
     achieved_grade,
     allocate_permissible,
     apply_corrections,
-    balance_json,
     bearing_forces,
     corrections,
     field_single_plane,
@@ -179,7 +180,7 @@ def test_example_a_corrections_t13():
     # numbers of size 1e-3 kg m -> below 1e-16 kg m; 1e-15 gives 10x room
     assert abs(c.residual.static) < 1e-15
     assert abs(c.residual.moment) < 1e-15
-    assert not c.residual.to_json()["static_unbalance_angle_defined"]
+    assert not J.residual_json(c.residual)["static_unbalance_angle_defined"]
 
 
 def test_example_a_r_b_50mm_t14():
@@ -198,7 +199,7 @@ def test_example_a_bearing_forces_and_iso():
     # F_1 = 83.8916 N @ 28.072 deg, F_2 = 120.9782 N @ 78.232 deg
     assert abs(f.forces[0]) == pytest.approx(83.8916, rel=1e-5)
     assert abs(f.forces[1]) == pytest.approx(120.9782, rel=1e-5)
-    j = f.to_json()["bearing_forces"]
+    j = J.bearing_forces_json(f)["bearing_forces"]
     assert j[0]["angle_deg"] == pytest.approx(28.072, abs=1e-3)
     assert j[1]["angle_deg"] == pytest.approx(78.232, abs=1e-3)
     iso = iso_check(u, 6.3, W, (0.0, 400 * MM))
@@ -261,8 +262,8 @@ def test_example_b_wheel_unbalance_and_corrections():
     u = analyse(example_b_parts())
     # COM on the axle: U = 0 (disk centred at the origin; round-off only)
     assert u.statically_balanced
-    assert not u.to_json()["static_unbalance_angle_defined"]
-    assert u.to_json()["static_unbalance_angle_deg"] == 0.0
+    assert not J.unbalance_json(u)["static_unbalance_angle_defined"]
+    assert J.unbalance_json(u)["static_unbalance_angle_deg"] == 0.0
     # P = P_G = 1 745 241 g mm^2 @ 180 deg; disk D_xz = -(m a^2/8) sin 2 theta
     assert u.couple_unbalance == pytest.approx(1745241 * GMM2, rel=1e-6)
     assert u.couple_angle_deg == pytest.approx(180.0, abs=1e-6)
@@ -314,7 +315,7 @@ def test_example_b_forces_iso_and_rounding():
     # 215.3104 N @ 0 and @ 180 deg (a pure rocking couple); static 147.10 / 49.03 N
     assert abs(f.forces[0]) == pytest.approx(215.3104, rel=1e-6)
     assert abs(f.forces[1]) == pytest.approx(215.3104, rel=1e-6)
-    j = f.to_json()["bearing_forces"]
+    j = J.bearing_forces_json(f)["bearing_forces"]
     assert angdiff(j[0]["angle_deg"], 0.0) < 1e-6 and angdiff(j[1]["angle_deg"], 180.0) < 1e-6
     assert f.static_loads[0] == pytest.approx(147.10, abs=0.005)  # printed with 2 decimals
     assert f.static_loads[1] == pytest.approx(49.03, abs=0.005)
@@ -375,7 +376,7 @@ def test_t9_to_t12(masses, corr, forces):
         assert pc.mass == pytest.approx(m * G, rel=1e-9)  # exact decimal data, round-off only
         assert angdiff(pc.angle_deg, a) < 1e-9
     f = bearing_forces(u, 3000 * RPM, (0.0, 400 * MM))
-    fj = f.to_json()["bearing_forces"]
+    fj = J.bearing_forces_json(f)["bearing_forces"]
     for row, (F, a) in zip(fj, forces):
         assert row["force"] == pytest.approx(F, rel=1e-6)  # sheet 6 s.f.
         assert angdiff(row["angle_deg"], a) < 1e-9
@@ -391,7 +392,7 @@ def test_t11_pure_couple_numbers():
     # U = 0 (to round-off of 0.1*cos(pi) etc.), P = 400 000 g mm^2 @ 180 deg
     assert u.statically_balanced
     assert u.moment_unbalance == pytest.approx(400000 * GMM2, rel=1e-12)
-    assert angdiff(u.to_json()["moment_unbalance_angle_deg"], 180.0) < 1e-9
+    assert angdiff(J.unbalance_json(u)["moment_unbalance_angle_deg"], 180.0) < 1e-9
 
 
 # ---------------------------------------------------------------------------------------
@@ -1087,10 +1088,9 @@ def test_balance_json_keys():
     # no bearing_forces key without bearings (SPEC: "when speed and bearings are given")
     e = balance_json(u, forces=bearing_forces(u, W))
     assert "bearing_forces" not in e and "dynamics" in e
-    # every result's own to_json is plain too
-    f = field_two_plane([1 + 1j, 2], [3, 2 + 1j], [1, 4j], 1.0, 1j)
-    assert _plain(f.to_json()) and _plain(field_single_plane(1, 2j, 1).to_json())
-    assert _plain(split_to_positions(1.0, 10.0, 6).to_json())
+    # every JSON function gives plain data too
+    assert _plain(J.positions_json(bal.split_corrections(c, 6)))
+    assert _plain(J.residual_json(c.residual)) and _plain(J.frame_json(u.frame))
 
 
 def test_iso_correction_planes_and_foreign_corrections():

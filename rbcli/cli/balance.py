@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import re
-
 import typer
 
 from rbcli.cli import common as c
@@ -27,7 +25,7 @@ w x L. With --grade G6.3 (and --speed, the maximum service speed, and --bearings
 residual per plane, the achieved grade and PASS or FAIL for the rotor as given (exit status
 1 on FAIL, with or without --planes); with --planes also the residuals and verdict predicted
 for the rotor with the (rounded) corrections fitted. --apply OUT.yaml writes the body with
-the corrections added as point parts.
+the corrections added as point parts; --plot FILE draws the polar balancing diagram.
 
 Angles are degrees about the shaft (+z) from +x (the 0° mark) towards +y, in the direction
 of rotation for a positive speed (--angle-sense against counts the other way). Positions
@@ -57,248 +55,79 @@ def balance(
     tolerance_planes: str = typer.Option(None, "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11, the default) or corrections (older practice).", show_default=False),
     apply: str = typer.Option(None, "--apply", help="Write the body with the correction masses added as point parts to this YAML file.", show_default=False),
     force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input: the body file, a file it includes or a mesh it reads)."),
+    plot: str = typer.Option(None, "--plot", help="Write the polar balancing diagram (png, svg or pdf): per correction plane the unbalance as given, the masses to add and the residual, on the rotor's clock face (without --planes: U and P_G).", show_default=False),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    import math
-
+    from rbcli.api import balance as api
     from rbcli.errors import InputError
-    from rbcli.render.balance import ShopUnits
+    from rbcli.render import balance as rb
 
     e = c.env()
-    su = ShopUnits(units)
-    # --- option values, checked before the body is read (bad usage is bad usage)
-    if angle_sense not in ("with", "against"):
-        raise InputError(f"--angle-sense must be 'with' or 'against', not '{angle_sense}'")
-    if tolerance_planes not in (None, "bearings", "corrections"):
-        raise InputError(f"--tolerance-planes must be 'bearings' or 'corrections', not '{tolerance_planes}'")
-    t_planes = tolerance_planes or "bearings"
-    zero_deg = 0.0
-    if zero_mark_deg is not None:
-        zero_deg = c.degrees(zero_mark_deg, "--zero-mark-deg")
-        if not math.isfinite(zero_deg):
-            raise InputError("--zero-mark-deg: must be a finite angle")
-    n_shaft = c.direction(shaft, "--shaft") if shaft is not None else None
-    p_through = c.point(through, "--through") if through is not None else None
-    v_mark = c.vector(mark, "dimensionless", "--mark") if mark is not None else None
-    z_planes = c.distinct(c.numbers(planes, "length", "--planes", counts=(2,)), "--planes", "correction planes") if planes is not None else None
-    r_opt = None
-    if radius is not None:
-        r_opt = [c.positive(x, "--radius", "the correction radius") for x in c.numbers(radius, "length", "--radius", counts=(1, 2))]
-    m_step = c.positive(c.quantity(mass_step, "mass", "--mass-step"), "--mass-step", "the mass step") if mass_step is not None else None
-    a_step = None
-    if angle_step is not None:
-        a_step = c.degrees(angle_step, "--angle-step")
-        if not (0.0 < a_step <= 360.0):
-            raise InputError(f"--angle-step: must be more than 0 and at most 360 degrees, got {angle_step}")
-    if positions is not None and positions < 3:
-        raise InputError(f"--positions: needs at least 3 equally spaced positions, got {positions}")
-    W = c.positive(c.quantity(speed, "angular_speed", "--speed"), "--speed", "the speed (to turn the other way, reverse --shaft)") if speed is not None else None
-    z_bear = c.distinct(c.numbers(bearings, "length", "--bearings", counts=(2,)), "--bearings", "bearings") if bearings is not None else None
-    gv = c.positive(c.quantity(g, "acceleration", "--g"), "--g", "gravity") if g is not None else None
-    G = c.grade(grade) if grade is not None else None
-    # --- which options need which
-    if z_planes is None:
-        for opt, val in (("--radius", radius), ("--mass-step", mass_step), ("--angle-step", angle_step),
-                         ("--positions", positions), ("--apply", apply)):
-            if val is not None:
-                raise InputError(f"{opt}: needs the correction planes, --planes zA,zB")
-    if positions is not None and a_step is not None:
-        raise InputError("--angle-step: the angles are fixed by --positions; give one or the other")
-    if G is not None:
-        if W is None:
-            raise InputError("--grade: needs --speed, the maximum service speed (e.g. --speed '3000 rpm')")
-        if t_planes == "bearings" and z_bear is None:
-            raise InputError(
-                "--grade: needs --bearings z1,z2, the planes ISO 21940-11 allocates the tolerance to "
-                "(or --tolerance-planes corrections with --planes)"
-            )
-        if t_planes == "corrections" and z_planes is None:
-            raise InputError("--tolerance-planes corrections: needs --planes zA,zB")
-    elif tolerance_planes is not None:
-        raise InputError("--tolerance-planes: only used with --grade")
+    su = rb.ShopUnits(units)
+    b = c.load_one(body, expr, e)
+    o = api.BalanceOptions.parse(
+        b, shaft=shaft, through=through, mark=mark, zero_mark_deg=zero_mark_deg,
+        angle_sense=angle_sense, planes=planes, radius=radius, mass_step=mass_step,
+        angle_step=angle_step, positions=positions, speed=speed, bearings=bearings, g=g,
+        grade=grade, tolerance_planes=tolerance_planes)
+    if apply is not None and o.planes is None:
+        raise InputError("--apply: needs the correction planes, --planes zA,zB")
     if force and apply is None:
         raise InputError("--force: only used with --apply")
-
-    b = c.load_one(body, expr, e)
     out_path = None
     if apply is not None:
         from rbcli.io.writebody import check_output
 
         out_path = check_output(apply, b, force=force)
+    plot_path = c.check_plot(plot, b, others={"--apply": out_path}) if plot is not None else None
+    res = api.run(b, o)
+    if plot_path is not None:
+        from rbcli.render import balanceplot
 
-    from rbcli.render import balance as rb
-
-    res = compute(b, shaft=n_shaft, through=p_through, mark=v_mark, zero_mark_deg=zero_deg,
-                  angle_sense=angle_sense, planes=z_planes, radius=r_opt, mass_step=m_step,
-                  angle_step=a_step, positions=positions, speed=W, bearings=z_bear, g=gv, grade=G,
-                  tolerance_planes=t_planes)
-    if m_step is not None and res.corrections is not None:
-        biggest = max(pc.mass for pc in res.corrections.pair)
-        if m_step > biggest:
-            res.warnings.append(
-                f"--mass-step {mass_step} is larger than the largest correction "
-                f"({su.show(biggest, 'mass', 4)} {su.unit('mass')}): the masses round to 0 or one step "
-                "(a bare number is kg: did you mean grams, e.g. '1 g'?)"
-            )
+        c.save_plot(balanceplot.plot(res.diagram(), su), plot_path)
+    applied = None
     if out_path is not None:
-        import shlex
-
         given = [("--shaft", shaft), ("--through", through), ("--mark", mark),
                  ("--zero-mark-deg", zero_mark_deg),
                  ("--angle-sense", "against" if angle_sense == "against" else None),
                  ("--planes", planes), ("--radius", radius), ("--bearings", bearings),
                  ("--speed", speed), ("--grade", grade)]
-        check = " ".join(f"{o}={shlex.quote(v)}" for o, v in given if v is not None)
-        _apply(res, out_path, apply, b, check)
+        applied = _apply(res, out_path, apply, b, given)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    c.emit(e, json_, lambda: rb.to_json(res), lambda doc: rb.document(doc, res, su, digits))
-    c.finish(1 if (res.iso is not None and not res.iso.passed) else 0)
+    c.emit(e, json_, lambda: _json(res, applied),
+           lambda doc: rb.document(doc, res, su, digits, applied=applied))
+    c.finish(res.return_code)
 
 
-def compute(body, *, shaft=None, through=None, mark=None, zero_mark_deg: float = 0.0,
-            angle_sense: str = "with", planes=None, radius=None, mass_step=None, angle_step=None,
-            positions=None, speed=None, bearings=None, g=None, grade=None,
-            tolerance_planes: str = "bearings"):
-    """Everything ``rbcli balance`` reports for a body, as a render Result (shared with report).
-
-    Options are parsed values in SI (None = not given): ``shaft`` a direction, ``through``
-    "com", "origin" or [x, y, z], ``mark`` a direction, ``planes``/``bearings`` (z1, z2),
-    ``radius`` [r] or [rA, rB], ``mass_step`` kg, ``angle_step`` and ``zero_mark_deg``
-    degrees, ``positions`` N, ``speed`` rad/s, ``g`` m/s² (default 9.80665), ``grade`` G in
-    mm/s. Errors come back as the command reports them: a ValueError of the physics as an
-    InputError naming the options given, a result that overflows (or is inf or NaN anywhere
-    in its JSON) as NonFiniteResult; both exit 2.
-    """
-    import numpy as np
-
-    from rbcli.errors import InputError, NonFiniteResult
-    from rbcli.render import balance as rb
-    from rbcli.render.jsonout import jsonable
-
-    given = [o for o, v in (("--planes", planes), ("--radius", radius), ("--bearings", bearings),
-                            ("--speed", speed), ("--mass-step", mass_step), ("--through", through),
-                            ("--g", g)) if v is not None]
-    try:
-        with np.errstate(all="ignore"):
-            res = _compute(body, n_shaft=shaft, p_through=through, v_mark=mark,
-                           zero_mark_deg=zero_mark_deg, sense=angle_sense, z_planes=planes,
-                           r_opt=radius, m_step=mass_step, a_step=angle_step, n_pos=positions,
-                           W=speed, z_bear=bearings, gv=9.80665 if g is None else g, G=grade,
-                           tolerance_planes=tolerance_planes)
-            jsonable(rb.to_json(res))  # refuses inf and NaN
-    except (ValueError, OverflowError, ZeroDivisionError, NonFiniteResult) as exc:
-        if isinstance(exc, ValueError):
-            raise InputError(f"{', '.join(given) or 'balance'}: {exc}") from None
-        raise NonFiniteResult(
-            f"{', '.join(given) or 'balance'}: the result overflows (a number beyond 1e308): "
-            "an option value is too large or too small for this body"
-        ) from None
-    return res
+def _json(res, applied) -> dict:
+    """``--json``: the result's JSON with ``apply`` (before ``warnings``) and ``file``."""
+    d = res.to_json()
+    if applied is not None:
+        d = {**{k: v for k, v in d.items() if k not in ("warnings", "name")},
+             "apply": {"file": applied[0], "parts": applied[1]},
+             "warnings": d["warnings"], "name": d["name"]}
+    d["file"] = res.body.source
+    return d
 
 
-def _compute(b, *, n_shaft, p_through, v_mark, zero_mark_deg, sense, z_planes, r_opt, m_step, a_step,
-              n_pos, W, z_bear, gv, G, tolerance_planes):
-    """The work of :func:`compute`, without its error mapping."""
-    import numpy as np
-
-    from rbcli.core import balance as B
-    from rbcli.core.inertia import combine
-    from rbcli.errors import InputError
-    from rbcli.render.balance import Result, mark_source
-
-    mp = combine(b.parts)
-    if n_shaft is not None:
-        axis, shaft_source = np.asarray(n_shaft, dtype=float), "--shaft"
-    elif b.shaft is not None:
-        axis, shaft_source = np.asarray(b.shaft.axis, dtype=float), "the body's shaft"
-    else:
-        axis, shaft_source = np.array([0.0, 0.0, 1.0]), "body z, the default"
-    if isinstance(p_through, str):
-        P = np.array(mp.com) if p_through == "com" else np.zeros(3)
-        through_source = f"--through {p_through}"
-    elif p_through is not None:
-        P, through_source = np.asarray(p_through, dtype=float), "--through"
-    elif b.shaft is not None:
-        P, through_source = np.asarray(b.shaft.through, dtype=float), "the body's shaft"
-    else:
-        P, through_source = np.zeros(3), "the origin, the default"
-    try:
-        unb = B.unbalance(mp.mass, mp.com, mp.inertia_com, axis, P, reference=v_mark,
-                          zero_mark_deg=zero_mark_deg, angle_sense=sense)
-    except ValueError as exc:
-        raise InputError(f"{'--mark' if 'reference' in str(exc) else '--shaft'}: {exc}") from None
-    res = Result(body=b, unb=unb, shaft_source=shaft_source, through_source=through_source,
-                 mark_source=mark_source(axis, v_mark is not None, zero_mark_deg))
-    res.warnings += list(unb.warnings)
-    res.speed = W
-    res.bearings = z_bear
-    if z_planes is not None:
-        if r_opt is not None:
-            radii = r_opt[0] if len(r_opt) == 1 else (r_opt[0], r_opt[1])
-            res.radius_source = "--radius"
-        elif b.rim_radius is not None:
-            radii = float(b.rim_radius)
-            res.radius_source = "the body's rim_radius"
-        else:
-            raise InputError("--planes: needs --radius (the radius the correction masses sit at), "
-                             "or rim_radius in the body file")
-        try:
-            corr = B.corrections(unb, z_planes, radii, bearings=z_bear)
-        except ValueError as exc:
-            raise InputError(f"--planes/--radius: {exc}") from None
-        res.corrections = corr
-        final = corr
-        if n_pos is not None:
-            pos = B.split_corrections(corr, n_pos, mass_step=m_step)
-            res.positions = pos
-            final = pos.corrections
-            pts = [(m, x) for _, _, m, x in pos.points()]
-        else:
-            if m_step is not None or a_step is not None:
-                final = B.round_corrections(corr, m_step, a_step)
-            pts = list(B.correction_points(final))
-        res.final = final
-        res.warnings += list(final.warnings)
-        res.corrected = B.add_point_masses(unb, pts)
-    if W is not None or z_bear is not None:
-        res.forces = B.bearing_forces(unb, W if W is not None else 0.0, z_bear, g=gv)
-        if W is not None and z_bear is not None and res.corrected is not None:
-            res.forces_after = B.bearing_forces(res.corrected, W, z_bear, g=gv)
-    if G is not None:
-        tp = z_bear if tolerance_planes == "bearings" else z_planes
-        try:
-            res.iso = B.iso_check(unb, G, W, tp,
-                                  planes_are="bearing" if tolerance_planes == "bearings" else "correction",
-                                  corrections=res.final)
-        except ValueError as exc:
-            raise InputError(f"--grade: {exc}") from None
-        res.warnings += list(res.iso.warnings)
-    return res
-
-
-def _apply(res, out_path, apply: str, b, check: str) -> None:
-    from rbcli.io.writebody import NewPoint, write_balanced
-
-    pts = []
-    if res.positions is not None:
-        for name, k, m, x in res.positions.points():
-            pts.append(NewPoint(f"balance {name} (position {k})", m, x))
-    else:
-        from rbcli.core.balance import correction_points
-
-        names = [pc.name for pc in res.final.pair if pc.mass > 0.0]
-        for name, (m, x) in zip(names, correction_points(res.final)):
-            pts.append(NewPoint(f"balance {name}", m, x))
+def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
+    """Write ``--apply OUT``: the body with the correction masses as point parts.
+    Returns (the path written, the parts added as JSON rows)."""
     import shlex
 
-    fr = res.final
+    from rbcli.io.writebody import NewPoint, write_balanced
+
+    pts = [NewPoint(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
+                    a.mass, a.at) for a in res.added]
+    fr = res.installed
     if res.positions is not None:
         state = "correction masses at the positions" + (" (rounded)" if fr.rounded else "")
     else:
         state = "rounded correction masses" if fr.rounded else "correction masses"
+    check = " ".join(f"{o}={shlex.quote(str(v))}" for o, v in given if v is not None)
     header = [
         f"Written by rbcli balance --apply from {b.source} ({b.name}):",
         f"the body with the two-plane {state} added as point parts",
@@ -307,10 +136,8 @@ def _apply(res, out_path, apply: str, b, check: str) -> None:
         f"  rbcli balance {shlex.quote(apply)} {check}",
     ]
     write_balanced(b, pts, str(out_path), force=True, header=header)
-    res.apply_path = str(out_path)
-    res.apply_parts = [
-        {"name": p.name, "mass": float(p.mass), "at": [float(x) for x in p.at]} for p in pts
-    ]
+    return str(out_path), [{"name": p.name, "mass": float(p.mass), "at": [float(x) for x in p.at]}
+                           for p in pts]
 
 
 MANUAL["balance"] = {
@@ -366,6 +193,15 @@ MANUAL["balance"] = {
         "also not through a link to one — nor over an existing OUT without --force (exit 2); it "
         "writes a temporary file beside OUT and renames it, so a failed run leaves no half-written "
         "body.",
+        "--plot FILE (png, svg or pdf, by the extension; checked before anything is computed, never "
+        "an input) draws the polar balancing diagram: with --planes one clock face per correction "
+        "plane with the rotor's unbalance in that plane as given (solid), the masses to add as "
+        "unbalances m r (dashed; one arrow per position with --positions, labelled with the mass) "
+        "and the residual after adding them (dotted), in g·mm (or the --units); without --planes "
+        "the static unbalance U and the couple unbalance P_G. The dial reads the angles the "
+        "command prints, 0° (the mark) on the right; the rotor is seen from the +z end of the "
+        "shaft turning counterclockwise, so angles counted against the rotation (--angle-sense "
+        "against) run clockwise on the dial and every vector sits where it is on the rotor.",
     ],
     "json": [
         ("mass", "rotor mass, kg."),
@@ -403,6 +239,8 @@ MANUAL["balance"] = {
         ("rbcli balance examples/fan_impeller.yaml --planes 320,380mm --radius 190mm --bearings 0,200mm --speed '1480 rpm' --grade G6.3 --positions 6 --mass-step '0.5 g'",
          "An overhung fan: a negative static load on the far bearing, weights on the blades, "
          "rbcli's outboard allocation rule flagged."),
+        ("rbcli balance examples/two_disk_rotor.yaml --planes 0,400mm --radius 100mm --mass-step '0.5 g' --plot polar.svg",
+         "The polar diagram: per plane the unbalance as given, the 8.5 g and 12.5 g to add and the residual."),
         ("rbcli balance examples/car_wheel.yaml --planes=-100,100mm --mass-step '5 g' --apply wheel_balanced.yaml",
          "Writes the wheel with its two 45 g weights; 'rbcli balance wheel_balanced.yaml' shows the residual."),
     ],
@@ -413,120 +251,52 @@ MANUAL["balance"] = {
 
 FIELD_HELP = """Field (trial-weight) balancing from vibration readings: the influence-coefficient method.
 
-Readings are amplitude@phase (any one vibration unit: µm, mils, mm/s; the phase in degrees
-from the keyphasor), trial masses mass@angle ('10 g@0'). One plane: --initial V0, one
---trial T and one --run V1 (with the trial on) give H = (V1 - V0)/T and the correction
-W = -V0/H (trial removed; with it left on, add W - T). Two planes: two sensors per run
-(--initial V1,V2), --trial twice (planes A and B) and --run twice (trial A on, then trial B
-on and A removed, or left on with --cumulative) give the 2x2 influence matrix and W =
--alpha^-1 V0, with its condition number (a warning above 50) and a warning for a trial that
-changed no reading by 25 % or 25°. The correction angles are counted in the same sense as
-the trial angles and the phases (they must agree). --trial-radius and --radius move the
-corrections to another radius (m = m_trial r_trial / r).
+Readings are amplitude@phase, the phase in degrees from the keyphasor: all bare numbers
+('6.0@30', one relative scale: the corrections do not depend on it) or all with units of one
+kind, converted exactly: displacement µm, mm, mil ('40 um@30'), velocity mm/s, in/s
+('6 mm/s@30') or acceleration g (standard gravity), m/s² ('0.5 g@30'). Mixed kinds, unknown
+units and a mix of bare and unit readings are refused. Trial masses are mass@angle
+('10 g@0'; a bare mass is in grams). One plane: --initial V0, one --trial T and one --run V1
+(with the trial on) give H = (V1 - V0)/T and the correction W = -V0/H (trial removed; with it
+left on, add W - T). Two planes: two sensors per run (--initial V1,V2), --trial twice (planes
+A and B) and --run twice (trial A on, then trial B on and A removed, or left on with
+--cumulative) give the 2x2 influence matrix and W = -alpha^-1 V0, with its condition number
+(a warning above 50) and a warning for a trial that changed no reading by 25 % or 25°. The
+correction angles are counted in the same sense as the trial angles and the phases (they
+must agree). --trial-radius and --radius (m unless a unit is given) move the corrections to
+another radius (m = m_trial r_trial / r). --plot FILE draws the polar diagram.
 """
-
-_READING = re.compile(r"\s*(?P<num>[^@]+?)\s*@\s*(?P<ang>.+?)\s*")
-
-
-def _phasor_text(text: str, option: str, *, mass: bool):
-    """'6.0@30' (a reading) or '10 g@0' (a mass, kg) -> complex; the angle in degrees."""
-    import cmath
-    import math
-
-    from rbcli.errors import InputError
-
-    m = _READING.fullmatch(text)
-    if not m:
-        what = "mass@angle, e.g. '10 g@0'" if mass else "amplitude@phase, e.g. '6.0@30'"
-        raise InputError(f"{option}: '{text}' is not {what}")
-    if mass:
-        amp = c.quantity(m["num"], "mass", option)
-    else:
-        num = c.NUMBER.match(m["num"])
-        if not num:
-            raise InputError(f"{option}: '{text}': the amplitude must be a number (a unit after it is a label)")
-        amp = float(m["num"][: num.end()])
-    ang = math.degrees(c.quantity(m["ang"], "angle", option, bare="deg"))
-    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
-        raise InputError(f"{option}: '{text}': amplitude must be a finite number >= 0 and the angle finite")
-    return complex(cmath.rect(amp, math.radians(ang)))
-
-
-def _readings(text: str, option: str, n: int) -> list[complex]:
-    from rbcli.errors import InputError
-
-    parts = [p for p in text.split(",")]
-    if len(parts) != n:
-        raise InputError(
-            f"{option}: expected {n} reading{'s' if n > 1 else ''} (one per sensor, as many as "
-            f"trial planes), got {len(parts)} in '{text}'"
-        )
-    return [_phasor_text(p, option, mass=False) for p in parts]
-
 
 @app.command("field-balance", help=FIELD_HELP)
 def field_balance(
-    initial: str = typer.Option(..., "--initial", help="Readings without trial: amplitude@phase, one per sensor (1 or 2), e.g. '6.0@30' or '170@112,53@78'.", show_default=False),
-    trial: list[str] = typer.Option(..., "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (give it twice for two planes; a bare mass is kg).", show_default=False),
+    initial: str = typer.Option(..., "--initial", help="Readings without trial: amplitude@phase, one per sensor (1 or 2), e.g. '6.0@30', '6 mm/s@30' or '170@112,53@78' (all bare, or all with units of one kind: µm, mm, mil; mm/s, in/s; g, m/s²).", show_default=False),
+    trial: list[str] = typer.Option(..., "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (give it twice for two planes; a bare mass is in grams).", show_default=False),
     run_: list[str] = typer.Option(..., "--run", help="Readings with each trial on, in the order of --trial (same form as --initial).", show_default=False),
     cumulative: bool = typer.Option(False, "--cumulative", help="Two planes: trial A was left on during the run with trial B."),
     trial_radius: str = typer.Option(None, "--trial-radius", help="Radius the trials sat at (m, or with units); with --radius.", show_default=False),
     radius: str = typer.Option(None, "--radius", help="Radius the corrections go at (m, or with units); needs --trial-radius.", show_default=False),
+    plot: str = typer.Option(None, "--plot", help="Write the polar diagram of the balancing sheet (png, svg or pdf): per sensor the readings O, O+T and the trial's effect; per plane the trial and the correction mass.", show_default=False),
     json_: bool = c.JsonOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    from rbcli.errors import InputError
-    from rbcli.render.balance import ShopUnits
+    from rbcli.api import fieldbalance as api
+    from rbcli.render import balance as rb
 
     e = c.env()
-    su = ShopUnits(units)
-    n = len(trial)
-    if n not in (1, 2):
-        raise InputError(f"--trial: give one trial (one plane) or two (two planes), not {n}")
-    if len(run_) != n:
-        raise InputError(f"--run: give one run per trial ({n}), not {len(run_)}")
-    if cumulative and n != 2:
-        raise InputError("--cumulative: only for two planes")
-    if (trial_radius is None) != (radius is None):
-        raise InputError("--radius and --trial-radius go together (the corrections move from the trial radius to --radius)")
-    scale = 1.0
-    radii = None
-    if radius is not None:
-        rt = c.positive(c.quantity(trial_radius, "length", "--trial-radius"), "--trial-radius", "the trial radius")
-        rc = c.positive(c.quantity(radius, "length", "--radius"), "--radius", "the correction radius")
-        scale, radii = rt / rc, (rt, rc)
-    v0 = _readings(initial, "--initial", n)
-    runs = [_readings(r, "--run", n) for r in run_]
-    trials = [_phasor_text(t, "--trial", mass=True) for t in trial]
-    for t in trials:
-        if t == 0:
-            raise InputError("--trial: the trial mass must not be zero")
-    from rbcli.core import balance as B
+    su = rb.ShopUnits(units)
+    plot_path = c.check_plot(plot) if plot is not None else None
+    o = api.FieldBalanceOptions.parse(None, initial=initial, trial=trial, run=run_,
+                                      cumulative=cumulative, trial_radius=trial_radius, radius=radius)
+    res = api.run(None, o)
+    if plot_path is not None:
+        from rbcli.render import balanceplot
 
-    import numpy as np
-
-    from rbcli.errors import NonFiniteResult
-    from rbcli.render import balance as rb
-    from rbcli.render.jsonout import jsonable
-
-    try:
-        with np.errstate(all="ignore"):
-            if n == 1:
-                res = B.field_single_plane(v0[0], runs[0][0], trials[0])
-            else:
-                res = B.field_two_plane(v0, runs[0], runs[1], trials[0], trials[1], cumulative=cumulative)
-            data = jsonable(rb.field_json(res, trials, scale, radii))  # refuses inf and NaN
-    except (ValueError, OverflowError, ZeroDivisionError, np.linalg.LinAlgError, NonFiniteResult) as exc:
-        if isinstance(exc, ValueError):  # LinAlgError too
-            raise InputError(f"--run: {exc}") from None
-        raise NonFiniteResult(
-            "--initial, --trial, --run: the result overflows (a number beyond 1e308); "
-            "the readings or trial masses are too large or too small"
-        ) from None
+        reading = rb.READING_DISPLAY.get(res.reading_kind, (1.0, ""))
+        c.save_plot(balanceplot.plot(res.diagram(), su, reading), plot_path)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    c.emit(e, json_, lambda: data, lambda doc: rb.field_document(doc, res, trials, scale, radii, su, digits))
+    c.emit(e, json_, res.to_json, lambda doc: rb.field_document(doc, res, su, digits))
 
 
 MANUAL["field-balance"] = {
@@ -539,19 +309,36 @@ MANUAL["field-balance"] = {
         "not well separated), a trial run that changed no reading by 25 % in amplitude or 25° "
         "in phase (use a larger trial).",
         "The trial angles and the phases must be counted in the same sense; the correction "
-        "angles come out in that sense. Correction masses are in the trial's mass unit scaled "
+        "angles come out in that sense. Correction masses (kg in JSON, g in tables) are scaled "
         "by --trial-radius / --radius when given.",
+        "Readings and units: all readings (--initial and every --run) are either bare numbers, "
+        "one relative scale (the corrections do not depend on it; JSON readings.kind "
+        "'relative'), or all carry units of one kind, converted exactly to SI: displacement "
+        "(µm, um, mm, mil = 25.4 µm; JSON in m), velocity (mm/s, in/s, m/s; m/s) or "
+        "acceleration (g = standard gravity 9.80665 m/s², m/s²; m/s²). Influence coefficients "
+        "are then per kg in SI and the tables show µm, mm/s or m/s² per g. Refused (exit 2), "
+        "naming the readings found: readings of two kinds, a mix of bare and unit readings, an "
+        "unknown unit or one that is not a vibration reading. A trial mass needs no unit: a "
+        "bare mass is in grams ('10@0' = '10 g@0'), as balancing sheets write it; --trial-radius "
+        "and --radius are metres unless a unit is given.",
+        "--plot FILE (png, svg or pdf) draws the balancing sheet's polar diagram: per sensor the "
+        "reading O without trial, each run O+T and the change T the trial made (from O's tip to "
+        "O+T's), and per plane the trial mass and the correction to add; angles as given, 0° on "
+        "the right, counterclockwise.",
     ],
     "json": [
         ("planes", "1 or 2."),
         ("corrections", "[{name, mass (kg), angle_deg, mass_trial_on, angle_trial_on_deg, radius (m or null)}]; trial removed, and with that plane's trial left on."),
-        ("influence", "[[{magnitude (reading unit per kg), angle_deg}]] row = sensor, column = plane."),
+        ("influence", "[[{magnitude (per kg: the readings' SI unit, m, m/s or m/s^2, or their relative scale), angle_deg}]] row = sensor, column = plane."),
         ("cond, det_magnitude", "2-norm condition number and |det| of the influence matrix (two planes)."),
+        ("readings", "{kind: relative, displacement, velocity or acceleration; unit: null, m, m/s or m/s^2}: what the reading numbers (influence, predicted_residual) are in."),
         ("small_response, predicted_residual, cumulative, warnings", "checks as in the notes."),
     ],
     "examples": [
-        ("rbcli field-balance --initial '6.0@30' --trial '10 g@0' --run '4.0@110'",
-         "One plane: H = 0.66079 (mm/s)/g at 173.406°, add 9.08 g at 36.594° (trial removed)."),
+        ("rbcli field-balance --initial '6.0 mm/s@30' --trial '10 g@0' --run '4.0 mm/s@110'",
+         "One plane: H = 0.660794 (mm/s)/g at 173.406°, add 9.07998 g at 36.594° (trial removed)."),
+        ("rbcli field-balance --initial '6 mm@30' --trial '10 g@0' --run '4000 um@110' --plot sheet.png",
+         "Displacement readings in mm and µm, converted: the same 9.08 g at 36.594°, and the polar diagram."),
         ("rbcli field-balance --initial '170@112,53@78' --trial '1.15 g@0' --run '235@94,58@68' --trial '1.15 g@0' --run '185@115,77@104'",
          "The B&K two-plane example: 1.979 g at 236.2° and 1.071 g at 121.8°, cond 2.70."),
     ],

@@ -435,14 +435,14 @@ def _balance(ctx: _Ctx):
     if o.shaft is None and b.shaft is None and not asked:
         return _skip(key, title, "balance: no shaft in the body file and no --shaft, --planes, --bearings or "
                      "rotation --speed option")
-    from rbcli.cli import balance as cb
+    from rbcli.api.balance import balance
     from rbcli.render import balance as rb
     from rbcli.render.text import Doc
 
     try:
-        res = cb.compute(b, shaft=o.shaft, through=o.through, planes=o.planes, radius=o.radius,
-                         speed=o.rotor_speed, bearings=o.bearings, g=o.g if o.g_given else None,
-                         grade=o.grade)
+        res = balance(b, shaft=o.shaft, through=o.through, planes=o.planes, radius=o.radius,
+                      speed=o.rotor_speed, bearings=o.bearings, g=o.g if o.g_given else None,
+                      grade=o.grade)
     except InputError as exc:
         return _skip(key, title, f"balance: not computed: {exc}")
     doc = Doc()

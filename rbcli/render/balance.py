@@ -1,4 +1,4 @@
-"""Tables and JSON of ``rbcli balance``.
+"""Tables of ``rbcli balance`` and ``rbcli field-balance`` (the JSON is the result's own).
 
 Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
 correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
@@ -9,14 +9,16 @@ follow it (unbalance in oz·in, the rotor mass in oz); forces stay in N. JSON is
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.core import balance as B
-from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num
 from rbcli.render.text import Doc
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.balance import BalanceResult, FieldBalanceResult
+    from rbcli.core import balance as B
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
 SQUARE = "²"
@@ -58,6 +60,10 @@ class ShopUnits:
     def unit(self, kind: str) -> str:
         return self._kinds[kind][1]
 
+    def factor(self, kind: str) -> float:
+        """SI per display unit of ``kind``."""
+        return self._kinds[kind][0]
+
     def show(self, x: float | None, kind: str, digits: int) -> str:
         if x is None:
             return "—"
@@ -82,33 +88,6 @@ def yes(b: bool) -> str:
     return "yes" if b else "no"
 
 
-# ----------------------------------------------------------------------------- result
-
-
-@dataclass
-class Result:
-    """Everything ``rbcli balance`` computed, and where its inputs came from."""
-
-    body: Body
-    unb: B.Unbalance
-    shaft_source: str
-    through_source: str
-    mark_source: str
-    corrections: B.Corrections | None = None  # ideal
-    final: B.Corrections | None = None  # what to install (rounded or ideal; net of positions)
-    positions: B.PositionCorrections | None = None
-    radius_source: str = "--radius"
-    corrected: B.Unbalance | None = None  # the rotor with what to install added
-    speed: float | None = None
-    bearings: tuple[float, float] | None = None
-    forces: B.BearingForces | None = None
-    forces_after: B.BearingForces | None = None
-    iso: B.IsoCheck | None = None
-    apply_path: str | None = None
-    apply_parts: list[dict] = field(default_factory=list)
-    warnings: list[str] = field(default_factory=list)
-
-
 # ----------------------------------------------------------------------------- conventions
 
 
@@ -116,25 +95,9 @@ def _vec(v, digits: int = 6) -> str:
     return "[" + ", ".join(num(0.0 if abs(x) < 1e-15 else float(x), digits) for x in v) + "]"
 
 
-def convention(r: Result) -> str:
-    """The angle convention, in words (printed with every result)."""
-    u = r.unb
-    against = u.angle_sense == "against"
-    towards = "−y" if against else "+y"
-    sense = (
-        "against the direction of rotation for a positive speed (--angle-sense against)"
-        if against
-        else "in the direction of rotation for a positive speed"
-    )
-    return (
-        f"angles: degrees about the shaft axis (+z) from +x, the 0° mark, towards {towards} — "
-        f"{sense}; a correction is a mass to add (remove the same mass at +180°)"
-    )
-
-
-def frame_sentence(r: Result) -> str | None:
+def frame_sentence(r: BalanceResult) -> str | None:
     """For a shaft frame that is not the body frame: how its axes were chosen."""
-    fr = r.unb.frame
+    fr = r.unbalance.frame
     if np.array_equal(fr.rotation, np.eye(3)):
         return None
     return (
@@ -144,85 +107,13 @@ def frame_sentence(r: Result) -> str | None:
     )
 
 
-def mark_source(axis, mark_given: bool, zero_mark_deg: float) -> str:
-    """How the 0° mark was chosen (for the frame sentence and JSON)."""
-    if mark_given:
-        text = "the --mark direction projected at right angles to the shaft"
-    else:
-        ez = np.asarray(axis, dtype=float)
-        ez = ez / np.linalg.norm(ez)
-        if abs(ez[0]) > B.FRAME_SWITCH_COS:
-            text = (
-                "body y projected at right angles to the shaft, as the shaft is within 25.8° "
-                "of body x"
-            )
-        else:
-            text = "body x projected at right angles to the shaft"
-    if zero_mark_deg:
-        text += f", turned {num(zero_mark_deg)}° about the shaft by --zero-mark-deg"
-    return text
-
-
-# ----------------------------------------------------------------------------- JSON
-
-
-def _forces_rows(f: B.BearingForces) -> list[dict]:
-    return f.to_json()["bearing_forces"]
-
-
-def to_json(r: Result) -> dict:
-    """SPEC §3 keys first (via core's balance_json), then rbcli's extras."""
-    u = r.unb
-    corr = r.corrections if r.positions is not None else r.final
-    forces = r.forces if r.speed is not None else None
-    d = B.balance_json(u, corr, forces, r.iso)
-    if r.positions is not None:
-        pj = r.positions.to_json()
-        det = d["correction_details"]
-        det["residual"] = pj["residual"]
-        det["rounded"] = pj["rounded"]
-        det["mass_step"] = pj["mass_step"]
-        d["positions"] = {k: v for k, v in pj.items() if k != "residual"}
-    if r.final is not None:
-        d["correction_details"]["radius_source"] = r.radius_source
-    if r.corrected is not None:
-        cj = r.corrected.to_json()
-        d["corrected"] = {
-            k: cj[k]
-            for k in (
-                "mass", "eccentricity", "static_unbalance", "couple_unbalance", "tilt_deg",
-                "statically_balanced", "dynamically_balanced",
-            )
-        }
-    if r.bearings is not None and r.forces is not None:
-        d["bearings"] = [
-            {"plane": float(z), "name": str(i + 1), "static_load": float(w)}
-            for i, (z, w) in enumerate(zip(r.bearings, r.forces.static_loads))
-        ]
-        if "dynamics" not in d:
-            d["static_load_assumption"] = "shaft horizontal, gravity at right angles to it"
-    if r.forces_after is not None:
-        d["bearing_forces_after"] = [
-            {k: row[k] for k in ("plane", "name", "force", "angle_deg", "angle_defined")}
-            for row in _forces_rows(r.forces_after)
-        ]
-    d["angle_convention"] = convention(r)
-    d["shaft_source"] = r.shaft_source
-    d["through_source"] = r.through_source
-    d["mark_source"] = r.mark_source
-    if r.apply_path is not None:
-        d["apply"] = {"file": r.apply_path, "parts": r.apply_parts}
-    d["warnings"] = list(r.warnings)
-    d["name"] = r.body.name
-    d["file"] = r.body.source
-    return d
-
-
 # ----------------------------------------------------------------------------- tables
 
 
-def document(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
-    u = r.unb
+def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,
+             applied: tuple[str, list[dict]] | None = None) -> None:
+    """The tables of ``rbcli balance``; ``applied`` = (path, parts) that ``--apply`` wrote."""
+    u = r.unbalance
     doc.heading(f"{r.body.name}  ({r.body.source})")
     fr = u.frame
     doc.note(
@@ -232,24 +123,24 @@ def document(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
     fs = frame_sentence(r)
     if fs:
         doc.note(fs)
-    doc.note(convention(r))
+    doc.note(r.angle_convention)
     _unbalance(doc, r, su, digits)
-    if r.final is not None:
+    if r.installed is not None:
         _corrections(doc, r, su, digits)
     if r.bearings is not None or r.speed is not None:
         _bearings(doc, r, su, digits)
     if r.iso is not None:
         _iso(doc, r, su, digits)
-    if r.apply_path is not None:
+    if applied is not None:
         doc.note(
-            f"written {r.apply_path}: the body with "
-            + ", ".join(f"'{p['name']}'" for p in r.apply_parts)
+            f"written {applied[0]}: the body with "
+            + ", ".join(f"'{p['name']}'" for p in applied[1])
             + " added as point parts"
         )
 
 
-def _unbalance(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
-    u = r.unb
+def _unbalance(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
+    u = r.unbalance
     L = su.unit("length")
     rows = [
         ("rotor mass M", su.show(u.mass, "rotor_mass", digits), su.unit("rotor_mass")),
@@ -276,10 +167,10 @@ def _unbalance(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
     )
 
 
-def _corrections(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
-    final = r.final
+def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
+    final = r.installed
     assert final is not None
-    ideal = r.corrections
+    ideal = r.ideal
     assert ideal is not None
     L, m = su.unit("length"), su.unit("mass")
     rounded = r.positions is None and final.rounded
@@ -344,8 +235,8 @@ def _corrections(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
     tol = res.tol_static
     which = "the masses at the positions" if r.positions is not None else (
         "the rounded corrections" if final.rounded else "the corrections")
-    s_ang = r.unb.angle_of(res.static, tol)
-    c_ang = r.unb.angle_of(res.couple, res.tol_couple)
+    s_ang = r.unbalance.angle_of(res.static, tol)
+    c_ang = r.unbalance.angle_of(res.couple, res.tol_couple)
     rrows = [
         ("static unbalance", mag(su, abs(res.static), s_ang[1], "unbalance", digits), su.unit("unbalance")),
         ("  its angle", angle(*s_ang, digits), "°"),
@@ -355,7 +246,7 @@ def _corrections(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
     for name, z, uu in zip(("A", "B"), res.planes, res.plane_unbalances):
         rrows.append(
             (f"residual in plane {name} (z = {su.show(z, 'length', digits)} {L})",
-             mag(su, abs(uu), r.unb.angle_of(uu, res.tol_plane)[1], "unbalance", digits), su.unit("unbalance"))
+             mag(su, abs(uu), r.unbalance.angle_of(uu, res.tol_plane)[1], "unbalance", digits), su.unit("unbalance"))
         )
     if r.corrected is not None:
         c = r.corrected
@@ -367,7 +258,7 @@ def _corrections(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
     doc.kv(f"after adding {which}", rrows)
 
 
-def _bearings(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
     f = r.forces
     assert f is not None
     L = su.unit("length")
@@ -384,7 +275,7 @@ def _bearings(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
             row = [str(i + 1), su.show(z, "length", digits)]
             if has_speed:
                 F = f.forces[i]
-                a, ok = r.unb.angle_of(F, f.tol_force)
+                a, ok = r.unbalance.angle_of(F, f.tol_force)
                 row += [num(abs(F), digits), angle(a, ok, digits), su.show(abs(f.plane_unbalances[i]), "unbalance", digits)]
                 if r.forces_after is not None:
                     fa = r.forces_after
@@ -410,20 +301,18 @@ def _bearings(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
         )
         doc.note("; ".join(notes))
     if r.speed is not None:
-        torque = np.asarray(f.torque)
-        tz = complex(float(torque[0]), float(torque[1]))
-        ta, tok = r.unb.angle_of(tz, r.speed**2 * r.unb.tol_couple)
+        ta, tok = r.torque_direction
         rows = [
             ("speed", f"{num(r.speed * RPM, digits)} rpm = {num(r.speed, digits)}", "rad/s"),
             ("total rotating force Ω² U", num(abs(f.centrifugal_force), digits), "N"),
-            ("|L| about the com (L = J_G ω)", num(float(np.linalg.norm(f.angular_momentum)), digits), "kg·m²/s"),
-            ("torque ω × L (about the com)", num(float(np.linalg.norm(torque)), digits), "N·m"),
+            ("|L| about the com (L = J_G ω)", num(r.angular_momentum_magnitude, digits), "kg·m²/s"),
+            ("torque ω × L (about the com)", num(r.torque_magnitude, digits), "N·m"),
             ("  its direction (rotor frame)", angle(ta, tok, digits), "°"),
         ]
         doc.kv("dynamics", rows)
 
 
-def _iso(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
+def _iso(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
     iso = r.iso
     assert iso is not None
     U = su.unit("unbalance")
@@ -472,7 +361,7 @@ def _iso(doc: Doc, r: Result, su: ShopUnits, digits: int) -> None:
         f"{'PASS' if iso.passed else 'FAIL'}: G {num(iso.grade)}, the rotor as given"
         + ("" if iso.passed else " (exit status 1)")
         + "; whole-rotor static figure |U|/M Ω = "
-        f"{num(st.static_achieved_grade if st.static_unbalance > r.unb.tol_static else 0.0, 4)} mm/s; "
+        f"{num(st.static_achieved_grade if st.static_unbalance > r.unbalance.tol_static else 0.0, 4)} mm/s; "
         "PASS when each plane's residual is within its allowed share"
     )
     doc.note(text)
@@ -492,90 +381,43 @@ def after_words(iso: B.IsoCheck) -> str:
 # ----------------------------------------------------------------------------- field balancing
 
 
-def _field_rows(res, trials, scale):
-    """(name, W, W - T) per plane, masses in kg at the correction radius."""
-    if isinstance(res, B.FieldSinglePlane):
-        return [("A", res.correction * scale, res.correction_trial_on * scale)]
-    return [(name, complex(w) * scale, complex(w_on) * scale)
-            for name, w, w_on in zip("AB", res.corrections, res.corrections_trials_on)]
+#: how the tables show readings of each kind: (SI per display unit, display unit)
+READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
 
 
-def _field_influence(res) -> list[list[complex]]:
-    if isinstance(res, B.FieldSinglePlane):
-        return [[res.influence]]
-    return [[complex(a) for a in row] for row in res.influence]
-
-
-def _deg(z: complex) -> float:
-    """arg z in degrees in [0, 360), as core.balance reports angles (within 1e-9° below 360
-    is 0, since 360 - 1e-17 would print as 360; never -0.0)."""
-    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
-    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
-
-
-def field_json(res, trials, scale: float, radii) -> dict:
-    rows = _field_rows(res, trials, scale)
-    out: dict = {
-        "planes": len(rows),
-        "corrections": [
-            {
-                "name": name,
-                "mass": abs(w),
-                "angle_deg": _deg(w) if w != 0 else 0.0,
-                "mass_trial_on": abs(w_on),
-                "angle_trial_on_deg": _deg(w_on) if w_on != 0 else 0.0,
-                "radius": None if radii is None else float(radii[1]),
-            }
-            for name, w, w_on in rows
-        ],
-        "influence": [[{"magnitude": abs(a), "angle_deg": _deg(a)} for a in row] for row in _field_influence(res)],
-        "trials": [{"mass": abs(t), "angle_deg": _deg(t)} for t in trials],
-        "trial_radius": None if radii is None else float(radii[0]),
-    }
-    if isinstance(res, B.FieldTwoPlane):
-        out["cond"] = float(res.cond)
-        out["det_magnitude"] = float(abs(res.det))
-        out["ill_conditioned"] = bool(res.ill_conditioned)
-        out["small_response"] = list(res.small_response)
-        out["predicted_residual"] = [float(abs(v)) for v in res.predicted_residual]
-        out["cumulative"] = bool(res.cumulative)
-    else:
-        out["small_response"] = [bool(res.small_response)]
-        out["predicted_residual"] = [float(abs(res.predicted_residual))]
-        out["cumulative"] = False
-    out["angle_convention"] = (
-        "angles and phases in degrees, counted in the same sense as the trial angles and the "
-        "phase readings (they must agree)"
-    )
-    out["warnings"] = list(res.warnings)
-    return out
-
-
-def field_document(doc: Doc, res, trials, scale: float, radii, su: ShopUnits, digits: int) -> None:
+def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The tables of ``rbcli field-balance`` (from the result's finished numbers)."""
+    d = res.to_json()
     m = su.unit("mass")
-    n = 1 if isinstance(res, B.FieldSinglePlane) else 2
+    n = d["planes"]
     doc.heading(f"field balancing, {'one plane' if n == 1 else 'two planes, two sensors'} (influence coefficients)")
     doc.note(
         "angles in degrees, counted in the same sense as the trial angles and the phase readings "
         "(they must agree); a correction is a mass to add"
     )
     names = ["A", "B"][:n]
-    inf = _field_influence(res)
+    kind = d["readings"]["kind"]
+    scale, ru = READING_DISPLAY.get(kind, (1.0, ""))
+    if ru:
+        doc.note(f"readings: {kind}, shown in {ru} (JSON: SI, {d['readings']['unit']})")
     rows = []
-    for i, row in enumerate(inf):
+    for i, row in enumerate(d["influence"]):
         cells = [str(i + 1)]
         for a in row:
-            per = abs(a) * su.mass[0]  # reading per display mass unit
-            cells += [num(per, digits), num(_deg(a), digits)]
+            per = a["magnitude"] * su.mass[0] / scale  # reading per display mass unit
+            cells += [num(per, digits), num(a["angle_deg"], digits)]
         rows.append(cells)
     cols = ["sensor"]
     for name in names:
-        cols += [f"plane {name}: per {m}", "phase [°]"]
-    doc.table("influence coefficients (reading per unit trial mass)", cols, rows, right=tuple(range(1, len(cols))))
+        cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
+    title = ("influence coefficients (reading per unit trial mass)" if not ru
+             else f"influence coefficients ({ru} per {m})")
+    doc.table(title, cols, rows, right=tuple(range(1, len(cols))))
     crow = []
-    for name, w, w_on in _field_rows(res, trials, scale):
-        crow.append([name, su.show(abs(w), "mass", digits), num(_deg(w), digits),
-                     su.show(abs(w_on), "mass", digits), num(_deg(w_on), digits)])
+    for c in d["corrections"]:
+        crow.append([c["name"], su.show(c["mass"], "mass", digits), num(c["angle_deg"], digits),
+                     su.show(c["mass_trial_on"], "mass", digits), num(c["angle_trial_on_deg"], digits)])
+    radii = res.radii
     where = "" if radii is None else (
         f" at radius {su.show(radii[1], 'length', digits)} {su.unit('length')} (trials at "
         f"{su.show(radii[0], 'length', digits)} {su.unit('length')})")
@@ -587,13 +429,11 @@ def field_document(doc: Doc, res, trials, scale: float, radii, su: ShopUnits, di
     )
     if n == 2:
         doc.note(
-            f"condition number of the influence matrix {num(res.cond, 4)}"
-            + (" (ill-conditioned: the planes are not well separated)" if res.ill_conditioned else "")
-            + ("; trial A left on during run B (--cumulative)" if res.cumulative else "")
+            f"condition number of the influence matrix {num(d['cond'], 4)}"
+            + (" (ill-conditioned: the planes are not well separated)" if d["ill_conditioned"] else "")
+            + ("; trial A left on during run B (--cumulative)" if d["cumulative"] else "")
         )
-    pr = res.predicted_residual
-    vals = [abs(pr)] if isinstance(res, B.FieldSinglePlane) else [abs(complex(v)) for v in pr]
     doc.note(
         "predicted residual reading after the corrections (linear model, 0 up to round-off): "
-        + ", ".join(num(v, 3) for v in vals)
+        + ", ".join(num(v / scale, 3) for v in d["predicted_residual"]) + (f" {ru}" if ru else "")
     )
