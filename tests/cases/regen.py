@@ -95,6 +95,12 @@ def cases() -> dict[str, list[list[str]]]:
         "235@94,58@68", "--trial", "1.15 g@0", "--run", "185@115,77@104")
     add("field-balance", "two-plane-json", "--initial", "170@112,53@78", "--trial", "1.15 g@0",
         "--run", "235@94,58@68", "--trial", "1.15 g@0", "--run", "185@115,77@104", "--json")
+    add("field-balance", "units-displacement", "--initial", "6 mm@30", "--trial", "10 g@0", "--run",
+        "4000 um@110")
+    add("field-balance", "units-velocity-json", "--initial", "0.25 in/s@30", "--trial", "10@0",
+        "--run", "4.0 mm/s@110", "--json")
+    add("field-balance", "error-mixed-units", "--initial", "6 mm@30", "--trial", "10 g@0", "--run",
+        "4.0 mm/s@110")
     add("precess", "book", "examples/book.yaml", "--omega", "0.01,1,0.01")
     add("precess", "book-at-json", "examples/book.yaml", "--omega", "0.01,1,0.01", "--at", "1e9", "--json")
     add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5")
