@@ -477,7 +477,20 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
         radius=_outer_radius(shape, params),
         axis=R[:, 2].copy(),
         where=ctx.where(m),
+        outline=_outline(shape, params, at, R),
     )
+
+
+def _outline(shape: str, params: dict, at: np.ndarray, R: np.ndarray):
+    """The drawing's description of a primitive part: its parameters (m) and placement."""
+    from rbcli.model import Outline
+
+    def plain(v):
+        if isinstance(v, (np.ndarray, list, tuple)):
+            return tuple(plain(x) for x in v)
+        return bool(v) if isinstance(v, (bool, np.bool_)) else float(v)  # type: ignore[arg-type]
+
+    return Outline(shape, tuple((k, plain(v)) for k, v in params.items()), at, R)
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
@@ -540,7 +553,17 @@ def _given(ctx, m, name, prefix, known) -> Part:
     return Part(
         name=prefix + name, shape="given", mass=mass, subtract=_subtract(ctx, m), com=pc,
         inertia_com=PJ, measure=None, measure_kind="given", axis=R[:, 2].copy(), where=ctx.where(m),
+        outline=_given_outline(mass, pc, PJ),
     )
+
+
+def _given_outline(mass: float, com: np.ndarray, J: np.ndarray):
+    """A given part is drawn as its equivalent uniform ellipsoid, centred on its com."""
+    from rbcli.core.outline import equivalent_ellipsoid
+    from rbcli.model import Outline
+
+    semi, axes = equivalent_ellipsoid(mass, J)
+    return Outline("given", (("semi_axes", tuple(float(x) for x in semi)),), com, axes)
 
 
 def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
@@ -576,6 +599,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
                 name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
                 com=com, inertia_com=J, measure=p.measure, measure_kind=p.measure_kind,
                 radius=p.radius, axis=R @ p.axis, extra=p.extra, where=p.where,
+                outline=None if p.outline is None else p.outline.placed(at, R),
             )
         )
     return out
@@ -642,6 +666,10 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         if "not closed" in msg:
             msg += "; allow_open: true accepts small holes, with a warning"
         raise ctx.error(fnode, f"{what}: {shown}: {msg}") from None
+    from rbcli.core.outline import decimate
+    from rbcli.model import Outline
+
+    outline = Outline("mesh", (("triangles", len(faces)),), at, R, *decimate(vertices, faces))  # a small copy for drawings
     del vertices, faces
     for w in props.warnings:
         ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {shown}: {w}")
@@ -657,7 +685,7 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         name=prefix + name, shape="mesh", mass=float(mass), subtract=subtract, com=com,
         inertia_com=J, measure=props.volume, measure_kind="volume", axis=R[:, 2].copy(),
         extra={"volume": float(props.volume), "area": float(props.area), "triangles": int(props.n_triangles)},
-        where=ctx.where(m),
+        where=ctx.where(m), outline=outline,
     )
 
 
