@@ -34,7 +34,8 @@ import numpy as np
 
 __all__ = [
     "CREASE_DEG", "MESH_MAX_TRIANGLES", "SEGMENTS", "Shadow", "Sketch", "decimate",
-    "ellipse_shadow", "equivalent_ellipsoid", "facing", "features", "fill_loops", "hull", "local_sketch", "polylines", "normals", "shadow", "sketch",
+    "ellipse_shadow", "equivalent_ellipsoid", "facing", "features", "fill_loops", "hull",
+    "local_sketch", "normals", "polylines", "shadow", "sketch",
 ]
 
 #: points around a full circle
@@ -232,7 +233,8 @@ def local_sketch(kind: str, dims: dict, vertices=None, faces=None, n: int = SEGM
     """
     s = _local(kind, dims, vertices, faces, max(8, int(n)))
     r_in = float(dims.get("inner_radius") or 0.0)
-    if kind in _CONVEX or (kind == "cylinder" and not dims.get("shell") and r_in == 0.0) or (kind == "disk" and r_in == 0.0):
+    solid_round = (kind == "cylinder" and not dims.get("shell")) or kind == "disk"
+    if kind in _CONVEX or (solid_round and r_in == 0.0):
         return replace(s, fill="hull")
     if kind in ("cylinder", "torus") and s.closed:
         return replace(s, fill="front")
@@ -331,35 +333,41 @@ def decimate(vertices, faces, max_triangles: int = MESH_MAX_TRIANGLES) -> tuple[
 
     Vertex clustering: the vertices in one cell of a g × g × g grid over the bounding box
     merge into their mean; triangles that collapse are dropped, duplicates kept once, the
-    orientation of the rest kept. g starts at √max_triangles and shrinks by 15 % until the
-    count fits. A mesh already small enough is returned as is (copies).
+    orientation of the rest kept. g starts at √max_triangles; while too many triangles
+    are left it shrinks as the square root of the excess (a surface's triangle count goes
+    as g²), so two or three passes of O(n) work suffice. A mesh already small enough is
+    returned as is (its unused vertices dropped).
     """
     V = np.asarray(vertices, dtype=float)
-    F = np.asarray(faces, dtype=np.int64)
+    F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if len(F) <= max_triangles:
         used, F2 = np.unique(F, return_inverse=True)
         return V[used].copy(), F2.reshape(-1, 3)
     lo = V.min(axis=0)
     size = float((V.max(axis=0) - lo).max()) or 1.0
+    U = (V - lo) / size  # in the unit cube
     g = max(1, int(math.sqrt(max_triangles)))
     while True:
-        cell = np.minimum(np.floor((V - lo) / size * g), g - 1).astype(np.int64)
-        key = (cell[:, 0] * (g + 1) + cell[:, 1]) * (g + 1) + cell[:, 2]
-        _, cluster = np.unique(key, return_inverse=True)
-        cluster = cluster.ravel()
-        n = int(cluster.max()) + 1
+        cell = np.minimum((U * g).astype(np.int64), g - 1)
+        key = (cell[:, 0] * g + cell[:, 1]) * g + cell[:, 2]
+        used = np.zeros(g**3, dtype=bool)
+        used[key] = True
+        ids = np.cumsum(used) - 1
+        cluster = ids[key]
+        n = int(ids[-1]) + 1
         F2 = cluster[F]
         F2 = F2[(F2[:, 0] != F2[:, 1]) & (F2[:, 1] != F2[:, 2]) & (F2[:, 0] != F2[:, 2])]
-        if len(F2):
-            _, first = np.unique(np.sort(F2, axis=1), axis=0, return_index=True)
+        if len(F2):  # one copy of each triangle (whatever its orientation)
+            srt = np.sort(F2, axis=1)
+            _, first = np.unique((srt[:, 0] * n + srt[:, 1]) * n + srt[:, 2], return_index=True)
             F2 = F2[np.sort(first)]
         if len(F2) <= max_triangles or g == 1:
             break
-        g = max(1, int(g * 0.85))
+        g = max(1, min(g - 1, int(g * math.sqrt(max_triangles / len(F2)) * 0.97)))
     count = np.bincount(cluster, minlength=n).astype(float)
     V2 = np.column_stack([np.bincount(cluster, weights=V[:, k], minlength=n) for k in range(3)]) / count[:, None]
-    used, F3 = np.unique(F2, return_inverse=True)
-    return V2[used], F3.reshape(-1, 3)
+    used_v, F3 = np.unique(F2, return_inverse=True)
+    return V2[used_v], F3.reshape(-1, 3)
 
 
 # ----------------------------------------------------------------------------- projection

@@ -485,12 +485,14 @@ def _outline(shape: str, params: dict, at: np.ndarray, R: np.ndarray):
     """The drawing's description of a primitive part: its parameters (m) and placement."""
     from rbcli.model import Outline
 
-    def plain(v):
-        if isinstance(v, (np.ndarray, list, tuple)):
-            return tuple(plain(x) for x in v)
-        return bool(v) if isinstance(v, (bool, np.bool_)) else float(v)  # type: ignore[arg-type]
-
-    return Outline(shape, tuple((k, plain(v)) for k, v in params.items()), at, R)
+    dims = []
+    for k, v in params.items():
+        if isinstance(v, np.ndarray):  # size, semi_axes (n,), vertices (3, 3)
+            v = tuple(map(tuple, v.tolist())) if v.ndim == 2 else tuple(v.tolist())
+        elif not isinstance(v, bool):
+            v = float(v)  # type: ignore[arg-type]
+        dims.append((k, v))
+    return Outline(shape, tuple(dims), at, R)
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
@@ -669,7 +671,8 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
     from rbcli.core.outline import decimate
     from rbcli.model import Outline
 
-    outline = Outline("mesh", (("triangles", len(faces)),), at, R, *decimate(vertices, faces))  # a small copy for drawings
+    # for drawings: a small copy (at most MESH_MAX_TRIANGLES), not the file's mesh
+    outline = Outline("mesh", (("triangles", len(faces)),), at, R, *decimate(vertices, faces))
     del vertices, faces
     for w in props.warnings:
         ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {shown}: {w}")

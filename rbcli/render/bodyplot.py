@@ -125,7 +125,8 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     allp = np.concatenate(pts)
     size = float(np.max(allp.max(axis=0) - allp.min(axis=0)))
     arrow = 0.6 * size if size > 0 else 1.15 * float(np.max(ell)) or 1.0
-    allp = np.concatenate([allp, c + arrow * 1.15 * N, c - 0.05 * arrow * N, c + ell.max() * np.eye(3), c - ell.max() * np.eye(3)])
+    box = ell.max() * np.eye(3)  # the equivalent ellipsoid's bounding box, and the arrows
+    allp = np.concatenate([allp, c + arrow * 1.15 * N, c - 0.05 * arrow * N, c + box, c - box])
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     mid = 0.5 * (lo + hi)
     half = 0.54 * float(np.max(hi - lo)) or 1.0
