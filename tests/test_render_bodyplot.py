@@ -35,8 +35,8 @@ def one(text: str, **kw):
     return rbcli.load_text(text, **kw).parts[0]
 
 
-def local(kind, **dims):
-    return ol.local_sketch(kind, dims)
+def local(kind, n=ol.SEGMENTS, **dims):
+    return ol.local_sketch(kind, dims, n=n)
 
 
 def signed_area(ring: np.ndarray) -> float:
@@ -287,7 +287,7 @@ def test_polylines_join_segments_so_dashes_flow():
 
 def test_decimation_keeps_a_big_mesh_under_the_cap(tmp_path):
     trimesh = pytest.importorskip("trimesh")
-    sphere = trimesh.creation.icosphere(subdivisions=6, radius=0.1)  # 81 920 triangles
+    sphere = trimesh.creation.icosphere(subdivisions=5, radius=0.1)  # 20 480 triangles
     V, F = np.asarray(sphere.vertices), np.asarray(sphere.faces)
     V2, F2 = ol.decimate(V, F)
     assert 100 < len(F2) <= ol.MESH_MAX_TRIANGLES
@@ -298,9 +298,39 @@ def test_decimation_keeps_a_big_mesh_under_the_cap(tmp_path):
     (tmp_path / "ball.yaml").write_text("name: ball\nparts:\n  - {shape: mesh, file: ball.stl, density: 1000}\n")
     body = rbcli.load(tmp_path / "ball.yaml")
     o = body.parts[0].outline
-    assert len(o.faces) <= ol.MESH_MAX_TRIANGLES and body.parts[0].extra["triangles"] == 81920
+    assert len(o.faces) <= ol.MESH_MAX_TRIANGLES and body.parts[0].extra["triangles"] == 20480
     svg = render(body, "mm")
     assert len(svg) < 1_000_000
+
+
+def test_a_decimated_mesh_is_drawn_by_its_outer_outline_only():
+    trimesh = pytest.importorskip("trimesh")
+    tor = trimesh.creation.torus(0.1, 0.03, major_sections=120, minor_sections=60)  # 14 400
+    V, F = ol.decimate(np.asarray(tor.vertices), np.asarray(tor.faces), 800)
+    from rbcli.model import Outline
+
+    o = Outline("mesh", (("triangles", len(tor.faces)),), vertices=V, faces=F)
+    s = ol.sketch(o)
+    assert s.rough and len(s.faces) <= 800
+    assert len(ol.sketch(o, max_triangles=200).faces) <= 200
+    sh = ol.shadow(s, 0, 1, 1.0)  # from above: a ring, outlined by two closed curves
+    assert len(sh.creases) == 0
+    r = np.linalg.norm(sh.outline.reshape(-1, 2), axis=1)
+    assert np.all((r > 0.12) | (r < 0.08))  # nothing drawn across the tyre's face
+    assert r.max() <= 0.13 + 1e-12 and r.min() >= 0.07 - 1e-3
+    assert np.all(winding(sh.fill, np.array([[0.0, 0.0], [0.2, 0.0]])) == 0)  # hole and outside
+    assert np.all(winding(sh.fill, np.array([[0.1, 0.0], [0.0, -0.1]])) > 0)
+
+
+def test_wireframe_edges_and_back_faces():
+    s = local("cylinder", radius=1.0, length=2.0, n=16)
+    e = ol.features(s)  # the two end circles only
+    assert len(e) == 32 and np.allclose(np.abs(e[:, :, 2]), 1.0)
+    assert np.allclose(np.linalg.norm(e[:, :, :2], axis=2), 1.0)
+    up = ol.facing(s, [0, 0, 1])
+    assert np.allclose(ol.normals(s)[up][:, 2], 1.0)  # from above only the top face is seen
+    disk = local("disk", radius=1.0, n=16)
+    assert ol.facing(disk, [0, 0, -1]).all()  # an open surface is seen from both sides
 
 
 # ----------------------------------------------------------------------------- the figure
