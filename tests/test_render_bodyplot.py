@@ -376,7 +376,7 @@ def test_a_long_shaft_and_a_hole_are_drawn():
     assert lo <= 0 and hi >= 500  # the whole 500 mm shaft is in view
     from matplotlib.patches import PathPatch
 
-    patches = [p for p in top.patches if isinstance(p, PathPatch)]
+    patches = [p for p in top.get_children() if isinstance(p, PathPatch) and p is not top.patch]
     fills = [p for p in patches if p.get_fill()]
     white = [p for p in fills if p.get_facecolor()[:3] == (1.0, 1.0, 1.0)]
     grey = [p for p in fills if p.get_facecolor()[:3] != (1.0, 1.0, 1.0)]
@@ -421,3 +421,16 @@ def test_every_kind_of_part_renders_and_a_part_without_outline_is_a_dot():
     render(body)
     bare = dataclasses.replace(body, parts=tuple(dataclasses.replace(p, outline=None) for p in body.parts))
     render(bare)
+
+
+def test_many_parts_stay_a_reasonable_figure():
+    # 120 tilted cylinders: fewer points per circle in the flat views (bodyplot.segments),
+    # and a 3-D view over its budget shows the heaviest parts, the others as dots
+    from rbcli.render import bodyplot
+
+    rows = [f"  - {{name: p{i}, shape: cylinder, radius: 0.01, length: 0.1, mass: {1 + i % 7},"
+            f" at: [{(i % 12) * 0.03}, {(i // 12) * 0.03}, 0], axis: [1, 1, 0]}}" for i in range(120)]
+    body = rbcli.load_text("name: many\nparts:\n" + "\n".join(rows))
+    assert bodyplot.segments(120) < ol.SEGMENTS <= bodyplot.segments(24)
+    svg = render(body)
+    assert len(svg) < 2_000_000

@@ -47,7 +47,8 @@ SOLID = "0.88"
 ELEV, AZIM = 30.0, -60.0
 SEGMENTS_3D = 20
 TRIANGLES_3D = 400
-#: above this many triangles in all (about twice what is drawn) the 3-D view goes coarser
+#: above this many triangles in all (about twice what is drawn) the 3-D view goes coarser,
+#: and then shows only the heaviest parts that fit (the others as dots at their centres)
 BUDGET_3D = 2000
 
 
@@ -75,8 +76,8 @@ def _polygons_path(rings: list):
 def _add_lines(ax, segs, f, z, **kw):
     from matplotlib.patches import PathPatch
 
-    if len(segs):
-        ax.add_patch(PathPatch(_segments_path(segs * f), fill=False, zorder=z, capstyle="round", **kw))
+    if len(segs):  # add_artist: the limits are set, not computed from every path
+        ax.add_artist(PathPatch(_segments_path(segs * f), fill=False, zorder=z, capstyle="round", **kw))
 
 
 def _add_fill(ax, rings, f, z, colour):
@@ -84,7 +85,16 @@ def _add_fill(ax, rings, f, z, colour):
 
     rings = [r for r in rings if len(r) >= 4]
     if rings:
-        ax.add_patch(PathPatch(_polygons_path([r * f for r in rings]), facecolor=colour, edgecolor="none", zorder=z))
+        ax.add_artist(PathPatch(_polygons_path([r * f for r in rings]), facecolor=colour, edgecolor="none",
+                                zorder=z))
+
+
+def segments(n_parts: int) -> int:
+    """Points around a circle in the flat views: :data:`rbcli.core.outline.SEGMENTS` for up
+    to 24 parts, fewer (down to 12) for more, so a figure of many parts stays a few MB at most."""
+    from rbcli.core.outline import SEGMENTS
+
+    return SEGMENTS if n_parts <= 24 else max(12, int(SEGMENTS * (24 / n_parts) ** 0.5))
 
 
 def body_figure(body, com, principal, du: DisplayUnits, title: str):
@@ -119,7 +129,7 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
         if p.outline is None:
             dots.append((p, np.asarray(p.com, dtype=float)))
             continue
-        (holes if p.subtract else solids).append((p, ol.sketch(p.outline)))
+        (holes if p.subtract else solids).append((p, ol.sketch(p.outline, n=segments(len(body.parts)))))
     pts = [s.vertices for _, s in solids + holes] + [s.points for _, s in solids + holes]
     pts += [d.reshape(1, 3) for _, d in dots] + [c.reshape(1, 3)]
     allp = np.concatenate(pts)
@@ -256,7 +266,7 @@ def _arrows(ax, ci, N, arrow, i, j, f):
 
 def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     """The 3-D view: shaded solid surfaces with their sharp edges, holes as dashed edges,
-    point masses, the principal axes."""
+    point masses, the principal axes (within :data:`BUDGET_3D`: see there)."""
     from matplotlib.ticker import MaxNLocator
     from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
@@ -272,6 +282,16 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
         coarse = {id(p): ol.sketch(p.outline, n=n, max_triangles=most) for p in parts}
         if sum(len(s.faces) for s in coarse.values()) <= BUDGET_3D:
             break
+    else:  # still too many: the heaviest parts within the budget, the others as dots
+        used, kept = 0, set()
+        for p in sorted(parts, key=lambda p: -p.mass):
+            used += len(coarse[id(p)].faces) + len(coarse[id(p)].lines)
+            if used > BUDGET_3D:
+                break
+            kept.add(id(p))
+        dots = dots + [(p, np.asarray(p.com, dtype=float)) for p in parts if id(p) not in kept]
+        solids = [(p, s) for p, s in solids if id(p) in kept]
+        holes = [(p, s) for p, s in holes if id(p) in kept]
     solids = [(p, coarse[id(p)]) for p, _ in solids]
     holes = [(p, coarse[id(p)]) for p, _ in holes]
     polys, shades = [], []
@@ -295,10 +315,13 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     if hedges and len(np.concatenate(hedges)):
         ax3.add_collection3d(Line3DCollection(np.concatenate(hedges) * f, colors="0.2", linewidths=0.7,
                                               linestyles=(0, (4, 2))))
-    marks = [s.points for _, s in solids + holes if len(s.points)] + [d.reshape(1, 3) for _, d in dots]
-    if marks:
+    marks = [s.points for _, s in solids + holes if len(s.points)]
+    if marks:  # point masses, given parts' centres
         M = np.concatenate(marks) * f
         ax3.scatter(M[:, 0], M[:, 1], M[:, 2], s=10, color="black", depthshade=False)
+    if dots:  # parts drawn only by their centre
+        M = np.array([d for _, d in dots]) * f
+        ax3.scatter(M[:, 0], M[:, 1], M[:, 2], s=3, color="0.45", depthshade=False)
     for k in range(3):
         seg = np.array([c, c + arrow * N[k]]) * f
         ax3.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="black", linewidth=1.6)
