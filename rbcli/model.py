@@ -13,6 +13,60 @@ import numpy as np
 from rbcli.errors import Location
 
 
+def _frozen(a, dtype=float) -> np.ndarray:
+    a = np.array(a, dtype=dtype)  # a private copy
+    a.setflags(write=False)
+    return a
+
+
+@dataclass(frozen=True)
+class Outline:
+    """What a drawing of a part needs: its shape, its local dimensions and its placement.
+
+    Built by the body loader beside the part; read by :mod:`rbcli.core.outline`, which turns
+    it into surface triangles and outlines for the body figure. Nothing here is used by
+    any calculation.
+
+    Attributes
+    ----------
+    kind : str — a primitive shape name (SPEC §1), ``"given"`` (drawn as the part's
+        equivalent uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or
+        ``"mesh"``
+    dims : tuple[tuple[str, object], ...] — the shape's parameters as
+        :func:`rbcli.core.shapes.geometry` took them (lengths in m, ``size`` and
+        ``semi_axes`` as tuples, ``vertices`` as three 3-tuples, ``shell`` a bool); for a
+        mesh ``(("triangles", n),)``, the file's count. ``dict(outline.dims)`` reads them.
+    at : (3,) ndarray — m, the local origin in the body frame
+    R : (3, 3) ndarray — the local-to-body rotation (its columns are the local axes)
+    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame, decimated
+        to at most :data:`rbcli.core.outline.MESH_MAX_TRIANGLES` triangles (not the file's
+        mesh: a drawing's copy)
+    faces : (k, 3) int ndarray | None — a mesh's triangles (indices into ``vertices``)
+
+    The arrays are read-only.
+    """
+
+    kind: str
+    dims: tuple = ()
+    at: np.ndarray = field(default_factory=lambda: _frozen(np.zeros(3)))
+    R: np.ndarray = field(default_factory=lambda: _frozen(np.eye(3)))
+    vertices: np.ndarray | None = None
+    faces: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "at", _frozen(self.at))
+        object.__setattr__(self, "R", _frozen(self.R))
+        if self.vertices is not None:
+            object.__setattr__(self, "vertices", _frozen(self.vertices))
+            object.__setattr__(self, "faces", _frozen(self.faces, np.int64))
+
+    def placed(self, at, R) -> Outline:
+        """The same outline moved by ``x -> at + R x`` (as an included file's parts are)."""
+        R = np.asarray(R, dtype=float)
+        return Outline(self.kind, self.dims, np.asarray(at, dtype=float) + R @ self.at, R @ self.R,
+                       self.vertices, self.faces)
+
+
 @dataclass(frozen=True)
 class Part:
     """One part of a body, placed in the body frame.
@@ -31,6 +85,8 @@ class Part:
     axis : (3,) ndarray — the part's local z axis in the body frame
     extra : dict — shape-specific facts worth reporting (e.g. a mesh's volume and area)
     where : Location | None — where the part is defined
+    outline : Outline | None — the part's shape and placement for drawings (None when the
+        loader did not record one: it is then drawn as a dot at its com)
     """
 
     name: str
@@ -45,6 +101,7 @@ class Part:
     axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
     extra: dict = field(default_factory=dict)
     where: Location | None = None
+    outline: Outline | None = None
 
     @property
     def signed_mass(self) -> float:

@@ -86,7 +86,7 @@ WRITERS = [
     (("precess", "body.yaml", "--omega", "0,0,1", "--plot", "FILE"), "--plot", ".png"),
     (("report", "body.yaml", "-o", "FILE", "--force"), "-o", ".html"),
     (("report", "body.yaml", "-o", "FILE", "--force"), "-o", ".md"),
-    (("balance", "body.yaml", "--planes", "0,0.2", "--apply", "FILE", "--force"), "--apply", ".yaml"),
+    (("balance", "body.yaml", "--planes", "0,0.2", "--radius", "0.1", "--apply", "FILE", "--force"), "--apply", ".yaml"),
 ]
 
 

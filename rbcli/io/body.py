@@ -520,7 +520,22 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
         radius=_outer_radius(shape, params),
         axis=R[:, 2].copy(),
         where=ctx.where(m),
+        outline=_outline(shape, params, at, R),
     )
+
+
+def _outline(shape: str, params: dict, at: np.ndarray, R: np.ndarray):
+    """The drawing's description of a primitive part: its parameters (m) and placement."""
+    from rbcli.model import Outline
+
+    dims = []
+    for k, v in params.items():
+        if isinstance(v, np.ndarray):  # size, semi_axes (n,), vertices (3, 3)
+            v = tuple(map(tuple, v.tolist())) if v.ndim == 2 else tuple(v.tolist())
+        elif not isinstance(v, bool):
+            v = float(v)  # type: ignore[arg-type]
+        dims.append((k, v))
+    return Outline(shape, tuple(dims), at, R)
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
@@ -583,7 +598,17 @@ def _given(ctx, m, name, prefix, known) -> Part:
     return Part(
         name=prefix + name, shape="given", mass=mass, subtract=_subtract(ctx, m), com=pc,
         inertia_com=PJ, measure=None, measure_kind="given", axis=R[:, 2].copy(), where=ctx.where(m),
+        outline=_given_outline(mass, pc, PJ),
     )
+
+
+def _given_outline(mass: float, com: np.ndarray, J: np.ndarray):
+    """A given part is drawn as its equivalent uniform ellipsoid, centred on its com."""
+    from rbcli.core.outline import equivalent_ellipsoid
+    from rbcli.model import Outline
+
+    semi, axes = equivalent_ellipsoid(mass, J)
+    return Outline("given", (("semi_axes", tuple(float(x) for x in semi)),), com, axes)
 
 
 def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
@@ -642,6 +667,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
             name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
             com=new_coms[i], inertia_com=new_Js[i], measure=p.measure, measure_kind=p.measure_kind,
             radius=p.radius, axis=new_axes[i], extra=p.extra, where=p.where,
+            outline=None if p.outline is None else p.outline.placed(at, R),
         )
         for i, p in enumerate(parts)
     ]
@@ -708,6 +734,11 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         if "not closed" in msg:
             msg += "; allow_open: true accepts small holes, with a warning"
         raise ctx.error(fnode, f"{what}: {shown}: {msg}") from None
+    from rbcli.core.outline import decimate
+    from rbcli.model import Outline
+
+    # for drawings: a small copy (at most MESH_MAX_TRIANGLES), not the file's mesh
+    outline = Outline("mesh", (("triangles", len(faces)),), at, R, *decimate(vertices, faces))
     del vertices, faces
     for w in props.warnings:
         ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {shown}: {w}")
@@ -723,7 +754,7 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         name=prefix + name, shape="mesh", mass=float(mass), subtract=subtract, com=com,
         inertia_com=J, measure=props.volume, measure_kind="volume", axis=R[:, 2].copy(),
         extra={"volume": float(props.volume), "area": float(props.area), "triangles": int(props.n_triangles)},
-        where=ctx.where(m),
+        where=ctx.where(m), outline=outline,
     )
 
 

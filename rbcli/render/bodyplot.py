@@ -1,13 +1,21 @@
-"""The picture of a body for ``rbcli report``: its equivalent ellipsoid and box and its
-principal axes, in a 3-D view and three orthographic views (top, front, side).
+"""The picture of a body as built, for ``rbcli report`` (and ``principal --plot``): its
+parts, its holes, its centre of mass and principal axes, in a 3-D view and three
+orthographic views (top, front, side) of the body frame.
 
-The equivalent uniform ellipsoid and box have the body's mass and principal moments
-about the centre of mass (``rbcli principal``); they are drawn centred on the com with
-their axes along the principal axes, in the body frame, in the report's length unit.
-The same scale is used in the three flat views, so lengths can be compared between
-them. Grey scale only: a filled light-grey ellipsoid, a dashed box, black axes
-labelled 1, 2, 3 (ascending moments), the com as a cross and each part's centre as a
-small dot. matplotlib is imported only inside :func:`body_figure` (through
+Each part is drawn from its :class:`rbcli.model.Outline` through
+:mod:`rbcli.core.outline` (which does the geometry: surfaces, silhouettes, creases):
+
+- solid parts: light-grey shadows ("0.88") with black outlines (silhouettes and borders),
+  thin grey near-side creases and dashed inner surfaces (a tube's bore); rods, rings and
+  a triangle's edges as black lines; point masses as black dots; a part given by its
+  mass properties as its equivalent uniform ellipsoid with its centre marked ×;
+- subtracted parts (holes, pockets), drawn after every solid: white with a dashed
+  outline;
+- over them the centre of mass (+), the principal axes 1, 2, 3 (ascending moments) as
+  arrows from the com, and the body's equivalent uniform ellipsoid as a dotted outline.
+
+The three flat views share one scale, so lengths can be compared between them. Grey
+scale only. matplotlib is imported only inside :func:`body_figure` (through
 :mod:`rbcli.render.plots`).
 """
 
@@ -17,190 +25,318 @@ import numpy as np
 
 from rbcli.render.fmt import DisplayUnits
 
-#: (title, index of the horizontal body axis, index of the vertical one, viewing direction)
+#: (title, index of the horizontal body axis, index of the vertical one, sign of the third
+#: axis toward the viewer)
 VIEWS = (
-    ("top view (from +z)", 0, 1),
-    ("front view (from −y)", 0, 2),
-    ("side view (from +x)", 1, 2),
+    ("top view (from +z)", 0, 1, 1.0),
+    ("front view (from −y)", 0, 2, -1.0),
+    ("side view (from +x)", 1, 2, 1.0),
 )
 NAMES = ("x", "y", "z")
 #: axis labels stay readable over lines and fills
 LABEL_BOX = {"boxstyle": "round,pad=0.12", "facecolor": "white", "edgecolor": "none", "alpha": 0.85}
+#: the figure's caption, for the report
+CAPTION = (
+    "The body as built, in the body frame: solid parts grey with black outlines, holes "
+    "(subtracted parts) white with dashed outlines, the centre of mass (+) and the principal "
+    "axes 1, 2, 3 (ascending moments), with the equivalent uniform ellipsoid (same mass and "
+    "principal moments, dotted): a 3-D view and three views along the body axes at one scale."
+)
+SOLID = "0.88"
+#: the 3-D view's camera (degrees) and the coarseness of its surfaces (all vector, no bitmap)
+ELEV, AZIM = 30.0, -60.0
+SEGMENTS_3D = 20
+TRIANGLES_3D = 400
+#: above this many triangles in all (about twice what is drawn) the 3-D view goes coarser,
+#: and then shows only the heaviest parts that fit (the others as dots at their centres)
+BUDGET_3D = 2000
 
 
-def shadow_ellipse(semi_axes, axes, i: int, j: int, n: int = 181) -> np.ndarray:
-    """(n, 2) outline of the shadow of an ellipsoid on the (i, j) coordinate plane.
+def _segments_path(segs: np.ndarray):
+    """One matplotlib Path of many (s, 2, 2) segments, joined into polylines (one SVG
+    element, dashes flowing along curves)."""
+    from matplotlib.path import Path
 
-    The ellipsoid centred at 0 with semi-axes ``a_k`` along the unit rows ``axes[k]`` is
-    ``{x : xᵀ M⁻¹ x ≤ 1}`` with ``M = Σ a_k² n_k n_kᵀ``; its orthographic shadow on the
-    (i, j) plane is the ellipse of the 2×2 block of M, traced as ``S [cos t, sin t]``
-    with ``S = M₂^{1/2}`` (symmetric square root, so a flat ellipsoid gives a segment).
-    """
-    a = np.asarray(semi_axes, dtype=float)
-    N = np.asarray(axes, dtype=float)
-    M = (N.T * a**2) @ N
-    M2 = M[np.ix_((i, j), (i, j))]
-    w, V = np.linalg.eigh(M2)
-    S = V @ np.diag(np.sqrt(np.clip(w, 0.0, None))) @ V.T
-    t = np.linspace(0.0, 2.0 * np.pi, n)
-    return (S @ np.vstack([np.cos(t), np.sin(t)])).T
+    from rbcli.core.outline import polylines
+
+    lines = polylines(segs)
+    codes = np.concatenate([np.r_[Path.MOVETO, np.full(len(p) - 1, Path.LINETO)] for p in lines]).astype(np.uint8)
+    return Path(np.concatenate(lines), codes)
 
 
-def box_corners(sides, axes) -> np.ndarray:
-    """(8, 3) corners of the box of full ``sides`` along the unit rows ``axes``, centred at 0."""
-    s = 0.5 * np.asarray(sides, dtype=float)
-    N = np.asarray(axes, dtype=float)
-    signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
-    return (signs * s) @ N
+def _polygons_path(rings: list):
+    """One matplotlib Path of closed polygons (filled by the nonzero rule: their union,
+    holes that turn the other way left empty; one SVG element)."""
+    from matplotlib.path import Path
+
+    codes = np.concatenate([np.r_[Path.MOVETO, np.full(len(r) - 2, Path.LINETO), Path.CLOSEPOLY] for r in rings])
+    return Path(np.concatenate(rings), codes.astype(np.uint8))
 
 
-def hull(points: np.ndarray) -> np.ndarray:
-    """Convex hull of 2-D points (Andrew's monotone chain), closed (first point repeated)."""
-    pts = sorted({(round(float(x), 15), round(float(y), 15)) for x, y in points})
-    if len(pts) <= 2:
-        return np.array(pts + pts[:1])
+def _add_lines(ax, segs, f, z, **kw):
+    from matplotlib.patches import PathPatch
 
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower: list = []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    upper: list = []
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    ring = lower[:-1] + upper[:-1]
-    return np.array(ring + ring[:1])
+    if len(segs):  # add_artist: the limits are set, not computed from every path
+        ax.add_artist(PathPatch(_segments_path(segs * f), fill=False, zorder=z, capstyle="round", **kw))
 
 
-def extent(body, com, semi_axes, sides) -> float:
-    """Half the width (m) of the region the views show around the com."""
-    r = max(float(np.max(semi_axes)), 0.5 * float(np.linalg.norm(sides)))  # box corners
-    for p in body.parts:
-        r = max(r, float(np.linalg.norm(np.asarray(p.com, dtype=float) - com)))
-    return r if r > 0.0 else 1.0
+def _add_fill(ax, rings, f, z, colour):
+    from matplotlib.patches import PathPatch
+
+    rings = [r for r in rings if len(r) >= 4]
+    if rings:
+        ax.add_artist(PathPatch(_polygons_path([r * f for r in rings]), facecolor=colour, edgecolor="none",
+                                zorder=z))
+
+
+def segments(n_parts: int) -> int:
+    """Points around a circle in the flat views: :data:`rbcli.core.outline.SEGMENTS` for up
+    to 24 parts, fewer (down to 12) for more, so a figure of many parts stays a few MB at most."""
+    from rbcli.core.outline import SEGMENTS
+
+    return SEGMENTS if n_parts <= 24 else max(12, int(SEGMENTS * (24 / n_parts) ** 0.5))
 
 
 def body_figure(body, com, principal, du: DisplayUnits, title: str):
-    """The figure (matplotlib Figure) of the body's equivalent ellipsoid, box and principal axes.
+    """The figure (matplotlib Figure) of the body's parts, com and principal axes.
 
     Parameters
     ----------
-    body : Body — for the part centres
+    body : Body — its parts, each drawn from its ``outline`` (a part without one as a dot
+        at its com)
     com : (3,) ndarray — m, the centre of mass
-    principal : PrincipalResult — about the com
+    principal : PrincipalResult — about the com (``axes`` as rows, ``equivalent_ellipsoid``
+        semi-axes in m)
     du : DisplayUnits — the length unit of the axes
     title : str — the figure title (with the body name)
+
+    Returns
+    -------
+    matplotlib.figure.Figure — 2 × 2 axes: 3-D view, top, front and side views
     """
-    from rbcli.render.plots import figure, style
+    from matplotlib.ticker import MaxNLocator
+
+    from rbcli.core import outline as ol
+    from rbcli.render.plots import figure
 
     f, L = du.factor("length")
     ell = np.asarray(principal.equivalent_ellipsoid, dtype=float)
-    box = np.asarray(principal.equivalent_box, dtype=float)
     N = np.asarray(principal.axes, dtype=float)
     c = np.asarray(com, dtype=float)
-    R = extent(body, c, ell, box)
-    arrow = 1.15 * max(float(np.max(ell)), 0.5 * float(np.max(box)), 0.35 * R)
-    half = 1.2 * max(R, arrow)
-    parts = np.array([np.asarray(p.com, dtype=float) for p in body.parts])
-    solid = np.array([not p.subtract for p in body.parts])
 
-    fig, axes = figure(title, nrows=2, ncols=2, size=(7.0, 7.4))
+    solids, holes, dots = [], [], []
+    for p in body.parts:
+        if p.outline is None:
+            dots.append((p, np.asarray(p.com, dtype=float)))
+            continue
+        (holes if p.subtract else solids).append((p, ol.sketch(p.outline, n=segments(len(body.parts)))))
+    pts = [s.vertices for _, s in solids + holes] + [s.points for _, s in solids + holes]
+    pts += [d.reshape(1, 3) for _, d in dots] + [c.reshape(1, 3)]
+    allp = np.concatenate(pts)
+    size = float(np.max(allp.max(axis=0) - allp.min(axis=0)))
+    arrow = 0.6 * size if size > 0 else 1.15 * float(np.max(ell)) or 1.0
+    box = ell.max() * np.eye(3)  # the equivalent ellipsoid's bounding box, and the arrows
+    allp = np.concatenate([allp, c + arrow * 1.15 * N, c - 0.05 * arrow * N, c + box, c - box])
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    mid = 0.5 * (lo + hi)
+    half = 0.54 * float(np.max(hi - lo)) or 1.0
+
+    fig, axes = figure(title, nrows=2, ncols=2, size=(7.0, 7.6))
     spec = axes[0][0].get_subplotspec()
     axes[0][0].remove()
     ax3 = fig.add_subplot(spec, projection="3d")
     flat = [axes[0][1], axes[1][0], axes[1][1]]
+    _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L)
 
-    # --- 3-D view: wireframe ellipsoid, box edges, principal axes
-    u = np.linspace(0.0, 2.0 * np.pi, 25)
-    v = np.linspace(0.0, np.pi, 13)
-    X = np.outer(np.cos(u), np.sin(v))
-    Y = np.outer(np.sin(u), np.sin(v))
-    Z = np.outer(np.ones_like(u), np.cos(v))
-    P = np.stack([X * ell[0], Y * ell[1], Z * ell[2]], axis=-1) @ N + c
-    ax3.plot_wireframe(P[..., 0] * f, P[..., 1] * f, P[..., 2] * f, color="0.6", linewidth=0.5)
-    corners = box_corners(box, N) + c
-    for a in range(8):
-        for b in range(a + 1, 8):
-            if bin(a ^ b).count("1") == 1:  # corners differing in one sign share an edge
-                seg = corners[[a, b]] * f
-                ax3.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="0.35", linestyle="--", linewidth=0.8)
-    for k in range(3):
-        tip = c + arrow * N[k]
-        seg = np.array([c, tip]) * f
-        ax3.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="black", linewidth=1.6)
-        ax3.text(*(c + 1.12 * arrow * N[k]) * f, str(k + 1), fontsize=10, fontweight="bold",
-                 ha="center", va="center")
-    ax3.scatter(*(parts[solid].T * f), s=6, color="0.4", depthshade=False)
-    lim = [(x - half) * f for x in c], [(x + half) * f for x in c]
-    ax3.set_xlim(lim[0][0], lim[1][0])
-    ax3.set_ylim(lim[0][1], lim[1][1])
-    ax3.set_zlim(lim[0][2], lim[1][2])
-    ax3.set_box_aspect((1, 1, 1), zoom=0.82)
-    ax3.set_xlabel(f"x [{L}]")
-    ax3.set_ylabel(f"y [{L}]")
-    ax3.set_zlabel(f"z [{L}]")
-    ax3.set_title("3-D view")
-    ax3.tick_params(labelsize=7)
-    from matplotlib.ticker import MaxNLocator
-
-    for a in (ax3.xaxis, ax3.yaxis, ax3.zaxis):
-        a.set_major_locator(MaxNLocator(4))
-    for pane in (ax3.xaxis, ax3.yaxis, ax3.zaxis):
-        pane.set_pane_color((1.0, 1.0, 1.0, 0.0))
-
-    # --- flat views
-    handles = {}
-    for ax, (name, i, j) in zip(flat, VIEWS):
+    shown: set[str] = set()  # what the legend explains
+    for ax, (name, i, j, toward) in zip(flat, VIEWS):
+        sh = [(p, ol.shadow(s, i, j, toward)) for p, s in solids]
+        hs = [(p, ol.shadow(s, i, j, toward)) for p, s in holes]
+        _add_fill(ax, [r for _, x in sh for r in x.fill], f, 1, SOLID)
+        _add_lines(ax, np.concatenate([x.creases for _, x in sh] or [np.zeros((0, 2, 2))]), f, 2,
+                   edgecolor="0.45", linewidth=0.5)
+        _add_lines(ax, np.concatenate([x.hidden for _, x in sh] or [np.zeros((0, 2, 2))]), f, 2,
+                   edgecolor="0.3", linewidth=0.6, linestyle=(0, (3, 2)))
+        _add_lines(ax, np.concatenate([x.outline for _, x in sh] or [np.zeros((0, 2, 2))]), f, 3,
+                   edgecolor="black", linewidth=0.8)
+        if sh:
+            shown.add("solid")
+        if hs:
+            _add_fill(ax, [r for _, x in hs for r in x.fill], f, 4, "white")
+            _add_lines(ax, np.concatenate([x.outline for _, x in hs]), f, 5, edgecolor="0.15",
+                       linewidth=0.9, linestyle=(0, (4, 2)))
+            shown.add("hole")
+        # marked points: point masses (dots), a given part's centre (×), parts without outline
+        for plist, face in ((sh, "black"), (hs, "white")):
+            for p, x in plist:
+                if len(x.points):
+                    given = p.outline.kind == "given"
+                    ax.plot(x.points[:, 0] * f, x.points[:, 1] * f, linestyle="none", zorder=6,
+                            **(MARKS["given"] if given else {**MARKS["point"], "markerfacecolor": face}))
+                    shown.add("given" if given else "point" if face == "black" else "removed")
+        for p, d in dots:
+            ax.plot(d[i] * f, d[j] * f, linestyle="none", zorder=6,
+                    **{**MARKS["centre"], "markerfacecolor": "white" if p.subtract else "0.4"})
+            shown.add("centre")
         ci = np.array([c[i], c[j]])
-        e2 = shadow_ellipse(ell, N, i, j) + ci
-        handles["ellipse"] = ax.fill(e2[:, 0] * f, e2[:, 1] * f, facecolor="0.88", edgecolor="black",
-                                     linewidth=1.0, label="equivalent uniform ellipsoid")[0]
-        b2 = hull(box_corners(box, N)[:, (i, j)]) + ci
-        handles["box"] = ax.plot(b2[:, 0] * f, b2[:, 1] * f, label="equivalent uniform box",
-                                 **{**style(1), "linewidth": 1.0})[0]
-        tips: list[tuple[np.ndarray, list[str]]] = []  # label coincident tips once: "1, 2"
-        for k in range(3):
-            d = arrow * N[k][[i, j]]
-            if np.hypot(*d) < 0.08 * arrow:  # along the line of sight: a ring at the com
-                ax.plot(*(ci * f), marker="o", markersize=9, markerfacecolor="none", color="black")
-                ax.annotate(str(k + 1), xy=tuple(ci * f), xytext=(-9, -9), textcoords="offset points",
-                            fontsize=10, fontweight="bold", ha="right", va="top", bbox=LABEL_BOX)
-                continue
-            ax.annotate("", xy=tuple((ci + d) * f), xytext=tuple(ci * f),
-                        arrowprops={"arrowstyle": "-|>", "color": "black", "linewidth": 1.4,
-                                    "shrinkA": 0, "shrinkB": 0})
-            for tip, names in tips:
-                if np.hypot(*(tip - d)) < 0.05 * arrow:
-                    names.append(str(k + 1))
-                    break
-            else:
-                tips.append((d, [str(k + 1)]))
-        for d, names in tips:  # the label 11 points beyond the tip, along the arrow
-            u = d / np.hypot(*d)
-            ax.annotate(", ".join(names), xy=tuple((ci + d) * f), xytext=tuple(11 * u),
-                        textcoords="offset points", fontsize=10, fontweight="bold",
-                        ha="center", va="center", bbox=LABEL_BOX)
-        handles["parts"] = ax.plot(parts[solid][:, i] * f, parts[solid][:, j] * f, linestyle="none",
-                                   marker="o", markersize=2.5, color="0.4", label="part centres")[0]
-        if np.any(~solid):
-            handles["holes"] = ax.plot(parts[~solid][:, i] * f, parts[~solid][:, j] * f, linestyle="none",
-                                       marker="o", markersize=4, markerfacecolor="white", color="0.3",
-                                       label="hole centres")[0]
-        handles["com"] = ax.plot(c[i] * f, c[j] * f, linestyle="none", marker="+", markersize=10,
-                                 markeredgewidth=1.4, color="black", label="centre of mass")[0]
-        ax.set_xlim((c[i] - half) * f, (c[i] + half) * f)
-        ax.set_ylim((c[j] - half) * f, (c[j] + half) * f)
+        e2 = ol.ellipse_shadow(ell, N, i, j) + ci
+        ax.plot(e2[:, 0] * f, e2[:, 1] * f, zorder=7, **LINES["ellipse"])
+        _arrows(ax, ci, N, arrow, i, j, f)
+        ax.plot(c[i] * f, c[j] * f, linestyle="none", zorder=9, **MARKS["com"])
+        ax.set_xlim((mid[i] - half) * f, (mid[i] + half) * f)
+        ax.set_ylim((mid[j] - half) * f, (mid[j] + half) * f)
         ax.set_aspect("equal", adjustable="box")
         ax.set_xlabel(f"{NAMES[i]} [{L}]")
         ax.set_ylabel(f"{NAMES[j]} [{L}]")
         ax.set_title(name)
         ax.tick_params(labelsize=7)
-    keys = [k for k in ("ellipse", "box", "com", "parts", "holes") if k in handles]
-    fig.legend([handles[k] for k in keys], [handles[k].get_label() for k in keys],
-               loc="outside lower center", ncols=len(keys) if len(keys) <= 4 else 3)
+        ax.set_axisbelow(True)
+        for a in (ax.xaxis, ax.yaxis):
+            a.set_major_locator(MaxNLocator(5))
+    _legend(fig, shown | {"com", "ellipse"})
     return fig
+
+
+#: marker styles of the flat views (and their legend)
+MARKS = {
+    "point": {"marker": "o", "markersize": 4, "markerfacecolor": "black", "markeredgecolor": "black",
+              "markeredgewidth": 1.0},
+    "given": {"marker": "x", "markersize": 5, "markeredgecolor": "black", "markeredgewidth": 1.0},
+    "centre": {"marker": "o", "markersize": 3, "markerfacecolor": "0.4", "markeredgecolor": "0.2"},
+    "com": {"marker": "+", "markersize": 11, "markeredgewidth": 1.5, "color": "black"},
+}
+LINES = {"ellipse": {"color": "0.25", "linestyle": ":", "linewidth": 1.0}}
+LEGEND = (
+    ("solid", "parts"),
+    ("hole", "holes (subtracted)"),
+    ("point", "point masses"),
+    ("removed", "removed point masses"),
+    ("given", "given part (its equivalent ellipsoid)"),
+    ("centre", "part centres"),
+    ("com", "centre of mass"),
+    ("ellipse", "equivalent uniform ellipsoid"),
+)
+
+
+def _legend(fig, shown: set) -> None:
+    """One legend under the views for what they show (proxy artists: nothing extra drawn)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    proxy = {
+        "solid": lambda: Patch(facecolor=SOLID, edgecolor="black", linewidth=0.8),
+        "hole": lambda: Patch(facecolor="white", edgecolor="0.15", linewidth=0.9, linestyle=(0, (4, 2))),
+        "point": lambda: Line2D([], [], linestyle="none", **MARKS["point"]),
+        "removed": lambda: Line2D([], [], linestyle="none", **{**MARKS["point"], "markerfacecolor": "white"}),
+        "given": lambda: Line2D([], [], linestyle="none", **MARKS["given"]),
+        "centre": lambda: Line2D([], [], linestyle="none", **MARKS["centre"]),
+        "com": lambda: Line2D([], [], linestyle="none", **MARKS["com"]),
+        "ellipse": lambda: Line2D([], [], **LINES["ellipse"]),
+    }
+    keys = [(k, text) for k, text in LEGEND if k in shown]
+    fig.legend([proxy[k]() for k, _ in keys], [t for _, t in keys], loc="outside lower center",
+               ncols=min(len(keys), 3))
+
+
+def _arrows(ax, ci, N, arrow, i, j, f):
+    """The principal axes 1, 2, 3 as arrows from the com, labelled beyond their tips."""
+    tips: list[tuple[np.ndarray, list[str]]] = []  # label coincident tips once: "1, 2"
+    for k in range(3):
+        d = arrow * N[k][[i, j]]
+        if np.hypot(*d) < 0.08 * arrow:  # along the line of sight: a ring at the com
+            ax.plot(*(ci * f), marker="o", markersize=9, markerfacecolor="none", color="black", zorder=8)
+            ax.annotate(str(k + 1), xy=tuple(ci * f), xytext=(-9, -9), textcoords="offset points",
+                        fontsize=10, fontweight="bold", ha="right", va="top", bbox=LABEL_BOX, zorder=10)
+            continue
+        ax.annotate("", xy=tuple((ci + d) * f), xytext=tuple(ci * f), zorder=8,
+                    arrowprops={"arrowstyle": "-|>", "color": "black", "linewidth": 1.4,
+                                "shrinkA": 0, "shrinkB": 0})
+        for tip, names in tips:
+            if np.hypot(*(tip - d)) < 0.05 * arrow:
+                names.append(str(k + 1))
+                break
+        else:
+            tips.append((d, [str(k + 1)]))
+    for d, names in tips:  # the label 11 points beyond the tip, along the arrow
+        u = d / np.hypot(*d)
+        ax.annotate(", ".join(names), xy=tuple((ci + d) * f), xytext=tuple(11 * u),
+                    textcoords="offset points", fontsize=10, fontweight="bold",
+                    ha="center", va="center", bbox=LABEL_BOX, zorder=10)
+
+
+def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
+    """The 3-D view: shaded solid surfaces with their sharp edges, holes as dashed edges,
+    point masses, the principal axes (within :data:`BUDGET_3D`: see there)."""
+    from matplotlib.ticker import MaxNLocator
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
+
+    from rbcli.core import outline as ol
+
+    # coarse surfaces, only the faces turned to the camera: a few hundred polygons
+    elev, azim = np.radians(ELEV), np.radians(AZIM)
+    eye = np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
+    light = np.array([-0.4, -0.6, 0.7])
+    light /= np.linalg.norm(light)
+    parts = [p for p, _ in solids + holes]
+    for n, most in ((SEGMENTS_3D, TRIANGLES_3D), (10, 100)):  # coarser when there are many parts
+        coarse = {id(p): ol.sketch(p.outline, n=n, max_triangles=most) for p in parts}
+        if sum(len(s.faces) for s in coarse.values()) <= BUDGET_3D:
+            break
+    else:  # still too many: the heaviest parts within the budget, the others as dots
+        used, kept = 0, set()
+        for p in sorted(parts, key=lambda p: -p.mass):
+            used += len(coarse[id(p)].faces) + len(coarse[id(p)].lines)
+            if used > BUDGET_3D:
+                break
+            kept.add(id(p))
+        dots = dots + [(p, np.asarray(p.com, dtype=float)) for p in parts if id(p) not in kept]
+        solids = [(p, s) for p, s in solids if id(p) in kept]
+        holes = [(p, s) for p, s in holes if id(p) in kept]
+    solids = [(p, coarse[id(p)]) for p, _ in solids]
+    holes = [(p, coarse[id(p)]) for p, _ in holes]
+    polys, shades = [], []
+    for p, s in solids:
+        keep = ol.facing(s, eye)
+        if np.any(keep):
+            polys.append(s.vertices[s.faces[keep]] * f)
+            shades.append(0.62 + 0.33 * np.abs(ol.normals(s)[keep] @ light))
+    if polys:
+        P = np.concatenate(polys)
+        g = np.concatenate(shades)
+        ax3.add_collection3d(Poly3DCollection(P, facecolors=np.column_stack([g, g, g, np.ones_like(g)]),
+                                              edgecolors=np.column_stack([g, g, g, np.ones_like(g)]),
+                                              linewidths=0.3))
+    edges = [ol.features(s) for _, s in solids]
+    if edges:
+        E = np.concatenate(edges)
+        if len(E):
+            ax3.add_collection3d(Line3DCollection(E * f, colors="0.1", linewidths=0.6))
+    hedges = [ol.features(s) for _, s in holes]
+    if hedges and len(np.concatenate(hedges)):
+        ax3.add_collection3d(Line3DCollection(np.concatenate(hedges) * f, colors="0.2", linewidths=0.7,
+                                              linestyles=(0, (4, 2))))
+    marks = [s.points for _, s in solids + holes if len(s.points)]
+    if marks:  # point masses, given parts' centres
+        M = np.concatenate(marks) * f
+        ax3.scatter(M[:, 0], M[:, 1], M[:, 2], s=10, color="black", depthshade=False)
+    if dots:  # parts drawn only by their centre
+        M = np.array([d for _, d in dots]) * f
+        ax3.scatter(M[:, 0], M[:, 1], M[:, 2], s=3, color="0.45", depthshade=False)
+    for k in range(3):
+        seg = np.array([c, c + arrow * N[k]]) * f
+        ax3.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="black", linewidth=1.6)
+        ax3.text(*(c + 1.12 * arrow * N[k]) * f, str(k + 1), fontsize=10, fontweight="bold",
+                 ha="center", va="center")
+    ax3.set_xlim((mid[0] - half) * f, (mid[0] + half) * f)
+    ax3.set_ylim((mid[1] - half) * f, (mid[1] + half) * f)
+    ax3.set_zlim((mid[2] - half) * f, (mid[2] + half) * f)
+    ax3.set_box_aspect((1, 1, 1), zoom=0.82)
+    ax3.view_init(elev=ELEV, azim=AZIM)
+    ax3.set_xlabel(f"x [{L}]")
+    ax3.set_ylabel(f"y [{L}]")
+    ax3.set_zlabel(f"z [{L}]")
+    ax3.set_title("3-D view")
+    ax3.tick_params(labelsize=7)
+    for a in (ax3.xaxis, ax3.yaxis, ax3.zaxis):
+        a.set_major_locator(MaxNLocator(4))
+        a.set_pane_color((1.0, 1.0, 1.0, 0.0))
