@@ -28,24 +28,24 @@ the equivalent uniform box and ellipsoid.
 
 def reference(body, *, about: str | None = None):
     """(mass properties, point, label): the point the inertia is about — ``about`` (the
-    text of --about: com, origin or x,y,z), else the body's reference, else the origin."""
-    import numpy as np
-
+    text of --about: com, origin or x,y,z), else the body's reference, else the origin.
+    (For the report; the commands use :class:`rbcli.api.massprops.InertiaOptions`.)"""
+    from rbcli.api.massprops import Reference
     from rbcli.core.inertia import combine
 
     mp = combine(body.parts)
-    if about is not None:
-        p = c.point(about, "--about")
-        if p == "com":
-            return mp, mp.com, "the com"
-        if p == "origin":
-            return mp, np.zeros(3), "the origin"
-        return mp, np.array(p), f"[{about}]"
-    if body.reference_is_com:
-        return mp, mp.com, "the com"
-    if body.reference is not None:
-        return mp, body.reference, "the body's reference point"
-    return mp, np.zeros(3), "the origin"
+    ref = Reference.parse(body, about)
+    return mp, ref.resolve(mp), ref.label
+
+
+def with_file(data: dict, source: str) -> dict:
+    """A result's JSON with ``"file"`` after ``"name"``, as the command prints it."""
+    out = {}
+    for k, v in data.items():
+        out[k] = v
+        if k == "name":
+            out["file"] = source
+    return out
 
 
 @app.command(help=INERTIA_HELP)
@@ -60,17 +60,14 @@ def inertia(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    from rbcli.errors import InputError
+    from rbcli.api.options import choice
 
-    if products not in ("tensor", "positive"):
-        raise InputError(f"--products must be 'tensor' or 'positive', not '{products}'")
+    choice(products, "--products", ("tensor", "positive"))
     e = c.env()
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    n = c.direction(axis, "--axis") if axis is not None else None
-    w = c.vector(omega, "angular_speed", "--omega") if omega is not None else None
-    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, n, w, json_, du, digits, products, e, many))
+    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, axis, omega, json_, du, digits, products, e, many))
 
 
 def _run(bodies, expr, e, one) -> None:
@@ -104,25 +101,13 @@ def _run(bodies, expr, e, one) -> None:
         c.finish(2)
 
 
-def _option_for(param: str, about: str | None) -> str:
-    """The option (or body key) that an InputOverflow's ``param`` refers to."""
-    if param == "reference":
-        return "--about" if about is not None else "the body's reference point"
-    return f"--{param}"
-
-
-def _inertia_one(body, about, n, w, json_, du, digits, products, e, many: bool) -> None:
-    from rbcli.core.inertia import InputOverflow, inertia_report
-    from rbcli.errors import InputError
+def _inertia_one(body, about, axis, omega, json_, du, digits, products, e, many: bool) -> None:
+    from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
-    mp, ref, label = reference(body, about=about)
-    try:
-        res = inertia_report(mp, ref, axis=n, omega=w)
-    except InputOverflow as exc:
-        raise InputError(f"{_option_for(exc.param, about)}: {exc}") from None
-    c.emit(e, json_, lambda: r.inertia_json(body, res),
-           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), lines=many)
+    res = api.run_inertia(body, api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
+    c.emit(e, json_, lambda: with_file(res.to_json(), body.source),
+           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -142,22 +127,12 @@ def principal(
 
 
 def _principal_one(body, about, json_, du, digits, e, many: bool) -> None:
-    import numpy as np
-
-    from rbcli.core.inertia import inertia_about
-    from rbcli.core.principal import principal_report
-    from rbcli.errors import InputError
+    from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
-    mp, ref, label = reference(body, about=about)
-    with np.errstate(over="ignore", invalid="ignore"):
-        J = inertia_about(mp, ref)
-    if not np.all(np.isfinite(J)):
-        raise InputError(f"{_option_for('reference', about)}: the inertia about this point overflows: "
-                         "the point is too far from the body")
-    res = principal_report(mp.mass, J, ref)
-    c.emit(e, json_, lambda: r.principal_json(body, res),
-           lambda doc: r.principal_doc(doc, body, res, du, digits, label), lines=many)
+    res = api.run_principal(body, api.PrincipalOptions.parse(body, about=about))
+    c.emit(e, json_, lambda: with_file(res.to_json(), body.source),
+           lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many)
 
 
 MANUAL["inertia"] = {

@@ -552,7 +552,7 @@ def _rollcheck(ctx: _Ctx):
     b, o = ctx.body, ctx.opts
     from rbcli.cli import rollcheck as cr
 
-    round_parts = [p for p in b.parts if not p.subtract and p.radius is not None and p.shape in cr.ROUND]
+    round_parts = [p for p in b.parts if not p.subtract and p.radius is not None]  # round shapes
     if o.rim_radius is None and b.rim_radius is None and not round_parts:
         return _skip(key, title, "rolling stability: no rim radius: none in the body file (rim_radius), no "
                      "--rim-radius option and no round part")

@@ -257,20 +257,19 @@ def _setup(body, n_axle, p_through, a_opt) -> Setup:
                  tuple(warnings))
 
 
-ROUND = ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone", "torus")
-
-
 def _largest_round_part(body, n, P) -> tuple[float, str, str]:
     """The largest outer radius of the round, non-subtracted parts coaxial with the axle."""
     import numpy as np
 
+    from rbcli.core.shapes import SHAPES
     from rbcli.errors import InputError
 
     best = None
     for p in body.parts:
-        if p.subtract or p.radius is None or p.shape not in ROUND:
+        # p.radius is the outer radius of a round shape (None for the others: core.shapes)
+        if p.subtract or p.radius is None:
             continue
-        if p.shape != "sphere" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9:
+        if SHAPES[p.shape].round != "any" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9:
             continue  # round about another axis: not a rim for this axle
         d = np.asarray(p.com, dtype=float) - P
         off = float(np.linalg.norm(d - np.dot(d, n) * n))

@@ -154,6 +154,18 @@ class PrincipalResult:
         return self.axes_info.axes
 
     @property
+    def symmetry(self) -> str:
+        return self.axes_info.symmetry
+
+    @property
+    def unique_axis(self) -> int | None:
+        return self.axes_info.unique_axis
+
+    @property
+    def free_axes(self) -> tuple[int, ...]:
+        return self.axes_info.free_axes
+
+    @property
     def direction_angles_deg(self) -> np.ndarray:
         """(3, 3) angle of principal axis i from body axis j, degrees (by atan2, exact near 0°)."""
         a = self.axes
@@ -162,23 +174,6 @@ class PrincipalResult:
             others = [k for k in range(3) if k != j]
             out[:, j] = np.degrees(np.arctan2(np.linalg.norm(a[:, others], axis=1), a[:, j]))
         return out
-
-    def to_json(self) -> dict:
-        pa = self.axes_info
-        return {
-            "reference": self.reference,
-            "moments": pa.moments,
-            "axes": pa.axes,
-            "symmetry": pa.symmetry,
-            "stable": list(self.stable),
-            "mass": self.mass,
-            "free_axes": [i + 1 for i in pa.free_axes],
-            "direction_angles_deg": self.direction_angles_deg,
-            "rotation_axis": self.rotation_axis,
-            "rotation_angle_deg": self.rotation_angle_deg,
-            "equivalent_box": self.equivalent_box,
-            "equivalent_ellipsoid": self.equivalent_ellipsoid,
-        }
 
 
 def matrix_to_axis_angle(R: np.ndarray) -> tuple[np.ndarray, float]:
