@@ -92,3 +92,44 @@ def test_parallel_axis(a, b, c, q, mass, p):
         assert float(n @ JP @ n) == pytest.approx(at_com.moments[i] + mass * r2, rel=1e-9, abs=1e-12 * scale)
     # the principal moments about P are never below the smallest about the com
     assert at_p.moments[0] >= at_com.moments[0] - 1e-12 * scale
+
+
+# ----------------------------------------------------------------------------- signs (issue 13.6)
+
+
+@pytest.mark.parametrize("axis", [[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0], [1, 1, 0], [1, -2, 0], [3, 1, 2]])
+@pytest.mark.parametrize("tilt", [0.5, -0.5, 0.01])
+def test_a_slightly_tilted_flywheel_reads_its_tilt(axis, tilt):
+    """A flywheel tilted 0.5° has principal axes 0.5° from its body axes (it read 179.6°)."""
+    from rbcli.api.load import load_text
+
+    body = load_text("parts:\n  - {shape: cylinder, radius: 0.3, length: 0.05, mass: 20, "
+                     f"rotate: {{axis: {axis}, angle: {tilt}}}}}\n")
+    from rbcli.core.inertia import combine
+
+    mp = combine(body.parts)
+    r = principal_report(mp.mass, mp.inertia_com, mp.com)
+    assert r.symmetry == "symmetric" and r.unique_axis == 2
+    # the rotation is the tilt of the symmetry axis (about an in-plane axis: exactly the
+    # tilt; a turn about z itself cannot be seen in a body of revolution)
+    k = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
+    n = Rotation.from_rotvec(np.radians(tilt) * k).apply([0, 0, 1.0])
+    # (to second order: the free axes are the body axes projected on the plane)
+    assert r.rotation_angle_deg == pytest.approx(np.degrees(np.arccos(n[2])), rel=1e-4)
+    assert r.axes[2] @ np.array([0, 0, 1.0]) > 0.9999  # axis 3 is +z tilted, not -z
+    assert np.linalg.det(r.axes) == pytest.approx(1.0)
+
+
+@settings(max_examples=200, deadline=None)
+@given(a=moment, b=moment, c=moment, rv=st.lists(st.floats(-0.3, 0.3), min_size=3, max_size=3))
+def test_a_small_rotation_of_an_aligned_body_is_recovered(a, b, c, rv):
+    """A body whose moments ascend along x, y, z, turned by a small rotation Q, has axes = Q
+    (rows: the turned x, y, z) and a rotation angle = |Q|'s angle."""
+    m3 = np.sort(_physical(a, b, c))
+    if np.min(np.diff(m3)) < 1e-2 * m3[-1]:
+        return  # (nearly) equal moments: the free axes are chosen, not recovered
+    Q = Rotation.from_rotvec(rv)
+    J = Q.as_matrix() @ np.diag(m3) @ Q.as_matrix().T
+    r = principal_report(1.0, J, np.zeros(3))
+    np.testing.assert_allclose(r.axes, Q.as_matrix().T, rtol=0, atol=1e-8 / np.min(np.diff(m3)) * m3[-1])
+    assert r.rotation_angle_deg == pytest.approx(np.degrees(Q.magnitude()), abs=1e-6)

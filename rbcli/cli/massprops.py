@@ -19,10 +19,11 @@ between L and w, and the kinetic energy T = w.J.w/2. Several bodies at once: wit
 PRINCIPAL_HELP = """Principal moments and axes, symmetry, and which free rotations are stable.
 
 Moments ascending; row i of "axes" is the unit axis of moment i (body frame), a
-right-handed set; the first two axes have their largest component positive. Where
-moments coincide the free axes are said and chosen along the body axes where
-possible. Also the direction angles, the rotation from body to principal axes and
-the equivalent uniform box and ellipsoid.
+right-handed set whose signs make the rotation from body to principal axes the
+smallest one (a body tilted 0.5 degrees reads 0.5 degrees). Where moments coincide
+the free axes are said and chosen along the body axes where possible. Also the
+direction angles, the rotation from body to principal axes and the equivalent
+uniform box and ellipsoid.
 """
 
 
@@ -170,11 +171,17 @@ MANUAL["principal"] = {
         "Free rotation about the axes of the largest and the smallest principal moment is "
         "stable, about the intermediate one unstable (the tennis-racket flip). The equivalent "
         "uniform box and ellipsoid have the same mass and principal moments.",
+        "Signs of the axes: of the sign choices that keep the axes right-handed, the one "
+        "whose rotation from the body axes is smallest (largest trace of the axes matrix), so "
+        "a flywheel tilted 0.5 degrees has its axis 3 along +z tilted 0.5 degrees, and the "
+        "rotation reads 0.5 degrees. Where moments coincide, the free axes are also ordered "
+        "this way. Exact ties keep the first two axes with their largest component positive.",
     ],
     "json": [
         ("reference", "[3] the point the moments are about, m."),
         ("moments", "[3] principal moments, ascending, kg m^2."),
-        ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set."),
+        ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set "
+                 "(a rotation matrix) with the signs that make it the rotation nearest the body frame."),
         ("symmetry", "asymmetric, symmetric or spherical."),
         ("stable", "[3] whether free rotation about each axis is stable."),
         ("free_axes", "axes (1-based) that are free to choose where moments coincide."),
