@@ -220,6 +220,30 @@ class InertiaResult(Result):
         out["parts"] = list(self.parts)
         return jsonable(out)
 
+    def inertial(self, principal: bool = False) -> Any:
+        """The numbers of the body's ``<inertial>`` element for URDF, SDF or MJCF.
+
+        Parameters
+        ----------
+        principal : bool
+            False: the tensor about the com in body axes (exactly ``inertia_com`` of
+            ``to_json()``); True: the principal moments about the com (ascending, as
+            :func:`principal` gives them) and the principal axes' orientation.
+
+        Returns
+        -------
+        rbcli.core.inertial.Inertial
+            ``mass`` (kg), ``com`` (m), ``inertia`` (kg m², in the inertial frame),
+            ``rotation`` (columns: the inertial frame's axes in the body frame),
+            ``quat_wxyz`` and ``rpy`` (rad, fixed-axis roll-pitch-yaw) of that rotation.
+            ``rbcli.render.robot.render("urdf", name, source, inertial)`` writes the XML
+            that ``rbcli inertia --format urdf`` prints.
+        """
+        from rbcli.core.inertial import inertial
+
+        J = self.inertia_com if principal else snap(self.inertia_com)
+        return inertial(self.mass, self.com, J, principal=principal)
+
 
 def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
     """:func:`inertia` with options already parsed."""

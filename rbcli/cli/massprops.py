@@ -27,6 +27,15 @@ uniform box and ellipsoid.
 """
 
 
+#: the robot-description formats of ``inertia --format`` (rbcli.render.robot)
+ROBOT_FORMATS = ("urdf", "sdf", "mjcf")
+
+INERTIA_FORMAT_HELP = (
+    "Output: table (for people), json (= --json), csv (the tables, for spreadsheets), or the "
+    "body's <inertial> element for a robot model: urdf, sdf or mjcf (about the com, SI, full "
+    "precision; the frame is stated in a comment).")
+
+
 def reference(body, *, about: str | None = None):
     """(mass properties, point, label): the point the inertia is about — ``about`` (the
     text of --about: com, origin or x,y,z), else the body's reference, else the origin.
@@ -58,28 +67,42 @@ def inertia(
     omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
     products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
     json_: bool = c.JsonOpt,
+    fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
+    principal_: bool = typer.Option(False, "--principal", help="With --format urdf|sdf|mjcf: the principal moments and the principal axes' orientation instead of the full tensor in body axes."),
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api.options import choice
+    from rbcli.errors import InputError
 
     choice(products, "--products", ("tensor", "positive"))
+    out = c.output_format(json_, fmt, ROBOT_FORMATS)
+    if out in ROBOT_FORMATS:
+        given = [o for o, v in (("--about", about), ("--axis", axis), ("--omega", omega), ("--units", units)) if v is not None]
+        if given:
+            raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
+                             "always about the centre of mass, in SI units")
+    elif principal_:
+        raise InputError(f"--principal applies to --format urdf, sdf or mjcf, not to {out}")
     e = c.env()
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, axis, omega, json_, du, digits, products, e, many))
+    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many),
+         sep="\n" if out == "csv" else "")
 
 
-def _run(bodies, expr, e, one) -> None:
+def _run(bodies, expr, e, one, sep: str = "") -> None:
     """Run ``one(body, many)`` per body; go on past bad files, exit 2 at the end if any failed.
 
     ``many`` is true when more than one body was named: ``--json`` then prints JSON Lines
-    (one compact object per body).
+    (one compact object per body). ``sep`` is written between two bodies' outputs (the
+    empty line between CSV blocks).
     """
     srcs = c.sources(bodies, expr)
     many = len(srcs) > 1
     failed = False
+    done = 0
     from rbcli.errors import InputError
 
     for src, body in c.each_body(srcs, expr, e):
@@ -92,7 +115,10 @@ def _run(bodies, expr, e, one) -> None:
             failed = True
             continue
         try:
+            if done and sep:
+                e.write(sep)
             one(body, many)
+            done += 1
         except InputError as exc:
             if len(srcs) == 1:
                 raise
@@ -102,13 +128,20 @@ def _run(bodies, expr, e, one) -> None:
         c.finish(2)
 
 
-def _inertia_one(body, about, axis, omega, json_, du, digits, products, e, many: bool) -> None:
+def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
     res = api.run_inertia(body, api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
-    c.emit(e, json_, lambda: with_file(res.to_json(), body.source),
-           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many)
+    if out in ROBOT_FORMATS:
+        from rbcli.render import robot
+
+        res.to_json()  # the one finiteness check of the numbers
+        e.write(robot.render(out, body.name, body.source, res.inertial(principal_)))
+        return
+    c.emit(e, out, lambda: with_file(res.to_json(), body.source),
+           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
+           file=body.source if many else None)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -117,23 +150,27 @@ def principal(
     expr: str = c.ExprOpt,
     about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
+    out = c.output_format(json_, fmt)
     e = c.env()
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, json_, du, digits, e, many))
+    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, out, du, digits, e, many),
+         sep="\n" if out == "csv" else "")
 
 
-def _principal_one(body, about, json_, du, digits, e, many: bool) -> None:
+def _principal_one(body, about, out, du, digits, e, many: bool) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
     res = api.run_principal(body, api.PrincipalOptions.parse(body, about=about))
-    c.emit(e, json_, lambda: with_file(res.to_json(), body.source),
-           lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many)
+    c.emit(e, out, lambda: with_file(res.to_json(), body.source),
+           lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
+           file=body.source if many else None)
 
 
 MANUAL["inertia"] = {
@@ -142,6 +179,19 @@ MANUAL["inertia"] = {
         "(Ixy = -sum m x y). --products positive shows the positive engineering products "
         "instead, and says so. Tables use six significant figures (--digits) and SI units "
         "unless --units is given; JSON is always SI with full precision.",
+        "--format table (default), json (the same as --json) or csv (the tables, one block per "
+        "table; several bodies add a file column; layout in rbcli(1)).",
+        "--format urdf, sdf or mjcf prints the body's <inertial> element for a robot or "
+        "simulation model, after a comment that states its frame: the link frame is the body "
+        "frame; the position is the centre of mass (m); the inertia is about the centre of "
+        "mass, in kg m^2, at full precision (each number reads back to the same double). By "
+        "default it is the tensor in body axes (URDF and SDF ixy, ixz, iyz are the tensor's "
+        "entries, -sum m x y; MJCF fullinertia=\"ixx iyy izz ixy ixz iyz\") with no rotation. "
+        "With --principal it is the principal moments (ascending, as rbcli principal) and the "
+        "orientation of the principal axes: URDF <origin rpy> and SDF <pose> as fixed-axis "
+        "roll, pitch, yaw in rad (R = Rz(yaw) Ry(pitch) Rx(roll)), MJCF quat=\"w x y z\" with "
+        "diaginertia. --about, --axis, --omega and --units do not apply to these formats "
+        "(exit 2). Several bodies: one element per body, one after another.",
     ],
     "json": [
         ("mass", "total mass, kg."),
@@ -163,6 +213,10 @@ MANUAL["inertia"] = {
          "A box written inline; JSON for scripts."),
         ("rbcli inertia examples/*.yaml --json | jq .mass",
          "Several bodies at once: one JSON object per line."),
+        ("rbcli inertia examples/bracket.yaml --format urdf",
+         "The <inertial> element of a URDF link whose frame is the body frame."),
+        ("rbcli inertia examples/two_blade_fan.yaml --format mjcf --principal",
+         "MuJoCo: pos, quat (w x y z) of the principal axes and diaginertia (0.00666667, 0.0266667, 0.0333333)."),
     ],
 }
 
