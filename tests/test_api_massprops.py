@@ -135,3 +135,12 @@ def test_many_bodies_json_lines_are_the_api_results(cli):
     for p, d in zip(paths, docs):
         d.pop("file")
         assert rbcli.inertia(rbcli.load(p)).to_json() == d
+
+
+@pytest.mark.parametrize("cmd, args", [("inertia", ("--axis", "0,0,0")), ("inertia", ("--omega", "1,2")),
+                                       ("principal", ("--about", "1,2"))])
+def test_a_bad_option_is_one_line_before_any_body(cli, cmd, args):
+    """The options are checked once before the bodies are read (then per body, where the
+    body's defaults count): several bodies still get one line, not one per body."""
+    r = cli(cmd, str(EXAMPLES / "cube.yaml"), str(EXAMPLES / "nope.yaml"), *args)
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1 and args[0] in r.err

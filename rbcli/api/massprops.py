@@ -58,7 +58,8 @@ class Reference:
     def parse(cls, body: Any, about: o.Value | None, *, default: str = "body") -> "Reference":
         """``about`` (``"com"``, ``"origin"``, ``"x,y,z"`` or a sequence, m), else the
         default: ``"body"`` = the body's ``reference`` (``com``, a point), else the
-        origin; ``"com"`` = the com."""
+        origin; ``"com"`` = the com. ``body`` None (values checked before a body is read):
+        the origin."""
         if about is not None:
             p = o.point(about, "--about")
             if p == "com":
@@ -67,9 +68,9 @@ class Reference:
                 return cls((0.0, 0.0, 0.0), "the origin", "about")
             text = about if isinstance(about, str) else ", ".join(str(x) for x in _items(about))
             return cls(tuple(float(x) for x in p), f"[{text}]", "about")  # type: ignore[arg-type]
-        if default == "com" or body.reference_is_com:
+        if default == "com" or (body is not None and body.reference_is_com):
             return cls(None, "the com", "body_reference")
-        if body.reference is not None:
+        if body is not None and body.reference is not None:
             return cls(tuple(float(x) for x in body.reference), "the body's reference point",  # type: ignore[arg-type]
                        "body_reference")
         return cls((0.0, 0.0, 0.0), "the origin", "body_reference")

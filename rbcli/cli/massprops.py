@@ -88,6 +88,9 @@ def inertia(
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
+    from rbcli.api import massprops as api
+
+    api.InertiaOptions.parse(None, about=about, axis=axis, omega=omega)  # bad values: one line, before any body
     _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many),
          sep="\n" if out == "csv" else "")
 
@@ -159,6 +162,9 @@ def principal(
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
+    from rbcli.api import massprops as api
+
+    api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
     _run(bodies, expr, e, lambda body, many: _principal_one(body, about, out, du, digits, e, many),
          sep="\n" if out == "csv" else "")
 
