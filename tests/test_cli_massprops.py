@@ -200,7 +200,7 @@ def test_internal_error_exits_70_with_a_this_is_a_bug_line(cli, monkeypatch):
     monkeypatch.setattr(core, "inertia_report", boom)
     r = cli("inertia", "-e", BOX)
     code, out, err = r.code, r.out, r.err
-    assert code == 70
+    assert code == 70 and out == ""
     assert err.startswith("rbcli: internal error (RuntimeError: boom); this is a bug")
     assert err.count("\n") == 1 and "Traceback" not in err
 

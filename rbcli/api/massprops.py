@@ -182,6 +182,9 @@ class InertiaResult(Result):
     angle_L_omega_deg : float or None — degrees between L and ω
     parts : tuple of dict — each part's contribution (see :func:`part_rows`)
     warnings : tuple of str — none for this command
+
+    Methods: ``to_json()`` (the command's JSON less ``"file"``) and ``inertial(principal)``
+    (the numbers of a URDF/SDF/MJCF ``<inertial>`` element).
     """
 
     name: str
