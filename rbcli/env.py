@@ -1,14 +1,341 @@
-"""The process environment a command runs in: streams, terminal, colour.
+"""The process environment a command runs in: streams, terminal, colour, signals.
 
-Injectable so that tests can play a pipe or a terminal (the httpie way).
+Injectable so that tests can play a pipe or a terminal (the httpie way). Also the one
+place that makes user text safe to show (:func:`clean`) and that prepares the process's
+streams and signals for :func:`rbcli.cli.main` (:func:`prepare_streams`,
+:func:`handle_signals`, :func:`finish_stdout`).
 """
 
 from __future__ import annotations
 
+import errno
 import os
+import re
 import sys
 from dataclasses import dataclass
 from typing import IO
+
+# ----------------------------------------------------------------------------- user text
+
+#: the longest run of non-blank characters shown whole in a message or a table cell; longer
+#: ones (a 5-million-digit number) are cut with "…"
+MAX_WORD = 200
+#: the longest message line shown whole
+MAX_LINE = 2000
+
+# C0 and C1 controls (ESC, CR, NEL \x85...), DEL, line and paragraph separators, and the
+# invisible bidirectional controls that reorder what a terminal shows
+_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]")
+_UNSAFE_KEEP_NL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]")
+_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t", "\x1b": "\\e"}
+_LONG_WORD = re.compile(r"\S{%d,}" % (MAX_WORD + 1))
+
+
+def _escape(m: re.Match) -> str:
+    c = m.group()
+    if c in _NAMED:
+        return _NAMED[c]
+    n = ord(c)
+    return f"\\x{n:02x}" if n < 0x100 else f"\\u{n:04x}"
+
+
+def _cut_word(m: re.Match) -> str:
+    return m.group()[:MAX_WORD] + "…"
+
+
+def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = MAX_LINE) -> str:
+    """``text`` made safe to print as (part of) one line on a terminal.
+
+    Control characters (ESC sequences, CR, NUL, NEL ``\\x85``...), the line and paragraph
+    separators ``\\u2028``/``\\u2029`` and bidirectional controls are escaped as ``\\e``,
+    ``\\r``, ``\\x85``, ``\\u2028``, so a file can neither forge a second ``rbcli:`` line nor
+    send escape sequences to the terminal; a run of more than :data:`MAX_WORD` non-blank
+    characters is cut with "…", and the whole to ``max_line`` characters. ``keep_newlines``
+    keeps ``\\n`` (notes of several lines).
+    """
+    s = text if isinstance(text, str) else str(text)
+    if max_line is not None and len(s) > 4 * max_line:  # do not scan megabytes
+        s = s[: 4 * max_line]
+    s = (_UNSAFE_KEEP_NL if keep_newlines else _UNSAFE).sub(_escape, s)
+    if len(s) > MAX_WORD:
+        s = _LONG_WORD.sub(_cut_word, s)
+    if max_line is not None and len(s) > max_line:
+        s = s[:max_line] + "…"
+    return s
+
+
+# ----------------------------------------------------------------------------- ASCII terminals
+
+#: what a unit symbol or a sign becomes on a terminal that cannot show it (PYTHONIOENCODING=ascii)
+ASCII_FALLBACK = {
+    "·": "*", "⋅": "*", "²": "^2", "³": "^3", "¹": "^1", "⁻": "^-", "°": "deg", "µ": "u",
+    "μ": "u", "—": "--", "–": "-", "−": "-", "…": "...", "±": "+/-", "×": "x", "≈": "~",
+    "≤": "<=", "≥": ">=", "→": "->", "θ": "theta", "ω": "omega", "φ": "phi", "ψ": "psi",
+    "Ω": "Omega", "π": "pi", "Δ": "Delta", "‘": "'", "’": "'", "“": '"', "”": '"',
+}
+_ERRORS = "rbcli-fallback"
+
+
+def _fallback(exc: UnicodeError):
+    if not isinstance(exc, UnicodeEncodeError):
+        raise exc
+    bad = exc.object[exc.start:exc.end]
+    out = []
+    for c in bad:
+        rep = ASCII_FALLBACK.get(c)
+        if rep is None:
+            n = ord(c)
+            rep = f"\\x{n:02x}" if n < 0x100 else f"\\u{n:04x}" if n < 0x10000 else f"\\U{n:08x}"
+        out.append(rep)
+    return "".join(out), exc.end
+
+
+def _register_fallback() -> None:
+    import codecs
+
+    try:
+        codecs.lookup_error(_ERRORS)
+    except LookupError:
+        codecs.register_error(_ERRORS, _fallback)
+
+
+def _needs_fallback(stream: object) -> bool:
+    enc = getattr(stream, "encoding", None)
+    if not enc:
+        return False
+    try:
+        "·²µ°—…".encode(enc)
+        return False
+    except (UnicodeEncodeError, LookupError):
+        return True
+
+
+# ----------------------------------------------------------------------------- streams
+
+
+class _Closed:
+    """Stands for a standard stream that was closed when rbcli started (``>&-``): writing
+    fails as writing to a closed descriptor does (EBADF); reading gives nothing."""
+
+    encoding = "utf-8"
+    errors = "strict"
+    closed = False
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.EBADF, "it is closed")
+
+    def flush(self) -> None:
+        pass
+
+    def isatty(self) -> bool:
+        return False
+
+    def fileno(self) -> int:
+        raise OSError(errno.EBADF, "it is closed")
+
+    def read(self, *args) -> str:
+        raise OSError(errno.EBADF, "it is closed")
+
+
+def prepare_streams() -> None:
+    """Make standard streams safe to use: a stream closed at start (``>&-``, ``2>&-``)
+    becomes a stand-in that fails like a closed descriptor (stdout: exit 2 with a message;
+    stderr: messages dropped; stdin: BODY '-' refused as closed), and a stream whose
+    encoding cannot show rbcli's unit symbols (``PYTHONIOENCODING=ascii``, a C locale)
+    gets ASCII fallbacks (``·`` -> ``*``, ``²`` -> ``^2``) instead of an encoding error."""
+    if sys.stdout is None:
+        sys.stdout = _Closed("stdout")  # type: ignore[assignment]
+    if sys.stderr is None:
+        sys.stderr = _Closed("stderr")  # type: ignore[assignment]
+    for stream in (sys.stdout, sys.stderr):
+        if _needs_fallback(stream) and hasattr(stream, "reconfigure"):
+            _register_fallback()
+            try:
+                stream.reconfigure(errors=_ERRORS)  # type: ignore[attr-defined]
+            except (ValueError, OSError):
+                pass
+
+
+def write_error(text: str) -> bool:
+    """Write a message line to standard error; False (and nothing raised) when it cannot
+    take it (closed, full, a closed pipe): an exit status never depends on stderr."""
+    try:
+        sys.stderr.write(clean(text.rstrip("\n")) + "\n")
+        sys.stderr.flush()
+        return True
+    except Exception:  # noqa: BLE001 - closed, full, broken: nothing else to tell
+        silence(sys.stderr, 2)
+        return False
+
+
+def silence(stream: object, fd: int) -> None:
+    """Point descriptor ``fd`` (the stream's) at /dev/null, so that what is still buffered
+    in ``stream`` is dropped quietly when Python flushes it at exit."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        try:
+            os.dup2(devnull, stream.fileno() if hasattr(stream, "fileno") else fd)  # type: ignore[union-attr]
+        finally:
+            os.close(devnull)
+    except (OSError, ValueError, AttributeError, TypeError):
+        pass
+
+
+def silence_stdout() -> None:
+    """After a closed pipe, point stdout at /dev/null so the final flush is quiet."""
+    silence(sys.stdout, 1)
+
+
+class OutputError(OSError):
+    """Standard output cannot be written (closed, a full disk): exit 2 with a message."""
+
+
+def _stdout_error(exc: OSError) -> "Exception":
+    from rbcli.errors import InputError
+
+    reason = exc.strerror or str(exc)
+    if exc.errno == errno.EBADF:
+        reason = "it is closed"
+    return InputError(f"cannot write to standard output: {reason.lower()}")
+
+
+def finish_stdout(code: int) -> int:
+    """Flush standard output at the end of a run; the exit status to use.
+
+    A closed pipe (``| head -1``) stays quiet and keeps ``code``; a full disk
+    (``> /dev/full``) or a closed stdout is one message and exit 2.
+    """
+    try:
+        sys.stdout.flush()
+    except BrokenPipeError:
+        silence_stdout()
+    except (OSError, ValueError) as exc:
+        silence_stdout()
+        if isinstance(exc, OSError):
+            write_error(f"rbcli: {_stdout_error(exc)}")
+            return 2
+    return code
+
+
+# ----------------------------------------------------------------------------- signals
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM or SIGHUP arrived: raised in the main thread like Ctrl-C, so that every
+    ``finally`` and cleanup runs (no temporary file is left); exit status 128 + signal."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+#: the signal that ended the run, if one did (typer turns any KeyboardInterrupt into exit
+#: 130, so the signal is recorded here too)
+SIGNALLED: dict[str, int] = {}
+
+
+def _raise_terminated(signum, frame):  # noqa: ARG001
+    SIGNALLED["signum"] = signum
+    raise Terminated(signum)
+
+
+def signalled_status(code: int) -> int:
+    """``code``, or 128 + the signal when SIGTERM or SIGHUP ended the run."""
+    signum = SIGNALLED.get("signum")
+    return 128 + signum if signum else code
+
+
+def handle_signals() -> dict:
+    """Turn SIGTERM and SIGHUP into :class:`Terminated` (in the main thread); returns the
+    previous handlers for :func:`restore_signals`."""
+    import signal
+    import threading
+
+    old: dict = {}
+    SIGNALLED.clear()
+    if threading.current_thread() is not threading.main_thread():
+        return old
+    for name in ("SIGTERM", "SIGHUP"):
+        signum = getattr(signal, name, None)
+        if signum is None:
+            continue
+        try:
+            previous = signal.getsignal(signum)
+            if previous == signal.SIG_IGN:  # nohup: leave an ignored signal ignored
+                continue
+            signal.signal(signum, _raise_terminated)
+            old[signum] = previous
+        except (ValueError, OSError):
+            pass
+    return old
+
+
+def restore_signals(old: dict) -> None:
+    import signal
+
+    for signum, handler in old.items():
+        try:
+            signal.signal(signum, handler)
+        except (ValueError, OSError, TypeError):
+            pass
+
+
+# ----------------------------------------------------------------------------- matplotlib
+
+
+def prepare_matplotlib() -> None:
+    """Give matplotlib a writable config folder when the user's is not (HOME read-only or
+    missing): a private temporary folder, removed at exit — instead of matplotlib's own
+    warning on standard error. Costs a few ``stat`` calls; imports nothing."""
+    if os.environ.get("MPLCONFIGDIR"):
+        return
+    home = os.path.expanduser("~")
+    base = os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config")
+    target = os.path.join(base, "matplotlib")
+    probe = target
+    while probe and not os.path.exists(probe):
+        parent = os.path.dirname(probe)
+        if parent == probe:
+            break
+        probe = parent
+    if probe and os.path.isdir(probe) and os.access(probe, os.W_OK | os.X_OK):
+        return
+    import atexit
+    import shutil
+    import tempfile
+
+    try:
+        folder = tempfile.mkdtemp(prefix="rbcli-mpl-")
+    except OSError:
+        return
+    os.environ["MPLCONFIGDIR"] = folder
+    atexit.register(shutil.rmtree, folder, True)
+
+
+def _from_matplotlib() -> bool:
+    """Whether the warning being shown was raised inside matplotlib (its warnings name the
+    caller's file, so the stack is what tells)."""
+    frame = sys._getframe(1)
+    while frame is not None:
+        if "matplotlib" in frame.f_code.co_filename:
+            return True
+        frame = frame.f_back
+    return False
+
+
+def show_warning(message, category, filename, lineno, file=None, line=None) -> None:  # noqa: ARG001
+    """``warnings.showwarning`` for a run: one clean ``rbcli: warning:`` line, without
+    source paths; matplotlib's own (layout, axis limits) are dropped."""
+    if "matplotlib" in str(filename) or _from_matplotlib():
+        return
+    text = str(message).strip().splitlines()[0] if str(message).strip() else category.__name__
+    write_error(f"rbcli: warning: {text}")
+
+
+# ----------------------------------------------------------------------------- Env
 
 
 @dataclass
@@ -27,33 +354,31 @@ class Env:
     def from_process(cls) -> "Env":
         try:
             tty = sys.stdout.isatty()
-        except (AttributeError, ValueError):
+        except (AttributeError, ValueError, OSError):
             tty = False
         no_color = "NO_COLOR" in os.environ or os.environ.get("TERM") == "dumb"
         return cls(sys.stdout, sys.stderr, tty, color=tty and not no_color)
 
     def write(self, text: str) -> None:
-        """Write to standard output; a closed pipe (``| head -1``) is quiet."""
+        """Write to standard output; a closed pipe (``| head -1``) is quiet; a full disk or
+        a closed stdout is an InputError (exit 2, one line)."""
+        if self.pipe_closed:
+            return
         try:
             self.stdout.write(text)
             self.stdout.flush()
         except BrokenPipeError:
             self.pipe_closed = True
             silence_stdout()
+        except OSError as exc:
+            silence_stdout()
+            raise _stdout_error(exc) from None
 
     def warn(self, text: str) -> None:
+        """One warning line on standard error, made safe (:func:`clean`); nothing is raised
+        when standard error cannot take it."""
         try:
-            self.stderr.write(text.rstrip("\n") + "\n")
+            self.stderr.write(clean(text.rstrip("\n")) + "\n")
             self.stderr.flush()
-        except BrokenPipeError:
-            pass
-
-
-def silence_stdout() -> None:
-    """After a closed pipe, point stdout at /dev/null so the final flush is quiet."""
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-        os.close(devnull)
-    except (OSError, ValueError, AttributeError):
-        pass
+        except Exception:  # noqa: BLE001 - closed, full or broken stderr
+            silence(self.stderr, 2)

@@ -1,7 +1,8 @@
 """Fuzz-style tests: whatever a body file holds, loading it ends in a body or a located
 InputError (exit 2), never any other exception, never a numpy warning on standard error.
 
-Inputs: random text and bytes, YAML-ish text, and random mutations of the bundled
+Inputs (and, since issue 15, unit expressions with nested powers and option values, each
+within a 2 s deadline): random text and bytes, YAML-ish text, and random mutations of the bundled
 examples (lines deleted, duplicated, swapped, re-indented; numbers replaced by strings,
 booleans, nulls, huge, tiny, negative or non-finite values, quantities of the wrong
 dimension; tags, anchors and flow punctuation inserted; keys renamed to other keys; random
@@ -156,3 +157,85 @@ def test_mutated_files_through_a_real_process(tmp_path):
         assert line.startswith("rbcli: "), line
     # every file either printed a result or gave exactly one error line
     assert len(r.stdout.splitlines()) + len(r.stderr.splitlines()) == len(files)
+
+
+# --------------------------------------------------------------------------- units and options
+# issue 15: nested powers never take long. Every generated expression is read within the
+# hypothesis deadline, to a finite factor or a UnitError; the power of each unit stays within
+# the documented range (-12..12) whatever the nesting.
+
+UNIT_NAMES = ["m", "mm", "km", "um", "in", "ft", "mi", "kg", "g", "lb", "s", "ms", "h", "rad", "deg",
+              "rpm", "Hz", "N", "J", "g0", "nope", "°", "µm"]
+
+
+@st.composite
+def unit_expr(draw, depth: int = 0) -> str:
+    if depth > 4 or draw(st.integers(0, 3)) == 0:
+        text = draw(st.sampled_from(UNIT_NAMES))
+    else:
+        op = draw(st.sampled_from(["*", "/", "·", " * ", "**"]))
+        left = draw(unit_expr(depth + 1))
+        right = draw(unit_expr(depth + 1))
+        text = f"({left}{op}{right})" if op != "**" else f"({left})"
+    if draw(st.booleans()):
+        n = draw(st.integers(-30, 30))
+        text += draw(st.sampled_from([f"^{n}", f"**{n}", f"^({n})", "²", "⁻¹", f"^{n}^{n}"]))
+    return text
+
+
+@settings(max_examples=300, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+@given(expr=unit_expr(), number=st.sampled_from(["1", "-2.5", "1e300", "3e-300", "0"]))
+def test_nested_unit_expressions_read_quickly_or_give_a_unit_error(expr, number):
+    import math
+
+    from rbcli.io import units
+
+    try:
+        factor, dim = units.parse_unit(expr)
+    except units.UnitError:
+        pass
+    else:
+        assert math.isfinite(factor) and factor > 0
+        assert all(abs(e) <= 12 * 2 * len(UNIT_NAMES) for e in dim)  # each unit within -12..12
+    try:
+        value, _ = units.parse_quantity(f"{number} {expr}")
+    except units.UnitError:
+        pass
+    else:
+        assert math.isfinite(value)
+
+
+def test_seven_nested_powers_of_twelve_are_refused_at_once():
+    from rbcli.io import units
+
+    nested = "(((((((mm^12)^12)^12)^12)^12)^12)^12)"
+    for text in (nested, f"1,1,1 {nested}"[6:], f"kg*{nested}/s"):
+        try:
+            units.parse_unit(text)
+        except units.UnitError as exc:
+            assert "reaches" in str(exc)
+        else:  # pragma: no cover
+            raise AssertionError(text)
+
+
+OPTION_KINDS = ["length", "angular_speed", "mass", "inertia", "acceleration"]
+
+
+@settings(max_examples=300, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+@given(values=st.lists(st.sampled_from(["1", "-2", "0.5", "1e308", "1e-320", "nan", "", " ", "1e999"]),
+                       min_size=0, max_size=4),
+       unit=st.one_of(st.just(""), unit_expr()), sep=st.sampled_from([",", ", ", " ", ";"]),
+       kind=st.sampled_from(OPTION_KINDS))
+def test_option_values_with_nested_units_read_or_give_an_input_error(values, unit, sep, kind):
+    from rbcli.api import options
+
+    text = sep.join(values) + (" " + unit if unit else "")
+    for read in (lambda: options.vector(text, kind, "--x"), lambda: options.quantity(text, kind, "--x")):
+        try:
+            out = read()
+        except InputError as exc:
+            assert str(exc).startswith("--x"), str(exc)
+        else:
+            import math
+
+            assert all(math.isfinite(v) for v in (out if isinstance(out, list) else [out]))

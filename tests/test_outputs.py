@@ -289,9 +289,11 @@ def test_a_failed_write_keeps_the_old_file_and_removes_the_temporary_one(tree):
     assert f.read_text() == "old\n" and leftovers(tree) == []
 
 
-def test_write_through_a_symlink_keeps_the_link(tree):
+def test_a_symlink_is_never_written_through(tree):
+    # issue 15: a link is refused (not followed, not replaced); its target is unchanged
     (tree / "real.csv").write_text("old\n")
     (tree / "link.csv").symlink_to("real.csv")
-    outfile.write_atomic(tree / "link.csv", "new\n")
-    assert (tree / "link.csv").is_symlink() and (tree / "real.csv").read_text() == "new\n"
+    with pytest.raises(InputError, match="symbolic link"):
+        outfile.write_atomic(tree / "link.csv", "new\n")
+    assert (tree / "link.csv").is_symlink() and (tree / "real.csv").read_text() == "old\n"
     assert leftovers(tree) == []

@@ -29,64 +29,121 @@ def main(argv: list[str] | None = None) -> None:
     typer runs with ``standalone_mode=False``, so everything that ends a run comes back
     here and becomes one of SPEC §4's exit codes: a usage error (click's) or bad input
     (InputError, a result too large or too small to compute with) is one line on standard
-    error and exit 2; a failed check returns 1 from the command; Ctrl-C is 130; anything
-    else is a bug (70), with a traceback under ``--debug`` or ``RBCLI_DEBUG=1``.
+    error and exit 2; a failed check returns 1 from the command; Ctrl-C is 130, SIGTERM
+    143 and SIGHUP 129 (each raised as an exception, so that no temporary file is left);
+    anything else is a bug (70), with a traceback under ``--debug`` or ``RBCLI_DEBUG=1``.
+
+    Streams: a pipe closed early (``| head -1``) is quiet; standard output closed or full
+    (``>&-``, ``> /dev/full``) is exit 2 with a message; standard error closed or full
+    changes nothing but the message; a terminal that cannot show ``·`` or ``²`` gets ASCII.
+    Every message is made safe to print once, here (:func:`rbcli.env.clean`).
     """
+    from rbcli import env as _env
+
+    _env.prepare_streams()
+    args = sys.argv[1:] if argv is None else list(argv)
+    old_signals = _env.handle_signals()
+    try:
+        code = _run(args)
+        code = _env.finish_stdout(_env.signalled_status(code))
+    except KeyboardInterrupt as exc:  # a signal while finishing
+        code = _interrupted(exc)
+    finally:
+        _env.restore_signals(old_signals)
+    sys.exit(code)
+
+
+def _interrupted(exc: BaseException) -> int:
+    from rbcli.env import Terminated
+
+    if isinstance(exc, Terminated):
+        return 128 + int(exc.signum)
+    return int(ExitStatus.INTERRUPTED)
+
+
+def _run(args: list[str]) -> int:
+    """Run the command line; its exit status (see :func:`main`)."""
+    import warnings
+
+    from rbcli import env as _env
     from rbcli.cli.common import debug
 
-    args = sys.argv[1:] if argv is None else list(argv)
     import os
 
     if os.environ.get(COMPLETE_VAR):  # a shell asks for completions (rbcli --show-completion)
         completion_init()
-    if not debug():
-        import warnings
+    _env.prepare_matplotlib()
+    with warnings.catch_warnings():
+        if not debug():
+            # numpy's "overflow encountered in multiply" and the like, with a line of source:
+            # not a message for a user. A result that is inf or NaN is refused on its way out
+            # (api.result.jsonable, common.write_doc) as one line, exit 2.
+            warnings.filterwarnings(
+                "ignore", category=RuntimeWarning,
+                message=r"(overflow|invalid value|divide by zero|underflow) encountered",
+            )
+            warnings.showwarning = _env.show_warning  # one clean line, no source paths
+        return _run_app(args)
 
-        # numpy's "overflow encountered in multiply" and the like, with a line of source:
-        # not a message for a user. A result that is inf or NaN is refused on its way out
-        # (render.jsonout.jsonable, common.write_doc) as one line, exit 2.
-        warnings.filterwarnings(
-            "ignore", category=RuntimeWarning,
-            message=r"(overflow|invalid value|divide by zero|underflow) encountered",
-        )
+
+def _run_app(args: list[str]) -> int:
+    from rbcli.cli.common import debug
+
     try:
         code = app(args=args, prog_name="rbcli", standalone_mode=False)
-    except SystemExit:
-        raise
+    except SystemExit as exc:
+        return 0 if exc.code is None else exc.code if isinstance(exc.code, int) else 1
     except RbcliError as exc:
         _say(f"rbcli: {exc}")
-        sys.exit(int(exc.exit_status))
+        return int(exc.exit_status)
     except typer.TyperException as exc:  # click's UsageError, BadParameter, NoSuchOption, ...
-        sys.exit(_usage_error(exc, args))
-    except typer.Abort:
-        sys.exit(int(ExitStatus.INTERRUPTED))
+        return _usage_error(exc, args)
+    except typer.Abort as exc:  # click turns Ctrl-C (and our SIGTERM) into Abort
+        cause = exc.__cause__ or exc.__context__
+        return _interrupted(cause) if isinstance(cause, KeyboardInterrupt) else int(ExitStatus.INTERRUPTED)
     except (OverflowError, ZeroDivisionError, FloatingPointError) as exc:
         _say(
             f"rbcli: a value is too large or too small to compute with ({exc or type(exc).__name__}); "
             "check the options and the body's numbers"
         )
-        sys.exit(int(ExitStatus.BAD_INPUT))
+        return int(ExitStatus.BAD_INPUT)
     except BrokenPipeError:
         from rbcli.env import silence_stdout
 
         silence_stdout()
-        sys.exit(0)
-    except KeyboardInterrupt:
-        sys.exit(int(ExitStatus.INTERRUPTED))
-    except Exception as exc:  # an internal error: a bug
-        if debug():
-            import traceback
+        return 0
+    except KeyboardInterrupt as exc:  # Ctrl-C, SIGTERM, SIGHUP: cleanups have run
+        return _interrupted(exc)
+    except MemoryError:
+        _say("rbcli: out of memory; the input is too large for this machine (see README, "
+             "'Budgets')")
+        return int(ExitStatus.BAD_INPUT)
+    except OSError as exc:
+        import errno
 
-            traceback.print_exc()
-        command = next((a for a in args if not a.startswith("-")), "COMMAND")
-        _say(
-            f"rbcli: internal error ({type(exc).__name__}: {exc}); this is a bug — please report "
-            f"it with the output of 'rbcli --debug {command} ...' (or the same command with "
-            "RBCLI_DEBUG=1)"
-        )
-        sys.exit(int(ExitStatus.INTERNAL))
+        if exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EIO, errno.EROFS, errno.EBADF):
+            # a stream or a file that cannot take what is written (a full disk, /dev/full)
+            _say(f"rbcli: cannot write: {(exc.strerror or str(exc)).lower()}")
+            return int(ExitStatus.BAD_INPUT)
+        return _internal(exc, args, debug())
+    except Exception as exc:  # an internal error: a bug
+        return _internal(exc, args, debug())
     # a command returns None when done, typer.Exit(n) ends as n (c.finish, --help, --version)
-    sys.exit(code if isinstance(code, int) else 0)
+    return code if isinstance(code, int) else 0
+
+
+def _internal(exc: BaseException, args: list[str], debug: bool) -> int:
+    if debug:
+        import traceback
+
+        traceback.print_exc()
+    command = next((a for a in args if not a.startswith("-")), "COMMAND")
+    _say(
+        f"rbcli: internal error ({type(exc).__name__}: {exc}); this is a bug — please report "
+        f"it with the output of 'rbcli --debug {command} ...' (or the same command with "
+        "RBCLI_DEBUG=1)"
+    )
+    return int(ExitStatus.INTERNAL)
 
 
 def _usage_error(exc: Exception, args: list[str]) -> int:
@@ -126,8 +183,8 @@ def _command_in(args: list[str]) -> str | None:
 
 
 def _say(text: str) -> None:
-    try:
-        sys.stderr.write(text.rstrip("\n") + "\n")
-        sys.stderr.flush()
-    except (BrokenPipeError, ValueError):
-        pass
+    """One message line on standard error, made safe (control characters escaped, long
+    values cut: :func:`rbcli.env.clean`); a closed or full stderr changes nothing else."""
+    from rbcli.env import write_error
+
+    write_error(text)

@@ -77,14 +77,10 @@ def report(
         from rbcli.render import report as R
 
         if fmt == ".html":
-            _write(out, R.html(rep))
+            _write(out, R.html(rep), force)
         else:
             text, figs = R.markdown(rep, files_dir.name)
-            if figs:
-                files_dir.mkdir(exist_ok=True)
-                for name, svg in figs.items():
-                    _write(files_dir / name, svg)
-            _write(out, text)
+            _write(out, text, force, files_dir, figs)
     finally:
         progress.stop()
     if failed:
@@ -203,33 +199,26 @@ def _date() -> str:
 
 
 def _check_output(output: str, force: bool, body):
-    """(format, path, figures folder) for -o, checked by rbcli.io.outfile.check: never an
-    input file (the body, its includes, its meshes), an existing report or figures folder
-    only with --force."""
-    import os
-
-    from rbcli.errors import InputError
+    """(format, path, figures folder) for -o, checked by rbcli.io.outfile: never an input
+    file (the body, its includes, its meshes), never a link or a device; an existing report
+    or figures folder (a real folder of files, treated as an output too) only with --force."""
     from rbcli.io import outfile
 
     p = outfile.check(output, body, "-o", force=force, exts=FORMATS)
     ext = p.suffix.lower()
-    files = p.with_name(p.stem + "_files")
+    files = outfile.files_dir(p)
     if ext == ".md":
-        folder = os.path.realpath(files)
-        if any(i == folder or i.startswith(folder + os.sep) for i in outfile.input_files(body)):
-            raise InputError(f"-o: '{files}' (for the figures) holds an input file; rbcli never overwrites its inputs")
-        if files.exists() and not files.is_dir():
-            raise InputError(f"-o: '{files}' (for the figures) exists and is not a folder")
-        if files.exists() and not force:
-            raise InputError(f"-o: '{files}' exists; use --force to replace it")
+        outfile.check_folder(files, body, "-o", force=force)
     return ext, p, files
 
 
-def _write(path, text: str) -> None:
-    """Write atomically (a temporary file in the same folder, then rename)."""
-    from rbcli.io.outfile import write_atomic
+def _write(path, text: str, force: bool, folder=None, figures=None) -> None:
+    """Write the report (and a Markdown report's figures folder) all or nothing, through
+    rbcli.io.outfile: an existing report is replaced only with --force, checked and
+    written in one step."""
+    from rbcli.io.outfile import write_document
 
-    write_atomic(path, text, "-o")
+    write_document(path, text, "-o", replace=force, folder=folder, files=figures)
 
 
 class _Progress:

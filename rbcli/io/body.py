@@ -28,6 +28,9 @@ from rbcli.model import Body, Part, Shaft
 #: (6e24 kg) and moment of inertia (8e37 kg m^2) are well inside.
 HUGE = 1e60
 MAX_INCLUDE_DEPTH = 16
+#: the default budget of a body: its parts, counting every use of an included file's parts
+#: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
+MAX_PARTS = 200_000
 FORMAT_VERSION = 1
 
 BODY_KEYS = (
@@ -66,6 +69,34 @@ def _a(word: str) -> str:
 
 
 @dataclass
+class _Session:
+    """What one load shares across its files: the parts budget and the files already
+    read and parsed (an included file is read and parsed once per real path, and its
+    parts placed per use, so a diamond of includes costs time linear in the files)."""
+
+    max_parts: int
+    used: int = 0  # parts and includes so far, every use counted
+    parsed: dict = field(default_factory=dict)  # (real path, real folder) -> _Loaded
+    parses: int = 0  # files parsed (the work count the tests check)
+
+    def spend(self, ctx: "_Ctx", node: "ys.Node | None", n: int) -> None:
+        self.used += n
+        if self.used > self.max_parts:
+            raise ctx.error(
+                node,
+                f"the body has more than {self.max_parts} parts (counting every use of an "
+                f"included file's parts, and each include); set RBCLI_MAX_PARTS to raise the "
+                "limit",
+            )
+
+
+def _session() -> _Session:
+    from rbcli.io.reader import limit_from_env
+
+    return _Session(limit_from_env("RBCLI_MAX_PARTS", MAX_PARTS))
+
+
+@dataclass
 class _Ctx:
     file: str  # as shown in messages
     base_dir: Path  # where relative paths start
@@ -75,6 +106,9 @@ class _Ctx:
     warnings: list[str] = field(default_factory=list)
     #: real paths of the files read below this one (includes at any depth, meshes)
     inputs: list[str] = field(default_factory=list)
+    session: _Session = field(default_factory=lambda: _Session(MAX_PARTS))
+    #: how deep includes go below this file (0: it includes nothing)
+    height: int = 0
 
     def where(self, node_or_mark: ys.Node | ys.Mark | None) -> Location:
         if node_or_mark is None:
@@ -361,8 +395,17 @@ def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
     names: set[str] = set()
     known: dict[str, _Known] = {}
     for i, item in enumerate(node.items):
+        if not _is_include(item):
+            ctx.session.spend(ctx, item, 1)
         out.extend(_part(ctx, item, i, names, known, prefix))
     return out
+
+
+def _is_include(node: ys.Node) -> bool:
+    if not isinstance(node, ys.MapNode) or "shape" not in node.items:
+        return False
+    shape = node.items["shape"][1]
+    return isinstance(shape, ys.ScalarNode) and shape.value == "include"
 
 
 def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list[Part]:
@@ -533,29 +576,52 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     _check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = _resolve(ctx, fnode, "file")
+    where = ctx.where(fnode)
+    if "\x00" in str(path):
+        raise ctx.error(fnode, "the file name contains a NUL character")
     real = os.path.realpath(path)
     if real in ctx.stack:
         chain = " -> ".join(os.path.basename(p) for p in (*ctx.stack, real))
         raise ctx.error(fnode, f"include cycle: {chain}")
     if len(ctx.stack) >= MAX_INCLUDE_DEPTH:
         raise ctx.error(fnode, f"includes are nested more than {MAX_INCLUDE_DEPTH} deep")
-    data = _read_file(path, ctx.where(fnode))
-    sub = _load(data, str(path), path.parent, (*ctx.stack, real))
+    session = ctx.session
+    key = (real, os.path.realpath(path.parent))
+    sub = session.parsed.get(key)
+    if sub is None:
+        data = _read_file(path, where)
+        session.parses += 1
+        sub = _load(data, str(path), path.parent, (*ctx.stack, real), session=session)
+        session.parsed[key] = sub
+    elif len(ctx.stack) + sub.ctx.height >= MAX_INCLUDE_DEPTH:
+        # parsed before, higher up: the same file here would nest includes too deep
+        raise ctx.error(fnode, f"includes are nested more than {MAX_INCLUDE_DEPTH} deep")
+    else:  # parsed before: its parts again, counted again
+        session.spend(ctx, fnode, sub.cost)
+    ctx.height = max(ctx.height, sub.ctx.height + 1)
+    session.spend(ctx, fnode, 1)
     ctx.warnings.extend(sub.warnings)
     ctx.inputs.append(real)
     ctx.inputs.extend(sub.ctx.inputs)
     at, R = _placement(ctx, m)
-    out = []
-    for p in sub.parts:
-        com, J = _place(p.com, p.inertia_com, at, R)
-        out.append(
-            Part(
-                name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
-                com=com, inertia_com=J, measure=p.measure, measure_kind=p.measure_kind,
-                radius=p.radius, axis=R @ p.axis, extra=p.extra, where=p.where,
-            )
+    parts = sub.parts
+    if not parts:
+        return []
+    # place every part of the file at once (one use of a file may bring thousands)
+    coms = np.array([p.com for p in parts], dtype=float)
+    Js = np.array([p.inertia_com for p in parts], dtype=float)
+    axes = np.array([p.axis for p in parts], dtype=float)
+    new_coms = at + coms @ R.T
+    new_Js = np.einsum("ij,njk,lk->nil", R, Js, R)
+    new_axes = axes @ R.T
+    return [
+        Part(
+            name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
+            com=new_coms[i], inertia_com=new_Js[i], measure=p.measure, measure_kind=p.measure_kind,
+            radius=p.radius, axis=new_axes[i], extra=p.extra, where=p.where,
         )
-    return out
+        for i, p in enumerate(parts)
+    ]
 
 
 def _mesh(ctx, m, name, prefix, known) -> Part:
@@ -663,6 +729,7 @@ class _Loaded:
     warnings: list[str]
     root: ys.MapNode
     ctx: _Ctx
+    cost: int = 0  # what one use of this file spends of the parts budget
 
 
 def _units(ctx: _Ctx, m: ys.MapNode) -> None:
@@ -683,9 +750,11 @@ def _units(ctx: _Ctx, m: ys.MapNode) -> None:
 
 
 def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...],
-          units: dict[str, str] | None = None) -> _Loaded:
+          units: dict[str, str] | None = None, *, session: _Session | None = None) -> _Loaded:
     root = ys.load(data, filename)
-    ctx = _Ctx(file=filename, base_dir=base_dir, stack=stack)
+    session = session if session is not None else _session()
+    ctx = _Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
+    spent = session.used
     if units:  # the caller's default units (rbcli.load_text(..., units=...)); the file's win
         for key, unit in units.items():
             if key not in UNIT_KEYS:
@@ -713,25 +782,20 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
         parts = _part(ctx, stripped, 0, set(), {}, "")
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
-    return _Loaded(parts, ctx.warnings, root, ctx)
+    ctx.inputs = list(dict.fromkeys(ctx.inputs))
+    return _Loaded(parts, list(dict.fromkeys(ctx.warnings)), root, ctx, session.used - spent)
 
 
 def _read_file(path: Path, where: Location | None = None) -> bytes:
-    try:
-        size = path.stat().st_size
-        if path.is_dir():
-            raise InputError(f"{path} is a directory, not a body file", where)
-        if size > ys.MAX_BYTES:
-            raise InputError(f"{path} is {size} bytes; body files are limited to {ys.MAX_BYTES // (1024 * 1024)} MiB", where)
-        return path.read_bytes()
-    except InputError:
-        raise
-    except FileNotFoundError:
-        raise InputError(f"no such file: {path}", where) from None
-    except PermissionError:
-        raise InputError(f"cannot read {path}: permission denied", where) from None
-    except OSError as exc:
-        raise InputError(f"cannot read {path}: {exc.strerror or exc}", where) from None
+    """A body file or an included file: :func:`rbcli.io.reader.read_regular` (a regular
+    file only, its size checked before reading)."""
+    from rbcli.io.reader import read_regular
+
+    return read_regular(path, _max_bytes(), "body file", where=where, env="RBCLI_MAX_BODY_BYTES")
+
+
+def _max_bytes() -> int:
+    return ys.max_bytes()
 
 
 def _body_defaults(
@@ -806,10 +870,10 @@ def load_body(source: str, *, stdin: object = None) -> Body:
         For anything wrong with the file or its contents, located at file:line:col.
     """
     if source == "-":
-        stream = stdin if stdin is not None else sys.stdin.buffer
-        data = stream.read()  # type: ignore[attr-defined]
-        if len(data) > ys.MAX_BYTES:
-            raise InputError(f"standard input is {len(data)} bytes; body files are limited to {ys.MAX_BYTES // (1024 * 1024)} MiB", Location("<stdin>"))
+        from rbcli.io.reader import read_stream
+
+        stream = stdin if stdin is not None else getattr(sys.stdin, "buffer", sys.stdin)
+        data = read_stream(stream, _max_bytes(), "body file", env="RBCLI_MAX_BODY_BYTES")  # type: ignore[arg-type]
         return load_text(data, "<stdin>", Path.cwd(), name_default="body")
     path = Path(source)
     data = _read_file(path)

@@ -10,17 +10,34 @@ overwritten"):
 - Documents and bodies (``report -o``, ``balance --apply``) replace an existing file
   only with ``--force``; figures and data (``--plot``, ``--csv``) replace an existing
   file, as plotting tools do (``replace_ok=True``).
-- Every output is written atomically: to a temporary file in the same folder, then
-  renamed over the target, so a failed or interrupted run leaves the old file (or
-  none) and no temporary file behind.
+- Only a regular file or a new name is ever written. A symbolic link at the target is
+  never followed (nor replaced: it is refused), a device node, a FIFO, a socket or a
+  folder is refused with a message — as root too (``--csv /dev/null`` never replaces
+  /dev/null).
+- Every output is written atomically: to a temporary file in the same folder (created
+  with ``O_EXCL | O_NOFOLLOW``), then renamed over the target, so a failed or interrupted
+  run leaves the old file (or none) and no temporary file behind. Without replacing
+  (documents and bodies without ``--force``) the rename is a no-clobber one
+  (``renameat2(RENAME_NOREPLACE)``, else ``link(2)``): the existence check and the write
+  are one step, so of 20 parallel ``report -o new.html`` exactly one succeeds.
+- A document with a folder of figures (``report -o r.md``: ``r_files/``) is written all
+  or nothing: the figures go into a temporary folder, and the folder and the document
+  are renamed into place together, with SIGINT and SIGTERM held off for those few
+  renames. An existing ``r_files/`` is treated like the ``-o`` file: replaced as a whole
+  (never written into, so a link planted inside it leads nowhere) and only with
+  ``--force``.
+- Interrupted (Ctrl-C, SIGTERM: :mod:`rbcli.cli` turns both into an exception) or
+  failed, a write removes what it made: no ``.rbcli-XXXX.tmp`` file or folder is left.
 
 Errors are :class:`rbcli.errors.InputError` (exit 2), one line starting with the option.
 """
 
 from __future__ import annotations
 
+import errno
 import os
-import tempfile
+import secrets
+import stat
 from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from pathlib import Path
@@ -103,6 +120,8 @@ def check(
         ``force`` when ``replace_ok`` is False.
     """
     text = os.fspath(path)
+    if "\x00" in text:
+        raise InputError(f"{option}: the file name contains a NUL character")
     p = Path(text)
     if not text or text.endswith(("/", os.sep)) or p.is_dir():
         raise InputError(f"{option}: '{text}' is a folder; give a file name")
@@ -124,73 +143,377 @@ def check(
         raise InputError(f"{option}: the folder '{parent}' does not exist")
     if not parent.is_dir():
         raise InputError(f"{option}: '{parent}' is not a folder")
-    if p.exists() and not (force or replace_ok):
+    if _kind(p, option) is not None and not (force or replace_ok):
         raise InputError(f"{option}: '{text}' exists; use --force to replace it")
     return p
 
 
-def _target(path: Path) -> Path:
-    """Where the bytes go: a symbolic link's target (the link itself stays)."""
-    return Path(os.path.realpath(path)) if path.is_symlink() else path
-
-
-def _mode_for(target: Path) -> int:
-    """Permission bits for the new file: the old file's, else 0o666 less the umask."""
+def _kind(path: str | Path, option: str) -> os.stat_result | None:
+    """The ``lstat`` of an existing output that may be replaced (a regular file), None for a
+    new name; anything else is refused."""
+    text = os.fspath(path)
     try:
-        return os.stat(target).st_mode & 0o7777
-    except OSError:
-        mask = os.umask(0)
-        os.umask(mask)
-        return 0o666 & ~mask
+        st = os.lstat(text)
+    except FileNotFoundError:
+        return None
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+    mode = st.st_mode
+    if stat.S_ISREG(mode):
+        return st
+    if stat.S_ISLNK(mode):
+        what = "a symbolic link; rbcli never writes through a link (give its target or a new name)"
+    elif stat.S_ISDIR(mode):
+        what = "a folder; give a file name"
+    elif stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        what = "a device, not a regular file; rbcli writes only regular files"
+    elif stat.S_ISFIFO(mode):
+        what = "a FIFO (named pipe), not a regular file; rbcli writes only regular files"
+    else:
+        what = "not a regular file; rbcli writes only regular files"
+    raise InputError(f"{option}: '{text}' is {what}")
+
+
+def _reason(exc: BaseException) -> str:
+    if isinstance(exc, ValueError):  # a NUL in the name
+        return "the name contains a NUL character" if "null" in str(exc) else str(exc)
+    return (getattr(exc, "strerror", None) or str(exc)).lower() if isinstance(exc, OSError) else str(exc)
+
+
+def _mode_for(st: os.stat_result | None) -> int:
+    """Permission bits for the new file: the old file's, else 0o666 less the umask."""
+    if st is not None:
+        return st.st_mode & 0o7777
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
+# ----------------------------------------------------------------------------- signals
+
+
+class _held_signals:
+    """SIGINT and SIGTERM held off (delivered when the block ends) for a few renames, so
+    that an interrupt cannot split a write that must be all or nothing."""
+
+    def __enter__(self):
+        import signal
+
+        self.old = None
+        try:
+            self.old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+        except (AttributeError, ValueError, OSError):  # no pthread_sigmask (Windows)
+            pass
+        return self
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self.old is not None:
+            signal.pthread_sigmask(signal.SIG_SETMASK, self.old)
+        return False
+
+
+# ----------------------------------------------------------------------------- renames
+
+
+def _renameat2_noreplace(src: str, dst: str) -> bool:
+    """``renameat2(src, dst, RENAME_NOREPLACE)``; False when the system or the file system
+    does not have it; raises FileExistsError when ``dst`` exists."""
+    import ctypes
+
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        fn = libc.renameat2
+    except (OSError, AttributeError):
+        return False
+    at_fdcwd, rename_noreplace = -100, 1
+    fn.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_uint]
+    if fn(at_fdcwd, os.fsencode(src), at_fdcwd, os.fsencode(dst), rename_noreplace) == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP):
+        return False
+    raise OSError(err, os.strerror(err), dst)
+
+
+def rename_noreplace(src: str, dst: str) -> None:
+    """Rename ``src`` to ``dst`` only if ``dst`` does not exist, in one step.
+
+    ``renameat2(RENAME_NOREPLACE)`` where the system has it; for a file, ``link(2)`` then
+    unlink (``link`` fails if the name exists); otherwise a check then a rename (a window
+    only on file systems with neither).
+
+    Raises
+    ------
+    FileExistsError
+        ``dst`` exists (a file, a folder, a link, anything).
+    """
+    if _renameat2_noreplace(src, dst):
+        return
+    if not os.path.isdir(src):
+        try:
+            os.link(src, dst, follow_symlinks=False)
+        except FileExistsError:
+            raise
+        except OSError:
+            pass
+        else:
+            os.unlink(src)
+            return
+    if os.path.lexists(dst):
+        raise FileExistsError(errno.EEXIST, os.strerror(errno.EEXIST), dst)
+    os.rename(src, dst)
+
+
+def _tmp_name(folder: str, suffix: str = _TMP_SUFFIX) -> str:
+    return os.path.join(folder, f"{_TMP_PREFIX}{secrets.token_hex(4)}{suffix}")
+
+
+def _create(path: str) -> int:
+    """A new file for writing, never through a link and never an existing name."""
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
+    return os.open(path, flags, 0o600)
+
+
+def _new_tmp(folder: str) -> tuple[int, str]:
+    for _ in range(100):
+        name = _tmp_name(folder)
+        try:
+            return _create(name), name
+        except FileExistsError:
+            continue
+    raise FileExistsError(errno.EEXIST, "no free temporary name", folder)
+
+
+def _commit(tmp: str, path: str, option: str, replace: bool) -> None:
+    """Rename the finished ``tmp`` onto ``path``: over a regular file when ``replace``,
+    else only if ``path`` is a new name. A link, device, FIFO or folder is refused."""
+    st = _kind(path, option)
+    os.chmod(tmp, _mode_for(st))
+    if replace:
+        os.replace(tmp, path)  # replaces the name: never writes through what it was
+        return
+    try:
+        rename_noreplace(tmp, path)
+    except FileExistsError:
+        raise InputError(f"{option}: '{path}' exists; use --force to replace it") from None
+
+
+def _remove(tmp: str | None) -> None:
+    if tmp is None:
+        return
+    try:
+        os.unlink(tmp)
+    except FileNotFoundError:
+        pass
+    except IsADirectoryError:
+        import shutil
+
+        shutil.rmtree(tmp, ignore_errors=True)
 
 
 @contextmanager
-def atomic_open(path: str | Path, option: str, *, binary: bool = False) -> Iterator[IO]:
-    """A file to write ``path`` through: a temporary file in the same folder, renamed over
-    ``path`` when the block ends without an error, removed when it does not.
+def atomic_open(path: str | Path, option: str, *, binary: bool = False,
+                replace: bool = True) -> Iterator[IO]:
+    """A file to write ``path`` through: a new temporary file in the same folder, renamed
+    onto ``path`` when the block ends without an error, removed when it does not (an
+    exception, Ctrl-C, SIGTERM).
+
+    Parameters
+    ----------
+    path : the output (checked by :func:`check`); never a link, device, FIFO or folder
+    option : the option named in errors
+    binary : bytes instead of UTF-8 text with ``\n`` line ends
+    replace : an existing regular file is replaced; False: ``path`` must be a new name when
+        the rename happens (no-clobber, one step)
 
     Raises
     ------
     InputError
-        ``option: cannot write 'path': reason`` when the folder or the file cannot be written.
+        ``option: cannot write 'path': reason`` (the folder or the file cannot be written,
+        a full disk), ``option: 'path' exists; use --force ...`` (``replace`` False), or
+        ``option: 'path' is a device ...`` (found at write time).
     """
-    target = _target(Path(path))
-    folder = str(target.parent) or "."
+    text = os.fspath(path)
+    if "\x00" in text:
+        raise InputError(f"{option}: the file name contains a NUL character")
+    _kind(text, option)  # refuse a link, device, FIFO or folder before writing anything
+    folder = os.path.dirname(text) or "."
+    tmp = None
     try:
-        fd, tmp = tempfile.mkstemp(prefix=_TMP_PREFIX, suffix=_TMP_SUFFIX, dir=folder)
-    except OSError as exc:
-        raise InputError(f"{option}: cannot write '{path}': {exc.strerror or exc}") from None
-    try:
+        with _held_signals():  # the temporary file exists only inside the try
+            fd, tmp = _new_tmp(folder)
         if binary:
             fh = os.fdopen(fd, "wb")
         else:
             fh = os.fdopen(fd, "w", encoding="utf-8", newline="\n")
         with fh:
             yield fh
-        os.chmod(tmp, _mode_for(target))
-        os.replace(tmp, target)
+        with _held_signals():
+            _commit(tmp, text, option, replace)
+            tmp = None
+    except InputError:
+        _remove(tmp)
+        raise
     except OSError as exc:
         _remove(tmp)
-        raise InputError(f"{option}: cannot write '{path}': {exc.strerror or exc}") from None
+        raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
     except BaseException:
         _remove(tmp)
         raise
 
 
-def _remove(tmp: str) -> None:
-    try:
-        os.unlink(tmp)
-    except FileNotFoundError:
-        pass
-
-
-def write_atomic(path: str | Path, data: str | bytes, option: str = "output") -> None:
-    """Write ``data`` (text as UTF-8 with ``\\n`` line ends, or bytes) to ``path`` atomically.
+def write_atomic(path: str | Path, data: str | bytes, option: str = "output", *,
+                 replace: bool = True) -> None:
+    """Write ``data`` (text as UTF-8 with ``\n`` line ends, or bytes) to ``path`` atomically;
+    see :func:`atomic_open` (``replace=False``: only if ``path`` is a new name).
 
     Raises
     ------
     InputError
-        ``option: cannot write 'path': reason``.
+        ``option: cannot write 'path': reason``, or ``path`` exists and ``replace`` is False.
     """
-    with atomic_open(path, option, binary=isinstance(data, bytes)) as fh:
+    with atomic_open(path, option, binary=isinstance(data, bytes), replace=replace) as fh:
         fh.write(data)
+
+
+# ----------------------------------------------------------------------------- document + folder
+
+
+def files_dir(path: str | Path) -> Path:
+    """The folder of a Markdown document's figures: ``r.md`` -> ``r_files``."""
+    p = Path(path)
+    return p.with_name(p.stem + "_files")
+
+
+def check_folder(folder: str | Path, body_or_inputs: Body | Iterable[str] | None, option: str,
+                 *, force: bool = False) -> Path:
+    """An output folder (a Markdown report's figures), checked the way :func:`check` checks
+    a file: it holds no input (the body, its includes, its meshes), it is a real folder (not
+    a link) holding only files, and it is replaced only with ``force``.
+
+    Raises
+    ------
+    InputError
+        (exit 2, one line naming ``option``).
+    """
+    folder = Path(folder)
+    text = os.fspath(folder)
+    real = os.path.realpath(folder)
+    for inp in input_files(body_or_inputs):
+        if inp == real or inp.startswith(real + os.sep):
+            raise InputError(f"{option}: '{text}' (for the figures) holds an input file; "
+                             "rbcli never overwrites its inputs")
+    try:
+        st = os.lstat(text)
+    except FileNotFoundError:
+        return folder
+    except OSError as exc:
+        raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+    if stat.S_ISLNK(st.st_mode):
+        raise InputError(f"{option}: '{text}' (for the figures) is a symbolic link; rbcli never "
+                         "writes through a link: remove it or choose another -o name")
+    if not stat.S_ISDIR(st.st_mode):
+        raise InputError(f"{option}: '{text}' (for the figures) exists and is not a folder")
+    if not force:
+        raise InputError(f"{option}: '{text}' exists; use --force to replace it")
+    try:
+        entries = list(os.scandir(text))
+    except OSError as exc:
+        raise InputError(f"{option}: cannot read the folder '{text}': {_reason(exc)}") from None
+    for entry in entries:
+        if entry.is_dir(follow_symlinks=False):
+            raise InputError(f"{option}: '{text}' holds the folder '{entry.name}', which rbcli did "
+                             "not write; move it away to replace the report")
+        if is_input(entry.path, input_files(body_or_inputs)):
+            raise InputError(f"{option}: '{text}' holds an input file ('{entry.name}'); rbcli never "
+                             "overwrites its inputs")
+    return folder
+
+
+def write_document(path: str | Path, data: str | bytes, option: str, *, replace: bool,
+                   folder: str | Path | None = None,
+                   files: Mapping[str, str | bytes] | None = None) -> None:
+    """Write a document and (when ``files``) its folder of figures, all or nothing.
+
+    The figures are written into a new temporary folder beside ``path``, the document into
+    a temporary file; then, with SIGINT and SIGTERM held off, an existing ``folder`` is
+    moved aside (``replace`` only: see :func:`check_folder`), the new folder renamed into
+    place (no-clobber), the document renamed into place (replacing a regular file when
+    ``replace``, else no-clobber), and the old folder removed. A failure at any step undoes
+    the earlier ones; nothing temporary is left.
+
+    Raises
+    ------
+    InputError
+        ``option: cannot write ...``, ``option: '...' exists; use --force ...``.
+    """
+    text = os.fspath(path)
+    if not files:
+        write_atomic(text, data, option, replace=replace)
+        return
+    folder = os.fspath(folder if folder is not None else files_dir(text))
+    parent = os.path.dirname(text) or "."
+    _kind(text, option)
+    stage = doc_tmp = aside = None
+    placed = False
+    try:
+        with _held_signals():
+            stage = _tmp_name(parent)
+            os.mkdir(stage, 0o700)
+        for name, content in files.items():
+            if not name or "/" in name or os.sep in name or name in (".", "..") or "\x00" in name:
+                raise ValueError(f"bad figure file name {name!r}")  # a bug, not an input
+            fd = _create(os.path.join(stage, name))
+            with os.fdopen(fd, "wb") as fh:
+                fh.write(content.encode("utf-8") if isinstance(content, str) else content)
+            os.chmod(os.path.join(stage, name), _mode_for(None))
+        with _held_signals():
+            fd, doc_tmp = _new_tmp(parent)
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data.encode("utf-8") if isinstance(data, str) else data)
+        with _held_signals():
+            os.chmod(stage, 0o777 & ~_umask())
+            if os.path.lexists(folder):
+                if not replace:
+                    raise InputError(f"{option}: '{folder}' exists; use --force to replace it")
+                if os.path.islink(folder) or not os.path.isdir(folder):
+                    raise InputError(f"{option}: '{folder}' (for the figures) is not a folder")
+                aside = _tmp_name(parent, ".old")
+                os.rename(folder, aside)
+            try:
+                rename_noreplace(stage, folder)
+            except FileExistsError:
+                raise InputError(f"{option}: '{folder}' exists; use --force to replace it") from None
+            stage, placed = None, True
+            _commit(doc_tmp, text, option, replace)
+            doc_tmp = None
+            if aside is not None:
+                import shutil
+
+                shutil.rmtree(aside, ignore_errors=True)  # unlinks links; never follows them
+                aside = None
+    except BaseException as exc:
+        with _held_signals():
+            import shutil
+
+            if placed:  # the new folder is in place but the document is not: take it back
+                shutil.rmtree(folder, ignore_errors=True)
+            if aside is not None:
+                try:
+                    os.rename(aside, folder)
+                except OSError:
+                    pass
+            if stage is not None:
+                shutil.rmtree(stage, ignore_errors=True)
+            _remove(doc_tmp)
+        if isinstance(exc, OSError):
+            raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+        raise
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask

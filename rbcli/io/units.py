@@ -23,8 +23,10 @@ A quantity is a number (Python float syntax without underscores: sign, decimals,
 exponent; ``inf`` and ``nan`` refused), optional white space, then an optional unit
 expression. A unit expression is unit names joined by ``*`` (or ``·``) and ``/``,
 read left to right (``kg/m/s`` = kg m^-1 s^-1); each name or parenthesised group may
-carry an integer power ``^n``, ``**n`` or a superscript (``m²``, ``s⁻¹``). ``1/s`` is
-allowed at the start. Names are case-sensitive (``mm`` is not ``Mm``); there is no
+carry an integer power ``^n``, ``**n`` or a superscript (``m²``, ``s⁻¹``), from -12 to
+12; the power of any one unit in the whole expression (``(mm^2)^3`` is mm^6) stays in
+the same range, checked at every step while reading, so nested powers cost nothing.
+``1/s`` is allowed at the start. Names are case-sensitive (``mm`` is not ``Mm``); there is no
 general SI-prefix machinery, only the explicit entries of the table
 (:func:`format_unit_table`).
 """
@@ -327,7 +329,10 @@ def format_unit_table() -> str:
 # --------------------------------------------------------------------------- parsing
 
 _MAX_TEXT = 200  # characters; keeps exact arithmetic on hostile input cheap
-_MAX_EXPONENT = 12  # largest |n| in a unit power
+_MAX_EXPONENT = 12  # largest |n| in a written unit power
+#: largest |n| of the power of any one unit in an expression once products and nested powers
+#: are taken ('(mm^2)^3' is mm^6): checked at every step, before any factor is expanded
+_MAX_UNIT_POWER = 12
 _MAX_DECIMAL_EXPONENT = 400  # largest |e| in a number's exponent (floats stop at ~308)
 
 _NUMBER_RE = re.compile(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
@@ -413,12 +418,32 @@ class _UnitParser:
                 j += 1
             if j < len(self.s) and self.s[j] == "/":
                 self.i = j
-                result = self.product(Fraction(1), 0, Dim())
-                return self.finish(result)
-        result = self.expression()
-        return self.finish(result)
+                return self.expand(self.finish(self.product({})))
+        return self.expand(self.finish(self.expression()))
 
-    def finish(self, result: tuple[Fraction, int, Dim]) -> tuple[Fraction, int, Dim]:
+    # A unit expression is read as the exponent of each named unit ({"mm": 2, "g": 1}),
+    # bounded after every step (:data:`_MAX_UNIT_POWER`); the exact factor is expanded
+    # only at the end, from exponents that are known to be small. So nested powers such
+    # as '((mm^12)^12)^12' are refused at once instead of building huge fractions.
+
+    def expand(self, powers: dict[str, int]) -> tuple[Fraction, int, Dim]:
+        q, p, d = Fraction(1), 0, Dim()
+        for name, n in powers.items():
+            if n:
+                unit = _BY_NAME[name]
+                q, p, d = q * unit.q**n, p + unit.pi * n, d * unit.dim**n
+        return q, p, d
+
+    def bounded(self, powers: dict[str, int]) -> dict[str, int]:
+        for name, n in powers.items():
+            if abs(n) > _MAX_UNIT_POWER:
+                raise self.error(
+                    f"the power of '{name}' reaches {n}; the power of each unit in an "
+                    f"expression goes from -{_MAX_UNIT_POWER} to {_MAX_UNIT_POWER}"
+                )
+        return powers
+
+    def finish(self, result: dict[str, int]) -> dict[str, int]:
         self.skip_ws()
         if self.i < len(self.s):
             rest = self.s[self.i :]
@@ -432,30 +457,30 @@ class _UnitParser:
             raise self.error(f"unexpected '{rest}'; a unit is names joined by '*' and '/'")
         return result
 
-    def expression(self) -> tuple[Fraction, int, Dim]:
-        q, p, d = self.power()
-        return self.product(q, p, d)
+    def expression(self) -> dict[str, int]:
+        return self.product(self.power())
 
-    def product(self, q: Fraction, p: int, d: Dim) -> tuple[Fraction, int, Dim]:
+    def product(self, acc: dict[str, int]) -> dict[str, int]:
         while True:
             c = self.peek()
             if c in ("*", "·", "⋅") and not self.s.startswith("**", self.i):
-                self.i += 1
-                q2, p2, d2 = self.power()
-                q, p, d = q * q2, p + p2, d * d2
+                sign = 1
             elif c == "/":
-                self.i += 1
-                q2, p2, d2 = self.power()
-                q, p, d = q / q2, p - p2, d / d2
+                sign = -1
             else:
-                return q, p, d
+                return acc
+            self.i += 1
+            acc = dict(acc)
+            for name, n in self.power().items():
+                acc[name] = acc.get(name, 0) + sign * n
+            self.bounded(acc)
 
-    def power(self) -> tuple[Fraction, int, Dim]:
-        q, p, d = self.atom()
+    def power(self) -> dict[str, int]:
+        powers = self.atom()
         n = self.exponent()
         if n is None:
-            return q, p, d
-        return q**n, p * n, d**n
+            return powers
+        return self.bounded({name: e * n for name, e in powers.items()})
 
     def exponent(self) -> int | None:
         self.skip_ws()
@@ -482,15 +507,16 @@ class _UnitParser:
         return self.check_exponent(m.group(1) or m.group(2))
 
     def check_exponent(self, raw: str) -> int:
+        raw = raw.replace("\u2212", "-")
         try:
-            n = int(raw.replace("\u2212", "-"))
+            n = int(raw)
         except ValueError:
             raise self.error(f"bad power '{raw}'; a power must be a whole number") from None
         if abs(n) > _MAX_EXPONENT:
             raise self.error(f"power {n} is too large; powers go from -12 to 12")
         return n
 
-    def atom(self) -> tuple[Fraction, int, Dim]:
+    def atom(self) -> dict[str, int]:
         c = self.peek()
         if c == "(":
             self.i += 1
@@ -507,7 +533,7 @@ class _UnitParser:
         unit = _BY_NAME.get(m.group())
         if unit is None:
             raise _unknown_unit(m.group(), self.whole)
-        return unit.q, unit.pi, unit.dim
+        return {unit.names[0]: 1}
 
 
 def _check_text(text: object, what: str) -> str:

@@ -182,5 +182,5 @@ def write_balanced(
     data = balanced_document(body, points, path)
     text = "".join(f"# {line}\n" if line else "#\n" for line in header)
     text += dump(data)
-    outfile.write_atomic(path, text, "--apply")
+    outfile.write_atomic(path, text, "--apply", replace=force)
     return path

@@ -252,8 +252,16 @@ def _size_text(n: int) -> str:
 # ---------------------------------------------------------------------- decoding
 
 
+def max_bytes() -> int:
+    """The size limit of a body file: :data:`MAX_BYTES`, or ``RBCLI_MAX_BODY_BYTES``."""
+    from rbcli.io.reader import limit_from_env
+
+    return limit_from_env("RBCLI_MAX_BODY_BYTES", MAX_BYTES)
+
+
 def _decode(text: str | bytes, filename: str) -> str:
     """Check the size, decode UTF-8, drop a leading BOM; refuse lone surrogates."""
+    MAX_BYTES = max_bytes()  # noqa: N806  (the module's, or the environment's)
     if isinstance(text, (bytes, bytearray, memoryview)):
         data = bytes(text)
         if len(data) > MAX_BYTES:

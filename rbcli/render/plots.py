@@ -33,19 +33,27 @@ RC = {
     "pdf.fonttype": 42,
     "figure.dpi": 100,
     "savefig.dpi": 150,
+    # labels are text, never mathtext or TeX: a body named '$\\frac{$' is shown as written
+    "text.parse_math": False,
+    "text.usetex": False,
 }
 
 
 def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (7.0, 4.2)):
     """A new Figure (no pyplot) with rbcli's style, a suptitle, and its axes."""
+    import logging
+
     import matplotlib
 
+    logging.getLogger("matplotlib").setLevel(logging.ERROR)  # no log lines on stderr
     matplotlib.rcParams.update(RC)
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=size, layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False)
-    fig.suptitle(title)
+    from rbcli.env import clean
+
+    fig.suptitle(clean(title))  # control characters shown escaped, long names cut
     return fig, axes
 
 

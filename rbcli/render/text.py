@@ -2,7 +2,8 @@
 by :mod:`rbcli.render.report`, as HTML or Markdown.
 
 A command's render module fills a :class:`Doc` with neutral items; how they look is
-decided only when the document is rendered. Tables for people: units in headers,
+decided only when the document is rendered. Text from the user (names, titles, cells) is
+made safe for a terminal there, once (:func:`rbcli.env.clean`). Tables for people: units in headers,
 plain ASCII without colour when not a terminal.
 """
 
@@ -13,7 +14,7 @@ import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-from rbcli.env import Env
+from rbcli.env import Env, clean
 
 
 @dataclass(frozen=True)
@@ -87,14 +88,16 @@ class Doc:
             markup=False,
             legacy_windows=False,
         )
+        # every piece of text is made safe once, here: control characters and line
+        # separators escaped, runs over 200 characters cut (rbcli.env.clean)
         for item in self.items:
             if isinstance(item, Heading):
-                console.print(Text(item.text, style="bold" if color else ""))
+                console.print(Text(clean(item.text, keep_newlines=True, max_line=None), style="bold" if color else ""))
             elif isinstance(item, Note):
-                console.print(Text(item.text))
+                console.print(Text(clean(item.text, keep_newlines=True, max_line=None)))
             else:
                 t = RichTable(
-                    title=item.title or None,
+                    title=clean(item.title) or None,
                     title_justify="left",
                     box=box.SIMPLE_HEAD if color else box.ASCII2,
                     show_edge=False,
@@ -103,9 +106,9 @@ class Doc:
                     header_style="bold" if color else None,
                 )
                 for i, c in enumerate(item.columns):
-                    t.add_column(c, justify="right" if i in item.right else "left", overflow="fold")
+                    t.add_column(clean(c), justify="right" if i in item.right else "left", overflow="fold")
                 for r in item.rows:
-                    t.add_row(*r)
+                    t.add_row(*(clean(x) for x in r))
                 console.print(t)
         return buf.getvalue()
 

@@ -1,0 +1,199 @@
+"""The one input reader: regular files and standard input, type and size checked first.
+
+Every file rbcli reads (a body, a file it includes, a mesh) goes through
+:func:`read_regular`; standard input (BODY ``-``) through :func:`read_stream`.
+
+- Only a regular file is read. A FIFO, a device (``/dev/zero``, ``/dev/urandom``), a
+  socket or a directory is refused with a message, before a byte is read, and without
+  blocking: the file is opened with ``O_NONBLOCK``, so opening a FIFO with no writer does
+  not hang, and its type is taken from the open descriptor (``fstat``), so what is
+  checked is what is read.
+- The size is checked before reading (``st_size``), and the read stops at the limit
+  anyway (a file that grows while it is read).
+- Standard input is read in chunks and refused as soon as it passes the same limit, so
+  ``rbcli inertia - < /dev/zero`` stops at the limit instead of filling memory.
+
+Errors are :class:`ReadError` (an :class:`rbcli.errors.InputError`, exit 2) carrying the
+bare ``reason`` (``"no such file"``, ``"is a FIFO (named pipe), not a regular file"``...),
+so each caller words its own message around it.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import stat
+from typing import BinaryIO
+
+from rbcli.errors import InputError, Location
+
+__all__ = ["ReadError", "read_regular", "read_stream", "size_text", "limit_from_env"]
+
+_CHUNK = 1 << 16
+
+
+class ReadError(InputError):
+    """A file or stream that is not read: ``path`` and the bare ``reason``.
+
+    ``str()`` (and ``message``) read ``"<path>: <reason>"``; ``"no such file: <path>"``
+    for a missing file (the wording rbcli has always used).
+    """
+
+    def __init__(self, path: str, reason: str, where: Location | None = None) -> None:
+        self.path = path
+        self.reason = reason
+        text = f"no such file: {path}" if reason == "no such file" else f"{path}: {reason}"
+        super().__init__(text, where)
+
+
+def size_text(n: int) -> str:
+    """``8 MiB``, ``512 KiB`` or ``100 bytes``."""
+    for unit, size in (("GiB", 1 << 30), ("MiB", 1 << 20), ("KiB", 1 << 10)):
+        if n >= size and n % size == 0:
+            return f"{n // size} {unit}"
+    return f"{n} bytes"
+
+
+def limit_from_env(name: str, default: int) -> int:
+    """A positive whole-number budget from the environment variable ``name``, else
+    ``default``. A value that is not a positive whole number is refused (exit 2)."""
+    raw = os.environ.get(name, "").strip()
+    if not raw:
+        return default
+    try:
+        value = int(raw.replace("_", ""))
+    except ValueError:
+        value = 0
+    if value <= 0 or len(raw) > 20:
+        raise InputError(f"{name}: must be a positive whole number, not '{raw[:40]}'")
+    return value
+
+
+def _kind(mode: int) -> str | None:
+    """Why a file of this mode is not read, or None for a regular file."""
+    if stat.S_ISREG(mode):
+        return None
+    if stat.S_ISDIR(mode):
+        return "is a directory, not a file"
+    if stat.S_ISFIFO(mode):
+        return "is a FIFO (named pipe), not a regular file; rbcli reads regular files and standard input ('-')"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "is a device, not a regular file; rbcli reads regular files and standard input ('-')"
+    if stat.S_ISSOCK(mode):
+        return "is a socket, not a regular file"
+    return "is not a regular file"
+
+
+def _too_big(size: int | None, limit: int, what: str, env: str | None) -> str:
+    raise_hint = f" (set {env} to raise it)" if env else ""
+    shown = f"is {size} bytes" if size is not None else f"is more than {size_text(limit)}"
+    return f"{shown}; {what}s are limited to {size_text(limit)}{raise_hint}"
+
+
+def _os_reason(exc: OSError) -> str:
+    if exc.errno == errno.ENOENT:
+        return "no such file"
+    if exc.errno in (errno.EACCES, errno.EPERM):
+        return "cannot read the file: permission denied"
+    if exc.errno == errno.EISDIR:
+        return "is a directory, not a file"
+    if exc.errno == errno.ELOOP:
+        return "cannot read the file: too many levels of symbolic links"
+    return f"cannot read the file: {(exc.strerror or str(exc)).lower()}"
+
+
+def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
+                 where: Location | None = None, env: str | None = None) -> bytes:
+    """The bytes of the regular file ``path``, at most ``limit`` of them.
+
+    Parameters
+    ----------
+    path : the file (followed if it is a symbolic link: reading through a link is safe)
+    limit : the largest size accepted, in bytes
+    what : the noun for messages, e.g. ``"body file"``, ``"mesh file"``
+    where : the location of the reference to the file (an include's ``file:``), if any
+    env : the environment variable that raises ``limit``, named in the message
+
+    Raises
+    ------
+    ReadError
+        (exit 2) a missing or unreadable file, a name with a NUL character, a directory,
+        a FIFO, a device or a socket (refused before reading, without blocking), or a file
+        over ``limit`` bytes (checked before reading, and again while reading).
+    """
+    name = os.fspath(path)
+    if "\x00" in name:
+        raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
+    try:
+        st = os.stat(name)  # refuse a FIFO or device before opening it at all
+        reason = _kind(st.st_mode)
+        if reason:
+            raise ReadError(name, reason, where)
+        fd = os.open(name, flags)
+    except ReadError:
+        raise
+    except OSError as exc:
+        raise ReadError(name, _os_reason(exc), where) from None
+    except ValueError as exc:  # e.g. a name the OS cannot take
+        raise ReadError(name, f"cannot read the file: {exc}", where) from None
+    try:
+        st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
+        reason = _kind(st.st_mode)
+        if reason:
+            raise ReadError(name, reason, where)
+        if st.st_size > limit:
+            raise ReadError(name, _too_big(st.st_size, limit, what, env), where)
+        chunks = []
+        total = 0
+        while True:
+            chunk = os.read(fd, min(max(st.st_size - total, _CHUNK), limit + 1 - total) or 1)
+            if not chunk:
+                break
+            chunks.append(chunk)
+            total += len(chunk)
+            if total > limit:
+                raise ReadError(name, _too_big(None, limit, what, env), where)
+        return b"".join(chunks)
+    except ReadError:
+        raise
+    except OSError as exc:
+        raise ReadError(name, _os_reason(exc), where) from None
+    finally:
+        os.close(fd)
+
+
+def read_stream(stream: BinaryIO | None, limit: int, what: str = "file", *,
+                name: str = "standard input", env: str | None = None) -> bytes:
+    """All of a byte stream (standard input), read in chunks, at most ``limit`` bytes.
+
+    Raises
+    ------
+    ReadError
+        (exit 2) a closed stream (``<&-``), a stream that cannot be read, or more than
+        ``limit`` bytes (found while reading: never more than ``limit`` + 64 KiB is held).
+    """
+    if stream is None:
+        raise ReadError(name, "is closed; give a BODY file instead of '-', or pipe a body in")
+    chunks = []
+    total = 0
+    try:
+        while True:
+            chunk = stream.read(_CHUNK)
+            if not chunk:
+                break
+            chunks.append(chunk)
+            total += len(chunk)
+            if total > limit:
+                raise ReadError(name, _too_big(None, limit, what, env))
+    except ReadError:
+        raise
+    except (OSError, ValueError) as exc:  # EBADF for a closed descriptor, a closed file
+        reason = "is closed" if isinstance(exc, ValueError) or getattr(exc, "errno", None) == errno.EBADF \
+            else f"cannot be read: {(getattr(exc, 'strerror', None) or str(exc)).lower()}"
+        if reason == "is closed":
+            reason += "; give a BODY file instead of '-', or pipe a body in"
+        raise ReadError(name, reason) from None
+    if chunks and isinstance(chunks[0], str):  # a text stream given by a caller
+        return "".join(chunks).encode("utf-8", "surrogateescape")
+    return b"".join(chunks)

@@ -1,0 +1,158 @@
+"""Streams and signals (issue 15), in real processes: closed or full stdout, stderr and
+stdin, terminals that cannot show unit symbols, SIGTERM and SIGINT while writing.
+
+Exit codes never depend on whether stderr can take the message; a pipe closed early is
+quiet; a full disk or a closed stdout is exit 2; a signal leaves no temporary file and no
+half-made figures folder.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+GOOD = ("inertia", "examples/cube.yaml")
+BAD = ("inertia", "examples/nope.yaml")
+
+
+def sh(args: tuple[str, ...], redirect: str, cwd: Path = ROOT, timeout: float = 120):
+    """Run ``python -m rbcli ARGS REDIRECT`` through sh (for ``>&-``, ``2>/dev/full``...);
+    (exit status, stdout, stderr) — a stream redirected away reads as ''."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "NO_COLOR": "1", "COLUMNS": "100"}
+    env.pop("RBCLI_DEBUG", None)
+    cmd = " ".join([f"'{sys.executable}'", "-m", "rbcli", *(f"'{a}'" for a in args), redirect])
+    p = subprocess.run(["sh", "-c", cmd], capture_output=True, cwd=cwd, env=env, timeout=timeout)
+    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+
+
+# --------------------------------------------------------------------------- stdout
+
+
+def test_closed_stdout_is_exit_2_with_a_message():
+    code, _, err = sh(GOOD, ">&-")
+    assert code == 2 and err == "rbcli: cannot write to standard output: it is closed\n", err
+
+
+def test_full_stdout_is_exit_2_with_a_message():
+    code, _, err = sh(GOOD, "> /dev/full")
+    assert code == 2 and "no space left on device" in err and err.count("\n") == 1, err
+    code, _, err = sh(("--help",), "> /dev/full")
+    assert code == 2 and err.startswith("rbcli: "), err
+
+
+def test_a_pipe_closed_early_is_quiet():
+    code, out, err = sh(("precess", "examples/cube.yaml", "--omega", "1,2,3", "--csv", "-",
+                         "--duration", "100", "--samples", "200000"), "| head -1")
+    assert code == 0 and err == "" and out.startswith("t,"), err
+
+
+def test_a_report_needs_no_stdout():
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as d:
+        code, _, err = sh(("report", str(ROOT / "examples/cube.yaml"), "-o", f"{d}/r.html"), ">&-")
+        assert code == 0, err
+
+
+# --------------------------------------------------------------------------- stderr
+
+
+@pytest.mark.parametrize("redirect", ["2>&-", "2>/dev/full"])
+def test_exit_status_never_depends_on_stderr(redirect):
+    assert sh(BAD, redirect)[0] == 2
+    assert sh(GOOD, redirect + " >/dev/null")[0] == 0
+    assert sh(("inertia", "examples/cube.yaml", "--nope"), redirect)[0] == 2
+
+
+# --------------------------------------------------------------------------- stdin
+
+
+def test_closed_stdin_with_body_dash_is_a_clear_exit_2():
+    code, _, err = sh(("inertia", "-"), "<&-")
+    assert code == 2 and "standard input" in err and "closed" in err and err.count("\n") == 1, err
+
+
+def test_stdin_from_dev_zero_stops_at_the_cap():
+    code, _, err = sh(("inertia", "-"), "< /dev/zero")
+    assert code == 2 and "limited to 8 MiB" in err, err
+
+
+def test_a_closed_stdin_does_not_matter_to_a_body_file():
+    assert sh(GOOD, "<&- >/dev/null")[0] == 0
+
+
+# --------------------------------------------------------------------------- encodings
+
+
+@pytest.mark.parametrize("args", [("principal", "examples/cube.yaml"),
+                                  ("inertia", "examples/cube.yaml", "--units", "mm,g"),
+                                  ("precess", "examples/football.yaml", "--omega", "0.3,0,1"),
+                                  ("inertia", "-e", "{shape: box, mass: '2 µx·m²', size: [1, 1, 1]}")])
+def test_an_ascii_terminal_gets_ascii(cli_proc, args):
+    r = cli_proc(*args, env={"PYTHONIOENCODING": "ascii"})
+    assert r.code in (0, 2), r.err
+    assert r.out.isascii() and r.err.isascii(), (r.out[:300], r.err)
+    if r.code == 0:
+        assert "·" not in r.out and ("kg*m^2" in r.out or "m^2" in r.out or args[0] == "precess")
+
+
+# --------------------------------------------------------------------------- signals
+
+
+def _popen(args, cwd):
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    return subprocess.Popen([sys.executable, "-m", "rbcli", *args], cwd=cwd, env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
+
+def _wait_for(predicate, timeout=60.0):
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.02)
+    return False
+
+
+def test_sigterm_during_a_long_csv_leaves_no_temporary_file(tmp_path):
+    (tmp_path / "b.yaml").write_text((ROOT / "examples/football.yaml").read_text())
+    p = _popen(["precess", "b.yaml", "--omega", "1.7,0,9.8", "--duration", "100",
+                "--samples", "2000000", "--csv", "out.csv"], tmp_path)
+    assert _wait_for(lambda: any(n.startswith(".rbcli-") for n in os.listdir(tmp_path))), "no temp file seen"
+    p.send_signal(signal.SIGTERM)
+    assert p.wait(timeout=60) == 128 + signal.SIGTERM, p.stderr.read()
+    assert sorted(os.listdir(tmp_path)) == ["b.yaml"]
+
+
+def test_sigint_during_a_markdown_report_leaves_no_figures_folder(tmp_path):
+    # SIGINT at several moments of the run: each run either finished (r.md and r_files/) or
+    # left nothing at all; never r_files/ alone, never a temporary file
+    (tmp_path / "b.yaml").write_text((ROOT / "examples/top.yaml").read_text())
+    args = ["report", "b.yaml", "-o", "r.md", "--force", "--spin", "150", "--theta", "30"]
+    outcomes = set()
+    for delay in (0.6, 1.2, 2.0):
+        for name in ("r.md", "r_files"):
+            if (tmp_path / name).is_dir():
+                import shutil
+
+                shutil.rmtree(tmp_path / name)
+            elif (tmp_path / name).exists():
+                (tmp_path / name).unlink()
+        p = _popen(args, tmp_path)
+        time.sleep(delay)
+        p.send_signal(signal.SIGINT)
+        code = p.wait(timeout=120)
+        names = sorted(os.listdir(tmp_path))
+        assert code in (0, 130, -signal.SIGINT), (code, p.stderr.read())
+        assert names in (["b.yaml"], ["b.yaml", "r.md", "r_files"]), (delay, code, names)
+        if code == 0:
+            assert names == ["b.yaml", "r.md", "r_files"]
+        outcomes.add(code)
+    assert outcomes & {130, -signal.SIGINT}
