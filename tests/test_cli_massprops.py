@@ -20,10 +20,6 @@ import sys
 from pathlib import Path
 
 import pytest
-from typer.testing import CliRunner
-
-import rbcli.cli
-from rbcli.cli import app
 
 ROOT = Path(__file__).resolve().parent.parent
 EX = ROOT / "examples"
@@ -39,53 +35,28 @@ OMEGA_KEYS = {"omega", "angular_momentum", "kinetic_energy", "angle_L_omega_deg"
 PRINCIPAL_KEYS = {"reference", "moments", "axes", "symmetry", "stable"}
 
 
-def run(*args: str, input: str | None = None):
-    r = CliRunner().invoke(app, list(args), input=input)
-    if r.exception and not isinstance(r.exception, SystemExit):
-        raise r.exception
-    return r
-
-
-def js(*args: str, input: str | None = None) -> dict:
-    r = run(*args, "--json", input=input)
-    assert r.exit_code == 0, r.stderr
-    return json.loads(r.stdout)
-
-
-def main(capsys, *args: str) -> tuple[int, str, str]:
-    """rbcli.cli.main in-process: (exit status, stdout, stderr)."""
-    with pytest.raises(SystemExit) as info:
-        rbcli.cli.main(list(args))
-    out = capsys.readouterr()
-    code = info.value.code
-    return (0 if code is None else int(code)), out.out, out.err
-
-
-def proc(*args: str, env: dict | None = None, **kw) -> subprocess.CompletedProcess:
-    e = {k: v for k, v in os.environ.items() if k != "NO_COLOR"}  # no colour must come from the pipe
-    e.update(env or {})
-    return subprocess.run([sys.executable, "-m", "rbcli", *args], capture_output=True, text=True,
-                          env=e, cwd=ROOT, timeout=60, **kw)
+#: a real process sees a pipe, not a terminal: no colour must come from that alone
+PIPE_ENV = {"NO_COLOR": None}
 
 
 # --------------------------------------------------------------------------- JSON keys
 
-def test_inertia_json_has_exactly_the_spec_keys_and_the_asked_ones():
-    plain = js("inertia", LAMINA)
+def test_inertia_json_has_exactly_the_spec_keys_and_the_asked_ones(cli):
+    plain = cli("inertia", LAMINA, "--json").json()
     assert INERTIA_KEYS <= set(plain) and not (AXIS_KEYS | OMEGA_KEYS) & set(plain)
-    with_axis = js("inertia", LAMINA, "--axis", "1,1,0")
+    with_axis = cli("inertia", LAMINA, "--axis", "1,1,0", "--json").json()
     assert INERTIA_KEYS | AXIS_KEYS <= set(with_axis) and not OMEGA_KEYS & set(with_axis)
-    with_omega = js("inertia", LAMINA, "--omega", "1,0,0")
+    with_omega = cli("inertia", LAMINA, "--omega", "1,0,0", "--json").json()
     assert INERTIA_KEYS | OMEGA_KEYS <= set(with_omega) and not AXIS_KEYS & set(with_omega)
-    both = js("inertia", LAMINA, "--omega", "1,0,0", "--axis", "1,1,0")
+    both = cli("inertia", LAMINA, "--omega", "1,0,0", "--axis", "1,1,0", "--json").json()
     assert INERTIA_KEYS | AXIS_KEYS | OMEGA_KEYS <= set(both)
     # SPEC keys first, in the order SPEC lists them; the extras come after
     assert list(plain)[:5] == ["mass", "com", "reference", "inertia", "inertia_com"]
     assert plain["file"] == LAMINA and plain["name"] == "Square lamina about a corner"
 
 
-def test_inertia_json_values_are_the_course_lamina():
-    j = js("inertia", LAMINA, "--axis", "1,1,0", "--omega", "1,0,0")
+def test_inertia_json_values_are_the_course_lamina(cli):
+    j = cli("inertia", LAMINA, "--axis", "1,1,0", "--omega", "1,0,0", "--json").json()
     # m = 1, a = 1: one multiplication each, so round-off only (rel 1e-12)
     assert j["mass"] == pytest.approx(1.0, rel=1e-12)
     assert j["com"] == pytest.approx([0.5, 0.5, 0.0], rel=1e-12)
@@ -99,92 +70,92 @@ def test_inertia_json_values_are_the_course_lamina():
     assert j["angle_L_omega_deg"] == pytest.approx(math.degrees(math.atan(0.75)), rel=1e-12)
 
 
-def test_principal_json_keys_and_values():
-    j = js("principal", LAMINA, "--about", "origin")
+def test_principal_json_keys_and_values(cli):
+    j = cli("principal", LAMINA, "--about", "origin", "--json").json()
     assert PRINCIPAL_KEYS <= set(j) and list(j)[:5] == ["reference", "moments", "axes", "symmetry", "stable"]
     assert j["moments"] == pytest.approx([1 / 12, 7 / 12, 2 / 3], rel=1e-12)
     assert j["symmetry"] == "asymmetric" and j["stable"] == [True, False, True]
-    cube = js("principal", CUBE)
+    cube = cli("principal", CUBE, "--json").json()
     assert cube["symmetry"] == "spherical" and cube["axes"] == [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
 
 
-def test_omega_with_units_and_about_a_point():
+def test_omega_with_units_and_about_a_point(cli):
     # 60 rpm = 2 pi rad/s about z; the lamina about its corner: Izz = 2/3
-    j = js("inertia", LAMINA, "--omega", "0,0,60 rpm")
+    j = cli("inertia", LAMINA, "--omega", "0,0,60 rpm", "--json").json()
     assert j["omega"] == pytest.approx([0, 0, 2 * math.pi], rel=1e-15)
     assert j["angular_momentum"][2] == pytest.approx(2 / 3 * 2 * math.pi, rel=1e-12)
     # about the com (0.5, 0.5, 0): the lamina's centroidal tensor, diag(1/12, 1/12, 1/6)
-    c = js("inertia", LAMINA, "--about", "com")
+    c = cli("inertia", LAMINA, "--about", "com", "--json").json()
     assert c["reference"] == pytest.approx([0.5, 0.5, 0])
     assert [c["inertia"][i][i] for i in range(3)] == pytest.approx([1 / 12, 1 / 12, 1 / 6], rel=1e-12)
-    mm = js("inertia", LAMINA, "--about", "500 mm,50 cm,0")
+    mm = cli("inertia", LAMINA, "--about", "500 mm,50 cm,0", "--json").json()
     assert mm["inertia"] == c["inertia"]
 
 
 # --------------------------------------------------------------------------- batches, stdin, -e
 
-def test_several_bodies_with_json_give_json_lines_each_with_file():
+def test_several_bodies_with_json_give_json_lines_each_with_file(cli):
     for cmd in ("inertia", "principal"):
-        r = run(cmd, LAMINA, FAN, CUBE, "--json")
-        lines = r.stdout.splitlines()
-        assert r.exit_code == 0 and len(lines) == 3
+        r = cli(cmd, LAMINA, FAN, CUBE, "--json")
+        lines = r.out.splitlines()
+        assert r.code == 0 and len(lines) == 3
         assert [json.loads(line)["file"] for line in lines] == [LAMINA, FAN, CUBE]
 
 
-def test_a_bad_file_in_a_batch_does_not_stop_the_others(tmp_path):
+def test_a_bad_file_in_a_batch_does_not_stop_the_others(cli, tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("parts:\n  - {shape: box, size: [1, 1, 1], mass: true}\n")
-    r = run("inertia", LAMINA, str(bad), CUBE, "--json")
-    assert r.exit_code == 2
-    assert [json.loads(x)["file"] for x in r.stdout.splitlines()] == [LAMINA, CUBE]
-    assert f"rbcli: {bad}:2:41: " in r.stderr  # at the value true
+    r = cli("inertia", LAMINA, str(bad), CUBE, "--json")
+    assert r.code == 2
+    assert [json.loads(x)["file"] for x in r.out.splitlines()] == [LAMINA, CUBE]
+    assert f"rbcli: {bad}:2:41: " in r.err  # at the value true
 
 
-def test_stdin_and_expr():
+def test_stdin_and_expr(cli):
     text = Path(LAMINA).read_text()
-    j = js("inertia", "-", input=text)
+    j = cli("inertia", "-", "--json", input=text).json()
     assert j["file"] == "<stdin>" and j["inertia"][0][1] == pytest.approx(-0.25, rel=1e-12)
-    e = js("inertia", "-e", BOX)
+    e = cli("inertia", "-e", BOX, "--json").json()
     # box 0.1 x 0.2 x 0.3 of 2 kg about its centre: Ixx = m (b^2 + c^2)/12 = 2 (0.04 + 0.09)/12
     assert e["file"] == "<expr>" and e["inertia"][0][0] == pytest.approx(2 * 0.13 / 12, rel=1e-12)
 
 
 # --------------------------------------------------------------------------- tables
 
-def test_tables_are_deterministic_bytes():
+def test_tables_are_deterministic_bytes(cli):
     for args in (("inertia", LAMINA, "--axis", "1,1,0", "--omega", "1,2,3"), ("principal", FAN),
                  ("inertia", LAMINA, FAN, "--json"), ("principal", CUBE, "--json")):
-        assert run(*args).stdout == run(*args).stdout
+        assert cli(*args).out == cli(*args).out
 
 
-def test_digits():
-    six = run("inertia", LAMINA, "--axis", "1,1,0").stdout
-    three = run("inertia", LAMINA, "--axis", "1,1,0", "--digits", "3").stdout
+def test_digits(cli):
+    six = cli("inertia", LAMINA, "--axis", "1,1,0").out
+    three = cli("inertia", LAMINA, "--axis", "1,1,0", "--digits", "3").out
     assert "0.0833333" in six and "0.333333" in six  # 1/12 and 1/3 to six figures
     assert "0.0833 " in three and "0.0833333" not in three
 
 
-def test_display_units_convert_the_numbers():
-    out = run("inertia", LAMINA, "--about", "com", "--units", "mm,g").stdout
+def test_display_units_convert_the_numbers(cli):
+    out = cli("inertia", LAMINA, "--about", "com", "--units", "mm,g").out
     # 1/12 kg m^2 = 1000 g x 1e6 mm^2 / 12 = 8.33333e+07 g mm^2; the com 0.5 m = 500 mm
     assert "g·mm²" in out and "8.33333e+07" in out
     assert re.search(r"com x\s*\|\s*500\s*\|\s*mm", out)
-    js_mm = js("inertia", LAMINA, "--units", "mm,g")
+    js_mm = cli("inertia", LAMINA, "--units", "mm,g", "--json").json()
     assert js_mm["mass"] == 1.0  # JSON stays SI
 
 
-def test_products_positive_flips_the_signs_and_says_so():
-    tensor = run("inertia", LAMINA).stdout
-    positive = run("inertia", LAMINA, "--products", "positive").stdout
+def test_products_positive_flips_the_signs_and_says_so(cli):
+    tensor = cli("inertia", LAMINA).out
+    positive = cli("inertia", LAMINA, "--products", "positive").out
     # the tensor's entry is -1/4; the positive product Ixy = +integral(x y dm) = +1/4
     assert re.search(r"x\s*\|\s*0\.333333\s*\|\s*-0\.25", tensor)
     assert re.search(r"Ixy = \+∫xy dm\s*\|\s*0\.25\s*\|", positive)
     assert "positive products" in positive and "-0.25" not in positive
 
 
-def test_principal_table_says_the_symmetry():
-    assert "spherical" in run("principal", CUBE).stdout
-    fan = run("principal", FAN).stdout
+def test_principal_table_says_the_symmetry(cli):
+    assert "spherical" in cli("principal", CUBE).out
+    fan = cli("principal", FAN).out
     assert "asymmetric" in fan and "unstable" in fan
 
 
@@ -207,61 +178,65 @@ def test_principal_table_says_the_symmetry():
         (("inertia", LAMINA, "-e", BOX), "give either BODY files or -e/--expr, not both"),
     ],
 )
-def test_bad_input_exits_2_with_one_line(capsys, args, fragment):
-    code, out, err = main(capsys, *args)
+def test_bad_input_exits_2_with_one_line(cli, args, fragment):
+    r = cli(*args)
+    code, out, err = r.code, r.out, r.err
     assert code == 2 and out == ""
     assert fragment in err and err.count("\n") == 1 and "Traceback" not in err
 
 
-def test_tiny_axis_is_a_direction(capsys):
-    code, out, _ = main(capsys, "inertia", LAMINA, "--axis", "1e-320,1e-320,0", "--json")
+def test_tiny_axis_is_a_direction(cli):
+    r = cli("inertia", LAMINA, "--axis", "1e-320,1e-320,0", "--json")
+    code, out = r.code, r.out
     assert code == 0 and json.loads(out)["axis_moment"] == pytest.approx(1 / 12, rel=1e-12)
 
 
-def test_internal_error_exits_70_with_a_this_is_a_bug_line(capsys, monkeypatch):
+def test_internal_error_exits_70_with_a_this_is_a_bug_line(cli, monkeypatch):
     import rbcli.core.inertia as core
 
     def boom(*a, **k):
         raise RuntimeError("boom")  # not an arithmetic error (those are bad input, exit 2)
 
     monkeypatch.setattr(core, "inertia_report", boom)
-    code, out, err = main(capsys, "inertia", "-e", BOX)
-    assert code == 70
+    r = cli("inertia", "-e", BOX)
+    code, out, err = r.code, r.out, r.err
+    assert code == 70 and out == ""
     assert err.startswith("rbcli: internal error (RuntimeError: boom); this is a bug")
     assert err.count("\n") == 1 and "Traceback" not in err
 
 
-def test_ctrl_c_exits_130(capsys, monkeypatch):
+def test_ctrl_c_exits_130(cli, monkeypatch):
     import rbcli.core.inertia as core
 
     def interrupted(*a, **k):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(core, "inertia_report", interrupted)
-    code, _, err = main(capsys, "inertia", "-e", BOX)
+    r = cli("inertia", "-e", BOX)
+    code, err = r.code, r.err
     assert code == 130 and "Traceback" not in err
 
 
 # --------------------------------------------------------------------------- real processes
 
-def test_exit_codes_and_one_line_errors_in_a_real_process(tmp_path):
-    ok = proc("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0")
-    assert ok.returncode == 0 and "0.0833333" in ok.stdout and ok.stderr == ""
+def test_exit_codes_and_one_line_errors_in_a_real_process(cli_proc, tmp_path):
+    ok = cli_proc("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0", env=PIPE_ENV)
+    assert ok.code == 0 and "0.0833333" in ok.out and ok.err == ""
     bad = tmp_path / "bad.yaml"
     bad.write_text("parts:\n  - shape: box\n    size: [1, 1, 1]\n    mass: '3 m'\n")
-    r = proc("inertia", str(bad))
-    assert r.returncode == 2 and r.stdout == ""
-    assert r.stderr == f"rbcli: {bad}:4:11: part 'box1': mass: '3 m' is a length, but a mass is needed here (e.g. kg, g, lb)\n"
+    r = cli_proc("inertia", str(bad), env=PIPE_ENV)
+    assert r.code == 2 and r.out == ""
+    assert r.err == f"rbcli: {bad}:4:11: part 'box1': mass: '3 m' is a length, but a mass is needed here (e.g. kg, g, lb)\n"
 
 
-def test_stdin_in_a_real_process():
-    r = proc("principal", "-", "--json", input=Path(CUBE).read_text())
-    assert r.returncode == 0 and json.loads(r.stdout)["symmetry"] == "spherical"
+def test_stdin_in_a_real_process(cli_proc):
+    r = cli_proc("principal", "-", "--json", input=Path(CUBE).read_text(), env=PIPE_ENV)
+    assert r.code == 0 and r.json()["symmetry"] == "spherical"
 
 
-def test_no_ansi_escapes_in_a_pipe_or_with_no_color():
-    r = proc("inertia", "examples/cube.yaml")
-    assert r.returncode == 0 and not ANSI.search(r.stdout)
+def test_no_ansi_escapes_in_a_pipe_or_with_no_color(cli_proc):
+    r = cli_proc("inertia", "examples/cube.yaml", env=PIPE_ENV)
+    assert r.code == 0 and not ANSI.search(r.out)
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="needs a pseudo-terminal")
@@ -306,15 +281,15 @@ def test_a_closed_pipe_is_quiet():
         assert err == b"", err
 
 
-def test_version_help_and_python_m_rbcli():
+def test_version_help_and_python_m_rbcli(cli_proc):
     from rbcli import __version__
 
-    v = proc("--version")
-    assert v.returncode == 0 and v.stdout == f"rbcli {__version__}\n"
-    h = proc("--help")
-    assert h.returncode == 0 and "inertia" in h.stdout and "principal" in h.stdout
-    ih = proc("inertia", "--help")
-    assert ih.returncode == 0 and "--products" in ih.stdout and "--omega" in ih.stdout
+    v = cli_proc("--version", env=PIPE_ENV)
+    assert v.code == 0 and v.out == f"rbcli {__version__}\n"
+    h = cli_proc("--help", env=PIPE_ENV)
+    assert h.code == 0 and "inertia" in h.out and "principal" in h.out
+    ih = cli_proc("inertia", "--help", env=PIPE_ENV)
+    assert ih.code == 0 and "--products" in ih.out and "--omega" in ih.out
 
 
 def test_importing_the_cli_loads_no_heavy_modules():

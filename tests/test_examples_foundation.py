@@ -17,9 +17,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from typer.testing import CliRunner
-
-from rbcli.cli import app
 from rbcli.io.body import load_body
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -32,19 +29,27 @@ def _at_root(monkeypatch):
     monkeypatch.chdir(ROOT)  # the header commands name examples/... relative to the repo
 
 
-def run(*args: str) -> str:
-    r = CliRunner().invoke(app, list(args))
-    assert r.exit_code == 0, (args, r.stderr, r.exception)
-    return r.stdout
+@pytest.fixture
+def run(cli):
+    """``run(*args)``: standard output of ``rbcli ARGS`` (the conftest ``cli`` fixture), exit 0."""
+
+    def go(*args: str) -> str:
+        r = cli(*args)
+        assert r.code == 0, (args, r.err)
+        return r.out
+
+    return go
 
 
-def js(*args: str) -> dict:
-    return json.loads(run(*args, "--json"))
+@pytest.fixture
+def js(run):
+    """``js(*args)``: the JSON of ``rbcli ARGS --json``."""
+    return lambda *args: json.loads(run(*args, "--json"))
 
 
 # --------------------------------------------------------------------------- the five
 
-def test_square_lamina_about_a_corner():
+def test_square_lamina_about_a_corner(run, js):
     m, a = 1.0, 1.0  # the file: a 1 m square plate of 1 kg with a corner at the origin
     j = js("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0", "--omega", "1,0,0")
     course = m * a * a * np.array([[1 / 3, -1 / 4, 0], [-1 / 4, 1 / 3, 0], [0, 0, 2 / 3]])
@@ -58,11 +63,13 @@ def test_square_lamina_about_a_corner():
     p = js("principal", "examples/square_lamina.yaml", "--about", "origin")
     s = 1 / math.sqrt(2)
     np.testing.assert_allclose(p["axes"][0], [s, s, 0], atol=1e-12)  # along the diagonal
-    np.testing.assert_allclose(p["axes"][1], [s, -s, 0], atol=1e-12)  # across it
+    # across it, signed so that the axes are the rotation nearest the body axes (45° about z)
+    np.testing.assert_allclose(p["axes"][1], [-s, s, 0], atol=1e-12)
+    assert p["rotation_angle_deg"] == pytest.approx(45.0, rel=1e-12)
     np.testing.assert_allclose(p["moments"], [1 / 12, 7 / 12, 2 / 3], rtol=1e-12)
 
 
-def test_rectangular_block_about_a_corner():
+def test_rectangular_block_about_a_corner(js):
     m, a, b, c = 12.0, 0.3, 0.2, 0.1
     j = js("inertia", "examples/rectangular_block.yaml")
     # about a corner: Ixx = m (b^2 + c^2)/3; the tensor's Jxy = -m a b/4, Jxz = -m a c/4
@@ -71,7 +78,7 @@ def test_rectangular_block_about_a_corner():
     np.testing.assert_allclose(j["inertia"][0], want, rtol=1e-12)
 
 
-def test_cube_is_spherical():
+def test_cube_is_spherical(run, js):
     rho, a = 7850.0, 0.1
     m = rho * a**3  # 7.85 kg
     j = js("principal", "examples/cube.yaml")
@@ -80,7 +87,7 @@ def test_cube_is_spherical():
     assert "0.0130833" in run("principal", "examples/cube.yaml")  # m a^2/6 to six figures
 
 
-def test_two_blade_fan_principal_axes_at_45_degrees():
+def test_two_blade_fan_principal_axes_at_45_degrees(js):
     m, L = 0.5, 0.4
     j = js("principal", "examples/two_blade_fan.yaml")
     # about the com (L/4, L/4, 0): Jxx = Jyy = 5 m L^2/24, Jxy = +m L^2/8 (by hand), so
@@ -93,14 +100,14 @@ def test_two_blade_fan_principal_axes_at_45_degrees():
     np.testing.assert_allclose(j["axes"][0], [s, -s, 0], atol=1e-12)
 
 
-def test_two_blade_fan_header_claim_for_axis_1():
+def test_two_blade_fan_header_claim_for_axis_1(js):
     header = (ROOT / "examples" / "two_blade_fan.yaml").read_text()
     claim = re.search(r"axis 1 = \(([^)]*)\)", header).group(1)
     want = [float(x) for x in claim.split(",")]
     np.testing.assert_allclose(js("principal", "examples/two_blade_fan.yaml")["axes"][0], want, atol=1e-6)
 
 
-def test_bracket_in_shop_units():
+def test_bracket_in_shop_units(run, js):
     rho = 0.284  # lb/in^3
     # (volume in^3, centroid in): base 6 x 4 x 0.5, upright 0.5 x 4 x 3, two 0.5 in holes x 0.5 deep
     hole = math.pi * 0.25**2 * 0.5
@@ -144,9 +151,8 @@ HEADER_COMMANDS = _header_commands()
 
 
 @pytest.mark.parametrize("stem, args", HEADER_COMMANDS, ids=[f"{s}: {' '.join(a)}" for s, a in HEADER_COMMANDS])
-def test_every_command_in_an_example_header_runs(stem, args, tmp_path, monkeypatch):
+def test_every_command_in_an_example_header_runs(cli, stem, args, tmp_path):
     # run where examples/ resolves but any file a command writes (--plot, --apply) lands in tmp
     (tmp_path / "examples").symlink_to(ROOT / "examples", target_is_directory=True)
-    monkeypatch.chdir(tmp_path)
-    r = CliRunner().invoke(app, args)
-    assert r.exit_code in (0, 1), (args, r.stderr, r.exception)  # 1: a check the example asks for
+    r = cli(*args, cwd=tmp_path)
+    assert r.code in (0, 1), (args, r.err)  # 1: a check the example asks for

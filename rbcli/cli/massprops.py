@@ -19,33 +19,43 @@ between L and w, and the kinetic energy T = w.J.w/2. Several bodies at once: wit
 PRINCIPAL_HELP = """Principal moments and axes, symmetry, and which free rotations are stable.
 
 Moments ascending; row i of "axes" is the unit axis of moment i (body frame), a
-right-handed set; the first two axes have their largest component positive. Where
-moments coincide the free axes are said and chosen along the body axes where
-possible. Also the direction angles, the rotation from body to principal axes and
-the equivalent uniform box and ellipsoid.
+right-handed set whose signs make the rotation from body to principal axes the
+smallest one (a body tilted 0.5 degrees reads 0.5 degrees). Where moments coincide
+the free axes are said and chosen along the body axes where possible. Also the
+direction angles, the rotation from body to principal axes and the equivalent
+uniform box and ellipsoid.
 """
+
+
+#: the robot-description formats of ``inertia --format`` (rbcli.render.robot)
+ROBOT_FORMATS = ("urdf", "sdf", "mjcf")
+
+INERTIA_FORMAT_HELP = (
+    "Output: table (for people), json (= --json), csv (the tables, for spreadsheets), or the "
+    "body's <inertial> element for a robot model: urdf, sdf or mjcf (about the com, SI, full "
+    "precision; the frame is stated in a comment).")
 
 
 def reference(body, *, about: str | None = None):
     """(mass properties, point, label): the point the inertia is about — ``about`` (the
-    text of --about: com, origin or x,y,z), else the body's reference, else the origin."""
-    import numpy as np
-
+    text of --about: com, origin or x,y,z), else the body's reference, else the origin.
+    (For the report; the commands use :class:`rbcli.api.massprops.InertiaOptions`.)"""
+    from rbcli.api.massprops import Reference
     from rbcli.core.inertia import combine
 
     mp = combine(body.parts)
-    if about is not None:
-        p = c.point(about, "--about")
-        if p == "com":
-            return mp, mp.com, "the com"
-        if p == "origin":
-            return mp, np.zeros(3), "the origin"
-        return mp, np.array(p), f"[{about}]"
-    if body.reference_is_com:
-        return mp, mp.com, "the com"
-    if body.reference is not None:
-        return mp, body.reference, "the body's reference point"
-    return mp, np.zeros(3), "the origin"
+    ref = Reference.parse(body, about)
+    return mp, ref.resolve(mp), ref.label
+
+
+def with_file(data: dict, source: str) -> dict:
+    """A result's JSON with ``"file"`` after ``"name"``, as the command prints it."""
+    out = {}
+    for k, v in data.items():
+        out[k] = v
+        if k == "name":
+            out["file"] = source
+    return out
 
 
 @app.command(help=INERTIA_HELP)
@@ -57,31 +67,45 @@ def inertia(
     omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
     products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
     json_: bool = c.JsonOpt,
+    fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
+    principal_: bool = typer.Option(False, "--principal", help="With --format urdf|sdf|mjcf: the principal moments and the principal axes' orientation instead of the full tensor in body axes."),
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
+    from rbcli.api.options import choice
     from rbcli.errors import InputError
 
-    if products not in ("tensor", "positive"):
-        raise InputError(f"--products must be 'tensor' or 'positive', not '{products}'")
+    choice(products, "--products", ("tensor", "positive"))
+    out = c.output_format(json_, fmt, ROBOT_FORMATS)
+    if out in ROBOT_FORMATS:
+        given = [o for o, v in (("--about", about), ("--axis", axis), ("--omega", omega), ("--units", units)) if v is not None]
+        if given:
+            raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
+                             "always about the centre of mass, in SI units")
+    elif principal_:
+        raise InputError(f"--principal applies to --format urdf, sdf or mjcf, not to {out}")
     e = c.env()
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    n = c.direction(axis, "--axis") if axis is not None else None
-    w = c.vector(omega, "angular_speed", "--omega") if omega is not None else None
-    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, n, w, json_, du, digits, products, e, many))
+    from rbcli.api import massprops as api
+
+    api.InertiaOptions.parse(None, about=about, axis=axis, omega=omega)  # bad values: one line, before any body
+    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many),
+         sep="\n" if out == "csv" else "")
 
 
-def _run(bodies, expr, e, one) -> None:
+def _run(bodies, expr, e, one, sep: str = "") -> None:
     """Run ``one(body, many)`` per body; go on past bad files, exit 2 at the end if any failed.
 
     ``many`` is true when more than one body was named: ``--json`` then prints JSON Lines
-    (one compact object per body).
+    (one compact object per body). ``sep`` is written between two bodies' outputs (the
+    empty line between CSV blocks).
     """
     srcs = c.sources(bodies, expr)
     many = len(srcs) > 1
     failed = False
+    done = 0
     from rbcli.errors import InputError
 
     for src, body in c.each_body(srcs, expr, e):
@@ -94,7 +118,10 @@ def _run(bodies, expr, e, one) -> None:
             failed = True
             continue
         try:
+            if done and sep:
+                e.write(sep)
             one(body, many)
+            done += 1
         except InputError as exc:
             if len(srcs) == 1:
                 raise
@@ -104,25 +131,20 @@ def _run(bodies, expr, e, one) -> None:
         c.finish(2)
 
 
-def _option_for(param: str, about: str | None) -> str:
-    """The option (or body key) that an InputOverflow's ``param`` refers to."""
-    if param == "reference":
-        return "--about" if about is not None else "the body's reference point"
-    return f"--{param}"
-
-
-def _inertia_one(body, about, n, w, json_, du, digits, products, e, many: bool) -> None:
-    from rbcli.core.inertia import InputOverflow, inertia_report
-    from rbcli.errors import InputError
+def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool) -> None:
+    from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
-    mp, ref, label = reference(body, about=about)
-    try:
-        res = inertia_report(mp, ref, axis=n, omega=w)
-    except InputOverflow as exc:
-        raise InputError(f"{_option_for(exc.param, about)}: {exc}") from None
-    c.emit(e, json_, lambda: r.inertia_json(body, res),
-           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, label), lines=many)
+    res = api.run_inertia(body, api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
+    if out in ROBOT_FORMATS:
+        from rbcli.render import robot
+
+        res.to_json()  # the one finiteness check of the numbers
+        e.write(robot.render(out, body.name, body.source, res.inertial(principal_)))
+        return
+    c.emit(e, out, lambda: with_file(res.to_json(), body.source),
+           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
+           file=body.source if many else None)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -131,33 +153,30 @@ def principal(
     expr: str = c.ExprOpt,
     about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
+    out = c.output_format(json_, fmt)
     e = c.env()
     from rbcli.render.fmt import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, json_, du, digits, e, many))
+    from rbcli.api import massprops as api
+
+    api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
+    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, out, du, digits, e, many),
+         sep="\n" if out == "csv" else "")
 
 
-def _principal_one(body, about, json_, du, digits, e, many: bool) -> None:
-    import numpy as np
-
-    from rbcli.core.inertia import inertia_about
-    from rbcli.core.principal import principal_report
-    from rbcli.errors import InputError
+def _principal_one(body, about, out, du, digits, e, many: bool) -> None:
+    from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
-    mp, ref, label = reference(body, about=about)
-    with np.errstate(over="ignore", invalid="ignore"):
-        J = inertia_about(mp, ref)
-    if not np.all(np.isfinite(J)):
-        raise InputError(f"{_option_for('reference', about)}: the inertia about this point overflows: "
-                         "the point is too far from the body")
-    res = principal_report(mp.mass, J, ref)
-    c.emit(e, json_, lambda: r.principal_json(body, res),
-           lambda doc: r.principal_doc(doc, body, res, du, digits, label), lines=many)
+    res = api.run_principal(body, api.PrincipalOptions.parse(body, about=about))
+    c.emit(e, out, lambda: with_file(res.to_json(), body.source),
+           lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
+           file=body.source if many else None)
 
 
 MANUAL["inertia"] = {
@@ -166,6 +185,19 @@ MANUAL["inertia"] = {
         "(Ixy = -sum m x y). --products positive shows the positive engineering products "
         "instead, and says so. Tables use six significant figures (--digits) and SI units "
         "unless --units is given; JSON is always SI with full precision.",
+        "--format table (default), json (the same as --json) or csv (the tables, one block per "
+        "table; several bodies add a file column; layout in rbcli(1)).",
+        "--format urdf, sdf or mjcf prints the body's <inertial> element for a robot or "
+        "simulation model, after a comment that states its frame: the link frame is the body "
+        "frame; the position is the centre of mass (m); the inertia is about the centre of "
+        "mass, in kg m^2, at full precision (each number reads back to the same double). By "
+        "default it is the tensor in body axes (URDF and SDF ixy, ixz, iyz are the tensor's "
+        "entries, -sum m x y; MJCF fullinertia=\"ixx iyy izz ixy ixz iyz\") with no rotation. "
+        "With --principal it is the principal moments (ascending, as rbcli principal) and the "
+        "orientation of the principal axes: URDF <origin rpy> and SDF <pose> as fixed-axis "
+        "roll, pitch, yaw in rad (R = Rz(yaw) Ry(pitch) Rx(roll)), MJCF quat=\"w x y z\" with "
+        "diaginertia. --about, --axis, --omega and --units do not apply to these formats "
+        "(exit 2). Several bodies: one element per body, one after another.",
     ],
     "json": [
         ("mass", "total mass, kg."),
@@ -187,6 +219,10 @@ MANUAL["inertia"] = {
          "A box written inline; JSON for scripts."),
         ("rbcli inertia examples/*.yaml --json | jq .mass",
          "Several bodies at once: one JSON object per line."),
+        ("rbcli inertia examples/bracket.yaml --format urdf",
+         "The <inertial> element of a URDF link whose frame is the body frame."),
+        ("rbcli inertia examples/two_blade_fan.yaml --format mjcf --principal",
+         "MuJoCo: pos, quat (w x y z) of the principal axes and diaginertia (0.00666667, 0.0266667, 0.0333333)."),
     ],
 }
 
@@ -195,11 +231,17 @@ MANUAL["principal"] = {
         "Free rotation about the axes of the largest and the smallest principal moment is "
         "stable, about the intermediate one unstable (the tennis-racket flip). The equivalent "
         "uniform box and ellipsoid have the same mass and principal moments.",
+        "Signs of the axes: of the sign choices that keep the axes right-handed, the one "
+        "whose rotation from the body axes is smallest (largest trace of the axes matrix), so "
+        "a flywheel tilted 0.5 degrees has its axis 3 along +z tilted 0.5 degrees, and the "
+        "rotation reads 0.5 degrees. Where moments coincide, the free axes are also ordered "
+        "this way. Exact ties keep the first two axes with their largest component positive.",
     ],
     "json": [
         ("reference", "[3] the point the moments are about, m."),
         ("moments", "[3] principal moments, ascending, kg m^2."),
-        ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set."),
+        ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set "
+                 "(a rotation matrix) with the signs that make it the rotation nearest the body frame."),
         ("symmetry", "asymmetric, symmetric or spherical."),
         ("stable", "[3] whether free rotation about each axis is stable."),
         ("free_axes", "axes (1-based) that are free to choose where moments coincide."),

@@ -98,6 +98,23 @@ def inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
     return mp.inertia_com + shift_term(mp.mass, np.asarray(point, dtype=float) - mp.com)
 
 
+def checked_inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
+    """:func:`inertia_about`, refusing a point so far away that ``m d²`` overflows.
+
+    Raises
+    ------
+    InputOverflow
+        with ``param = "reference"``.
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        J = inertia_about(mp, point)
+    if not np.all(np.isfinite(J)):
+        raise InputOverflow(
+            "reference", "the inertia about this point overflows: the point is too far from the body"
+        )
+    return J
+
+
 def unit_vector(v: np.ndarray, what: str = "the axis") -> np.ndarray:
     """``v / |v|``, exact for tiny (1e-320) and huge components alike.
 
@@ -179,24 +196,6 @@ class InertiaResult:
     kinetic_energy: float | None = None
     angle_L_omega_deg: float | None = None
 
-    def to_json(self) -> dict:
-        out: dict = {
-            "mass": self.mass,
-            "com": self.com,
-            "reference": self.reference,
-            "inertia": self.inertia,
-            "inertia_com": self.inertia_com,
-        }
-        if self.axis is not None:
-            out["axis"] = self.axis
-            out["axis_moment"] = self.axis_moment
-        if self.omega is not None:
-            out["omega"] = self.omega
-            out["angular_momentum"] = self.angular_momentum
-            out["kinetic_energy"] = self.kinetic_energy
-            out["angle_L_omega_deg"] = self.angle_L_omega_deg
-        return out
-
 
 def angle_between_deg(a: np.ndarray, b: np.ndarray) -> float:
     """Angle between two vectors in degrees (0 when either is zero), by atan2 for accuracy."""
@@ -230,12 +229,7 @@ def inertia_report(
     (Goldstein §5.3, §5.4); about the com they are the spin parts of L and T.
     """
     ref = np.asarray(reference, dtype=float)
-    with np.errstate(over="ignore", invalid="ignore"):
-        J = inertia_about(mp, ref)
-    if not np.all(np.isfinite(J)):
-        raise InputOverflow(
-            "reference", "the inertia about this point overflows: the point is too far from the body"
-        )
+    J = checked_inertia_about(mp, ref)
     kw: dict = {}
     if axis is not None:
         try:

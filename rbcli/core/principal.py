@@ -1,10 +1,12 @@
 """Principal moments and axes of an inertia tensor, with deterministic conventions.
 
-Conventions (SPEC §3): moments ascending; rows of ``axes`` are the unit axes; each of
-the first two axes has its largest-magnitude component positive; the third completes
-a right-handed set. Where moments coincide (to a relative ``DEGENERATE_RTOL``) the
-eigenspace is a plane or all of space, and the axes are chosen aligned with the body
-axes where that is possible.
+Conventions: moments ascending; rows of ``axes`` are the unit axes, a right-handed set
+(``axes`` is a proper rotation matrix); their signs are chosen so that this rotation is
+the one nearest the body frame (largest trace, i.e. smallest rotation angle), so a body
+tilted 0.5° has principal axes 0.5° from its body axes (issue 13, item 6; this replaces
+SPEC §3's "largest component positive", which is kept only to break exact ties). Where
+moments coincide (to a relative ``DEGENERATE_RTOL``) the eigenspace is a plane or all of
+space, and the axes are chosen aligned with the body axes where that is possible.
 """
 
 from __future__ import annotations
@@ -24,7 +26,8 @@ class PrincipalAxes:
     ----------
     moments : (3,) ndarray — kg m^2, ascending
     axes : (3, 3) ndarray — row i is the unit axis of ``moments[i]`` (body frame);
-        ``axes`` is a proper rotation matrix (det +1) taking body to principal coordinates
+        ``axes`` is a proper rotation matrix (det +1) taking body to principal coordinates,
+        with signs making it the one nearest the identity
     symmetry : str — "asymmetric", "symmetric" or "spherical"
     unique_axis : int | None — for "symmetric", the index (0 or 2) of the moment that differs
     free_axes : tuple[int, ...] — indices of axes that are free to choose (a degenerate eigenspace)
@@ -96,27 +99,51 @@ def principal_axes(inertia: np.ndarray) -> PrincipalAxes:
         k = int(np.argmax(norms))
         a = _sign_fix(proj[k] / norms[k])
         b = _sign_fix(np.cross(n, a))
-        axes = np.empty((3, 3))
-        axes[u] = n
-        axes[pair[0]] = a
-        axes[pair[1]] = b
+        # the two free axes in either order (their moments are equal): the frame nearer
+        # the body frame wins, so a body tilted about one of its own axes reads as that tilt
+        best = None
+        for first, second in ((a, b), (b, a)):
+            axes = np.empty((3, 3))
+            axes[u] = n
+            axes[pair[0]] = first
+            axes[pair[1]] = second
+            axes = _right_handed(axes)
+            if best is None or np.trace(axes) > np.trace(best) + 1e-12:
+                best = axes
         pm = float(np.mean(w[list(pair)]))
         moments = w.copy()
         moments[list(pair)] = pm
-        axes = _right_handed(axes)
-        return PrincipalAxes(moments, axes, "symmetric", u, pair)
+        return PrincipalAxes(moments, best, "symmetric", u, pair)
     axes = np.array([_sign_fix(v[:, 0]), _sign_fix(v[:, 1]), np.zeros(3)])
     axes = _right_handed(axes)
     return PrincipalAxes(w.copy(), axes, "asymmetric", None, ())
 
 
+#: sign changes of the rows that keep a rotation proper (det +1)
+_PROPER_FLIPS = (np.array([1.0, -1.0, -1.0]), np.array([-1.0, 1.0, -1.0]), np.array([-1.0, -1.0, 1.0]))
+
+
 def _right_handed(axes: np.ndarray) -> np.ndarray:
+    """The rows of ``axes`` (unit axes, each up to sign) with signs making a proper rotation
+    nearest the identity.
+
+    Of the four sign choices with det +1, the one with the largest trace
+    (``trace R = 1 + 2 cos θ``: the smallest rotation angle θ from the body axes). Exact ties
+    (within 1e-12, e.g. axes that are the body axes permuted) keep the first candidate: the
+    first two axes with their largest component positive, the third their cross product.
+    """
     out = axes.copy()
     out[0] = _sign_fix(out[0])
     out[1] = _sign_fix(out[1])
     out[2] = np.cross(out[0], out[1])
     out[2] /= np.linalg.norm(out[2])  # unit to round-off, like the other two
-    return out
+    best, best_trace = out, float(np.trace(out))
+    for flip in _PROPER_FLIPS:
+        cand = out * flip[:, None]
+        tr = float(np.trace(cand))
+        if tr > best_trace + 1e-12:
+            best, best_trace = cand, tr
+    return best
 
 
 @dataclass(frozen=True)
@@ -154,6 +181,18 @@ class PrincipalResult:
         return self.axes_info.axes
 
     @property
+    def symmetry(self) -> str:
+        return self.axes_info.symmetry
+
+    @property
+    def unique_axis(self) -> int | None:
+        return self.axes_info.unique_axis
+
+    @property
+    def free_axes(self) -> tuple[int, ...]:
+        return self.axes_info.free_axes
+
+    @property
     def direction_angles_deg(self) -> np.ndarray:
         """(3, 3) angle of principal axis i from body axis j, degrees (by atan2, exact near 0°)."""
         a = self.axes
@@ -162,23 +201,6 @@ class PrincipalResult:
             others = [k for k in range(3) if k != j]
             out[:, j] = np.degrees(np.arctan2(np.linalg.norm(a[:, others], axis=1), a[:, j]))
         return out
-
-    def to_json(self) -> dict:
-        pa = self.axes_info
-        return {
-            "reference": self.reference,
-            "moments": pa.moments,
-            "axes": pa.axes,
-            "symmetry": pa.symmetry,
-            "stable": list(self.stable),
-            "mass": self.mass,
-            "free_axes": [i + 1 for i in pa.free_axes],
-            "direction_angles_deg": self.direction_angles_deg,
-            "rotation_axis": self.rotation_axis,
-            "rotation_angle_deg": self.rotation_angle_deg,
-            "equivalent_box": self.equivalent_box,
-            "equivalent_ellipsoid": self.equivalent_ellipsoid,
-        }
 
 
 def matrix_to_axis_angle(R: np.ndarray) -> tuple[np.ndarray, float]:

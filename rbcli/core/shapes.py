@@ -24,12 +24,12 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
-from typing import Any
+from dataclasses import dataclass, field
+from typing import Any, NamedTuple
 
 import numpy as np
 
-__all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "SHAPES", "geometry"]
+__all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "Kind", "SHAPES", "IO_SHAPES", "geometry"]
 
 
 class ShapeError(ValueError):
@@ -82,23 +82,20 @@ class ShapeGeometry:
         object.__setattr__(self, "com", _frozen(self.com))
         object.__setattr__(self, "unit_inertia", _frozen(self.unit_inertia))
 
-    def unit_inertia_about(self, point: Any = (0.0, 0.0, 0.0)) -> np.ndarray:
-        """Inertia per unit mass about ``point`` (local frame, m), local axes — m².
 
-        Parallel-axis theorem: ``I_P = I_c + (|d|² E − d dᵀ)`` with ``d = com − P``.
-        The default ``point`` is the local origin.
-        """
-        d = self.com - np.asarray(point, dtype=float)
-        return self.unit_inertia + (float(d @ d) * np.eye(3) - np.outer(d, d))
+class Kind(NamedTuple):
+    """What a shape parameter holds, for the loader and the schema.
 
-    def to_json(self) -> dict[str, Any]:
-        """Plain-Python form: ``measure``, ``measure_kind``, ``com`` (m), ``unit_inertia`` (m²)."""
-        return {
-            "measure": float(self.measure),
-            "measure_kind": self.measure_kind,
-            "com": [float(x) for x in self.com],
-            "unit_inertia": [[float(x) for x in row] for row in self.unit_inertia],
-        }
+    ``name``: ``"length"`` (one length), ``"lengths"`` (a vector of ``n`` positive
+    lengths), ``"points"`` (``n`` points x, y, z) or ``"bool"``.
+    """
+
+    name: str
+    n: int = 1
+
+
+LENGTH = Kind("length")
+BOOL = Kind("bool")
 
 
 @dataclass(frozen=True)
@@ -115,6 +112,14 @@ class ShapeInfo:
     density_keys : str — which density keys make sense, as human text
     origin : str — where the local origin is
     formulas : str — the formulas, plain text, m = mass
+    kinds : mapping — the :class:`Kind` of each parameter that is not a single length
+    round : str or None — ``"z"``: round about local z (a wheel's rim can be one);
+        ``"any"``: round about every axis through its centre (a sphere); None: not round
+    outer_radius : callable or None — ``outer_radius(params) -> m``, the largest distance of
+        the shape from its local z axis, for a round shape
+
+    A new shape is one entry in :data:`SHAPES` and its builder in ``_BUILDERS``: the loader,
+    the schema, the catalogue and ``rollcheck``'s rim search read these facts from here.
     """
 
     name: str
@@ -125,6 +130,28 @@ class ShapeInfo:
     density_keys: str
     origin: str
     formulas: str
+    kinds: Mapping[str, Kind] = field(default_factory=dict)
+    round: str | None = None
+    outer_radius: Callable[[Mapping[str, Any]], float] | None = None
+
+    def __post_init__(self) -> None:
+        unknown = set(self.kinds) - {*self.required, *self.optional}
+        if unknown:  # pragma: no cover - a mistake in the table below
+            raise ValueError(f"shape {self.name!r}: kinds for unknown parameters {sorted(unknown)}")
+        if (self.round is None) != (self.outer_radius is None):  # pragma: no cover
+            raise ValueError(f"shape {self.name!r}: a round shape has an outer radius, and only it")
+
+    def kind(self, param: str) -> Kind:
+        """The :class:`Kind` of parameter ``param`` (a single length unless said)."""
+        return self.kinds.get(param, LENGTH)
+
+    def radius(self, params: Mapping[str, Any]) -> float | None:
+        """The outer radius (m) of a round shape with these (checked, SI) parameters, else None."""
+        return None if self.outer_radius is None else float(self.outer_radius(params))
+
+
+def _radius(p: Mapping[str, Any]) -> float:
+    return float(p["radius"])
 
 
 SHAPES: dict[str, ShapeInfo] = {
@@ -143,26 +170,31 @@ SHAPES: dict[str, ShapeInfo] = {
             "ring", "thin hoop in the local xy plane", ("radius",), (), "length",
             "linear_density", "centroid (centre of the hoop)",
             "Izz = m R²; Ixx = Iyy = m R²/2; length 2πR",
+            round="z", outer_radius=_radius,
         ),
         ShapeInfo(
             "disk", "thin disk or annulus in the local xy plane", ("radius",),
             ("inner_radius",), "area", "areal_density", "centroid (centre)",
             "Izz = m(R² + r²)/2; Ixx = Iyy = m(R² + r²)/4; area π(R² − r²)",
+            round="z", outer_radius=_radius,
         ),
         ShapeInfo(
             "plate", "thin rectangle a x b in local x, y; with thickness t a box",
             ("size",), ("thickness",), "area",
             "areal_density (or density with thickness > 0)", "centroid",
             "Ixx = m(b² + t²)/12; Iyy = m(a² + t²)/12; Izz = m(a² + b²)/12 (t = 0 if thin)",
+            kinds={"size": Kind("lengths", 2)},
         ),
         ShapeInfo(
             "triangle", "thin triangular lamina", ("vertices",), (), "area",
             "areal_density", "the frame the vertices are given in (com = centroid)",
             "C = (1/12) Σ dᵢdᵢᵀ (dᵢ = vertex − centroid); I = m(tr(C) E − C)",
+            kinds={"vertices": Kind("points", 3)},
         ),
         ShapeInfo(
             "box", "solid cuboid a x b x c", ("size",), (), "volume", "density",
             "centroid", "Ixx = m(b² + c²)/12; Iyy = m(a² + c²)/12; Izz = m(a² + b²)/12",
+            kinds={"size": Kind("lengths", 3)},
         ),
         ShapeInfo(
             "cylinder", "solid cylinder or tube along local z; shell: true for a thin wall",
@@ -170,39 +202,46 @@ SHAPES: dict[str, ShapeInfo] = {
             "density (or areal_density with shell: true)", "centroid",
             "solid/tube: Izz = m(R² + r²)/2, Ixx = Iyy = m(3(R² + r²) + L²)/12; "
             "shell (no end caps): Izz = m R², Ixx = Iyy = m(R²/2 + L²/12)",
+            kinds={"shell": BOOL}, round="z", outer_radius=_radius,
         ),
         ShapeInfo(
             "sphere", "solid or hollow sphere; shell: true for a thin shell", ("radius",),
             ("inner_radius", "shell"), "volume",
             "density (or areal_density with shell: true)", "centroid",
             "solid/hollow: I = (2/5) m (R⁵ − r⁵)/(R³ − r³); shell: I = (2/3) m R²",
+            kinds={"shell": BOOL}, round="any", outer_radius=_radius,
         ),
         ShapeInfo(
             "hemisphere", "solid hemisphere, dome towards +z", ("radius",), (), "volume",
             "density", "centre of the flat face",
             "com z = 3R/8; about the com: Izz = (2/5) m R², Ixx = Iyy = (83/320) m R²; "
             "about the origin: Ixx = Iyy = Izz = (2/5) m R²",
+            round="z", outer_radius=_radius,
         ),
         ShapeInfo(
             "cone", "solid right circular cone, apex at +z", ("radius", "height"), (),
             "volume", "density", "centre of the base",
             "com z = h/4; about the com: Izz = (3/10) m R², "
             "Ixx = Iyy = m(3R²/20 + 3h²/80); about the origin: Ixx = Iyy = m(3R²/20 + h²/10)",
+            round="z", outer_radius=_radius,
         ),
         ShapeInfo(
             "ellipsoid", "solid ellipsoid with semi-axes a, b, c along local x, y, z",
             ("semi_axes",), (), "volume", "density", "centroid",
             "Ixx = m(b² + c²)/5; Iyy = m(a² + c²)/5; Izz = m(a² + b²)/5; volume 4πabc/3",
+            kinds={"semi_axes": Kind("lengths", 3)},
         ),
         ShapeInfo(
             "torus", "solid torus (tyre, O-ring) about local z", ("major_radius", "minor_radius"),
             (), "volume", "density", "centroid",
             "Izz = m(R² + 3r²/4); Ixx = Iyy = m(R²/2 + 5r²/8); volume 2π²Rr²",
+            round="z", outer_radius=lambda p: float(p["major_radius"]) + float(p["minor_radius"]),
         ),
     )
 }
 
-_IO_SHAPES = {
+#: the shapes the body loader builds itself (not primitives): name -> what it is
+IO_SHAPES = {
     "mesh": "a mesh file",
     "given": "given mass properties",
     "include": "an included body file",
@@ -517,15 +556,15 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     ``(R⁵ − r⁵)/(R³ − r³)`` is evaluated as ``R²(1 + q + … + q⁴)/(1 + q + q²)`` with
     ``q = r/R`` so it stays accurate as the wall gets thin.
     """
-    if shape in _IO_SHAPES:
+    if shape in IO_SHAPES:
         raise ShapeError(
             "shape",
-            f"shape {shape!r} ({_IO_SHAPES[shape]}) is handled by the body loader, "
+            f"shape {shape!r} ({IO_SHAPES[shape]}) is handled by the body loader, "
             "not by the primitive-shape geometry",
         )
     info = SHAPES.get(shape) if isinstance(shape, str) else None
     if info is None:
-        known = ", ".join([*SHAPES, *_IO_SHAPES])
+        known = ", ".join([*SHAPES, *IO_SHAPES])
         raise ShapeError("shape", f"unknown shape {shape!r}; the shapes are: {known}")
     allowed = (*info.required, *info.optional)
     for key in params:

@@ -46,21 +46,7 @@ DENSITY_FOR = {
     "length": "linear_density",
 }
 COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
-#: the kind of each shape parameter: "length", "lengths" (a vector), "points" (3x3), "bool"
-PARAM_KINDS: dict[str, str] = {
-    "radius": "length",
-    "inner_radius": "length",
-    "length": "length",
-    "height": "length",
-    "thickness": "length",
-    "major_radius": "length",
-    "minor_radius": "length",
-    "size": "lengths",
-    "semi_axes": "lengths",
-    "vertices": "points",
-    "shell": "bool",
-}
-SPECIAL_SHAPES = ("mesh", "given", "include")
+SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not by core.shapes
 GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", *PLACEMENT_KEYS)
 INCLUDE_KEYS = ("name", "shape", "file", *PLACEMENT_KEYS)
 MESH_KEYS = (
@@ -480,15 +466,14 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
             continue
         vnode = m.items[key][1]
         nodes[key] = vnode
-        kind = PARAM_KINDS.get(key, "length")
-        if kind == "length":
+        kind = info.kind(key)
+        if kind.name == "length":
             params[key] = _number(ctx, vnode, "length", key)
-        elif kind == "lengths":
-            n = 2 if shape == "plate" else 3
-            params[key] = _vector(ctx, vnode, "length", key, n=n)
-        elif kind == "points":
+        elif kind.name == "lengths":
+            params[key] = _vector(ctx, vnode, "length", key, n=kind.n)
+        elif kind.name == "points":
             params[key] = _matrix(ctx, vnode, "length", key)
-        elif kind == "bool":
+        elif kind.name == "bool":
             params[key] = _bool(ctx, vnode, key)
     try:
         geo = shp.geometry(shape, **params)
@@ -517,7 +502,7 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
         inertia_com=J,
         measure=measure,
         measure_kind=geo.measure_kind,
-        radius=_outer_radius(shape, params),
+        radius=info.radius(params),
         axis=R[:, 2].copy(),
         where=ctx.where(m),
         outline=_outline(shape, params, at, R),
@@ -546,14 +531,6 @@ def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> N
             f"{what}: its mass ({how}) is {mass:.3g} kg, too large; "
             "numbers are limited to 1e60 in SI units",
         )
-
-
-def _outer_radius(shape: str, params: dict) -> float | None:
-    if shape == "torus":
-        return float(params["major_radius"]) + float(params["minor_radius"])  # type: ignore[arg-type]
-    if shape in ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone"):
-        return float(params["radius"])  # type: ignore[arg-type]
-    return None
 
 
 def _given(ctx, m, name, prefix, known) -> Part:

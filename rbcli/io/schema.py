@@ -24,13 +24,13 @@ def _vec(n: int) -> dict:
 
 
 def _param_schema(key: str, shape: str) -> dict:
-    kind = b.PARAM_KINDS.get(key, "length")
-    if kind == "length":
+    kind = SHAPES[shape].kind(key)
+    if kind.name == "length":
         return {"$ref": "#/definitions/quantity"}
-    if kind == "lengths":
-        return _vec(2 if shape == "plate" else 3)  # plate size [a, b]; box size, semi_axes [a, b, c]
-    if kind == "points":
-        return {"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3}
+    if kind.name == "lengths":
+        return _vec(kind.n)  # plate size [a, b]; box size, semi_axes [a, b, c]
+    if kind.name == "points":
+        return {"type": "array", "items": _vec(3), "minItems": kind.n, "maxItems": kind.n}
     return {"type": "boolean"}
 
 

@@ -1,47 +1,21 @@
-"""Tables and JSON for ``inertia`` and ``principal``."""
+"""Tables for ``inertia`` and ``principal`` (the JSON is the results' ``to_json()``).
+
+The functions take a result of :mod:`rbcli.api.massprops` (``InertiaResult``,
+``PrincipalResult``); the report also passes :mod:`rbcli.core` results, which have the
+same attributes.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 
-from rbcli.core.inertia import InertiaResult
-from rbcli.core.principal import PrincipalResult
+from typing import Any
+
 from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num, snap
 from rbcli.render.text import Doc
 
 AXES = ("x", "y", "z")
-
-
-def part_rows(body: Body) -> list[dict]:
-    """Each part's contribution, for JSON (mass is negative for a subtracted part)."""
-    rows = []
-    for p in body.parts:
-        row = {"name": p.name, "shape": p.shape, "mass": p.signed_mass, "com": p.com}
-        if p.subtract:
-            row["subtract"] = True
-        for key in ("volume", "area", "triangles"):
-            if key in p.extra:
-                row[key] = p.extra[key]
-        rows.append(row)
-    return rows
-
-
-def header(body: Body) -> dict:
-    return {"name": body.name, "file": body.source}
-
-
-def inertia_json(body: Body, r: InertiaResult) -> dict:
-    out = r.to_json()
-    out["inertia"] = snap(out["inertia"])
-    out["inertia_com"] = snap(out["inertia_com"])
-    return {**out, **header(body), "parts": part_rows(body)}
-
-
-def principal_json(body: Body, r: PrincipalResult) -> dict:
-    out = r.to_json()
-    out["axes"] = snap(out["axes"], scale=1.0, rtol=1e-15)
-    return {**out, **header(body), "parts": part_rows(body)}
 
 
 def has_mesh(body: Body) -> bool:
@@ -96,11 +70,7 @@ def _matrix(doc: Doc, title: str, J, du: DisplayUnits, digits: int, products: st
     doc.note("(the tensor: off-diagonal entries are −∫xy dm; --products positive shows +∫xy dm)")
 
 
-def _where(p) -> str:
-    return "origin" if not np.any(p) else ""
-
-
-def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits: int, products: str,
+def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, products: str,
                 ref_label: str, *, parts: bool = True) -> None:
     """The tables of ``rbcli inertia``; ``parts=False`` leaves out the parts table (the
     report has its own, with each part's contribution)."""
@@ -147,11 +117,10 @@ def inertia_doc(doc: Doc, body: Body, r: InertiaResult, du: DisplayUnits, digits
         doc.kv(f"rotation about {ref_label}", rows)
 
 
-def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, digits: int, ref_label: str,
+def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, ref_label: str,
                   *, parts: bool = True) -> None:
     """The tables of ``rbcli principal``; ``parts=False`` leaves out the mesh parts table
     (the report has its own parts table, with the mesh facts)."""
-    pa = r.axes_info
     doc.heading(f"{body.name}  ({body.source})")
     f, unit = du.factor("inertia")
     rows = []
@@ -160,8 +129,8 @@ def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, di
         rows.append(
             (
                 str(i + 1),
-                num(pa.moments[i] * f, digits),
-                ", ".join(num(x, digits) for x in snap(pa.axes[i], scale=1.0, rtol=1e-15)),
+                num(r.moments[i] * f, digits),
+                ", ".join(num(x, digits) for x in snap(r.axes[i], scale=1.0, rtol=1e-15)),
                 ", ".join(num(x, 4) for x in angles[i]),
                 "stable" if r.stable[i] else "unstable",
             )
@@ -189,16 +158,15 @@ def principal_doc(doc: Doc, body: Body, r: PrincipalResult, du: DisplayUnits, di
         mesh_table(doc, body, du, digits)
 
 
-def symmetry_sentence(r: PrincipalResult) -> str:
-    pa = r.axes_info
-    if pa.symmetry == "spherical":
+def symmetry_sentence(r: Any) -> str:
+    if r.symmetry == "spherical":
         return (
             "spherical: all three moments are equal, so every axis through the point is "
             "principal (the axes shown are the body axes); rotation about any axis is steady."
         )
-    if pa.symmetry == "symmetric":
-        u = (pa.unique_axis or 0) + 1
-        a, b = (i + 1 for i in pa.free_axes)
+    if r.symmetry == "symmetric":
+        u = (r.unique_axis or 0) + 1
+        a, b = (i + 1 for i in r.free_axes)
         kind = "oblate (flattened, like a disk)" if u == 3 else "prolate (elongated, like a rod)"
         return (
             f"symmetric about axis {u}: moments {a} and {b} are equal, so every axis at right "

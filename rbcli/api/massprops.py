@@ -1,0 +1,448 @@
+"""Mass properties: :func:`inertia` and :func:`principal` (``rbcli inertia``, ``rbcli principal``).
+
+::
+
+    import rbcli
+    body = rbcli.load("examples/square_lamina.yaml")
+    r = rbcli.inertia(body, about="origin", axis=[1, 1, 0])
+    r.axis_moment            # kg m^2, about the diagonal through the corner
+    p = rbcli.principal(body)
+    p.moments, p.axes        # ascending, rows = unit axes in the body frame
+
+Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
+off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
+
+numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from rbcli.api import options as o
+from rbcli.api.result import Result, jsonable
+from rbcli.errors import ParamError
+
+__all__ = [
+    "Reference", "InertiaOptions", "InertiaResult", "inertia", "PrincipalOptions",
+    "PrincipalResult", "principal", "part_rows", "snap",
+]
+
+
+# ----------------------------------------------------------------------------- shared
+
+
+@dataclass(frozen=True)
+class Reference:
+    """The point an inertia is taken about, as the user gave it (resolved once).
+
+    Attributes
+    ----------
+    point : tuple of 3 floats, or None
+        m, body frame; None means the body's centre of mass (known only once the parts are
+        combined).
+    label : str
+        How tables name it: ``"the com"``, ``"the origin"``, ``"the body's reference
+        point"`` or ``"[x,y,z]"`` (the text as given).
+    param : str
+        The parameter at fault if the point is impossible to compute with: ``"about"``
+        (given) or ``"body_reference"`` (the body's default).
+    """
+
+    point: tuple[float, float, float] | None
+    label: str
+    param: str
+
+    @classmethod
+    def parse(cls, body: Any, about: o.Value | None, *, default: str = "body") -> "Reference":
+        """``about`` (``"com"``, ``"origin"``, ``"x,y,z"`` or a sequence, m), else the
+        default: ``"body"`` = the body's ``reference`` (``com``, a point), else the
+        origin; ``"com"`` = the com. ``body`` None (values checked before a body is read):
+        the origin."""
+        if about is not None:
+            p = o.point(about, "--about")
+            if p == "com":
+                return cls(None, "the com", "about")
+            if p == "origin":
+                return cls((0.0, 0.0, 0.0), "the origin", "about")
+            text = about if isinstance(about, str) else ", ".join(str(x) for x in _items(about))
+            return cls(tuple(float(x) for x in p), f"[{text}]", "about")  # type: ignore[arg-type]
+        if default == "com" or (body is not None and body.reference_is_com):
+            return cls(None, "the com", "body_reference")
+        if body is not None and body.reference is not None:
+            return cls(tuple(float(x) for x in body.reference), "the body's reference point",  # type: ignore[arg-type]
+                       "body_reference")
+        return cls((0.0, 0.0, 0.0), "the origin", "body_reference")
+
+    def resolve(self, mp: Any) -> Any:
+        """The point as a (3,) ndarray, m, given the body's mass properties ``mp``."""
+        import numpy as np
+
+        return mp.com.copy() if self.point is None else np.array(self.point, dtype=float)
+
+
+def _items(v: Any) -> list:
+    return v.tolist() if hasattr(v, "tolist") else list(v)
+
+
+def snap(values: Any, scale: float | None = None, rtol: float = 1e-14) -> Any:
+    """``values`` as a float ndarray with entries below ``rtol`` times the largest magnitude
+    (or ``scale``) set to exactly 0 (round-off, e.g. a product of inertia of 1e-18 next to
+    moments of 1): what JSON and tables show."""
+    import numpy as np
+
+    a = np.array(values, dtype=float)
+    s = float(np.max(np.abs(a))) if scale is None else scale
+    a[np.abs(a) <= rtol * s] = 0.0
+    a[a == 0.0] = 0.0  # no negative zeros
+    return a
+
+
+def part_rows(body: Any) -> tuple[dict, ...]:
+    """Each part's contribution, as in JSON: name, shape, mass (kg; negative for a subtracted
+    part), com (m), ``subtract: true`` for a hole, and for a mesh part its volume (m³), area
+    (m²) and triangles."""
+    rows = []
+    for p in body.parts:
+        row: dict = {"name": p.name, "shape": p.shape, "mass": p.signed_mass, "com": p.com}
+        if p.subtract:
+            row["subtract"] = True
+        for key in ("volume", "area", "triangles"):
+            if key in p.extra:
+                row[key] = p.extra[key]
+        rows.append(row)
+    return tuple(rows)
+
+
+def _inertia_at(mp: Any, ref: Reference) -> tuple[Any, Any]:
+    """(point, inertia tensor about it): core's overflow blamed on the right parameter."""
+    from rbcli.core.inertia import InputOverflow, checked_inertia_about
+
+    point = ref.resolve(mp)
+    try:
+        return point, checked_inertia_about(mp, point)
+    except InputOverflow as exc:
+        raise ParamError(ref.param, str(exc)) from None
+
+
+# ----------------------------------------------------------------------------- inertia
+
+
+@dataclass(frozen=True)
+class InertiaOptions:
+    """What :func:`inertia` was asked, parsed and checked once.
+
+    Attributes
+    ----------
+    reference : Reference — the point the tensor is about
+    axis : tuple of 3 floats, or None — a direction (largest component ±1), body frame
+    omega : tuple of 3 floats, or None — rad/s, body frame
+    """
+
+    reference: Reference
+    axis: tuple[float, float, float] | None = None
+    omega: tuple[float, float, float] | None = None
+
+    @classmethod
+    def parse(cls, body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
+              omega: o.Value | None = None) -> "InertiaOptions":
+        """Read the keyword arguments of :func:`inertia` (SI numbers, sequences, or strings
+        as typed on the command line).
+
+        Raises
+        ------
+        rbcli.InputError
+            with the command line's message (``--axis: ...``).
+        """
+        ref = Reference.parse(body, about)
+        n = tuple(o.direction(axis, "--axis")) if axis is not None else None
+        w = tuple(o.vector(omega, "angular_speed", "--omega")) if omega is not None else None
+        return cls(ref, n, w)  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class InertiaResult(Result):
+    """Mass, centre of mass and the inertia tensor about a point (``rbcli inertia``).
+
+    Attributes
+    ----------
+    name : str — the body's name
+    mass : float — kg
+    com : (3,) ndarray — m, body frame
+    reference : (3,) ndarray — m, the point ``inertia`` is about
+    reference_label : str — how tables name that point (``"the com"``, ...)
+    inertia : (3, 3) ndarray — kg m², about ``reference``, body axes, tensor convention
+    inertia_com : (3, 3) ndarray — kg m², about the com
+    axis : (3,) ndarray or None — the unit axis asked for (through ``reference``)
+    axis_moment : float or None — kg m², ``n·J·n``
+    omega : (3,) ndarray or None — rad/s
+    angular_momentum : (3,) ndarray or None — kg m²/s, ``L = J ω`` about ``reference``
+    kinetic_energy : float or None — J, ``ω·J·ω/2``
+    angle_L_omega_deg : float or None — degrees between L and ω
+    parts : tuple of dict — each part's contribution (see :func:`part_rows`)
+    warnings : tuple of str — none for this command
+
+    Methods: ``to_json()`` (the command's JSON less ``"file"``) and ``inertial(principal)``
+    (the numbers of a URDF/SDF/MJCF ``<inertial>`` element).
+    """
+
+    name: str
+    mass: float
+    com: Any
+    reference: Any
+    reference_label: str
+    inertia: Any
+    inertia_com: Any
+    axis: Any = None
+    axis_moment: float | None = None
+    omega: Any = None
+    angular_momentum: Any = None
+    kinetic_energy: float | None = None
+    angle_L_omega_deg: float | None = None
+    parts: tuple[dict, ...] = ()
+    warnings: tuple[str, ...] = field(default=())
+
+    def to_json(self) -> dict[str, Any]:
+        """What ``rbcli inertia BODY --json`` prints, less ``"file"`` (SI)."""
+        out: dict[str, Any] = {
+            "mass": self.mass,
+            "com": self.com,
+            "reference": self.reference,
+            "inertia": snap(self.inertia),
+            "inertia_com": snap(self.inertia_com),
+        }
+        if self.axis is not None:
+            out["axis"] = self.axis
+            out["axis_moment"] = self.axis_moment
+        if self.omega is not None:
+            out["omega"] = self.omega
+            out["angular_momentum"] = self.angular_momentum
+            out["kinetic_energy"] = self.kinetic_energy
+            out["angle_L_omega_deg"] = self.angle_L_omega_deg
+        out["name"] = self.name
+        out["parts"] = list(self.parts)
+        return jsonable(out)
+
+    def inertial(self, principal: bool = False) -> Any:
+        """The numbers of the body's ``<inertial>`` element for URDF, SDF or MJCF.
+
+        Parameters
+        ----------
+        principal : bool
+            False: the tensor about the com in body axes (exactly ``inertia_com`` of
+            ``to_json()``); True: the principal moments about the com (ascending, as
+            :func:`principal` gives them) and the principal axes' orientation.
+
+        Returns
+        -------
+        rbcli.core.inertial.Inertial
+            ``mass`` (kg), ``com`` (m), ``inertia`` (kg m², in the inertial frame),
+            ``rotation`` (columns: the inertial frame's axes in the body frame),
+            ``quat_wxyz`` and ``rpy`` (rad, fixed-axis roll-pitch-yaw) of that rotation.
+            ``rbcli.render.robot.render("urdf", name, source, inertial)`` writes the XML
+            that ``rbcli inertia --format urdf`` prints.
+        """
+        from rbcli.core.inertial import inertial
+
+        J = self.inertia_com if principal else snap(self.inertia_com)
+        return inertial(self.mass, self.com, J, principal=principal)
+
+
+def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
+    """:func:`inertia` with options already parsed."""
+    import numpy as np
+
+    from rbcli.core import inertia as ci
+
+    mp = ci.combine(body.parts)
+    point = options.reference.resolve(mp)
+    try:
+        res = ci.inertia_report(
+            mp, point,
+            axis=np.array(options.axis) if options.axis is not None else None,
+            omega=np.array(options.omega) if options.omega is not None else None)
+    except ci.InputOverflow as exc:
+        raise ParamError(options.reference.param if exc.param == "reference" else exc.param,
+                         str(exc)) from None
+    return InertiaResult(
+        name=body.name, mass=res.mass, com=res.com, reference=res.reference,
+        reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,
+        axis=res.axis, axis_moment=res.axis_moment, omega=res.omega,
+        angular_momentum=res.angular_momentum, kinetic_energy=res.kinetic_energy,
+        angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body))
+
+
+def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
+            omega: o.Value | None = None) -> InertiaResult:
+    """Mass, centre of mass and the inertia tensor about a point; optionally the moment about
+    an axis through it and the angular momentum and kinetic energy of a rotation.
+
+    Parameters
+    ----------
+    body : rbcli.Body
+        From :func:`rbcli.load` or :func:`rbcli.load_text`.
+    about : str or sequence of 3, optional
+        The point: ``"com"``, ``"origin"``, or x, y, z in m (``[0.5, 0.5, 0]``, or a string
+        with a unit: ``"10,0,5 mm"``). Default: the body's ``reference`` (``com`` or a
+        point), else the origin.
+    axis : str or sequence of 3, optional
+        A direction x, y, z (any length) or ``"x"``, ``"y"``, ``"z"``: gives
+        ``axis_moment = n·J·n`` about the axis through the point.
+    omega : str or sequence of 3, optional
+        Angular velocity, rad/s (or ``"0,0,300 rpm"``): gives ``L = J ω``,
+        ``T = ω·J·ω/2`` and the angle between L and ω (rotation about the point).
+
+    Returns
+    -------
+    InertiaResult
+        ``to_json()`` is what ``rbcli inertia BODY --json`` prints, less ``"file"``.
+
+    Raises
+    ------
+    rbcli.InputError
+        A bad value, with the command line's message (``--about: ...``); a point so far
+        away that the inertia overflows (a :class:`rbcli.ParamError`).
+
+    Notes
+    -----
+    Parallel axes (Huygens–Steiner): ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G``;
+    ``L`` and ``T`` about a fixed point P: Goldstein, *Classical Mechanics*, §5.3–5.4.
+    """
+    return run_inertia(body, InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
+
+
+# ----------------------------------------------------------------------------- principal
+
+
+@dataclass(frozen=True)
+class PrincipalOptions:
+    """What :func:`principal` was asked, parsed once.
+
+    Attributes
+    ----------
+    reference : Reference — the point the moments are about (default the com)
+    """
+
+    reference: Reference
+
+    @classmethod
+    def parse(cls, body: Any, *, about: o.Value | None = "com") -> "PrincipalOptions":
+        """Read ``about`` (``"com"``, ``"origin"``, x, y, z in m; None = the com)."""
+        return cls(Reference.parse(body, about, default="com"))
+
+
+@dataclass(frozen=True)
+class PrincipalResult(Result):
+    """Principal moments and axes about a point (``rbcli principal``).
+
+    Attributes
+    ----------
+    name : str — the body's name
+    mass : float — kg
+    reference : (3,) ndarray — m, the point the moments are about
+    reference_label : str — how tables name it
+    moments : (3,) ndarray — kg m², ascending
+    axes : (3, 3) ndarray — row i is the unit axis of ``moments[i]`` (body frame); a proper
+        rotation matrix taking body to principal coordinates
+    symmetry : str — ``"asymmetric"``, ``"symmetric"`` or ``"spherical"``
+    unique_axis : int or None — for ``"symmetric"``, the index (0 or 2) of the moment that
+        differs
+    free_axes : tuple of int — 0-based indices of the axes free to choose (equal moments)
+    stable : tuple of 3 bool — is free rotation about each axis stable
+    direction_angles_deg : (3, 3) ndarray — degrees, principal axis i from body axis j
+    rotation_axis : (3,) ndarray — unit axis of the rotation taking body to principal axes
+    rotation_angle_deg : float — its angle, degrees
+    equivalent_box : (3,) ndarray — m, sides along axes 1, 2, 3 of the uniform box with the
+        same mass and principal moments
+    equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same uniform ellipsoid
+    parts : tuple of dict — each part's contribution (see :func:`part_rows`)
+    warnings : tuple of str — none for this command
+    """
+
+    name: str
+    mass: float
+    reference: Any
+    reference_label: str
+    moments: Any
+    axes: Any
+    symmetry: str
+    unique_axis: int | None
+    free_axes: tuple[int, ...]
+    stable: tuple[bool, bool, bool]
+    direction_angles_deg: Any
+    rotation_axis: Any
+    rotation_angle_deg: float
+    equivalent_box: Any
+    equivalent_ellipsoid: Any
+    parts: tuple[dict, ...] = ()
+    warnings: tuple[str, ...] = field(default=())
+
+    def to_json(self) -> dict[str, Any]:
+        """What ``rbcli principal BODY --json`` prints, less ``"file"`` (SI)."""
+        return jsonable({
+            "reference": self.reference,
+            "moments": self.moments,
+            "axes": snap(self.axes, scale=1.0, rtol=1e-15),
+            "symmetry": self.symmetry,
+            "stable": list(self.stable),
+            "mass": self.mass,
+            "free_axes": [i + 1 for i in self.free_axes],
+            "direction_angles_deg": self.direction_angles_deg,
+            "rotation_axis": self.rotation_axis,
+            "rotation_angle_deg": self.rotation_angle_deg,
+            "equivalent_box": self.equivalent_box,
+            "equivalent_ellipsoid": self.equivalent_ellipsoid,
+            "name": self.name,
+            "parts": list(self.parts),
+        })
+
+
+def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
+    """:func:`principal` with options already parsed."""
+    from rbcli.core.inertia import combine
+    from rbcli.core.principal import principal_report
+
+    mp = combine(body.parts)
+    point, J = _inertia_at(mp, options.reference)
+    pr = principal_report(mp.mass, J, point)
+    pa = pr.axes_info
+    return PrincipalResult(
+        name=body.name, mass=pr.mass, reference=pr.reference,
+        reference_label=options.reference.label, moments=pa.moments, axes=pa.axes,
+        symmetry=pa.symmetry, unique_axis=pa.unique_axis, free_axes=tuple(pa.free_axes),
+        stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
+        rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
+        equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
+        parts=part_rows(body))
+
+
+def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:
+    """Principal moments and axes, symmetry, stability of free rotation and the equivalent
+    uniform box and ellipsoid.
+
+    Parameters
+    ----------
+    body : rbcli.Body
+    about : str or sequence of 3
+        ``"com"`` (default), ``"origin"``, or x, y, z in m (or ``"10,0,5 mm"``).
+
+    Returns
+    -------
+    PrincipalResult
+        Moments ascending; ``axes`` rows are the unit axes, a right-handed set;
+        ``to_json()`` is what ``rbcli principal BODY --json`` prints, less ``"file"``.
+
+    Raises
+    ------
+    rbcli.InputError
+        A bad ``about`` (message ``--about: ...``), or a point so far away that the inertia
+        overflows.
+
+    Notes
+    -----
+    Free rotation about the axes of the largest and smallest moment is stable, about the
+    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37).
+    """
+    return run_principal(body, PrincipalOptions.parse(body, about=about))
+
