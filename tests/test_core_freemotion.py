@@ -19,6 +19,7 @@ from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 from rbcli.core import freemotion as fm
+from rbcli.core.elliptic import jacobi_reduced
 from rbcli.core.freemotion import (
     CASE_MAX,
     CASE_MIN,
@@ -429,7 +430,7 @@ def test_scipy_ellipj_would_fail_near_m_1():
     mc = 1e-10
     K = float(ellipkm1(mc))
     assert abs(ellipj(2 * K, 1 - mc)[1] + 1) > 0.5
-    sn, cn, dn, *_ = fm._jacobi(np.array([2 * K]), K, 1 - mc, mc)
+    sn, cn, dn, *_ = jacobi_reduced(np.array([2 * K]), K, 1 - mc, mc)
     assert abs(cn[0] + 1) < 1e-14 and abs(sn[0]) < 1e-14 and abs(dn[0] - 1) < 1e-14
 
 
@@ -440,7 +441,7 @@ def test_jacobi_matches_scipy_where_scipy_is_accurate(mc):
     m = 1 - mc
     K = float(elliprf(0, mc, 1))
     tau = np.linspace(-2 * K, 2 * K, 2001)
-    sn, cn, dn, *_ = fm._jacobi(tau, K, m, mc)
+    sn, cn, dn, *_ = jacobi_reduced(tau, K, m, mc)
     s2, c2, d2, _ = ellipj(tau, m)
     # scipy's own accuracy degrades like eps/(1 - m) near m = 1 (m rounding): 1e-15/mc
     tol = max(1e-14, 1e-16 / mc * 10)
@@ -459,13 +460,13 @@ def test_jacobi_identities_near_m_1(mc):
     m = 1 - mc
     K = float(elliprf(0, mc, 1))
     kp = math.sqrt(mc)
-    sn, cn, dn, *_ = fm._jacobi(np.array([0.5 * K, K]), K, m, mc)
+    sn, cn, dn, *_ = jacobi_reduced(np.array([0.5 * K, K]), K, m, mc)
     assert rel(sn[0], 1 / math.sqrt(1 + kp)) < 1e-15
     assert rel(dn[0], math.sqrt(kp)) < 1e-14  # a few ulp
     assert rel(dn[1], kp) < 1e-12 and abs(cn[1]) < 1e-13 * kp and sn[1] == 1.0
     u = np.linspace(-K, K, 4001)
-    s, c, d, *_ = fm._jacobi(u, K, m, mc)
-    s2, *_ = fm._jacobi(2 * u, K, m, mc)
+    s, c, d, *_ = jacobi_reduced(u, K, m, mc)
+    s2, *_ = jacobi_reduced(2 * u, K, m, mc)
     # 1 - m sn^4 written as cn^2 (1 + sn^2) + mc sn^4, free of cancellation near u = +-K
     dup = 2 * s * c * d / (c * c * (1 + s * s) + mc * s**4)
     # a few ulp of each factor, amplified by at most ~10 in the quotient

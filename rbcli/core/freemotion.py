@@ -31,6 +31,8 @@ from typing import Any
 
 import numpy as np
 
+from rbcli.core.elliptic import ellipk, ellippi, ellippi_sc
+from rbcli.core.elliptic import jacobi_reduced as _jacobi
 from rbcli.core.principal import principal_axes
 
 __all__ = [
@@ -164,91 +166,6 @@ def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
     R[..., 2, 1] = 2 * (y * z + w * x)
     R[..., 2, 2] = 1 - 2 * (x * x + y * y)
     return R
-
-
-# ----------------------------------------------------------------------------------------
-# Jacobi elliptic functions from the complementary parameter, and Carlson forms
-# ----------------------------------------------------------------------------------------
-
-
-def _sncndn_half(u: np.ndarray, m: float, mc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """sn, cn, dn(u | m) for 0 <= u <= K/2, from m AND its complement mc = 1 - m.
-
-    * mc > 1e-4: the AGM / descending Landen scheme (A&S 16.4) started from b0 = sqrt(mc)
-      (``scipy.special.ellipj`` starts from sqrt(1 - m) with m rounded, which fails as
-      m -> 1), with ``dn = sqrt(cn^2 + mc sn^2)``.
-    * mc <= 1e-4: one ascending Landen (Gauss) step (A&S 16.14) to the parameter
-      mu = 1 - r^2, r = (1 - k)/(1 + k) = mc/(1 + k)^2, then the m -> 1 expansions
-      (A&S 16.15) whose error O(r^4 e^{4v}) is below round-off for v <= K/2. The AGM loses
-      ~eps/sqrt(k') in cn near K/2 (an asin of an argument near 1); this route does not.
-    """
-    if mc > 1e-4:
-        a = [1.0]
-        c = [math.sqrt(m)]
-        b = math.sqrt(mc)
-        while abs(c[-1]) > np.finfo(float).eps * a[-1] and len(a) < 64:
-            an = 0.5 * (a[-1] + b)
-            cn_ = 0.5 * (a[-1] - b) if len(a) == 1 else c[-1] * c[-1] / (4.0 * an)
-            b = math.sqrt(a[-1] * b)
-            a.append(an)
-            c.append(cn_)
-        n = len(a) - 1
-        phi = (2.0**n) * a[n] * u
-        for i in range(n, 0, -1):
-            phi = 0.5 * (np.arcsin(np.clip(c[i] * np.sin(phi) / a[i], -1.0, 1.0)) + phi)
-        sn = np.sin(phi)
-        cn = np.cos(phi)
-        return sn, cn, np.sqrt(cn * cn + mc * sn * sn)
-    k = math.sqrt(m)
-    r = mc / (1.0 + k) ** 2
-    mu1 = r * r
-    mu = 1.0 - mu1
-    v = u / (1.0 + r)
-    th = np.tanh(v)
-    e = np.exp(-v)
-    sech = 2.0 * e / (1.0 + e * e)
-    shch = 0.5 * np.sinh(2.0 * v)
-    snv = th + 0.25 * mu1 * (shch - v) * sech * sech
-    cnv = sech - 0.25 * mu1 * (shch - v) * th * sech
-    dnv = sech + 0.25 * mu1 * (shch + v) * th * sech
-    sn = (1.0 + r) * snv * cnv / dnv
-    cn = ((1.0 + r) / mu) * (dnv * dnv - r) / dnv
-    dn = ((1.0 - r) / mu) * (dnv * dnv + r) / dnv
-    return sn, cn, dn
-
-
-def _jacobi(tau: np.ndarray, K: float, m: float, mc: float) -> tuple[np.ndarray, ...]:
-    """sn, cn, dn(tau | m) for tau in [-2K, 2K], with the half-period reduction.
-
-    Returns ``sn, cn, dn, j, snu, cnu`` where ``tau = u + 2 K j`` with |u| <= K and
-    ``snu = sn(u)``, ``cnu = cn(u) >= 0`` (so ``am(u) = atan2(snu, cnu)`` is in [-pi/2, pi/2]
-    and ``am(tau) = am(u) + j pi``).  On (K/2, K] the values come from ``u' = K - u`` through
-    ``sn = cn'/dn'``, ``cn = k' sn'/dn'``, ``dn = k'/dn'`` (A&S 16.8), which keeps cn and dn
-    accurate where they are small.
-    """
-    j = np.rint(tau / (2.0 * K))
-    u = tau - 2.0 * K * j
-    sgn = np.where(u < 0.0, -1.0, 1.0)
-    w = np.minimum(np.abs(u), K)
-    near = w > 0.5 * K
-    w2 = np.where(near, K - w, w)
-    s, c, d = _sncndn_half(w2, m, mc)
-    kp = math.sqrt(mc)
-    snu = sgn * np.where(near, c / d, s)
-    cnu = np.where(near, kp * s / d, c)
-    dn = np.where(near, kp / d, d)
-    par = np.where(np.mod(j, 2.0) == 0.0, 1.0, -1.0)
-    return par * snu, par * cnu, dn, j, snu, cnu
-
-
-def _pi_u(n: float, snu: np.ndarray, cnu: np.ndarray, dnu: np.ndarray) -> np.ndarray:
-    """Pi(n; phi | m) for |phi| <= pi/2 from sin, cos phi and sqrt(1 - m sin^2 phi) (Carlson)."""
-    from scipy.special import elliprf, elliprj
-
-    c2 = cnu * cnu
-    d2 = dnu * dnu
-    s2 = snu * snu
-    return snu * elliprf(c2, d2, 1.0) + (n / 3.0) * snu * s2 * elliprj(c2, d2, 1.0, 1.0 - n * s2)
 
 
 def _big_phase(j: np.ndarray, per: float) -> np.ndarray:
@@ -735,25 +652,23 @@ def analyse(
     m = min(max(m, 0.0), 1.0)
     mc = min(max(mc, 0.0), 1.0)
 
-    from scipy.special import elliprf, elliprj
-
-    K = float(elliprf(0.0, mc, 1.0))
-    # tau0 = F(phi0 | m), phi0 = atan2(y, x), through Carlson with the half-turn reduction
+    K = ellipk(m, mc)
+    # tau0 = F(phi0 | m), phi0 = atan2(y, x), with the half-turn reduction; from sin and cos
+    # of phi0 (= Pi(0; phi0 | m)) so that a small cos keeps its digits near the separatrix
     r = math.hypot(x, y)
     sr, cr = y / r, x / r
     jf = 0.0
     if cr < 0.0:
         jf = 1.0 if sr >= 0.0 else -1.0
         sr, cr = -sr, -cr
-    tau0 = sr * float(elliprf(cr * cr, cr * cr + mc * sr * sr, 1.0)) + 2.0 * K * jf
+    tau0 = float(ellippi_sc(0.0, sr, cr, m, mc)) + 2.0 * K * jf
     period = 4.0 * K / lam
-    pi_c = float(elliprf(0.0, mc, 1.0) + (n / 3.0) * elliprj(0.0, mc, 1.0, 1.0 - n))
+    pi_c = ellippi(n, m, mc)
     coeff = sig * G * (I3 - I1) / (lam * I1 * I3)
     dphi = (G / Ic) * period + 4.0 * coeff * pi_c
 
     _, _, _, j0, snu0, cnu0 = _jacobi(np.array([tau0]), K, m, mc)
-    dnu0 = np.sqrt(cnu0 * cnu0 + mc * snu0 * snu0)
-    pi_tau0 = float(_pi_u(n, snu0, cnu0, dnu0)[0] + 2.0 * j0[0] * pi_c)
+    pi_tau0 = float(ellippi_sc(n, snu0, cnu0, m, mc)[0] + 2.0 * j0[0] * pi_c)
 
     q_left, q_right = _frame_quaternions(Mp, G, perm, axes)
     ell = EllipticSolution(
@@ -1053,7 +968,7 @@ def _phi_parts(
         r = math.sqrt(-el.n)
         local = el._G / motion.moments[1] * t + el.coeff * (np.arctan(r * st["tanh"]) - el._pi_tau0)
         return np.zeros_like(t), local
-    pi_tau = _pi_u(el.n, st["snu"], st["cnu"], st["dnu"]) + 2.0 * st["j2"] * el.pi_complete
+    pi_tau = ellippi_sc(el.n, st["snu"], st["cnu"], el.m, el.mc) + 2.0 * st["j2"] * el.pi_complete
     local = (el._G / el._Ic) * (st["taur"] - el.tau0) / el.lam + el.coeff * (pi_tau - el._pi_tau0)
     return st["j4"], local
 
