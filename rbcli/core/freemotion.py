@@ -34,6 +34,12 @@ import numpy as np
 from rbcli.core.elliptic import ellipk, ellippi, ellippi_sc
 from rbcli.core.elliptic import jacobi_reduced as _jacobi
 from rbcli.core.principal import principal_axes
+from rbcli.core.rotation import quat_about_axis as _qaxis
+from rbcli.core.rotation import quat_canonical as _qcanon
+from rbcli.core.rotation import quat_conjugate as _qconj
+from rbcli.core.rotation import quat_from_matrix as _quat_from_matrix
+from rbcli.core.rotation import quat_multiply as _qmul
+from rbcli.core.rotation import quat_to_matrix
 
 __all__ = [
     "CASE_REST",
@@ -51,7 +57,6 @@ __all__ = [
     "omega_at",
     "attitude_at",
     "precession_angle_at",
-    "quaternion_to_matrix",
     "verify",
 ]
 
@@ -78,94 +83,8 @@ _TINY = float(np.finfo(float).tiny / np.finfo(float).eps)
 
 
 # ----------------------------------------------------------------------------------------
-# quaternion helpers ([w, x, y, z], scalar first)
+# helpers
 # ----------------------------------------------------------------------------------------
-
-
-def _qmul(p: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Hamilton product ``p q`` of quaternion arrays (..., 4), broadcasting."""
-    p = np.asarray(p, dtype=float)
-    q = np.asarray(q, dtype=float)
-    pw, px, py, pz = p[..., 0], p[..., 1], p[..., 2], p[..., 3]
-    qw, qx, qy, qz = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    return np.stack(
-        [
-            pw * qw - px * qx - py * qy - pz * qz,
-            pw * qx + px * qw + py * qz - pz * qy,
-            pw * qy - px * qz + py * qw + pz * qx,
-            pw * qz + px * qy - py * qx + pz * qw,
-        ],
-        axis=-1,
-    )
-
-
-def _qconj(q: np.ndarray) -> np.ndarray:
-    out = np.array(q, dtype=float, copy=True)
-    out[..., 1:] *= -1.0
-    return out
-
-
-def _qaxis(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
-    """Quaternions (N, 4) of rotations by ``angle`` (N,) about the unit ``axis`` (3,)."""
-    half = 0.5 * np.asarray(angle, dtype=float)
-    s = np.sin(half)
-    return np.concatenate([np.cos(half)[:, None], s[:, None] * np.asarray(axis)[None, :]], axis=1)
-
-
-def _qcanon(q: np.ndarray) -> np.ndarray:
-    """Normalise and choose the sign with ``w >= 0``."""
-    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
-    return np.where(q[..., :1] < 0.0, -q, q)
-
-
-def _quat_from_matrix(R: np.ndarray) -> np.ndarray:
-    """Quaternion (4,) of a proper rotation matrix (Shepperd's method, stable for any R)."""
-    R = np.asarray(R, dtype=float)
-    tr = R[0, 0] + R[1, 1] + R[2, 2]
-    cands = [tr, R[0, 0], R[1, 1], R[2, 2]]
-    k = int(np.argmax(cands))
-    if k == 0:
-        w = 0.5 * math.sqrt(max(1.0 + tr, 0.0))
-        q = [w, (R[2, 1] - R[1, 2]) / (4 * w), (R[0, 2] - R[2, 0]) / (4 * w),
-             (R[1, 0] - R[0, 1]) / (4 * w)]
-    else:
-        i = k - 1
-        j, m = (i + 1) % 3, (i + 2) % 3
-        v = 0.5 * math.sqrt(max(1.0 + R[i, i] - R[j, j] - R[m, m], 0.0))
-        q = [0.0, 0.0, 0.0, 0.0]
-        q[0] = (R[m, j] - R[j, m]) / (4 * v)
-        q[1 + i] = v
-        q[1 + j] = (R[j, i] + R[i, j]) / (4 * v)
-        q[1 + m] = (R[m, i] + R[i, m]) / (4 * v)
-    out = np.array(q)
-    return _qcanon(out)
-
-
-def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
-    """Rotation matrices of quaternions.
-
-    Parameters
-    ----------
-    q : (..., 4) array_like — ``[w, x, y, z]``, scalar first (normalised here)
-
-    Returns
-    -------
-    (..., 3, 3) ndarray — ``R(q)``, with ``R v = q v q*``
-    """
-    q = np.asarray(q, dtype=float)
-    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
-    w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    R = np.empty(q.shape[:-1] + (3, 3))
-    R[..., 0, 0] = 1 - 2 * (y * y + z * z)
-    R[..., 0, 1] = 2 * (x * y - w * z)
-    R[..., 0, 2] = 2 * (x * z + w * y)
-    R[..., 1, 0] = 2 * (x * y + w * z)
-    R[..., 1, 1] = 1 - 2 * (x * x + z * z)
-    R[..., 1, 2] = 2 * (y * z - w * x)
-    R[..., 2, 0] = 2 * (x * z - w * y)
-    R[..., 2, 1] = 2 * (y * z + w * x)
-    R[..., 2, 2] = 1 - 2 * (x * x + y * y)
-    return R
 
 
 def _big_phase(j: np.ndarray, per: float) -> np.ndarray:
@@ -1101,7 +1020,7 @@ def verify(
     w_num = sol.y[:3].T
     R_num = sol.y[3:].T.reshape(-1, 3, 3)
     w_ex = omega_at(motion, ts)
-    R_ex = quaternion_to_matrix(attitude_at(motion, ts))
+    R_ex = quat_to_matrix(attitude_at(motion, ts))
 
     wmag = np.linalg.norm(w_ex, axis=1)
     omega_err = float(np.max(np.linalg.norm(w_ex - w_num, axis=1) / np.where(wmag > 0, wmag, 1.0)))

@@ -70,7 +70,9 @@ def state_at(motion: fm.FreeMotion, t: float) -> dict:
     s = float(np.linalg.norm(v))
     angle = 2.0 * math.atan2(s, abs(float(q[0])))
     axis = None if s == 0.0 else (np.sign(q[0]) if q[0] != 0 else 1.0) * v / s
-    R = fm.quaternion_to_matrix(q)
+    from rbcli.core.rotation import quat_to_matrix
+
+    R = quat_to_matrix(q)
     return {
         "t": float(t),
         "omega": w[0].tolist(),
