@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.precess import DEFAULT_SAMPLES
 from rbcli.cli import common as c
 from rbcli.cli.app import MANUAL, app
 
@@ -52,12 +53,6 @@ VERIFY_HELP = (
     "more than 1e-8."
 )
 
-#: --samples default and limit
-DEFAULT_SAMPLES = 1001
-MAX_SAMPLES = 10_000_000
-#: the phase of the motion at time t is known to about eps * rate * |t| rad (t itself is a
-#: double); beyond this rate * |t| it would be known to worse than 0.1 rad
-MAX_PHASE = 1e15
 
 
 @app.command(help=HELP)
@@ -75,6 +70,7 @@ def precess(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
+    from rbcli.api import precess as api
     from rbcli.errors import InputError
     from rbcli.render.fmt import DisplayUnits
 
@@ -82,98 +78,48 @@ def precess(
     du = DisplayUnits.parse(units)
 
     # --- option values, checked before the body is read (bad usage is bad usage)
-    if omega is None:
-        raise InputError(
-            "--omega: the initial angular velocity is required: x,y,z in the body frame, "
-            "e.g. --omega 0,0,10 (rad/s) or --omega '0,0,300 rpm'"
-        )
-    w = c.vector(omega, "angular_speed", "--omega")  # finite, or an InputError
-    t_at = c.finite(c.quantity(at, "time", "--at"), "--at") if at is not None else None
-    span = None
-    if duration is not None:
-        span = c.finite(c.quantity(duration, "time", "--duration"), "--duration")
-        if not span > 0.0:
-            raise InputError(f"--duration: must be a positive time, got '{duration}'")
-    n_rows = None
-    if samples is not None:
-        n_rows = _count(samples)
-        if csv is None:
-            raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE and --duration T")
+    opts = api.PrecessOptions.parse(None, omega=omega, at=at, duration=duration, samples=samples,
+                                    verify=verify)
+    if samples is not None and csv is None:
+        raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE and --duration T")
     if csv is not None:
-        if span is None:
+        if opts.duration is None:
             raise InputError("--csv: needs --duration T, the span of the time series (from t = 0)")
         if csv == "-" and json_:
             raise InputError("--csv -: the time series would go to standard output, so it cannot be combined with --json; write it to a file")
-        if n_rows is None:
-            n_rows = DEFAULT_SAMPLES
-    elif span is not None and plot is None:
+    elif opts.duration is not None and plot is None:
         raise InputError("--duration: sets the span of --csv or --plot; add one of them")
 
     # --- the body, and the output paths checked before any computing
     b = c.load_one(body, expr, e)
     plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
 
-    from rbcli.core import freemotion as fm
     from rbcli.render import precess as rp
 
-    motion = prepare(b, omega=w)
-    rate = rp.fastest_rate(motion)
-    for t, opt in ((t_at, "--at"), (span, "--duration")):
-        if t is not None and rate * abs(t) > MAX_PHASE:
-            raise InputError(
-                f"{opt}: {t:.6g} s is about {rate * abs(t) / (2 * 3.141592653589793):.3g} turns "
-                "away; the phase of the motion there is not determined by a double-precision "
-                f"time (keep rate x |t| below {MAX_PHASE:.0e} rad)"
-            )
-
-    state = rp.state_at(motion, t_at) if t_at is not None else None
-    check = fm.verify(motion) if verify else None
+    result = api.run(b, opts)
     csv_info = None
     if csv is not None:
-        csv_info = {"file": csv, "samples": n_rows, "duration": span}
-        blocks = rp.csv_blocks(motion, span, n_rows)
-        c.write_csv(e, csv_path, rp.CSV_HEADER, blocks)  # csv_path None: standard output
+        csv_info = {"file": csv, "samples": opts.samples or api.DEFAULT_SAMPLES, "duration": opts.duration}
+        c.write_csv(e, csv_path, rp.CSV_HEADER, result.series_blocks())  # csv_path None: stdout
     if plot_path is not None:
-        c.save_plot(rp.plot(b, motion, span, du), plot_path)
+        c.save_plot(rp.plot(b, result.motion, opts.duration, du), plot_path)
 
-    extras = rp.Extras(at=state, verify=check, csv=csv_info, plot=str(plot_path) if plot_path else None)
-    if csv == "-":
-        pass  # the time series is the output
-    else:
-        c.emit(e, json_, lambda: rp.to_json(b, motion, extras),
-               lambda doc: rp.document(doc, b, motion, extras, du, digits))
-    if check is not None and not check.ok:
-        c.finish(1)
+    def data() -> dict:
+        out = {}
+        for k, v in result.to_json().items():
+            out[k] = v
+            if k == "name":
+                out["file"] = b.source
+        if csv_info is not None:
+            out["csv"] = csv_info
+        if plot_path is not None:
+            out["plot"] = str(plot_path)
+        return out
 
-
-def prepare(body, *, omega):
-    """The exact torque-free motion of a body from ``omega`` [x, y, z] (rad/s, body frame);
-    shared with report. A core ValueError is an InputError naming the body file (its
-    inertia) or --omega."""
-    import numpy as np
-
-    from rbcli.core import freemotion as fm
-    from rbcli.core.inertia import combine
-    from rbcli.errors import InputError
-
-    mp = combine(body.parts)
-    try:
-        return fm.analyse(mp.inertia_com, np.array(omega, dtype=float))
-    except ValueError as exc:
-        where = body.source if str(exc).startswith("inertia") else "--omega"
-        raise InputError(f"{where}: {exc}") from None
-
-
-def _count(text: str) -> int:
-    from rbcli.errors import InputError
-
-    try:
-        n = int(text.strip())
-    except ValueError:
-        raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got '{text}'") from None
-    if not 2 <= n <= MAX_SAMPLES:
-        raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got {n}")
-    return n
+    if csv != "-":  # with --csv - the time series is the output
+        c.emit(e, json_, data, lambda doc: rp.document(
+            doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None))
+    c.finish(result.return_code)
 
 
 MANUAL["precess"] = {

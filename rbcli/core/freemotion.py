@@ -33,6 +33,7 @@ import numpy as np
 
 from rbcli.core.elliptic import ellipk, ellippi, ellippi_sc
 from rbcli.core.elliptic import jacobi_reduced as _jacobi
+from rbcli.core.inertia import InputOverflow
 from rbcli.core.principal import principal_axes
 from rbcli.core.rotation import quat_about_axis as _qaxis
 from rbcli.core.rotation import quat_canonical as _qcanon
@@ -251,6 +252,14 @@ class FreeMotion:
         """True for a symmetric or spherical body (two or three equal principal moments)."""
         return self.symmetry != "asymmetric"
 
+    def at(self, t: Any) -> Any:
+        """The exact state at ``t`` (s; a number or an array): a
+        :class:`rbcli.core.freestate.FreeState` with ``omega``, ``angular_momentum`` (body
+        frame, at t), ``quaternion`` (body -> space) and ``rotation_matrix``."""
+        from rbcli.core.freestate import evaluate
+
+        return evaluate(self, t)
+
     def to_json(self) -> dict[str, Any]:
         """Plain-JSON form (SI, degrees under ``*_deg``); every key always present, null = n/a.
 
@@ -403,7 +412,9 @@ def analyse(
     Raises
     ------
     ValueError
-        shapes wrong, non-finite numbers, or a principal moment <= 0.
+        shapes wrong; :class:`rbcli.core.inertia.InputOverflow` (a ValueError whose
+        ``param`` is ``"inertia"`` or ``"omega"``) for non-finite numbers, a principal
+        moment <= 0, or an omega whose |L|^2 or energy overflows or underflows.
 
     Notes
     -----
@@ -438,8 +449,10 @@ def analyse(
         raise ValueError(f"inertia must be a 3x3 tensor, got shape {J.shape}")
     if w0.shape != (3,):
         raise ValueError(f"omega must have 3 components, got shape {w0.shape}")
-    if not (np.all(np.isfinite(J)) and np.all(np.isfinite(w0))):
-        raise ValueError("inertia and omega must be finite")
+    if not np.all(np.isfinite(J)):
+        raise InputOverflow("inertia", "inertia and omega must be finite")
+    if not np.all(np.isfinite(w0)):
+        raise InputOverflow("omega", "inertia and omega must be finite")
     J = 0.5 * (J + J.T)
     pa = principal_axes(J)
     moments = np.array(pa.moments, dtype=float)
@@ -447,7 +460,8 @@ def analyse(
     symmetry = pa.symmetry
     unique = pa.unique_axis
     if not moments[0] > 0.0:
-        raise ValueError(
+        raise InputOverflow(
+            "inertia",
             "inertia must be positive definite: the smallest principal moment is "
             f"{moments[0]:.6g} kg m^2 (a point mass or a thin rod has no free rotation about "
             "its own axis)"
@@ -479,12 +493,14 @@ def analyse(
     # (Found through the CLI: |omega| = 1e200 rad/s overflowed |omega| and was classified
     # "rest"; 1e-300 underflowed G^2 and divided by zero.)
     if not (math.isfinite(wn) and math.isfinite(G2) and math.isfinite(2.0 * T * float(moments[2]))):
-        raise ValueError(
+        raise InputOverflow(
+            "omega",
             "omega is too large for this body: |L|^2 or the kinetic energy overflows double "
             "precision"
         )
     if bool(np.any(w0 != 0.0)) and not (G2 >= _TINY and T > 0.0):
-        raise ValueError(
+        raise InputOverflow(
+            "omega",
             "omega is too small for this body: |L|^2 or the kinetic energy underflows double "
             "precision"
         )
