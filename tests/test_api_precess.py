@@ -39,7 +39,7 @@ def test_to_json_is_the_cli_json(cli, name, omega):
     assert list(r.json())[list(r.json()).index("name") + 1] == "file"  # where the CLI puts it
 
 
-@pytest.mark.parametrize("name", ["book", "frisbee", "rectangular_block", "earth"])
+@pytest.mark.parametrize("name", ["book", "frisbee", "rectangular_block", "football"])
 def test_to_json_with_at_and_verify_is_the_cli_json(cli, name):
     path = f"examples/{name}.yaml"
     args = ("--omega", "0.3,1,0.2", "--at", "2.5 min", "--verify")

@@ -536,3 +536,42 @@ def test_exit_codes_in_a_real_process(tmp_path, cli_proc):
     assert r.code == 2 and r.err.startswith("rbcli: --omega") and r.err.count("\n") == 1
     r = cli_proc("precess", "examples/book.yaml", "--omega", "1,0,0", "--plot", str(tmp_path / "x.gif"))
     assert r.code == 2 and "Traceback" not in r.err and r.err.count("\n") == 1
+
+
+# ----------------------------------------------------------------------------- flips (issue 13.6)
+
+@pytest.mark.parametrize("omega, axis", [("0.1,0.1,1", 3), ("1,0.1,0.1", 1), ("0.3,0.5,1", 3)])
+def test_no_flip_near_the_largest_or_smallest_axis(cli, omega, axis):
+    """w2 changes sign, but L never comes nearer to the intermediate axis than to axis 1 or 3:
+    a wobble, not a flip. flip_interval, first_flip and the estimate are null."""
+    j = js(cli, str(EX / "book.yaml"), "--omega", omega)
+    assert j["circles_axis"] == axis and j["period"] is not None
+    assert j["flip_interval"] is None and j["first_flip"] is None and j["flip_interval_estimate"] is None
+    assert f"no flip: stable about axis {axis}" in j["description"]
+    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", omega)
+    assert rc == 0 and f"no flip: stable about axis {axis}" in out and "flip interval" not in out
+
+
+@pytest.mark.parametrize("omega", ["0.01,1,0.01", "0.3,1,0.2", "0.5,1,0.5"])
+def test_flips_when_L_passes_nearest_the_intermediate_axis(cli, omega):
+    """The flip criterion: at the extremes of w2 (sn = +-1) |M2| exceeds the other components,
+    checked here on the time series itself (M = J w over one period)."""
+    j = js(cli, str(EX / "book.yaml"), "--omega", omega)
+    assert j["flip_interval"] == pytest.approx(j["period"] / 2, rel=1e-12)
+    import rbcli
+
+    r = rbcli.precess(rbcli.load(EX / "book.yaml"), omega=omega)
+    M = r.at(np.linspace(0.0, r.motion.period, 2001)).angular_momentum
+    nearest = np.argmax(np.abs(M), axis=1)
+    assert np.any(nearest == 1)  # L passes nearest the intermediate axis...
+    assert np.any(M[nearest == 1, 1] > 0) and np.any(M[nearest == 1, 1] < 0)  # ...on both sides
+
+
+def test_flip_criterion_is_geometric():
+    """Without a flip L stays nearer to axis 1 or 3 than to axis 2 all along."""
+    import rbcli
+
+    r = rbcli.precess(rbcli.load(EX / "book.yaml"), omega="0.3,0.5,1")
+    assert r.motion.flip_interval is None
+    M = r.at(np.linspace(0.0, r.motion.period, 2001)).angular_momentum
+    assert not np.any(np.argmax(np.abs(M), axis=1) == 1)

@@ -14,8 +14,8 @@ The body turns freely about its centre of mass (no torque, no gravity), starting
 with the angular velocity --omega given in the body frame. Reported: L in the body
 frame, |L| and T; whether the body is symmetric; which principal axis w circles
 (1 = smallest moment, 3 = largest) and whether that is stable; the period of w in
-the body frame; for rotation near the intermediate axis the time between flips and
-the time of the first flip (the tennis-racket or Dzhanibekov effect); on the
+the body frame; when the body flips (the intermediate axis turns over relative to L:
+the tennis-racket or Dzhanibekov effect) the time between flips and the first one; on the
 separatrix, that there is no period. A symmetric body also gets the body-frame
 precession rate W = w3 (Is/I - 1), the body and space cone semi-angles, the space
 precession rate |L|/I and the wobble-to-spin ratio. The motion is the exact
@@ -134,8 +134,12 @@ MANUAL["precess"] = {
         "1 when G^2 < 2 T I2; both are stable for a rigid body (a body that dissipates energy "
         "ends up turning about axis 3, the major-axis rule). G^2 = 2 T I2 is the separatrix: no "
         "period, w creeps towards the intermediate axis and the body turns over once. The "
-        "intermediate component w2 changes sign every flip_interval = 2K(m)/lambda: near the "
-        "intermediate axis that is the tennis-racket (Dzhanibekov) flip.",
+        "intermediate component w2 changes sign every 2K(m)/lambda; that is a flip (the "
+        "tennis-racket or Dzhanibekov effect, flip_interval) only when the motion carries the "
+        "intermediate axis through a reversal relative to L: when L, seen in the body, passes "
+        "nearer to the intermediate axis than to any other principal axis, then nearer to its "
+        "opposite. Near the largest or smallest axis w2 changes sign as part of a wobble about "
+        "that axis: flip_interval is null and the table says 'no flip: stable about axis k'.",
         "Symmetric body (I1 = I2 = I, I3 = Is, or the prolate I2 = I3): in the body w circles the "
         "symmetry axis at W = w3 (Is/I - 1) (period 2 pi/|W|); in space the axis and w turn "
         "about L at |L|/I. For the Earth (Is/I = 1.00327, one turn a sidereal day) the rigid "
@@ -155,8 +159,8 @@ MANUAL["precess"] = {
         ("precession_rate", "symmetric bodies: W = w3 (Is/I - 1), rad/s, signed about the symmetry axis; null otherwise."),
         ("space_precession_rate", "symmetric bodies: |L|/I, rad/s, the rate the symmetry axis turns about L."),
         ("body_cone_deg, space_cone_deg", "symmetric bodies: the semi-angles of the body cone (w to the axis) and the space cone (w to L), degrees."),
-        ("flip_interval", "asymmetric periodic motion: time between sign changes of w2, s (the tennis-racket flips near the intermediate axis); null otherwise."),
-        ("first_flip, flip_interval_estimate", "the first t > 0 at which w2 changes sign, s; the near-separatrix estimate (2/sigma) ln(4/k'), s."),
+        ("flip_interval", "time between flips, s: when the motion carries the intermediate axis through a reversal relative to L (L passes nearer to the intermediate axis than to the others, then to its opposite; w2 changes sign in the middle of each flip); null near the largest or smallest axis (no flip), for symmetric bodies and when not periodic."),
+        ("first_flip, flip_interval_estimate", "the first t > 0 at which w2 changes sign in a flip (on the separatrix: the one flip, if ahead), s; the near-separatrix estimate (2/sigma) ln(4/k'), s; null when the body does not flip."),
         ("omega, angular_momentum_norm, symmetry, principal_moments, principal_axes", "the input w [3] rad/s; |L|; asymmetric/symmetric/spherical; moments ascending [3] and axes [3x3] (rows, body frame)."),
         ("case, description, stable", "rest, spherical, steady, circulates_max, circulates_min or separatrix; one sentence; whether the motion is stable (null where neutral or n/a)."),
         ("nutation_deg, symmetry_axis, oblate, spin_rate, wobble_to_spin, wobble_period, space_precession_period", "symmetric bodies: angle of L from the axis; the axis [3]; Is > I; psi' = -W; |phi'/psi'|; 2 pi/|W| s (also for steady spin about the axis: the period of a small wobble); 2 pi I/|L| s."),

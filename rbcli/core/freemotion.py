@@ -180,12 +180,17 @@ class FreeMotion:
     linear_rates : (3,) ndarray — rad/s (or 1/s for growth), the above at W = G/I_j, i.e.
         for steady rotation about axis j with this |L|
     elliptic : EllipticSolution | None — asymmetric non-steady motions
-    flip_interval : float | None — s, time between sign changes of the intermediate
-        component w2 (= 2K/lambda), every periodic asymmetric motion
-    first_flip : float | None — s, first t > 0 at which w2 changes sign (periodic asymmetric;
-        separatrix: the single flip if it is still ahead, else None)
+    flip_interval : float | None — s, time between flips (= 2K/lambda, the time between sign
+        changes of w2) when the body flips: when the motion carries the intermediate axis
+        through a reversal relative to L, i.e. L (seen in the body) passes nearer to the
+        intermediate axis than to any other principal axis, and then nearer to its opposite
+        (the tennis-racket / Dzhanibekov flip). None near the largest or smallest axis (w2
+        still changes sign there, but as a wobble about that axis: no flip) and when not
+        periodic
+    first_flip : float | None — s, first t > 0 at which w2 changes sign (the middle of a
+        flip), when the body flips; separatrix: the single flip if it is still ahead
     flip_interval_estimate : float | None — s, near-separatrix estimate (2/sigma) ln(4/k'),
-        sigma = (G/I2) sqrt((I2-I1)(I3-I2)/(I1 I3)), k' = sqrt(1 - m)
+        sigma = (G/I2) sqrt((I2-I1)(I3-I2)/(I1 I3)), k' = sqrt(1 - m), when the body flips
     precession_per_period : float | None — rad, angle R(T) turns about L in one period T
         (R(T) = Rot(L, this)); None when not periodic
     mean_precession_rate : float | None — rad/s, mean rate of turning about L: the above / T;
@@ -425,8 +430,10 @@ def analyse(
     ``Delta2 = M3^2 (I3-I2)/I3 - M1^2 (I2-I1)/I1``:
 
     * Delta2 > 0: omega circles axis 3 (sheet case "3"); Delta2 < 0: circles axis 1 ("1");
-      lambda, m, 1 - m, amplitudes and tau0 as in §1.2; period 4K/lambda; flips of w2
-      every 2K/lambda; first flip (2K floor(tau0/2K + 1) - tau0)/lambda.
+      lambda, m, 1 - m, amplitudes and tau0 as in §1.2; period 4K/lambda; w2 changes sign
+      every 2K/lambda, first at (2K floor(tau0/2K + 1) - tau0)/lambda. These are flips
+      (``flip_interval``) only when L passes nearer to the intermediate axis than to the
+      others: I2 A2 > Ic Ac k' (the components of M at sn = +-1; c the dn axis).
     * Separatrix when |Delta2| <= SEPARATRIX_RTOL (= 1e-14) times the sum of its two terms,
       i.e. when round-off decides the sign of Delta2. The sheet suggests switching at
       |Delta2| < 1e-12 G^2 because ``scipy.special.ellipj`` fails as m -> 1 (it takes m, not
@@ -612,16 +619,31 @@ def analyse(
         precession_per_period=dphi, _pi_tau0=pi_tau0, _q_left=q_left, _q_right=q_right,
         _perm=perm, _G=G, _Ic=Ic,
     )
-    flip = 2.0 * K / lam
-    first = (2.0 * K * math.floor(tau0 / (2.0 * K) + 1.0) - tau0) / lam
-    est = (2.0 / sigma_G) * math.log(4.0 / math.sqrt(mc)) if mc > 0 else None
-    near = mc < 0.01
-    desc = (
-        f"omega circles principal axis {circles} ({'largest' if circles == 3 else 'smallest'}"
-        f" moment), period {period:.6g} s; the intermediate component w2 changes sign every "
-        f"{flip:.6g} s"
-        + (" (close to the separatrix: the body flips over)" if near else "")
-    )
+    # The body flips (the intermediate axis turns over relative to L) when L, seen in the
+    # body, passes nearer to the intermediate axis than to any other principal axis: at
+    # sn = +-1 (w2 extreme) |M2| = I2 A2 while the other components are 0 and Ic Ac k'
+    # (Ic, Ac: the dn axis). Otherwise w2 still changes sign every 2K/lambda, but that is
+    # the wobble of a body circling its largest (smallest) axis, not a flip.
+    Ac = A3 if kind == "3" else A1
+    flips = I2 * A2 > Ic * Ac * math.sqrt(mc)
+    half = 2.0 * K / lam
+    flip = first = est = None
+    if flips:
+        flip = half
+        first = (2.0 * K * math.floor(tau0 / (2.0 * K) + 1.0) - tau0) / lam
+        est = (2.0 / sigma_G) * math.log(4.0 / math.sqrt(mc)) if mc > 0 else None
+    big = "largest" if circles == 3 else "smallest"
+    if flips:
+        desc = (
+            f"omega circles principal axis {circles} ({big} moment), period {period:.6g} s; "
+            f"the body flips over (the intermediate axis turns over relative to L) every "
+            f"{half:.6g} s"
+        )
+    else:
+        desc = (
+            f"omega circles principal axis {circles} ({big} moment), period {period:.6g} s; "
+            f"no flip: stable about axis {circles}"
+        )
     return FreeMotion(
         case=case, description=desc, circles_axis=circles, period=period, stable=True,
         elliptic=ell, flip_interval=flip, first_flip=first, flip_interval_estimate=est,

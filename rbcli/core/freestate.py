@@ -205,7 +205,7 @@ def notes(motion: fm.FreeMotion, *, time: Callable[[float], str] | None = None,
             + (f", at t = {time(motion.first_flip)}." if motion.first_flip is not None
                else " (before t = 0).")
         )
-    elif el is not None and el.mc < NEAR_SEPARATRIX:
+    elif el is not None and el.mc < NEAR_SEPARATRIX and motion.flip_interval is not None:
         out.append(
             f"close to the intermediate axis: the body flips over every "
             f"{time(motion.flip_interval)}, first at {time(motion.first_flip)} (the "

@@ -94,6 +94,8 @@ def document(doc: Doc, body: Body, result: Any, du: DisplayUnits, digits: int, *
     if el is not None:
         if motion.flip_interval is not None:
             rows.append(("flip interval (ω2 changes sign)", *_time(motion.flip_interval, du, digits)))
+        elif el.kind != "separatrix":
+            rows.append(("flips", f"no flip: stable about axis {motion.circles_axis}", ""))
         if el.kind == "separatrix":
             rows.append(("the one flip (ω2 changes sign) at", *_time(-el.tau0 / el.lam, du, digits)))
             rows.append(("Ω0 = |L|/I2 (ω → ±Ω0 along axis 2)", du.show(el.amplitudes[1], "angular_speed", digits), du.unit("angular_speed")))
