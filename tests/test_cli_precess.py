@@ -575,3 +575,24 @@ def test_flip_criterion_is_geometric():
     assert r.motion.flip_interval is None
     M = r.at(np.linspace(0.0, r.motion.period, 2001)).angular_momentum
     assert not np.any(np.argmax(np.abs(M), axis=1) == 1)
+
+
+# ----------------------------------------------------------------------------- start-up (issue 16)
+
+@pytest.mark.parametrize("extra, loads_scipy", [((), False), (("--at", "1e9", "--json"), False),
+                                                 (("--verify",), True)])
+def test_default_path_does_not_import_scipy(extra, loads_scipy):
+    """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom rbcli.cli import main\n"
+            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy'}), file=sys.stderr)\n")
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    p = subprocess.run([sys.executable, "-c", code, "precess", "examples/book.yaml", "--omega",
+                        "0.01,1,0.01", *extra], capture_output=True, text=True, cwd=ROOT, env=env,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stderr.strip().splitlines()[-1] == ("['scipy']" if loads_scipy else "[]")
