@@ -456,10 +456,10 @@ def test_verify(cli):
 def test_verify_failure_exits_1_after_printing_everything(cli, monkeypatch):
     from dataclasses import replace
 
-    from rbcli.core import freemotion as fm
+    from rbcli.core import freeverify
 
-    real = fm.verify
-    monkeypatch.setattr(fm, "verify", lambda motion: replace(real(motion, periods=0.5), ok=False, omega_error=1.0))
+    real = freeverify.verify
+    monkeypatch.setattr(freeverify, "verify", lambda motion: replace(real(motion, periods=0.5), ok=False, omega_error=1.0))
     j = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--verify", code=1)
     assert j["verify"]["ok"] is False and "period" in j
     rc, out, _ = run(cli, "-e", I123, "--omega", "1,0.1,0.2", "--verify")

@@ -20,6 +20,7 @@ from scipy.spatial.transform import Rotation
 
 from rbcli.core import freemotion as fm
 from rbcli.core.elliptic import jacobi_reduced
+from rbcli.core.freeverify import verify
 from rbcli.core.rotation import quat_to_matrix
 from rbcli.core.freemotion import (
     CASE_MAX,
@@ -33,7 +34,6 @@ from rbcli.core.freemotion import (
     omega_at,
     precession_angle_at,
 
-    verify,
 )
 
 I123 = np.diag([1.0, 2.0, 3.0])

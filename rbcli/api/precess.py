@@ -27,7 +27,8 @@ from rbcli.errors import InputError, ParamError
 if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
 
-    from rbcli.core.freemotion import FreeMotion, VerifyResult
+    from rbcli.core.freemotion import FreeMotion
+    from rbcli.core.freeverify import VerifyResult
     from rbcli.core.freestate import FreeState
     from rbcli.model import Body
 
@@ -199,7 +200,11 @@ def run(body: Body, options: PrecessOptions) -> PrecessResult:
     if options.at is not None:
         state = fs.evaluate(motion, options.at)
         at_json = fs.state_json(motion, options.at)
-    check = fm.verify(motion) if options.verify else None
+    check = None
+    if options.verify:
+        from rbcli.core import freeverify
+
+        check = freeverify.verify(motion)
     return PrecessResult(
         name=body.name, motion=motion, options=options, state=state, at_json=at_json,
         check=check, notes=tuple(fs.notes(motion)), warnings=tuple(getattr(body, "warnings", ()) or ()),
