@@ -10,14 +10,19 @@ Body I = diag(1, 2, 3) kg m^2, w0 = (1, 0.1, 0.2) rad/s (physics sheet case P4, 
 (a) exact: ``omega_at`` and ``attitude_at`` (rbcli.core.freemotion, Jacobi elliptic
     functions and the elliptic integral of the third kind) at TIMES times spread evenly
     over PERIODS periods (default 10^4 times over 10^6 periods, t up to 1.1e7 s);
-(b) numerical: ``scipy.integrate.solve_ivp`` with RK45 at its default tolerances
-    (rtol 1e-3, atol 1e-6) over 100 periods, state (w, R) with R' = R [w]x, in the body frame
-    with the full tensor (sheet §1.3's "RK45 default" row).
+(b) numerical, the honest peer: ``scipy.integrate.solve_ivp`` with DOP853 at rtol 1e-10
+    (atol 1e-12 of each component's scale) over 100 periods, state (w, R) with
+    R' = R [w]x, in the body frame with the full tensor. (RK45 at its default tolerances,
+    the peer of earlier versions, drifts by 7e-2: a weak comparison.)
+(c) optionally, when ``import mujoco`` works: MuJoCo (a free body, no gravity, RK4 at
+    1000 steps per period) over 10 periods, stepped from Python.
 
-Reported: the median wall time of each, their ratio (exact / RK45: the goal is < 1), and
-the invariant errors of each along its own points: max |T - T0|/T0, max ||L| - |L0||/|L0|
-and max |R (I w) - L0|/|L0| (L fixed in space). Goal: exact < 1e-10 where RK45 drifts by
-about 1e-2. The last line is one JSON object with every number.
+Reported: the median wall time of each, the ratio exact / DOP853 (the goal is < 1: the
+exact motion at 10^4 times over 10^6 periods costs less than the integration of 100), the
+invariant errors of each along its own points: max |T - T0|/T0, max ||L| - |L0||/|L0| and
+max |R (I w) - L0|/|L0| (L fixed in space), and the difference of DOP853 from the exact
+motion at its points (|dw|/|w| and the attitude angle). Goal: exact < 1e-10. The last line
+is one JSON object with every number.
 """
 
 from __future__ import annotations
@@ -34,6 +39,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from rbcli.core import freemotion as fm  # noqa: E402
+from rbcli.core.rotation import quat_to_matrix  # noqa: E402
 
 INERTIA = np.diag([1.0, 2.0, 3.0])
 OMEGA0 = np.array([1.0, 0.1, 0.2])
@@ -62,12 +68,10 @@ def run_exact(times: int, periods: float) -> tuple[float, dict]:
     w = fm.omega_at(motion, t)
     q = fm.attitude_at(motion, t)
     elapsed = time.perf_counter() - t0
-    return elapsed, invariants(w, fm.quaternion_to_matrix(q))
+    return elapsed, invariants(w, quat_to_matrix(q))
 
 
-def run_rk45(periods: float) -> tuple[float, dict, int]:
-    from scipy.integrate import solve_ivp
-
+def _rhs():
     Jinv = np.linalg.inv(INERTIA)
 
     def rhs(_t, y):
@@ -77,13 +81,58 @@ def run_rk45(periods: float) -> tuple[float, dict, int]:
         W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
         return np.concatenate([dw, (R @ W).ravel()])
 
-    period = fm.analyse(INERTIA, OMEGA0).period  # not timed: the integration is
+    return rhs
+
+
+def run_dop853(periods: float) -> tuple[float, dict, int, dict]:
+    """DOP853 at rtol 1e-10 over ``periods`` periods; also its difference from the exact
+    motion at its own points (not timed)."""
+    from scipy.integrate import solve_ivp
+
+    motion = fm.analyse(INERTIA, OMEGA0)  # not timed: the integration is
+    wn = float(np.linalg.norm(OMEGA0))
+    atol = np.concatenate([np.full(3, 1e-12 * wn), np.full(9, 1e-12)])
     t0 = time.perf_counter()
-    sol = solve_ivp(rhs, (0.0, periods * period), np.concatenate([OMEGA0, np.eye(3).ravel()]), method="RK45")
+    sol = solve_ivp(_rhs(), (0.0, periods * motion.period), np.concatenate([OMEGA0, np.eye(3).ravel()]),
+                    method="DOP853", rtol=1e-10, atol=atol)
     elapsed = time.perf_counter() - t0
     w = sol.y[:3].T
     R = sol.y[3:].T.reshape(-1, 3, 3)
-    return elapsed, invariants(w, R), int(sol.nfev)
+    w_ex = fm.omega_at(motion, sol.t)
+    R_ex = quat_to_matrix(fm.attitude_at(motion, sol.t))
+    # the angle of R_ex^T R as in freemotion.verify: 2 asin(|R_ex - R|_F / (2 sqrt 2)) (an
+    # arccos of the trace would read the integrator's loss of orthogonality, ~1e-9, as
+    # sqrt(2e-9) = 4e-5 rad)
+    ang = 2.0 * np.arcsin(np.minimum(np.linalg.norm(R_ex - R, axis=(1, 2)) / (2.0 * np.sqrt(2.0)), 1.0))
+    diff = {"omega": float(np.max(np.linalg.norm(w - w_ex, axis=1) / np.linalg.norm(w_ex, axis=1))),
+            "attitude_rad": float(np.max(ang))}
+    return elapsed, invariants(w, R), int(sol.nfev), diff
+
+
+def run_mujoco(periods: float, steps_per_period: int = 1000) -> tuple[float, dict] | None:
+    """MuJoCo's RK4 on a free body (no gravity) with this inertia, or None without mujoco."""
+    try:
+        import mujoco
+    except ImportError:
+        return None
+    period = fm.analyse(INERTIA, OMEGA0).period
+    dt = period / steps_per_period
+    xml = (f'<mujoco><option gravity="0 0 0" integrator="RK4" timestep="{dt!r}"/><worldbody>'
+           '<body><freejoint/><inertial pos="0 0 0" mass="1" diaginertia="1 2 3"/></body>'
+           "</worldbody></mujoco>")
+    model = mujoco.MjModel.from_xml_string(xml)
+    data = mujoco.MjData(model)
+    data.qvel[3:6] = OMEGA0  # a free joint's angular velocity is in the body's local frame
+    n = int(round(periods * steps_per_period))
+    ws, qs = [], []
+    t0 = time.perf_counter()
+    for i in range(n):
+        mujoco.mj_step(model, data)
+        if i % 10 == 9:
+            ws.append(data.qvel[3:6].copy())
+            qs.append(data.qpos[3:7].copy())
+    elapsed = time.perf_counter() - t0
+    return elapsed, invariants(np.array(ws), quat_to_matrix(np.array(qs)))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -91,36 +140,49 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--times", type=int, default=10_000)
     ap.add_argument("--periods", type=float, default=1e6)
-    ap.add_argument("--rk-periods", type=float, default=100.0)
+    ap.add_argument("--dop-periods", type=float, default=100.0)
+    ap.add_argument("--mujoco-periods", type=float, default=10.0)
     args = ap.parse_args(argv)
 
-    run_exact(100, 10.0)  # warm-up: imports (scipy.special) and caches
-    ex_times, rk_times = [], []
-    ex_err = rk_err = None
+    run_exact(100, 10.0)  # warm-up: imports and caches
+    ex_times, dp_times, mj_times = [], [], []
+    ex_err = dp_err = dp_diff = mj_err = None
     nfev = 0
     for _ in range(args.repeat):
         dt, ex_err = run_exact(args.times, args.periods)
         ex_times.append(dt)
-        dt, rk_err, nfev = run_rk45(args.rk_periods)
-        rk_times.append(dt)
+        dt, dp_err, nfev, dp_diff = run_dop853(args.dop_periods)
+        dp_times.append(dt)
+        mj = run_mujoco(args.mujoco_periods)
+        if mj is not None:
+            mj_times.append(mj[0])
+            mj_err = mj[1]
     ex_med = statistics.median(ex_times)
-    rk_med = statistics.median(rk_times)
-    ratio = ex_med / rk_med
+    dp_med = statistics.median(dp_times)
+    mj_med = statistics.median(mj_times) if mj_times else None
+    ratio = ex_med / dp_med
     ex_worst = max(ex_err.values())
-    rk_worst = max(rk_err.values())
     print(f"body I = (1, 2, 3) kg m^2, w0 = (1, 0.1, 0.2) rad/s (sheet P4), {args.repeat} runs each")
     print(f"  exact : {args.times} times over {args.periods:.3g} periods   median {ex_med * 1e3:8.2f} ms   "
           f"errors T {ex_err['energy']:.2e}  |L| {ex_err['momentum']:.2e}  L in space {ex_err['L_space']:.2e}")
-    print(f"  RK45  : {args.rk_periods:.3g} periods, default tolerances ({nfev} evaluations)   median "
-          f"{rk_med * 1e3:8.2f} ms   errors T {rk_err['energy']:.2e}  |L| {rk_err['momentum']:.2e}  "
-          f"L in space {rk_err['L_space']:.2e}")
+    print(f"  DOP853: {args.dop_periods:.3g} periods, rtol 1e-10 ({nfev} evaluations)   median "
+          f"{dp_med * 1e3:8.2f} ms   errors T {dp_err['energy']:.2e}  |L| {dp_err['momentum']:.2e}  "
+          f"L in space {dp_err['L_space']:.2e}; from the exact motion |dw|/|w| {dp_diff['omega']:.1e}, "
+          f"attitude {dp_diff['attitude_rad']:.1e} rad")
+    if mj_med is not None:
+        print(f"  MuJoCo: {args.mujoco_periods:.3g} periods, RK4, 1000 steps/period   median {mj_med * 1e3:8.2f} ms   "
+              f"errors T {mj_err['energy']:.2e}  |L| {mj_err['momentum']:.2e}  L in space {mj_err['L_space']:.2e}")
+    else:
+        print("  MuJoCo: not installed (optional)")
     ok = ratio < 1.0 and ex_worst < 1e-10
-    print(f"  time ratio exact/RK45: {ratio:.3f} (goal < 1); exact invariants {ex_worst:.1e} (goal < 1e-10); "
+    print(f"  time ratio exact/DOP853: {ratio:.3f} (goal < 1); exact invariants {ex_worst:.1e} (goal < 1e-10); "
           f"{'PASS' if ok else 'FAIL'}")
     print(json.dumps({
-        "times": args.times, "periods": args.periods, "rk_periods": args.rk_periods, "repeat": args.repeat,
-        "exact_median_s": ex_med, "rk45_median_s": rk_med, "ratio": ratio, "rk45_nfev": nfev,
-        "exact_errors": ex_err, "rk45_errors": rk_err, "pass": ok,
+        "times": args.times, "periods": args.periods, "dop_periods": args.dop_periods, "repeat": args.repeat,
+        "exact_median_s": ex_med, "dop853_median_s": dp_med, "ratio": ratio, "dop853_nfev": nfev,
+        "exact_errors": ex_err, "dop853_errors": dp_err, "dop853_vs_exact": dp_diff,
+        "mujoco_periods": args.mujoco_periods if mj_med is not None else None,
+        "mujoco_median_s": mj_med, "mujoco_errors": mj_err, "pass": ok,
     }))
     return 0 if ok else 1
 

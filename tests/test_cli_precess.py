@@ -10,11 +10,8 @@ invariants T, |L| and L fixed in space.
 
 from __future__ import annotations
 
-import io
 import json
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -22,7 +19,6 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rbcli.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 EX = ROOT / "examples"
@@ -33,24 +29,21 @@ I123 = "{shape: given, mass: 1, inertia: [[1, 0, 0], [0, 2, 0], [0, 0, 3]]}"
 DEG = math.pi / 180
 
 
-def run(capsys, *args: str) -> tuple[int, str, str]:
-    """rbcli in-process through main(): the error-to-exit-code map included."""
-    with pytest.raises(SystemExit) as exc:
-        main(["precess", *args])
-    out, err = capsys.readouterr()
-    code = exc.value.code
-    return (0 if code is None else int(code)), out, err
+def run(cli, *args: str) -> tuple[int, str, str]:
+    """``rbcli precess ARGS`` through the conftest ``cli`` fixture, as (code, out, err)."""
+    r = cli("precess", *args)
+    return r.code, r.out, r.err
 
 
-def js(capsys, *args: str, code: int = 0) -> dict:
-    rc, out, err = run(capsys, *args, "--json")
+def js(cli, *args: str, code: int = 0) -> dict:
+    rc, out, err = run(cli, *args, "--json")
     assert rc == code, err
     return json.loads(out, parse_constant=lambda c: pytest.fail(f"JSON has {c}"))
 
 
-def bad(capsys, *args: str) -> str:
+def bad(cli, *args: str) -> str:
     """Exit status 2 with one line on standard error; returns that line."""
-    rc, out, err = run(capsys, *args)
+    rc, out, err = run(cli, *args)
     assert rc == 2, (args, out, err)
     assert err.startswith("rbcli: ") and err.count("\n") == 1, err
     assert out == ""
@@ -95,9 +88,9 @@ RT = 1e-12
 
 # ----------------------------------------------------------------------------- P1 frisbee
 
-def test_p1_frisbee_thin_disk_wobbles_twice_as_fast_as_it_spins(capsys):
+def test_p1_frisbee_thin_disk_wobbles_twice_as_fast_as_it_spins(cli):
     w = [10 * math.sin(5 * DEG), 0.0, 10 * math.cos(5 * DEG)]  # |w| = 10 rad/s at 5° (P1)
-    j = js(capsys, str(EX / "frisbee.yaml"), "--omega", ",".join(repr(x) for x in w))
+    j = js(cli, str(EX / "frisbee.yaml"), "--omega", ",".join(repr(x) for x in w))
     m, R = 0.175, 0.135  # the file: a thin disk
     I, Is = m * R * R / 4, m * R * R / 2  # textbook thin disk: Is = 2 I
     assert j["symmetric"] is True and j["circles_axis"] == 3 and j["oblate"] is True
@@ -121,21 +114,21 @@ def test_p1_frisbee_thin_disk_wobbles_twice_as_fast_as_it_spins(capsys):
     assert j["flip_interval"] is None
 
 
-def test_frisbee_header_numbers_print(capsys):
-    rc, out, _ = run(capsys, str(EX / "frisbee.yaml"), "--omega", "0.8715574275,0,9.961946981")
+def test_frisbee_header_numbers_print(cli):
+    rc, out, _ = run(cli, str(EX / "frisbee.yaml"), "--omega", "0.8715574275,0,9.961946981")
     assert rc == 0
     for s in ("9.96195", "2.00191", "2.49523", "19.9429"):  # the header's claims (sheet P1)
         assert s in out
-    rc, out, _ = run(capsys, str(EX / "frisbee.yaml"), "--omega", "0,0,300 rpm")
+    rc, out, _ = run(cli, str(EX / "frisbee.yaml"), "--omega", "0,0,300 rpm")
     # steady spin at 300 rpm = 10 pi rad/s: a small wobble has W = w3, period 2 pi/w3 = 0.2 s
     assert rc == 0 and "| 0.2 | s" in " ".join(out.split()).replace("  ", " ")
 
 
 # ----------------------------------------------------------------------------- P2 football
 
-def test_p2_football_prolate_spheroid(capsys):
+def test_p2_football_prolate_spheroid(cli):
     w = [10 * math.sin(10 * DEG), 0.0, 10 * math.cos(10 * DEG)]  # |w| = 10 at 10° (P2)
-    j = js(capsys, str(EX / "football.yaml"), "--omega", ",".join(repr(x) for x in w))
+    j = js(cli, str(EX / "football.yaml"), "--omega", ",".join(repr(x) for x in w))
     assert j["symmetric"] is True and j["oblate"] is False
     assert j["circles_axis"] == 1  # prolate: the symmetry axis has the smallest moment
     assert j["precession_rate"] == pytest.approx(-4.92404, **sheet(4.92404))
@@ -152,8 +145,8 @@ def test_p2_football_prolate_spheroid(capsys):
     assert j["principal_moments"] == pytest.approx([2 * m * a * a / 5, I, I], rel=1e-12)
 
 
-def test_football_header_numbers_print(capsys):
-    rc, out, _ = run(capsys, str(EX / "football.yaml"), "--omega", "1.736481777,0,9.848077530")
+def test_football_header_numbers_print(cli):
+    rc, out, _ = run(cli, str(EX / "football.yaml"), "--omega", "1.736481777,0,9.848077530")
     assert rc == 0
     for s in ("-4.92404", "5.22126", "19.4254", "9.4254", "| 10 |"):  # header claims (P2)
         assert s in " ".join(out.split())
@@ -163,9 +156,9 @@ def test_football_header_numbers_print(capsys):
 # ----------------------------------------------------------------------------- P3 Earth
 
 @pytest.mark.parametrize("tilt", [1e-6, 0.0])
-def test_p3_earth_euler_period_and_the_chandler_note(capsys, tilt):
+def test_p3_earth_euler_period_and_the_chandler_note(cli, tilt):
     w3 = 2 * math.pi / 86164.0905  # one turn per sidereal day (P3)
-    j = js(capsys, str(EX / "earth.yaml"), "--omega", f"{tilt * w3!r},0,{w3!r}")
+    j = js(cli, str(EX / "earth.yaml"), "--omega", f"{tilt * w3!r},0,{w3!r}")
     # Is/I = 1.00327: T_Euler = T_rot I/(Is - I) = 2.63499e7 s = 304.975 d = 305.810 T_rot
     assert j["wobble_period"] == pytest.approx(2.63499e7, **sheet(2.63499e7))
     assert j["wobble_period"] / 86400 == pytest.approx(304.975, **sheet(304.975))
@@ -181,11 +174,11 @@ def test_p3_earth_euler_period_and_the_chandler_note(capsys, tilt):
     assert "304.975 d" in note
 
 
-def test_earth_header_and_table_in_days_and_hours(capsys):
-    rc, out, _ = run(capsys, str(EX / "earth.yaml"), "--omega", "7.292115858e-11,0,7.292115858e-5")
+def test_earth_header_and_table_in_days_and_hours(cli):
+    rc, out, _ = run(cli, str(EX / "earth.yaml"), "--omega", "7.292115858e-11,0,7.292115858e-5")
     flat = " ".join(out.split())
     assert rc == 0 and "2.63499e+07" in flat and "304.975 d" in flat and "85883.3" in flat
-    rc, out, _ = run(capsys, str(EX / "earth.yaml"), "--omega", "0,0,7.292115858e-5", "--units", "h")
+    rc, out, _ = run(cli, str(EX / "earth.yaml"), "--omega", "0,0,7.292115858e-5", "--units", "h")
     # --units h changes the time columns: T_rot I/(Is - I) = 86164.0905 s/0.00327 in hours
     # (7319.41 h), and the sheet's space nutation period 23.8565 h
     assert rc == 0 and f"{86164.0905 / 0.00327 / 3600:.6g} | h" in out and "23.8565 | h" in out
@@ -193,8 +186,8 @@ def test_earth_header_and_table_in_days_and_hours(capsys):
 
 # ----------------------------------------------------------------------------- P4
 
-def test_p4_asymmetric_circles_the_smallest_axis(capsys):
-    j = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "5")
+def test_p4_asymmetric_circles_the_smallest_axis(cli):
+    j = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "5")
     assert j["symmetric"] is False and j["circles_axis"] == 1 and j["stable"] is True
     assert j["angular_momentum_norm"] ** 2 == pytest.approx(1.4, rel=RT)  # G^2 = 1.40000
     assert 2 * j["kinetic_energy"] == pytest.approx(1.14, rel=RT)  # 2T = 1.14000
@@ -209,15 +202,15 @@ def test_p4_asymmetric_circles_the_smallest_axis(capsys):
     w5 = j["at"]["omega"]
     for got, want in zip(w5, (1.00469, 0.0245230, -0.207685)):
         assert got == pytest.approx(want, **sheet(want))
-    w10 = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "10")["at"]["omega"]
+    w10 = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "10")["at"]["omega"]
     for got, want in zip(w10, (0.994363, -0.145750, 0.190400)):
         assert got == pytest.approx(want, **sheet(want))
 
 
-def test_p4_after_one_period_the_body_has_turned_about_L(capsys):
+def test_p4_after_one_period_the_body_has_turned_about_L(cli):
     """Sheet P4: R(T) R(0)^T = rotation about L^ by -0.660847 rad (convention-free)."""
-    T = js(capsys, "-e", I123, "--omega", "1,0.1,0.2")["period"]
-    at = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", repr(T))["at"]
+    T = js(cli, "-e", I123, "--omega", "1,0.1,0.2")["period"]
+    at = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", repr(T))["at"]
     L = np.array([1.0, 0.2, 0.6])
     Lhat = L / np.linalg.norm(L)
     # w after a whole period is w0 again (the period of the elliptic functions)
@@ -230,8 +223,8 @@ def test_p4_after_one_period_the_body_has_turned_about_L(capsys):
 
 # ----------------------------------------------------------------------------- P6 book
 
-def test_p6_tennis_racket_flips(capsys):
-    j = js(capsys, str(EX / "book.yaml"), "--omega", "0.01,1,0.01")
+def test_p6_tennis_racket_flips(cli):
+    j = js(cli, str(EX / "book.yaml"), "--omega", "0.01,1,0.01")
     assert j["circles_axis"] == 3 and j["symmetric"] is False
     assert j["elliptic_complement"] == pytest.approx(1.99940e-4, **sheet(1.99940e-4))
     assert j["period"] == pytest.approx(39.1057, **sheet(39.1057))
@@ -247,28 +240,28 @@ def test_p6_tennis_racket_flips(capsys):
     assert "flips over every" in note and "Dzhanibekov" in note
 
 
-def test_book_header_numbers_and_scaling(capsys):
-    rc, out, _ = run(capsys, str(EX / "book.yaml"), "--omega", "0.01,1,0.01")
+def test_book_header_numbers_and_scaling(cli):
+    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "0.01,1,0.01")
     assert rc == 0 and "19.5529" in out and "10.9169" in out and "39.1057" in out
     # Euler's equations are homogeneous: w -> 10 w gives the same motion 10 times faster
-    j = js(capsys, str(EX / "book.yaml"), "--omega", "0.1,10,0.1")
+    j = js(cli, str(EX / "book.yaml"), "--omega", "0.1,10,0.1")
     assert j["flip_interval"] == pytest.approx(1.95529, **sheet(1.95529))
     assert j["first_flip"] == pytest.approx(1.09169, **sheet(1.09169))
-    rc, out, _ = run(capsys, str(EX / "book.yaml"), "--omega", "1,0.1,0.2")
+    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "1,0.1,0.2")
     assert rc == 0 and "11.205 " in out  # P4 with the book's 1:2:3 moments: 11.2050 s
 
 
 # ----------------------------------------------------------------------------- P8 separatrix
 
-def test_p8_separatrix_said_plainly(capsys):
-    j = js(capsys, "-e", I123, "--omega", f"{0.1 * math.sqrt(3)!r},1,0.1", "--at", "5")
+def test_p8_separatrix_said_plainly(cli):
+    j = js(cli, "-e", I123, "--omega", f"{0.1 * math.sqrt(3)!r},1,0.1", "--at", "5")
     assert j["case"] == "separatrix"
     assert j["period"] is None and j["circles_axis"] is None and j["flip_interval"] is None
     for got, want in zip(j["at"]["omega"], (0.00931928, 1.01485, 0.00538049)):
         assert got == pytest.approx(want, **sheet(want))
     assert j["elliptic_rate"] == pytest.approx(0.585947, **sheet(0.585947))
     assert "no period" in " ".join(j["notes"])
-    rc, out, _ = run(capsys, "-e", I123, "--omega", f"{0.1 * math.sqrt(3)!r},1,0.1")
+    rc, out, _ = run(cli, "-e", I123, "--omega", f"{0.1 * math.sqrt(3)!r},1,0.1")
     flat = " ".join(out.split())
     assert "separatrix" in flat and "no period" in flat
     # the one flip: tau0 = 2.45384, lambda = 0.585947 -> t = -tau0/lambda, before t = 0
@@ -296,10 +289,10 @@ BODIES = {
 
 
 @pytest.mark.parametrize("name", BODIES)
-def test_spec_keys_always_present_and_deterministic(capsys, name):
+def test_spec_keys_always_present_and_deterministic(cli, name):
     expr, omega = BODIES[name]
-    rc, out1, _ = run(capsys, "-e", expr, "--omega", omega, "--json", "--at", "2.5")
-    rc2, out2, _ = run(capsys, "-e", expr, "--omega", omega, "--json", "--at", "2.5")
+    rc, out1, _ = run(cli, "-e", expr, "--omega", omega, "--json", "--at", "2.5")
+    rc2, out2, _ = run(cli, "-e", expr, "--omega", omega, "--json", "--at", "2.5")
     assert rc == rc2 == 0 and out1 == out2  # same bytes
     j = json.loads(out1, parse_constant=lambda c: pytest.fail(f"JSON has {c}"))
     assert list(j)[: len(SPEC_KEYS)] == list(SPEC_KEYS)  # SPEC keys, first, in order
@@ -310,14 +303,14 @@ def test_spec_keys_always_present_and_deterministic(capsys, name):
     if j["symmetric"]:
         for k in ("precession_rate", "space_precession_rate", "body_cone_deg", "space_cone_deg"):
             assert isinstance(j[k], float), k
-    rc, table, _ = run(capsys, "-e", expr, "--omega", omega, "--at", "2.5")
+    rc, table, _ = run(cli, "-e", expr, "--omega", omega, "--at", "2.5")
     assert rc == 0 and "nan" not in table.lower()
 
 
-def test_at_1_s_against_an_independent_integration(capsys):
+def test_at_1_s_against_an_independent_integration(cli):
     J = np.diag([1.0, 2.0, 3.0])
     w0 = np.array([1.0, 0.1, 0.2])
-    at = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "1")["at"]
+    at = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "1")["at"]
     w_ref, R_ref = dop853(J, w0, 1.0)
     # DOP853 at rtol 1e-12 over 1 s: its own error is ~1e-13; 1e-11 leaves room
     np.testing.assert_allclose(at["omega"], w_ref, atol=1e-11)
@@ -326,12 +319,12 @@ def test_at_1_s_against_an_independent_integration(capsys):
     np.testing.assert_allclose(at["angular_momentum"], J @ w_ref, atol=1e-11)
 
 
-def test_at_1e9_s_periodic_and_invariant(capsys):
+def test_at_1e9_s_periodic_and_invariant(cli):
     """t = 1e9 s is 8.9e7 periods away: w repeats with the period, the invariants hold."""
-    j = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "1e9")
+    j = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "1e9")
     at, T = j["at"], j["period"]
     r = math.fmod(1e9, T)  # exact remainder of the two doubles
-    near = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", repr(r))["at"]
+    near = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", repr(r))["at"]
     # T carries ~1 ulp (2e-15 s) of error, times 8.9e7 periods: ~2e-7 s of phase, and
     # |dw/dt| < 1 rad/s^2 here, so 1e-6 is the size of the disagreement allowed
     np.testing.assert_allclose(at["omega"], near["omega"], atol=1e-6)
@@ -345,11 +338,11 @@ def test_at_1e9_s_periodic_and_invariant(capsys):
     assert at["periods"] == pytest.approx(1e9 / T, rel=RT)
 
 
-def test_at_takes_time_units_and_negative_times(capsys):
-    a = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "2 min")["at"]
-    b = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "120")["at"]
+def test_at_takes_time_units_and_negative_times(cli):
+    a = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "2 min")["at"]
+    b = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "120")["at"]
     assert a == b  # 2 min = 120 s exactly
-    back = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--at", "-3")["at"]
+    back = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--at", "-3")["at"]
     w_ref, R_ref = dop853(np.diag([1.0, 2.0, 3.0]), np.array([1.0, 0.1, 0.2]), -3.0)
     np.testing.assert_allclose(back["omega"], w_ref, atol=1e-11)  # DOP853 backwards, as above
     np.testing.assert_allclose(rot(back["quaternion"]), R_ref, atol=1e-11)
@@ -363,14 +356,12 @@ def test_at_takes_time_units_and_negative_times(capsys):
 )
 def test_invariants_at_any_time_for_any_body(a, b, c, w, t):
     """A box of any sides, any w, any t: T, |L| and L in space are those at t = 0."""
-    import contextlib
+    from conftest import run_inprocess  # hypothesis: no function-scoped fixture
 
     expr = f"{{shape: box, mass: 1.5, size: [{a!r}, {b!r}, {c!r}]}}"
-    buf = io.StringIO()
-    with contextlib.redirect_stdout(buf), pytest.raises(SystemExit) as exc:
-        main(["precess", "-e", expr, "--omega", ",".join(repr(x) for x in w), "--at", repr(t), "--json"])
-    assert exc.value.code in (None, 0)
-    j = json.loads(buf.getvalue())
+    r = run_inprocess("precess", "-e", expr, "--omega", ",".join(repr(x) for x in w), "--at", repr(t), "--json")
+    assert r.code == 0, r.err
+    j = r.json()
     J = 1.5 / 12 * np.diag([b * b + c * c, a * a + c * c, a * a + b * b])  # textbook box
     w0 = np.array(w)
     L0 = J @ w0
@@ -391,9 +382,9 @@ def test_invariants_at_any_time_for_any_body(a, b, c, w, t):
 
 # ----------------------------------------------------------------------------- CSV
 
-def test_csv_time_series(capsys, tmp_path):
+def test_csv_time_series(cli, tmp_path):
     out = tmp_path / "p4.csv"
-    rc, text, _ = run(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--duration", "112.05",
+    rc, text, _ = run(cli, "-e", I123, "--omega", "1,0.1,0.2", "--duration", "112.05",
                       "--samples", "2001", "--csv", str(out))
     assert rc == 0 and str(out) in text
     lines = out.read_text().splitlines()
@@ -421,88 +412,88 @@ def test_csv_time_series(capsys, tmp_path):
     np.testing.assert_allclose(a[-1, 1:4], [1, 0.1, 0.2], atol=2e-4)  # 1e-5 relative in time
 
 
-def test_csv_to_stdout_and_deterministic(capsys, tmp_path):
-    rc, out1, _ = run(capsys, "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
-    rc2, out2, _ = run(capsys, "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
+def test_csv_to_stdout_and_deterministic(cli, tmp_path):
+    rc, out1, _ = run(cli, "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
+    rc2, out2, _ = run(cli, "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
     assert rc == rc2 == 0 and out1 == out2
     lines = out1.splitlines()
     assert lines[0].startswith("t,wx") and len(lines) == 6
     assert [float(x.split(",")[0]) for x in lines[1:]] == [0.0, 5.0, 10.0, 15.0, 20.0]
     # default rows
     f = tmp_path / "d.csv"
-    assert run(capsys, "-e", I123, "--omega", "1,0,0", "--duration", "1", "--csv", str(f))[0] == 0
+    assert run(cli, "-e", I123, "--omega", "1,0,0", "--duration", "1", "--csv", str(f))[0] == 0
     assert len(f.read_text().splitlines()) == 1 + 1001
 
 
-def test_csv_replaces_an_existing_file_but_never_an_input(capsys, tmp_path):
+def test_csv_replaces_an_existing_file_but_never_an_input(cli, tmp_path):
     body = tmp_path / "b.yaml"
     body.write_text((EX / "book.yaml").read_text())
     before = body.read_bytes()
-    err = bad(capsys, str(body), "--omega", "1,0,0", "--duration", "1", "--csv", str(body))
+    err = bad(cli, str(body), "--omega", "1,0,0", "--duration", "1", "--csv", str(body))
     assert "input" in err and body.read_bytes() == before
     old = tmp_path / "old.csv"
     old.write_text("something else\n")
-    assert run(capsys, str(body), "--omega", "1,0,0", "--duration", "1", "--samples", "3", "--csv", str(old))[0] == 0
+    assert run(cli, str(body), "--omega", "1,0,0", "--duration", "1", "--samples", "3", "--csv", str(old))[0] == 0
     assert old.read_text().startswith("t,wx,wy,wz")
-    err = bad(capsys, str(body), "--omega", "1,0,0", "--duration", "1", "--csv", str(tmp_path / "no" / "x.csv"))
+    err = bad(cli, str(body), "--omega", "1,0,0", "--duration", "1", "--csv", str(tmp_path / "no" / "x.csv"))
     assert "does not exist" in err
 
 
 # ----------------------------------------------------------------------------- --verify
 
-def test_verify(capsys):
-    j = js(capsys, str(EX / "book.yaml"), "--omega", "1,0.1,0.2", "--verify")
+def test_verify(cli):
+    j = js(cli, str(EX / "book.yaml"), "--omega", "1,0.1,0.2", "--verify")
     v = j["verify"]
     assert v["ok"] is True and v["rtol"] == 1e-12
     assert v["t_end"] == pytest.approx(3 * j["period"], rel=RT)  # 3 periods
     assert v["omega_error"] < 1e-9 and v["attitude_error"] < 1e-9  # DOP853 at 1e-12 over 3 periods
     for k in ("exact_energy_drift", "exact_momentum_drift", "exact_L_drift"):
         assert v[k] < 1e-13, k  # along the exact solution: round-off only
-    rc, out, _ = run(capsys, str(EX / "book.yaml"), "--omega", "1,0.1,0.2", "--verify")
+    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "1,0.1,0.2", "--verify")
     assert rc == 0 and "agree" in out and "|Δω|/|ω|" in out
 
 
-def test_verify_failure_exits_1_after_printing_everything(capsys, monkeypatch):
+def test_verify_failure_exits_1_after_printing_everything(cli, monkeypatch):
     from dataclasses import replace
 
-    from rbcli.core import freemotion as fm
+    from rbcli.core import freeverify
 
-    real = fm.verify
-    monkeypatch.setattr(fm, "verify", lambda motion: replace(real(motion, periods=0.5), ok=False, omega_error=1.0))
-    j = js(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--verify", code=1)
+    real = freeverify.verify
+    monkeypatch.setattr(freeverify, "verify", lambda motion: replace(real(motion, periods=0.5), ok=False, omega_error=1.0))
+    j = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--verify", code=1)
     assert j["verify"]["ok"] is False and "period" in j
-    rc, out, _ = run(capsys, "-e", I123, "--omega", "1,0.1,0.2", "--verify")
+    rc, out, _ = run(cli, "-e", I123, "--omega", "1,0.1,0.2", "--verify")
     assert rc == 1 and "DISAGREE" in out and "principal moments" in out
 
 
 # ----------------------------------------------------------------------------- plots
 
 @pytest.mark.parametrize("ext, magic", [("png", b"\x89PNG"), ("svg", b"<?xml"), ("pdf", b"%PDF")])
-def test_plot_formats(capsys, tmp_path, ext, magic):
+def test_plot_formats(cli, tmp_path, ext, magic):
     f = tmp_path / f"p.{ext}"
-    rc, out, _ = run(capsys, str(EX / "book.yaml"), "--omega", "0.01,1,0.01", "--plot", str(f))
+    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "0.01,1,0.01", "--plot", str(f))
     assert rc == 0 and f.read_bytes().startswith(magic) and f"plot written to {f}" in out
     if ext == "svg":
         text = f.read_text()
         assert "Notebook" in text or "precess" in text  # titled (fonts as paths: check the id)
 
 
-def test_plot_symmetric_separatrix_and_rest(capsys, tmp_path):
+def test_plot_symmetric_separatrix_and_rest(cli, tmp_path):
     for i, (expr, w) in enumerate([("{shape: disk, mass: 1, radius: 1}", "0.1,0,5"),
                                    (I123, f"{0.1 * math.sqrt(3)!r},1,0.1"), (I123, "0,0,0"),
                                    ("{shape: sphere, mass: 1, radius: 1}", "0,1,0")]):
         f = tmp_path / f"s{i}.png"
-        assert run(capsys, "-e", expr, "--omega", w, "--plot", str(f), "--duration", "3")[0] == 0
+        assert run(cli, "-e", expr, "--omega", w, "--plot", str(f), "--duration", "3")[0] == 0
         assert f.stat().st_size > 1000
 
 
-def test_plot_unknown_extension_and_input(capsys, tmp_path):
-    err = bad(capsys, str(EX / "book.yaml"), "--omega", "1,0,0", "--plot", str(tmp_path / "p.jpg"))
+def test_plot_unknown_extension_and_input(cli, tmp_path):
+    err = bad(cli, str(EX / "book.yaml"), "--omega", "1,0,0", "--plot", str(tmp_path / "p.jpg"))
     assert ".png" in err and ".svg" in err and ".pdf" in err
     body = tmp_path / "b.yaml"
     body.write_text((EX / "book.yaml").read_text())
     before = body.read_bytes()
-    bad(capsys, str(body), "--omega", "1,0,0", "--plot", str(body))  # .yaml: not a plot format
+    bad(cli, str(body), "--omega", "1,0,0", "--plot", str(body))  # .yaml: not a plot format
     assert body.read_bytes() == before
 
 
@@ -526,26 +517,82 @@ def test_plot_unknown_extension_and_input(capsys, tmp_path):
     (["--omega", "1,0,0", "--at", "1e300"], "double-precision"),
     (["--omega", "1,0,0", "--csv", "-", "--duration", "1", "--json"], "--json"),
 ])
-def test_bad_options_exit_2_with_one_line(capsys, args, words):
-    err = bad(capsys, "-e", I123, *args)
+def test_bad_options_exit_2_with_one_line(cli, args, words):
+    err = bad(cli, "-e", I123, *args)
     assert words in err
 
 
-def test_body_problems_exit_2(capsys):
-    err = bad(capsys, "-e", "{shape: point, mass: 1}", "--omega", "1,0,0")
+def test_body_problems_exit_2(cli):
+    err = bad(cli, "-e", "{shape: point, mass: 1}", "--omega", "1,0,0")
     assert "positive definite" in err
-    bad(capsys, str(EX / "no_such_body.yaml"), "--omega", "1,0,0")
-    bad(capsys, "--omega", "1,0,0")  # no body
+    bad(cli, str(EX / "no_such_body.yaml"), "--omega", "1,0,0")
+    bad(cli, "--omega", "1,0,0")  # no body
 
 
-def test_exit_codes_in_a_real_process(tmp_path):
-    def proc(*args):
-        return subprocess.run([sys.executable, "-m", "rbcli", "precess", *args], capture_output=True,
-                              text=True, cwd=ROOT, timeout=120)
+def test_exit_codes_in_a_real_process(tmp_path, cli_proc):
+    r = cli_proc("precess", "examples/book.yaml", "--omega", "0.01,1,0.01", "--json")
+    assert r.code == 0 and r.json()["flip_interval"] == pytest.approx(19.5529, **sheet(19.5529))
+    r = cli_proc("precess", "examples/book.yaml")
+    assert r.code == 2 and r.err.startswith("rbcli: --omega") and r.err.count("\n") == 1
+    r = cli_proc("precess", "examples/book.yaml", "--omega", "1,0,0", "--plot", str(tmp_path / "x.gif"))
+    assert r.code == 2 and "Traceback" not in r.err and r.err.count("\n") == 1
 
-    r = proc("examples/book.yaml", "--omega", "0.01,1,0.01", "--json")
-    assert r.returncode == 0 and json.loads(r.stdout)["flip_interval"] == pytest.approx(19.5529, **sheet(19.5529))
-    r = proc("examples/book.yaml")
-    assert r.returncode == 2 and r.stderr.startswith("rbcli: --omega") and r.stderr.count("\n") == 1
-    r = proc("examples/book.yaml", "--omega", "1,0,0", "--plot", str(tmp_path / "x.gif"))
-    assert r.returncode == 2 and "Traceback" not in r.stderr and r.stderr.count("\n") == 1
+
+# ----------------------------------------------------------------------------- flips (issue 13.6)
+
+@pytest.mark.parametrize("omega, axis", [("0.1,0.1,1", 3), ("1,0.1,0.1", 1), ("0.3,0.5,1", 3)])
+def test_no_flip_near_the_largest_or_smallest_axis(cli, omega, axis):
+    """w2 changes sign, but L never comes nearer to the intermediate axis than to axis 1 or 3:
+    a wobble, not a flip. flip_interval, first_flip and the estimate are null."""
+    j = js(cli, str(EX / "book.yaml"), "--omega", omega)
+    assert j["circles_axis"] == axis and j["period"] is not None
+    assert j["flip_interval"] is None and j["first_flip"] is None and j["flip_interval_estimate"] is None
+    assert f"no flip: stable about axis {axis}" in j["description"]
+    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", omega)
+    assert rc == 0 and f"no flip: stable about axis {axis}" in out and "flip interval" not in out
+
+
+@pytest.mark.parametrize("omega", ["0.01,1,0.01", "0.3,1,0.2", "0.5,1,0.5"])
+def test_flips_when_L_passes_nearest_the_intermediate_axis(cli, omega):
+    """The flip criterion: at the extremes of w2 (sn = +-1) |M2| exceeds the other components,
+    checked here on the time series itself (M = J w over one period)."""
+    j = js(cli, str(EX / "book.yaml"), "--omega", omega)
+    assert j["flip_interval"] == pytest.approx(j["period"] / 2, rel=1e-12)
+    import rbcli
+
+    r = rbcli.precess(rbcli.load(EX / "book.yaml"), omega=omega)
+    M = r.at(np.linspace(0.0, r.motion.period, 2001)).angular_momentum
+    nearest = np.argmax(np.abs(M), axis=1)
+    assert np.any(nearest == 1)  # L passes nearest the intermediate axis...
+    assert np.any(M[nearest == 1, 1] > 0) and np.any(M[nearest == 1, 1] < 0)  # ...on both sides
+
+
+def test_flip_criterion_is_geometric():
+    """Without a flip L stays nearer to axis 1 or 3 than to axis 2 all along."""
+    import rbcli
+
+    r = rbcli.precess(rbcli.load(EX / "book.yaml"), omega="0.3,0.5,1")
+    assert r.motion.flip_interval is None
+    M = r.at(np.linspace(0.0, r.motion.period, 2001)).angular_momentum
+    assert not np.any(np.argmax(np.abs(M), axis=1) == 1)
+
+
+# ----------------------------------------------------------------------------- start-up (issue 16)
+
+@pytest.mark.parametrize("extra, loads_scipy", [((), False), (("--at", "1e9", "--json"), False),
+                                                 (("--verify",), True)])
+def test_default_path_does_not_import_scipy(extra, loads_scipy):
+    """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom rbcli.cli import main\n"
+            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy'}), file=sys.stderr)\n")
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    p = subprocess.run([sys.executable, "-c", code, "precess", "examples/book.yaml", "--omega",
+                        "0.01,1,0.01", *extra], capture_output=True, text=True, cwd=ROOT, env=env,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stderr.strip().splitlines()[-1] == ("['scipy']" if loads_scipy else "[]")

@@ -19,6 +19,9 @@ from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 from rbcli.core import freemotion as fm
+from rbcli.core.elliptic import jacobi_reduced
+from rbcli.core.freeverify import verify
+from rbcli.core.rotation import quat_to_matrix
 from rbcli.core.freemotion import (
     CASE_MAX,
     CASE_MIN,
@@ -30,8 +33,7 @@ from rbcli.core.freemotion import (
     attitude_at,
     omega_at,
     precession_angle_at,
-    quaternion_to_matrix,
-    verify,
+
 )
 
 I123 = np.diag([1.0, 2.0, 3.0])
@@ -264,7 +266,7 @@ def test_p8_separatrix_against_dop853():
     ts = np.linspace(0.0, 30.0, 301)
     wn, Rn = integrate_body(I123, m.omega0, ts)
     we = omega_at(m, ts)
-    Re = quaternion_to_matrix(attitude_at(m, ts))
+    Re = quat_to_matrix(attitude_at(m, ts))
     # DOP853 rtol 1e-12 amplified by e^(lambda t) while leaving the saddle (sheet: 3e-10)
     assert np.max(np.abs(we - wn)) < 1e-9
     assert np.max(np.abs(Re - Rn)) < 1e-9
@@ -310,7 +312,7 @@ def test_p9_exact_invariants_over_1000_periods_and_rk45_drift():
     L0 = m.angular_momentum
     ts = np.concatenate([np.linspace(0.0, 1000 * T, 20001), [1000 * T]])
     w = omega_at(m, ts)
-    R = quaternion_to_matrix(attitude_at(m, ts))
+    R = quat_to_matrix(attitude_at(m, ts))
     M = w @ I123
     E = 0.5 * np.einsum("ij,ij->i", w, M)
     G = np.linalg.norm(M, axis=1)
@@ -381,7 +383,7 @@ def test_random_bodies_match_dop853(a, b, c, w, seed):
     ts = np.linspace(0.0, 3 * m.period, 151)
     wn, Rn = integrate_body(J, w0, ts)
     we = omega_at(m, ts)
-    Re = quaternion_to_matrix(attitude_at(m, ts))
+    Re = quat_to_matrix(attitude_at(m, ts))
     scale = np.linalg.norm(w0)
     # DOP853 rtol 1e-12: the global error of a periodic orbit grows ~linearly (phase error)
     # with the number of steps (~1e3 over 3 periods) and is amplified by up to 1/k' <= 30
@@ -429,7 +431,7 @@ def test_scipy_ellipj_would_fail_near_m_1():
     mc = 1e-10
     K = float(ellipkm1(mc))
     assert abs(ellipj(2 * K, 1 - mc)[1] + 1) > 0.5
-    sn, cn, dn, *_ = fm._jacobi(np.array([2 * K]), K, 1 - mc, mc)
+    sn, cn, dn, *_ = jacobi_reduced(np.array([2 * K]), K, 1 - mc, mc)
     assert abs(cn[0] + 1) < 1e-14 and abs(sn[0]) < 1e-14 and abs(dn[0] - 1) < 1e-14
 
 
@@ -440,7 +442,7 @@ def test_jacobi_matches_scipy_where_scipy_is_accurate(mc):
     m = 1 - mc
     K = float(elliprf(0, mc, 1))
     tau = np.linspace(-2 * K, 2 * K, 2001)
-    sn, cn, dn, *_ = fm._jacobi(tau, K, m, mc)
+    sn, cn, dn, *_ = jacobi_reduced(tau, K, m, mc)
     s2, c2, d2, _ = ellipj(tau, m)
     # scipy's own accuracy degrades like eps/(1 - m) near m = 1 (m rounding): 1e-15/mc
     tol = max(1e-14, 1e-16 / mc * 10)
@@ -459,13 +461,13 @@ def test_jacobi_identities_near_m_1(mc):
     m = 1 - mc
     K = float(elliprf(0, mc, 1))
     kp = math.sqrt(mc)
-    sn, cn, dn, *_ = fm._jacobi(np.array([0.5 * K, K]), K, m, mc)
+    sn, cn, dn, *_ = jacobi_reduced(np.array([0.5 * K, K]), K, m, mc)
     assert rel(sn[0], 1 / math.sqrt(1 + kp)) < 1e-15
     assert rel(dn[0], math.sqrt(kp)) < 1e-14  # a few ulp
     assert rel(dn[1], kp) < 1e-12 and abs(cn[1]) < 1e-13 * kp and sn[1] == 1.0
     u = np.linspace(-K, K, 4001)
-    s, c, d, *_ = fm._jacobi(u, K, m, mc)
-    s2, *_ = fm._jacobi(2 * u, K, m, mc)
+    s, c, d, *_ = jacobi_reduced(u, K, m, mc)
+    s2, *_ = jacobi_reduced(2 * u, K, m, mc)
     # 1 - m sn^4 written as cn^2 (1 + sn^2) + mc sn^4, free of cancellation near u = +-K
     dup = 2 * s * c * d / (c * c * (1 + s * s) + mc * s**4)
     # a few ulp of each factor, amplified by at most ~10 in the quotient
@@ -613,7 +615,7 @@ def test_non_diagonal_tensor_matches_body_frame_integration(seed, w0):
     wn, Rn = integrate_body(J, np.array(w0), ts)
     # DOP853 rtol 1e-12 over two periods (~1e3 steps): 1e-9 leaves a wide margin
     assert np.max(np.abs(omega_at(m, ts) - wn)) < 1e-9
-    assert np.max(np.abs(quaternion_to_matrix(attitude_at(m, ts)) - Rn)) < 1e-9
+    assert np.max(np.abs(quat_to_matrix(attitude_at(m, ts)) - Rn)) < 1e-9
     # the same body given diagonally has the same invariants and period
     md = analyse(np.diag([1.0, 2.0, 3.0]), Q @ np.array(w0))
     assert rel(m.period, md.period) < 1e-12
@@ -628,7 +630,7 @@ def test_symmetric_body_against_dop853_non_diagonal():
     ts = np.linspace(0.0, 3 * m.period, 301)
     wn, Rn = integrate_body(J, w0, ts)
     assert np.max(np.abs(omega_at(m, ts) - wn)) < 1e-9  # DOP853 rtol 1e-12, 3 periods
-    assert np.max(np.abs(quaternion_to_matrix(attitude_at(m, ts)) - Rn)) < 1e-9
+    assert np.max(np.abs(quat_to_matrix(attitude_at(m, ts)) - Rn)) < 1e-9
 
 
 def test_json_every_case_has_every_key_and_no_nan():
@@ -656,7 +658,7 @@ def test_verify_reports_and_json():
 
 def test_quaternion_to_matrix_matches_scipy():
     q = Rotation.random(20, random_state=4).as_quat(scalar_first=True)
-    np.testing.assert_allclose(quaternion_to_matrix(q),
+    np.testing.assert_allclose(quat_to_matrix(q),
                                Rotation.from_quat(q, scalar_first=True).as_matrix(), atol=1e-15)
 
 

@@ -341,3 +341,52 @@ def test_rotate_tensor_moves_axes() -> None:
 def test_rotate_tensor_rejects_wrong_shapes() -> None:
     with pytest.raises(ValueError, match="3x3"):
         rot.rotate_tensor(np.eye(3), np.eye(2))
+
+
+# ----------------------------------------------------------------------------- quaternion kit
+
+
+def _scipy_quat(q: np.ndarray) -> Rotation:
+    """scipy's Rotation of scalar-first quaternions (scipy is scalar-last)."""
+    return Rotation.from_quat(np.asarray(q)[..., [1, 2, 3, 0]])
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(components, min_size=4, max_size=4).filter(lambda v: float(np.linalg.norm(v)) > 1e-3),
+       st.lists(components, min_size=4, max_size=4).filter(lambda v: float(np.linalg.norm(v)) > 1e-3))
+def test_quaternion_kit_matches_scipy(p, q) -> None:
+    """Product, conjugate, matrix and back, axis-angle: against scipy (ATOL: module docstring)."""
+    p, q = np.array(p), np.array(q)
+    pu, qu = p / np.linalg.norm(p), q / np.linalg.norm(q)
+    R = rot.quat_to_matrix(qu)
+    np.testing.assert_allclose(R, _scipy_quat(qu).as_matrix(), rtol=0, atol=ATOL)
+    np.testing.assert_allclose(R, rot.quaternion(q), rtol=0, atol=ATOL)  # the one-off form
+    np.testing.assert_allclose(rot.quat_to_matrix(rot.quat_multiply(pu, qu)),
+                               rot.quat_to_matrix(pu) @ R, rtol=0, atol=ATOL)
+    np.testing.assert_allclose(rot.quat_to_matrix(rot.quat_conjugate(qu)), R.T, rtol=0, atol=ATOL)
+    back = rot.quat_from_matrix(R)
+    assert back[0] >= 0.0
+    c = rot.quat_canonical(qu)  # w = 0: q and -q are both canonical
+    assert min(np.max(np.abs(back - c)), np.max(np.abs(back + c))) <= ATOL
+    axis, angle = rot.matrix_to_axis_angle(R)
+    assert 0.0 <= angle <= math.pi
+    assert angle == pytest.approx(_scipy_quat(qu).magnitude(), abs=1e-12)
+    # the axis (either sign at a half turn) rebuilds the matrix; 1e-12: an axis near a
+    # half turn or a zero turn carries ~eps/|v| of round-off
+    np.testing.assert_allclose(rot.axis_angle(axis, angle), R, rtol=0, atol=1e-12)
+    axis2, angle2 = rot.quat_to_axis_angle(qu)
+    assert angle2 == pytest.approx(angle, abs=1e-12)
+    if axis2 is not None:
+        np.testing.assert_allclose(rot.axis_angle(axis2, angle2), R, rtol=0, atol=1e-12)
+
+
+def test_axis_angle_edge_cases() -> None:
+    """No rotation: no axis (quaternion) or the documented z (matrix); a half turn."""
+    assert rot.quat_to_axis_angle(np.array([1.0, 0, 0, 0])) == (None, 0.0)
+    axis, angle = rot.matrix_to_axis_angle(np.eye(3))
+    assert angle == 0.0 and axis.tolist() == [0.0, 0.0, 1.0]
+    axis, angle = rot.matrix_to_axis_angle(np.diag([-1.0, -1.0, 1.0]))
+    assert angle == pytest.approx(math.pi, abs=1e-15) and abs(axis[2]) == 1.0
+    q = rot.quat_about_axis(np.array([0.0, 0.0, 1.0]), np.array([0.0, math.pi / 2]))
+    np.testing.assert_allclose(rot.quat_to_matrix(q[1]) @ [1, 0, 0], [0, 1, 0], atol=1e-15)
+    assert q.shape == (2, 4) and q[0].tolist() == [1.0, 0.0, 0.0, 0.0]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.precess import DEFAULT_SAMPLES
 from rbcli.cli import common as c
 from rbcli.cli.app import MANUAL, app
 
@@ -13,8 +14,8 @@ The body turns freely about its centre of mass (no torque, no gravity), starting
 with the angular velocity --omega given in the body frame. Reported: L in the body
 frame, |L| and T; whether the body is symmetric; which principal axis w circles
 (1 = smallest moment, 3 = largest) and whether that is stable; the period of w in
-the body frame; for rotation near the intermediate axis the time between flips and
-the time of the first flip (the tennis-racket or Dzhanibekov effect); on the
+the body frame; when the body flips (the intermediate axis turns over relative to L:
+the tennis-racket or Dzhanibekov effect) the time between flips and the first one; on the
 separatrix, that there is no period. A symmetric body also gets the body-frame
 precession rate W = w3 (Is/I - 1), the body and space cone semi-angles, the space
 precession rate |L|/I and the wobble-to-spin ratio. The motion is the exact
@@ -52,12 +53,6 @@ VERIFY_HELP = (
     "more than 1e-8."
 )
 
-#: --samples default and limit
-DEFAULT_SAMPLES = 1001
-MAX_SAMPLES = 10_000_000
-#: the phase of the motion at time t is known to about eps * rate * |t| rad (t itself is a
-#: double); beyond this rate * |t| it would be known to worse than 0.1 rad
-MAX_PHASE = 1e15
 
 
 @app.command(help=HELP)
@@ -75,6 +70,7 @@ def precess(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
+    from rbcli.api import precess as api
     from rbcli.errors import InputError
     from rbcli.render.fmt import DisplayUnits
 
@@ -82,98 +78,48 @@ def precess(
     du = DisplayUnits.parse(units)
 
     # --- option values, checked before the body is read (bad usage is bad usage)
-    if omega is None:
-        raise InputError(
-            "--omega: the initial angular velocity is required: x,y,z in the body frame, "
-            "e.g. --omega 0,0,10 (rad/s) or --omega '0,0,300 rpm'"
-        )
-    w = c.vector(omega, "angular_speed", "--omega")  # finite, or an InputError
-    t_at = c.finite(c.quantity(at, "time", "--at"), "--at") if at is not None else None
-    span = None
-    if duration is not None:
-        span = c.finite(c.quantity(duration, "time", "--duration"), "--duration")
-        if not span > 0.0:
-            raise InputError(f"--duration: must be a positive time, got '{duration}'")
-    n_rows = None
-    if samples is not None:
-        n_rows = _count(samples)
-        if csv is None:
-            raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE and --duration T")
+    opts = api.PrecessOptions.parse(None, omega=omega, at=at, duration=duration, samples=samples,
+                                    verify=verify)
+    if samples is not None and csv is None:
+        raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE and --duration T")
     if csv is not None:
-        if span is None:
+        if opts.duration is None:
             raise InputError("--csv: needs --duration T, the span of the time series (from t = 0)")
         if csv == "-" and json_:
             raise InputError("--csv -: the time series would go to standard output, so it cannot be combined with --json; write it to a file")
-        if n_rows is None:
-            n_rows = DEFAULT_SAMPLES
-    elif span is not None and plot is None:
+    elif opts.duration is not None and plot is None:
         raise InputError("--duration: sets the span of --csv or --plot; add one of them")
 
     # --- the body, and the output paths checked before any computing
     b = c.load_one(body, expr, e)
     plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
 
-    from rbcli.core import freemotion as fm
     from rbcli.render import precess as rp
 
-    motion = prepare(b, omega=w)
-    rate = rp.fastest_rate(motion)
-    for t, opt in ((t_at, "--at"), (span, "--duration")):
-        if t is not None and rate * abs(t) > MAX_PHASE:
-            raise InputError(
-                f"{opt}: {t:.6g} s is about {rate * abs(t) / (2 * 3.141592653589793):.3g} turns "
-                "away; the phase of the motion there is not determined by a double-precision "
-                f"time (keep rate x |t| below {MAX_PHASE:.0e} rad)"
-            )
-
-    state = rp.state_at(motion, t_at) if t_at is not None else None
-    check = fm.verify(motion) if verify else None
+    result = api.run(b, opts)
     csv_info = None
     if csv is not None:
-        csv_info = {"file": csv, "samples": n_rows, "duration": span}
-        blocks = rp.csv_blocks(motion, span, n_rows)
-        c.write_csv(e, csv_path, rp.CSV_HEADER, blocks)  # csv_path None: standard output
+        csv_info = {"file": csv, "samples": opts.samples or api.DEFAULT_SAMPLES, "duration": opts.duration}
+        c.write_csv(e, csv_path, rp.CSV_HEADER, result.series_blocks())  # csv_path None: stdout
     if plot_path is not None:
-        c.save_plot(rp.plot(b, motion, span, du), plot_path)
+        c.save_plot(rp.plot(b, result.motion, opts.duration, du), plot_path)
 
-    extras = rp.Extras(at=state, verify=check, csv=csv_info, plot=str(plot_path) if plot_path else None)
-    if csv == "-":
-        pass  # the time series is the output
-    else:
-        c.emit(e, json_, lambda: rp.to_json(b, motion, extras),
-               lambda doc: rp.document(doc, b, motion, extras, du, digits))
-    if check is not None and not check.ok:
-        c.finish(1)
+    def data() -> dict:
+        out = {}
+        for k, v in result.to_json().items():
+            out[k] = v
+            if k == "name":
+                out["file"] = b.source
+        if csv_info is not None:
+            out["csv"] = csv_info
+        if plot_path is not None:
+            out["plot"] = str(plot_path)
+        return out
 
-
-def prepare(body, *, omega):
-    """The exact torque-free motion of a body from ``omega`` [x, y, z] (rad/s, body frame);
-    shared with report. A core ValueError is an InputError naming the body file (its
-    inertia) or --omega."""
-    import numpy as np
-
-    from rbcli.core import freemotion as fm
-    from rbcli.core.inertia import combine
-    from rbcli.errors import InputError
-
-    mp = combine(body.parts)
-    try:
-        return fm.analyse(mp.inertia_com, np.array(omega, dtype=float))
-    except ValueError as exc:
-        where = body.source if str(exc).startswith("inertia") else "--omega"
-        raise InputError(f"{where}: {exc}") from None
-
-
-def _count(text: str) -> int:
-    from rbcli.errors import InputError
-
-    try:
-        n = int(text.strip())
-    except ValueError:
-        raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got '{text}'") from None
-    if not 2 <= n <= MAX_SAMPLES:
-        raise InputError(f"--samples: expected a whole number of rows from 2 to {MAX_SAMPLES}, got {n}")
-    return n
+    if csv != "-":  # with --csv - the time series is the output
+        c.emit(e, json_, data, lambda doc: rp.document(
+            doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None))
+    c.finish(result.return_code)
 
 
 MANUAL["precess"] = {
@@ -188,8 +134,12 @@ MANUAL["precess"] = {
         "1 when G^2 < 2 T I2; both are stable for a rigid body (a body that dissipates energy "
         "ends up turning about axis 3, the major-axis rule). G^2 = 2 T I2 is the separatrix: no "
         "period, w creeps towards the intermediate axis and the body turns over once. The "
-        "intermediate component w2 changes sign every flip_interval = 2K(m)/lambda: near the "
-        "intermediate axis that is the tennis-racket (Dzhanibekov) flip.",
+        "intermediate component w2 changes sign every 2K(m)/lambda; that is a flip (the "
+        "tennis-racket or Dzhanibekov effect, flip_interval) only when the motion carries the "
+        "intermediate axis through a reversal relative to L: when L, seen in the body, passes "
+        "nearer to the intermediate axis than to any other principal axis, then nearer to its "
+        "opposite. Near the largest or smallest axis w2 changes sign as part of a wobble about "
+        "that axis: flip_interval is null and the table says 'no flip: stable about axis k'.",
         "Symmetric body (I1 = I2 = I, I3 = Is, or the prolate I2 = I3): in the body w circles the "
         "symmetry axis at W = w3 (Is/I - 1) (period 2 pi/|W|); in space the axis and w turn "
         "about L at |L|/I. For the Earth (Is/I = 1.00327, one turn a sidereal day) the rigid "
@@ -209,8 +159,8 @@ MANUAL["precess"] = {
         ("precession_rate", "symmetric bodies: W = w3 (Is/I - 1), rad/s, signed about the symmetry axis; null otherwise."),
         ("space_precession_rate", "symmetric bodies: |L|/I, rad/s, the rate the symmetry axis turns about L."),
         ("body_cone_deg, space_cone_deg", "symmetric bodies: the semi-angles of the body cone (w to the axis) and the space cone (w to L), degrees."),
-        ("flip_interval", "asymmetric periodic motion: time between sign changes of w2, s (the tennis-racket flips near the intermediate axis); null otherwise."),
-        ("first_flip, flip_interval_estimate", "the first t > 0 at which w2 changes sign, s; the near-separatrix estimate (2/sigma) ln(4/k'), s."),
+        ("flip_interval", "time between flips, s: when the motion carries the intermediate axis through a reversal relative to L (L passes nearer to the intermediate axis than to the others, then to its opposite; w2 changes sign in the middle of each flip); null near the largest or smallest axis (no flip), for symmetric bodies and when not periodic."),
+        ("first_flip, flip_interval_estimate", "the first t > 0 at which w2 changes sign in a flip (on the separatrix: the one flip, if ahead), s; the near-separatrix estimate (2/sigma) ln(4/k'), s; null when the body does not flip."),
         ("omega, angular_momentum_norm, symmetry, principal_moments, principal_axes", "the input w [3] rad/s; |L|; asymmetric/symmetric/spherical; moments ascending [3] and axes [3x3] (rows, body frame)."),
         ("case, description, stable", "rest, spherical, steady, circulates_max, circulates_min or separatrix; one sentence; whether the motion is stable (null where neutral or n/a)."),
         ("nutation_deg, symmetry_axis, oblate, spin_rate, wobble_to_spin, wobble_period, space_precession_period", "symmetric bodies: angle of L from the axis; the axis [3]; Is > I; psi' = -W; |phi'/psi'|; 2 pi/|W| s (also for steady spin about the axis: the period of a small wobble); 2 pi I/|L| s."),

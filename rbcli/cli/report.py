@@ -483,20 +483,20 @@ def _precess(ctx: _Ctx):
     key, title = "free-precession", "Free precession"
     if ctx.opts.omega is None:
         return _skip(key, title, "free precession: no --omega given (the initial angular velocity, body frame)")
-    from rbcli.cli import precess as cp
+    from rbcli.api import precess as api
     from rbcli.render import precess as rp
     from rbcli.render.text import Doc
 
     b = ctx.body
     try:
-        motion = cp.prepare(b, omega=ctx.opts.omega)
+        result = api.run(b, api.PrecessOptions.parse(b, omega=ctx.opts.omega))
     except InputError as exc:
         return _skip(key, title, f"free precession: not computed: {exc}")
     doc = Doc()
-    rp.document(doc, b, motion, rp.Extras(), ctx.du, ctx.digits)
+    rp.document(doc, b, result, ctx.du, ctx.digits)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    _plot(ctx, s, "precess", rp.plot(b, motion, None, ctx.du),
+    _plot(ctx, s, "precess", rp.plot(b, result.motion, None, ctx.du),
           "The angular velocity in the body frame against time and the polhode (as rbcli precess --plot).")
     return s
 

@@ -5,7 +5,8 @@ off-diagonals ``-sum m x y``) and the initial angular velocity in the body frame
 :func:`analyse` classifies the motion and returns a :class:`FreeMotion` with every number
 ``precess`` reports; :func:`omega_at`, :func:`attitude_at` and :func:`precession_angle_at`
 evaluate the exact motion at any array of times (cost independent of ``t``: no numerical
-integration); :func:`verify` checks the closed forms against ``scipy.integrate.solve_ivp``.
+integration); :func:`rbcli.core.freeverify.verify` checks the closed forms against
+``scipy.integrate.solve_ivp``.
 
 Conventions
 -----------
@@ -31,7 +32,15 @@ from typing import Any
 
 import numpy as np
 
+from rbcli.core.elliptic import ellipk, ellippi, ellippi_sc
+from rbcli.core.elliptic import jacobi_reduced as _jacobi
+from rbcli.core.inertia import InputOverflow
 from rbcli.core.principal import principal_axes
+from rbcli.core.rotation import quat_about_axis as _qaxis
+from rbcli.core.rotation import quat_canonical as _qcanon
+from rbcli.core.rotation import quat_conjugate as _qconj
+from rbcli.core.rotation import quat_from_matrix as _quat_from_matrix
+from rbcli.core.rotation import quat_multiply as _qmul
 
 __all__ = [
     "CASE_REST",
@@ -44,13 +53,10 @@ __all__ = [
     "SEPARATRIX_RTOL",
     "EllipticSolution",
     "FreeMotion",
-    "VerifyResult",
     "analyse",
     "omega_at",
     "attitude_at",
     "precession_angle_at",
-    "quaternion_to_matrix",
-    "verify",
 ]
 
 #: ``FreeMotion.case`` values.
@@ -76,179 +82,8 @@ _TINY = float(np.finfo(float).tiny / np.finfo(float).eps)
 
 
 # ----------------------------------------------------------------------------------------
-# quaternion helpers ([w, x, y, z], scalar first)
+# helpers
 # ----------------------------------------------------------------------------------------
-
-
-def _qmul(p: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Hamilton product ``p q`` of quaternion arrays (..., 4), broadcasting."""
-    p = np.asarray(p, dtype=float)
-    q = np.asarray(q, dtype=float)
-    pw, px, py, pz = p[..., 0], p[..., 1], p[..., 2], p[..., 3]
-    qw, qx, qy, qz = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    return np.stack(
-        [
-            pw * qw - px * qx - py * qy - pz * qz,
-            pw * qx + px * qw + py * qz - pz * qy,
-            pw * qy - px * qz + py * qw + pz * qx,
-            pw * qz + px * qy - py * qx + pz * qw,
-        ],
-        axis=-1,
-    )
-
-
-def _qconj(q: np.ndarray) -> np.ndarray:
-    out = np.array(q, dtype=float, copy=True)
-    out[..., 1:] *= -1.0
-    return out
-
-
-def _qaxis(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
-    """Quaternions (N, 4) of rotations by ``angle`` (N,) about the unit ``axis`` (3,)."""
-    half = 0.5 * np.asarray(angle, dtype=float)
-    s = np.sin(half)
-    return np.concatenate([np.cos(half)[:, None], s[:, None] * np.asarray(axis)[None, :]], axis=1)
-
-
-def _qcanon(q: np.ndarray) -> np.ndarray:
-    """Normalise and choose the sign with ``w >= 0``."""
-    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
-    return np.where(q[..., :1] < 0.0, -q, q)
-
-
-def _quat_from_matrix(R: np.ndarray) -> np.ndarray:
-    """Quaternion (4,) of a proper rotation matrix (Shepperd's method, stable for any R)."""
-    R = np.asarray(R, dtype=float)
-    tr = R[0, 0] + R[1, 1] + R[2, 2]
-    cands = [tr, R[0, 0], R[1, 1], R[2, 2]]
-    k = int(np.argmax(cands))
-    if k == 0:
-        w = 0.5 * math.sqrt(max(1.0 + tr, 0.0))
-        q = [w, (R[2, 1] - R[1, 2]) / (4 * w), (R[0, 2] - R[2, 0]) / (4 * w),
-             (R[1, 0] - R[0, 1]) / (4 * w)]
-    else:
-        i = k - 1
-        j, m = (i + 1) % 3, (i + 2) % 3
-        v = 0.5 * math.sqrt(max(1.0 + R[i, i] - R[j, j] - R[m, m], 0.0))
-        q = [0.0, 0.0, 0.0, 0.0]
-        q[0] = (R[m, j] - R[j, m]) / (4 * v)
-        q[1 + i] = v
-        q[1 + j] = (R[j, i] + R[i, j]) / (4 * v)
-        q[1 + m] = (R[m, i] + R[i, m]) / (4 * v)
-    out = np.array(q)
-    return _qcanon(out)
-
-
-def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
-    """Rotation matrices of quaternions.
-
-    Parameters
-    ----------
-    q : (..., 4) array_like — ``[w, x, y, z]``, scalar first (normalised here)
-
-    Returns
-    -------
-    (..., 3, 3) ndarray — ``R(q)``, with ``R v = q v q*``
-    """
-    q = np.asarray(q, dtype=float)
-    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
-    w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    R = np.empty(q.shape[:-1] + (3, 3))
-    R[..., 0, 0] = 1 - 2 * (y * y + z * z)
-    R[..., 0, 1] = 2 * (x * y - w * z)
-    R[..., 0, 2] = 2 * (x * z + w * y)
-    R[..., 1, 0] = 2 * (x * y + w * z)
-    R[..., 1, 1] = 1 - 2 * (x * x + z * z)
-    R[..., 1, 2] = 2 * (y * z - w * x)
-    R[..., 2, 0] = 2 * (x * z - w * y)
-    R[..., 2, 1] = 2 * (y * z + w * x)
-    R[..., 2, 2] = 1 - 2 * (x * x + y * y)
-    return R
-
-
-# ----------------------------------------------------------------------------------------
-# Jacobi elliptic functions from the complementary parameter, and Carlson forms
-# ----------------------------------------------------------------------------------------
-
-
-def _sncndn_half(u: np.ndarray, m: float, mc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """sn, cn, dn(u | m) for 0 <= u <= K/2, from m AND its complement mc = 1 - m.
-
-    * mc > 1e-4: the AGM / descending Landen scheme (A&S 16.4) started from b0 = sqrt(mc)
-      (``scipy.special.ellipj`` starts from sqrt(1 - m) with m rounded, which fails as
-      m -> 1), with ``dn = sqrt(cn^2 + mc sn^2)``.
-    * mc <= 1e-4: one ascending Landen (Gauss) step (A&S 16.14) to the parameter
-      mu = 1 - r^2, r = (1 - k)/(1 + k) = mc/(1 + k)^2, then the m -> 1 expansions
-      (A&S 16.15) whose error O(r^4 e^{4v}) is below round-off for v <= K/2. The AGM loses
-      ~eps/sqrt(k') in cn near K/2 (an asin of an argument near 1); this route does not.
-    """
-    if mc > 1e-4:
-        a = [1.0]
-        c = [math.sqrt(m)]
-        b = math.sqrt(mc)
-        while abs(c[-1]) > np.finfo(float).eps * a[-1] and len(a) < 64:
-            an = 0.5 * (a[-1] + b)
-            cn_ = 0.5 * (a[-1] - b) if len(a) == 1 else c[-1] * c[-1] / (4.0 * an)
-            b = math.sqrt(a[-1] * b)
-            a.append(an)
-            c.append(cn_)
-        n = len(a) - 1
-        phi = (2.0**n) * a[n] * u
-        for i in range(n, 0, -1):
-            phi = 0.5 * (np.arcsin(np.clip(c[i] * np.sin(phi) / a[i], -1.0, 1.0)) + phi)
-        sn = np.sin(phi)
-        cn = np.cos(phi)
-        return sn, cn, np.sqrt(cn * cn + mc * sn * sn)
-    k = math.sqrt(m)
-    r = mc / (1.0 + k) ** 2
-    mu1 = r * r
-    mu = 1.0 - mu1
-    v = u / (1.0 + r)
-    th = np.tanh(v)
-    e = np.exp(-v)
-    sech = 2.0 * e / (1.0 + e * e)
-    shch = 0.5 * np.sinh(2.0 * v)
-    snv = th + 0.25 * mu1 * (shch - v) * sech * sech
-    cnv = sech - 0.25 * mu1 * (shch - v) * th * sech
-    dnv = sech + 0.25 * mu1 * (shch + v) * th * sech
-    sn = (1.0 + r) * snv * cnv / dnv
-    cn = ((1.0 + r) / mu) * (dnv * dnv - r) / dnv
-    dn = ((1.0 - r) / mu) * (dnv * dnv + r) / dnv
-    return sn, cn, dn
-
-
-def _jacobi(tau: np.ndarray, K: float, m: float, mc: float) -> tuple[np.ndarray, ...]:
-    """sn, cn, dn(tau | m) for tau in [-2K, 2K], with the half-period reduction.
-
-    Returns ``sn, cn, dn, j, snu, cnu`` where ``tau = u + 2 K j`` with |u| <= K and
-    ``snu = sn(u)``, ``cnu = cn(u) >= 0`` (so ``am(u) = atan2(snu, cnu)`` is in [-pi/2, pi/2]
-    and ``am(tau) = am(u) + j pi``).  On (K/2, K] the values come from ``u' = K - u`` through
-    ``sn = cn'/dn'``, ``cn = k' sn'/dn'``, ``dn = k'/dn'`` (A&S 16.8), which keeps cn and dn
-    accurate where they are small.
-    """
-    j = np.rint(tau / (2.0 * K))
-    u = tau - 2.0 * K * j
-    sgn = np.where(u < 0.0, -1.0, 1.0)
-    w = np.minimum(np.abs(u), K)
-    near = w > 0.5 * K
-    w2 = np.where(near, K - w, w)
-    s, c, d = _sncndn_half(w2, m, mc)
-    kp = math.sqrt(mc)
-    snu = sgn * np.where(near, c / d, s)
-    cnu = np.where(near, kp * s / d, c)
-    dn = np.where(near, kp / d, d)
-    par = np.where(np.mod(j, 2.0) == 0.0, 1.0, -1.0)
-    return par * snu, par * cnu, dn, j, snu, cnu
-
-
-def _pi_u(n: float, snu: np.ndarray, cnu: np.ndarray, dnu: np.ndarray) -> np.ndarray:
-    """Pi(n; phi | m) for |phi| <= pi/2 from sin, cos phi and sqrt(1 - m sin^2 phi) (Carlson)."""
-    from scipy.special import elliprf, elliprj
-
-    c2 = cnu * cnu
-    d2 = dnu * dnu
-    s2 = snu * snu
-    return snu * elliprf(c2, d2, 1.0) + (n / 3.0) * snu * s2 * elliprj(c2, d2, 1.0, 1.0 - n * s2)
 
 
 def _big_phase(j: np.ndarray, per: float) -> np.ndarray:
@@ -343,12 +178,17 @@ class FreeMotion:
     linear_rates : (3,) ndarray — rad/s (or 1/s for growth), the above at W = G/I_j, i.e.
         for steady rotation about axis j with this |L|
     elliptic : EllipticSolution | None — asymmetric non-steady motions
-    flip_interval : float | None — s, time between sign changes of the intermediate
-        component w2 (= 2K/lambda), every periodic asymmetric motion
-    first_flip : float | None — s, first t > 0 at which w2 changes sign (periodic asymmetric;
-        separatrix: the single flip if it is still ahead, else None)
+    flip_interval : float | None — s, time between flips (= 2K/lambda, the time between sign
+        changes of w2) when the body flips: when the motion carries the intermediate axis
+        through a reversal relative to L, i.e. L (seen in the body) passes nearer to the
+        intermediate axis than to any other principal axis, and then nearer to its opposite
+        (the tennis-racket / Dzhanibekov flip). None near the largest or smallest axis (w2
+        still changes sign there, but as a wobble about that axis: no flip) and when not
+        periodic
+    first_flip : float | None — s, first t > 0 at which w2 changes sign (the middle of a
+        flip), when the body flips; separatrix: the single flip if it is still ahead
     flip_interval_estimate : float | None — s, near-separatrix estimate (2/sigma) ln(4/k'),
-        sigma = (G/I2) sqrt((I2-I1)(I3-I2)/(I1 I3)), k' = sqrt(1 - m)
+        sigma = (G/I2) sqrt((I2-I1)(I3-I2)/(I1 I3)), k' = sqrt(1 - m), when the body flips
     precession_per_period : float | None — rad, angle R(T) turns about L in one period T
         (R(T) = Rot(L, this)); None when not periodic
     mean_precession_rate : float | None — rad/s, mean rate of turning about L: the above / T;
@@ -415,6 +255,14 @@ class FreeMotion:
         """True for a symmetric or spherical body (two or three equal principal moments)."""
         return self.symmetry != "asymmetric"
 
+    def at(self, t: Any) -> Any:
+        """The exact state at ``t`` (s; a number or an array): a
+        :class:`rbcli.core.freestate.FreeState` with ``omega``, ``angular_momentum`` (body
+        frame, at t), ``quaternion`` (body -> space) and ``rotation_matrix``."""
+        from rbcli.core.freestate import evaluate
+
+        return evaluate(self, t)
+
     def to_json(self) -> dict[str, Any]:
         """Plain-JSON form (SI, degrees under ``*_deg``); every key always present, null = n/a.
 
@@ -471,61 +319,6 @@ class FreeMotion:
         }
 
 
-@dataclass(frozen=True, eq=False)
-class VerifyResult:
-    """Exact solution against a numerical integration (:func:`verify`).
-
-    Attributes
-    ----------
-    t_end : float — s, span integrated (from 0)
-    samples : int — number of comparison times
-    rtol : float — DOP853 relative tolerance used
-    nfev : int — right-hand-side evaluations of the integrator
-    omega_error : float — max_t |w_exact - w_num| / |w_exact(t)| (0 at rest)
-    attitude_error : float — rad, max_t angle of R_exact^T R_num
-    numeric_energy_drift, numeric_momentum_drift, numeric_L_drift : float — along the
-        numerical solution: max |T - T0|/T0, max ||L| - |L0||/|L0|, max |R M - L0|/|L0|
-    exact_energy_drift, exact_momentum_drift, exact_L_drift : float — the same along the exact
-        solution (round-off only)
-    tol : float — threshold of ``ok``
-    ok : bool — omega_error, attitude_error and the three exact drifts all <= tol
-    """
-
-    t_end: float
-    samples: int
-    rtol: float
-    nfev: int
-    omega_error: float
-    attitude_error: float
-    numeric_energy_drift: float
-    numeric_momentum_drift: float
-    numeric_L_drift: float
-    exact_energy_drift: float
-    exact_momentum_drift: float
-    exact_L_drift: float
-    tol: float
-    ok: bool
-
-    def to_json(self) -> dict[str, Any]:
-        """Plain-JSON form."""
-        return {
-            "t_end": float(self.t_end),
-            "samples": int(self.samples),
-            "rtol": float(self.rtol),
-            "nfev": int(self.nfev),
-            "omega_error": float(self.omega_error),
-            "attitude_error": float(self.attitude_error),
-            "numeric_energy_drift": float(self.numeric_energy_drift),
-            "numeric_momentum_drift": float(self.numeric_momentum_drift),
-            "numeric_L_drift": float(self.numeric_L_drift),
-            "exact_energy_drift": float(self.exact_energy_drift),
-            "exact_momentum_drift": float(self.exact_momentum_drift),
-            "exact_L_drift": float(self.exact_L_drift),
-            "tol": float(self.tol),
-            "ok": bool(self.ok),
-        }
-
-
 # ----------------------------------------------------------------------------------------
 # analysis
 # ----------------------------------------------------------------------------------------
@@ -567,7 +360,9 @@ def analyse(
     Raises
     ------
     ValueError
-        shapes wrong, non-finite numbers, or a principal moment <= 0.
+        shapes wrong; :class:`rbcli.core.inertia.InputOverflow` (a ValueError whose
+        ``param`` is ``"inertia"`` or ``"omega"``) for non-finite numbers, a principal
+        moment <= 0, or an omega whose |L|^2 or energy overflows or underflows.
 
     Notes
     -----
@@ -578,8 +373,10 @@ def analyse(
     ``Delta2 = M3^2 (I3-I2)/I3 - M1^2 (I2-I1)/I1``:
 
     * Delta2 > 0: omega circles axis 3 (sheet case "3"); Delta2 < 0: circles axis 1 ("1");
-      lambda, m, 1 - m, amplitudes and tau0 as in §1.2; period 4K/lambda; flips of w2
-      every 2K/lambda; first flip (2K floor(tau0/2K + 1) - tau0)/lambda.
+      lambda, m, 1 - m, amplitudes and tau0 as in §1.2; period 4K/lambda; w2 changes sign
+      every 2K/lambda, first at (2K floor(tau0/2K + 1) - tau0)/lambda. These are flips
+      (``flip_interval``) only when L passes nearer to the intermediate axis than to the
+      others: I2 A2 > Ic Ac k' (the components of M at sn = +-1; c the dn axis).
     * Separatrix when |Delta2| <= SEPARATRIX_RTOL (= 1e-14) times the sum of its two terms,
       i.e. when round-off decides the sign of Delta2. The sheet suggests switching at
       |Delta2| < 1e-12 G^2 because ``scipy.special.ellipj`` fails as m -> 1 (it takes m, not
@@ -602,8 +399,10 @@ def analyse(
         raise ValueError(f"inertia must be a 3x3 tensor, got shape {J.shape}")
     if w0.shape != (3,):
         raise ValueError(f"omega must have 3 components, got shape {w0.shape}")
-    if not (np.all(np.isfinite(J)) and np.all(np.isfinite(w0))):
-        raise ValueError("inertia and omega must be finite")
+    if not np.all(np.isfinite(J)):
+        raise InputOverflow("inertia", "inertia and omega must be finite")
+    if not np.all(np.isfinite(w0)):
+        raise InputOverflow("omega", "inertia and omega must be finite")
     J = 0.5 * (J + J.T)
     pa = principal_axes(J)
     moments = np.array(pa.moments, dtype=float)
@@ -611,7 +410,8 @@ def analyse(
     symmetry = pa.symmetry
     unique = pa.unique_axis
     if not moments[0] > 0.0:
-        raise ValueError(
+        raise InputOverflow(
+            "inertia",
             "inertia must be positive definite: the smallest principal moment is "
             f"{moments[0]:.6g} kg m^2 (a point mass or a thin rod has no free rotation about "
             "its own axis)"
@@ -643,12 +443,14 @@ def analyse(
     # (Found through the CLI: |omega| = 1e200 rad/s overflowed |omega| and was classified
     # "rest"; 1e-300 underflowed G^2 and divided by zero.)
     if not (math.isfinite(wn) and math.isfinite(G2) and math.isfinite(2.0 * T * float(moments[2]))):
-        raise ValueError(
+        raise InputOverflow(
+            "omega",
             "omega is too large for this body: |L|^2 or the kinetic energy overflows double "
             "precision"
         )
     if bool(np.any(w0 != 0.0)) and not (G2 >= _TINY and T > 0.0):
-        raise ValueError(
+        raise InputOverflow(
+            "omega",
             "omega is too small for this body: |L|^2 or the kinetic energy underflows double "
             "precision"
         )
@@ -735,25 +537,23 @@ def analyse(
     m = min(max(m, 0.0), 1.0)
     mc = min(max(mc, 0.0), 1.0)
 
-    from scipy.special import elliprf, elliprj
-
-    K = float(elliprf(0.0, mc, 1.0))
-    # tau0 = F(phi0 | m), phi0 = atan2(y, x), through Carlson with the half-turn reduction
+    K = ellipk(m, mc)
+    # tau0 = F(phi0 | m), phi0 = atan2(y, x), with the half-turn reduction; from sin and cos
+    # of phi0 (= Pi(0; phi0 | m)) so that a small cos keeps its digits near the separatrix
     r = math.hypot(x, y)
     sr, cr = y / r, x / r
     jf = 0.0
     if cr < 0.0:
         jf = 1.0 if sr >= 0.0 else -1.0
         sr, cr = -sr, -cr
-    tau0 = sr * float(elliprf(cr * cr, cr * cr + mc * sr * sr, 1.0)) + 2.0 * K * jf
+    tau0 = float(ellippi_sc(0.0, sr, cr, m, mc)) + 2.0 * K * jf
     period = 4.0 * K / lam
-    pi_c = float(elliprf(0.0, mc, 1.0) + (n / 3.0) * elliprj(0.0, mc, 1.0, 1.0 - n))
+    pi_c = ellippi(n, m, mc)
     coeff = sig * G * (I3 - I1) / (lam * I1 * I3)
     dphi = (G / Ic) * period + 4.0 * coeff * pi_c
 
     _, _, _, j0, snu0, cnu0 = _jacobi(np.array([tau0]), K, m, mc)
-    dnu0 = np.sqrt(cnu0 * cnu0 + mc * snu0 * snu0)
-    pi_tau0 = float(_pi_u(n, snu0, cnu0, dnu0)[0] + 2.0 * j0[0] * pi_c)
+    pi_tau0 = float(ellippi_sc(n, snu0, cnu0, m, mc)[0] + 2.0 * j0[0] * pi_c)
 
     q_left, q_right = _frame_quaternions(Mp, G, perm, axes)
     ell = EllipticSolution(
@@ -762,16 +562,31 @@ def analyse(
         precession_per_period=dphi, _pi_tau0=pi_tau0, _q_left=q_left, _q_right=q_right,
         _perm=perm, _G=G, _Ic=Ic,
     )
-    flip = 2.0 * K / lam
-    first = (2.0 * K * math.floor(tau0 / (2.0 * K) + 1.0) - tau0) / lam
-    est = (2.0 / sigma_G) * math.log(4.0 / math.sqrt(mc)) if mc > 0 else None
-    near = mc < 0.01
-    desc = (
-        f"omega circles principal axis {circles} ({'largest' if circles == 3 else 'smallest'}"
-        f" moment), period {period:.6g} s; the intermediate component w2 changes sign every "
-        f"{flip:.6g} s"
-        + (" (close to the separatrix: the body flips over)" if near else "")
-    )
+    # The body flips (the intermediate axis turns over relative to L) when L, seen in the
+    # body, passes nearer to the intermediate axis than to any other principal axis: at
+    # sn = +-1 (w2 extreme) |M2| = I2 A2 while the other components are 0 and Ic Ac k'
+    # (Ic, Ac: the dn axis). Otherwise w2 still changes sign every 2K/lambda, but that is
+    # the wobble of a body circling its largest (smallest) axis, not a flip.
+    Ac = A3 if kind == "3" else A1
+    flips = I2 * A2 > Ic * Ac * math.sqrt(mc)
+    half = 2.0 * K / lam
+    flip = first = est = None
+    if flips:
+        flip = half
+        first = (2.0 * K * math.floor(tau0 / (2.0 * K) + 1.0) - tau0) / lam
+        est = (2.0 / sigma_G) * math.log(4.0 / math.sqrt(mc)) if mc > 0 else None
+    big = "largest" if circles == 3 else "smallest"
+    if flips:
+        desc = (
+            f"omega circles principal axis {circles} ({big} moment), period {period:.6g} s; "
+            f"the body flips over (the intermediate axis turns over relative to L) every "
+            f"{half:.6g} s"
+        )
+    else:
+        desc = (
+            f"omega circles principal axis {circles} ({big} moment), period {period:.6g} s; "
+            f"no flip: stable about axis {circles}"
+        )
     return FreeMotion(
         case=case, description=desc, circles_axis=circles, period=period, stable=True,
         elliptic=ell, flip_interval=flip, first_flip=first, flip_interval_estimate=est,
@@ -1053,7 +868,7 @@ def _phi_parts(
         r = math.sqrt(-el.n)
         local = el._G / motion.moments[1] * t + el.coeff * (np.arctan(r * st["tanh"]) - el._pi_tau0)
         return np.zeros_like(t), local
-    pi_tau = _pi_u(el.n, st["snu"], st["cnu"], st["dnu"]) + 2.0 * st["j2"] * el.pi_complete
+    pi_tau = ellippi_sc(el.n, st["snu"], st["cnu"], el.m, el.mc) + 2.0 * st["j2"] * el.pi_complete
     local = (el._G / el._Ic) * (st["taur"] - el.tau0) / el.lam + el.coeff * (pi_tau - el._pi_tau0)
     return st["j4"], local
 
@@ -1111,108 +926,3 @@ def attitude_at(motion: FreeMotion, t: Any) -> np.ndarray:
     wn = float(np.linalg.norm(motion.omega0_principal))
     axis = (motion.omega0_principal @ motion.axes) / wn
     return _qcanon(_qaxis(axis, np.fmod(wn * tt, 2 * _TWO_PI)))
-
-
-# ----------------------------------------------------------------------------------------
-# verification against numerical integration
-# ----------------------------------------------------------------------------------------
-
-
-def _char_time(motion: FreeMotion) -> float:
-    if motion.period is not None:
-        return motion.period
-    if motion.elliptic is not None:
-        return _TWO_PI / motion.elliptic.lam
-    wn = float(np.linalg.norm(motion.omega0_principal))
-    return _TWO_PI / wn if wn > 0 else 1.0
-
-
-def verify(
-    motion: FreeMotion,
-    periods: float = 3,
-    rtol: float = 1e-12,
-    *,
-    samples_per_period: int = 200,
-    tol: float = 1e-8,
-) -> VerifyResult:
-    """Compare the exact motion with a DOP853 integration of Euler's equations and attitude.
-
-    Parameters
-    ----------
-    motion : FreeMotion
-    periods : float — span in periods of omega (or, when not periodic, in characteristic
-        times: 2 pi/lambda on the separatrix, 2 pi/|omega| for steady motion, 1 s at rest)
-    rtol : float — relative tolerance of ``solve_ivp(method="DOP853")``; atol = rtol/100
-        times the scale of each state component
-    samples_per_period : int — comparison times per period
-    tol : float — threshold for ``ok``
-
-    Returns
-    -------
-    VerifyResult
-
-    Notes
-    -----
-    Integrates, in the BODY frame and with the full tensor (independent of the principal
-    decomposition): ``J w' = (J w) x w`` and ``R' = R [w]x``, R(0) = 1 (sheet §1, Euler's
-    equations; invariants 2T, G^2, L = R M). Near the separatrix the integrator's own error
-    is amplified by about 1/k' per passage (sheet §1.2, table footnote), so a large
-    omega_error there is the integrator's, not the closed form's (the exact drifts stay at
-    round-off).
-    """
-    from scipy.integrate import solve_ivp
-
-    J = motion.inertia
-    Jinv = np.linalg.inv(J)
-    w0 = motion.omega0_principal @ motion.axes
-    wn = float(np.linalg.norm(w0))
-    t_end = float(periods) * _char_time(motion)
-    n = max(int(math.ceil(float(periods) * samples_per_period)), 2) + 1
-    ts = np.linspace(0.0, t_end, n)
-
-    def rhs(_t: float, y: np.ndarray) -> np.ndarray:
-        w = y[:3]
-        R = y[3:].reshape(3, 3)
-        dw = Jinv @ np.cross(J @ w, w)
-        W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-        return np.concatenate([dw, (R @ W).ravel()])
-
-    y0 = np.concatenate([w0, np.eye(3).ravel()])
-    atol = np.concatenate([np.full(3, rtol * 1e-2 * max(wn, 1e-300)), np.full(9, rtol * 1e-2)])
-    sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=atol,
-                    t_eval=ts, dense_output=False)
-    if not sol.success:  # pragma: no cover - DOP853 does not fail on this smooth system
-        raise RuntimeError(f"integration failed: {sol.message}")
-    w_num = sol.y[:3].T
-    R_num = sol.y[3:].T.reshape(-1, 3, 3)
-    w_ex = omega_at(motion, ts)
-    R_ex = quaternion_to_matrix(attitude_at(motion, ts))
-
-    wmag = np.linalg.norm(w_ex, axis=1)
-    omega_err = float(np.max(np.linalg.norm(w_ex - w_num, axis=1) / np.where(wmag > 0, wmag, 1.0)))
-    dR = np.linalg.norm(R_ex - R_num, axis=(1, 2))
-    att_err = float(np.max(2.0 * np.arcsin(np.minimum(dR / (2.0 * math.sqrt(2.0)), 1.0))))
-
-    L0 = J @ w0
-    G0 = float(np.linalg.norm(L0))
-    T0 = 0.5 * float(w0 @ L0)
-
-    def drifts(w: np.ndarray, R: np.ndarray) -> tuple[float, float, float]:
-        M = w @ J  # J symmetric: rows J w
-        T = 0.5 * np.einsum("ij,ij->i", w, M)
-        Gs = np.linalg.norm(M, axis=1)
-        Ls = np.einsum("nij,nj->ni", R, M)
-        dT = float(np.max(np.abs(T - T0))) / (T0 if T0 > 0 else 1.0)
-        dG = float(np.max(np.abs(Gs - G0))) / (G0 if G0 > 0 else 1.0)
-        dL = float(np.max(np.linalg.norm(Ls - L0, axis=1))) / (G0 if G0 > 0 else 1.0)
-        return dT, dG, dL
-
-    nT, nG, nL = drifts(w_num, R_num)
-    eT, eG, eL = drifts(w_ex, R_ex)
-    ok = all(x <= tol for x in (omega_err, att_err, eT, eG, eL))
-    return VerifyResult(
-        t_end=t_end, samples=n, rtol=rtol, nfev=int(sol.nfev), omega_error=omega_err,
-        attitude_error=att_err, numeric_energy_drift=nT, numeric_momentum_drift=nG,
-        numeric_L_drift=nL, exact_energy_drift=eT, exact_momentum_drift=eG, exact_L_drift=eL,
-        tol=tol, ok=ok,
-    )

@@ -15,6 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.rotation import matrix_to_axis_angle
+
 DEGENERATE_RTOL = 1e-9
 
 
@@ -201,34 +203,6 @@ class PrincipalResult:
             others = [k for k in range(3) if k != j]
             out[:, j] = np.degrees(np.arctan2(np.linalg.norm(a[:, others], axis=1), a[:, j]))
         return out
-
-
-def matrix_to_axis_angle(R: np.ndarray) -> tuple[np.ndarray, float]:
-    """Unit axis and angle (rad, in [0, π]) of a proper rotation matrix."""
-    R = np.asarray(R, dtype=float)
-    # quaternion from the matrix (Shepperd's method), robust at every angle
-    tr = float(np.trace(R))
-    cands = [tr, R[0, 0], R[1, 1], R[2, 2]]
-    k = int(np.argmax(cands))
-    if k == 0:
-        w = 0.5 * np.sqrt(1.0 + tr)
-        x, y, z = (R[2, 1] - R[1, 2]) / (4 * w), (R[0, 2] - R[2, 0]) / (4 * w), (R[1, 0] - R[0, 1]) / (4 * w)
-    elif k == 1:
-        x = 0.5 * np.sqrt(1.0 + 2 * R[0, 0] - tr)
-        w, y, z = (R[2, 1] - R[1, 2]) / (4 * x), (R[0, 1] + R[1, 0]) / (4 * x), (R[0, 2] + R[2, 0]) / (4 * x)
-    elif k == 2:
-        y = 0.5 * np.sqrt(1.0 + 2 * R[1, 1] - tr)
-        w, x, z = (R[0, 2] - R[2, 0]) / (4 * y), (R[0, 1] + R[1, 0]) / (4 * y), (R[1, 2] + R[2, 1]) / (4 * y)
-    else:
-        z = 0.5 * np.sqrt(1.0 + 2 * R[2, 2] - tr)
-        w, x, y = (R[1, 0] - R[0, 1]) / (4 * z), (R[0, 2] + R[2, 0]) / (4 * z), (R[1, 2] + R[2, 1]) / (4 * z)
-    v = np.array([x, y, z], dtype=float)
-    if w < 0:
-        w, v = -w, -v
-    s = float(np.linalg.norm(v))
-    if s < 1e-15:
-        return np.array([0.0, 0.0, 1.0]), 0.0
-    return v / s, float(2.0 * np.arctan2(s, w))
 
 
 def principal_report(mass: float, inertia: np.ndarray, reference: np.ndarray) -> PrincipalResult:

@@ -11,6 +11,11 @@ Every constructor here returns a (3, 3) float ndarray that is a proper rotation
 (det = +1, orthonormal to round-off, ~1e-15) and raises :class:`ValueError` with a
 lower-case message for input that cannot describe one.
 
+The second half is the one quaternion and axis-angle kit of rbcli (free motion's attitude,
+the principal frame's axis and angle, ``precess --at``): quaternions are ``[w, x, y, z]``
+(scalar first, Hamilton product, ``R(q) v = q v q*``), arrays of shape (..., 4), and the
+canonical sign is ``w >= 0``.
+
 The module uses numpy only: ``scipy.spatial.transform`` costs ~270 ms of start-up
 (see FACTS.md), and the few formulas needed are short. scipy's ``Rotation`` is the
 test oracle: :func:`euler` agrees with ``Rotation.from_euler(seq, angles).as_matrix()``
@@ -32,6 +37,14 @@ __all__ = [
     "quaternion",
     "from_matrix",
     "rotate_tensor",
+    "quat_multiply",
+    "quat_conjugate",
+    "quat_about_axis",
+    "quat_canonical",
+    "quat_from_matrix",
+    "quat_to_matrix",
+    "quat_to_axis_angle",
+    "matrix_to_axis_angle",
 ]
 
 
@@ -396,3 +409,133 @@ def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N8
     if np.array_equal(t, t.T):
         out = 0.5 * (out + out.T)
     return out
+
+
+# ----------------------------------------------------------------------------------------
+# quaternions and axis-angle ([w, x, y, z], scalar first; arrays broadcast over (..., 4))
+# ----------------------------------------------------------------------------------------
+
+
+def quat_multiply(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Hamilton product ``p q`` of quaternion arrays (..., 4), broadcasting.
+
+    ``R(p q) = R(p) R(q)``: ``q`` is applied first.
+    """
+    p = np.asarray(p, dtype=float)
+    q = np.asarray(q, dtype=float)
+    pw, px, py, pz = p[..., 0], p[..., 1], p[..., 2], p[..., 3]
+    qw, qx, qy, qz = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
+    return np.stack(
+        [
+            pw * qw - px * qx - py * qy - pz * qz,
+            pw * qx + px * qw + py * qz - pz * qy,
+            pw * qy - px * qz + py * qw + pz * qx,
+            pw * qz + px * qy - py * qx + pz * qw,
+        ],
+        axis=-1,
+    )
+
+
+def quat_conjugate(q: np.ndarray) -> np.ndarray:
+    """``q*`` = ``[w, -x, -y, -z]`` (the inverse rotation for a unit quaternion)."""
+    out = np.array(q, dtype=float, copy=True)
+    out[..., 1:] *= -1.0
+    return out
+
+
+def quat_about_axis(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
+    """Quaternions (N, 4) of rotations by ``angle`` (N,) rad about the unit ``axis`` (3,)."""
+    half = 0.5 * np.atleast_1d(np.asarray(angle, dtype=float))
+    s = np.sin(half)
+    return np.concatenate([np.cos(half)[:, None], s[:, None] * np.asarray(axis, dtype=float)[None, :]],
+                          axis=1)
+
+
+def quat_canonical(q: np.ndarray) -> np.ndarray:
+    """Normalise and choose the sign with ``w >= 0`` (q and -q are the same rotation)."""
+    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
+    return np.where(q[..., :1] < 0.0, -q, q)
+
+
+def _shepperd(R: np.ndarray) -> tuple[float, float, float, float]:
+    """Unnormalised quaternion (w, x, y, z) of a proper rotation matrix, Shepperd's method.
+
+    The largest of 1 + tr, 1 + 2 R_ii - tr is square-rooted, so no division is by a small
+    number at any angle (S. W. Shepperd, "Quaternion from rotation matrix", J. Guidance
+    and Control 1 (1978) 223-224).
+    """
+    R = np.asarray(R, dtype=float)
+    tr = float(np.trace(R))
+    k = int(np.argmax([tr, R[0, 0], R[1, 1], R[2, 2]]))
+    if k == 0:
+        w = 0.5 * math.sqrt(max(1.0 + tr, 0.0))
+        return (w, (R[2, 1] - R[1, 2]) / (4 * w), (R[0, 2] - R[2, 0]) / (4 * w),
+                (R[1, 0] - R[0, 1]) / (4 * w))
+    if k == 1:
+        x = 0.5 * math.sqrt(max(1.0 + 2 * R[0, 0] - tr, 0.0))
+        return ((R[2, 1] - R[1, 2]) / (4 * x), x, (R[0, 1] + R[1, 0]) / (4 * x),
+                (R[0, 2] + R[2, 0]) / (4 * x))
+    if k == 2:
+        y = 0.5 * math.sqrt(max(1.0 + 2 * R[1, 1] - tr, 0.0))
+        return ((R[0, 2] - R[2, 0]) / (4 * y), (R[0, 1] + R[1, 0]) / (4 * y), y,
+                (R[1, 2] + R[2, 1]) / (4 * y))
+    z = 0.5 * math.sqrt(max(1.0 + 2 * R[2, 2] - tr, 0.0))
+    return ((R[1, 0] - R[0, 1]) / (4 * z), (R[0, 2] + R[2, 0]) / (4 * z),
+            (R[1, 2] + R[2, 1]) / (4 * z), z)
+
+
+def quat_from_matrix(R: np.ndarray) -> np.ndarray:
+    """Canonical unit quaternion (4,) of a proper rotation matrix (3, 3); Shepperd's method."""
+    return quat_canonical(np.array(_shepperd(R), dtype=float))
+
+
+def quat_to_matrix(q: np.ndarray) -> np.ndarray:
+    """Rotation matrices (..., 3, 3) of quaternions (..., 4) (normalised here).
+
+    ``R = (w² − v·v) I + 2 v vᵀ + 2 w [v]x`` written out, with ``R v = q v q*``.
+    """
+    q = np.asarray(q, dtype=float)
+    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
+    w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
+    R = np.empty(q.shape[:-1] + (3, 3))
+    R[..., 0, 0] = 1 - 2 * (y * y + z * z)
+    R[..., 0, 1] = 2 * (x * y - w * z)
+    R[..., 0, 2] = 2 * (x * z + w * y)
+    R[..., 1, 0] = 2 * (x * y + w * z)
+    R[..., 1, 1] = 1 - 2 * (x * x + z * z)
+    R[..., 1, 2] = 2 * (y * z - w * x)
+    R[..., 2, 0] = 2 * (x * z - w * y)
+    R[..., 2, 1] = 2 * (y * z + w * x)
+    R[..., 2, 2] = 1 - 2 * (x * x + y * y)
+    return R
+
+
+def quat_to_axis_angle(q: np.ndarray) -> tuple[np.ndarray | None, float]:
+    """Unit axis (or None for no rotation) and angle in [0, π] rad of one quaternion (4,).
+
+    ``angle = 2 atan2(|v|, |w|)`` (accurate at every angle, unlike ``2 acos w``); the axis
+    is ``sign(w) v/|v|`` so that the angle is at most π.
+    """
+    q = np.asarray(q, dtype=float)
+    v = q[1:]
+    s = float(np.linalg.norm(v))
+    angle = 2.0 * math.atan2(s, abs(float(q[0])))
+    if s == 0.0:
+        return None, angle
+    return (np.sign(q[0]) if q[0] != 0 else 1.0) * v / s, angle
+
+
+def matrix_to_axis_angle(R: np.ndarray) -> tuple[np.ndarray, float]:
+    """Unit axis and angle (rad, in [0, π]) of a proper rotation matrix.
+
+    Through Shepperd's quaternion (robust at every angle); for an angle below ~1e-15 rad
+    the axis is undefined and ``[0, 0, 1]`` is returned with angle 0.
+    """
+    w, x, y, z = _shepperd(R)
+    v = np.array([x, y, z], dtype=float)
+    if w < 0:
+        w, v = -w, -v
+    s = float(np.linalg.norm(v))
+    if s < 1e-15:
+        return np.array([0.0, 0.0, 1.0]), 0.0
+    return v / s, float(2.0 * np.arctan2(s, w))

@@ -24,9 +24,18 @@ def times(duration: float, samples: int, chunk: int = CHUNK) -> Iterator[np.ndar
 
 
 def rows_text(block: np.ndarray) -> str:
-    """The CSV lines of a (rows, columns) block, each ending in a newline."""
-    rows = (np.asarray(block, dtype=float) + 0.0).tolist()  # + 0.0: no negative zeros
-    return "".join(",".join(map(repr, row)) + "\n" for row in rows)
+    """The CSV lines of a (rows, columns) block, each ending in a newline.
+
+    Every number is ``repr`` of the float (shortest round trip), with no negative zeros.
+    The whole block is one ``%``-format of the flattened values (``%r`` is ``repr``): the
+    same bytes as ``",".join(map(repr, row))`` per row, without a Python loop per row.
+    Almost all the time left is CPython's shortest-repr itself (~0.5 µs a number).
+    """
+    a = np.asarray(block, dtype=float) + 0.0  # + 0.0: no negative zeros
+    if a.size == 0:
+        return "\n" * len(a)
+    line = ",".join(["%r"] * a.shape[1]) + "\n"
+    return (line * a.shape[0]) % tuple(a.ravel().tolist())
 
 
 def write(sink: Callable[[str], object], header: Sequence[str], blocks: Iterable[np.ndarray]) -> int:

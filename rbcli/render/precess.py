@@ -3,172 +3,28 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
 
 from rbcli.core import freemotion as fm
+from rbcli.core import freestate as fs
 from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num, snap
 from rbcli.render.text import Doc
 
 AXES = ("x", "y", "z")
-SPEC_KEYS = (
-    "angular_momentum", "kinetic_energy", "symmetric", "period", "circles_axis",
-    "precession_rate", "space_precession_rate", "body_cone_deg", "space_cone_deg", "flip_interval",
-)
-CSV_HEADER = ("t", "wx", "wy", "wz", "Lx", "Ly", "Lz", "qw", "qx", "qy", "qz")
-#: 1 - m below this: "close to the separatrix", the flips are the story (as in core's description)
-NEAR_SEPARATRIX = 0.01
-#: an oblate symmetric body with Is/I - 1 below this is "Earth-like" (nearly spherical)
-EARTH_LIKE = 0.01
+#: the CSV header of ``--csv`` (the columns of :func:`rbcli.core.freestate.series`)
+CSV_HEADER = fs.SERIES_COLUMNS
 _DAY = 86400.0
 
 
-@dataclass
-class Extras:
-    """What was asked for beyond the analysis."""
-
-    at: dict | None = None
-    verify: fm.VerifyResult | None = None
-    csv: dict | None = None
-    plot: str | None = None
-
-
-# ----------------------------------------------------------------------------- numbers
-
-
-def fastest_rate(motion: fm.FreeMotion) -> float:
-    """rad/s: the fastest rate anything turns at (|w|, or 2 pi/period if faster)."""
-    r = float(np.linalg.norm(motion.omega0))
-    if motion.period:
-        r = max(r, 2 * math.pi / motion.period)
-    if motion.elliptic is not None:
-        r = max(r, motion.elliptic.lam)
-    return r
-
-
-def _evaluate(motion: fm.FreeMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """w (body), L (body) and q (body -> space) at the times t; exact initial values at t = 0."""
-    w = fm.omega_at(motion, t)
-    q = fm.attitude_at(motion, t)
-    zero = t == 0.0
-    if np.any(zero):  # the initial conditions themselves, not their round-off
-        w[zero] = motion.omega0
-        q[zero] = (1.0, 0.0, 0.0, 0.0)
-    L = w @ motion.inertia  # the model tensor is symmetric: rows are J w
-    return w, L, q
-
-
-def state_at(motion: fm.FreeMotion, t: float) -> dict:
-    """w, L, the orientation (quaternion, axis-angle, matrix) at one time t (s)."""
-    w, L, q = _evaluate(motion, np.array([float(t)]))
-    q = q[0]
-    v = q[1:]
-    s = float(np.linalg.norm(v))
-    angle = 2.0 * math.atan2(s, abs(float(q[0])))
-    axis = None if s == 0.0 else (np.sign(q[0]) if q[0] != 0 else 1.0) * v / s
-    R = fm.quaternion_to_matrix(q)
-    return {
-        "t": float(t),
-        "omega": w[0].tolist(),
-        "angular_momentum": L[0].tolist(),
-        "quaternion": q.tolist(),
-        "rotation_axis": None if axis is None else [float(x) for x in axis],
-        "rotation_angle_deg": math.degrees(angle),
-        "rotation_matrix": snap(R, scale=1.0, rtol=1e-16).tolist(),
-        "periods": None if motion.period is None else float(t) / motion.period,
-    }
-
-
-def csv_blocks(motion: fm.FreeMotion, duration: float, samples: int) -> Iterator[np.ndarray]:
-    """Rows t, w (body), L (body), q (body -> space) at ``samples`` times from t = 0 to
-    ``duration`` inclusive, in blocks for :func:`rbcli.render.csvout.write`.
-
-    The quaternion's sign is continuous along the series (starting with w = +1 at t = 0).
-    """
-    from rbcli.render.csvout import times
-
-    prev = None
-    for t in times(duration, samples):
-        w, L, q = _evaluate(motion, t)
-        # continuous sign: flip each q whose dot with the one before is negative
-        ref = np.vstack([q[:1] if prev is None else prev[None, :], q[:-1]])
-        flips = np.einsum("ij,ij->i", q, ref) < 0.0
-        sign = np.where(np.cumsum(flips) % 2 == 1, -1.0, 1.0)
-        q = q * sign[:, None]
-        prev = q[-1].copy()
-        yield np.column_stack([t, w, L, q])
-
-
-# ----------------------------------------------------------------------------- notes
-
-
 def notes(motion: fm.FreeMotion, du: DisplayUnits | None = None, digits: int = 6) -> list[str]:
-    """What the numbers mean, in words (also the JSON ``notes``)."""
+    """The notes of :func:`rbcli.core.freestate.notes` with times and numbers as displayed."""
     du = du or DisplayUnits()
     tu = du.unit("time")
-    out: list[str] = []
-    el = motion.elliptic
-    if motion.case == fm.CASE_SEPARATRIX:
-        out.append(
-            "separatrix: G^2 = 2 T I2 exactly (to round-off), the boundary between circling the "
-            "largest and the smallest axis. There is no period: ω creeps towards the intermediate "
-            "axis (axis 2) as t -> ±infinity, and the body turns over once"
-            + (f", at t = {du.show(motion.first_flip, 'time', digits)} {tu}." if motion.first_flip is not None
-               else " (before t = 0).")
-        )
-    elif el is not None and el.mc < NEAR_SEPARATRIX:
-        out.append(
-            f"close to the intermediate axis: the body flips over every "
-            f"{du.show(motion.flip_interval, 'time', digits)} {tu}, first at "
-            f"{du.show(motion.first_flip, 'time', digits)} {tu} (the tennis-racket or Dzhanibekov "
-            "effect: rotation about the intermediate axis is unstable)."
-        )
-    if motion.case == fm.CASE_STEADY and motion.circles_axis is None and motion.symmetry == "asymmetric":
-        out.append(
-            "steady rotation about the intermediate axis is unstable: a small disturbance grows as "
-            f"exp(σt), σ = {num(motion.linear_rates[1], digits)} 1/s, and turns into flips."
-        )
-    if motion.circles_axis == 1 and motion.stable:
-        out.append(
-            "rotation about the smallest moment is stable for a rigid body; a body that loses "
-            "energy inside (flexing, sloshing) drifts to rotation about the largest moment "
-            "(the major-axis rule, Explorer 1)."
-        )
-    if (motion.symmetry == "symmetric" and motion.oblate and motion.wobble_period is not None
-            and float(motion.moments[2]) / float(motion.moments[0]) - 1.0 < EARTH_LIKE):
-        out.append(
-            f"rigid-body (Euler) wobble period {num(motion.wobble_period / _DAY, digits)} d. For "
-            "the Earth the observed Chandler wobble takes about 433 d: that is not a rigid-body "
-            "result (the elastic mantle, the oceans and the fluid core lengthen it)."
-        )
-    return out
-
-
-# ----------------------------------------------------------------------------- JSON
-
-
-def to_json(body: Body, motion: fm.FreeMotion, extras: Extras) -> dict[str, Any]:
-    """SPEC §3 keys first, then the core's extras, then what was asked for."""
-    core = motion.to_json()
-    core["principal_axes"] = snap(core["principal_axes"], scale=1.0, rtol=1e-15).tolist()
-    out = {k: core[k] for k in SPEC_KEYS}
-    out.update({k: v for k, v in core.items() if k not in out})
-    out["notes"] = notes(motion)
-    out["name"] = body.name
-    out["file"] = body.source
-    if extras.at is not None:
-        out["at"] = extras.at
-    if extras.verify is not None:
-        out["verify"] = extras.verify.to_json()
-    if extras.csv is not None:
-        out["csv"] = extras.csv
-    if extras.plot is not None:
-        out["plot"] = extras.plot
-    return out
+    return fs.notes(motion, time=lambda x: f"{du.show(x, 'time', digits)} {tu}",
+                    number=lambda x: num(x, digits))
 
 
 # ----------------------------------------------------------------------------- tables
@@ -199,8 +55,11 @@ def _axis_label(motion: fm.FreeMotion, i: int) -> str:
     return base
 
 
-def document(doc: Doc, body: Body, motion: fm.FreeMotion, extras: Extras, du: DisplayUnits, digits: int) -> None:
-    """The tables a person reads."""
+def document(doc: Doc, body: Body, result: Any, du: DisplayUnits, digits: int, *,
+             csv: dict | None = None, plot: str | None = None) -> None:
+    """The tables a person reads, from a :class:`rbcli.api.precess.PrecessResult`; ``csv``
+    ({file, samples, duration}) and ``plot`` (a file name) say what was written."""
+    motion = result.motion
     doc.heading(f"{body.name}  ({body.source})")
     f, iu = du.factor("inertia")
     rows = []
@@ -235,12 +94,14 @@ def document(doc: Doc, body: Body, motion: fm.FreeMotion, extras: Extras, du: Di
     if el is not None:
         if motion.flip_interval is not None:
             rows.append(("flip interval (ω2 changes sign)", *_time(motion.flip_interval, du, digits)))
+        elif el.kind != "separatrix":
+            rows.append(("flips", f"no flip: stable about axis {motion.circles_axis}", ""))
         if el.kind == "separatrix":
             rows.append(("the one flip (ω2 changes sign) at", *_time(-el.tau0 / el.lam, du, digits)))
             rows.append(("Ω0 = |L|/I2 (ω → ±Ω0 along axis 2)", du.show(el.amplitudes[1], "angular_speed", digits), du.unit("angular_speed")))
         elif motion.first_flip is not None:
             rows.append(("first flip", *_time(motion.first_flip, du, digits)))
-        if motion.flip_interval_estimate is not None and el.mc < NEAR_SEPARATRIX:
+        if motion.flip_interval_estimate is not None and el.mc < fs.NEAR_SEPARATRIX:
             rows.append(("near-separatrix estimate (2/σ) ln(4/k')", *_time(motion.flip_interval_estimate, du, digits)))
         if el.kind != "separatrix":
             rows.append(("elliptic parameter m, 1 − m", f"{num(el.m, digits)}, {num(el.mc, digits)}", ""))
@@ -279,7 +140,7 @@ def document(doc: Doc, body: Body, motion: fm.FreeMotion, extras: Extras, du: Di
     for text in notes(motion, du, digits):
         doc.note(text)
 
-    st = extras.at
+    st = result.at_json
     if st is not None:
         rows = [("t", *_time(st["t"], du, digits))]
         if st["periods"] is not None:
@@ -292,7 +153,7 @@ def document(doc: Doc, body: Body, motion: fm.FreeMotion, extras: Extras, du: Di
         rows.append(("rotation angle", num(st["rotation_angle_deg"], digits), "°"))
         doc.kv(f"at t = {du.show(st['t'], 'time', digits)} {du.unit('time')} (body frame; orientation body → space)", rows)
 
-    v = extras.verify
+    v = result.check
     if v is not None:
         rows = [
             ("span", *_time(v.t_end, du, digits)),
@@ -305,84 +166,24 @@ def document(doc: Doc, body: Body, motion: fm.FreeMotion, extras: Extras, du: Di
             ("verdict", f"agree (all ≤ {num(v.tol, 3)})" if v.ok else f"DISAGREE (tolerance {num(v.tol, 3)})", ""),
         ]
         doc.kv(f"check against numerical integration (DOP853, rtol {num(v.rtol, 3)}, {v.nfev} evaluations)", rows)
-        if not v.ok and motion.elliptic is not None and motion.elliptic.mc < NEAR_SEPARATRIX:
+        if not v.ok and motion.elliptic is not None and motion.elliptic.mc < fs.NEAR_SEPARATRIX:
             doc.note("near the separatrix the integrator's own error grows at every pass near the "
                      "intermediate axis; the drifts along the exact solution show whether it is exact.")
-    if extras.csv is not None:
-        doc.note(f"time series ({extras.csv['samples']} rows over {du.show(extras.csv['duration'], 'time', digits)} "
-                 f"{du.unit('time')}) written to {extras.csv['file']}")
-    if extras.plot is not None:
-        doc.note(f"plot written to {extras.plot}")
+    if csv is not None:
+        doc.note(f"time series ({csv['samples']} rows over {du.show(csv['duration'], 'time', digits)} "
+                 f"{du.unit('time')}) written to {csv['file']}")
+    if plot is not None:
+        doc.note(f"plot written to {plot}")
 
 
 # ----------------------------------------------------------------------------- figure
-
-
-def plot_span(motion: fm.FreeMotion, duration: float | None) -> tuple[float, float]:
-    """(t0, t1), s: --duration from 0, else 3 periods (or 3 characteristic times)."""
-    if duration is not None:
-        return 0.0, float(duration)
-    if motion.period is not None:
-        return 0.0, 3.0 * motion.period
-    el = motion.elliptic
-    if el is not None:  # the separatrix: show the flip, even if it was before t = 0
-        char = 2 * math.pi / el.lam
-        tf = -el.tau0 / el.lam
-        return min(0.0, tf - char), max(3.0 * char, tf + char)
-    wn = float(np.linalg.norm(motion.omega0))
-    return 0.0, 3.0 * (2 * math.pi / wn if wn > 0 else 1.0)
-
-
-def polhode_family(moments: np.ndarray, levels: int = 5) -> list[np.ndarray]:
-    """Polhodes on the unit L-sphere (principal frame) at a few energies, and the separatrix.
-
-    Each curve is the sphere |m| = 1 cut by the energy ellipsoid sum m_i^2/I_i = e, written
-    in closed form: around axis 3, m1 = a cos s, m2 = b sin s; around axis 1, m3 = c cos s,
-    m2 = b' sin s; the third component from |m| = 1, both signs. Levels are picked by the
-    point (sin beta, 0, cos beta) they pass through.
-    """
-    I1, I2, I3 = (float(x) for x in moments)
-    u1, u2, u3 = 1 / I1, 1 / I2, 1 / I3
-    s = np.linspace(0.0, 2 * math.pi, 361)
-    curves: list[np.ndarray] = []
-    if not I3 > I1:
-        return curves
-    sep_a2 = (u2 - u3) / (u1 - u3)  # sin^2 of the separatrix's beta
-    beta_s = math.asin(math.sqrt(min(max(sep_a2, 0.0), 1.0)))
-
-    def close(m1, m2):
-        r = np.clip(1.0 - m1 * m1 - m2 * m2, 0.0, None)
-        return np.sqrt(r)
-
-    if I3 > I2:
-        for fr in np.linspace(0.0, 1.0, levels + 2)[1:-1]:
-            beta = fr * beta_s
-            a = math.sin(beta)
-            b = math.sqrt(a * a * (u1 - u3) / (u2 - u3))
-            m1, m2 = a * np.cos(s), b * np.sin(s)
-            for sg in (1.0, -1.0):
-                curves.append(np.column_stack([m1, m2, sg * close(m1, m2)]))
-    if I2 > I1:
-        for fr in np.linspace(0.0, 1.0, levels + 2)[1:-1]:
-            beta = beta_s + fr * (math.pi / 2 - beta_s)
-            cc = math.cos(beta)
-            bb = math.sqrt(cc * cc * (u1 - u3) / (u1 - u2))
-            m3, m2 = cc * np.cos(s), bb * np.sin(s)
-            for sg in (1.0, -1.0):
-                curves.append(np.column_stack([sg * close(m2, m3), m2, m3]))
-    if I3 > I2 > I1:  # the separatrix: b = 1 around axis 3
-        a = math.sqrt(sep_a2)
-        m1, m2 = a * np.cos(s), np.sin(s)
-        for sg in (1.0, -1.0):
-            curves.append(np.column_stack([m1, m2, sg * close(m1, m2)]))
-    return curves
 
 
 def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits):
     """w(t) in the body frame (three panels) and the polhode seen along axes 3 and 1."""
     from rbcli.render.plots import figure, style
 
-    t0, t1 = plot_span(motion, duration)
+    t0, t1 = fs.plot_span(motion, duration)
     per = motion.period or (t1 - t0)
     n = int(min(20000, max(1500, 400 * (t1 - t0) / per)))
     t = np.linspace(t0, t1, n)
@@ -413,7 +214,7 @@ def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayU
     G = motion.angular_momentum_norm
     m = (fm.omega_at(motion, t, frame="principal") * motion.moments) / G if G > 0 else np.zeros((0, 3))
     m0 = motion.omega0_principal * motion.moments / G if G > 0 else np.zeros(3)
-    family = polhode_family(motion.moments)
+    family = fs.polhode_family(motion.moments)
     names = [_axis_label(motion, i).replace(" moment", "") for i in range(3)]
     first = (0, 1, 2) if motion.circles_axis == 1 else (2, 0, 1)  # along the circled axis
     extent = float(np.max(np.ptp(m, axis=0))) if m.size else 0.0
