@@ -57,6 +57,7 @@ def balance(
     force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input: the body file, a file it includes or a mesh it reads)."),
     plot: str = typer.Option(None, "--plot", help="Write the polar balancing diagram (png, svg or pdf): per correction plane the unbalance as given, the masses to add and the residual, on the rotor's clock face (without --planes: U and P_G).", show_default=False),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -65,6 +66,7 @@ def balance(
     from rbcli.render import balance as rb
 
     e = c.env()
+    out = c.output_format(json_, fmt)
     su = rb.ShopUnits(units)
     b = c.load_one(body, expr, e)
     o = api.BalanceOptions.parse(
@@ -97,7 +99,7 @@ def balance(
         applied = _apply(res, out_path, apply, b, given)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    c.emit(e, json_, lambda: _json(res, applied),
+    c.emit(e, out, lambda: _json(res, applied),
            lambda doc: rb.document(doc, res, su, digits, applied=applied))
     c.finish(res.return_code)
 
@@ -277,6 +279,7 @@ def field_balance(
     radius: str = typer.Option(None, "--radius", help="Radius the corrections go at (m, or with units); needs --trial-radius.", show_default=False),
     plot: str = typer.Option(None, "--plot", help="Write the polar diagram of the balancing sheet (png, svg or pdf): per sensor the readings O, O+T and the trial's effect; per plane the trial and the correction mass.", show_default=False),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -284,6 +287,7 @@ def field_balance(
     from rbcli.render import balance as rb
 
     e = c.env()
+    out = c.output_format(json_, fmt)
     su = rb.ShopUnits(units)
     plot_path = c.check_plot(plot) if plot is not None else None
     o = api.FieldBalanceOptions.parse(None, initial=initial, trial=trial, run=run_,
@@ -296,7 +300,7 @@ def field_balance(
         c.save_plot(balanceplot.plot(res.diagram(), su, reading), plot_path)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
-    c.emit(e, json_, res.to_json, lambda doc: rb.field_document(doc, res, su, digits))
+    c.emit(e, out, res.to_json, lambda doc: rb.field_document(doc, res, su, digits))
 
 
 MANUAL["field-balance"] = {

@@ -67,6 +67,7 @@ def precess(
     plot: str = typer.Option(None, "--plot", help=PLOT_HELP, show_default=False),
     verify: bool = typer.Option(False, "--verify", help=VERIFY_HELP),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -75,6 +76,7 @@ def precess(
     from rbcli.render.fmt import DisplayUnits
 
     e = c.env()
+    out = c.output_format(json_, fmt)
     du = DisplayUnits.parse(units)
 
     # --- option values, checked before the body is read (bad usage is bad usage)
@@ -85,8 +87,8 @@ def precess(
     if csv is not None:
         if opts.duration is None:
             raise InputError("--csv: needs --duration T, the span of the time series (from t = 0)")
-        if csv == "-" and json_:
-            raise InputError("--csv -: the time series would go to standard output, so it cannot be combined with --json; write it to a file")
+        if csv == "-" and out != "table":
+            raise InputError(f"--csv -: the time series would go to standard output, so it cannot be combined with --{'json' if json_ else 'format ' + out}; write it to a file")
     elif opts.duration is not None and plot is None:
         raise InputError("--duration: sets the span of --csv or --plot; add one of them")
 
@@ -117,7 +119,7 @@ def precess(
         return out
 
     if csv != "-":  # with --csv - the time series is the output
-        c.emit(e, json_, data, lambda doc: rp.document(
+        c.emit(e, out, data, lambda doc: rp.document(
             doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None))
     c.finish(result.return_code)
 

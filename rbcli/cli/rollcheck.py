@@ -45,6 +45,7 @@ def rollcheck(
     circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (m, or with units); 0 = spinning in place.", show_default=False),
     plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane. An existing figure is replaced (atomically); an input file never.", show_default=False),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -53,6 +54,7 @@ def rollcheck(
     from rbcli.render.fmt import DisplayUnits
 
     e = c.env()
+    out = c.output_format(json_, fmt)
     du = DisplayUnits.parse(units)
     b = c.load_one(body, expr, e)
     opts = RollcheckOptions.parse(b, axle=axle, through=through, radius=radius,
@@ -70,7 +72,7 @@ def rollcheck(
         if plot_path is not None:
             doc.note(f"plot written to {plot_path}")
 
-    c.emit(e, json_, lambda: {**res.to_json(), "file": res.source}, tables)
+    c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables)
     c.finish(res.return_code)
 
 

@@ -4,8 +4,9 @@ The layout is a contract (documented in rbcli(1)): one block per table of the do
 blocks separated by an empty line; each block is a header row and its rows. The first
 column, ``table``, is the table's title, so every row says where it came from; with
 several bodies (``inertia``/``principal`` on many files) a ``file`` column comes first.
-A column whose unit the table names in its title (``inertia about the origin
-[kg·m²]``) carries the unit in its header (``x [kg·m²]``); quantity/value/unit tables
+The numeric columns of a table that names its unit in its title (``inertia about the
+origin [kg·m²]``) carry the unit in their header (``x [kg·m²]``), and the title loses
+it; quantity/value/unit tables
 keep their ``unit`` column. Numbers are the table's, at ``--digits`` significant
 figures (JSON has full precision). Notes and headings (prose) are not part of the CSV.
 Quoting follows RFC 4180 (Python's csv module, ``\\n`` line ends).
@@ -19,8 +20,8 @@ import re
 
 from rbcli.render.text import Doc, Table
 
-#: a unit in brackets at the end of a table title
-_TITLE_UNIT = re.compile(r"\s*\[([^\[\]]+)\]\s*$")
+#: a unit in brackets in a table title ("inertia about the origin [kg·m²]")
+_TITLE_UNIT = re.compile(r"\s*\[([^\[\]]+)\]")
 
 
 def header(table: Table) -> list[str]:
@@ -36,7 +37,7 @@ def title(table: Table) -> str:
     """The table's title without a trailing bracketed unit (it moved into the header)."""
     if "unit" in table.columns:
         return table.title
-    return _TITLE_UNIT.sub("", table.title)
+    return _TITLE_UNIT.sub("", table.title, count=1)
 
 
 def blocks(doc: Doc, file: str | None = None) -> list[list[list[str]]]:

@@ -126,6 +126,21 @@ def cases() -> dict[str, list[list[str]]]:
     add("rollcheck", "hoop-circle-json", "examples/hoop.yaml", "--lean", "20", "--circle", "1", "--json")
     add("rollcheck", "penny-json", "examples/penny.yaml", "--speed", "0.1", "--json")
     add("rollcheck", "coin-tyre", "examples/thick_coin.yaml", "--tyre-radius", "1 mm", "--speed", "1")
+    # --format csv (the tables for spreadsheets) and the robot descriptions
+    add("inertia", "bracket-csv", "examples/bracket.yaml", "--format", "csv")
+    add("inertia", "many-csv", "examples/cube.yaml", "examples/square_lamina.yaml", "--format", "csv")
+    add("inertia", "bracket-urdf", "examples/bracket.yaml", "--format", "urdf")
+    add("inertia", "fan-sdf-principal", "examples/two_blade_fan.yaml", "--format", "sdf", "--principal")
+    add("inertia", "fan-mjcf", "examples/two_blade_fan.yaml", "--format", "mjcf")
+    add("inertia", "fan-mjcf-principal", "examples/two_blade_fan.yaml", "--format", "mjcf", "--principal")
+    add("principal", "fan-csv", "examples/two_blade_fan.yaml", "--format", "csv")
+    add("balance", "rotor-grade-csv", "examples/two_disk_rotor.yaml", "--planes", "0,400mm", "--radius",
+        "100mm", "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3", "--format", "csv")
+    add("field-balance", "two-plane-csv", "--initial", "170@112,53@78", "--trial", "1.15 g@0", "--run",
+        "235@94,58@68", "--trial", "1.15 g@0", "--run", "185@115,77@104", "--format", "csv")
+    add("precess", "book-csv", "examples/book.yaml", "--omega", "0.01,1,0.01", "--format", "csv")
+    add("rollcheck", "bicycle-csv", "examples/bicycle_wheel.yaml", "--speed", "5 km/h", "--format", "csv")
+    add("rollcheck", "error-format", "examples/penny.yaml", "--format", "xml")
     add("shapes", "all")
     add("shapes", "cylinder", "cylinder")
     add("shapes", "mesh", "mesh")
