@@ -18,16 +18,16 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
+from rbcli.core.gyrocompass import gyrocompass
 from rbcli.core.top import (
     PivotAtCom,
     TopParams,
     analyse,
     axis_at,
-    gyrocompass,
     path_at,
     top_from_body,
-    verify,
 )
+from rbcli.core.topverify import verify
 
 # The sheet's top (§2.1, §6 "top"): m, l, I about the pivot across, Is, S, g, θ0.
 M, L, I_P, IS, SPIN, G = 0.5, 0.04, 1.2e-3, 4.0e-4, 150.0, 9.81
