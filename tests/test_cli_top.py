@@ -235,12 +235,18 @@ def test_default_g_is_standard_gravity_and_echoed(cli):
 
 def test_started_at_the_slow_steady_rate_it_stays_steady(cli):
     d = top(cli, TOP, *SHEET, "--phi-dot", "3.479725148792905")
-    assert d["steady"] is True and d["path"] == "waves"
+    assert d["steady"] is True and d["path"] == "steady"
     # θ does not move: the band closes to round-off of the start (the sheet: ~sqrt(eps)
     # conditioning near a double root; here 1e-9 degrees is far inside that)
     assert d["theta1_deg"] == pytest.approx(30.0, abs=1e-9)
     assert d["theta2_deg"] == pytest.approx(30.0, abs=1e-9)
     assert d["mean_precession_rate"] == pytest.approx(3.47972514879, rel=1e-10)
+    # issue 13.6: the JSON and the table say the same thing, for either steady rate
+    for rate in d["steady_precession_rates"]:
+        args = (TOP, *SHEET, "--phi-dot", repr(rate))
+        assert top(cli, *args)["path"] == "steady"
+        out = cli("top", *args).out
+        assert "path of the axis tip" in out and "steady precession" in out.split("path of the axis tip")[1].splitlines()[0]
 
 
 @pytest.mark.parametrize("theta_dot, phi_dot", [(0.0, 10.0), (0.0, -5.0), (2.0, 0.0), (-3.0, 8.0), (0.0, 40.0), (0.0, -40.0), (1.0, 3.5)])
@@ -408,7 +414,7 @@ def test_pivot_option_moves_the_pivot(cli):
 def test_json_has_the_spec_keys_first_and_in_order(cli):
     d = top(cli, TOP, *SHEET)
     assert list(d)[: len(SPEC_KEYS)] == SPEC_KEYS
-    assert isinstance(d["steady_precession_rates"], list) and d["path"] in ("waves", "loops", "cusps")
+    assert isinstance(d["steady_precession_rates"], list) and d["path"] in ("waves", "loops", "cusps", "steady")
     # the same keys whatever the case: no steady rates, steady precession, horizontal
     for args in (["--spin", "50", "--theta", "30"], [*SHEET, "--phi-dot", "3.479725148792905"],
                  ["--spin", "150", "--theta", "90"]):
@@ -690,3 +696,26 @@ def test_gyrocompass_direction_pole_and_errors(cli):
                        "not both")):
         rc, out, err = astuple(cli("gyrocompass", *args))
         assert rc == 2 and out == "" and err.count("\n") == 1 and msg in err, (args, err)
+
+
+def test_verify_at_exactly_the_critical_spin_is_bounded(cli, cli_proc):
+    # issue 15: at exactly S_c, started 0.001° from upright, 3 nutation periods are 208 s
+    # of motion and ~70 000 integrator steps (it ran for 210 s); --verify now stops at its
+    # step budget with one line saying why (the subprocess timeout is the time bound)
+    crit = top(cli, TOP, "--spin", "150", "--theta", "30")["critical_spin"]
+    r = cli_proc("top", TOP, "--spin", repr(crit), "--theta", "0.001", "--verify", timeout=60)
+    assert r.code == 2 and r.out == "", r.err
+    assert r.err.startswith("rbcli: --verify: the numerical integration cannot finish in ") and r.err.count("\n") == 1
+    assert "run without --verify" in r.err
+    # without --verify the closed form answers at once
+    assert cli_proc("top", TOP, "--spin", repr(crit), "--theta", "0.001", timeout=60).code == 0
+
+
+def test_verify_step_budget_in_the_core():
+    from rbcli.core.top import TopParams, analyse
+    from rbcli.core.topverify import TooLong, verify
+
+    mo = analyse(TopParams(mass=0.5, length=0.04, I=1.2e-3, Is=4.0e-4), 150.0, math.radians(30), g=9.81)
+    assert verify(mo).passed  # about 400 steps
+    with pytest.raises(TooLong, match="cannot finish in 50 steps"):
+        verify(mo, max_steps=50)

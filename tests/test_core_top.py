@@ -197,7 +197,7 @@ def test_t2_steady_precession_rates_and_threshold(t1):
 def test_t2_started_on_steady_precession(t1, branch, nut):
     rate = t1.steady_precession_rates[branch]
     mo = analyse(SHEET_TOP, SPIN, TH30, phi_dot0=rate, g=G)
-    assert mo.steady and mo.path == "waves"
+    assert mo.steady and mo.path == "steady"
     # the band closes: θ1 = θ2 to round-off (the cubic's double root, well conditioned in
     # the shifted variable; 1e-9 deg is far below the 6-figure output)
     assert math.degrees(mo.theta2 - mo.theta1) < 1e-9
@@ -538,7 +538,7 @@ def test_to_json_keys_and_plain_values(spin, theta_deg, thd, phd):
     assert SPEC_KEYS <= d.keys()
     assert _plain(d)
     json.dumps(d, allow_nan=False)  # raises on NaN or infinity
-    assert d["path"] in {"waves", "loops", "cusps"}
+    assert d["path"] in {"waves", "loops", "cusps", "steady"}
     assert len(d["steady_precession_rates"]) in (0, 1, 2)
     if spin == 50.0:  # below the 71.4 rad/s minimum at 30°: no steady precession
         assert d["steady_precession_rates"] == []

@@ -212,7 +212,7 @@ MANUAL["top"] = {
         ("theta1_deg, theta2_deg", "least and greatest tilt from the upward vertical, degrees."),
         ("nutation_period", "s (null on the separatrix)."),
         ("mean_precession_rate", "<phi'>, rad/s (null on the separatrix)."),
-        ("path", "waves, loops or cusps (steady precession is waves with steady true)."),
+        ("path", "waves, loops, cusps, or steady (steady precession: theta stays at theta0, as steady true says)."),
         ("g, theta0_deg, theta_dot0, phi_dot0", "the start: gravity (m/s^2), tilt (degrees), rates (rad/s)."),
         ("steady, sleeps", "whether theta stays fixed (steady precession); whether |S| > critical_spin."),
         ("minimum_spin_for_steady", "the least |S| for steady precession at theta0, rad/s (0 at or below the horizontal)."),

@@ -409,9 +409,8 @@ class TopMotion:
     critical_spin : float — rad/s, sleeping-top threshold S_c = sqrt(4 I m g l)/Is
     sleeps : bool — |S| > S_c (a top started upright would stay up)
     apex_u : float — the u at which φ' = 0, b/a
-    path : str — "waves" (φ' keeps its sign), "loops" (φ' reverses inside the band) or
-        "cusps" (φ' = 0 at a turning point); steady precession is "waves" with
-        ``steady`` true (a wave of zero height)
+    path : str — "waves" (φ' keeps its sign), "loops" (φ' reverses inside the band),
+        "cusps" (φ' = 0 at a turning point) or "steady" (θ stays at θ0: ``steady`` true)
     steady : bool — θ1 = θ2 to round-off: u2 - u1 <= STEADY_ULPS · eps ·
         (β sin²θ0 + 2|u0|(θ0'² + φ0'² sin²θ0) + 2|a φ0'| sin²θ0) / (|c2| + β(1 - u0)),
         the band that round-off of the linear coefficient c1 alone would open
@@ -644,8 +643,8 @@ def analyse(
     ω² = (a - 2φ' cos θ)² + φ'² sin²θ. Path (sheet §2 "Locus"): the apex point u' = b/a,
     where φ' = 0, is compared with [u1, u2]: within CUSP_RTOL·(u2 - u1) of a turning
     point → "cusps"; strictly inside → "loops"; outside → "waves". Steady precession
-    (``steady`` true) and an apex at a pole (b = ±a, where φ' = ±a/(1 ± u) cannot vanish)
-    are "waves". The relative errors of the fast-top estimates are (estimate - exact)/exact.
+    (``steady`` true) is "steady"; an apex at a pole (b = ±a, where φ' = ±a/(1 ± u) cannot
+    vanish) is "waves". The relative errors of the fast-top estimates are (estimate - exact)/exact.
     Near a pole, 1 - u2 (1 + u1) is re-solved from f expanded about u = 1 (u = -1), since
     it is ~(b - a)² and may be far below the spacing of floats near u = 1. If the axis
     passes exactly through the vertical (b = a) or the bottom (b = -a), the azimuth of the
@@ -807,7 +806,7 @@ def analyse(
     steady = band <= STEADY_ULPS * band_noise
     tol = CUSP_RTOL * band
     if steady:
-        path = "waves"  # a wave of zero height
+        path = "steady"  # θ stays at θ0 (JSON and tables say the same)
     elif top_pass or bottom_pass or abs(bma / a) <= tol or abs(bpa / a) <= tol:
         # the apex u' = b/a at a pole: φ' = (b - au)/(1 - u²) = ±a/(1 ± u) does not vanish
         # (or only on a loop too small to see); the axis passes through the vertical
