@@ -223,3 +223,34 @@ def test_gyrocompass_errors_carry_the_cli_message(cli, args, path, kw):
     with pytest.raises(InputError) as exc:
         rbcli.gyrocompass(body, **kw)
     assert str(exc.value) == msg
+
+
+# ----------------------------------------------------------------------------- nearly symmetric bodies
+
+
+@pytest.mark.parametrize("args, kw", [
+    (["--spin", "1500 rpm", "--theta", "60"], dict(spin="1500 rpm", theta=60)),
+    (["--spin", "1500 rpm", "--theta", "60", "--verify"], dict(spin="1500 rpm", theta=60, verify=True)),
+    (["--spin", "1500 rpm", "--theta", "60", "--symmetry-tol", "0.5 %"], dict(spin="1500 rpm", theta=60, symmetry_tol="0.5 %")),
+])
+def test_nearly_symmetric_top_to_json_is_the_cli_json(cli, args, kw):
+    r = rbcli.top(rbcli.load("examples/cad_flywheel.yaml"), **kw)
+    assert r.to_json() == cli_json(cli, "top", "examples/cad_flywheel.yaml", *args)
+    assert len(r.warnings) == 1 and r.asymmetry is not None
+    assert cli("top", "examples/cad_flywheel.yaml", *args).err == f"rbcli: {r.warnings[0]}\n"
+
+
+def test_nearly_symmetric_errors_and_gyrocompass(cli):
+    body = rbcli.load("examples/cad_flywheel.yaml")
+    msg = cli_error(cli, "top", "examples/cad_flywheel.yaml", "--spin", "1500 rpm", "--theta", "60",
+                    "--symmetry-tol", "0.001%")
+    with pytest.raises(InputError) as exc:
+        rbcli.top(body, spin="1500 rpm", theta=60, symmetry_tol=1e-5)
+    assert str(exc.value) == msg
+    g = rbcli.gyrocompass(body, spin="6000 rpm", latitude=45)
+    assert g.to_json() == cli_json(cli, "gyrocompass", "examples/cad_flywheel.yaml", "--spin", "6000 rpm",
+                                   "--latitude", "45")
+    assert g.asymmetry is not None and len(g.warnings) == 1
+    with pytest.raises(InputError) as exc:
+        rbcli.gyrocompass(body, spin=100, latitude=45, symmetry_tol="20 %")
+    assert exc.value.param == "symmetry_tol"

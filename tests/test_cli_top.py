@@ -684,8 +684,10 @@ def test_gyrocompass_direction_pole_and_errors(cli):
     assert pole["period"] is None and pole["settles_to"] is None  # no horizontal Earth rate
     rc, _, err = astuple(cli("gyrocompass", "-e", "{shape: box, size: [0.1, 0.2, 0.3], mass: 1}",
                      "--spin", "100", "--latitude", "30"))
-    # box about z: moments across m(b² + c²)/12 = 0.0108333 and m(a² + c²)/12 = 0.00833333
-    assert rc == 2 and "0.00833333 and 0.0108333" in err and "differ by 23 %" in err
+    # box about z: moments across m(b² + c²)/12 = 0.0108333 and m(a² + c²)/12 = 0.00833333,
+    # 0.0025 apart: 26 % of their mean, far beyond the 1 % --symmetry-tol allows
+    assert rc == 2 and "8.33e-3 and 0.0108 kg m²" in err and "differ by 26 %" in err
+    assert "--symmetry-tol (1 %)" in err
     for args, msg in ((["--ratio", "2", "--latitude", "30"], "--spin: required"),
                       (["--ratio", "2", "--spin", "10"], "--latitude: required"),
                       (["--ratio", "2", "--spin", "0", "--latitude", "3"], "--spin: must not be 0"),
@@ -719,3 +721,78 @@ def test_verify_step_budget_in_the_core():
     assert verify(mo).passed  # about 400 steps
     with pytest.raises(TooLong, match="cannot finish in 50 steps"):
         verify(mo, max_steps=50)
+
+
+# --------------------------------------------------------------------------- nearly symmetric bodies (issue 14.2)
+
+FLY = str(EX / "cad_flywheel.yaml")
+FLY_START = ("--spin", "1500 rpm", "--theta", "60")
+
+
+def test_a_cad_flywheel_symmetric_to_0_01_percent_gets_an_answer_and_one_warning(cli):
+    r = cli("top", FLY, *FLY_START, "--json")
+    assert r.code == 0
+    d = r.json()
+    a = d["asymmetry"]
+    assert set(a) >= {"transverse_moments", "relative", "com_offset", "com_offset_relative", "tolerance"}
+    I1, I2 = a["transverse_moments"]
+    assert a["relative"] == pytest.approx((I2 - I1) / ((I1 + I2) / 2), rel=1e-9)
+    assert 1e-5 < a["relative"] < 1e-4 and a["tolerance"] == 0.01
+    assert d["I"] == pytest.approx((I1 + I2) / 2, rel=1e-13)  # the symmetrised body
+    # one located warning, with the asymmetry in %
+    assert r.err.count("\n") == 1 and r.err.startswith(f"rbcli: {FLY}: warning: ")
+    assert f"differ by {100 * a['relative']:.2g} %" in r.err
+    # the table says the same and how far the answer may be off
+    t = cli("top", FLY, *FLY_START)
+    assert t.code == 0 and t.err == r.err
+    assert "nearly symmetric body" in t.out and "may be off by" in t.out and "--symmetry-tol 1 %" in t.out
+    # a symmetric body: no key, no warning
+    s = cli("top", TOP, *SHEET, "--json")
+    assert "asymmetry" not in s.json() and s.err == ""
+
+
+def test_verify_integrates_the_real_flywheel(cli):
+    d = top(cli, FLY, *FLY_START, "--verify")
+    v = d["verify"]
+    assert v["pass"] is True and v["max_axis_error"] < 1e-10  # the closed form itself
+    rb = v["real_body"]
+    tilt = d["asymmetry"]["principal_axis_tilt"]
+    # the real body departs by a few times the tilt of its principal axis; its own
+    # integration error (energy drift) is far smaller
+    assert tilt < rb["max_axis_error"] < 20 * tilt and rb["energy_drift"] < 1e-11
+    out = cli("top", FLY, *FLY_START, "--verify").out
+    assert "the real (unsymmetrised) body" in out and "PASS" in out
+
+
+def test_beyond_the_symmetry_tolerance_the_body_is_refused_with_the_numbers(cli):
+    r = cli("top", FLY, *FLY_START, "--symmetry-tol", "0.001%")
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+    assert "not symmetric about the pivot–com axis" in r.err and "--symmetry-tol (0.001 %)" in r.err
+    assert "0.1266103 and 0.1266127 kg m²" in r.err  # enough digits to tell them apart
+    # a lump of 1 kg on the rim: a few % out, refused at the default and accepted at 10 %
+    lump = "{parts: [{shape: cylinder, radius: 0.1, length: 0.03, density: 7850, at: [0, 0, 0.12]}, " \
+           "{shape: point, mass: 1, at: [0.09, 0, 0.12]}]}"
+    r = cli("top", "-e", lump, *FLY_START)
+    assert r.code == 2 and "--symmetry-tol (1 %)" in r.err and "differ by" in r.err
+    ok = cli("top", "-e", lump, *FLY_START, "--symmetry-tol", "10 %", "--json")
+    assert ok.code == 0 and ok.json()["asymmetry"]["tolerance"] == 0.1 and "warning" in ok.err
+
+
+@pytest.mark.parametrize("value", ["-1%", "11 %", "0.2", "abc", "1 m"])
+def test_bad_symmetry_tolerance(cli, value):
+    r = cli("top", TOP, *SHEET, "--symmetry-tol", value)
+    assert r.code == 2 and r.err.startswith("rbcli: --symmetry-tol: ") and r.err.count("\n") == 1
+
+
+def test_gyrocompass_with_the_cad_flywheel(cli):
+    r = cli("gyrocompass", FLY, "--spin", "6000 rpm", "--latitude", "45", "--json")
+    assert r.code == 0 and r.err.startswith(f"rbcli: {FLY}: warning: the rotor is not exactly symmetric")
+    d = r.json()
+    A1, A2 = d["asymmetry"]["transverse_moments"]
+    assert d["A"] == pytest.approx((A1 + A2) / 2, rel=1e-13)
+    # the screw (1.5 g, 40 mm out) is what breaks the symmetry about the com: m x² apart
+    m = d["mass"]
+    assert A2 - A1 == pytest.approx(0.0015 * 0.04**2 * (1 - 0.0015 / m), rel=1e-6)
+    assert 1e-4 < d["asymmetry"]["relative"] < 2e-4  # 0.01 %: a CAD body
+    bad = cli("gyrocompass", FLY, "--spin", "6000 rpm", "--latitude", "45", "--symmetry-tol", "0.005 %")
+    assert bad.code == 2 and "a gyrocompass rotor needs them within --symmetry-tol (0.005 %)" in bad.err

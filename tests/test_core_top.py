@@ -449,14 +449,21 @@ def test_asymmetric_body_is_refused_with_how_asymmetric():
     msg = str(err.value)
     assert not isinstance(err.value, PivotAtCom)
     assert "not symmetric" in msg
-    assert "1.2e-3" in msg and "1.5e-3" in msg and "22 %" in msg and "1e-6" in msg
+    assert "1.2e-3" in msg and "1.5e-3" in msg and "22 %" in msg and "--symmetry-tol" in msg
 
 
 def test_tolerance_of_symmetry_is_honoured():
-    Icom = np.diag([4e-4 * (1 + 1e-7), 4e-4, 4e-4])  # 3e-8 relative about the pivot
-    top_from_body(M, [0, 0, L], Icom, [0, 0, 0])  # within the default 1e-6
+    Icom = np.diag([4e-4 * (1 + 1e-7), 4e-4, 4e-4])  # 3e-8 relative about the pivot: rounding
+    p = top_from_body(M, [0, 0, L], Icom, [0, 0, 0], sym_rtol=0.0)  # even at tolerance 0
+    assert p.asymmetry is None
+    # 1e-5 of the moment about the com: 3.3e-6 of the moment across about the pivot
+    Icom = np.diag([4e-4 * (1 + 1e-5), 4e-4, 4e-4])
     with pytest.raises(ValueError, match="not symmetric"):
-        top_from_body(M, [0, 0, L], Icom, [0, 0, 0], sym_rtol=1e-9)
+        top_from_body(M, [0, 0, L], Icom, [0, 0, 0])  # the core's default: rounding only
+    p = top_from_body(M, [0, 0, L], Icom, [0, 0, 0], sym_rtol=1e-4)
+    I1, I2 = p.asymmetry.transverse
+    assert p.I == pytest.approx(0.5 * (I1 + I2), rel=1e-15)  # the symmetrised body
+    assert p.asymmetry.relative == pytest.approx(4e-9 / (4e-4 + M * L * L + 2e-9), rel=1e-6)
 
 
 def test_axis_not_principal_is_refused():

@@ -23,7 +23,8 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from rbcli.core.gyrocompass import Gyrocompass
     from rbcli.core.top import TopMotion, TopParams, TopState
-    from rbcli.core.topverify import VerifyResult
+    from rbcli.core.symmetry import AxialSymmetry
+    from rbcli.core.topverify import RealBodyCheck, VerifyResult
     from rbcli.model import Body
 
 #: standard gravity, m/s² (the default of ``g``)
@@ -32,6 +33,25 @@ STANDARD_GRAVITY = 9.80665
 EARTH_RATE = 7.2921150e-5
 #: nutation periods that ``verify`` integrates and that :meth:`TopResult.default_duration` spans
 PERIODS = 3
+
+def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
+    """The tolerance of a nearly symmetric body: a fraction (``0.01``) or a percentage
+    (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None gives the default, 1 %
+    (:data:`rbcli.core.symmetry.DEFAULT_TOLERANCE`)."""
+    from rbcli.core.symmetry import DEFAULT_TOLERANCE, MAX_TOLERANCE
+
+    if value is None:
+        return DEFAULT_TOLERANCE
+    text = value.strip() if isinstance(value, str) else value
+    if isinstance(text, str) and text.endswith("%"):
+        x = op.quantity(text[:-1].strip(), "dimensionless", option) / 100.0
+    else:
+        x = op.quantity(text, "dimensionless", option)
+    if not (0.0 <= x <= MAX_TOLERANCE):
+        raise InputError(f"{option}: must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
+                         f"0.01 or a percentage such as '1 %'), got {value}", param="symmetry_tol")
+    return x
+
 
 _OVERFLOW = ("--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
              "top's equations; give values of a physical size")
@@ -55,6 +75,9 @@ class TopOptions:
         ``"--pivot origin"``, ``"the body's pivot"`` or ``"the origin, as no pivot was given"``
     pivot_given : bool — the pivot was an option (errors about it then name ``--pivot``)
     verify : bool — integrate numerically and compare (``--verify``)
+    symmetry_tol : float — how far from symmetric about the pivot–com axis the body may be
+        (a fraction; default 0.01): within it the answer is for the symmetrised body, with a
+        warning; beyond it the body is refused
     """
 
     spin: float
@@ -66,11 +89,12 @@ class TopOptions:
     pivot_source: str
     pivot_given: bool = False
     verify: bool = False
+    symmetry_tol: float = 0.01
 
     @classmethod
     def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
               theta_dot: Any = None, phi_dot: Any = None, g: Any = None,
-              verify: bool = False) -> TopOptions:
+              verify: bool = False, symmetry_tol: Any = None) -> TopOptions:
         """Read and check the values (see :func:`top` for their meaning and units)."""
         if spin is None:
             raise InputError("--spin: required: the spin w3 about the symmetry axis, e.g. --spin 150 (rad/s) or --spin '3000 rpm'",
@@ -98,9 +122,10 @@ class TopOptions:
         if not gv > 0.0:
             raise ParamError("g", f"gravity must be positive (it points down, towards -z), got {g}")
         p_opt = op.point(pivot, "--pivot") if pivot is not None else None
+        tol = symmetry_tolerance(symmetry_tol)
         P, label = _pivot(body, p_opt)
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
-                   pivot_given=p_opt is not None, verify=bool(verify))
+                   pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol)
 
     @property
     def released(self) -> bool:
@@ -141,14 +166,32 @@ class TopResult(Result):
     verify : VerifyResult | None — with ``verify=True``: the largest differences of the axis
         (rad) and the Euler angles from a DOP853 integration, the drift of the energy and of
         the two conserved momenta, and the verdict (``verify.passed``)
-    warnings : tuple[str, ...] — located one-line warnings (none yet for the top)
+    real_body : RealBodyCheck | None — with ``verify=True`` for a nearly symmetric body:
+        the real (unsymmetrised) body integrated from the same start, and how far its axis
+        (rad), θ and φ get from the closed form (information: not part of the verdict)
+    warnings : tuple[str, ...] — located one-line warnings: a nearly symmetric body
     """
 
     body: Body = field(repr=False)
     options: TopOptions
     motion: TopMotion = field(repr=False)
     verify: VerifyResult | None = None
+    real_body: RealBodyCheck | None = None
     warnings: tuple[str, ...] = ()
+
+    @property
+    def asymmetry(self) -> AxialSymmetry | None:
+        """How far a nearly symmetric body departs from symmetry about the pivot–com axis
+        (None when it is symmetric to rounding)."""
+        return self.motion.params.asymmetry
+
+    @property
+    def asymmetry_effect(self) -> float | None:
+        """The relative size of the answer's error from symmetrising the body: of the order
+        of its largest departure (the moments across differ by δ; the real body's moment
+        across swings between them as it spins). None when symmetric."""
+        a = self.asymmetry
+        return None if a is None else a.departure
 
     @property
     def params(self) -> TopParams:
@@ -210,9 +253,13 @@ class TopResult(Result):
         out["pivot"] = pj["pivot"]
         out["com"] = pj["com"]
         out["pivot_source"] = self.options.pivot_source
+        if self.asymmetry is not None:
+            out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
         out["name"] = self.body.name
         if self.verify is not None:
             out["verify"] = self.verify.to_json()
+            if self.real_body is not None:
+                out["verify"]["real_body"] = self.real_body.to_json()
         return out
 
     @property
@@ -234,7 +281,8 @@ def run(body: Body, options: TopOptions) -> TopResult:
     P = np.asarray(options.pivot, dtype=float)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            params = core.top_from_body(mp.mass, mp.com, mp.inertia_com, P)
+            params = core.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
+                                        sym_rtol=options.symmetry_tol)
     except core.PivotAtCom as exc:
         if options.pivot_given:
             raise ParamError("pivot", str(exc)) from None
@@ -252,19 +300,28 @@ def run(body: Body, options: TopOptions) -> TopResult:
             motion.theta1, motion.theta2, motion.critical_spin, motion.horizontal_precession_rate]
     if not all(math.isfinite(v) for v in vals):
         raise InputError(_OVERFLOW, param="spin")
-    check = None
+    check = real = None
     if o.verify:
-        from rbcli.core.topverify import verify
+        from rbcli.core.topverify import verify, verify_real_body
 
         try:
             check = verify(motion, periods=PERIODS)
+            if params.asymmetry is not None:
+                real = verify_real_body(motion, periods=PERIODS)
         except (ValueError, OverflowError, ArithmeticError) as exc:
             raise ParamError("verify", str(exc)) from None
-    return TopResult(body=body, options=o, motion=motion, verify=check)
+    warnings = ()
+    if params.asymmetry is not None:
+        warnings = (f"{body.source}: warning: the body is not exactly symmetric about the pivot–com "
+                    f"axis: {params.asymmetry.percent()}; the answer is for the symmetrised body "
+                    f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+    return TopResult(body=body, options=o, motion=motion, verify=check, real_body=real,
+                     warnings=warnings)
 
 
 def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any = None,
-        phi_dot: Any = None, g: Any = None, verify: bool = False) -> TopResult:
+        phi_dot: Any = None, g: Any = None, verify: bool = False,
+        symmetry_tol: Any = None) -> TopResult:
     """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
     The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
@@ -293,7 +350,13 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
     verify : bool
         Integrate the equations of motion numerically (DOP853, rtol 1e-12) over 3 nutation
         periods and compare with the closed form; ``return_code`` is then 1 if they differ
-        by more than 1e-6 rad or the energy drifts by more than 1e-9.
+        by more than 1e-6 rad or the energy drifts by more than 1e-9. For a nearly
+        symmetric body the real body is integrated too (``result.real_body``).
+    symmetry_tol : float or str, optional
+        How far from symmetric about the pivot–com axis the body may be: a fraction
+        (``0.01``) or a percentage (``"1 %"``), at most 10 %. Default 1 %. A body within it
+        (and above rounding, 1e-6) is answered for its symmetrised form (the mean moment
+        across) with a warning and ``asymmetry`` in the JSON; beyond it, refused.
 
     Returns
     -------
@@ -316,7 +379,7 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
     (0.142133, 'cusps')
     """
     return run(body, TopOptions.parse(body, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                      phi_dot=phi_dot, g=g, verify=verify))
+                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol))
 
 
 # ----------------------------------------------------------------------------- gyrocompass
@@ -334,6 +397,7 @@ class GyrocompassOptions:
     spin : float — rad/s, ≠ 0
     latitude : float — rad, in [-π/2, π/2]
     earth_rate : float — rad/s, > 0
+    symmetry_tol : float — how far from symmetric about its spin axis the body may be
     """
 
     ratio: float | None
@@ -342,10 +406,12 @@ class GyrocompassOptions:
     spin: float
     latitude: float
     earth_rate: float
+    symmetry_tol: float = 0.01
 
     @classmethod
     def parse(cls, body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any = None,
-              latitude: Any = None, earth_rate: Any = None) -> GyrocompassOptions:
+              latitude: Any = None, earth_rate: Any = None,
+              symmetry_tol: Any = None) -> GyrocompassOptions:
         """Read and check the values (see :func:`gyrocompass`)."""
         if spin is None:
             raise InputError("--spin: required: the rotor's spin about its axis, e.g. --spin '6000 rpm'",
@@ -364,6 +430,7 @@ class GyrocompassOptions:
         if not W > 0.0:
             raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
         n_axis = op.direction(axis, "--axis") if axis is not None else None
+        tol = symmetry_tolerance(symmetry_tol)
         r = None
         if ratio is not None:
             r = op.finite(op.quantity(ratio, "dimensionless", "--ratio"), "--ratio")
@@ -373,7 +440,8 @@ class GyrocompassOptions:
                 raise ParamError("ratio", "give either --ratio or a body (BODY or -e), not both")
             if n_axis is not None:
                 raise ParamError("axis", "the axis belongs to a body; with --ratio there is no body")
-            return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W)
+            return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
+                       symmetry_tol=tol)
         if body is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give --ratio C/A")
         if n_axis is not None:
@@ -387,7 +455,7 @@ class GyrocompassOptions:
         v = np.asarray(n, dtype=float)
         unit = tuple(float(x) for x in v / np.linalg.norm(v))
         return cls(ratio=None, axis=unit, axis_source=src, spin=S, latitude=lat,  # type: ignore[arg-type]
-                   earth_rate=W)
+                   earth_rate=W, symmetry_tol=tol)
 
 
 @dataclass(frozen=True)
@@ -404,7 +472,9 @@ class GyrocompassResult(Result):
         about the com
     mass : float | None — kg, with a body
     options : GyrocompassOptions — the inputs as understood (SI)
-    warnings : tuple[str, ...] — located one-line warnings (none yet)
+    asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric about its
+        spin axis: how far it departs (A is then the mean of its two moments across)
+    warnings : tuple[str, ...] — located one-line warnings: a nearly symmetric rotor
     """
 
     swing: Gyrocompass
@@ -413,7 +483,16 @@ class GyrocompassResult(Result):
     C: float | None = None
     A: float | None = None
     mass: float | None = None
+    asymmetry: AxialSymmetry | None = None
     warnings: tuple[str, ...] = ()
+
+    @property
+    def asymmetry_effect(self) -> float | None:
+        """The relative error of C/A from symmetrising the rotor: up to half the difference
+        of the moments across (the moment about the vertical swings between them as the
+        rotor turns); the period's is about half that. None when symmetric."""
+        a = self.asymmetry
+        return None if a is None else max(0.5 * a.relative, a.coupling_relative)
 
     def to_json(self) -> dict[str, Any]:
         """The JSON of ``rbcli gyrocompass ... --json``, less ``file``."""
@@ -431,6 +510,8 @@ class GyrocompassResult(Result):
             out["mass"] = self.mass
             out["axis"] = list(self.options.axis or ())
             out["axis_source"] = self.options.axis_source
+            if self.asymmetry is not None:
+                out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
             out["name"] = self.body.name
         return out
 
@@ -440,7 +521,7 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
     from rbcli.core import gyrocompass as core
 
     o = options
-    C = A = mass = None
+    C = A = mass = rotor = None
     if o.ratio is not None:
         r = o.ratio
     else:
@@ -449,7 +530,7 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
 
         mp = combine(body.parts)
         try:
-            rotor = core.rotor_from_body(mp.mass, mp.inertia_com, o.axis)
+            rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
         except ValueError as exc:
             raise InputError(f"{exc}; spin axis from {o.axis_source}", Location(body.source)) from None
         C, A, mass = rotor.C, rotor.A, rotor.mass
@@ -459,11 +540,17 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
     except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
         who = ["--ratio" if body is None else body.source, "--spin", "--earth-rate"]
         raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
-    return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass)
+    warnings = ()
+    if body is not None and rotor.asymmetry is not None:
+        warnings = (f"{body.source}: warning: the rotor is not exactly symmetric about its spin axis: "
+                    f"{rotor.asymmetry.percent()}; the answer is for the symmetrised rotor "
+                    f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+    return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass,
+                             asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
 
 
 def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any,
-                latitude: Any, earth_rate: Any = None) -> GyrocompassResult:
+                latitude: Any, earth_rate: Any = None, symmetry_tol: Any = None) -> GyrocompassResult:
     """A gyrocompass: the period of its swing about north and where it settles.
 
     A rotor spinning at ``spin`` about its axis, the axis held horizontal and free to turn
@@ -486,6 +573,10 @@ def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None
         Degrees (a number) or with a unit, -90 to 90; negative is south.
     earth_rate : float or str, optional
         Ω_E, rad/s or with a unit. Default 7.2921150e-5 (sidereal).
+    symmetry_tol : float or str, optional
+        How far from symmetric about its spin axis the body may be: a fraction or a
+        percentage (``"1 %"``), at most 10 %. Default 1 %. Within it, A is the mean of the
+        two moments across, with a warning and ``asymmetry`` in the JSON.
 
     Returns
     -------
@@ -505,4 +596,5 @@ def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None
     22.304
     """
     return run_gyrocompass(body, GyrocompassOptions.parse(body, ratio=ratio, axis=axis, spin=spin,
-                                                          latitude=latitude, earth_rate=earth_rate))
+                                                          latitude=latitude, earth_rate=earth_rate,
+                                                          symmetry_tol=symmetry_tol))

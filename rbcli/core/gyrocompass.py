@@ -16,6 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+
 #: Earth's sidereal rotation rate, rad/s (IERS conventions).
 EARTH_RATE = 7.2921150e-5
 
@@ -169,31 +171,37 @@ class Rotor:
     A : float — kg m², across the spin axis (the mean of the two transverse moments)
     mass : float — kg
     axis : tuple[float, float, float] — the unit spin axis, body frame
+    asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric (above
+        rounding, within the tolerance): how far it departs; None when symmetric
     """
 
     C: float
     A: float
     mass: float
     axis: tuple[float, float, float]
+    asymmetry: AxialSymmetry | None = None
 
 
-def rotor_from_body(mass: float, inertia_com, axis, *, sym_rtol: float = 1e-6) -> Rotor:
-    """C and A of a body symmetric about its spin axis (both about the centre of mass).
+def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e-6) -> Rotor:
+    """C and A of a body (nearly) symmetric about its spin axis, both about the com.
 
     Parameters
     ----------
     mass : float — kg, > 0
+    com : (3,) array_like — m, the centre of mass (the spin axis runs through it)
     inertia_com : (3, 3) array_like — kg m², about the com (tensor convention)
     axis : (3,) array_like — the spin axis in the body frame (need not be unit)
-    sym_rtol : float — the two transverse moments may differ by this fraction of the larger,
-        and the products of inertia coupling the axis to the plane across it by this
-        fraction of the largest moment
+    sym_rtol : float — the tolerance of :func:`rbcli.core.symmetry.require` (the
+        ``--symmetry-tol``): the two transverse moments may differ by this fraction of
+        their mean, and the products coupling the axis to the plane across it may be this
+        fraction of it; A is their mean
 
     Raises
     ------
+    rbcli.core.symmetry.Asymmetric
+        a body not symmetric about the axis within ``sym_rtol`` (with the numbers)
     ValueError
-        a zero or non-finite axis, a zero inertia tensor, a body not symmetric about the
-        axis (with the two moments and by how much they differ), zero moments.
+        a zero or non-finite axis, a zero inertia tensor, zero moments.
     """
     m = _finite("the mass", mass)
     if m <= 0.0:
@@ -215,30 +223,15 @@ def rotor_from_body(mass: float, inertia_com, axis, *, sym_rtol: float = 1e-6) -
     e1 /= np.linalg.norm(e1)
     E = np.array([e1, np.cross(n, e1)])
     A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
-    scale = max(abs(A1), abs(A2), abs(C))
-    if not scale > 0.0:
+    if not max(abs(A1), abs(A2), abs(C)) > 0.0:
         raise ValueError("the inertia tensor is zero: a point mass cannot be a rotor")
-    cvec = E @ J @ n
-    coupling = float(np.linalg.norm(cvec))
-    what = "not a rotor symmetric about its spin axis"
-    if coupling > sym_rtol * scale:
-        e = (cvec @ E) / coupling
-        tilt = 0.5 * math.degrees(math.atan2(2.0 * coupling, abs(C - float(e @ J @ e))))
-        raise ValueError(
-            f"{what}: the spin axis is not a principal axis (product of inertia "
-            f"{coupling:.6g} kg m², {100 * coupling / scale:.2g} % of the largest moment; the "
-            f"nearest principal axis is {tilt:.3g}° away)"
-        )
-    Amax = max(abs(A1), abs(A2))
-    if abs(A2 - A1) > sym_rtol * Amax:
-        raise ValueError(
-            f"{what}: the moments across it are {A1:.6g} and {A2:.6g} kg m² (differ by "
-            f"{100 * abs(A2 - A1) / Amax:.2g} %)"
-        )
     A = 0.5 * (A1 + A2)
     if C <= 0.0 or A <= 0.0:
         raise ValueError(
             f"the moments about and across the spin axis must be positive, got C = {C:.6g} "
             f"and A = {A:.6g} kg m²"
         )
-    return Rotor(C=C, A=A, mass=m, axis=tuple(float(x) for x in n))  # type: ignore[arg-type]
+    sym = about_axis(m, com, J, com, n)
+    require(sym, sym_rtol, "its spin axis", "a gyrocompass rotor")
+    return Rotor(C=C, A=A, mass=m, axis=tuple(float(x) for x in n),  # type: ignore[arg-type]
+                 asymmetry=None if sym.exact else sym)

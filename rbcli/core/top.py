@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from rbcli.core.symmetry import AxialSymmetry, about_axis, require
 from rbcli.errors import ParamError
 
 #: Standard gravity, m/s^2 (SPEC §2 default of ``--g``).
@@ -166,6 +167,10 @@ class TopParams:
         pointing from the pivot to the com (None when built from numbers)
     pivot : tuple[float, float, float] | None — m, body frame
     com : tuple[float, float, float] | None — m, body frame
+    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
+        above rounding, within the tolerance): how far it departs, and its real inertia
+        tensor about the pivot; I is then the mean of the two moments across (None for a
+        body symmetric to rounding)
     """
 
     mass: float
@@ -175,6 +180,7 @@ class TopParams:
     axis: tuple[float, float, float] | None = None
     pivot: tuple[float, float, float] | None = None
     com: tuple[float, float, float] | None = None
+    asymmetry: AxialSymmetry | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         for name in ("mass", "length", "I", "Is"):
@@ -198,7 +204,7 @@ def top_from_body(
     *,
     sym_rtol: float = 1e-6,
 ) -> TopParams:
-    """Reduce a body's mass properties to a symmetric top on a pivot.
+    """Reduce a body's mass properties to a symmetric (or nearly symmetric) top on a pivot.
 
     Parameters
     ----------
@@ -207,7 +213,10 @@ def top_from_body(
     inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
         convention: off-diagonals are -∫xy dm)
     pivot : (3,) array_like — m, the fixed point, body frame
-    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis"
+    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis" (the
+        ``--symmetry-tol`` of :mod:`rbcli.core.symmetry`); a body within it but above
+        rounding is symmetrised (I the mean of the two moments across) and its departures
+        are kept in ``TopParams.asymmetry``
 
     Returns
     -------
@@ -218,7 +227,7 @@ def top_from_body(
     PivotAtCom
         The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
         no gravity torque; the motion is free precession (``rbcli precess``).
-    NotATop
+    rbcli.core.symmetry.Asymmetric
         The two moments across the axis differ by more than ``sym_rtol`` (relative to
         their mean), the axis is not a principal axis (its products of inertia with the
         transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
@@ -261,27 +270,11 @@ def top_from_body(
     e1 = np.cross(e3, np.eye(3)[k])
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(e3, e1)
-    b11, b22, b12 = float(e1 @ Ip @ e1), float(e2 @ Ip @ e2), float(e1 @ Ip @ e2)
-    mean = 0.5 * (b11 + b22)
-    half = math.hypot(0.5 * (b11 - b22), b12)
-    Ia, Ib = mean - half, mean + half
+    mean = 0.5 * (float(e1 @ Ip @ e1) + float(e2 @ Ip @ e2))  # the symmetrised moment across
     if mean <= 0.0:
         raise NotATop("the moment of inertia across the pivot–com axis is zero")
-    rel = (Ib - Ia) / mean
-    if rel > sym_rtol:
-        raise NotATop(
-            "the body is not symmetric about the pivot–com axis: the moments across it are "
-            f"{_num(Ia)} and {_num(Ib)} kg m² (differ by {rel * 100:.2g} %); a top needs them "
-            f"equal to a relative {_num(sym_rtol)}"
-        )
-    coupling = math.hypot(float(e1 @ Ip @ e3), float(e2 @ Ip @ e3))
-    if coupling > sym_rtol * mean:
-        raise NotATop(
-            "the pivot–com axis is not a principal axis of the body: its products of inertia "
-            f"with the plane across it are {_num(coupling)} kg m² "
-            f"({coupling / mean * 100:.2g} % of the moment across, {_num(mean)} kg m²); "
-            f"a top needs them zero to a relative {_num(sym_rtol)}"
-        )
+    sym = about_axis(m, c, J, p, e3)
+    require(sym, sym_rtol, "the pivot–com axis", "a top")
     if Is <= 1e-12 * mean:
         raise NotATop(
             f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
@@ -296,6 +289,7 @@ def top_from_body(
         axis=tuple(float(v) for v in e3),  # type: ignore[arg-type]
         pivot=tuple(float(v) for v in p),  # type: ignore[arg-type]
         com=tuple(float(v) for v in c),  # type: ignore[arg-type]
+        asymmetry=None if sym.exact else sym,
     )
 
 

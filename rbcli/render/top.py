@@ -66,6 +66,9 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
     ax = ", ".join(num(x, d) for x in (p.axis or (0.0, 0.0, 1.0)))
     doc.note(f"pivot [{piv}] {L} ({result.options.pivot_source}); symmetry axis, pivot to com, along [{ax}] "
              "(body frame).")
+    if result.asymmetry is not None:
+        _asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
+                        du, d, "body", "I")
 
     S = motion.spin
     start = [
@@ -184,6 +187,17 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
                 ("verdict", "PASS" if ok else "FAIL", ""),
             ],
         )
+        rb = result.real_body
+        if rb is not None:
+            doc.kv("--verify: the real (unsymmetrised) body against the symmetrised closed form", [
+                ("largest difference of the axis (chord)", f"{rb.max_axis_error:.2e}", "rad"),
+                ("largest difference of θ", f"{rb.max_theta_error * 180 / math.pi:.2e}", "°"),
+                ("largest difference of φ", f"{rb.max_phi_error * 180 / math.pi:.2e}", "°"),
+                ("energy drift of that integration", f"{rb.energy_drift:.2e}", "relative"),
+            ])
+            doc.note("the effect of the asymmetry on the motion over the same span (quaternion and "
+                     "ω in body axes with the full inertia tensor about the pivot, DOP853); it "
+                     "does not enter the verdict.")
         doc.note(f"the check passes when the axis agrees within {check.axis_tolerance:g} rad and "
                  f"the energy drifts by at most {check.energy_tolerance:g} (relative to T0 + m g l); "
                  "integrated in space axes (axis, a body vector and L), no Euler angles.")
@@ -191,6 +205,21 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
         doc.note(f"plot written to {plot}")
     if csv is not None:
         doc.note(f"CSV written to {csv} ({rows} rows over {num(duration, d)} s)")
+
+
+def _asymmetry_note(doc: Doc, sym, tol: float, effect: float, du: DisplayUnits, d: int, what: str,
+                    name: str) -> None:
+    """The line of a nearly symmetric body: its two moments across, how far apart, the tilt
+    of the nearest principal axis, and how far the answer may be off."""
+    J = du.unit("inertia")
+    i1, i2 = (du.show(x, "inertia", d) for x in sym.transverse)
+    tilt = f"; the nearest principal axis is {sym.principal_tilt:.3g} rad off it" if sym.coupling else ""
+    doc.note(f"nearly symmetric {what}: the moments across the axis are {i1} and {i2} {J} (differ by "
+             f"{num(100.0 * sym.relative, 3)} %{tilt}; --symmetry-tol {num(100.0 * tol, 3)} %): the "
+             f"answer is for the symmetrised {what} ({name} = their mean) and may be off by a relative "
+             f"amount of the order of {num(100.0 * effect, 2)} %"
+             + (" (the path of the axis by a few times that tilt; --verify measures it)." if what == "body"
+                else "."))
 
 
 # ----------------------------------------------------------------------------- CSV
@@ -270,6 +299,9 @@ def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits:
             ("C/A", num(res.C_over_A, d), ""),
         ])
         doc.note(f"spin axis [{', '.join(num(x, d) for x in result.options.axis)}] ({result.options.axis_source}).")
+        if result.asymmetry is not None:
+            _asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
+                            du, d, "rotor", "A")
     else:
         doc.heading("gyrocompass")
     lat = math.degrees(res.latitude)
