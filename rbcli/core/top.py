@@ -974,13 +974,3 @@ def state_at(motion: TopMotion, t: np.ndarray) -> TopState:
     psi_dot = motion.spin - phi_dot * u
     return TopState(t=tt, theta=theta, phi=phi, psi=psi, theta_dot=theta_dot, phi_dot=phi_dot,
                     psi_dot=psi_dot)
-
-
-def axis_at(motion: TopMotion, t: np.ndarray) -> np.ndarray:
-    """Unit vector of the symmetry axis in space at times ``t``: shape ``t.shape + (3,)``.
-
-    (sin θ cos φ, sin θ sin φ, cos θ) with θ, φ from :func:`path_at`; z is up, φ(0) = 0.
-    """
-    theta, phi, _ = path_at(motion, t)
-    st = np.sin(theta)
-    return np.stack([st * np.cos(phi), st * np.sin(phi), np.cos(theta)], axis=-1)
