@@ -18,16 +18,15 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
+from rbcli.core.gyrocompass import gyrocompass
 from rbcli.core.top import (
     PivotAtCom,
     TopParams,
     analyse,
-    axis_at,
-    gyrocompass,
     path_at,
     top_from_body,
-    verify,
 )
+from rbcli.core.topverify import verify
 
 # The sheet's top (§2.1, §6 "top"): m, l, I about the pivot across, Is, S, g, θ0.
 M, L, I_P, IS, SPIN, G = 0.5, 0.04, 1.2e-3, 4.0e-4, 150.0, 9.81
@@ -197,7 +196,7 @@ def test_t2_steady_precession_rates_and_threshold(t1):
 def test_t2_started_on_steady_precession(t1, branch, nut):
     rate = t1.steady_precession_rates[branch]
     mo = analyse(SHEET_TOP, SPIN, TH30, phi_dot0=rate, g=G)
-    assert mo.steady and mo.path == "waves"
+    assert mo.steady and mo.path == "steady"
     # the band closes: θ1 = θ2 to round-off (the cubic's double root, well conditioned in
     # the shifted variable; 1e-9 deg is far below the 6-figure output)
     assert math.degrees(mo.theta2 - mo.theta1) < 1e-9
@@ -397,7 +396,7 @@ def test_axis_through_the_vertical():
         t = np.linspace(0.0, 2 * mo.nutation_period, 201)
         e3_o, _ = oracle(M, L, I_P, IS, G, SPIN, th0, thd, mo.phi_dot0, t)
         # near the pole θ is resolved to ~sqrt(eps) of u: 1e-7 covers it
-        assert np.max(np.linalg.norm(e3_o - axis_at(mo, t), axis=1)) < 1e-7
+        assert np.max(np.linalg.norm(e3_o - mo.at(t).axis, axis=1)) < 1e-7
 
 
 # --------------------------------------------------------------------------------------
@@ -449,14 +448,21 @@ def test_asymmetric_body_is_refused_with_how_asymmetric():
     msg = str(err.value)
     assert not isinstance(err.value, PivotAtCom)
     assert "not symmetric" in msg
-    assert "1.2e-3" in msg and "1.5e-3" in msg and "22 %" in msg and "1e-6" in msg
+    assert "1.2e-3" in msg and "1.5e-3" in msg and "22 %" in msg and "--symmetry-tol" in msg
 
 
 def test_tolerance_of_symmetry_is_honoured():
-    Icom = np.diag([4e-4 * (1 + 1e-7), 4e-4, 4e-4])  # 3e-8 relative about the pivot
-    top_from_body(M, [0, 0, L], Icom, [0, 0, 0])  # within the default 1e-6
+    Icom = np.diag([4e-4 * (1 + 1e-7), 4e-4, 4e-4])  # 3e-8 relative about the pivot: rounding
+    p = top_from_body(M, [0, 0, L], Icom, [0, 0, 0], sym_rtol=0.0)  # even at tolerance 0
+    assert p.asymmetry is None
+    # 1e-5 of the moment about the com: 3.3e-6 of the moment across about the pivot
+    Icom = np.diag([4e-4 * (1 + 1e-5), 4e-4, 4e-4])
     with pytest.raises(ValueError, match="not symmetric"):
-        top_from_body(M, [0, 0, L], Icom, [0, 0, 0], sym_rtol=1e-9)
+        top_from_body(M, [0, 0, L], Icom, [0, 0, 0])  # the core's default: rounding only
+    p = top_from_body(M, [0, 0, L], Icom, [0, 0, 0], sym_rtol=1e-4)
+    I1, I2 = p.asymmetry.transverse
+    assert p.I == pytest.approx(0.5 * (I1 + I2), rel=1e-15)  # the symmetrised body
+    assert p.asymmetry.relative == pytest.approx(4e-9 / (4e-4 + M * L * L + 2e-9), rel=1e-6)
 
 
 def test_axis_not_principal_is_refused():
@@ -538,7 +544,7 @@ def test_to_json_keys_and_plain_values(spin, theta_deg, thd, phd):
     assert SPEC_KEYS <= d.keys()
     assert _plain(d)
     json.dumps(d, allow_nan=False)  # raises on NaN or infinity
-    assert d["path"] in {"waves", "loops", "cusps"}
+    assert d["path"] in {"waves", "loops", "cusps", "steady"}
     assert len(d["steady_precession_rates"]) in (0, 1, 2)
     if spin == 50.0:  # below the 71.4 rad/s minimum at 30°: no steady precession
         assert d["steady_precession_rates"] == []

@@ -512,24 +512,21 @@ def _top(ctx: _Ctx):
         missing = " and ".join(x for x, v in (("--spin", o.spin), ("--theta", o.theta)) if v is None)
         return _skip(key, title, f"heavy top: the body has a pivot, but no {missing} given "
                      "(the spin about the symmetry axis and the start tilt from the vertical)")
-    from rbcli.cli import top as ct
+    from rbcli.api import top as at
     from rbcli.render import top as rt
     from rbcli.render.text import Doc
 
     try:
-        motion, pivot_label = ct.prepare(b, pivot=o.pivot, spin=o.spin, theta=o.theta,
-                                         theta_dot=o.theta_dot, phi_dot=o.phi_dot, g=o.g)
-        span = ct.default_duration(motion)
+        res = at.top(b, pivot=o.pivot, spin=o.spin, theta=f"{o.theta!r} rad", theta_dot=o.theta_dot,
+                     phi_dot=o.phi_dot, g=o.g)
+        span = res.default_duration()
     except InputError as exc:
         return _skip(key, title, f"heavy top: not computed: {exc}")
-    info = rt.Info(body=b, pivot_label=pivot_label, released=o.theta_dot == 0.0 and o.phi_dot == 0.0,
-                   verify_axis_tol=ct.VERIFY_AXIS_TOL, verify_energy_tol=ct.VERIFY_ENERGY_TOL,
-                   plot=None, csv=None, duration=span, samples=None)
     doc = Doc()
-    rt.document(doc, motion, info, ctx.du, ctx.digits, None)
+    rt.document(doc, res, ctx.du, ctx.digits)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
-    _plot(ctx, s, "top", rt.plot(motion, info, span),
+    _plot(ctx, s, "top", rt.plot(res, res.sample(span), span),
           "The path of the axis (as rbcli top --plot), over three nutation periods.")
     return s
 

@@ -1,8 +1,12 @@
-"""Heavy symmetric top on a fixed pivot, and the gyrocompass: exact closed forms.
+"""Heavy symmetric top on a fixed pivot: the exact closed form of its motion.
 
-Everything here is pure physics in SI units: no I/O, no printing. The formulas and
-their sources are in the physics sheet ``/work/shared/physics/dynamics.md`` §2 (the
-heavy top, Goldstein 3rd ed. §5.7 notation) and §4b (implementation pitfalls).
+Everything here is pure physics in SI units: no I/O, no printing. The model and its
+notation are Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed., §5.7 ("the heavy
+symmetrical top with one point fixed"); "sheet §n" in the comments names the sections of
+rbcli's physics notes that follow that text (the formulas are restated where they are used).
+The elliptic integrals are in Carlson's symmetric form, DLMF §19.25
+(https://dlmf.nist.gov/19.25). The numerical check of ``--verify`` is
+:mod:`rbcli.core.topverify`; the gyrocompass is :mod:`rbcli.core.gyrocompass`.
 
 Conventions
 -----------
@@ -34,10 +38,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+from rbcli.errors import ParamError
+
 #: Standard gravity, m/s^2 (SPEC §2 default of ``--g``).
 STANDARD_GRAVITY = 9.80665
-#: Earth's sidereal rotation rate, rad/s (sheet §2, gyrocompass).
-EARTH_RATE = 7.2921150e-5
 #: A motion whose nutation band u2 - u1 is within this many round-off units of the
 #: cubic's coefficients (see ``analyse``) is reported as steady precession.
 STEADY_ULPS = 1e3
@@ -51,6 +56,16 @@ HORIZONTAL_COS = 4.0 * np.finfo(float).eps
 
 class PivotAtCom(ValueError):
     """The pivot is at the centre of mass: there is no gravity torque, no heavy top."""
+
+
+class NotATop(ValueError):
+    """The body is not a symmetric top about the pivot–com axis (asymmetric, the axis not
+    principal, or no moment about the axis); the message says how, with the numbers."""
+
+
+class TopInputError(ParamError, ValueError):
+    """A start value of :func:`analyse` out of range; ``param`` names it (``"spin"``,
+    ``"theta"``, ``"theta_dot"``, ``"phi_dot"`` or ``"g"``)."""
 
 
 # --------------------------------------------------------------------------------------
@@ -152,6 +167,10 @@ class TopParams:
         pointing from the pivot to the com (None when built from numbers)
     pivot : tuple[float, float, float] | None — m, body frame
     com : tuple[float, float, float] | None — m, body frame
+    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
+        above rounding, within the tolerance): how far it departs, and its real inertia
+        tensor about the pivot; I is then the mean of the two moments across (None for a
+        body symmetric to rounding)
     """
 
     mass: float
@@ -161,6 +180,7 @@ class TopParams:
     axis: tuple[float, float, float] | None = None
     pivot: tuple[float, float, float] | None = None
     com: tuple[float, float, float] | None = None
+    asymmetry: AxialSymmetry | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         for name in ("mass", "length", "I", "Is"):
@@ -184,7 +204,7 @@ def top_from_body(
     *,
     sym_rtol: float = 1e-6,
 ) -> TopParams:
-    """Reduce a body's mass properties to a symmetric top on a pivot.
+    """Reduce a body's mass properties to a symmetric (or nearly symmetric) top on a pivot.
 
     Parameters
     ----------
@@ -193,7 +213,10 @@ def top_from_body(
     inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
         convention: off-diagonals are -∫xy dm)
     pivot : (3,) array_like — m, the fixed point, body frame
-    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis"
+    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis" (the
+        ``--symmetry-tol`` of :mod:`rbcli.core.symmetry`); a body within it but above
+        rounding is symmetrised (I the mean of the two moments across) and its departures
+        are kept in ``TopParams.asymmetry``
 
     Returns
     -------
@@ -204,11 +227,13 @@ def top_from_body(
     PivotAtCom
         The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
         no gravity torque; the motion is free precession (``rbcli precess``).
-    ValueError
+    rbcli.core.symmetry.Asymmetric
         The two moments across the axis differ by more than ``sym_rtol`` (relative to
         their mean), the axis is not a principal axis (its products of inertia with the
         transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
-        about the axis is zero (a pendulum), or an input is not finite.
+        about the axis is zero (a pendulum).
+    ValueError
+        an input is not finite, or the mass is not positive.
 
     Notes
     -----
@@ -245,29 +270,13 @@ def top_from_body(
     e1 = np.cross(e3, np.eye(3)[k])
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(e3, e1)
-    b11, b22, b12 = float(e1 @ Ip @ e1), float(e2 @ Ip @ e2), float(e1 @ Ip @ e2)
-    mean = 0.5 * (b11 + b22)
-    half = math.hypot(0.5 * (b11 - b22), b12)
-    Ia, Ib = mean - half, mean + half
+    mean = 0.5 * (float(e1 @ Ip @ e1) + float(e2 @ Ip @ e2))  # the symmetrised moment across
     if mean <= 0.0:
-        raise ValueError("the moment of inertia across the pivot–com axis is zero")
-    rel = (Ib - Ia) / mean
-    if rel > sym_rtol:
-        raise ValueError(
-            "the body is not symmetric about the pivot–com axis: the moments across it are "
-            f"{_num(Ia)} and {_num(Ib)} kg m² (differ by {rel * 100:.2g} %); a top needs them "
-            f"equal to a relative {_num(sym_rtol)}"
-        )
-    coupling = math.hypot(float(e1 @ Ip @ e3), float(e2 @ Ip @ e3))
-    if coupling > sym_rtol * mean:
-        raise ValueError(
-            "the pivot–com axis is not a principal axis of the body: its products of inertia "
-            f"with the plane across it are {_num(coupling)} kg m² "
-            f"({coupling / mean * 100:.2g} % of the moment across, {_num(mean)} kg m²); "
-            f"a top needs them zero to a relative {_num(sym_rtol)}"
-        )
+        raise NotATop("the moment of inertia across the pivot–com axis is zero")
+    sym = about_axis(m, c, J, p, e3)
+    require(sym, sym_rtol, "the pivot–com axis", "a top")
     if Is <= 1e-12 * mean:
-        raise ValueError(
+        raise NotATop(
             f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
             "kg m²: a point mass or a thin rod along the axis): it cannot carry spin, so it "
             "is a spherical pendulum, not a top"
@@ -280,6 +289,7 @@ def top_from_body(
         axis=tuple(float(v) for v in e3),  # type: ignore[arg-type]
         pivot=tuple(float(v) for v in p),  # type: ignore[arg-type]
         com=tuple(float(v) for v in c),  # type: ignore[arg-type]
+        asymmetry=None if sym.exact else sym,
     )
 
 
@@ -393,9 +403,8 @@ class TopMotion:
     critical_spin : float — rad/s, sleeping-top threshold S_c = sqrt(4 I m g l)/Is
     sleeps : bool — |S| > S_c (a top started upright would stay up)
     apex_u : float — the u at which φ' = 0, b/a
-    path : str — "waves" (φ' keeps its sign), "loops" (φ' reverses inside the band) or
-        "cusps" (φ' = 0 at a turning point); steady precession is "waves" with
-        ``steady`` true (a wave of zero height)
+    path : str — "waves" (φ' keeps its sign), "loops" (φ' reverses inside the band),
+        "cusps" (φ' = 0 at a turning point) or "steady" (θ stays at θ0: ``steady`` true)
     steady : bool — θ1 = θ2 to round-off: u2 - u1 <= STEADY_ULPS · eps ·
         (β sin²θ0 + 2|u0|(θ0'² + φ0'² sin²θ0) + 2|a φ0'| sin²θ0) / (|c2| + β(1 - u0)),
         the band that round-off of the linear coefficient c1 alone would open
@@ -435,6 +444,34 @@ class TopMotion:
     steady: bool
     fast_top: FastTop
     elliptic: EllipticSolution = field(repr=False)
+
+    def at(self, t) -> "TopState":
+        """The Euler angles and their rates at times ``t`` (s): :func:`state_at`."""
+        return state_at(self, t)
+
+    @property
+    def fast_top_ratio(self) -> float:
+        """a²/β = (Is S)²/(2 I m g l): the fast-top estimates hold for a²/β ≫ 1."""
+        return self.a**2 / self.beta
+
+    @property
+    def steady_estimate_errors(self) -> list[float | None]:
+        """(estimate - exact)/exact of each steady rate's fast-top estimate (None where the
+        exact rate is 0), in the order of ``steady_precession_rates``."""
+        out: list[float | None] = []
+        for est, exact in zip(self.steady_estimates, self.steady_precession_rates):
+            out.append(None if exact == 0.0 else (est - exact) / exact)
+        return out
+
+    @property
+    def steady_estimates(self) -> list[float]:
+        """Fast-top estimates of the steady rates (a² ≫ β), rad/s: slow ≈ m g l/(Is S),
+        fast ≈ Is S/(I cos θ0); only the slow one for a horizontal axis. Goldstein §5.7."""
+        p = self.params
+        out = [self.horizontal_precession_rate]
+        if len(self.steady_precession_rates) == 2:
+            out.append(p.Is * self.spin / (p.I * math.cos(self.theta0)))
+        return out
 
     def to_json(self) -> dict:
         """SPEC §3 ``top`` keys (SI, angles in degrees under ``*_deg``), plus extras."""
@@ -578,9 +615,10 @@ def analyse(
 
     Raises
     ------
-    ValueError
-        θ0 not in (0, π), g <= 0, spin = 0 (that is a spherical pendulum, not a top),
-        or a non-finite input.
+    TopInputError
+        (a :class:`rbcli.errors.ParamError` and a ValueError) θ0 not in (0, π), g <= 0,
+        spin = 0 (that is a spherical pendulum, not a top), or a non-finite input; its
+        ``param`` is ``"theta"``, ``"g"``, ``"spin"``, ``"theta_dot"`` or ``"phi_dot"``.
 
     Notes
     -----
@@ -599,29 +637,37 @@ def analyse(
     ω² = (a - 2φ' cos θ)² + φ'² sin²θ. Path (sheet §2 "Locus"): the apex point u' = b/a,
     where φ' = 0, is compared with [u1, u2]: within CUSP_RTOL·(u2 - u1) of a turning
     point → "cusps"; strictly inside → "loops"; outside → "waves". Steady precession
-    (``steady`` true) and an apex at a pole (b = ±a, where φ' = ±a/(1 ± u) cannot vanish)
-    are "waves". The relative errors of the fast-top estimates are (estimate - exact)/exact.
+    (``steady`` true) is "steady"; an apex at a pole (b = ±a, where φ' = ±a/(1 ± u) cannot
+    vanish) is "waves". The relative errors of the fast-top estimates are (estimate - exact)/exact.
     Near a pole, 1 - u2 (1 + u1) is re-solved from f expanded about u = 1 (u = -1), since
     it is ~(b - a)² and may be far below the spacing of floats near u = 1. If the axis
     passes exactly through the vertical (b = a) or the bottom (b = -a), the azimuth of the
     axis jumps by π at each passage and that is counted in φ(t) and <φ'> (sign of b ∓ a;
     + when it is exactly zero).
     """
-    S = _finite("spin", spin)
-    th0 = _finite("theta0", theta0)
-    thd = _finite("theta_dot0", theta_dot0)
-    w = _finite("phi_dot0", phi_dot0)
-    gg = _finite("g", g)
+    def start(param: str, name: str, x: float) -> float:
+        try:
+            return _finite(name, x)
+        except ValueError as exc:
+            raise TopInputError(param, str(exc)) from None
+
+    S = start("spin", "spin", spin)
+    th0 = start("theta", "theta0", theta0)
+    thd = start("theta_dot", "theta_dot0", theta_dot0)
+    w = start("phi_dot", "phi_dot0", phi_dot0)
+    gg = start("g", "g", g)
     if not (0.0 < th0 < math.pi):
-        raise ValueError(
+        raise TopInputError(
+            "theta",
             f"the initial tilt theta0 must be strictly between 0 and 180 degrees, not "
             f"{math.degrees(th0):.6g} deg (at 0 or 180 the axis is vertical and the "
             "precession angle is undefined; start it slightly tilted)"
         )
     if gg <= 0.0:
-        raise ValueError(f"gravity g must be positive, not {gg}")
+        raise TopInputError("g", f"gravity g must be positive, not {gg}")
     if S == 0.0:
-        raise ValueError(
+        raise TopInputError(
+            "spin",
             "the spin is 0: a top without spin is a spherical pendulum, not a top; "
             "give a nonzero spin"
         )
@@ -754,7 +800,7 @@ def analyse(
     steady = band <= STEADY_ULPS * band_noise
     tol = CUSP_RTOL * band
     if steady:
-        path = "waves"  # a wave of zero height
+        path = "steady"  # θ stays at θ0 (JSON and tables say the same)
     elif top_pass or bottom_pass or abs(bma / a) <= tol or abs(bpa / a) <= tol:
         # the apex u' = b/a at a pole: φ' = (b - au)/(1 - u²) = ±a/(1 ± u) does not vanish
         # (or only on a loop too small to see); the axis passes through the vertical
@@ -826,6 +872,12 @@ def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
     τ = τr + 2Kj, so am τ = am τr + jπ and Π(n; am τ) = Π(n; am τr) + 2j Π(n|m)
     (quasi-periodicity).
     """
+    theta, phi, psi, _sn, _cn = _path(motion, t)
+    return theta, phi, psi
+
+
+def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
+    """θ, φ, ψ as :func:`path_at`, and sn τ, cn τ of the reduced phase τr (for the rates)."""
     from scipy.special import ellipj
 
     e = motion.elliptic
@@ -865,300 +917,60 @@ def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
         k = np.floor(tau / (2.0 * e.K)) - math.floor(e.tau0 / (2.0 * e.K))
         phi = phi + e.bottom_jump * np.pi * k
         psi = psi + e.bottom_jump * np.pi * k
-    return theta, phi, psi
-
-
-def axis_at(motion: TopMotion, t: np.ndarray) -> np.ndarray:
-    """Unit vector of the symmetry axis in space at times ``t``: shape ``t.shape + (3,)``.
-
-    (sin θ cos φ, sin θ sin φ, cos θ) with θ, φ from :func:`path_at`; z is up, φ(0) = 0.
-    """
-    theta, phi, _ = path_at(motion, t)
-    st = np.sin(theta)
-    return np.stack([st * np.cos(phi), st * np.sin(phi), np.cos(theta)], axis=-1)
-
-
-# --------------------------------------------------------------------------------------
-# numerical check
+    return theta, phi, psi, sn, cn
 
 
 @dataclass(frozen=True)
-class VerifyResult:
-    """Closed form against a direct integration of the equations of motion.
+class TopState:
+    """The top at given times (every array has the shape of ``t``).
 
     Attributes
     ----------
-    t_end : float — s, length of the integration (``periods`` nutation periods)
-    samples : int — number of comparison times
-    rtol : float — relative tolerance given to DOP853
-    max_axis_error : float — rad (chord), max |e3_closed - e3_numeric|; well conditioned
-        even where the axis passes near the vertical
-    max_theta_error, max_phi_error, max_psi_error : float — rad, largest differences of
-        the Euler angles (φ and ψ compared modulo 2π)
-    energy_drift : float — max |E - E0| / (T0 + m g l) along the numerical path
-    p_phi_drift, p_psi_drift : float — max relative drift of L·ẑ and L·e3 (the exact
-        invariants p_φ and p_ψ), relative to |L0|
-    theta_min, theta_max : float — rad, tilt range seen by the integrator (at the samples)
-    mean_precession_rate : float — rad/s, (φ(t_end) - φ(0))/t_end from the integrator
-    nfev : int — right-hand-side evaluations
+    t : ndarray — s
+    theta : ndarray — rad, tilt of the axis from the upward vertical
+    phi, psi : ndarray — rad, precession and spin angles, continuous, 0 at t = 0
+    theta_dot, phi_dot, psi_dot : ndarray — rad/s, their rates (ψ' = S - φ' cos θ)
     """
 
-    t_end: float
-    samples: int
-    rtol: float
-    max_axis_error: float
-    max_theta_error: float
-    max_phi_error: float
-    max_psi_error: float
-    energy_drift: float
-    p_phi_drift: float
-    p_psi_drift: float
-    theta_min: float
-    theta_max: float
-    mean_precession_rate: float
-    nfev: int
+    t: np.ndarray
+    theta: np.ndarray
+    phi: np.ndarray
+    psi: np.ndarray
+    theta_dot: np.ndarray
+    phi_dot: np.ndarray
+    psi_dot: np.ndarray
 
-    def to_json(self) -> dict:
-        return {
-            "t_end": _j(self.t_end),
-            "samples": int(self.samples),
-            "rtol": float(self.rtol),
-            "max_axis_error": _j(self.max_axis_error),
-            "max_theta_error_deg": _j(math.degrees(self.max_theta_error)),
-            "max_phi_error_deg": _j(math.degrees(self.max_phi_error)),
-            "max_psi_error_deg": _j(math.degrees(self.max_psi_error)),
-            "energy_drift": _j(self.energy_drift),
-            "p_phi_drift": _j(self.p_phi_drift),
-            "p_psi_drift": _j(self.p_psi_drift),
-            "theta_min_deg": _j(math.degrees(self.theta_min)),
-            "theta_max_deg": _j(math.degrees(self.theta_max)),
-            "mean_precession_rate": _j(self.mean_precession_rate),
-            "nfev": int(self.nfev),
-        }
+    @property
+    def axis(self) -> np.ndarray:
+        """Unit symmetry axis in space, shape ``t.shape + (3,)``: (sin θ cos φ, sin θ sin φ,
+        cos θ), z up."""
+        st = np.sin(self.theta)
+        return np.stack([st * np.cos(self.phi), st * np.sin(self.phi), np.cos(self.theta)], axis=-1)
 
 
-def _wrap(x: np.ndarray) -> np.ndarray:
-    return (x + np.pi) % (2.0 * np.pi) - np.pi
-
-
-def verify(
-    motion: TopMotion,
-    periods: float = 3,
-    *,
-    rtol: float = 1e-12,
-    samples_per_period: int = 200,
-) -> VerifyResult:
-    """Integrate the top's equations of motion numerically and compare with the closed form.
-
-    Parameters
-    ----------
-    motion : TopMotion
-    periods : float — number of nutation periods to integrate (> 0)
-    rtol : float — DOP853 relative tolerance (absolute tolerance rtol/10 on a state of
-        order 1: unit vectors and L/|L0|)
-    samples_per_period : int — comparison times per nutation period
-
-    Returns
-    -------
-    VerifyResult
+def state_at(motion: TopMotion, t: np.ndarray) -> TopState:
+    """The exact Euler angles and their rates at times ``t`` (s, any shape).
 
     Notes
     -----
-    Singularity-free form, no Euler angles: the state is the axis e3 (unit vector), a
-    body-fixed unit vector e1 normal to it, and the angular momentum L about the pivot,
-    all in space axes (z up). For a symmetric top ω = (L - (L·e3)e3)/I + (L·e3/Is) e3;
-    e3' = ω × e3 = (L × e3)/I, e1' = ω × e1, L' = l e3 × (-m g ẑ) = m g l ẑ × e3.
-    Initial state from R0 = Ry(θ0) (φ = ψ = 0) and ω0 = φ0' ẑ + θ0' ŷ + (S - φ0' cos θ0) e3.
-    The angles are read back as θ = atan2(|e3 × ẑ|, e3·ẑ), φ = atan2(e3y, e3x) (unwrapped),
-    ψ = atan2(e1·n2, e1·n1) with n1 = Rz(φ)Ry(θ)x̂, n2 = Rz(φ)ŷ.
+    Angles from :func:`path_at`. With u = cos θ = u1 + (u2 - u1) sn²(τ|m), τ = λ t + τ0:
+    u' = 2 λ (u2 - u1) sn cn dn, θ' = -u'/sin θ, and from the two conserved momenta
+    (Goldstein §5.7) φ' = (b - a u)/(1 - u²), ψ' = S - φ' u. At an instant where the axis
+    is exactly vertical (only when it passes through a pole) φ' and θ' are not defined
+    (NaN there).
     """
-    from scipy.integrate import solve_ivp
-
-    if not (periods > 0 and math.isfinite(periods)):
-        raise ValueError(f"periods must be a positive number, not {periods}")
-    if motion.nutation_period is None:
-        raise ValueError("the motion has no finite nutation period to integrate over")
-    p = motion.params
-    I, Is = p.I, p.Is
-    mgl = p.mass * motion.g * p.length
-    S = motion.spin
-    th0, thd, w = motion.theta0, motion.theta_dot0, motion.phi_dot0
-    c0, s0 = math.cos(th0), math.sin(th0)
-    e3 = np.array([s0, 0.0, c0])
-    e1 = np.array([c0, 0.0, -s0])
-    zhat = np.array([0.0, 0.0, 1.0])
-    om = w * zhat + thd * np.array([0.0, 1.0, 0.0]) + (S - w * c0) * e3
-    om3 = float(om @ e3)
-    L = I * (om - om3 * e3) + Is * om3 * e3
-    Ls = float(np.linalg.norm(L))  # > 0 since Is S != 0
-
-    def rhs(_t: float, y: np.ndarray) -> np.ndarray:
-        n = y[0:3]
-        e = y[3:6]
-        Lv = y[6:9] * Ls
-        L3 = float(Lv @ n)
-        omega = (Lv - L3 * n) / I + (L3 / Is) * n
-        dn = np.cross(omega, n)
-        de = np.cross(omega, e)
-        dL = mgl * np.cross(zhat, n) / Ls
-        return np.concatenate([dn, de, dL])
-
-    T = float(motion.nutation_period) * float(periods)
-    n_s = max(int(math.ceil(samples_per_period * periods)), 2) + 1
-    ts = np.linspace(0.0, T, n_s)
-    y0 = np.concatenate([e3, e1, L / Ls])
-    sol = solve_ivp(
-        rhs, (0.0, T), y0, method="DOP853", t_eval=ts, rtol=rtol, atol=rtol * 0.1
-    )
-    if not sol.success:  # pragma: no cover - DOP853 on a smooth ODE
-        raise RuntimeError(f"numerical integration failed: {sol.message}")
-    n = sol.y[0:3].T
-    e = sol.y[3:6].T
-    Lv = sol.y[6:9].T * Ls
-
-    theta_n = np.arctan2(np.hypot(n[:, 0], n[:, 1]), n[:, 2])
-    phi_n = np.unwrap(np.arctan2(n[:, 1], n[:, 0]))
-    phi_n -= phi_n[0]
-    ct, st = np.cos(theta_n), np.sin(theta_n)
-    cf, sf = np.cos(phi_n), np.sin(phi_n)
-    n1 = np.stack([ct * cf, ct * sf, -st], axis=-1)
-    n2 = np.stack([-sf, cf, np.zeros_like(sf)], axis=-1)
-    psi_n = np.arctan2(np.sum(e * n2, axis=1), np.sum(e * n1, axis=1))
-
-    theta_c, phi_c, psi_c = path_at(motion, ts)
-    stc = np.sin(theta_c)
-    axis_c = np.stack([stc * np.cos(phi_c), stc * np.sin(phi_c), np.cos(theta_c)], axis=-1)
-
-    L3 = np.sum(Lv * n, axis=1)
-    Lperp2 = np.sum(Lv * Lv, axis=1) - L3**2
-    E = 0.5 * Lperp2 / I + 0.5 * L3**2 / Is + mgl * n[:, 2]
-    T0 = 0.5 * Lperp2[0] / I + 0.5 * L3[0] ** 2 / Is
-    return VerifyResult(
-        t_end=T,
-        samples=n_s,
-        rtol=rtol,
-        max_axis_error=float(np.max(np.linalg.norm(axis_c - n, axis=1))),
-        max_theta_error=float(np.max(np.abs(theta_c - theta_n))),
-        max_phi_error=float(np.max(np.abs(_wrap(phi_c - phi_n)))),
-        max_psi_error=float(np.max(np.abs(_wrap(psi_c - psi_n)))),
-        energy_drift=float(np.max(np.abs(E - E[0])) / (T0 + mgl)),
-        p_phi_drift=float(np.max(np.abs(Lv[:, 2] - Lv[0, 2])) / Ls),
-        p_psi_drift=float(np.max(np.abs(L3 - L3[0])) / Ls),
-        theta_min=float(np.min(theta_n)),
-        theta_max=float(np.max(theta_n)),
-        mean_precession_rate=float(phi_n[-1] / T),
-        nfev=int(sol.nfev),
-    )
-
-
-# --------------------------------------------------------------------------------------
-# gyrocompass
-
-
-@dataclass(frozen=True)
-class Gyrocompass:
-    """Small oscillation of a gyrocompass about the meridian (sheet §2 "Gyrocompass").
-
-    Attributes
-    ----------
-    C_over_A : float — axial moment over the moment about the vertical (flat disk: 2)
-    spin : float — rad/s, rotor spin about its axis
-    latitude : float — rad
-    earth_rate : float — rad/s, Ω_E
-    directive : float — 1/s², C S Ω_E cos λ / A (the gyroscopic restoring coefficient)
-    omega0 : float | None — rad/s, sqrt(|directive| - Ω_E² cos² λ); None when there is
-        no restoring torque (at a pole, or a spin too slow to beat the Ω_E² term)
-    omega0_approx : float | None — rad/s, sqrt(|directive|), the usual approximation
-    period : float | None — s, 2π/omega0
-    settles_to : str | None — where the rotor's +axis settles: "north" for S > 0 (the
-        spin vector points north, along the Earth's rotation), "south" for S < 0
-    """
-
-    C_over_A: float
-    spin: float
-    latitude: float
-    earth_rate: float
-    directive: float
-    omega0: float | None
-    omega0_approx: float | None
-    period: float | None
-    settles_to: str | None
-
-    def to_json(self) -> dict:
-        return {
-            "C_over_A": float(self.C_over_A),
-            "spin": float(self.spin),
-            "latitude_deg": math.degrees(self.latitude),
-            "earth_rate": float(self.earth_rate),
-            "directive": _j(self.directive),
-            "omega0": _j(self.omega0),
-            "omega0_approx": _j(self.omega0_approx),
-            "period": _j(self.period),
-            "settles_to": self.settles_to,
-        }
-
-
-def gyrocompass(
-    C_over_A: float,
-    spin_rad_s: float,
-    latitude_rad: float,
-    earth_rate: float = EARTH_RATE,
-) -> Gyrocompass:
-    """Period of small oscillation of a gyrocompass about north.
-
-    Parameters
-    ----------
-    C_over_A : float — axial moment C over the moment A about the vertical, > 0
-    spin_rad_s : float — rad/s, rotor spin S, nonzero
-    latitude_rad : float — rad, in [-π/2, π/2]
-    earth_rate : float — rad/s, Ω_E > 0 (default sidereal 7.2921150e-5)
-
-    Returns
-    -------
-    Gyrocompass
-
-    Raises
-    ------
-    ValueError
-        for inputs out of range, or so large that the directive C S Ω_E cos λ / A (or
-        Ω_E² cos²λ) overflows to inf or NaN.
-
-    Notes
-    -----
-    Sheet §2: axis held horizontal, free in azimuth α from north,
-    A α'' = -C S Ω_E cos λ sin α + A Ω_E² cos²λ sin α cos α. Linearised about α = 0
-    (S > 0) or α = π (S < 0): ω0² = |C S Ω_E cos λ|/A - Ω_E² cos²λ, T = 2π/ω0.
-    """
-    r = _finite("C_over_A", C_over_A)
-    S = _finite("spin", spin_rad_s)
-    lat = _finite("latitude", latitude_rad)
-    W = _finite("earth_rate", earth_rate)
-    if r <= 0.0:
-        raise ValueError(f"C/A must be positive, not {r}")
-    if W <= 0.0:
-        raise ValueError(f"the Earth's rotation rate must be positive, not {W}")
-    if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
-        raise ValueError(f"latitude must be between -90 and 90 degrees, not {math.degrees(lat):.6g}")
-    if S == 0.0:
-        raise ValueError("a gyrocompass needs a spinning rotor: the spin is 0")
-    cl = math.cos(lat) if abs(lat) < 0.5 * math.pi else 0.0
-    k = r * S * W * cl
-    w2 = abs(k) - (W * cl) * (W * cl)
-    if not (math.isfinite(k) and math.isfinite(w2)):
-        raise ValueError(
-            f"the directive torque per unit moment C S W cos(latitude)/A overflows floating point "
-            f"(C/A = {r:.6g}, spin {S:.6g} rad/s, Earth rate {W:.6g} rad/s); give values of a "
-            "physical size"
-        )
-    if w2 > 0.0:
-        w0: float | None = math.sqrt(w2)
-        w0a: float | None = math.sqrt(abs(k))
-        per: float | None = 2.0 * math.pi / w0
-        where: str | None = "north" if S > 0 else "south"
-    else:
-        w0 = per = where = None
-        w0a = math.sqrt(abs(k)) if k != 0.0 else None
-    return Gyrocompass(
-        C_over_A=r, spin=S, latitude=lat, earth_rate=W, directive=k, omega0=w0,
-        omega0_approx=w0a, period=per, settles_to=where,
-    )  # fmt: skip
+    e = motion.elliptic
+    tt = np.asarray(t, dtype=float)
+    theta, phi, psi, sn, cn = _path(motion, tt)
+    one_minus_u = e.one_minus_u2 + e.band * cn * cn
+    one_plus_u = e.one_plus_u1 + e.band * sn * sn
+    dn = np.sqrt(e.m1 + e.m * cn * cn)
+    sin_theta = np.sqrt(one_minus_u * one_plus_u)
+    u = 1.0 - one_minus_u
+    with np.errstate(divide="ignore", invalid="ignore"):
+        theta_dot = -2.0 * e.lam * e.band * sn * cn * dn / sin_theta
+        phi_dot = (motion.b - motion.a * u) / (one_minus_u * one_plus_u)
+    theta_dot = np.where(e.band == 0.0, 0.0, theta_dot)
+    psi_dot = motion.spin - phi_dot * u
+    return TopState(t=tt, theta=theta, phi=phi, psi=psi, theta_dot=theta_dot, phi_dot=phi_dot,
+                    psi_dot=psi_dot)

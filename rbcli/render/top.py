@@ -1,18 +1,23 @@
-"""Tables, JSON, the figure and the CSV of ``rbcli top``; tables and JSON of ``rbcli gyrocompass``."""
+"""Tables, the figure and the CSV rows of ``rbcli top``; tables of ``rbcli gyrocompass``.
+
+Render only formats and draws what :mod:`rbcli.api.top` computed (its TopResult and
+GyrocompassResult, and the sampled motion, a :class:`rbcli.core.top.TopState`); the JSON is
+the result's own ``to_json()``.
+"""
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.core.top import Gyrocompass, TopMotion, VerifyResult
-from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num
 from rbcli.render.text import Doc
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.top import GyrocompassResult, TopResult
+    from rbcli.core.top import TopState
 
 RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
 EPS = float(np.finfo(float).eps)
@@ -26,71 +31,6 @@ PATHS = {
 }
 
 
-@dataclass(frozen=True)
-class Info:
-    """What the command knows besides the physics: where the inputs came from."""
-
-    body: Body
-    pivot_label: str
-    released: bool = True
-    verify_axis_tol: float = 1e-6
-    verify_energy_tol: float = 1e-9
-    plot: str | None = None
-    csv: str | None = None
-    duration: float | None = None
-    samples: int | None = None
-
-
-def steady_estimates(motion: TopMotion) -> list[float]:
-    """Fast-top estimates of the steady rates (sheet §2 "Steady precession", a² ≫ β):
-    slow ≈ m g l/(Is S), fast ≈ Is S/(I cos θ0); only the slow one for a horizontal axis."""
-    p = motion.params
-    out = [motion.horizontal_precession_rate]
-    if len(motion.steady_precession_rates) == 2:
-        out.append(p.Is * motion.spin / (p.I * math.cos(motion.theta0)))
-    return out
-
-
-def _rel(est: float | None, exact: float | None) -> float | None:
-    if est is None or exact is None or exact == 0.0:
-        return None
-    return (est - exact) / exact
-
-
-def verify_passes(check: VerifyResult, info: Info) -> bool:
-    return check.max_axis_error <= info.verify_axis_tol and check.energy_drift <= info.verify_energy_tol
-
-
-# ----------------------------------------------------------------------------- JSON
-
-
-def to_json(motion: TopMotion, info: Info, check: VerifyResult | None = None) -> dict:
-    """SPEC §3 ``top`` keys first (from the core), then the extras."""
-    out: dict[str, Any] = motion.to_json()
-    p = motion.params
-    est = steady_estimates(motion)
-    out["steady_precession_estimates"] = est if motion.steady_precession_rates else []
-    out["I_com"] = p.I - p.mass * p.length**2
-    pj = p.to_json()
-    out["axis"] = pj["axis"]
-    out["pivot"] = pj["pivot"]
-    out["com"] = pj["com"]
-    out["pivot_source"] = info.pivot_label
-    out["name"] = info.body.name
-    out["file"] = info.body.source
-    if check is not None:
-        v = check.to_json()
-        v["axis_tolerance"] = info.verify_axis_tol
-        v["energy_tolerance"] = info.verify_energy_tol
-        v["pass"] = verify_passes(check, info)
-        out["verify"] = v
-    if info.plot is not None:
-        out["plot"] = info.plot
-    if info.csv is not None:
-        out["csv"] = {"file": info.csv, "rows": info.samples, "duration": info.duration}
-    return out
-
-
 # ----------------------------------------------------------------------------- tables
 
 
@@ -102,10 +42,14 @@ def _pct(rel: float | None) -> str:
     return "—" if rel is None else f"{num(100.0 * rel, 3)} %"
 
 
-def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: int,
-             check: VerifyResult | None = None) -> None:
+def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot: str | None = None,
+             csv: str | None = None, rows: int | None = None, duration: float | None = None) -> None:
+    """The tables of ``rbcli top``; ``plot``, ``csv`` (with its ``rows`` and ``duration``, s)
+    name the files written, for the closing notes."""
+    motion = result.motion
+    check = result.verify
     p = motion.params
-    b = info.body
+    b = result.body
     M, L, J = du.unit("mass"), du.unit("length"), du.unit("inertia")
     d = digits
     doc.heading(f"{b.name}  ({b.source})")
@@ -113,15 +57,18 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
         ("mass m", du.show(p.mass, "mass", d), M),
         ("pivot to com l", du.show(p.length, "length", d), L),
         ("I, about the pivot, across the axis", du.show(p.I, "inertia", d), J),
-        ("I − m l², about the com, across the axis", du.show(p.I - p.mass * p.length**2, "inertia", d), J),
+        ("I − m l², about the com, across the axis", du.show(result.I_com, "inertia", d), J),
         ("Is, about the axis", du.show(p.Is, "inertia", d), J),
         ("g", du.show(motion.g, "acceleration", d), du.unit("acceleration")),
     ]
     doc.kv("top", rows)
     piv = ", ".join(du.show(x, "length", d) for x in (p.pivot or (0.0, 0.0, 0.0)))
     ax = ", ".join(num(x, d) for x in (p.axis or (0.0, 0.0, 1.0)))
-    doc.note(f"pivot [{piv}] {L} ({info.pivot_label}); symmetry axis, pivot to com, along [{ax}] "
+    doc.note(f"pivot [{piv}] {L} ({result.options.pivot_source}); symmetry axis, pivot to com, along [{ax}] "
              "(body frame).")
+    if result.asymmetry is not None:
+        _asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
+                        du, d, "body", "I")
 
     S = motion.spin
     start = [
@@ -131,7 +78,7 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
         ("θ0'", num(motion.theta_dot0, d), "rad/s"),
         ("φ0'", num(motion.phi_dot0, d), "rad/s"),
     ]
-    doc.kv("start" + (" (released from rest)" if info.released else ""), start)
+    doc.kv("start" + (" (released from rest)" if result.options.released else ""), start)
 
     th0 = _deg(motion.theta0, d)
     rates = motion.steady_precession_rates
@@ -187,7 +134,7 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
         doc.note("the motion is on the separatrix: the axis creeps towards the vertical in "
                  "infinite time (no nutation period).")
 
-    ratio = motion.a**2 / motion.beta
+    ratio = motion.fast_top_ratio
     ft = motion.fast_top
     trows = [
         ("nutation frequency", num(motion.nutation_frequency, d), num(ft.nutation_frequency, d),
@@ -199,10 +146,9 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
     trows.append(("mean precession rate", num(motion.mean_precession_rate, d),
                   num(ft.mean_precession_rate, d), _pct(ft.mean_precession_rate_rel_error), "rad/s"))
     if rates:
-        est = steady_estimates(motion)
         names = ("steady slow rate", "steady fast rate") if len(rates) == 2 else ("steady rate",)
-        for name, exact, e_ in zip(names, rates, est):
-            trows.append((name, num(exact, d), num(e_, d), _pct(_rel(e_, exact)), "rad/s"))
+        for name, exact, e_, err in zip(names, rates, motion.steady_estimates, motion.steady_estimate_errors):
+            trows.append((name, num(exact, d), num(e_, d), _pct(err), "rad/s"))
     doc.table(f"fast-top estimates beside the exact values (a²/β = {num(ratio, 3)}; they hold for a²/β ≫ 1)",
               ("quantity", "exact", "estimate", "error", "unit"), trows, right=(1, 2, 3))
     doc.note("estimates: nutation frequency a = Is S/I; amplitude (2 I m g l/(Is S)²) sin θ0 "
@@ -224,7 +170,7 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
     ])
 
     if check is not None:
-        ok = verify_passes(check, info)
+        ok = check.passed
         doc.kv(
             f"--verify: numerical integration (DOP853, rtol {check.rtol:g}, "
             f"{num(check.t_end, 4)} s, {check.samples} samples)",
@@ -241,13 +187,39 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
                 ("verdict", "PASS" if ok else "FAIL", ""),
             ],
         )
-        doc.note(f"the check passes when the axis agrees within {info.verify_axis_tol:g} rad and "
-                 f"the energy drifts by at most {info.verify_energy_tol:g} (relative to T0 + m g l); "
+        rb = result.real_body
+        if rb is not None:
+            doc.kv("--verify: the real (unsymmetrised) body against the symmetrised closed form", [
+                ("largest difference of the axis (chord)", f"{rb.max_axis_error:.2e}", "rad"),
+                ("largest difference of θ", f"{rb.max_theta_error * 180 / math.pi:.2e}", "°"),
+                ("largest difference of φ", f"{rb.max_phi_error * 180 / math.pi:.2e}", "°"),
+                ("energy drift of that integration", f"{rb.energy_drift:.2e}", "relative"),
+            ])
+            doc.note("the effect of the asymmetry on the motion over the same span (quaternion and "
+                     "ω in body axes with the full inertia tensor about the pivot, DOP853); it "
+                     "does not enter the verdict.")
+        doc.note(f"the check passes when the axis agrees within {check.axis_tolerance:g} rad and "
+                 f"the energy drifts by at most {check.energy_tolerance:g} (relative to T0 + m g l); "
                  "integrated in space axes (axis, a body vector and L), no Euler angles.")
-    if info.plot is not None:
-        doc.note(f"plot written to {info.plot}")
-    if info.csv is not None:
-        doc.note(f"CSV written to {info.csv} ({info.samples} rows over {num(info.duration, d)} s)")
+    if plot is not None:
+        doc.note(f"plot written to {plot}")
+    if csv is not None:
+        doc.note(f"CSV written to {csv} ({rows} rows over {num(duration, d)} s)")
+
+
+def _asymmetry_note(doc: Doc, sym, tol: float, effect: float, du: DisplayUnits, d: int, what: str,
+                    name: str) -> None:
+    """The line of a nearly symmetric body: its two moments across, how far apart, the tilt
+    of the nearest principal axis, and how far the answer may be off."""
+    J = du.unit("inertia")
+    i1, i2 = (du.show(x, "inertia", d) for x in sym.transverse)
+    tilt = f"; the nearest principal axis is {sym.principal_tilt:.3g} rad off it" if sym.coupling else ""
+    doc.note(f"nearly symmetric {what}: the moments across the axis are {i1} and {i2} {J} (differ by "
+             f"{num(100.0 * sym.relative, 3)} %{tilt}; --symmetry-tol {num(100.0 * tol, 3)} %): the "
+             f"answer is for the symmetrised {what} ({name} = their mean) and may be off by a relative "
+             f"amount of the order of {num(100.0 * effect, 2)} %"
+             + (" (the path of the axis by a few times that tilt; --verify measures it)." if what == "body"
+                else "."))
 
 
 # ----------------------------------------------------------------------------- CSV
@@ -257,34 +229,26 @@ def document(doc: Doc, motion: TopMotion, info: Info, du: DisplayUnits, digits: 
 CSV_HEADER = ("t", "theta_deg", "phi_deg", "psi_deg")
 
 
-def csv_blocks(motion: TopMotion, duration: float, samples: int) -> Iterator[np.ndarray]:
-    """Rows t, theta, phi, psi (s, degrees) at ``samples`` times from t = 0 to ``duration``
-    inclusive, in blocks for :func:`rbcli.render.csvout.write`."""
-    from rbcli.core.top import path_at
-    from rbcli.render.csvout import times
-
-    for t in times(duration, samples):
-        theta, phi, psi = path_at(motion, t)
-        yield np.column_stack([t, np.degrees(theta), np.degrees(phi), np.degrees(psi)])
+def csv_block(state: TopState) -> np.ndarray:
+    """The CSV rows t, theta, phi, psi (s, degrees) of the motion sampled at some times."""
+    return np.column_stack([state.t, np.degrees(state.theta), np.degrees(state.phi), np.degrees(state.psi)])
 
 
 # ----------------------------------------------------------------------------- plot
 
 
-def plot(motion: TopMotion, info: Info, duration: float):
+def plot(result: TopResult, state: TopState, duration: float):
     """The path of the axis tip: θ against φ (up is up) and the view from above, θ1 and
-    θ2 marked, over ``duration`` seconds from the start."""
-    from rbcli.core.top import path_at
+    θ2 marked; ``state`` is the motion sampled over ``duration`` seconds from the start
+    (:meth:`rbcli.api.top.TopResult.sample`)."""
     from rbcli.render.plots import figure, style
 
-    tn = motion.nutation_period or duration
-    n = int(min(200_000, max(2_000, 400 * duration / tn)))
-    t = np.linspace(0.0, duration, n)
-    theta, phi, _ = path_at(motion, t)
+    motion = result.motion
+    theta, phi = state.theta, state.phi
     th_d, ph_d = np.degrees(theta), np.degrees(phi)
     t1, t2 = math.degrees(motion.theta1), math.degrees(motion.theta2)
     kind = "steady precession" if motion.steady else motion.path
-    title = (f"top: {info.body.name} — S = {motion.spin:.4g} rad/s, θ0 = {math.degrees(motion.theta0):.4g}°: "
+    title = (f"top: {result.body.name} — S = {motion.spin:.4g} rad/s, θ0 = {math.degrees(motion.theta0):.4g}°: "
              f"{kind}")
     fig, axes = figure(title, nrows=1, ncols=2, size=(10.0, 5.0))
     ax = axes[0][0]
@@ -320,47 +284,24 @@ def plot(motion: TopMotion, info: Info, duration: float):
 # ----------------------------------------------------------------------------- gyrocompass
 
 
-def _cos_lat(lat: float) -> float:
-    """cos λ, exactly 0 at a pole (as the core takes it: no directive torque there)."""
-    return 0.0 if abs(lat) >= 0.5 * math.pi else math.cos(lat)
-
-
-def gyro_json(res: Gyrocompass, rotor: dict | None) -> dict:
-    """The gyrocompass's JSON. The moments are named twice: C, A and C_over_A as in the
-    gyrocompass literature, and Is (about the spin axis), I (across it, about the com) and
-    Is_over_I as top and rollcheck name them (the older keys stay, so scripts keep working)."""
-    out: dict[str, Any] = {}
-    for k, v in res.to_json().items():
-        out[k] = v
-        if k == "C_over_A":
-            out["Is_over_I"] = v
-    out["period_approx"] = (2.0 * math.pi / res.omega0_approx) if (res.omega0_approx and res.period) else None
-    if rotor is not None:
-        out["C"] = rotor["C"]
-        out["A"] = rotor["A"]
-        out["Is"] = rotor["C"]
-        out["I"] = rotor["A"]
-        out["mass"] = rotor["mass"]
-        out["axis"] = rotor["axis"]
-        out["axis_source"] = rotor["axis_source"]
-        out["name"] = rotor["body"].name
-        out["file"] = rotor["body"].source
-    return out
-
-
-def gyro_document(doc: Doc, res: Gyrocompass, rotor: dict | None, du: DisplayUnits, digits: int) -> None:
+def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits: int) -> None:
+    """The tables of ``rbcli gyrocompass``."""
     d = digits
-    if rotor is not None:
-        b = rotor["body"]
+    res = result.swing
+    if result.body is not None:
+        b = result.body
         J = du.unit("inertia")
         doc.heading(f"{b.name}  ({b.source})")
         doc.kv("rotor (about its centre of mass)", [
-            ("mass", du.show(rotor["mass"], "mass", d), du.unit("mass")),
-            ("C, about the spin axis", du.show(rotor["C"], "inertia", d), J),
-            ("A, across the spin axis", du.show(rotor["A"], "inertia", d), J),
+            ("mass", du.show(result.mass, "mass", d), du.unit("mass")),
+            ("C, about the spin axis", du.show(result.C, "inertia", d), J),
+            ("A, across the spin axis", du.show(result.A, "inertia", d), J),
             ("C/A", num(res.C_over_A, d), ""),
         ])
-        doc.note(f"spin axis [{', '.join(num(x, d) for x in rotor['axis'])}] ({rotor['axis_source']}).")
+        doc.note(f"spin axis [{', '.join(num(x, d) for x in result.options.axis)}] ({result.options.axis_source}).")
+        if result.asymmetry is not None:
+            _asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
+                            du, d, "rotor", "A")
     else:
         doc.heading("gyrocompass")
     lat = math.degrees(res.latitude)
@@ -370,7 +311,7 @@ def gyro_document(doc: Doc, res: Gyrocompass, rotor: dict | None, du: DisplayUni
         ("spin S", num(res.spin * RPM, d), "rpm"),
         ("latitude", num(lat, d), "°"),
         ("Earth's rate Ω_E", num(res.earth_rate, d), "rad/s"),
-        ("horizontal component Ω_E cos λ", num(res.earth_rate * _cos_lat(res.latitude), d), "rad/s"),
+        ("horizontal component Ω_E cos λ", num(res.horizontal_earth_rate, d), "rad/s"),
         ("directive (C/A) S Ω_E cos λ", num(res.directive, d), "1/s²"),
     ]
     if res.period is not None:
@@ -378,7 +319,7 @@ def gyro_document(doc: Doc, res: Gyrocompass, rotor: dict | None, du: DisplayUni
             ("swing frequency ω0", num(res.omega0, d), "rad/s"),
             ("period T = 2π/ω0", du.show(res.period, "time", d), du.unit("time")),
             ("estimate √((C/A) S Ω_E cos λ)", num(res.omega0_approx, d), "rad/s"),
-            ("period from the estimate", du.show(2.0 * math.pi / res.omega0_approx, "time", d), du.unit("time")),
+            ("period from the estimate", du.show(res.period_approx, "time", d), du.unit("time")),
             ("settles to", str(res.settles_to), ""),
         ]
     else:

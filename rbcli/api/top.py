@@ -1,0 +1,600 @@
+"""The heavy top and the gyrocompass as services: :func:`top` and :func:`gyrocompass`.
+
+``rbcli.top(body, spin=..., theta=...)`` is ``rbcli top BODY --spin ... --theta ...``:
+the exact closed-form motion of a symmetric top on a fixed pivot (Goldstein, Poole and
+Safko, *Classical Mechanics*, 3rd ed., §5.7), optionally checked against a numerical
+integration (``verify=True``). ``rbcli.gyrocompass(...)`` is ``rbcli gyrocompass``. Values
+are read by :mod:`rbcli.api.options` (SI numbers, or strings as typed on the command
+line); errors are :class:`rbcli.errors.InputError` with the command line's message.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from rbcli.api import options as op
+from rbcli.api.result import Result
+from rbcli.errors import ExitStatus, InputError, Location, ParamError
+
+if TYPE_CHECKING:  # pragma: no cover
+    import numpy as np
+
+    from rbcli.core.gyrocompass import Gyrocompass
+    from rbcli.core.top import TopMotion, TopParams, TopState
+    from rbcli.core.symmetry import AxialSymmetry
+    from rbcli.core.topverify import RealBodyCheck, VerifyResult
+    from rbcli.model import Body
+
+#: standard gravity, m/s² (the default of ``g``)
+STANDARD_GRAVITY = 9.80665
+#: the Earth's sidereal rotation rate, rad/s (the default of ``earth_rate``)
+EARTH_RATE = 7.2921150e-5
+#: nutation periods that ``verify`` integrates and that :meth:`TopResult.default_duration` spans
+PERIODS = 3
+
+def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
+    """The tolerance of a nearly symmetric body: a fraction (``0.01``) or a percentage
+    (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None gives the default, 1 %
+    (:data:`rbcli.core.symmetry.DEFAULT_TOLERANCE`)."""
+    from rbcli.core.symmetry import DEFAULT_TOLERANCE, MAX_TOLERANCE
+
+    if value is None:
+        return DEFAULT_TOLERANCE
+    text = value.strip() if isinstance(value, str) else value
+    if isinstance(text, str) and text.endswith("%"):
+        x = op.quantity(text[:-1].strip(), "dimensionless", option) / 100.0
+    else:
+        x = op.quantity(text, "dimensionless", option)
+    if not (0.0 <= x <= MAX_TOLERANCE):
+        raise InputError(f"{option}: must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
+                         f"0.01 or a percentage such as '1 %'), got {value}", param="symmetry_tol")
+    return x
+
+
+_OVERFLOW = ("--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
+             "top's equations; give values of a physical size")
+
+
+# ----------------------------------------------------------------------------- top
+
+
+@dataclass(frozen=True)
+class TopOptions:
+    """The heavy top's inputs, parsed and checked (SI), with where the pivot came from.
+
+    Attributes
+    ----------
+    spin : float — rad/s, S = ω3, the angular velocity's component along the axis (≠ 0)
+    theta : float — rad, the start tilt from the upward vertical, in (0, π)
+    theta_dot, phi_dot : float — rad/s, the start rates θ' and φ'
+    g : float — m/s², > 0
+    pivot : tuple[float, float, float] — m, the fixed point in the body frame
+    pivot_source : str — where it came from: ``"--pivot"``, ``"--pivot com"``,
+        ``"--pivot origin"``, ``"the body's pivot"`` or ``"the origin, as no pivot was given"``
+    pivot_given : bool — the pivot was an option (errors about it then name ``--pivot``)
+    verify : bool — integrate numerically and compare (``--verify``)
+    symmetry_tol : float — how far from symmetric about the pivot–com axis the body may be
+        (a fraction; default 0.01): within it the answer is for the symmetrised body, with a
+        warning; beyond it the body is refused
+    """
+
+    spin: float
+    theta: float
+    theta_dot: float
+    phi_dot: float
+    g: float
+    pivot: tuple[float, float, float]
+    pivot_source: str
+    pivot_given: bool = False
+    verify: bool = False
+    symmetry_tol: float = 0.01
+
+    @classmethod
+    def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
+              theta_dot: Any = None, phi_dot: Any = None, g: Any = None,
+              verify: bool = False, symmetry_tol: Any = None) -> TopOptions:
+        """Read and check the values (see :func:`top` for their meaning and units)."""
+        if spin is None:
+            raise InputError("--spin: required: the spin w3 about the symmetry axis, e.g. --spin 150 (rad/s) or --spin '3000 rpm'",
+                             param="spin")
+        if theta is None:
+            raise InputError("--theta: required: the start tilt of the axis from the upward vertical, e.g. --theta 30 (degrees)",
+                             param="theta")
+        S = op.finite(op.quantity(spin, "angular_speed", "--spin"), "--spin")
+        if S == 0.0:
+            raise ParamError("spin", "must not be 0: a top without spin is a spherical pendulum (it cannot "
+                             "stand); give the spin w3, e.g. --spin 150 or --spin '3000 rpm'")
+        th = op.finite(op.quantity(theta, "angle", "--theta", bare="deg"), "--theta")
+        if not (0.0 < th < math.pi):
+            raise ParamError(
+                "theta",
+                f"the start tilt must be strictly between 0 and 180 degrees, got {theta} "
+                "(at 0 or 180 the axis is vertical and the precession angle is undefined; start it "
+                "slightly tilted, e.g. --theta 0.1)"
+            )
+        thd = 0.0 if theta_dot is None else op.finite(
+            op.quantity(theta_dot, "angular_speed", "--theta-dot"), "--theta-dot")
+        phd = 0.0 if phi_dot is None else op.finite(
+            op.quantity(phi_dot, "angular_speed", "--phi-dot"), "--phi-dot")
+        gv = STANDARD_GRAVITY if g is None else op.finite(op.quantity(g, "acceleration", "--g"), "--g")
+        if not gv > 0.0:
+            raise ParamError("g", f"gravity must be positive (it points down, towards -z), got {g}")
+        p_opt = op.point(pivot, "--pivot") if pivot is not None else None
+        tol = symmetry_tolerance(symmetry_tol)
+        P, label = _pivot(body, p_opt)
+        return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
+                   pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol)
+
+    @property
+    def released(self) -> bool:
+        """Released from rest: θ0' = φ0' = 0."""
+        return self.theta_dot == 0.0 and self.phi_dot == 0.0
+
+
+def _pivot(body: Body, p_opt: str | list[float] | None) -> tuple[tuple[float, float, float], str]:
+    """The pivot (m, body frame) and a label saying where it came from."""
+    if isinstance(p_opt, str):
+        if p_opt == "com":
+            from rbcli.core.inertia import combine
+
+            P = combine(body.parts).com
+        else:
+            P = (0.0, 0.0, 0.0)
+        label = f"--pivot {p_opt}"
+    elif p_opt is not None:
+        P, label = p_opt, "--pivot"
+    elif body.pivot is not None:
+        P, label = body.pivot, "the body's pivot"
+    else:
+        P, label = (0.0, 0.0, 0.0), "the origin, as no pivot was given"
+    return tuple(float(x) for x in P), label  # type: ignore[return-value]
+
+
+@dataclass(frozen=True)
+class TopResult(Result):
+    """The heavy top's motion from the given start, and the numerical check if asked for.
+
+    Attributes
+    ----------
+    body : Body — the body (its name and source label the result)
+    options : TopOptions — the inputs as understood (SI)
+    motion : TopMotion — the exact motion: mass (kg), length l (m), I and Is about the pivot
+        (kg m²) in ``motion.params``; steady precession rates, critical spin, nutation limits
+        θ1, θ2 (rad), nutation period (s), mean rates (rad/s), the kind of path, ...
+    verify : VerifyResult | None — with ``verify=True``: the largest differences of the axis
+        (rad) and the Euler angles from a DOP853 integration, the drift of the energy and of
+        the two conserved momenta, and the verdict (``verify.passed``)
+    real_body : RealBodyCheck | None — with ``verify=True`` for a nearly symmetric body:
+        the real (unsymmetrised) body integrated from the same start, and how far its axis
+        (rad), θ and φ get from the closed form (information: not part of the verdict)
+    warnings : tuple[str, ...] — located one-line warnings: a nearly symmetric body
+    """
+
+    body: Body = field(repr=False)
+    options: TopOptions
+    motion: TopMotion = field(repr=False)
+    verify: VerifyResult | None = None
+    real_body: RealBodyCheck | None = None
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def asymmetry(self) -> AxialSymmetry | None:
+        """How far a nearly symmetric body departs from symmetry about the pivot–com axis
+        (None when it is symmetric to rounding)."""
+        return self.motion.params.asymmetry
+
+    @property
+    def asymmetry_effect(self) -> float | None:
+        """The relative size of the answer's error from symmetrising the body: of the order
+        of its largest departure (the moments across differ by δ; the real body's moment
+        across swings between them as it spins). None when symmetric."""
+        a = self.asymmetry
+        return None if a is None else a.departure
+
+    @property
+    def params(self) -> TopParams:
+        """The top's mass properties about the pivot (kg, m, kg m²)."""
+        return self.motion.params
+
+    @property
+    def I_com(self) -> float:  # noqa: N802 - the textbook's name
+        """kg m², the moment across the axis about the com, I - m l²."""
+        p = self.motion.params
+        return p.I - p.mass * p.length**2
+
+    @property
+    def steady_estimates(self) -> list[float]:
+        """rad/s, the fast-top estimates of the steady rates at θ0 (slow, then fast unless
+        the axis is horizontal); see :attr:`rbcli.core.top.TopMotion.steady_estimates`."""
+        return self.motion.steady_estimates
+
+    def at(self, t: Any) -> TopState:
+        """The Euler angles θ, φ, ψ (rad) and their rates (rad/s) at times ``t`` (s, any
+        shape): ``result.at(0.1).theta``. Exact (the closed form)."""
+        return self.motion.at(t)
+
+    def default_duration(self) -> float:
+        """s, the span ``--csv`` and ``--plot`` cover by default: 3 nutation periods.
+
+        Raises
+        ------
+        ParamError
+            (``duration``) on the separatrix, where there is no nutation period.
+        """
+        if self.motion.nutation_period is None:
+            raise ParamError(
+                "duration",
+                "the motion is on the separatrix (the axis creeps to the vertical in "
+                "infinite time): it has no nutation period and no periodic closed form to sample"
+            )
+        return PERIODS * self.motion.nutation_period
+
+    def sample(self, duration: float, points: int | None = None) -> TopState:
+        """The motion at ``points`` evenly spaced times from 0 to ``duration`` (s) inclusive:
+        by default 400 per nutation period, at least 2000 and at most 200 000 (what
+        ``--plot`` draws)."""
+        import numpy as np
+
+        if points is None:
+            tn = self.motion.nutation_period or duration
+            points = int(min(200_000, max(2_000, 400 * duration / tn)))
+        return self.motion.at(np.linspace(0.0, float(duration), int(points)))
+
+    def to_json(self) -> dict[str, Any]:
+        """The JSON of ``rbcli top ... --json``, less ``file``."""
+        m = self.motion
+        out: dict[str, Any] = m.to_json()
+        out["steady_precession_estimates"] = self.steady_estimates if m.steady_precession_rates else []
+        out["I_com"] = self.I_com
+        pj = m.params.to_json()
+        out["axis"] = pj["axis"]
+        out["pivot"] = pj["pivot"]
+        out["com"] = pj["com"]
+        out["pivot_source"] = self.options.pivot_source
+        if self.asymmetry is not None:
+            out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
+        out["name"] = self.body.name
+        if self.verify is not None:
+            out["verify"] = self.verify.to_json()
+            if self.real_body is not None:
+                out["verify"]["real_body"] = self.real_body.to_json()
+        return out
+
+    @property
+    def return_code(self) -> int:
+        """1 when ``verify`` was asked for and failed, else 0."""
+        if self.verify is not None and not self.verify.passed:
+            return int(ExitStatus.CHECK_FAILED)
+        return int(ExitStatus.OK)
+
+
+def run(body: Body, options: TopOptions) -> TopResult:
+    """The heavy top for parsed options: the closed form, and the check if asked for."""
+    import numpy as np
+
+    from rbcli.core import top as core
+    from rbcli.core.inertia import combine
+
+    mp = combine(body.parts)
+    P = np.asarray(options.pivot, dtype=float)
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):
+            params = core.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
+                                        sym_rtol=options.symmetry_tol)
+    except core.PivotAtCom as exc:
+        if options.pivot_given:
+            raise ParamError("pivot", str(exc)) from None
+        raise InputError(str(exc), Location(body.source)) from None
+    except ValueError as exc:
+        at = ", ".join(f"{x:.6g}" for x in P)
+        raise InputError(f"{exc}; pivot at [{at}] m ({options.pivot_source})",
+                         Location(body.source)) from None
+    o = options
+    try:
+        motion = core.analyse(params, o.spin, o.theta, o.theta_dot, o.phi_dot, o.g)
+    except (OverflowError, ArithmeticError):
+        raise InputError(_OVERFLOW, param="spin") from None
+    vals = [motion.a, motion.b, motion.alpha, motion.beta, motion.u1, motion.u2, motion.u3,
+            motion.theta1, motion.theta2, motion.critical_spin, motion.horizontal_precession_rate]
+    if not all(math.isfinite(v) for v in vals):
+        raise InputError(_OVERFLOW, param="spin")
+    check = real = None
+    if o.verify:
+        from rbcli.core.topverify import verify, verify_real_body
+
+        try:
+            check = verify(motion, periods=PERIODS)
+            if params.asymmetry is not None:
+                real = verify_real_body(motion, periods=PERIODS)
+        except (ValueError, OverflowError, ArithmeticError) as exc:
+            raise ParamError("verify", str(exc)) from None
+    warnings = ()
+    if params.asymmetry is not None:
+        warnings = (f"{body.source}: warning: the body is not exactly symmetric about the pivot–com "
+                    f"axis: {params.asymmetry.percent()}; the answer is for the symmetrised body "
+                    f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+    return TopResult(body=body, options=o, motion=motion, verify=check, real_body=real,
+                     warnings=warnings)
+
+
+def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any = None,
+        phi_dot: Any = None, g: Any = None, verify: bool = False,
+        symmetry_tol: Any = None) -> TopResult:
+    """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
+
+    The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
+    of mass, and it must be symmetric about that axis. It spins at ``spin`` about the axis
+    and starts tilted by ``theta`` from the upward vertical, released from rest unless
+    ``theta_dot`` or ``phi_dot`` is given. Exact closed form (Goldstein, Poole and Safko,
+    *Classical Mechanics*, 3rd ed., §5.7).
+
+    Parameters
+    ----------
+    body : Body
+        From :func:`rbcli.load` or :func:`rbcli.load_text`.
+    pivot : str or sequence of 3, optional
+        The fixed point: ``"com"``, ``"origin"``, ``[x, y, z]`` (m) or ``"0,0,-20 mm"``.
+        Default: the body's ``pivot``, else the origin.
+    spin : float or str
+        S = ω3, the angular velocity's component along the axis: rad/s, or ``"3000 rpm"``;
+        negative spins the other way. Not 0.
+    theta : float or str
+        The start tilt from the upward vertical, strictly between 0 and 180: degrees (a
+        number), or with a unit (``"0.5 rad"``).
+    theta_dot, phi_dot : float or str, optional
+        The start rates θ' and φ': rad/s or with a unit. Default 0.
+    g : float or str, optional
+        Gravity, m/s² or with a unit. Default 9.80665.
+    verify : bool
+        Integrate the equations of motion numerically (DOP853, rtol 1e-12) over 3 nutation
+        periods and compare with the closed form; ``return_code`` is then 1 if they differ
+        by more than 1e-6 rad or the energy drifts by more than 1e-9. For a nearly
+        symmetric body the real body is integrated too (``result.real_body``).
+    symmetry_tol : float or str, optional
+        How far from symmetric about the pivot–com axis the body may be: a fraction
+        (``0.01``) or a percentage (``"1 %"``), at most 10 %. Default 1 %. A body within it
+        (and above rounding, 1e-6) is answered for its symmetrised form (the mean moment
+        across) with a warning and ``asymmetry`` in the JSON; beyond it, refused.
+
+    Returns
+    -------
+    TopResult
+        ``result.motion`` (the numbers), ``result.at(t)`` (the angles and rates at times
+        ``t``), ``result.to_json()`` (as ``rbcli top --json``), ``result.return_code``.
+
+    Raises
+    ------
+    rbcli.InputError
+        With the command line's message: a value out of range, a body that is not a top
+        about this pivot (asymmetric, the pivot at the com, a point mass), values that
+        overflow the top's equations.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> r = rbcli.top(rbcli.load("examples/top.yaml"), spin=150, theta=30, g=9.81)
+    >>> round(r.motion.nutation_period, 6), r.motion.path
+    (0.142133, 'cusps')
+    """
+    return run(body, TopOptions.parse(body, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
+                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol))
+
+
+# ----------------------------------------------------------------------------- gyrocompass
+
+
+@dataclass(frozen=True)
+class GyrocompassOptions:
+    """The gyrocompass's inputs, parsed and checked (SI).
+
+    Attributes
+    ----------
+    ratio : float | None — C/A given directly (no body)
+    axis : tuple[float, float, float] | None — the spin axis in the body frame (with a body)
+    axis_source : str | None — ``"--axis"``, ``"the body's shaft"`` or ``"body z (default)"``
+    spin : float — rad/s, ≠ 0
+    latitude : float — rad, in [-π/2, π/2]
+    earth_rate : float — rad/s, > 0
+    symmetry_tol : float — how far from symmetric about its spin axis the body may be
+    """
+
+    ratio: float | None
+    axis: tuple[float, float, float] | None
+    axis_source: str | None
+    spin: float
+    latitude: float
+    earth_rate: float
+    symmetry_tol: float = 0.01
+
+    @classmethod
+    def parse(cls, body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any = None,
+              latitude: Any = None, earth_rate: Any = None,
+              symmetry_tol: Any = None) -> GyrocompassOptions:
+        """Read and check the values (see :func:`gyrocompass`)."""
+        if spin is None:
+            raise InputError("--spin: required: the rotor's spin about its axis, e.g. --spin '6000 rpm'",
+                             param="spin")
+        if latitude is None:
+            raise InputError("--latitude: required: the latitude in degrees, -90 to 90 (negative = south), "
+                             "e.g. --latitude 52", param="latitude")
+        S = op.finite(op.quantity(spin, "angular_speed", "--spin"), "--spin")
+        if S == 0.0:
+            raise ParamError("spin", "must not be 0: a gyrocompass needs a spinning rotor")
+        lat = op.finite(op.quantity(latitude, "angle", "--latitude", bare="deg"), "--latitude")
+        if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
+            raise ParamError("latitude", f"must be from -90 to 90 degrees, got {latitude}")
+        W = EARTH_RATE if earth_rate is None else op.finite(
+            op.quantity(earth_rate, "angular_speed", "--earth-rate"), "--earth-rate")
+        if not W > 0.0:
+            raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
+        n_axis = op.direction(axis, "--axis") if axis is not None else None
+        tol = symmetry_tolerance(symmetry_tol)
+        r = None
+        if ratio is not None:
+            r = op.finite(op.quantity(ratio, "dimensionless", "--ratio"), "--ratio")
+            if not r > 0.0:
+                raise ParamError("ratio", f"C/A must be positive, got {ratio}")
+            if body is not None:
+                raise ParamError("ratio", "give either --ratio or a body (BODY or -e), not both")
+            if n_axis is not None:
+                raise ParamError("axis", "the axis belongs to a body; with --ratio there is no body")
+            return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
+                       symmetry_tol=tol)
+        if body is None:
+            raise InputError("no rotor given: name a BODY file, use -e '{...}', or give --ratio C/A")
+        if n_axis is not None:
+            n, src = n_axis, "--axis"
+        elif body.shaft is not None:
+            n, src = body.shaft.axis, "the body's shaft"
+        else:
+            n, src = (0.0, 0.0, 1.0), "body z (default)"
+        import numpy as np
+
+        v = np.asarray(n, dtype=float)
+        unit = tuple(float(x) for x in v / np.linalg.norm(v))
+        return cls(ratio=None, axis=unit, axis_source=src, spin=S, latitude=lat,  # type: ignore[arg-type]
+                   earth_rate=W, symmetry_tol=tol)
+
+
+@dataclass(frozen=True)
+class GyrocompassResult(Result):
+    """The gyrocompass's swing about north.
+
+    Attributes
+    ----------
+    swing : Gyrocompass — C/A, spin (rad/s), latitude (rad), Earth rate (rad/s), directive
+        (1/s²), omega0 and its estimate (rad/s), period (s) and where it settles (None
+        with no directive torque)
+    body : Body | None — the rotor's body (None with ``ratio``)
+    C, A : float | None — kg m², with a body: the moments about and across the spin axis,
+        about the com
+    mass : float | None — kg, with a body
+    options : GyrocompassOptions — the inputs as understood (SI)
+    asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric about its
+        spin axis: how far it departs (A is then the mean of its two moments across)
+    warnings : tuple[str, ...] — located one-line warnings: a nearly symmetric rotor
+    """
+
+    swing: Gyrocompass
+    options: GyrocompassOptions
+    body: Body | None = field(default=None, repr=False)
+    C: float | None = None
+    A: float | None = None
+    mass: float | None = None
+    asymmetry: AxialSymmetry | None = None
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def asymmetry_effect(self) -> float | None:
+        """The relative error of C/A from symmetrising the rotor: up to half the difference
+        of the moments across (the moment about the vertical swings between them as the
+        rotor turns); the period's is about half that. None when symmetric."""
+        a = self.asymmetry
+        return None if a is None else max(0.5 * a.relative, a.coupling_relative)
+
+    def to_json(self) -> dict[str, Any]:
+        """The JSON of ``rbcli gyrocompass ... --json``, less ``file``."""
+        out: dict[str, Any] = {}
+        for k, v in self.swing.to_json().items():
+            out[k] = v
+            if k == "C_over_A":
+                out["Is_over_I"] = v
+        out["period_approx"] = self.swing.period_approx
+        if self.body is not None:
+            out["C"] = self.C
+            out["A"] = self.A
+            out["Is"] = self.C
+            out["I"] = self.A
+            out["mass"] = self.mass
+            out["axis"] = list(self.options.axis or ())
+            out["axis_source"] = self.options.axis_source
+            if self.asymmetry is not None:
+                out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
+            out["name"] = self.body.name
+        return out
+
+
+def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
+    """The gyrocompass for parsed options."""
+    from rbcli.core import gyrocompass as core
+
+    o = options
+    C = A = mass = rotor = None
+    if o.ratio is not None:
+        r = o.ratio
+    else:
+        assert body is not None and o.axis is not None
+        from rbcli.core.inertia import combine
+
+        mp = combine(body.parts)
+        try:
+            rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
+        except ValueError as exc:
+            raise InputError(f"{exc}; spin axis from {o.axis_source}", Location(body.source)) from None
+        C, A, mass = rotor.C, rotor.A, rotor.mass
+        r = C / A
+    try:
+        swing = core.gyrocompass(r, o.spin, o.latitude, o.earth_rate)
+    except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
+        who = ["--ratio" if body is None else body.source, "--spin", "--earth-rate"]
+        raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
+    warnings = ()
+    if body is not None and rotor.asymmetry is not None:
+        warnings = (f"{body.source}: warning: the rotor is not exactly symmetric about its spin axis: "
+                    f"{rotor.asymmetry.percent()}; the answer is for the symmetrised rotor "
+                    f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+    return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass,
+                             asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
+
+
+def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any,
+                latitude: Any, earth_rate: Any = None, symmetry_tol: Any = None) -> GyrocompassResult:
+    """A gyrocompass: the period of its swing about north and where it settles.
+
+    A rotor spinning at ``spin`` about its axis, the axis held horizontal and free to turn
+    about the vertical, at ``latitude`` on the rotating Earth: ω0² = (C/A) S Ω_E cos λ -
+    Ω_E² cos² λ, period T = 2π/ω0 (undamped).
+
+    Parameters
+    ----------
+    body : Body, optional
+        A rotor symmetric about its spin axis (C and A about its centre of mass); or give
+        ``ratio`` instead.
+    ratio : float or str, optional
+        C/A, the axial moment over the moment about the vertical (a flat disk: 2).
+    axis : str or sequence of 3, optional
+        The rotor's spin axis in the body frame (``"x"``, ``[0, 0, 1]``). Default: the
+        body's shaft axis, else z.
+    spin : float or str
+        The rotor's spin: rad/s or ``"6000 rpm"``; negative the other way. Not 0.
+    latitude : float or str
+        Degrees (a number) or with a unit, -90 to 90; negative is south.
+    earth_rate : float or str, optional
+        Ω_E, rad/s or with a unit. Default 7.2921150e-5 (sidereal).
+    symmetry_tol : float or str, optional
+        How far from symmetric about its spin axis the body may be: a fraction or a
+        percentage (``"1 %"``), at most 10 %. Default 1 %. Within it, A is the mean of the
+        two moments across, with a warning and ``asymmetry`` in the JSON.
+
+    Returns
+    -------
+    GyrocompassResult
+        ``result.swing.period`` (s), ``result.swing.settles_to``, ``result.to_json()``.
+
+    Raises
+    ------
+    rbcli.InputError
+        With the command line's message: a value out of range, both or neither of ``body``
+        and ``ratio``, a body not symmetric about its spin axis.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> round(rbcli.gyrocompass(ratio=2, spin="6000 rpm", latitude=30).swing.period, 3)
+    22.304
+    """
+    return run_gyrocompass(body, GyrocompassOptions.parse(body, ratio=ratio, axis=axis, spin=spin,
+                                                          latitude=latitude, earth_rate=earth_rate,
+                                                          symmetry_tol=symmetry_tol))

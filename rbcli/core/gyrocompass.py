@@ -1,0 +1,237 @@
+"""The gyrocompass: the period of its swing about north and where it settles.
+
+Pure physics in SI units. Model: a rotor of axial moment C and transverse moment A (both
+about its centre of mass) spins at S about its axis; the axis is held horizontal and is
+free to turn about the vertical, at latitude λ on the Earth rotating at Ω_E. The
+horizontal component Ω_E cos λ of the Earth's rotation, acting on the rotor's angular
+momentum C S, gives a torque that swings the axis about the meridian; the equation of
+motion below is the standard undamped one (see e.g. https://en.wikipedia.org/wiki/Gyrocompass,
+"Mathematical model"), with the centrifugal Ω_E² term kept.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+
+#: Earth's sidereal rotation rate, rad/s (IERS conventions).
+EARTH_RATE = 7.2921150e-5
+
+
+def _finite(name: str, x: float) -> float:
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, not {x!r}") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be a finite number, not {v}")
+    return v
+
+
+def _j(x: float | None) -> float | None:
+    """A JSON-safe float: None for None or a non-finite value."""
+    if x is None:
+        return None
+    v = float(x)
+    return v if math.isfinite(v) else None
+
+
+
+@dataclass(frozen=True)
+class Gyrocompass:
+    """Small oscillation of a gyrocompass about the meridian (see the module docstring).
+
+    Attributes
+    ----------
+    C_over_A : float — axial moment over the moment about the vertical (flat disk: 2)
+    spin : float — rad/s, rotor spin about its axis
+    latitude : float — rad
+    earth_rate : float — rad/s, Ω_E
+    directive : float — 1/s², C S Ω_E cos λ / A (the gyroscopic restoring coefficient)
+    omega0 : float | None — rad/s, sqrt(|directive| - Ω_E² cos² λ); None when there is
+        no restoring torque (at a pole, or a spin too slow to beat the Ω_E² term)
+    omega0_approx : float | None — rad/s, sqrt(|directive|), the usual approximation
+    period : float | None — s, 2π/omega0
+    settles_to : str | None — where the rotor's +axis settles: "north" for S > 0 (the
+        spin vector points north, along the Earth's rotation), "south" for S < 0
+    """
+
+    C_over_A: float
+    spin: float
+    latitude: float
+    earth_rate: float
+    directive: float
+    omega0: float | None
+    omega0_approx: float | None
+    period: float | None
+    settles_to: str | None
+
+    @property
+    def horizontal_earth_rate(self) -> float:
+        """rad/s, Ω_E cos λ (exactly 0 at a pole)."""
+        return self.earth_rate * (0.0 if abs(self.latitude) >= 0.5 * math.pi else math.cos(self.latitude))
+
+    @property
+    def period_approx(self) -> float | None:
+        """s, 2π/omega0_approx, the period from the usual estimate (None with no directive
+        torque)."""
+        return (2.0 * math.pi / self.omega0_approx) if (self.omega0_approx and self.period) else None
+
+    def to_json(self) -> dict:
+        return {
+            "C_over_A": float(self.C_over_A),
+            "spin": float(self.spin),
+            "latitude_deg": math.degrees(self.latitude),
+            "earth_rate": float(self.earth_rate),
+            "directive": _j(self.directive),
+            "omega0": _j(self.omega0),
+            "omega0_approx": _j(self.omega0_approx),
+            "period": _j(self.period),
+            "settles_to": self.settles_to,
+        }
+
+
+def gyrocompass(
+    C_over_A: float,
+    spin_rad_s: float,
+    latitude_rad: float,
+    earth_rate: float = EARTH_RATE,
+) -> Gyrocompass:
+    """Period of small oscillation of a gyrocompass about north.
+
+    Parameters
+    ----------
+    C_over_A : float — axial moment C over the moment A about the vertical, > 0
+    spin_rad_s : float — rad/s, rotor spin S, nonzero
+    latitude_rad : float — rad, in [-π/2, π/2]
+    earth_rate : float — rad/s, Ω_E > 0 (default sidereal 7.2921150e-5)
+
+    Returns
+    -------
+    Gyrocompass
+
+    Raises
+    ------
+    ValueError
+        for inputs out of range, or so large that the directive C S Ω_E cos λ / A (or
+        Ω_E² cos²λ) overflows to inf or NaN.
+
+    Notes
+    -----
+    Model: axis held horizontal, free in azimuth α from north,
+    A α'' = -C S Ω_E cos λ sin α + A Ω_E² cos²λ sin α cos α. Linearised about α = 0
+    (S > 0) or α = π (S < 0): ω0² = |C S Ω_E cos λ|/A - Ω_E² cos²λ, T = 2π/ω0.
+    """
+    r = _finite("C_over_A", C_over_A)
+    S = _finite("spin", spin_rad_s)
+    lat = _finite("latitude", latitude_rad)
+    W = _finite("earth_rate", earth_rate)
+    if r <= 0.0:
+        raise ValueError(f"C/A must be positive, not {r}")
+    if W <= 0.0:
+        raise ValueError(f"the Earth's rotation rate must be positive, not {W}")
+    if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
+        raise ValueError(f"latitude must be between -90 and 90 degrees, not {math.degrees(lat):.6g}")
+    if S == 0.0:
+        raise ValueError("a gyrocompass needs a spinning rotor: the spin is 0")
+    cl = math.cos(lat) if abs(lat) < 0.5 * math.pi else 0.0
+    k = r * S * W * cl
+    w2 = abs(k) - (W * cl) * (W * cl)
+    if not (math.isfinite(k) and math.isfinite(w2)):
+        raise ValueError(
+            f"the directive torque per unit moment C S W cos(latitude)/A overflows floating point "
+            f"(C/A = {r:.6g}, spin {S:.6g} rad/s, Earth rate {W:.6g} rad/s); give values of a "
+            "physical size"
+        )
+    if w2 > 0.0:
+        w0: float | None = math.sqrt(w2)
+        w0a: float | None = math.sqrt(abs(k))
+        per: float | None = 2.0 * math.pi / w0
+        where: str | None = "north" if S > 0 else "south"
+    else:
+        w0 = per = where = None
+        w0a = math.sqrt(abs(k)) if k != 0.0 else None
+    return Gyrocompass(
+        C_over_A=r, spin=S, latitude=lat, earth_rate=W, directive=k, omega0=w0,
+        omega0_approx=w0a, period=per, settles_to=where,
+    )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Rotor:
+    """A rotor's moments about its centre of mass.
+
+    Attributes
+    ----------
+    C : float — kg m², about the spin axis
+    A : float — kg m², across the spin axis (the mean of the two transverse moments)
+    mass : float — kg
+    axis : tuple[float, float, float] — the unit spin axis, body frame
+    asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric (above
+        rounding, within the tolerance): how far it departs; None when symmetric
+    """
+
+    C: float
+    A: float
+    mass: float
+    axis: tuple[float, float, float]
+    asymmetry: AxialSymmetry | None = None
+
+
+def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e-6) -> Rotor:
+    """C and A of a body (nearly) symmetric about its spin axis, both about the com.
+
+    Parameters
+    ----------
+    mass : float — kg, > 0
+    com : (3,) array_like — m, the centre of mass (the spin axis runs through it)
+    inertia_com : (3, 3) array_like — kg m², about the com (tensor convention)
+    axis : (3,) array_like — the spin axis in the body frame (need not be unit)
+    sym_rtol : float — the tolerance of :func:`rbcli.core.symmetry.require` (the
+        ``--symmetry-tol``): the two transverse moments may differ by this fraction of
+        their mean, and the products coupling the axis to the plane across it may be this
+        fraction of it; A is their mean
+
+    Raises
+    ------
+    rbcli.core.symmetry.Asymmetric
+        a body not symmetric about the axis within ``sym_rtol`` (with the numbers)
+    ValueError
+        a zero or non-finite axis, a zero inertia tensor, zero moments.
+    """
+    m = _finite("the mass", mass)
+    if m <= 0.0:
+        raise ValueError(f"the mass must be positive, got {m:.6g}")
+    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+    if not np.all(np.isfinite(J)):
+        raise ValueError("the centre of mass and the inertia tensor must be finite")
+    J = 0.5 * (J + J.T)
+    n = np.asarray(axis, dtype=float).reshape(3)
+    nn = float(np.linalg.norm(n))
+    if not math.isfinite(nn) or nn == 0.0:
+        raise ValueError("the spin axis direction must be a non-zero finite vector")
+    n = n / nn
+    C = float(n @ J @ n)
+    k = int(np.argmin(np.abs(n)))
+    e1 = np.zeros(3)
+    e1[k] = 1.0
+    e1 = e1 - (e1 @ n) * n
+    e1 /= np.linalg.norm(e1)
+    E = np.array([e1, np.cross(n, e1)])
+    A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
+    if not max(abs(A1), abs(A2), abs(C)) > 0.0:
+        raise ValueError("the inertia tensor is zero: a point mass cannot be a rotor")
+    A = 0.5 * (A1 + A2)
+    if C <= 0.0 or A <= 0.0:
+        raise ValueError(
+            f"the moments about and across the spin axis must be positive, got C = {C:.6g} "
+            f"and A = {A:.6g} kg m²"
+        )
+    sym = about_axis(m, com, J, com, n)
+    require(sym, sym_rtol, "its spin axis", "a gyrocompass rotor")
+    return Rotor(C=C, A=A, mass=m, axis=tuple(float(x) for x in n),  # type: ignore[arg-type]
+                 asymmetry=None if sym.exact else sym)

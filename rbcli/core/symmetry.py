@@ -1,0 +1,270 @@
+"""How nearly a body is symmetric about an axis: the test behind "nearly symmetric" bodies.
+
+Pure physics, SI units. A heavy top, a gyrocompass rotor and a rolling wheel are modelled
+as bodies of revolution about an axis: the two moments of inertia across the axis equal
+(I1 = I2), the axis a principal axis (no product of inertia couples it to the plane
+across it), and the centre of mass on the axis. A body from CAD is symmetric only to its
+modelling accuracy (a bolt hole, a key way, a balancing mark: 0.01 % is typical). This
+module measures the three departures, relative to the body's own scale, so a command can
+accept a body within a tolerance and answer for the *symmetrised* body (the two moments
+across replaced by their mean; the products coupling the axis dropped), say how far the
+answer may then be off, and refuse a body beyond it with the numbers.
+
+Definitions (the inertia tensor J about the point, tensor convention, n the unit axis,
+(e1, e2) an orthonormal basis across it):
+
+- axial moment C = n·J·n; the moments across, I1 <= I2, are the eigenvalues of the 2×2
+  block [ei·J·ej]; their mean Ī = (I1 + I2)/2 is the symmetrised body's moment across;
+- ``relative`` = (I2 - I1)/Ī;
+- ``coupling`` = |[e1·J·n, e2·J·n]| (kg m²), ``coupling_relative`` = coupling/Ī; the
+  nearest principal axis is ``principal_tilt`` = ½ atan2(2 coupling, |C - Ī|) rad away;
+- ``com_offset`` = the distance of the centre of mass from the axis line (m) and
+  ``com_offset_relative`` = com_offset/size, with size the radius of gyration about the
+  com, sqrt(trace(J_com)/(2 m)), unless the caller gives a length scale (a rim radius).
+
+The body passes ``tolerance`` when all three relative numbers are at most it. Below
+:data:`ROUND_OFF` a body is symmetric to rounding and nothing is said. The moments,
+products and parallel-axis shift are the textbook ones (e.g. Goldstein, Poole and Safko,
+*Classical Mechanics*, 3rd ed., §5.3 and §5.4).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rbcli.errors import option_name
+
+#: departures below this are rounding: the body is symmetric and nothing is reported
+ROUND_OFF = 1e-6
+#: the default tolerance of ``--symmetry-tol``: 1 % (a CAD body symmetric to 0.01 % passes
+#: with a warning; a box 10 % out of square is refused)
+DEFAULT_TOLERANCE = 0.01
+#: the largest tolerance accepted: beyond 10 % a "symmetrised" body is a different body
+MAX_TOLERANCE = 0.1
+
+
+def inertia_about(mass: float, com, inertia_com, point) -> np.ndarray:
+    """kg m², the inertia tensor about ``point`` (m) from the one about the com:
+    J_P = J_com + m (|d|² E - d dᵀ), d = com - point (parallel-axis theorem)."""
+    c = np.asarray(com, dtype=float).reshape(3)
+    p = np.asarray(point, dtype=float).reshape(3)
+    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+    J = 0.5 * (J + J.T)
+    d = c - p
+    return J + mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
+
+
+@dataclass(frozen=True)
+class AxialSymmetry:
+    """How symmetric a body is about an axis through a point (see the module docstring).
+
+    Attributes
+    ----------
+    axis : tuple[float, float, float] — the unit axis n, body frame
+    point : tuple[float, float, float] — m, the point the moments are about, body frame
+    inertia : tuple[tuple[float, ...], ...] — kg m², the full tensor J about the point
+    axial : float — kg m², C = n·J·n
+    transverse : tuple[float, float] — kg m², I1 <= I2, the moments across the axis
+    mean : float — kg m², (I1 + I2)/2, the symmetrised body's moment across
+    transverse_axes : tuple[tuple[float, float, float], tuple[float, float, float]] — the
+        unit directions (across n) of I1 and I2, body frame
+    relative : float — (I2 - I1)/mean
+    coupling : float — kg m², the products of inertia coupling n to the plane across it
+    coupling_relative : float — coupling/mean
+    com_offset : float — m, the centre of mass's distance from the axis line
+    com_offset_relative : float — com_offset/size
+    size : float — m, the length scale of com_offset_relative
+    """
+
+    axis: tuple[float, float, float]
+    point: tuple[float, float, float]
+    inertia: tuple[tuple[float, float, float], ...]
+    axial: float
+    transverse: tuple[float, float]
+    mean: float
+    transverse_axes: tuple[tuple[float, float, float], tuple[float, float, float]]
+    relative: float
+    coupling: float
+    coupling_relative: float
+    com_offset: float
+    com_offset_relative: float
+    size: float
+
+    @property
+    def departure(self) -> float:
+        """The largest of the three relative departures."""
+        return max(self.relative, self.coupling_relative, self.com_offset_relative)
+
+    @property
+    def principal_tilt(self) -> float:
+        """rad, the angle from the axis to the nearest principal axis of J:
+        ½ atan2(2 coupling, |C - mean|)."""
+        return 0.5 * math.atan2(2.0 * self.coupling, abs(self.axial - self.mean))
+
+    @property
+    def exact(self) -> bool:
+        """Symmetric to rounding (every departure at most :data:`ROUND_OFF`)."""
+        return self.departure <= ROUND_OFF
+
+    def within(self, tolerance: float) -> bool:
+        """Every departure at most ``tolerance`` (never stricter than :data:`ROUND_OFF`)."""
+        return self.departure <= max(tolerance, ROUND_OFF)
+
+    def to_json(self, tolerance: float) -> dict:
+        """The JSON ``asymmetry`` object of the commands that accept a nearly symmetric body."""
+        return {
+            "transverse_moments": [float(self.transverse[0]), float(self.transverse[1])],
+            "relative": float(self.relative),
+            "coupling": float(self.coupling),
+            "coupling_relative": float(self.coupling_relative),
+            "principal_axis_tilt": float(self.principal_tilt),
+            "com_offset": float(self.com_offset),
+            "com_offset_relative": float(self.com_offset_relative),
+            "tolerance": float(tolerance),
+        }
+
+    def percent(self) -> str:
+        """The departures in words: 'the moments across it differ by 0.012 %, ...'."""
+        parts = [f"the moments across it differ by {_pct(self.relative)}"]
+        if self.coupling_relative > ROUND_OFF:
+            parts.append(f"its products of inertia with the plane across are {_pct(self.coupling_relative)} "
+                         "of the moment across")
+        if self.com_offset_relative > ROUND_OFF:
+            parts.append(f"the centre of mass is {_pct(self.com_offset_relative)} of the body's size "
+                         "off it")
+        return ", ".join(parts)
+
+
+class Asymmetric(ValueError):
+    """The body departs from symmetry about the axis by more than the tolerance; the
+    message gives the numbers and names ``--symmetry-tol``.
+
+    Attributes
+    ----------
+    symmetry : AxialSymmetry
+    tolerance : float
+    """
+
+    def __init__(self, message: str, symmetry: AxialSymmetry, tolerance: float) -> None:
+        super().__init__(message)
+        self.symmetry = symmetry
+        self.tolerance = tolerance
+
+
+def _pct(x: float) -> str:
+    return f"{100.0 * x:.2g} %"
+
+
+def about_axis(mass: float, com, inertia_com, point, axis, *, size: float | None = None) -> AxialSymmetry:
+    """Measure how symmetric a body is about the line through ``point`` along ``axis``.
+
+    Parameters
+    ----------
+    mass : float — kg, > 0
+    com : (3,) array_like — m, centre of mass, body frame
+    inertia_com : (3, 3) array_like — kg m², about the com (tensor convention)
+    point : (3,) array_like — m, the point the moments are taken about (a pivot, the com)
+    axis : (3,) array_like — the axis direction (need not be unit)
+    size : float, optional — m, the length scale of the com offset (default: the radius of
+        gyration about the com)
+
+    Returns
+    -------
+    AxialSymmetry
+
+    Raises
+    ------
+    ValueError
+        a zero or non-finite axis, non-finite inputs, or a moment across the axis of zero.
+    """
+    n = np.asarray(axis, dtype=float).reshape(3)
+    nn = float(np.linalg.norm(n))
+    if not (math.isfinite(nn) and nn > 0.0):
+        raise ValueError("the axis must be a non-zero finite vector")
+    n = n / nn
+    J = inertia_about(mass, com, inertia_com, point)
+    if not np.all(np.isfinite(J)):
+        raise ValueError("the com, the point and the inertia tensor must be finite numbers")
+    C = float(n @ J @ n)
+    k = int(np.argmin(np.abs(n)))
+    e1 = np.cross(n, np.eye(3)[k])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(n, e1)
+    E = np.array([e1, e2])
+    block = E @ J @ E.T
+    vals, vecs = np.linalg.eigh(0.5 * (block + block.T))
+    I1, I2 = float(vals[0]), float(vals[1])
+    mean = 0.5 * (I1 + I2)
+    if not mean > 0.0:
+        raise ValueError("the moment of inertia across the axis is zero")
+    axes = tuple(tuple(float(x) for x in (vecs[0, i] * e1 + vecs[1, i] * e2)) for i in (0, 1))
+    cvec = E @ J @ n
+    coupling = float(np.linalg.norm(cvec))
+    c = np.asarray(com, dtype=float).reshape(3)
+    d = c - np.asarray(point, dtype=float).reshape(3)
+    off = float(np.linalg.norm(d - (d @ n) * n))
+    if size is None:
+        Jc = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+        size = math.sqrt(max(float(np.trace(Jc)), 0.0) / (2.0 * mass))
+    return AxialSymmetry(
+        axis=tuple(float(x) for x in n),  # type: ignore[arg-type]
+        point=tuple(float(x) for x in np.asarray(point, dtype=float).reshape(3)),  # type: ignore[arg-type]
+        inertia=tuple(tuple(float(x) for x in row) for row in J),  # type: ignore[arg-type]
+        axial=C,
+        transverse=(I1, I2),
+        mean=mean,
+        transverse_axes=axes,  # type: ignore[arg-type]
+        relative=(I2 - I1) / mean,
+        coupling=coupling,
+        coupling_relative=coupling / mean,
+        com_offset=off,
+        com_offset_relative=off / size if size > 0.0 else (0.0 if off == 0.0 else math.inf),
+        size=float(size),
+    )
+
+
+def require(sym: AxialSymmetry, tolerance: float, subject: str, needs: str) -> None:
+    """Refuse a body beyond ``tolerance``: :class:`Asymmetric` with the numbers.
+
+    ``subject`` names the axis (``"the pivot–com axis"``), ``needs`` what the model needs
+    (``"a top"``). Each departure beyond the tolerance is named with its numbers and the
+    option that sets the tolerance.
+    """
+    tol = max(tolerance, ROUND_OFF)
+    opt = option_name("symmetry_tol")
+    allowed = f"{needs} needs them within {opt} ({_pct(tolerance)})"
+    I1, I2 = sym.transverse
+    # enough digits that the two moments print differently
+    digits = 3 if not 0.0 < sym.relative < 0.01 else min(17, math.ceil(-math.log10(sym.relative)) + 2)
+    if sym.relative > tol:
+        raise Asymmetric(
+            f"the body is not symmetric about {subject}: the moments across it are "
+            f"{_num(I1, digits)} and {_num(I2, digits)} kg m² (differ by {_pct(sym.relative)}); {allowed}",
+            sym, tolerance)
+    if sym.coupling_relative > tol:
+        tilt = math.degrees(sym.principal_tilt)
+        raise Asymmetric(
+            f"{subject} is not a principal axis of the body: its products of inertia with the "
+            f"plane across it are {_num(sym.coupling)} kg m² ({_pct(sym.coupling_relative)} of the "
+            f"moment across, {_num(sym.mean)} kg m²; the nearest principal axis is {tilt:.3g}° "
+            f"away); {allowed}", sym, tolerance)
+    if sym.com_offset_relative > tol:
+        raise Asymmetric(
+            f"the centre of mass is {_num(sym.com_offset)} m off {subject} "
+            f"({_pct(sym.com_offset_relative)} of the body's size, {_num(sym.size)} m); {allowed}",
+            sym, tolerance)
+
+
+def _num(x: float, digits: int = 3) -> str:
+    """A short number for messages: 1.2e-3, 0.04, 22 (``digits`` significant figures)."""
+    x = float(x)
+    if x == 0.0:
+        return "0"
+    if 1e-2 <= abs(x) < 1e4:
+        return f"{x:.{digits}g}"
+    mant, exp = f"{x:.{digits - 1}e}".split("e")
+    mant = mant.rstrip("0").rstrip(".")
+    return f"{mant}e{int(exp)}"
