@@ -145,8 +145,8 @@ KNOWN_PRIVATE_USES: dict[str, list[str]] = {}
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
 def test_no_module_uses_another_modules_private_names(path):
     """A name with a leading '_' is private to its module: another module that needs it
-    needs a public function (as report uses balance.compute, top.prepare, rollcheck.prepare,
-    massprops.reference, not their private helpers)."""
+    needs a public function (as the report service uses each command's options object and
+    run(), not their private helpers)."""
     rel = str(path.relative_to(PKG))
     used = {name for _, name in _private_uses(path)}
     known = set(KNOWN_PRIVATE_USES.get(rel, []))

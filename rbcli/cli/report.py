@@ -23,6 +23,7 @@ is set. Exit status 1 when a check asked for fails (--grade, rolling at --speed)
 report is written first.
 """
 
+
 @app.command(help=HELP)
 def report(
     body: str = c.BodyArg,
