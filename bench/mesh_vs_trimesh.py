@@ -41,7 +41,7 @@ def run_ours(path: str) -> dict:
     from rbcli.core.mesh import mass_properties
     from rbcli.io.meshfile import read_mesh
 
-    v, f = read_mesh(path)
+    v, f, *_ = read_mesh(path)
     p = mass_properties(v, f)
     return {"volume": p.volume, "inertia_zz": float(p.unit_inertia[2, 2] * p.volume)}
 

@@ -451,7 +451,8 @@ def test_to_json_is_plain_python():
     v, f = box_mesh(1.0, 2.0, 3.0)
     js = mass_properties(v, f[:, ::-1]).to_json()
     assert set(js) == {
-        "volume", "area", "centroid", "unit_inertia", "n_triangles", "flipped", "warnings"
+        "volume", "area", "centroid", "unit_inertia", "n_triangles", "flipped", "warnings",
+        "welded", "gap",
     }  # fmt: skip
     assert type(js["volume"]) is float and type(js["area"]) is float
     assert all(type(x) is float for x in js["centroid"])

@@ -79,7 +79,7 @@ def same_triangles(v1, f1, v2, f2):
 def test_binary_stl_round_trip(tmp_path):
     v, f = sphere_arrays()
     path = write_binary_stl(tmp_path / "s.stl", v, f)
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert rv.dtype == np.float64 and rf.dtype == np.int64
     assert rv.shape == v.shape and rf.shape == f.shape  # welded back to 642 vertices
     v32 = v.astype(np.float32).astype(np.float64)  # what the file holds
@@ -94,7 +94,7 @@ def test_binary_stl_round_trip(tmp_path):
 def test_binary_stl_whose_header_starts_with_solid(tmp_path):
     v, f = box_arrays()
     path = write_binary_stl(tmp_path / "b.stl", v, f, header=b"solid exported by some CAD")
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rv) == 8 and len(rf) == 12
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)  # exact small numbers
 
@@ -102,14 +102,14 @@ def test_binary_stl_whose_header_starts_with_solid(tmp_path):
 def test_uppercase_extension_and_pathlike(tmp_path):
     v, f = box_arrays()
     path = write_binary_stl(tmp_path / "B.STL", v, f)
-    rv, rf = read_mesh(pathlib.Path(path))
+    rv, rf, *_ = read_mesh(pathlib.Path(path))
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
 
 def test_ascii_stl_round_trip(tmp_path):
     v, f = sphere_arrays()
     path = write_ascii_stl(tmp_path / "s.stl", v, f)
-    rv, rf = read_mesh(str(path))
+    rv, rf, *_ = read_mesh(str(path))
     # repr() round-trips float64 exactly: the very same triangles, the same volume.
     assert rv.shape == v.shape and same_triangles(v, f, rv, rf)
     assert volume(rv, rf) == pytest.approx(volume(v, f), rel=1e-13)
@@ -121,7 +121,7 @@ def test_ascii_stl_upper_case_and_several_solids(tmp_path):
     two = write_ascii_stl(tmp_path / "b.stl", v, f[6:], name="second")
     both = tmp_path / "both.stl"
     both.write_bytes(one.read_bytes() + two.read_bytes())
-    rv, rf = read_mesh(both)
+    rv, rf, *_ = read_mesh(both)
     assert len(rf) == 12 and volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
 
@@ -132,7 +132,7 @@ def test_trimesh_exports_read_back(tmp_path):
     for name, kind in (("t_bin.stl", "stl"), ("t_asc.stl", "stl_ascii"), ("t.obj", "obj")):
         path = tmp_path / name
         m.export(path, file_type=kind)
-        rv, rf = read_mesh(path)
+        rv, rf, *_ = read_mesh(path)
         # binary STL holds float32 (1e-7 relative); the text formats hold ~8+ digits.
         assert volume(rv, rf) == pytest.approx(expected, rel=1e-6), name
 
@@ -146,7 +146,7 @@ def test_negative_zero_is_welded_to_zero(tmp_path):
     assert np.signbit(corners).any()
     vv = np.arange(len(corners)).reshape(-1, 3)
     path = write_binary_stl(tmp_path / "z.stl", corners, vv)
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rv) == 8  # -0.0 and 0.0 are one vertex, so the box is closed
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
@@ -289,7 +289,7 @@ f 2 3 7 6  # a trailing comment
 def test_obj_quads_and_every_index_form(tmp_path):
     path = tmp_path / "cube.obj"
     path.write_text(UNIT_CUBE_OBJ)
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rf) == 12  # 6 quads fanned into 2 triangles each
     p = mass_properties(rv, rf)
     # exact small numbers: volume 1, inertia diag 1/6 per unit mass
@@ -307,7 +307,7 @@ def test_obj_negative_indices_are_relative(tmp_path):
         lines.append("f -3 -2 -1")
     path = tmp_path / "rel.obj"
     path.write_text("\n".join(lines) + "\n")
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rv) == 8  # duplicated positions welded
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
@@ -326,7 +326,7 @@ def test_obj_polygon_fan(tmp_path):
         lines.append(f"f {i + 1} {j + 1} {n + j + 1} {n + i + 1}")
     path = tmp_path / "hex.obj"
     path.write_text("\n".join(lines) + "\n")
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rf) == 2 * (n - 2) + 2 * n
     # Regular hexagon of circumradius r: area 3√3 r²/2; cos/sin rounding: 1e-14.
     assert volume(rv, rf) == pytest.approx(3 * np.sqrt(3) / 2 * r * r * h, rel=1e-14)
@@ -410,7 +410,7 @@ def test_os_errors_become_mesh_file_errors(tmp_path, monkeypatch, exc, message):
         raise exc
 
     path = write_binary_stl(tmp_path / "p.stl", *box_arrays())
-    monkeypatch.setattr(meshfile, "open", failing_open, raising=False)
+    monkeypatch.setattr(meshfile, "_open_fd", failing_open)
     with pytest.raises(MeshFileError, match=rf"p\.stl: {message}"):
         read_mesh(path)
 
