@@ -17,11 +17,18 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["MeshError", "MeshProps", "check_mesh", "mass_properties", "weld_gaps", "VOLUME_RTOL"]
+__all__ = [
+    "MeshError", "MeshProps", "check_mesh", "mass_properties", "weld_gaps", "VOLUME_RTOL",
+    "WELD_MAX",
+]
 
 #: A mesh whose |volume| is at most this times (largest bounding-box side)^3 is
 #: "degenerate" (flat, or its parts cancel). Rounding leaves ~1e-16 of that cube.
 VOLUME_RTOL = 1e-10
+
+#: The weld tolerance may be at most this times the mesh's largest bounding-box side:
+#: a coarser "gap" is a feature, and welding it would fold the surface.
+WELD_MAX = 1e-3
 
 #: Triangles integrated per block: bounds the temporary memory to a few MB and keeps
 #: the working set in cache.
@@ -496,6 +503,12 @@ def _analyse(
     boundary, nonmanifold, misoriented = _edge_problems(f, len(v), ends)
     welded, gap, weld_note = 0, 0.0, ""
     if boundary and weld > 0.0:
+        if weld > WELD_MAX * size:
+            raise MeshError(
+                f"weld tolerance {_length(weld, unit)} is too large for a mesh of size "
+                f"{_length(size, unit)}: at most {WELD_MAX:g} of its size can be told from a "
+                "feature; give a smaller weld, or weld: exact"
+            )
         welded, gap, weld_note, counts = _weld_boundary(v, f, ends[0], weld, unit)
         if welded:
             boundary, nonmanifold, misoriented = counts
