@@ -317,7 +317,17 @@ def weld(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return _weld(np.asarray(points) + 0.0)  # canonical +0.0, a private contiguous copy
 
 
-_MIX = (np.uint64(0x9E3779B97F4A7C15), np.uint64(0xC2B2AE3D27D4EB4F), np.uint64(0x165667B19E3779F9))
+_MIX = (np.uint64(0xBF58476D1CE4E5B9), np.uint64(0x94D049BB133111EB))
+
+
+def _mix(z: np.ndarray) -> np.ndarray:
+    """splitmix64's finaliser, in place on a private uint64 array (wrapping arithmetic)."""
+    z ^= z >> np.uint64(30)
+    z *= _MIX[0]
+    z ^= z >> np.uint64(27)
+    z *= _MIX[1]
+    z ^= z >> np.uint64(31)
+    return z
 
 
 def _weld(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -327,11 +337,11 @@ def _weld(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     n = len(pts)
     bits = pts.view(np.uint32 if pts.dtype == np.float32 else np.uint64)
     with np.errstate(over="ignore"):
-        h = bits[:, 0] * _MIX[0]
-        h ^= bits[:, 1] * _MIX[1]
-        h ^= bits[:, 2] * _MIX[2]
-        h ^= h >> np.uint64(31)
-        h *= _MIX[0]
+        h = _mix(bits[:, 0].astype(np.uint64))
+        h ^= bits[:, 1]
+        h = _mix(h)
+        h ^= bits[:, 2]
+        h = _mix(h)
     ib = max(1, (n - 1).bit_length())
     low = np.uint64((1 << ib) - 1)
     h &= ~low
@@ -339,21 +349,26 @@ def _weld(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     h.sort()
     order = (h & low).astype(np.intp)
     h >>= np.uint64(ib)
-    s = bits[order]
     same_hash = h[1:] == h[:-1]
     del h
-    differ = (s[1:] != s[:-1]).any(axis=1)
+    flat = bits.reshape(-1)
+    at = order * 3
+    differ = np.zeros(n - 1, dtype=bool)
+    for k in range(3):  # one column at a time: three 1-D takes beat a (n, 3) row gather
+        col = flat.take(at + k) if k else flat.take(at)
+        differ |= col[1:] != col[:-1]
+    del col, at
     clash = same_hash & differ
     if clash.any():  # a hash collision: order those runs by their coordinates
         run = np.cumsum(np.concatenate(([True], ~same_hash)))
         bad_runs = np.unique(run[1:][clash])
         at = np.flatnonzero(np.isin(run, bad_runs))
-        sub = s[at]
+        sub = bits[order[at]]
         local = np.lexsort((sub[:, 2], sub[:, 1], sub[:, 0], run[at]))
         order[at] = order[at][local]
-        s[at] = sub[local]
+        s = bits[order]
         differ = (s[1:] != s[:-1]).any(axis=1)
-    del s
+        del s
     new = np.empty(n, dtype=bool)
     new[:1] = True
     new[1:] = differ
@@ -514,22 +529,42 @@ def _blank_solid_lines(text: bytes) -> tuple[bytes, bool]:
     return bytes(out), ended
 
 
+_KEYWORD_BYTES = {k: np.frombuffer(w, dtype=np.uint8) for k, w in _FACET_KEYWORDS.items()}
+
+
 def _facets_of(text: bytes) -> np.ndarray | None:
-    """(n, 9) corner coordinates of a block of whole facets, or None if not well formed."""
-    tokens = text.split()
-    n, extra = divmod(len(tokens), 21)
-    if extra or n == 0:
+    """(n, 9) corner coordinates of a block of whole facets, or None if not well formed.
+
+    Tokens are found with numpy (whitespace as ``bytes.split`` sees it); the keyword
+    tokens are compared byte by byte, column by column; the nine coordinate tokens of
+    each facet are gathered, each with the whitespace after it, and read by
+    ``np.fromstring``, which must find exactly one number in each.
+    """
+    a = np.frombuffer(text + b"\n", dtype=np.uint8)
+    ws = (a == 32) | ((a >= 9) & (a <= 13))  # ASCII whitespace, as bytes.split()
+    edge = ws[1:] != ws[:-1]
+    starts = np.flatnonzero(edge & ws[:-1]) + 1
+    if not ws[0]:
+        starts = np.concatenate(([0], starts))
+    ends = np.flatnonzero(edge & ~ws[:-1]) + 1  # one past each token (a whitespace byte)
+    del edge, ws
+    n, extra = divmod(starts.size, 21)
+    if extra or n == 0 or ends.size != starts.size:
         return None
-    for k, word in _FACET_KEYWORDS.items():
-        if tokens[k::21].count(word) != n:
+    starts = starts.reshape(n, 21)
+    ends = ends.reshape(n, 21)
+    for k, word in _KEYWORD_BYTES.items():
+        s = starts[:, k]
+        if not (ends[:, k] - s == word.size).all():
             return None
-    out = np.empty((n, 9))
-    try:
-        for j, k in enumerate(_FACET_COORDS):
-            out[:, j] = np.array(tokens[k::21], dtype=np.float64)  # as the line reader
-    except ValueError:
+        for i, ch in enumerate(word):
+            if not (a[s + i] == ch).all():
+                return None
+    # each coordinate token with the whitespace byte after it
+    values = _numbers(_ranges(a, starts[:, _FACET_COORDS].ravel(), ends[:, _FACET_COORDS].ravel() + 1))
+    if values is None or values.size != 9 * n or not np.isfinite(values).all():
         return None
-    return out
+    return values.reshape(n, 9)
 
 
 def _read_stl_ascii(name: str, data: bytes) -> np.ndarray:
@@ -649,20 +684,14 @@ def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     if per_line.min() < 3:
         return None
     if b"/" in ftext:
-        fa = fa.copy()
         slash = np.flatnonzero(fa == 47)
         owner = np.searchsorted(tok_at, slash, side="right") - 1
         firsts = slash[np.concatenate(([True], owner[1:] != owner[:-1]))]
         first_owner = np.searchsorted(tok_at, firsts, side="right") - 1
         # blank from the first '/' of each item to the item's end
         tok_end = np.flatnonzero(~space & np.append(space[1:], True)) + 1
-        mark = np.zeros(fa.size + 1, dtype=np.int8)
-        mark[firsts] += 1
-        mark[tok_end[first_owner]] -= 1
-        fa[np.cumsum(mark[:-1], dtype=np.int8).view(bool)] = 32
-        ftext = fa.tobytes()
-        if (fa[tok_at] == 32).any():  # an item that starts with '/': no index
-            return None
+        # keep all but each item's '/...' tail ('/2' alone leaves nothing: a count mismatch)
+        ftext = _ranges(fa, np.concatenate(([0], tok_end[first_owner])), np.append(firsts, fa.size))
     del space, fa
     idx = _numbers(ftext, np.int64)
     if idx is None or idx.size != tok_at.size:
@@ -691,16 +720,22 @@ def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     return points, tris
 
 
+def _ranges(a: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> bytes:
+    """The bytes ``a[lo[i]:hi[i]]`` joined, for sorted, disjoint ranges (run-length decoded)."""
+    edges = np.empty(2 * lo.size + 2, dtype=np.int64)
+    edges[0] = 0
+    edges[1:-1:2] = lo
+    edges[2:-1:2] = hi
+    edges[-1] = a.size
+    keep = np.repeat(np.tile(np.array([False, True]), lo.size + 1)[: edges.size - 1], np.diff(edges))
+    return a[keep].tobytes()
+
+
 def _gather(text: bytes, lo: np.ndarray, hi: np.ndarray) -> bytes:
     """The lines [lo, hi) of ``text`` (hi at a newline or the end), each with its newline."""
     if lo.size == 0:
         return b""
-    arr = np.frombuffer(text + b"\n", dtype=np.uint8)
-    mark = np.zeros(arr.size + 1, dtype=np.int8)
-    mark[lo] += 1  # lo are distinct, and so are hi: two assignments, no np.add.at
-    mark[hi + 1] -= 1
-    keep = np.cumsum(mark[:-1], dtype=np.int8).view(bool)
-    return arr[keep].tobytes()
+    return _ranges(np.frombuffer(text + b"\n", dtype=np.uint8), lo, hi + 1)
 
 
 def _read_obj_lines(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
