@@ -496,7 +496,11 @@ def test_fast_ascii_stl_reader_gives_the_line_readers_bits(tmp_path, monkeypatch
         assert np.array_equal(bits(fast), bits(slow)), path
 
 
-def test_fast_obj_reader_gives_the_line_readers_bits(tmp_path):
+@pytest.mark.parametrize("block", [1 << 24, 300])  # one block; many, cut between lines
+def test_fast_obj_reader_gives_the_line_readers_bits(tmp_path, monkeypatch, block):
+    import rbcli.io.meshfile as meshfile
+
+    monkeypatch.setattr(meshfile, "_CHUNK", block)
     v, f = sphere_arrays()
     v = v * np.random.default_rng(2).lognormal(0, 3, v.shape)
     lines = ["# made here", "o part", "mtllib x.mtl"]

@@ -635,9 +635,39 @@ def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     Accepts what :func:`_read_obj_lines` accepts when every ``v`` line holds exactly
     three numbers and every ``f`` item's index is a plain integer; returns None for
     anything else (and for any error), so that the line parser reads it or says where
-    it is wrong. Lines are classified by their first two bytes with numpy; the ``v``
-    and ``f`` lines are gathered and read by ``np.fromstring``.
+    it is wrong. The file is read in blocks of whole lines (about 16 MiB, so the
+    temporaries stay small); in each, lines are classified by their first two bytes
+    with numpy and the ``v`` and ``f`` lines are gathered and read by ``np.fromstring``.
     """
+    points, tris = [], []
+    nv = 0
+    pos = 0
+    while pos < len(text):
+        end = pos + _CHUNK
+        if end < len(text):  # cut after a newline that does not end a continued line
+            end = text.rfind(b"\n", pos, end)
+            while end > pos and (text[end - 1] == 92 or text[end - 2 : end] == b"\\\r"):
+                end = text.rfind(b"\n", pos, end)
+            if end <= pos:
+                return None
+            end += 1
+        got = _obj_block(text[pos:end], nv)
+        if got is None:
+            return None
+        points.append(got[0])
+        tris.append(got[1])
+        nv += len(got[0])
+        pos = end
+    if nv == 0 or sum(len(t) for t in tris) == 0:
+        return None
+    faces = np.concatenate(tris) if len(tris) > 1 else tris[0]
+    if faces.max() >= nv:  # an index past the last vertex: the line reader says where
+        return None
+    return (np.concatenate(points) if len(points) > 1 else points[0]), faces
+
+
+def _obj_block(text: bytes, nv0: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """Vertices and triangles of a block of whole OBJ lines after ``nv0`` vertices."""
     if b"\\" in text:
         text = _CONTINUATION.sub(b" ", text)
     if b"#" in text:
@@ -664,13 +694,13 @@ def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     is_f = (first == ord("f")) & blank2
     v_at = np.flatnonzero(is_v)
     f_at = np.flatnonzero(is_f)
-    if f_at.size == 0:
-        return None
     vtext = _gather(text, starts[v_at] + 1, ends[v_at])
-    points = _numbers(vtext)
+    points = _numbers(vtext) if v_at.size else np.empty(0)
     if points is None or points.size != 3 * v_at.size or not np.isfinite(points).all():
         return None
     points = points.reshape(-1, 3)
+    if f_at.size == 0:
+        return points, np.empty((0, 3), np.int64)
     ftext = _gather(text, starts[f_at] + 1, ends[f_at])
     del arr
     fa = np.frombuffer(ftext, dtype=np.uint8)
@@ -697,12 +727,11 @@ def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     if idx is None or idx.size != tok_at.size:
         return None
     del ftext, tok_at
-    nv = v_at.size
-    if (idx == 0).any() or (idx >= _BIG_INDEX).any() or (idx > nv).any():
+    if (idx == 0).any() or (idx >= _BIG_INDEX).any():
         return None
     neg = idx < 0
     if neg.any():
-        before = np.searchsorted(v_at, f_at)  # vertices defined before each f line
+        before = nv0 + np.searchsorted(v_at, f_at)  # vertices defined before each f line
         idx[neg] += np.repeat(before, per_line)[neg]
         if (idx[neg] < 0).any():
             return None
