@@ -43,6 +43,7 @@ def rollcheck(
     spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or e.g. '300 rpm'); speed = a x spin.", show_default=False),
     lean: str = typer.Option(None, "--lean", help="Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.", show_default=False),
     circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (m, or with units); 0 = spinning in place.", show_default=False),
+    symmetry_tol: str = c.SymmetryTolOpt,
     plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane. An existing figure is replaced (atomically); an input file never.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
@@ -59,7 +60,7 @@ def rollcheck(
     b = c.load_one(body, expr, e)
     opts = RollcheckOptions.parse(b, axle=axle, through=through, radius=radius,
                                   tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
-                                  lean=lean, circle=circle)
+                                  lean=lean, circle=circle, symmetry_tol=symmetry_tol)
     plot_path = c.check_plot(plot, b) if plot is not None else None
     res = run(b, opts)
     for w in res.warnings:
