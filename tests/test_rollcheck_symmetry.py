@@ -172,3 +172,16 @@ def test_bad_symmetry_tolerance(cli, value):
     assert e.value.param == "symmetry_tol" and str(e.value).startswith("--symmetry-tol")
     r = cli("rollcheck", "-e", RING, "--symmetry-tol", value)
     assert r.code == 2 and r.err == f"rbcli: {e.value}\n"
+
+
+def test_tilted_rim_part_still_found_as_the_rim(cli):
+    # a CAD wheel tilted 0.005° on its axle, with no rim_radius: the disk is still the rim
+    # (within --symmetry-tol), answered for the symmetrised wheel: v_c = sqrt(g a/3)
+    body = "{shape: disk, radius: 0.2, mass: 20, rotate: {axis: [0, 1, 0], angle: 0.005}}"
+    d = cli("rollcheck", "-e", body, "--json").json()
+    assert d["radius_source"] == "largest_round_part" and d["radius"] == 0.2
+    assert d["critical_speed"] == pytest.approx(math.sqrt(9.80665 * 0.2 / 3), rel=1e-6)
+    assert d["asymmetry"]["principal_axis_tilt"] == pytest.approx(math.radians(0.005), rel=1e-3)
+    # with the rounding tolerance it is neither a rim nor a body of revolution
+    r = cli("rollcheck", "-e", body, "--symmetry-tol", "0")
+    assert r.code == 2

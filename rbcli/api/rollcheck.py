@@ -222,7 +222,7 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
         best = _largest_round_part(body, n, P, mp, tol)
         a, part, kind = float(best.radius), best.name, "largest_round_part"
         source = f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)"
-    rim = rim_offset(body.parts, mp.com, n, P, a)
+    rim = rim_offset(body.parts, mp.com, n, P, a, tol=tol)
     warnings: list[str] = []
     if rim is not None and abs(rim.offset) > 1e-6 * a and rim.upright_equilibrium:
         warnings.append(
@@ -240,7 +240,7 @@ def _largest_round_part(body: Body, n, P, mp, tol) -> Part:
     from rbcli.errors import Location
 
     best = None
-    for p in rim_candidates(body.parts, n, P):
+    for p in rim_candidates(body.parts, n, P, tol):
         if best is None or p.radius > best.radius:
             best = p
     if best is None:
