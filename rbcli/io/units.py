@@ -764,6 +764,20 @@ def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     ValueError
         ``kind`` is not a known kind (a programming error).
     """
+    try:  # cached (issue 16): a batch of files repeats one `units:` block
+        items = tuple(base_units.items())
+        hash(items)
+    except TypeError:  # a value that is not a unit text: the uncached path says what is wrong
+        return _unit_for_kind(base_units, kind)
+    return _unit_for_kind_cached(items, kind)
+
+
+@lru_cache(maxsize=256)
+def _unit_for_kind_cached(items: tuple[tuple[str, str], ...], kind: str) -> tuple[float, str]:
+    return _unit_for_kind(dict(items), kind)
+
+
+def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     if kind == "angular_speed":
