@@ -406,3 +406,43 @@ def test_a_command_run_does_not_import_pydantic():
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
     assert p.returncode == 0, p.stderr
     assert p.stdout.strip().splitlines()[-1] == "[]"
+
+
+# ----------------------------------------------------------------------------- lazy commands (issue 16)
+
+def test_command_table_is_the_real_commands():
+    """rbcli.cli.app.COMMANDS (what `rbcli --help` lists without importing the command
+    modules) names every registered command, in its module, with its real one-line help."""
+    import typer.main
+    from typer._click.utils import make_default_short_help
+
+    from rbcli.cli.app import COMMANDS, command_tree
+
+    group = command_tree()
+    registered = {(i.name or typer.main.get_command_name(i.callback.__name__)): i.callback.__module__
+                  for i in app.registered_commands}
+    assert registered == {n: f"rbcli.cli.{m}" for n, (m, _) in COMMANDS.items()}
+    for name, (_, short) in COMMANDS.items():
+        cmd = group.commands[name]
+        for limit in (20, 45, 60, 80, 1000):
+            assert make_default_short_help(short, limit) == cmd.get_short_help_str(limit), name
+
+
+def test_a_run_imports_only_its_command(tmp_path):
+    """`rbcli --version`, `--help` and a command import no other command's module."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom rbcli.cli import main\n"
+            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
+            "print(sorted(m for m in sys.modules if m.startswith('rbcli.cli.')), file=sys.stderr)\n")
+    root = Path(__file__).resolve().parent.parent
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    for args, want in ((["--version"], ["rbcli.cli.app"]), (["--help"], ["rbcli.cli.app"]),
+                       (["inertia", "examples/cube.yaml", "--json"],
+                        ["rbcli.cli.app", "rbcli.cli.common", "rbcli.cli.massprops"])):
+        p = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
+                           cwd=root, env=env, timeout=120)
+        assert p.returncode == 0, p.stderr
+        assert p.stderr.strip().splitlines()[-1] == str(want), args

@@ -43,13 +43,7 @@ DigitsOpt = typer.Option(6, "--digits", min=1, max=17, help=DIGITS_HELP)
 UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 
 
-def debug() -> bool:
-    """Tracebacks for internal errors: the root ``--debug`` or ``RBCLI_DEBUG=1``."""
-    import os
-
-    from rbcli.cli.app import STATE
-
-    return bool(STATE["debug"]) or os.environ.get("RBCLI_DEBUG", "").strip() not in ("", "0")
+from rbcli.cli.app import debug  # noqa: E402,F401  (lives in app: main() needs it first)
 
 
 def env():
