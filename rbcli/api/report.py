@@ -45,7 +45,7 @@ FORMATS = (".html", ".md")
 
 #: the report's options in the order the header lists them (Python name -> option)
 _OPTIONS = ("shaft", "through", "planes", "radius", "bearings", "grade", "speed", "omega", "pivot",
-            "spin", "theta", "theta_dot", "phi_dot", "rim_radius", "tyre_radius", "g")
+            "spin", "theta", "theta_dot", "phi_dot", "rim_radius", "tyre_radius", "g", "symmetry_tol")
 
 #: stand-ins for a missing --spin or --theta, so that the one given is still checked by
 #: TopOptions.parse (the heavy-top section is then left out, saying what is missing)
@@ -159,7 +159,7 @@ class ReportOptions:
     def parse(cls, body: Body, *, shaft=None, through=None, planes=None, radius=None,
               bearings=None, grade=None, speed=None, omega=None, pivot=None, spin=None,
               theta=None, theta_dot=None, phi_dot=None, rim_radius=None, tyre_radius=None,
-              g=None, digits=6, units=None) -> ReportOptions:
+              g=None, symmetry_tol=None, digits=6, units=None) -> ReportOptions:
         """Read the keyword arguments of :func:`report` (see there) for ``body``.
 
         Raises
@@ -177,7 +177,7 @@ class ReportOptions:
         kw = dict(shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
                   grade=grade, speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta,
                   theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
-                  tyre_radius=tyre_radius, g=g)
+                  tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol)
         given = tuple((f"--{k.replace('_', '-')}", _text(kw[k])) for k in _OPTIONS if kw[k] is not None)
         if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 17:
             raise ParamError("digits", f"must be a whole number from 1 to 17, got {digits!r}")
@@ -216,7 +216,7 @@ class ReportOptions:
         t_opts = TopOptions.parse(
             body, pivot=pivot, spin=_TOP_STAND_INS["spin"] if spin is None else spin,
             theta=_TOP_STAND_INS["theta"] if theta is None else theta, theta_dot=theta_dot,
-            phi_dot=phi_dot, g=g)
+            phi_dot=phi_dot, g=g, symmetry_tol=symmetry_tol)
         t_skip = None
         if pivot is None and body.pivot is None:
             t_skip = "heavy top: no pivot in the body file and no --pivot option"
@@ -229,7 +229,7 @@ class ReportOptions:
         # rolling stability
         r_opts, r_err = _section_parse(lambda: RollcheckOptions.parse(
             body, axle=axle, through=through, radius=rim, tyre_radius=tyre_radius, g=g,
-            speed=roll_speed, spin=rotor_speed))
+            speed=roll_speed, spin=rotor_speed, symmetry_tol=symmetry_tol))
         r_skip = None
         if rim is None and body.rim_radius is None and not round_parts(body):
             r_opts, r_err = None, None
@@ -386,11 +386,11 @@ def _principal(ctx: _Ctx) -> Section:
     r.principal_doc(doc, b, pr, ctx.du, ctx.digits, "the com", parts=False)
     s = _section("principal-axes", "Principal axes")
     s.add_doc(doc, drop_heading_prefix=b.name)
-    fig = body_figure(b, ctx.mp.com, pr, ctx.du, f"principal: {b.name} — equivalent ellipsoid, box and principal axes")
-    _figure(s, "body", fig,
-            "The equivalent uniform ellipsoid (filled) and box (dashed) — same mass and principal "
-            "moments about the centre of mass — and the principal axes 1, 2, 3 (ascending moments), in the "
-            "body frame: a 3-D view and three views along the body axes at one scale.")
+    from rbcli.render.bodyplot import CAPTION
+
+    fig = body_figure(b, ctx.mp.com, pr, ctx.du,
+                      f"principal: {b.name} — the body as built, centre of mass and principal axes")
+    _figure(s, "body", fig, CAPTION)
     return s
 
 
@@ -423,6 +423,12 @@ def _balance(ctx: _Ctx) -> Section:
     if not (bo.planes or bo.speed or bo.bearings):
         s.items.append(_note("(corrections, bearing forces and the ISO grade need --planes, --speed with "
                              "a rotation unit, --bearings and --grade)"))
+    from rbcli.render import balanceplot
+
+    _figure(s, "balance", balanceplot.plot(res.diagram(), su),
+            "The polar (vector) diagram, as `rbcli balance --plot` draws it: the unbalance per plane "
+            "and, with --planes, the corrections and the residual, as arrows on the rotor's dial "
+            "(angles as the tables count them).")
     return s
 
 
@@ -615,7 +621,7 @@ def write(result: ReportResult, path: Any, fmt: str, files_dir: Any, *, force: b
 def report(body: Body, path: Any = None, *, force: bool = False, shaft=None, through=None,
            planes=None, radius=None, bearings=None, grade=None, speed=None, omega=None,
            pivot=None, spin=None, theta=None, theta_dot=None, phi_dot=None, rim_radius=None,
-           tyre_radius=None, g=None, digits: int = 6, units: str | None = None,
+           tyre_radius=None, g=None, symmetry_tol=None, digits: int = 6, units: str | None = None,
            format: str | None = None) -> str | ReportResult:  # noqa: A002 - the CLI's word
     """One document with every answer that applies to the body, its tables and figures.
 
@@ -651,6 +657,8 @@ def report(body: Body, path: Any = None, *, force: bool = False, shaft=None, thr
     rim_radius : m — rolling: rim radius (default: the body's, else the largest round part)
     tyre_radius : m — rolling: tube radius of a rounded rim (default 0)
     g : m/s² — gravity for the top, rolling and static bearing loads (default 9.80665)
+    symmetry_tol : relative (0.01) or "1 %" — heavy top and rolling: how far the two moments
+        across the axis may differ (answered for the symmetrised body, with a warning)
     digits : int — significant figures in the tables, 1 to 17
     units : str — units of the tables, e.g. "mm,g" (default SI)
     format : "html" or "md" — without ``path`` (default "html"); with ``path`` it must
@@ -694,7 +702,7 @@ def report(body: Body, path: Any = None, *, force: bool = False, shaft=None, thr
         body, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
         grade=grade, speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta,
         theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius,
-        g=g, digits=digits, units=units)
+        g=g, symmetry_tol=symmetry_tol, digits=digits, units=units)
     result = run(body, options)
     if checked is not None:
         write(result, checked[1], checked[0], checked[2], force=force)

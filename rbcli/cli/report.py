@@ -45,6 +45,7 @@ def report(
     phi_dot: str = typer.Option(None, "--phi-dot", help="Heavy top: start precession rate phi' (rad/s, or with units). Default: 0.", show_default=False),
     rim_radius: str = typer.Option(None, "--rim-radius", help="Rolling: rim radius (m, or with units). Default: the body's rim_radius, else the largest round part coaxial with the axle.", show_default=False),
     tyre_radius: str = typer.Option(None, "--tyre-radius", help="Rolling: tube radius of a rounded rim (m, or with units). Default: 0, a knife edge.", show_default=False),
+    symmetry_tol: str = c.SymmetryTolOpt,
     g: str = typer.Option(None, "--g", help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units). Default: 9.80665 m/s^2.", show_default=False),
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
@@ -63,7 +64,8 @@ def report(
     opts = api.ReportOptions.parse(
         b, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings, grade=grade,
         speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-        phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g, digits=digits, units=units,
+        phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol,
+        digits=digits, units=units,
     )
     progress = _Progress(t0)
     try:
