@@ -2,17 +2,26 @@
 
 Usage::
 
-    .venv/bin/python bench/mesh_vs_trimesh.py [STL_PATH] [--repeat 3]
+    bench/.venv/bin/python bench/mesh_vs_trimesh.py [STL_PATH] [--repeat 3]
+    bench/.venv/bin/python bench/mesh_vs_trimesh.py --growth [--formats stl,ascii,obj]
+        [--subdivisions 5,6,7,8] [--repeat 3] [--json OUT]
 
 STL_PATH defaults to /tmp/rbcli_bench_ico8.stl; if missing it is created as a
 binary STL of ``trimesh.creation.icosphere(subdivisions=8)`` (1 310 720 triangles).
 
-Timing: in one process, alternating (a) ``read_mesh`` + ``mass_properties`` and
-(b) ``trimesh.load`` + ``mesh.mass_properties``, REPEAT times each; medians and their
-ratio. Memory: each side again in its own fresh process, peak resident set size
-(``VmHWM`` from /proc/self/status) and the part of it above the RSS after the
-imports (the cost of the work itself). The target is a time ratio <= 0.5 and no
-more peak memory.
+Default mode (what ``bench/run`` calls): in one process, alternating (a)
+``read_mesh`` + ``mass_properties`` and (b) ``trimesh.load`` + ``mesh.mass_properties``,
+REPEAT times each; medians and their ratio. Memory: each side again in its own fresh
+process, peak resident set size (``VmHWM`` from /proc/self/status) and the part of it
+above the RSS after the imports (the cost of the work itself). The target is a time
+ratio <= 0.5 and no more than half trimesh's peak memory.
+
+``--growth``: every format (binary STL, ASCII STL, OBJ: trimesh's own exports of the
+same icosphere, in bench/data/) at every size (icosphere subdivisions 5-8: 20 480 to
+1 310 720 triangles; 9 gives 5.2 M and takes minutes), each run in a fresh process,
+rbcli and trimesh alternating, REPEAT times; the medians of the children's CPU time
+(user + system: hardly disturbed by other jobs on a shared machine) and of their peak
+memory, and the ratios. Prints a Markdown table (and writes JSON with ``--json``).
 """
 
 from __future__ import annotations
@@ -24,8 +33,13 @@ import statistics
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 DEFAULT = "/tmp/rbcli_bench_ico8.stl"
+DATA = Path(__file__).resolve().parent / "data"
+SUFFIX = {"stl": ".stl", "ascii": "_ascii.stl", "obj": ".obj"}
+EXPORT = {"stl": "stl", "ascii": "stl_ascii", "obj": "obj"}
+NAMES = {"stl": "binary STL", "ascii": "ASCII STL", "obj": "OBJ"}
 
 
 def _status_kb(field: str) -> int:
@@ -41,8 +55,8 @@ def run_ours(path: str) -> dict:
     from rbcli.core.mesh import mass_properties
     from rbcli.io.meshfile import read_mesh
 
-    v, f = read_mesh(path)
-    p = mass_properties(v, f)
+    v, f, _fmt, weld = read_mesh(path)
+    p = mass_properties(v, f, weld=weld)
     return {"volume": p.volume, "inertia_zz": float(p.unit_inertia[2, 2] * p.volume)}
 
 
@@ -54,11 +68,12 @@ def run_trimesh(path: str) -> dict:
     return {"volume": float(mp["volume"]), "inertia_zz": float(mp["inertia"][2, 2])}
 
 
-def make(path: str) -> None:
+def make(path: str, subdivisions: int = 8, kind: str = "stl") -> None:
     import trimesh
 
-    print(f"creating {path} (icosphere, 8 subdivisions)...", file=sys.stderr)
-    trimesh.creation.icosphere(subdivisions=8).export(path)
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    print(f"creating {path} (icosphere, {subdivisions} subdivisions, {kind})...", file=sys.stderr)
+    trimesh.creation.icosphere(subdivisions=subdivisions).export(path, file_type=EXPORT[kind])
 
 
 def memory_child(which: str, path: str) -> None:
@@ -70,21 +85,82 @@ def memory_child(which: str, path: str) -> None:
     else:
         import trimesh  # noqa: F401
     after_import = _status_kb("VmRSS")
+    t0 = time.process_time()
+    w0 = time.perf_counter()
     result = (run_ours if which == "ours" else run_trimesh)(path)
+    cpu = time.process_time() - t0
+    wall = time.perf_counter() - w0
     # VmHWM, not ru_maxrss: Linux keeps ru_maxrss across fork+exec, so a child would
     # report the parent's peak; VmHWM belongs to this process image alone.
     peak = _status_kb("VmHWM")
-    print(json.dumps({"peak_kb": peak, "after_import_kb": after_import, **result}))
+    print(json.dumps({"peak_kb": peak, "after_import_kb": after_import, "cpu_s": cpu,
+                      "wall_s": wall, **result}))
+
+
+def child(which: str, path: str) -> dict:
+    out = subprocess.run(
+        [sys.executable, __file__, path, "--memory-child", which],
+        check=True, capture_output=True, text=True,
+    ).stdout
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def growth(args) -> None:
+    formats = [f.strip() for f in args.formats.split(",") if f.strip()]
+    subs = [int(s) for s in args.subdivisions.split(",")]
+    rows = []
+    for s in subs:
+        for kind in formats:
+            path = DATA / f"ico{s}{SUFFIX[kind]}"
+            if not path.exists():
+                make(str(path), s, kind)
+            runs: dict[str, list[dict]] = {"ours": [], "trimesh": []}
+            for _ in range(args.repeat):
+                for who in ("ours", "trimesh"):
+                    runs[who].append(child(who, str(path)))
+            med = {w: {k: statistics.median(r[k] for r in runs[w]) for k in ("cpu_s", "wall_s", "peak_kb")}
+                   for w in runs}
+            vol = {w: runs[w][0]["volume"] for w in runs}
+            row = {
+                "format": kind, "subdivisions": s, "triangles": 20 * 4**s,
+                "file_mb": round(path.stat().st_size / 1e6, 1),
+                "ours_cpu_s": round(med["ours"]["cpu_s"], 3), "trimesh_cpu_s": round(med["trimesh"]["cpu_s"], 3),
+                "ours_peak_mib": round(med["ours"]["peak_kb"] / 1024, 1),
+                "trimesh_peak_mib": round(med["trimesh"]["peak_kb"] / 1024, 1),
+                "time_ratio": round(med["ours"]["cpu_s"] / med["trimesh"]["cpu_s"], 3),
+                "wall_ratio": round(med["ours"]["wall_s"] / med["trimesh"]["wall_s"], 3),
+                "memory_ratio": round(med["ours"]["peak_kb"] / med["trimesh"]["peak_kb"], 3),
+                "volume_rel_diff": abs(vol["ours"] - vol["trimesh"]) / abs(vol["trimesh"]),
+            }
+            rows.append(row)
+            print(json.dumps(row), file=sys.stderr, flush=True)
+    print("| format | triangles | file | rbcli CPU | trimesh CPU | **time ratio** (wall) | rbcli peak | "
+          "trimesh peak | **memory ratio** | volumes agree to |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {NAMES[r['format']]} | {r['triangles']:,} | {r['file_mb']} MB | {r['ours_cpu_s']:.3f} s | "
+              f"{r['trimesh_cpu_s']:.3f} s | **{r['time_ratio']:.2f}** ({r['wall_ratio']:.2f}) | "
+              f"{r['ours_peak_mib']:.0f} MiB | {r['trimesh_peak_mib']:.0f} MiB | **{r['memory_ratio']:.2f}** | "
+              f"{r['volume_rel_diff']:.0e} |")
+    if args.json:
+        Path(args.json).write_text(json.dumps({"growth": rows}, indent=2) + "\n")
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("path", nargs="?", default=DEFAULT)
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--growth", action="store_true", help="the growth table over formats and sizes")
+    ap.add_argument("--formats", default="stl,ascii,obj", help="for --growth: stl, ascii, obj")
+    ap.add_argument("--subdivisions", default="5,6,7,8", help="for --growth: icosphere subdivisions")
+    ap.add_argument("--json", help="for --growth: write the rows here")
     ap.add_argument("--memory-child", choices=["ours", "trimesh"], help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.memory_child:
         memory_child(args.memory_child, args.path)
+        return
+    if args.growth:
+        growth(args)
         return
     if not os.path.exists(args.path):
         make(args.path)
@@ -107,15 +183,7 @@ def main() -> None:
         print(f"  {k:8s} median {med[k]:.3f} s   runs [{runs}]   volume {results[k]['volume']!r}")
     print(f"  time ratio ours/trimesh: {med['ours'] / med['trimesh']:.3f}  (target <= 0.5)")
 
-    mem = {}
-    for which in ("ours", "trimesh"):
-        out = subprocess.run(
-            [sys.executable, __file__, args.path, "--memory-child", which],
-            check=True,
-            capture_output=True,
-            text=True,
-        ).stdout
-        mem[which] = json.loads(out.strip().splitlines()[-1])
+    mem = {which: child(which, args.path) for which in ("ours", "trimesh")}
     for k in ("ours", "trimesh"):
         m = mem[k]
         print(

@@ -603,3 +603,72 @@ def test_what_the_mesh_check_tolerates_is_said_on_stderr(tmp_path, capsys):
     assert code == 0 and json.loads(out)["mass"] == pytest.approx(RHO * A * B * C, rel=1e-14)
     assert err == (f"rbcli: {f}:5:11: warning: part 'housing' (mesh): {tmp_path / 'extra.obj'}: "
                    "dropped 1 degenerate triangle (a repeated vertex)\n")
+
+
+# ------------------------------------------------------------- welding, file checks
+
+
+def noisy_soup(V, F, delta):
+    """Triangle corners of their own, every other copy moved by ``delta`` along x."""
+    c = np.asarray(V, dtype=float)[np.asarray(F)].reshape(-1, 3).copy()
+    c[::2, 0] += delta
+    return c, np.arange(len(c)).reshape(-1, 3)
+
+
+def test_a_noisy_cad_mesh_is_welded_with_one_located_warning(tmp_path, cli):
+    V, F, _ = box_mesh(A, B, C)
+    ulp = float(np.spacing(np.float32(A / 2)))  # one float32 step at the box's size
+    write_stl_binary(tmp_path / "n.stl", *noisy_soup(V, F, ulp))
+    f = body_file(tmp_path, mesh_part("n.stl", f"density: {RHO}"))
+    r = cli("inertia", f, "--json")
+    assert r.code == 0 and r.json()["mass"] == pytest.approx(RHO * A * B * C, rel=1e-6)
+    (line,) = r.err.splitlines()
+    assert line.startswith(f"rbcli: {f}:5:11: warning: part 'housing' (mesh): {tmp_path / 'n.stl'}: welded ")
+    assert f"largest gap closed {ulp:.3g} m" in line
+    f2 = body_file(tmp_path, mesh_part("n.stl", f"density: {RHO}\nweld: exact"), name="exact.yaml")
+    r = cli("inertia", f2)
+    assert r.code == 2 and "not closed" in r.err and "allow_open: true accepts" in r.err
+
+
+def test_weld_sets_the_tolerance_per_part(tmp_path, cli):
+    V, F, _ = box_mesh(A, B, C)
+    write_obj(tmp_path / "gap.obj", *noisy_soup(V, F, 1e-4 * A))  # 0.05 mm gaps
+    f = body_file(tmp_path, mesh_part("gap.obj", f"density: {RHO}"))
+    r = cli("inertia", f)
+    assert r.code == 2 and "not closed" in r.err and "(after welding vertices closer than" in r.err
+    f = body_file(tmp_path, mesh_part("gap.obj", f"density: {RHO}\nweld: 0.1 mm"), name="w.yaml")
+    r = cli("inertia", f, "--json")
+    assert r.code == 0 and r.json()["mass"] == pytest.approx(RHO * A * B * C, rel=1e-3)
+    assert "weld tolerance 0.0001 m (largest gap closed 5e-05 m)" in r.err
+    for bad, message in (("weld: -1 mm", "must be zero or positive"), ("weld: exactly", "weld"),
+                         ("weld: 1 kg", "weld")):
+        f = body_file(tmp_path, mesh_part("gap.obj", f"density: {RHO}\n{bad}"), name="b.yaml")
+        r = cli("inertia", f)
+        assert r.code == 2 and r.err.startswith(f"rbcli: {f}:") and message in r.err, bad
+        assert len(r.err.splitlines()) == 1
+
+
+def test_mesh_files_that_are_not_regular_files_or_names_with_nul(tmp_path, cli, cli_proc):
+    os.mkfifo(tmp_path / "pipe.stl")
+    f = body_file(tmp_path, mesh_part("pipe.stl"))
+    r = cli_proc("inertia", f)  # a real process: it must not hang on the FIFO
+    assert r.code == 2 and "is a FIFO (named pipe), not a regular file" in r.err
+    f = body_file(tmp_path, mesh_part('"a\\0b.stl"'), name="nul.yaml")
+    r = cli("inertia", f)
+    assert r.code == 2 and r.err == f"rbcli: {f}:5:11: file: a file name cannot contain a NUL character\n"
+
+
+def test_a_huge_obj_face_index_through_the_command_line(tmp_path, cli):
+    (tmp_path / "big.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 " + "1" + "0" * 23 + "\n")
+    f = body_file(tmp_path, mesh_part("big.obj"))
+    r = cli("inertia", f)
+    assert r.code == 2 and f"big.obj:4: face index {10**23} is out of range" in r.err
+
+
+def test_a_mesh_over_the_size_limit_is_refused(tmp_path, cli):
+    V, F, _ = box_mesh(A, B, C)
+    write_stl_binary(tmp_path / "box.stl", V, F)
+    f = body_file(tmp_path, mesh_part("box.stl"))
+    r = cli("inertia", f, env={"RBCLI_MAX_MESH_BYTES": "100"})
+    assert r.code == 2 and "over the mesh size limit of 100 bytes" in r.err
+    assert cli("inertia", f, env={"RBCLI_MAX_MESH_BYTES": "1M"}).code == 0

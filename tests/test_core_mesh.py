@@ -451,7 +451,8 @@ def test_to_json_is_plain_python():
     v, f = box_mesh(1.0, 2.0, 3.0)
     js = mass_properties(v, f[:, ::-1]).to_json()
     assert set(js) == {
-        "volume", "area", "centroid", "unit_inertia", "n_triangles", "flipped", "warnings"
+        "volume", "area", "centroid", "unit_inertia", "n_triangles", "flipped", "warnings",
+        "welded", "gap",
     }  # fmt: skip
     assert type(js["volume"]) is float and type(js["area"]) is float
     assert all(type(x) is float for x in js["centroid"])
@@ -468,3 +469,178 @@ def test_large_mesh_is_vectorised_and_chunked():
     # Rounding only (see test_agrees_with_trimesh), ~eps x log2(F): 1e-12.
     assert p.volume == pytest.approx(vol, rel=1e-12)
     assert rel(p.unit_inertia, inertia) < 1e-12
+
+
+# ----------------------------------------------------------- welding with a tolerance
+# CAD exports write each triangle's corners on their own, with noise: a shared corner may
+# read 0.0 in one triangle and -3.79e-33 in the next, or differ in the last float32 bit.
+# The core welds (for closedness only) the ends of boundary edges closer than `weld`.
+
+
+def soup(v, f):
+    """Each triangle with corners of its own: (corners (3F, 3), faces (F, 3))."""
+    c = np.asarray(v, dtype=float)[np.asarray(f)].reshape(-1, 3).copy()
+    return c, np.arange(len(c)).reshape(-1, 3)
+
+
+def exact_weld(c, faces):
+    """Merge bit-identical corners (what the file readers do): an indexed mesh."""
+    from rbcli.io.meshfile import weld
+
+    u, inv = weld(c)
+    return u, inv[faces]
+
+
+def noisy_box(delta, every=2, size=(1.0, 2.0, 3.0)):
+    """A box with a corner at the origin whose corner copies are moved by ``delta`` (x)."""
+    v, f = box_mesh(*size)
+    c, faces = soup(v, f)
+    c[::every, 0] += delta
+    return exact_weld(c, faces)
+
+
+F32_ULP_AT_3 = float(np.spacing(np.float32(3.0)))  # the float32 spacing at the box's size
+TOL32 = 4 * F32_ULP_AT_3  # what rbcli.io.meshfile.default_weld gives a binary STL of it
+TOLTEXT = 1e-9 * math.sqrt(14.0)  # ... and a text file: 1e-9 of the diagonal
+
+
+@pytest.mark.parametrize("tol", [TOL32, TOLTEXT])
+def test_a_box_off_by_1e_33_is_closed(tol):
+    v, f = noisy_box(-3.79e-33)  # 0.0 next to -3.79e-33, as in the CAD files of issue 14
+    assert len(v) > 8  # the exact weld leaves it open ...
+    with pytest.raises(MeshError, match="not closed"):
+        mass_properties(v, f)
+    p = mass_properties(v, f, weld=tol, unit="m")  # ... the tolerance closes it
+    assert p.volume == pytest.approx(6.0, rel=1e-15) and p.welded > 0
+    assert p.gap == pytest.approx(3.79e-33, rel=1e-12)
+    (w,) = p.warnings
+    assert w.startswith("welded ") and "largest gap closed 3.79e-33 m" in w
+
+
+def test_a_box_off_by_one_float32_ulp_is_closed_at_the_binary_stl_tolerance():
+    v, f = noisy_box(F32_ULP_AT_3, size=(1.0, 2.0, 3.0))
+    with pytest.raises(MeshError, match="not closed"):
+        mass_properties(v, f, weld=TOLTEXT)  # a text file's tolerance is far finer
+    p = mass_properties(v, f, weld=TOL32)
+    assert p.gap == F32_ULP_AT_3 and p.volume == pytest.approx(6.0, rel=1e-6)
+
+
+@pytest.mark.parametrize("tol", [TOL32, TOLTEXT])
+def test_a_box_off_by_1e_4_of_its_size_stays_open(tol):
+    v, f = noisy_box(3e-4)
+    with pytest.raises(MeshError, match=r"not closed: \d+ boundary edges .*after welding") as info:
+        mass_properties(v, f, weld=tol, unit="m")
+    assert info.value.boundary > 0
+    p = mass_properties(v, f, weld=tol, allow_open=True)  # allow_open still lets it through
+    assert any("open" in w for w in p.warnings)
+
+
+def test_welding_never_changes_the_integrals():
+    v, f = lumpy_mesh()
+    c, faces = soup(v, f)
+    rng = np.random.default_rng(5)
+    c *= 1 + 1e-12 * rng.standard_normal(c.shape)  # every corner copy jittered
+    u, g = exact_weld(c, faces)
+    welded = mass_properties(u, g, weld=1e-9)
+    as_given = mass_properties(u, g, allow_open=True)  # the same triangles, not welded
+    assert welded.volume == as_given.volume and welded.area == as_given.area
+    assert np.array_equal(welded.centroid, as_given.centroid)
+    assert np.array_equal(welded.unit_inertia, as_given.unit_inertia)
+    assert welded.welded == len(u) - len(v)  # every copy merged back onto one vertex
+
+
+@pytest.mark.parametrize(
+    ("noise", "agree"),
+    # A soup whose copies of a corner differ is closed only up to those gaps: its volume
+    # depends on the reference point (trimesh integrates about the origin, rbcli about
+    # the box centre) by about gap x size x perimeter, so the agreement follows the noise.
+    [("negative zero", 1e-13), ("denormal", 1e-13), ("tiny", 1e-13),
+     ("jitter 1e-12", 1e-10), ("float32 round", 1e-5)],
+)
+def test_cad_style_noise_gives_trimesh_mass_properties(noise, agree):
+    v, f = lumpy_mesh()
+    v = v - v.min(axis=0)  # coordinates that are exactly 0.0 on three faces of the box
+    v[np.abs(v) < 0.2] = 0.0  # ... and many of them
+    c, faces = soup(v, f)
+    rng = np.random.default_rng(11)
+    pick = rng.random(len(c)) < 0.5
+    zero = (c == 0.0) & pick[:, None]
+    if noise == "negative zero":
+        c[zero] = -0.0
+    elif noise == "denormal":
+        c[zero] = 5e-324 * rng.integers(1, 1000, zero.sum())
+    elif noise == "tiny":
+        c[zero] = rng.choice([-3.79e-33, 2.1e-40, -1e-300], zero.sum())
+    elif noise == "jitter 1e-12":
+        c[pick] *= 1 + 1e-12 * rng.uniform(-1, 1, (pick.sum(), 3))
+    else:  # float32 rounding one way or the other, as two exporters would
+        c[pick] = np.nextafter(c[pick].astype(np.float32), np.float32(np.inf)).astype(float)
+    u, g = exact_weld(c, faces)
+    tol = 4 * float(np.spacing(np.float32(np.abs(c).max())))
+    p = mass_properties(u, g, weld=tol)
+    vol, com, unit = trimesh_props(c, faces)  # trimesh integrates the soup as it is
+    assert (p.welded > 0) == (noise != "negative zero")  # -0.0 == 0.0: the exact weld
+    assert p.volume == pytest.approx(vol, rel=agree)
+    assert rel(p.centroid, com) < 10 * agree
+    assert rel(p.unit_inertia, unit) < 10 * agree
+
+
+def test_weld_groups_are_order_independent_and_chains_stay_apart():
+    from rbcli.core.mesh import weld_gaps
+
+    t = 1e-6
+    pts = np.array(
+        [
+            [0, 0, 0], [0.5e-6, 0, 0],  # a pair within t: merged
+            [5, 5, 5], [5 + 0.6e-6, 5, 5], [5 + 1.2e-6, 5, 5],  # a chain over 1.2 t: apart
+            [9, 9, 9], [9, 9, 9 + 2e-6],  # too far: apart
+        ],
+        dtype=float,
+    )  # fmt: skip
+    label, gap, chained = weld_gaps(pts, t)
+    assert list(label) == [0, 0, 2, 3, 4, 5, 6] and gap == 0.5e-6 and chained == 1
+    rng = np.random.default_rng(2)
+    for _ in range(5):
+        perm = rng.permutation(len(pts))
+        lab, g, ch = weld_gaps(pts[perm], t)
+        groups = {frozenset(perm[lab == k]) for k in np.unique(lab)}
+        assert groups == {frozenset(x) for x in ({0, 1}, {2}, {3}, {4}, {5}, {6})}
+        assert (g, ch) == (gap, chained)
+
+
+def test_pairs_across_cell_borders_are_found():
+    from rbcli.core.mesh import weld_gaps
+
+    t = 1e-3
+    rng = np.random.default_rng(4)
+    a = rng.uniform(-1, 1, (300, 3))
+    b = a + rng.uniform(-t, t, a.shape) * 0.999  # each within t of its partner
+    label, gap, chained = weld_gaps(np.vstack([a, b]), t)
+    assert chained == 0 and np.array_equal(label[:300], label[300:])
+    assert gap <= t
+
+
+def test_a_sliver_thinner_than_the_tolerance_is_left_out_of_the_edge_check():
+    v, f = box_mesh(1.0, 1.0, 1.0)
+    # The top triangle (4, 5, 6) is cut along 8-6, with 8 a hair from corner 4: a needle
+    # (4, 8, 6) and (8, 5, 6). Exactly, edges 4-5, 5-8 and 8-4 are open; welded, 8 is 4,
+    # the needle has no edges of its own and (8, 5, 6) is (4, 5, 6) again.
+    v = np.vstack([v, v[4] + [1e-12, 0, 0]])
+    f = [list(t) for t in f if list(t) != [4, 5, 6]] + [[8, 5, 6], [4, 8, 6]]
+    with pytest.raises(MeshError, match="not closed: 3 boundary edges"):
+        mass_properties(v, np.array(f))
+    p = mass_properties(v, np.array(f), weld=1e-9, unit="m")
+    assert p.volume == pytest.approx(1.0, rel=1e-11) and p.welded == 1
+    (w,) = p.warnings
+    assert "1 triangle narrower than the tolerance left out of the closedness check" in w
+
+
+def test_a_tolerance_far_too_large_is_refused():
+    v, f = noisy_box(1e-3)
+    with pytest.raises(MeshError, match=r"weld tolerance 10 m is too large for a mesh of size 3 m"):
+        mass_properties(v, f, weld=10.0, unit="m")  # it would fold the box into a point
+    from rbcli.core.mesh import weld_gaps
+
+    crowd = np.random.default_rng(1).uniform(0, 1e-6, (100, 3))
+    with pytest.raises(MeshError, match="far too large for this mesh: more than 64"):
+        weld_gaps(crowd, 1e-6)

@@ -135,24 +135,32 @@ def test_every_example_loads_and_says_what_to_run(path):
     assert re.search(r"^#\s+rbcli \w+", path.read_text(), re.M), "the header names the command to run"
 
 
-def _header_commands() -> list[tuple[str, list[str]]]:
+def _header_commands() -> list[tuple[str, list[str], bool]]:
+    """(example, args, refused): every `# rbcli ...` line of every example's header; refused
+    when the line after it says the command is refused (exit 2)."""
     out = []
     for p in EXAMPLES:
-        for line in p.read_text().splitlines():
+        lines = p.read_text().splitlines()
+        for i, line in enumerate(lines):
             m = re.match(r"#\s+(rbcli .*)", line)
             if not m:
                 continue
             cmd = re.split(r"\s{2,}|\s+\||\s+->", m.group(1))[0]  # drop the claim and any | jq ...
-            out.append((p.stem, shlex.split(cmd)[1:]))
+            after = lines[i + 1] if i + 1 < len(lines) else ""
+            out.append((p.stem, shlex.split(cmd)[1:], "refused (exit 2)" in after))
     return out
 
 
 HEADER_COMMANDS = _header_commands()
 
 
-@pytest.mark.parametrize("stem, args", HEADER_COMMANDS, ids=[f"{s}: {' '.join(a)}" for s, a in HEADER_COMMANDS])
-def test_every_command_in_an_example_header_runs(cli, stem, args, tmp_path):
+@pytest.mark.parametrize("stem, args, refused", HEADER_COMMANDS,
+                         ids=[f"{s}: {' '.join(a)}" for s, a, _ in HEADER_COMMANDS])
+def test_every_command_in_an_example_header_runs(cli, stem, args, refused, tmp_path):
     # run where examples/ resolves but any file a command writes (--plot, --apply) lands in tmp
     (tmp_path / "examples").symlink_to(ROOT / "examples", target_is_directory=True)
     r = cli(*args, cwd=tmp_path)
+    if refused:  # the header shows a refusal: one line, exit 2
+        assert r.code == 2 and len(r.err.splitlines()) == 1, (args, r.err)
+        return
     assert r.code in (0, 1), (args, r.err)  # 1: a check the example asks for

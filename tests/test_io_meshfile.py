@@ -79,7 +79,7 @@ def same_triangles(v1, f1, v2, f2):
 def test_binary_stl_round_trip(tmp_path):
     v, f = sphere_arrays()
     path = write_binary_stl(tmp_path / "s.stl", v, f)
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert rv.dtype == np.float64 and rf.dtype == np.int64
     assert rv.shape == v.shape and rf.shape == f.shape  # welded back to 642 vertices
     v32 = v.astype(np.float32).astype(np.float64)  # what the file holds
@@ -94,7 +94,7 @@ def test_binary_stl_round_trip(tmp_path):
 def test_binary_stl_whose_header_starts_with_solid(tmp_path):
     v, f = box_arrays()
     path = write_binary_stl(tmp_path / "b.stl", v, f, header=b"solid exported by some CAD")
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rv) == 8 and len(rf) == 12
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)  # exact small numbers
 
@@ -102,14 +102,14 @@ def test_binary_stl_whose_header_starts_with_solid(tmp_path):
 def test_uppercase_extension_and_pathlike(tmp_path):
     v, f = box_arrays()
     path = write_binary_stl(tmp_path / "B.STL", v, f)
-    rv, rf = read_mesh(pathlib.Path(path))
+    rv, rf, *_ = read_mesh(pathlib.Path(path))
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
 
 def test_ascii_stl_round_trip(tmp_path):
     v, f = sphere_arrays()
     path = write_ascii_stl(tmp_path / "s.stl", v, f)
-    rv, rf = read_mesh(str(path))
+    rv, rf, *_ = read_mesh(str(path))
     # repr() round-trips float64 exactly: the very same triangles, the same volume.
     assert rv.shape == v.shape and same_triangles(v, f, rv, rf)
     assert volume(rv, rf) == pytest.approx(volume(v, f), rel=1e-13)
@@ -121,7 +121,7 @@ def test_ascii_stl_upper_case_and_several_solids(tmp_path):
     two = write_ascii_stl(tmp_path / "b.stl", v, f[6:], name="second")
     both = tmp_path / "both.stl"
     both.write_bytes(one.read_bytes() + two.read_bytes())
-    rv, rf = read_mesh(both)
+    rv, rf, *_ = read_mesh(both)
     assert len(rf) == 12 and volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
 
@@ -132,7 +132,7 @@ def test_trimesh_exports_read_back(tmp_path):
     for name, kind in (("t_bin.stl", "stl"), ("t_asc.stl", "stl_ascii"), ("t.obj", "obj")):
         path = tmp_path / name
         m.export(path, file_type=kind)
-        rv, rf = read_mesh(path)
+        rv, rf, *_ = read_mesh(path)
         # binary STL holds float32 (1e-7 relative); the text formats hold ~8+ digits.
         assert volume(rv, rf) == pytest.approx(expected, rel=1e-6), name
 
@@ -146,7 +146,7 @@ def test_negative_zero_is_welded_to_zero(tmp_path):
     assert np.signbit(corners).any()
     vv = np.arange(len(corners)).reshape(-1, 3)
     path = write_binary_stl(tmp_path / "z.stl", corners, vv)
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rv) == 8  # -0.0 and 0.0 are one vertex, so the box is closed
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
@@ -289,7 +289,7 @@ f 2 3 7 6  # a trailing comment
 def test_obj_quads_and_every_index_form(tmp_path):
     path = tmp_path / "cube.obj"
     path.write_text(UNIT_CUBE_OBJ)
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rf) == 12  # 6 quads fanned into 2 triangles each
     p = mass_properties(rv, rf)
     # exact small numbers: volume 1, inertia diag 1/6 per unit mass
@@ -307,7 +307,7 @@ def test_obj_negative_indices_are_relative(tmp_path):
         lines.append("f -3 -2 -1")
     path = tmp_path / "rel.obj"
     path.write_text("\n".join(lines) + "\n")
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rv) == 8  # duplicated positions welded
     assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
 
@@ -326,7 +326,7 @@ def test_obj_polygon_fan(tmp_path):
         lines.append(f"f {i + 1} {j + 1} {n + j + 1} {n + i + 1}")
     path = tmp_path / "hex.obj"
     path.write_text("\n".join(lines) + "\n")
-    rv, rf = read_mesh(path)
+    rv, rf, *_ = read_mesh(path)
     assert len(rf) == 2 * (n - 2) + 2 * n
     # Regular hexagon of circumradius r: area 3√3 r²/2; cos/sin rounding: 1e-14.
     assert volume(rv, rf) == pytest.approx(3 * np.sqrt(3) / 2 * r * r * h, rel=1e-14)
@@ -410,7 +410,7 @@ def test_os_errors_become_mesh_file_errors(tmp_path, monkeypatch, exc, message):
         raise exc
 
     path = write_binary_stl(tmp_path / "p.stl", *box_arrays())
-    monkeypatch.setattr(meshfile, "open", failing_open, raising=False)
+    monkeypatch.setattr(meshfile, "_open_fd", failing_open)
     with pytest.raises(MeshFileError, match=rf"p\.stl: {message}"):
         read_mesh(path)
 
@@ -439,3 +439,186 @@ def test_weld_merges_exact_duplicates_only():
         np.testing.assert_array_equal(unique[inverse], p.astype(np.float64))
         expected = len(np.unique(p, axis=0))  # numpy's own (slower) answer
         assert len(unique) == expected
+
+
+def test_weld_is_exact_even_when_every_hash_collides(monkeypatch):
+    import rbcli.io.meshfile as meshfile
+
+    rng = np.random.default_rng(8)
+    pts = rng.normal(size=(40, 3))[rng.integers(0, 40, 300)]
+    good_u, good_inv = weld(pts)
+    monkeypatch.setattr(meshfile, "_MIX", (np.uint64(0),) * 3)  # every key the same
+    u, inv = weld(pts)
+    assert len(u) == len(good_u) == len(np.unique(pts, axis=0))
+    np.testing.assert_array_equal(u[inv], pts)
+
+
+# ------------------------------------------------ fast readers = line readers, bit for bit
+
+
+def _fast_and_slow_stl(path):
+    import rbcli.io.meshfile as meshfile
+
+    data = pathlib.Path(path).read_bytes()
+    with open(path, "rb") as fh:
+        fast = meshfile._read_stl_ascii_fast(fh, len(data))
+    return fast, meshfile._read_stl_ascii(str(path), data)
+
+
+def _fast_and_slow_obj(path):
+    import rbcli.io.meshfile as meshfile
+
+    data = pathlib.Path(path).read_bytes()
+    return meshfile._read_obj_fast(data), meshfile._read_obj_lines(str(path), data)
+
+
+def bits(a):
+    return np.ascontiguousarray(a, dtype=np.float64).view(np.uint64)
+
+
+def test_fast_ascii_stl_reader_gives_the_line_readers_bits(tmp_path, monkeypatch):
+    import rbcli.io.meshfile as meshfile
+
+    monkeypatch.setattr(meshfile, "_CHUNK", 1000)  # many blocks, cut at facet ends
+    v, f = sphere_arrays()
+    v = v * np.random.default_rng(1).lognormal(0, 3, v.shape)  # digits of every size
+    files = [write_ascii_stl(tmp_path / "a.stl", v, f)]
+    files.append(write_ascii_stl(tmp_path / "b.stl", v, f, upper=True))
+    crlf = tmp_path / "c.stl"
+    crlf.write_bytes(files[0].read_bytes().replace(b"\n", b"\r\n"))
+    files.append(crlf)
+    m = trimesh.creation.torus(1.0, 0.3)
+    m.export(tmp_path / "t.stl", file_type="stl_ascii")
+    files.append(tmp_path / "t.stl")
+    for path in files:
+        fast, slow = _fast_and_slow_stl(path)
+        assert fast is not None, path
+        assert np.array_equal(bits(fast), bits(slow)), path
+
+
+@pytest.mark.parametrize("block", [1 << 24, 300])  # one block; many, cut between lines
+def test_fast_obj_reader_gives_the_line_readers_bits(tmp_path, monkeypatch, block):
+    import rbcli.io.meshfile as meshfile
+
+    monkeypatch.setattr(meshfile, "_CHUNK", block)
+    v, f = sphere_arrays()
+    v = v * np.random.default_rng(2).lognormal(0, 3, v.shape)
+    lines = ["# made here", "o part", "mtllib x.mtl"]
+    lines += [f"v {num(x)} {num(y)} {num(z)}" for x, y, z in v]
+    lines += ["vt 0.5 0.5", "vn 0 0 1", "s off"]
+    forms = ["{}", "{}/1", "{}//1", "{}/1/1"]
+    for k, t in enumerate(f):
+        items = [forms[(k + j) % 4].format(i + 1) for j, i in enumerate(t)]
+        if k % 3 == 0:
+            items = [str(i - len(v)) for i in t]  # negative: relative to the end
+        lines.append("f " + " ".join(items) + (" # a comment" if k % 5 == 0 else ""))
+    text = "\n".join(lines) + "\n"
+    quads = tmp_path / "q.obj"
+    quads.write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nf 1 2 3 4\nf 1\t2 5\n")
+    cont = tmp_path / "cont.obj"
+    cont.write_text(text.replace("\nf ", "\nf \\\n ", 7))
+    paths = [tmp_path / "p.obj", tmp_path / "crlf.obj", quads, cont]
+    paths[0].write_text(text)
+    paths[1].write_bytes(text.encode().replace(b"\n", b"\r\n"))
+    for path in paths:
+        fast, slow = _fast_and_slow_obj(path)
+        assert fast is not None, path
+        assert np.array_equal(bits(fast[0]), bits(slow[0])), path
+        assert np.array_equal(fast[1], slow[1]), path
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv\nf 1 2 3\n",  # a bare v: an error for the line reader
+        "v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n",  # w: the line reader takes x y z
+        "  v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",  # indented
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 1_0\n",  # int() reads 1_0; np.fromstring does not
+    ],
+)
+def test_what_the_fast_obj_reader_does_not_take_goes_to_the_line_reader(tmp_path, text):
+    import rbcli.io.meshfile as meshfile
+
+    assert meshfile._read_obj_fast(text.encode()) is None
+
+
+def test_obj_line_continuation(tmp_path):
+    v, f = box_arrays()
+    lines = [f"v {num(x)} \\\n  {num(y)} {num(z)}" for x, y, z in v]
+    lines += [f"f {a + 1} {b + 1} \\\n{c + 1}" for a, b, c in f]
+    path = tmp_path / "c.obj"
+    path.write_text("\n".join(lines) + "\n")
+    rv, rf, *_ = read_mesh(path)
+    assert volume(rv, rf) == pytest.approx(6.0, rel=1e-14)
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\\n 2 \\\n 3\nf 1 2 \\\n x\n")
+    with pytest.raises(MeshFileError, match=r"c\.obj:7: bad face index 'x'"):
+        read_mesh(path)  # the line where the continued line starts
+
+
+def test_a_huge_obj_face_index_is_a_located_message(tmp_path):
+    path = tmp_path / "big.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 1" + "0" * 23 + "\n")
+    with pytest.raises(MeshFileError) as info:
+        read_mesh(path)
+    assert str(info.value) == (f"{path}:6: face index {10**23} is out of range "
+                               "(the file has 4 vertices)")  # not "a value is too large"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 " + "9" * 100 + "\n")
+    with pytest.raises(MeshFileError, match=r"big\.obj:4: face index 9{24}… \(100 characters\) is out"):
+        read_mesh(path)
+
+
+# ------------------------------------------------------- what is read, and how much
+
+
+def test_a_fifo_is_refused_without_waiting(tmp_path):
+    fifo = tmp_path / "pipe.stl"
+    os.mkfifo(fifo)
+    with pytest.raises(MeshFileError, match=r"pipe\.stl: is a FIFO \(named pipe\), not a regular file"):
+        read_mesh(fifo)
+
+
+def test_a_device_is_refused(tmp_path):
+    link = tmp_path / "null.obj"
+    link.symlink_to("/dev/null")
+    with pytest.raises(MeshFileError, match=r"null\.obj: is a character device, not a regular file"):
+        read_mesh(link)
+
+
+def test_a_large_sparse_file_is_refused_before_it_is_read(tmp_path, monkeypatch):
+    from rbcli.io.meshfile import MAX_MESH_BYTES
+
+    path = tmp_path / "huge.stl"
+    with open(path, "wb") as fh:
+        fh.truncate(2 << 30)  # 2 GiB of holes: no disk used
+    with pytest.raises(MeshFileError, match=r"huge\.stl: the file is 2147483648 bytes \(2 GiB\), over "
+                       r"the mesh size limit of 1073741824 bytes \(1 GiB\); set RBCLI_MAX_MESH_BYTES"):
+        read_mesh(path)
+    assert MAX_MESH_BYTES == 1 << 30
+    small = write_binary_stl(tmp_path / "box.stl", *box_arrays())
+    monkeypatch.setenv("RBCLI_MAX_MESH_BYTES", "500")
+    with pytest.raises(MeshFileError, match=r"over the mesh size limit of 500 bytes"):
+        read_mesh(small)
+    monkeypatch.setenv("RBCLI_MAX_MESH_BYTES", "1k")
+    assert len(read_mesh(small).faces) == 12
+    assert len(read_mesh(small, max_bytes=684).faces) == 12
+    monkeypatch.setenv("RBCLI_MAX_MESH_BYTES", "lots")
+    with pytest.raises(MeshFileError, match="RBCLI_MAX_MESH_BYTES must be a number of bytes"):
+        read_mesh(small)
+
+
+def test_a_nul_in_the_file_name_is_a_clear_message():
+    with pytest.raises(MeshFileError, match=r"a\\0b\.stl: a file name cannot contain a NUL character"):
+        read_mesh("a\0b.stl")
+
+
+def test_default_weld_follows_the_files_precision():
+    from rbcli.io.meshfile import default_weld
+
+    v = np.array([[0.0, 0.0, 0.0], [3.0, 0.0, 0.0], [0.0, 4.0, 0.0]])
+    assert default_weld("binary stl", v) == 4 * float(np.spacing(np.float32(4.0)))  # 4 ulps
+    assert default_weld("obj", v) == pytest.approx(5e-9)  # 1e-9 of the 5 m diagonal
+    far = v + 1e9  # text coordinates far out: at least 4 float64 ulps there
+    assert default_weld("ascii stl", far) == 4 * float(np.spacing(1e9 + 4))
+    assert default_weld("obj", np.zeros((3, 3))) == 0.0
+    path_kinds = {"binary stl", "ascii stl", "obj"}
+    assert path_kinds  # the formats read_mesh reports

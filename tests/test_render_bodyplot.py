@@ -434,3 +434,18 @@ def test_many_parts_stay_a_reasonable_figure():
     assert bodyplot.segments(120) < ol.SEGMENTS <= bodyplot.segments(24)
     svg = render(body)
     assert len(svg) < 2_000_000
+
+
+def test_principal_plot_writes_the_body_figure(cli, tmp_path):
+    """`principal --plot FILE` draws the body as built (an SVG that parses), one body only."""
+    import xml.etree.ElementTree as ET
+
+    out = tmp_path / "rotor.svg"
+    r = cli("principal", "examples/two_disk_rotor.yaml", "--plot", str(out))
+    assert r.code == 0, r.err
+    root = ET.fromstring(out.read_bytes())
+    assert root.tag.endswith("svg") and "the body as built" in out.read_text(encoding="utf-8")
+    r = cli("principal", "examples/cube.yaml", "examples/penny.yaml", "--plot", str(out))
+    assert r.code == 2 and "one body" in r.err
+    r = cli("principal", "examples/cube.yaml", "--plot", str(tmp_path / "x.txt"))
+    assert r.code == 2 and "--plot" in r.err

@@ -34,6 +34,20 @@ UNIT_RULE = "a unit after the last number applies to every bare number before it
 Value = Any
 
 
+def param_of(option: str) -> str | None:
+    """The keyword argument an option stands for: ``"--zero-mark-deg"`` -> ``"zero_mark_deg"``
+    (None for what is not an option, e.g. "the body's shaft")."""
+    last = option.split("/")[-1].strip()
+    if not last.startswith("-"):
+        return None
+    return last.lstrip("-").replace("-", "_") or None
+
+
+def _error(option: str, message: str) -> InputError:
+    """An InputError about ``option`` (its ``param`` set), with the message as printed."""
+    return InputError(message, param=param_of(option))
+
+
 def _is_number(v: Any) -> bool:
     return isinstance(v, (int, float)) and not isinstance(v, bool) or (
         hasattr(v, "dtype") and getattr(v, "shape", None) == ())
@@ -48,7 +62,7 @@ def _text(v: Value, option: str) -> str:
     if isinstance(v, Sequence) or hasattr(v, "tolist"):
         items = v.tolist() if hasattr(v, "tolist") else list(v)
         return ",".join(_text(x, option) for x in items)
-    raise InputError(f"{option}: expected a number, a quantity string or a list, got "
+    raise _error(option, f"{option}: expected a number, a quantity string or a list, got "
                      f"{type(v).__name__}")
 
 
@@ -72,7 +86,7 @@ def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) ->
     try:
         value, dim = un.parse_quantity(s)
     except un.UnitError as exc:
-        raise InputError(f"{option}: {exc}") from None
+        raise _error(option, f"{option}: {exc}") from None
     if dim == un.Dim() and _bare(s):
         if bare is None:
             return value
@@ -81,7 +95,7 @@ def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) ->
     try:
         return un.to_si(s, kind)
     except un.UnitError as exc:
-        raise InputError(f"{option}: {exc}") from None
+        raise _error(option, f"{option}: {exc}") from None
 
 
 def degrees(text: Value, option: str) -> float:
@@ -110,7 +124,7 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
     parts = [p.strip() for p in text.split(",")]
     if len(parts) not in counts or not all(parts):
         want = " or ".join(str(n) for n in counts)
-        raise InputError(f"{option}: expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
+        raise _error(option, f"{option}: expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
                          f"got '{text}'")
     last = quantity(parts[-1], kind, option, bare=bare)  # its own errors first
     m = NUMBER.match(parts[-1])
@@ -120,35 +134,35 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
     elif not all(_bare(p) for p in parts):
         stray = [p for p in parts if _bare(p) and float(p.replace("\u2212", "-")) != 0.0]
         if stray:
-            raise InputError(
+            raise _error(option, 
                 f"{option}: '{text}' has a unit on some numbers but none after the last, so the "
                 f"unit of {stray[0]} is unclear; put the unit after the last number (it then "
                 "applies to every bare number before it) or after each number"
             )
     vals = [quantity(p, kind, option, bare=bare) for p in parts[:-1]] + [last]
     if not all(math.isfinite(v) for v in vals):
-        raise InputError(f"{option}: values must be finite numbers, got '{text}'")
+        raise _error(option, f"{option}: values must be finite numbers, got '{text}'")
     return vals
 
 
 def finite(x: float, option: str) -> float:
     """``x`` if it is a finite number, else an InputError naming ``option``."""
     if not math.isfinite(x):
-        raise InputError(f"{option}: must be a finite number")
+        raise _error(option, f"{option}: must be a finite number")
     return x
 
 
 def positive(x: float, option: str, what: str) -> float:
     """``x`` if it is a positive finite number, else an InputError saying ``what`` it is."""
     if not (x > 0.0 and math.isfinite(x)):
-        raise InputError(f"{option}: {what} must be a positive number, got {x:.6g}")
+        raise _error(option, f"{option}: {what} must be a positive number, got {x:.6g}")
     return x
 
 
 def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
     """Two positions along a shaft that must differ (``--planes``, ``--bearings``)."""
     if vals[0] == vals[1]:
-        raise InputError(f"{option}: the two {what} are both at z = {vals[0]:.6g} m; they must differ")
+        raise _error(option, f"{option}: the two {what} are both at z = {vals[0]:.6g} m; they must differ")
     return vals[0], vals[1]
 
 
@@ -164,13 +178,13 @@ def grade(text: Value, option: str = "--grade") -> float:
     text = _text(text, option)
     m = _GRADE.fullmatch(text.strip())
     if not m:
-        raise InputError(
+        raise _error(option, 
             f"{option}: '{text}' is not a balance quality grade; write e.g. G6.3, 6.3 or g2.5 "
             "(G in mm/s, from G0.4 to G4000)"
         )
     G = float(m.group(1))
     if not (math.isfinite(G) and ISO_GRADE_MIN <= G <= ISO_GRADE_MAX):
-        raise InputError(
+        raise _error(option, 
             f"{option}: ISO 21940-11 grades run from G{ISO_GRADE_MIN:g} to G{ISO_GRADE_MAX:g} "
             f"(mm/s), got {text}"
         )
@@ -182,7 +196,7 @@ def vector(text: Value, kind: str, option: str, n: int = 3, *, bare: str | None 
     :func:`numbers`)."""
     t = _text(text, option)
     if len(t.split(",")) != n:
-        raise InputError(f"{option}: expected {n} comma-separated numbers like 1,0,0, got '{t}'")
+        raise _error(option, f"{option}: expected {n} comma-separated numbers like 1,0,0, got '{t}'")
     return numbers(t, kind, option, counts=(n,), bare=bare)
 
 
@@ -204,7 +218,7 @@ def direction(text: Value, option: str) -> list[float]:
     v = vector(t, "dimensionless", option)
     big = max(abs(x) for x in v)
     if not big > 0:
-        raise InputError(f"{option}: the direction must be a non-zero vector")
+        raise _error(option, f"{option}: the direction must be a non-zero vector")
     return [x / big for x in v]  # largest component ±1: no under/overflow when normalised
 
 
@@ -212,7 +226,7 @@ def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
     """One of ``allowed`` (e.g. ``--products tensor|positive``)."""
     if text not in allowed:
         ways = " or ".join(f"'{a}'" for a in allowed)
-        raise InputError(f"{option} must be {ways}, not '{text}'")
+        raise _error(option, f"{option} must be {ways}, not '{text}'")
     return str(text)
 
 

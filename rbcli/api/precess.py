@@ -36,7 +36,7 @@ __all__ = ["PrecessOptions", "PrecessResult", "run", "precess", "DEFAULT_SAMPLES
 
 #: rows of a time series when ``samples`` is not given, and the most allowed
 DEFAULT_SAMPLES = 1001
-MAX_SAMPLES = 10_000_000
+MAX_SAMPLES = 1_000_000  # 1 048 576 rows is what a spreadsheet holds; 10^6 rows is ~100 MB of CSV
 
 #: SPEC §3 keys, first in the JSON object
 SPEC_KEYS = (

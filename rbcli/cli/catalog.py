@@ -16,7 +16,8 @@ SPECIAL = {
         "surface area and triangle count",
         "file (relative to the body file); optional scale (a plain factor), units (the length "
         "unit of the mesh's coordinates, e.g. mm; default: the body file's length unit), "
-        "allow_open (true: accept boundary edges, with a warning)",
+        "weld (a length, or exact: how far apart the copies of a vertex may be; default from "
+        "the file's precision), allow_open (true: accept boundary edges, with a warning)",
         "mass or density (a hole in a mesh, or a mesh hole, may use cut_from)",
         "the mesh's own coordinate origin (file coordinates x scale x units), not its centroid",
         "exact volume, centroid and second moments of the polyhedron (divergence theorem over "
@@ -25,7 +26,15 @@ SPECIAL = {
         "or malformed file; NaN or infinite coordinates; not closed (says how many boundary "
         "edges) unless allow_open; non-manifold edges (shared by three or more triangles); mixed "
         "orientation; no volume (flat or degenerate). A mesh facing inward everywhere is turned "
-        "outward with a warning. Binary STL stores float32 coordinates (about 7 digits)",
+        "outward with a warning. Binary STL stores float32 coordinates (about 7 digits). "
+        "Welding: vertices with identical coordinates are merged; if the mesh is then open, "
+        "the ends of its boundary edges whose coordinates differ by at most the weld tolerance "
+        "are merged too (CAD noise such as 0 next to -3.79e-33), with a warning giving the "
+        "largest gap closed. Default tolerance: 4 float32 ulps of the largest coordinate for "
+        "binary STL, 1e-9 of the bounding-box diagonal for ASCII STL and OBJ; at most 1e-3 of "
+        "the mesh's size. Welding decides closedness only: the integrals use the triangles as "
+        "written. A group of vertices spanning more than the tolerance (a chain) is not merged. "
+        "Files must be regular files of at most 1 GiB (RBCLI_MAX_MESH_BYTES changes the limit)",
     ),
     "given": (
         "measured or CAD-exported mass properties",
@@ -161,6 +170,13 @@ MANUAL["shapes"] = {
         "malformed, NaN coordinates) or a mesh that does not bound a solid (not closed, with the "
         "number of boundary edges; non-manifold edges; mixed orientation; no volume) is an error "
         "naming the file, exit status 2; allow_open: true accepts boundary edges with a warning. "
+        "Before that check, the copies of a vertex that CAD exports write with different last "
+        "digits are welded: if identical vertices leave the mesh open, the ends of its boundary "
+        "edges closer than the weld tolerance (weld: a length, or exact; default 4 float32 "
+        "ulps of the largest coordinate for binary STL, 1e-9 of the bounding-box diagonal for "
+        "ASCII STL and OBJ) are merged, with one warning giving the largest gap closed; the "
+        "volume and inertia still come from the triangles as written. A mesh file must be a "
+        "regular file no larger than RBCLI_MAX_MESH_BYTES (default 1 GiB; e.g. 4G). "
         "A mesh that faces inward everywhere is turned outward with a warning on standard error. "
         "inertia and principal show each mesh part's volume, surface area and triangle count, and "
         "put them in --json under parts[i].volume, .area and .triangles.",

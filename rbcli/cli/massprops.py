@@ -155,6 +155,7 @@ def principal(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
     about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
+    plot: str = typer.Option(None, "--plot", help="Draw the body as built (its parts, holes dashed), the com and the principal axes about the com, in a 3-D view and three views along the body axes, to this file (.png, .svg or .pdf). One body only.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
@@ -168,18 +169,28 @@ def principal(
     from rbcli.api import massprops as api
 
     api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
-    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, out, du, digits, e, many),
+    if plot is not None:
+        c.sources(bodies, expr, single=True)  # one figure, one body
+    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, out, du, digits, e, many, plot),
          sep="\n" if out == "csv" else "")
 
 
-def _principal_one(body, about, out, du, digits, e, many: bool) -> None:
+def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None = None) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
+    plot_path = c.check_plot(plot, body) if plot is not None else None
     opts = api.PrincipalOptions.parse(body, about=about)
     res = api.run_principal(body, opts)
     for w in res.warnings:
         e.warn(f"rbcli: {body.source}: warning: {w}")
+    if plot_path is not None:
+        from rbcli.render.bodyplot import body_figure
+
+        at_com = res if about.strip() == "com" else api.principal(body, about="com")
+        fig = body_figure(body, at_com.reference, at_com, du,
+                          f"principal: {body.name} — the body as built, centre of mass and principal axes")
+        c.save_plot(fig, plot_path)
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
            file=body.source if many else None, given=opts.echo)
@@ -261,6 +272,9 @@ MANUAL["principal"] = {
     "examples": [
         ("rbcli principal examples/square_lamina.yaml --about origin",
          "Principal axes of the lamina about its corner: along the diagonal (m a^2/12) and across it (7 m a^2/12)."),
+        ("rbcli principal examples/two_disk_rotor.yaml --plot rotor.png",
+         "The rotor as built: the shaft, disks and point masses in three views and in 3-D, with the "
+         "centre of mass and the principal axes about it (README shows it)."),
         ("rbcli principal examples/two_blade_fan.yaml",
          "The two-blade fan: principal axes at 45 degrees (tan 2 theta = 2 Ixy/(Ixx - Iyy))."),
     ],

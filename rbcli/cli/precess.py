@@ -36,7 +36,7 @@ DURATION_HELP = (
     "Span of the --csv time series, from t = 0 (s, or with units); also the span of "
     "--plot (default: 3 periods of w)."
 )
-SAMPLES_HELP = "Rows of the --csv time series, evenly spaced from t = 0 to --duration inclusive (2 to 10000000)."
+SAMPLES_HELP = "Rows of the --csv time series, evenly spaced from t = 0 to --duration inclusive (2 to 1000000, about 100 MB of CSV)."
 CSV_HELP = (
     "Write the time series t, wx, wy, wz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body to "
     "space) to this CSV file, or '-' for standard output instead of the tables. Needs "

@@ -79,6 +79,7 @@ def top(
     samples: int = typer.Option(600, "--samples", help="Rows of --csv, evenly spaced from t = 0 to --duration inclusive (2 to 1000000)."),
     symmetry_tol: str = SymmetryTolOpt,
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -87,6 +88,7 @@ def top(
     from rbcli.render.fmt import DisplayUnits
 
     e = c.env()
+    out = c.output_format(json_, fmt)
     du = DisplayUnits.parse(units)
     # the output options (the command line's own), checked before the body is read
     dur = None
@@ -96,8 +98,8 @@ def top(
             raise InputError(f"--duration: must be a positive time, got {duration}")
     if not 2 <= samples <= MAX_SAMPLES:
         raise InputError(f"--samples: must be from 2 to {MAX_SAMPLES}, got {samples}")
-    if csv == "-" and json_:
-        raise InputError("--csv -: the CSV would go to standard output together with --json; write it to a file")
+    if csv == "-" and out != "table":
+        raise InputError(f"--csv -: the CSV would go to standard output together with --{'json' if json_ else 'format ' + out}; write it to a file")
 
     b = c.load_one(body, expr, e)
     opts = api.TopOptions.parse(b, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
@@ -129,7 +131,7 @@ def top(
             out["csv"] = {"file": csv, "rows": samples, "duration": span}
         return out
 
-    c.emit(e, json_, data, lambda doc: rt.document(
+    c.emit(e, out, data, lambda doc: rt.document(
         doc, r, du, digits, plot=str(plot_path) if plot_path is not None else None, csv=csv,
         rows=samples if csv is not None else None, duration=span), given=opts.echo)
     c.finish(r.return_code)
@@ -160,6 +162,7 @@ def gyrocompass(
     earth_rate: str = typer.Option(None, "--earth-rate", help="The Earth's (sidereal) rotation rate (rad/s, or with units).  [default: 7.2921150e-5]", show_default=False),
     symmetry_tol: str = SymmetryTolOpt,
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -168,13 +171,14 @@ def gyrocompass(
     from rbcli.render.fmt import DisplayUnits
 
     e = c.env()
+    out = c.output_format(json_, fmt)
     du = DisplayUnits.parse(units)
     b = c.load_one(body, expr, e) if body is not None or expr is not None else None
     opts = api.GyrocompassOptions.parse(b, ratio=ratio, axis=axis, spin=spin, latitude=latitude,
                                         earth_rate=earth_rate, symmetry_tol=symmetry_tol)
     r = api.run_gyrocompass(b, opts)
     _warn(e, r)
-    c.emit(e, json_, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
+    c.emit(e, out, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
            lambda doc: rt.gyro_document(doc, r, du, digits), given=opts.echo)
 
 

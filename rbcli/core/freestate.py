@@ -249,6 +249,48 @@ def plot_span(motion: fm.FreeMotion, duration: float | None) -> tuple[float, flo
     return 0.0, 3.0 * (2 * math.pi / wn if wn > 0 else 1.0)
 
 
+@dataclass(frozen=True)
+class PlotSamples:
+    """What the precess figure draws, sampled from the exact motion.
+
+    Attributes
+    ----------
+    t0, t1 : float — s, the span drawn
+    t : (n,) ndarray — s, the sample times
+    omega : (n, 3) ndarray — rad/s, ω(t) in the body frame
+    polhode : (n, 3) ndarray — L/|L| in the principal frame (empty when L = 0)
+    start : (3,) ndarray — L/|L| at t = 0, principal frame
+    family : list of (k, 3) ndarray — polhodes at a few energies and the separatrix
+    flips : (j,) ndarray — s, the flip times inside the span (empty when nothing flips)
+    """
+
+    t0: float
+    t1: float
+    t: np.ndarray
+    omega: np.ndarray
+    polhode: np.ndarray
+    start: np.ndarray
+    family: list
+    flips: np.ndarray
+
+
+def plot_samples(motion: fm.FreeMotion, duration: float | None) -> PlotSamples:
+    """Sample the motion for the figure: 400 points a period, 1 500 to 20 000 in all."""
+    t0, t1 = plot_span(motion, duration)
+    per = motion.period or (t1 - t0)
+    n = int(min(20000, max(1500, 400 * (t1 - t0) / per)))
+    t = np.linspace(t0, t1, n)
+    w = fm.omega_at(motion, t)
+    G = motion.angular_momentum_norm
+    m = (fm.omega_at(motion, t, frame="principal") * motion.moments) / G if G > 0 else np.zeros((0, 3))
+    m0 = motion.omega0_principal * motion.moments / G if G > 0 else np.zeros(3)
+    flips = np.zeros(0)
+    if motion.flip_interval is not None and motion.first_flip is not None:
+        all_flips = motion.first_flip + np.arange(0, 50) * motion.flip_interval
+        flips = all_flips[(all_flips >= t0) & (all_flips <= t1)]
+    return PlotSamples(t0, t1, t, w, m, m0, polhode_family(motion.moments), flips)
+
+
 def polhode_family(moments: np.ndarray, levels: int = 5) -> list[np.ndarray]:
     """Polhodes on the unit L-sphere (principal frame) at a few energies, and the separatrix.
 

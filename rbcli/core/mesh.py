@@ -17,11 +17,18 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["MeshError", "MeshProps", "check_mesh", "mass_properties", "VOLUME_RTOL"]
+__all__ = [
+    "MeshError", "MeshProps", "check_mesh", "mass_properties", "weld_gaps", "VOLUME_RTOL",
+    "WELD_MAX",
+]
 
 #: A mesh whose |volume| is at most this times (largest bounding-box side)^3 is
 #: "degenerate" (flat, or its parts cancel). Rounding leaves ~1e-16 of that cube.
 VOLUME_RTOL = 1e-10
+
+#: The weld tolerance may be at most this times the mesh's largest bounding-box side:
+#: a coarser "gap" is a feature, and welding it would fold the surface.
+WELD_MAX = 1e-3
 
 #: Triangles integrated per block: bounds the temporary memory to a few MB and keeps
 #: the working set in cache.
@@ -33,7 +40,15 @@ _SNAP = 1e-14
 
 
 class MeshError(ValueError):
-    """A mesh that does not bound a solid, or bad vertex/face arrays."""
+    """A mesh that does not bound a solid, or bad vertex/face arrays.
+
+    ``boundary`` is the number of boundary edges left (after welding) when the mesh was
+    refused for not being closed, else 0.
+    """
+
+    def __init__(self, message: str, *, boundary: int = 0) -> None:
+        super().__init__(message)
+        self.boundary = boundary
 
 
 @dataclass(frozen=True)
@@ -53,6 +68,10 @@ class MeshProps:
     flipped : bool — the mesh faced inwards everywhere (negative signed volume) and was
         taken as turned outwards
     warnings : tuple[str, ...] — lower-case notes on what was tolerated or repaired
+    welded : int — vertices merged into another one by the tolerance weld (0 when the
+        exactly welded mesh was closed, or welding was off)
+    gap : float — (mesh unit) the largest coordinate difference inside a group of
+        vertices the tolerance weld merged (0 when none were)
     """
 
     volume: float
@@ -62,6 +81,8 @@ class MeshProps:
     n_triangles: int
     flipped: bool
     warnings: tuple[str, ...] = field(default=())
+    welded: int = 0
+    gap: float = 0.0
 
     def to_json(self) -> dict:
         """Plain-Python form: floats, nested lists, bools, list of strings."""
@@ -73,10 +94,19 @@ class MeshProps:
             "n_triangles": int(self.n_triangles),
             "flipped": bool(self.flipped),
             "warnings": list(self.warnings),
+            "welded": int(self.welded),
+            "gap": float(self.gap),
         }
 
 
-def check_mesh(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool = False) -> list[str]:
+def check_mesh(
+    vertices: np.ndarray,
+    faces: np.ndarray,
+    *,
+    allow_open: bool = False,
+    weld: float = 0.0,
+    unit: str = "",
+) -> list[str]:
     """Check that a triangle mesh bounds a solid; return warnings, raise on fatal problems.
 
     Parameters
@@ -87,6 +117,14 @@ def check_mesh(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool = Fa
         Accept boundary edges (holes) with a warning instead of an error. The volume of
         an open mesh is then that of the surface closed by cones to the reference point
         (the bounding-box centre): only meaningful for small holes.
+    weld : float
+        Weld tolerance (same unit as the vertices; 0: exact only). When the mesh as given
+        is not closed, the ends of its boundary edges whose coordinates all differ by at
+        most ``weld`` are merged and the edges checked again; see :func:`weld_gaps`.
+        It decides closedness and orientation only: the integrals use each triangle's
+        own coordinates.
+    unit : str
+        The vertices' length unit, for the messages only (e.g. ``"m"``).
 
     Returns
     -------
@@ -113,11 +151,17 @@ def check_mesh(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool = Fa
     one comparison (two sorts of 1.5 F keys) accepts a good mesh; only a failing mesh is
     analysed further (one sort of the 3 F undirected keys, counting uses per edge).
     """
-    return list(_analyse(vertices, faces, allow_open=allow_open, inertia=False).warnings)
+    props = _analyse(vertices, faces, allow_open=allow_open, inertia=False, weld=weld, unit=unit)
+    return list(props.warnings)
 
 
 def mass_properties(
-    vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool = False
+    vertices: np.ndarray,
+    faces: np.ndarray,
+    *,
+    allow_open: bool = False,
+    weld: float = 0.0,
+    unit: str = "",
 ) -> MeshProps:
     """Volume, area, centroid and inertia per unit mass of the solid a mesh bounds.
 
@@ -126,7 +170,7 @@ def mass_properties(
     vertices : (V, 3) array_like — coordinates (any length unit)
     faces : (F, 3) array_like of int — 0-based vertex indices, counter-clockwise seen
         from outside (a mesh that is inward-facing everywhere is accepted and flipped)
-    allow_open : bool — see :func:`check_mesh`
+    allow_open, weld, unit — see :func:`check_mesh`
 
     Returns
     -------
@@ -157,7 +201,109 @@ def mass_properties(
     ``(tr(C) E - C) / V``. The sums run in blocks of 65536 triangles with BLAS
     products (3 × m)(m × 3), so temporaries stay small.
     """
-    return _analyse(vertices, faces, allow_open=allow_open, inertia=True)
+    return _analyse(vertices, faces, allow_open=allow_open, inertia=True, weld=weld, unit=unit)
+
+
+def weld_gaps(
+    points: np.ndarray, tol: float, *, max_group: int = 64, unit: str = ""
+) -> tuple[np.ndarray, float, int]:
+    """Group points whose coordinates all differ by at most ``tol``, safely.
+
+    Parameters
+    ----------
+    points : (n, 3) ndarray — distinct points (the ends of a mesh's boundary edges)
+    tol : float — the tolerance, > 0 (same unit as the points)
+    max_group : int — at most this many points may share one cell of side ``2 tol``
+    unit : str — the points' length unit, for the message only
+
+    Returns
+    -------
+    label : (n,) ndarray of int64
+        ``label[i]`` is the index of the point ``i`` is merged into (``i`` itself when
+        it stays alone).
+    gap : float
+        The largest coordinate difference inside a merged group (0 if none merged).
+    chained : int
+        Groups left unmerged because they were chains (see Notes).
+
+    Raises
+    ------
+    MeshError
+        More than ``max_group`` points within ``2 tol`` of each other: the tolerance is
+        far too large for this mesh.
+
+    Notes
+    -----
+    "Closer than ``tol``" (every coordinate differs by at most ``tol``, the Chebyshev
+    distance) is not transitive: a chain of points each ``tol`` from the next would,
+    merged, collapse a length of many ``tol`` into one point. So the groups are the
+    connected components of the "closer than tol" graph (single linkage, independent
+    of the order of the points), and a group whose extent along some axis exceeds
+    ``tol`` — not every pair in it is within ``tol`` — is a chain and is left
+    unmerged: welding never moves a point by more than ``tol``.
+
+    The pairs are found by sorting, not by comparing all pairs: with cells of side
+    ``s`` slightly above ``2 tol``, two points within ``tol`` share a cell in at least
+    one of the 8 grids shifted by 0 or ``s/2`` along each axis (along one axis, the
+    two points' interval is shorter than ``s/2``, so at most one of the two grids
+    has a cell border inside it). Each grid costs one lexicographic sort of the cell
+    indices; points in one cell are compared in pairs.
+    """
+    pts = np.asarray(points, dtype=np.float64)
+    n = len(pts)
+    label = np.arange(n, dtype=np.int64)
+    if n < 2 or not tol > 0.0:
+        return label, 0.0, 0
+    lo = pts.min(axis=0)
+    side = 2.0 * tol * (1.0 + 1e-9)
+    us, ws = [], []
+    for shift in range(8):
+        offset = np.array([(shift >> k) & 1 for k in range(3)]) * (side / 2.0)
+        cell = np.floor((pts - lo + offset) / side).astype(np.int64)
+        order = np.lexsort((cell[:, 2], cell[:, 1], cell[:, 0]))
+        c = cell[order]
+        for r in range(1, n):
+            same = (c[r:] == c[:-r]).all(axis=1)
+            if not same.any():
+                break
+            if r >= max_group:
+                raise MeshError(
+                    f"weld tolerance {_length(tol, unit)} is far too large for this mesh: "
+                    f"more than {max_group} boundary vertices lie within twice that of "
+                    "each other; give a smaller weld, or weld: exact"
+                )
+            i = order[:-r][same]
+            j = order[r:][same]
+            near = (np.abs(pts[i] - pts[j]) <= tol).all(axis=1)
+            us.append(i[near])
+            ws.append(j[near])
+    if not us:
+        return label, 0.0, 0
+    u = np.concatenate(us)
+    w = np.concatenate(ws)
+    if u.size == 0:
+        return label, 0.0, 0
+    while True:  # connected components: push the smaller label across every pair
+        m = np.minimum(label[u], label[w])
+        before = label.copy()
+        np.minimum.at(label, u, m)
+        np.minimum.at(label, w, m)
+        label = label[label]
+        if np.array_equal(label, before):
+            break
+    big = np.full((n, 3), -np.inf)
+    small = np.full((n, 3), np.inf)
+    np.maximum.at(big, label, pts)
+    np.minimum.at(small, label, pts)
+    extent = (big - small).max(axis=1)  # per group root (inf/-inf rows are not roots)
+    grouped = label != np.arange(n)
+    roots = np.unique(label[grouped])
+    chain = roots[extent[roots] > tol]
+    if chain.size:
+        label[np.isin(label, chain)] = np.flatnonzero(np.isin(label, chain))
+    kept = np.setdiff1d(roots, chain)
+    gap = float(extent[kept].max()) if kept.size else 0.0
+    return label, gap, int(chain.size)
 
 
 # --------------------------------------------------------------------------- internals
@@ -185,8 +331,14 @@ def _as_arrays(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.
     return v, f
 
 
-def _edge_problems(faces: np.ndarray, n_vertices: int) -> tuple[int, int, int]:
-    """(boundary, non-manifold, mis-oriented) edge counts; (0, 0, 0) for a good mesh."""
+def _edge_problems(
+    faces: np.ndarray, n_vertices: int, ends: list | None = None
+) -> tuple[int, int, int]:
+    """(boundary, non-manifold, mis-oriented) edge counts; (0, 0, 0) for a good mesh.
+
+    If ``ends`` is a list, the vertex indices of the boundary edges' ends are appended
+    to it (one array).
+    """
     u = faces.ravel()
     w = faces[:, [1, 2, 0]].ravel()
     fwd = u < w
@@ -210,6 +362,9 @@ def _edge_problems(faces: np.ndarray, n_vertices: int) -> tuple[int, int, int]:
     uses = np.diff(np.append(starts, edge.size))
     n_fwd = np.add.reduceat(key & 1, starts)
     boundary = int((uses == 1).sum())
+    if ends is not None and boundary:
+        e = edge[starts[uses == 1]]
+        ends.append(np.unique(np.concatenate((e // nv, e % nv))))
     nonmanifold = int((uses > 2).sum())
     misoriented = int(((uses == 2) & (n_fwd != 1)).sum())
     return boundary, nonmanifold, misoriented
@@ -259,7 +414,56 @@ def _integrals(
     return volume, area2 / 2.0, first / 24.0, (second + second.T) / 240.0, zero
 
 
-def _analyse(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool, inertia: bool):
+def _length(x: float, unit: str) -> str:
+    return f"{x:.3g} {unit}" if unit else f"{x:.3g}"
+
+
+def _weld_boundary(
+    v: np.ndarray, f: np.ndarray, ends: np.ndarray, tol: float, unit: str
+) -> tuple[int, float, str, tuple[int, int, int]]:
+    """Weld the ends of the boundary edges within ``tol``; check the edges again.
+
+    Returns (vertices merged, largest gap closed, the warning, edge problem counts).
+    Triangles two of whose corners merge are left out of the edge check (their edges
+    are shorter than the tolerance); the integrals still count them.
+    """
+    label, gap, chained = weld_gaps(v[ends], tol, unit=unit)
+    merged = int((label != np.arange(len(ends))).sum())
+    if not merged:
+        return 0, 0.0, "", (0, 0, 0)
+    new = np.arange(len(v), dtype=np.int64)
+    new[ends] = ends[label]
+    g = new[f]
+    keep = (g[:, 0] != g[:, 1]) & (g[:, 1] != g[:, 2]) & (g[:, 2] != g[:, 0])
+    collapsed = int(len(g) - keep.sum())
+    counts = _edge_problems(g[keep] if collapsed else g, len(v))
+    note = (
+        f"welded {_plural(merged, 'vertex', 'vertices')} onto a neighbour closer than the "
+        f"weld tolerance {_length(tol, unit)} (largest gap closed {_length(gap, unit)}); "
+        "this decides closedness only, the integrals use the triangles as given"
+    )
+    if collapsed:
+        note += (
+            f"; {_plural(collapsed, 'triangle', 'triangles')} narrower than the tolerance "
+            "left out of the closedness check (their volume is counted)"
+        )
+    if chained:
+        note += (
+            f"; {_plural(chained, 'chain', 'chains')} of vertices spanning more than the "
+            "tolerance left apart"
+        )
+    return merged, gap, note, counts
+
+
+def _analyse(
+    vertices: np.ndarray,
+    faces: np.ndarray,
+    *,
+    allow_open: bool,
+    inertia: bool,
+    weld: float = 0.0,
+    unit: str = "",
+):
     v, f = _as_arrays(vertices, faces)
     n_given = len(f)
     warnings: list[str] = []
@@ -295,7 +499,19 @@ def _analyse(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool, inert
             f"{_plural(n_zero, 'triangle has', 'triangles have')} zero area (they add nothing)"
         )
 
-    boundary, nonmanifold, misoriented = _edge_problems(f, len(v))
+    ends: list = []
+    boundary, nonmanifold, misoriented = _edge_problems(f, len(v), ends)
+    welded, gap, weld_note = 0, 0.0, ""
+    if boundary and weld > 0.0:
+        if weld > WELD_MAX * size:
+            raise MeshError(
+                f"weld tolerance {_length(weld, unit)} is too large for a mesh of size "
+                f"{_length(size, unit)}: at most {WELD_MAX:g} of its size can be told from a "
+                "feature; give a smaller weld, or weld: exact"
+            )
+        welded, gap, weld_note, counts = _weld_boundary(v, f, ends[0], weld, unit)
+        if welded:
+            boundary, nonmanifold, misoriented = counts
     problems = []
     if boundary and not allow_open:
         problems.append(
@@ -314,7 +530,15 @@ def _analyse(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool, inert
             "are flipped)"
         )
     if problems:
-        raise MeshError("mesh does not bound a solid: " + "; ".join(problems))
+        after = ""
+        if weld > 0.0 and (welded or ends):
+            after = f" (after welding vertices closer than {_length(weld, unit)})"
+        raise MeshError(
+            "mesh does not bound a solid: " + "; ".join(problems) + after,
+            boundary=boundary if not allow_open else 0,
+        )
+    if welded:
+        warnings.append(weld_note)
     if boundary:
         warnings.append(
             f"mesh is open ({_plural(boundary, 'boundary edge', 'boundary edges')}): its "
@@ -352,4 +576,6 @@ def _analyse(vertices: np.ndarray, faces: np.ndarray, *, allow_open: bool, inert
         n_triangles=n_given,
         flipped=bool(flipped),
         warnings=tuple(warnings),
+        welded=welded,
+        gap=gap,
     )

@@ -50,7 +50,7 @@ SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not b
 GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", "convention", *PLACEMENT_KEYS)
 INCLUDE_KEYS = ("name", "shape", "file", *PLACEMENT_KEYS)
 MESH_KEYS = (
-    "name", "shape", "file", "scale", "units", "allow_open", "subtract", "cut_from",
+    "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",
     "mass", "density", *PLACEMENT_KEYS,
 )
 INERTIA_MAP_KEYS = ("Ixx", "Iyy", "Izz", "Ixy", "Iyz", "Izx", "convention")
@@ -712,6 +712,13 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
     else:
         factor = ctx.factor("length", m)[0]
     allow_open = _bool(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
+    weld = None  # None: the file's own default (meshfile.default_weld)
+    if "weld" in m.items:
+        wnode = m.items["weld"][1]
+        if isinstance(wnode, ys.ScalarNode) and wnode.value == "exact":
+            weld = 0.0
+        else:
+            weld = _positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
     mass, density, src = _mass_source(ctx, m, "volume", known, what)
     subtract = _subtract(ctx, m)
     at, R = _placement(ctx, m)
@@ -721,7 +728,7 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
 
     shown = str(path)
     try:
-        vertices, faces = meshfile.read_mesh(path)
+        vertices, faces, _fmt, file_weld = meshfile.read_mesh(path)
     except meshfile.MeshFileError as exc:  # its message starts with the path
         raise ctx.error(fnode, f"{what}: {exc}") from None
     ctx.inputs.append(os.path.realpath(path))
@@ -737,11 +744,13 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
             )
     if float(np.abs(vertices).max()) > HUGE:
         raise ctx.error(fnode, f"{what}: {shown}: coordinates are too large; numbers are limited to 1e60 in SI units")
+    if weld is None:
+        weld = file_weld * k
     try:
-        props = cmesh.mass_properties(vertices, faces, allow_open=allow_open)
-    except ValueError as exc:  # MeshError: says what is wrong, not which file
+        props = cmesh.mass_properties(vertices, faces, allow_open=allow_open, weld=weld, unit="m")
+    except cmesh.MeshError as exc:  # says what is wrong, not which file
         msg = str(exc)
-        if "not closed" in msg:
+        if exc.boundary:
             msg += "; allow_open: true accepts small holes, with a warning"
         raise ctx.error(fnode, f"{what}: {shown}: {msg}") from None
     from rbcli.core.outline import decimate
@@ -773,6 +782,8 @@ def _mesh_path(ctx: _Ctx, fnode: ys.Node) -> Path:
     rel = _string(ctx, fnode, "file")
     if not rel.strip():
         raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
+    if "\0" in rel:
+        raise ctx.error(fnode, "file: a file name cannot contain a NUL character")
     path = Path(rel)
     if path.is_absolute():
         return path

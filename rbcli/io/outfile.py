@@ -193,24 +193,54 @@ def _mode_for(st: os.stat_result | None) -> int:
 
 
 class _held_signals:
-    """SIGINT and SIGTERM held off (delivered when the block ends) for a few renames, so
-    that an interrupt cannot split a write that must be all or nothing."""
+    """SIGINT, SIGTERM and SIGHUP held off for a few steps (creating a temporary file,
+    renaming outputs into place, cleaning up), so that an interrupt can split neither a
+    write that must be all or nothing nor its cleanup; a signal that arrives meanwhile is
+    delivered when the block ends.
+
+    Held at the Python level (the handlers are swapped for one that only records the
+    signal): blocking with ``pthread_sigmask`` would not do, since the kernel may hand the
+    signal to another thread (a BLAS worker), whose C handler still makes the main thread
+    raise at its next step. Outside the main thread this does nothing (no handler runs
+    there).
+    """
+
+    _depth = 0
 
     def __enter__(self):
         import signal
+        import threading
 
-        self.old = None
-        try:
-            self.old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
-        except (AttributeError, ValueError, OSError):  # no pthread_sigmask (Windows)
-            pass
+        self.old: dict = {}
+        self.pending: list[int] = []
+        if _held_signals._depth or threading.current_thread() is not threading.main_thread():
+            _held_signals._depth += 1
+            return self
+        _held_signals._depth += 1
+        for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+            signum = getattr(signal, name, None)
+            if signum is None:
+                continue
+            try:
+                self.old[signum] = signal.signal(signum, self._record)
+            except (ValueError, OSError, TypeError):
+                pass
         return self
+
+    def _record(self, signum, frame):  # noqa: ARG002
+        self.pending.append(signum)
 
     def __exit__(self, *exc):
         import signal
 
-        if self.old is not None:
-            signal.pthread_sigmask(signal.SIG_SETMASK, self.old)
+        _held_signals._depth -= 1
+        for signum, handler in self.old.items():
+            try:
+                signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
+            except (ValueError, OSError, TypeError):
+                pass
+        for signum in dict.fromkeys(self.pending):  # now, to the handlers that were there
+            signal.raise_signal(signum)
         return False
 
 
@@ -353,14 +383,11 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
         with _held_signals():
             _commit(tmp, text, option, replace)
             tmp = None
-    except InputError:
-        _remove(tmp)
-        raise
-    except OSError as exc:
-        _remove(tmp)
-        raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
-    except BaseException:
-        _remove(tmp)
+    except BaseException as exc:
+        with _held_signals():  # a second Ctrl-C cannot stop the cleanup halfway
+            _remove(tmp)
+        if isinstance(exc, OSError):
+            raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
         raise
 
 

@@ -115,6 +115,11 @@ def _variants(extra: dict) -> list[dict]:
         scale={"type": "number", "exclusiveMinimum": 0},
         units={"type": "string", "description": "length unit of the mesh coordinates"},
         allow_open={"type": "boolean"},
+        weld={
+            "description": "merge vertices closer than this length to close gaps (default: from the "
+            "file's precision), or exact",
+            "anyOf": [{"$ref": "#/definitions/quantity"}, {"const": "exact"}],
+        },
     )
     variants.append(_part_variant("mesh", mesh, ["shape", "file"]))
     return variants

@@ -180,14 +180,12 @@ def document(doc: Doc, body: Body, result: Any, du: DisplayUnits, digits: int, *
 
 
 def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits):
-    """w(t) in the body frame (three panels) and the polhode seen along axes 3 and 1."""
+    """w(t) in the body frame (three panels) and the polhode seen along axes 3 and 1; the
+    samples come from the exact motion (:func:`rbcli.core.freestate.plot_samples`)."""
     from rbcli.render.plots import figure, style
 
-    t0, t1 = fs.plot_span(motion, duration)
-    per = motion.period or (t1 - t0)
-    n = int(min(20000, max(1500, 400 * (t1 - t0) / per)))
-    t = np.linspace(t0, t1, n)
-    w = fm.omega_at(motion, t)
+    ps = fs.plot_samples(motion, duration)
+    t0, t1, t, w = ps.t0, ps.t1, ps.t, ps.omega
     ft, tu = du.factor("time")
 
     fig, axes = figure(f"precess: {body.name}", nrows=3, ncols=3, size=(11.0, 4.6))
@@ -198,11 +196,8 @@ def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayU
         ax = axes[i][0]
         ax.plot(t * ft, w[:, i], **style(i))
         ax.set_ylabel(f"ω{AXES[i]} [rad/s]")
-        if motion.flip_interval is not None and motion.first_flip is not None:
-            k = np.arange(0, 50)
-            flips = motion.first_flip + k * motion.flip_interval
-            for tf in flips[(flips >= t0) & (flips <= t1)]:
-                ax.axvline(tf * ft, color="0.7", linewidth=0.7, linestyle=":")
+        for tf in ps.flips:
+            ax.axvline(tf * ft, color="0.7", linewidth=0.7, linestyle=":")
         if t0 < 0.0:
             ax.axvline(0.0, color="0.5", linewidth=0.8)
         ax.set_xlim(t0 * ft, t1 * ft)
@@ -211,10 +206,7 @@ def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayU
     axes[0][0].set_title("ω in the body frame" + (" (dotted: flips)" if motion.flip_interval else ""))
     axes[2][0].set_xlabel(f"t [{tu}]")
 
-    G = motion.angular_momentum_norm
-    m = (fm.omega_at(motion, t, frame="principal") * motion.moments) / G if G > 0 else np.zeros((0, 3))
-    m0 = motion.omega0_principal * motion.moments / G if G > 0 else np.zeros(3)
-    family = fs.polhode_family(motion.moments)
+    m, m0, family = ps.polhode, ps.start, ps.family
     names = [_axis_label(motion, i).replace(" moment", "") for i in range(3)]
     first = (0, 1, 2) if motion.circles_axis == 1 else (2, 0, 1)  # along the circled axis
     extent = float(np.max(np.ptp(m, axis=0))) if m.size else 0.0
