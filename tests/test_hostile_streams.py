@@ -124,7 +124,7 @@ def _wait_for(predicate, timeout=60.0):
 def test_sigterm_during_a_long_csv_leaves_no_temporary_file(tmp_path):
     (tmp_path / "b.yaml").write_text((ROOT / "examples/football.yaml").read_text())
     p = _popen(["precess", "b.yaml", "--omega", "1.7,0,9.8", "--duration", "100",
-                "--samples", "2000000", "--csv", "out.csv"], tmp_path)
+                "--samples", "1000000", "--csv", "out.csv"], tmp_path)
     assert _wait_for(lambda: any(n.startswith(".rbcli-") for n in os.listdir(tmp_path))), "no temp file seen"
     p.send_signal(signal.SIGTERM)
     assert p.wait(timeout=60) == 128 + signal.SIGTERM, p.stderr.read()
