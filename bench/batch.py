@@ -1,10 +1,12 @@
-"""Batch: `rbcli inertia` over 200 small body files, one process per file in a shell
-loop, against one process for all of them (``rbcli inertia *.yaml --json`` prints
-JSON Lines, SPEC §2).
+"""Batch: `rbcli inertia` over 1000 small body files in one process (``rbcli inertia
+*.yaml --json`` prints JSON Lines, SPEC §2) against the naive script
+(``bench/naive_body.py``: CSafeLoader + numpy, no checks) over the same files, goal <= 1.5
+in CPU time (issue 16); and a shell loop, one process per file, over the first
+``--loop-files`` of them.
 
 Usage::
 
-    python bench/batch.py [--files 200] [--runs 2] [--json OUT]
+    python bench/batch.py [--files 1000] [--loop-files 200] [--runs 2] [--json OUT]
 
 The files (1 to 4 parts each: boxes, cylinders, spheres, point masses, some holes,
 mm and kg) are generated into bench/data/batch/ (git-ignored). The two ways are run
@@ -73,21 +75,26 @@ def make_files(n: int, seed: int = 2) -> list[Path]:
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--files", type=int, default=200)
+    ap.add_argument("--files", type=int, default=1000)
+    ap.add_argument("--loop-files", type=int, default=200)
     ap.add_argument("--runs", type=int, default=2)
     ap.add_argument("--json", type=Path)
     args = ap.parse_args()
     files = make_files(args.files)
     rb = " ".join(shlex.quote(a) for a in rbcli_cmd())
     rel = "bench/data/batch"
-    loop = ["bash", "-c", f"for f in {rel}/*.yaml; do {rb} inertia \"$f\" --json || exit 1; done"]
+    nloop = min(args.loop_files, len(files))
+    loop_list = " ".join(f"{rel}/{p.name}" for p in files[:nloop])
+    loop = ["bash", "-c", f"for f in {loop_list}; do {rb} inertia \"$f\" --json || exit 1; done"]
+    one_loop = ["bash", "-c", f"{rb} inertia {loop_list} --json"]
     one = ["bash", "-c", f"{rb} inertia {rel}/*.yaml --json"]
+    naive = ["bash", "-c", f"{shlex.quote(sys.executable)} bench/naive_body.py {rel}/*.yaml"]
     root = DIR.parent.parent.parent
     out = DATA / "batch_out"
     out.mkdir(exist_ok=True)
-    t = {"loop": {"wall": [], "cpu": []}, "one": {"wall": [], "cpu": []}}
+    t = {k: {"wall": [], "cpu": []} for k in ("loop", "one_loop", "one", "naive")}
     for i in range(args.runs):  # alternating; the first run of each keeps its output
-        for k, cmd in (("loop", loop), ("one", one)):
+        for k, cmd in (("loop", loop), ("one_loop", one_loop), ("one", one), ("naive", naive)):
             if i == 0:
                 with open(out / f"{k}.txt", "wb") as fh:
                     w, c = time_once(cmd, cwd=root, stdout=fh)
@@ -97,7 +104,7 @@ def main() -> int:
             t[k]["cpu"].append(c)
     # same answers both ways
     a = (out / "loop.txt").read_text()
-    b = (out / "one.txt").read_text()
+    b = (out / "one_loop.txt").read_text()
     dec = json.JSONDecoder()
     objs_a, i = [], 0
     while i < len(a):
@@ -107,25 +114,37 @@ def main() -> int:
             o, i = dec.raw_decode(a, i)
             objs_a.append(o)
     objs_b = [json.loads(line) for line in b.splitlines() if line.strip()]
-    same = objs_a == objs_b and len(objs_b) == len(files)
+    same = objs_a == objs_b and len(objs_b) == nloop
     res = {
         "files": len(files),
         "runs": args.runs,
-        "loop_command": f"for f in {rel}/*.yaml; do rbcli inertia \"$f\" --json; done",
+        "loop_files": nloop,
+        "loop_command": f"for f in (the first {nloop} files); do rbcli inertia \"$f\" --json; done",
         "one_command": f"rbcli inertia {rel}/*.yaml --json",
+        "naive_command": f"python bench/naive_body.py {rel}/*.yaml",
         "loop_s": med(t["loop"]["wall"]),
+        "one_loop_s": med(t["one_loop"]["wall"]),
         "one_s": med(t["one"]["wall"]),
-        "ratio_loop_over_one": med(t["loop"]["wall"]) / med(t["one"]["wall"]),
-        "loop_per_file_ms": 1000 * med(t["loop"]["wall"]) / len(files),
+        "naive_s": med(t["naive"]["wall"]),
+        "ratio_loop_over_one": med(t["loop"]["wall"]) / med(t["one_loop"]["wall"]),
+        "loop_per_file_ms": 1000 * med(t["loop"]["wall"]) / nloop,
         "one_per_file_ms": 1000 * med(t["one"]["wall"]) / len(files),
-        "cpu_ratio": med(t["loop"]["cpu"]) / med(t["one"]["cpu"]),
+        "cpu_ratio": med(t["loop"]["cpu"]) / med(t["one_loop"]["cpu"]),
+        "one_cpu_s": med(t["one"]["cpu"]),
+        "naive_cpu_s": med(t["naive"]["cpu"]),
+        "ratio_one_over_naive_cpu": med(t["one"]["cpu"]) / med(t["naive"]["cpu"]),
+        "ratio_one_over_naive_wall": med(t["one"]["wall"]) / med(t["naive"]["wall"]),
+        "goal_one_over_naive": 1.5,
         "same_output": same,
         "times": {k: v["wall"] for k, v in t.items()},
     }
-    print(f"{len(files)} files: loop {res['loop_s']:.2f} s ({res['loop_per_file_ms']:.0f} ms/file), "
-          f"one invocation {res['one_s']:.2f} s ({res['one_per_file_ms']:.1f} ms/file): "
-          f"loop/one = {res['ratio_loop_over_one']:.1f} (CPU {res['cpu_ratio']:.1f}); "
-          f"same objects: {same}")
+    print(f"{len(files)} files, one invocation: {res['one_cpu_s']:.2f} s CPU "
+          f"({res['one_per_file_ms']:.1f} ms/file wall) vs naive_body.py {res['naive_cpu_s']:.2f} s CPU: "
+          f"ratio {res['ratio_one_over_naive_cpu']:.2f} CPU, {res['ratio_one_over_naive_wall']:.2f} wall "
+          f"(goal <= 1.5: {'met' if res['ratio_one_over_naive_cpu'] <= 1.5 else 'MISSED'})")
+    print(f"first {nloop} files: loop {res['loop_s']:.2f} s ({res['loop_per_file_ms']:.0f} ms/file), "
+          f"one invocation {res['one_loop_s']:.2f} s: loop/one = {res['ratio_loop_over_one']:.1f} "
+          f"(CPU {res['cpu_ratio']:.1f}); same objects: {same}")
     if args.json:
         args.json.write_text(json.dumps(res, indent=2) + "\n")
     return 0 if same else 1

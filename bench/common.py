@@ -30,6 +30,10 @@ DATA = HERE / "data"
 #: the environment of every timed child: no colour, no rich help, fixed width
 ENV = {**os.environ, "NO_COLOR": "1", "COLUMNS": "100", "PYTHONHASHSEED": "0"}
 ENV.pop("FORCE_COLOR", None)
+# Time THIS checkout's rbcli, whichever checkout the interpreter's `rbcli` script was
+# installed from (a shared venv with another worktree installed editable would otherwise
+# time that one).
+ENV["PYTHONPATH"] = os.pathsep.join(filter(None, (str(ROOT), os.environ.get("PYTHONPATH"))))
 # Users' Pythons cache bytecode; a PYTHONDONTWRITEBYTECODE left in the environment would
 # recompile every rbcli module whose .pyc is stale on every run (measured: +6 ms for
 # rbcli.io.units alone). See also compile_rbcli().

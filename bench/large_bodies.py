@@ -34,7 +34,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from common import DATA, ROOT, alternate, iqr, med, py, rbcli_cmd, run_peak, show  # noqa: E402
+from common import DATA, HERE, ROOT, alternate, iqr, med, py, rbcli_cmd, run_peak, show  # noqa: E402
 
 SMALL = ROOT / "examples" / "square_lamina.yaml"
 ICO = DATA / "ico8.stl"
@@ -236,6 +236,43 @@ def bench_parts(runs: int, sizes: tuple[int, ...] = (500, 2000)) -> dict:
     return out
 
 
+#: the growth table's sizes (parts) and runs of each (the largest are slow: one run)
+GROWTH = ((10, 5), (100, 5), (1000, 3), (10_000, 3), (100_000, 1))
+#: a 100 000-part body is ~18.7 MB, over the default 8 MiB budget: the bench raises it
+BIG_BUDGET = str(32 * 1024 * 1024)
+
+
+def bench_growth(sizes=GROWTH) -> dict:
+    """rbcli inertia --json against bench/naive_body.py (CSafeLoader + numpy, no checks) on
+    the same generated body, alternating, for each size: CPU and wall medians and ratios."""
+    from common import ENV
+
+    ENV["RBCLI_MAX_BODY_BYTES"] = BIG_BUDGET
+    rb = rbcli_cmd()
+    out: dict = {"budget_bytes": int(BIG_BUDGET), "sizes": {}}
+    for n, runs in sizes:
+        path = DATA / f"parts_{n}.yaml"
+        text = body_text(n)
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+        cmds = {"rbcli": [*rb, "inertia", str(path), "--json"],
+                "naive": [py(), str(HERE / "naive_body.py"), str(path)]}
+        t = alternate(cmds, runs, warm=1 if n <= 10_000 else 0)
+        r, q = t["rbcli"], t["naive"]
+        out["sizes"][str(n)] = {
+            "file_mb": round(path.stat().st_size / 1e6, 2), "runs": runs,
+            "rbcli_cpu_s": med(r["cpu"]), "naive_cpu_s": med(q["cpu"]),
+            "rbcli_wall_s": med(r["wall"]), "naive_wall_s": med(q["wall"]),
+            "cpu_ratio": med(r["cpu"]) / med(q["cpu"]), "wall_ratio": med(r["wall"]) / med(q["wall"]),
+            "rbcli_cpu_ms_per_part": 1000 * med(r["cpu"]) / n,
+        }
+        g = out["sizes"][str(n)]
+        print(f"{n:>6} parts ({g['file_mb']:.2f} MB): rbcli {g['rbcli_cpu_s']:.3f} s CPU, naive "
+              f"{g['naive_cpu_s']:.3f} s: ratio {g['cpu_ratio']:.2f} CPU, {g['wall_ratio']:.2f} wall",
+              flush=True)
+    return out
+
+
 def bench_mesh(runs: int, stl: Path) -> dict:
     make_stl(stl)
     body = mesh_body(stl)
@@ -280,6 +317,8 @@ def main() -> int:
     ap.add_argument("--mesh-runs", type=int, default=3)
     ap.add_argument("--stl", type=Path, default=ICO)
     ap.add_argument("--no-mesh", action="store_true")
+    ap.add_argument("--no-growth", action="store_true",
+                    help="skip the 10 to 100 000-part growth table against naive_body.py")
     ap.add_argument("--json", type=Path)
     args = ap.parse_args()
     res = {"parts": bench_parts(args.runs)}
@@ -290,6 +329,8 @@ def main() -> int:
               f"peak {r['peak_rss_mib']:.0f} MiB")
     print(f"marginal cost per part (2000 vs 500): {p['marginal_per_part_ms']:.3f} ms wall, "
           f"{p['marginal_per_part_cpu_ms']:.3f} ms CPU; small body {p['small_s']:.3f} s, peak {p['small_peak_rss_mib']:.0f} MiB")
+    if not args.no_growth:
+        res["growth"] = bench_growth()
     if not args.no_mesh:
         m = bench_mesh(args.mesh_runs, args.stl)
         res["mesh_cli"] = m

@@ -7,9 +7,9 @@ chamfered block by "square minus corner triangles"), from the same body written 
 primitive ``box``, from scipy rotations, or from trimesh on the same arrays — not from
 rbcli's own output.
 
-Most cases run in-process (the loader, typer's CliRunner, ``rbcli.cli.main`` for exit
-status and standard error); a few run as a real process to see the exit status and a
-one-line message without a traceback.
+Most cases run in-process (the loader, or the ``cli`` fixture: ``rbcli.cli.main`` with its
+exit status and standard error); a few run as a real process (``cli_proc``) to see the exit
+status and a one-line message without a traceback.
 """
 
 from __future__ import annotations
@@ -25,10 +25,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
-from typer.testing import CliRunner
 
-import rbcli.cli
-from rbcli.cli import app
 from rbcli.core.inertia import combine
 from rbcli.io.body import load_body
 
@@ -128,32 +125,19 @@ def rel_err(a, b) -> float:
     return float(np.abs(a - b).max() / np.abs(b).max())
 
 
-def run(*args: str):
-    r = CliRunner().invoke(app, list(args))
-    if r.exception and not isinstance(r.exception, SystemExit):
-        raise r.exception
-    return r
+def js(cli, *args: str) -> dict:
+    """``rbcli ARGS --json`` through the ``cli`` fixture: its JSON, after exit status 0 (an
+    error, internal (70) or of input (2), fails here with its message)."""
+    r = cli(*args, "--json")
+    assert r.code == 0, r.err
+    return r.json()
 
 
-def js(*args: str) -> dict:
-    r = run(*args, "--json")
-    assert r.exit_code == 0, r.stderr
-    return json.loads(r.stdout)
-
-
-def main(capsys, *args: str) -> tuple[int, str, str]:
-    """rbcli.cli.main in-process: (exit status, stdout, stderr)."""
-    with pytest.raises(SystemExit) as info:
-        rbcli.cli.main(list(args))
-    out = capsys.readouterr()
-    code = info.value.code
-    return (0 if code is None else int(code)), out.out, out.err
-
-
-def proc(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PYTHONPATH=str(ROOT), NO_COLOR="1")
-    return subprocess.run([sys.executable, "-m", "rbcli", *args], capture_output=True, text=True,
-                          env=env, cwd=cwd, timeout=60)
+def table(cli, *args: str) -> str:
+    """``rbcli ARGS`` through the ``cli`` fixture: its table, after exit status 0."""
+    r = cli(*args)
+    assert r.code == 0, r.err
+    return r.out
 
 
 # Box sides exact in float32 (binary STL stores float32): only float64 round-off is left.
@@ -195,14 +179,14 @@ def test_a_mesh_box_is_the_primitive_box(tmp_path, fmt):
     assert bm.warnings == ()
 
 
-def test_inertia_and_principal_report_volume_and_area_of_the_mesh_part(tmp_path):
+def test_inertia_and_principal_report_volume_and_area_of_the_mesh_part(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     write_stl_binary(tmp_path / "box.stl", V, F)
     parts = mesh_part("box.stl", f"density: {RHO}") + "  - name: lug\n    shape: point\n    mass: 1\n    at: [1, 0, 0]\n"
     f = str(body_file(tmp_path, parts))
     vol, area = A * B * C, 2 * (A * B + B * C + C * A)
     for cmd in ("inertia", "principal"):
-        j = js(cmd, f)
+        j = js(cli, cmd, f)
         mesh_row, point_row = j["parts"]
         assert mesh_row["name"] == "housing" and mesh_row["shape"] == "mesh"
         # sums of 12 products of exact binary fractions: round-off only
@@ -212,21 +196,21 @@ def test_inertia_and_principal_report_volume_and_area_of_the_mesh_part(tmp_path)
         assert mesh_row["mass"] == pytest.approx(RHO * vol, rel=1e-14)
         assert not {"volume", "area", "triangles"} & set(point_row)
     # the SPEC keys still lead, unrenamed
-    assert list(js("principal", f))[:5] == ["reference", "moments", "axes", "symmetry", "stable"]
-    assert list(js("inertia", f))[:5] == ["mass", "com", "reference", "inertia", "inertia_com"]
+    assert list(js(cli, "principal", f))[:5] == ["reference", "moments", "axes", "symmetry", "stable"]
+    assert list(js(cli, "inertia", f))[:5] == ["mass", "com", "reference", "inertia", "inertia_com"]
     # tables: volume and area columns, in SI and in the display units asked for
     for cmd in ("inertia", "principal"):
-        out = run(cmd, f).stdout
+        out = table(cli, cmd, f)
         assert "volume [m³]" in out and "area [m²]" in out and "triangles" in out
         assert "0.015625" in out and "0.4375" in out  # V = 1/64 m^3, A = 7/16 m^2, exact
-        mm = run(cmd, f, "--units", "mm,g").stdout
+        mm = table(cli, cmd, f, "--units", "mm,g")
         assert "volume [mm³]" in mm and "1.5625e+07" in mm and "437500" in mm
 
 
-def test_a_body_without_meshes_shows_no_mesh_columns():
-    out = run("inertia", str(EX / "bracket.yaml")).stdout + run("principal", str(EX / "bracket.yaml")).stdout
+def test_a_body_without_meshes_shows_no_mesh_columns(cli):
+    out = table(cli, "inertia", str(EX / "bracket.yaml")) + table(cli, "principal", str(EX / "bracket.yaml"))
     assert "parts" in out and "volume [" not in out and "mesh parts" not in out
-    assert "volume" not in json.dumps(js("principal", str(EX / "bracket.yaml"))["parts"])
+    assert "volume" not in json.dumps(js(cli, "principal", str(EX / "bracket.yaml"))["parts"])
 
 
 # ---------------------------------------------------------------------------- scale, units
@@ -262,16 +246,16 @@ def test_scale_and_units_give_the_same_body(tmp_path):
     assert mp.mass == pytest.approx(ref.mass, rel=1e-13)
 
 
-def test_bad_scale_and_units_are_located_errors(tmp_path, capsys):
+def test_bad_scale_and_units_are_located_errors(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     write_obj(tmp_path / "m.obj", V, F)
     for extra, words in (("units: kg", "length unit"), ("units: furlongz", "units"),
                          ("scale: -2", "positive"), ("scale: 0", "positive"),
                          ("allow_open: 1", "true or false"), ("colour: red", "unknown key 'colour'")):
         f = body_file(tmp_path, mesh_part("m.obj", f"density: 1\n{extra}"))
-        code, out, err = main(capsys, "inertia", str(f))
-        assert code == 2 and out == "" and words in err, (extra, err)
-        assert re.match(rf"rbcli: {re.escape(str(f))}:\d+:\d+: ", err) and err.count("\n") == 1
+        r = cli("inertia", str(f))
+        assert r.code == 2 and r.out == "" and words in r.err, (extra, r.err)
+        assert re.match(rf"rbcli: {re.escape(str(f))}:\d+:\d+: ", r.err) and r.err.count("\n") == 1
 
 
 # ---------------------------------------------------------------------------- far away
@@ -353,76 +337,76 @@ def _bad_meshes(tmp: Path) -> dict[str, tuple[Path, str]]:
     return out
 
 
-def test_every_bad_mesh_is_one_located_line_naming_the_file(tmp_path, capsys):
+def test_every_bad_mesh_is_one_located_line_naming_the_file(tmp_path, cli):
     for key, (path, words) in _bad_meshes(tmp_path).items():
         f = body_file(tmp_path, mesh_part(path.name), f"{key}.yaml")
-        code, out, err = main(capsys, "inertia", str(f))
-        assert code == 2 and out == "", (key, err)
+        r = cli("inertia", str(f))
+        assert r.code == 2 and r.out == "", (key, r.err)
         # one line: where in the body file (the file: value, line 5 col 11), the part, the mesh file
-        assert err.count("\n") == 1 and "Traceback" not in err, (key, err)
-        assert err.startswith(f"rbcli: {f}:5:11: part 'housing' (mesh): {tmp_path / path.name}"), (key, err)
-        assert words in err, (key, err)
-    open_msg = main(capsys, "inertia", str(tmp_path / "open.yaml"))[2]
+        assert r.err.count("\n") == 1 and "Traceback" not in r.err, (key, r.err)
+        assert r.err.startswith(f"rbcli: {f}:5:11: part 'housing' (mesh): {tmp_path / path.name}"), (key, r.err)
+        assert words in r.err, (key, r.err)
+    open_msg = cli("inertia", str(tmp_path / "open.yaml")).err
     assert "allow_open: true" in open_msg  # says how to accept it
 
 
-def test_allow_open_accepts_an_open_mesh_with_a_warning(tmp_path, capsys):
+def test_allow_open_accepts_an_open_mesh_with_a_warning(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     write_stl_ascii(tmp_path / "open.stl", V, F[1:])
     f = body_file(tmp_path, mesh_part("open.stl", "density: 1000\nallow_open: true"))
-    code, out, err = main(capsys, "inertia", str(f), "--json")
-    assert code == 0 and json.loads(out)["mass"] > 0
+    r = cli("inertia", str(f), "--json")
+    assert r.code == 0 and json.loads(r.out)["mass"] > 0
     assert re.fullmatch(rf"rbcli: {re.escape(str(f))}:5:11: warning: part 'housing' \(mesh\): "
-                        rf"{re.escape(str(tmp_path / 'open.stl'))}: mesh is open \(3 boundary edges\)[^\n]*\n", err)
+                        rf"{re.escape(str(tmp_path / 'open.stl'))}: mesh is open \(3 boundary edges\)[^\n]*\n", r.err)
 
 
-def test_an_inward_mesh_is_turned_outward_with_a_warning(tmp_path, capsys):
+def test_an_inward_mesh_is_turned_outward_with_a_warning(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     write_stl_binary(tmp_path / "inv.stl", V, F[:, ::-1])
     write_stl_binary(tmp_path / "box.stl", V, F)
     inv = body_file(tmp_path, mesh_part("inv.stl", f"density: {RHO}"), "inv.yaml")
     good = body_file(tmp_path, mesh_part("box.stl", f"density: {RHO}"), "good.yaml")
-    code, out, err = main(capsys, "inertia", str(inv), "--json")
-    assert code == 0
-    assert err.count("\n") == 1 and err.startswith(f"rbcli: {inv}:5:11: warning: part 'housing' (mesh): {tmp_path / 'inv.stl'}: ")
-    assert "inward" in err and "outward" in err
-    got, want = json.loads(out), js("inertia", str(good))
+    r = cli("inertia", str(inv), "--json")
+    assert r.code == 0
+    assert r.err.count("\n") == 1 and r.err.startswith(f"rbcli: {inv}:5:11: warning: part 'housing' (mesh): {tmp_path / 'inv.stl'}: ")
+    assert "inward" in r.err and "outward" in r.err
+    got, want = json.loads(r.out), js(cli, "inertia", str(good))
     assert got["mass"] == pytest.approx(RHO * A * B * C, rel=1e-14)  # positive, not -m
     assert rel_err(got["inertia_com"], want["inertia_com"]) < 1e-14  # the same sums, negated
     assert got["parts"][0]["volume"] > 0
 
 
-def test_bad_meshes_through_a_real_process(tmp_path):
+def test_bad_meshes_through_a_real_process(tmp_path, cli_proc):
     bad = _bad_meshes(tmp_path)
     for key in ("truncated", "open"):
         path, words = bad[key]
         body_file(tmp_path, mesh_part(path.name), f"{key}.yaml")
-        r = proc("inertia", f"{key}.yaml", cwd=tmp_path)
-        assert r.returncode == 2 and r.stdout == "", (key, r.stderr)
+        r = cli_proc("inertia", f"{key}.yaml", cwd=tmp_path)
+        assert r.code == 2 and r.out == "", (key, r.err)
         # the path as the body file names it (relative to the current folder)
         assert re.fullmatch(rf"rbcli: {key}\.yaml:5:11: part 'housing' \(mesh\): {re.escape(path.name)}: [^\n]*{words}[^\n]*\n",
-                            r.stderr), r.stderr
+                            r.err), r.err
     V, F, _ = box_mesh(A, B, C)
     write_stl_binary(tmp_path / "inv.stl", V, F[:, ::-1])
     body_file(tmp_path, mesh_part("inv.stl"), "inv.yaml")
-    r = proc("principal", "inv.yaml", "--json", cwd=tmp_path)
-    assert r.returncode == 0 and json.loads(r.stdout)["parts"][0]["volume"] > 0
-    assert re.fullmatch(r"rbcli: inv\.yaml:5:11: warning: part 'housing' \(mesh\): inv\.stl: [^\n]*inward[^\n]*\n", r.stderr)
+    r = cli_proc("principal", "inv.yaml", "--json", cwd=tmp_path)
+    assert r.code == 0 and r.json()["parts"][0]["volume"] > 0
+    assert re.fullmatch(r"rbcli: inv\.yaml:5:11: warning: part 'housing' \(mesh\): inv\.stl: [^\n]*inward[^\n]*\n", r.err)
 
 
-def test_the_yaml_is_checked_before_the_mesh_is_read(tmp_path, capsys):
+def test_the_yaml_is_checked_before_the_mesh_is_read(tmp_path, cli):
     # a missing mass is reported even though the file does not exist: no time spent reading
     f = body_file(tmp_path, "  - name: housing\n    shape: mesh\n    file: nonesuch.stl\n")
-    code, _, err = main(capsys, "inertia", str(f))
-    assert code == 2 and "needs its mass or density" in err and "no such file" not in err
+    r = cli("inertia", str(f))
+    assert r.code == 2 and "needs its mass or density" in r.err and "no such file" not in r.err
     f = body_file(tmp_path, mesh_part("nonesuch.stl", "density: 3\nrotate: {axis: [0, 0, 0], angle: 3}"))
-    assert "rotate axis must be a non-zero vector" in main(capsys, "inertia", str(f))[2]
+    assert "rotate axis must be a non-zero vector" in cli("inertia", str(f)).err
 
 
 # ---------------------------------------------------------------------------- holes
 
 
-def test_a_hole_cut_from_a_mesh_takes_the_mesh_density(tmp_path):
+def test_a_hole_cut_from_a_mesh_takes_the_mesh_density(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     write_stl_binary(tmp_path / "box.stl", V, F)
     r, d = 0.03, np.array([0.1, 0.05, 0.0])
@@ -430,7 +414,7 @@ def test_a_hole_cut_from_a_mesh_takes_the_mesh_density(tmp_path):
             f"    at: [{d[0]}, {d[1]}, {d[2]}]\n    subtract: true\n    cut_from: housing\n")
     rho = 2000.0
     f = str(body_file(tmp_path, mesh_part("box.stl", f"density: {rho}") + hole))
-    j = js("inertia", f)
+    j = js(cli, "inertia", f)
     m_box, m_cyl = rho * A * B * C, rho * math.pi * r * r * C
     J_box = box_closed_form(m_box, A, B, C)
     J_cyl = np.diag([m_cyl * (3 * r * r + C * C) / 12] * 2 + [m_cyl * r * r / 2])
@@ -442,7 +426,7 @@ def test_a_hole_cut_from_a_mesh_takes_the_mesh_density(tmp_path):
     assert rel_err(j["inertia"], J_box - J_cyl) < 1e-13
     # a mesh given by its mass: the hole takes the mean density mass / volume
     f2 = str(body_file(tmp_path, mesh_part("box.stl", "mass: 3") + hole, "bymass.yaml"))
-    j2 = js("inertia", f2)
+    j2 = js(cli, "inertia", f2)
     assert j2["parts"][1]["mass"] == pytest.approx(-3 * (math.pi * r * r * C) / (A * B * C), rel=1e-13)
 
 
@@ -472,62 +456,63 @@ def _pair(tmp: Path) -> tuple[str, str]:
     return str(mesh), str(prim)
 
 
-def test_balance_and_precess_see_the_mesh_as_the_box(tmp_path):
+def test_balance_and_precess_see_the_mesh_as_the_box(tmp_path, cli):
     mesh, prim = _pair(tmp_path)
     # balance: the unbalance of the same solid; ~1e3 operations -> 1e-12
-    a, b = js("balance", mesh), js("balance", prim)
+    a, b = js(cli, "balance", mesh), js(cli, "balance", prim)
     for key in ("mass", "eccentricity", "static_unbalance", "couple_unbalance", "tilt_deg"):
         assert a[key] == pytest.approx(b[key], rel=1e-10), key
     assert a["statically_balanced"] is b["statically_balanced"] is False
     assert a["couple_unbalance"] > 0
     # precess: torque-free motion; the elliptic period is well conditioned away from the separatrix
-    a, b = js("precess", mesh, "--omega", "0.3,0.2,3"), js("precess", prim, "--omega", "0.3,0.2,3")
+    a, b = js(cli, "precess", mesh, "--omega", "0.3,0.2,3"), js(cli, "precess", prim, "--omega", "0.3,0.2,3")
     for key in ("kinetic_energy", "period"):
         assert a[key] == pytest.approx(b[key], rel=1e-10), key
     np.testing.assert_allclose(a["angular_momentum"], b["angular_momentum"], rtol=1e-10)
 
 
-def test_balance_apply_writes_a_body_whose_mesh_still_loads(tmp_path):
+def test_balance_apply_writes_a_body_whose_mesh_still_loads(tmp_path, cli):
     mesh, _ = _pair(tmp_path)
     out = tmp_path / "elsewhere" / "balanced.yaml"
     out.parent.mkdir()
-    r = run("balance", mesh, "--planes", "-0.05,0.05", "--radius", "0.1", "--apply", str(out))
-    assert r.exit_code in (0, 1), r.stderr
+    r = cli("balance", mesh, "--planes", "-0.05,0.05", "--radius", "0.1", "--apply", str(out))
+    assert r.code in (0, 1), r.err
     body = load_body(str(out))  # the mesh path was rewritten for the new folder
     assert [p.shape for p in body.parts][0] == "mesh"
-    a = js("balance", str(out))
+    a = js(cli, "balance", str(out))
     # two exact correction masses: the ideal verdict after them
     assert a["statically_balanced"] and a["dynamically_balanced"]
 
 
-def test_include_stdin_and_expr_find_the_mesh(tmp_path, monkeypatch):
+def test_include_stdin_and_expr_find_the_mesh(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     sub = tmp_path / "sub"
     sub.mkdir()
     write_stl_binary(sub / "box.stl", V, F)
     body_file(sub, mesh_part("box.stl", f"density: {RHO}"), "part.yaml")
     top = body_file(tmp_path, "  - name: sub\n    shape: include\n    file: sub/part.yaml\n    at: [1, 0, 0]\n")
-    j = js("inertia", str(top))
+    j = js(cli, "inertia", str(top))
     m = RHO * A * B * C
     assert j["mass"] == pytest.approx(m, rel=1e-14) and j["parts"][0]["name"] == "sub/housing"
     assert j["parts"][0]["volume"] == pytest.approx(A * B * C, rel=1e-14)
-    monkeypatch.chdir(sub)  # -e and standard input: paths relative to the current folder
-    assert js("inertia", "-e", "{shape: mesh, file: box.stl, mass: 2}")["mass"] == 2
-    r = CliRunner().invoke(app, ["inertia", "-", "--json"], input=f"shape: mesh\nfile: box.stl\ndensity: {RHO}\n")
-    assert r.exit_code == 0 and json.loads(r.stdout)["mass"] == pytest.approx(m, rel=1e-14)
-    r = CliRunner().invoke(app, ["inertia", "-e", "{shape: mesh, file: nope.stl, mass: 2}"])
-    assert r.exit_code != 0 and "<expr>:1:21: part 'mesh1' (mesh): nope.stl: no such file" in str(r.exception)
+    # -e and standard input: paths relative to the current folder
+    r = cli("inertia", "-e", "{shape: mesh, file: box.stl, mass: 2}", "--json", cwd=sub)
+    assert r.code == 0 and r.json()["mass"] == 2, r.err
+    r = cli("inertia", "-", "--json", input=f"shape: mesh\nfile: box.stl\ndensity: {RHO}\n", cwd=sub)
+    assert r.code == 0 and r.json()["mass"] == pytest.approx(m, rel=1e-14)
+    r = cli("inertia", "-e", "{shape: mesh, file: nope.stl, mass: 2}", cwd=sub)
+    assert r.code == 2 and "<expr>:1:21: part 'mesh1' (mesh): nope.stl: no such file" in r.err
 
 
 # ---------------------------------------------------------------------------- catalogue, start-up
 
 
-def test_the_shapes_catalogue_describes_the_mesh():
-    out = run("shapes", "mesh").stdout
+def test_the_shapes_catalogue_describes_the_mesh(cli):
+    out = table(cli, "shapes", "mesh")
     for words in ("STL", "OBJ", "file", "scale", "units", "allow_open", "density",
                   "boundary edges", "manifold", "orientation", "inward", "truncated", "NaN"):
         assert words in out, words
-    (entry,) = [e for e in js("shapes") if e["shape"] == "mesh"]
+    (entry,) = [e for e in js(cli, "shapes") if e["shape"] == "mesh"]
     assert "allow_open" in entry["parameters"]
 
 
@@ -552,7 +537,7 @@ def test_bodies_without_meshes_do_not_import_the_mesh_modules():
 # ---------------------------------------------------------------------------- the example
 
 
-def test_the_housing_example_prints_its_number():
+def test_the_housing_example_prints_its_number(cli):
     """examples/housing.yaml, worked by hand.
 
     housing.stl: a 100 x 100 mm square with its corners chamfered 20 mm at 45°, 60 mm long
@@ -575,7 +560,7 @@ def test_the_housing_example_prints_its_number():
     assert f"{Izz:.6g}" == "0.00257626" and f"{mass:.6g}" == "1.3978"  # the header's numbers
 
     ex = str(EX / "housing.yaml")
-    j = js("inertia", ex, "--axis", "z")
+    j = js(cli, "inertia", ex, "--axis", "z")
     # coordinates are integers in mm (exact in float32); float64 round-off only
     assert j["axis_moment"] == pytest.approx(Izz, rel=1e-12)
     assert j["mass"] == pytest.approx(mass, rel=1e-12)
@@ -585,24 +570,24 @@ def test_the_housing_example_prints_its_number():
     side = 4 * (a - 2 * b) + 4 * b * math.sqrt(2)  # the octagon's perimeter, mm
     assert housing["area"] == pytest.approx((2 * area + side * L) * MM**2, rel=1e-13)
     assert housing["triangles"] == 32
-    out = run("inertia", ex, "--axis", "z").stdout
+    out = table(cli, "inertia", ex, "--axis", "z")
     assert "0.00257626" in out and "1.3978" in out
     header = (EX / "housing.yaml").read_text()
     assert "0.00257626" in header and "1.3978" in header
-    pj = js("principal", ex)
+    pj = js(cli, "principal", ex)
     assert pj["parts"][0]["volume"] == housing["volume"]
-    assert "mesh parts" in run("principal", ex).stdout
+    assert "mesh parts" in table(cli, "principal", ex)
 
 
-def test_what_the_mesh_check_tolerates_is_said_on_stderr(tmp_path, capsys):
+def test_what_the_mesh_check_tolerates_is_said_on_stderr(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     F2 = np.vstack([F, [[0, 0, 1]]])  # a triangle that repeats a vertex: no area, no edges
     write_obj(tmp_path / "extra.obj", V, F2)
     f = body_file(tmp_path, mesh_part("extra.obj", f"density: {RHO}"))
-    code, out, err = main(capsys, "inertia", str(f), "--json")
-    assert code == 0 and json.loads(out)["mass"] == pytest.approx(RHO * A * B * C, rel=1e-14)
-    assert err == (f"rbcli: {f}:5:11: warning: part 'housing' (mesh): {tmp_path / 'extra.obj'}: "
-                   "dropped 1 degenerate triangle (a repeated vertex)\n")
+    r = cli("inertia", str(f), "--json")
+    assert r.code == 0 and json.loads(r.out)["mass"] == pytest.approx(RHO * A * B * C, rel=1e-14)
+    assert r.err == (f"rbcli: {f}:5:11: warning: part 'housing' (mesh): {tmp_path / 'extra.obj'}: "
+                     "dropped 1 degenerate triangle (a repeated vertex)\n")
 
 
 # ------------------------------------------------------------- welding, file checks

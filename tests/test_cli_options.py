@@ -6,7 +6,9 @@
   independent unit library, never from rbcli's own parser.
 - Each list option of inertia, principal and balance through the CLI, against closed forms.
 - Usage errors and bad numbers are one line on standard error, exit 2 (F4, F5), through the
-  real entry point (``python -m rbcli``); help, version, Ctrl-C and --debug/RBCLI_DEBUG.
+  real entry point (``python -m rbcli``, the ``cli_proc`` fixture); help, version; Ctrl-C,
+  arithmetic and internal errors and --debug/RBCLI_DEBUG in-process (the ``cli`` fixture,
+  through rbcli.cli.main and its error-to-exit-status map).
 - typer's parameter coercion: rbcli's fast path (rbcli/cli/app.py) gives what typer's own
   pydantic coercion gives, and it is active (F13).
 """
@@ -16,16 +18,14 @@ from __future__ import annotations
 import cmath
 import json
 import math
-import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pint
 import pytest
-from typer.testing import CliRunner
 
-import rbcli.cli
+import rbcli
 from rbcli.cli import app
 from rbcli.cli import common as c
 from rbcli.errors import InputError, NonFiniteResult
@@ -111,28 +111,28 @@ def test_scalar_quantity_unchanged_and_degrees_exact():
 # ----------------------------------------------------------------------------- through the CLI
 
 
-def js(*args: str, code: int = 0) -> dict:
-    r = CliRunner().invoke(app, [*args, "--json"])
-    if r.exception and not isinstance(r.exception, SystemExit):
-        raise r.exception
-    assert r.exit_code == code, r.stderr
-    return json.loads(r.stdout)
+def js(cli, *args: str, code: int = 0) -> dict:
+    """``rbcli ARGS --json`` through the ``cli`` fixture: its JSON, after the exit status
+    ``code`` (an error, internal (70) or of input (2), fails here with its message)."""
+    r = cli(*args, "--json")
+    assert r.code == code, r.err
+    return r.json()
 
 
-def test_inertia_about_a_point_with_a_trailing_unit():
+def test_inertia_about_a_point_with_a_trailing_unit(cli):
     # the lamina about (1,1,1) mm: parallel axes from the com (0.5, 0.5, 0); m = 1, a = 1
-    d = js("inertia", LAMINA, "--about", "1,1,1 mm")
+    d = js(cli, "inertia", LAMINA, "--about", "1,1,1 mm")
     p = [si("1 mm", "m")] * 3
     assert d["reference"] == [pytest.approx(x, rel=ULP) for x in p]
-    same = js("inertia", LAMINA, "--about", "1 mm,1 mm,1 mm")
+    same = js(cli, "inertia", LAMINA, "--about", "1 mm,1 mm,1 mm")
     assert same["reference"] == d["reference"] and same["inertia"] == d["inertia"]
     # a component with its own unit keeps it
-    d2 = js("inertia", LAMINA, "--about", "10 mm,0,2 cm")
+    d2 = js(cli, "inertia", LAMINA, "--about", "10 mm,0,2 cm")
     assert d2["reference"] == [pytest.approx(0.01, rel=ULP), 0.0, pytest.approx(0.02, rel=ULP)]
 
 
-def test_inertia_omega_in_rpm_applies_to_every_component():
-    d = js("inertia", LAMINA, "--about", "com", "--omega", "100,0,300 rpm")
+def test_inertia_omega_in_rpm_applies_to_every_component(cli):
+    d = js(cli, "inertia", LAMINA, "--about", "com", "--omega", "100,0,300 rpm")
     w = [si("100 rpm", "rad/s"), 0.0, si("300 rpm", "rad/s")]
     assert d["omega"] == [pytest.approx(x, rel=4 * ULP) for x in w]
     # T = w.J.w/2 with J about the com of a unit square lamina: diag(1/12, 1/12, 1/6)
@@ -140,15 +140,16 @@ def test_inertia_omega_in_rpm_applies_to_every_component():
     assert d["kinetic_energy"] == pytest.approx(T, rel=1e-12)  # a dozen roundings
 
 
-def test_inertia_axis_is_unitless_and_refuses_a_unit():
-    d = js("inertia", LAMINA, "--axis", "1,1,0")
+def test_inertia_axis_is_unitless_and_refuses_a_unit(cli):
+    d = js(cli, "inertia", LAMINA, "--axis", "1,1,0")
     assert d["axis_moment"] == pytest.approx(1 / 12, rel=1e-12)  # the diagonal: m a^2/12
-    r = CliRunner().invoke(app, ["inertia", LAMINA, "--axis", "1,1,0 mm"])
-    assert isinstance(r.exception, InputError) and str(r.exception).startswith("--axis: ")
+    r = cli("inertia", LAMINA, "--axis", "1,1,0 mm")
+    assert r.code == 2 and r.out == "" and r.err.startswith("rbcli: --axis: ")  # an InputError
+    assert r.err.count("\n") == 1 and "this is a bug" not in r.err
 
 
-def test_principal_about_with_a_trailing_unit():
-    d = js("principal", LAMINA, "--about", "0,0,5 cm")
+def test_principal_about_with_a_trailing_unit(cli):
+    d = js(cli, "principal", LAMINA, "--about", "0,0,5 cm")
     assert d["reference"] == [0.0, 0.0, pytest.approx(0.05, rel=ULP)]
 
 
@@ -170,8 +171,8 @@ RT = 1e-12
     ("0,400", "100", "0,400"),  # bare: the body's units (two_disk_rotor.yaml is in mm)
     ("0 mm,40 cm", "10 cm", "0,40 cm"),
 ])
-def test_balance_list_options(planes, radius, bearings):
-    d = js("balance", TWO_DISK, "--planes", planes, "--radius", radius, "--bearings", bearings,
+def test_balance_list_options(cli, planes, radius, bearings):
+    d = js(cli, "balance", TWO_DISK, "--planes", planes, "--radius", radius, "--bearings", bearings,
            "--speed", "3000 rpm")
     (mA, aA), (mB, aB) = _two_disk_corrections(0.0, 0.4, 0.1, 0.1)
     A, B = d["corrections"]
@@ -182,16 +183,16 @@ def test_balance_list_options(planes, radius, bearings):
     assert [f["plane"] for f in d["bearing_forces"]] == [0.0, pytest.approx(0.4, rel=ULP)]
 
 
-def test_balance_radius_per_plane_and_through_with_a_trailing_unit():
+def test_balance_radius_per_plane_and_through_with_a_trailing_unit(cli):
     # two radii, one unit after the last: 100 mm and 200 mm
-    d = js("balance", TWO_DISK, "--planes", "0,400 mm", "--radius", "100,200 mm")
+    d = js(cli, "balance", TWO_DISK, "--planes", "0,400 mm", "--radius", "100,200 mm")
     (mA, _), (mB, _) = _two_disk_corrections(0.0, 0.4, 0.1, 0.2)
     assert [x["radius"] for x in d["corrections"]] == [pytest.approx(0.1, rel=ULP), pytest.approx(0.2, rel=ULP)]
     assert d["corrections"][0]["mass"] == pytest.approx(mA, rel=RT)
     assert d["corrections"][1]["mass"] == pytest.approx(mB, rel=RT)
     # the shaft through (0, 0, 100 mm): planes are measured from there, so -100,300 mm are
     # the same physical planes z = 0 and 0.4 m, and the same masses and angles
-    d2 = js("balance", TWO_DISK, "--through", "0,0,100 mm", "--planes=-100,300 mm", "--radius", "100 mm")
+    d2 = js(cli, "balance", TWO_DISK, "--through", "0,0,100 mm", "--planes=-100,300 mm", "--radius", "100 mm")
     assert d2["shaft"]["through"] == [0.0, 0.0, pytest.approx(0.1, rel=ULP)]
     (mA, aA), (mB, aB) = _two_disk_corrections(0.0, 0.4, 0.1, 0.1)
     A, B = d2["corrections"]
@@ -199,37 +200,31 @@ def test_balance_radius_per_plane_and_through_with_a_trailing_unit():
     assert A["angle_deg"] == pytest.approx(aA, abs=1e-9) and B["angle_deg"] == pytest.approx(aB, abs=1e-9)
 
 
-def test_balance_shaft_mark_and_zero_mark_with_units():
-    base = js("balance", TWO_DISK)
+def test_balance_shaft_mark_and_zero_mark_with_units(cli):
+    base = js(cli, "balance", TWO_DISK)
     # U = 1000 + 1600i g·mm: its angle atan2(1600, 1000) from the 0° mark (sheet §3.1: 57.995°)
     a0 = math.degrees(math.atan2(1600, 1000))
     assert base["static_unbalance_angle_deg"] == pytest.approx(a0, abs=1e-9)
     # --zero-mark-deg turns the mark: the angle drops by as much, in degrees or any angle unit
     for text, turn in (("30", 30.0), ("0.5 rad", math.degrees(0.5)), ("90 deg", 90.0)):
-        d = js("balance", TWO_DISK, "--zero-mark-deg", text)
+        d = js(cli, "balance", TWO_DISK, "--zero-mark-deg", text)
         assert d["static_unbalance_angle_deg"] == pytest.approx((a0 - turn) % 360, abs=1e-9)
     # --mark along body y: the 0° mark is +y, so U's angle drops by 90°
-    d = js("balance", TWO_DISK, "--shaft", "0,0,1", "--mark", "0,1,0")
+    d = js(cli, "balance", TWO_DISK, "--shaft", "0,0,1", "--mark", "0,1,0")
     assert d["static_unbalance_angle_deg"] == pytest.approx((a0 - 90) % 360, abs=1e-9)
 
 
 # ----------------------------------------------------------------------------- the real entry point
 
 
-def cli(*args: str, env: dict | None = None) -> subprocess.CompletedProcess:
-    e = dict(os.environ, NO_COLOR="1")
-    e.pop("RBCLI_DEBUG", None)
-    e.update(env or {})
-    return subprocess.run([sys.executable, "-m", "rbcli", *args], capture_output=True, text=True,
-                          env=e, cwd=ROOT, timeout=60)
-
-
-def one_line(p: subprocess.CompletedProcess, code: int = 2) -> str:
-    assert p.returncode == code, (p.returncode, p.stderr)
-    assert p.stdout == ""
-    lines = p.stderr.splitlines()
-    assert len(lines) == 1 and lines[0].startswith("rbcli: "), p.stderr
-    assert "Traceback" not in p.stderr and "this is a bug" not in p.stderr
+def one_line(r, code: int = 2) -> str:
+    """The one ``rbcli:`` line on standard error of the run ``r`` (a fixture's Run), after
+    checking the exit status, an empty standard output and no traceback or bug report."""
+    assert r.code == code, (r.code, r.err)
+    assert r.out == ""
+    lines = r.err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("rbcli: "), r.err
+    assert "Traceback" not in r.err and "this is a bug" not in r.err
     return lines[0]
 
 
@@ -243,96 +238,88 @@ def one_line(p: subprocess.CompletedProcess, code: int = 2) -> str:
     (["balance", TWO_DISK, "--zero-mark-deg", "5 kg"], "rbcli: --zero-mark-deg: "),
     (["inertia", LAMINA, "--about", "10 mm,5,0"], "rbcli: --about: "),
 ])
-def test_usage_errors_are_one_line(args, says):
-    line = one_line(cli(*args))
+def test_usage_errors_are_one_line(cli_proc, args, says):
+    line = one_line(cli_proc(*args))
     assert line.startswith(says), line
     if says.startswith("rbcli: inertia:") or says.startswith("rbcli: balance:") or "field-balance" in says:
         assert line.endswith(f"(see 'rbcli {args[0]} --help')")
 
 
-def test_help_version_and_debug_still_work():
-    p = cli("--version")
-    assert p.returncode == 0 and p.stdout.strip() == f"rbcli {rbcli.__version__}" and p.stderr == ""
-    p = cli("inertia", "--help")
-    assert p.returncode == 0 and p.stdout.startswith("Usage: rbcli inertia") and p.stderr == ""
-    p = cli("-h")
-    assert p.returncode == 0 and "Commands:" in p.stdout
-    p = cli("--debug", "inertia", "-e", BOX, "--json")
-    assert p.returncode == 0 and json.loads(p.stdout)["mass"] == 2.0
+def test_help_version_and_debug_still_work(cli_proc):
+    p = cli_proc("--version")
+    assert p.code == 0 and p.out.strip() == f"rbcli {rbcli.__version__}" and p.err == ""
+    p = cli_proc("inertia", "--help")
+    assert p.code == 0 and p.out.startswith("Usage: rbcli inertia") and p.err == ""
+    p = cli_proc("-h")
+    assert p.code == 0 and "Commands:" in p.out
+    p = cli_proc("--debug", "inertia", "-e", BOX, "--json")
+    assert p.code == 0 and json.loads(p.out)["mass"] == 2.0
 
 
 @pytest.mark.parametrize("args", [
     ["rollcheck", PENNY, "--radius", "1e300", "--speed", "1"],  # critical spin underflows: 1/0
     ["rollcheck", PENNY, "--speed", "1e300", "--json"],  # the lean frequency overflows
 ])
-def test_numbers_too_large_or_small_exit_2_on_one_line(args):
-    line = one_line(cli(*args))
+def test_numbers_too_large_or_small_exit_2_on_one_line(cli_proc, args):
+    line = one_line(cli_proc(*args))
     assert "too large or too small to compute with" in line
     assert line.endswith("check the options and the body's numbers")
 
 
 @pytest.mark.parametrize("extra", [[], ["--json"]])
-def test_gyrocompass_overflow_exits_2_on_one_line(extra):
+def test_gyrocompass_overflow_exits_2_on_one_line(cli_proc, extra):
     # C S W cos(lat)/A = 1e308 * 1e308 * 7.3e-5 * cos 30° overflows: no table of inf and a
     # period of 0, no JSON with a null directive
-    line = one_line(cli("gyrocompass", "--ratio", "1e308", "--spin", "1e308", "--latitude", "30", *extra))
+    line = one_line(cli_proc("gyrocompass", "--ratio", "1e308", "--spin", "1e308", "--latitude", "30", *extra))
     assert line.startswith("rbcli: --ratio, --spin, --earth-rate: the directive torque") and "overflows" in line
 
 
-def test_rollcheck_table_with_an_overflowed_number_exits_2():
+def test_rollcheck_table_with_an_overflowed_number_exits_2(cli_proc):
     # at 1e300 m/s the lean frequency overflows to inf: the table refuses it as the JSON does
-    line = one_line(cli("rollcheck", PENNY, "--speed", "1e300"))
+    line = one_line(cli_proc("rollcheck", PENNY, "--speed", "1e300"))
     assert "'lean oscillation frequency" in line and "is not a finite number (inf)" in line
-
-
-def main(capsys, *args: str) -> tuple[int, str, str]:
-    with pytest.raises(SystemExit) as info:
-        rbcli.cli.main(list(args))
-    out = capsys.readouterr()
-    return (0 if info.value.code is None else int(info.value.code)), out.out, out.err
 
 
 @pytest.mark.parametrize("exc", [OverflowError("math range error"), ZeroDivisionError("float division by zero"),
                                  FloatingPointError("overflow encountered in multiply")])
-def test_arithmetic_errors_are_bad_input_not_bugs(capsys, monkeypatch, exc):
+def test_arithmetic_errors_are_bad_input_not_bugs(cli, monkeypatch, exc):
     import rbcli.core.inertia as core
 
     def boom(*a, **k):
         raise exc
 
     monkeypatch.setattr(core, "inertia_report", boom)
-    code, out, err = main(capsys, "inertia", "-e", BOX)
-    assert code == 2 and out == ""
-    assert err == (f"rbcli: a value is too large or too small to compute with ({exc}); check the "
+    r = cli("inertia", "-e", BOX)
+    assert r.code == 2 and r.out == ""
+    assert r.err == (f"rbcli: a value is too large or too small to compute with ({exc}); check the "
                    "options and the body's numbers\n")
 
 
-def test_internal_error_line_names_debug_and_rbcli_debug(capsys, monkeypatch):
+def test_internal_error_line_names_debug_and_rbcli_debug(cli, monkeypatch):
     import rbcli.core.inertia as core
 
     def boom(*a, **k):
         raise RuntimeError("boom")
 
     monkeypatch.setattr(core, "inertia_report", boom)
-    monkeypatch.delenv("RBCLI_DEBUG", raising=False)
-    code, _, err = main(capsys, "inertia", "-e", BOX)
-    assert code == 70 and err.count("\n") == 1 and "Traceback" not in err
-    assert err.startswith("rbcli: internal error (RuntimeError: boom); this is a bug")
-    assert "'rbcli --debug inertia ...'" in err and "RBCLI_DEBUG=1" in err
-    monkeypatch.setenv("RBCLI_DEBUG", "1")  # the environment variable shows the traceback too
-    code, _, err = main(capsys, "inertia", "-e", BOX)
-    assert code == 70 and "Traceback" in err and "RuntimeError: boom" in err
+    r = cli("inertia", "-e", BOX, env={"RBCLI_DEBUG": None})
+    assert r.code == 70 and r.err.count("\n") == 1 and "Traceback" not in r.err
+    assert r.err.startswith("rbcli: internal error (RuntimeError: boom); this is a bug")
+    assert "'rbcli --debug inertia ...'" in r.err and "RBCLI_DEBUG=1" in r.err
+    # the environment variable shows the traceback too
+    r = cli("inertia", "-e", BOX, env={"RBCLI_DEBUG": "1"})
+    assert r.code == 70 and "Traceback" in r.err and "RuntimeError: boom" in r.err
 
 
-def test_ctrl_c_is_130(capsys, monkeypatch):
+def test_ctrl_c_is_130(cli, monkeypatch):
     import rbcli.core.inertia as core
 
     def interrupted(*a, **k):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(core, "inertia_report", interrupted)
-    code, out, _ = main(capsys, "inertia", "-e", BOX)
-    assert code == 130 and out == ""
+    r = cli("inertia", "-e", BOX)
+    assert r.code == 130 and r.out == ""
 
 
 def test_non_finite_json_is_a_typed_one_line_error():
@@ -419,3 +406,43 @@ def test_a_command_run_does_not_import_pydantic():
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
     assert p.returncode == 0, p.stderr
     assert p.stdout.strip().splitlines()[-1] == "[]"
+
+
+# ----------------------------------------------------------------------------- lazy commands (issue 16)
+
+def test_command_table_is_the_real_commands():
+    """rbcli.cli.app.COMMANDS (what `rbcli --help` lists without importing the command
+    modules) names every registered command, in its module, with its real one-line help."""
+    import typer.main
+    from typer._click.utils import make_default_short_help
+
+    from rbcli.cli.app import COMMANDS, command_tree
+
+    group = command_tree()
+    registered = {(i.name or typer.main.get_command_name(i.callback.__name__)): i.callback.__module__
+                  for i in app.registered_commands}
+    assert registered == {n: f"rbcli.cli.{m}" for n, (m, _) in COMMANDS.items()}
+    for name, (_, short) in COMMANDS.items():
+        cmd = group.commands[name]
+        for limit in (20, 45, 60, 80, 1000):
+            assert make_default_short_help(short, limit) == cmd.get_short_help_str(limit), name
+
+
+def test_a_run_imports_only_its_command(tmp_path):
+    """`rbcli --version`, `--help` and a command import no other command's module."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom rbcli.cli import main\n"
+            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
+            "print(sorted(m for m in sys.modules if m.startswith('rbcli.cli.')), file=sys.stderr)\n")
+    root = Path(__file__).resolve().parent.parent
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    for args, want in ((["--version"], ["rbcli.cli.app"]), (["--help"], ["rbcli.cli.app"]),
+                       (["inertia", "examples/cube.yaml", "--json"],
+                        ["rbcli.cli.app", "rbcli.cli.common", "rbcli.cli.massprops"])):
+        p = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
+                           cwd=root, env=env, timeout=120)
+        assert p.returncode == 0, p.stderr
+        assert p.stderr.strip().splitlines()[-1] == str(want), args

@@ -421,9 +421,9 @@ def test_not_of_revolution_names_the_difference(cli):
     r = cli("rollcheck", "-e", "{shape: box, mass: 1, size: [0.1, 0.2, 0.3]}", "--radius", "0.1")
     rc, out, err = r.code, r.out, r.err
     assert rc == 2 and out == ""
-    # box: Ixx = m (b^2 + c^2)/12 = 0.0108333, Iyy = m (a^2 + c^2)/12 = 0.00833333, 23 % apart
+    # box: Ixx = m (b^2 + c^2)/12 = 0.0108333, Iyy = m (a^2 + c^2)/12 = 0.00833333, 26 % of their mean apart
     assert err.count("\n") == 1 and err.startswith("rbcli: <expr>: not a body of revolution")
-    assert "0.00833333 and 0.0108333 kg m²" in err and "23 %" in err
+    assert "0.00833333 and 0.0108333 kg m²" in err and "26 %" in err and "--symmetry-tol (1 %)" in err
 
 
 def test_com_off_the_axle(cli):
@@ -433,9 +433,15 @@ def test_com_off_the_axle(cli):
     # a rim and hub modelled 2 mm (in x) and 1.5 mm (in y) off the origin: 2.5 mm off
     body = ("{parts: [{shape: ring, radius: 0.3, mass: 1, at: [0.002, 0.0015, 0]},"
             " {shape: disk, radius: 0.03, mass: 0.2, at: [0.002, 0.0015, 0]}]}")
-    r = cli("rollcheck", "-e", body)
+    # (0.83 % of the 300 mm rim: within the default --symmetry-tol of 1 %, answered for the
+    # wheel with its com taken on the axle, with a warning; beyond 0.5 % refused)
+    r = cli("rollcheck", "-e", body, "--radius", "0.3")
+    assert r.code == 0 and "warning: the wheel is not exactly symmetric about its axle" in r.err
+    assert "the centre of mass is 0.83 % of the rim radius off it" in r.err
+    r = cli("rollcheck", "-e", body, "--radius", "0.3", "--symmetry-tol", "0.5%")
     rc, out, err = r.code, r.out, r.err
-    assert rc == 2 and "2.5 mm off the axle" in err
+    assert rc == 2 and "2.5 mm off the axle" in err and "0.83 % of the rim radius 300 mm" in err
+    assert "--symmetry-tol (0.5 %)" in err
     # the axle placed through the com is accepted (--through com) if the body is of revolution
     r = cli("rollcheck", "-e", "{shape: ring, radius: 0.3, mass: 1, at: [0.01, 0, 0]}", "--through", "com")
     rc, out, err = r.code, r.out, r.err

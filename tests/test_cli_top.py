@@ -796,3 +796,25 @@ def test_gyrocompass_with_the_cad_flywheel(cli):
     assert 1e-4 < d["asymmetry"]["relative"] < 2e-4  # 0.01 %: a CAD body
     bad = cli("gyrocompass", FLY, "--spin", "6000 rpm", "--latitude", "45", "--symmetry-tol", "0.005 %")
     assert bad.code == 2 and "a gyrocompass rotor needs them within --symmetry-tol (0.005 %)" in bad.err
+
+
+# ----------------------------------------------------------------------------- start-up (issue 16)
+
+@pytest.mark.parametrize("args, loads_scipy", [
+    (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--theta-dot", "2"), False),
+    (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--csv", "-"), False),
+    (("gyrocompass", "examples/gyroscope.yaml", "--spin", "6000 rpm", "--latitude", "30"), False),
+    (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--verify"), True),
+])
+def test_default_path_does_not_import_scipy(args, loads_scipy):
+    """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
+    import os
+
+    code = ("import sys\nfrom rbcli.cli import main\n"
+            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy'}), file=sys.stderr)\n")
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    p = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
+                       cwd=ROOT, env=env, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stderr.strip().splitlines()[-1] == ("['scipy']" if loads_scipy else "[]")

@@ -15,13 +15,10 @@ written, refused or left alone, byte for byte.
 from __future__ import annotations
 
 import os
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-from rbcli.cli import main
 from rbcli.errors import InputError
 from rbcli.io import outfile
 from rbcli.io.body import load_body, load_expr
@@ -69,25 +66,17 @@ def tree(tmp_path, monkeypatch):
     return tmp_path
 
 
-def run(capsys, *args: str) -> tuple[int, str, str]:
-    """rbcli in-process through main() (the error-to-exit-status map included)."""
-    with pytest.raises(SystemExit) as exc:
-        main(list(args))
-    out, err = capsys.readouterr()
-    code = exc.value.code
-    return (0 if code is None else int(code)), out, err
-
-
-def refused(capsys, target: Path, *args: str, says: str = "is an input file") -> str:
-    """Run; expect exit 2, one rbcli: line containing ``says``, and ``target`` unchanged."""
+def refused(cli, tree: Path, target: Path, *args: str, says: str = "is an input file") -> str:
+    """Run ``rbcli ARGS`` in the folder ``tree`` (the ``cli`` fixture); expect exit 2, one
+    rbcli: line containing ``says``, and ``target`` unchanged."""
     before = target.read_bytes()
-    rc, out, err = run(capsys, *args)
-    assert rc == 2, (rc, err)
-    assert out == ""
-    assert err.startswith("rbcli: ") and err.count("\n") == 1, err
-    assert says in err, err
+    r = cli(*args, cwd=tree)
+    assert r.code == 2, (r.code, r.err)
+    assert r.out == ""
+    assert r.err.startswith("rbcli: ") and r.err.count("\n") == 1, r.err
+    assert says in r.err, r.err
     assert target.read_bytes() == before
-    return err
+    return r.err
 
 
 def leftovers(folder: Path) -> list[str]:
@@ -121,81 +110,77 @@ def test_the_loader_records_every_file_it_read(tree):
 # --------------------------------------------------------------------------- the review's reproductions
 
 
-def test_precess_csv_onto_an_included_file_is_refused(capsys, tree):
-    refused(capsys, tree / "sub.yaml", "precess", "main.yaml", "--omega", "0,0,1", "--csv", "sub.yaml",
+def test_precess_csv_onto_an_included_file_is_refused(cli, tree):
+    refused(cli, tree, tree / "sub.yaml", "precess", "main.yaml", "--omega", "0,0,1", "--csv", "sub.yaml",
             "--duration", "1", says="--csv: 'sub.yaml' is an input file")
     # the same through -e: the expression reads sub.yaml
-    refused(capsys, tree / "sub.yaml", "precess", "-e", "{shape: include, file: sub.yaml}", "--omega", "0,0,1",
+    refused(cli, tree, tree / "sub.yaml", "precess", "-e", "{shape: include, file: sub.yaml}", "--omega", "0,0,1",
             "--csv", "sub.yaml", "--duration", "1", says="--csv:")
 
 
-def test_top_csv_onto_an_included_file_or_a_mesh_is_refused(capsys, tree):
+def test_top_csv_onto_an_included_file_or_a_mesh_is_refused(cli, tree):
     args = ("top", "main.yaml", "--spin", "150", "--theta", "30")
-    refused(capsys, tree / "sub.yaml", *args, "--csv", "sub.yaml", says="--csv: 'sub.yaml' is an input file")
-    refused(capsys, tree / "cube.stl", *args, "--csv", "cube.stl", says="--csv: 'cube.stl' is an input file")
-    refused(capsys, tree / "main.yaml", *args, "--csv", "./main.yaml", says="--csv:")
+    refused(cli, tree, tree / "sub.yaml", *args, "--csv", "sub.yaml", says="--csv: 'sub.yaml' is an input file")
+    refused(cli, tree, tree / "cube.stl", *args, "--csv", "cube.stl", says="--csv: 'cube.stl' is an input file")
+    refused(cli, tree, tree / "main.yaml", *args, "--csv", "./main.yaml", says="--csv:")
 
 
-def test_plot_onto_an_included_file_is_refused(capsys, tree):
+def test_plot_onto_an_included_file_is_refused(cli, tree):
     svg = tree / "shape.svg"  # an included body file with a figure's extension
-    refused(capsys, svg, "top", "pic.yaml", "--spin", "150", "--theta", "30", "--plot", "shape.svg", says="--plot:")
-    refused(capsys, svg, "precess", "pic.yaml", "--omega", "0,0,1", "--plot", "shape.svg", says="--plot:")
-    refused(capsys, svg, "rollcheck", "pic.yaml", "--plot", str(svg), says="--plot:")
+    refused(cli, tree, svg, "top", "pic.yaml", "--spin", "150", "--theta", "30", "--plot", "shape.svg", says="--plot:")
+    refused(cli, tree, svg, "precess", "pic.yaml", "--omega", "0,0,1", "--plot", "shape.svg", says="--plot:")
+    refused(cli, tree, svg, "rollcheck", "pic.yaml", "--plot", str(svg), says="--plot:")
     # a plot onto a mesh: refused as an input, before its extension is looked at
-    refused(capsys, tree / "cube.stl", "top", "main.yaml", "--spin", "150", "--theta", "30",
+    refused(cli, tree, tree / "cube.stl", "top", "main.yaml", "--spin", "150", "--theta", "30",
             "--plot", "cube.stl", says="--plot: 'cube.stl' is an input file")
 
 
-def test_apply_onto_a_nested_include_is_refused_even_with_force(capsys, tree):
+def test_apply_onto_a_nested_include_is_refused_even_with_force(cli, tree):
     for target in ("d/leaf.yaml", "d/mid.yaml", "top2.yaml"):
-        refused(capsys, tree / target, "balance", "top2.yaml", "--planes=-0.1,0.1", "--radius", "0.1", "--apply", target, "--force",
-                says=f"--apply: '{target}' is an input file")
+        refused(cli, tree, tree / target, "balance", "top2.yaml", "--planes=-0.1,0.1", "--radius", "0.1",
+                "--apply", target, "--force", says=f"--apply: '{target}' is an input file")
 
 
-def test_report_onto_an_include_is_refused_even_with_force(capsys, tree):
-    refused(capsys, tree / "notes.md", "report", "pic.yaml", "-o", "notes.md", "--force",
+def test_report_onto_an_include_is_refused_even_with_force(cli, tree):
+    refused(cli, tree, tree / "notes.md", "report", "pic.yaml", "-o", "notes.md", "--force",
             says="-o: 'notes.md' is an input file")
     # a Markdown report's figures folder must not hold an input either
     (tree / "r_files").mkdir()
     (tree / "r_files" / "inner.yaml").write_text(DISK)
     (tree / "r.yaml").write_text("parts:\n  - {name: i, shape: include, file: r_files/inner.yaml}\n")
-    refused(capsys, tree / "r_files" / "inner.yaml", "report", "r.yaml", "-o", "r.md", "--force",
+    refused(cli, tree, tree / "r_files" / "inner.yaml", "report", "r.yaml", "-o", "r.md", "--force",
             says="holds an input file")
     assert not (tree / "r.md").exists()
 
 
-def test_hard_links_and_symlinks_to_an_input_are_refused(capsys, tree):
+def test_hard_links_and_symlinks_to_an_input_are_refused(cli, tree):
     os.link(tree / "sub.yaml", tree / "alias.csv")  # the same file under another name
     (tree / "sym.csv").symlink_to(tree / "cube.stl")
     args = ("top", "main.yaml", "--spin", "150", "--theta", "30")
-    refused(capsys, tree / "sub.yaml", *args, "--csv", "alias.csv")
-    refused(capsys, tree / "cube.stl", *args, "--csv", "sym.csv")
+    refused(cli, tree, tree / "sub.yaml", *args, "--csv", "alias.csv")
+    refused(cli, tree, tree / "cube.stl", *args, "--csv", "sym.csv")
 
 
-def test_the_review_reproduction_through_the_real_entry_point(tree):
+def test_the_review_reproduction_through_the_real_entry_point(cli_proc, tree):
     before = (tree / "sub.yaml").read_bytes()
-    p = subprocess.run(
-        [sys.executable, "-m", "rbcli", "precess", "main.yaml", "--omega", "0,0,1", "--csv", "sub.yaml",
-         "--duration", "1"],
-        capture_output=True, text=True, cwd=tree, timeout=120,
-    )
-    assert p.returncode == 2 and p.stdout == ""
-    assert p.stderr == "rbcli: --csv: 'sub.yaml' is an input file; rbcli never overwrites its inputs\n"
+    p = cli_proc("precess", "main.yaml", "--omega", "0,0,1", "--csv", "sub.yaml", "--duration", "1", cwd=tree)
+    assert p.code == 2 and p.out == ""
+    assert p.err == "rbcli: --csv: 'sub.yaml' is an input file; rbcli never overwrites its inputs\n"
     assert (tree / "sub.yaml").read_bytes() == before
 
 
 # --------------------------------------------------------------------------- --force policy
 
 
-def test_apply_and_report_replace_an_existing_file_only_with_force(capsys, tree):
+def test_apply_and_report_replace_an_existing_file_only_with_force(cli, tree):
     for args, target in (
         (("balance", "top2.yaml", "--planes=-0.1,0.1", "--radius", "0.1", "--apply"), tree / "out.yaml"),
         (("report", "main.yaml", "-o"), tree / "out.html"),
     ):
         target.write_text("keep me\n")
-        refused(capsys, target, *args, target.name, says="exists; use --force")
-        rc, _, err = run(capsys, *args, target.name, "--force")
-        assert rc == 0, err
+        refused(cli, tree, target, *args, target.name, says="exists; use --force")
+        r = cli(*args, target.name, "--force", cwd=tree)
+        assert r.code == 0, r.err
         assert target.read_text() != "keep me\n"
     assert "balance A" in (tree / "out.yaml").read_text()  # a body with the corrections
     assert load_body("out.yaml").inputs[0] == os.path.realpath(tree / "out.yaml")
@@ -203,25 +188,25 @@ def test_apply_and_report_replace_an_existing_file_only_with_force(capsys, tree)
     assert leftovers(tree) == []
 
 
-def test_plot_and_csv_replace_an_existing_file_that_is_not_an_input(capsys, tree):
+def test_plot_and_csv_replace_an_existing_file_that_is_not_an_input(cli, tree):
     fig, csv = tree / "fig.svg", tree / "series.csv"
     fig.write_text("old figure\n")
     csv.write_text("old data\n")
-    rc, _, err = run(capsys, "top", "main.yaml", "--spin", "150", "--theta", "30", "--plot", "fig.svg",
-                     "--csv", "series.csv", "--samples", "3")
-    assert rc == 0, err
+    r = cli("top", "main.yaml", "--spin", "150", "--theta", "30", "--plot", "fig.svg",
+            "--csv", "series.csv", "--samples", "3", cwd=tree)
+    assert r.code == 0, r.err
     assert fig.read_text().startswith("<?xml")
     assert csv.read_text().splitlines()[0] == "t,theta_deg,phi_deg,psi_deg"
-    rc, _, err = run(capsys, "precess", "main.yaml", "--omega", "0,0,1", "--duration", "1", "--samples", "2",
-                     "--csv", "series.csv", "--plot", "fig.svg")
-    assert rc == 0, err
+    r = cli("precess", "main.yaml", "--omega", "0,0,1", "--duration", "1", "--samples", "2",
+            "--csv", "series.csv", "--plot", "fig.svg", cwd=tree)
+    assert r.code == 0, r.err
     assert csv.read_text().splitlines()[0] == "t,wx,wy,wz,Lx,Ly,Lz,qw,qx,qy,qz"
     assert len(csv.read_text().splitlines()) == 3  # header and 2 rows
     assert leftovers(tree) == []
 
 
-def test_csv_and_plot_must_be_different_files(capsys, tree):
-    refused(capsys, tree / "sub.yaml", "top", "main.yaml", "--spin", "150", "--theta", "30",
+def test_csv_and_plot_must_be_different_files(cli, tree):
+    refused(cli, tree, tree / "sub.yaml", "top", "main.yaml", "--spin", "150", "--theta", "30",
             "--plot", "x.svg", "--csv", "x.svg", says="--csv: 'x.svg' is also the --plot file")
     assert not (tree / "x.svg").exists()
 
@@ -234,17 +219,17 @@ def test_csv_and_plot_must_be_different_files(capsys, tree):
     ("balance", "top2.yaml", "--planes=-0.1,0.1", "--radius", "0.1", "--apply", "no/x.yaml"),
     ("report", "main.yaml", "-o", "no/x.html"),
 ], ids=lambda a: a[0] + " " + a[-2])
-def test_a_missing_folder_is_exit_2(capsys, tree, args):
-    rc, out, err = run(capsys, *args)
-    assert rc == 2 and out == "" and err.count("\n") == 1
-    assert f"{args[-2]}: the folder 'no' does not exist" in err
+def test_a_missing_folder_is_exit_2(cli, tree, args):
+    r = cli(*args, cwd=tree)
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1
+    assert f"{args[-2]}: the folder 'no' does not exist" in r.err
     assert not (tree / "no").exists()
 
 
-def test_a_folder_is_not_a_file_name(capsys, tree):
-    refused(capsys, tree / "sub.yaml", "top", "main.yaml", "--spin", "150", "--theta", "30", "--csv", "d",
+def test_a_folder_is_not_a_file_name(cli, tree):
+    refused(cli, tree, tree / "sub.yaml", "top", "main.yaml", "--spin", "150", "--theta", "30", "--csv", "d",
             says="--csv: 'd' is a folder")
-    refused(capsys, tree / "sub.yaml", "top", "main.yaml", "--spin", "150", "--theta", "30", "--csv", "new/",
+    refused(cli, tree, tree / "sub.yaml", "top", "main.yaml", "--spin", "150", "--theta", "30", "--csv", "new/",
             says="is a folder")
 
 

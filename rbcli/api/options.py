@@ -230,6 +230,25 @@ def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
     return str(text)
 
 
+def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
+    """The tolerance of a nearly symmetric body (``top``, ``gyrocompass``, ``rollcheck``):
+    a fraction (``0.01``) or a percentage (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None
+    gives the default, 1 % (:data:`rbcli.core.symmetry.DEFAULT_TOLERANCE`)."""
+    from rbcli.core.symmetry import DEFAULT_TOLERANCE, MAX_TOLERANCE
+
+    if value is None:
+        return DEFAULT_TOLERANCE
+    text = value.strip() if isinstance(value, str) else value
+    if isinstance(text, str) and text.endswith("%"):
+        x = quantity(text[:-1].strip(), "dimensionless", option) / 100.0
+    else:
+        x = quantity(text, "dimensionless", option)
+    if not (0.0 <= x <= MAX_TOLERANCE):
+        raise InputError(f"{option}: must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
+                         f"0.01 or a percentage such as '1 %'), got {value}", param="symmetry_tol")
+    return x
+
+
 # ----------------------------------------------------------------------------- the bare-number rule
 
 

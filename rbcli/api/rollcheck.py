@@ -22,6 +22,7 @@ from rbcli.errors import InputError
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.rim import RimOffset
+    from rbcli.core.symmetry import AxialSymmetry
     from rbcli.core.rolling import CircleMotion, Curves, StraightRolling, Verdict, Wheel
     from rbcli.model import Body, Part
 
@@ -79,6 +80,12 @@ class RollcheckOptions:
     warnings : tuple of str
         One-line warnings about the resolved defaults and about values far outside the
         body's scale (the command line prints them as ``rbcli: FILE: warning: ...``).
+    symmetry_tol : float
+        How far from a body of revolution about the axle the wheel may be (a fraction;
+        default 0.01, ``--symmetry-tol``): the two moments across the axle (about the com)
+        may differ, and the products coupling the axle to the plane across it may be, up
+        to this fraction of their mean; the com may be this fraction of the rim radius off
+        the axle. Within it the answer is for the symmetrised wheel, with a warning.
     echo : tuple of (option, value, unit)
         The options given, as understood (in the body's units; tables echo them).
     """
@@ -98,6 +105,7 @@ class RollcheckOptions:
     circle: float | None = None
     rim: RimOffset | None = None
     warnings: tuple[str, ...] = ()
+    symmetry_tol: float = 0.01
     echo: tuple[tuple[str, str, str], ...] = ()
 
     @property
@@ -117,7 +125,7 @@ class RollcheckOptions:
     @classmethod
     def parse(cls, body: Body, *, axle: Any = None, through: Any = None, radius: Any = None,
               tyre_radius: Any = None, g: Any = None, speed: Any = None, spin: Any = None,
-              lean: Any = None, circle: Any = None) -> RollcheckOptions:
+              lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckOptions:
         """Read the options of :func:`rollcheck` (see there) and resolve the body's defaults.
 
         Raises
@@ -164,7 +172,8 @@ class RollcheckOptions:
                 "--circle 0: spinning in place the centre does not move, so --speed cannot fix "
                 "the lean; give --lean instead", param="circle")
 
-        axle_v, P, axle_source, a, source, kind, part, rim, warns = _resolve(body, n_axle, p_through, a_opt)
+        tol = o.symmetry_tolerance(symmetry_tol)
+        axle_v, P, axle_source, a, source, kind, part, rim, warns = _resolve(body, n_axle, p_through, a_opt, tol)
         if r >= a:
             raise ParamError("tyre_radius", f"the tyre radius {r:.6g} m must be smaller than the rim "
                              f"radius a = {a:.6g} m ({source})")
@@ -187,7 +196,8 @@ class RollcheckOptions:
         warns = warns + _plausibility(body, u, a_opt, p_through, R_G, v, s, a)
         return cls(axle=axle_v, through=P, axle_source=axle_source, radius=a, radius_source=source,
                    radius_kind=kind, radius_part=part, tyre_radius=r, g=gv, speed=v, spin=s,
-                   lean=beta, circle=R_G, rim=rim, warnings=warns, echo=tuple(given))
+                   lean=beta, circle=R_G, rim=rim, warnings=warns, symmetry_tol=tol,
+                   echo=tuple(given))
 
 
 def _plausibility(body: Body, u, a_opt, p_through, R_G, v, s, a) -> tuple[str, ...]:
@@ -210,7 +220,7 @@ def _plausibility(body: Body, u, a_opt, p_through, R_G, v, s, a) -> tuple[str, .
     return tuple(out)
 
 
-def _resolve(body: Body, n_axle, p_through, a_opt):
+def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     """Axle, its point, the rim radius, where each came from, and warnings."""
     import numpy as np
 
@@ -246,10 +256,10 @@ def _resolve(body: Body, n_axle, p_through, a_opt):
     elif body.rim_radius is not None:
         a, source, kind = float(body.rim_radius), "the body's rim_radius", "rim_radius"
     else:
-        best = _largest_round_part(body, n, P, mp)
+        best = _largest_round_part(body, n, P, mp, tol)
         a, part, kind = float(best.radius), best.name, "largest_round_part"
         source = f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)"
-    rim = rim_offset(body.parts, mp.com, n, P, a)
+    rim = rim_offset(body.parts, mp.com, n, P, a, tol=tol)
     warnings: list[str] = []
     if rim is not None and abs(rim.offset) > 1e-6 * a and rim.upright_equilibrium:
         warnings.append(
@@ -261,17 +271,17 @@ def _resolve(body: Body, n_axle, p_through, a_opt):
             tuple(warnings))
 
 
-def _largest_round_part(body: Body, n, P, mp) -> Part:
+def _largest_round_part(body: Body, n, P, mp, tol) -> Part:
     """The round, non-subtracted part coaxial with the axle with the largest outer radius."""
     from rbcli.core.rim import rim_candidates
     from rbcli.errors import Location
 
     best = None
-    for p in rim_candidates(body.parts, n, P):
+    for p in rim_candidates(body.parts, n, P, tol):
         if best is None or p.radius > best.radius:
             best = p
     if best is None:
-        _wheel(body, mp, n, P, None)  # a body that cannot roll at all says so first
+        _wheel(body, mp, n, P, None, tol)  # a body that cannot roll at all says so first
         raise InputError(
             "no rim radius: give --radius, or rim_radius in the body file (no round part — ring, "
             "disk, cylinder, torus, sphere, ... — is centred on the axle and coaxial with it)",
@@ -279,14 +289,15 @@ def _largest_round_part(body: Body, n, P, mp) -> Part:
     return best
 
 
-def _wheel(body: Body, mp, axle, through, radius) -> Wheel:
+def _wheel(body: Body, mp, axle, through, radius, tol) -> Wheel:
     """The body reduced to a rolling wheel; a body that cannot roll is an InputError
     located at the body."""
     from rbcli.core.rolling import wheel_from_body
     from rbcli.errors import Location
 
     try:
-        return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through, radius=radius)
+        return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through,
+                               radius=radius, sym_rtol=tol)
     except ValueError as exc:
         raise InputError(str(exc), Location(body.source)) from None
 
@@ -305,7 +316,8 @@ class RollcheckResult(Result):
         The options as used (SI), with the provenance of the axle and the rim radius.
     wheel : rbcli.core.rolling.Wheel
         mass (kg), ``A`` = I across the axle and ``C`` = Is about it (kg m², about the
-        centre of mass), ``com`` (m) and unit ``axle``.
+        centre of mass), ``com`` (m) and unit ``axle``; for a nearly symmetric wheel the
+        symmetrised one (``A`` the mean of the two moments across; ``wheel.asymmetry``).
     straight : rbcli.core.rolling.StraightRolling
         The threshold of straight upright rolling: ``critical_spin`` (rad/s),
         ``critical_speed`` (m/s), ``C_contact`` = Is + m a², ``A_contact`` = I + m a²
@@ -330,6 +342,30 @@ class RollcheckResult(Result):
     verdict: Verdict | None = None
     circle: CircleMotion | None = None
     warnings: tuple[str, ...] = ()
+
+    @property
+    def asymmetry(self) -> AxialSymmetry | None:
+        """How far a nearly symmetric wheel departs from a body of revolution about its
+        axle (:class:`rbcli.core.symmetry.AxialSymmetry`: the moments across about the com,
+        the coupling, the com's offset relative to the rim radius); None when it is one to
+        rounding (1e-6)."""
+        return self.wheel.asymmetry
+
+    @property
+    def asymmetry_effect(self) -> float | None:
+        """The relative amount by which the critical spin and speed (and the verdicts near
+        them) may be off from symmetrising the wheel; None when symmetric. The largest of
+        δ/(4 - δ), δ the relative spread of the moments across (the real threshold lies
+        between the ones computed with either moment: s_c ∝ sqrt(I)); the coupling relative
+        to the mean moment across (the principal moments move by at most the coupling, and
+        the wheel wobbles); e/(2 (a - r)) for a com e off the axle (the gravity lever swings
+        by ±e). Derivation: :func:`rbcli.core.rolling.wheel_from_body`, Notes."""
+        a = self.asymmetry
+        if a is None:
+            return None
+        d = a.relative
+        lever = self.options.radius - self.options.tyre_radius
+        return max(d / (4.0 - d), a.coupling_relative, a.com_offset / (2.0 * lever))
 
     @property
     def critical_speed(self) -> float:
@@ -391,6 +427,8 @@ class RollcheckResult(Result):
         out["axle"] = list(self.wheel.axle)
         out["axle_through"] = list(self.options.through)
         out["com"] = list(self.wheel.com)
+        if self.asymmetry is not None:
+            out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
         out["model"] = self.model
         out["warnings"] = list(self.warnings)
         out["name"] = self.name
@@ -454,22 +492,29 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     from rbcli.core.inertia import combine
 
     o = options
-    wheel = _wheel(body, combine(body.parts), o.axle, o.through, o.radius)
+    wheel = _wheel(body, combine(body.parts), o.axle, o.through, o.radius, o.symmetry_tol)
     if o.rim is not None and not o.rim.upright_equilibrium:
         _refuse_off_centre_rim(body, o)
     res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, speed=o.speed, spin=o.spin,
                        lean_rad=o.lean, circle_radius=o.circle)
+    warnings = o.warnings
+    if wheel.asymmetry is not None:
+        warnings += (f"the wheel is not exactly symmetric about its axle: "
+                     f"{wheel.asymmetry.percent('the rim radius')}; the answer is for the symmetrised "
+                     f"wheel (--symmetry-tol {o.symmetry_tol * 100:g} %)",)
     return RollcheckResult(name=body.name, source=body.source, options=o, wheel=wheel,
                            straight=res.straight, verdict=res.verdict, circle=res.circle,
-                           warnings=o.warnings)
+                           warnings=warnings)
 
 
 def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any = None,
               tyre_radius: Any = None, g: Any = None, speed: Any = None, spin: Any = None,
-              lean: Any = None, circle: Any = None) -> RollcheckResult:
+              lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckResult:
     """Stability of a wheel, disk or hoop rolling without slipping on a rough level floor.
 
-    The body must be of revolution about its axle with its centre of mass on it. Straight
+    The body must be of revolution about its axle with its centre of mass on it (to
+    ``symmetry_tol``, default 1 %: a nearly symmetric wheel is answered for its
+    symmetrised form, with a warning). Straight
     upright rolling is (neutrally) stable when the spin s satisfies
     s² > m g (a − r) I / (Is (Is + m a²)), I across the axle and Is about it, both about
     the centre of mass (physics sheet ``dynamics.md`` §3.2; thin disk v_c = sqrt(g a/3),
@@ -504,6 +549,16 @@ def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any 
     circle : float or str, optional
         m, radius of the circle the centre runs on; 0 = spinning in place. A steady circle
         needs two of ``lean``, ``circle`` and a speed (knife edge only).
+    symmetry_tol : float or str, optional
+        How far from a body of revolution about the axle the wheel may be: a fraction
+        (``0.01``) or a percentage (``"1 %"``), at most 10 %; default 1 %. The two moments
+        across the axle (about the com) may differ, and the products of inertia coupling
+        the axle to the plane across it may be, up to this fraction of their mean; the com
+        may be off the axle by this fraction of the rim radius. Such a wheel (above
+        rounding, 1e-6) is answered for the symmetrised wheel (the mean moment across, the
+        com on the axle) with a warning, ``asymmetry`` in the JSON and
+        ``result.asymmetry_effect``, the relative amount the critical speed may be off;
+        beyond it, refused.
 
     Returns
     -------
@@ -526,4 +581,4 @@ def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any 
     """
     return run(body, RollcheckOptions.parse(body, axle=axle, through=through, radius=radius,
                                             tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
-                                            lean=lean, circle=circle))
+                                            lean=lean, circle=circle, symmetry_tol=symmetry_tol))

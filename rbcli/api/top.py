@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from rbcli.api import options as op
+from rbcli.api.options import symmetry_tolerance
 from rbcli.api.result import Result
 from rbcli.errors import ExitStatus, InputError, Location, ParamError
 
@@ -33,25 +34,6 @@ STANDARD_GRAVITY = 9.80665
 EARTH_RATE = 7.2921150e-5
 #: nutation periods that ``verify`` integrates and that :meth:`TopResult.default_duration` spans
 PERIODS = 3
-
-def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
-    """The tolerance of a nearly symmetric body: a fraction (``0.01``) or a percentage
-    (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None gives the default, 1 %
-    (:data:`rbcli.core.symmetry.DEFAULT_TOLERANCE`)."""
-    from rbcli.core.symmetry import DEFAULT_TOLERANCE, MAX_TOLERANCE
-
-    if value is None:
-        return DEFAULT_TOLERANCE
-    text = value.strip() if isinstance(value, str) else value
-    if isinstance(text, str) and text.endswith("%"):
-        x = op.quantity(text[:-1].strip(), "dimensionless", option) / 100.0
-    else:
-        x = op.quantity(text, "dimensionless", option)
-    if not (0.0 <= x <= MAX_TOLERANCE):
-        raise InputError(f"{option}: must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
-                         f"0.01 or a percentage such as '1 %'), got {value}", param="symmetry_tol")
-    return x
-
 
 _OVERFLOW = ("--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
              "top's equations; give values of a physical size")

@@ -1,7 +1,8 @@
 """rbcli's command line: the typer app, its commands, and the one place errors become exit codes.
 
-Module level imports only typer and the standard library; each command imports
-numpy, the io layer and the physics it needs inside its function.
+Module level imports only typer and the standard library; a command's module is imported
+when that command runs (rbcli.cli.app.COMMANDS), and each command imports numpy, the io
+layer and the physics it needs inside its function.
 """
 
 from __future__ import annotations
@@ -10,14 +11,7 @@ import sys
 
 import typer
 
-from rbcli.cli.app import COMPLETE_VAR, app, completion_init
-from rbcli.cli import massprops as _massprops  # noqa: F401  (registers inertia, principal)
-from rbcli.cli import catalog as _catalog  # noqa: F401  (registers shapes, schema, examples)
-from rbcli.cli import balance as _balance  # noqa: F401  (registers balance)
-from rbcli.cli import rollcheck as _rollcheck  # noqa: F401  (registers rollcheck)
-from rbcli.cli import precess as _precess  # noqa: F401  (registers precess)
-from rbcli.cli import top as _top  # noqa: F401  (registers top, gyrocompass)
-from rbcli.cli import report as _report  # noqa: F401  (registers report)
+from rbcli.cli.app import COMMANDS, COMPLETE_VAR, app, completion_init
 from rbcli.errors import ExitStatus, RbcliError
 
 __all__ = ["app", "main"]
@@ -66,7 +60,7 @@ def _run(args: list[str]) -> int:
     import warnings
 
     from rbcli import env as _env
-    from rbcli.cli.common import debug
+    from rbcli.cli.app import debug
 
     import os
 
@@ -87,7 +81,7 @@ def _run(args: list[str]) -> int:
 
 
 def _run_app(args: list[str]) -> int:
-    from rbcli.cli.common import debug
+    from rbcli.cli.app import debug
 
     try:
         code = app(args=args, prog_name="rbcli", standalone_mode=False)
@@ -175,11 +169,8 @@ def _usage_error(exc: Exception, args: list[str]) -> int:
 
 def _command_in(args: list[str]) -> str | None:
     """The command named in args (after the root's options), if it is one of rbcli's."""
-    import typer.main
-
-    names = typer.main.get_command(app).commands  # type: ignore[attr-defined]
     word = next((a for a in args if not a.startswith("-")), None)
-    return word if word in names else None
+    return word if word in COMMANDS else None
 
 
 def _say(text: str) -> None:

@@ -18,8 +18,122 @@ scripts. Exit status: 0 done, 1 a check you asked for failed, 2 bad usage or
 input, 70 internal error (a bug).
 """
 
+# ----------------------------------------------------------------------------- commands
+# Each command lives in a module of rbcli.cli that registers it on ``app`` when imported.
+# Importing them all (and having typer build every command's parameters) cost ~11 ms CPU on
+# every run; a run needs one command. So the root group's ``commands`` is a mapping whose
+# names come from COMMANDS and whose click command is built the first time it is looked up,
+# after importing its module. `rbcli --help` lists COMMANDS' one-line help without importing
+# anything (tests/test_cli_options.py checks the table against the real commands' help);
+# anything that iterates the mapping (man pages, completion of command names) builds them all.
+
+#: command -> (the module that registers it, the one-line help `rbcli --help` lists: the
+#: first sentence of its help text), in the order `rbcli --help` lists them
+COMMANDS: dict[str, tuple[str, str]] = {
+    "inertia": ("massprops", "Mass, centre of mass and the inertia tensor about a point."),
+    "principal": ("massprops", "Principal moments and axes, symmetry, and which free rotations "
+                               "are stable."),
+    "shapes": ("catalog", "The shape catalogue: parameters, local origin, mass keys and formulas."),
+    "schema": ("catalog", "The JSON Schema (draft-07) of the body file, for editors."),
+    "examples": ("catalog", "List the bundled example bodies, or print one."),
+    "balance": ("balance", "Rotor balance about a shaft: unbalance, two-plane corrections, "
+                           "bearing forces, ISO 21940-11."),
+    "field-balance": ("balance", "Field (trial-weight) balancing from vibration readings: the "
+                                 "influence-coefficient method."),
+    "rollcheck": ("rollcheck", "Stability of a wheel, disk or hoop rolling on a rough floor: the "
+                               "critical speed."),
+    "precess": ("precess", "Torque-free motion from an initial angular velocity: L, T, "
+                           "precession, period, flips."),
+    "top": ("top", "A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, "
+                   "sleeping."),
+    "gyrocompass": ("top", "A gyrocompass: the period of its swing about north and where it "
+                           "settles."),
+    "report": ("report", "One document with every answer that applies to the body, its tables "
+                         "and figures."),
+}
+
+
+class _Commands(dict):
+    """The root group's commands: built on first lookup (see COMMANDS above)."""
+
+    def __init__(self, built: dict) -> None:
+        super().__init__(built)
+        self._order = [*COMMANDS, *(k for k in built if k not in COMMANDS)]
+
+    def _build(self, name: str):
+        import importlib
+
+        import typer.main as tmain
+
+        importlib.import_module(f"rbcli.cli.{COMMANDS[name][0]}")  # registers it on app
+        for info in app.registered_commands:
+            if (info.name or tmain.get_command_name(info.callback.__name__)) == name:
+                cmd = tmain.get_command_from_info(
+                    info, pretty_exceptions_short=app.pretty_exceptions_short,
+                    rich_markup_mode=app.rich_markup_mode)
+                dict.__setitem__(self, name, cmd)
+                return cmd
+        raise KeyError(name)
+
+    def __missing__(self, name: str):
+        if name not in COMMANDS:
+            raise KeyError(name)
+        return self._build(name)
+
+    def get(self, name, default=None):
+        try:
+            return self[name]
+        except KeyError:
+            return default
+
+    def __contains__(self, name) -> bool:
+        return dict.__contains__(self, name) or name in COMMANDS
+
+    def __iter__(self):
+        return iter(self._order)
+
+    def __len__(self) -> int:
+        return len(self._order)
+
+    def keys(self):
+        return list(self._order)
+
+    def items(self):
+        return [(k, self[k]) for k in self._order]
+
+    def values(self):
+        return [self[k] for k in self._order]
+
+
+class _Group(typer.core.TyperGroup):
+    """typer's group with lazily built commands and a help listing from COMMANDS."""
+
+    def __init__(self, *, commands=None, **kw) -> None:
+        super().__init__(**kw)
+        self.commands = _Commands(dict(commands or {}))
+
+    def format_commands(self, ctx, formatter) -> None:
+        from typer._click.utils import make_default_short_help
+
+        names = [n for n in COMMANDS]
+        limit = formatter.width - 6 - max(len(n) for n in names)
+        rows = [(n, make_default_short_help(COMMANDS[n][1], limit)) for n in names]
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
+
+
+def command_tree():
+    """The root click group with every command built (for man pages and tests)."""
+    import typer.main
+
+    group = typer.main.get_command(app)
+    group.commands.items()
+    return group
+
+
 app = typer.Typer(
     name="rbcli",
+    cls=_Group,
     help=HELP,
     add_completion=False,  # rbcli declares --show-completion SHELL itself (below)
     no_args_is_help=True,
@@ -29,6 +143,13 @@ app = typer.Typer(
 )
 
 STATE = {"debug": False}
+
+
+def debug() -> bool:
+    """Tracebacks for internal errors: the root ``--debug`` or ``RBCLI_DEBUG=1``."""
+    import os
+
+    return bool(STATE["debug"]) or os.environ.get("RBCLI_DEBUG", "").strip() not in ("", "0")
 
 
 # ----------------------------------------------------------------------------- start-up

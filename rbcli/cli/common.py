@@ -24,6 +24,16 @@ BodiesArg = typer.Argument(None, metavar="BODY...", help=BODY_HELP, show_default
 BodyArg = typer.Argument(None, metavar="BODY", help="Body file (YAML); '-' reads standard input.", show_default=False)
 ExprOpt = typer.Option(None, "-e", "--expr", help=EXPR_HELP, show_default=False)
 JsonOpt = typer.Option(False, "--json", help=JSON_HELP)
+
+#: ``--symmetry-tol``, shared by top, gyrocompass and rollcheck
+SymmetryTolOpt = typer.Option(
+    None, "--symmetry-tol",
+    help="How far from symmetric about its axis the body may be: the two moments across the "
+         "axis may differ, and the products of inertia coupling the axis to the plane across "
+         "it may be, up to this fraction of their mean (0.01 or '1 %'; at most 10 %). Within "
+         "it the answer is for the symmetrised body (the mean moment across) with a warning; "
+         "beyond it the body is refused. Default: 1 %.",
+    show_default=False)
 FORMAT_HELP = "Output: table (for people), json (= --json) or csv (the tables, for spreadsheets)."
 FormatOpt = typer.Option(None, "--format", metavar="table|json|csv", help=FORMAT_HELP, show_default=False)
 
@@ -33,13 +43,7 @@ DigitsOpt = typer.Option(6, "--digits", min=1, max=17, help=DIGITS_HELP)
 UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 
 
-def debug() -> bool:
-    """Tracebacks for internal errors: the root ``--debug`` or ``RBCLI_DEBUG=1``."""
-    import os
-
-    from rbcli.cli.app import STATE
-
-    return bool(STATE["debug"]) or os.environ.get("RBCLI_DEBUG", "").strip() not in ("", "0")
+from rbcli.cli.app import debug  # noqa: E402,F401  (lives in app: main() needs it first)
 
 
 def env():

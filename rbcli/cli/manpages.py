@@ -1,7 +1,7 @@
 """Write the man pages in man/ from the real command tree.
 
 click-man does not work with typer 0.29 (click is vendored as ``typer._click``), so
-this walks ``typer.main.get_command(app)`` itself. Run ``python -m rbcli.cli.manpages
+this walks the command tree itself (``rbcli.cli.app.command_tree()``). Run ``python -m rbcli.cli.manpages
 man/`` after changing an option; ``tests/test_manpages.py`` fails when a page is stale.
 """
 
@@ -132,22 +132,17 @@ def page(name: str, cmd, version: str, manual: dict, parent: str = "rbcli") -> s
 
 
 def _commands():
-    import typer.main
+    from rbcli.cli.app import command_tree
 
-    from rbcli.cli import app
-
-    return typer.main.get_command(app).commands
+    return command_tree().commands
 
 
 def pages() -> dict[str, str]:
     """File name → roff text of every page."""
-    import typer.main
-
     from rbcli import __version__
-    from rbcli.cli import app
-    from rbcli.cli.app import MANUAL
+    from rbcli.cli.app import MANUAL, command_tree
 
-    root = typer.main.get_command(app)
+    root = command_tree()  # imports every command module (they fill in MANUAL)
     out = {"rbcli.1": page("", root, __version__, MANUAL.get("", {}))}
     for name, cmd in sorted(root.commands.items()):
         out[f"rbcli-{name}.1"] = page(name, cmd, __version__, MANUAL.get(name, {}))

@@ -10,7 +10,9 @@ from rbcli.cli.app import MANUAL, app
 HELP = """Stability of a wheel, disk or hoop rolling on a rough floor: the critical speed.
 
 The body must be a body of revolution about its axle (--axle, default the body's
-shaft, else body z) with its centre of mass on the axle and its rim circle in the
+shaft, else body z) with its centre of mass on the axle (within --symmetry-tol,
+default 1 %: a nearly symmetric wheel is answered for its symmetrised form with a
+warning) and its rim circle in the
 plane of the centre of mass (within 1 % of the radius; a cone on its base rim is refused). It rolls without slipping
 on its rim, radius a (--radius, default the body's rim_radius, else the largest
 round part coaxial with the axle; the output says which). Straight upright rolling
@@ -43,6 +45,7 @@ def rollcheck(
     spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 rpm'); speed = a x spin.", show_default=False),
     lean: str = typer.Option(None, "--lean", help="Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.", show_default=False),
     circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (a bare number in the body's length unit, m by default; or with units); 0 = spinning in place.", show_default=False),
+    symmetry_tol: str = c.SymmetryTolOpt,
     plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane. An existing figure is replaced (atomically); an input file never.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
@@ -59,7 +62,7 @@ def rollcheck(
     b = c.load_one(body, expr, e)
     opts = RollcheckOptions.parse(b, axle=axle, through=through, radius=radius,
                                   tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
-                                  lean=lean, circle=circle)
+                                  lean=lean, circle=circle, symmetry_tol=symmetry_tol)
     plot_path = c.check_plot(plot, b) if plot is not None else None
     res = run(b, opts)
     if plot_path is not None:
@@ -90,9 +93,8 @@ MANUAL["rollcheck"] = {
         "speed the verdict is unstable. Thin disk: v_c = sqrt(g a/3); hoop: v_c = sqrt(g a/4).",
         "The axle is --axle, else the body's shaft axis, else body z; it passes through "
         "--through, else the body's shaft point, else the origin. The body must be of "
-        "revolution about it (the two moments across the axle equal to a relative 1e-6, the "
-        "axle a principal axis) and its centre of mass must be on it (to 1e-6 of the rim "
-        "radius); otherwise rbcli says by how much and exits 2. The rim radius is --radius, "
+        "revolution about it and its centre of mass must be on it, within --symmetry-tol (see "
+        "below); otherwise rbcli says by how much, names --symmetry-tol and exits 2. The rim radius is --radius, "
         "else the body's rim_radius, else the largest outer radius of the round parts (ring, "
         "disk, cylinder, torus, sphere, hemisphere, cone; not holes) centred on and coaxial "
         "with the axle; the output says which.",
@@ -108,6 +110,21 @@ MANUAL["rollcheck"] = {
         "and that reason (exit 2): a cone or hemisphere on its base rim, a top. With a --radius or "
         "rim_radius that no round part has, there is nothing to measure and the rim is taken in "
         "the plane of the centre of mass.",
+        "Nearly symmetric wheels (issue 14; a CAD wheel is of revolution only to its "
+        "modelling: a valve, a balancing mark, a tilt on the axle): the two moments across the "
+        "axle (about the centre of mass) may differ, and the products of inertia coupling the "
+        "axle to the plane across it may be, up to --symmetry-tol (default 1 %, a fraction 0.01 "
+        "or '1 %', at most 10 %) of their mean; the centre of mass may be off the axle by that "
+        "fraction of the rim radius. Within it the answer is for the symmetrised wheel (I the "
+        "mean moment across, the centre of mass taken on the axle), with one warning on "
+        "standard error giving the asymmetry in %, a table line saying how far the critical "
+        "spin and speed may be off, and the JSON key asymmetry. The bound: s_c is proportional "
+        "to sqrt(I), so with the moments across I1 <= I2 differing by delta of their mean the "
+        "real threshold lies between the values for I1 and I2, within delta/(4 - delta) "
+        "(about delta/4) of the symmetrised one; products of inertia add about their relative "
+        "size, a centre of mass e off the axle about e/(2 (a - r)); the line quotes the largest. "
+        "Beyond the tolerance the wheel is refused with both moments (digits enough to differ), "
+        "the % and the option. Symmetric to rounding (1e-6): nothing is said.",
         "Straight rolling: --speed (m/s, or e.g. '20 km/h'; negative = backwards, the verdict "
         "uses |speed|) or --spin (rad/s, or '300 rpm'); both may be given if they agree "
         "(speed = a x spin). The margin is |speed| / critical speed.",
@@ -148,6 +165,10 @@ MANUAL["rollcheck"] = {
          "was negative."),
         ("axle, axle_through, com", "[3] unit axle, a point of the axle line and the centre "
          "of mass, body frame, m."),
+        ("asymmetry", "only for a nearly symmetric wheel: {transverse_moments [I1, I2] about "
+         "the centre of mass (kg m^2), relative (I2 - I1)/mean, coupling (kg m^2), "
+         "coupling_relative, principal_axis_tilt (rad), com_offset (m, from the axle line), "
+         "com_offset_relative (of the rim radius), tolerance}; as top's."),
         ("model, warnings, name, file", "the model's one-line description; the warnings also "
          "printed on standard error (a list, [] when none); the body's name and source."),
     ],
@@ -163,6 +184,13 @@ MANUAL["rollcheck"] = {
          "Steady circular rolling of a hoop leaning 20 degrees on a 1 m circle."),
         ("rbcli rollcheck examples/spoked_wheel.yaml --plot margin.svg",
          "The spoked wheel's threshold and a plot of the lean frequency against speed."),
+        ("rbcli rollcheck examples/car_wheel.yaml",
+         "A disk tilted 0.5° on its axle: products of inertia 0.87 % of the moment across, within "
+         "the default --symmetry-tol of 1 %; answered for the symmetrised wheel (critical speed "
+         "0.8086 m/s) with a warning and the JSON key asymmetry."),
+        ("rbcli rollcheck examples/car_wheel.yaml --symmetry-tol 0.5%",
+         "Refused, exit status 2: the axle is not a principal axis (0.87 % of the moment across, "
+         "the nearest principal axis 0.5° away), beyond 0.5 %."),
         ("rbcli rollcheck examples/toy_top.yaml",
          "Refused, exit status 2: the cone's base rim is 8.48 mm (28.3 % of its radius) from the "
          "centre of mass along the axle, so upright rolling is not an equilibrium."),

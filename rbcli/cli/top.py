@@ -46,15 +46,6 @@ def _spin_opt(what: str, eg: str):
     return typer.Option(None, "--spin", help=_SPIN.format(what=what, eg=eg), show_default=False)
 
 
-#: shared by top and gyrocompass (and the same as rollcheck's, when it has one)
-SymmetryTolOpt = typer.Option(
-    None, "--symmetry-tol",
-    help="How far from symmetric about its axis the body may be: the two moments across the "
-         "axis may differ, and the products of inertia coupling the axis to the plane across "
-         "it may be, up to this fraction of their mean (0.01 or '1 %'; at most 10 %). Within "
-         "it the answer is for the symmetrised body (the mean moment across) with a warning; "
-         "beyond it the body is refused. Default: 1 %.",
-    show_default=False)
 
 
 def _warn(e, result) -> None:
@@ -77,7 +68,7 @@ def top(
     csv: str = typer.Option(None, "--csv", help="Write t, theta_deg, phi_deg, psi_deg (s, degrees) at --samples times over --duration to this file ('-' = standard output, instead of the tables). An existing file is replaced (atomically); an input file never.", show_default=False),
     duration: str = typer.Option(None, "--duration", help="Time span of --csv and --plot (s, or with units). Default: 3 nutation periods.", show_default=False),
     samples: int = typer.Option(600, "--samples", help="Rows of --csv, evenly spaced from t = 0 to --duration inclusive (2 to 1000000)."),
-    symmetry_tol: str = SymmetryTolOpt,
+    symmetry_tol: str = c.SymmetryTolOpt,
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
@@ -160,7 +151,7 @@ def gyrocompass(
     spin: str = _spin_opt("Rotor spin about its axis", "6000 rpm"),
     latitude: str = typer.Option(None, "--latitude", help="Required. Latitude, -90 to 90 (degrees, or with units); negative = south.", show_default=False),
     earth_rate: str = typer.Option(None, "--earth-rate", help="The Earth's (sidereal) rotation rate (rad/s, or with units). Default: 7.2921150e-5.", show_default=False),
-    symmetry_tol: str = SymmetryTolOpt,
+    symmetry_tol: str = c.SymmetryTolOpt,
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,

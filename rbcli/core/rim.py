@@ -41,21 +41,25 @@ ROUND_SHAPES = ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone", "tor
 RIM_OFFSET_LIMIT = 0.01
 
 
-def rim_candidates(parts: Any, axle: Any, through: Any) -> list[Any]:
+def rim_candidates(parts: Any, axle: Any, through: Any, tol: float = 1e-6) -> list[Any]:
     """The parts that can make a rim for this axle: round (:data:`ROUND_SHAPES`), not
     subtracted, coaxial with the axle (any orientation for a sphere) and centred on the
     axle line (to 1e-6 of their radius). ``parts`` are :class:`rbcli.model.Part`; ``axle``
-    a unit vector and ``through`` a point of the axle line (m), body frame."""
+    a unit vector and ``through`` a point of the axle line (m), body frame. ``tol`` (the
+    ``--symmetry-tol`` of a nearly symmetric wheel, a fraction) loosens both tests: a part
+    tilted from the axle by an angle whose sine is at most ``tol``, or centred off it by
+    at most ``tol`` of its radius, is still a rim (a CAD wheel tilted 0.005° on its axle)."""
     n = np.asarray(axle, dtype=float)
     P = np.asarray(through, dtype=float)
     out = []
     for p in parts:
         if p.subtract or p.radius is None or p.shape not in ROUND_SHAPES:
             continue
-        if p.shape != "sphere" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9:
+        if (p.shape != "sphere" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9
+                and float(np.linalg.norm(np.cross(p.axis, n))) > tol):
             continue  # round about another axis: not a rim for this axle
         d = np.asarray(p.com, dtype=float) - P
-        if float(np.linalg.norm(d - np.dot(d, n) * n)) > 1e-6 * p.radius:
+        if float(np.linalg.norm(d - np.dot(d, n) * n)) > max(tol, 1e-6) * p.radius:
             continue  # not centred on the axle line
         out.append(p)
     return out
@@ -124,18 +128,18 @@ class RimOffset:
 
 
 def rim_offset(parts: Any, com: Any, axle: Any, through: Any, radius: float,
-               rtol: float = 1e-9) -> RimOffset | None:
+               rtol: float = 1e-9, tol: float = 1e-6) -> RimOffset | None:
     """The rim circle's offset along the axle from the centre of mass ``com`` (m).
 
     The rim is made by the :func:`rim_candidates` whose outer radius is ``radius`` (to
-    ``rtol``); each touches the floor on the circle of :func:`rim_circle_centre`. Several
+    ``rtol``; ``tol`` as for :func:`rim_candidates`); each touches the floor on the circle of :func:`rim_circle_centre`. Several
     such parts in different planes (two wheels on an axle) give the mid-plane of the
     outermost circles. None when no part has that radius (a rim radius given as a number
     for a body whose rim is not a round part: nothing to measure).
     """
     n = np.asarray(axle, dtype=float)
     G = np.asarray(com, dtype=float)
-    rim = [p for p in rim_candidates(parts, n, through) if abs(p.radius - radius) <= rtol * radius]
+    rim = [p for p in rim_candidates(parts, n, through, tol) if abs(p.radius - radius) <= rtol * radius]
     if not rim:
         return None
     z = [float(np.dot(rim_circle_centre(p) - G, n)) for p in rim]

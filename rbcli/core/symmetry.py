@@ -126,14 +126,15 @@ class AxialSymmetry:
             "tolerance": float(tolerance),
         }
 
-    def percent(self) -> str:
-        """The departures in words: 'the moments across it differ by 0.012 %, ...'."""
+    def percent(self, size_name: str = "the body's size") -> str:
+        """The departures in words: 'the moments across it differ by 0.012 %, ...';
+        ``size_name`` names the length scale of the com offset (``"the rim radius"``)."""
         parts = [f"the moments across it differ by {_pct(self.relative)}"]
         if self.coupling_relative > ROUND_OFF:
             parts.append(f"its products of inertia with the plane across are {_pct(self.coupling_relative)} "
                          "of the moment across")
         if self.com_offset_relative > ROUND_OFF:
-            parts.append(f"the centre of mass is {_pct(self.com_offset_relative)} of the body's size "
+            parts.append(f"the centre of mass is {_pct(self.com_offset_relative)} of {size_name} "
                          "off it")
         return ", ".join(parts)
 

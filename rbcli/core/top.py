@@ -104,7 +104,7 @@ def _j(x: float | None) -> float | None:
 
 def _carlson_F(phi: np.ndarray, m1: float) -> np.ndarray:
     """F(φ|m) for |φ| <= π/2, from RF, with m1 = 1 - m given exactly."""
-    from scipy.special import elliprf
+    from rbcli.core.elliptic import elliprf
 
     s = np.sin(phi)
     c = np.cos(phi)
@@ -117,7 +117,7 @@ def _carlson_Pi(n: float, n1: float, phi: np.ndarray, m1: float) -> np.ndarray:
     ``n1 = 1 - n`` and ``m1 = 1 - m`` are passed separately so that 1 - m s² = c² + m1 s²
     and 1 - n s² = c² + n1 s² keep their digits.
     """
-    from scipy.special import elliprc, elliprf, elliprj
+    from rbcli.core.elliptic import elliprc, elliprf, elliprj
 
     s = np.sin(phi)
     c = np.cos(phi)
@@ -141,7 +141,7 @@ def _complete_Pi(n: float, n1: float, m1: float) -> float:
     """Π(n|m) = RF(0, 1-m, 1) + n/3 RJ(0, 1-m, 1, 1-n) (sheet §0); see _carlson_Pi for n < -1."""
     if n < -1.0:
         return float(_carlson_Pi(n, n1, np.asarray(0.5 * np.pi), m1))
-    from scipy.special import elliprf, elliprj
+    from rbcli.core.elliptic import elliprf, elliprj
 
     out = float(elliprf(0.0, m1, 1.0))
     if n != 0.0:
@@ -545,7 +545,7 @@ def _cubic_roots_shifted(
         x1, x2, x3 = sorted((0.0, ra, rb))
         return x1, x2, x3
 
-    from scipy.optimize import brentq
+    from rbcli.core.roots import brentq
 
     def bracketed(a_: float, fa: float, b_: float, fb: float) -> float:
         if fa == 0.0:
@@ -878,7 +878,7 @@ def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
 
 def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
     """θ, φ, ψ as :func:`path_at`, and sn τ, cn τ of the reduced phase τr (for the rates)."""
-    from scipy.special import ellipj
+    from rbcli.core.elliptic import ellipj
 
     e = motion.elliptic
     tt = np.asarray(t, dtype=float)
@@ -887,7 +887,7 @@ def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
     tau = e.lam * tt + e.tau0
     j = np.rint(tau / (2.0 * e.K))
     tau_r = tau - 2.0 * e.K * j
-    sn, cn, _dn, ph = ellipj(tau_r, e.m)
+    sn, cn, _dn, ph = ellipj(tau_r, e.m, e.m1)
     ph = np.clip(ph, -0.5 * np.pi, 0.5 * np.pi)
     # 1 - u = (1 - u2) + (u2 - u1) cn² and 1 + u = (1 + u1) + (u2 - u1) sn²: sums of
     # non-negative terms, accurate near either pole
@@ -898,7 +898,7 @@ def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
     # the phase at t = 0 reduced and evaluated exactly as at any t (not the stored atan2
     # value, equal to it within ~1 ulp), so that φ(0) and ψ(0) are exactly 0
     j0 = float(np.rint(e.tau0 / (2.0 * e.K)))
-    am0 = np.clip(ellipj(e.tau0 - 2.0 * e.K * j0, e.m)[3], -0.5 * np.pi, 0.5 * np.pi)
+    am0 = np.clip(ellipj(e.tau0 - 2.0 * e.K * j0, e.m, e.m1)[3], -0.5 * np.pi, 0.5 * np.pi)
 
     def dPi(n: float, n1: float, Pc: float) -> np.ndarray:
         now = _carlson_Pi(n, n1, ph, e.m1) + 2.0 * j * Pc

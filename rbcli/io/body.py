@@ -11,6 +11,7 @@ from __future__ import annotations
 import difflib
 import os
 import sys
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -961,6 +962,25 @@ def load_expr(expr: str) -> Body:
     return load_text(expr, "<expr>", Path.cwd(), name_default="expr")
 
 
+@contextmanager
+def _gc_paused():
+    """The cyclic garbage collector off while a body is built (issue 16).
+
+    Loading allocates a tree of ~20 objects a part that stays alive until the end, and the
+    collector kept re-scanning it: 25-35 % of the CPU time of a 10 000-part body. The loader
+    makes next to no reference cycles; whatever it makes is collected after.
+    """
+    import gc
+
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
+
+
 def load_text(
     data: bytes | str,
     filename: str,
@@ -976,7 +996,8 @@ def load_text(
     first of the body's ``inputs``, followed by every file the text includes or meshes it
     reads, at any depth, each once.
     """
-    loaded = _load(data, filename, base_dir, stack, units)
+    with _gc_paused():
+        loaded = _load(data, filename, base_dir, stack, units)
     if isinstance(data, bytes):
         text = data.decode("utf-8", errors="replace")
     else:

@@ -41,6 +41,7 @@ from __future__ import annotations
 import math
 import re
 from fractions import Fraction
+from functools import lru_cache
 from typing import NamedTuple
 
 __all__ = [
@@ -652,6 +653,9 @@ def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool
     return number, q, p, d, True
 
 
+#: parsed quantity texts are cached (issue 16): a body file repeats its few unit strings
+#: ("7850 kg/m^3") thousands of times, and the exact parse costs 10-20 µs each
+@lru_cache(maxsize=4096)
 def parse_quantity(text: str) -> tuple[float, Dim]:
     """Read a quantity: its value in SI units and its dimension.
 
@@ -683,6 +687,7 @@ def _format_float(x: float) -> str:
     return f"{x:.6g}"
 
 
+@lru_cache(maxsize=4096)  # see parse_quantity
 def to_si(text: str, kind: str) -> float:
     """Read a quantity that must be of a given kind; return its value in SI.
 
@@ -804,6 +809,20 @@ def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     ValueError
         ``kind`` is not a known kind (a programming error).
     """
+    try:  # cached (issue 16): a batch of files repeats one `units:` block
+        items = tuple(base_units.items())
+        hash(items)
+    except TypeError:  # a value that is not a unit text: the uncached path says what is wrong
+        return _unit_for_kind(base_units, kind)
+    return _unit_for_kind_cached(items, kind)
+
+
+@lru_cache(maxsize=256)
+def _unit_for_kind_cached(items: tuple[tuple[str, str], ...], kind: str) -> tuple[float, str]:
+    return _unit_for_kind(dict(items), kind)
+
+
+def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     speed = base_units.get("angular_speed")

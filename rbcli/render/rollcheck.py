@@ -12,6 +12,7 @@ import numpy as np
 
 from rbcli.render.fmt import DisplayUnits, num
 from rbcli.render.text import Doc
+from rbcli.render.top import asymmetry_note
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.rollcheck import RollcheckResult
@@ -52,6 +53,8 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
     doc.kv("wheel", rows)
     doc.note(f"rim radius from {o.radius_source}; axle along "
              f"[{', '.join(num(x, digits) for x in w.axle)}] ({o.axle_source}).")
+    if res.asymmetry is not None:
+        asymmetry_note(doc, res.asymmetry, o.symmetry_tol, res.asymmetry_effect, du, digits, "wheel", "I")
     doc.note("model: " + res.model + ".")
     doc.kv(
         "straight upright rolling: threshold",

@@ -67,7 +67,7 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
     doc.note(f"pivot [{piv}] {L} ({result.options.pivot_source}); symmetry axis, pivot to com, along [{ax}] "
              "(body frame).")
     if result.asymmetry is not None:
-        _asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
+        asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
                         du, d, "body", "I")
 
     S = motion.spin
@@ -207,10 +207,11 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
         doc.note(f"CSV written to {csv} ({rows} rows over {num(duration, d)} s)")
 
 
-def _asymmetry_note(doc: Doc, sym, tol: float, effect: float, du: DisplayUnits, d: int, what: str,
+def asymmetry_note(doc: Doc, sym, tol: float, effect: float, du: DisplayUnits, d: int, what: str,
                     name: str) -> None:
-    """The line of a nearly symmetric body: its two moments across, how far apart, the tilt
-    of the nearest principal axis, and how far the answer may be off."""
+    """The line of a nearly symmetric body (top's, gyrocompass's and rollcheck's): its two
+    moments across, how far apart, the tilt of the nearest principal axis, and how far the
+    answer may be off (``effect``, relative)."""
     J = du.unit("inertia")
     i1, i2 = (du.show(x, "inertia", d) for x in sym.transverse)
     tilt = f"; the nearest principal axis is {sym.principal_tilt:.3g} rad off it" if sym.coupling else ""
@@ -218,8 +219,14 @@ def _asymmetry_note(doc: Doc, sym, tol: float, effect: float, du: DisplayUnits, 
              f"{num(100.0 * sym.relative, 3)} %{tilt}; --symmetry-tol {num(100.0 * tol, 3)} %): the "
              f"answer is for the symmetrised {what} ({name} = their mean) and may be off by a relative "
              f"amount of the order of {num(100.0 * effect, 2)} %"
-             + (" (the path of the axis by a few times that tilt; --verify measures it)." if what == "body"
-                else "."))
+             + _TAILS.get(what, "."))
+
+
+#: what :func:`asymmetry_note` adds after "may be off by ..." for each command's body
+_TAILS = {
+    "body": " (the path of the axis by a few times that tilt; --verify measures it).",
+    "wheel": " (the critical spin and speed; the centre of mass is taken on the axle).",
+}
 
 
 # ----------------------------------------------------------------------------- CSV
@@ -300,7 +307,7 @@ def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits:
         ])
         doc.note(f"spin axis [{', '.join(num(x, d) for x in result.options.axis)}] ({result.options.axis_source}).")
         if result.asymmetry is not None:
-            _asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
+            asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
                             du, d, "rotor", "A")
     else:
         doc.heading("gyrocompass")
