@@ -6,7 +6,6 @@ layer are imported inside the functions.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 from typing import Any
 
@@ -160,41 +159,12 @@ from rbcli.api.options import (  # noqa: E402,F401
 # ----------------------------------------------------------------------------- output
 
 
-#: what :func:`rbcli.render.fmt.num` prints for a number that is not finite
-_NON_FINITE = frozenset({"inf", "-inf", "+inf", "nan", "-nan"})
-_CELL_SPLIT = re.compile(r"[\s\[\](),;=]+")
-
-
 def check_finite_doc(doc: Any) -> None:
-    """Refuse a table that would show inf or NaN as a number.
+    """Refuse a table that would show inf or NaN as a number
+    (:func:`rbcli.render.text.check_finite_doc`)."""
+    from rbcli.render.text import check_finite_doc as check
 
-    Looks at the numeric (right-aligned) columns of every table: a whole word there that
-    reads inf or nan is what ``num()`` prints for a result that overflowed. Names, notes
-    and left-aligned text are not looked at (a part may be called "nan").
-
-    Raises
-    ------
-    NonFiniteResult
-        (exit 2, one line) naming the table and the row.
-    """
-    from rbcli.errors import NonFiniteResult
-    from rbcli.render.text import Table
-
-    for item in doc.items:
-        if not isinstance(item, Table):
-            continue
-        for row in item.rows:
-            for i in item.right:
-                if i >= len(row):
-                    continue
-                bad = [w for w in _CELL_SPLIT.split(row[i].lower()) if w in _NON_FINITE]
-                if bad:
-                    what = row[0].strip() if row and i != 0 else item.title
-                    raise NonFiniteResult(
-                        f"'{what}' in the table '{item.title}' is not a finite number ({bad[0]}): "
-                        "a value is too large or too small to compute with; check the options "
-                        "and the body's numbers"
-                    )
+    check(doc)
 
 
 def write_doc(e: Any, doc: Any) -> None:

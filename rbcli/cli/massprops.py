@@ -36,18 +36,6 @@ INERTIA_FORMAT_HELP = (
     "precision; the frame is stated in a comment).")
 
 
-def reference(body, *, about: str | None = None):
-    """(mass properties, point, label): the point the inertia is about — ``about`` (the
-    text of --about: com, origin or x,y,z), else the body's reference, else the origin.
-    (For the report; the commands use :class:`rbcli.api.massprops.InertiaOptions`.)"""
-    from rbcli.api.massprops import Reference
-    from rbcli.core.inertia import combine
-
-    mp = combine(body.parts)
-    ref = Reference.parse(body, about)
-    return mp, ref.resolve(mp), ref.label
-
-
 def with_file(data: dict, source: str) -> dict:
     """A result's JSON with ``"file"`` after ``"name"``, as the command prints it."""
     out = {}

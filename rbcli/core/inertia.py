@@ -93,6 +93,28 @@ def combine(parts: Iterable[Part]) -> MassProps:
     return MassProps(total, origin + com_rel, J)
 
 
+def part_contributions(parts: Iterable[Part], com: np.ndarray) -> np.ndarray:
+    """Each part's contribution to the body's inertia about its centre of mass.
+
+    Parameters
+    ----------
+    parts : the body's parts (subtracted parts count negative)
+    com : (3,) array — m, the body's centre of mass (:func:`combine`)
+
+    Returns
+    -------
+    (n, 3, 3) ndarray — kg m^2, body axes, tensor convention: part i's own inertia about
+    its centre plus the parallel-axis term ``m (d·d E − d dᵀ)``, ``d`` from ``com`` to the
+    part's centre (Huygens–Steiner), negated for a hole. They sum to ``inertia_com`` of
+    :func:`combine` (to rounding).
+    """
+    com = np.asarray(com, dtype=float)
+    out = [(-1.0 if p.subtract else 1.0)
+           * (np.asarray(p.inertia_com, dtype=float) + shift_term(p.mass, np.asarray(p.com) - com))
+           for p in parts]
+    return np.array(out, dtype=float).reshape(-1, 3, 3)
+
+
 def inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
     """Inertia tensor (kg m^2, body axes) about ``point`` (m)."""
     return mp.inertia_com + shift_term(mp.mass, np.asarray(point, dtype=float) - mp.com)

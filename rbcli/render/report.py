@@ -83,23 +83,17 @@ INPUT_KEY = "input-file"
 # ----------------------------------------------------------------------------- parts table
 
 
-def parts_table(doc: Doc, body, mp, du: DisplayUnits, digits: int) -> None:
+def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int) -> None:
     """Each part's mass, centre and its contribution to the moments about the body's com.
 
-    A part's contribution is its own inertia about its com plus the parallel-axis term
-    ``m (d·d E − d dᵀ)``, ``d`` from the body's com to the part's (negative for a hole);
-    the contributions sum to the body's inertia about its com.
+    ``contributions`` (kg m², one 3×3 per part, from
+    :func:`rbcli.core.inertia.part_contributions`) are shown as their diagonals; the total
+    row is the body (``mp``: mass, com, inertia about the com).
     """
-    from rbcli.core.inertia import shift_term
-
     m_unit, L, I_unit = du.unit("mass"), du.unit("length"), du.unit("inertia")
     fI, _ = du.factor("inertia")
     rows = []
-    total = np.zeros(3)
-    for p in body.parts:
-        sign = -1.0 if p.subtract else 1.0
-        Jc = sign * (np.asarray(p.inertia_com, dtype=float) + shift_term(p.mass, np.asarray(p.com) - mp.com))
-        total += np.diag(Jc)
+    for p, Jc in zip(body.parts, contributions):
         share = 100.0 * p.signed_mass / mp.mass
         rows.append(
             (p.name, p.shape + (" (hole)" if p.subtract else ""), du.show(p.signed_mass, "mass", digits),
@@ -267,7 +261,7 @@ def html(report: Report) -> str:
         if s.skipped is None:
             out.append(f'<li><a href="#{s.key}">{_e(s.title)}</a></li>')
         else:
-            out.append(f'<li class="skip"><a href="#{s.key}">{_e(s.title)}</a> (not included)</li>')
+            out.append(f'<li class="skip">{_e(s.title)} (not included)</li>')  # its one line says why
     out.append(f'<li><a href="#{INPUT_KEY}">Input file</a></li>')
     out += ["</ol>", "</nav>", "<main>"]
     for s in report.sections:

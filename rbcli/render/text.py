@@ -10,6 +10,7 @@ plain ASCII without colour when not a terminal.
 from __future__ import annotations
 
 import io
+import re
 import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -120,3 +121,42 @@ def _columns() -> int:
         return max(40, int(os.environ.get("COLUMNS", "100")))
     except ValueError:
         return 100
+
+
+# ----------------------------------------------------------------------------- checks
+
+
+#: what :func:`rbcli.render.fmt.num` prints for a number that is not finite
+_NON_FINITE = frozenset({"inf", "-inf", "+inf", "nan", "-nan"})
+_CELL_SPLIT = re.compile(r"[\s\[\](),;=]+")
+
+
+def check_finite_doc(doc: Doc) -> None:
+    """Refuse a table that would show inf or NaN as a number.
+
+    Looks at the numeric (right-aligned) columns of every table: a whole word there that
+    reads inf or nan is what ``num()`` prints for a result that overflowed. Names, notes
+    and left-aligned text are not looked at (a part may be called "nan").
+
+    Raises
+    ------
+    NonFiniteResult
+        (exit 2, one line) naming the table and the row.
+    """
+    from rbcli.errors import NonFiniteResult
+
+    for item in doc.items:
+        if not isinstance(item, Table):
+            continue
+        for row in item.rows:
+            for i in item.right:
+                if i >= len(row):
+                    continue
+                bad = [w for w in _CELL_SPLIT.split(row[i].lower()) if w in _NON_FINITE]
+                if bad:
+                    what = row[0].strip() if row and i != 0 else item.title
+                    raise NonFiniteResult(
+                        f"'{what}' in the table '{item.title}' is not a finite number ({bad[0]}): "
+                        "a value is too large or too small to compute with; check the options "
+                        "and the body's numbers"
+                    )
