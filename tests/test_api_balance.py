@@ -46,8 +46,8 @@ DOCUMENTED = [
           angle_step="15", tolerance_planes="corrections", grade="G2.5", speed="3000 rpm")),
     ("two_disk_rotor.yaml", ["--shaft", "1,0,0", "--through", "com", "--mark", "0,0,1", "--g", "9.81"],
      dict(shaft="1,0,0", through="com", mark="0,0,1", g="9.81")),
-    ("two_disk_rotor.yaml", ["--planes", "0,0.4", "--radius", "0.1,0.12", "--speed", "300",
-                             "--bearings", "0,0.4"],
+    ("two_disk_rotor.yaml", ["--planes", "0,400", "--radius", "100,120", "--speed", "300",
+                             "--bearings", "0,0.4 m"],  # bare lengths in the body's mm
      dict(planes=[0, 0.4], radius=[0.1, 0.12], speed=300, bearings=[0.0, 0.4])),
 ]
 
@@ -121,7 +121,7 @@ def test_typed_fields_and_frozen():
                       bearings=[0, 0.4], grade=6.3)
     assert s.to_json() == r.to_json()
     # the body's defaults and their provenance
-    w = rbcli.balance(rbcli.load(EXAMPLES / "car_wheel.yaml"), planes="-0.1,0.1")
+    w = rbcli.balance(rbcli.load(EXAMPLES / "car_wheel.yaml"), planes="-100,100")  # the body's mm
     assert w.radius_source == "the body's rim_radius" and w.corrections[0].radius == 0.2
 
 

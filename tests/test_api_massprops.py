@@ -42,7 +42,8 @@ def test_principal_to_json_is_the_cli_json_on_every_example(cli, name):
     ({"about": "origin", "axis": [1, 1, 0]}, ("--about", "origin", "--axis", "1,1,0")),
     ({"about": "1,1,0", "omega": "0,0,300 rpm", "axis": "z"},
      ("--about", "1,1,0", "--omega", "0,0,300 rpm", "--axis", "z")),
-    ({"about": [0.5, 0.5, 0.0], "omega": [1.0, 0.0, 0.0]}, ("--about", "0.5,0.5,0", "--omega", "1,0,0")),
+    # a Python number is SI; a bare number typed on the command line is in the body's units
+    ({"about": [0.5, 0.5, 0.0], "omega": [1.0, 0.0, 0.0]}, ("--about", "0.5,0.5,0 m", "--omega", "1,0,0")),
     ({"about": "com", "axis": "1e-320,1e-320,0"}, ("--about", "com", "--axis", "1e-320,1e-320,0")),
     ({"about": "100,0,5 mm"}, ("--about", "100,0,5 mm")),
 ])

@@ -54,7 +54,10 @@ def test_typed_fields_and_sampling():
     body = rbcli.load(ROOT / "examples/book.yaml")
     res = rbcli.precess(body, omega=[0.01, 1, 0.01], at=1e9, duration=60.0, samples=7)
     assert isinstance(res, PrecessResult)
-    assert res.options == PrecessOptions(omega=(0.01, 1.0, 0.01), at=1e9, duration=60.0, samples=7)
+    assert res.options == PrecessOptions(omega=(0.01, 1.0, 0.01), at=1e9, duration=60.0, samples=7,
+                                         echo=res.options.echo)
+    # what the table echoes: the values as understood, angular speeds also in rpm
+    assert res.options.echo[0] == ("--omega", "0.01, 1, 0.01 (0.095493, 9.5493, 0.095493 rpm)", "rad/s")
     m = res.motion
     assert m.case == "circulates_max" and m.flip_interval == pytest.approx(19.5529, rel=1e-5)
     assert isinstance(m.period, float)

@@ -27,11 +27,13 @@ OPTION_SETS = [
     (["--speed", "0.1"], {"speed": 0.1}),
     (["--spin", "300 rpm"], {"spin": "300 rpm"}),
     (["--speed", "-2", "--g", "9.81"], {"speed": -2.0, "g": 9.81}),
-    (["--lean", "20", "--circle", "1"], {"lean": 20, "circle": 1}),
-    (["--speed", "2", "--circle", "0.5"], {"speed": 2, "circle": "50 cm"}),
+    # bare lengths on the command line are in the body's units (car_wheel.yaml is in mm):
+    # the CLI side says 'm' so that the same SI numbers go to the API
+    (["--lean", "20", "--circle", "1 m"], {"lean": 20, "circle": 1}),
+    (["--speed", "2", "--circle", "0.5 m"], {"speed": 2, "circle": "50 cm"}),
     (["--speed", "1", "--lean", "10"], {"speed": "1 m/s", "lean": "10 deg"}),
     (["--lean", "30", "--circle", "0"], {"lean": 30.0, "circle": 0}),
-    (["--speed", "1", "--lean", "40", "--circle", "0.3"], {"speed": 1, "lean": 40, "circle": 0.3}),
+    (["--speed", "1", "--lean", "40", "--circle", "0.3 m"], {"speed": 1, "lean": 40, "circle": 0.3}),
 ]
 
 

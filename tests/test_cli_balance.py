@@ -590,8 +590,9 @@ def test_warnings_on_stderr(cli):
     r = cli("balance", "-e", "{shape: point, mass: 1, at: [0.1, 0, 0.5]}", "--planes", "0,1",
             "--radius", "0.01")
     assert r.code == 0 and "10%" in r.err
-    # a mass step larger than the corrections (a bare number is kg)
-    r = cli("balance", WHEEL, "--planes=-0.1,0.1", "--mass-step", "5")
+    # a mass step larger than the corrections (a bare number is in the body's kg; its
+    # bare lengths are mm)
+    r = cli("balance", WHEEL, "--planes=-100,100", "--mass-step", "5")
     assert r.code == 0 and "did you mean grams" in r.err
 
 

@@ -168,7 +168,7 @@ RT = 1e-12
 
 @pytest.mark.parametrize("planes, radius, bearings", [
     ("0,400 mm", "100 mm", "0,400 mm"),
-    ("0,0.4", "0.1", "0,0.4"),  # bare: metres
+    ("0,400", "100", "0,400"),  # bare: the body's units (two_disk_rotor.yaml is in mm)
     ("0 mm,40 cm", "10 cm", "0,40 cm"),
 ])
 def test_balance_list_options(cli, planes, radius, bearings):

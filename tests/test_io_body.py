@@ -357,7 +357,13 @@ GIVEN_J = np.array([[2.0, -0.3, 0.1], [-0.3, 3.0, -0.2], [0.1, -0.2, 4.0]])  # t
 
 def test_given_with_a_matrix_and_with_both_map_conventions_agree():
     as_matrix = massprops(
-        f"parts:\n  - {{shape: given, mass: 5, com: [1, 0, 0], inertia: {flow(GIVEN_J.tolist())}}}\n")
+        f"parts:\n  - {{shape: given, mass: 5, com: [1, 0, 0], inertia: {flow(GIVEN_J.tolist())}, "
+        "convention: tensor}\n")
+    # the same matrix with positive products: off-diagonals negated
+    P = np.where(np.eye(3, dtype=bool), GIVEN_J, -GIVEN_J)
+    as_positive = massprops(
+        f"parts:\n  - {{shape: given, mass: 5, com: [1, 0, 0], inertia: {flow(P.tolist())}, "
+        "convention: positive}\n")
     tensor_map = massprops(
         "parts:\n  - {shape: given, mass: 5, com: [1, 0, 0], inertia: "
         "{Ixx: 2, Iyy: 3, Izz: 4, Ixy: -0.3, Iyz: -0.2, Izx: 0.1, convention: tensor}}\n")
@@ -365,7 +371,7 @@ def test_given_with_a_matrix_and_with_both_map_conventions_agree():
     positive_map = massprops(
         "parts:\n  - {shape: given, mass: 5, com: [1, 0, 0], inertia: "
         "{Ixx: 2, Iyy: 3, Izz: 4, Ixy: 0.3, Iyz: 0.2, Izx: -0.1, convention: positive}}\n")
-    for mp in (as_matrix, tensor_map, positive_map):
+    for mp in (as_matrix, as_positive, tensor_map, positive_map):
         assert mp.mass == 5.0
         assert close(mp.com, [1, 0, 0])
         assert close(mp.inertia_com, GIVEN_J)  # no arithmetic: equal to round-off
@@ -378,11 +384,40 @@ def test_given_map_without_products_needs_no_convention_and_products_need_one():
     assert "convention: tensor" in err.message and "convention: positive" in err.message
 
 
+def test_given_matrix_with_products_needs_a_convention():
+    err = error_of("parts:\n  - {shape: given, mass: 1, inertia: [[1, 0.1, 0], [0.1, 1, 0], [0, 0, 1]]}\n")
+    assert "convention: tensor" in err.message and "convention: positive" in err.message
+    err = error_of("parts:\n  - {shape: given, mass: 1, inertia: [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "
+                   "convention: both}\n")
+    assert "'tensor' or 'positive'" in err.message
+
+
+def test_impossible_inertia_is_quoted_in_the_files_units():
+    err = error_of("units: {length: mm, mass: g}\nparts:\n  - {shape: given, mass: 100, "
+                   "inertia: [[1000, 0, 0], [0, 1000, 0], [0, 0, 2500]]}\n")
+    assert "(1000, 1000, 2500 g·mm²)" in err.message, err.message
+    err = error_of("parts:\n  - {shape: given, mass: 1, inertia: [[1, 0, 0], [0, 1, 0], [0, 0, 2.5]]}\n")
+    assert "(1, 1, 2.5 kg·m²)" in err.message, err.message
+
+
+def test_diameter_wherever_radius():
+    a = massprops("parts:\n  - {shape: cylinder, mass: 2, radius: 0.05, inner_radius: 0.02, length: 0.1}\n")
+    b = massprops("parts:\n  - {shape: cylinder, mass: 2, diameter: 0.1, inner_diameter: 0.04, length: 0.1}\n")
+    c = massprops("units: {length: mm}\nparts:\n  - {shape: cylinder, mass: 2, diameter: 100, inner_diameter: '4 cm', length: 100}\n")
+    assert close(a.inertia_com, b.inertia_com) and close(a.inertia_com, c.inertia_com)
+    err = error_of("parts:\n  - {shape: disk, mass: 1, radius: 0.1, diameter: 0.2}\n")
+    assert "'radius'" in err.message and "'diameter'" in err.message and "not both" in err.message
+    err = error_of("parts:\n  - {shape: disk, mass: 1}\n")
+    assert "'radius' or 'diameter'" in err.message
+    err = error_of("parts:\n  - {shape: box, mass: 1, size: [1, 1, 1], diameter: 2}\n")
+    assert "diameter" in err.message
+
+
 def test_given_inertia_is_placed_with_the_part():
     R = Rotation.from_euler("ZYX", [30, 20, 10], degrees=True).as_matrix()
     mp = massprops(
         f"parts:\n  - {{shape: given, mass: 5, com: [0.1, 0, 0], inertia: {flow(GIVEN_J.tolist())}, "
-        "at: [0, 0, 1], rotate: {euler: [30, 20, 10], seq: ZYX}}\n")
+        "convention: tensor, at: [0, 0, 1], rotate: {euler: [30, 20, 10], seq: ZYX}}\n")
     assert close(mp.com, np.array([0, 0, 1]) + R @ [0.1, 0, 0])
     assert close(mp.inertia_com, R @ GIVEN_J @ R.T)
 
@@ -596,7 +631,7 @@ ERROR_CASES = [
         "parts:\n  - shape: box\n    size: ['1 deg', 1, 1]\n    mass: 1\n", 3, "'1 deg'",
         "'1 deg' is an angle, but a length is needed", id="angle-for-length"),
     pytest.param(
-        "parts:\n  - shape: given\n    mass: 1\n    inertia: [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]\n", 4, "[[",
+        "parts:\n  - shape: given\n    mass: 1\n    convention: tensor\n    inertia: [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]\n", 5, "[[",
         "not symmetric", id="given-not-symmetric"),
     pytest.param(
         "parts:\n  - shape: given\n    mass: 1\n    inertia: [[1, 0, 0], [0, 1, 0], [0, 0, -1]]\n", 4, "[[",

@@ -58,7 +58,9 @@ def _ulps(a: float, b: float) -> float:
 
 
 # Names in our table -> pint's name for the same unit (identical unless listed).
-PINT_NAME = {"rev": "revolution", "r/min": "rpm"}
+# pint's "mil" is an angle (the NATO mil); the engineer's mil is pint's "thou". pint has no
+# "lbm": it is the avoirdupois pound.
+PINT_NAME = {"rev": "revolution", "r/min": "rpm", "mil": "thou", "lbm": "pound"}
 # Test-side list of how many angle dimensions each unit carries (pint cannot tell us:
 # it treats the radian as dimensionless).
 ANGLE_EXPONENT = {
@@ -303,7 +305,12 @@ def test_unit_expressions(text, dim):
         "1e400 km",  # overflows a float after the unit factor
         "3 kgs",
         "3 MM",
-        "3 m2",
+        "3 Mm",
+        "3 G",
+        "3 Nm",
+        "3 MS",
+        "3 m0",
+        "3 m13",
         "3 m^1.5",
         "3 m^99",
         "3 (m",
@@ -407,7 +414,7 @@ def test_angular_speed_units_are_accepted():
 
 @pytest.mark.parametrize(
     ("text", "hint"),
-    [("3 kgs", "'kg'"), ("3 MM", "'mm'"), ("3 m2", "'m^2'"), ("3 hz", "'Hz'"), ("1 Kg", "'kg'")],
+    [("3 kgs", "'kg'"), ("3 MM", "'mm'"), ("3 Mm", "'mm'"), ("3 MG", "'mg'"), ("1 kn", "'kN'")],
 )
 def test_unknown_unit_suggests(text, hint):
     with pytest.raises(UnitError) as info:
@@ -544,3 +551,56 @@ def test_unit_table_lists_every_unit():
             listed.update(a.strip() for a in aliases.split(","))
     assert listed == set(known_units())
     assert "pi/180 rad" in table and "45359237/100000000 kg" in table
+
+
+# --------------------------------------------------------------------------- spellings people use
+
+
+@pytest.mark.parametrize(
+    ("ours", "pints"),
+    [
+        ("3000 RPM", "3000 rpm"),
+        ("3000 Rpm", "3000 rpm"),
+        ("2 Kg", "2 kg"),
+        ("2 KG", "2 kg"),
+        ("50 hz", "50 Hz"),
+        ("2 KHZ", "2 kHz"),
+        ("3 KN", "3 kN"),
+        ("7850 kg/m3", "7850 kg/m**3"),
+        ("3 m2", "3 m**2"),
+        ("5 mm4", "5 mm**4"),
+        ("2 kg*m2", "2 kg*m**2"),
+        ("7.85 g/cc", "7.85 g/cc"),
+        ("3 lbm", "3 pound"),
+        ("3 LBM", "3 pound"),
+        ("2 slug", "2 slug"),
+        ("4 mil", "4 thou"),
+        ("4 thou", "4 thou"),
+        ("4 lbm*in2", "4 pound*inch**2"),
+    ],
+)
+def test_spellings_people_use_agree_with_pint(ureg, ours, pints):
+    value, dim = parse_quantity(ours)
+    q = ureg.Quantity(pints).to_base_units()
+    assert value == pytest.approx(q.magnitude, rel=PINT_RTOL)
+    assert (dim.L, dim.M, dim.T) == _pint_lmt(q)
+
+
+def test_exact_new_units():
+    assert parse_quantity("1 mil") == (float(Fraction("0.0254") / 1000), Dim(L=1))
+    assert parse_quantity("7.85 g/cc") == (7850.0, Dim(M=1, L=-3))
+    assert parse_quantity("1 slug")[0] == float(Fraction("0.45359237") * Fraction("9.80665") / Fraction("0.3048"))
+    assert parse_quantity("1 g0") == (9.80665, Dim(L=1, T=-2))  # a name ending in a digit is itself
+
+
+@pytest.mark.parametrize("text", ["1 Mm", "1 MM", "1 G", "1 G/CC", "1 Nm", "1 NM", "1 MS", "1 MG", "1 S", "1 T", "1 kn", "1 MRAD"])
+def test_case_folding_never_changes_a_prefix_or_symbol(text):
+    with pytest.raises(UnitError, match="unknown unit"):
+        parse_quantity(text)
+
+
+def test_angular_speed_base_unit():
+    assert unit_for_kind({"angular_speed": "rpm"}, "angular_speed") == (float(2 * PI / 60), "rpm")
+    assert unit_for_kind({"angular_speed": "rpm", "length": "mm"}, "length") == (0.001, "mm")
+    with pytest.raises(UnitError, match="angular_speed"):
+        unit_for_kind({"angular_speed": "Hz"}, "angular_speed")

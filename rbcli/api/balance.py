@@ -85,6 +85,8 @@ class BalanceOptions:
     grade : float | None — ISO 21940-11 grade G, mm/s
     tolerance_planes : str — "bearings" or "corrections"
     given : tuple of str — the options given whose size can make the result overflow
+    echo : tuple of (option, value, unit) — the options given, as understood, in the body's
+        units (tables show them first)
     """
 
     shaft: tuple[float, float, float]
@@ -109,6 +111,7 @@ class BalanceOptions:
     grade: float | None = None
     tolerance_planes: str = "bearings"
     given: tuple[str, ...] = ()
+    echo: tuple[tuple[str, str, str], ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, shaft=None, through=None, mark=None, zero_mark_deg=None,
@@ -122,6 +125,7 @@ class BalanceOptions:
         rbcli.InputError
             with the message the command line prints (``--planes: ...``).
         """
+        angle_sense_given = angle_sense not in (None, "with")
         with _param("angle_sense"):
             angle_sense = op.choice(angle_sense if angle_sense is not None else "with",
                                     "--angle-sense", ("with", "against"))
@@ -135,22 +139,23 @@ class BalanceOptions:
                 zero_deg = op.degrees(zero_mark_deg, "--zero-mark-deg")
             if not math.isfinite(zero_deg):
                 raise InputError("--zero-mark-deg: must be a finite angle", param="zero_mark_deg")
+        u = op.Units.of(body)
         with _param("shaft"):
             n_shaft = op.direction(shaft, "--shaft") if shaft is not None else None
         with _param("through"):
-            p_through = op.point(through, "--through") if through is not None else None
+            p_through = u.point(through, "--through") if through is not None else None
         with _param("mark"):
             v_mark = op.vector(mark, "dimensionless", "--mark") if mark is not None else None
         with _param("planes"):
-            z_planes = (op.distinct(op.numbers(planes, "length", "--planes", counts=(2,)),
+            z_planes = (op.distinct(u.numbers(planes, "length", "--planes", counts=(2,)),
                                     "--planes", "correction planes") if planes is not None else None)
         r_opt = None
         if radius is not None:
             with _param("radius"):
                 r_opt = [op.positive(x, "--radius", "the correction radius")
-                         for x in op.numbers(radius, "length", "--radius", counts=(1, 2))]
+                         for x in u.numbers(radius, "length", "--radius", counts=(1, 2))]
         with _param("mass_step"):
-            m_step = (op.positive(op.quantity(mass_step, "mass", "--mass-step"), "--mass-step",
+            m_step = (op.positive(u.quantity(mass_step, "mass", "--mass-step"), "--mass-step",
                                   "the mass step") if mass_step is not None else None)
         a_step = None
         if angle_step is not None:
@@ -161,14 +166,14 @@ class BalanceOptions:
                                  f"{angle_step}", param="angle_step")
         n_pos = _positions(positions)
         with _param("speed"):
-            W = (op.positive(op.quantity(speed, "angular_speed", "--speed"), "--speed",
+            W = (op.positive(u.quantity(speed, "angular_speed", "--speed"), "--speed",
                              "the speed (to turn the other way, reverse --shaft)")
                  if speed is not None else None)
         with _param("bearings"):
-            z_bear = (op.distinct(op.numbers(bearings, "length", "--bearings", counts=(2,)),
+            z_bear = (op.distinct(u.numbers(bearings, "length", "--bearings", counts=(2,)),
                                   "--bearings", "bearings") if bearings is not None else None)
         with _param("g"):
-            gv = (op.positive(op.quantity(g, "acceleration", "--g"), "--g", "gravity")
+            gv = (op.positive(u.quantity(g, "acceleration", "--g"), "--g", "gravity")
                   if g is not None else None)
         with _param("grade"):
             G = op.grade(grade) if grade is not None else None
@@ -231,7 +236,76 @@ class BalanceOptions:
             angle_step=a_step, positions=n_pos, speed=W, bearings=z_bear,
             g=STANDARD_GRAVITY if gv is None else gv, g_given=gv is not None, grade=G,
             tolerance_planes=t_planes, given=given,
+            echo=_echo(u, n_shaft, p_through, v_mark, zero_mark_deg, zero_deg, angle_sense_given,
+                       z_planes, r_opt, m_step, a_step, n_pos, W, z_bear, gv, G, tolerance_planes),
         )
+
+
+def _echo(u, n_shaft, p_through, v_mark, zero_text, zero_deg, sense_given, z_planes, r_opt,
+          m_step, a_step, n_pos, W, z_bear, gv, G, t_planes) -> tuple[tuple[str, str, str], ...]:
+    """The options given, as understood (see :meth:`rbcli.api.options.Units.echo`)."""
+    rows = []
+    if n_shaft is not None:
+        rows.append(("--shaft", u.show(n_shaft, "dimensionless"), "direction"))
+    if p_through is not None:
+        rows.append(("--through", p_through, "") if isinstance(p_through, str)
+                    else u.echo("--through", p_through, "length"))
+    if v_mark is not None:
+        rows.append(("--mark", u.show(v_mark, "dimensionless"), "direction"))
+    if zero_text is not None:
+        rows.append(("--zero-mark-deg", f"{zero_deg:.6g}", "deg"))
+    if sense_given:
+        rows.append(("--angle-sense", "against", ""))
+    for opt, val, kind in (("--planes", z_planes, "length"), ("--radius", r_opt, "length"),
+                           ("--mass-step", m_step, "mass")):
+        if val is not None:
+            rows.append(u.echo(opt, val, kind))
+    if a_step is not None:
+        rows.append(("--angle-step", f"{a_step:.6g}", "deg"))
+    if n_pos is not None:
+        rows.append(("--positions", str(n_pos), ""))
+    for opt, val, kind in (("--speed", W, "angular_speed"), ("--bearings", z_bear, "length"),
+                           ("--g", gv, "acceleration")):
+        if val is not None:
+            rows.append(u.echo(opt, val, kind))
+    if G is not None:
+        rows.append(("--grade", f"G{G:g}", "mm/s"))
+    if t_planes is not None:
+        rows.append(("--tolerance-planes", t_planes, ""))
+    return tuple(rows)
+
+
+def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:
+    """One-line warnings for values far outside the body's scale (issue 13): a correction
+    radius, a correction plane or a bearing more than 10 body sizes away; a correction
+    radius moving faster than sound."""
+    import numpy as np
+
+    from rbcli.core.scale import FAR, SPEED_OF_SOUND, body_scale
+
+    u = op.Units.of(body)
+    sc = body_scale(body.parts)
+    n = np.asarray(o.shaft, dtype=float)
+    n = n / np.linalg.norm(n)
+    out = []
+    radii = () if o.radius is None else (o.radius if isinstance(o.radius, tuple) else (o.radius,))
+    if o.radius_source == "--radius" and max(radii) > FAR * sc.size:
+        out.append(u.far("--radius", "the correction radius", max(radii), sc.size))
+    for opt, zs, what in (("--planes", o.planes, "correction plane"), ("--bearings", o.bearings, "bearing")):
+        for z in zs or ():
+            d = sc.far(np.asarray(P, dtype=float) + z * n)
+            if d is not None:
+                out.append(u.far(opt, f"the {what} at z = {u.show(z, 'length')} {u.label('length')}",
+                                 d, sc.size))
+                break
+    if o.speed is not None:
+        r = max([*radii, sc.half_diagonal])
+        if SPEED_OF_SOUND < o.speed * r < math.inf:
+            out.append(f"--speed: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "
+                       f"a radius of {u.show(r, 'length')} {u.label('length')} moves at "
+                       f"{o.speed * r:.4g} m/s, faster than sound ({SPEED_OF_SOUND:g} m/s); bare "
+                       f"angular speeds are in {u.label('angular_speed')}: is a unit missing?")
+    return out
 
 
 @contextmanager
@@ -540,7 +614,7 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
         P = np.zeros(3)
     else:
         P = np.asarray(o.through, dtype=float)
-    warnings: list[str] = []
+    warnings: list[str] = _plausibility(body, o, P)
     try:
         unb = B.unbalance(mp.mass, mp.com, mp.inertia_com, np.asarray(o.shaft, dtype=float), P,
                           reference=o.mark, zero_mark_deg=o.zero_mark_deg,

@@ -61,12 +61,18 @@ class Reference:
         origin; ``"com"`` = the com. ``body`` None (values checked before a body is read):
         the origin."""
         if about is not None:
-            p = o.point(about, "--about")
+            u = o.Units.of(body)
+            p = u.point(about, "--about")
             if p == "com":
                 return cls(None, "the com", "about")
             if p == "origin":
                 return cls((0.0, 0.0, 0.0), "the origin", "about")
-            text = about if isinstance(about, str) else ", ".join(str(x) for x in _items(about))
+            if isinstance(about, str):
+                text = about
+                if o.is_bare(about) and body is not None:
+                    text = f"{about} {u.label('length')}"  # a bare point: say its unit
+            else:
+                text = ", ".join(str(x) for x in _items(about))
             return cls(tuple(float(x) for x in p), f"[{text}]", "about")  # type: ignore[arg-type]
         if default == "com" or (body is not None and body.reference_is_com):
             return cls(None, "the com", "body_reference")
@@ -138,11 +144,15 @@ class InertiaOptions:
     reference : Reference — the point the tensor is about
     axis : tuple of 3 floats, or None — a direction (largest component ±1), body frame
     omega : tuple of 3 floats, or None — rad/s, body frame
+    echo : tuple of (option, value, unit) — the options given, as understood (body's units)
+    warnings : tuple of str — a point or a rim speed far outside the body's scale
     """
 
     reference: Reference
     axis: tuple[float, float, float] | None = None
     omega: tuple[float, float, float] | None = None
+    echo: tuple[tuple[str, str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
@@ -155,10 +165,48 @@ class InertiaOptions:
         rbcli.InputError
             with the command line's message (``--axis: ...``).
         """
+        u = o.Units.of(body)
         ref = Reference.parse(body, about)
         n = tuple(o.direction(axis, "--axis")) if axis is not None else None
-        w = tuple(o.vector(omega, "angular_speed", "--omega")) if omega is not None else None
-        return cls(ref, n, w)  # type: ignore[arg-type]
+        w = tuple(u.vector(omega, "angular_speed", "--omega")) if omega is not None else None
+        echo = _echo_about(u, ref)
+        if n is not None:
+            echo += (("--axis", u.show(n, "dimensionless"), "direction"),)
+        if w is not None:
+            echo += (u.echo("--omega", w, "angular_speed"),)
+        return cls(ref, n, w, echo, _plausibility(body, u, ref, w))  # type: ignore[arg-type]
+
+
+def _echo_about(u: o.Units, ref: Reference) -> tuple[tuple[str, str, str], ...]:
+    if ref.param != "about":
+        return ()
+    if ref.point is None or ref.label == "the origin":
+        return (("--about", ref.label.removeprefix("the "), ""),)
+    return (u.echo("--about", ref.point, "length"),)
+
+
+def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> tuple[str, ...]:
+    """One-line warnings for values far outside the body's scale (issue 13): a reference
+    point more than 10 body sizes away, a rotation whose rim is faster than sound."""
+    if body is None:
+        return ()
+    import math
+
+    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+
+    sc = body_scale(body.parts)
+    out = []
+    if ref.param == "about" and ref.point is not None:
+        d = sc.far(ref.point)
+        if d is not None:
+            out.append(u.far("--about", "the point", d, sc.size))
+    if omega is not None:
+        v = math.sqrt(sum(x * x for x in omega)) * sc.half_diagonal
+        if SPEED_OF_SOUND < v < math.inf:
+            out.append(f"--omega: the body's rim would move at {v:.4g} m/s, faster than sound "
+                       f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                       f"{u.label('angular_speed')}: is a unit missing?")
+    return tuple(out)
 
 
 @dataclass(frozen=True)
@@ -270,7 +318,7 @@ def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
         reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,
         axis=res.axis, axis_moment=res.axis_moment, omega=res.omega,
         angular_momentum=res.angular_momentum, kinetic_energy=res.kinetic_energy,
-        angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body))
+        angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body), warnings=options.warnings)
 
 
 def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
@@ -322,14 +370,22 @@ class PrincipalOptions:
     Attributes
     ----------
     reference : Reference — the point the moments are about (default the com)
+    echo : tuple of (option, value, unit) — ``--about`` as understood, unless the com
+    warnings : tuple of str — a point far outside the body's scale
     """
 
     reference: Reference
+    echo: tuple[tuple[str, str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Any, *, about: o.Value | None = "com") -> "PrincipalOptions":
-        """Read ``about`` (``"com"``, ``"origin"``, x, y, z in m; None = the com)."""
-        return cls(Reference.parse(body, about, default="com"))
+        """Read ``about`` (``"com"``, ``"origin"``, x, y, z: a bare number in the body's
+        length unit; None = the com)."""
+        ref = Reference.parse(body, about, default="com")
+        u = o.Units.of(body)
+        echo = () if ref.point is None else _echo_about(u, ref)  # the com is the default
+        return cls(ref, echo, _plausibility(body, u, ref))
 
 
 @dataclass(frozen=True)
@@ -414,7 +470,7 @@ def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
         stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
         rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
         equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
-        parts=part_rows(body))
+        parts=part_rows(body), warnings=options.warnings)
 
 
 def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:

@@ -71,6 +71,11 @@ def _bare(s: str) -> bool:
     return NUMBER.fullmatch(s) is not None
 
 
+def is_bare(text: str) -> bool:
+    """Every comma-separated item of ``text`` is a number with no unit (``"0.5,0.5,0"``)."""
+    return all(_bare(x.strip()) for x in text.split(","))
+
+
 def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) -> float:
     """A scalar quantity in SI. A bare number is in ``bare`` (default: SI)."""
     from rbcli.io import units as un
@@ -301,16 +306,51 @@ class Units:
         return self.bare(kind) or {"length": "m", "mass": "kg", "angular_speed": "rad/s",
                                    "speed": "m/s", "acceleration": "m/s^2", "time": "s"}.get(kind, "SI")
 
+    def factor(self, kind: str) -> float:
+        """SI per bare unit of ``kind`` (1.0 for SI; an angle's is pi/180)."""
+        from rbcli.io import units as un
+
+        unit = self.bare(kind)
+        return 1.0 if unit is None else un.parse_unit(unit)[0]
+
+    def show(self, si: Any, kind: str) -> str:
+        """An SI value (or a sequence) as a number in the bare unit of ``kind``, 6 digits."""
+        f = self.factor(kind)
+        if _is_number(si):
+            return _g(float(si) / f)
+        return ", ".join(_g(float(x) / f) for x in (si.tolist() if hasattr(si, "tolist") else si))
+
+    def echo(self, option: str, si: Any, kind: str) -> tuple[str, str, str]:
+        """One row of a table's ``options`` echo: (option, value, unit), the value as
+        understood, in this body's bare unit of ``kind``; an angular speed also in rpm
+        (or in rad/s when the bare unit is rpm)."""
+        value, unit = self.show(si, kind), self.label(kind)
+        if kind == "angular_speed":
+            vals = [float(si)] if _is_number(si) else [float(x) for x in si]
+            other = "rad/s" if unit == "rpm" else "rpm"
+            per = 1.0 if other == "rad/s" else math.pi / 30.0
+            value += f" ({', '.join(_g(v / per) for v in vals)} {other})"
+        return option, value, unit
+
+    def far(self, option: str, what: str, distance: float, size: float) -> str:
+        """The one-line plausibility warning for a point or radius ``distance`` m away
+        while the body is ``size`` m across (lengths quoted in the bare unit)."""
+        unit = self.label("length")
+        return (f"{option}: {what} is {self.show(distance, 'length')} {unit}, more than 10× the "
+                f"body's size ({self.show(size, 'length')} {unit}); bare lengths are in {unit} "
+                "(the body's units): is a unit missing?")
+
     def quantity(self, value: Value, kind: str, option: str) -> float:
-        """:func:`quantity` with this body's bare unit."""
-        if _is_number(value):
+        """:func:`quantity` with this body's bare unit (a Python number is SI, except an
+        angle: degrees)."""
+        if _is_number(value) and kind != "angle":
             return finite(float(value), option)
         return quantity(value, kind, option, bare=self.bare(kind))
 
     def numbers(self, value: Value, kind: str, option: str, *,
                 counts: tuple[int, ...] = (3,)) -> list[float]:
         """:func:`numbers` with this body's bare unit (a Python sequence of numbers is SI)."""
-        if _is_sequence_of_numbers(value):
+        if _is_number(value) or _is_sequence_of_numbers(value):
             return numbers(value, kind, option, counts=counts)
         return numbers(value, kind, option, counts=counts, bare=self.bare(kind))
 
@@ -325,6 +365,11 @@ class Units:
         if isinstance(value, str) and value.strip() in ("com", "origin"):
             return value.strip()
         return self.vector(value, "length", option)
+
+
+def _g(x: float) -> str:
+    text = f"{x:.6g}"
+    return "0" if text == "-0" else text
 
 
 def _is_sequence_of_numbers(v: Any) -> bool:

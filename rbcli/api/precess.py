@@ -72,6 +72,8 @@ class PrecessOptions:
     duration : float or None — s, > 0: the span of the time series (from t = 0)
     samples : int or None — rows of the time series (2 .. 10 000 000); None: 1001
     verify : bool — compare with a numerical integration (DOP853) over 3 periods
+    echo : tuple of (option, value, unit) — the options given, as understood (body's units)
+    warnings : tuple of str — a rotation whose rim is faster than sound
     """
 
     omega: tuple[float, float, float]
@@ -79,6 +81,8 @@ class PrecessOptions:
     duration: float | None = None
     samples: int | None = None
     verify: bool = False
+    echo: tuple[tuple[str, str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Body | None = None, *, omega: Any = None, at: Any = None,
@@ -87,7 +91,8 @@ class PrecessOptions:
         if omega is None:
             raise ParamError("omega", "the initial angular velocity is required: x,y,z in the "
                                       "body frame, e.g. --omega 0,0,10 (rad/s) or --omega '0,0,300 rpm'")
-        w = o.vector(omega, "angular_speed", "--omega")
+        u = o.Units.of(body)
+        w = u.vector(omega, "angular_speed", "--omega")
         t_at = o.finite(o.quantity(at, "time", "--at"), "--at") if at is not None else None
         span = None
         if duration is not None:
@@ -95,8 +100,23 @@ class PrecessOptions:
             if not span > 0.0:
                 raise ParamError("duration", f"must be a positive time, got '{duration}'")
         n_rows = _count(samples) if samples is not None else None
+        echo = [u.echo("--omega", w, "angular_speed")]
+        for opt, val in (("--at", t_at), ("--duration", span)):
+            if val is not None:
+                echo.append(u.echo(opt, val, "time"))
+        warns: tuple[str, ...] = ()
+        if body is not None:
+            import math
+
+            from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+
+            v = math.sqrt(sum(x * x for x in w)) * body_scale(body.parts).half_diagonal
+            if SPEED_OF_SOUND < v < math.inf:
+                warns = (f"--omega: the body's rim would move at {v:.4g} m/s, faster than sound "
+                         f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                         f"{u.label('angular_speed')}: is a unit missing?",)
         return cls(omega=(float(w[0]), float(w[1]), float(w[2])), at=t_at, duration=span,
-                   samples=n_rows, verify=bool(verify))
+                   samples=n_rows, verify=bool(verify), echo=tuple(echo), warnings=warns)
 
 
 @dataclass(frozen=True, eq=False)
@@ -207,7 +227,7 @@ def run(body: Body, options: PrecessOptions) -> PrecessResult:
         check = freeverify.verify(motion)
     return PrecessResult(
         name=body.name, motion=motion, options=options, state=state, at_json=at_json,
-        check=check, notes=tuple(fs.notes(motion)), warnings=tuple(getattr(body, "warnings", ()) or ()),
+        check=check, notes=tuple(fs.notes(motion)), warnings=tuple(getattr(body, "warnings", ()) or ()) + options.warnings,
     )
 
 

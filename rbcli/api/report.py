@@ -197,7 +197,7 @@ class ReportOptions:
         # the options the report names differently from rollcheck (--shaft for --axle,
         # --rim-radius for --radius), read under the report's names
         axle = op.direction(shaft, "--shaft") if shaft is not None else None
-        rim = (op.positive(op.quantity(rim_radius, "length", "--rim-radius"), "--rim-radius",
+        rim = (op.positive(op.Units.of(body).quantity(rim_radius, "length", "--rim-radius"), "--rim-radius",
                            "the rim radius") if rim_radius is not None else None)
 
         # balance

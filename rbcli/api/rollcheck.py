@@ -78,14 +78,16 @@ class RollcheckOptions:
         radius is the rim radius (``offset`` m from the centre of mass, ``fraction`` of the
         radius); None when no part has that radius.
     warnings : tuple of str
-        One-line warnings about the resolved defaults (the command line prints them as
-        ``rbcli: FILE: warning: ...``).
+        One-line warnings about the resolved defaults and about values far outside the
+        body's scale (the command line prints them as ``rbcli: FILE: warning: ...``).
     symmetry_tol : float
         How far from a body of revolution about the axle the wheel may be (a fraction;
         default 0.01, ``--symmetry-tol``): the two moments across the axle (about the com)
         may differ, and the products coupling the axle to the plane across it may be, up
         to this fraction of their mean; the com may be this fraction of the rim radius off
         the axle. Within it the answer is for the symmetrised wheel, with a warning.
+    echo : tuple of (option, value, unit)
+        The options given, as understood (in the body's units; tables echo them).
     """
 
     axle: tuple[float, float, float]
@@ -104,6 +106,7 @@ class RollcheckOptions:
     rim: RimOffset | None = None
     warnings: tuple[str, ...] = ()
     symmetry_tol: float = 0.01
+    echo: tuple[tuple[str, str, str], ...] = ()
 
     @property
     def straight_asked(self) -> bool:
@@ -135,26 +138,27 @@ class RollcheckOptions:
         from rbcli.api import options as o
         from rbcli.errors import ParamError
 
+        u = o.Units.of(body)
         n_axle = o.direction(axle, "--axle") if axle is not None else None
-        p_through = o.point(through, "--through") if through is not None else None
-        a_opt = (o.positive(o.quantity(radius, "length", "--radius"), "--radius", "the rim radius")
+        p_through = u.point(through, "--through") if through is not None else None
+        a_opt = (o.positive(u.quantity(radius, "length", "--radius"), "--radius", "the rim radius")
                  if radius is not None else None)
-        r = o.quantity(tyre_radius, "length", "--tyre-radius") if tyre_radius is not None else 0.0
+        r = u.quantity(tyre_radius, "length", "--tyre-radius") if tyre_radius is not None else 0.0
         if not (r >= 0.0 and math.isfinite(r)):
             raise ParamError("tyre_radius", f"must be 0 (knife edge) or a positive length, got {tyre_radius}")
-        gv = (o.positive(o.quantity(g, "acceleration", "--g"), "--g", "gravity")
+        gv = (o.positive(u.quantity(g, "acceleration", "--g"), "--g", "gravity")
               if g is not None else STANDARD_GRAVITY)
-        v = o.finite(o.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
-        s = o.finite(o.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
+        v = o.finite(u.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
+        s = o.finite(u.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
         beta = None
         if lean is not None:
-            beta = o.quantity(lean, "angle", "--lean", bare="deg")
+            beta = u.quantity(lean, "angle", "--lean")
             if not (0.0 <= beta < 0.5 * math.pi):
                 raise ParamError("lean", "the inward lean from the vertical must be from 0 up to "
                                  f"(not including) 90 degrees, got {lean}")
         R_G = None
         if circle is not None:
-            R_G = o.quantity(circle, "length", "--circle")
+            R_G = u.quantity(circle, "length", "--circle")
             if not (R_G >= 0.0 and R_G != math.inf):
                 raise ParamError("circle", f"the circle radius must be 0 (spinning in place) or "
                                  f"positive, got {circle}")
@@ -178,9 +182,42 @@ class RollcheckOptions:
                 "tyre_radius", "steady circular rolling (--lean/--circle) is computed for a "
                 "knife-edge rim only (tyre radius 0); the straight-rolling threshold takes a "
                 "rounded rim")
+        given = []
+        if n_axle is not None:
+            given.append(("--axle", u.show(n_axle, "dimensionless"), "direction"))
+        if p_through is not None:
+            given.append(("--through", p_through, "") if isinstance(p_through, str)
+                         else u.echo("--through", p_through, "length"))
+        for opt, val, k in (("--radius", a_opt, "length"), ("--tyre-radius", r if tyre_radius is not None else None, "length"),
+                               ("--g", gv if g is not None else None, "acceleration"), ("--speed", v, "speed"),
+                               ("--spin", s, "angular_speed"), ("--lean", beta, "angle"), ("--circle", R_G, "length")):
+            if val is not None:
+                given.append(u.echo(opt, val, k))
+        warns = warns + _plausibility(body, u, a_opt, p_through, R_G, v, s, a)
         return cls(axle=axle_v, through=P, axle_source=axle_source, radius=a, radius_source=source,
                    radius_kind=kind, radius_part=part, tyre_radius=r, g=gv, speed=v, spin=s,
-                   lean=beta, circle=R_G, rim=rim, warnings=warns, symmetry_tol=tol)
+                   lean=beta, circle=R_G, rim=rim, warnings=warns, symmetry_tol=tol,
+                   echo=tuple(given))
+
+
+def _plausibility(body: Body, u, a_opt, p_through, R_G, v, s, a) -> tuple[str, ...]:
+    """One-line warnings for values far outside the body's scale (issue 13): a rim radius
+    or a point more than 10 body sizes away, a rim faster than sound."""
+    from rbcli.core.scale import FAR, SPEED_OF_SOUND, body_scale
+
+    sc = body_scale(body.parts)
+    out = []
+    if a_opt is not None and a_opt > FAR * sc.size:
+        out.append(u.far("--radius", "the rim radius", a_opt, sc.size))
+    if p_through is not None and not isinstance(p_through, str) and sc.far(p_through):
+        out.append(u.far("--through", "the point", sc.far(p_through), sc.size))
+    rim = max(abs(v or 0.0), abs(s or 0.0) * a)
+    if SPEED_OF_SOUND < rim < math.inf:
+        opt = "--speed" if abs(v or 0.0) >= abs(s or 0.0) * a else "--spin"
+        out.append(f"{opt}: the rim moves at {rim:.4g} m/s relative to the centre, faster than "
+                   f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                   f"{u.label('angular_speed')}: is a unit missing?")
+    return tuple(out)
 
 
 def _resolve(body: Body, n_axle, p_through, a_opt, tol):

@@ -60,6 +60,8 @@ class TopOptions:
     symmetry_tol : float — how far from symmetric about the pivot–com axis the body may be
         (a fraction; default 0.01): within it the answer is for the symmetrised body, with a
         warning; beyond it the body is refused
+    echo : tuple of (option, value, unit) — the options given, as understood (body's units)
+    warnings : tuple of str — a pivot or a rim speed far outside the body's scale
     """
 
     spin: float
@@ -72,6 +74,8 @@ class TopOptions:
     pivot_given: bool = False
     verify: bool = False
     symmetry_tol: float = 0.01
+    echo: tuple[tuple[str, str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
@@ -84,7 +88,8 @@ class TopOptions:
         if theta is None:
             raise InputError("--theta: required: the start tilt of the axis from the upward vertical, e.g. --theta 30 (degrees)",
                              param="theta")
-        S = op.finite(op.quantity(spin, "angular_speed", "--spin"), "--spin")
+        u = op.Units.of(body)
+        S = op.finite(u.quantity(spin, "angular_speed", "--spin"), "--spin")
         if S == 0.0:
             raise ParamError("spin", "must not be 0: a top without spin is a spherical pendulum (it cannot "
                              "stand); give the spin w3, e.g. --spin 150 or --spin '3000 rpm'")
@@ -97,22 +102,53 @@ class TopOptions:
                 "slightly tilted, e.g. --theta 0.1)"
             )
         thd = 0.0 if theta_dot is None else op.finite(
-            op.quantity(theta_dot, "angular_speed", "--theta-dot"), "--theta-dot")
+            u.quantity(theta_dot, "angular_speed", "--theta-dot"), "--theta-dot")
         phd = 0.0 if phi_dot is None else op.finite(
-            op.quantity(phi_dot, "angular_speed", "--phi-dot"), "--phi-dot")
-        gv = STANDARD_GRAVITY if g is None else op.finite(op.quantity(g, "acceleration", "--g"), "--g")
+            u.quantity(phi_dot, "angular_speed", "--phi-dot"), "--phi-dot")
+        gv = STANDARD_GRAVITY if g is None else op.finite(u.quantity(g, "acceleration", "--g"), "--g")
         if not gv > 0.0:
             raise ParamError("g", f"gravity must be positive (it points down, towards -z), got {g}")
-        p_opt = op.point(pivot, "--pivot") if pivot is not None else None
+        p_opt = u.point(pivot, "--pivot") if pivot is not None else None
         tol = symmetry_tolerance(symmetry_tol)
         P, label = _pivot(body, p_opt)
+        echo = []
+        if p_opt is not None:
+            echo.append(("--pivot", p_opt, "") if isinstance(p_opt, str) else u.echo("--pivot", p_opt, "length"))
+        echo.append(u.echo("--spin", S, "angular_speed"))
+        echo.append(u.echo("--theta", th, "angle"))
+        for opt, val, given, kind in (("--theta-dot", thd, theta_dot, "angular_speed"),
+                                      ("--phi-dot", phd, phi_dot, "angular_speed"),
+                                      ("--g", gv, g, "acceleration")):
+            if given is not None:
+                echo.append(u.echo(opt, val, kind))
+        warns = _plausibility(body, u, p_opt, S, "--pivot")
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
-                   pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol)
+                   pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
+                   echo=tuple(echo), warnings=warns)
 
     @property
     def released(self) -> bool:
         """Released from rest: θ0' = φ0' = 0."""
         return self.theta_dot == 0.0 and self.phi_dot == 0.0
+
+
+def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str) -> tuple[str, ...]:
+    """One-line warnings for values far outside the body's scale (issue 13): a pivot more
+    than 10 body sizes away, a rim faster than sound."""
+    if body is None:
+        return ()
+    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+
+    sc = body_scale(body.parts)
+    out = []
+    if point is not None and not isinstance(point, str) and sc.far(point):
+        out.append(f"{body.source}: warning: " + u.far(option, "the pivot", sc.far(point), sc.size))
+    v = abs(spin) * sc.half_diagonal
+    if SPEED_OF_SOUND < v < math.inf:
+        out.append(f"{body.source}: warning: --spin: the body's rim would move at {v:.4g} m/s, faster "
+                   f"than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                   f"{u.label('angular_speed')}: is a unit missing?")
+    return tuple(out)
 
 
 def _pivot(body: Body, p_opt: str | list[float] | None) -> tuple[tuple[float, float, float], str]:
@@ -292,9 +328,9 @@ def run(body: Body, options: TopOptions) -> TopResult:
                 real = verify_real_body(motion, periods=PERIODS)
         except (ValueError, OverflowError, ArithmeticError) as exc:
             raise ParamError("verify", str(exc)) from None
-    warnings = ()
+    warnings = o.warnings
     if params.asymmetry is not None:
-        warnings = (f"{body.source}: warning: the body is not exactly symmetric about the pivot–com "
+        warnings += (f"{body.source}: warning: the body is not exactly symmetric about the pivot–com "
                     f"axis: {params.asymmetry.percent()}; the answer is for the symmetrised body "
                     f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
     return TopResult(body=body, options=o, motion=motion, verify=check, real_body=real,
@@ -380,6 +416,8 @@ class GyrocompassOptions:
     latitude : float — rad, in [-π/2, π/2]
     earth_rate : float — rad/s, > 0
     symmetry_tol : float — how far from symmetric about its spin axis the body may be
+    echo : tuple of (option, value, unit) — the options given, as understood
+    warnings : tuple of str — a rim speed far outside the body's scale
     """
 
     ratio: float | None
@@ -389,6 +427,8 @@ class GyrocompassOptions:
     latitude: float
     earth_rate: float
     symmetry_tol: float = 0.01
+    echo: tuple[tuple[str, str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any = None,
@@ -401,14 +441,15 @@ class GyrocompassOptions:
         if latitude is None:
             raise InputError("--latitude: required: the latitude in degrees, -90 to 90 (negative = south), "
                              "e.g. --latitude 52", param="latitude")
-        S = op.finite(op.quantity(spin, "angular_speed", "--spin"), "--spin")
+        u = op.Units.of(body)
+        S = op.finite(u.quantity(spin, "angular_speed", "--spin"), "--spin")
         if S == 0.0:
             raise ParamError("spin", "must not be 0: a gyrocompass needs a spinning rotor")
         lat = op.finite(op.quantity(latitude, "angle", "--latitude", bare="deg"), "--latitude")
         if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
             raise ParamError("latitude", f"must be from -90 to 90 degrees, got {latitude}")
         W = EARTH_RATE if earth_rate is None else op.finite(
-            op.quantity(earth_rate, "angular_speed", "--earth-rate"), "--earth-rate")
+            u.quantity(earth_rate, "angular_speed", "--earth-rate"), "--earth-rate")
         if not W > 0.0:
             raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
         n_axis = op.direction(axis, "--axis") if axis is not None else None
@@ -423,7 +464,7 @@ class GyrocompassOptions:
             if n_axis is not None:
                 raise ParamError("axis", "the axis belongs to a body; with --ratio there is no body")
             return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
-                       symmetry_tol=tol)
+                       symmetry_tol=tol, echo=_gyro_echo(u, r, None, S, lat, W, earth_rate))
         if body is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give --ratio C/A")
         if n_axis is not None:
@@ -437,7 +478,9 @@ class GyrocompassOptions:
         v = np.asarray(n, dtype=float)
         unit = tuple(float(x) for x in v / np.linalg.norm(v))
         return cls(ratio=None, axis=unit, axis_source=src, spin=S, latitude=lat,  # type: ignore[arg-type]
-                   earth_rate=W, symmetry_tol=tol)
+                   earth_rate=W, symmetry_tol=tol,
+                   echo=_gyro_echo(u, None, n_axis, S, lat, W, earth_rate),
+                   warnings=_plausibility(body, u, None, S, "--spin"))
 
 
 @dataclass(frozen=True)
@@ -498,6 +541,19 @@ class GyrocompassResult(Result):
         return out
 
 
+def _gyro_echo(u: op.Units, r, n_axis, S, lat, W, earth_rate) -> tuple[tuple[str, str, str], ...]:
+    rows = []
+    if r is not None:
+        rows.append(("--ratio", f"{r:.6g}", "C/A"))
+    if n_axis is not None:
+        rows.append(("--axis", u.show(n_axis, "dimensionless"), "direction"))
+    rows.append(u.echo("--spin", S, "angular_speed"))
+    rows.append(u.echo("--latitude", lat, "angle"))
+    if earth_rate is not None:
+        rows.append(u.echo("--earth-rate", W, "angular_speed"))
+    return tuple(rows)
+
+
 def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
     """The gyrocompass for parsed options."""
     from rbcli.core import gyrocompass as core
@@ -522,9 +578,9 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
     except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
         who = ["--ratio" if body is None else body.source, "--spin", "--earth-rate"]
         raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
-    warnings = ()
+    warnings = o.warnings
     if body is not None and rotor.asymmetry is not None:
-        warnings = (f"{body.source}: warning: the rotor is not exactly symmetric about its spin axis: "
+        warnings += (f"{body.source}: warning: the rotor is not exactly symmetric about its spin axis: "
                     f"{rotor.asymmetry.percent()}; the answer is for the symmetrised rotor "
                     f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
     return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass,

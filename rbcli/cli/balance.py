@@ -28,9 +28,11 @@ for the rotor with the (rounded) corrections fitted. --apply OUT.yaml writes the
 the corrections added as point parts; --plot FILE draws the polar balancing diagram.
 
 Angles are degrees about the shaft (+z) from +x (the 0° mark) towards +y, in the direction
-of rotation for a positive speed (--angle-sense against counts the other way). Positions
-and lengths are in metres unless a unit is given; in a list a unit after the last number
-applies to every bare number before it ('-100,100 mm' is both in mm). Tables show g, mm,
+of rotation for a positive speed (--angle-sense against counts the other way). A bare
+number means what it would mean in the body file: positions and lengths in the body's length
+unit (metres without units:), masses in its mass unit, speeds in rad/s unless its units name
+an angular_speed; in a list a unit after the last number applies to every bare number before
+it ('-100,100 mm' is both in mm). Tables show g, mm,
 g·mm and N unless --units is given.
 """
 
@@ -39,17 +41,17 @@ def balance(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
     shaft: str = typer.Option(None, "--shaft", help="Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the shaft (z = 0 there): com, origin or x,y,z (m; a unit after the last number applies to all). Default: the body's shaft point, else the origin.", show_default=False),
+    through: str = typer.Option(None, "--through", help="A point of the shaft (z = 0 there): com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all). Default: the body's shaft point, else the origin.", show_default=False),
     mark: str = typer.Option(None, "--mark", help="Direction x,y,z (body frame) of the 0° reference mark; only its part at right angles to the shaft counts. Default: body x projected (body y for a shaft near body x).", show_default=False),
     zero_mark_deg: str = typer.Option(None, "--zero-mark-deg", help="Turn the 0° mark this far about the shaft, in the direction of rotation (degrees, or with units, e.g. '0.5 rad'). Default: 0.", show_default=False),
     angle_sense: str = typer.Option("with", "--angle-sense", help="Count angles with the rotation (with) or against it (against)."),
-    planes: str = typer.Option(None, "--planes", help="Correction planes zA,zB along the shaft (m; a unit after the last number applies to both, e.g. '-100,100 mm').", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Correction radius r, or rA,rB per plane (m, or with units as for --planes). Default: the body's rim_radius.", show_default=False),
-    mass_step: str = typer.Option(None, "--mass-step", help="Round correction masses to multiples of this (e.g. '1 g'; a bare number is kg).", show_default=False),
+    planes: str = typer.Option(None, "--planes", help="Correction planes zA,zB along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-100,100 mm').", show_default=False),
+    radius: str = typer.Option(None, "--radius", help="Correction radius r, or rA,rB per plane (a bare number in the body's length unit, m by default; or with units as for --planes). Default: the body's rim_radius.", show_default=False),
+    mass_step: str = typer.Option(None, "--mass-step", help="Round correction masses to multiples of this (e.g. '1 g'; a bare number is in the body's mass unit, kg by default).", show_default=False),
     angle_step: str = typer.Option(None, "--angle-step", help="Round correction angles to multiples of this (degrees, or with units).", show_default=False),
     positions: int = typer.Option(None, "--positions", help="N equally spaced fixed positions (holes, blades), position 1 on the 0° mark: split each correction onto the two neighbouring ones.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="Rotor speed (rad/s, or e.g. '1500 rpm'); with --grade the maximum service speed.", show_default=False),
-    bearings: str = typer.Option(None, "--bearings", help="Bearing positions z1,z2 along the shaft (m; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
+    speed: str = typer.Option(None, "--speed", help="Rotor speed (rad/s, or the body's units' angular_speed; or e.g. '1500 rpm'); with --grade the maximum service speed.", show_default=False),
+    bearings: str = typer.Option(None, "--bearings", help="Bearing positions z1,z2 along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
     g: str = typer.Option(None, "--g", help="Gravity for the static bearing loads (m/s^2, or with units). Default: 9.80665 m/s^2.", show_default=False),
     grade: str = typer.Option(None, "--grade", help="ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs --speed and --bearings.", show_default=False),
     tolerance_planes: str = typer.Option(None, "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11, the default) or corrections (older practice).", show_default=False),
@@ -100,7 +102,7 @@ def balance(
     for w in res.warnings:
         e.warn(f"rbcli: warning: {w}")
     c.emit(e, out, lambda: _json(res, applied),
-           lambda doc: rb.document(doc, res, su, digits, applied=applied))
+           lambda doc: rb.document(doc, res, su, digits, applied=applied), given=o.echo)
     c.finish(res.return_code)
 
 

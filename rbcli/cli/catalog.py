@@ -38,8 +38,10 @@ SPECIAL = {
     ),
     "given": (
         "measured or CAD-exported mass properties",
-        "mass, com (local frame), inertia about the com: a 3x3 tensor, or "
-        "{Ixx, Iyy, Izz, Ixy, Iyz, Izx, convention: tensor | positive}",
+        "mass, com (local frame), inertia about the com: a 3x3 matrix with convention: tensor "
+        "(off-diagonals -∫xy dm) or positive (products +∫xy dm) beside it, required when an "
+        "off-diagonal is non-zero; or {Ixx, Iyy, Izz, Ixy, Iyz, Izx, convention: tensor | "
+        "positive}",
         "mass",
         "the part frame (com is given in it)",
         "as given; checked to be symmetric and physically possible",
@@ -206,8 +208,17 @@ MANUAL[""] = {
         "cylinder, sphere, hemisphere, cone, ellipsoid, torus, mesh, given, include), each placed "
         "with at, axis or rotate, with a mass or a density, and subtract: true for holes. Bare "
         "numbers are in the file's units (SI unless 'units:' says otherwise; bare angles are "
-        "degrees, bare angular speeds rad/s); any number may be a string with a unit, such as "
-        "'30 cm', '2.5 lb', '7850 kg/m^3', '12 deg' or '1200 rpm'. See rbcli-shapes(1).",
+        "degrees, bare angular speeds rad/s unless units: names an angular_speed such as rpm); "
+        "any number may be a string with a unit, such as '30 cm', '2.5 lb', '7850 kg/m^3', "
+        "'12 deg' or '1200 rpm'. See rbcli-shapes(1).",
+        "Bare numbers on the command line mean what they would mean in that body's file: "
+        "lengths and masses in the body's units (SI for -e and for files without units), angles "
+        "in degrees, angular speeds in rad/s unless the body's units has angular_speed (e.g. "
+        "rpm), everything else SI; with several bodies each uses its own units; commands without "
+        "a body (field-balance, gyrocompass --ratio) state their defaults in --help. Tables start "
+        "with the options as understood, with their units (angular speeds also in rpm; JSON "
+        "stays SI); a value more than 10 body sizes away or a rim faster than sound gets a "
+        "one-line warning naming the option.",
         "Errors are one line on standard error, 'rbcli: file:line:column: message', with no "
         "traceback.",
     ],

@@ -188,13 +188,15 @@ def output_format(json_: bool, fmt: str | None, extra: tuple[str, ...] = ()) -> 
 
 
 def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = False,
-         file: str | None = None) -> None:
+         file: str | None = None, given: Any = ()) -> None:
     """Print a command's result in format ``fmt`` (:func:`output_format`; True = "json",
     False = "table"): JSON of ``data_fn()`` (one compact line with ``lines``, for JSON
     Lines), or the tables ``doc_fn(doc)`` puts in a Doc, as text or as CSV (with a ``file``
     column when ``file`` is given). All refuse inf and NaN (one line, exit 2):
     :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
-    printed is built."""
+    printed is built. ``given`` (option, value, unit) rows are the options as understood
+    (an XOptions' ``given``): the text output shows them first (after the title), in a table
+    titled "options" (JSON and CSV stay as they are)."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
     if fmt == "json":
         from rbcli.render.jsonout import dumps
@@ -205,6 +207,12 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
 
     doc = Doc(e)
     doc_fn(doc)
+    if given and fmt == "table":
+        from rbcli.render.text import Heading
+
+        at = 1 if doc.items and isinstance(doc.items[0], Heading) else 0
+        doc.table("options", ("option", "value", "unit"), given, right=(1,))
+        doc.items.insert(at, doc.items.pop())
     if fmt == "csv":
         from rbcli.render import tablecsv
 

@@ -50,9 +50,9 @@ def with_file(data: dict, source: str) -> dict:
 def inertia(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
-    about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '10,0,5 mm').", show_default=False),
+    about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm').", show_default=False),
     axis: str = typer.Option(None, "--axis", help="Moment about this direction x,y,z through the point.", show_default=False),
-    omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
+    omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
     products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
     json_: bool = c.JsonOpt,
     fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
@@ -123,7 +123,10 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
 
-    res = api.run_inertia(body, api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
+    opts = api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega)
+    res = api.run_inertia(body, opts)
+    for w in res.warnings:
+        e.warn(f"rbcli: {body.source}: warning: {w}")
     if out in ROBOT_FORMATS:
         from rbcli.render import robot
 
@@ -132,14 +135,14 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
         return
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
-           file=body.source if many else None)
+           file=body.source if many else None, given=opts.echo)
 
 
 @app.command(help=PRINCIPAL_HELP)
 def principal(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
-    about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
+    about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
     plot: str = typer.Option(None, "--plot", help="Draw the body as built (its parts, holes dashed), the com and the principal axes about the com, in a 3-D view and three views along the body axes, to this file (.png, .svg or .pdf). One body only.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
@@ -165,7 +168,10 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
     from rbcli.render import massprops as r
 
     plot_path = c.check_plot(plot, body) if plot is not None else None
-    res = api.run_principal(body, api.PrincipalOptions.parse(body, about=about))
+    opts = api.PrincipalOptions.parse(body, about=about)
+    res = api.run_principal(body, opts)
+    for w in res.warnings:
+        e.warn(f"rbcli: {body.source}: warning: {w}")
     if plot_path is not None:
         from rbcli.render.bodyplot import body_figure
 
@@ -175,7 +181,7 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
         c.save_plot(fig, plot_path)
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
-           file=body.source if many else None)
+           file=body.source if many else None, given=opts.echo)
 
 
 MANUAL["inertia"] = {

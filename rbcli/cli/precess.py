@@ -94,11 +94,16 @@ def precess(
 
     # --- the body, and the output paths checked before any computing
     b = c.load_one(body, expr, e)
+    # bare numbers follow the body's units: read the values again, now for this body
+    opts = api.PrecessOptions.parse(b, omega=omega, at=at, duration=duration, samples=samples,
+                                    verify=verify)
     plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
 
     from rbcli.render import precess as rp
 
     result = api.run(b, opts)
+    for w in opts.warnings:
+        e.warn(f"rbcli: {b.source}: warning: {w}")
     csv_info = None
     if csv is not None:
         csv_info = {"file": csv, "samples": opts.samples or api.DEFAULT_SAMPLES, "duration": opts.duration}
@@ -120,7 +125,8 @@ def precess(
 
     if csv != "-":  # with --csv - the time series is the output
         c.emit(e, out, data, lambda doc: rp.document(
-            doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None))
+            doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None),
+               given=opts.echo)
     c.finish(result.return_code)
 
 

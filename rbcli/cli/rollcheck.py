@@ -26,7 +26,7 @@ the motion asked about is unstable.
 """
 
 RADIUS_HELP = (
-    "Rim radius a, centre to floor when upright (m, or with units). Default: the body's "
+    "Rim radius a, centre to floor when upright (a bare number in the body's length unit, m by default; or with units). Default: the body's "
     "rim_radius, else the largest round part (ring, disk, cylinder, torus, ...) coaxial "
     "with the axle."
 )
@@ -37,14 +37,14 @@ def rollcheck(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
     axle: str = typer.Option(None, "--axle", help="Axle direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft axis, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the axle line: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the origin.", show_default=False),
+    through: str = typer.Option(None, "--through", help="A point of the axle line: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the origin.", show_default=False),
     radius: str = typer.Option(None, "--radius", help=RADIUS_HELP, show_default=False),
-    tyre_radius: str = typer.Option("0", "--tyre-radius", help="Tube radius r of a rounded rim (m, or with units); 0 = knife edge."),
-    g: str = typer.Option("9.80665", "--g", help="Gravity (m/s^2, or with units, e.g. '1 g0')."),
+    tyre_radius: str = typer.Option(None, "--tyre-radius", help="Tube radius r of a rounded rim (a bare number is in the body's length unit, else give one); 0 = knife edge. Default: 0.", show_default=False),
+    g: str = typer.Option(None, "--g", help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665.", show_default=False),
     speed: str = typer.Option(None, "--speed", help="Speed of the centre (m/s, or e.g. '20 km/h'); negative = backwards.", show_default=False),
-    spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or e.g. '300 rpm'); speed = a x spin.", show_default=False),
+    spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 rpm'); speed = a x spin.", show_default=False),
     lean: str = typer.Option(None, "--lean", help="Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.", show_default=False),
-    circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (m, or with units); 0 = spinning in place.", show_default=False),
+    circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (a bare number in the body's length unit, m by default; or with units); 0 = spinning in place.", show_default=False),
     symmetry_tol: str = c.SymmetryTolOpt,
     plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane. An existing figure is replaced (atomically); an input file never.", show_default=False),
     json_: bool = c.JsonOpt,
@@ -65,8 +65,6 @@ def rollcheck(
                                   lean=lean, circle=circle, symmetry_tol=symmetry_tol)
     plot_path = c.check_plot(plot, b) if plot is not None else None
     res = run(b, opts)
-    for w in res.warnings:
-        e.warn(f"rbcli: {res.source}: warning: {w}")
     if plot_path is not None:
         c.save_plot(rr.plot(res, res.curves()), plot_path)
 
@@ -75,7 +73,9 @@ def rollcheck(
         if plot_path is not None:
             doc.note(f"plot written to {plot_path}")
 
-    c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables)
+    c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables, given=opts.echo)
+    for w in res.warnings:  # after the output: a result that cannot be printed says only that
+        e.warn(f"rbcli: {res.source}: warning: {w}")
     c.finish(res.return_code)
 
 

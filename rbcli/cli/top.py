@@ -39,7 +39,7 @@ body's shaft axis, else body z), both moments about its centre of mass.
 MAX_SAMPLES = 1_000_000
 
 #: the body options and the spin, shared by top and gyrocompass (the spin's help differs)
-_SPIN = "Required. {what} (rad/s, or e.g. '{eg}'); negative = the other way."
+_SPIN = "Required. {what} (rad/s, or the body's units' angular_speed; or e.g. '{eg}'); negative = the other way."
 
 
 def _spin_opt(what: str, eg: str):
@@ -57,12 +57,12 @@ def _warn(e, result) -> None:
 def top(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    pivot: str = typer.Option(None, "--pivot", help="The fixed point: com, origin or x,y,z (m; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot, else the origin.", show_default=False),
+    pivot: str = typer.Option(None, "--pivot", help="The fixed point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot, else the origin.", show_default=False),
     spin: str = _spin_opt("Spin S = w3 about the symmetry axis", "3000 rpm"),
     theta: str = typer.Option(None, "--theta", help="Required. Start tilt of the axis from the upward vertical, strictly between 0 and 180 (degrees, or with units, e.g. '0.5 rad').", show_default=False),
-    theta_dot: str = typer.Option("0", "--theta-dot", help="Start rate theta' (rad/s, or e.g. '10 deg/s'); positive = tilting further."),
-    phi_dot: str = typer.Option("0", "--phi-dot", help="Start precession rate phi' about the vertical (rad/s, or with units)."),
-    g: str = typer.Option("9.80665", "--g", help="Gravity (m/s^2, or with units)."),
+    theta_dot: str = typer.Option(None, "--theta-dot", help="Start rate theta' (rad/s unless the body's units name an angular_speed; or e.g. '10 deg/s'); positive = tilting further. Default: 0.", show_default=False),
+    phi_dot: str = typer.Option(None, "--phi-dot", help="Start precession rate phi' about the vertical (rad/s unless the body's units name an angular_speed; or with units). Default: 0.", show_default=False),
+    g: str = typer.Option(None, "--g", help="Gravity (m/s^2, or with units). Default: 9.80665.", show_default=False),
     verify: bool = typer.Option(False, "--verify", help="Integrate the equations of motion numerically (no Euler angles, DOP853, rtol 1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ by more than 1e-6 rad or the energy drifts by more than 1e-9."),
     plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): the path of the axis tip, theta against phi and seen from above, theta1 and theta2 marked, over --duration. An existing figure is replaced (atomically); an input file never.", show_default=False),
     csv: str = typer.Option(None, "--csv", help="Write t, theta_deg, phi_deg, psi_deg (s, degrees) at --samples times over --duration to this file ('-' = standard output, instead of the tables). An existing file is replaced (atomically); an input file never.", show_default=False),
@@ -124,7 +124,7 @@ def top(
 
     c.emit(e, out, data, lambda doc: rt.document(
         doc, r, du, digits, plot=str(plot_path) if plot_path is not None else None, csv=csv,
-        rows=samples if csv is not None else None, duration=span))
+        rows=samples if csv is not None else None, duration=span), given=opts.echo)
     c.finish(r.return_code)
 
 
@@ -150,7 +150,7 @@ def gyrocompass(
     axis: str = typer.Option(None, "--axis", help="The rotor's spin axis x,y,z (or x, y, z) in the body frame. Default: the body's shaft axis, else z.", show_default=False),
     spin: str = _spin_opt("Rotor spin about its axis", "6000 rpm"),
     latitude: str = typer.Option(None, "--latitude", help="Required. Latitude, -90 to 90 (degrees, or with units); negative = south.", show_default=False),
-    earth_rate: str = typer.Option("7.2921150e-5", "--earth-rate", help="The Earth's (sidereal) rotation rate (rad/s, or with units)."),
+    earth_rate: str = typer.Option(None, "--earth-rate", help="The Earth's (sidereal) rotation rate (rad/s, or with units). Default: 7.2921150e-5.", show_default=False),
     symmetry_tol: str = c.SymmetryTolOpt,
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
@@ -170,7 +170,7 @@ def gyrocompass(
     r = api.run_gyrocompass(b, opts)
     _warn(e, r)
     c.emit(e, out, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
-           lambda doc: rt.gyro_document(doc, r, du, digits))
+           lambda doc: rt.gyro_document(doc, r, du, digits), given=opts.echo)
 
 
 # ----------------------------------------------------------------------------- manual

@@ -159,12 +159,14 @@ def moment_about_axis(J: np.ndarray, axis: np.ndarray) -> float:
     return float(n @ J @ n)
 
 
-def tensor_problem(J: np.ndarray, rtol: float = 1e-9) -> str | None:
+def tensor_problem(J: np.ndarray, rtol: float = 1e-9, *, unit: str = "kg·m²",
+                   factor: float = 1.0) -> str | None:
     """Why ``J`` cannot be an inertia tensor, or None if it can.
 
     Checks symmetry, non-negative principal moments and the triangle inequality
     (each principal moment at most the sum of the other two), each to ``rtol``
-    relative to the largest entry.
+    relative to the largest entry. Moments in the message are quoted as ``J / factor``
+    followed by ``unit`` (e.g. ``factor=1e-9, unit="g·mm²"`` for a file in g and mm).
     """
     J = np.asarray(J, dtype=float)
     if J.shape != (3, 3) or not np.all(np.isfinite(J)):
@@ -174,13 +176,14 @@ def tensor_problem(J: np.ndarray, rtol: float = 1e-9) -> str | None:
         return None
     asym = float(np.max(np.abs(J - J.T)))
     if asym > rtol * scale:
-        return f"it is not symmetric (|J − Jᵀ| = {asym:.3g})"
+        return f"it is not symmetric (|J − Jᵀ| = {asym / factor:.3g} {unit})"
     w = np.linalg.eigvalsh(0.5 * (J + J.T))
     if w[0] < -rtol * scale:
-        return f"it has a negative principal moment ({w[0]:.6g})"
+        return f"it has a negative principal moment ({w[0] / factor:.6g} {unit})"
     if w[2] > w[0] + w[1] + rtol * scale:
+        q = w / factor
         return (
-            f"its principal moments ({w[0]:.6g}, {w[1]:.6g}, {w[2]:.6g}) break the "
+            f"its principal moments ({q[0]:.6g}, {q[1]:.6g}, {q[2]:.6g} {unit}) break the "
             "triangle inequality: no mass distribution has one moment larger than "
             "the sum of the other two"
         )

@@ -98,6 +98,10 @@ LENGTH = Kind("length")
 BOOL = Kind("bool")
 
 
+#: a diameter may be given wherever its radius is accepted (the value is halved, exactly)
+DIAMETERS = {"diameter": "radius", "inner_diameter": "inner_radius"}
+
+
 @dataclass(frozen=True)
 class ShapeInfo:
     """One entry of the shape catalogue (for ``rbcli shapes`` and for validation).
@@ -144,6 +148,12 @@ class ShapeInfo:
     def kind(self, param: str) -> Kind:
         """The :class:`Kind` of parameter ``param`` (a single length unless said)."""
         return self.kinds.get(param, LENGTH)
+
+    @property
+    def diameters(self) -> dict[str, str]:
+        """The diameter spellings this shape accepts, each with the radius it gives
+        (``{"diameter": "radius", "inner_diameter": "inner_radius"}`` for a disk)."""
+        return {d: r for d, r in DIAMETERS.items() if r in (*self.required, *self.optional)}
 
     def radius(self, params: Mapping[str, Any]) -> float | None:
         """The outer radius (m) of a round shape with these (checked, SI) parameters, else None."""

@@ -38,7 +38,7 @@ BODY_KEYS = (
     "rbcli", "name", "description", "units", "parts", "reference", "shaft", "pivot",
     "rim_radius",
 )
-UNIT_KEYS = ("length", "mass", "time", "angle")
+UNIT_KEYS = ("length", "mass", "time", "angle", "angular_speed")
 PLACEMENT_KEYS = ("at", "axis", "rotate")
 MASS_KEYS = ("mass", "density", "areal_density", "linear_density")
 DENSITY_FOR = {
@@ -48,7 +48,7 @@ DENSITY_FOR = {
 }
 COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
 SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not by core.shapes
-GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", *PLACEMENT_KEYS)
+GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", "convention", *PLACEMENT_KEYS)
 INCLUDE_KEYS = ("name", "shape", "file", *PLACEMENT_KEYS)
 MESH_KEYS = (
     "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",
@@ -441,9 +441,17 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
     extra_keys: tuple[str, ...] = ()
     if shape == "rod":
         extra_keys = ("from", "to")
-    _check_keys(ctx, m, (*COMMON_PART_KEYS, *params_allowed, *extra_keys), f"{what} ({shape})")
+    diameters = info.diameters
+    _check_keys(ctx, m, (*COMMON_PART_KEYS, *params_allowed, *diameters, *extra_keys), f"{what} ({shape})")
     params: dict[str, object] = {}
     nodes: dict[str, ys.Node] = {}
+    for dkey, rkey in diameters.items():
+        if dkey not in m.items:
+            continue
+        if rkey in m.items:
+            raise ctx.error(m.items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
+        nodes[rkey] = m.items[dkey][1]
+        params[rkey] = 0.5 * _number(ctx, nodes[rkey], "length", dkey)
     at, R = _placement(ctx, m)
     if shape == "rod" and ("from" in m.items or "to" in m.items):
         for k in ("from", "to"):
@@ -461,9 +469,10 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
         R = rot.axis_to_z(b - a)
     for key in info.required:
         if key not in m.items and key not in params:
-            raise ctx.error(m, f"{what} ({shape}) needs '{key}' (parameters: {', '.join(params_allowed) or 'none'})")
+            alt = next((f" or '{d}'" for d, r in diameters.items() if r == key), "")
+            raise ctx.error(m, f"{what} ({shape}) needs '{key}'{alt} (parameters: {', '.join(params_allowed) or 'none'})")
     for key in params_allowed:
-        if key not in m.items:
+        if key not in m.items or key in params:
             continue
         vnode = m.items[key][1]
         nodes[key] = vnode
@@ -564,9 +573,28 @@ def _given(ctx, m, name, prefix, known) -> Part:
                 [sign * g["Izx"], sign * g["Iyz"], g["Izz"]],
             ]
         )
+        if "convention" in m.items:
+            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
+                            "convention inside 'inertia'; remove the part's 'convention'")
     else:
         J = _matrix(ctx, inode, "inertia", "inertia")
-    problem = tensor_problem(J)
+        off = J[~np.eye(3, dtype=bool)]
+        if "convention" in m.items:
+            conv_node = m.items["convention"][1]
+            conv = _string(ctx, conv_node, "convention")
+            if conv not in ("tensor", "positive"):
+                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
+            if conv == "positive":
+                J = np.where(np.eye(3, dtype=bool), J, -J)
+        elif np.any(off != 0.0):
+            raise ctx.error(
+                inode,
+                f"{what}: a 3x3 inertia with non-zero off-diagonal entries needs 'convention: "
+                "tensor' (entries are the tensor's, −∫xy dm) or 'convention: positive' (products "
+                "of inertia +∫xy dm, as many CAD tools print them) beside it",
+            )
+    factor, unit = ctx.factor("inertia", inode)
+    problem = tensor_problem(J, unit=_pretty_unit(unit), factor=factor)
     if problem:
         raise ctx.error(inode, f"{what}: the inertia is not physically possible: {problem}")
     J = 0.5 * (J + J.T)
@@ -578,6 +606,11 @@ def _given(ctx, m, name, prefix, known) -> Part:
         inertia_com=PJ, measure=None, measure_kind="given", axis=R[:, 2].copy(), where=ctx.where(m),
         outline=_given_outline(mass, pc, PJ),
     )
+
+
+def _pretty_unit(text: str) -> str:
+    """``g*mm^2`` as ``g·mm²`` for messages."""
+    return text.replace("*", "·").replace("^2", "²").replace("^3", "³")
 
 
 def _given_outline(mass: float, com: np.ndarray, J: np.ndarray):
@@ -889,7 +922,8 @@ def _body_defaults(
             "the body's mass properties overflow (a mass times a squared distance exceeds "
             "1e308); numbers are limited to 1e60 in SI units",
         )
-    problem = tensor_problem(mp.inertia_com, rtol=1e-7)
+    factor, unit = ctx.factor("inertia", node)
+    problem = tensor_problem(mp.inertia_com, rtol=1e-7, unit=_pretty_unit(unit), factor=factor)
     if problem:
         raise ctx.error(
             node,

@@ -63,11 +63,20 @@ def _variants(extra: dict) -> list[dict]:
         props = {"shape": {"const": name}, **COMMON, **extra}
         for key in (*info.required, *info.optional):
             props[key] = _param_schema(key, name)
+        for dkey, rkey in info.diameters.items():
+            props[dkey] = {**_param_schema(rkey, name), "description": f"2 × {rkey} (give one of them)"}
         if name == "rod":
             props["from"] = _vec(3)
             props["to"] = _vec(3)
-        required = ["shape"] + ([] if name == "rod" else list(info.required))
-        variants.append(_part_variant(name, props, required))
+        required = ["shape"] + ([] if name == "rod" else [k for k in info.required if k not in info.diameters.values()])
+        variant = _part_variant(name, props, required)
+        for dkey, rkey in info.diameters.items():
+            either = [{"required": [dkey]}, {"required": [rkey]}]
+            if rkey in info.required:
+                variant["then"].setdefault("allOf", []).append({"oneOf": either})
+            else:
+                variant["then"].setdefault("allOf", []).append({"not": {"required": [dkey, rkey]}})
+        variants.append(variant)
     given = {k: COMMON[k] for k in ("name", "subtract", "at", "axis", "rotate", "mass")}
     given.update(extra)
     given.update(
@@ -86,6 +95,11 @@ def _variants(extra: dict) -> list[dict]:
                     "additionalProperties": False,
                 },
             ]
+        },
+        convention={
+            "enum": ["tensor", "positive"],
+            "description": "how a 3x3 inertia's off-diagonal entries read: the tensor's (−∫xy dm) "
+            "or products of inertia (+∫xy dm); required when they are non-zero",
         },
     )
     variants.append(_part_variant("given", given, ["shape", "mass", "inertia"]))
@@ -123,7 +137,8 @@ def body_schema() -> dict:
         "type": "object",
         "properties": {k: {"type": "string"} for k in b.UNIT_KEYS},
         "additionalProperties": False,
-        "description": "what bare numbers mean (default SI; bare angles are degrees, bare angular speeds rad/s)",
+        "description": "what bare numbers mean (default SI; bare angles are degrees, bare angular "
+        "speeds rad/s unless angular_speed names a unit such as rpm)",
     }
     point = {"anyOf": [_vec(3), {"enum": ["com", "origin"]}]}
     body = {

@@ -26,8 +26,13 @@ read left to right (``kg/m/s`` = kg m^-1 s^-1); each name or parenthesised group
 carry an integer power ``^n``, ``**n`` or a superscript (``m²``, ``s⁻¹``), from -12 to
 12; the power of any one unit in the whole expression (``(mm^2)^3`` is mm^6) stays in
 the same range, checked at every step while reading, so nested powers cost nothing.
-``1/s`` is allowed at the start. Names are case-sensitive (``mm`` is not ``Mm``); there is no
-general SI-prefix machinery, only the explicit entries of the table
+``1/s`` is allowed at the start. A digit string directly after a name is its power
+(``kg/m3``, ``mm4``; a name in the table that ends in a digit, ``g0``, is that unit).
+Names are matched exactly first; a name that is not in the table is matched ignoring
+case only when exactly one unit matches that way and the change of case cannot turn an
+SI prefix or a unit symbol into another (``RPM``, ``Kg``, ``KG``, ``hz`` are read; ``Mm``,
+``MM``, ``G``, ``Nm``, ``MS`` are refused: mega, giga and newton are not milli, gram and
+nano). There is no general SI-prefix machinery, only the explicit entries of the table
 (:func:`format_unit_table`).
 """
 
@@ -239,13 +244,17 @@ _UNITS: tuple[_Unit, ...] = (
     _Unit(("ft",), 12 * _IN, 0, Dim(L=1), "foot, 12 in"),
     _Unit(("yd",), 36 * _IN, 0, Dim(L=1), "yard, 3 ft"),
     _Unit(("mi",), 5280 * 12 * _IN, 0, Dim(L=1), "statute mile, 5280 ft"),
+    _Unit(("mil", "thou"), _IN / 1000, 0, Dim(L=1), "thousandth of an inch, 25.4 um"),
     # mass
     _Unit(("kg",), _F(1), 0, Dim(M=1), "kilogram"),
     _Unit(("g",), _F(1, 1000), 0, Dim(M=1), "gram"),
     _Unit(("mg",), _F(1, 10**6), 0, Dim(M=1), "milligram"),
     _Unit(("t", "tonne"), _F(1000), 0, Dim(M=1), "tonne (metric ton)"),
-    _Unit(("lb",), _LB, 0, Dim(M=1), "avoirdupois pound, exactly 0.45359237 kg"),
+    _Unit(("lb", "lbm"), _LB, 0, Dim(M=1), "avoirdupois pound, exactly 0.45359237 kg"),
+    _Unit(("slug",), _LB * _GN / (12 * _IN), 0, Dim(M=1), "slug, lbf*s^2/ft"),
     _Unit(("oz",), _LB / 16, 0, Dim(M=1), "avoirdupois ounce, lb/16"),
+    # volume
+    _Unit(("cc",), _F(1, 10**6), 0, Dim(L=3), "cubic centimetre, cm^3"),
     # time
     _Unit(("s",), _F(1), 0, Dim(T=1), "second"),
     _Unit(("ms",), _F(1, 1000), 0, Dim(T=1), "millisecond"),
@@ -276,6 +285,41 @@ _UNITS: tuple[_Unit, ...] = (
 )
 
 _BY_NAME: dict[str, _Unit] = {name: u for u in _UNITS for name in u.names}
+
+#: first letters whose case changes meaning (SI prefixes mega/milli, giga, tera, peta, exa,
+#: zetta/zepto, yotta/yocto, pico, nano/newton, femto, atto; joule): a name typed with
+#: such a letter in the other case is never read as the table's unit
+_CASE_SENSITIVE_FIRST = set("MmGTPEZzYyNnpfaJ")
+_POWER_SUFFIX_RE = re.compile(r"(.*?[^\d])([1-9]\d*)")
+
+
+def _folded(name: str) -> _Unit | None:
+    """The one unit ``name`` means when read ignoring case, if that is unambiguous."""
+    if len(name) < 2:
+        return None
+    matches = {u.names[0]: (u, n) for u in _UNITS for n in u.names if n.lower() == name.lower()}
+    if len(matches) != 1:
+        return None
+    unit, written = next(iter(matches.values()))
+    if name[0] != written[0] and (name[0] in _CASE_SENSITIVE_FIRST or written[0] in _CASE_SENSITIVE_FIRST):
+        return None
+    if any(a != b and (a in "NJ" or b in "NJ") for a, b in zip(name, written)):
+        return None  # 'kn' is not kN
+    return unit
+
+
+def _lookup(name: str) -> tuple[_Unit, int] | None:
+    """A written name as (unit, power): exact, ignoring case when unambiguous, or a
+    name followed by digits as that unit to the power of the digits (``m3``)."""
+    unit = _BY_NAME.get(name) or _folded(name)
+    if unit is not None:
+        return unit, 1
+    m = _POWER_SUFFIX_RE.fullmatch(name)
+    if m:
+        unit = _BY_NAME.get(m.group(1)) or _folded(m.group(1))
+        if unit is not None:
+            return unit, int(m.group(2))
+    return None
 
 _SI_TEXT = {"M": "kg", "L": "m", "T": "s", "A": "rad"}
 
@@ -365,10 +409,6 @@ def _suggest(name: str) -> list[str]:
     same_case = [u for u in known if u.lower() == name.lower()]
     if same_case:
         return same_case[:3]
-    # a power written without '^': 'm2' -> 'm^2'
-    m = re.fullmatch(r"(.*?)(\d+)", name)
-    if m and m.group(1) in _BY_NAME:
-        return [f"{m.group(1)}^{m.group(2)}"]
     import difflib  # only on the error path
 
     lowered: dict[str, str] = {}
@@ -531,10 +571,13 @@ class _UnitParser:
             found = f"'{c}'" if c else "the end"
             raise self.error(f"expected a unit name, found {found}")
         self.i = m.end()
-        unit = _BY_NAME.get(m.group())
-        if unit is None:
+        found = _lookup(m.group())
+        if found is None:
             raise _unknown_unit(m.group(), self.whole)
-        return {unit.names[0]: 1}
+        unit, n = found
+        if n != 1:
+            self.check_exponent(str(n))
+        return {unit.names[0]: n}
 
 
 def _check_text(text: object, what: str) -> str:
@@ -737,7 +780,8 @@ def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     ----------
     base_units : dict
         The file's ``units:`` block: keys among ``length``, ``mass``, ``time``,
-        ``angle``, values unit texts; missing keys default to m, kg, s, deg.
+        ``angle``, ``angular_speed``, values unit texts; missing keys default to m, kg,
+        s, deg and rad/s.
     kind : str
         A key of :data:`KINDS`.
 
@@ -753,8 +797,9 @@ def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     The kind's dimension is built from the base units (density with
     ``{length: mm, mass: g}`` is g/mm^3, factor 1e6; force is mass*length/time^2 in
     those units); an angle is in the angle unit (default deg). Angular speeds are the
-    exception: bare angular speeds are always rad/s (SPEC §1: "bare angles are degrees,
-    bare angular speeds rad/s"), whatever the angle unit.
+    exception: a bare angular speed is in the file's ``angular_speed`` unit when it names
+    one (``angular_speed: rpm``), else rad/s (SPEC §1: "bare angles are degrees, bare
+    angular speeds rad/s"), whatever the angle and time units.
 
     Raises
     ------
@@ -780,6 +825,23 @@ def _unit_for_kind_cached(items: tuple[tuple[str, str], ...], kind: str) -> tupl
 def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
+    speed = base_units.get("angular_speed")
+    if speed is not None:
+        if not isinstance(speed, str):
+            raise UnitError(f"units: angular_speed must be a unit name such as 'rpm', not {speed!r}")
+        try:
+            _check_text(speed, "a unit")
+            q, p, d = _parse_unit_exact(speed.strip(), whole=speed)
+        except UnitError as exc:
+            raise UnitError(f"units: angular_speed: {exc}") from None
+        if d != KINDS["angular_speed"]:
+            raise UnitError(
+                f"units: angular_speed is '{speed}', which is {_noun_for_dim(d)}, "
+                f"not {_noun_for_kind('angular_speed')} (e.g. {_KIND_EXAMPLES['angular_speed']})"
+            )
+        if kind == "angular_speed":
+            return _to_float(q, p), speed.strip()
+        base_units = {k: v for k, v in base_units.items() if k != "angular_speed"}
     if kind == "angular_speed":
         return 1.0, "rad/s"
     exact: dict[str, tuple[Fraction, int]] = {}
@@ -790,7 +852,7 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     for key, value in base_units.items():
         if key not in _BASE_KEYS:
             raise UnitError(
-                f"unknown key '{key}' in units; allowed: {', '.join(_BASE_KEYS)}"
+                f"unknown key '{key}' in units; allowed: {', '.join(_BASE_KEYS)}, angular_speed"
             )
         if not isinstance(value, str):
             raise UnitError(

@@ -57,6 +57,14 @@ def cases() -> dict[str, list[list[str]]]:
     add("inertia", "lamina-about-omega-json", "examples/square_lamina.yaml", "--about", "1,1,0",
         "--omega", "0,0,300 rpm", "--axis", "z", "--json")
     add("inertia", "bracket-units", "examples/bracket.yaml", "--units", "in,lb")
+    # bare numbers follow the body's units (issue 13): inches, and mm with rpm
+    add("inertia", "bracket-about-bare", "examples/bracket.yaml", "--about", "0.5,0.5,0", "--units", "in,lb")
+    add("balance", "rotor_mm-bare", "examples/rotor_mm.yaml", "--radius", "180", "--planes=-50,50",
+        "--speed", "3000")
+    add("balance", "rotor_mm-bare-json", "examples/rotor_mm.yaml", "--radius", "180", "--planes=-50,50",
+        "--speed", "3000", "--json")
+    add("balance", "rotor_mm-far", "examples/rotor_mm.yaml", "--radius", "180 m", "--planes=-50,50 m",
+        "--speed", "3000 rad/s")
     add("inertia", "bracket-positive", "examples/bracket.yaml", "--products", "positive", "--digits", "4")
     add("inertia", "housing-axis", "examples/housing.yaml", "--axis", "z")
     add("inertia", "expr-json", "-e", "{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}", "--json")
