@@ -221,6 +221,17 @@ MANUAL[""] = {
         "one-line warning naming the option.",
         "Errors are one line on standard error, 'rbcli: file:line:column: message', with no "
         "traceback.",
+        "Output formats: every command that prints tables takes --format table (the default), "
+        "json (the same as --json) or csv. The CSV layout is stable across versions: one block "
+        "per table, blocks separated by an empty line; each block is a header row and its rows; "
+        "the first column, table, is the table's title; the numeric columns of a table whose "
+        "title names a unit in brackets carry it in their header (x [kg·m²]), quantity/value/"
+        "unit tables keep their unit column; numbers are the table's, at --digits significant "
+        "figures (--digits 17 round-trips a double); notes are not part of the CSV; with several "
+        "bodies a file column comes first. RFC 4180 quoting.",
+        "Shell completion: rbcli --show-completion SHELL prints the script for bash, zsh, fish "
+        "or powershell (eval \"$(rbcli --show-completion bash)\"); rbcli --install-completion "
+        "SHELL installs it.",
     ],
     "examples": [
         ("rbcli inertia examples/square_lamina.yaml", "Mass properties of a bundled example."),
