@@ -154,3 +154,19 @@ def test_impossible_inertia_in_the_files_units(cli):
     with pytest.raises(rbcli.InputError, match="g·mm²"):
         rbcli.load_text("units: {length: mm, mass: g}\nparts:\n  - {shape: given, mass: 100, "
                         "inertia: [[1000, 0, 0], [0, 1000, 0], [0, 0, 2500]]}\n")
+
+
+@pytest.mark.parametrize("text, says", [
+    ("units: {length: mm}\nshape: cylinder\nmass: 1\nradius: 10\ninner_radius: 20\nlength: 5\n",
+     "inner_radius (20 mm) must be less than radius (10 mm)"),
+    ("units: {length: mm}\nshape: disk\nmass: 1\nradius: -10\n", "(got -10 mm)"),
+    ("units: {length: in}\nshape: torus\nmass: 1\nmajor_radius: 1\nminor_radius: 2\n",
+     "minor_radius (2 in) must not exceed major_radius (1 in)"),
+    ("shape: box\nmass: 1\nsize: [1, -2, 3]\n", "size[1] must be greater than 0 (got -2 m)"),
+])
+def test_shape_errors_quote_lengths_in_the_files_units(cli, text, says):
+    r = cli("inertia", "-", input=text)
+    assert r.code == 2 and says in r.err, r.err
+    with pytest.raises(rbcli.InputError) as exc:
+        rbcli.load_text(text)
+    assert says in str(exc.value)

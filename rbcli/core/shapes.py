@@ -39,12 +39,24 @@ class ShapeError(ValueError):
     ----------
     param : str — the parameter at fault (e.g. ``"inner_radius"``), for the io layer to
         point at the right line of the body file
+    lengths : tuple[float, ...] — m, the lengths the message quotes, at its ``{0}``, ``{1}``
+        ... places, so that the io layer can quote them in the file's own length unit
+        (:meth:`format`); ``str()`` quotes them in metres
     """
 
-    def __init__(self, param: str, message: str) -> None:
-        super().__init__(message)
+    def __init__(self, param: str, message: str, lengths: tuple[float, ...] = ()) -> None:
         self.param = param
-        self.message = message
+        self.template = message
+        self.lengths = tuple(lengths)
+        self.message = self.format()
+        super().__init__(self.message)
+
+    def format(self, show=None) -> str:
+        """The message with its lengths shown by ``show(metres) -> str`` (default ``"0.02 m"``)."""
+        if not self.lengths:
+            return self.template
+        show = show or (lambda x: f"{x:g} m")
+        return self.template.format(*(show(x) for x in self.lengths))
 
     def __str__(self) -> str:
         return self.message
@@ -275,14 +287,14 @@ def _number(param: str, value: Any, label: str | None = None) -> float:
 def _positive(param: str, value: Any) -> float:
     x = _number(param, value)
     if x <= 0:
-        raise ShapeError(param, f"{param} must be greater than 0 (got {x:g} m)")
+        raise ShapeError(param, f"{param} must be greater than 0 (got {{0}})", (x,))
     return x
 
 
 def _non_negative(param: str, value: Any) -> float:
     x = _number(param, value)
     if x < 0:
-        raise ShapeError(param, f"{param} must not be negative (got {x:g} m)")
+        raise ShapeError(param, f"{param} must not be negative (got {{0}})", (x,))
     return x
 
 
@@ -306,9 +318,7 @@ def _positive_vector(param: str, value: Any, n: int) -> np.ndarray:
     for i, v in enumerate(items):
         x = _number(param, v, f"{param}[{i}]")
         if x <= 0:
-            raise ShapeError(
-                param, f"{param}[{i}] must be greater than 0 (got {x:g} m)"
-            )
+            raise ShapeError(param, f"{param}[{i}] must be greater than 0 (got {{0}})", (x,))
         out.append(x)
     return np.array(out)
 
@@ -325,10 +335,8 @@ def _inner(params: dict[str, Any], radius: float) -> float:
         return 0.0
     r = _non_negative("inner_radius", r)
     if r >= radius:
-        raise ShapeError(
-            "inner_radius",
-            f"inner_radius ({r:g} m) must be less than radius ({radius:g} m)",
-        )
+        raise ShapeError("inner_radius", "inner_radius ({0}) must be less than radius ({1})",
+                         (r, radius))
     return r
 
 
@@ -500,8 +508,9 @@ def _torus(p: dict[str, Any]) -> ShapeGeometry:
     if small > big:
         raise ShapeError(
             "minor_radius",
-            f"minor_radius ({small:g} m) must not exceed major_radius ({big:g} m): "
+            "minor_radius ({0}) must not exceed major_radius ({1}): "
             "the torus would intersect itself",
+            (small, big),
         )
     # solid torus (Pappus: volume 2π²Rr²): Izz = m(R² + 3r²/4); Ixx = Iyy = m(R²/2 + 5r²/8).
     ixx = big * big / 2 + 5 * small * small / 8

@@ -487,8 +487,10 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
             params[key] = _bool(ctx, vnode, key)
     try:
         geo = shp.geometry(shape, **params)
-    except shp.ShapeError as exc:
-        raise ctx.error(nodes.get(exc.param, m), f"{what}: {exc}") from None
+    except shp.ShapeError as exc:  # lengths quoted in the file's own length unit
+        factor, unit = ctx.factors.get("length") or un.unit_for_kind(ctx.base_units, "length")
+        message = exc.format(lambda x: f"{x / factor:g} {unit}")
+        raise ctx.error(nodes.get(exc.param, m), f"{what}: {message}") from None
     except ValueError as exc:
         raise ctx.error(m, f"{what}: {exc}") from None
     mass, density, src = _mass_source(ctx, m, geo.measure_kind, known, what)
