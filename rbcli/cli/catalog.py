@@ -78,6 +78,8 @@ def shapes(
         params = ", ".join([*info.required, *(f"[{o}]" for o in info.optional)]) or "—"
         if info.name == "rod":
             params += " (or from, to)"
+        if info.diameters:  # diameter: wherever radius: is accepted (inner_diameter likewise)
+            params += " (" + ", ".join(f"{d} for {r}" for d, r in info.diameters.items()) + ")"
         rows.append((info.name, info.summary, params, info.density_keys, info.origin, info.formulas))
     for key, (summary, params, mass, origin, formulas) in SPECIAL.items():
         rows.append((key, summary, params, mass, origin, formulas))
