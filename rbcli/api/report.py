@@ -341,6 +341,18 @@ def _note(text: str) -> Any:
     return Note(text)
 
 
+def _options_table(doc: Any, options: Any) -> None:
+    """A section's options as understood (the command's "options" table): option, value in
+    the body's units, unit; nothing when no option was given."""
+    from rbcli.render.text import Heading
+
+    echo = getattr(options, "echo", ())
+    if echo:
+        at = 1 if doc.items and isinstance(doc.items[0], Heading) else 0
+        doc.table("options", ("option", "value", "unit"), echo, right=(1,))
+        doc.items.insert(at, doc.items.pop())
+
+
 def _figure(s: Section, name: str, fig: Any, caption: str) -> None:
     """Add a figure (what a command's --plot draws) as inline SVG: in memory, no file."""
     from rbcli.render.plots import figure_bytes
@@ -413,6 +425,7 @@ def _balance(ctx: _Ctx) -> Section:
     doc = Doc()
     su = rb.ShopUnits(None if ctx.du.si else ",".join(u for _, u in (ctx.du.length, ctx.du.mass, ctx.du.time)))
     rb.document(doc, res, su, ctx.digits)
+    _options_table(doc, bo)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
     for w in res.warnings:
@@ -447,6 +460,7 @@ def _precess(ctx: _Ctx) -> Section:
         return _skip(key, title, f"free precession: not computed: {exc}")
     doc = Doc()
     rp.document(doc, b, result, ctx.du, ctx.digits)
+    _options_table(doc, ctx.opts.precess)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
     _figure(s, "precess", rp.plot(b, result.motion, None, ctx.du),
@@ -472,6 +486,7 @@ def _top(ctx: _Ctx) -> Section:
     ctx.warnings.extend(res.warnings)
     doc = Doc()
     rt.document(doc, res, ctx.du, ctx.digits)
+    _options_table(doc, o.top)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
     _figure(s, "top", rt.plot(res, res.sample(span), span),
@@ -500,6 +515,7 @@ def _rollcheck(ctx: _Ctx) -> Section:
         return _skip(key, title, f"rolling stability: not computed: {exc}")
     doc = Doc()
     rr.document(doc, res, ctx.du, ctx.digits)
+    _options_table(doc, o.rollcheck)
     s = _section(key, title)
     s.add_doc(doc, drop_heading_prefix=b.name)
     for w in res.warnings:
