@@ -17,28 +17,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+from rbcli.core.checks import finite, json_float
 
 #: Earth's sidereal rotation rate, rad/s (IERS conventions).
 EARTH_RATE = 7.2921150e-5
-
-
-def _finite(name: str, x: float) -> float:
-    try:
-        v = float(x)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, not {x!r}") from None
-    if not math.isfinite(v):
-        raise ValueError(f"{name} must be a finite number, not {v}")
-    return v
-
-
-def _j(x: float | None) -> float | None:
-    """A JSON-safe float: None for None or a non-finite value."""
-    if x is None:
-        return None
-    v = float(x)
-    return v if math.isfinite(v) else None
-
 
 
 @dataclass(frozen=True)
@@ -87,10 +69,10 @@ class Gyrocompass:
             "spin": float(self.spin),
             "latitude_deg": math.degrees(self.latitude),
             "earth_rate": float(self.earth_rate),
-            "directive": _j(self.directive),
-            "omega0": _j(self.omega0),
-            "omega0_approx": _j(self.omega0_approx),
-            "period": _j(self.period),
+            "directive": json_float(self.directive),
+            "omega0": json_float(self.omega0),
+            "omega0_approx": json_float(self.omega0_approx),
+            "period": json_float(self.period),
             "settles_to": self.settles_to,
         }
 
@@ -126,10 +108,10 @@ def gyrocompass(
     A α'' = -C S Ω_E cos λ sin α + A Ω_E² cos²λ sin α cos α. Linearised about α = 0
     (S > 0) or α = π (S < 0): ω0² = |C S Ω_E cos λ|/A - Ω_E² cos²λ, T = 2π/ω0.
     """
-    r = _finite("C_over_A", C_over_A)
-    S = _finite("spin", spin_rad_s)
-    lat = _finite("latitude", latitude_rad)
-    W = _finite("earth_rate", earth_rate)
+    r = finite("C_over_A", C_over_A)
+    S = finite("spin", spin_rad_s)
+    lat = finite("latitude", latitude_rad)
+    W = finite("earth_rate", earth_rate)
     if r <= 0.0:
         raise ValueError(f"C/A must be positive, not {r}")
     if W <= 0.0:
@@ -203,7 +185,7 @@ def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e
     ValueError
         a zero or non-finite axis, a zero inertia tensor, zero moments.
     """
-    m = _finite("the mass", mass)
+    m = finite("the mass", mass)
     if m <= 0.0:
         raise ValueError(f"the mass must be positive, got {m:.6g}")
     J = np.asarray(inertia_com, dtype=float).reshape(3, 3)

@@ -40,6 +40,7 @@ import numpy as np
 
 from rbcli.core.symmetry import AxialSymmetry, about_axis, require
 from rbcli.errors import ParamError
+from rbcli.core.checks import finite, json_float
 
 #: Standard gravity, m/s^2 (SPEC §2 default of ``--g``).
 STANDARD_GRAVITY = 9.80665
@@ -82,24 +83,6 @@ def _num(x: float) -> str:
     mant, exp = f"{x:.2e}".split("e")
     mant = mant.rstrip("0").rstrip(".")
     return f"{mant}e{int(exp)}"
-
-
-def _finite(name: str, x: float) -> float:
-    try:
-        v = float(x)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, not {x!r}") from None
-    if not math.isfinite(v):
-        raise ValueError(f"{name} must be a finite number, not {v}")
-    return v
-
-
-def _j(x: float | None) -> float | None:
-    """A JSON-safe float: None for None or a non-finite value."""
-    if x is None:
-        return None
-    v = float(x)
-    return v if math.isfinite(v) else None
 
 
 def _carlson_F(phi: np.ndarray, m1: float) -> np.ndarray:
@@ -184,7 +167,7 @@ class TopParams:
 
     def __post_init__(self) -> None:
         for name in ("mass", "length", "I", "Is"):
-            v = _finite(name, getattr(self, name))
+            v = finite(name, getattr(self, name))
             if v <= 0.0:
                 raise ValueError(f"{name} of a top must be positive, not {v}")
 
@@ -243,7 +226,7 @@ def top_from_body(
     2x2 block of I_pivot on a basis (e1, e2) of the plane normal to e3
     (sheet §2 "Setup", §4b item 6).
     """
-    m = _finite("mass", mass)
+    m = finite("mass", mass)
     if m <= 0.0:
         raise ValueError(f"the mass of a top must be positive, not {m}")
     c = np.asarray(com, dtype=float).reshape(3)
@@ -322,12 +305,12 @@ class FastTop:
     def to_json(self) -> dict:
         amp = self.nutation_amplitude
         return {
-            "nutation_frequency": _j(self.nutation_frequency),
-            "nutation_amplitude_deg": None if amp is None else _j(math.degrees(amp)),
-            "mean_precession_rate": _j(self.mean_precession_rate),
-            "nutation_frequency_rel_error": _j(self.nutation_frequency_rel_error),
-            "nutation_amplitude_rel_error": _j(self.nutation_amplitude_rel_error),
-            "mean_precession_rate_rel_error": _j(self.mean_precession_rate_rel_error),
+            "nutation_frequency": json_float(self.nutation_frequency),
+            "nutation_amplitude_deg": None if amp is None else json_float(math.degrees(amp)),
+            "mean_precession_rate": json_float(self.mean_precession_rate),
+            "nutation_frequency_rel_error": json_float(self.nutation_frequency_rel_error),
+            "nutation_amplitude_rel_error": json_float(self.nutation_amplitude_rel_error),
+            "mean_precession_rate_rel_error": json_float(self.mean_precession_rate_rel_error),
         }
 
 
@@ -483,12 +466,12 @@ class TopMotion:
             "Is": float(p.Is),
             "spin": float(self.spin),
             "steady_precession_rates": [float(r) for r in self.steady_precession_rates],
-            "horizontal_precession_rate": _j(self.horizontal_precession_rate),
-            "critical_spin": _j(self.critical_spin),
-            "theta1_deg": _j(math.degrees(self.theta1)),
-            "theta2_deg": _j(math.degrees(self.theta2)),
-            "nutation_period": _j(self.nutation_period),
-            "mean_precession_rate": _j(self.mean_precession_rate),
+            "horizontal_precession_rate": json_float(self.horizontal_precession_rate),
+            "critical_spin": json_float(self.critical_spin),
+            "theta1_deg": json_float(math.degrees(self.theta1)),
+            "theta2_deg": json_float(math.degrees(self.theta2)),
+            "nutation_period": json_float(self.nutation_period),
+            "mean_precession_rate": json_float(self.mean_precession_rate),
             "path": self.path,
             # extras
             "g": float(self.g),
@@ -497,13 +480,13 @@ class TopMotion:
             "phi_dot0": float(self.phi_dot0),
             "steady": bool(self.steady),
             "sleeps": bool(self.sleeps),
-            "minimum_spin_for_steady": _j(self.minimum_spin_for_steady),
+            "minimum_spin_for_steady": json_float(self.minimum_spin_for_steady),
             "steady_nutation_frequencies": [float(r) for r in self.steady_nutation_frequencies],
-            "nutation_amplitude_deg": _j(math.degrees(self.theta2 - self.theta1)),
-            "nutation_frequency": _j(self.nutation_frequency),
-            "mean_spin_rate": _j(self.mean_spin_rate),
-            "precession_per_nutation": _j(self.precession_per_nutation),
-            "spin_per_nutation": _j(self.spin_per_nutation),
+            "nutation_amplitude_deg": json_float(math.degrees(self.theta2 - self.theta1)),
+            "nutation_frequency": json_float(self.nutation_frequency),
+            "mean_spin_rate": json_float(self.mean_spin_rate),
+            "precession_per_nutation": json_float(self.precession_per_nutation),
+            "spin_per_nutation": json_float(self.spin_per_nutation),
             "goldstein": {
                 "a": float(self.a),
                 "b": float(self.b),
@@ -512,7 +495,7 @@ class TopMotion:
             },
             "turning_points": [float(self.u1), float(self.u2), float(self.u3)],
             "elliptic_parameter": float(self.elliptic.m),
-            "apex_u": _j(self.apex_u),
+            "apex_u": json_float(self.apex_u),
             "fast_top": self.fast_top.to_json(),
         }
 
@@ -647,7 +630,7 @@ def analyse(
     """
     def start(param: str, name: str, x: float) -> float:
         try:
-            return _finite(name, x)
+            return finite(name, x)
         except ValueError as exc:
             raise TopInputError(param, str(exc)) from None
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.checks import json_float
 from rbcli.core.top import TopMotion, path_at
 
 #: the closed form and the integration must agree this well (axis chord, rad) ...
@@ -25,15 +26,6 @@ ENERGY_TOL = 1e-9
 #: step costs about 0.2 ms, so the bound is a few seconds)
 MAX_STEPS = 20_000
 PERIODS_TEXT = "3"
-
-
-def _j(x: float | None) -> float | None:
-    """A JSON-safe float: None for None or a non-finite value."""
-    if x is None:
-        return None
-    v = float(x)
-    return v if math.isfinite(v) else None
-
 
 
 @dataclass(frozen=True)
@@ -84,19 +76,19 @@ class VerifyResult:
 
     def to_json(self) -> dict:
         return {
-            "t_end": _j(self.t_end),
+            "t_end": json_float(self.t_end),
             "samples": int(self.samples),
             "rtol": float(self.rtol),
-            "max_axis_error": _j(self.max_axis_error),
-            "max_theta_error_deg": _j(math.degrees(self.max_theta_error)),
-            "max_phi_error_deg": _j(math.degrees(self.max_phi_error)),
-            "max_psi_error_deg": _j(math.degrees(self.max_psi_error)),
-            "energy_drift": _j(self.energy_drift),
-            "p_phi_drift": _j(self.p_phi_drift),
-            "p_psi_drift": _j(self.p_psi_drift),
-            "theta_min_deg": _j(math.degrees(self.theta_min)),
-            "theta_max_deg": _j(math.degrees(self.theta_max)),
-            "mean_precession_rate": _j(self.mean_precession_rate),
+            "max_axis_error": json_float(self.max_axis_error),
+            "max_theta_error_deg": json_float(math.degrees(self.max_theta_error)),
+            "max_phi_error_deg": json_float(math.degrees(self.max_phi_error)),
+            "max_psi_error_deg": json_float(math.degrees(self.max_psi_error)),
+            "energy_drift": json_float(self.energy_drift),
+            "p_phi_drift": json_float(self.p_phi_drift),
+            "p_psi_drift": json_float(self.p_psi_drift),
+            "theta_min_deg": json_float(math.degrees(self.theta_min)),
+            "theta_max_deg": json_float(math.degrees(self.theta_max)),
+            "mean_precession_rate": json_float(self.mean_precession_rate),
             "nfev": int(self.nfev),
             "axis_tolerance": float(self.axis_tolerance),
             "energy_tolerance": float(self.energy_tolerance),
@@ -313,12 +305,12 @@ class RealBodyCheck:
 
     def to_json(self) -> dict:
         return {
-            "t_end": _j(self.t_end),
+            "t_end": json_float(self.t_end),
             "samples": int(self.samples),
-            "max_axis_error": _j(self.max_axis_error),
-            "max_theta_error_deg": _j(math.degrees(self.max_theta_error)),
-            "max_phi_error_deg": _j(math.degrees(self.max_phi_error)),
-            "energy_drift": _j(self.energy_drift),
+            "max_axis_error": json_float(self.max_axis_error),
+            "max_theta_error_deg": json_float(math.degrees(self.max_theta_error)),
+            "max_phi_error_deg": json_float(math.degrees(self.max_phi_error)),
+            "energy_drift": json_float(self.energy_drift),
             "nfev": int(self.nfev),
         }
 
