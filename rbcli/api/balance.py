@@ -19,8 +19,6 @@ Part 11: Procedures and tolerances for rotors with rigid behaviour".
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -126,56 +124,56 @@ class BalanceOptions:
             with the message the command line prints (``--planes: ...``).
         """
         angle_sense_given = angle_sense not in (None, "with")
-        with _param("angle_sense"):
+        with op.naming("angle_sense"):
             angle_sense = op.choice(angle_sense if angle_sense is not None else "with",
                                     "--angle-sense", ("with", "against"))
         if tolerance_planes is not None:
-            with _param("tolerance_planes"):
+            with op.naming("tolerance_planes"):
                 op.choice(tolerance_planes, "--tolerance-planes", ("bearings", "corrections"))
         t_planes = tolerance_planes or "bearings"
         zero_deg = 0.0
         if zero_mark_deg is not None:
-            with _param("zero_mark_deg"):
+            with op.naming("zero_mark_deg"):
                 zero_deg = op.degrees(zero_mark_deg, "--zero-mark-deg")
             if not math.isfinite(zero_deg):
                 raise InputError("--zero-mark-deg: must be a finite angle", param="zero_mark_deg")
         u = op.Units.of(body)
-        with _param("shaft"):
+        with op.naming("shaft"):
             n_shaft = op.direction(shaft, "--shaft") if shaft is not None else None
-        with _param("through"):
+        with op.naming("through"):
             p_through = u.point(through, "--through") if through is not None else None
-        with _param("mark"):
+        with op.naming("mark"):
             v_mark = op.vector(mark, "dimensionless", "--mark") if mark is not None else None
-        with _param("planes"):
+        with op.naming("planes"):
             z_planes = (op.distinct(u.numbers(planes, "length", "--planes", counts=(2,)),
                                     "--planes", "correction planes") if planes is not None else None)
         r_opt = None
         if radius is not None:
-            with _param("radius"):
+            with op.naming("radius"):
                 r_opt = [op.positive(x, "--radius", "the correction radius")
                          for x in u.numbers(radius, "length", "--radius", counts=(1, 2))]
-        with _param("mass_step"):
+        with op.naming("mass_step"):
             m_step = (op.positive(u.quantity(mass_step, "mass", "--mass-step"), "--mass-step",
                                   "the mass step") if mass_step is not None else None)
         a_step = None
         if angle_step is not None:
-            with _param("angle_step"):
+            with op.naming("angle_step"):
                 a_step = op.degrees(angle_step, "--angle-step")
             if not (0.0 < a_step <= 360.0):
                 raise InputError(f"--angle-step: must be more than 0 and at most 360 degrees, got "
                                  f"{angle_step}", param="angle_step")
         n_pos = _positions(positions)
-        with _param("speed"):
+        with op.naming("speed"):
             W = (op.positive(u.quantity(speed, "angular_speed", "--speed"), "--speed",
                              "the speed (to turn the other way, reverse --shaft)")
                  if speed is not None else None)
-        with _param("bearings"):
+        with op.naming("bearings"):
             z_bear = (op.distinct(u.numbers(bearings, "length", "--bearings", counts=(2,)),
                                   "--bearings", "bearings") if bearings is not None else None)
-        with _param("g"):
+        with op.naming("g"):
             gv = (op.positive(u.quantity(g, "acceleration", "--g"), "--g", "gravity")
                   if g is not None else None)
-        with _param("grade"):
+        with op.naming("grade"):
             G = op.grade(grade) if grade is not None else None
         # --- which options need which
         if z_planes is None:
@@ -308,15 +306,6 @@ def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:
     return out
 
 
-@contextmanager
-def _param(name: str) -> Iterator[None]:
-    """An InputError of the option reader (:mod:`rbcli.api.options`) names ``name``."""
-    try:
-        yield
-    except InputError as exc:
-        if exc.param is None:
-            exc.param = name
-        raise
 
 
 def _as_text(v: Any) -> str:

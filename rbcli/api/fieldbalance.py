@@ -13,8 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -145,19 +144,10 @@ def _readings(text: str, option: str, n: int) -> list[_Reading]:
             f"{option}: expected {n} reading{'s' if n > 1 else ''} (one per sensor, as many as "
             f"trial planes), got {len(parts)} in '{text}'", param=option[2:]
         )
-    with _param(option[2:]):
+    with op.naming(option[2:]):
         return [_reading(p, option) for p in parts]
 
 
-@contextmanager
-def _param(name: str) -> Iterator[None]:
-    """An InputError raised while reading option ``name`` names it."""
-    try:
-        yield
-    except InputError as exc:
-        if exc.param is None:
-            exc.param = name
-        raise
 
 
 def _deg(z: complex) -> float:
@@ -220,10 +210,10 @@ class FieldBalanceOptions:
                              "trial radius to --radius)", param="radius")
         radii = None
         if radius is not None:
-            with _param("trial_radius"):
+            with op.naming("trial_radius"):
                 rt = op.positive(op.quantity(trial_radius, "length", "--trial-radius"), "--trial-radius",
                                  "the trial radius")
-            with _param("radius"):
+            with op.naming("radius"):
                 rc = op.positive(op.quantity(radius, "length", "--radius"), "--radius",
                                  "the correction radius")
             radii = (rt, rc)
@@ -232,7 +222,7 @@ class FieldBalanceOptions:
         v0 = _readings(initial, "--initial", n)
         runs = [_readings(r, "--run", n) for r in runs_t]
         kind = _one_kind(v0 + [x for r in runs for x in r])
-        with _param("trial"):
+        with op.naming("trial"):
             trials = [_trial(t, "--trial") for t in trials_t]
         for t in trials:
             if t == 0:

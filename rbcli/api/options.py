@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from typing import Any
 
 from rbcli.errors import InputError
@@ -41,6 +42,17 @@ def param_of(option: str) -> str | None:
     if not last.startswith("-"):
         return None
     return last.lstrip("-").replace("-", "_") or None
+
+
+@contextmanager
+def naming(param: str) -> Iterator[None]:
+    """An InputError raised inside (by a reader that could not tell) names ``param``."""
+    try:
+        yield
+    except InputError as exc:
+        if exc.param is None:
+            exc.param = param
+        raise
 
 
 def _error(option: str, message: str) -> InputError:
