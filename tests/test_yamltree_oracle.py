@@ -74,6 +74,9 @@ def _reference_resolve(raw: str, filename: str, mark: Mark) -> object:
     return raw
 
 
+NODE_EVENTS = (yaml.ScalarEvent, yaml.MappingStartEvent, yaml.SequenceStartEvent)
+
+
 class _OpenMap:
     def __init__(self, mark: Mark) -> None:
         self.mark = mark
@@ -139,7 +142,7 @@ def _reference_parse(text: str, filename: str) -> Node | None:
                         ys._yaml_mark(event.start_mark),
                     )
                 continue
-            if isinstance(event, (yaml.ScalarEvent, yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+            if isinstance(event, NODE_EVENTS):
                 if event.anchor is not None or event.tag is not None:
                     ys._check_node_event(event, filename)
                 mark = Mark(event.start_mark.line + 1, event.start_mark.column + 1)
@@ -150,13 +153,16 @@ def _reference_parse(text: str, filename: str) -> Node | None:
                         _reference_set_key(parent, event, mark, filename)
                         continue
                     if event.style in (None, ""):
-                        node = ScalarNode(mark, _reference_resolve(event.value, filename, mark), event.value, False)
+                        value = _reference_resolve(event.value, filename, mark)
+                        node = ScalarNode(mark, value, event.value, False)
                     else:
                         node = ScalarNode(mark, event.value, event.value, True)
                 else:
+                    is_map = isinstance(event, yaml.MappingStartEvent)
                     if awaiting_key:
-                        what = "a mapping" if isinstance(event, yaml.MappingStartEvent) else "a list"
-                        raise ys._error(f"keys must be names, not {what}; write `name: value`", filename, mark)
+                        what = "a mapping" if is_map else "a list"
+                        message = f"keys must be names, not {what}; write `name: value`"
+                        raise ys._error(message, filename, mark)
                     if len(stack) >= ys.MAX_DEPTH:
                         raise ys._error(
                             f"nesting is too deep: more than {ys.MAX_DEPTH} levels of lists and "
@@ -164,12 +170,12 @@ def _reference_parse(text: str, filename: str) -> Node | None:
                             filename,
                             mark,
                         )
-                    opened = _OpenMap(mark) if isinstance(event, yaml.MappingStartEvent) else _OpenSeq(mark)
-                    stack.append(opened)
+                    stack.append(_OpenMap(mark) if is_map else _OpenSeq(mark))
                     continue
             elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
                 done = stack.pop()
-                node = MapNode(done.mark, done.items) if isinstance(done, _OpenMap) else SeqNode(done.mark, done.items)
+                node_class = MapNode if isinstance(done, _OpenMap) else SeqNode
+                node = node_class(done.mark, done.items)
             else:
                 continue
             if not stack:
@@ -379,7 +385,10 @@ _quoted = st.one_of(
     ),
     st.text(alphabet="ab 1.'é", max_size=6).map(lambda s: "'" + s.replace("'", "''") + "'"),
 )
-_block = st.tuples(st.sampled_from(["|", ">", "|-", ">+"]), st.lists(st.text(alphabet="ab 1é", max_size=6), min_size=1, max_size=3))
+_block = st.tuples(
+    st.sampled_from(["|", ">", "|-", ">+"]),
+    st.lists(st.text(alphabet="ab 1é", max_size=6), min_size=1, max_size=3),
+)
 _scalar = st.one_of(
     _plain.map(lambda s: ("plain", s)),
     _quoted.map(lambda s: ("plain", s)),
@@ -391,7 +400,9 @@ def _tree(children):
     return st.one_of(
         st.tuples(st.just("seq"), st.booleans(), st.lists(children, min_size=1, max_size=4)),
         st.tuples(
-            st.just("map"), st.booleans(), st.lists(st.tuples(st.sampled_from(_KEYS), children), min_size=1, max_size=4)
+            st.just("map"),
+            st.booleans(),
+            st.lists(st.tuples(st.sampled_from(_KEYS), children), min_size=1, max_size=4),
         ),
     )
 
@@ -413,7 +424,10 @@ def _block_lines(node, indent: int, comments: bool) -> list[str]:
     """Lines of a block collection at ``indent``."""
     pad = " " * indent
     lines: list[str] = []
-    entries = [("- ", c) for c in node[2]] if node[0] == "seq" else [(f"{k}: ", v) for k, v in node[2]]
+    if node[0] == "seq":
+        entries = [("- ", c) for c in node[2]]
+    else:
+        entries = [(f"{k}: ", v) for k, v in node[2]]
     for lead, child in entries:
         if child[0] in ("seq", "map") and not child[1] and child[2]:  # a block collection
             lines.append(pad + lead.rstrip())
@@ -423,7 +437,8 @@ def _block_lines(node, indent: int, comments: bool) -> list[str]:
             lines.append(pad + lead + indicator + (" # c" if comments else ""))
             lines.extend(pad + "  " + line if line.strip() else "" for line in body)
         else:
-            lines.append(pad + lead + _flow(child) + (" # c" if comments and child[0] == "plain" else ""))
+            comment = " # c" if comments and child[0] == "plain" else ""
+            lines.append(pad + lead + _flow(child) + comment)
     return lines
 
 
@@ -441,13 +456,16 @@ def documents(draw) -> str:
     return head + text
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+_SLOW_OK = [HealthCheck.function_scoped_fixture, HealthCheck.too_slow]
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=_SLOW_OK)
 @given(text=documents())
 def test_generated_documents(text, monkeypatch):
     check_same(text, monkeypatch)
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=300, deadline=None, suppress_health_check=_SLOW_OK)
 @given(words=st.lists(_plain, min_size=1, max_size=20))
 def test_generated_plain_scalars(words, monkeypatch):
     """Plain scalars as values of a block mapping and as items of a block sequence."""

@@ -518,7 +518,8 @@ def _parse(text: str, filename: str) -> Node | None:
                         _check_plain_key(raw, filename, mark)
                         good_keys.add(raw)
                     if raw in items:
-                        raise _duplicate_key(raw, items[raw][0], filename, mark)  # type: ignore[call-overload]
+                        first = items[raw][0]  # type: ignore[call-overload]
+                        raise _duplicate_key(raw, first, filename, mark)
                     key = raw
                     key_mark = mark
                     continue
