@@ -424,7 +424,7 @@ def test_mapping_values_message():
 
 
 def test_max_bytes_enforced(monkeypatch):
-    assert MAX_BYTES == 8 * 1024 * 1024
+    assert MAX_BYTES == 32 * 1024 * 1024
     monkeypatch.setattr(yamlsafe, "MAX_BYTES", 100)
     ok = "a: " + "x" * 97  # 100 bytes
     assert load(ok, "s.yaml").items["a"][1].value == "x" * 97

@@ -25,6 +25,7 @@ from __future__ import annotations
 import gc
 import re
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import yaml
 from yaml.reader import ReaderError
@@ -44,8 +45,10 @@ __all__ = [
     "where",
 ]
 
-MAX_BYTES = 8 * 1024 * 1024
-"""Body files larger than this (in bytes of UTF-8) are refused before parsing."""
+MAX_BYTES = 32 * 1024 * 1024
+"""Body files larger than this (in bytes of UTF-8) are refused before parsing: 32 MiB
+holds a body of ~170 000 generated parts (``bench/large_bodies.py``, ~190 bytes a part),
+which loads in a few seconds; ``RBCLI_MAX_BODY_BYTES`` changes it (:func:`max_bytes`)."""
 
 MAX_DEPTH = 64
 """Nesting of mappings and sequences deeper than this is refused before composing."""
@@ -63,15 +66,30 @@ _EMPTY = "the file is empty; a body needs `parts:` or a single part"
 # --------------------------------------------------------------------------- nodes
 
 
-@dataclass(frozen=True, slots=True)
-class Mark:
-    """Where a node starts: 1-based line and column (columns count characters)."""
+class Mark(NamedTuple):
+    """Where a node starts: 1-based line and column (columns count characters).
+
+    A named tuple, so that the loader makes millions of them cheaply; it equals only
+    another :class:`Mark` (never a plain tuple), as a dataclass would.
+    """
 
     line: int
     col: int
 
     def __str__(self) -> str:
         return f"{self.line}:{self.col}"
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is Mark:
+            return tuple.__eq__(self, other)
+        return False if isinstance(other, tuple) else NotImplemented
+
+    def __ne__(self, other: object) -> bool:
+        if type(other) is Mark:
+            return tuple.__ne__(self, other)
+        return True if isinstance(other, tuple) else NotImplemented
+
+    __hash__ = tuple.__hash__
 
 
 @dataclass(frozen=True, repr=False, slots=True)
@@ -306,19 +324,23 @@ def _decode(text: str | bytes, filename: str) -> str:
 
 # ------------------------------------------------------------- YAML 1.2 core schema
 
-_NULLS = frozenset({"", "~", "null", "Null", "NULL"})
-_BOOLS = {
+# The null and bool words (the empty scalar is null too); each starts with _WORD_START.
+_WORDS: dict[str, bool | None] = {
+    "~": None, "null": None, "Null": None, "NULL": None,
     "true": True, "True": True, "TRUE": True,
     "false": False, "False": False, "FALSE": False,
 }  # fmt: skip
-_INT10 = re.compile(r"[-+]?[0-9]+")
+_WORD_START = frozenset("~nNtTfF")
+# int [-+]?[0-9]+ (no group takes part) or float (a fraction or an exponent group does)
+_DECIMAL = re.compile(r"[-+]?(?:(\.[0-9]+)|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?")
 _INT8 = re.compile(r"0o[0-7]+")
 _INT16 = re.compile(r"0x[0-9a-fA-F]+")
-_FLOAT = re.compile(r"[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?")
 _INF = re.compile(r"[-+]?(\.inf|\.Inf|\.INF)")
 _NAN = re.compile(r"\.nan|\.NaN|\.NAN")
 # Every non-string of the core schema starts with one of these (or is empty).
-_MAYBE_NOT_STR = frozenset("~nNtTfF+-.0123456789")
+_NUM_START = frozenset("+-.0123456789")
+_MAYBE_NOT_STR = _WORD_START | _NUM_START
+_DECIMAL_CHARS = "0123456789.eE+-"  # the characters of the core schema's decimal numbers
 
 
 def _int(digits: str, base: int, filename: str, mark: Mark) -> int:
@@ -337,22 +359,25 @@ def _int(digits: str, base: int, filename: str, mark: Mark) -> int:
 
 def _resolve_plain(raw: str, filename: str, mark: Mark) -> str | int | float | bool | None:
     """The value of a plain scalar by the YAML 1.2 core schema (spec §10.3.2)."""
-    if raw and raw[0] not in _MAYBE_NOT_STR:
-        return raw
-    if raw in _NULLS:
+    if not raw:
         return None
-    if raw in _BOOLS:
-        return _BOOLS[raw]
-    if _INT10.fullmatch(raw):
-        return _int(raw, 10, filename, mark)
+    first = raw[0]
+    if first not in _MAYBE_NOT_STR:
+        return raw
+    if first in _WORD_START:  # only null and bool words start so; nothing numeric does
+        return _WORDS.get(raw, raw)
+    # [-+.0-9]: a decimal int or float (the common case), then the rarer forms
+    m = _DECIMAL.fullmatch(raw)
+    if m is not None:
+        if m.lastindex is None:  # no fraction, no exponent: [-+]?[0-9]+
+            return _int(raw, 10, filename, mark)
+        return float(raw)  # overflow (1e999) gives inf; validation refuses it, located
     if _INT8.fullmatch(raw):
         return _int(raw[2:], 8, filename, mark)
     if _INT16.fullmatch(raw):
         return _int(raw[2:], 16, filename, mark)
-    if _FLOAT.fullmatch(raw):
-        return float(raw)  # overflow (1e999) gives inf; validation refuses it, located
     if _INF.fullmatch(raw):
-        return float("-inf") if raw.startswith("-") else float("inf")
+        return float("-inf") if first == "-" else float("inf")
     if _NAN.fullmatch(raw):
         return float("nan")
     return raw
@@ -362,26 +387,6 @@ _KIND = {type(None): "null", bool: "a boolean", int: "a number", float: "a numbe
 
 
 # ---------------------------------------------------------------- event-driven build
-
-
-class _OpenMap:
-    """A mapping being built: its items so far and the key awaiting its value."""
-
-    __slots__ = ("mark", "items", "key", "key_mark")
-
-    def __init__(self, mark: Mark) -> None:
-        self.mark = mark
-        self.items: dict[str, tuple[Mark, Node]] = {}
-        self.key: str | None = None
-        self.key_mark = mark
-
-
-class _OpenSeq:
-    __slots__ = ("mark", "items")
-
-    def __init__(self, mark: Mark) -> None:
-        self.mark = mark
-        self.items: list[Node] = []
 
 
 def _show_tag(tag: str) -> str:
@@ -408,35 +413,32 @@ def _check_node_event(event: yaml.NodeEvent, filename: str) -> None:
         )
 
 
-def _set_key(parent: _OpenMap, event: yaml.ScalarEvent, mark: Mark, filename: str) -> None:
-    """Take a scalar event as the next key of ``parent``, checking it is a new name."""
-    raw = event.value
-    if event.style in (None, ""):  # plain: must resolve to a string
-        if raw == "<<":
-            raise _error(
-                "merge keys (<<) are not allowed in body files; write the keys out in full",
-                filename,
-                mark,
-            )
-        value = _resolve_plain(raw, filename, mark)
-        if not isinstance(value, str):
-            shown = raw if raw else "an empty key"
-            raise _error(
-                f"keys must be names, not {_KIND[type(value)]} ({shown}); "
-                f'quote it ("{raw}") if it is meant as a name',
-                filename,
-                mark,
-            )
-    if raw in parent.items:
-        first = parent.items[raw][0]
+def _check_plain_key(raw: str, filename: str, mark: Mark) -> None:
+    """Refuse a plain key that is not a name: ``<<``, or one that resolves to a non-string."""
+    if raw == "<<":
         raise _error(
-            f"duplicate key {raw!r} (first at line {first.line}, column {first.col}); "
-            "each key may appear only once in a mapping",
+            "merge keys (<<) are not allowed in body files; write the keys out in full",
             filename,
             mark,
         )
-    parent.key = raw
-    parent.key_mark = mark
+    value = _resolve_plain(raw, filename, mark)
+    if not isinstance(value, str):
+        shown = raw if raw else "an empty key"
+        raise _error(
+            f"keys must be names, not {_KIND[type(value)]} ({shown}); "
+            f'quote it ("{raw}") if it is meant as a name',
+            filename,
+            mark,
+        )
+
+
+def _duplicate_key(raw: str, first: Mark, filename: str, mark: Mark) -> InputError:
+    return _error(
+        f"duplicate key {raw!r} (first at line {first.line}, column {first.col}); "
+        "each key may appear only once in a mapping",
+        filename,
+        mark,
+    )
 
 
 _SCALAR = yaml.ScalarEvent
@@ -447,6 +449,18 @@ _SEQ_END = yaml.SequenceEndEvent
 _DOC_START = yaml.DocumentStartEvent
 _ALIAS = yaml.AliasEvent
 
+# Nodes and marks are made by the million (a 100 000-part body has ~2 million). A Mark
+# is made with tuple.__new__ (no Python-level __new__), a node by setting its slots
+# directly (the frozen dataclass __init__ costs one object.__setattr__ call per field).
+_new_tuple = tuple.__new__
+_new_object = object.__new__
+_set_mark = Node.__dict__["mark"].__set__
+_set_value = ScalarNode.__dict__["value"].__set__
+_set_raw = ScalarNode.__dict__["raw"].__set__
+_set_quoted = ScalarNode.__dict__["quoted"].__set__
+_set_map_items = MapNode.__dict__["items"].__set__
+_set_seq_items = SeqNode.__dict__["items"].__set__
+
 
 def _parse(text: str, filename: str) -> Node | None:
     """Build the node tree from libyaml's (iterative) event stream in one pass.
@@ -454,59 +468,135 @@ def _parse(text: str, filename: str) -> Node | None:
     Anchors, aliases, tags, nesting deeper than MAX_DEPTH and a second document are
     refused as soon as their event arrives, so a hostile file costs milliseconds and
     no recursive composer ever sees it. Returns None for a stream with no document.
+
+    A mapping or sequence node is made (with its still empty dict or list) and put in
+    its parent when its start event arrives; its items are added as they come. The
+    state of the open collection lives in locals (``items``, ``in_map``, ``key``); the
+    enclosing ones wait on ``stack``.
     """
     loader = _LOADER(text)
-    stack: list[_OpenMap | _OpenSeq] = []
-    root: Node | None = None
+    get_event = loader.get_event
+    top: list[Node] = []  # the document's root, once made
+    stack: list[tuple[dict[str, tuple[Mark, Node]] | list[Node], bool]] = []
+    items: dict[str, tuple[Mark, Node]] | list[Node] = top  # the open collection's items
+    in_map = False  # whether ``items`` is a mapping's
+    key: str | None = None  # the key awaiting its value (None: the mapping awaits a key)
+    key_mark: Mark | None = None
+    good_keys: set[str] = set()  # plain keys already found to be names
     documents = 0
     max_depth = MAX_DEPTH
+    new_tuple = _new_tuple
+    new_object = _new_object
+    set_mark = _set_mark
+    set_value = _set_value
+    set_raw = _set_raw
+    set_quoted = _set_quoted
+    not_str = _MAYBE_NOT_STR
+    num_start = _NUM_START
+    dec_chars = _DECIMAL_CHARS
+    max_digits = _MAX_DIGITS
+    resolve = _resolve_plain
+    scalar_event = _SCALAR
+    map_start = _MAP_START
+    seq_start = _SEQ_START
+    map_end = _MAP_END
+    seq_end = _SEQ_END
+    mark_class = Mark
+    scalar_class = ScalarNode
     try:
-        while loader.check_event():
-            event = loader.get_event()
+        while True:
+            event = get_event()
             kind = type(event)
-            node: Node
-            if kind is _SCALAR or kind is _MAP_START or kind is _SEQ_START:
+            if kind is scalar_event:
                 if event.anchor is not None or event.tag is not None:
                     _check_node_event(event, filename)  # raises
                 start = event.start_mark
-                mark = Mark(start.line + 1, start.column + 1)
-                parent = stack[-1] if stack else None
-                awaiting_key = type(parent) is _OpenMap and parent.key is None
-                if kind is _SCALAR:
-                    if awaiting_key:
-                        _set_key(parent, event, mark, filename)  # type: ignore[arg-type]
-                        continue
-                    raw = event.value
-                    if event.style in (None, ""):
-                        node = ScalarNode(mark, _resolve_plain(raw, filename, mark), raw, False)
-                    else:
-                        node = ScalarNode(mark, raw, raw, True)
-                else:
-                    if awaiting_key:
-                        what = "a mapping" if kind is _MAP_START else "a list"
-                        raise _error(
-                            f"keys must be names, not {what}; write `name: value`",
-                            filename,
-                            mark,
-                        )
-                    if len(stack) >= max_depth:
-                        raise _error(
-                            f"nesting is too deep: more than {max_depth} levels of lists and "
-                            f"mappings; body files allow at most {max_depth}",
-                            filename,
-                            mark,
-                        )
-                    stack.append(_OpenMap(mark) if kind is _MAP_START else _OpenSeq(mark))
+                mark = new_tuple(mark_class, (start.line + 1, start.column + 1))
+                raw = event.value
+                if in_map and key is None:  # a key
+                    if raw not in good_keys and not event.style:  # plain (None or "")
+                        _check_plain_key(raw, filename, mark)
+                        good_keys.add(raw)
+                    if raw in items:
+                        first = items[raw][0]  # type: ignore[call-overload]
+                        raise _duplicate_key(raw, first, filename, mark)
+                    key = raw
+                    key_mark = mark
                     continue
-            elif kind is _MAP_END or kind is _SEQ_END:
-                done = stack.pop()
-                if type(done) is _OpenMap:
-                    node = MapNode(done.mark, done.items)
+                node = new_object(scalar_class)
+                set_mark(node, mark)
+                if event.style:  # quoted or block: a string
+                    set_value(node, raw)
+                    set_quoted(node, True)
+                    set_raw(node, raw)
+                elif not raw or raw[0] not in not_str:  # plain: null, or a string at once
+                    set_value(node, raw if raw else None)
+                    set_quoted(node, False)
+                    set_raw(node, raw)
+                else:  # plain, maybe not a string: the core schema
+                    # Inline for the usual numbers: a short scalar made of [0-9.eE+-]
+                    # only is an int if it is digits after one sign at most (which int()
+                    # checks), else a float if float() accepts it (over these characters
+                    # float() accepts exactly the core schema's float); all else, and any
+                    # scalar that int()/float() refuse, goes through _resolve_plain.
+                    if raw[0] in num_start and len(raw) <= max_digits and not raw.strip(dec_chars):
+                        try:
+                            value = int(raw) if raw.lstrip("+-").isdigit() else float(raw)
+                        except ValueError:
+                            value = resolve(raw, filename, mark)
+                    else:
+                        value = resolve(raw, filename, mark)
+                    set_value(node, value)
+                    set_quoted(node, False)
+                    set_raw(node, raw)
+                if in_map:
+                    items[key] = (key_mark, node)  # type: ignore[index, call-overload]
+                    key = None
                 else:
-                    node = SeqNode(done.mark, done.items)
+                    items.append(node)  # type: ignore[union-attr]
+            elif kind is map_end or kind is seq_end:
+                items, in_map = stack.pop()
+            elif kind is map_start or kind is seq_start:
+                if event.anchor is not None or event.tag is not None:
+                    _check_node_event(event, filename)  # raises
+                start = event.start_mark
+                mark = new_tuple(mark_class, (start.line + 1, start.column + 1))
+                if in_map and key is None:
+                    what = "a mapping" if kind is map_start else "a list"
+                    raise _error(
+                        f"keys must be names, not {what}; write `name: value`",
+                        filename,
+                        mark,
+                    )
+                if len(stack) >= max_depth:
+                    raise _error(
+                        f"nesting is too deep: more than {max_depth} levels of lists and "
+                        f"mappings; body files allow at most {max_depth}",
+                        filename,
+                        mark,
+                    )
+                new_items: dict[str, tuple[Mark, Node]] | list[Node]
+                if kind is map_start:
+                    new_items = {}
+                    node = new_object(MapNode)
+                    _set_map_items(node, new_items)
+                else:
+                    new_items = []
+                    node = new_object(SeqNode)
+                    _set_seq_items(node, new_items)
+                set_mark(node, mark)
+                if in_map:
+                    items[key] = (key_mark, node)  # type: ignore[index, call-overload]
+                    key = None
+                else:
+                    items.append(node)  # type: ignore[union-attr]
+                stack.append((items, in_map))
+                items = new_items
+                in_map = kind is map_start
+            elif event is None:  # after the stream's end
+                break
             elif kind is _ALIAS:
                 _check_node_event(event, filename)  # raises
-                continue
             elif kind is _DOC_START:
                 documents += 1
                 if documents > 1:
@@ -516,22 +606,10 @@ def _parse(text: str, filename: str) -> Node | None:
                         filename,
                         _yaml_mark(event.start_mark),
                     )
-                continue
-            else:  # stream start/end, document end
-                continue
-            # Attach the finished node to its parent (or make it the root).
-            if not stack:
-                root = node
-            else:
-                parent = stack[-1]
-                if type(parent) is _OpenMap:
-                    parent.items[parent.key] = (parent.key_mark, node)  # type: ignore[index]
-                    parent.key = None
-                else:
-                    parent.items.append(node)  # type: ignore[arg-type]
+            # else: stream start/end, document end
     finally:
         loader.dispose()
-    return root
+    return top[-1] if top else None
 
 
 # ----------------------------------------------------------------------------- load
