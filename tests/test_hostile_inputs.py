@@ -333,7 +333,7 @@ def test_a_folder_and_a_huge_sparse_file_are_refused_before_reading(cli, tmp_pat
     big = tmp_path / "big.yaml"
     with open(big, "wb") as fh:
         fh.truncate(2 * 1024 ** 3)  # 2 GiB, sparse: reading it would take 2 GiB of memory
-    one_line(cli("inertia", str(big)), says="limited to 8 MiB")
+    one_line(cli("inertia", str(big)), says="limited to 32 MiB")
     one_line(cli("inertia", str(big), env={"RBCLI_MAX_BODY_BYTES": "1024"}), says="RBCLI_MAX_BODY_BYTES")
 
 
@@ -355,7 +355,7 @@ def test_standard_input_is_read_incrementally_with_the_same_cap():
 
 
 def test_stdin_over_the_cap_is_refused(cli):
-    one_line(cli("inertia", "-", input=b"#" * (8 * 1024 * 1024 + 10)), says="standard input")
+    one_line(cli("inertia", "-", input=b"#" * (32 * 1024 * 1024 + 10)), says="standard input")
 
 
 # --------------------------------------------------------------------------- internal errors

@@ -81,7 +81,7 @@ def test_closed_stdin_with_body_dash_is_a_clear_exit_2():
 
 def test_stdin_from_dev_zero_stops_at_the_cap():
     code, _, err = sh(("inertia", "-"), "< /dev/zero")
-    assert code == 2 and "limited to 8 MiB" in err, err
+    assert code == 2 and "limited to 32 MiB" in err, err
 
 
 def test_a_closed_stdin_does_not_matter_to_a_body_file():
