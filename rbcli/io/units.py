@@ -44,6 +44,8 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
 
+from rbcli._startup import LazyRe
+
 __all__ = [
     "Dim",
     "UnitError",
@@ -290,7 +292,7 @@ _BY_NAME: dict[str, _Unit] = {name: u for u in _UNITS for name in u.names}
 #: zetta/zepto, yotta/yocto, pico, nano/newton, femto, atto; joule): a name typed with
 #: such a letter in the other case is never read as the table's unit
 _CASE_SENSITIVE_FIRST = set("MmGTPEZzYyNnpfaJ")
-_POWER_SUFFIX_RE = re.compile(r"(.*?[^\d])([1-9]\d*)")
+_POWER_SUFFIX_RE = LazyRe(r"(.*?[^\d])([1-9]\d*)")
 
 
 def _folded(name: str) -> _Unit | None:
@@ -380,16 +382,16 @@ _MAX_EXPONENT = 12  # largest |n| in a written unit power
 _MAX_UNIT_POWER = 12
 _MAX_DECIMAL_EXPONENT = 400  # largest |e| in a number's exponent (floats stop at ~308)
 
-_NUMBER_RE = re.compile(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
-_NONFINITE_RE = re.compile(r"[+\-\u2212]?(?:inf(?:inity)?|nan)(?![A-Za-z0-9_])", re.IGNORECASE)
-_NAME_RE = re.compile(r"[A-Za-zµμ][A-Za-z0-9_µμ]*|°")
+_NUMBER_RE = LazyRe(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
+_NONFINITE_RE = LazyRe(r"[+\-\u2212]?(?:inf(?:inity)?|nan)(?![A-Za-z0-9_])", re.IGNORECASE)
+_NAME_RE = LazyRe(r"[A-Za-zµμ][A-Za-z0-9_µμ]*|°")
 # 'r/min' is rpm, unless a power follows ('r/min^2' would be ambiguous)
-_RMIN_RE = re.compile(
+_RMIN_RE = LazyRe(
     r"(?<![A-Za-z0-9_µμ])r/min(?![A-Za-z0-9_µμ])(?!\s*(?:\^|\*\*|[⁻⁰¹²³⁴-⁹]))"
 )
 _SUPER = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
 _SUPER_CHARS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺"
-_INT_RE = re.compile(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
+_INT_RE = LazyRe(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
 
 
 def _to_float(q: Fraction, pi: int, text: str = "") -> float:
@@ -589,6 +591,12 @@ def _check_text(text: object, what: str) -> str:
 
 
 def _parse_unit_exact(text: str, whole: str | None = None) -> tuple[Fraction, int, Dim]:
+    unit = _BY_NAME.get(text)
+    if unit is not None and "/" not in text:
+        # a bare name of the table ('mm', 'kg', '°'): what the parser returns for it (one
+        # name to the power 1, no 'r/min' to rewrite), without reading it character by
+        # character (the loader's units: block is mostly such names)
+        return unit.q, unit.pi, unit.dim
     return _UnitParser(text, text if whole is None else whole).parse()
 
 
