@@ -10,10 +10,10 @@ is a dimension of its own, not "dimensionless": ``"12 deg"`` is an angle, ``"rpm
 taken for an angular speed (pint, which treats the radian as dimensionless, converts
 ``1 Hz`` to ``1 rad/s`` without a word).
 
-Every unit's factor to SI (m, kg, s, rad) is held exactly, as a
-:class:`fractions.Fraction` times an integer power of pi (``deg = pi/180``,
-``rpm = 2 pi / 60``), and the number of a quantity is read exactly too
-(``Fraction("7.85")``). The product is rounded to a float once, at the very end, with
+Every unit's factor to SI (m, kg, s, rad) is held exactly, as a rational number
+(:class:`_Q`, what this module needs of :class:`fractions.Fraction`) times an integer
+power of pi (``deg = pi/180``, ``rpm = 2 pi / 60``), and the number of a quantity is
+read exactly too (``7.85`` is 157/20). The product is rounded to a float once, at the very end, with
 pi taken to 60 digits, so ``"7.85 g/cm^3"`` gives exactly 7850.0, ``"1 in"`` exactly
 0.0254 and ``"12 deg"`` the float nearest to 12 pi / 180.
 
@@ -40,7 +40,6 @@ from __future__ import annotations
 
 import math
 import re
-from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
 
@@ -57,6 +56,84 @@ __all__ = [
     "known_units",
     "format_unit_table",
 ]
+
+
+# --------------------------------------------------------------------------- exact numbers
+
+
+class _Q:
+    """An exact rational number ``numerator/denominator`` in lowest terms, denominator > 0.
+
+    What this module needs of :class:`fractions.Fraction` (``*``, ``/``, ``**`` an int,
+    ``float()``, ``numerator``/``denominator``, ``==``), with the same values: ``float()``
+    is ``numerator / denominator``, Python's correctly rounded integer division, as
+    ``Fraction.__float__``. It exists because ``import fractions`` (which imports
+    ``decimal``) cost ~1.5 ms of every command's start-up (issue 16).
+    """
+
+    __slots__ = ("numerator", "denominator")
+
+    def __init__(self, numerator: int, denominator: int = 1) -> None:
+        if denominator == 0:
+            raise ZeroDivisionError(f"_Q({numerator}, 0)")
+        if denominator < 0:
+            numerator, denominator = -numerator, -denominator
+        g = math.gcd(numerator, denominator)
+        if g != 1:
+            numerator //= g
+            denominator //= g
+        self.numerator = numerator
+        self.denominator = denominator
+
+    def __mul__(self, other: _Q | int) -> _Q:
+        if isinstance(other, int):
+            return _Q(self.numerator * other, self.denominator)
+        return _Q(self.numerator * other.numerator, self.denominator * other.denominator)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other: _Q | int) -> _Q:
+        if isinstance(other, int):
+            return _Q(self.numerator, self.denominator * other)
+        return _Q(self.numerator * other.denominator, self.denominator * other.numerator)
+
+    def __pow__(self, n: int) -> _Q:
+        if n >= 0:
+            return _Q(self.numerator**n, self.denominator**n)
+        return _Q(self.denominator ** (-n), self.numerator ** (-n))
+
+    def __float__(self) -> float:
+        return self.numerator / self.denominator
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, int):
+            return self.denominator == 1 and self.numerator == other
+        if isinstance(other, _Q):
+            return self.numerator == other.numerator and self.denominator == other.denominator
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash((self.numerator, self.denominator))
+
+    def __repr__(self) -> str:
+        return f"_Q({self.numerator}, {self.denominator})"
+
+
+def _decimal(text: str) -> _Q:
+    """The exact value of a decimal literal (``"-7.85"``, ``".5"``, ``"1e-3"``; digits and an
+    optional sign, point and exponent, as :data:`_NUMBER_RE` matches them), as
+    ``Fraction(text)`` reads it."""
+    mantissa, _, exp = text.replace("E", "e").partition("e")
+    sign = -1 if mantissa.startswith("-") else 1
+    whole, _, frac = mantissa.lstrip("+-").partition(".")
+    n = sign * int((whole + frac) or "0")
+    e = (int(exp) if exp else 0) - len(frac)
+    return _Q(n * 10**e) if e >= 0 else _Q(n, 10 ** (-e))
+
+
+def _F(value: int | str, denominator: int = 1) -> _Q:
+    """A table constant: ``_F(1, 1000)``, ``_F("0.0254")``."""
+    return _decimal(value) if isinstance(value, str) else _Q(value, denominator)
 
 
 # --------------------------------------------------------------------------- dimensions
@@ -218,17 +295,16 @@ def _noun_for_kind(kind: str) -> str:
 
 # pi to 60 decimals: enough that rounding q * pi^k to a float is the correctly rounded
 # value (the error, ~1e-60 relative, is far below half an ulp, 1.1e-16).
-_PI = Fraction("3.141592653589793238462643383279502884197169399375105820974944")
+_PI = _F("3.141592653589793238462643383279502884197169399375105820974944")
 
 class _Unit(NamedTuple):
     names: tuple[str, ...]  # canonical name first, then aliases
-    q: Fraction  # rational part of the factor to SI
+    q: _Q  # rational part of the factor to SI
     pi: int  # power of pi in the factor to SI
     dim: Dim
     note: str  # what it is, for the table
 
 
-_F = Fraction
 _IN = _F("0.0254")
 _LB = _F("0.45359237")
 _GN = _F("9.80665")
@@ -337,7 +413,7 @@ def _si_unit_text(dim: Dim) -> str:
     return text.replace("1/s", "s^-1") if text.startswith("1/") else text
 
 
-def _exact_text(q: Fraction, pi: int) -> str:
+def _exact_text(q: _Q, pi: int) -> str:
     parts = []
     if q.numerator != 1 or pi == 0:
         parts.append(str(q.numerator))
@@ -394,7 +470,7 @@ _SUPER_CHARS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺"
 _INT_RE = LazyRe(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
 
 
-def _to_float(q: Fraction, pi: int, text: str = "") -> float:
+def _to_float(q: _Q, pi: int, text: str = "") -> float:
     """Round ``q * pi**pi`` to the nearest float, once."""
     exact = q * _PI**pi if pi else q
     try:
@@ -450,7 +526,7 @@ class _UnitParser:
         self.skip_ws()
         return self.s[self.i] if self.i < len(self.s) else ""
 
-    def parse(self) -> tuple[Fraction, int, Dim]:
+    def parse(self) -> tuple[_Q, int, Dim]:
         self.skip_ws()
         if self.i >= len(self.s):
             raise UnitError(f"no unit in '{self.whole}'; write a unit such as m, kg, s, deg")
@@ -469,8 +545,8 @@ class _UnitParser:
     # only at the end, from exponents that are known to be small. So nested powers such
     # as '((mm^12)^12)^12' are refused at once instead of building huge fractions.
 
-    def expand(self, powers: dict[str, int]) -> tuple[Fraction, int, Dim]:
-        q, p, d = Fraction(1), 0, Dim()
+    def expand(self, powers: dict[str, int]) -> tuple[_Q, int, Dim]:
+        q, p, d = _Q(1), 0, Dim()
         for name, n in powers.items():
             if n:
                 unit = _BY_NAME[name]
@@ -590,7 +666,7 @@ def _check_text(text: object, what: str) -> str:
     return text
 
 
-def _parse_unit_exact(text: str, whole: str | None = None) -> tuple[Fraction, int, Dim]:
+def _parse_unit_exact(text: str, whole: str | None = None) -> tuple[_Q, int, Dim]:
     unit = _BY_NAME.get(text)
     if unit is not None and "/" not in text:
         # a bare name of the table ('mm', 'kg', '°'): what the parser returns for it (one
@@ -625,7 +701,7 @@ def parse_unit(text: str) -> tuple[float, Dim]:
     return _to_float(q, p, text.strip()), d
 
 
-def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool]:
+def _parse_quantity_exact(text: str) -> tuple[_Q, _Q, int, Dim, bool]:
     """(number, unit rational, unit pi power, dim, has_unit)."""
     text = _check_text(text, "a quantity")
     s = text.strip()
@@ -648,7 +724,7 @@ def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool
         )
     if len(mantissa) > 100:
         raise UnitError(f"the number in '{text}' has too many digits (at most 100)")
-    number = Fraction(num_text)
+    number = _decimal(num_text)
     rest = s[m.end() :]
     if rest.startswith((",", "_")):
         raise UnitError(
@@ -656,7 +732,7 @@ def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool
             "thousands separators"
         )
     if not rest.strip():
-        return number, Fraction(1), 0, Dim(), False
+        return number, _Q(1), 0, Dim(), False
     q, p, d = _parse_unit_exact(rest, whole=text)
     return number, q, p, d, True
 
@@ -761,6 +837,12 @@ _BASE_KEYS = {"length": "L", "mass": "M", "time": "T", "angle": "A"}
 _BASE_DEFAULTS = {"length": "m", "mass": "kg", "time": "s", "angle": "deg"}
 
 
+def _is_name(text: str) -> bool:
+    """``text`` is one unit name (no parentheses needed around it); a name of the table is
+    known to be one without compiling :data:`_NAME_RE` (tests/test_io_units.py checks)."""
+    return (text in _BY_NAME and "/" not in text) or _NAME_RE.fullmatch(text) is not None
+
+
 def _compose(texts: dict[str, str], dim: Dim) -> str:
     """Unit text for ``dim`` from base unit texts keyed by 'M', 'L', 'T', 'A'."""
     num: list[str] = []
@@ -771,7 +853,7 @@ def _compose(texts: dict[str, str], dim: Dim) -> str:
             continue
         base = texts[attr]
         alone = e == 1 and sum(1 for x in dim if x) == 1
-        if not alone and not _NAME_RE.fullmatch(base):
+        if not alone and not _is_name(base):
             base = f"({base})"
         piece = base if abs(e) == 1 else f"{base}^{abs(e)}"
         (num if e > 0 else den).append(piece)
@@ -852,10 +934,10 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
         base_units = {k: v for k, v in base_units.items() if k != "angular_speed"}
     if kind == "angular_speed":
         return 1.0, "rad/s"
-    exact: dict[str, tuple[Fraction, int]] = {}
+    exact: dict[str, tuple[_Q, int]] = {}
     texts: dict[str, str] = {}
     for key, default in _BASE_DEFAULTS.items():
-        exact[_BASE_KEYS[key]] = (Fraction(1), 0)
+        exact[_BASE_KEYS[key]] = (_Q(1), 0)
         texts[_BASE_KEYS[key]] = default
     for key, value in base_units.items():
         if key not in _BASE_KEYS:
@@ -883,7 +965,7 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
         exact[_BASE_KEYS[key]] = (q, p)
         texts[_BASE_KEYS[key]] = text.strip()
     dim = KINDS[kind]
-    q, p = Fraction(1), 0
+    q, p = _Q(1), 0
     for attr, _word in _DIM_ORDER:
         e = getattr(dim, attr)
         if e:
