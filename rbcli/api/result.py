@@ -78,7 +78,11 @@ def _fast(obj: Any) -> Any:
         return out_list
     if t is str or t is int or t is bool or obj is None:
         return obj
-    if t.__name__ == "ndarray" and t.__module__ == "numpy" and obj.dtype.kind == "f" and obj.dtype.itemsize <= 8:
+    if t.__name__ == "ndarray" and t.__module__ == "numpy":
+        if obj.size <= 64 or obj.dtype.kind != "f" or obj.dtype.itemsize > 8:
+            # a small array: tolist() and the loops above beat numpy's calls (what _slow does
+            # with an ndarray, which has no to_json)
+            return _fast(obj.tolist())
         import numpy as np
 
         if obj.size and not np.isfinite(obj).all():
