@@ -297,12 +297,17 @@ def _noun_for_kind(kind: str) -> str:
 # value (the error, ~1e-60 relative, is far below half an ulp, 1.1e-16).
 _PI = _F("3.141592653589793238462643383279502884197169399375105820974944")
 
-class _Unit(NamedTuple):
-    names: tuple[str, ...]  # canonical name first, then aliases
-    q: _Q  # rational part of the factor to SI
-    pi: int  # power of pi in the factor to SI
-    dim: Dim
-    note: str  # what it is, for the table
+class _Unit:
+    """A row of the unit table (a plain class: a NamedTuple costs start-up to create)."""
+
+    __slots__ = ("names", "q", "pi", "dim", "note")
+
+    def __init__(self, names: tuple[str, ...], q: _Q, pi: int, dim: Dim, note: str) -> None:
+        self.names = names  # canonical name first, then aliases
+        self.q = q  # rational part of the factor to SI
+        self.pi = pi  # power of pi in the factor to SI
+        self.dim = dim
+        self.note = note  # what it is, for the table
 
 
 _IN = _F("0.0254")
