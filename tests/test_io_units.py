@@ -655,3 +655,24 @@ def test_bare_table_names_take_the_short_paths_with_the_same_result():
         slow = un._UnitParser(name, name).parse()
         assert fast == slow
         assert un._NAME_RE.fullmatch(name)  # what _is_name assumes of every such name
+
+
+def test_plain_decimals_are_numbers_for_both_patterns():
+    """plain_decimal (the short path that skips the number patterns) only says yes where
+    both patterns match the whole text."""
+    import re
+
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from rbcli.api import options
+    from rbcli.io import units as un
+
+    @settings(max_examples=3000, deadline=None)
+    @given(st.text("0123456789.+-eE \u2212\u0663\u00b2x", max_size=8))
+    def check(s):
+        if un.plain_decimal(s):
+            assert re.fullmatch(un._NUMBER_RE.pattern, s) and options.NUMBER.fullmatch(s)
+            assert un.parse_quantity(s) == (float(s), un.Dim())
+
+    check()

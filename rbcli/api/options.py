@@ -80,7 +80,9 @@ def _text(v: Value, option: str) -> str:
 
 def _bare(s: str) -> bool:
     """A number with no unit after it."""
-    return NUMBER.fullmatch(s) is not None
+    from rbcli.io.units import plain_decimal  # (most values: no pattern to compile)
+
+    return plain_decimal(s) or NUMBER.fullmatch(s) is not None
 
 
 def is_bare(text: str) -> bool:

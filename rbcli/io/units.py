@@ -706,10 +706,24 @@ def parse_unit(text: str) -> tuple[float, Dim]:
     return _to_float(q, p, text.strip()), d
 
 
+def plain_decimal(s: str) -> bool:
+    """``s`` is a plain decimal number and nothing else: an optional ``+``/``-``, ASCII
+    digits with at most one ``.``, at least one digit (``"150"``, ``"-9.81"``, ``".5"``).
+
+    Every such text is a whole number for :data:`_NUMBER_RE` here and for
+    ``rbcli.api.options.NUMBER`` (which this lets a command skip compiling); any other text
+    (an exponent, a unit, ``−``, other digits) goes to those patterns as before."""
+    body = s[1:] if s[:1] in ("+", "-") else s
+    digits = body.replace(".", "", 1)
+    return digits.isascii() and digits.isdigit()
+
+
 def _parse_quantity_exact(text: str) -> tuple[_Q, _Q, int, Dim, bool]:
     """(number, unit rational, unit pi power, dim, has_unit)."""
     text = _check_text(text, "a quantity")
     s = text.strip()
+    if len(s) <= 100 and plain_decimal(s):  # what the general path returns for it
+        return _decimal(s), _Q(1), 0, Dim(), False
     if not s:
         raise UnitError("empty quantity; write a number, with a unit where one is needed, "
                         "e.g. '30 cm'")
