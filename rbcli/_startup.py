@@ -109,43 +109,62 @@ def _process(cls: type, eq: bool) -> type:
     hash_names = tuple(f.name for f in fields.values()
                        if (f.compare if f.hash is None else f.hash))
     all_names = frozenset(fields)
+    name_set = frozenset(names)
     post_init = getattr(cls, "__post_init__", None)
     qualname = cls.__qualname__
     nparams = len(names)
     nrequired = sum(1 for _, d, fa in plan if d is MISSING and fa is MISSING)
 
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
+    def _bad_call(args: tuple, kwargs: dict) -> TypeError:
+        """The TypeError a compiled __init__ raises for this call (the slow path), in
+        CPython's order: keywords, then too many positional arguments, then missing ones."""
+        for k in kwargs:
+            if k not in name_set:
+                return TypeError(f"{qualname}.__init__() got an unexpected keyword argument '{k}'")
+            if k in names[: len(args)]:
+                return TypeError(f"{qualname}.__init__() got multiple values for argument '{k}'")
         if len(args) > nparams:
             takes = (f"{nparams + 1}" if nrequired == nparams else
                      f"from {nrequired + 1} to {nparams + 1}")
-            raise TypeError(f"{qualname}.__init__() takes {takes} positional arguments "
-                            f"but {len(args) + 1} were given")
-        values = dict(zip(names, args))
-        if kwargs:
-            for k in kwargs:
-                if k in values:
-                    raise TypeError(f"{qualname}.__init__() got multiple values for argument '{k}'")
-                if k not in all_names or k not in names:
-                    raise TypeError(f"{qualname}.__init__() got an unexpected keyword argument '{k}'")
-            values.update(kwargs)
-        if len(values) < nparams:
-            missing = []
-            for name, default, factory in plan:
-                if name not in values:
-                    if default is not MISSING:
-                        values[name] = default
-                    elif factory is not MISSING:
-                        values[name] = factory()
-                    else:
-                        missing.append(name)
-            if missing:
-                listed = (f"'{missing[0]}'" if len(missing) == 1 else
-                          ", ".join(f"'{m}'" for m in missing[:-1]) + f" and '{missing[-1]}'")
-                raise TypeError(f"{qualname}.__init__() missing {len(missing)} required "
-                                f"positional argument{'s' if len(missing) > 1 else ''}: {listed}")
-        d = self.__dict__
-        for name in names:  # field order, as a compiled __init__ assigns them
-            d[name] = values[name]
+            return TypeError(f"{qualname}.__init__() takes {takes} positional arguments "
+                             f"but {len(args) + 1} were given")
+        missing = [n for n, d, f in plan[len(args):] if n not in kwargs and d is MISSING and f is MISSING]
+        listed = (f"'{missing[0]}'" if len(missing) == 1 else
+                  ", ".join(f"'{m}'" for m in missing[:-1]) + f" and '{missing[-1]}'")
+        return TypeError(f"{qualname}.__init__() missing {len(missing)} required "
+                         f"positional argument{'s' if len(missing) > 1 else ''}: {listed}")
+
+    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+        d = self.__dict__  # assigned in field order, as a compiled __init__ does
+        if not kwargs and len(args) == nparams:  # every field, by position
+            for name, value in zip(names, args):
+                d[name] = value
+        else:
+            if args:
+                if len(args) > nparams or any(n in kwargs for n in names[: len(args)]):
+                    raise _bad_call(args, kwargs)
+                kwargs.update(zip(names, args))  # kwargs: this call's own dict
+            if len(kwargs) == nparams:  # every field given
+                try:
+                    for name in names:
+                        d[name] = kwargs[name]
+                except KeyError:
+                    d.clear()
+                    raise _bad_call(args, {k: v for k, v in kwargs.items() if k not in names[: len(args)]}) from None
+            else:
+                if not name_set.issuperset(kwargs):
+                    raise _bad_call(args, {k: v for k, v in kwargs.items() if k not in names[: len(args)]})
+                for name, default, factory in plan:
+                    value = kwargs.get(name, MISSING)
+                    if value is MISSING:
+                        if default is not MISSING:
+                            value = default
+                        elif factory is not MISSING:
+                            value = factory()
+                        else:
+                            d.clear()
+                            raise _bad_call(args, {k: v for k, v in kwargs.items() if k not in names[: len(args)]})
+                    d[name] = value
         if post_init is not None:
             self.__post_init__()
 

@@ -53,7 +53,9 @@ def test_fields_and_defaults_match_dataclass():
 
 def test_constructor_errors_match_dataclass():
     D, F = _pair()
-    for args, kw in (((), {}), ((1, 2, 3, 4, 5, 6), {}), ((1,), {"a": 2}), ((1,), {"zz": 1})):
+    for args, kw in (((), {}), ((1, 2, 3, 4, 5, 6), {}), ((1,), {"a": 2}), ((1,), {"zz": 1}),
+                     ((), {"b": 1, "c": 2, "hidden": 3, "loose": 4, "zz": 5}),  # as many as fields
+                     ((), {"b": 1}), ((1, 2), {"c": [], "zz": 1})):
         with pytest.raises(TypeError) as ed:
             D(*args, **kw)
         with pytest.raises(TypeError) as ef:
@@ -123,3 +125,25 @@ def test_subclass_of_a_frozen_class():
 
     assert [f.name for f in dataclasses.fields(B)] == ["x", "y"]
     assert B(1, 2) == B(x=1, y=2) and repr(B(1)) == "test_subclass_of_a_frozen_class.<locals>.B(x=1, y=0)"
+
+
+def test_every_way_of_calling_matches_dataclass():
+    """Positional prefixes times keyword subsets (with an unknown key): same fields or the
+    same TypeError."""
+    import itertools
+
+    D, F = _pair()
+    names = ["a", "b", "c", "hidden", "loose", "zz"]
+    for npos in range(7):
+        for r in range(4):
+            for keys in itertools.combinations(names, r):
+                args = tuple(range(npos))
+                kw = {k: i + 10 for i, k in enumerate(keys)}
+                out = []
+                for C in (D, F):
+                    try:
+                        x = C(*args, **kw)
+                        out.append(("ok", dataclasses.astuple(x)))
+                    except TypeError as exc:
+                        out.append(("error", str(exc).split("__init__() ")[1]))
+                assert out[0] == out[1], (args, kw, out)

@@ -24,16 +24,22 @@ if TYPE_CHECKING:  # pragma: no cover
 
 @frozen
 class Heading:
+    """A heading line."""
+
     text: str
 
 
 @frozen
 class Note:
+    """A paragraph of text."""
+
     text: str
 
 
 @frozen
 class Table:
+    """A titled table of text cells; ``right`` are the right-aligned columns."""
+
     title: str
     columns: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
