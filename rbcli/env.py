@@ -12,7 +12,6 @@ import errno
 import os
 import re
 import sys
-from dataclasses import dataclass
 from typing import IO
 
 # ----------------------------------------------------------------------------- user text
@@ -25,10 +24,12 @@ MAX_LINE = 2000
 
 # C0 and C1 controls (ESC, CR, NEL \x85...), DEL, line and paragraph separators, and the
 # invisible bidirectional controls that reorder what a terminal shows
-_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]")
-_UNSAFE_KEEP_NL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]")
+# (patterns, not compiled here: re compiles and caches each on its first use, so a run that
+# prints no message and no table does not pay for them)
+_UNSAFE = "[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]"
+_UNSAFE_KEEP_NL = "[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]"
 _NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t", "\x1b": "\\e"}
-_LONG_WORD = re.compile(r"\S{%d,}" % (MAX_WORD + 1))
+_LONG_WORD = r"\S{%d,}" % (MAX_WORD + 1)
 
 
 def _escape(m: re.Match) -> str:
@@ -56,9 +57,9 @@ def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = M
     s = text if isinstance(text, str) else str(text)
     if max_line is not None and len(s) > 4 * max_line:  # do not scan megabytes
         s = s[: 4 * max_line]
-    s = (_UNSAFE_KEEP_NL if keep_newlines else _UNSAFE).sub(_escape, s)
+    s = re.sub(_UNSAFE_KEEP_NL if keep_newlines else _UNSAFE, _escape, s)
     if len(s) > MAX_WORD:
-        s = _LONG_WORD.sub(_cut_word, s)
+        s = re.sub(_LONG_WORD, _cut_word, s)
     if max_line is not None and len(s) > max_line:
         s = s[:max_line] + "…"
     return s
@@ -338,17 +339,27 @@ def show_warning(message, category, filename, lineno, file=None, line=None) -> N
 # ----------------------------------------------------------------------------- Env
 
 
-@dataclass
 class Env:
-    stdout: IO[str]
-    stderr: IO[str]
-    stdout_isatty: bool
-    color: bool
-    width: int | None = None
-    debug: bool = False
-    #: set once standard output has been closed by its reader (``| head -1``): there is no
-    #: one left to read, so a batch may stop early
-    pipe_closed: bool = False
+    """A run's streams and terminal (a plain class, not a dataclass: every run makes one).
+
+    ``pipe_closed`` is set once standard output has been closed by its reader (``| head
+    -1``): there is no one left to read, so a batch may stop early.
+    """
+
+    def __init__(self, stdout: IO[str], stderr: IO[str], stdout_isatty: bool, color: bool,
+                 width: int | None = None, debug: bool = False, pipe_closed: bool = False) -> None:
+        self.stdout = stdout
+        self.stderr = stderr
+        self.stdout_isatty = stdout_isatty
+        self.color = color
+        self.width = width
+        self.debug = debug
+        self.pipe_closed = pipe_closed
+
+    def __repr__(self) -> str:
+        return (f"Env(stdout={self.stdout!r}, stderr={self.stderr!r}, stdout_isatty={self.stdout_isatty!r}, "
+                f"color={self.color!r}, width={self.width!r}, debug={self.debug!r}, "
+                f"pipe_closed={self.pipe_closed!r})")
 
     @classmethod
     def from_process(cls) -> "Env":

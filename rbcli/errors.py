@@ -9,7 +9,7 @@ exits 1 itself.
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass
+from dataclasses import FrozenInstanceError
 
 
 class ExitStatus(enum.IntEnum):
@@ -22,13 +22,44 @@ class ExitStatus(enum.IntEnum):
     INTERRUPTED = 130  # Ctrl-C
 
 
-@dataclass(frozen=True)
 class Location:
-    """Where something is in an input file: 1-based line and column (0 = unknown)."""
+    """Where something is in an input file: 1-based line and column (0 = unknown).
+
+    Immutable, compared and hashed by (file, line, col), like the frozen dataclass it was
+    (written out: a frozen dataclass costs ~0.5 ms of every run's start-up to create).
+    """
+
+    __slots__ = ("file", "line", "col")
+    __match_args__ = ("file", "line", "col")
 
     file: str
-    line: int = 0
-    col: int = 0
+    line: int
+    col: int
+
+    def __init__(self, file: str, line: int = 0, col: int = 0) -> None:
+        object.__setattr__(self, "file", file)
+        object.__setattr__(self, "line", line)
+        object.__setattr__(self, "col", col)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not Location:
+            return NotImplemented
+        return (self.file, self.line, self.col) == (other.file, other.line, other.col)  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return hash((self.file, self.line, self.col))
+
+    def __repr__(self) -> str:
+        return f"Location(file={self.file!r}, line={self.line!r}, col={self.col!r})"
+
+    def __reduce__(self) -> tuple:
+        return (Location, (self.file, self.line, self.col))
 
     def __str__(self) -> str:
         if self.line <= 0:

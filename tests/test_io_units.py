@@ -604,3 +604,75 @@ def test_angular_speed_base_unit():
     assert unit_for_kind({"angular_speed": "rpm", "length": "mm"}, "length") == (0.001, "mm")
     with pytest.raises(UnitError, match="angular_speed"):
         unit_for_kind({"angular_speed": "Hz"}, "angular_speed")
+
+
+# ----------------------------------------------------------------------------- start-up (issue 16)
+
+
+def test_exact_rationals_match_fraction():
+    """io.units' _Q and _decimal give Fraction's values (so every factor rounds the same)."""
+    from fractions import Fraction
+
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from rbcli.io import units as un
+
+    @settings(max_examples=500, deadline=None)
+    @given(st.integers(-10**30, 10**30), st.integers(1, 10**30), st.integers(-10**6, 10**6),
+           st.integers(1, 10**6), st.integers(-5, 5))
+    def check(a, b, c, d, n):
+        q, f = un._Q(a, b), Fraction(a, b)
+        r, g = un._Q(c, d), Fraction(c, d)
+        for x, y in ((q, f), (q * r, f * g), (q * 7, f * 7), (q / 3, f / 3)):
+            assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
+            assert float(x) == float(y)
+        if c != 0 or n >= 0:
+            assert float(r**n) == float(g**n)
+        if c != 0:
+            assert float(q / r) == float(f / g)
+
+    check()
+
+    @settings(max_examples=500, deadline=None)
+    @given(st.from_regex(r"[+-]?(?:[0-9]{1,30}\.?[0-9]{0,30}|\.[0-9]{1,30})(?:[eE][+-]?[0-9]{1,3})?",
+                         fullmatch=True))
+    def decimal(text):
+        x, y = un._decimal(text), Fraction(text)
+        assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
+
+    decimal()
+
+
+def test_bare_table_names_take_the_short_paths_with_the_same_result():
+    """A unit text that is one name of the table skips the parser and the name regex."""
+    from rbcli.io import units as un
+
+    for name, unit in un._BY_NAME.items():
+        if "/" in name:
+            continue
+        fast = un._parse_unit_exact(name)
+        slow = un._UnitParser(name, name).parse()
+        assert fast == slow
+        assert un._NAME_RE.fullmatch(name)  # what _is_name assumes of every such name
+
+
+def test_plain_decimals_are_numbers_for_both_patterns():
+    """plain_decimal (the short path that skips the number patterns) only says yes where
+    both patterns match the whole text."""
+    import re
+
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from rbcli.api import options
+    from rbcli.io import units as un
+
+    @settings(max_examples=3000, deadline=None)
+    @given(st.text("0123456789.+-eE \u2212\u0663\u00b2x", max_size=8))
+    def check(s):
+        if un.plain_decimal(s):
+            assert re.fullmatch(un._NUMBER_RE.pattern, s) and options.NUMBER.fullmatch(s)
+            assert un.parse_quantity(s) == (float(s), un.Dim())
+
+    check()

@@ -18,15 +18,15 @@ Standard library only at module level; :mod:`rbcli.io.units` is imported on firs
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
+from rbcli._startup import LazyRe
 from rbcli.errors import InputError
 
 #: a number at the start of a value: what is left after it is the value's unit
-NUMBER = re.compile(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+NUMBER = LazyRe(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
 
 #: how the unit rule reads, for help texts
 UNIT_RULE = "a unit after the last number applies to every bare number before it"
@@ -80,7 +80,9 @@ def _text(v: Value, option: str) -> str:
 
 def _bare(s: str) -> bool:
     """A number with no unit after it."""
-    return NUMBER.fullmatch(s) is not None
+    from rbcli.io.units import plain_decimal  # (most values: no pattern to compile)
+
+    return plain_decimal(s) or NUMBER.fullmatch(s) is not None
 
 
 def is_bare(text: str) -> bool:
@@ -179,7 +181,7 @@ def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
 
 
 #: an ISO 21940-11 balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s'
-_GRADE = re.compile(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
+_GRADE = LazyRe(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
 
 
 def grade(text: Value, option: str = "--grade") -> float:

@@ -11,9 +11,10 @@ line); errors are :class:`rbcli.errors.InputError` with the command line's messa
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import TYPE_CHECKING, Any
 
+from rbcli._startup import frozen
 from rbcli.api import options as op
 from rbcli.api.options import symmetry_tolerance
 from rbcli.api.result import Result
@@ -42,7 +43,7 @@ _OVERFLOW = ("--spin, --theta-dot, --phi-dot, --g: the values overflow floating 
 # ----------------------------------------------------------------------------- top
 
 
-@dataclass(frozen=True)
+@frozen
 class TopOptions:
     """The heavy top's inputs, parsed and checked (SI), with where the pivot came from.
 
@@ -170,7 +171,7 @@ def _pivot(body: Body, p_opt: str | list[float] | None) -> tuple[tuple[float, fl
     return tuple(float(x) for x in P), label  # type: ignore[return-value]
 
 
-@dataclass(frozen=True)
+@frozen
 class TopResult(Result):
     """The heavy top's motion from the given start, and the numerical check if asked for.
 
@@ -403,7 +404,7 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
 # ----------------------------------------------------------------------------- gyrocompass
 
 
-@dataclass(frozen=True)
+@frozen
 class GyrocompassOptions:
     """The gyrocompass's inputs, parsed and checked (SI).
 
@@ -483,7 +484,7 @@ class GyrocompassOptions:
                    warnings=_plausibility(body, u, None, S, "--spin"))
 
 
-@dataclass(frozen=True)
+@frozen
 class GyrocompassResult(Result):
     """The gyrocompass's swing about north.
 

@@ -27,11 +27,12 @@ corrections (Principia, ``documentation/Celledoni.tex``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any
 
 import numpy as np
 
+from rbcli._startup import frozen
 from rbcli.core.elliptic import ellipk, ellippi, ellippi_sc
 from rbcli.core.elliptic import jacobi_reduced as _jacobi
 from rbcli.core.inertia import InputOverflow
@@ -96,7 +97,7 @@ def _big_phase(j: np.ndarray, per: float) -> np.ndarray:
 # ----------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, eq=False)
+@frozen(eq=False)
 class EllipticSolution:
     """Constants of the exact asymmetric solution (principal frame, I1 < I2 < I3).
 
@@ -143,7 +144,7 @@ class EllipticSolution:
     _Ic: float = field(repr=False)
 
 
-@dataclass(frozen=True, eq=False)
+@frozen(eq=False)
 class FreeMotion:
     """Classification and constants of a torque-free motion (SI units, radians).
 

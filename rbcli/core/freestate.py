@@ -12,11 +12,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from rbcli._startup import frozen
 from rbcli.core import freemotion as fm
 from rbcli.core.rotation import quat_to_axis_angle, quat_to_matrix
 
@@ -50,7 +50,7 @@ CHUNK = 100_000
 _DAY = 86400.0
 
 
-@dataclass(frozen=True, eq=False)
+@frozen(eq=False)
 class FreeState:
     """The state of a torque-free motion at one time or an array of times.
 
@@ -249,7 +249,7 @@ def plot_span(motion: fm.FreeMotion, duration: float | None) -> tuple[float, flo
     return 0.0, 3.0 * (2 * math.pi / wn if wn > 0 else 1.0)
 
 
-@dataclass(frozen=True)
+@frozen
 class PlotSamples:
     """What the precess figure draws, sampled from the exact motion.
 

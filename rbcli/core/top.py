@@ -34,10 +34,11 @@ quantities (1 - m, 1 - n, 1 - u) carried separately so that no digits are lost.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 
+from rbcli._startup import frozen
 from rbcli.core.symmetry import AxialSymmetry, about_axis, require
 from rbcli.errors import ParamError
 from rbcli.core.checks import finite, json_float
@@ -136,7 +137,7 @@ def _complete_Pi(n: float, n1: float, m1: float) -> float:
 # the top's parameters
 
 
-@dataclass(frozen=True)
+@frozen
 class TopParams:
     """Mass properties of a symmetric top about its pivot.
 
@@ -280,7 +281,7 @@ def top_from_body(
 # results
 
 
-@dataclass(frozen=True)
+@frozen
 class FastTop:
     """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top").
 
@@ -314,7 +315,7 @@ class FastTop:
         }
 
 
-@dataclass(frozen=True)
+@frozen
 class EllipticSolution:
     """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t).
 
@@ -357,7 +358,7 @@ class EllipticSolution:
     bottom_jump: float = 0.0
 
 
-@dataclass(frozen=True)
+@frozen
 class TopMotion:
     """The exact motion of a heavy symmetric top from a given start.
 
@@ -903,7 +904,7 @@ def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
     return theta, phi, psi, sn, cn
 
 
-@dataclass(frozen=True)
+@frozen
 class TopState:
     """The top at given times (every array has the shape of ``t``).
 

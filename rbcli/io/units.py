@@ -10,10 +10,10 @@ is a dimension of its own, not "dimensionless": ``"12 deg"`` is an angle, ``"rpm
 taken for an angular speed (pint, which treats the radian as dimensionless, converts
 ``1 Hz`` to ``1 rad/s`` without a word).
 
-Every unit's factor to SI (m, kg, s, rad) is held exactly, as a
-:class:`fractions.Fraction` times an integer power of pi (``deg = pi/180``,
-``rpm = 2 pi / 60``), and the number of a quantity is read exactly too
-(``Fraction("7.85")``). The product is rounded to a float once, at the very end, with
+Every unit's factor to SI (m, kg, s, rad) is held exactly, as a rational number
+(:class:`_Q`, what this module needs of :class:`fractions.Fraction`) times an integer
+power of pi (``deg = pi/180``, ``rpm = 2 pi / 60``), and the number of a quantity is
+read exactly too (``7.85`` is 157/20). The product is rounded to a float once, at the very end, with
 pi taken to 60 digits, so ``"7.85 g/cm^3"`` gives exactly 7850.0, ``"1 in"`` exactly
 0.0254 and ``"12 deg"`` the float nearest to 12 pi / 180.
 
@@ -40,9 +40,10 @@ from __future__ import annotations
 
 import math
 import re
-from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
+
+from rbcli._startup import LazyRe
 
 __all__ = [
     "Dim",
@@ -55,6 +56,84 @@ __all__ = [
     "known_units",
     "format_unit_table",
 ]
+
+
+# --------------------------------------------------------------------------- exact numbers
+
+
+class _Q:
+    """An exact rational number ``numerator/denominator`` in lowest terms, denominator > 0.
+
+    What this module needs of :class:`fractions.Fraction` (``*``, ``/``, ``**`` an int,
+    ``float()``, ``numerator``/``denominator``, ``==``), with the same values: ``float()``
+    is ``numerator / denominator``, Python's correctly rounded integer division, as
+    ``Fraction.__float__``. It exists because ``import fractions`` (which imports
+    ``decimal``) cost ~1.5 ms of every command's start-up (issue 16).
+    """
+
+    __slots__ = ("numerator", "denominator")
+
+    def __init__(self, numerator: int, denominator: int = 1) -> None:
+        if denominator == 0:
+            raise ZeroDivisionError(f"_Q({numerator}, 0)")
+        if denominator < 0:
+            numerator, denominator = -numerator, -denominator
+        g = math.gcd(numerator, denominator)
+        if g != 1:
+            numerator //= g
+            denominator //= g
+        self.numerator = numerator
+        self.denominator = denominator
+
+    def __mul__(self, other: _Q | int) -> _Q:
+        if isinstance(other, int):
+            return _Q(self.numerator * other, self.denominator)
+        return _Q(self.numerator * other.numerator, self.denominator * other.denominator)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other: _Q | int) -> _Q:
+        if isinstance(other, int):
+            return _Q(self.numerator, self.denominator * other)
+        return _Q(self.numerator * other.denominator, self.denominator * other.numerator)
+
+    def __pow__(self, n: int) -> _Q:
+        if n >= 0:
+            return _Q(self.numerator**n, self.denominator**n)
+        return _Q(self.denominator ** (-n), self.numerator ** (-n))
+
+    def __float__(self) -> float:
+        return self.numerator / self.denominator
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, int):
+            return self.denominator == 1 and self.numerator == other
+        if isinstance(other, _Q):
+            return self.numerator == other.numerator and self.denominator == other.denominator
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash((self.numerator, self.denominator))
+
+    def __repr__(self) -> str:
+        return f"_Q({self.numerator}, {self.denominator})"
+
+
+def _decimal(text: str) -> _Q:
+    """The exact value of a decimal literal (``"-7.85"``, ``".5"``, ``"1e-3"``; digits and an
+    optional sign, point and exponent, as :data:`_NUMBER_RE` matches them), as
+    ``Fraction(text)`` reads it."""
+    mantissa, _, exp = text.replace("E", "e").partition("e")
+    sign = -1 if mantissa.startswith("-") else 1
+    whole, _, frac = mantissa.lstrip("+-").partition(".")
+    n = sign * int((whole + frac) or "0")
+    e = (int(exp) if exp else 0) - len(frac)
+    return _Q(n * 10**e) if e >= 0 else _Q(n, 10 ** (-e))
+
+
+def _F(value: int | str, denominator: int = 1) -> _Q:
+    """A table constant: ``_F(1, 1000)``, ``_F("0.0254")``."""
+    return _decimal(value) if isinstance(value, str) else _Q(value, denominator)
 
 
 # --------------------------------------------------------------------------- dimensions
@@ -216,17 +295,21 @@ def _noun_for_kind(kind: str) -> str:
 
 # pi to 60 decimals: enough that rounding q * pi^k to a float is the correctly rounded
 # value (the error, ~1e-60 relative, is far below half an ulp, 1.1e-16).
-_PI = Fraction("3.141592653589793238462643383279502884197169399375105820974944")
+_PI = _F("3.141592653589793238462643383279502884197169399375105820974944")
 
-class _Unit(NamedTuple):
-    names: tuple[str, ...]  # canonical name first, then aliases
-    q: Fraction  # rational part of the factor to SI
-    pi: int  # power of pi in the factor to SI
-    dim: Dim
-    note: str  # what it is, for the table
+class _Unit:
+    """A row of the unit table (a plain class: a NamedTuple costs start-up to create)."""
+
+    __slots__ = ("names", "q", "pi", "dim", "note")
+
+    def __init__(self, names: tuple[str, ...], q: _Q, pi: int, dim: Dim, note: str) -> None:
+        self.names = names  # canonical name first, then aliases
+        self.q = q  # rational part of the factor to SI
+        self.pi = pi  # power of pi in the factor to SI
+        self.dim = dim
+        self.note = note  # what it is, for the table
 
 
-_F = Fraction
 _IN = _F("0.0254")
 _LB = _F("0.45359237")
 _GN = _F("9.80665")
@@ -290,7 +373,7 @@ _BY_NAME: dict[str, _Unit] = {name: u for u in _UNITS for name in u.names}
 #: zetta/zepto, yotta/yocto, pico, nano/newton, femto, atto; joule): a name typed with
 #: such a letter in the other case is never read as the table's unit
 _CASE_SENSITIVE_FIRST = set("MmGTPEZzYyNnpfaJ")
-_POWER_SUFFIX_RE = re.compile(r"(.*?[^\d])([1-9]\d*)")
+_POWER_SUFFIX_RE = LazyRe(r"(.*?[^\d])([1-9]\d*)")
 
 
 def _folded(name: str) -> _Unit | None:
@@ -335,7 +418,7 @@ def _si_unit_text(dim: Dim) -> str:
     return text.replace("1/s", "s^-1") if text.startswith("1/") else text
 
 
-def _exact_text(q: Fraction, pi: int) -> str:
+def _exact_text(q: _Q, pi: int) -> str:
     parts = []
     if q.numerator != 1 or pi == 0:
         parts.append(str(q.numerator))
@@ -380,19 +463,19 @@ _MAX_EXPONENT = 12  # largest |n| in a written unit power
 _MAX_UNIT_POWER = 12
 _MAX_DECIMAL_EXPONENT = 400  # largest |e| in a number's exponent (floats stop at ~308)
 
-_NUMBER_RE = re.compile(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
-_NONFINITE_RE = re.compile(r"[+\-\u2212]?(?:inf(?:inity)?|nan)(?![A-Za-z0-9_])", re.IGNORECASE)
-_NAME_RE = re.compile(r"[A-Za-zµμ][A-Za-z0-9_µμ]*|°")
+_NUMBER_RE = LazyRe(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
+_NONFINITE_RE = LazyRe(r"[+\-\u2212]?(?:inf(?:inity)?|nan)(?![A-Za-z0-9_])", re.IGNORECASE)
+_NAME_RE = LazyRe(r"[A-Za-zµμ][A-Za-z0-9_µμ]*|°")
 # 'r/min' is rpm, unless a power follows ('r/min^2' would be ambiguous)
-_RMIN_RE = re.compile(
+_RMIN_RE = LazyRe(
     r"(?<![A-Za-z0-9_µμ])r/min(?![A-Za-z0-9_µμ])(?!\s*(?:\^|\*\*|[⁻⁰¹²³⁴-⁹]))"
 )
 _SUPER = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
 _SUPER_CHARS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺"
-_INT_RE = re.compile(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
+_INT_RE = LazyRe(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
 
 
-def _to_float(q: Fraction, pi: int, text: str = "") -> float:
+def _to_float(q: _Q, pi: int, text: str = "") -> float:
     """Round ``q * pi**pi`` to the nearest float, once."""
     exact = q * _PI**pi if pi else q
     try:
@@ -448,7 +531,7 @@ class _UnitParser:
         self.skip_ws()
         return self.s[self.i] if self.i < len(self.s) else ""
 
-    def parse(self) -> tuple[Fraction, int, Dim]:
+    def parse(self) -> tuple[_Q, int, Dim]:
         self.skip_ws()
         if self.i >= len(self.s):
             raise UnitError(f"no unit in '{self.whole}'; write a unit such as m, kg, s, deg")
@@ -467,8 +550,8 @@ class _UnitParser:
     # only at the end, from exponents that are known to be small. So nested powers such
     # as '((mm^12)^12)^12' are refused at once instead of building huge fractions.
 
-    def expand(self, powers: dict[str, int]) -> tuple[Fraction, int, Dim]:
-        q, p, d = Fraction(1), 0, Dim()
+    def expand(self, powers: dict[str, int]) -> tuple[_Q, int, Dim]:
+        q, p, d = _Q(1), 0, Dim()
         for name, n in powers.items():
             if n:
                 unit = _BY_NAME[name]
@@ -588,7 +671,13 @@ def _check_text(text: object, what: str) -> str:
     return text
 
 
-def _parse_unit_exact(text: str, whole: str | None = None) -> tuple[Fraction, int, Dim]:
+def _parse_unit_exact(text: str, whole: str | None = None) -> tuple[_Q, int, Dim]:
+    unit = _BY_NAME.get(text)
+    if unit is not None and "/" not in text:
+        # a bare name of the table ('mm', 'kg', '°'): what the parser returns for it (one
+        # name to the power 1, no 'r/min' to rewrite), without reading it character by
+        # character (the loader's units: block is mostly such names)
+        return unit.q, unit.pi, unit.dim
     return _UnitParser(text, text if whole is None else whole).parse()
 
 
@@ -617,10 +706,24 @@ def parse_unit(text: str) -> tuple[float, Dim]:
     return _to_float(q, p, text.strip()), d
 
 
-def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool]:
+def plain_decimal(s: str) -> bool:
+    """``s`` is a plain decimal number and nothing else: an optional ``+``/``-``, ASCII
+    digits with at most one ``.``, at least one digit (``"150"``, ``"-9.81"``, ``".5"``).
+
+    Every such text is a whole number for :data:`_NUMBER_RE` here and for
+    ``rbcli.api.options.NUMBER`` (which this lets a command skip compiling); any other text
+    (an exponent, a unit, ``−``, other digits) goes to those patterns as before."""
+    body = s[1:] if s[:1] in ("+", "-") else s
+    digits = body.replace(".", "", 1)
+    return digits.isascii() and digits.isdigit()
+
+
+def _parse_quantity_exact(text: str) -> tuple[_Q, _Q, int, Dim, bool]:
     """(number, unit rational, unit pi power, dim, has_unit)."""
     text = _check_text(text, "a quantity")
     s = text.strip()
+    if len(s) <= 100 and plain_decimal(s):  # what the general path returns for it
+        return _decimal(s), _Q(1), 0, Dim(), False
     if not s:
         raise UnitError("empty quantity; write a number, with a unit where one is needed, "
                         "e.g. '30 cm'")
@@ -640,7 +743,7 @@ def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool
         )
     if len(mantissa) > 100:
         raise UnitError(f"the number in '{text}' has too many digits (at most 100)")
-    number = Fraction(num_text)
+    number = _decimal(num_text)
     rest = s[m.end() :]
     if rest.startswith((",", "_")):
         raise UnitError(
@@ -648,7 +751,7 @@ def _parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool
             "thousands separators"
         )
     if not rest.strip():
-        return number, Fraction(1), 0, Dim(), False
+        return number, _Q(1), 0, Dim(), False
     q, p, d = _parse_unit_exact(rest, whole=text)
     return number, q, p, d, True
 
@@ -753,6 +856,12 @@ _BASE_KEYS = {"length": "L", "mass": "M", "time": "T", "angle": "A"}
 _BASE_DEFAULTS = {"length": "m", "mass": "kg", "time": "s", "angle": "deg"}
 
 
+def _is_name(text: str) -> bool:
+    """``text`` is one unit name (no parentheses needed around it); a name of the table is
+    known to be one without compiling :data:`_NAME_RE` (tests/test_io_units.py checks)."""
+    return (text in _BY_NAME and "/" not in text) or _NAME_RE.fullmatch(text) is not None
+
+
 def _compose(texts: dict[str, str], dim: Dim) -> str:
     """Unit text for ``dim`` from base unit texts keyed by 'M', 'L', 'T', 'A'."""
     num: list[str] = []
@@ -763,7 +872,7 @@ def _compose(texts: dict[str, str], dim: Dim) -> str:
             continue
         base = texts[attr]
         alone = e == 1 and sum(1 for x in dim if x) == 1
-        if not alone and not _NAME_RE.fullmatch(base):
+        if not alone and not _is_name(base):
             base = f"({base})"
         piece = base if abs(e) == 1 else f"{base}^{abs(e)}"
         (num if e > 0 else den).append(piece)
@@ -844,10 +953,10 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
         base_units = {k: v for k, v in base_units.items() if k != "angular_speed"}
     if kind == "angular_speed":
         return 1.0, "rad/s"
-    exact: dict[str, tuple[Fraction, int]] = {}
+    exact: dict[str, tuple[_Q, int]] = {}
     texts: dict[str, str] = {}
     for key, default in _BASE_DEFAULTS.items():
-        exact[_BASE_KEYS[key]] = (Fraction(1), 0)
+        exact[_BASE_KEYS[key]] = (_Q(1), 0)
         texts[_BASE_KEYS[key]] = default
     for key, value in base_units.items():
         if key not in _BASE_KEYS:
@@ -875,7 +984,7 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
         exact[_BASE_KEYS[key]] = (q, p)
         texts[_BASE_KEYS[key]] = text.strip()
     dim = KINDS[kind]
-    q, p = Fraction(1), 0
+    q, p = _Q(1), 0
     for attr, _word in _DIM_ORDER:
         e = getattr(dim, attr)
         if e:

@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-
 from rbcli.errors import InputError
 from rbcli.io import units as un
 
@@ -41,19 +39,26 @@ def snap(values, scale: float | None = None, rtol: float = 1e-14):
     return a
 
 
-@dataclass
 class DisplayUnits:
     """Units that tables show (``--units mm,g``); JSON is always SI.
 
-    Each base dimension (length, mass, time) may be given one unit; the unit of any
-    quantity kind is composed from them (inertia in ``g·mm²`` for ``mm,g``).
+    Each base dimension (length, mass, time) may be given one unit, as (factor from SI, name);
+    the unit of any quantity kind is composed from them (inertia in ``g·mm²`` for ``mm,g``).
+    (A plain class, not a dataclass: it sits on every command's start-up path.)
     """
 
-    length: tuple[float, str] = (1.0, "m")
-    mass: tuple[float, str] = (1.0, "kg")
-    time: tuple[float, str] = (1.0, "s")
-    si: bool = True
-    _cache: dict = field(default_factory=dict)
+    __slots__ = ("length", "mass", "time", "si", "_cache")
+
+    def __init__(self, length: tuple[float, str] = (1.0, "m"), mass: tuple[float, str] = (1.0, "kg"),
+                 time: tuple[float, str] = (1.0, "s"), si: bool = True) -> None:
+        self.length = length
+        self.mass = mass
+        self.time = time
+        self.si = si
+        self._cache: dict = {}
+
+    def __repr__(self) -> str:
+        return f"DisplayUnits(length={self.length!r}, mass={self.mass!r}, time={self.time!r}, si={self.si!r})"
 
     @classmethod
     def parse(cls, spec: str | None) -> "DisplayUnits":

@@ -9,11 +9,15 @@ from typing import Any
 from rbcli.api.result import jsonable  # noqa: F401  (the one finiteness check)
 
 
+#: the encoder of JSON Lines, made once (json.dumps with these arguments makes one per call)
+_LINE = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"))
+
+
 def dumps(obj: Any, *, lines: bool = False) -> str:
     """One JSON document (indented, numeric arrays on one line), or one compact line."""
     data = jsonable(obj)
     if lines:
-        return json.dumps(data, ensure_ascii=False, allow_nan=False, separators=(",", ":")) + "\n"
+        return _LINE.encode(data) + "\n"
     return _pretty(data, 0) + "\n"
 
 

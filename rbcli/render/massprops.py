@@ -9,11 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num, snap
-from rbcli.render.text import Doc
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
 AXES = ("x", "y", "z")
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -11,7 +11,9 @@ from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
 from rbcli.model import Body
 from rbcli.render.fmt import DisplayUnits, num, snap
-from rbcli.render.text import Doc
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
 AXES = ("x", "y", "z")
 #: the CSV header of ``--csv`` (the columns of :func:`rbcli.core.freestate.series`)

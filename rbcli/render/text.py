@@ -13,35 +13,48 @@ import io
 import re
 import shutil
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
-from rbcli.env import Env, clean
+from rbcli._startup import frozen
+from rbcli.env import clean
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.env import Env
 
 
-@dataclass(frozen=True)
+@frozen
 class Heading:
+    """A heading line."""
+
     text: str
 
 
-@dataclass(frozen=True)
+@frozen
 class Note:
+    """A paragraph of text."""
+
     text: str
 
 
-@dataclass(frozen=True)
+@frozen
 class Table:
+    """A titled table of text cells; ``right`` are the right-aligned columns."""
+
     title: str
     columns: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
     right: tuple[int, ...] = ()
 
 
-@dataclass
 class Doc:
     """A document of titled tables and notes, rendered once to text."""
 
-    env: Env | None = None
-    items: list = field(default_factory=list)
+    def __init__(self, env: Env | None = None, items: list | None = None) -> None:
+        self.env = env
+        self.items: list = [] if items is None else items
+
+    def __repr__(self) -> str:
+        return f"Doc(env={self.env!r}, items={self.items!r})"
 
     def heading(self, text: str) -> None:
         self.items.append(Heading(text))

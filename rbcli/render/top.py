@@ -13,9 +13,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from rbcli.render.fmt import DisplayUnits, num
-from rbcli.render.text import Doc
 
 if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.render.text import Doc  # hints only: --json never loads render.text
     from rbcli.api.top import GyrocompassResult, TopResult
     from rbcli.core.top import TopState
 
