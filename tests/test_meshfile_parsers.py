@@ -1,7 +1,7 @@
-"""The text readers' own number parser and text grouping (rbcli.io.meshfile internals).
+"""The text readers' number parsers (rbcli.io.meshnumbers) and text grouping (meshfile).
 
-Every decimal parser the readers use (``_decimals``, ``np.fromstring`` through
-``_numbers``, and ``_floats``, which picks between them) is checked against Python's
+Every decimal parser the readers use (``decimals``, ``np.fromstring`` through
+``numbers``, and ``floats``, which picks between them) is checked against Python's
 ``float()``, bit for bit, on random and adversarial decimal strings. The grouping of
 equal ``vertex`` texts in an ASCII STL (``_distinct_spans``) is checked to be exact, even
 when every hash collides, and the reader that uses it against the token-by-token reader
@@ -18,13 +18,14 @@ import numpy as np
 import pytest
 
 import rbcli.io.meshfile as mf
-from rbcli.io.meshfile import _decimals, _distinct_spans, _floats, _numbers, read_mesh
+from rbcli.io.meshfile import _distinct_spans, read_mesh
+from rbcli.io.meshnumbers import decimals, floats, numbers
 
 # ------------------------------------------------------------------ strings to parse
 
 
 def plain_decimals(rng: random.Random, n: int) -> list[bytes]:
-    """Tokens _decimals reads: a sign or not, 1-15 digits, a point anywhere or none."""
+    """Tokens decimals reads: a sign or not, 1-15 digits, a point anywhere or none."""
     out = []
     for _ in range(n):
         nd = rng.randint(1, 15)
@@ -90,16 +91,16 @@ def test_decimals_read_plain_decimals_as_float_does():
         tokens = plain_decimals(rng, 2000)
         seps = [rng.choice([b" ", b"\t", b"\n", b"\r\n", b"  ", b"\x0b", b"\x0c"]) for _ in tokens]
         text = b"".join(t + s for t, s in zip(tokens, seps))
-        got = _decimals(text)
+        got = decimals(text)
         assert got is not None
         assert same_bits(got, [float(t) for t in tokens])
-        assert same_bits(_numbers(text), got)  # np.fromstring: the same bits
+        assert same_bits(numbers(text), got)  # np.fromstring: the same bits
 
 
 @pytest.mark.parametrize("token", ADVERSARIAL)
 def test_every_parser_agrees_with_float_or_refuses(token):
     want = float_or_none(token)
-    for parse in (_decimals, _numbers, _floats):
+    for parse in (decimals, numbers, floats):
         got = parse(token + b"\n")
         if got is None:
             continue  # refused: the readers fall back to the line reader (float())
@@ -114,18 +115,18 @@ def test_every_parser_agrees_with_float_at_halfway_points():
     tokens = [t for t in tokens if float_or_none(t) is not None and np.isfinite(float(t))]
     want = [float(t) for t in tokens]
     text = b" ".join(tokens)
-    assert same_bits(_numbers(text), want)
-    assert same_bits(_floats(text), want)
+    assert same_bits(numbers(text), want)
+    assert same_bits(floats(text), want)
     for t, w in zip(tokens, want):
-        got = _decimals(t)
+        got = decimals(t)
         assert got is None or same_bits(got, [w]), t
 
 
 def test_decimals_refuse_what_is_not_a_plain_decimal():
     for token in (b"1e5", b"1234567890123456", b".1234567890123456", b"nan", b"inf", b"1_0",
                   b".", b"-", b"+-1", b"1-2", b"1.2.3", b"- 1", b"1\x00", b"\x80", b"0x1"):  # fmt: skip
-        assert _decimals(token) is None, token
-    assert _decimals(b"  \n") is not None and _decimals(b"  \n").size == 0
+        assert decimals(token) is None, token
+    assert decimals(b"  \n") is not None and decimals(b"  \n").size == 0
 
 
 def test_floats_falls_back_for_the_whole_text_and_cuts_at_lines(monkeypatch):
@@ -135,10 +136,10 @@ def test_floats_falls_back_for_the_whole_text_and_cuts_at_lines(monkeypatch):
     text = b"\n".join(lines) + b"\n"
     assert len(text) > 3 << 18  # at least four pieces
     want = [float(t) for t in tokens]
-    assert same_bits(_floats(text), want)
+    assert same_bits(floats(text), want)
     mixed = text + b"1.5e3 -2.5E-3 7\n"  # the last piece is not plain: np.fromstring reads it all
-    assert same_bits(_floats(mixed), want + [1500.0, -0.0025, 7.0])
-    assert _floats(text + b"1 2 x\n") is None
+    assert same_bits(floats(mixed), want + [1500.0, -0.0025, 7.0])
+    assert floats(text + b"1 2 x\n") is None
 
 
 # ------------------------------------------------------------ grouping equal texts

@@ -5,10 +5,11 @@ have exactly the same coordinates merged ("welded"), and the weld tolerance that
 the file's own precision (:func:`default_weld`): :mod:`rbcli.core.mesh` uses it, only
 when the exactly welded surface is not closed, to close gaps left by coordinate noise.
 Everything is vectorised with numpy: the text formats are read in blocks of whole lines,
-tokenised with numpy and read by ``np.fromstring`` (the per-token and per-line Python
-readers are kept to say where a file the fast path refuses is wrong, and to read the
-unusual layouts it leaves to them; the numbers are the same bits either way, which the
-tests check).
+tokenised with numpy and their numbers read by :func:`rbcli.io.meshnumbers.floats` (an
+ASCII STL block's repeated ``vertex`` texts only once); the per-token and per-line
+Python readers are kept to say where a file the fast path refuses is wrong, and to read
+the unusual layouts it leaves to them; the numbers are the same bits either way, which
+the tests check.
 
 Before anything is read the file's type and size are checked: a directory, FIFO,
 device or socket is refused, and so is a file larger than :func:`max_mesh_bytes`
@@ -24,10 +25,11 @@ import itertools
 import os
 import re
 import stat
-import warnings
 from typing import NamedTuple
 
 import numpy as np
+
+from rbcli.io import meshnumbers
 
 __all__ = [
     "MeshFileError", "MeshFile", "read_mesh", "weld", "default_weld", "max_mesh_bytes",
@@ -411,131 +413,6 @@ def _line_of(text: bytes, offset: int) -> int:
     return text.count(b"\n", 0, offset) + 1
 
 
-def _numbers(text: bytes, dtype=np.float64) -> np.ndarray | None:
-    """Whitespace-separated numbers, or None if any token is not one (no partial result)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        try:
-            return np.fromstring(text, dtype=dtype, sep=" ")
-        except (ValueError, DeprecationWarning):
-            return None
-
-
-_U = np.uint64
-_ZEROS = _U(0x3030303030303030)  # eight '0' bytes
-_TOP = np.array([(1 << 64) - (1 << (64 - 8 * k)) for k in range(9)], dtype=np.uint64)  # top k bytes
-_P10 = 10.0 ** np.arange(16)  # exact doubles
-_P10_INT = 10 ** np.arange(16, dtype=np.uint64)
-
-
-def _eight(v: np.ndarray) -> np.ndarray:
-    """Eight ASCII digits per little-endian word (first digit in the lowest byte) as integers."""
-    v = v - _ZEROS
-    v = v * _U(10) + (v >> _U(8))
-    return ((v & _U(0x000000FF000000FF)) * _U(100 + (1000000 << 32))
-            + ((v >> _U(16)) & _U(0x000000FF000000FF)) * _U(1 + (10000 << 32))) >> _U(32)  # fmt: skip
-
-
-def _points_in(w: np.ndarray) -> np.ndarray:
-    """0x80 in each byte of each word that is '.', 0 elsewhere (exact, no carries)."""
-    x = w ^ _U(0x2E2E2E2E2E2E2E2E)
-    low7 = _U(0x7F7F7F7F7F7F7F7F)
-    return ~(((x & low7) + low7) | x | low7)
-
-
-def _bytes_above(t: np.ndarray) -> np.ndarray:
-    """For words with one byte marked 0x80 (or none): how many bytes are above it."""
-    return np.bitwise_count(~((t << _U(1)) - _U(1)) & _U(0x8080808080808080))
-
-
-def _floats(text: bytes) -> np.ndarray | None:
-    """Whitespace-separated numbers as float64, or None if a token is not one.
-
-    Lines of plain decimals are read by :func:`_decimals` in pieces of about 256 KiB
-    (whole lines: its temporaries stay small and in cache); if any piece holds another
-    kind of number, the whole text is read by :func:`_numbers`. Same bits either way.
-    """
-    pieces = []
-    pos = 0
-    while pos < len(text):
-        end = pos + (1 << 18)
-        if end < len(text):
-            end = text.rfind(b"\n", pos, end) + 1
-            if end <= pos:
-                return _numbers(text)
-        got = _decimals(text[pos:end])
-        if got is None:
-            return _numbers(text)
-        pieces.append(got)
-        pos = end
-    return np.concatenate(pieces) if len(pieces) != 1 else pieces[0]
-
-
-def _decimals(text: bytes) -> np.ndarray | None:
-    """Whitespace-separated plain decimals, the bits ``float()`` gives, or None.
-
-    Only tokens such as ``-12.375``, ``5.``, ``+.5`` or ``007`` (a sign, digits and at
-    most one point; no exponent; 1 to 15 digits) are read; for anything else (longer,
-    exponents, nan, any other byte) the answer is None and the caller uses
-    :func:`_numbers`. Each token's last 16 bytes are read as two words, the bytes before
-    it and its sign set to '0', its point found and set to '0' with bit tricks, and the
-    16 digits turned into an integer eight at a time; without the point that is the
-    integer m < 10**15 < 2**53 of the token's digits, and the value is m / 10**k for k
-    fraction digits: m and 10**k are exact doubles, so the one IEEE division rounds the
-    decimal value correctly (Clinger's fast path), as ``strtod``, ``float()`` and
-    ``np.fromstring`` do; the sign is applied after (``-0`` is -0.0).
-    """
-    b = np.frombuffer(b" " * 16 + text + b" ", dtype=np.uint8)
-    blank = b <= 32  # token edges; other control bytes are refused below
-    edge = blank[1:] != blank[:-1]
-    starts = np.flatnonzero(edge & blank[:-1]) + 1
-    ends = np.flatnonzero(edge & blank[1:]) + 1  # one past each token
-    del edge, blank
-    if starts.size == 0:
-        return np.empty(0)
-    length = ends - starts
-    if length.max() > 17:
-        return None
-    first = b[starts]
-    neg = first == 45
-    signed = neg | (first == 43)
-    ok = b == 32  # (few temporaries at a time: this is the peak of an OBJ block)
-    ok |= b == 46
-    t = b - np.uint8(48)
-    ok |= t < 10
-    np.subtract(b, np.uint8(9), out=t)
-    ok |= t < 5
-    if b.size - int(np.count_nonzero(ok)) != int(np.count_nonzero(signed)):
-        return None  # a byte other than whitespace, digits, points and leading signs
-    del ok, t
-    words = np.ndarray((b.size - 7,), dtype="<u8", buffer=b, strides=(1,))  # unaligned
-    lo = words[ends - 8]  # the token's last 8 bytes (the last in the top byte)
-    hi = words[ends - 16]
-    keep = length - signed  # the digits and the point, from the right
-    for w, mask in ((lo, _TOP[np.minimum(keep, 8)]), (hi, _TOP[np.clip(keep - 8, 0, 8)])):
-        w &= mask
-        w |= _ZEROS & ~mask
-    lo_p, hi_p = _points_in(lo), _points_in(hi)
-    n_points = np.bitwise_count(lo_p) + np.bitwise_count(hi_p)
-    if n_points.max() > 1:
-        return None
-    has_point = n_points.astype(bool)
-    n_digits = keep - has_point
-    if n_digits.min() < 1 or n_digits.max() > 15:
-        return None
-    frac = np.where(lo_p != 0, _bytes_above(lo_p), _bytes_above(hi_p) + _U(8))
-    frac = np.where(has_point, frac, _U(0)).astype(np.intp)
-    lo ^= (lo_p >> _U(7)) * _U(0x1E)  # the point -> '0'
-    hi ^= (hi_p >> _U(7)) * _U(0x1E)
-    v = _eight(hi) * _U(100000000) + _eight(lo)
-    if has_point.any():  # drop the point's '0': m = v // 10**(k+1) * 10**k + v % 10**k
-        p = _P10_INT[frac]
-        v = np.where(has_point, v // (p * _U(10)) * p + v % p, v)
-    values = v.astype(np.float64) / _P10[frac]
-    np.negative(values, out=values, where=neg)
-    return values
-
-
 # ------------------------------------------------------------------------------ STL
 
 
@@ -708,7 +585,7 @@ def _facets_of(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     del starts, ends
     first, inverse = _distinct_spans(a, lo, hi)
     # each distinct corner's text with the whitespace byte after it
-    values = _floats(_ranges(a, lo[first], hi[first] + 1))
+    values = meshnumbers.floats(_ranges(a, lo[first], hi[first] + 1))
     if values is None or values.size != 3 * first.size or not np.isfinite(values).all():
         return None
     return values.reshape(-1, 3), inverse
@@ -909,7 +786,7 @@ def _obj_block(text: bytes, nv0: int) -> tuple[np.ndarray, np.ndarray] | None:
     v_at = np.flatnonzero(is_v)
     f_at = np.flatnonzero(is_f)
     vtext = _gather(text, starts[v_at] + 1, ends[v_at])
-    points = _floats(vtext) if v_at.size else np.empty(0)
+    points = meshnumbers.floats(vtext) if v_at.size else np.empty(0)
     if points is None or points.size != 3 * v_at.size or not np.isfinite(points).all():
         return None
     points = points.reshape(-1, 3)
@@ -937,7 +814,7 @@ def _obj_block(text: bytes, nv0: int) -> tuple[np.ndarray, np.ndarray] | None:
         # keep all but each item's '/...' tail ('/2' alone leaves nothing: a count mismatch)
         ftext = _ranges(fa, np.concatenate(([0], tok_end[first_owner])), np.append(firsts, fa.size))
     del space, fa
-    idx = _numbers(ftext, np.int64)
+    idx = meshnumbers.numbers(ftext, np.int64)
     if idx is None or idx.size != tok_at.size:
         return None
     del ftext, tok_at
