@@ -242,3 +242,36 @@ def test_weld_span_gives_the_order_of_the_larger_array(monkeypatch):
         u_all, _ = mf._weld(pts + 0.0)
         u_few, _ = mf._weld(np.unique(pts, axis=0)[::-1].copy(), span=len(pts))
         assert same_bits(u_all.ravel(), u_few.ravel())
+
+
+@pytest.mark.parametrize("collide", [False, True])
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_weld_in_blocks_is_the_weld_of_the_whole_array(monkeypatch, collide, dtype):
+    monkeypatch.setattr(mf, "_WELD_BLOCK", 64)  # many blocks, and points repeated across them
+    if collide:
+        monkeypatch.setattr(mf, "_MIX", (np.uint64(0),) * 2)
+    rng = np.random.default_rng(12)
+    base = rng.normal(size=(700, 3)).astype(dtype)
+    pts = base[rng.integers(0, 700, 9000)] + dtype(0)
+    whole_u, whole_inv = mf._weld(pts.copy())
+    for span in (0, 50000):
+        u, inv = mf._weld_blocks(pts.copy(), span)
+        ref_u, ref_inv = mf._weld(pts.copy(), span)
+        assert same_bits(u.ravel(), ref_u.ravel()) and inv.tolist() == ref_inv.tolist()
+    u, inv = mf.weld(pts)
+    assert u.dtype == np.float64 and same_bits(u.ravel(), whole_u.ravel())
+    assert inv.tolist() == whole_inv.tolist()
+
+
+def test_binary_stl_is_the_weld_of_every_corner(tmp_path, monkeypatch):
+    import trimesh
+
+    monkeypatch.setattr(mf, "_WELD_BLOCK", 100)
+    path = tmp_path / "s.stl"
+    trimesh.creation.icosphere(subdivisions=3).export(path)
+    got = read_mesh(path)
+    rec = np.fromfile(path, dtype=mf._STL_RECORD, offset=84)
+    corners = np.ascontiguousarray(rec["v"].reshape(-1, 3)) + np.float32(0)
+    u, inv = mf._weld(corners)
+    assert same_bits(got.vertices.ravel(), u.ravel())
+    assert got.faces.tolist() == inv.reshape(-1, 3).tolist()

@@ -315,9 +315,14 @@ def weld(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     Points whose hashes collide (equal high bits, different coordinates) are found by
     comparing neighbours and put in order by a lexicographic sort of their own, so the
     result is exact whatever the hash does. One sort of N keys, against two or three
-    for a lexicographic sort of the coordinates.
+    for a lexicographic sort of the coordinates; and a large array is first welded in
+    blocks of :data:`_WELD_BLOCK` points (small sorts, in cache), then the blocks'
+    distinct points together (:func:`_weld_blocks`: the same result, in half the time).
     """
-    return _weld(np.asarray(points) + 0.0)  # canonical +0.0, a private contiguous copy
+    return _weld_blocks(np.asarray(points) + 0.0)  # canonical +0.0, a private contiguous copy
+
+
+_WELD_BLOCK = 1 << 14
 
 
 _MIX = (np.uint64(0xBF58476D1CE4E5B9), np.uint64(0x94D049BB133111EB))
@@ -333,13 +338,37 @@ def _mix(z: np.ndarray) -> np.ndarray:
     return z
 
 
-def _weld(pts: np.ndarray, span: int = 0) -> tuple[np.ndarray, np.ndarray]:
+def _weld_blocks(pts: np.ndarray, span: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_weld` of a large array, block by block first; the same result.
+
+    Each block of :data:`_WELD_BLOCK` points is welded on its own (a closed mesh's
+    corners repeat mostly in nearby triangles: a block keeps about a fifth of its
+    points), then the blocks' distinct points are welded together with ``span`` = the
+    number of points, which gives the order the weld of the whole array gives.
+    """
+    n = len(pts)
+    if n <= 2 * _WELD_BLOCK:
+        return _weld(pts, span)
+    firsts, inverses, k = [], [], 0
+    for i in range(0, n, _WELD_BLOCK):
+        unique, inverse = _weld(pts[i : i + _WELD_BLOCK], same_dtype=True)
+        firsts.append(unique)
+        inverses.append(inverse + k)
+        k += len(unique)
+    unique, inverse = _weld(np.concatenate(firsts), max(n, span))
+    del firsts
+    return unique, inverse[np.concatenate(inverses)]
+
+
+def _weld(pts: np.ndarray, span: int = 0, same_dtype: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """:func:`weld` for a C-contiguous float32/float64 array without -0.0 (not copied).
 
     ``span`` (at least ``len(pts)``) sets how many low bits of the hash hold the index, as
     if there were that many points: the distinct points then come out in the order
-    they would for any larger array holding the same values (the ASCII STL reader welds
-    a block's distinct corner texts and must give the weld of all the corners).
+    they would for any larger array holding the same values (:func:`_weld_blocks`, and
+    the ASCII STL reader, which welds each block's distinct corner texts, must give the
+    weld of all the corners). ``same_dtype``: the distinct points in ``pts``'s dtype
+    (float32 stays float32), not float64.
     """
     if pts.dtype != np.float32:
         pts = pts.astype(np.float64, copy=False)
@@ -386,8 +415,8 @@ def _weld(pts: np.ndarray, span: int = 0) -> tuple[np.ndarray, np.ndarray]:
     ids -= 1
     inverse = np.empty(n, dtype=np.int64)
     inverse[order] = ids
-    unique = pts[order[new]].astype(np.float64)
-    return unique, inverse
+    unique = pts[order[new]]
+    return (unique if same_dtype else unique.astype(np.float64)), inverse
 
 
 def _finish(name: str, corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -405,7 +434,7 @@ def _finish(name: str, corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         )
     del finite
     corners += 0.0  # -0.0 -> +0.0, in place
-    unique, inverse = _weld(corners)
+    unique, inverse = _weld_blocks(corners)
     return unique, inverse.reshape(-1, 3)
 
 
