@@ -349,15 +349,16 @@ def _weld_blocks(pts: np.ndarray, span: int = 0) -> tuple[np.ndarray, np.ndarray
     n = len(pts)
     if n <= 2 * _WELD_BLOCK:
         return _weld(pts, span)
-    firsts, inverses, k = [], [], 0
+    firsts, k = [], 0
+    local = np.empty(n, dtype=np.int64)  # each point's place among the blocks' distinct points
     for i in range(0, n, _WELD_BLOCK):
         unique, inverse = _weld(pts[i : i + _WELD_BLOCK], same_dtype=True)
         firsts.append(unique)
-        inverses.append(inverse + k)
+        np.add(inverse, k, out=local[i : i + _WELD_BLOCK])
         k += len(unique)
     unique, inverse = _weld(np.concatenate(firsts), max(n, span))
     del firsts
-    return unique, inverse[np.concatenate(inverses)]
+    return unique, inverse.take(local)
 
 
 def _weld(pts: np.ndarray, span: int = 0, same_dtype: bool = False) -> tuple[np.ndarray, np.ndarray]:
