@@ -462,6 +462,9 @@ def _fast_and_slow_stl(path):
     data = pathlib.Path(path).read_bytes()
     with open(path, "rb") as fh:
         fast = meshfile._read_stl_ascii_fast(fh, len(data))
+    if fast is not None:  # (each block's distinct corners, which one each corner is)
+        points, inverse = fast
+        fast = points[inverse]
     return fast, meshfile._read_stl_ascii(str(path), data)
 
 
