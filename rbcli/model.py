@@ -14,6 +14,14 @@ from rbcli.errors import Location
 
 
 def _frozen(a, dtype=float) -> np.ndarray:
+    """``a`` as a read-only array: itself when it is one already (its data cannot change:
+    no writable array shares it), else a private read-only copy."""
+    if a.__class__ is np.ndarray and a.dtype == dtype and not a.flags.writeable:
+        base = a
+        while base.base is not None and base.base.__class__ is np.ndarray:
+            base = base.base
+        if not base.flags.writeable:
+            return a
     a = np.array(a, dtype=dtype)  # a private copy
     a.setflags(write=False)
     return a

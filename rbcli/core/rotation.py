@@ -36,6 +36,13 @@ __all__ = [
     "euler",
     "quaternion",
     "from_matrix",
+    "euler_intrinsic",
+    "unit_rows",
+    "axis_to_z_rows",
+    "axis_angle_rows",
+    "euler_rows",
+    "quaternion_rows",
+    "nearest_rotation_rows",
     "rotate_tensor",
     "quat_multiply",
     "quat_conjugate",
@@ -212,6 +219,25 @@ _EULER_HELP = (
 )
 
 
+def euler_intrinsic(seq: str) -> bool:
+    """Whether the Euler sequence ``seq`` is intrinsic (``XYZ`` letters) or extrinsic
+    (``xyz``); ValueError (saying what is allowed) for an invalid sequence."""
+    if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
+        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
+    if set(seq) <= set("xyz"):
+        intrinsic = False
+    elif set(seq) <= set("XYZ"):
+        intrinsic = True
+    else:
+        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
+    if any(seq[i] == seq[i + 1] for i in range(len(seq) - 1)):
+        raise ValueError(
+            f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
+            f"use {_EULER_HELP}"
+        )
+    return intrinsic
+
+
 def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndarray:
     """The rotation of an Euler-angle sequence, exactly as scipy defines it.
 
@@ -247,19 +273,7 @@ def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndar
     standard equivalence (Shuster, "A survey of attitude representations", 1993, §2).
     The sequence rules are scipy's.
     """
-    if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
-        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
-    if set(seq) <= set("xyz"):
-        intrinsic = False
-    elif set(seq) <= set("XYZ"):
-        intrinsic = True
-    else:
-        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
-    if any(seq[i] == seq[i + 1] for i in range(len(seq) - 1)):
-        raise ValueError(
-            f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
-            f"use {_EULER_HELP}"
-        )
+    intrinsic = euler_intrinsic(seq)
     try:
         a = np.asarray(angles_rad, dtype=float)
     except (TypeError, ValueError):
@@ -409,6 +423,117 @@ def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N8
     if np.array_equal(t, t.T):
         out = 0.5 * (out + out.T)
     return out
+
+
+# ----------------------------------------------------------------------------------------
+# many rotations at once (the body loader: one call per kind for all the parts)
+#
+# Each ``*_rows`` function returns the (k, 3, 3) stack of what its one-rotation namesake
+# returns for each row, bit for bit: the same elementwise operations in the same order,
+# the dot products by ``np.vecdot`` (the same BLAS dot as ``v @ v``), products of 3x3
+# matrices by stacked ``@`` (the same BLAS call per matrix), and sin, cos, hypot from
+# :mod:`math` as the single versions take them (tests/test_rotation_rows.py checks it).
+# Inputs are float arrays already checked finite and non-zero by the caller.
+# ----------------------------------------------------------------------------------------
+
+
+def unit_rows(v: np.ndarray) -> np.ndarray:
+    """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
+    w = v / np.max(np.abs(v), axis=1)[:, None]
+    return w / np.sqrt(np.vecdot(w, w))[:, None]
+
+
+def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
+    k = len(n)
+    cross = np.zeros((k, 3, 3))
+    cross[:, 0, 1] = -n[:, 2]
+    cross[:, 0, 2] = n[:, 1]
+    cross[:, 1, 0] = n[:, 2]
+    cross[:, 1, 2] = -n[:, 0]
+    cross[:, 2, 0] = -n[:, 1]
+    cross[:, 2, 1] = n[:, 0]
+    return (c[:, None, None] * np.eye(3) + s[:, None, None] * cross
+            + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
+
+
+def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
+    """:func:`axis_to_z` of each row of ``directions`` (k, 3)."""
+    d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
+    out = np.empty((len(d), 3, 3))
+    cross = np.zeros_like(d)
+    cross[:, 0] = -d[:, 1]
+    cross[:, 1] = d[:, 0]
+    along = np.max(np.abs(cross), axis=1) == 0.0  # exactly +z or -z
+    out[along] = np.eye(3)
+    out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
+    ok = ~along
+    if ok.any():
+        dd = d[ok]
+        n = unit_rows(cross[ok])
+        c = dd[:, 2]
+        s = np.array([math.hypot(x, y) for x, y in dd[:, :2].tolist()]).reshape(-1)
+        one_minus_c = np.where(c > 0, s * s / np.where(c > 0, 1.0 + c, 1.0), 1.0 - c)
+        out[ok] = _rodrigues_rows(n, c, s, one_minus_c)
+    return out
+
+
+def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
+    """:func:`axis_angle` of each row of ``axes`` (k, 3) with its angle (k,)."""
+    n = unit_rows(np.asarray(axes, dtype=float).reshape(-1, 3))
+    theta = np.asarray(angles_rad, dtype=float).reshape(-1).tolist()
+    half = np.array([math.sin(t / 2.0) for t in theta]).reshape(-1)
+    c = np.array([math.cos(t) for t in theta]).reshape(-1)
+    s = np.array([math.sin(t) for t in theta]).reshape(-1)
+    return _rodrigues_rows(n, c, s, 2.0 * half * half)
+
+
+def _elementary_rows(axis: str, angles: list[float]) -> np.ndarray:
+    e = np.zeros((len(angles), 3, 3))
+    c = np.array([math.cos(a) for a in angles]).reshape(-1)
+    s = np.array([math.sin(a) for a in angles]).reshape(-1)
+    i, j = {"x": (1, 2), "y": (2, 0), "z": (0, 1)}[axis]
+    e[:, 3 - i - j, 3 - i - j] = 1.0
+    e[:, i, i] = c
+    e[:, j, j] = c
+    e[:, i, j] = -s
+    e[:, j, i] = s
+    return e
+
+
+def euler_rows(angles_rad: np.ndarray, seq: str) -> np.ndarray:
+    """:func:`euler` of each row of ``angles_rad`` (k, len(seq)), one valid sequence."""
+    intrinsic = euler_intrinsic(seq)
+    a = np.asarray(angles_rad, dtype=float).reshape(-1, len(seq))
+    r = np.zeros((len(a), 3, 3))
+    r[:] = np.eye(3)
+    for col, letter in enumerate(seq.lower()):
+        e = _elementary_rows(letter, a[:, col].tolist())
+        r = r @ e if intrinsic else e @ r
+    return r
+
+
+def quaternion_rows(q_wxyz: np.ndarray) -> np.ndarray:
+    """:func:`quaternion` of each row of ``q_wxyz`` (k, 4)."""
+    u = unit_rows(np.asarray(q_wxyz, dtype=float).reshape(-1, 4))
+    w, x, y, z = u[:, 0], u[:, 1], u[:, 2], u[:, 3]
+    R = np.empty((len(u), 3, 3))
+    R[:, 0, 0] = 1.0 - 2.0 * (y * y + z * z)
+    R[:, 0, 1] = 2.0 * (x * y - w * z)
+    R[:, 0, 2] = 2.0 * (x * z + w * y)
+    R[:, 1, 0] = 2.0 * (x * y + w * z)
+    R[:, 1, 1] = 1.0 - 2.0 * (x * x + z * z)
+    R[:, 1, 2] = 2.0 * (y * z - w * x)
+    R[:, 2, 0] = 2.0 * (x * z - w * y)
+    R[:, 2, 1] = 2.0 * (y * z + w * x)
+    R[:, 2, 2] = 1.0 - 2.0 * (x * x + y * y)
+    return R
+
+
+def nearest_rotation_rows(m: np.ndarray) -> np.ndarray:
+    """The result of :func:`from_matrix` for each matrix of ``m`` (k, 3, 3), which the
+    caller has already accepted (orthonormal within the tolerance, det > 0)."""
+    u, _, vt = np.linalg.svd(np.asarray(m, dtype=float).reshape(-1, 3, 3))
+    return u @ vt
 
 
 # ----------------------------------------------------------------------------------------

@@ -9,6 +9,7 @@ units must have the right dimension, unknown keys are refused with a
 from __future__ import annotations
 
 import difflib
+import math
 import os
 import sys
 from contextlib import contextmanager
@@ -177,6 +178,21 @@ def _mapping(ctx: _Ctx, node: ys.Node, what: str) -> ys.MapNode:
 
 def _number(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> float:
     """A scalar quantity in SI: a bare number (in the file's units) or a string with a unit."""
+    # the common case first (a bare finite number, its unit's factor known): one part of a
+    # large body reads ~10 of these
+    if node.__class__ is ys.ScalarNode:
+        value = node.value
+        if value.__class__ is float or value.__class__ is int:
+            factor = ctx.factors.get(kind)
+            if factor is not None:
+                x = float(value) * factor[0]
+                if -HUGE <= x <= HUGE:  # also refuses inf and nan: the checks below say why
+                    return x
+    return _quantity(ctx, node, kind, what)
+
+
+def _quantity(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> float:
+    """:func:`_number`, every case."""
     if not isinstance(node, ys.ScalarNode) or node.value is None or isinstance(node.value, bool):
         raise ctx.error(node, f"{what} must be a number or a quantity like '30 cm', not {_describe(node)}")
     value = node.value
@@ -188,27 +204,38 @@ def _number(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> float:
     else:
         factor, _unit = ctx.factor(kind, node)
         x = float(value) * factor
-    if not np.isfinite(x):
+    if not math.isfinite(x):
         raise ctx.error(node, f"{what} must be finite, not {node.raw}")
     if abs(x) > HUGE:
         raise ctx.error(node, f"{what} is too large ({node.raw}); numbers are limited to 1e60 in SI units")
     return float(x)
 
 
+def _floats(ctx: _Ctx, node: ys.Node, kind: str, what: str, n: int | tuple[int, ...] = 3) -> list[float]:
+    """A vector of quantities in SI, as a list of floats."""
+    if node.__class__ is not ys.SeqNode or len(node.items) != n:  # else the common case
+        sizes = (n,) if isinstance(n, int) else n
+        want = " or ".join(str(s) for s in sizes)
+        if not isinstance(node, ys.SeqNode):
+            raise ctx.error(node, f"{what} must be a list of {want} numbers like [1, 0, 0], not {_describe(node)}")
+        if len(node.items) not in sizes:
+            raise ctx.error(node, f"{what} must have {want} components, not {len(node.items)}")
+    return [_number(ctx, item, kind, what) for item in node.items]
+
+
 def _vector(ctx: _Ctx, node: ys.Node, kind: str, what: str, n: int | tuple[int, ...] = 3) -> np.ndarray:
-    sizes = (n,) if isinstance(n, int) else n
-    want = " or ".join(str(s) for s in sizes)
-    if not isinstance(node, ys.SeqNode):
-        raise ctx.error(node, f"{what} must be a list of {want} numbers like [1, 0, 0], not {_describe(node)}")
-    if len(node.items) not in sizes:
-        raise ctx.error(node, f"{what} must have {want} components, not {len(node.items)}")
-    return np.array([_number(ctx, item, kind, what) for item in node.items])
+    return np.array(_floats(ctx, node, kind, what, n))
+
+
+def _rows(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> list[list[float]]:
+    """A 3x3 matrix of quantities in SI, as three lists of floats."""
+    if not isinstance(node, ys.SeqNode) or len(node.items) != 3:
+        raise ctx.error(node, f"{what} must be a 3x3 matrix: a list of three rows of three numbers")
+    return [_floats(ctx, row, kind, f"a row of {what}") for row in node.items]
 
 
 def _matrix(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> np.ndarray:
-    if not isinstance(node, ys.SeqNode) or len(node.items) != 3:
-        raise ctx.error(node, f"{what} must be a 3x3 matrix: a list of three rows of three numbers")
-    return np.array([_vector(ctx, row, kind, f"a row of {what}") for row in node.items])
+    return np.array(_rows(ctx, node, kind, what))
 
 
 def _string(ctx: _Ctx, node: ys.Node, what: str) -> str:
@@ -238,18 +265,24 @@ def _point(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray | str:
 
 
 def _direction(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray:
-    v = _vector(ctx, node, "dimensionless", what)
-    big = float(np.max(np.abs(v)))
-    if not big > 0:
+    """A unit vector (the largest component scaled to 1 first, so that tiny (1e-320) or
+    huge components do not under/overflow the norm)."""
+    return rot.unit_rows(np.array([_direction_floats(ctx, node, what)]))[0]
+
+
+def _direction_floats(ctx: _Ctx, node: ys.Node, what: str) -> list[float]:
+    """A direction as written (SI floats, not normalised), checked non-zero."""
+    v = _floats(ctx, node, "dimensionless", what)
+    if not max(abs(x) for x in v) > 0:
         raise ctx.error(node, f"{what} must be a non-zero vector")
-    v = v / big  # so that tiny (1e-320) or huge components do not under/overflow the norm
-    return v / np.linalg.norm(v)
+    return v
 
 
 # --------------------------------------------------------------------------- placement
 
 
-def _rotation(ctx: _Ctx, node: ys.Node) -> np.ndarray:
+def _rotation(ctx: _Ctx, node: ys.Node) -> tuple:
+    """The ``rotate`` mapping, checked, as a rotation spec (see :func:`_rotations`)."""
     m = _mapping(ctx, node, "rotate")
     keys = set(m.items)
     forms = {
@@ -271,48 +304,105 @@ def _rotation(ctx: _Ctx, node: ys.Node) -> np.ndarray:
         )
     try:
         if name == "axis-angle":
-            axis = _direction(ctx, m.items["axis"][1], "rotate axis")
+            axis = _direction_floats(ctx, m.items["axis"][1], "rotate axis")
             angle = _number(ctx, m.items["angle"][1], "angle", "rotate angle")
-            return rot.axis_angle(axis, angle)
+            return ("axis-angle", axis, angle)
         if name == "euler":
             seq_node = m.items["seq"][1]
             seq = _string(ctx, seq_node, "seq")
             angles_node = m.items["euler"][1]
             n = len(angles_node.items) if isinstance(angles_node, ys.SeqNode) else 3
-            angles = _vector(ctx, angles_node, "angle", "euler angles", n=(len(seq),) if 1 <= len(seq) <= 3 else 3)
+            angles = _floats(ctx, angles_node, "angle", "euler angles", n=(len(seq),) if 1 <= len(seq) <= 3 else 3)
             try:
-                return rot.euler(angles, seq)
+                rot.euler_intrinsic(seq)
             except ValueError as exc:
                 raise ctx.error(seq_node, str(exc)) from None
+            return ("euler", angles, seq)
         if name == "quaternion":
             q_node = m.items["quaternion"][1]
-            q = _vector(ctx, q_node, "dimensionless", "quaternion", n=4)
-            try:
-                return rot.quaternion(q)
-            except ValueError as exc:
-                raise ctx.error(q_node, str(exc)) from None
+            q = _floats(ctx, q_node, "dimensionless", "quaternion", n=4)
+            if not max(abs(x) for x in q) > 0:
+                raise ctx.error(q_node, "quaternion must be non-zero")
+            return ("quaternion", q)
         mat_node = m.items["matrix"][1]
-        mat = _matrix(ctx, mat_node, "dimensionless", "rotation matrix")
+        mat = _rows(ctx, mat_node, "dimensionless", "rotation matrix")
+        if _clearly_rotation(mat):
+            return ("matrix", mat)  # rot.from_matrix would accept it: made with the others
         try:
-            return rot.from_matrix(mat)
+            return ("R", rot.from_matrix(np.array(mat)))
         except ValueError as exc:
             raise ctx.error(mat_node, f"rotation matrix: {exc}") from None
     except ValueError as exc:  # a ValueError not already located
         raise ctx.error(m, str(exc)) from None
 
 
+def _clearly_rotation(rows: list[list[float]]) -> bool:
+    """Whether :func:`rbcli.core.rotation.from_matrix` surely accepts ``rows``: orthonormal
+    to 1e-7 (its tolerance is 1e-6; round-off here is ~1e-16) with det > 0.5. Otherwise the
+    loader calls it at once, for its exact verdict and message."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    cols = ((a, d, g), (b, e, h), (c, f, i))
+    for j in range(3):
+        for k in range(j, 3):
+            u, v = cols[j], cols[k]
+            dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+            if not abs(dot - (1.0 if j == k else 0.0)) < 1e-7:
+                return False
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) > 0.5
+
+
+def _placement_spec(ctx: _Ctx, m: ys.MapNode) -> tuple[list[float], tuple | None]:
+    """A part's ``at`` (m, floats) and its rotation spec (None: no rotation), checked."""
+    at = [0.0, 0.0, 0.0]
+    spec = None
+    items = m.items
+    if "at" in items:
+        at = _floats(ctx, items["at"][1], "length", "at")
+    if "axis" in items:
+        if "rotate" in items:
+            raise ctx.error(items["rotate"][0], "give either 'axis' or 'rotate', not both")
+        spec = ("axis", _direction_floats(ctx, items["axis"][1], "axis"))
+    elif "rotate" in items:
+        spec = _rotation(ctx, items["rotate"][1])
+    return at, spec
+
+
+def _rotations(specs: list) -> np.ndarray:
+    """The (n, 3, 3) rotation matrices of the specs of :func:`_placement_spec`, made per
+    kind for all the parts at once (``rot.*_rows``: bit for bit the one-part results).
+
+    A spec is None (no rotation), ``("axis", direction)``, ``("axis-angle", axis, angle)``,
+    ``("euler", angles, seq)``, ``("quaternion", q)``, ``("matrix", rows)`` (accepted by
+    :func:`_clearly_rotation`) or ``("R", matrix)``.
+    """
+    out = np.empty((len(specs), 3, 3))
+    out[:] = np.eye(3)
+    groups: dict = {}
+    for i, spec in enumerate(specs):
+        if spec is not None:
+            key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
+            groups.setdefault(key, []).append(i)
+    for (kind, seq), idx in groups.items():
+        if kind == "R":
+            out[idx] = [specs[i][1] for i in idx]
+        elif kind == "axis":
+            out[idx] = rot.axis_to_z_rows(rot.unit_rows(np.array([specs[i][1] for i in idx])))
+        elif kind == "axis-angle":
+            axes = rot.unit_rows(np.array([specs[i][1] for i in idx]))
+            out[idx] = rot.axis_angle_rows(axes, np.array([specs[i][2] for i in idx]))
+        elif kind == "euler":
+            out[idx] = rot.euler_rows(np.array([specs[i][1] for i in idx]), seq)
+        elif kind == "quaternion":
+            out[idx] = rot.quaternion_rows(np.array([specs[i][1] for i in idx]))
+        else:
+            out[idx] = rot.nearest_rotation_rows(np.array([specs[i][1] for i in idx]))
+    return out
+
+
 def _placement(ctx: _Ctx, m: ys.MapNode) -> tuple[np.ndarray, np.ndarray]:
-    at = np.zeros(3)
-    R = np.eye(3)
-    if "at" in m.items:
-        at = _vector(ctx, m.items["at"][1], "length", "at")
-    if "axis" in m.items and "rotate" in m.items:
-        raise ctx.error(m.items["rotate"][0], "give either 'axis' or 'rotate', not both")
-    if "axis" in m.items:
-        R = rot.axis_to_z(_direction(ctx, m.items["axis"][1], "axis"))
-    elif "rotate" in m.items:
-        R = _rotation(ctx, m.items["rotate"][1])
-    return at, R
+    """A part's ``at`` (m) and rotation matrix, for the parts placed one by one."""
+    at, spec = _placement_spec(ctx, m)
+    return np.array(at), _rotations([spec])[0]
 
 
 # --------------------------------------------------------------------------- parts
@@ -392,14 +482,14 @@ def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
         raise ctx.error(node, f"parts must be a list of parts, not {_describe(node)}")
     if not node.items:
         raise ctx.error(node, "parts is empty; a body needs at least one part")
-    out: list[Part] = []
+    out: list = []
     names: set[str] = set()
     known: dict[str, _Known] = {}
     for i, item in enumerate(node.items):
         if not _is_include(item):
             ctx.session.spend(ctx, item, 1)
         out.extend(_part(ctx, item, i, names, known, prefix))
-    return out
+    return _finish(out)
 
 
 def _is_include(node: ys.Node) -> bool:
@@ -409,7 +499,9 @@ def _is_include(node: ys.Node) -> bool:
     return isinstance(shape, ys.ScalarNode) and shape.value == "include"
 
 
-def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list[Part]:
+def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list:
+    """The parts of one entry of ``parts``: a primitive as a :class:`_Pending` (placed by
+    :func:`_finish` with all the others), the others as finished :class:`Part` s."""
     m = _mapping(ctx, node, f"part {index + 1}")
     if "shape" not in m.items:
         raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
@@ -435,104 +527,177 @@ def _subtract(ctx: _Ctx, m: ys.MapNode) -> bool:
     return _bool(ctx, m.items["subtract"][1], "subtract") if "subtract" in m.items else False
 
 
-def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
+#: per primitive shape: (its keys in the order messages list them, the same as a set,
+#: its diameter spellings)
+_PRIMITIVE_KEYS: dict[str, tuple[tuple[str, ...], frozenset, dict[str, str]]] = {}
+
+
+def _primitive_keys(shape: str) -> tuple[tuple[str, ...], frozenset, dict[str, str]]:
+    if shape not in _PRIMITIVE_KEYS:
+        info = shp.SHAPES[shape]
+        extra_keys = ("from", "to") if shape == "rod" else ()
+        diameters = info.diameters
+        keys = (*COMMON_PART_KEYS, *info.required, *info.optional, *diameters, *extra_keys)
+        _PRIMITIVE_KEYS[shape] = (keys, frozenset(keys), diameters)
+    return _PRIMITIVE_KEYS[shape]
+
+
+@dataclass
+class _Pending:
+    """A checked primitive part not yet placed: :func:`_finish` places all of them at once
+    (``at + R com``, ``R (mass U) Rᵀ``, stacked: the same numbers as one by one)."""
+
+    name: str
+    shape: str
+    mass: float
+    subtract: bool
+    measure: float | None
+    measure_kind: str
+    radius: float | None
+    where: Location
+    at: list
+    spec: tuple | None
+    com: object  # the local com: a 3-tuple or (3,) array
+    unit_inertia: object  # the 3 diagonal entries, or a (3, 3) array
+    dims: tuple
+
+
+def _primitive(ctx, m, shape, name, prefix, known, what) -> _Pending:
     info = shp.SHAPES[shape]
     params_allowed = (*info.required, *info.optional)
-    extra_keys: tuple[str, ...] = ()
-    if shape == "rod":
-        extra_keys = ("from", "to")
-    diameters = info.diameters
-    _check_keys(ctx, m, (*COMMON_PART_KEYS, *params_allowed, *diameters, *extra_keys), f"{what} ({shape})")
+    keys, key_set, diameters = _primitive_keys(shape)
+    items = m.items
+    for key in items:
+        if key not in key_set:
+            _check_keys(ctx, m, keys, f"{what} ({shape})")
     params: dict[str, object] = {}
     nodes: dict[str, ys.Node] = {}
     for dkey, rkey in diameters.items():
-        if dkey not in m.items:
+        if dkey not in items:
             continue
-        if rkey in m.items:
-            raise ctx.error(m.items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
-        nodes[rkey] = m.items[dkey][1]
+        if rkey in items:
+            raise ctx.error(items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
+        nodes[rkey] = items[dkey][1]
         params[rkey] = 0.5 * _number(ctx, nodes[rkey], "length", dkey)
-    at, R = _placement(ctx, m)
-    if shape == "rod" and ("from" in m.items or "to" in m.items):
+    at, spec = _placement_spec(ctx, m)
+    if shape == "rod" and ("from" in items or "to" in items):
         for k in ("from", "to"):
-            if k not in m.items:
+            if k not in items:
                 raise ctx.error(m, f"{what}: a rod given by endpoints needs both 'from' and 'to'")
         for k in ("length", *PLACEMENT_KEYS):
-            if k in m.items:
-                raise ctx.error(m.items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
-        a = _vector(ctx, m.items["from"][1], "length", "from")
-        b = _vector(ctx, m.items["to"][1], "length", "to")
+            if k in items:
+                raise ctx.error(items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
+        a = _vector(ctx, items["from"][1], "length", "from")
+        b = _vector(ctx, items["to"][1], "length", "to")
         if not np.linalg.norm(b - a) > 0:
-            raise ctx.error(m.items["to"][1], f"{what}: 'from' and 'to' are the same point")
+            raise ctx.error(items["to"][1], f"{what}: 'from' and 'to' are the same point")
         params["length"] = float(np.linalg.norm(b - a))
-        at = 0.5 * (a + b)
-        R = rot.axis_to_z(b - a)
+        at = (0.5 * (a + b)).tolist()
+        spec = ("R", rot.axis_to_z(b - a))
     for key in info.required:
-        if key not in m.items and key not in params:
+        if key not in items and key not in params:
             alt = next((f" or '{d}'" for d, r in diameters.items() if r == key), "")
             raise ctx.error(m, f"{what} ({shape}) needs '{key}'{alt} (parameters: {', '.join(params_allowed) or 'none'})")
     for key in params_allowed:
-        if key not in m.items or key in params:
+        if key not in items or key in params:
             continue
-        vnode = m.items[key][1]
+        vnode = items[key][1]
         nodes[key] = vnode
         kind = info.kind(key)
         if kind.name == "length":
             params[key] = _number(ctx, vnode, "length", key)
         elif kind.name == "lengths":
-            params[key] = _vector(ctx, vnode, "length", key, n=kind.n)
+            params[key] = _floats(ctx, vnode, "length", key, n=kind.n)
         elif kind.name == "points":
-            params[key] = _matrix(ctx, vnode, "length", key)
+            params[key] = _rows(ctx, vnode, "length", key)
         elif kind.name == "bool":
             params[key] = _bool(ctx, vnode, key)
     try:
-        geo = shp.geometry(shape, **params)
+        geo = shp.local_geometry(shape, params)
     except shp.ShapeError as exc:  # lengths quoted in the file's own length unit
         factor, unit = ctx.factors.get("length") or un.unit_for_kind(ctx.base_units, "length")
         message = exc.format(lambda x: f"{x / factor:g} {unit}")
         raise ctx.error(nodes.get(exc.param, m), f"{what}: {message}") from None
     except ValueError as exc:
         raise ctx.error(m, f"{what}: {exc}") from None
-    mass, density, src = _mass_source(ctx, m, geo.measure_kind, known, what)
-    measure = geo.measure if geo.measure_kind != "point" else None
+    measure_kind = geo.measure_kind
+    mass, density, src = _mass_source(ctx, m, measure_kind, known, what)
+    measure = float(geo.measure) if measure_kind != "point" else None
     if mass is None:
         assert density is not None and measure is not None
         mass = density * measure
-        _check_mass(ctx, src, what, mass, f"density × {geo.measure_kind}")
+        _check_mass(ctx, src, what, mass, f"density × {measure_kind}")
     elif measure:
         density = mass / measure
     if not mass > 0:
         raise ctx.error(m, f"{what} has no mass")
-    known[name] = _Known(density if geo.measure_kind != "point" else None, geo.measure_kind)
-    com, J = _place(geo.com, mass * geo.unit_inertia, at, R)
-    return Part(
-        name=prefix + name,
-        shape=shape,
-        mass=float(mass),
-        subtract=_subtract(ctx, m),
-        com=com,
-        inertia_com=J,
-        measure=measure,
-        measure_kind=geo.measure_kind,
-        radius=info.radius(params),
-        axis=R[:, 2].copy(),
-        where=ctx.where(m),
-        outline=_outline(shape, params, at, R),
+    known[name] = _Known(density if measure_kind != "point" else None, measure_kind)
+    return _Pending(
+        prefix + name, shape, float(mass), _subtract(ctx, m), measure, measure_kind,
+        info.radius(params), ctx.where(m), at, spec, geo.com, geo.unit_inertia, _dims(params),
     )
 
 
-def _outline(shape: str, params: dict, at: np.ndarray, R: np.ndarray):
-    """The drawing's description of a primitive part: its parameters (m) and placement."""
-    from rbcli.model import Outline
-
+def _dims(params: dict) -> tuple:
+    """The drawing's description of a primitive part: its parameters (m) as
+    :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
     dims = []
     for k, v in params.items():
-        if isinstance(v, np.ndarray):  # size, semi_axes (n,), vertices (3, 3)
-            v = tuple(map(tuple, v.tolist())) if v.ndim == 2 else tuple(v.tolist())
+        if isinstance(v, list):  # size, semi_axes (n,), vertices (3, 3)
+            v = tuple(tuple(r) for r in v) if isinstance(v[0], list) else tuple(v)
         elif not isinstance(v, bool):
             v = float(v)  # type: ignore[arg-type]
         dims.append((k, v))
-    return Outline(shape, tuple(dims), at, R)
+    return tuple(dims)
+
+
+def _finish(items: list) -> list[Part]:
+    """``items`` with every :class:`_Pending` replaced by its placed :class:`Part`.
+
+    All the primitives are placed at once: their rotations per kind
+    (:func:`_rotations`), ``com = at + R c`` and ``J = R (m U) Rᵀ`` as stacked matrix
+    products, which give the same numbers as one product per part. The parts' arrays are
+    rows of a few shared arrays (the outlines' read-only ones).
+    """
+    from rbcli.model import Outline
+
+    pending = [p for p in items if p.__class__ is _Pending]
+    if not pending:
+        return items
+    n = len(pending)
+    ats = np.array([p.at for p in pending], dtype=float).reshape(n, 3)
+    Rs = _rotations([p.spec for p in pending])
+    local_coms = np.array([p.com for p in pending], dtype=float).reshape(n, 3)
+    U = np.zeros((n, 3, 3))
+    diag = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is tuple]
+    if diag:
+        d = np.array([pending[i].unit_inertia for i in diag], dtype=float).reshape(-1, 3)
+        for j in range(3):
+            U[diag, j, j] = d[:, j]
+    if len(diag) < n:
+        full = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is not tuple]
+        U[full] = [pending[i].unit_inertia for i in full]
+    masses = np.array([p.mass for p in pending], dtype=float)
+    coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
+    Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
+    axes = Rs[:, :, 2].copy()
+    ats.setflags(write=False)
+    Rs.setflags(write=False)
+    placed = iter(range(n))
+    out = []
+    for item in items:
+        if item.__class__ is not _Pending:
+            out.append(item)
+            continue
+        i = next(placed)
+        p = item
+        out.append(Part(
+            name=p.name, shape=p.shape, mass=p.mass, subtract=p.subtract, com=coms[i],
+            inertia_com=Js[i], measure=p.measure, measure_kind=p.measure_kind,
+            radius=p.radius, axis=axes[i], where=p.where,
+            outline=Outline(p.shape, p.dims, ats[i], Rs[i]),
+        ))
+    return out
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
@@ -857,7 +1022,7 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
         # one-part shorthand: the mapping is the part (plus the body's units/version)
         items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
         stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
-        parts = _part(ctx, stripped, 0, set(), {}, "")
+        parts = _finish(_part(ctx, stripped, 0, set(), {}, ""))
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
     ctx.inputs = list(dict.fromkeys(ctx.inputs))
