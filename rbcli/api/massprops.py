@@ -194,9 +194,12 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
 
     from rbcli.core.scale import SPEED_OF_SOUND, body_scale
 
+    far_point = ref.param == "about" and ref.point is not None
+    if not far_point and omega is None:
+        return ()
     sc = body_scale(body.parts)
     out = []
-    if ref.param == "about" and ref.point is not None:
+    if far_point:
         d = sc.far(ref.point)
         if d is not None:
             out.append(u.far("--about", "the point", d, sc.size))
@@ -303,7 +306,7 @@ def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
 
     from rbcli.core import inertia as ci
 
-    mp = ci.combine(body.parts)
+    mp = ci.body_mass_props(body)
     point = options.reference.resolve(mp)
     try:
         res = ci.inertia_report(
@@ -456,10 +459,10 @@ class PrincipalResult(Result):
 
 def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
     """:func:`principal` with options already parsed."""
-    from rbcli.core.inertia import combine
+    from rbcli.core.inertia import body_mass_props
     from rbcli.core.principal import principal_report
 
-    mp = combine(body.parts)
+    mp = body_mass_props(body)
     point, J = _inertia_at(mp, options.reference)
     pr = principal_report(mp.mass, J, point)
     pa = pr.axes_info
