@@ -27,7 +27,7 @@ def _frozen(a, dtype=float) -> np.ndarray:
     return a
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Outline:
     """What a drawing of a part needs: its shape, its local dimensions and its placement.
 
@@ -75,7 +75,7 @@ class Outline:
                        self.vertices, self.faces)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Part:
     """One part of a body, placed in the body frame.
 

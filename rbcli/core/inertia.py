@@ -52,6 +52,10 @@ def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
     return mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
 
 
+#: parts summed per step of :func:`combine`
+_CHUNK = 4096
+
+
 def combine(parts: Iterable[Part]) -> MassProps:
     """Mass properties of the union of ``parts`` (subtracted parts count negative).
 
@@ -91,12 +95,19 @@ def combine(parts: Iterable[Part]) -> MassProps:
     rel = c - origin
     com_rel = (m @ rel) / total
     d = rel - com_rel
-    # terms[0] = 0, then per part: sᵢ Jᵢ, and mᵢ (dᵢ·dᵢ E − dᵢ dᵢᵀ)
-    terms = np.empty((2 * n + 1, 3, 3))
-    terms[0] = 0.0
-    terms[1::2] = sign[:, None, None] * np.array([p.inertia_com for p in parts], dtype=float).reshape(n, 3, 3)
-    terms[2::2] = m[:, None, None] * (np.vecdot(d, d)[:, None, None] * np.eye(3) - d[:, :, None] * d[:, None, :])
-    J = np.add.accumulate(terms, axis=0)[-1]
+    J = np.zeros((3, 3))
+    for a in range(0, n, _CHUNK):  # in chunks: a bounded memory for any number of parts
+        b = min(a + _CHUNK, n)
+        k = b - a
+        dk, mk = d[a:b], m[a:b]
+        # terms[0] = the sum so far, then per part: sᵢ Jᵢ, and mᵢ (dᵢ·dᵢ E − dᵢ dᵢᵀ)
+        terms = np.empty((2 * k + 1, 3, 3))
+        terms[0] = J
+        terms[1::2] = sign[a:b, None, None] * np.array(
+            [p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
+        terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * np.eye(3)
+                                           - dk[:, :, None] * dk[:, None, :])
+        J = np.add.accumulate(terms, axis=0)[-1]
     J = 0.5 * (J + J.T)
     return MassProps(total, origin + com_rel, J)
 

@@ -485,11 +485,14 @@ def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
     out: list = []
     names: set[str] = set()
     known: dict[str, _Known] = {}
+    done = 0  # out[:done] are finished Parts
     for i, item in enumerate(node.items):
         if not _is_include(item):
             ctx.session.spend(ctx, item, 1)
         out.extend(_part(ctx, item, i, names, known, prefix))
-    return _finish(out)
+        if len(out) - done >= _BATCH:
+            done = len(_finish(out, done))
+    return _finish(out, done)
 
 
 def _is_include(node: ys.Node) -> bool:
@@ -542,7 +545,7 @@ def _primitive_keys(shape: str) -> tuple[tuple[str, ...], frozenset, dict[str, s
     return _PRIMITIVE_KEYS[shape]
 
 
-@dataclass
+@dataclass(slots=True)
 class _Pending:
     """A checked primitive part not yet placed: :func:`_finish` places all of them at once
     (``at + R com``, ``R (mass U) Rᵀ``, stacked: the same numbers as one by one)."""
@@ -651,21 +654,28 @@ def _dims(params: dict) -> tuple:
     return tuple(dims)
 
 
-def _finish(items: list) -> list[Part]:
-    """``items`` with every :class:`_Pending` replaced by its placed :class:`Part`.
+#: primitives placed per batch: large enough for numpy to pay, small enough that the
+#: batch's arrays and pending parts add little to the peak memory of a large body
+_BATCH = 4096
 
-    All the primitives are placed at once: their rotations per kind
+
+def _finish(items: list, start: int = 0) -> list[Part]:
+    """``items`` with every :class:`_Pending` of ``items[start:]`` replaced by its placed
+    :class:`Part` (in place).
+
+    The primitives are placed together: their rotations per kind
     (:func:`_rotations`), ``com = at + R c`` and ``J = R (m U) Rᵀ`` as stacked matrix
     products, which give the same numbers as one product per part. The parts' arrays are
     rows of a few shared arrays (the outlines' read-only ones).
     """
     from rbcli.model import Outline
 
-    pending = [p for p in items if p.__class__ is _Pending]
+    pending = [p for p in items[start:] if p.__class__ is _Pending]
     if not pending:
         return items
     n = len(pending)
-    ats = np.array([p.at for p in pending], dtype=float).reshape(n, 3)
+    dims = [p.dims for p in pending]
+    ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), not a view (see _frozen)
     Rs = _rotations([p.spec for p in pending])
     local_coms = np.array([p.com for p in pending], dtype=float).reshape(n, 3)
     U = np.zeros((n, 3, 3))
@@ -678,26 +688,25 @@ def _finish(items: list) -> list[Part]:
         full = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is not tuple]
         U[full] = [pending[i].unit_inertia for i in full]
     masses = np.array([p.mass for p in pending], dtype=float)
+    del pending  # each one goes when its Part replaces it (the peak memory of a large body)
     coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
     Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
     axes = Rs[:, :, 2].copy()
     ats.setflags(write=False)
     Rs.setflags(write=False)
-    placed = iter(range(n))
-    out = []
-    for item in items:
-        if item.__class__ is not _Pending:
-            out.append(item)
+    i = 0
+    for k in range(start, len(items)):
+        p = items[k]
+        if p.__class__ is not _Pending:
             continue
-        i = next(placed)
-        p = item
-        out.append(Part(
+        items[k] = Part(
             name=p.name, shape=p.shape, mass=p.mass, subtract=p.subtract, com=coms[i],
             inertia_com=Js[i], measure=p.measure, measure_kind=p.measure_kind,
             radius=p.radius, axis=axes[i], where=p.where,
-            outline=Outline(p.shape, p.dims, ats[i], Rs[i]),
-        ))
-    return out
+            outline=Outline(p.shape, dims[i], ats[i], Rs[i]),
+        )
+        i += 1
+    return items
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
