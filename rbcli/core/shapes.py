@@ -276,6 +276,8 @@ IO_SHAPES = {
 
 
 def _number(param: str, value: Any, label: str | None = None) -> float:
+    if value.__class__ is float and math.isfinite(value):  # the common case, quickly
+        return value
     label = label or param
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ShapeError(param, f"{label} must be a number, not {type(value).__name__}")
@@ -301,6 +303,8 @@ def _non_negative(param: str, value: Any) -> float:
 
 def _components(param: str, value: Any, n: int, label: str | None = None) -> list[Any]:
     """The ``n`` items of a vector parameter; ``label`` names it in the message."""
+    if value.__class__ is list and len(value) == n:  # the common case, quickly
+        return value
     label = label or param
     if isinstance(value, (str, bytes, Mapping)):
         raise ShapeError(param, f"{label} must be a list of {n} numbers")
@@ -407,15 +411,21 @@ def _plate(p: dict[str, Any]) -> _Raw:
 
 def _triangle(p: dict[str, Any]) -> _Raw:
     rows = _components("vertices", p["vertices"], 3)
-    v = np.empty((3, 3))
-    for i, row in enumerate(rows):
-        for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]")):
-            v[i, j] = _number("vertices", x, f"vertices[{i}][{j}]")
-    centroid = v.mean(axis=0)
-    d = v - centroid
-    twice_area_vec = np.cross(v[1] - v[0], v[2] - v[0])
-    twice_area = float(np.linalg.norm(twice_area_vec))
-    longest = max(float(np.linalg.norm(v[i] - v[j])) for i, j in ((0, 1), (1, 2), (0, 2)))
+    v = [[_number("vertices", x, f"vertices[{i}][{j}]")
+          for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]"))]
+         for i, row in enumerate(rows)]
+    # in floats, in the order numpy's mean, cross and norm take them (the same numbers):
+    # mean = (v0 + v1 + v2) / 3; |x| = sqrt(x·x) with the dot product numpy's (np.vecdot)
+    centroid = tuple((v[0][k] + v[1][k] + v[2][k]) / 3.0 for k in range(3))
+    d = np.array([[v[i][k] - centroid[k] for k in range(3)] for i in range(3)])
+    (a0, a1, a2), (b0, b1, b2) = ([v[1][k] - v[0][k] for k in range(3)],
+                                  [v[2][k] - v[0][k] for k in range(3)])
+    cross = [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0]
+    edges = [[v[i][k] - v[j][k] for k in range(3)] for i, j in ((0, 1), (1, 2), (0, 2))]
+    x = np.array([cross, *edges])
+    norms = np.sqrt(np.vecdot(x, x)).tolist()
+    twice_area = norms[0]
+    longest = max(norms[1:])
     # Degenerate when the area is round-off compared with the square of the size.
     if not twice_area > 1e-12 * longest * longest:
         raise ShapeError("vertices", "the triangle's vertices are collinear (it has no area)")
@@ -550,6 +560,10 @@ _BUILDERS: dict[str, Callable[[dict[str, Any]], ShapeGeometry]] = {
 }
 
 
+#: each shape's parameters, required then optional (filled on first use)
+_PARAMETERS: dict[str, tuple[str, ...]] = {}
+
+
 def geometry(shape: str, **params: Any) -> ShapeGeometry:
     """Measure, centre of mass and inertia per unit mass of a primitive shape.
 
@@ -618,7 +632,7 @@ def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:
     if info is None:
         known = ", ".join([*SHAPES, *IO_SHAPES])
         raise ShapeError("shape", f"unknown shape {shape!r}; the shapes are: {known}")
-    allowed = (*info.required, *info.optional)
+    allowed = _PARAMETERS.get(shape) or _PARAMETERS.setdefault(shape, (*info.required, *info.optional))
     for key in params:
         if key not in allowed:
             what = ", ".join(allowed) if allowed else "none"
@@ -628,5 +642,5 @@ def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:
     for key in info.required:
         if params.get(key) is None:
             raise ShapeError(key, f"shape {shape!r} needs {key!r}")
-    return _BUILDERS[shape](dict(params))
+    return _BUILDERS[shape](params)
 

@@ -281,19 +281,21 @@ def _direction_floats(ctx: _Ctx, node: ys.Node, what: str) -> list[float]:
 # --------------------------------------------------------------------------- placement
 
 
+ROTATE_KEYS = ("axis", "angle", "euler", "seq", "quaternion", "matrix")
+ROTATE_FORMS = {
+    "axis-angle": frozenset({"axis", "angle"}),
+    "euler": frozenset({"euler", "seq"}),
+    "quaternion": frozenset({"quaternion"}),
+    "matrix": frozenset({"matrix"}),
+}
+
+
 def _rotation(ctx: _Ctx, node: ys.Node) -> tuple:
     """The ``rotate`` mapping, checked, as a rotation spec (see :func:`_rotations`)."""
     m = _mapping(ctx, node, "rotate")
-    keys = set(m.items)
-    forms = {
-        "axis-angle": {"axis", "angle"},
-        "euler": {"euler", "seq"},
-        "quaternion": {"quaternion"},
-        "matrix": {"matrix"},
-    }
-    allowed = ("axis", "angle", "euler", "seq", "quaternion", "matrix")
-    _check_keys(ctx, m, allowed, "rotate")
-    for name, form in forms.items():
+    keys = m.items.keys()
+    _check_keys(ctx, m, ROTATE_KEYS, "rotate")
+    for name, form in ROTATE_FORMS.items():
         if keys == form:
             break
     else:
