@@ -13,10 +13,13 @@ import numpy as np
 from rbcli.errors import Location
 
 
-def _frozen(a, dtype=float) -> np.ndarray:
+_FLOAT = np.dtype(float)
+
+
+def _frozen(a, dtype=_FLOAT) -> np.ndarray:
     """``a`` as a read-only array: itself when it is one already (its data cannot change:
     no writable array shares it), else a private read-only copy."""
-    if a.__class__ is np.ndarray and a.dtype == dtype and not a.flags.writeable:
+    if a.__class__ is np.ndarray and not a.flags.writeable and a.dtype == dtype:
         base = a
         while base.base is not None and base.base.__class__ is np.ndarray:
             base = base.base
@@ -62,11 +65,14 @@ class Outline:
     faces: np.ndarray | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "at", _frozen(self.at))
-        object.__setattr__(self, "R", _frozen(self.R))
+        at, R = _frozen(self.at), _frozen(self.R)
+        if at is not self.at:
+            object.__setattr__(self, "at", at)
+        if R is not self.R:
+            object.__setattr__(self, "R", R)
         if self.vertices is not None:
             object.__setattr__(self, "vertices", _frozen(self.vertices))
-            object.__setattr__(self, "faces", _frozen(self.faces, np.int64))
+            object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
 
     def placed(self, at, R) -> Outline:
         """The same outline moved by ``x -> at + R x`` (as an included file's parts are)."""

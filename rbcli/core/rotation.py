@@ -219,9 +219,15 @@ _EULER_HELP = (
 )
 
 
+_INTRINSIC: dict[str, bool] = {}  # the valid sequences seen, for euler_intrinsic
+
+
 def euler_intrinsic(seq: str) -> bool:
     """Whether the Euler sequence ``seq`` is intrinsic (``XYZ`` letters) or extrinsic
     (``xyz``); ValueError (saying what is allowed) for an invalid sequence."""
+    known = _INTRINSIC.get(seq) if seq.__class__ is str else None
+    if known is not None:
+        return known
     if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
         raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
     if set(seq) <= set("xyz"):
@@ -235,6 +241,7 @@ def euler_intrinsic(seq: str) -> bool:
             f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
             f"use {_EULER_HELP}"
         )
+    _INTRINSIC[seq] = intrinsic
     return intrinsic
 
 

@@ -317,7 +317,13 @@ def _components(param: str, value: Any, n: int, label: str | None = None) -> lis
     return items
 
 
-def _positive_vector(param: str, value: Any, n: int) -> np.ndarray:
+def _positive_vector(param: str, value: Any, n: int) -> list[float]:
+    if value.__class__ is list and len(value) == n:  # the common case, quickly
+        for v in value:
+            if not (v.__class__ is float and 0.0 < v < math.inf):
+                break
+        else:
+            return value
     items = _components(param, value, n)
     out = []
     for i, v in enumerate(items):

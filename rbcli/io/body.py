@@ -220,6 +220,20 @@ def _floats(ctx: _Ctx, node: ys.Node, kind: str, what: str, n: int | tuple[int, 
             raise ctx.error(node, f"{what} must be a list of {want} numbers like [1, 0, 0], not {_describe(node)}")
         if len(node.items) not in sizes:
             raise ctx.error(node, f"{what} must have {want} components, not {len(node.items)}")
+    factor = ctx.factors.get(kind)
+    if factor is not None:  # _number's common case, inline
+        f = factor[0]
+        out = []
+        for item in node.items:
+            if item.__class__ is ys.ScalarNode:
+                value = item.value
+                if value.__class__ is float or value.__class__ is int:
+                    x = float(value) * f
+                    if -HUGE <= x <= HUGE:
+                        out.append(x)
+                        continue
+            out.append(_quantity(ctx, item, kind, what))
+        return out
     return [_number(ctx, item, kind, what) for item in node.items]
 
 
@@ -273,7 +287,7 @@ def _direction(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray:
 def _direction_floats(ctx: _Ctx, node: ys.Node, what: str) -> list[float]:
     """A direction as written (SI floats, not normalised), checked non-zero."""
     v = _floats(ctx, node, "dimensionless", what)
-    if not max(abs(x) for x in v) > 0:
+    if not any(v):  # all zero (the numbers are finite)
         raise ctx.error(node, f"{what} must be a non-zero vector")
     return v
 
@@ -282,6 +296,7 @@ def _direction_floats(ctx: _Ctx, node: ys.Node, what: str) -> list[float]:
 
 
 ROTATE_KEYS = ("axis", "angle", "euler", "seq", "quaternion", "matrix")
+_ROTATE_KEY_SET = frozenset(ROTATE_KEYS)
 ROTATE_FORMS = {
     "axis-angle": frozenset({"axis", "angle"}),
     "euler": frozenset({"euler", "seq"}),
@@ -294,7 +309,8 @@ def _rotation(ctx: _Ctx, node: ys.Node) -> tuple:
     """The ``rotate`` mapping, checked, as a rotation spec (see :func:`_rotations`)."""
     m = _mapping(ctx, node, "rotate")
     keys = m.items.keys()
-    _check_keys(ctx, m, ROTATE_KEYS, "rotate")
+    if not _ROTATE_KEY_SET.issuperset(keys):
+        _check_keys(ctx, m, ROTATE_KEYS, "rotate")
     for name, form in ROTATE_FORMS.items():
         if keys == form:
             break
@@ -323,7 +339,7 @@ def _rotation(ctx: _Ctx, node: ys.Node) -> tuple:
         if name == "quaternion":
             q_node = m.items["quaternion"][1]
             q = _floats(ctx, q_node, "dimensionless", "quaternion", n=4)
-            if not max(abs(x) for x in q) > 0:
+            if not any(q):  # all zero (the numbers are finite)
                 raise ctx.error(q_node, "quaternion must be non-zero")
             return ("quaternion", q)
         mat_node = m.items["matrix"][1]
@@ -533,17 +549,18 @@ def _subtract(ctx: _Ctx, m: ys.MapNode) -> bool:
 
 
 #: per primitive shape: (its keys in the order messages list them, the same as a set,
-#: its diameter spellings)
-_PRIMITIVE_KEYS: dict[str, tuple[tuple[str, ...], frozenset, dict[str, str]]] = {}
+#: its diameter spellings, its parameters with the name of their Kind and its n)
+_PRIMITIVE_KEYS: dict[str, tuple] = {}
 
 
-def _primitive_keys(shape: str) -> tuple[tuple[str, ...], frozenset, dict[str, str]]:
+def _primitive_keys(shape: str) -> tuple:
     if shape not in _PRIMITIVE_KEYS:
         info = shp.SHAPES[shape]
         extra_keys = ("from", "to") if shape == "rod" else ()
         diameters = info.diameters
         keys = (*COMMON_PART_KEYS, *info.required, *info.optional, *diameters, *extra_keys)
-        _PRIMITIVE_KEYS[shape] = (keys, frozenset(keys), diameters)
+        kinds = tuple((k, info.kind(k).name, info.kind(k).n) for k in (*info.required, *info.optional))
+        _PRIMITIVE_KEYS[shape] = (keys, frozenset(keys), diameters, kinds)
     return _PRIMITIVE_KEYS[shape]
 
 
@@ -569,12 +586,10 @@ class _Pending:
 
 def _primitive(ctx, m, shape, name, prefix, known, what) -> _Pending:
     info = shp.SHAPES[shape]
-    params_allowed = (*info.required, *info.optional)
-    keys, key_set, diameters = _primitive_keys(shape)
+    keys, key_set, diameters, kinds = _primitive_keys(shape)
     items = m.items
-    for key in items:
-        if key not in key_set:
-            _check_keys(ctx, m, keys, f"{what} ({shape})")
+    if not key_set.issuperset(items):
+        _check_keys(ctx, m, keys, f"{what} ({shape})")
     params: dict[str, object] = {}
     nodes: dict[str, ys.Node] = {}
     for dkey, rkey in diameters.items():
@@ -602,20 +617,20 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> _Pending:
     for key in info.required:
         if key not in items and key not in params:
             alt = next((f" or '{d}'" for d, r in diameters.items() if r == key), "")
+            params_allowed = (*info.required, *info.optional)
             raise ctx.error(m, f"{what} ({shape}) needs '{key}'{alt} (parameters: {', '.join(params_allowed) or 'none'})")
-    for key in params_allowed:
+    for key, kind, n in kinds:
         if key not in items or key in params:
             continue
         vnode = items[key][1]
         nodes[key] = vnode
-        kind = info.kind(key)
-        if kind.name == "length":
+        if kind == "length":
             params[key] = _number(ctx, vnode, "length", key)
-        elif kind.name == "lengths":
-            params[key] = _floats(ctx, vnode, "length", key, n=kind.n)
-        elif kind.name == "points":
+        elif kind == "lengths":
+            params[key] = _floats(ctx, vnode, "length", key, n=n)
+        elif kind == "points":
             params[key] = _rows(ctx, vnode, "length", key)
-        elif kind.name == "bool":
+        elif kind == "bool":
             params[key] = _bool(ctx, vnode, key)
     try:
         geo = shp.local_geometry(shape, params)
@@ -637,9 +652,11 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> _Pending:
     if not mass > 0:
         raise ctx.error(m, f"{what} has no mass")
     known[name] = _Known(density if measure_kind != "point" else None, measure_kind)
+    mark = m.mark
     return _Pending(
         prefix + name, shape, float(mass), _subtract(ctx, m), measure, measure_kind,
-        info.radius(params), ctx.where(m), at, spec, geo.com, geo.unit_inertia, _dims(params),
+        info.radius(params), Location(ctx.file, mark.line, mark.col), at, spec, geo.com,
+        geo.unit_inertia, _dims(params),
     )
 
 
