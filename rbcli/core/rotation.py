@@ -43,6 +43,8 @@ __all__ = [
     "euler_rows",
     "quaternion_rows",
     "nearest_rotation_rows",
+    "surely_rotation",
+    "from_specs",
     "rotate_tensor",
     "quat_multiply",
     "quat_conjugate",
@@ -541,6 +543,56 @@ def nearest_rotation_rows(m: np.ndarray) -> np.ndarray:
     caller has already accepted (orthonormal within the tolerance, det > 0)."""
     u, _, vt = np.linalg.svd(np.asarray(m, dtype=float).reshape(-1, 3, 3))
     return u @ vt
+
+
+def surely_rotation(rows: list[list[float]]) -> bool:
+    """Whether :func:`from_matrix` surely accepts the 3x3 matrix ``rows`` (lists of floats)
+    with its default tolerance: orthonormal to 1e-7 (the tolerance is 1e-6; round-off here
+    is ~1e-16) with det > 0.5. When not, call :func:`from_matrix` for its exact verdict and
+    message."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    cols = ((a, d, g), (b, e, h), (c, f, i))
+    for j in range(3):
+        for k in range(j, 3):
+            u, v = cols[j], cols[k]
+            dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+            if not abs(dot - (1.0 if j == k else 0.0)) < 1e-7:
+                return False
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) > 0.5
+
+
+def from_specs(specs: list) -> np.ndarray:
+    """The (n, 3, 3) rotations of ``n`` checked specs, made per kind for all at once
+    (the ``*_rows`` functions: bit for bit the one-rotation results).
+
+    A spec is None (no rotation), ``("axis", direction)`` (:func:`axis_to_z` of the unit
+    direction), ``("axis-angle", axis, angle_rad)`` (:func:`axis_angle` of the unit axis),
+    ``("euler", angles_rad, seq)``, ``("quaternion", q_wxyz)``, ``("matrix", rows)`` (one
+    :func:`surely_rotation` accepts) or ``("R", matrix)`` (made already). Vectors are
+    lists of finite floats, not all zero.
+    """
+    out = np.empty((len(specs), 3, 3))
+    out[:] = np.eye(3)
+    groups: dict = {}
+    for i, spec in enumerate(specs):
+        if spec is not None:
+            key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
+            groups.setdefault(key, []).append(i)
+    for (kind, seq), idx in groups.items():
+        if kind == "R":
+            out[idx] = [specs[i][1] for i in idx]
+        elif kind == "axis":
+            out[idx] = axis_to_z_rows(unit_rows(np.array([specs[i][1] for i in idx])))
+        elif kind == "axis-angle":
+            axes = unit_rows(np.array([specs[i][1] for i in idx]))
+            out[idx] = axis_angle_rows(axes, np.array([specs[i][2] for i in idx]))
+        elif kind == "euler":
+            out[idx] = euler_rows(np.array([specs[i][1] for i in idx]), seq)
+        elif kind == "quaternion":
+            out[idx] = quaternion_rows(np.array([specs[i][1] for i in idx]))
+        else:
+            out[idx] = nearest_rotation_rows(np.array([specs[i][1] for i in idx]))
+    return out
 
 
 # ----------------------------------------------------------------------------------------

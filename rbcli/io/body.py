@@ -24,6 +24,7 @@ from rbcli.core.inertia import combine, remember_mass_props, tensor_problem
 from rbcli.errors import InputError, Location
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io.placing import BATCH, Pending, dims_of, finish
 from rbcli.model import Body, Part, Shaft
 
 #: largest magnitude accepted for any number in a body file (SI); the Earth's mass
@@ -344,7 +345,7 @@ def _rotation(ctx: _Ctx, node: ys.Node) -> tuple:
             return ("quaternion", q)
         mat_node = m.items["matrix"][1]
         mat = _rows(ctx, mat_node, "dimensionless", "rotation matrix")
-        if _clearly_rotation(mat):
+        if rot.surely_rotation(mat):
             return ("matrix", mat)  # rot.from_matrix would accept it: made with the others
         try:
             return ("R", rot.from_matrix(np.array(mat)))
@@ -352,21 +353,6 @@ def _rotation(ctx: _Ctx, node: ys.Node) -> tuple:
             raise ctx.error(mat_node, f"rotation matrix: {exc}") from None
     except ValueError as exc:  # a ValueError not already located
         raise ctx.error(m, str(exc)) from None
-
-
-def _clearly_rotation(rows: list[list[float]]) -> bool:
-    """Whether :func:`rbcli.core.rotation.from_matrix` surely accepts ``rows``: orthonormal
-    to 1e-7 (its tolerance is 1e-6; round-off here is ~1e-16) with det > 0.5. Otherwise the
-    loader calls it at once, for its exact verdict and message."""
-    (a, b, c), (d, e, f), (g, h, i) = rows
-    cols = ((a, d, g), (b, e, h), (c, f, i))
-    for j in range(3):
-        for k in range(j, 3):
-            u, v = cols[j], cols[k]
-            dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-            if not abs(dot - (1.0 if j == k else 0.0)) < 1e-7:
-                return False
-    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) > 0.5
 
 
 def _placement_spec(ctx: _Ctx, m: ys.MapNode) -> tuple[list[float], tuple | None]:
@@ -385,42 +371,11 @@ def _placement_spec(ctx: _Ctx, m: ys.MapNode) -> tuple[list[float], tuple | None
     return at, spec
 
 
-def _rotations(specs: list) -> np.ndarray:
-    """The (n, 3, 3) rotation matrices of the specs of :func:`_placement_spec`, made per
-    kind for all the parts at once (``rot.*_rows``: bit for bit the one-part results).
-
-    A spec is None (no rotation), ``("axis", direction)``, ``("axis-angle", axis, angle)``,
-    ``("euler", angles, seq)``, ``("quaternion", q)``, ``("matrix", rows)`` (accepted by
-    :func:`_clearly_rotation`) or ``("R", matrix)``.
-    """
-    out = np.empty((len(specs), 3, 3))
-    out[:] = np.eye(3)
-    groups: dict = {}
-    for i, spec in enumerate(specs):
-        if spec is not None:
-            key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
-            groups.setdefault(key, []).append(i)
-    for (kind, seq), idx in groups.items():
-        if kind == "R":
-            out[idx] = [specs[i][1] for i in idx]
-        elif kind == "axis":
-            out[idx] = rot.axis_to_z_rows(rot.unit_rows(np.array([specs[i][1] for i in idx])))
-        elif kind == "axis-angle":
-            axes = rot.unit_rows(np.array([specs[i][1] for i in idx]))
-            out[idx] = rot.axis_angle_rows(axes, np.array([specs[i][2] for i in idx]))
-        elif kind == "euler":
-            out[idx] = rot.euler_rows(np.array([specs[i][1] for i in idx]), seq)
-        elif kind == "quaternion":
-            out[idx] = rot.quaternion_rows(np.array([specs[i][1] for i in idx]))
-        else:
-            out[idx] = rot.nearest_rotation_rows(np.array([specs[i][1] for i in idx]))
-    return out
-
-
 def _placement(ctx: _Ctx, m: ys.MapNode) -> tuple[np.ndarray, np.ndarray]:
-    """A part's ``at`` (m) and rotation matrix, for the parts placed one by one."""
+    """A part's ``at`` (m) and rotation matrix, for the parts placed one by one (the
+    primitives are placed in batches: :mod:`rbcli.io.placing`)."""
     at, spec = _placement_spec(ctx, m)
-    return np.array(at), _rotations([spec])[0]
+    return np.array(at), rot.from_specs([spec])[0]
 
 
 # --------------------------------------------------------------------------- parts
@@ -508,9 +463,9 @@ def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
         if not _is_include(item):
             ctx.session.spend(ctx, item, 1)
         out.extend(_part(ctx, item, i, names, known, prefix))
-        if len(out) - done >= _BATCH:
-            done = len(_finish(out, done))
-    return _finish(out, done)
+        if len(out) - done >= BATCH:
+            done = len(finish(out, done))
+    return finish(out, done)
 
 
 def _is_include(node: ys.Node) -> bool:
@@ -521,8 +476,8 @@ def _is_include(node: ys.Node) -> bool:
 
 
 def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list:
-    """The parts of one entry of ``parts``: a primitive as a :class:`_Pending` (placed by
-    :func:`_finish` with all the others), the others as finished :class:`Part` s."""
+    """The parts of one entry of ``parts``: a primitive as a :class:`Pending` (placed by
+    :func:`rbcli.io.placing.finish` with others), the others as finished :class:`Part` s."""
     m = _mapping(ctx, node, f"part {index + 1}")
     if "shape" not in m.items:
         raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
@@ -564,27 +519,7 @@ def _primitive_keys(shape: str) -> tuple:
     return _PRIMITIVE_KEYS[shape]
 
 
-@dataclass(slots=True)
-class _Pending:
-    """A checked primitive part not yet placed: :func:`_finish` places all of them at once
-    (``at + R com``, ``R (mass U) Rᵀ``, stacked: the same numbers as one by one)."""
-
-    name: str
-    shape: str
-    mass: float
-    subtract: bool
-    measure: float | None
-    measure_kind: str
-    radius: float | None
-    where: Location
-    at: list
-    spec: tuple | None
-    com: object  # the local com: a 3-tuple or (3,) array
-    unit_inertia: object  # the 3 diagonal entries, or a (3, 3) array
-    dims: tuple
-
-
-def _primitive(ctx, m, shape, name, prefix, known, what) -> _Pending:
+def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
     info = shp.SHAPES[shape]
     keys, key_set, diameters, kinds = _primitive_keys(shape)
     items = m.items
@@ -653,79 +588,11 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> _Pending:
         raise ctx.error(m, f"{what} has no mass")
     known[name] = _Known(density if measure_kind != "point" else None, measure_kind)
     mark = m.mark
-    return _Pending(
+    return Pending(
         prefix + name, shape, float(mass), _subtract(ctx, m), measure, measure_kind,
         info.radius(params), Location(ctx.file, mark.line, mark.col), at, spec, geo.com,
-        geo.unit_inertia, _dims(params),
+        geo.unit_inertia, dims_of(params),
     )
-
-
-def _dims(params: dict) -> tuple:
-    """The drawing's description of a primitive part: its parameters (m) as
-    :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
-    dims = []
-    for k, v in params.items():
-        if isinstance(v, list):  # size, semi_axes (n,), vertices (3, 3)
-            v = tuple(tuple(r) for r in v) if isinstance(v[0], list) else tuple(v)
-        elif not isinstance(v, bool):
-            v = float(v)  # type: ignore[arg-type]
-        dims.append((k, v))
-    return tuple(dims)
-
-
-#: primitives placed per batch: large enough for numpy to pay, small enough that the
-#: batch's arrays and pending parts add little to the peak memory of a large body
-_BATCH = 4096
-
-
-def _finish(items: list, start: int = 0) -> list[Part]:
-    """``items`` with every :class:`_Pending` of ``items[start:]`` replaced by its placed
-    :class:`Part` (in place).
-
-    The primitives are placed together: their rotations per kind
-    (:func:`_rotations`), ``com = at + R c`` and ``J = R (m U) Rᵀ`` as stacked matrix
-    products, which give the same numbers as one product per part. The parts' arrays are
-    rows of a few shared arrays (the outlines' read-only ones).
-    """
-    from rbcli.model import Outline
-
-    pending = [p for p in items[start:] if p.__class__ is _Pending]
-    if not pending:
-        return items
-    n = len(pending)
-    dims = [p.dims for p in pending]
-    ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), not a view (see _frozen)
-    Rs = _rotations([p.spec for p in pending])
-    local_coms = np.array([p.com for p in pending], dtype=float).reshape(n, 3)
-    U = np.zeros((n, 3, 3))
-    diag = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is tuple]
-    if diag:
-        d = np.array([pending[i].unit_inertia for i in diag], dtype=float).reshape(-1, 3)
-        for j in range(3):
-            U[diag, j, j] = d[:, j]
-    if len(diag) < n:
-        full = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is not tuple]
-        U[full] = [pending[i].unit_inertia for i in full]
-    masses = np.array([p.mass for p in pending], dtype=float)
-    del pending  # each one goes when its Part replaces it (the peak memory of a large body)
-    coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
-    Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
-    axes = Rs[:, :, 2].copy()
-    ats.setflags(write=False)
-    Rs.setflags(write=False)
-    i = 0
-    for k in range(start, len(items)):
-        p = items[k]
-        if p.__class__ is not _Pending:
-            continue
-        items[k] = Part(
-            name=p.name, shape=p.shape, mass=p.mass, subtract=p.subtract, com=coms[i],
-            inertia_com=Js[i], measure=p.measure, measure_kind=p.measure_kind,
-            radius=p.radius, axis=axes[i], where=p.where,
-            outline=Outline(p.shape, dims[i], ats[i], Rs[i]),
-        )
-        i += 1
-    return items
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
@@ -1050,7 +917,7 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
         # one-part shorthand: the mapping is the part (plus the body's units/version)
         items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
         stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
-        parts = _finish(_part(ctx, stripped, 0, set(), {}, ""))
+        parts = finish(_part(ctx, stripped, 0, set(), {}, ""))
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
     ctx.inputs = list(dict.fromkeys(ctx.inputs))
