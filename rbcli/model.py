@@ -152,6 +152,10 @@ class Body:
         empty for standard input or ``-e`` unless those include files or meshes
     units : dict[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its bare
         numbers mean; empty for SI
+
+    The loader also leaves the body's combined mass properties on it (not a field: a
+    ``dataclasses.replace`` with other parts does not carry them); commands read them with
+    :func:`rbcli.core.inertia.body_mass_props` instead of combining the parts again.
     """
 
     name: str

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -197,3 +198,50 @@ def test_combine_is_the_loop_it_replaced(generated):
     assert mp.mass == total
     assert np.array_equal(mp.com, origin + com_rel)
     assert np.array_equal(mp.inertia_com, J)
+
+
+def test_a_body_with_other_parts_does_not_reuse_the_kept_mass_properties(generated):
+    import dataclasses
+
+    body, _oracle_result = generated
+    half = dataclasses.replace(body, parts=body.parts[:500])
+    mp = body_mass_props(half)
+    again = combine(body.parts[:500])
+    assert mp.mass == again.mass and np.array_equal(mp.inertia_com, again.inertia_com)
+    assert mp.mass != body_mass_props(body).mass
+
+
+def test_the_batch_size_does_not_change_a_number(monkeypatch):
+    """Parts placed 7 at a time, or all at once, are the same to the last bit (numpy makes
+    the same BLAS call for each matrix of a stack)."""
+    import rbcli.io.body as io_body
+
+    text = _body_text(200)
+    whole = load_text(text, "<bench>", ROOT)
+    monkeypatch.setattr(io_body, "BATCH", 7)
+    small = load_text(text, "<bench>", ROOT)
+    for a, b in zip(whole.parts, small.parts, strict=True):
+        assert a.name == b.name and a.mass == b.mass
+        for x, y in ((a.com, b.com), (a.inertia_com, b.inertia_com), (a.axis, b.axis),
+                     (a.outline.at, b.outline.at), (a.outline.R, b.outline.R)):
+            assert np.array_equal(x, y), a.name
+
+
+@pytest.mark.parametrize("eps", [0.0, 3e-8, 4e-7, 2e-6])
+def test_a_typed_rotation_matrix_is_judged_as_from_matrix_judges_it(eps):
+    """The loader's quick check (rot.surely_rotation) only ever says yes when from_matrix
+    would: near the tolerance (1e-6) it leaves the verdict, and the message, to it."""
+    from rbcli.core import rotation as rot
+    from rbcli.errors import InputError
+
+    c, s = math.cos(0.3), math.sin(0.3)
+    m = [[c * (1 + eps), -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]
+    text = f"{{shape: point, mass: 1, at: [1, 2, 3], rotate: {{matrix: {m!r}}}}}"
+    try:
+        R = rot.from_matrix(np.array(m))
+    except ValueError as exc:
+        with pytest.raises(InputError, match=f"rotation matrix: {re.escape(str(exc))}"):
+            load_text(text, "<t>", ROOT)
+        return
+    body = load_text(text, "<t>", ROOT)
+    assert np.array_equal(body.parts[0].outline.R, R)
