@@ -13,13 +13,24 @@ import numpy as np
 from rbcli.errors import Location
 
 
-def _frozen(a, dtype=float) -> np.ndarray:
+_FLOAT = np.dtype(float)
+
+
+def _frozen(a, dtype=_FLOAT) -> np.ndarray:
+    """``a`` as a read-only array: itself when it is one already (its data cannot change:
+    no writable array shares it), else a private read-only copy."""
+    if a.__class__ is np.ndarray and not a.flags.writeable and a.dtype == dtype:
+        base = a
+        while base.base is not None and base.base.__class__ is np.ndarray:
+            base = base.base
+        if not base.flags.writeable:
+            return a
     a = np.array(a, dtype=dtype)  # a private copy
     a.setflags(write=False)
     return a
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Outline:
     """What a drawing of a part needs: its shape, its local dimensions and its placement.
 
@@ -54,11 +65,14 @@ class Outline:
     faces: np.ndarray | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "at", _frozen(self.at))
-        object.__setattr__(self, "R", _frozen(self.R))
+        at, R = _frozen(self.at), _frozen(self.R)
+        if at is not self.at:
+            object.__setattr__(self, "at", at)
+        if R is not self.R:
+            object.__setattr__(self, "R", R)
         if self.vertices is not None:
             object.__setattr__(self, "vertices", _frozen(self.vertices))
-            object.__setattr__(self, "faces", _frozen(self.faces, np.int64))
+            object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
 
     def placed(self, at, R) -> Outline:
         """The same outline moved by ``x -> at + R x`` (as an included file's parts are)."""
@@ -67,7 +81,7 @@ class Outline:
                        self.vertices, self.faces)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Part:
     """One part of a body, placed in the body frame.
 
@@ -138,6 +152,10 @@ class Body:
         empty for standard input or ``-e`` unless those include files or meshes
     units : dict[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its bare
         numbers mean; empty for SI
+
+    The loader also leaves the body's combined mass properties on it (not a field: a
+    ``dataclasses.replace`` with other parts does not carry them); commands read them with
+    :func:`rbcli.core.inertia.body_mass_props` instead of combining the parts again.
     """
 
     name: str

@@ -111,14 +111,57 @@ def part_rows(body: Any) -> tuple[dict, ...]:
     (m²) and triangles."""
     rows = []
     for p in body.parts:
-        row: dict = {"name": p.name, "shape": p.shape, "mass": p.signed_mass, "com": p.com}
         if p.subtract:
-            row["subtract"] = True
-        for key in ("volume", "area", "triangles"):
-            if key in p.extra:
-                row[key] = p.extra[key]
+            row: dict = {"name": p.name, "shape": p.shape, "mass": -p.mass, "com": p.com, "subtract": True}
+        else:
+            row = {"name": p.name, "shape": p.shape, "mass": p.mass, "com": p.com}
+        if p.extra:
+            for key in ("volume", "area", "triangles"):
+                if key in p.extra:
+                    row[key] = p.extra[key]
         rows.append(row)
     return tuple(rows)
+
+
+def _with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
+    """``jsonable(out | {"parts": list(parts)})``, the rows (one a part: 100 000 for a
+    large body) converted here in one pass: numbers are checked finite and -0.0 written
+    0.0, as jsonable does. Anything else, or a number that is not finite, goes through
+    jsonable itself (its error names the row)."""
+    from rbcli.io.body import gc_paused
+
+    with gc_paused():  # ~2 objects a part, no cycles: the collector would rescan the body
+        return _rows_json(out, parts)
+
+
+def _rows_json(out: dict, parts: tuple[dict, ...]) -> dict:
+    import math
+
+    rows = []
+    for row in parts:
+        new = {}
+        for key, v in row.items():
+            cls = v.__class__
+            if cls is float:
+                if not math.isfinite(v):
+                    break
+                new[key] = v if v != 0.0 else 0.0
+            elif cls is str or cls is bool or cls is int:
+                new[key] = v
+            elif hasattr(v, "tolist") and v.ndim == 1:
+                xs = v.tolist()
+                if xs.__class__ is not list or not all(x.__class__ is float and math.isfinite(x) for x in xs):
+                    break
+                new[key] = [x if x != 0.0 else 0.0 for x in xs]
+            else:
+                break
+        else:
+            rows.append(new)
+            continue
+        return jsonable({**out, "parts": list(parts)})
+    done = jsonable(out)
+    done["parts"] = rows
+    return done
 
 
 def _inertia_at(mp: Any, ref: Reference) -> tuple[Any, Any]:
@@ -194,9 +237,12 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
 
     from rbcli.core.scale import SPEED_OF_SOUND, body_scale
 
+    far_point = ref.param == "about" and ref.point is not None
+    if not far_point and omega is None:
+        return ()
     sc = body_scale(body.parts)
     out = []
-    if ref.param == "about" and ref.point is not None:
+    if far_point:
         d = sc.far(ref.point)
         if d is not None:
             out.append(u.far("--about", "the point", d, sc.size))
@@ -269,8 +315,7 @@ class InertiaResult(Result):
             out["kinetic_energy"] = self.kinetic_energy
             out["angle_L_omega_deg"] = self.angle_L_omega_deg
         out["name"] = self.name
-        out["parts"] = list(self.parts)
-        return jsonable(out)
+        return _with_parts(out, self.parts)
 
     def inertial(self, principal: bool = False) -> Any:
         """The numbers of the body's ``<inertial>`` element for URDF, SDF or MJCF.
@@ -303,7 +348,7 @@ def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
 
     from rbcli.core import inertia as ci
 
-    mp = ci.combine(body.parts)
+    mp = ci.body_mass_props(body)
     point = options.reference.resolve(mp)
     try:
         res = ci.inertia_report(
@@ -313,12 +358,16 @@ def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
     except ci.InputOverflow as exc:
         raise ParamError(options.reference.param if exc.param == "reference" else exc.param,
                          str(exc)) from None
+    from rbcli.io.body import gc_paused
+
+    with gc_paused():
+        rows = part_rows(body)
     return InertiaResult(
         name=body.name, mass=res.mass, com=res.com, reference=res.reference,
         reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,
         axis=res.axis, axis_moment=res.axis_moment, omega=res.omega,
         angular_momentum=res.angular_momentum, kinetic_energy=res.kinetic_energy,
-        angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body), warnings=options.warnings)
+        angle_L_omega_deg=res.angle_L_omega_deg, parts=rows, warnings=options.warnings)
 
 
 def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
@@ -436,7 +485,7 @@ class PrincipalResult(Result):
 
     def to_json(self) -> dict[str, Any]:
         """What ``rbcli principal BODY --json`` prints, less ``"file"`` (SI)."""
-        return jsonable({
+        return _with_parts({
             "reference": self.reference,
             "moments": self.moments,
             "axes": snap(self.axes, scale=1.0, rtol=1e-15),
@@ -450,19 +499,22 @@ class PrincipalResult(Result):
             "equivalent_box": self.equivalent_box,
             "equivalent_ellipsoid": self.equivalent_ellipsoid,
             "name": self.name,
-            "parts": list(self.parts),
-        })
+        }, self.parts)
 
 
 def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
     """:func:`principal` with options already parsed."""
-    from rbcli.core.inertia import combine
+    from rbcli.core.inertia import body_mass_props
     from rbcli.core.principal import principal_report
 
-    mp = combine(body.parts)
+    mp = body_mass_props(body)
     point, J = _inertia_at(mp, options.reference)
     pr = principal_report(mp.mass, J, point)
     pa = pr.axes_info
+    from rbcli.io.body import gc_paused
+
+    with gc_paused():
+        rows = part_rows(body)
     return PrincipalResult(
         name=body.name, mass=pr.mass, reference=pr.reference,
         reference_label=options.reference.label, moments=pa.moments, axes=pa.axes,
@@ -470,7 +522,7 @@ def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
         stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
         rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
         equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
-        parts=part_rows(body), warnings=options.warnings)
+        parts=rows, warnings=options.warnings)
 
 
 def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -51,6 +52,10 @@ def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
     return mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
 
 
+#: parts summed per step of :func:`combine`
+_CHUNK = 4096
+
+
 def combine(parts: Iterable[Part]) -> MassProps:
     """Mass properties of the union of ``parts`` (subtracted parts count negative).
 
@@ -62,6 +67,10 @@ def combine(parts: Iterable[Part]) -> MassProps:
     the parts (the mass-weighted mean of the part centres) before the com is known,
     which keeps digits for bodies placed far from the origin.
 
+    The terms are computed for all parts at once and summed in part order, one after
+    the other (``np.add.accumulate``): the same numbers, bit for bit, as adding them in a
+    loop, for 100 000 parts in a fraction of the time.
+
     Raises
     ------
     ValueError
@@ -70,8 +79,10 @@ def combine(parts: Iterable[Part]) -> MassProps:
     parts = list(parts)
     if not parts:
         raise ValueError("the body has no parts")
-    m = np.array([p.signed_mass for p in parts])
-    c = np.array([p.com for p in parts], dtype=float)
+    n = len(parts)
+    sign = np.array([-1.0 if p.subtract else 1.0 for p in parts])
+    m = sign * np.array([p.mass for p in parts], dtype=float)
+    c = np.array([p.com for p in parts], dtype=float).reshape(n, 3)
     total = float(m.sum())
     if not total > 0.0:
         raise ValueError(
@@ -85,12 +96,45 @@ def combine(parts: Iterable[Part]) -> MassProps:
     com_rel = (m @ rel) / total
     d = rel - com_rel
     J = np.zeros((3, 3))
-    for p, mi, di in zip(parts, m, d):
-        sign = -1.0 if p.subtract else 1.0
-        J += sign * np.asarray(p.inertia_com, dtype=float)
-        J += mi * (float(di @ di) * np.eye(3) - np.outer(di, di))
+    for a in range(0, n, _CHUNK):  # in chunks: a bounded memory for any number of parts
+        b = min(a + _CHUNK, n)
+        k = b - a
+        dk, mk = d[a:b], m[a:b]
+        # terms[0] = the sum so far, then per part: sᵢ Jᵢ, and mᵢ (dᵢ·dᵢ E − dᵢ dᵢᵀ)
+        terms = np.empty((2 * k + 1, 3, 3))
+        terms[0] = J
+        terms[1::2] = sign[a:b, None, None] * np.array(
+            [p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
+        terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * np.eye(3)
+                                           - dk[:, :, None] * dk[:, None, :])
+        J = np.add.accumulate(terms, axis=0)[-1]
     J = 0.5 * (J + J.T)
     return MassProps(total, origin + com_rel, J)
+
+
+def body_mass_props(body: Any) -> MassProps:
+    """:func:`combine` of ``body.parts``, computed once per body.
+
+    The body loader leaves the mass properties it computed (to check the body) on the
+    :class:`rbcli.model.Body`; a body made otherwise gets them on first use. The result's
+    arrays are the caller's own copies.
+    """
+    cached = getattr(body, "_mass_props", None)
+    if cached is not None and cached[0] is body.parts:
+        mp = cached[1]
+    else:
+        mp = combine(body.parts)
+        remember_mass_props(body, mp)
+    return MassProps(mp.mass, mp.com.copy(), mp.inertia_com.copy())
+
+
+def remember_mass_props(body: Any, mp: MassProps) -> None:
+    """Keep ``mp`` (the :func:`combine` of ``body.parts``) on ``body`` for
+    :func:`body_mass_props` (not a field: ``dataclasses.replace`` does not carry it)."""
+    try:
+        object.__setattr__(body, "_mass_props", (body.parts, mp))
+    except (AttributeError, TypeError):  # a body-like object without a __dict__
+        pass
 
 
 def part_contributions(parts: Iterable[Part], com: np.ndarray) -> np.ndarray:

@@ -36,6 +36,15 @@ __all__ = [
     "euler",
     "quaternion",
     "from_matrix",
+    "euler_intrinsic",
+    "unit_rows",
+    "axis_to_z_rows",
+    "axis_angle_rows",
+    "euler_rows",
+    "quaternion_rows",
+    "nearest_rotation_rows",
+    "surely_rotation",
+    "from_specs",
     "rotate_tensor",
     "quat_multiply",
     "quat_conjugate",
@@ -212,6 +221,32 @@ _EULER_HELP = (
 )
 
 
+_INTRINSIC: dict[str, bool] = {}  # the valid sequences seen, for euler_intrinsic
+
+
+def euler_intrinsic(seq: str) -> bool:
+    """Whether the Euler sequence ``seq`` is intrinsic (``XYZ`` letters) or extrinsic
+    (``xyz``); ValueError (saying what is allowed) for an invalid sequence."""
+    known = _INTRINSIC.get(seq) if seq.__class__ is str else None
+    if known is not None:
+        return known
+    if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
+        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
+    if set(seq) <= set("xyz"):
+        intrinsic = False
+    elif set(seq) <= set("XYZ"):
+        intrinsic = True
+    else:
+        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
+    if any(seq[i] == seq[i + 1] for i in range(len(seq) - 1)):
+        raise ValueError(
+            f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
+            f"use {_EULER_HELP}"
+        )
+    _INTRINSIC[seq] = intrinsic
+    return intrinsic
+
+
 def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndarray:
     """The rotation of an Euler-angle sequence, exactly as scipy defines it.
 
@@ -247,19 +282,7 @@ def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndar
     standard equivalence (Shuster, "A survey of attitude representations", 1993, §2).
     The sequence rules are scipy's.
     """
-    if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
-        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
-    if set(seq) <= set("xyz"):
-        intrinsic = False
-    elif set(seq) <= set("XYZ"):
-        intrinsic = True
-    else:
-        raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
-    if any(seq[i] == seq[i + 1] for i in range(len(seq) - 1)):
-        raise ValueError(
-            f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
-            f"use {_EULER_HELP}"
-        )
+    intrinsic = euler_intrinsic(seq)
     try:
         a = np.asarray(angles_rad, dtype=float)
     except (TypeError, ValueError):
@@ -408,6 +431,167 @@ def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N8
     out = r @ t @ r.T
     if np.array_equal(t, t.T):
         out = 0.5 * (out + out.T)
+    return out
+
+
+# ----------------------------------------------------------------------------------------
+# many rotations at once (the body loader: one call per kind for all the parts)
+#
+# Each ``*_rows`` function returns the (k, 3, 3) stack of what its one-rotation namesake
+# returns for each row, bit for bit: the same elementwise operations in the same order,
+# the dot products by ``np.vecdot`` (the same BLAS dot as ``v @ v``), products of 3x3
+# matrices by stacked ``@`` (the same BLAS call per matrix), and sin, cos, hypot from
+# :mod:`math` as the single versions take them (tests/test_rotation_rows.py checks it).
+# Inputs are float arrays already checked finite and non-zero by the caller.
+# ----------------------------------------------------------------------------------------
+
+
+def unit_rows(v: np.ndarray) -> np.ndarray:
+    """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
+    w = v / np.max(np.abs(v), axis=1)[:, None]
+    return w / np.sqrt(np.vecdot(w, w))[:, None]
+
+
+def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
+    k = len(n)
+    cross = np.zeros((k, 3, 3))
+    cross[:, 0, 1] = -n[:, 2]
+    cross[:, 0, 2] = n[:, 1]
+    cross[:, 1, 0] = n[:, 2]
+    cross[:, 1, 2] = -n[:, 0]
+    cross[:, 2, 0] = -n[:, 1]
+    cross[:, 2, 1] = n[:, 0]
+    return (c[:, None, None] * np.eye(3) + s[:, None, None] * cross
+            + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
+
+
+def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
+    """:func:`axis_to_z` of each row of ``directions`` (k, 3)."""
+    d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
+    out = np.empty((len(d), 3, 3))
+    cross = np.zeros_like(d)
+    cross[:, 0] = -d[:, 1]
+    cross[:, 1] = d[:, 0]
+    along = np.max(np.abs(cross), axis=1) == 0.0  # exactly +z or -z
+    out[along] = np.eye(3)
+    out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
+    ok = ~along
+    if ok.any():
+        dd = d[ok]
+        n = unit_rows(cross[ok])
+        c = dd[:, 2]
+        s = np.array([math.hypot(x, y) for x, y in dd[:, :2].tolist()]).reshape(-1)
+        one_minus_c = np.where(c > 0, s * s / np.where(c > 0, 1.0 + c, 1.0), 1.0 - c)
+        out[ok] = _rodrigues_rows(n, c, s, one_minus_c)
+    return out
+
+
+def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
+    """:func:`axis_angle` of each row of ``axes`` (k, 3) with its angle (k,)."""
+    n = unit_rows(np.asarray(axes, dtype=float).reshape(-1, 3))
+    theta = np.asarray(angles_rad, dtype=float).reshape(-1).tolist()
+    half = np.array([math.sin(t / 2.0) for t in theta]).reshape(-1)
+    c = np.array([math.cos(t) for t in theta]).reshape(-1)
+    s = np.array([math.sin(t) for t in theta]).reshape(-1)
+    return _rodrigues_rows(n, c, s, 2.0 * half * half)
+
+
+def _elementary_rows(axis: str, angles: list[float]) -> np.ndarray:
+    e = np.zeros((len(angles), 3, 3))
+    c = np.array([math.cos(a) for a in angles]).reshape(-1)
+    s = np.array([math.sin(a) for a in angles]).reshape(-1)
+    i, j = {"x": (1, 2), "y": (2, 0), "z": (0, 1)}[axis]
+    e[:, 3 - i - j, 3 - i - j] = 1.0
+    e[:, i, i] = c
+    e[:, j, j] = c
+    e[:, i, j] = -s
+    e[:, j, i] = s
+    return e
+
+
+def euler_rows(angles_rad: np.ndarray, seq: str) -> np.ndarray:
+    """:func:`euler` of each row of ``angles_rad`` (k, len(seq)), one valid sequence."""
+    intrinsic = euler_intrinsic(seq)
+    a = np.asarray(angles_rad, dtype=float).reshape(-1, len(seq))
+    r = np.zeros((len(a), 3, 3))
+    r[:] = np.eye(3)
+    for col, letter in enumerate(seq.lower()):
+        e = _elementary_rows(letter, a[:, col].tolist())
+        r = r @ e if intrinsic else e @ r
+    return r
+
+
+def quaternion_rows(q_wxyz: np.ndarray) -> np.ndarray:
+    """:func:`quaternion` of each row of ``q_wxyz`` (k, 4)."""
+    u = unit_rows(np.asarray(q_wxyz, dtype=float).reshape(-1, 4))
+    w, x, y, z = u[:, 0], u[:, 1], u[:, 2], u[:, 3]
+    R = np.empty((len(u), 3, 3))
+    R[:, 0, 0] = 1.0 - 2.0 * (y * y + z * z)
+    R[:, 0, 1] = 2.0 * (x * y - w * z)
+    R[:, 0, 2] = 2.0 * (x * z + w * y)
+    R[:, 1, 0] = 2.0 * (x * y + w * z)
+    R[:, 1, 1] = 1.0 - 2.0 * (x * x + z * z)
+    R[:, 1, 2] = 2.0 * (y * z - w * x)
+    R[:, 2, 0] = 2.0 * (x * z - w * y)
+    R[:, 2, 1] = 2.0 * (y * z + w * x)
+    R[:, 2, 2] = 1.0 - 2.0 * (x * x + y * y)
+    return R
+
+
+def nearest_rotation_rows(m: np.ndarray) -> np.ndarray:
+    """The result of :func:`from_matrix` for each matrix of ``m`` (k, 3, 3), which the
+    caller has already accepted (orthonormal within the tolerance, det > 0)."""
+    u, _, vt = np.linalg.svd(np.asarray(m, dtype=float).reshape(-1, 3, 3))
+    return u @ vt
+
+
+def surely_rotation(rows: list[list[float]]) -> bool:
+    """Whether :func:`from_matrix` surely accepts the 3x3 matrix ``rows`` (lists of floats)
+    with its default tolerance: orthonormal to 1e-7 (the tolerance is 1e-6; round-off here
+    is ~1e-16) with det > 0.5. When not, call :func:`from_matrix` for its exact verdict and
+    message."""
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    cols = ((a, d, g), (b, e, h), (c, f, i))
+    for j in range(3):
+        for k in range(j, 3):
+            u, v = cols[j], cols[k]
+            dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+            if not abs(dot - (1.0 if j == k else 0.0)) < 1e-7:
+                return False
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) > 0.5
+
+
+def from_specs(specs: list) -> np.ndarray:
+    """The (n, 3, 3) rotations of ``n`` checked specs, made per kind for all at once
+    (the ``*_rows`` functions: bit for bit the one-rotation results).
+
+    A spec is None (no rotation), ``("axis", direction)`` (:func:`axis_to_z` of the unit
+    direction), ``("axis-angle", axis, angle_rad)`` (:func:`axis_angle` of the unit axis),
+    ``("euler", angles_rad, seq)``, ``("quaternion", q_wxyz)``, ``("matrix", rows)`` (one
+    :func:`surely_rotation` accepts) or ``("R", matrix)`` (made already). Vectors are
+    lists of finite floats, not all zero.
+    """
+    out = np.empty((len(specs), 3, 3))
+    out[:] = np.eye(3)
+    groups: dict = {}
+    for i, spec in enumerate(specs):
+        if spec is not None:
+            key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
+            groups.setdefault(key, []).append(i)
+    for (kind, seq), idx in groups.items():
+        if kind == "R":
+            out[idx] = [specs[i][1] for i in idx]
+        elif kind == "axis":
+            out[idx] = axis_to_z_rows(unit_rows(np.array([specs[i][1] for i in idx])))
+        elif kind == "axis-angle":
+            axes = unit_rows(np.array([specs[i][1] for i in idx]))
+            out[idx] = axis_angle_rows(axes, np.array([specs[i][2] for i in idx]))
+        elif kind == "euler":
+            out[idx] = euler_rows(np.array([specs[i][1] for i in idx]), seq)
+        elif kind == "quaternion":
+            out[idx] = quaternion_rows(np.array([specs[i][1] for i in idx]))
+        else:
+            out[idx] = nearest_rotation_rows(np.array([specs[i][1] for i in idx]))
     return out
 
 

@@ -13,7 +13,6 @@ Only numpy.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any, Sequence
 
@@ -60,16 +59,17 @@ class BodyScale:
         return d if d > FAR * self.size else None
 
 
-def part_reach(part: Any) -> float:
-    """m, the radius of the ball that holds ``part`` around its com (see the module)."""
-    J = np.asarray(part.inertia_com, dtype=float)
-    r = math.sqrt(max(1.5 * float(np.trace(J)) / part.mass, 0.0)) if part.mass > 0 else 0.0
-    return max(r, float(part.radius or 0.0))
-
-
 def body_scale(parts: Sequence[Any]) -> BodyScale:
-    """The :class:`BodyScale` of a body's parts (holes left out)."""
+    """The :class:`BodyScale` of a body's parts (holes left out): each part a ball around
+    its com of radius ``max(sqrt(1.5 tr(J) / m), outer radius)`` (see the module)."""
     solid = [p for p in parts if not p.subtract] or list(parts)
+    n = len(solid)
     coms = np.array([p.com for p in solid], dtype=float).reshape(-1, 3)
-    reach = np.array([part_reach(p) for p in solid], dtype=float)[:, None]
+    J = np.array([p.inertia_com for p in solid], dtype=float).reshape(n, 3, 3)
+    mass = np.array([p.mass for p in solid], dtype=float)
+    radius = np.array([float(p.radius or 0.0) for p in solid]).reshape(n)
+    trace = J[:, 0, 0] + J[:, 1, 1] + J[:, 2, 2]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.sqrt(np.maximum(1.5 * trace / np.where(mass > 0, mass, 1.0), 0.0))
+    reach = np.maximum(np.where(mass > 0, r, 0.0), radius)[:, None]
     return BodyScale((coms - reach).min(axis=0), (coms + reach).max(axis=0))

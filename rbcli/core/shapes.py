@@ -29,7 +29,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-__all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "Kind", "SHAPES", "IO_SHAPES", "geometry"]
+__all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "Kind", "SHAPES", "IO_SHAPES", "geometry",
+           "local_geometry"]
 
 
 class ShapeError(ValueError):
@@ -275,6 +276,8 @@ IO_SHAPES = {
 
 
 def _number(param: str, value: Any, label: str | None = None) -> float:
+    if value.__class__ is float and math.isfinite(value):  # the common case, quickly
+        return value
     label = label or param
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ShapeError(param, f"{label} must be a number, not {type(value).__name__}")
@@ -300,6 +303,8 @@ def _non_negative(param: str, value: Any) -> float:
 
 def _components(param: str, value: Any, n: int, label: str | None = None) -> list[Any]:
     """The ``n`` items of a vector parameter; ``label`` names it in the message."""
+    if value.__class__ is list and len(value) == n:  # the common case, quickly
+        return value
     label = label or param
     if isinstance(value, (str, bytes, Mapping)):
         raise ShapeError(param, f"{label} must be a list of {n} numbers")
@@ -312,7 +317,13 @@ def _components(param: str, value: Any, n: int, label: str | None = None) -> lis
     return items
 
 
-def _positive_vector(param: str, value: Any, n: int) -> np.ndarray:
+def _positive_vector(param: str, value: Any, n: int) -> list[float]:
+    if value.__class__ is list and len(value) == n:  # the common case, quickly
+        for v in value:
+            if not (v.__class__ is float and 0.0 < v < math.inf):
+                break
+        else:
+            return value
     items = _components(param, value, n)
     out = []
     for i, v in enumerate(items):
@@ -320,7 +331,7 @@ def _positive_vector(param: str, value: Any, n: int) -> np.ndarray:
         if x <= 0:
             raise ShapeError(param, f"{param}[{i}] must be greater than 0 (got {{0}})", (x,))
         out.append(x)
-    return np.array(out)
+    return out
 
 
 def _flag(param: str, value: Any) -> bool:
@@ -340,69 +351,87 @@ def _inner(params: dict[str, Any], radius: float) -> float:
     return r
 
 
-def _diag(x: float, y: float, z: float) -> np.ndarray:
-    return np.diag([x, y, z])
+def _diag(x: float, y: float, z: float) -> tuple[float, float, float]:
+    """A diagonal unit inertia, as its three diagonal entries (:class:`_Raw`)."""
+    return (x, y, z)
 
 
-_ZERO = np.zeros(3)
+_ZERO = (0.0, 0.0, 0.0)
+
+
+class _Raw(NamedTuple):
+    """What a builder returns: a :class:`ShapeGeometry` before its arrays are made
+    (``com`` a 3-tuple or array; ``unit_inertia`` the 3 diagonal entries of a diagonal
+    tensor, or a (3, 3) array)."""
+
+    measure: float
+    measure_kind: str
+    com: Any
+    unit_inertia: Any
 
 
 # ---------------------------------------------------------------------------------------
 # the shapes; each takes the checked dict of parameters (required present, none unknown)
 
 
-def _point(p: dict[str, Any]) -> ShapeGeometry:
-    return ShapeGeometry(1.0, "point", _ZERO, np.zeros((3, 3)))
+def _point(p: dict[str, Any]) -> _Raw:
+    return _Raw(1.0, "point", _ZERO, _diag(0.0, 0.0, 0.0))
 
 
-def _rod(p: dict[str, Any]) -> ShapeGeometry:
+def _rod(p: dict[str, Any]) -> _Raw:
     # thin rod of length L along z, centred: Ixx = Iyy = mL²/12 (Meriam & Kraige B).
     length = _positive("length", p["length"])
     i = length * length / 12.0
-    return ShapeGeometry(length, "length", _ZERO, _diag(i, i, 0.0))
+    return _Raw(length, "length", _ZERO, _diag(i, i, 0.0))
 
 
-def _ring(p: dict[str, Any]) -> ShapeGeometry:
+def _ring(p: dict[str, Any]) -> _Raw:
     # thin hoop: all mass at distance R from z: Izz = mR²; Ixx = Iyy = Izz/2 by the
     # perpendicular-axis theorem.
     r = _positive("radius", p["radius"])
-    return ShapeGeometry(2.0 * math.pi * r, "length", _ZERO, _diag(r * r / 2, r * r / 2, r * r))
+    return _Raw(2.0 * math.pi * r, "length", _ZERO, _diag(r * r / 2, r * r / 2, r * r))
 
 
-def _disk(p: dict[str, Any]) -> ShapeGeometry:
+def _disk(p: dict[str, Any]) -> _Raw:
     # annulus R > r >= 0: Izz = m(R² + r²)/2, Ixx = Iyy = Izz/2 (perpendicular axes).
     big = _positive("radius", p["radius"])
     small = _inner(p, big)
     area = math.pi * (big - small) * (big + small)
     izz = (big * big + small * small) / 2.0
-    return ShapeGeometry(area, "area", _ZERO, _diag(izz / 2, izz / 2, izz))
+    return _Raw(area, "area", _ZERO, _diag(izz / 2, izz / 2, izz))
 
 
-def _box_geometry(a: float, b: float, c: float) -> np.ndarray:
+def _box_geometry(a: float, b: float, c: float) -> tuple[float, float, float]:
     # cuboid a x b x c about its centroid: Ixx = m(b² + c²)/12, ...
     return _diag((b * b + c * c) / 12.0, (a * a + c * c) / 12.0, (a * a + b * b) / 12.0)
 
 
-def _plate(p: dict[str, Any]) -> ShapeGeometry:
+def _plate(p: dict[str, Any]) -> _Raw:
     a, b = _positive_vector("size", p["size"], 2)
     t = p.get("thickness")
     t = 0.0 if t is None else _non_negative("thickness", t)
     if t > 0:
-        return ShapeGeometry(a * b * t, "volume", _ZERO, _box_geometry(a, b, t))
-    return ShapeGeometry(a * b, "area", _ZERO, _box_geometry(a, b, 0.0))
+        return _Raw(a * b * t, "volume", _ZERO, _box_geometry(a, b, t))
+    return _Raw(a * b, "area", _ZERO, _box_geometry(a, b, 0.0))
 
 
-def _triangle(p: dict[str, Any]) -> ShapeGeometry:
+def _triangle(p: dict[str, Any]) -> _Raw:
     rows = _components("vertices", p["vertices"], 3)
-    v = np.empty((3, 3))
-    for i, row in enumerate(rows):
-        for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]")):
-            v[i, j] = _number("vertices", x, f"vertices[{i}][{j}]")
-    centroid = v.mean(axis=0)
-    d = v - centroid
-    twice_area_vec = np.cross(v[1] - v[0], v[2] - v[0])
-    twice_area = float(np.linalg.norm(twice_area_vec))
-    longest = max(float(np.linalg.norm(v[i] - v[j])) for i, j in ((0, 1), (1, 2), (0, 2)))
+    v = [[_number("vertices", x, f"vertices[{i}][{j}]")
+          for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]"))]
+         for i, row in enumerate(rows)]
+    # in floats, in the order numpy's mean, cross and norm take them (the same numbers):
+    # mean = (v0 + v1 + v2) / 3; |x| = sqrt(x·x) with the dot product numpy's (np.vecdot)
+    centroid = tuple((v[0][k] + v[1][k] + v[2][k]) / 3.0 for k in range(3))
+    d = np.array([[v[i][k] - centroid[k] for k in range(3)] for i in range(3)])
+    (a0, a1, a2), (b0, b1, b2) = ([v[1][k] - v[0][k] for k in range(3)],
+                                  [v[2][k] - v[0][k] for k in range(3)])
+    cross = [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0]
+    edges = [[v[i][k] - v[j][k] for k in range(3)] for i, j in ((0, 1), (1, 2), (0, 2))]
+    x = np.array([cross, *edges])
+    norms = np.sqrt(np.vecdot(x, x)).tolist()
+    twice_area = norms[0]
+    longest = max(norms[1:])
     # Degenerate when the area is round-off compared with the square of the size.
     if not twice_area > 1e-12 * longest * longest:
         raise ShapeError("vertices", "the triangle's vertices are collinear (it has no area)")
@@ -412,15 +441,15 @@ def _triangle(p: dict[str, Any]) -> ShapeGeometry:
     c = d.T @ d / 12.0
     c = 0.5 * (c + c.T)
     inertia = np.trace(c) * np.eye(3) - c
-    return ShapeGeometry(0.5 * twice_area, "area", centroid, inertia)
+    return _Raw(0.5 * twice_area, "area", centroid, inertia)
 
 
-def _box(p: dict[str, Any]) -> ShapeGeometry:
+def _box(p: dict[str, Any]) -> _Raw:
     a, b, c = _positive_vector("size", p["size"], 3)
-    return ShapeGeometry(a * b * c, "volume", _ZERO, _box_geometry(a, b, c))
+    return _Raw(a * b * c, "volume", _ZERO, _box_geometry(a, b, c))
 
 
-def _cylinder(p: dict[str, Any]) -> ShapeGeometry:
+def _cylinder(p: dict[str, Any]) -> _Raw:
     big = _positive("radius", p["radius"])
     length = _positive("length", p["length"])
     shell = _flag("shell", p["shell"]) if p.get("shell") is not None else False
@@ -433,20 +462,20 @@ def _cylinder(p: dict[str, Any]) -> ShapeGeometry:
                 "inner_radius cannot be used with shell: true (a shell is a thin wall at radius)",
             )
         # open thin-walled tube, lateral surface only: Izz = mR²; Ixx = m(R²/2 + L²/12).
-        return ShapeGeometry(
+        return _Raw(
             2.0 * math.pi * big * length, "area", _ZERO,
             _diag(big * big / 2 + l2, big * big / 2 + l2, big * big),
         )
     small = _inner(p, big)
     s2 = big * big + small * small
     # thick tube R > r >= 0: Izz = m(R² + r²)/2; Ixx = m(3(R² + r²) + L²)/12.
-    return ShapeGeometry(
+    return _Raw(
         math.pi * (big - small) * (big + small) * length, "volume", _ZERO,
         _diag(s2 / 4 + l2, s2 / 4 + l2, s2 / 2),
     )
 
 
-def _sphere(p: dict[str, Any]) -> ShapeGeometry:
+def _sphere(p: dict[str, Any]) -> _Raw:
     big = _positive("radius", p["radius"])
     shell = _flag("shell", p["shell"]) if p.get("shell") is not None else False
     if shell:
@@ -458,7 +487,7 @@ def _sphere(p: dict[str, Any]) -> ShapeGeometry:
             )
         # thin spherical shell: I = (2/3) m R².
         i = 2.0 * big * big / 3.0
-        return ShapeGeometry(4.0 * math.pi * big * big, "area", _ZERO, _diag(i, i, i))
+        return _Raw(4.0 * math.pi * big * big, "area", _ZERO, _diag(i, i, i))
     small = _inner(p, big)
     q = small / big
     # hollow sphere: I = (2/5) m (R⁵ − r⁵)/(R³ − r³). With q = r/R the ratio is
@@ -466,43 +495,43 @@ def _sphere(p: dict[str, Any]) -> ShapeGeometry:
     ratio = (1 + q + q**2 + q**3 + q**4) / (1 + q + q**2)
     i = 0.4 * big * big * ratio
     volume = 4.0 / 3.0 * math.pi * big**3 * (1 - q) * (1 + q + q * q)
-    return ShapeGeometry(volume, "volume", _ZERO, _diag(i, i, i))
+    return _Raw(volume, "volume", _ZERO, _diag(i, i, i))
 
 
-def _hemisphere(p: dict[str, Any]) -> ShapeGeometry:
+def _hemisphere(p: dict[str, Any]) -> _Raw:
     r = _positive("radius", p["radius"])
     # solid hemisphere, flat face on z = 0: com z = 3R/8; about the face centre every
     # axis gives (2/5) mR² (half a sphere); about the com (parallel axes)
     # Ixx = Iyy = (2/5 − 9/64) mR² = (83/320) mR², Izz = (2/5) mR².
     ixx = 83.0 / 320.0 * r * r
-    return ShapeGeometry(
-        2.0 / 3.0 * math.pi * r**3, "volume", np.array([0.0, 0.0, 3.0 * r / 8.0]),
+    return _Raw(
+        2.0 / 3.0 * math.pi * r**3, "volume", (0.0, 0.0, 3.0 * r / 8.0),
         _diag(ixx, ixx, 0.4 * r * r),
     )
 
 
-def _cone(p: dict[str, Any]) -> ShapeGeometry:
+def _cone(p: dict[str, Any]) -> _Raw:
     r = _positive("radius", p["radius"])
     h = _positive("height", p["height"])
     # solid right circular cone, base on z = 0, apex at z = h: com z = h/4;
     # about the com Izz = (3/10) mR², Ixx = Iyy = m(3R²/20 + 3h²/80).
     ixx = 3.0 * r * r / 20.0 + 3.0 * h * h / 80.0
-    return ShapeGeometry(
-        math.pi * r * r * h / 3.0, "volume", np.array([0.0, 0.0, h / 4.0]),
+    return _Raw(
+        math.pi * r * r * h / 3.0, "volume", (0.0, 0.0, h / 4.0),
         _diag(ixx, ixx, 0.3 * r * r),
     )
 
 
-def _ellipsoid(p: dict[str, Any]) -> ShapeGeometry:
+def _ellipsoid(p: dict[str, Any]) -> _Raw:
     a, b, c = _positive_vector("semi_axes", p["semi_axes"], 3)
     # solid ellipsoid: Ixx = m(b² + c²)/5, ...
-    return ShapeGeometry(
+    return _Raw(
         4.0 / 3.0 * math.pi * a * b * c, "volume", _ZERO,
         _diag((b * b + c * c) / 5, (a * a + c * c) / 5, (a * a + b * b) / 5),
     )
 
 
-def _torus(p: dict[str, Any]) -> ShapeGeometry:
+def _torus(p: dict[str, Any]) -> _Raw:
     big = _positive("major_radius", p["major_radius"])
     small = _positive("minor_radius", p["minor_radius"])
     if small > big:
@@ -514,7 +543,7 @@ def _torus(p: dict[str, Any]) -> ShapeGeometry:
         )
     # solid torus (Pappus: volume 2π²Rr²): Izz = m(R² + 3r²/4); Ixx = Iyy = m(R²/2 + 5r²/8).
     ixx = big * big / 2 + 5 * small * small / 8
-    return ShapeGeometry(
+    return _Raw(
         2.0 * math.pi**2 * big * small * small, "volume", _ZERO,
         _diag(ixx, ixx, big * big + 0.75 * small * small),
     )
@@ -535,6 +564,10 @@ _BUILDERS: dict[str, Callable[[dict[str, Any]], ShapeGeometry]] = {
     "ellipsoid": _ellipsoid,
     "torus": _torus,
 }
+
+
+#: each shape's parameters, required then optional (filled on first use)
+_PARAMETERS: dict[str, tuple[str, ...]] = {}
 
 
 def geometry(shape: str, **params: Any) -> ShapeGeometry:
@@ -575,6 +608,26 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     ``(R⁵ − r⁵)/(R³ − r³)`` is evaluated as ``R²(1 + q + … + q⁴)/(1 + q + q²)`` with
     ``q = r/R`` so it stays accurate as the wall gets thin.
     """
+    raw = local_geometry(shape, params)
+    inertia = raw.unit_inertia
+    return ShapeGeometry(raw.measure, raw.measure_kind, raw.com,
+                         np.diag(inertia) if isinstance(inertia, tuple) else inertia)
+
+
+def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:
+    """:func:`geometry` without its arrays, for the body loader (one call a part).
+
+    Returns
+    -------
+    (measure, measure_kind, com, unit_inertia)
+        As :class:`ShapeGeometry`, but ``com`` may be a 3-tuple and ``unit_inertia`` the
+        3-tuple of the diagonal of a diagonal tensor (else a (3, 3) array).
+
+    Raises
+    ------
+    ShapeError
+        As :func:`geometry`.
+    """
     if shape in IO_SHAPES:
         raise ShapeError(
             "shape",
@@ -585,7 +638,7 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     if info is None:
         known = ", ".join([*SHAPES, *IO_SHAPES])
         raise ShapeError("shape", f"unknown shape {shape!r}; the shapes are: {known}")
-    allowed = (*info.required, *info.optional)
+    allowed = _PARAMETERS.get(shape) or _PARAMETERS.setdefault(shape, (*info.required, *info.optional))
     for key in params:
         if key not in allowed:
             what = ", ".join(allowed) if allowed else "none"
@@ -595,4 +648,5 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     for key in info.required:
         if params.get(key) is None:
             raise ShapeError(key, f"shape {shape!r} needs {key!r}")
-    return _BUILDERS[shape](dict(params))
+    return _BUILDERS[shape](params)
+

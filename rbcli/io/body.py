@@ -8,7 +8,6 @@ units must have the right dimension, unknown keys are refused with a
 
 from __future__ import annotations
 
-import difflib
 import os
 import sys
 from contextlib import contextmanager
@@ -19,15 +18,15 @@ import numpy as np
 
 from rbcli.core import rotation as rot
 from rbcli.core import shapes as shp
-from rbcli.core.inertia import combine, tensor_problem
+from rbcli.core.inertia import combine, remember_mass_props, tensor_problem
 from rbcli.errors import InputError, Location
+from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io.fields import HUGE
+from rbcli.io.placing import BATCH, Pending, dims_of, finish
 from rbcli.model import Body, Part, Shaft
 
-#: largest magnitude accepted for any number in a body file (SI); the Earth's mass
-#: (6e24 kg) and moment of inertia (8e37 kg m^2) are well inside.
-HUGE = 1e60
 MAX_INCLUDE_DEPTH = 16
 #: the default budget of a body: its parts, counting every use of an included file's parts
 #: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
@@ -129,192 +128,6 @@ class _Ctx:
         return self.factors[kind]
 
 
-# --------------------------------------------------------------------------- scalars
-
-
-def _suggest(word: str, allowed: tuple[str, ...] | list[str]) -> str:
-    close = difflib.get_close_matches(word, list(allowed), n=1, cutoff=0.6)
-    return f"; did you mean '{close[0]}'?" if close else ""
-
-
-def _check_keys(
-    ctx: _Ctx,
-    node: ys.MapNode,
-    allowed: tuple[str, ...] | list[str],
-    what: str,
-    required: tuple[str, ...] = (),
-) -> None:
-    for key, (kmark, _v) in node.items.items():
-        if key not in allowed:
-            raise ctx.error(
-                kmark,
-                f"unknown key '{key}' in {what}{_suggest(key, allowed)} "
-                f"(allowed: {', '.join(allowed)})",
-            )
-    for key in required:
-        if key not in node.items:
-            raise ctx.error(node, f"{what} needs '{key}'")
-
-
-def _describe(node: ys.Node) -> str:
-    if isinstance(node, ys.MapNode):
-        return "a mapping"
-    if isinstance(node, ys.SeqNode):
-        return "a list"
-    assert isinstance(node, ys.ScalarNode)
-    if node.value is None:
-        return "nothing (null)"
-    if isinstance(node.value, bool):
-        return f"'{node.raw}' (a boolean)"
-    return f"'{node.raw}'"
-
-
-def _mapping(ctx: _Ctx, node: ys.Node, what: str) -> ys.MapNode:
-    if not isinstance(node, ys.MapNode):
-        raise ctx.error(node, f"{what} must be a mapping (key: value), not {_describe(node)}")
-    return node
-
-
-def _number(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> float:
-    """A scalar quantity in SI: a bare number (in the file's units) or a string with a unit."""
-    if not isinstance(node, ys.ScalarNode) or node.value is None or isinstance(node.value, bool):
-        raise ctx.error(node, f"{what} must be a number or a quantity like '30 cm', not {_describe(node)}")
-    value = node.value
-    if isinstance(value, str):
-        try:
-            x = un.to_si(value, kind)
-        except un.UnitError as exc:
-            raise ctx.error(node, f"{what}: {exc}") from None
-    else:
-        factor, _unit = ctx.factor(kind, node)
-        x = float(value) * factor
-    if not np.isfinite(x):
-        raise ctx.error(node, f"{what} must be finite, not {node.raw}")
-    if abs(x) > HUGE:
-        raise ctx.error(node, f"{what} is too large ({node.raw}); numbers are limited to 1e60 in SI units")
-    return float(x)
-
-
-def _vector(ctx: _Ctx, node: ys.Node, kind: str, what: str, n: int | tuple[int, ...] = 3) -> np.ndarray:
-    sizes = (n,) if isinstance(n, int) else n
-    want = " or ".join(str(s) for s in sizes)
-    if not isinstance(node, ys.SeqNode):
-        raise ctx.error(node, f"{what} must be a list of {want} numbers like [1, 0, 0], not {_describe(node)}")
-    if len(node.items) not in sizes:
-        raise ctx.error(node, f"{what} must have {want} components, not {len(node.items)}")
-    return np.array([_number(ctx, item, kind, what) for item in node.items])
-
-
-def _matrix(ctx: _Ctx, node: ys.Node, kind: str, what: str) -> np.ndarray:
-    if not isinstance(node, ys.SeqNode) or len(node.items) != 3:
-        raise ctx.error(node, f"{what} must be a 3x3 matrix: a list of three rows of three numbers")
-    return np.array([_vector(ctx, row, kind, f"a row of {what}") for row in node.items])
-
-
-def _string(ctx: _Ctx, node: ys.Node, what: str) -> str:
-    if not isinstance(node, ys.ScalarNode) or not isinstance(node.value, str):
-        raise ctx.error(node, f"{what} must be a text, not {_describe(node)}")
-    return node.value
-
-
-def _bool(ctx: _Ctx, node: ys.Node, what: str) -> bool:
-    if not isinstance(node, ys.ScalarNode) or not isinstance(node.value, bool):
-        raise ctx.error(node, f"{what} must be true or false, not {_describe(node)}")
-    return node.value
-
-
-def _positive(ctx: _Ctx, node: ys.Node, kind: str, what: str, allow_zero: bool = False) -> float:
-    x = _number(ctx, node, kind, what)
-    if x < 0 or (x == 0 and not allow_zero):
-        raise ctx.error(node, f"{what} must be {'zero or ' if allow_zero else ''}positive, not {node.raw}")
-    return x
-
-
-def _point(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray | str:
-    """A point: a vector of lengths, or the words 'com' / 'origin'."""
-    if isinstance(node, ys.ScalarNode) and node.value in ("com", "origin"):
-        return str(node.value)
-    return _vector(ctx, node, "length", what)
-
-
-def _direction(ctx: _Ctx, node: ys.Node, what: str) -> np.ndarray:
-    v = _vector(ctx, node, "dimensionless", what)
-    big = float(np.max(np.abs(v)))
-    if not big > 0:
-        raise ctx.error(node, f"{what} must be a non-zero vector")
-    v = v / big  # so that tiny (1e-320) or huge components do not under/overflow the norm
-    return v / np.linalg.norm(v)
-
-
-# --------------------------------------------------------------------------- placement
-
-
-def _rotation(ctx: _Ctx, node: ys.Node) -> np.ndarray:
-    m = _mapping(ctx, node, "rotate")
-    keys = set(m.items)
-    forms = {
-        "axis-angle": {"axis", "angle"},
-        "euler": {"euler", "seq"},
-        "quaternion": {"quaternion"},
-        "matrix": {"matrix"},
-    }
-    allowed = ("axis", "angle", "euler", "seq", "quaternion", "matrix")
-    _check_keys(ctx, m, allowed, "rotate")
-    for name, form in forms.items():
-        if keys == form:
-            break
-    else:
-        raise ctx.error(
-            m,
-            "rotate takes one of {axis: [x, y, z], angle: A}, {euler: [a, b, c], seq: ZYX}, "
-            "{quaternion: [w, x, y, z]} or {matrix: [[..], [..], [..]]}",
-        )
-    try:
-        if name == "axis-angle":
-            axis = _direction(ctx, m.items["axis"][1], "rotate axis")
-            angle = _number(ctx, m.items["angle"][1], "angle", "rotate angle")
-            return rot.axis_angle(axis, angle)
-        if name == "euler":
-            seq_node = m.items["seq"][1]
-            seq = _string(ctx, seq_node, "seq")
-            angles_node = m.items["euler"][1]
-            n = len(angles_node.items) if isinstance(angles_node, ys.SeqNode) else 3
-            angles = _vector(ctx, angles_node, "angle", "euler angles", n=(len(seq),) if 1 <= len(seq) <= 3 else 3)
-            try:
-                return rot.euler(angles, seq)
-            except ValueError as exc:
-                raise ctx.error(seq_node, str(exc)) from None
-        if name == "quaternion":
-            q_node = m.items["quaternion"][1]
-            q = _vector(ctx, q_node, "dimensionless", "quaternion", n=4)
-            try:
-                return rot.quaternion(q)
-            except ValueError as exc:
-                raise ctx.error(q_node, str(exc)) from None
-        mat_node = m.items["matrix"][1]
-        mat = _matrix(ctx, mat_node, "dimensionless", "rotation matrix")
-        try:
-            return rot.from_matrix(mat)
-        except ValueError as exc:
-            raise ctx.error(mat_node, f"rotation matrix: {exc}") from None
-    except ValueError as exc:  # a ValueError not already located
-        raise ctx.error(m, str(exc)) from None
-
-
-def _placement(ctx: _Ctx, m: ys.MapNode) -> tuple[np.ndarray, np.ndarray]:
-    at = np.zeros(3)
-    R = np.eye(3)
-    if "at" in m.items:
-        at = _vector(ctx, m.items["at"][1], "length", "at")
-    if "axis" in m.items and "rotate" in m.items:
-        raise ctx.error(m.items["rotate"][0], "give either 'axis' or 'rotate', not both")
-    if "axis" in m.items:
-        R = rot.axis_to_z(_direction(ctx, m.items["axis"][1], "axis"))
-    elif "rotate" in m.items:
-        R = _rotation(ctx, m.items["rotate"][1])
-    return at, R
-
-
 # --------------------------------------------------------------------------- parts
 
 
@@ -345,13 +158,13 @@ def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _
     key = given[0]
     kmark, node = (cut if key == "cut_from" else m.items[key])
     if key == "mass":
-        return _positive(ctx, node, "mass", f"{what}: mass"), None, node
+        return fl.positive(ctx, node, "mass", f"{what}: mass"), None, node
     if key == "cut_from":
-        if "subtract" not in m.items or not _bool(ctx, m.items["subtract"][1], "subtract"):
+        if "subtract" not in m.items or not fl.flag(ctx, m.items["subtract"][1], "subtract"):
             raise ctx.error(kmark, "cut_from is for holes: it needs 'subtract: true'")
-        src = _string(ctx, node, "cut_from")
+        src = fl.string(ctx, node, "cut_from")
         if src not in known:
-            raise ctx.error(node, f"cut_from: no earlier part is named '{src}'{_suggest(src, list(known))}")
+            raise ctx.error(node, f"cut_from: no earlier part is named '{src}'{fl.suggest(src, list(known))}")
         k = known[src]
         if k.density is None:
             raise ctx.error(node, f"cut_from: part '{src}' has no density to take (it is a {k.measure_kind})")
@@ -367,12 +180,12 @@ def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _
         hint = f"; use '{want}'" if want else "; give its mass"
         raise ctx.error(kmark, f"{what} is {_a(measure_kind)} part, so '{key}' does not apply{hint}")
     kind = key  # density, areal_density, linear_density are also unit kinds
-    return None, _positive(ctx, node, kind, f"{what}: {key}"), node
+    return None, fl.positive(ctx, node, kind, f"{what}: {key}"), node
 
 
 def _part_name(ctx: _Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
     if "name" in m.items:
-        name = _string(ctx, m.items["name"][1], "name")
+        name = fl.string(ctx, m.items["name"][1], "name")
         if not name.strip():
             raise ctx.error(m.items["name"][1], "a part name must not be empty")
     else:
@@ -389,17 +202,20 @@ def _place(part_com, part_I, at, R):
 
 def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
     if not isinstance(node, ys.SeqNode):
-        raise ctx.error(node, f"parts must be a list of parts, not {_describe(node)}")
+        raise ctx.error(node, f"parts must be a list of parts, not {fl.describe(node)}")
     if not node.items:
         raise ctx.error(node, "parts is empty; a body needs at least one part")
-    out: list[Part] = []
+    out: list = []
     names: set[str] = set()
     known: dict[str, _Known] = {}
+    done = 0  # out[:done] are finished Parts
     for i, item in enumerate(node.items):
         if not _is_include(item):
             ctx.session.spend(ctx, item, 1)
         out.extend(_part(ctx, item, i, names, known, prefix))
-    return out
+        if len(out) - done >= BATCH:
+            done = len(finish(out, done))
+    return finish(out, done)
 
 
 def _is_include(node: ys.Node) -> bool:
@@ -409,16 +225,18 @@ def _is_include(node: ys.Node) -> bool:
     return isinstance(shape, ys.ScalarNode) and shape.value == "include"
 
 
-def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list[Part]:
-    m = _mapping(ctx, node, f"part {index + 1}")
+def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list:
+    """The parts of one entry of ``parts``: a primitive as a :class:`Pending` (placed by
+    :func:`rbcli.io.placing.finish` with others), the others as finished :class:`Part` s."""
+    m = fl.mapping(ctx, node, f"part {index + 1}")
     if "shape" not in m.items:
         raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
     shape_node = m.items["shape"][1]
-    shape = _string(ctx, shape_node, "shape")
+    shape = fl.string(ctx, shape_node, "shape")
     if shape not in shp.SHAPES and shape not in SPECIAL_SHAPES:
         raise ctx.error(
             shape_node,
-            f"unknown shape '{shape}'{_suggest(shape, all_shape_names())} (shapes: {', '.join(all_shape_names())})",
+            f"unknown shape '{shape}'{fl.suggest(shape, all_shape_names())} (shapes: {', '.join(all_shape_names())})",
         )
     name = _part_name(ctx, m, index, shape, names)
     what = f"part '{name}'"
@@ -432,107 +250,99 @@ def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str
 
 
 def _subtract(ctx: _Ctx, m: ys.MapNode) -> bool:
-    return _bool(ctx, m.items["subtract"][1], "subtract") if "subtract" in m.items else False
+    return fl.flag(ctx, m.items["subtract"][1], "subtract") if "subtract" in m.items else False
 
 
-def _primitive(ctx, m, shape, name, prefix, known, what) -> Part:
+#: per primitive shape: (its keys in the order messages list them, the same as a set,
+#: its diameter spellings, its parameters with the name of their Kind and its n)
+_PRIMITIVE_KEYS: dict[str, tuple] = {}
+
+
+def _primitive_keys(shape: str) -> tuple:
+    if shape not in _PRIMITIVE_KEYS:
+        info = shp.SHAPES[shape]
+        extra_keys = ("from", "to") if shape == "rod" else ()
+        diameters = info.diameters
+        keys = (*COMMON_PART_KEYS, *info.required, *info.optional, *diameters, *extra_keys)
+        kinds = tuple((k, info.kind(k).name, info.kind(k).n) for k in (*info.required, *info.optional))
+        _PRIMITIVE_KEYS[shape] = (keys, frozenset(keys), diameters, kinds)
+    return _PRIMITIVE_KEYS[shape]
+
+
+def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
     info = shp.SHAPES[shape]
-    params_allowed = (*info.required, *info.optional)
-    extra_keys: tuple[str, ...] = ()
-    if shape == "rod":
-        extra_keys = ("from", "to")
-    diameters = info.diameters
-    _check_keys(ctx, m, (*COMMON_PART_KEYS, *params_allowed, *diameters, *extra_keys), f"{what} ({shape})")
+    keys, key_set, diameters, kinds = _primitive_keys(shape)
+    items = m.items
+    if not key_set.issuperset(items):
+        fl.check_keys(ctx, m, keys, f"{what} ({shape})")
     params: dict[str, object] = {}
     nodes: dict[str, ys.Node] = {}
     for dkey, rkey in diameters.items():
-        if dkey not in m.items:
+        if dkey not in items:
             continue
-        if rkey in m.items:
-            raise ctx.error(m.items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
-        nodes[rkey] = m.items[dkey][1]
-        params[rkey] = 0.5 * _number(ctx, nodes[rkey], "length", dkey)
-    at, R = _placement(ctx, m)
-    if shape == "rod" and ("from" in m.items or "to" in m.items):
+        if rkey in items:
+            raise ctx.error(items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
+        nodes[rkey] = items[dkey][1]
+        params[rkey] = 0.5 * fl.number(ctx, nodes[rkey], "length", dkey)
+    at, spec = fl.placement_spec(ctx, m)
+    if shape == "rod" and ("from" in items or "to" in items):
         for k in ("from", "to"):
-            if k not in m.items:
+            if k not in items:
                 raise ctx.error(m, f"{what}: a rod given by endpoints needs both 'from' and 'to'")
         for k in ("length", *PLACEMENT_KEYS):
-            if k in m.items:
-                raise ctx.error(m.items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
-        a = _vector(ctx, m.items["from"][1], "length", "from")
-        b = _vector(ctx, m.items["to"][1], "length", "to")
+            if k in items:
+                raise ctx.error(items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
+        a = fl.vector(ctx, items["from"][1], "length", "from")
+        b = fl.vector(ctx, items["to"][1], "length", "to")
         if not np.linalg.norm(b - a) > 0:
-            raise ctx.error(m.items["to"][1], f"{what}: 'from' and 'to' are the same point")
+            raise ctx.error(items["to"][1], f"{what}: 'from' and 'to' are the same point")
         params["length"] = float(np.linalg.norm(b - a))
-        at = 0.5 * (a + b)
-        R = rot.axis_to_z(b - a)
+        at = (0.5 * (a + b)).tolist()
+        spec = ("R", rot.axis_to_z(b - a))
     for key in info.required:
-        if key not in m.items and key not in params:
+        if key not in items and key not in params:
             alt = next((f" or '{d}'" for d, r in diameters.items() if r == key), "")
+            params_allowed = (*info.required, *info.optional)
             raise ctx.error(m, f"{what} ({shape}) needs '{key}'{alt} (parameters: {', '.join(params_allowed) or 'none'})")
-    for key in params_allowed:
-        if key not in m.items or key in params:
+    for key, kind, n in kinds:
+        if key not in items or key in params:
             continue
-        vnode = m.items[key][1]
+        vnode = items[key][1]
         nodes[key] = vnode
-        kind = info.kind(key)
-        if kind.name == "length":
-            params[key] = _number(ctx, vnode, "length", key)
-        elif kind.name == "lengths":
-            params[key] = _vector(ctx, vnode, "length", key, n=kind.n)
-        elif kind.name == "points":
-            params[key] = _matrix(ctx, vnode, "length", key)
-        elif kind.name == "bool":
-            params[key] = _bool(ctx, vnode, key)
+        if kind == "length":
+            params[key] = fl.number(ctx, vnode, "length", key)
+        elif kind == "lengths":
+            params[key] = fl.floats(ctx, vnode, "length", key, n=n)
+        elif kind == "points":
+            params[key] = fl.rows(ctx, vnode, "length", key)
+        elif kind == "bool":
+            params[key] = fl.flag(ctx, vnode, key)
     try:
-        geo = shp.geometry(shape, **params)
+        geo = shp.local_geometry(shape, params)
     except shp.ShapeError as exc:  # lengths quoted in the file's own length unit
         factor, unit = ctx.factors.get("length") or un.unit_for_kind(ctx.base_units, "length")
         message = exc.format(lambda x: f"{x / factor:g} {unit}")
         raise ctx.error(nodes.get(exc.param, m), f"{what}: {message}") from None
     except ValueError as exc:
         raise ctx.error(m, f"{what}: {exc}") from None
-    mass, density, src = _mass_source(ctx, m, geo.measure_kind, known, what)
-    measure = geo.measure if geo.measure_kind != "point" else None
+    measure_kind = geo.measure_kind
+    mass, density, src = _mass_source(ctx, m, measure_kind, known, what)
+    measure = float(geo.measure) if measure_kind != "point" else None
     if mass is None:
         assert density is not None and measure is not None
         mass = density * measure
-        _check_mass(ctx, src, what, mass, f"density × {geo.measure_kind}")
+        _check_mass(ctx, src, what, mass, f"density × {measure_kind}")
     elif measure:
         density = mass / measure
     if not mass > 0:
         raise ctx.error(m, f"{what} has no mass")
-    known[name] = _Known(density if geo.measure_kind != "point" else None, geo.measure_kind)
-    com, J = _place(geo.com, mass * geo.unit_inertia, at, R)
-    return Part(
-        name=prefix + name,
-        shape=shape,
-        mass=float(mass),
-        subtract=_subtract(ctx, m),
-        com=com,
-        inertia_com=J,
-        measure=measure,
-        measure_kind=geo.measure_kind,
-        radius=info.radius(params),
-        axis=R[:, 2].copy(),
-        where=ctx.where(m),
-        outline=_outline(shape, params, at, R),
+    known[name] = _Known(density if measure_kind != "point" else None, measure_kind)
+    mark = m.mark
+    return Pending(
+        prefix + name, shape, float(mass), _subtract(ctx, m), measure, measure_kind,
+        info.radius(params), Location(ctx.file, mark.line, mark.col), at, spec, geo.com,
+        geo.unit_inertia, dims_of(params),
     )
-
-
-def _outline(shape: str, params: dict, at: np.ndarray, R: np.ndarray):
-    """The drawing's description of a primitive part: its parameters (m) and placement."""
-    from rbcli.model import Outline
-
-    dims = []
-    for k, v in params.items():
-        if isinstance(v, np.ndarray):  # size, semi_axes (n,), vertices (3, 3)
-            v = tuple(map(tuple, v.tolist())) if v.ndim == 2 else tuple(v.tolist())
-        elif not isinstance(v, bool):
-            v = float(v)  # type: ignore[arg-type]
-        dims.append((k, v))
-    return Outline(shape, tuple(dims), at, R)
 
 
 def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> None:
@@ -547,18 +357,18 @@ def _check_mass(ctx: _Ctx, node: ys.Node, what: str, mass: float, how: str) -> N
 
 def _given(ctx, m, name, prefix, known) -> Part:
     what = f"part '{name}' (given)"
-    _check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
-    mass = _positive(ctx, m.items["mass"][1], "mass", f"{what}: mass")
-    com = _vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
+    fl.check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
+    mass = fl.positive(ctx, m.items["mass"][1], "mass", f"{what}: mass")
+    com = fl.vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
     inode = m.items["inertia"][1]
     if isinstance(inode, ys.MapNode):
-        _check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia", required=("Ixx", "Iyy", "Izz"))
-        g = {k: _number(ctx, inode.items[k][1], "inertia", k) if k in inode.items else 0.0 for k in INERTIA_MAP_KEYS[:6]}
+        fl.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia", required=("Ixx", "Iyy", "Izz"))
+        g = {k: fl.number(ctx, inode.items[k][1], "inertia", k) if k in inode.items else 0.0 for k in INERTIA_MAP_KEYS[:6]}
         has_products = any(k in inode.items for k in ("Ixy", "Iyz", "Izx"))
         sign = -1.0
         if "convention" in inode.items:
             conv_node = inode.items["convention"][1]
-            conv = _string(ctx, conv_node, "convention")
+            conv = fl.string(ctx, conv_node, "convention")
             if conv not in ("tensor", "positive"):
                 raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
             sign = 1.0 if conv == "tensor" else -1.0
@@ -579,11 +389,11 @@ def _given(ctx, m, name, prefix, known) -> Part:
             raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
                             "convention inside 'inertia'; remove the part's 'convention'")
     else:
-        J = _matrix(ctx, inode, "inertia", "inertia")
+        J = fl.matrix(ctx, inode, "inertia", "inertia")
         off = J[~np.eye(3, dtype=bool)]
         if "convention" in m.items:
             conv_node = m.items["convention"][1]
-            conv = _string(ctx, conv_node, "convention")
+            conv = fl.string(ctx, conv_node, "convention")
             if conv not in ("tensor", "positive"):
                 raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
             if conv == "positive":
@@ -600,7 +410,7 @@ def _given(ctx, m, name, prefix, known) -> Part:
     if problem:
         raise ctx.error(inode, f"{what}: the inertia is not physically possible: {problem}")
     J = 0.5 * (J + J.T)
-    at, R = _placement(ctx, m)
+    at, R = fl.placement(ctx, m)
     known[name] = _Known(None, "given")
     pc, PJ = _place(com, J, at, R)
     return Part(
@@ -625,7 +435,7 @@ def _given_outline(mass: float, com: np.ndarray, J: np.ndarray):
 
 
 def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
-    rel = _string(ctx, node, what)
+    rel = fl.string(ctx, node, what)
     path = Path(rel)
     if not path.is_absolute():
         path = ctx.base_dir / path
@@ -634,7 +444,7 @@ def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
 
 def _include(ctx, m, name, prefix) -> list[Part]:
     what = f"part '{name}' (include)"
-    _check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
+    fl.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = _resolve(ctx, fnode, "file")
     where = ctx.where(fnode)
@@ -664,7 +474,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     ctx.warnings.extend(sub.warnings)
     ctx.inputs.append(real)
     ctx.inputs.extend(sub.ctx.inputs)
-    at, R = _placement(ctx, m)
+    at, R = fl.placement(ctx, m)
     parts = sub.parts
     if not parts:
         return []
@@ -694,15 +504,15 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
     bodies without meshes do not pay for them at start-up.
     """
     what = f"part '{name}' (mesh)"
-    _check_keys(ctx, m, MESH_KEYS, what, required=("file",))
+    fl.check_keys(ctx, m, MESH_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = _mesh_path(ctx, fnode)
     scale = 1.0
     if "scale" in m.items:
-        scale = _positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
+        scale = fl.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
     if "units" in m.items:
         unode = m.items["units"][1]
-        text = _string(ctx, unode, "units")
+        text = fl.string(ctx, unode, "units")
         try:
             factor, dim = un.parse_unit(text)
         except un.UnitError as exc:
@@ -714,17 +524,17 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
             )
     else:
         factor = ctx.factor("length", m)[0]
-    allow_open = _bool(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
+    allow_open = fl.flag(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
     weld = None  # None: the file's own default (meshfile.default_weld)
     if "weld" in m.items:
         wnode = m.items["weld"][1]
         if isinstance(wnode, ys.ScalarNode) and wnode.value == "exact":
             weld = 0.0
         else:
-            weld = _positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
+            weld = fl.positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
     mass, density, src = _mass_source(ctx, m, "volume", known, what)
     subtract = _subtract(ctx, m)
-    at, R = _placement(ctx, m)
+    at, R = fl.placement(ctx, m)
 
     from rbcli.core import mesh as cmesh
     from rbcli.io import meshfile
@@ -782,7 +592,7 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
 
 def _mesh_path(ctx: _Ctx, fnode: ys.Node) -> Path:
     """The mesh file, relative to the body file's folder; as written when that is the cwd."""
-    rel = _string(ctx, fnode, "file")
+    rel = fl.string(ctx, fnode, "file")
     if not rel.strip():
         raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
     if "\0" in rel:
@@ -813,11 +623,11 @@ class _Loaded:
 def _units(ctx: _Ctx, m: ys.MapNode) -> None:
     if "units" not in m.items:
         return
-    unode = _mapping(ctx, m.items["units"][1], "units")
-    _check_keys(ctx, unode, UNIT_KEYS, "units")
+    unode = fl.mapping(ctx, m.items["units"][1], "units")
+    fl.check_keys(ctx, unode, UNIT_KEYS, "units")
     base = {}
     for key, (_km, vnode) in unode.items.items():
-        base[key] = _string(ctx, vnode, f"units.{key}")
+        base[key] = fl.string(ctx, vnode, f"units.{key}")
         try:
             un.unit_for_kind({key: base[key]}, key)
         except un.UnitError as exc:
@@ -851,13 +661,13 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
     _units(ctx, root)
     if "parts" in root.items:
-        _check_keys(ctx, root, BODY_KEYS, "the body")
+        fl.check_keys(ctx, root, BODY_KEYS, "the body")
         parts = _parts(ctx, root.items["parts"][1])
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
         items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
         stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
-        parts = _part(ctx, stripped, 0, set(), {}, "")
+        parts = finish(_part(ctx, stripped, 0, set(), {}, ""))
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
     ctx.inputs = list(dict.fromkeys(ctx.inputs))
@@ -883,8 +693,8 @@ def _body_defaults(
     items = root.items
     name = name_default
     if "name" in items:
-        name = _string(ctx, items["name"][1], "name")
-    description = _string(ctx, items["description"][1], "description") if "description" in items and "parts" in items else ""
+        name = fl.string(ctx, items["name"][1], "name")
+    description = fl.string(ctx, items["description"][1], "description") if "description" in items and "parts" in items else ""
     reference = None
     ref_com = False
     pivot = None
@@ -892,25 +702,25 @@ def _body_defaults(
     rim = None
     if "parts" in items:
         if "reference" in items:
-            p = _point(ctx, items["reference"][1], "reference")
+            p = fl.point(ctx, items["reference"][1], "reference")
             if isinstance(p, str):
                 ref_com = p == "com"
                 reference = None if ref_com else np.zeros(3)
             else:
                 reference = p
         if "pivot" in items:
-            p = _point(ctx, items["pivot"][1], "pivot")
+            p = fl.point(ctx, items["pivot"][1], "pivot")
             if isinstance(p, str):
                 raise ctx.error(items["pivot"][1], "pivot must be a point [x, y, z]")
             pivot = p
         if "shaft" in items:
-            snode = _mapping(ctx, items["shaft"][1], "shaft")
-            _check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
-            axis = _direction(ctx, snode.items["axis"][1], "shaft axis")
-            through = _vector(ctx, snode.items["through"][1], "length", "shaft through") if "through" in snode.items else np.zeros(3)
+            snode = fl.mapping(ctx, items["shaft"][1], "shaft")
+            fl.check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
+            axis = fl.direction(ctx, snode.items["axis"][1], "shaft axis")
+            through = fl.vector(ctx, snode.items["through"][1], "length", "shaft through") if "through" in snode.items else np.zeros(3)
             shaft = Shaft(axis, through)
         if "rim_radius" in items:
-            rim = _positive(ctx, items["rim_radius"][1], "length", "rim_radius")
+            rim = fl.positive(ctx, items["rim_radius"][1], "length", "rim_radius")
     parts = tuple(loaded.parts)
     node = items["parts"][1] if "parts" in items else root
     try:
@@ -932,12 +742,14 @@ def _body_defaults(
             f"the body's inertia is not physically possible: {problem} "
             "(is a subtracted part outside the material it is cut from?)",
         )
-    return Body(
+    body = Body(
         name=name, source=source, text=text, parts=parts, reference=reference,
         reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
         description=description, warnings=tuple(loaded.warnings), inputs=inputs,
         units=dict(loaded.ctx.base_units),
     )
+    remember_mass_props(body, mp)  # commands take it from there (body_mass_props)
+    return body
 
 
 def load_body(source: str, *, stdin: object = None) -> Body:
@@ -965,12 +777,15 @@ def load_expr(expr: str) -> Body:
 
 
 @contextmanager
-def _gc_paused():
-    """The cyclic garbage collector off while a body is built (issue 16).
+def gc_paused():
+    """The cyclic garbage collector off while a body is built (issue 16), or while a
+    command makes one small object a part (its JSON rows).
 
     Loading allocates a tree of ~20 objects a part that stays alive until the end, and the
     collector kept re-scanning it: 25-35 % of the CPU time of a 10 000-part body. The loader
-    makes next to no reference cycles; whatever it makes is collected after.
+    makes next to no reference cycles; whatever it makes is collected after. The tree is
+    freed (by reference counting) inside the pause, so that the first collection after it
+    scans only the body (~4 objects a part), not the tree too.
     """
     import gc
 
@@ -998,11 +813,14 @@ def load_text(
     first of the body's ``inputs``, followed by every file the text includes or meshes it
     reads, at any depth, each once.
     """
-    with _gc_paused():
-        loaded = _load(data, filename, base_dir, stack, units)
     if isinstance(data, bytes):
         text = data.decode("utf-8", errors="replace")
     else:
         text = data
-    inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
-    return _body_defaults(loaded, name_default, filename, text, inputs)
+    with gc_paused():
+        loaded = _load(data, filename, base_dir, stack, units)
+        inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
+        body = _body_defaults(loaded, name_default, filename, text, inputs)
+        # the YAML tree goes before the collector runs again: it would scan it once more
+        del loaded
+    return body
