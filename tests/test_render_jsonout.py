@@ -1,0 +1,43 @@
+"""rbcli.render.jsonout: the indented document is the same bytes as the straightforward
+json.dumps-per-value layout it replaced (kept here as the oracle), on generated documents."""
+
+from __future__ import annotations
+
+import json
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from rbcli.render.jsonout import dumps
+
+
+def _flat(v):
+    if isinstance(v, list):
+        return all(not isinstance(x, (dict, list)) or (isinstance(x, list) and _flat(x)) for x in v)
+    return not isinstance(v, dict)
+
+
+def _oracle(v, level=0):
+    if _flat(v):
+        return json.dumps(v, ensure_ascii=False, allow_nan=False, separators=(", ", ": "))
+    pad, end = "  " * (level + 1), "  " * level
+    if isinstance(v, dict):
+        if not v:
+            return "{}"
+        items = [f"{pad}{json.dumps(k, ensure_ascii=False)}: {_oracle(x, level + 1)}" for k, x in v.items()]
+        return "{\n" + ",\n".join(items) + "\n" + end + "}"
+    return "[\n" + ",\n".join(pad + _oracle(x, level + 1) for x in v) + "\n" + end + "]"
+
+
+SCALARS = st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=False, allow_infinity=False),
+                    st.text(max_size=8))
+DOCS = st.recursive(SCALARS, lambda kids: st.one_of(st.lists(kids, max_size=4),
+                                                    st.dictionaries(st.text(max_size=5), kids, max_size=4)),
+                    max_leaves=30)
+
+
+@settings(max_examples=500, deadline=None)
+@given(DOCS)
+def test_indented_json_is_the_oracles(doc):
+    assert dumps(doc) == _oracle(doc) + "\n"
+    assert json.loads(dumps(doc)) == doc
