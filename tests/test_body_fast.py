@@ -245,3 +245,25 @@ def test_a_typed_rotation_matrix_is_judged_as_from_matrix_judges_it(eps):
         return
     body = load_text(text, "<t>", ROOT)
     assert np.array_equal(body.parts[0].outline.R, R)
+
+
+def test_included_outlines_are_placed_bit_for_bit_as_one_by_one():
+    """io.body._placed_outlines (stacked products) = Outline.placed per part, exactly,
+    signs of zeros included, for random placements and the identity."""
+    from rbcli.core import rotation as rot
+    from rbcli.io.body import _placed_outlines
+
+    body = load_text(_body_text(300), "<gen>", ROOT)
+    outlines = [p.outline for p in body.parts] + [None]
+    rng = np.random.default_rng(7)
+    for k in range(10):
+        at = rng.normal(size=3) if k else np.zeros(3)
+        R = rot.axis_angle(rng.normal(size=3), rng.uniform(-3, 3)) if k else np.eye(3)
+        for o, n in zip(outlines, _placed_outlines(outlines, at, R)):
+            if o is None:
+                assert n is None
+                continue
+            ref = o.placed(at, R)
+            assert np.array_equal(ref.at, n.at) and np.array_equal(ref.R, n.R)
+            assert np.array_equal(np.signbit(ref.at), np.signbit(n.at))
+            assert (n.kind, n.dims) == (o.kind, o.dims)

@@ -463,6 +463,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
         data = _read_file(path, where)
         session.parses += 1
         sub = _load(data, str(path), path.parent, (*ctx.stack, real), session=session)
+        sub.root = None  # its YAML tree: only the top file's is read again (memory)
         session.parsed[key] = sub
     elif len(ctx.stack) + sub.ctx.height >= MAX_INCLUDE_DEPTH:
         # parsed before, higher up: the same file here would nest includes too deep
@@ -485,15 +486,36 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     new_coms = at + coms @ R.T
     new_Js = np.einsum("ij,njk,lk->nil", R, Js, R)
     new_axes = axes @ R.T
+    outlines = _placed_outlines([p.outline for p in parts], at, R)
     return [
         Part(
             name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
             com=new_coms[i], inertia_com=new_Js[i], measure=p.measure, measure_kind=p.measure_kind,
-            radius=p.radius, axis=new_axes[i], extra=p.extra, where=p.where,
-            outline=None if p.outline is None else p.outline.placed(at, R),
+            radius=p.radius, axis=new_axes[i], extra=p.extra, where=p.where, outline=outlines[i],
         )
         for i, p in enumerate(parts)
     ]
+
+
+def _placed_outlines(outlines: list, at: np.ndarray, R: np.ndarray) -> list:
+    """``[o.placed(at, R) for o in outlines]`` (None stays None), the products stacked: the
+    same numbers, bit for bit (tests/test_body_fast.py), without two small products a part."""
+    from rbcli.model import Outline
+
+    idx = [i for i, o in enumerate(outlines) if o is not None]
+    if not idx:
+        return outlines
+    o_at = np.array([outlines[i].at for i in idx], dtype=float)
+    o_R = np.array([outlines[i].R for i in idx], dtype=float)
+    new_at = at + (R @ o_at[:, :, None])[:, :, 0]
+    new_R = R @ o_R
+    new_at.setflags(write=False)
+    new_R.setflags(write=False)
+    out = list(outlines)
+    for j, i in enumerate(idx):
+        o = outlines[i]
+        out[i] = Outline(o.kind, o.dims, new_at[j], new_R[j], o.vertices, o.faces)
+    return out
 
 
 def _mesh(ctx, m, name, prefix, known) -> Part:
@@ -615,7 +637,7 @@ def _mesh_path(ctx: _Ctx, fnode: ys.Node) -> Path:
 class _Loaded:
     parts: list[Part]
     warnings: list[str]
-    root: ys.MapNode
+    root: ys.MapNode | None  # the file's YAML tree (None for an included file, once read)
     ctx: _Ctx
     cost: int = 0  # what one use of this file spends of the parts budget
 
@@ -821,6 +843,9 @@ def load_text(
         loaded = _load(data, filename, base_dir, stack, units)
         inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
         body = _body_defaults(loaded, name_default, filename, text, inputs)
-        # the YAML tree goes before the collector runs again: it would scan it once more
+        # the YAML tree goes before the collector runs again: it would scan it once more;
+        # the included files' results too (session -> parsed -> their ctx -> session is a
+        # reference cycle, which only the collector would free, scanning all of it)
+        loaded.ctx.session.parsed.clear()
         del loaded
     return body
