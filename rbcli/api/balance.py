@@ -594,9 +594,9 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
     import numpy as np
 
     from rbcli.core import balance as B
-    from rbcli.core.inertia import combine
+    from rbcli.core.inertia import body_mass_props
 
-    mp = combine(body.parts)
+    mp = body_mass_props(body)
     if o.through == "com":
         P = np.array(mp.com)
     elif o.through == "origin":

@@ -204,9 +204,9 @@ def run(body: Body, options: PrecessOptions) -> PrecessResult:
 
     from rbcli.core import freemotion as fm
     from rbcli.core import freestate as fs
-    from rbcli.core.inertia import InputOverflow, combine
+    from rbcli.core.inertia import InputOverflow, body_mass_props
 
-    mp = combine(body.parts)
+    mp = body_mass_props(body)
     try:
         motion = fm.analyse(mp.inertia_com, np.array(options.omega, dtype=float))
     except InputOverflow as exc:

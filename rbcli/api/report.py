@@ -312,7 +312,7 @@ class _Ctx:
     """What the section builders share: the body, the options, the failed checks."""
 
     def __init__(self, body: Body, opts: ReportOptions) -> None:
-        from rbcli.core.inertia import combine
+        from rbcli.core.inertia import body_mass_props
 
         self.body = body
         self.opts = opts
@@ -320,7 +320,7 @@ class _Ctx:
         self.digits = opts.digits
         self.failed: list[str] = []
         self.warnings: list[str] = []
-        self.mp = combine(body.parts)
+        self.mp = body_mass_props(body)
 
 
 def _section(key: str, title: str) -> Section:

@@ -224,10 +224,10 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     """Axle, its point, the rim radius, where each came from, and warnings."""
     import numpy as np
 
-    from rbcli.core.inertia import combine
+    from rbcli.core.inertia import body_mass_props
     from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_offset
 
-    mp = combine(body.parts)
+    mp = body_mass_props(body)
     if n_axle is not None:
         n = np.asarray(n_axle, dtype=float)
         axle_source = "--axle"
@@ -489,10 +489,10 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
         that does not exist (naming the options).
     """
     from rbcli.core import rolling as rl
-    from rbcli.core.inertia import combine
+    from rbcli.core.inertia import body_mass_props
 
     o = options
-    wheel = _wheel(body, combine(body.parts), o.axle, o.through, o.radius, o.symmetry_tol)
+    wheel = _wheel(body, body_mass_props(body), o.axle, o.through, o.radius, o.symmetry_tol)
     if o.rim is not None and not o.rim.upright_equilibrium:
         _refuse_off_centre_rim(body, o)
     res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, speed=o.speed, spin=o.spin,

@@ -156,9 +156,9 @@ def _pivot(body: Body, p_opt: str | list[float] | None) -> tuple[tuple[float, fl
     """The pivot (m, body frame) and a label saying where it came from."""
     if isinstance(p_opt, str):
         if p_opt == "com":
-            from rbcli.core.inertia import combine
+            from rbcli.core.inertia import body_mass_props
 
-            P = combine(body.parts).com
+            P = body_mass_props(body).com
         else:
             P = (0.0, 0.0, 0.0)
         label = f"--pivot {p_opt}"
@@ -294,9 +294,9 @@ def run(body: Body, options: TopOptions) -> TopResult:
     import numpy as np
 
     from rbcli.core import top as core
-    from rbcli.core.inertia import combine
+    from rbcli.core.inertia import body_mass_props
 
-    mp = combine(body.parts)
+    mp = body_mass_props(body)
     P = np.asarray(options.pivot, dtype=float)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
@@ -565,9 +565,9 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
         r = o.ratio
     else:
         assert body is not None and o.axis is not None
-        from rbcli.core.inertia import combine
+        from rbcli.core.inertia import body_mass_props
 
-        mp = combine(body.parts)
+        mp = body_mass_props(body)
         try:
             rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
         except ValueError as exc:
