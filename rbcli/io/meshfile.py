@@ -361,6 +361,21 @@ def _weld_blocks(pts: np.ndarray, span: int = 0) -> tuple[np.ndarray, np.ndarray
     return unique, inverse.take(local)
 
 
+def _sort_hashes(h: np.ndarray, span: int) -> tuple[np.ndarray, np.ndarray]:
+    """Sort the 64-bit hashes ``h`` (changed in place) with each one's index in its low
+    bits, enough bits for ``span`` (at least ``len(h)``) indices: one value sort, ties in
+    index order. Returns (the sorted hashes less those bits, the indices in sorted order).
+    Equal hashes need not be equal keys: the callers compare neighbours."""
+    ib = max(1, (span - 1).bit_length())
+    low = np.uint64((1 << ib) - 1)
+    h &= ~low
+    h |= np.arange(len(h), dtype=np.uint64)
+    h.sort()
+    order = (h & low).astype(np.intp)
+    h >>= np.uint64(ib)
+    return h, order
+
+
 def _weld(pts: np.ndarray, span: int = 0, same_dtype: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """:func:`weld` for a C-contiguous float32/float64 array without -0.0 (not copied).
 
@@ -382,13 +397,7 @@ def _weld(pts: np.ndarray, span: int = 0, same_dtype: bool = False) -> tuple[np.
         h = _mix(h)
         h ^= bits[:, 2]
         h = _mix(h)
-    ib = max(1, (span - 1).bit_length())
-    low = np.uint64((1 << ib) - 1)
-    h &= ~low
-    h |= np.arange(n, dtype=np.uint64)
-    h.sort()
-    order = (h & low).astype(np.intp)
-    h >>= np.uint64(ib)
+    h, order = _sort_hashes(h, span)
     same_hash = h[1:] == h[:-1]
     del h
     flat = bits.reshape(-1)
@@ -663,12 +672,7 @@ def _distinct_spans(a: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.n
         for j in range(1, n_words + 1):
             h ^= keys[j]
             h = _mix(h)
-    ib = max(1, (m - 1).bit_length())
-    low = np.uint64((1 << ib) - 1)
-    h &= ~low
-    h |= np.arange(m, dtype=np.uint64)
-    h.sort()
-    order = (h & low).astype(np.intp)
+    order = _sort_hashes(h, m)[1]
     del h
     same = np.ones(m - 1, dtype=bool)
     for row in keys:
