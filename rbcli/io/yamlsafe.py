@@ -557,7 +557,6 @@ def _parse(text: str, filename: str) -> Node | None:
     set_raw = _set_raw
     set_quoted = _set_quoted
     not_str = _MAYBE_NOT_STR
-    num_start = _NUM_START
     dec_chars = _DECIMAL_CHARS
     max_digits = _MAX_DIGITS
     resolve = _resolve_plain
@@ -599,14 +598,20 @@ def _parse(text: str, filename: str) -> Node | None:
                     set_quoted(node, False)
                     set_raw(node, raw)
                 else:  # plain, maybe not a string: the core schema
-                    # Inline for the usual numbers: a short scalar made of [0-9.eE+-]
-                    # only is an int if it is digits after one sign at most (which int()
-                    # checks), else a float if float() accepts it (over these characters
-                    # float() accepts exactly the core schema's float); all else, and any
-                    # scalar that int()/float() refuse, goes through _resolve_plain.
-                    if raw[0] in num_start and len(raw) <= max_digits and not raw.strip(dec_chars):
+                    # Inline for the usual numbers: a scalar made of [0-9.eE+-] only (so
+                    # no null or bool word) is a float if it has a '.', 'e' or 'E' and
+                    # float() accepts it (over these characters float() accepts exactly
+                    # the core schema's float), else an int if int() accepts it ([-+]?
+                    # [0-9]+) and it is short; all else, and any scalar that float()/int()
+                    # refuse, goes through _resolve_plain.
+                    if not raw.strip(dec_chars):
                         try:
-                            value = int(raw) if raw.lstrip("+-").isdigit() else float(raw)
+                            if "." in raw or "e" in raw or "E" in raw:
+                                value = float(raw)
+                            elif len(raw) <= max_digits:
+                                value = int(raw)
+                            else:
+                                value = resolve(raw, filename, _yaml_mark(start))
                         except ValueError:
                             value = resolve(raw, filename, _yaml_mark(start))
                     else:
