@@ -122,8 +122,8 @@ class Node:
     def tag(self) -> str:  # pragma: no cover - every subclass overrides it
         raise NotImplementedError
 
-    def _fields(self) -> tuple:  # pragma: no cover - every subclass overrides it
-        raise NotImplementedError
+    def _fields(self) -> tuple:  # what equality and the hash compare
+        return (self.mark,)
 
     def __setattr__(self, name: str, value: object) -> None:
         raise FrozenInstanceError(f"cannot assign to field {name!r}")
