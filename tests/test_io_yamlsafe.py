@@ -215,6 +215,32 @@ def test_tags_repr_and_where():
     assert str(where("w.yaml", seq.mark)) == "w.yaml:1:4"
 
 
+def test_nodes_are_frozen_values_with_their_marks():
+    """A loaded node (its mark made when first read) equals, hashes and reads like
+    one made by the public constructors; no attribute can be set or deleted."""
+    root = load("a: [1, x]\nb: {c: 'd'}\n", "f.yaml")
+    seq = root.items["a"][1]
+    one = seq.items[0]
+    made = ScalarNode(Mark(1, 5), 1, "1", False)
+    assert one == made and hash(one) == hash(made) and one != ScalarNode(Mark(1, 6), 1, "1", False)
+    assert one.mark is one.mark and type(one.mark) is Mark  # made once, then kept
+    assert seq == SeqNode(Mark(1, 4), [made, ScalarNode(Mark(1, 8), "x", "x", False)])
+    assert root.items["b"][1] == MapNode(
+        Mark(2, 4), {"c": (Mark(2, 5), ScalarNode(Mark(2, 8), "d", "d", True))}
+    )
+    assert one != (Mark(1, 5), 1, "1", False) and seq != one
+    match one:
+        case ScalarNode(mark, value, raw, quoted):
+            assert (mark, value, raw, quoted) == (Mark(1, 5), 1, "1", False)
+    for node, name in [(one, "value"), (one, "mark"), (seq, "items"), (root, "items")]:
+        with pytest.raises(AttributeError):
+            setattr(node, name, None)
+        with pytest.raises(AttributeError):
+            delattr(node, name)
+    with pytest.raises(AttributeError):
+        one.other = 1  # type: ignore[attr-defined]
+
+
 def test_root_may_be_any_node():
     assert to_python(load("[1, 2]", "r.yaml")) == [1, 2]
     assert to_python(load("'x'", "r.yaml")) == "x"

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import gc
 import re
-from dataclasses import dataclass
+from dataclasses import FrozenInstanceError
 from typing import NamedTuple
 
 import yaml
@@ -92,24 +92,56 @@ class Mark(NamedTuple):
     __hash__ = tuple.__hash__
 
 
-@dataclass(frozen=True, repr=False, slots=True)
 class Node:
-    """Base of the loaded tree. Every node has ``.mark`` and ``.tag``.
+    """Base of the loaded tree. Every node has ``.mark`` and ``.tag``; nodes are frozen.
 
     ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
     ``"bool"``, ``"null"``.
+
+    The loader stores libyaml's own (0-based) start mark of the node's event, which
+    the event already carries, and ``.mark`` turns it into a :class:`Mark` when first
+    read: most marks are never read (they locate errors), and making two million of
+    them up front was a tenth of the load time of a 100 000-part body.
     """
 
-    mark: Mark
+    __slots__ = ("_mark",)
+
+    def __init__(self, mark: Mark) -> None:
+        _set_mark(self, mark)
+
+    @property
+    def mark(self) -> Mark:
+        """Where the node starts (1-based line and column)."""
+        m = self._mark
+        if m.__class__ is not Mark:  # libyaml's mark, as the loader keeps it
+            m = _new_tuple(Mark, (m.line + 1, m.column + 1))
+            _set_mark(self, m)
+        return m
 
     @property
     def tag(self) -> str:  # pragma: no cover - every subclass overrides it
         raise NotImplementedError
 
+    def _fields(self) -> tuple:  # what equality and the hash compare
+        return (self.mark,)
 
-@dataclass(frozen=True, repr=False, slots=True)
+    def __setattr__(self, name: str, value: object) -> None:
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is self.__class__:
+            return self._fields() == other._fields()  # type: ignore[attr-defined]
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self._fields())
+
+
 class ScalarNode(Node):
-    """A scalar.
+    """A scalar: ``ScalarNode(mark, value, raw, quoted)``.
 
     value : the resolved value (YAML 1.2 core schema for plain scalars; ``str`` for
         quoted and block scalars).
@@ -119,9 +151,22 @@ class ScalarNode(Node):
         scalars, which are always strings; False for plain scalars.
     """
 
+    __slots__ = ("value", "raw", "quoted")
+    __match_args__ = ("mark", "value", "raw", "quoted")
     value: str | int | float | bool | None
     raw: str
     quoted: bool
+
+    def __init__(
+        self, mark: Mark, value: str | int | float | bool | None, raw: str, quoted: bool
+    ) -> None:
+        _set_mark(self, mark)
+        _set_value(self, value)
+        _set_raw(self, raw)
+        _set_quoted(self, quoted)
+
+    def _fields(self) -> tuple:
+        return (self.mark, self.value, self.raw, self.quoted)
 
     @property
     def tag(self) -> str:
@@ -141,12 +186,20 @@ class ScalarNode(Node):
         return f"ScalarNode({self.tag}{q} {self.value!r} at {self.mark})"
 
 
-@dataclass(frozen=True, repr=False, slots=True)
 class MapNode(Node):
-    """A mapping: ``items`` maps each key to (the key's mark, the value node), in
-    source order."""
+    """A mapping, ``MapNode(mark, items)``: ``items`` maps each key to (the key's
+    :class:`Mark`, the value node), in source order."""
 
+    __slots__ = ("items",)
+    __match_args__ = ("mark", "items")
     items: dict[str, tuple[Mark, Node]]
+
+    def __init__(self, mark: Mark, items: dict[str, tuple[Mark, Node]]) -> None:
+        _set_mark(self, mark)
+        _set_map_items(self, items)
+
+    def _fields(self) -> tuple:
+        return (self.mark, self.items)
 
     @property
     def tag(self) -> str:
@@ -156,11 +209,19 @@ class MapNode(Node):
         return f"MapNode(keys={list(self.items)!r} at {self.mark})"
 
 
-@dataclass(frozen=True, repr=False, slots=True)
 class SeqNode(Node):
-    """A sequence of nodes."""
+    """A sequence of nodes: ``SeqNode(mark, items)``."""
 
+    __slots__ = ("items",)
+    __match_args__ = ("mark", "items")
     items: list[Node]
+
+    def __init__(self, mark: Mark, items: list[Node]) -> None:
+        _set_mark(self, mark)
+        _set_seq_items(self, items)
+
+    def _fields(self) -> tuple:
+        return (self.mark, self.items)
 
     @property
     def tag(self) -> str:
@@ -168,6 +229,16 @@ class SeqNode(Node):
 
     def __repr__(self) -> str:
         return f"SeqNode({len(self.items)} items at {self.mark})"
+
+
+# The loader makes nodes by the million: it sets their slots directly (as the
+# constructors do; the frozen classes refuse ``setattr``).
+_set_mark = Node.__dict__["_mark"].__set__
+_set_value = ScalarNode.__dict__["value"].__set__
+_set_raw = ScalarNode.__dict__["raw"].__set__
+_set_quoted = ScalarNode.__dict__["quoted"].__set__
+_set_map_items = MapNode.__dict__["items"].__set__
+_set_seq_items = SeqNode.__dict__["items"].__set__
 
 
 def where(filename: str, mark: Mark) -> Location:
@@ -449,17 +520,11 @@ _SEQ_END = yaml.SequenceEndEvent
 _DOC_START = yaml.DocumentStartEvent
 _ALIAS = yaml.AliasEvent
 
-# Nodes and marks are made by the million (a 100 000-part body has ~2 million). A Mark
-# is made with tuple.__new__ (no Python-level __new__), a node by setting its slots
-# directly (the frozen dataclass __init__ costs one object.__setattr__ call per field).
+# Nodes and marks are made by the million (a 100 000-part body has ~2 million). A key's
+# Mark is made with tuple.__new__ (no Python-level __new__); a node is made with
+# object.__new__ and its slots set directly, its mark being libyaml's (see Node.mark).
 _new_tuple = tuple.__new__
 _new_object = object.__new__
-_set_mark = Node.__dict__["mark"].__set__
-_set_value = ScalarNode.__dict__["value"].__set__
-_set_raw = ScalarNode.__dict__["raw"].__set__
-_set_quoted = ScalarNode.__dict__["quoted"].__set__
-_set_map_items = MapNode.__dict__["items"].__set__
-_set_seq_items = SeqNode.__dict__["items"].__set__
 
 
 def _parse(text: str, filename: str) -> Node | None:
@@ -492,7 +557,6 @@ def _parse(text: str, filename: str) -> Node | None:
     set_raw = _set_raw
     set_quoted = _set_quoted
     not_str = _MAYBE_NOT_STR
-    num_start = _NUM_START
     dec_chars = _DECIMAL_CHARS
     max_digits = _MAX_DIGITS
     resolve = _resolve_plain
@@ -511,9 +575,9 @@ def _parse(text: str, filename: str) -> Node | None:
                 if event.anchor is not None or event.tag is not None:
                     _check_node_event(event, filename)  # raises
                 start = event.start_mark
-                mark = new_tuple(mark_class, (start.line + 1, start.column + 1))
                 raw = event.value
                 if in_map and key is None:  # a key
+                    mark = new_tuple(mark_class, (start.line + 1, start.column + 1))
                     if raw not in good_keys and not event.style:  # plain (None or "")
                         _check_plain_key(raw, filename, mark)
                         good_keys.add(raw)
@@ -524,7 +588,7 @@ def _parse(text: str, filename: str) -> Node | None:
                     key_mark = mark
                     continue
                 node = new_object(scalar_class)
-                set_mark(node, mark)
+                set_mark(node, start)  # made a Mark when read (Node.mark)
                 if event.style:  # quoted or block: a string
                     set_value(node, raw)
                     set_quoted(node, True)
@@ -534,18 +598,24 @@ def _parse(text: str, filename: str) -> Node | None:
                     set_quoted(node, False)
                     set_raw(node, raw)
                 else:  # plain, maybe not a string: the core schema
-                    # Inline for the usual numbers: a short scalar made of [0-9.eE+-]
-                    # only is an int if it is digits after one sign at most (which int()
-                    # checks), else a float if float() accepts it (over these characters
-                    # float() accepts exactly the core schema's float); all else, and any
-                    # scalar that int()/float() refuse, goes through _resolve_plain.
-                    if raw[0] in num_start and len(raw) <= max_digits and not raw.strip(dec_chars):
+                    # Inline for the usual numbers: a scalar made of [0-9.eE+-] only (so
+                    # no null or bool word) is a float if it has a '.', 'e' or 'E' and
+                    # float() accepts it (over these characters float() accepts exactly
+                    # the core schema's float), else an int if int() accepts it ([-+]?
+                    # [0-9]+) and it is short; all else, and any scalar that float()/int()
+                    # refuse, goes through _resolve_plain.
+                    if not raw.strip(dec_chars):
                         try:
-                            value = int(raw) if raw.lstrip("+-").isdigit() else float(raw)
+                            if "." in raw or "e" in raw or "E" in raw:
+                                value = float(raw)
+                            elif len(raw) <= max_digits:
+                                value = int(raw)
+                            else:
+                                value = resolve(raw, filename, _yaml_mark(start))
                         except ValueError:
-                            value = resolve(raw, filename, mark)
+                            value = resolve(raw, filename, _yaml_mark(start))
                     else:
-                        value = resolve(raw, filename, mark)
+                        value = resolve(raw, filename, _yaml_mark(start))
                     set_value(node, value)
                     set_quoted(node, False)
                     set_raw(node, raw)
@@ -560,20 +630,19 @@ def _parse(text: str, filename: str) -> Node | None:
                 if event.anchor is not None or event.tag is not None:
                     _check_node_event(event, filename)  # raises
                 start = event.start_mark
-                mark = new_tuple(mark_class, (start.line + 1, start.column + 1))
                 if in_map and key is None:
                     what = "a mapping" if kind is map_start else "a list"
                     raise _error(
                         f"keys must be names, not {what}; write `name: value`",
                         filename,
-                        mark,
+                        _yaml_mark(start),
                     )
                 if len(stack) >= max_depth:
                     raise _error(
                         f"nesting is too deep: more than {max_depth} levels of lists and "
                         f"mappings; body files allow at most {max_depth}",
                         filename,
-                        mark,
+                        _yaml_mark(start),
                     )
                 new_items: dict[str, tuple[Mark, Node]] | list[Node]
                 if kind is map_start:
@@ -584,7 +653,7 @@ def _parse(text: str, filename: str) -> Node | None:
                     new_items = []
                     node = new_object(SeqNode)
                     _set_seq_items(node, new_items)
-                set_mark(node, mark)
+                set_mark(node, start)
                 if in_map:
                     items[key] = (key_mark, node)  # type: ignore[index, call-overload]
                     key = None
