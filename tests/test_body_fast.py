@@ -267,3 +267,46 @@ def test_included_outlines_are_placed_bit_for_bit_as_one_by_one():
             assert np.array_equal(ref.at, n.at) and np.array_equal(ref.R, n.R)
             assert np.array_equal(np.signbit(ref.at), np.signbit(n.at))
             assert (n.kind, n.dims) == (o.kind, o.dims)
+
+
+def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
+    # The loader checks the body's inertia (tensor_problem) only when a part is subtracted
+    # or not a formula shape (body._may_be_impossible): a sum of physically possible
+    # tensors is one. Here every run of 1 to 4 consecutive added formula-shape parts of
+    # the generated body (every shape, every placement), and all of them, pass the check
+    # the loader skips, with its own tolerance (1e-7).
+    from rbcli.core.inertia import tensor_problem
+    from rbcli.io.body import _may_be_impossible
+
+    body, _ = generated
+    sure = [p for p in body.parts if not p.subtract and p.shape in shp.FORMULA_SHAPES]
+    assert {p.shape for p in sure} == set(shp.FORMULA_SHAPES) - {"torus"}  # the torus: below
+    runs = [sure[i:i + k] for k in (1, 2, 3, 4) for i in range(0, len(sure) - k + 1)] + [sure]
+    for run in runs:
+        assert not _may_be_impossible(tuple(run))
+        with np.errstate(over="ignore", invalid="ignore"):
+            J = combine(run).inertia_com
+        assert tensor_problem(J, rtol=1e-7) is None, [p.name for p in run]
+    # thin shapes (a moment equal to the sum of the other two) and point masses: on the edge
+    for text in ("{shape: rod, mass: 1, length: 1}", "{shape: disk, mass: 1, radius: 1}",
+                 "{shape: point, mass: 1}", "{shape: torus, mass: 1, major_radius: 2, minor_radius: 1e-9}",
+                 "{parts: [{shape: point, mass: 1, at: [1, 0, 0]}, {shape: point, mass: 3, at: [0, 2e-9, 0]}]}",
+                 "{parts: [{shape: plate, mass: 1, size: [1, 2e-9]}, {shape: rod, mass: 2, length: 3, axis: [1, 1, 1]}]}"):
+        b = load_text(text, "<t>", ROOT)
+        assert not _may_be_impossible(b.parts)
+        assert tensor_problem(combine(b.parts).inertia_com, rtol=1e-7) is None, text
+
+
+def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
+    from rbcli.errors import InputError
+    from rbcli.io.body import _may_be_impossible
+
+    hole = load_text("{parts: [{shape: box, mass: 2, size: [1, 1, 1]}, "
+                     "{shape: box, mass: 1, size: [0.5, 0.5, 0.5], subtract: true}]}", "<t>", ROOT)
+    assert _may_be_impossible(hole.parts)
+    given = load_text("{shape: given, mass: 1, inertia: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}", "<t>", ROOT)
+    assert _may_be_impossible(given.parts)
+    # a hole outside its material: refused with the message of the check
+    with pytest.raises(InputError, match="not physically possible"):
+        load_text("{parts: [{shape: sphere, mass: 10, radius: 1}, "
+                  "{shape: point, mass: 1, at: [0, 0, 5], subtract: true}]}", "<t>", ROOT)

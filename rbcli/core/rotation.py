@@ -473,17 +473,24 @@ def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     cross[:, 0] = -d[:, 1]
     cross[:, 1] = d[:, 0]
     along = np.max(np.abs(cross), axis=1) == 0.0  # exactly +z or -z
+    if not along.any():  # the common case: the same operations on all rows, unindexed
+        return _tilted_rows(d, cross)
     out[along] = np.eye(3)
     out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
     ok = ~along
     if ok.any():
-        dd = d[ok]
-        n = unit_rows(cross[ok])
-        c = dd[:, 2]
-        s = np.array([math.hypot(x, y) for x, y in dd[:, :2].tolist()]).reshape(-1)
-        one_minus_c = np.where(c > 0, s * s / np.where(c > 0, 1.0 + c, 1.0), 1.0 - c)
-        out[ok] = _rodrigues_rows(n, c, s, one_minus_c)
+        out[ok] = _tilted_rows(d[ok], cross[ok])
     return out
+
+
+def _tilted_rows(d: np.ndarray, cross: np.ndarray) -> np.ndarray:
+    """:func:`axis_to_z_rows` of unit rows ``d`` (k, 3) none along z; ``cross`` (k, 3)
+    is each row's ``z × d``."""
+    n = unit_rows(cross)
+    c = d[:, 2]
+    s = np.array([math.hypot(x, y) for x, y in d[:, :2].tolist()]).reshape(-1)
+    one_minus_c = np.where(c > 0, s * s / np.where(c > 0, 1.0 + c, 1.0), 1.0 - c)
+    return _rodrigues_rows(n, c, s, one_minus_c)
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:

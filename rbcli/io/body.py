@@ -708,6 +708,31 @@ def _max_bytes() -> int:
     return ys.max_bytes()
 
 
+def _may_be_impossible(parts: tuple) -> bool:
+    """Whether the sum of ``parts`` may not be a physically possible inertia: only when one
+    is subtracted or is not a formula shape (a mesh, given mass properties). A sum of
+    physically possible tensors (each shape's own, each parallel-axis term a point mass's)
+    is physically possible, and :func:`rbcli.core.inertia.tensor_problem`'s tolerance
+    (1e-7 of the largest entry) is far above the sum's rounding (~1e-16 of it)."""
+    sure = shp.FORMULA_SHAPES
+    for p in parts:
+        if p.subtract or p.shape not in sure:
+            return True
+    return False
+
+
+def _check_possible(ctx: _Ctx, node: ys.Node, J: np.ndarray, factor: float, unit: str) -> None:
+    """Refuse a body whose inertia ``J`` (about its com) is not physically possible
+    (moments quoted as ``J / factor`` in ``unit``, the file's inertia unit)."""
+    problem = tensor_problem(J, rtol=1e-7, unit=_pretty_unit(unit), factor=factor)
+    if problem:
+        raise ctx.error(
+            node,
+            f"the body's inertia is not physically possible: {problem} "
+            "(is a subtracted part outside the material it is cut from?)",
+        )
+
+
 def _body_defaults(
     loaded: _Loaded, name_default: str, source: str, text: str, inputs: tuple[str, ...] = ()
 ) -> Body:
@@ -756,14 +781,9 @@ def _body_defaults(
             "the body's mass properties overflow (a mass times a squared distance exceeds "
             "1e308); numbers are limited to 1e60 in SI units",
         )
-    factor, unit = ctx.factor("inertia", node)
-    problem = tensor_problem(mp.inertia_com, rtol=1e-7, unit=_pretty_unit(unit), factor=factor)
-    if problem:
-        raise ctx.error(
-            node,
-            f"the body's inertia is not physically possible: {problem} "
-            "(is a subtracted part outside the material it is cut from?)",
-        )
+    factor, unit = ctx.factor("inertia", node)  # its unit errors, whether or not it is used
+    if _may_be_impossible(parts):
+        _check_possible(ctx, node, mp.inertia_com, factor, unit)
     body = Body(
         name=name, source=source, text=text, parts=parts, reference=reference,
         reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
