@@ -211,14 +211,17 @@ def test_a_body_with_other_parts_does_not_reuse_the_kept_mass_properties(generat
     assert mp.mass != body_mass_props(body).mass
 
 
-def test_the_batch_size_does_not_change_a_number(monkeypatch):
-    """Parts placed 7 at a time, or all at once, are the same to the last bit (numpy makes
-    the same BLAS call for each matrix of a stack)."""
+@pytest.mark.parametrize("batch", [1, 7])
+def test_the_batch_size_does_not_change_a_number(monkeypatch, batch):
+    """Parts placed one or 7 at a time, or all at once, are the same to the last bit (numpy
+    makes the same BLAS call for each matrix of a stack). One at a time takes the paths for
+    a batch of one kind (placing._units of diagonal inertias only, rotation.from_specs of
+    one kind or of none); all at once the mixed ones."""
     import rbcli.io.body as io_body
 
     text = _body_text(200)
     whole = load_text(text, "<bench>", ROOT)
-    monkeypatch.setattr(io_body, "BATCH", 7)
+    monkeypatch.setattr(io_body, "BATCH", batch)
     small = load_text(text, "<bench>", ROOT)
     for a, b in zip(whole.parts, small.parts, strict=True):
         assert a.name == b.name and a.mass == b.mass

@@ -46,10 +46,15 @@ class MassProps:
     inertia_com: np.ndarray
 
 
+#: the identity, made once (read-only)
+_EYE = np.eye(3)
+_EYE.setflags(write=False)
+
+
 def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
     """Parallel-axis term ``m (d·d E − d dᵀ)`` (kg m^2) for an offset ``d`` (m)."""
     d = np.asarray(d, dtype=float)
-    return mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
+    return mass * (float(d @ d) * _EYE - np.outer(d, d))
 
 
 #: parts summed per step of :func:`combine`
@@ -105,7 +110,7 @@ def combine(parts: Iterable[Part]) -> MassProps:
         terms[0] = J
         terms[1::2] = sign[a:b, None, None] * np.array(
             [p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
-        terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * np.eye(3)
+        terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * _EYE
                                            - dk[:, :, None] * dk[:, None, :])
         J = np.add.accumulate(terms, axis=0)[-1]
     J = 0.5 * (J + J.T)

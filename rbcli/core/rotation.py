@@ -446,6 +446,11 @@ def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N8
 # ----------------------------------------------------------------------------------------
 
 
+#: the identity, made once (read-only)
+_EYE = np.eye(3)
+_EYE.setflags(write=False)
+
+
 def unit_rows(v: np.ndarray) -> np.ndarray:
     """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
     w = v / np.max(np.abs(v), axis=1)[:, None]
@@ -461,7 +466,7 @@ def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np
     cross[:, 1, 2] = -n[:, 0]
     cross[:, 2, 0] = -n[:, 1]
     cross[:, 2, 1] = n[:, 0]
-    return (c[:, None, None] * np.eye(3) + s[:, None, None] * cross
+    return (c[:, None, None] * _EYE + s[:, None, None] * cross
             + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
 
 
@@ -475,7 +480,7 @@ def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     along = np.max(np.abs(cross), axis=1) == 0.0  # exactly +z or -z
     if not along.any():  # the common case: the same operations on all rows, unindexed
         return _tilted_rows(d, cross)
-    out[along] = np.eye(3)
+    out[along] = _EYE
     out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
     ok = ~along
     if ok.any():
@@ -521,7 +526,7 @@ def euler_rows(angles_rad: np.ndarray, seq: str) -> np.ndarray:
     intrinsic = euler_intrinsic(seq)
     a = np.asarray(angles_rad, dtype=float).reshape(-1, len(seq))
     r = np.zeros((len(a), 3, 3))
-    r[:] = np.eye(3)
+    r[:] = _EYE
     for col, letter in enumerate(seq.lower()):
         e = _elementary_rows(letter, a[:, col].tolist())
         r = r @ e if intrinsic else e @ r
@@ -578,28 +583,37 @@ def from_specs(specs: list) -> np.ndarray:
     :func:`surely_rotation` accepts) or ``("R", matrix)`` (made already). Vectors are
     lists of finite floats, not all zero.
     """
-    out = np.empty((len(specs), 3, 3))
-    out[:] = np.eye(3)
+    n = len(specs)
     groups: dict = {}
     for i, spec in enumerate(specs):
         if spec is not None:
             key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
             groups.setdefault(key, []).append(i)
+    if len(groups) == 1:
+        ((kind, seq), idx), = groups.items()
+        if len(idx) == n:  # one kind for all (a new array): no identity to fill in
+            return _kind_rows(kind, seq, specs)
+    out = np.empty((n, 3, 3))
+    out[:] = _EYE
     for (kind, seq), idx in groups.items():
-        if kind == "R":
-            out[idx] = [specs[i][1] for i in idx]
-        elif kind == "axis":
-            out[idx] = axis_to_z_rows(unit_rows(np.array([specs[i][1] for i in idx])))
-        elif kind == "axis-angle":
-            axes = unit_rows(np.array([specs[i][1] for i in idx]))
-            out[idx] = axis_angle_rows(axes, np.array([specs[i][2] for i in idx]))
-        elif kind == "euler":
-            out[idx] = euler_rows(np.array([specs[i][1] for i in idx]), seq)
-        elif kind == "quaternion":
-            out[idx] = quaternion_rows(np.array([specs[i][1] for i in idx]))
-        else:
-            out[idx] = nearest_rotation_rows(np.array([specs[i][1] for i in idx]))
+        out[idx] = _kind_rows(kind, seq, [specs[i] for i in idx])
     return out
+
+
+def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
+    """The (k, 3, 3) rotations of :func:`from_specs` for ``specs`` of one kind (a new array)."""
+    if kind == "R":
+        return np.array([s[1] for s in specs], dtype=float).reshape(-1, 3, 3)
+    if kind == "axis":
+        return axis_to_z_rows(unit_rows(np.array([s[1] for s in specs])))
+    if kind == "axis-angle":
+        axes = unit_rows(np.array([s[1] for s in specs]))
+        return axis_angle_rows(axes, np.array([s[2] for s in specs]))
+    if kind == "euler":
+        return euler_rows(np.array([s[1] for s in specs]), seq)
+    if kind == "quaternion":
+        return quaternion_rows(np.array([s[1] for s in specs]))
+    return nearest_rotation_rows(np.array([s[1] for s in specs]))
 
 
 # ----------------------------------------------------------------------------------------
