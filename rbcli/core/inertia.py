@@ -179,7 +179,7 @@ def checked_inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
     """
     with np.errstate(over="ignore", invalid="ignore"):
         J = inertia_about(mp, point)
-    if not np.all(np.isfinite(J)):
+    if not np.isfinite(J).all():
         raise InputOverflow(
             "reference", "the inertia about this point overflows: the point is too far from the body"
         )

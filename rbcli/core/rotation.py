@@ -453,7 +453,7 @@ _EYE.setflags(write=False)
 
 def unit_rows(v: np.ndarray) -> np.ndarray:
     """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
-    w = v / np.max(np.abs(v), axis=1)[:, None]
+    w = v / np.abs(v).max(axis=1)[:, None]
     return w / np.sqrt(np.vecdot(w, w))[:, None]
 
 
@@ -477,7 +477,7 @@ def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     cross = np.zeros_like(d)
     cross[:, 0] = -d[:, 1]
     cross[:, 1] = d[:, 0]
-    along = np.max(np.abs(cross), axis=1) == 0.0  # exactly +z or -z
+    along = np.abs(cross).max(axis=1) == 0.0  # exactly +z or -z
     if not along.any():  # the common case: the same operations on all rows, unindexed
         return _tilted_rows(d, cross)
     out[along] = _EYE
@@ -603,7 +603,7 @@ def from_specs(specs: list) -> np.ndarray:
 def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
     """The (k, 3, 3) rotations of :func:`from_specs` for ``specs`` of one kind (a new array)."""
     if kind == "R":
-        return np.array([s[1] for s in specs], dtype=float).reshape(-1, 3, 3)
+        return np.array([s[1] for s in specs], dtype=float)  # (k, 3, 3), its own data
     if kind == "axis":
         return axis_to_z_rows(unit_rows(np.array([s[1] for s in specs])))
     if kind == "axis-angle":

@@ -8,9 +8,9 @@ units must have the right dimension, unknown keys are refused with a
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -775,7 +775,7 @@ def _body_defaults(
             mp = combine(parts)
     except ValueError as exc:
         raise ctx.error(node, str(exc)) from None
-    if not (np.all(np.isfinite(mp.com)) and np.all(np.isfinite(mp.inertia_com))):
+    if not (np.isfinite(mp.com).all() and np.isfinite(mp.inertia_com).all()):
         raise ctx.error(
             node,
             "the body's mass properties overflow (a mass times a squared distance exceeds "
@@ -818,8 +818,7 @@ def load_expr(expr: str) -> Body:
     return load_text(expr, "<expr>", Path.cwd(), name_default="expr")
 
 
-@contextmanager
-def gc_paused():
+class gc_paused:  # noqa: N801 - used as a function: ``with gc_paused():``
     """The cyclic garbage collector off while a body is built (issue 16), or while a
     command makes one small object a part (its JSON rows).
 
@@ -828,15 +827,18 @@ def gc_paused():
     makes next to no reference cycles; whatever it makes is collected after. The tree is
     freed (by reference counting) inside the pause, so that the first collection after it
     scans only the body (~4 objects a part), not the tree too.
-    """
-    import gc
 
-    was = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was:
+    A class, not a ``contextmanager`` generator: entered three times a file in a batch.
+    """
+
+    __slots__ = ("_was",)
+
+    def __enter__(self) -> None:
+        self._was = gc.isenabled()
+        gc.disable()
+
+    def __exit__(self, *exc: object) -> None:
+        if self._was:
             gc.enable()
 
 
