@@ -313,3 +313,26 @@ def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
     with pytest.raises(InputError, match="not physically possible"):
         load_text("{parts: [{shape: sphere, mass: 10, radius: 1}, "
                   "{shape: point, mass: 1, at: [0, 0, 5], subtract: true}]}", "<t>", ROOT)
+
+
+def test_placed_parts_are_what_the_plain_constructors_make(generated):
+    # placing.finish makes Parts positionally and outlines by Outline.of_frozen (no checks):
+    # the same objects as Part(**by name) and Outline(...), whose arrays it keeps as given
+    import dataclasses
+
+    from rbcli.model import Outline, Part, _frozen
+
+    assert [f.name for f in dataclasses.fields(Part)] == [
+        "name", "shape", "mass", "subtract", "com", "inertia_com", "measure", "measure_kind",
+        "radius", "axis", "extra", "where", "outline"]
+    body, _ = generated
+    for p in body.parts:
+        if p.shape in ("mesh", "given") or "/" in p.name:
+            continue
+        o = p.outline
+        plain = Outline(o.kind, o.dims, o.at, o.R)
+        assert plain == o and plain.at is o.at and plain.R is o.R, p.name
+        assert _frozen(o.at) is o.at and _frozen(o.R) is o.R
+        assert not o.at.flags.writeable and not o.R.flags.writeable
+        assert p.extra == {} and p.outline.vertices is None and p.outline.faces is None
+        assert dataclasses.replace(p) == p

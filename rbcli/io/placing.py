@@ -103,18 +103,20 @@ def finish(items: list, start: int = 0) -> list[Part]:
     coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
     Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
     axes = Rs[:, :, 2].copy()
+    if Rs.base is not None:  # the outlines' rows: of an array that owns its data
+        Rs = Rs.copy()
     ats.setflags(write=False)
     Rs.setflags(write=False)
+    outline = Outline.of_frozen  # read-only rows of read-only arrays, as Outline keeps them
     i = 0
     for k in range(start, len(items)):
         p = items[k]
         if p.__class__ is not Pending:
             continue
+        # Part's fields in order (positional: one part after another in a large body)
         items[k] = Part(
-            name=p.name, shape=p.shape, mass=p.mass, subtract=p.subtract, com=coms[i],
-            inertia_com=Js[i], measure=p.measure, measure_kind=p.measure_kind,
-            radius=p.radius, axis=axes[i], where=p.where,
-            outline=Outline(p.shape, dims[i], ats[i], Rs[i]),
+            p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
+            p.radius, axes[i], {}, p.where, outline(p.shape, dims[i], ats[i], Rs[i]),
         )
         i += 1
     return items
