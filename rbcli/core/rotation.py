@@ -458,14 +458,10 @@ def unit_rows(v: np.ndarray) -> np.ndarray:
 
 
 def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
-    k = len(n)
-    cross = np.zeros((k, 3, 3))
-    cross[:, 0, 1] = -n[:, 2]
-    cross[:, 0, 2] = n[:, 1]
-    cross[:, 1, 0] = n[:, 2]
-    cross[:, 1, 2] = -n[:, 0]
-    cross[:, 2, 0] = -n[:, 1]
-    cross[:, 2, 1] = n[:, 0]
+    # [n]x of each row, made from the rows' floats (negation is exact: the same numbers as
+    # the entries set one by one in a zero array)
+    cross = np.array([((0.0, -z, y), (z, 0.0, -x), (-y, x, 0.0)) for x, y, z in n.tolist()],
+                     dtype=float).reshape(-1, 3, 3)
     return (c[:, None, None] * _EYE + s[:, None, None] * cross
             + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
 
@@ -473,29 +469,32 @@ def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np
 def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     """:func:`axis_to_z` of each row of ``directions`` (k, 3)."""
     d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
+    rows = d.tolist()
+    # z × d of each row, and whether it is zero (d exactly along +z or -z)
+    cross = np.array([(-y, x, 0.0) for x, y, _z in rows], dtype=float).reshape(-1, 3)
+    along_rows = [x == 0.0 and y == 0.0 for x, y, _z in rows]
+    if not any(along_rows):  # the common case: the same operations on all rows, unindexed
+        return _tilted_rows(d, cross, rows)
+    along = np.array(along_rows, dtype=bool)
     out = np.empty((len(d), 3, 3))
-    cross = np.zeros_like(d)
-    cross[:, 0] = -d[:, 1]
-    cross[:, 1] = d[:, 0]
-    along = np.abs(cross).max(axis=1) == 0.0  # exactly +z or -z
-    if not along.any():  # the common case: the same operations on all rows, unindexed
-        return _tilted_rows(d, cross)
     out[along] = _EYE
     out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
     ok = ~along
     if ok.any():
-        out[ok] = _tilted_rows(d[ok], cross[ok])
+        out[ok] = _tilted_rows(d[ok], cross[ok], [r for r, a in zip(rows, along_rows) if not a])
     return out
 
 
-def _tilted_rows(d: np.ndarray, cross: np.ndarray) -> np.ndarray:
+def _tilted_rows(d: np.ndarray, cross: np.ndarray, rows: list) -> np.ndarray:
     """:func:`axis_to_z_rows` of unit rows ``d`` (k, 3) none along z; ``cross`` (k, 3)
-    is each row's ``z × d``."""
+    is each row's ``z × d``, ``rows`` is ``d.tolist()``. ``1 − cos θ`` per row in floats:
+    the same correctly rounded operations as the arrays' (``s² / (1 + c)`` for c > 0, which
+    keeps digits near +z, else ``1 − c``)."""
     n = unit_rows(cross)
-    c = d[:, 2]
-    s = np.array([math.hypot(x, y) for x, y in d[:, :2].tolist()]).reshape(-1)
-    one_minus_c = np.where(c > 0, s * s / np.where(c > 0, 1.0 + c, 1.0), 1.0 - c)
-    return _rodrigues_rows(n, c, s, one_minus_c)
+    s = [math.hypot(x, y) for x, y, _z in rows]
+    one_minus_c = [si * si / (1.0 + z) if z > 0 else 1.0 - z for si, (_x, _y, z) in zip(s, rows)]
+    return _rodrigues_rows(n, d[:, 2], np.array(s, dtype=float).reshape(-1),
+                           np.array(one_minus_c, dtype=float).reshape(-1))
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
