@@ -85,8 +85,9 @@ def combine(parts: Iterable[Part]) -> MassProps:
     if not parts:
         raise ValueError("the body has no parts")
     n = len(parts)
-    sign = np.array([-1.0 if p.subtract else 1.0 for p in parts])
-    m = sign * np.array([p.mass for p in parts], dtype=float)
+    # sᵢ mᵢ (negation is exact: sᵢ × mᵢ's numbers), and the holes, whose tensors count negative
+    m = np.array([-p.mass if p.subtract else p.mass for p in parts], dtype=float)
+    holes = [i for i, p in enumerate(parts) if p.subtract]
     c = np.array([p.com for p in parts], dtype=float).reshape(n, 3)
     total = float(m.sum())
     if not total > 0.0:
@@ -108,8 +109,11 @@ def combine(parts: Iterable[Part]) -> MassProps:
         # terms[0] = the sum so far, then per part: sᵢ Jᵢ, and mᵢ (dᵢ·dᵢ E − dᵢ dᵢᵀ)
         terms = np.empty((2 * k + 1, 3, 3))
         terms[0] = J
-        terms[1::2] = sign[a:b, None, None] * np.array(
-            [p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
+        own = np.array([p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
+        mine = [i - a for i in holes if a <= i < b]
+        if mine:
+            own[mine] *= -1.0  # sᵢ Jᵢ (1.0 × Jᵢ is Jᵢ)
+        terms[1::2] = own
         terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * _EYE
                                            - dk[:, :, None] * dk[:, None, :])
         J = np.add.accumulate(terms, axis=0)[-1]
