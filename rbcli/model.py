@@ -14,6 +14,8 @@ from rbcli.errors import Location
 
 
 _FLOAT = np.dtype(float)
+_new = object.__new__
+_set = object.__setattr__
 
 
 def _frozen(a, dtype=_FLOAT) -> np.ndarray:
@@ -73,6 +75,20 @@ class Outline:
         if self.vertices is not None:
             object.__setattr__(self, "vertices", _frozen(self.vertices))
             object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
+
+    @classmethod
+    def of_frozen(cls, kind: str, dims: tuple, at: np.ndarray, R: np.ndarray) -> Outline:
+        """``Outline(kind, dims, at, R)`` for ``at`` and ``R`` that the constructor would
+        keep as they are (read-only views of read-only arrays that own their data: the body
+        loader's rows, one outline a part), without checking them again."""
+        o = _new(cls)
+        _set(o, "kind", kind)
+        _set(o, "dims", dims)
+        _set(o, "at", at)
+        _set(o, "R", R)
+        _set(o, "vertices", None)
+        _set(o, "faces", None)
+        return o
 
     def placed(self, at, R) -> Outline:
         """The same outline moved by ``x -> at + R x`` (as an included file's parts are)."""

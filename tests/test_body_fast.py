@@ -211,14 +211,17 @@ def test_a_body_with_other_parts_does_not_reuse_the_kept_mass_properties(generat
     assert mp.mass != body_mass_props(body).mass
 
 
-def test_the_batch_size_does_not_change_a_number(monkeypatch):
-    """Parts placed 7 at a time, or all at once, are the same to the last bit (numpy makes
-    the same BLAS call for each matrix of a stack)."""
+@pytest.mark.parametrize("batch", [1, 7])
+def test_the_batch_size_does_not_change_a_number(monkeypatch, batch):
+    """Parts placed one or 7 at a time, or all at once, are the same to the last bit (numpy
+    makes the same BLAS call for each matrix of a stack). One at a time takes the paths for
+    a batch of one kind (placing._units of diagonal inertias only, rotation.from_specs of
+    one kind or of none); all at once the mixed ones."""
     import rbcli.io.body as io_body
 
     text = _body_text(200)
     whole = load_text(text, "<bench>", ROOT)
-    monkeypatch.setattr(io_body, "BATCH", 7)
+    monkeypatch.setattr(io_body, "BATCH", batch)
     small = load_text(text, "<bench>", ROOT)
     for a, b in zip(whole.parts, small.parts, strict=True):
         assert a.name == b.name and a.mass == b.mass
@@ -267,3 +270,69 @@ def test_included_outlines_are_placed_bit_for_bit_as_one_by_one():
             assert np.array_equal(ref.at, n.at) and np.array_equal(ref.R, n.R)
             assert np.array_equal(np.signbit(ref.at), np.signbit(n.at))
             assert (n.kind, n.dims) == (o.kind, o.dims)
+
+
+def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
+    # The loader checks the body's inertia (tensor_problem) only when a part is subtracted
+    # or not a formula shape (body._may_be_impossible): a sum of physically possible
+    # tensors is one. Here every run of 1 to 4 consecutive added formula-shape parts of
+    # the generated body (every shape, every placement), and all of them, pass the check
+    # the loader skips, with its own tolerance (1e-7).
+    from rbcli.core.inertia import tensor_problem
+    from rbcli.io.body import _may_be_impossible
+
+    body, _ = generated
+    sure = [p for p in body.parts if not p.subtract and p.shape in shp.FORMULA_SHAPES]
+    assert {p.shape for p in sure} == set(shp.FORMULA_SHAPES) - {"torus"}  # the torus: below
+    runs = [sure[i:i + k] for k in (1, 2, 3, 4) for i in range(0, len(sure) - k + 1)] + [sure]
+    for run in runs:
+        assert not _may_be_impossible(tuple(run))
+        with np.errstate(over="ignore", invalid="ignore"):
+            J = combine(run).inertia_com
+        assert tensor_problem(J, rtol=1e-7) is None, [p.name for p in run]
+    # thin shapes (a moment equal to the sum of the other two) and point masses: on the edge
+    for text in ("{shape: rod, mass: 1, length: 1}", "{shape: disk, mass: 1, radius: 1}",
+                 "{shape: point, mass: 1}", "{shape: torus, mass: 1, major_radius: 2, minor_radius: 1e-9}",
+                 "{parts: [{shape: point, mass: 1, at: [1, 0, 0]}, {shape: point, mass: 3, at: [0, 2e-9, 0]}]}",
+                 "{parts: [{shape: plate, mass: 1, size: [1, 2e-9]}, {shape: rod, mass: 2, length: 3, axis: [1, 1, 1]}]}"):
+        b = load_text(text, "<t>", ROOT)
+        assert not _may_be_impossible(b.parts)
+        assert tensor_problem(combine(b.parts).inertia_com, rtol=1e-7) is None, text
+
+
+def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
+    from rbcli.errors import InputError
+    from rbcli.io.body import _may_be_impossible
+
+    hole = load_text("{parts: [{shape: box, mass: 2, size: [1, 1, 1]}, "
+                     "{shape: box, mass: 1, size: [0.5, 0.5, 0.5], subtract: true}]}", "<t>", ROOT)
+    assert _may_be_impossible(hole.parts)
+    given = load_text("{shape: given, mass: 1, inertia: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}", "<t>", ROOT)
+    assert _may_be_impossible(given.parts)
+    # a hole outside its material: refused with the message of the check
+    with pytest.raises(InputError, match="not physically possible"):
+        load_text("{parts: [{shape: sphere, mass: 10, radius: 1}, "
+                  "{shape: point, mass: 1, at: [0, 0, 5], subtract: true}]}", "<t>", ROOT)
+
+
+def test_placed_parts_are_what_the_plain_constructors_make(generated):
+    # placing.finish makes Parts positionally and outlines by Outline.of_frozen (no checks):
+    # the same objects as Part(**by name) and Outline(...), whose arrays it keeps as given
+    import dataclasses
+
+    from rbcli.model import Outline, Part, _frozen
+
+    assert [f.name for f in dataclasses.fields(Part)] == [
+        "name", "shape", "mass", "subtract", "com", "inertia_com", "measure", "measure_kind",
+        "radius", "axis", "extra", "where", "outline"]
+    body, _ = generated
+    for p in body.parts:
+        if p.shape in ("mesh", "given") or "/" in p.name:
+            continue
+        o = p.outline
+        plain = Outline(o.kind, o.dims, o.at, o.R)
+        assert plain == o and plain.at is o.at and plain.R is o.R, p.name
+        assert _frozen(o.at) is o.at and _frozen(o.R) is o.R
+        assert not o.at.flags.writeable and not o.R.flags.writeable
+        assert p.extra == {} and p.outline.vertices is None and p.outline.faces is None
+        assert dataclasses.replace(p) == p

@@ -43,3 +43,26 @@ DOCS = st.recursive(SCALARS, lambda kids: st.one_of(st.lists(kids, max_size=4),
 def test_indented_json_is_the_oracles(doc):
     assert dumps(doc) == _oracle(jsonable(doc)) + "\n"  # both after the one check (no -0.0)
     assert json.loads(dumps(doc)) == doc
+
+
+@settings(max_examples=300, deadline=None)
+@given(DOCS)
+def test_plain_dumps_of_jsonable_data_is_dumps(doc):
+    # the commands pass a result's to_json() (jsonable's result) with plain=True
+    data = jsonable(doc)
+    assert jsonable(data) == data
+    assert dumps(data, plain=True) == dumps(doc)
+    assert dumps(data, lines=True, plain=True) == dumps(doc, lines=True)
+
+
+def test_plain_dumps_of_the_examples_results_is_dumps():
+    from pathlib import Path
+
+    import rbcli
+
+    for path in sorted((Path(__file__).resolve().parent.parent / "examples").glob("*.yaml")):
+        body = rbcli.load(str(path))
+        for res in (rbcli.inertia(body), rbcli.principal(body)):
+            data = res.to_json()
+            for lines in (False, True):
+                assert dumps(data, lines=lines, plain=True) == dumps(data, lines=lines), path

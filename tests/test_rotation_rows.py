@@ -74,3 +74,24 @@ def test_unit_rows_is_unit(rng):
     rows = rot.unit_rows(v)
     for k in range(len(v)):
         assert np.array_equal(rows[k], rot._unit(v[k])), k
+
+
+def test_from_specs_of_one_kind_is_from_specs_of_a_mix(rng):
+    # from_specs makes a batch of one kind without the identity it fills in for a mix
+    d = _vectors(rng, 50, 3)
+    specs = ([("axis", list(v)) for v in d]
+             + [("axis-angle", list(v), float(a)) for v, a in zip(d, rng.uniform(-7, 7, 50))]
+             + [("euler", list(a), "zyx") for a in rng.uniform(-4, 4, (50, 3))]
+             + [("quaternion", list(q)) for q in _vectors(rng, 50, 4)]
+             + [("R", rot.axis_to_z(v)) for v in d[3:]]
+             + [("matrix", rot.axis_to_z(v).tolist()) for v in d[3:]])
+    mixed = rot.from_specs([None, *specs])
+    assert np.array_equal(mixed[0], np.eye(3))
+    for k, spec in enumerate(specs):
+        assert np.array_equal(rot.from_specs([spec])[0], mixed[k + 1]), spec[0]
+    kinds = {}
+    for k, spec in enumerate(specs):
+        kinds.setdefault(spec[0], []).append(k)
+    for kind, idx in kinds.items():
+        assert np.array_equal(rot.from_specs([specs[k] for k in idx]), mixed[[k + 1 for k in idx]]), kind
+    assert np.array_equal(rot.from_specs([None, None]), np.array([np.eye(3)] * 2))

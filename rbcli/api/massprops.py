@@ -99,8 +99,9 @@ def snap(values: Any, scale: float | None = None, rtol: float = 1e-14) -> Any:
     import numpy as np
 
     a = np.array(values, dtype=float)
-    s = float(np.max(np.abs(a))) if scale is None else scale
-    a[np.abs(a) <= rtol * s] = 0.0
+    mag = np.abs(a)
+    s = float(mag.max()) if scale is None else scale
+    a[mag <= rtol * s] = 0.0
     a[a == 0.0] = 0.0  # no negative zeros
     return a
 

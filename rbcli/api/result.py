@@ -82,7 +82,16 @@ def _fast(obj: Any) -> Any:
         if obj.size <= 64 or obj.dtype.kind != "f" or obj.dtype.itemsize > 8:
             # a small array: tolist() and the loops above beat numpy's calls (what _slow does
             # with an ndarray, which has no to_json)
-            return _fast(obj.tolist())
+            lst = obj.tolist()
+            if obj.ndim == 2 and obj.dtype.kind == "f":  # a 3x3 tensor: its rows here
+                rows = []
+                for row in lst:
+                    for x in row:
+                        if x - x != 0.0:  # inf or NaN: the list path names it
+                            return _fast(lst)
+                    rows.append([x if x != 0.0 else 0.0 for x in row])
+                return rows
+            return _fast(lst)
         import numpy as np
 
         if obj.size and not np.isfinite(obj).all():

@@ -195,7 +195,7 @@ def output_format(json_: bool, fmt: str | None, extra: tuple[str, ...] = ()) -> 
 
 
 def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = False,
-         file: str | None = None, given: Any = ()) -> None:
+         file: str | None = None, given: Any = (), plain: bool = False) -> None:
     """Print a command's result in format ``fmt`` (:func:`output_format`; True = "json",
     False = "table"): JSON of ``data_fn()`` (one compact line with ``lines``, for JSON
     Lines), or the tables ``doc_fn(doc)`` puts in a Doc, as text or as CSV (with a ``file``
@@ -203,12 +203,13 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
     printed is built. ``given`` (option, value, unit) rows are the options as understood
     (an XOptions' ``given``): the text output shows them first (after the title), in a table
-    titled "options" (JSON and CSV stay as they are)."""
+    titled "options" (JSON and CSV stay as they are). ``plain``: ``data_fn()`` returns
+    jsonable's result already (a result's ``to_json()``), not converted again."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
     if fmt == "json":
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(data_fn(), lines=lines))
+        e.write(dumps(data_fn(), lines=lines, plain=plain))
         return
     from rbcli.render.text import Doc
 

@@ -135,7 +135,7 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
         return
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
-           file=body.source if many else None, given=opts.echo)
+           file=body.source if many else None, given=opts.echo, plain=True)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -181,7 +181,7 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
         c.save_plot(fig, plot_path)
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
-           file=body.source if many else None, given=opts.echo)
+           file=body.source if many else None, given=opts.echo, plain=True)
 
 
 MANUAL["inertia"] = {

@@ -46,10 +46,15 @@ class MassProps:
     inertia_com: np.ndarray
 
 
+#: the identity, made once (read-only)
+_EYE = np.eye(3)
+_EYE.setflags(write=False)
+
+
 def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
     """Parallel-axis term ``m (d·d E − d dᵀ)`` (kg m^2) for an offset ``d`` (m)."""
     d = np.asarray(d, dtype=float)
-    return mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
+    return mass * (float(d @ d) * _EYE - np.outer(d, d))
 
 
 #: parts summed per step of :func:`combine`
@@ -80,8 +85,9 @@ def combine(parts: Iterable[Part]) -> MassProps:
     if not parts:
         raise ValueError("the body has no parts")
     n = len(parts)
-    sign = np.array([-1.0 if p.subtract else 1.0 for p in parts])
-    m = sign * np.array([p.mass for p in parts], dtype=float)
+    # sᵢ mᵢ (negation is exact: sᵢ × mᵢ's numbers), and the holes, whose tensors count negative
+    m = np.array([-p.mass if p.subtract else p.mass for p in parts], dtype=float)
+    holes = [i for i, p in enumerate(parts) if p.subtract]
     c = np.array([p.com for p in parts], dtype=float).reshape(n, 3)
     total = float(m.sum())
     if not total > 0.0:
@@ -103,9 +109,12 @@ def combine(parts: Iterable[Part]) -> MassProps:
         # terms[0] = the sum so far, then per part: sᵢ Jᵢ, and mᵢ (dᵢ·dᵢ E − dᵢ dᵢᵀ)
         terms = np.empty((2 * k + 1, 3, 3))
         terms[0] = J
-        terms[1::2] = sign[a:b, None, None] * np.array(
-            [p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
-        terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * np.eye(3)
+        own = np.array([p.inertia_com for p in parts[a:b]], dtype=float).reshape(k, 3, 3)
+        mine = [i - a for i in holes if a <= i < b]
+        if mine:
+            own[mine] *= -1.0  # sᵢ Jᵢ (1.0 × Jᵢ is Jᵢ)
+        terms[1::2] = own
+        terms[2::2] = mk[:, None, None] * (np.vecdot(dk, dk)[:, None, None] * _EYE
                                            - dk[:, :, None] * dk[:, None, :])
         J = np.add.accumulate(terms, axis=0)[-1]
     J = 0.5 * (J + J.T)
@@ -174,7 +183,7 @@ def checked_inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
     """
     with np.errstate(over="ignore", invalid="ignore"):
         J = inertia_about(mp, point)
-    if not np.all(np.isfinite(J)):
+    if not np.isfinite(J).all():
         raise InputOverflow(
             "reference", "the inertia about this point overflows: the point is too far from the body"
         )

@@ -446,44 +446,55 @@ def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N8
 # ----------------------------------------------------------------------------------------
 
 
+#: the identity, made once (read-only)
+_EYE = np.eye(3)
+_EYE.setflags(write=False)
+
+
 def unit_rows(v: np.ndarray) -> np.ndarray:
     """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
-    w = v / np.max(np.abs(v), axis=1)[:, None]
+    w = v / np.abs(v).max(axis=1)[:, None]
     return w / np.sqrt(np.vecdot(w, w))[:, None]
 
 
 def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
-    k = len(n)
-    cross = np.zeros((k, 3, 3))
-    cross[:, 0, 1] = -n[:, 2]
-    cross[:, 0, 2] = n[:, 1]
-    cross[:, 1, 0] = n[:, 2]
-    cross[:, 1, 2] = -n[:, 0]
-    cross[:, 2, 0] = -n[:, 1]
-    cross[:, 2, 1] = n[:, 0]
-    return (c[:, None, None] * np.eye(3) + s[:, None, None] * cross
+    # [n]x of each row, made from the rows' floats (negation is exact: the same numbers as
+    # the entries set one by one in a zero array)
+    cross = np.array([((0.0, -z, y), (z, 0.0, -x), (-y, x, 0.0)) for x, y, z in n.tolist()],
+                     dtype=float).reshape(-1, 3, 3)
+    return (c[:, None, None] * _EYE + s[:, None, None] * cross
             + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
 
 
 def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     """:func:`axis_to_z` of each row of ``directions`` (k, 3)."""
     d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
+    rows = d.tolist()
+    # z × d of each row, and whether it is zero (d exactly along +z or -z)
+    cross = np.array([(-y, x, 0.0) for x, y, _z in rows], dtype=float).reshape(-1, 3)
+    along_rows = [x == 0.0 and y == 0.0 for x, y, _z in rows]
+    if not any(along_rows):  # the common case: the same operations on all rows, unindexed
+        return _tilted_rows(d, cross, rows)
+    along = np.array(along_rows, dtype=bool)
     out = np.empty((len(d), 3, 3))
-    cross = np.zeros_like(d)
-    cross[:, 0] = -d[:, 1]
-    cross[:, 1] = d[:, 0]
-    along = np.max(np.abs(cross), axis=1) == 0.0  # exactly +z or -z
-    out[along] = np.eye(3)
+    out[along] = _EYE
     out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
     ok = ~along
     if ok.any():
-        dd = d[ok]
-        n = unit_rows(cross[ok])
-        c = dd[:, 2]
-        s = np.array([math.hypot(x, y) for x, y in dd[:, :2].tolist()]).reshape(-1)
-        one_minus_c = np.where(c > 0, s * s / np.where(c > 0, 1.0 + c, 1.0), 1.0 - c)
-        out[ok] = _rodrigues_rows(n, c, s, one_minus_c)
+        out[ok] = _tilted_rows(d[ok], cross[ok], [r for r, a in zip(rows, along_rows) if not a])
     return out
+
+
+def _tilted_rows(d: np.ndarray, cross: np.ndarray, rows: list) -> np.ndarray:
+    """:func:`axis_to_z_rows` of unit rows ``d`` (k, 3) none along z; ``cross`` (k, 3)
+    is each row's ``z × d``, ``rows`` is ``d.tolist()``. ``1 − cos θ`` per row in floats:
+    the same correctly rounded operations as the arrays' (``s² / (1 + c)`` for c > 0, which
+    keeps digits near +z, else ``1 − c``)."""
+    n = unit_rows(cross)
+    s = [math.hypot(x, y) for x, y, _z in rows]
+    one_minus_c = [si * si / (1.0 + z) if z > 0 else 1.0 - z for si, (_x, _y, z) in zip(s, rows)]
+    return _rodrigues_rows(n, d[:, 2], np.array(s, dtype=float).reshape(-1),
+                           np.array(one_minus_c, dtype=float).reshape(-1))
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
@@ -514,7 +525,7 @@ def euler_rows(angles_rad: np.ndarray, seq: str) -> np.ndarray:
     intrinsic = euler_intrinsic(seq)
     a = np.asarray(angles_rad, dtype=float).reshape(-1, len(seq))
     r = np.zeros((len(a), 3, 3))
-    r[:] = np.eye(3)
+    r[:] = _EYE
     for col, letter in enumerate(seq.lower()):
         e = _elementary_rows(letter, a[:, col].tolist())
         r = r @ e if intrinsic else e @ r
@@ -571,28 +582,37 @@ def from_specs(specs: list) -> np.ndarray:
     :func:`surely_rotation` accepts) or ``("R", matrix)`` (made already). Vectors are
     lists of finite floats, not all zero.
     """
-    out = np.empty((len(specs), 3, 3))
-    out[:] = np.eye(3)
+    n = len(specs)
     groups: dict = {}
     for i, spec in enumerate(specs):
         if spec is not None:
             key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
             groups.setdefault(key, []).append(i)
+    if len(groups) == 1:
+        ((kind, seq), idx), = groups.items()
+        if len(idx) == n:  # one kind for all (a new array): no identity to fill in
+            return _kind_rows(kind, seq, specs)
+    out = np.empty((n, 3, 3))
+    out[:] = _EYE
     for (kind, seq), idx in groups.items():
-        if kind == "R":
-            out[idx] = [specs[i][1] for i in idx]
-        elif kind == "axis":
-            out[idx] = axis_to_z_rows(unit_rows(np.array([specs[i][1] for i in idx])))
-        elif kind == "axis-angle":
-            axes = unit_rows(np.array([specs[i][1] for i in idx]))
-            out[idx] = axis_angle_rows(axes, np.array([specs[i][2] for i in idx]))
-        elif kind == "euler":
-            out[idx] = euler_rows(np.array([specs[i][1] for i in idx]), seq)
-        elif kind == "quaternion":
-            out[idx] = quaternion_rows(np.array([specs[i][1] for i in idx]))
-        else:
-            out[idx] = nearest_rotation_rows(np.array([specs[i][1] for i in idx]))
+        out[idx] = _kind_rows(kind, seq, [specs[i] for i in idx])
     return out
+
+
+def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
+    """The (k, 3, 3) rotations of :func:`from_specs` for ``specs`` of one kind (a new array)."""
+    if kind == "R":
+        return np.array([s[1] for s in specs], dtype=float)  # (k, 3, 3), its own data
+    if kind == "axis":
+        return axis_to_z_rows(unit_rows(np.array([s[1] for s in specs])))
+    if kind == "axis-angle":
+        axes = unit_rows(np.array([s[1] for s in specs]))
+        return axis_angle_rows(axes, np.array([s[2] for s in specs]))
+    if kind == "euler":
+        return euler_rows(np.array([s[1] for s in specs]), seq)
+    if kind == "quaternion":
+        return quaternion_rows(np.array([s[1] for s in specs]))
+    return nearest_rotation_rows(np.array([s[1] for s in specs]))
 
 
 # ----------------------------------------------------------------------------------------

@@ -565,6 +565,11 @@ _BUILDERS: dict[str, Callable[[dict[str, Any]], ShapeGeometry]] = {
     "torus": _torus,
 }
 
+#: the shapes made by a formula for a real mass distribution (not ``mesh`` or ``given``):
+#: their inertia tensors are physically possible by construction, and so is any sum of
+#: them with their parallel-axis terms (each a point mass's tensor)
+FORMULA_SHAPES = frozenset(_BUILDERS)
+
 
 #: each shape's parameters, required then optional (filled on first use)
 _PARAMETERS: dict[str, tuple[str, ...]] = {}

@@ -8,9 +8,9 @@ units must have the right dimension, unknown keys are refused with a
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -708,6 +708,31 @@ def _max_bytes() -> int:
     return ys.max_bytes()
 
 
+def _may_be_impossible(parts: tuple) -> bool:
+    """Whether the sum of ``parts`` may not be a physically possible inertia: only when one
+    is subtracted or is not a formula shape (a mesh, given mass properties). A sum of
+    physically possible tensors (each shape's own, each parallel-axis term a point mass's)
+    is physically possible, and :func:`rbcli.core.inertia.tensor_problem`'s tolerance
+    (1e-7 of the largest entry) is far above the sum's rounding (~1e-16 of it)."""
+    sure = shp.FORMULA_SHAPES
+    for p in parts:
+        if p.subtract or p.shape not in sure:
+            return True
+    return False
+
+
+def _check_possible(ctx: _Ctx, node: ys.Node, J: np.ndarray, factor: float, unit: str) -> None:
+    """Refuse a body whose inertia ``J`` (about its com) is not physically possible
+    (moments quoted as ``J / factor`` in ``unit``, the file's inertia unit)."""
+    problem = tensor_problem(J, rtol=1e-7, unit=_pretty_unit(unit), factor=factor)
+    if problem:
+        raise ctx.error(
+            node,
+            f"the body's inertia is not physically possible: {problem} "
+            "(is a subtracted part outside the material it is cut from?)",
+        )
+
+
 def _body_defaults(
     loaded: _Loaded, name_default: str, source: str, text: str, inputs: tuple[str, ...] = ()
 ) -> Body:
@@ -750,20 +775,15 @@ def _body_defaults(
             mp = combine(parts)
     except ValueError as exc:
         raise ctx.error(node, str(exc)) from None
-    if not (np.all(np.isfinite(mp.com)) and np.all(np.isfinite(mp.inertia_com))):
+    if not (np.isfinite(mp.com).all() and np.isfinite(mp.inertia_com).all()):
         raise ctx.error(
             node,
             "the body's mass properties overflow (a mass times a squared distance exceeds "
             "1e308); numbers are limited to 1e60 in SI units",
         )
-    factor, unit = ctx.factor("inertia", node)
-    problem = tensor_problem(mp.inertia_com, rtol=1e-7, unit=_pretty_unit(unit), factor=factor)
-    if problem:
-        raise ctx.error(
-            node,
-            f"the body's inertia is not physically possible: {problem} "
-            "(is a subtracted part outside the material it is cut from?)",
-        )
+    factor, unit = ctx.factor("inertia", node)  # its unit errors, whether or not it is used
+    if _may_be_impossible(parts):
+        _check_possible(ctx, node, mp.inertia_com, factor, unit)
     body = Body(
         name=name, source=source, text=text, parts=parts, reference=reference,
         reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
@@ -798,8 +818,7 @@ def load_expr(expr: str) -> Body:
     return load_text(expr, "<expr>", Path.cwd(), name_default="expr")
 
 
-@contextmanager
-def gc_paused():
+class gc_paused:  # noqa: N801 - used as a function: ``with gc_paused():``
     """The cyclic garbage collector off while a body is built (issue 16), or while a
     command makes one small object a part (its JSON rows).
 
@@ -808,15 +827,18 @@ def gc_paused():
     makes next to no reference cycles; whatever it makes is collected after. The tree is
     freed (by reference counting) inside the pause, so that the first collection after it
     scans only the body (~4 objects a part), not the tree too.
-    """
-    import gc
 
-    was = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was:
+    A class, not a ``contextmanager`` generator: entered three times a file in a batch.
+    """
+
+    __slots__ = ("_was",)
+
+    def __enter__(self) -> None:
+        self._was = gc.isenabled()
+        gc.disable()
+
+    def __exit__(self, *exc: object) -> None:
+        if self._was:
             gc.enable()
 
 

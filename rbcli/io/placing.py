@@ -56,6 +56,30 @@ def dims_of(params: dict) -> tuple:
     return tuple(dims)
 
 
+def _units(pending: list) -> np.ndarray:
+    """The (n, 3, 3) unit inertias of ``pending`` (:func:`_mixed_units`'s numbers)."""
+    units = [p.unit_inertia for p in pending]
+    if all(u.__class__ is tuple for u in units):  # all diagonal (the common case): one copy
+        U = np.zeros((len(units), 9))
+        U[:, ::4] = units  # the diagonal of each row's 3x3
+        return U.reshape(-1, 3, 3)
+    return _mixed_units(pending)
+
+
+def _mixed_units(pending: list) -> np.ndarray:
+    """The (n, 3, 3) unit inertias of ``pending``: diagonal 3-tuples and (3, 3) arrays."""
+    n = len(pending)
+    U = np.zeros((n, 3, 3))
+    diag = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is tuple]
+    if diag:
+        d = np.array([pending[i].unit_inertia for i in diag], dtype=float).reshape(-1, 3)
+        for j in range(3):
+            U[diag, j, j] = d[:, j]
+    full = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is not tuple]
+    U[full] = [pending[i].unit_inertia for i in full]
+    return U
+
+
 def finish(items: list, start: int = 0) -> list[Part]:
     """``items`` with every :class:`Pending` of ``items[start:]`` replaced by its placed
     :class:`Part` (in place).
@@ -73,32 +97,26 @@ def finish(items: list, start: int = 0) -> list[Part]:
     ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), not a view (see _frozen)
     Rs = rot.from_specs([p.spec for p in pending])
     local_coms = np.array([p.com for p in pending], dtype=float).reshape(n, 3)
-    U = np.zeros((n, 3, 3))
-    diag = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is tuple]
-    if diag:
-        d = np.array([pending[i].unit_inertia for i in diag], dtype=float).reshape(-1, 3)
-        for j in range(3):
-            U[diag, j, j] = d[:, j]
-    if len(diag) < n:
-        full = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is not tuple]
-        U[full] = [pending[i].unit_inertia for i in full]
+    U = _units(pending)
     masses = np.array([p.mass for p in pending], dtype=float)
     del pending  # each one goes when its Part replaces it (the peak memory of a large body)
     coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
     Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
     axes = Rs[:, :, 2].copy()
+    if Rs.base is not None:  # the outlines' rows: of an array that owns its data
+        Rs = Rs.copy()
     ats.setflags(write=False)
     Rs.setflags(write=False)
+    outline = Outline.of_frozen  # read-only rows of read-only arrays, as Outline keeps them
     i = 0
     for k in range(start, len(items)):
         p = items[k]
         if p.__class__ is not Pending:
             continue
+        # Part's fields in order (positional: one part after another in a large body)
         items[k] = Part(
-            name=p.name, shape=p.shape, mass=p.mass, subtract=p.subtract, com=coms[i],
-            inertia_com=Js[i], measure=p.measure, measure_kind=p.measure_kind,
-            radius=p.radius, axis=axes[i], where=p.where,
-            outline=Outline(p.shape, dims[i], ats[i], Rs[i]),
+            p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
+            p.radius, axes[i], {}, p.where, outline(p.shape, dims[i], ats[i], Rs[i]),
         )
         i += 1
     return items

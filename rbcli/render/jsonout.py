@@ -13,9 +13,13 @@ from rbcli.api.result import jsonable  # noqa: F401  (the one finiteness check)
 _LINE = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"))
 
 
-def dumps(obj: Any, *, lines: bool = False) -> str:
-    """One JSON document (indented, numeric arrays on one line), or one compact line."""
-    data = jsonable(obj)
+def dumps(obj: Any, *, lines: bool = False, plain: bool = False) -> str:
+    """One JSON document (indented, numeric arrays on one line), or one compact line.
+
+    ``plain``: ``obj`` is :func:`jsonable`'s result already (e.g. a result's ``to_json()``),
+    which is not converted and checked a second time (the same text: ``jsonable`` of its
+    own result gives it back equal)."""
+    data = obj if plain else jsonable(obj)
     if lines:
         return _LINE.encode(data) + "\n"
     return _pretty(data, 0) + "\n"
