@@ -90,11 +90,6 @@ class Outline:
         _set(o, "faces", None)
         return o
 
-    def placed(self, at, R) -> Outline:
-        """The same outline moved by ``x -> at + R x`` (as an included file's parts are)."""
-        R = np.asarray(R, dtype=float)
-        return Outline(self.kind, self.dims, np.asarray(at, dtype=float) + R @ self.at, R @ self.R,
-                       self.vertices, self.faces)
 
 
 @dataclass(frozen=True, slots=True)

@@ -498,8 +498,9 @@ def _include(ctx, m, name, prefix) -> list[Part]:
 
 
 def _placed_outlines(outlines: list, at: np.ndarray, R: np.ndarray) -> list:
-    """``[o.placed(at, R) for o in outlines]`` (None stays None), the products stacked: the
-    same numbers, bit for bit (tests/test_body_fast.py), without two small products a part."""
+    """``outlines`` moved by ``x -> at + R x`` as an included file's parts are (None stays
+    None): the products stacked, the same numbers bit for bit as one part at a time
+    (tests/test_body_fast.py), without two small products a part."""
     from rbcli.model import Outline
 
     idx = [i for i, o in enumerate(outlines) if o is not None]
