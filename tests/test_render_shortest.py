@@ -103,6 +103,7 @@ def test_extremes_zero_and_subnormals():
                           np.nextafter(TINY, 0) - 5e-324 * np.arange(3000)])
     check(np.concatenate([[0.0, -0.0, TINY, HUGE, 5e-324], neighbours([TINY, HUGE, 5e-324]), sub]))
     assert rows_text(np.array([[-0.0, 0.0]])) == "0.0,0.0\n"
+    assert shortest.csv_text(np.array([[-0.0, 0.0]])) == "-0.0,0.0\n"  # repr itself
 
 
 def test_nan_and_infinities_among_fast_rows():

@@ -3,7 +3,8 @@
 Why: ``--csv`` writes ~10^6 numbers, each as ``repr(float)`` (the shortest decimal that
 reads back to the same double, David Gay's dtoa mode 0). CPython spends ~0.5 µs a number
 on that, whatever the Python around it; here the same text is computed for whole numpy
-arrays at once (~0.1 µs a number), byte for byte.
+arrays at once (~0.2 µs a number, most of it numpy's passes over the arrays), byte for
+byte.
 
 Algorithm: Schubfach (Raffaello Giulietti, "The Schubfach way to render doubles", 2020;
 the reference is OpenJDK's ``jdk.internal.math.DoubleToDecimal``, used by
@@ -12,7 +13,8 @@ the reference is OpenJDK's ``jdk.internal.math.DoubleToDecimal``, used by
 whose rounding interval is asymmetric), the scaled value and the interval bounds are
 ``rop(g, c 2^h)``, a rounded-to-odd product with the 126-bit ``g ~ 10^-k``; among the
 decimals of the rounding interval (its bounds included when ``c`` is even) the shortest,
-and among those the closest to ``v`` (a tie to the even digit). The 64 x 64 -> 128-bit
+and among those the closest to ``v`` (a tie to the even digit); Java's shortcut for
+integers is left out (the general path gives the same digits). The 64 x 64 -> 128-bit
 products are done on uint64 arrays split in 32-bit limbs. The table of ``g`` is built with
 Python ints on first use (cached), never at import.
 
@@ -43,10 +45,12 @@ _U = np.uint64
 _M32 = _U(0xFFFFFFFF)
 _M63 = _U((1 << 63) - 1)
 _K_MIN, _K_MAX = -324, 292
-_ONES = _U(0x0101010101010101)
 _ASCII0 = _U(0x3030303030303030)
 _HIGHBITS = _U(0x8080808080808080)
 _LOW7 = _U(0x7F7F7F7F7F7F7F7F)
+_ALL = _U(2**64 - 1)
+_DOT = _U(0x2E)
+_PREFIX = _U(int.from_bytes(b"0.000", "little"))
 
 
 def _flog10pow2(e):
@@ -67,7 +71,7 @@ def _flog2pow10(e):
 @functools.cache
 def _tables() -> dict[str, np.ndarray]:
     """Schubfach's g = floor(10^-k 2^-r) + 1 (2^125 <= g < 2^126) for every k, as 32-bit
-    limbs of g1 = g >> 63 and g0 = g mod 2^63; and the small byte tables of the layout."""
+    limbs of g1 = g >> 63 and g0 = g mod 2^63; and the exponents' text."""
     g1, g0 = [], []
     for k in range(_K_MIN, _K_MAX + 1):
         r = _flog2pow10(-k) - 125
@@ -86,10 +90,6 @@ def _tables() -> dict[str, np.ndarray]:
         t[name] = a
         t[name + "_lo"] = a & _M32
         t[name + "_hi"] = a >> _U(32)
-    # bytes below position i (i = 0..8) of a little-endian word
-    t["lowmask"] = np.array([(1 << (8 * i)) - 1 for i in range(9)], dtype=np.uint64)
-    # "." at byte i of a word (index i + 1; index 0 and 9: none)
-    t["dot"] = np.array([0] + [0x2E << (8 * i) for i in range(8)] + [0], dtype=np.uint64)
     # exponent text "e+XX" / "e-XXX" for x = -400..400 (index x + 400)
     t["exp"] = np.array([int.from_bytes(f"e{x:+03d}".encode(), "little") for x in range(-400, 401)],
                         dtype=np.uint64)
@@ -184,21 +184,22 @@ def _top_byte(x):
 
 
 def _fields(x: np.ndarray, sep: np.ndarray) -> np.ndarray:
-    """(n, 4) uint64: each float of ``x`` (finite, normal or zero, no -0.0) as its repr in
+    """(n, 4) uint64: each float of ``x`` (normal or zero) as its repr in
     up to 32 NUL-padded bytes, followed by its separator byte ``sep``."""
     t = _tables()
     bits = x.view(np.uint64)
     neg = bits >> _U(63)
     zero = (bits << _U(1)) == 0
     f, k = _shortest(np.where(zero, _U(0x3FF0000000000000), bits))
+    f[zero] = 0
     top = f // _U(10 ** 16)
     r = f - top * _U(10 ** 16)
     mid = r // _U(10 ** 8)
     dm = _digits8(mid)
     dl = _digits8(r - mid * _U(10 ** 8))
-    w0 = np.where(zero, _U(0), top | (dm << _U(8)))
-    w1 = np.where(zero, _U(0), (dm >> _U(56)) | (dl << _U(8)))
-    w2 = np.where(zero, _U(0), dl >> _U(56))
+    w0 = top | (dm << _U(8))
+    w1 = (dm >> _U(56)) | (dl << _U(8))
+    w2 = dl >> _U(56)
     # n: significant digits (trailing zeros dropped; 1 for zero)
     nz0 = (w0 + _LOW7) & _HIGHBITS
     nz1 = (w1 + _LOW7) & _HIGHBITS
@@ -209,17 +210,20 @@ def _fields(x: np.ndarray, sep: np.ndarray) -> np.ndarray:
     intpart = positional & (decpt >= 1)
     keep = np.where(intpart, np.maximum(n, decpt + 1), n)
     p = np.where(intpart, decpt, np.where(~positional & (n > 1), 1, 99))  # the point's byte
-    lowmask, dot = t["lowmask"], t["dot"]
+    # Byte masks as shifts of all-ones words (numpy: a shift by >= 64 gives 0).
     o = []
     carry = _U(0)
     for j, w in enumerate((w0, w1, w2)):
-        w = (w + _ASCII0) & lowmask[np.clip(keep - 8 * j, 0, 8)]
-        below = lowmask[np.clip(p - 8 * j, 0, 8)]
-        hi = w & ~below
-        o.append((w & below) | dot[np.clip(p - 8 * j, -1, 8) + 1] | (hi << _U(8)) | carry)
+        w += _ASCII0
+        w &= _ALL >> np.maximum(64 * (j + 1) - 8 * keep, 0).astype(np.uint64)  # digits kept
+        at = 8 * p - 64 * j  # the point's bit position in this word
+        hi = w & (_ALL << np.maximum(at, 0).astype(np.uint64))  # digits after the point
+        w ^= hi
+        w |= (hi << _U(8)) | (_DOT << at.astype(np.uint64)) | carry  # at < 0 wraps: no dot
+        o.append(w)
         carry = hi >> _U(56)
     plen = np.where(positional & (decpt <= 0), 2 - decpt, 0)
-    prefix = _U(int.from_bytes(b"0.000", "little")) & lowmask[plen]
+    prefix = _PREFIX & ~(_ALL << (8 * plen).astype(np.uint64))
     res = np.empty((x.size, 4), dtype=np.uint64)
     res[:, 0] = (neg * _U(0x2D)) | (prefix << _U(8)) | (o[0] << _U(48))
     res[:, 1] = (o[0] >> _U(16)) | (o[1] << _U(48))
@@ -230,7 +234,7 @@ def _fields(x: np.ndarray, sep: np.ndarray) -> np.ndarray:
 
 
 def csv_text(a: np.ndarray) -> str:
-    """The CSV lines of a 2-D float array (no negative zeros): each row's ``repr`` of its
+    """The CSV lines of a 2-D float64 array: each row's ``repr`` of its
     numbers joined by ``,``, each line ending in a newline; the same text as
     ``"".join(",".join(map(repr, row)) + "\\n" for row in a.tolist())``."""
     rows, cols = a.shape
