@@ -88,7 +88,8 @@ def test_powers_of_two_and_ten_and_their_neighbours():
 def test_integers_and_short_decimals():
     ints = np.concatenate([np.arange(0, 20_000), 2.0**53 + np.arange(-3000, 3000),
                            2.0**52 + np.arange(-3000, 3000), 10.0**15 + np.arange(-500, 500),
-                           10.0**16 + 2 * np.arange(-500, 500), 10.0**17 + 16 * np.arange(-500, 500)])
+                           10.0**16 + 2 * np.arange(-500, 500),
+                           10.0**17 + 16 * np.arange(-500, 500)])
     decimals = np.arange(0, 100_000) / 1000.0  # 0.001, 0.002, ...: short reprs, some 17 digits
     check(np.concatenate([ints, decimals, np.linspace(0.0, 1000.0, 100_001)]))
 
@@ -123,7 +124,8 @@ def test_few_significant_bits():
     check(np.concatenate([np.ldexp(m, e) for e in range(-1074, 1012, 7)]))
 
 
-@pytest.mark.parametrize("shape", [(0, 11), (1, 1), (1, 11), (3, 1), (5000, 1), (4001, 4), (1, 40000)])
+@pytest.mark.parametrize("shape", [(0, 11), (1, 1), (1, 11), (3, 1), (5000, 1), (4001, 4),
+                                   (1, 40000)])
 def test_shapes_and_chunks(shape):
     rng = np.random.default_rng(sum(shape))
     x = rng.standard_normal(shape) * 10.0 ** rng.integers(-30, 30, shape)
@@ -150,8 +152,8 @@ def test_digit_groups():
     four = np.arange(10_000, dtype=np.uint64)
     m = four * np.uint64(10_000) + four[::-1]
     got = shortest._digits8(m)
-    want = np.array([int.from_bytes(bytes(int(d) for d in f"{v:08d}"), "little") for v in m.tolist()],
-                    dtype=np.uint64)
+    want = [int.from_bytes(bytes(int(d) for d in f"{v:08d}"), "little") for v in m.tolist()]
+    want = np.array(want, dtype=np.uint64)
     assert np.array_equal(got, want)
 
 

@@ -139,7 +139,7 @@ def _shortest(bits: np.ndarray):
     bq = ((bits >> _U(52)) & _U(0x7FF)).astype(np.int64)
     q = bq - 1075
     c = frac | _U(1 << 52)
-    irregular = (frac == 0) & (bq > 1)  # c = 2^52, q > Q_MIN: the lower neighbour is closer
+    irregular = (frac == 0) & (bq > 1)  # c = 2^52, q > Q_MIN: the gap below is half the one above
     k = np.where(irregular, _flog10three_quarters_pow2(q), _flog10pow2(q))
     h = (q + _flog2pow10(-k) + 2).astype(np.uint64)
     i = k - _K_MIN
