@@ -10,10 +10,15 @@ For ``precess`` (11 columns: t, ω, L, quaternion) and ``top`` (4 columns: t, θ
   command with ``--samples 2`` (start-up, loading and the options are the same): the
   difference is what the rows cost, evaluation included;
 - in this process: the evaluation alone (the exact motion at ROWS times:
-  ``PrecessResult.series_blocks``, ``TopResult.at``), median of ``--runs``.
+  ``PrecessResult.series_blocks``, ``TopResult.at``), median of ``--runs``;
+- in this process, ``precess``'s rows themselves: ``csvout.rows_text`` (the vectorised
+  shortest repr, ``rbcli.render.shortest``) against the ``%r`` format of the same blocks
+  (Python's ``repr`` per number: what rows_text was before), median of ``--runs``; the two
+  texts must be equal, and equal to the rows of the CSV file the command wrote.
 
 "Beyond the evaluation" = (process difference) − (evaluation). Both are CPU times. The
-CSV bytes are checked to be the shortest round-trip ``repr`` of every number.
+CSV bytes are checked to be the shortest round-trip ``repr`` of every number (the first
+200 lines of each file; every byte of precess's, against the ``%r`` format).
 """
 
 from __future__ import annotations
@@ -56,6 +61,35 @@ def _eval_cpu(make, duration: float, rows: int, runs: int) -> float:
     return med(cpu)
 
 
+def _repr_format(block) -> str:
+    """The rows as rows_text made them before rbcli.render.shortest: one ``%r`` format."""
+    import numpy as np
+
+    a = np.asarray(block, dtype=float) + 0.0
+    line = ",".join(["%r"] * a.shape[1]) + "\n"
+    return (line * a.shape[0]) % tuple(a.ravel().tolist())
+
+
+def _format_cpu(make, duration: float, rows: int, runs: int, csv_file: Path) -> dict:
+    """rows_text against the %r format on precess's own blocks, in this process."""
+    import rbcli
+
+    from rbcli.render.csvout import rows_text
+
+    blocks = list(make(rbcli).series_blocks(duration, rows))
+    res = {}
+    for name, fmt in (("rows_text", rows_text), ("repr_format", _repr_format)):
+        cpu = []
+        for _ in range(runs):
+            t = time.process_time()
+            text = "".join(fmt(b) for b in blocks)
+            cpu.append(time.process_time() - t)
+        res[name] = (med(cpu), text)
+    body = csv_file.read_text().split("\n", 1)[1]
+    return {"rows_text_cpu_s": res["rows_text"][0], "repr_format_cpu_s": res["repr_format"][0],
+            "texts_equal": res["rows_text"][1] == res["repr_format"][1] == body}
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--rows", type=int, default=100_000)
@@ -83,10 +117,16 @@ def main() -> int:
                  "goal": 0.5}
             r["met"] = r["beyond_evaluation_s"] <= 0.5
             r["us_per_number"] = 1e6 * r["beyond_evaluation_s"] / r["numbers"]
+            if name == "precess":
+                r.update(_format_cpu(make, duration, a.rows, a.runs, big))
             res[name] = r
             print(f"{name} --csv, {a.rows} rows x {cols} columns ({r['bytes'] / 1e6:.1f} MB): rows cost "
                   f"{diff:.3f} s CPU, evaluation {ev:.3f} s, beyond it {r['beyond_evaluation_s']:.3f} s "
                   f"({r['us_per_number']:.2f} us a number; goal <= 0.5 s); repr-exact: {exact}", flush=True)
+            if "texts_equal" in r:
+                print(f"  {name} in-process: rows_text {r['rows_text_cpu_s']:.3f} s CPU, the %r "
+                      f"format (repr per number) {r['repr_format_cpu_s']:.3f} s; texts and file "
+                      f"equal: {r['texts_equal']}", flush=True)
     if a.json:
         dump(a.json, res)
     return 0

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from rbcli.render.csvout import rows_text, write
+from rbcli.render.shortest import csv_text
 
 
 def reference(block) -> str:
@@ -52,3 +54,13 @@ def test_write_stops_at_a_closed_sink():
 
     n = write(sink, ("a", "b"), [np.ones((3, 2)), np.zeros((2, 2))])
     assert out[0] == "a,b\n" and out[1] == "1.0,1.0\n" * 3 and n == 3
+
+
+@pytest.mark.parametrize("case", ["top/csv", "precess/football-csv"])
+def test_golden_csv_rows_through_the_vectorised_path(case):
+    """The golden CSVs are small enough for csv_text's repr shortcut; the vectorised path
+    (shortcut off) writes the same bytes for their numbers."""
+    text = (Path(__file__).parent / "cases" / f"{case}.out").read_text()
+    header, body = text.split("\n", 1)
+    rows = np.array([[float(v) for v in line.split(",")] for line in body.splitlines()])
+    assert len(rows) > 1 and csv_text(rows, small=0) == body
