@@ -25,13 +25,14 @@ and of their peak memory, and the ratios. Prints a Markdown table (and writes JS
 ``--json``).
 
 Each child starts its clocks only once OpenBLAS's worker threads are idle
-(:func:`_blas_idle`): the worker that ``import numpy`` starts busy-waits for work for
-~0.1 s before it sleeps, on a free core, as CPU time of the process. That is a cost of
-``import numpy``, paid alike by every process that imports it; a side whose own imports
-end sooner (rbcli's take ~0.1 s after numpy's, trimesh's ~0.4 s) would otherwise have
-part of it counted as its work (at 2·10^4 triangles ~0.01-0.04 s, up to double rbcli's
-CPU time). The children report the CPU time of threads other than the main one inside
-the timed window (``other_threads_cpu_s``: 0 when nothing there runs in parallel).
+(:func:`_blas_idle`): the worker thread that ``import numpy`` starts busy-waits for work
+for ~0.1 s before it sleeps, on a free core, as CPU time of the process. That is a cost
+of ``import numpy``, paid alike by every process that imports it; but a side whose
+imports end soon after numpy's (rbcli: ~0.1 s from the start of ``import numpy``;
+trimesh: ~0.4 s) had the rest of it counted as its work (at 2·10^4 triangles
+0.01-0.05 s, up to double rbcli's CPU time; only when a core is free). The moment sums'
+BLAS calls (3 × n products) never run on the worker (``other_threads_cpu_s``, the CPU
+time of threads other than the main one inside the timed window, is 0 on both sides).
 """
 
 from __future__ import annotations
