@@ -20,8 +20,19 @@ ratio <= 0.5 and no more than half trimesh's peak memory.
 same icosphere, in bench/data/) at every size (icosphere subdivisions 5-8: 20 480 to
 1 310 720 triangles; 9 gives 5.2 M and takes minutes), each run in a fresh process,
 rbcli and trimesh alternating, REPEAT times; the medians of the children's CPU time
-(user + system: hardly disturbed by other jobs on a shared machine) and of their peak
-memory, and the ratios. Prints a Markdown table (and writes JSON with ``--json``).
+(user + system: hardly disturbed by other jobs on a shared machine), of their wall time
+and of their peak memory, and the ratios. Prints a Markdown table (and writes JSON with
+``--json``).
+
+Each child starts its clocks only once OpenBLAS's worker threads are idle
+(:func:`_blas_idle`): the worker thread that ``import numpy`` starts busy-waits for work
+for ~0.1 s before it sleeps, on a free core, as CPU time of the process. That is a cost
+of ``import numpy``, paid alike by every process that imports it; but a side whose
+imports end soon after numpy's (rbcli: ~0.1 s from the start of ``import numpy``;
+trimesh: ~0.4 s) had the rest of it counted as its work (at 2·10^4 triangles
+0.01-0.05 s, up to double rbcli's CPU time; only when a core is free). The moment sums'
+BLAS calls (3 × n products) never run on the worker (``other_threads_cpu_s``, the CPU
+time of threads other than the main one inside the timed window, is 0 on both sides).
 """
 
 from __future__ import annotations
@@ -49,6 +60,43 @@ def _status_kb(field: str) -> int:
             if line.startswith(field + ":"):
                 return int(line.split()[1])
     return 0
+
+
+def _thread_cpu() -> dict[int, float]:
+    """CPU seconds (user + system) of each thread of this process, by thread id."""
+    tick = os.sysconf("SC_CLK_TCK")
+    out = {}
+    for tid in os.listdir("/proc/self/task"):
+        try:
+            with open(f"/proc/self/task/{tid}/stat") as fh:
+                fields = fh.read().rsplit(")", 1)[1].split()
+        except OSError:  # the thread ended meanwhile
+            continue
+        out[int(tid)] = (int(fields[11]) + int(fields[12])) / tick
+    return out
+
+
+def _other_threads_cpu() -> float:
+    """CPU seconds so far of this process's threads other than the main one."""
+    return sum(t for tid, t in _thread_cpu().items() if tid != os.getpid())
+
+
+def _blas_idle(quiet: float = 0.1, limit: float = 2.0) -> float:
+    """Wait until the threads other than the main one use no CPU for ``quiet`` s.
+
+    OpenBLAS starts its worker threads at ``import numpy``; each busy-waits for work for
+    a while (~0.1 s here) before it sleeps. Returns the seconds waited (at most ``limit``).
+    """
+    start = time.perf_counter()
+    last, since = _other_threads_cpu(), start
+    while time.perf_counter() - start < limit:
+        time.sleep(0.02)
+        now = _other_threads_cpu()
+        if now != last:
+            last, since = now, time.perf_counter()
+        elif time.perf_counter() - since >= quiet:
+            break
+    return time.perf_counter() - start
 
 
 def run_ours(path: str) -> dict:
@@ -85,16 +133,19 @@ def memory_child(which: str, path: str) -> None:
     else:
         import trimesh  # noqa: F401
     after_import = _status_kb("VmRSS")
+    waited = _blas_idle()
+    other0 = _other_threads_cpu()
     t0 = time.process_time()
     w0 = time.perf_counter()
     result = (run_ours if which == "ours" else run_trimesh)(path)
     cpu = time.process_time() - t0
     wall = time.perf_counter() - w0
+    other = _other_threads_cpu() - other0
     # VmHWM, not ru_maxrss: Linux keeps ru_maxrss across fork+exec, so a child would
     # report the parent's peak; VmHWM belongs to this process image alone.
     peak = _status_kb("VmHWM")
     print(json.dumps({"peak_kb": peak, "after_import_kb": after_import, "cpu_s": cpu,
-                      "wall_s": wall, **result}))
+                      "wall_s": wall, "other_threads_cpu_s": other, "idle_wait_s": waited, **result}))
 
 
 def child(which: str, path: str) -> dict:
@@ -118,13 +169,16 @@ def growth(args) -> None:
             for _ in range(args.repeat):
                 for who in ("ours", "trimesh"):
                     runs[who].append(child(who, str(path)))
-            med = {w: {k: statistics.median(r[k] for r in runs[w]) for k in ("cpu_s", "wall_s", "peak_kb")}
-                   for w in runs}
+            keys = ("cpu_s", "wall_s", "peak_kb", "other_threads_cpu_s")
+            med = {w: {k: statistics.median(r[k] for r in runs[w]) for k in keys} for w in runs}
             vol = {w: runs[w][0]["volume"] for w in runs}
             row = {
                 "format": kind, "subdivisions": s, "triangles": 20 * 4**s,
                 "file_mb": round(path.stat().st_size / 1e6, 1),
                 "ours_cpu_s": round(med["ours"]["cpu_s"], 3), "trimesh_cpu_s": round(med["trimesh"]["cpu_s"], 3),
+                "ours_wall_s": round(med["ours"]["wall_s"], 3), "trimesh_wall_s": round(med["trimesh"]["wall_s"], 3),
+                "ours_other_threads_cpu_s": med["ours"]["other_threads_cpu_s"],
+                "trimesh_other_threads_cpu_s": med["trimesh"]["other_threads_cpu_s"],
                 "ours_peak_mib": round(med["ours"]["peak_kb"] / 1024, 1),
                 "trimesh_peak_mib": round(med["trimesh"]["peak_kb"] / 1024, 1),
                 "time_ratio": round(med["ours"]["cpu_s"] / med["trimesh"]["cpu_s"], 3),
@@ -134,12 +188,12 @@ def growth(args) -> None:
             }
             rows.append(row)
             print(json.dumps(row), file=sys.stderr, flush=True)
-    print("| format | triangles | file | rbcli CPU | trimesh CPU | **time ratio** (wall) | rbcli peak | "
+    print("| format | triangles | file | rbcli CPU | trimesh CPU | **CPU ratio** | wall ratio | rbcli peak | "
           "trimesh peak | **memory ratio** | volumes agree to |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {NAMES[r['format']]} | {r['triangles']:,} | {r['file_mb']} MB | {r['ours_cpu_s']:.3f} s | "
-              f"{r['trimesh_cpu_s']:.3f} s | **{r['time_ratio']:.2f}** ({r['wall_ratio']:.2f}) | "
+              f"{r['trimesh_cpu_s']:.3f} s | **{r['time_ratio']:.2f}** | {r['wall_ratio']:.2f} | "
               f"{r['ours_peak_mib']:.0f} MiB | {r['trimesh_peak_mib']:.0f} MiB | **{r['memory_ratio']:.2f}** | "
               f"{r['volume_rel_diff']:.0e} |")
     if args.json:
