@@ -77,17 +77,19 @@ class Outline:
             object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
 
     @classmethod
-    def of_frozen(cls, kind: str, dims: tuple, at: np.ndarray, R: np.ndarray) -> Outline:
-        """``Outline(kind, dims, at, R)`` for ``at`` and ``R`` that the constructor would
-        keep as they are (read-only views of read-only arrays that own their data: the body
-        loader's rows, one outline a part), without checking them again."""
+    def of_frozen(cls, kind: str, dims: tuple, at: np.ndarray, R: np.ndarray,
+                  vertices: np.ndarray | None = None, faces: np.ndarray | None = None) -> Outline:
+        """``Outline(kind, dims, at, R, vertices, faces)`` for arrays that the constructor
+        would keep as they are (read-only views of read-only arrays that own their data: the
+        body loader's rows, one outline a part; a mesh outline's own arrays), without
+        checking them again."""
         o = _new(cls)
         _set(o, "kind", kind)
         _set(o, "dims", dims)
         _set(o, "at", at)
         _set(o, "R", R)
-        _set(o, "vertices", None)
-        _set(o, "faces", None)
+        _set(o, "vertices", vertices)
+        _set(o, "faces", faces)
         return o
 
 

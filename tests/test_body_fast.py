@@ -250,27 +250,44 @@ def test_a_typed_rotation_matrix_is_judged_as_from_matrix_judges_it(eps):
     assert np.array_equal(body.parts[0].outline.R, R)
 
 
-def test_included_outlines_are_placed_bit_for_bit_as_one_by_one():
-    """io.body._placed_outlines (stacked products) = ``at + R o.at`` and ``R o.R`` one part at
-    a time (as the loader placed included outlines before), exactly,
-    signs of zeros included, for random placements and the identity."""
+def test_included_parts_are_placed_bit_for_bit_as_before():
+    """An include's use moves its file's parts as one io.placing.Stack (Stack.moved): the
+    outlines as ``at + R o.at`` and ``R o.R`` one part at a time, exactly, signs of zeros
+    included; the parts as the loader placed them before Stacks (``at + coms Rᵀ`` and
+    ``einsum(R, Js, R)`` over all the file's parts, from arrays of its finished Parts); for
+    random placements and the identity, and a part without an outline."""
     from rbcli.core import rotation as rot
-    from rbcli.io.body import _placed_outlines
+    from rbcli.io.placing import Stack
+    from rbcli.model import Part
 
     body = load_text(_body_text(300), "<gen>", ROOT)
-    outlines = [p.outline for p in body.parts] + [None]
+    dot = Part("dot", "point", 1.0, False, np.array([1.0, -0.0, 2.0]), np.zeros((3, 3)))
+    parts = [*body.parts, dot]
+    stack = Stack.of(parts)
+    coms = np.array([p.com for p in parts])
+    Js = np.array([p.inertia_com for p in parts])
+    axes = np.array([p.axis for p in parts])
     rng = np.random.default_rng(7)
     for k in range(10):
         at = rng.normal(size=3) if k else np.zeros(3)
         R = rot.axis_angle(rng.normal(size=3), rng.uniform(-3, 3)) if k else np.eye(3)
-        for o, n in zip(outlines, _placed_outlines(outlines, at, R)):
+        moved = stack.moved(at, R, "inc/").parts()
+        assert np.array_equal(np.array([p.com for p in moved]), at + coms @ R.T)
+        assert np.array_equal(np.array([p.inertia_com for p in moved]), np.einsum("ij,njk,lk->nil", R, Js, R))
+        assert np.array_equal(np.array([p.axis for p in moved]), axes @ R.T)
+        for p, n in zip(parts, moved, strict=True):
+            assert n.name == "inc/" + p.name
+            assert (n.shape, n.mass, n.subtract, n.measure, n.where, n.extra) == (
+                p.shape, p.mass, p.subtract, p.measure, p.where, p.extra)
+            o = p.outline
             if o is None:
-                assert n is None
+                assert n.outline is None
                 continue
             ref_at, ref_R = at + R @ o.at, R @ o.R
-            assert np.array_equal(ref_at, n.at) and np.array_equal(ref_R, n.R)
-            assert np.array_equal(np.signbit(ref_at), np.signbit(n.at))
-            assert (n.kind, n.dims) == (o.kind, o.dims)
+            assert np.array_equal(ref_at, n.outline.at) and np.array_equal(ref_R, n.outline.R)
+            assert np.array_equal(np.signbit(ref_at), np.signbit(n.outline.at))
+            assert (n.outline.kind, n.outline.dims) == (o.kind, o.dims)
+            assert not n.outline.at.flags.writeable and not n.outline.R.flags.writeable
 
 
 def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):

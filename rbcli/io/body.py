@@ -24,7 +24,7 @@ from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 from rbcli.io.fields import HUGE
-from rbcli.io.placing import BATCH, Pending, dims_of, finish
+from rbcli.io.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
 from rbcli.model import Body, Part, Shaft
 
 MAX_INCLUDE_DEPTH = 16
@@ -200,22 +200,30 @@ def _place(part_com, part_I, at, R):
     return at + R @ part_com, R @ part_I @ R.T
 
 
-def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
+def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "", *, stacked: bool = False) -> list[Part] | Stack:
+    """The parts of the list ``node``: as :class:`Part` s, or for an included file
+    (``stacked``) as one :class:`rbcli.io.placing.Stack` (each use moves it)."""
     if not isinstance(node, ys.SeqNode):
         raise ctx.error(node, f"parts must be a list of parts, not {fl.describe(node)}")
     if not node.items:
         raise ctx.error(node, "parts is empty; a body needs at least one part")
-    out: list = []
+    out: list = []  # Pending, Part or Stack (an include's parts)
     names: set[str] = set()
     known: dict[str, _Known] = {}
-    done = 0  # out[:done] are finished Parts
+    settle = to_stack if stacked else finish  # the primitives of out[done:], placed
+    done = 0  # out[:done] are placed
+    waiting = 0  # parts in out[done:]
     for i, item in enumerate(node.items):
         if not _is_include(item):
             ctx.session.spend(ctx, item, 1)
-        out.extend(_part(ctx, item, i, names, known, prefix))
-        if len(out) - done >= BATCH:
-            done = len(finish(out, done))
-    return finish(out, done)
+        p = _part(ctx, item, i, names, known, prefix)
+        out.append(p)
+        waiting += len(p) if p.__class__ is Stack else 1
+        if waiting >= BATCH:
+            done = len(settle(out, done))
+            waiting = 0
+    out = settle(out, done)
+    return Stack.of(out) if stacked else parts_of(out)
 
 
 def _is_include(node: ys.Node) -> bool:
@@ -225,9 +233,10 @@ def _is_include(node: ys.Node) -> bool:
     return isinstance(shape, ys.ScalarNode) and shape.value == "include"
 
 
-def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list:
-    """The parts of one entry of ``parts``: a primitive as a :class:`Pending` (placed by
-    :func:`rbcli.io.placing.finish` with others), the others as finished :class:`Part` s."""
+def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str):
+    """One entry of ``parts``: a primitive as a :class:`Pending` (placed by
+    :func:`rbcli.io.placing.finish` with others), an include as a :class:`Stack` of its
+    file's parts, a mesh or given part as a finished :class:`Part`."""
     m = fl.mapping(ctx, node, f"part {index + 1}")
     if "shape" not in m.items:
         raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
@@ -243,10 +252,10 @@ def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str
     if shape == "include":
         return _include(ctx, m, name, prefix)
     if shape == "given":
-        return [_given(ctx, m, name, prefix, known)]
+        return _given(ctx, m, name, prefix, known)
     if shape == "mesh":
-        return [_mesh(ctx, m, name, prefix, known)]
-    return [_primitive(ctx, m, shape, name, prefix, known, what)]
+        return _mesh(ctx, m, name, prefix, known)
+    return _primitive(ctx, m, shape, name, prefix, known, what)
 
 
 def _subtract(ctx: _Ctx, m: ys.MapNode) -> bool:
@@ -442,7 +451,7 @@ def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
     return path
 
 
-def _include(ctx, m, name, prefix) -> list[Part]:
+def _include(ctx, m, name, prefix) -> Stack:
     what = f"part '{name}' (include)"
     fl.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
@@ -462,7 +471,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     if sub is None:
         data = _read_file(path, where)
         session.parses += 1
-        sub = _load(data, str(path), path.parent, (*ctx.stack, real), session=session)
+        sub = _load(data, str(path), path.parent, (*ctx.stack, real), session=session, stacked=True)
         sub.root = None  # its YAML tree: only the top file's is read again (memory)
         session.parsed[key] = sub
     elif len(ctx.stack) + sub.ctx.height >= MAX_INCLUDE_DEPTH:
@@ -476,47 +485,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     ctx.inputs.append(real)
     ctx.inputs.extend(sub.ctx.inputs)
     at, R = fl.placement(ctx, m)
-    parts = sub.parts
-    if not parts:
-        return []
-    # place every part of the file at once (one use of a file may bring thousands)
-    coms = np.array([p.com for p in parts], dtype=float)
-    Js = np.array([p.inertia_com for p in parts], dtype=float)
-    axes = np.array([p.axis for p in parts], dtype=float)
-    new_coms = at + coms @ R.T
-    new_Js = np.einsum("ij,njk,lk->nil", R, Js, R)
-    new_axes = axes @ R.T
-    outlines = _placed_outlines([p.outline for p in parts], at, R)
-    return [
-        Part(
-            name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
-            com=new_coms[i], inertia_com=new_Js[i], measure=p.measure, measure_kind=p.measure_kind,
-            radius=p.radius, axis=new_axes[i], extra=p.extra, where=p.where, outline=outlines[i],
-        )
-        for i, p in enumerate(parts)
-    ]
-
-
-def _placed_outlines(outlines: list, at: np.ndarray, R: np.ndarray) -> list:
-    """``outlines`` moved by ``x -> at + R x`` as an included file's parts are (None stays
-    None): the products stacked, the same numbers bit for bit as one part at a time
-    (tests/test_body_fast.py), without two small products a part."""
-    from rbcli.model import Outline
-
-    idx = [i for i, o in enumerate(outlines) if o is not None]
-    if not idx:
-        return outlines
-    o_at = np.array([outlines[i].at for i in idx], dtype=float)
-    o_R = np.array([outlines[i].R for i in idx], dtype=float)
-    new_at = at + (R @ o_at[:, :, None])[:, :, 0]
-    new_R = R @ o_R
-    new_at.setflags(write=False)
-    new_R.setflags(write=False)
-    out = list(outlines)
-    for j, i in enumerate(idx):
-        o = outlines[i]
-        out[i] = Outline(o.kind, o.dims, new_at[j], new_R[j], o.vertices, o.faces)
-    return out
+    return sub.parts.moved(at, R, f"{prefix}{name}/")
 
 
 def _mesh(ctx, m, name, prefix, known) -> Part:
@@ -636,7 +605,7 @@ def _mesh_path(ctx: _Ctx, fnode: ys.Node) -> Path:
 
 @dataclass
 class _Loaded:
-    parts: list[Part]
+    parts: list[Part] | Stack  # a Stack for an included file
     warnings: list[str]
     root: ys.MapNode | None  # the file's YAML tree (None for an included file, once read)
     ctx: _Ctx
@@ -661,7 +630,8 @@ def _units(ctx: _Ctx, m: ys.MapNode) -> None:
 
 
 def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...],
-          units: dict[str, str] | None = None, *, session: _Session | None = None) -> _Loaded:
+          units: dict[str, str] | None = None, *, session: _Session | None = None,
+          stacked: bool = False) -> _Loaded:
     root = ys.load(data, filename)
     session = session if session is not None else _session()
     ctx = _Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
@@ -685,12 +655,13 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
     _units(ctx, root)
     if "parts" in root.items:
         fl.check_keys(ctx, root, BODY_KEYS, "the body")
-        parts = _parts(ctx, root.items["parts"][1])
+        parts = _parts(ctx, root.items["parts"][1], stacked=stacked)
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
         items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
         stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
-        parts = finish(_part(ctx, stripped, 0, set(), {}, ""))
+        one = [_part(ctx, stripped, 0, set(), {}, "")]
+        parts = to_stack(one)[0] if stacked else parts_of(finish(one))
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
     ctx.inputs = list(dict.fromkeys(ctx.inputs))
