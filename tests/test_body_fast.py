@@ -354,3 +354,29 @@ def test_placed_parts_are_what_the_plain_constructors_make(generated):
         assert not o.at.flags.writeable and not o.R.flags.writeable
         assert p.extra == {} and p.outline.vertices is None and p.outline.faces is None
         assert dataclasses.replace(p) == p
+
+
+def test_the_quick_constructors_make_what_the_dataclasses_make():
+    # model.Part.positional and Outline.of_frozen assign a twin class's slots, then make the
+    # object a Part / an Outline: equal to the constructors' objects, of that very class,
+    # frozen, and without an instance dict
+    import dataclasses
+
+    from rbcli.errors import Location
+    from rbcli.model import Outline, Part
+
+    at = np.zeros(3)
+    at.setflags(write=False)
+    R = np.eye(3)
+    R.setflags(write=False)
+    o = Outline.of_frozen("box", (("size", (1.0, 2.0, 3.0)),), at, R)
+    assert type(o) is Outline and o == Outline("box", (("size", (1.0, 2.0, 3.0)),), at, R)
+    args = ("b", "box", 2.0, False, np.ones(3), np.eye(3), 6.0, "volume", None, np.array([0.0, 0, 1]),
+            {}, Location("f", 3, 4), o)
+    p = Part.positional(*args)
+    assert type(p) is Part and p == Part(*args) and dataclasses.replace(p) == p
+    assert [getattr(p, f.name) for f in dataclasses.fields(Part)] == list(args)
+    for obj, field in ((p, "mass"), (o, "kind")):
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(obj, field, 1)
+        assert not hasattr(obj, "__dict__")

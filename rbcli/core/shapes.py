@@ -30,7 +30,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 __all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "Kind", "SHAPES", "IO_SHAPES", "geometry",
-           "local_geometry"]
+           "local_geometry", "builder"]
 
 
 class ShapeError(ValueError):
@@ -617,6 +617,21 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     inertia = raw.unit_inertia
     return ShapeGeometry(raw.measure, raw.measure_kind, raw.com,
                          np.diag(inertia) if isinstance(inertia, tuple) else inertia)
+
+
+def builder(shape: str) -> Callable[[dict[str, Any]], _Raw]:
+    """:func:`local_geometry` of the primitive ``shape`` for parameters already checked as it
+    checks them (none unknown, the required ones present and not None): the body loader's,
+    one call a part.
+
+    Raises
+    ------
+    KeyError
+        ``shape`` is not a primitive shape.
+    ShapeError
+        (from the function returned) as :func:`geometry` for impossible values.
+    """
+    return _BUILDERS[shape]
 
 
 def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:

@@ -50,14 +50,20 @@ class Pending:
 def dims_of(params: dict) -> tuple:
     """The drawing's description of a primitive part: its parameters (m) as
     :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
-    dims = []
-    for k, v in params.items():
+    dims = tuple(params.items())
+    for k, v in dims:
+        if v.__class__ is not float:  # else as it is (most parameters: one length)
+            break
+    else:
+        return dims
+    out = []
+    for k, v in dims:
         if isinstance(v, list):  # size, semi_axes (n,), vertices (3, 3)
             v = tuple(tuple(r) for r in v) if isinstance(v[0], list) else tuple(v)
         elif not isinstance(v, bool):
             v = float(v)  # type: ignore[arg-type]
-        dims.append((k, v))
-    return tuple(dims)
+        out.append((k, v))
+    return tuple(out)
 
 
 def _units(pending: list) -> np.ndarray:
@@ -119,13 +125,14 @@ def finish(items: list, start: int = 0) -> list:
     coms, Js, axes, ats, Rs = _placed(pending)
     del pending  # each one goes when its Part replaces it (the peak memory of a large body)
     outline = Outline.of_frozen  # read-only rows of read-only arrays, as Outline keeps them
+    part = Part.positional
     i = 0
     for k in range(start, len(items)):
         p = items[k]
         if p.__class__ is not Pending:
             continue
         # Part's fields in order (positional: one part after another in a large body)
-        items[k] = Part(
+        items[k] = part(
             p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
             p.radius, axes[i], {}, p.where, outline(p.shape, dims[i], ats[i], Rs[i]),
         )
@@ -213,6 +220,7 @@ class Stack:
         """The stacked parts as :class:`Part` s (their arrays rows of the stack's)."""
         out = []
         outline = Outline.of_frozen
+        part = Part.positional
         for name, r, com, J, axis, at, R in zip(self.names, self.rows, self.com, self.inertia,
                                                 self.axis, self.at, self.R):
             if r.__class__ is Pending:
@@ -222,7 +230,7 @@ class Stack:
                 o = r.outline
                 o = None if o is None else outline(o.kind, o.dims, at, R, o.vertices, o.faces)
                 extra = r.extra
-            out.append(Part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
+            out.append(part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
                             r.radius, axis, extra, r.where, o))
         return out
 
