@@ -24,6 +24,7 @@ for every sequence scipy accepts.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 
@@ -612,15 +613,23 @@ def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
     if kind == "R":
         return np.array([s[1] for s in specs], dtype=float)  # (k, 3, 3), its own data
     if kind == "axis":
-        return axis_to_z_rows(unit_rows(np.array([s[1] for s in specs])))
+        return axis_to_z_rows(unit_rows(_floats([s[1] for s in specs], 3)))
     if kind == "axis-angle":
-        axes = unit_rows(np.array([s[1] for s in specs]))
+        axes = unit_rows(_floats([s[1] for s in specs], 3))
         return axis_angle_rows(axes, np.array([s[2] for s in specs]))
     if kind == "euler":
-        return euler_rows(np.array([s[1] for s in specs]), seq)
+        return euler_rows(_floats([s[1] for s in specs], len(seq)), seq)
     if kind == "quaternion":
-        return quaternion_rows(np.array([s[1] for s in specs]))
-    return nearest_rotation_rows(np.array([s[1] for s in specs]))
+        return quaternion_rows(_floats([s[1] for s in specs], 4))
+    return nearest_rotation_rows(_floats([x for s in specs for x in s[1]], 3).reshape(-1, 3, 3))
+
+
+def _floats(vectors: list, n: int) -> np.ndarray:
+    """The (k, n) array of ``k`` lists of ``n`` floats (``np.array(vectors)``, the same
+    numbers, without numpy reading nested lists: ~3 x faster)."""
+    a = np.fromiter(itertools.chain.from_iterable(vectors), dtype=float, count=len(vectors) * n)
+    a.shape = (len(vectors), n)
+    return a
 
 
 # ----------------------------------------------------------------------------------------

@@ -15,6 +15,7 @@ included part costs about what the same part written inline does (issue 16).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import chain
 
 import numpy as np
 
@@ -66,12 +67,21 @@ def dims_of(params: dict) -> tuple:
     return tuple(out)
 
 
+def _rows(vectors: list) -> np.ndarray:
+    """The (n, 3) array of ``n`` 3-vectors (lists, tuples or arrays of floats): what
+    ``np.array(vectors, dtype=float)`` makes, without numpy reading nested sequences
+    (~3 x faster); an array that owns its data."""
+    a = np.fromiter(chain.from_iterable(vectors), dtype=float, count=3 * len(vectors))
+    a.shape = (len(vectors), 3)
+    return a
+
+
 def _units(pending: list) -> np.ndarray:
     """The (n, 3, 3) unit inertias of ``pending`` (:func:`_mixed_units`'s numbers)."""
     units = [p.unit_inertia for p in pending]
     if all(u.__class__ is tuple for u in units):  # all diagonal (the common case): one copy
         U = np.zeros((len(units), 9))
-        U[:, ::4] = units  # the diagonal of each row's 3x3
+        U[:, ::4] = _rows(units)  # the diagonal of each row's 3x3
         return U.reshape(-1, 3, 3)
     return _mixed_units(pending)
 
@@ -93,10 +103,9 @@ def _mixed_units(pending: list) -> np.ndarray:
 def _placed(pending: list) -> tuple:
     """``pending`` placed: (coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines'
     origins (n, 3) and rotations (n, 3, 3), read-only arrays that own their data)."""
-    n = len(pending)
-    ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), not a view (see _frozen)
+    ats = _rows([p.at for p in pending])  # (n, 3), not a view (see model._frozen)
     Rs = rot.from_specs([p.spec for p in pending])
-    local_coms = np.array([p.com for p in pending], dtype=float).reshape(n, 3)
+    local_coms = _rows([p.com for p in pending])
     U = _units(pending)
     masses = np.array([p.mass for p in pending], dtype=float)
     coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
