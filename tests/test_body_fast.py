@@ -419,3 +419,24 @@ def test_the_triangle_is_computed_as_with_arrays():
         assert g.measure == 0.5 * twice_area and np.array_equal(g.com, centroid), k
         assert np.array_equal(g.unit_inertia, inertia), k
         assert np.array_equal(np.signbit(g.unit_inertia), np.signbit(inertia)), k
+
+
+def test_a_quantity_text_read_before_gives_the_same_value_and_only_for_its_kind(monkeypatch):
+    # io.fields.number keeps the texts io.fields.quantity accepted, by (text, kind): read
+    # again they give the same float; the same text where another kind is needed is
+    # refused as before; the store is emptied when full
+    from rbcli.errors import InputError
+    from rbcli.io import fields
+
+    monkeypatch.setattr(fields, "_READ", {})
+    text = ("{parts: [{shape: sphere, radius: '1.5 cm', density: '7850 kg/m^3'}, "
+            "{name: b, shape: cylinder, radius: '1.5 cm', length: 0.1, density: '7850 kg/m^3'}]}")
+    first = load_text(text, "<t>", ROOT)
+    assert fields._READ[("1.5 cm", "length")] == 0.015 and ("7850 kg/m^3", "density") in fields._READ
+    again = load_text(text, "<t>", ROOT)
+    assert [p.mass for p in again.parts] == [p.mass for p in first.parts]
+    with pytest.raises(InputError, match=r"mass: '1\.5 cm' is a length"):
+        load_text("{shape: sphere, radius: '1.5 cm', mass: '1.5 cm'}", "<t>", ROOT)
+    monkeypatch.setattr(fields, "_MAX_READ", 2)
+    load_text(text, "<t>", ROOT)
+    assert len(fields._READ) <= 2

@@ -141,7 +141,7 @@ _Known = tuple
 def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _Known], what: str):
     """Return (mass or None, density or None, the node to blame)."""
     items = m.items
-    given = [k for k in MASS_KEYS if k in items]
+    given = list(filter(items.__contains__, MASS_KEYS))  # in MASS_KEYS's order
     cut = items.get("cut_from")
     if cut is not None:
         given.append("cut_from")
