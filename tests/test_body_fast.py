@@ -250,27 +250,44 @@ def test_a_typed_rotation_matrix_is_judged_as_from_matrix_judges_it(eps):
     assert np.array_equal(body.parts[0].outline.R, R)
 
 
-def test_included_outlines_are_placed_bit_for_bit_as_one_by_one():
-    """io.body._placed_outlines (stacked products) = ``at + R o.at`` and ``R o.R`` one part at
-    a time (as the loader placed included outlines before), exactly,
-    signs of zeros included, for random placements and the identity."""
+def test_included_parts_are_placed_bit_for_bit_as_before():
+    """An include's use moves its file's parts as one io.placing.Stack (Stack.moved): the
+    outlines as ``at + R o.at`` and ``R o.R`` one part at a time, exactly, signs of zeros
+    included; the parts as the loader placed them before Stacks (``at + coms Rᵀ`` and
+    ``einsum(R, Js, R)`` over all the file's parts, from arrays of its finished Parts); for
+    random placements and the identity, and a part without an outline."""
     from rbcli.core import rotation as rot
-    from rbcli.io.body import _placed_outlines
+    from rbcli.io.placing import Stack
+    from rbcli.model import Part
 
     body = load_text(_body_text(300), "<gen>", ROOT)
-    outlines = [p.outline for p in body.parts] + [None]
+    dot = Part("dot", "point", 1.0, False, np.array([1.0, -0.0, 2.0]), np.zeros((3, 3)))
+    parts = [*body.parts, dot]
+    stack = Stack.of(parts)
+    coms = np.array([p.com for p in parts])
+    Js = np.array([p.inertia_com for p in parts])
+    axes = np.array([p.axis for p in parts])
     rng = np.random.default_rng(7)
     for k in range(10):
         at = rng.normal(size=3) if k else np.zeros(3)
         R = rot.axis_angle(rng.normal(size=3), rng.uniform(-3, 3)) if k else np.eye(3)
-        for o, n in zip(outlines, _placed_outlines(outlines, at, R)):
+        moved = stack.moved(at, R, "inc/").parts()
+        assert np.array_equal(np.array([p.com for p in moved]), at + coms @ R.T)
+        assert np.array_equal(np.array([p.inertia_com for p in moved]), np.einsum("ij,njk,lk->nil", R, Js, R))
+        assert np.array_equal(np.array([p.axis for p in moved]), axes @ R.T)
+        for p, n in zip(parts, moved, strict=True):
+            assert n.name == "inc/" + p.name
+            assert (n.shape, n.mass, n.subtract, n.measure, n.where, n.extra) == (
+                p.shape, p.mass, p.subtract, p.measure, p.where, p.extra)
+            o = p.outline
             if o is None:
-                assert n is None
+                assert n.outline is None
                 continue
             ref_at, ref_R = at + R @ o.at, R @ o.R
-            assert np.array_equal(ref_at, n.at) and np.array_equal(ref_R, n.R)
-            assert np.array_equal(np.signbit(ref_at), np.signbit(n.at))
-            assert (n.kind, n.dims) == (o.kind, o.dims)
+            assert np.array_equal(ref_at, n.outline.at) and np.array_equal(ref_R, n.outline.R)
+            assert np.array_equal(np.signbit(ref_at), np.signbit(n.outline.at))
+            assert (n.outline.kind, n.outline.dims) == (o.kind, o.dims)
+            assert not n.outline.at.flags.writeable and not n.outline.R.flags.writeable
 
 
 def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
@@ -337,3 +354,89 @@ def test_placed_parts_are_what_the_plain_constructors_make(generated):
         assert not o.at.flags.writeable and not o.R.flags.writeable
         assert p.extra == {} and p.outline.vertices is None and p.outline.faces is None
         assert dataclasses.replace(p) == p
+
+
+def test_the_quick_constructors_make_what_the_dataclasses_make():
+    # model.Part.positional and Outline.of_frozen assign a twin class's slots, then make the
+    # object a Part / an Outline: equal to the constructors' objects, of that very class,
+    # frozen, and without an instance dict
+    import dataclasses
+
+    from rbcli.errors import Location
+    from rbcli.model import Outline, Part
+
+    at = np.zeros(3)
+    at.setflags(write=False)
+    R = np.eye(3)
+    R.setflags(write=False)
+    o = Outline.of_frozen("box", (("size", (1.0, 2.0, 3.0)),), at, R)
+    assert type(o) is Outline and o == Outline("box", (("size", (1.0, 2.0, 3.0)),), at, R)
+    args = ("b", "box", 2.0, False, np.ones(3), np.eye(3), 6.0, "volume", None, np.array([0.0, 0, 1]),
+            {}, Location("f", 3, 4), o)
+    p = Part.positional(*args)
+    assert type(p) is Part and p == Part(*args) and dataclasses.replace(p) == p
+    assert [getattr(p, f.name) for f in dataclasses.fields(Part)] == list(args)
+    for obj, field in ((p, "mass"), (o, "kind")):
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(obj, field, 1)
+        assert not hasattr(obj, "__dict__")
+
+
+def _triangle_with_arrays(v):
+    """The triangle's geometry as core.shapes computed it with arrays (before its float
+    version): centroid, twice the area, the edges' lengths and the unit inertia."""
+    v = np.array(v, dtype=float)
+    centroid = v.mean(axis=0)
+    d = v - centroid
+    x = np.array([np.cross(v[1] - v[0], v[2] - v[0]), v[0] - v[1], v[1] - v[2], v[0] - v[2]])
+    norms = np.sqrt(np.vecdot(x, x))
+    c = d.T @ d / 12.0
+    c = 0.5 * (c + c.T)
+    return centroid, norms[0], norms[1:].max(), np.trace(c) * np.eye(3) - c
+
+
+def test_the_triangle_is_computed_as_with_arrays():
+    # core.shapes._triangle works in floats, with numpy only for the dot products and dᵀd
+    # (BLAS): bit for bit the array version, signs of zeros included, or the same refusal
+    rng = np.random.default_rng(11)
+    for k in range(3000):
+        scale = math.exp(rng.uniform(-20, 20))
+        v = rng.normal(size=(3, 3)) * scale
+        if k % 3 == 0:
+            v[:, 2] = 0.0
+        if k % 5 == 0:
+            v[:, 0] = -0.0
+        if k % 7 == 0:  # nearly collinear
+            v[2] = v[0] + (v[1] - v[0]) * rng.uniform() + rng.normal(size=3) * scale * 10 ** rng.uniform(-16, -8)
+        if k % 11 == 0:
+            v = np.round(v, 1)
+        centroid, twice_area, longest, inertia = _triangle_with_arrays(v)
+        if not twice_area > 1e-12 * longest * longest:
+            with pytest.raises(shp.ShapeError, match="collinear"):
+                shp.local_geometry("triangle", {"vertices": v.tolist()})
+            continue
+        g = shp.local_geometry("triangle", {"vertices": v.tolist()})
+        assert g.measure == 0.5 * twice_area and np.array_equal(g.com, centroid), k
+        assert np.array_equal(g.unit_inertia, inertia), k
+        assert np.array_equal(np.signbit(g.unit_inertia), np.signbit(inertia)), k
+
+
+def test_a_quantity_text_read_before_gives_the_same_value_and_only_for_its_kind(monkeypatch):
+    # io.fields.number keeps the texts io.fields.quantity accepted, by (text, kind): read
+    # again they give the same float; the same text where another kind is needed is
+    # refused as before; the store is emptied when full
+    from rbcli.errors import InputError
+    from rbcli.io import fields
+
+    monkeypatch.setattr(fields, "_READ", {})
+    text = ("{parts: [{shape: sphere, radius: '1.5 cm', density: '7850 kg/m^3'}, "
+            "{name: b, shape: cylinder, radius: '1.5 cm', length: 0.1, density: '7850 kg/m^3'}]}")
+    first = load_text(text, "<t>", ROOT)
+    assert fields._READ[("1.5 cm", "length")] == 0.015 and ("7850 kg/m^3", "density") in fields._READ
+    again = load_text(text, "<t>", ROOT)
+    assert [p.mass for p in again.parts] == [p.mass for p in first.parts]
+    with pytest.raises(InputError, match=r"mass: '1\.5 cm' is a length"):
+        load_text("{shape: sphere, radius: '1.5 cm', mass: '1.5 cm'}", "<t>", ROOT)
+    monkeypatch.setattr(fields, "_MAX_READ", 2)
+    load_text(text, "<t>", ROOT)
+    assert len(fields._READ) <= 2

@@ -24,6 +24,7 @@ for every sequence scipy accepts.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 
@@ -458,10 +459,16 @@ def unit_rows(v: np.ndarray) -> np.ndarray:
 
 
 def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
-    # [n]x of each row, made from the rows' floats (negation is exact: the same numbers as
-    # the entries set one by one in a zero array)
-    cross = np.array([((0.0, -z, y), (z, 0.0, -x), (-y, x, 0.0)) for x, y, z in n.tolist()],
-                     dtype=float).reshape(-1, 3, 3)
+    # [n]x of each row (negation is exact: the same numbers as the entries set one by one
+    # in a zero array)
+    x, y, z = n[:, 0], n[:, 1], n[:, 2]
+    cross = np.zeros((len(n), 3, 3))
+    cross[:, 0, 1] = -z
+    cross[:, 0, 2] = y
+    cross[:, 1, 0] = z
+    cross[:, 1, 2] = -x
+    cross[:, 2, 0] = -y
+    cross[:, 2, 1] = x
     return (c[:, None, None] * _EYE + s[:, None, None] * cross
             + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
 
@@ -469,32 +476,34 @@ def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np
 def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     """:func:`axis_to_z` of each row of ``directions`` (k, 3)."""
     d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
-    rows = d.tolist()
     # z × d of each row, and whether it is zero (d exactly along +z or -z)
-    cross = np.array([(-y, x, 0.0) for x, y, _z in rows], dtype=float).reshape(-1, 3)
-    along_rows = [x == 0.0 and y == 0.0 for x, y, _z in rows]
-    if not any(along_rows):  # the common case: the same operations on all rows, unindexed
-        return _tilted_rows(d, cross, rows)
-    along = np.array(along_rows, dtype=bool)
+    cross = np.zeros((len(d), 3))
+    cross[:, 0] = -d[:, 1]
+    cross[:, 1] = d[:, 0]
+    along = (d[:, 0] == 0.0) & (d[:, 1] == 0.0)
+    if not along.any():  # the common case: the same operations on all rows, unindexed
+        return _tilted_rows(d, cross)
     out = np.empty((len(d), 3, 3))
     out[along] = _EYE
     out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
     ok = ~along
     if ok.any():
-        out[ok] = _tilted_rows(d[ok], cross[ok], [r for r, a in zip(rows, along_rows) if not a])
+        out[ok] = _tilted_rows(d[ok], cross[ok])
     return out
 
 
-def _tilted_rows(d: np.ndarray, cross: np.ndarray, rows: list) -> np.ndarray:
+def _tilted_rows(d: np.ndarray, cross: np.ndarray) -> np.ndarray:
     """:func:`axis_to_z_rows` of unit rows ``d`` (k, 3) none along z; ``cross`` (k, 3)
-    is each row's ``z × d``, ``rows`` is ``d.tolist()``. ``1 − cos θ`` per row in floats:
-    the same correctly rounded operations as the arrays' (``s² / (1 + c)`` for c > 0, which
-    keeps digits near +z, else ``1 − c``)."""
+    is each row's ``z × d``. ``sin θ`` by :func:`math.hypot` per row, as :func:`axis_to_z`;
+    ``1 − cos θ`` with the same correctly rounded operations as its floats (``s² / (1 + c)``
+    for c > 0, which keeps digits near +z, else ``1 − c``)."""
     n = unit_rows(cross)
-    s = [math.hypot(x, y) for x, y, _z in rows]
-    one_minus_c = [si * si / (1.0 + z) if z > 0 else 1.0 - z for si, (_x, _y, z) in zip(s, rows)]
-    return _rodrigues_rows(n, d[:, 2], np.array(s, dtype=float).reshape(-1),
-                           np.array(one_minus_c, dtype=float).reshape(-1))
+    c = d[:, 2]
+    hypot = math.hypot
+    s = np.array([hypot(x, y) for x, y in d[:, :2].tolist()], dtype=float).reshape(-1)
+    with np.errstate(divide="ignore", invalid="ignore"):  # 1 + c = 0: that row takes 1 - c
+        one_minus_c = np.where(c > 0, s * s / (1.0 + c), 1.0 - c)
+    return _rodrigues_rows(n, c, s, one_minus_c)
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
@@ -604,15 +613,23 @@ def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
     if kind == "R":
         return np.array([s[1] for s in specs], dtype=float)  # (k, 3, 3), its own data
     if kind == "axis":
-        return axis_to_z_rows(unit_rows(np.array([s[1] for s in specs])))
+        return axis_to_z_rows(unit_rows(_floats([s[1] for s in specs], 3)))
     if kind == "axis-angle":
-        axes = unit_rows(np.array([s[1] for s in specs]))
+        axes = unit_rows(_floats([s[1] for s in specs], 3))
         return axis_angle_rows(axes, np.array([s[2] for s in specs]))
     if kind == "euler":
-        return euler_rows(np.array([s[1] for s in specs]), seq)
+        return euler_rows(_floats([s[1] for s in specs], len(seq)), seq)
     if kind == "quaternion":
-        return quaternion_rows(np.array([s[1] for s in specs]))
-    return nearest_rotation_rows(np.array([s[1] for s in specs]))
+        return quaternion_rows(_floats([s[1] for s in specs], 4))
+    return nearest_rotation_rows(_floats([x for s in specs for x in s[1]], 3).reshape(-1, 3, 3))
+
+
+def _floats(vectors: list, n: int) -> np.ndarray:
+    """The (k, n) array of ``k`` lists of ``n`` floats (``np.array(vectors)``, the same
+    numbers, without numpy reading nested lists: ~3 x faster)."""
+    a = np.fromiter(itertools.chain.from_iterable(vectors), dtype=float, count=len(vectors) * n)
+    a.shape = (len(vectors), n)
+    return a
 
 
 # ----------------------------------------------------------------------------------------

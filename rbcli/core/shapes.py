@@ -30,7 +30,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 __all__ = ["ShapeError", "ShapeGeometry", "ShapeInfo", "Kind", "SHAPES", "IO_SHAPES", "geometry",
-           "local_geometry"]
+           "local_geometry", "builder"]
 
 
 class ShapeError(ValueError):
@@ -416,32 +416,63 @@ def _plate(p: dict[str, Any]) -> _Raw:
 
 
 def _triangle(p: dict[str, Any]) -> _Raw:
-    rows = _components("vertices", p["vertices"], 3)
-    v = [[_number("vertices", x, f"vertices[{i}][{j}]")
-          for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]"))]
-         for i, row in enumerate(rows)]
+    (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = _vertices(p["vertices"])
     # in floats, in the order numpy's mean, cross and norm take them (the same numbers):
     # mean = (v0 + v1 + v2) / 3; |x| = sqrt(x·x) with the dot product numpy's (np.vecdot)
-    centroid = tuple((v[0][k] + v[1][k] + v[2][k]) / 3.0 for k in range(3))
-    d = np.array([[v[i][k] - centroid[k] for k in range(3)] for i in range(3)])
-    (a0, a1, a2), (b0, b1, b2) = ([v[1][k] - v[0][k] for k in range(3)],
-                                  [v[2][k] - v[0][k] for k in range(3)])
-    cross = [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0]
-    edges = [[v[i][k] - v[j][k] for k in range(3)] for i, j in ((0, 1), (1, 2), (0, 2))]
-    x = np.array([cross, *edges])
-    norms = np.sqrt(np.vecdot(x, x)).tolist()
-    twice_area = norms[0]
-    longest = max(norms[1:])
+    cx, cy, cz = (x0 + x1 + x2) / 3.0, (y0 + y1 + y2) / 3.0, (z0 + z1 + z2) / 3.0
+    a0, a1, a2 = x1 - x0, y1 - y0, z1 - z0  # v1 − v0
+    b0, b1, b2 = x2 - x0, y2 - y0, z2 - z0  # v2 − v0
+    # d (the vertices less the centroid, for the second moment below), then the cross
+    # product (v1 − v0) × (v2 − v0) and the edges v0 − v1, v1 − v2, v0 − v2, whose lengths
+    # say whether the triangle has an area
+    rows = np.array([
+        (x0 - cx, y0 - cy, z0 - cz), (x1 - cx, y1 - cy, z1 - cz), (x2 - cx, y2 - cy, z2 - cz),
+        (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0),
+        (x0 - x1, y0 - y1, z0 - z1), (x1 - x2, y1 - y2, z1 - z2), (x0 - x2, y0 - y2, z0 - z2),
+    ])
+    d, x = rows[:3], rows[3:]
+    q_area, q01, q12, q02 = np.vecdot(x, x).tolist()
+    twice_area = math.sqrt(q_area)
+    longest = max(math.sqrt(q01), math.sqrt(q12), math.sqrt(q02))
     # Degenerate when the area is round-off compared with the square of the size.
     if not twice_area > 1e-12 * longest * longest:
         raise ShapeError("vertices", "the triangle's vertices are collinear (it has no area)")
     # Second moment per unit area about the centroid: ∫ x xᵀ dA / A = (1/12) Σ dᵢ dᵢᵀ,
     # the exact quadrature of a quadratic over a triangle (it is exact for quadratics
     # because  ∫ x xᵀ dA / A = (1/12)(Σ vᵢvᵢᵀ + (Σvᵢ)(Σvᵢ)ᵀ), and Σ dᵢ = 0).
-    c = d.T @ d / 12.0
-    c = 0.5 * (c + c.T)
-    inertia = np.trace(c) * np.eye(3) - c
-    return _Raw(0.5 * twice_area, "area", centroid, inertia)
+    # C = dᵀd / 12 made symmetric, I = tr(C) E − C: in floats, the operations numpy's
+    # would make on the arrays (Cij = (Mij/12 + Mji/12)/2, the sum the same either way;
+    # tr = (C00 + C11) + C22; off the diagonal tr·0 − Cij)
+    (m00, m01, m02), (m10, m11, m12), (m20, m21, m22) = (d.T @ d).tolist()
+    c00 = 0.5 * (m00 / 12.0 + m00 / 12.0)
+    c11 = 0.5 * (m11 / 12.0 + m11 / 12.0)
+    c22 = 0.5 * (m22 / 12.0 + m22 / 12.0)
+    c01 = 0.5 * (m01 / 12.0 + m10 / 12.0)
+    c02 = 0.5 * (m02 / 12.0 + m20 / 12.0)
+    c12 = 0.5 * (m12 / 12.0 + m21 / 12.0)
+    tr = (c00 + c11) + c22
+    zero = tr * 0.0
+    inertia = np.array([(tr - c00, zero - c01, zero - c02),
+                        (zero - c01, tr - c11, zero - c12),
+                        (zero - c02, zero - c12, tr - c22)])
+    return _Raw(0.5 * twice_area, "area", (cx, cy, cz), inertia)
+
+
+def _vertices(value: Any) -> list[list[float]]:
+    """The three vertices: a list of three lists of three finite floats (as given, when
+    they are that already)."""
+    if value.__class__ is list and len(value) == 3:  # the common case, quickly
+        for row in value:
+            if not (row.__class__ is list and len(row) == 3):
+                break
+            if not all(x.__class__ is float and math.isfinite(x) for x in row):
+                break
+        else:
+            return value
+    rows = _components("vertices", value, 3)
+    return [[_number("vertices", x, f"vertices[{i}][{j}]")
+             for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]"))]
+            for i, row in enumerate(rows)]
 
 
 def _box(p: dict[str, Any]) -> _Raw:
@@ -617,6 +648,21 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     inertia = raw.unit_inertia
     return ShapeGeometry(raw.measure, raw.measure_kind, raw.com,
                          np.diag(inertia) if isinstance(inertia, tuple) else inertia)
+
+
+def builder(shape: str) -> Callable[[dict[str, Any]], _Raw]:
+    """:func:`local_geometry` of the primitive ``shape`` for parameters already checked as it
+    checks them (none unknown, the required ones present and not None): the body loader's,
+    one call a part.
+
+    Raises
+    ------
+    KeyError
+        ``shape`` is not a primitive shape.
+    ShapeError
+        (from the function returned) as :func:`geometry` for impossible values.
+    """
+    return _BUILDERS[shape]
 
 
 def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:

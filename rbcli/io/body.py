@@ -11,8 +11,10 @@ from __future__ import annotations
 import gc
 import os
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -24,7 +26,7 @@ from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 from rbcli.io.fields import HUGE
-from rbcli.io.placing import BATCH, Pending, dims_of, finish
+from rbcli.io.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
 from rbcli.model import Body, Part, Shaft
 
 MAX_INCLUDE_DEPTH = 16
@@ -131,18 +133,16 @@ class _Ctx:
 # --------------------------------------------------------------------------- parts
 
 
-@dataclass
-class _Known:
-    """What later parts may need from earlier ones (cut_from)."""
-
-    density: float | None
-    measure_kind: str
+#: what later parts may need from an earlier one (cut_from), by its name: the pair
+#: (its density, or None; its measure kind)
+_Known = tuple
 
 
 def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _Known], what: str):
     """Return (mass or None, density or None, the node to blame)."""
-    given = [k for k in MASS_KEYS if k in m.items]
-    cut = m.items.get("cut_from")
+    items = m.items
+    given = list(filter(items.__contains__, MASS_KEYS))  # in MASS_KEYS's order
+    cut = items.get("cut_from")
     if cut is not None:
         given.append("cut_from")
     if len(given) > 1:
@@ -165,16 +165,16 @@ def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _
         src = fl.string(ctx, node, "cut_from")
         if src not in known:
             raise ctx.error(node, f"cut_from: no earlier part is named '{src}'{fl.suggest(src, list(known))}")
-        k = known[src]
-        if k.density is None:
-            raise ctx.error(node, f"cut_from: part '{src}' has no density to take (it is a {k.measure_kind})")
-        if k.measure_kind != measure_kind:
+        density, kind = known[src]
+        if density is None:
+            raise ctx.error(node, f"cut_from: part '{src}' has no density to take (it is a {kind})")
+        if kind != measure_kind:
             raise ctx.error(
                 node,
-                f"cut_from: part '{src}' has {_a(DENSITY_FOR.get(k.measure_kind, k.measure_kind))} "
+                f"cut_from: part '{src}' has {_a(DENSITY_FOR.get(kind, kind))} "
                 f"but this {measure_kind} part needs {_a(DENSITY_FOR.get(measure_kind, 'mass'))}",
             )
-        return None, k.density, node
+        return None, density, node
     want = DENSITY_FOR.get(measure_kind)
     if key != want:
         hint = f"; use '{want}'" if want else "; give its mass"
@@ -184,14 +184,15 @@ def _mass_source(ctx: _Ctx, m: ys.MapNode, measure_kind: str, known: dict[str, _
 
 
 def _part_name(ctx: _Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
-    if "name" in m.items:
-        name = fl.string(ctx, m.items["name"][1], "name")
+    item = m.items.get("name")
+    if item is not None:
+        name = fl.string(ctx, item[1], "name")
         if not name.strip():
-            raise ctx.error(m.items["name"][1], "a part name must not be empty")
+            raise ctx.error(item[1], "a part name must not be empty")
     else:
         name = f"{shape}{index + 1}"
     if name in names:
-        raise ctx.error(m.items["name"][1] if "name" in m.items else m, f"two parts are named '{name}'; names must differ")
+        raise ctx.error(item[1] if item is not None else m, f"two parts are named '{name}'; names must differ")
     names.add(name)
     return name
 
@@ -200,38 +201,48 @@ def _place(part_com, part_I, at, R):
     return at + R @ part_com, R @ part_I @ R.T
 
 
-def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "") -> list[Part]:
+def _parts(ctx: _Ctx, node: ys.Node, prefix: str = "", *, stacked: bool = False) -> list[Part] | Stack:
+    """The parts of the list ``node``: as :class:`Part` s, or for an included file
+    (``stacked``) as one :class:`rbcli.io.placing.Stack` (each use moves it)."""
     if not isinstance(node, ys.SeqNode):
         raise ctx.error(node, f"parts must be a list of parts, not {fl.describe(node)}")
     if not node.items:
         raise ctx.error(node, "parts is empty; a body needs at least one part")
-    out: list = []
+    out: list = []  # Pending, Part or Stack (an include's parts)
     names: set[str] = set()
     known: dict[str, _Known] = {}
-    done = 0  # out[:done] are finished Parts
+    settle = to_stack if stacked else finish  # the primitives of out[done:], placed
+    done = 0  # out[:done] are placed
+    waiting = 0  # parts in out[done:]
     for i, item in enumerate(node.items):
         if not _is_include(item):
             ctx.session.spend(ctx, item, 1)
-        out.extend(_part(ctx, item, i, names, known, prefix))
-        if len(out) - done >= BATCH:
-            done = len(finish(out, done))
-    return finish(out, done)
+        p = _part(ctx, item, i, names, known, prefix)
+        out.append(p)
+        waiting += len(p) if p.__class__ is Stack else 1
+        if waiting >= BATCH:
+            done = len(settle(out, done))
+            waiting = 0
+    out = settle(out, done)
+    return Stack.of(out) if stacked else parts_of(out)
 
 
 def _is_include(node: ys.Node) -> bool:
-    if not isinstance(node, ys.MapNode) or "shape" not in node.items:
+    if not isinstance(node, ys.MapNode):
         return False
-    shape = node.items["shape"][1]
-    return isinstance(shape, ys.ScalarNode) and shape.value == "include"
+    shape = node.items.get("shape")
+    return shape is not None and isinstance(shape[1], ys.ScalarNode) and shape[1].value == "include"
 
 
-def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str) -> list:
-    """The parts of one entry of ``parts``: a primitive as a :class:`Pending` (placed by
-    :func:`rbcli.io.placing.finish` with others), the others as finished :class:`Part` s."""
-    m = fl.mapping(ctx, node, f"part {index + 1}")
-    if "shape" not in m.items:
+def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, _Known], prefix: str):
+    """One entry of ``parts``: a primitive as a :class:`Pending` (placed by
+    :func:`rbcli.io.placing.finish` with others), an include as a :class:`Stack` of its
+    file's parts, a mesh or given part as a finished :class:`Part`."""
+    m = node if isinstance(node, ys.MapNode) else fl.mapping(ctx, node, f"part {index + 1}")
+    shape_item = m.items.get("shape")
+    if shape_item is None:
         raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
-    shape_node = m.items["shape"][1]
+    shape_node = shape_item[1]
     shape = fl.string(ctx, shape_node, "shape")
     if shape not in shp.SHAPES and shape not in SPECIAL_SHAPES:
         raise ctx.error(
@@ -243,38 +254,52 @@ def _part(ctx: _Ctx, node: ys.Node, index: int, names: set[str], known: dict[str
     if shape == "include":
         return _include(ctx, m, name, prefix)
     if shape == "given":
-        return [_given(ctx, m, name, prefix, known)]
+        return _given(ctx, m, name, prefix, known)
     if shape == "mesh":
-        return [_mesh(ctx, m, name, prefix, known)]
-    return [_primitive(ctx, m, shape, name, prefix, known, what)]
+        return _mesh(ctx, m, name, prefix, known)
+    return _primitive(ctx, m, shape, name, prefix, known, what)
 
 
 def _subtract(ctx: _Ctx, m: ys.MapNode) -> bool:
     return fl.flag(ctx, m.items["subtract"][1], "subtract") if "subtract" in m.items else False
 
 
-#: per primitive shape: (its keys in the order messages list them, the same as a set,
-#: its diameter spellings, its parameters with the name of their Kind and its n)
-_PRIMITIVE_KEYS: dict[str, tuple] = {}
+class _Plan(NamedTuple):
+    """How to read a part of one primitive shape (:func:`_plan`, made once per shape)."""
+
+    keys: tuple[str, ...]  # every key it takes, in the order messages list them
+    key_set: frozenset[str]
+    diameters: dict[str, str]  # a diameter spelling -> the radius it gives
+    required: tuple[str, ...]  # its parameters (ShapeInfo.required, .optional)
+    optional: tuple[str, ...]
+    kinds: tuple[tuple[str, str, int], ...]  # (parameter, its Kind's name, its n), in order
+    build: Callable  # the shape's formulas (core.shapes.builder): parameters checked here
+    radius: Callable | None  # ShapeInfo.radius of a round shape, else None
 
 
-def _primitive_keys(shape: str) -> tuple:
-    if shape not in _PRIMITIVE_KEYS:
+_PLANS: dict[str, _Plan] = {}
+
+
+def _plan(shape: str) -> _Plan:
+    plan = _PLANS.get(shape)
+    if plan is None:
         info = shp.SHAPES[shape]
         extra_keys = ("from", "to") if shape == "rod" else ()
         diameters = info.diameters
-        keys = (*COMMON_PART_KEYS, *info.required, *info.optional, *diameters, *extra_keys)
-        kinds = tuple((k, info.kind(k).name, info.kind(k).n) for k in (*info.required, *info.optional))
-        _PRIMITIVE_KEYS[shape] = (keys, frozenset(keys), diameters, kinds)
-    return _PRIMITIVE_KEYS[shape]
+        params = (*info.required, *info.optional)
+        keys = (*COMMON_PART_KEYS, *params, *diameters, *extra_keys)
+        kinds = tuple((k, info.kind(k).name, info.kind(k).n) for k in params)
+        plan = _PLANS[shape] = _Plan(keys, frozenset(keys), diameters, info.required, info.optional,
+                                     kinds, shp.builder(shape), info.radius if info.round else None)
+    return plan
 
 
 def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
-    info = shp.SHAPES[shape]
-    keys, key_set, diameters, kinds = _primitive_keys(shape)
+    plan = _plan(shape)
+    diameters = plan.diameters
     items = m.items
-    if not key_set.issuperset(items):
-        fl.check_keys(ctx, m, keys, f"{what} ({shape})")
+    if not plan.key_set.issuperset(items):
+        fl.check_keys(ctx, m, plan.keys, f"{what} ({shape})")
     params: dict[str, object] = {}
     nodes: dict[str, ys.Node] = {}
     for dkey, rkey in diameters.items():
@@ -299,12 +324,12 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
         params["length"] = float(np.linalg.norm(b - a))
         at = (0.5 * (a + b)).tolist()
         spec = ("R", rot.axis_to_z(b - a))
-    for key in info.required:
+    for key in plan.required:
         if key not in items and key not in params:
             alt = next((f" or '{d}'" for d, r in diameters.items() if r == key), "")
-            params_allowed = (*info.required, *info.optional)
+            params_allowed = (*plan.required, *plan.optional)
             raise ctx.error(m, f"{what} ({shape}) needs '{key}'{alt} (parameters: {', '.join(params_allowed) or 'none'})")
-    for key, kind, n in kinds:
+    for key, kind, n in plan.kinds:
         if key not in items or key in params:
             continue
         vnode = items[key][1]
@@ -318,7 +343,7 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
         elif kind == "bool":
             params[key] = fl.flag(ctx, vnode, key)
     try:
-        geo = shp.local_geometry(shape, params)
+        geo = plan.build(params)  # what shp.local_geometry checks first, checked above
     except shp.ShapeError as exc:  # lengths quoted in the file's own length unit
         factor, unit = ctx.factors.get("length") or un.unit_for_kind(ctx.base_units, "length")
         message = exc.format(lambda x: f"{x / factor:g} {unit}")
@@ -327,21 +352,25 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
         raise ctx.error(m, f"{what}: {exc}") from None
     measure_kind = geo.measure_kind
     mass, density, src = _mass_source(ctx, m, measure_kind, known, what)
-    measure = float(geo.measure) if measure_kind != "point" else None
-    if mass is None:
-        assert density is not None and measure is not None
-        mass = density * measure
-        _check_mass(ctx, src, what, mass, f"density × {measure_kind}")
-    elif measure:
-        density = mass / measure
+    if measure_kind == "point":
+        measure = None
+        known[name] = (None, measure_kind)
+    else:
+        measure = float(geo.measure)
+        if mass is None:
+            mass = density * measure
+            _check_mass(ctx, src, what, mass, f"density × {measure_kind}")
+        elif measure:
+            density = mass / measure
+        known[name] = (density, measure_kind)
     if not mass > 0:
         raise ctx.error(m, f"{what} has no mass")
-    known[name] = _Known(density if measure_kind != "point" else None, measure_kind)
     mark = m.mark
+    radius = plan.radius
     return Pending(
-        prefix + name, shape, float(mass), _subtract(ctx, m), measure, measure_kind,
-        info.radius(params), Location(ctx.file, mark.line, mark.col), at, spec, geo.com,
-        geo.unit_inertia, dims_of(params),
+        prefix + name, shape, mass, "subtract" in items and _subtract(ctx, m), measure,
+        measure_kind, radius and radius(params), Location(ctx.file, mark.line, mark.col), at,
+        spec, geo.com, geo.unit_inertia, dims_of(params),
     )
 
 
@@ -411,7 +440,7 @@ def _given(ctx, m, name, prefix, known) -> Part:
         raise ctx.error(inode, f"{what}: the inertia is not physically possible: {problem}")
     J = 0.5 * (J + J.T)
     at, R = fl.placement(ctx, m)
-    known[name] = _Known(None, "given")
+    known[name] = (None, "given")
     pc, PJ = _place(com, J, at, R)
     return Part(
         name=prefix + name, shape="given", mass=mass, subtract=_subtract(ctx, m), com=pc,
@@ -442,7 +471,7 @@ def _resolve(ctx: _Ctx, node: ys.Node, what: str) -> Path:
     return path
 
 
-def _include(ctx, m, name, prefix) -> list[Part]:
+def _include(ctx, m, name, prefix) -> Stack:
     what = f"part '{name}' (include)"
     fl.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
@@ -462,7 +491,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     if sub is None:
         data = _read_file(path, where)
         session.parses += 1
-        sub = _load(data, str(path), path.parent, (*ctx.stack, real), session=session)
+        sub = _load(data, str(path), path.parent, (*ctx.stack, real), session=session, stacked=True)
         sub.root = None  # its YAML tree: only the top file's is read again (memory)
         session.parsed[key] = sub
     elif len(ctx.stack) + sub.ctx.height >= MAX_INCLUDE_DEPTH:
@@ -476,47 +505,7 @@ def _include(ctx, m, name, prefix) -> list[Part]:
     ctx.inputs.append(real)
     ctx.inputs.extend(sub.ctx.inputs)
     at, R = fl.placement(ctx, m)
-    parts = sub.parts
-    if not parts:
-        return []
-    # place every part of the file at once (one use of a file may bring thousands)
-    coms = np.array([p.com for p in parts], dtype=float)
-    Js = np.array([p.inertia_com for p in parts], dtype=float)
-    axes = np.array([p.axis for p in parts], dtype=float)
-    new_coms = at + coms @ R.T
-    new_Js = np.einsum("ij,njk,lk->nil", R, Js, R)
-    new_axes = axes @ R.T
-    outlines = _placed_outlines([p.outline for p in parts], at, R)
-    return [
-        Part(
-            name=f"{prefix}{name}/{p.name}", shape=p.shape, mass=p.mass, subtract=p.subtract,
-            com=new_coms[i], inertia_com=new_Js[i], measure=p.measure, measure_kind=p.measure_kind,
-            radius=p.radius, axis=new_axes[i], extra=p.extra, where=p.where, outline=outlines[i],
-        )
-        for i, p in enumerate(parts)
-    ]
-
-
-def _placed_outlines(outlines: list, at: np.ndarray, R: np.ndarray) -> list:
-    """``outlines`` moved by ``x -> at + R x`` as an included file's parts are (None stays
-    None): the products stacked, the same numbers bit for bit as one part at a time
-    (tests/test_body_fast.py), without two small products a part."""
-    from rbcli.model import Outline
-
-    idx = [i for i, o in enumerate(outlines) if o is not None]
-    if not idx:
-        return outlines
-    o_at = np.array([outlines[i].at for i in idx], dtype=float)
-    o_R = np.array([outlines[i].R for i in idx], dtype=float)
-    new_at = at + (R @ o_at[:, :, None])[:, :, 0]
-    new_R = R @ o_R
-    new_at.setflags(write=False)
-    new_R.setflags(write=False)
-    out = list(outlines)
-    for j, i in enumerate(idx):
-        o = outlines[i]
-        out[i] = Outline(o.kind, o.dims, new_at[j], new_R[j], o.vertices, o.faces)
-    return out
+    return sub.parts.moved(at, R, f"{prefix}{name}/")
 
 
 def _mesh(ctx, m, name, prefix, known) -> Part:
@@ -603,7 +592,7 @@ def _mesh(ctx, m, name, prefix, known) -> Part:
         _check_mass(ctx, src, what, mass, "density × volume")
     else:
         density = mass / props.volume
-    known[name] = _Known(density, "volume")
+    known[name] = (density, "volume")
     com, J = _place(np.asarray(props.centroid), mass * np.asarray(props.unit_inertia), at, R)
     return Part(
         name=prefix + name, shape="mesh", mass=float(mass), subtract=subtract, com=com,
@@ -636,7 +625,7 @@ def _mesh_path(ctx: _Ctx, fnode: ys.Node) -> Path:
 
 @dataclass
 class _Loaded:
-    parts: list[Part]
+    parts: list[Part] | Stack  # a Stack for an included file
     warnings: list[str]
     root: ys.MapNode | None  # the file's YAML tree (None for an included file, once read)
     ctx: _Ctx
@@ -661,7 +650,8 @@ def _units(ctx: _Ctx, m: ys.MapNode) -> None:
 
 
 def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...],
-          units: dict[str, str] | None = None, *, session: _Session | None = None) -> _Loaded:
+          units: dict[str, str] | None = None, *, session: _Session | None = None,
+          stacked: bool = False) -> _Loaded:
     root = ys.load(data, filename)
     session = session if session is not None else _session()
     ctx = _Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
@@ -685,12 +675,13 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
     _units(ctx, root)
     if "parts" in root.items:
         fl.check_keys(ctx, root, BODY_KEYS, "the body")
-        parts = _parts(ctx, root.items["parts"][1])
+        parts = _parts(ctx, root.items["parts"][1], stacked=stacked)
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
         items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
         stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
-        parts = finish(_part(ctx, stripped, 0, set(), {}, ""))
+        one = [_part(ctx, stripped, 0, set(), {}, "")]
+        parts = to_stack(one)[0] if stacked else parts_of(finish(one))
     else:
         raise ctx.error(root, "a body file needs 'parts:' (a list of parts), or a single part with 'shape:'")
     ctx.inputs = list(dict.fromkeys(ctx.inputs))

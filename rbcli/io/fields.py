@@ -69,10 +69,17 @@ def mapping(ctx: Any, node: ys.Node, what: str) -> ys.MapNode:
     return node
 
 
+#: quantity texts already read, (text, kind) -> SI value (those :func:`quantity` accepted;
+#: a value depends on nothing else): a body file repeats its unit strings ("7850 kg/m^3")
+#: thousands of times. At most _MAX_READ entries, then emptied.
+_READ: dict[tuple[str, str], float] = {}
+_MAX_READ = 1 << 16
+
+
 def number(ctx: Any, node: ys.Node, kind: str, what: str) -> float:
     """A scalar quantity in SI: a bare number (in the file's units) or a string with a unit."""
-    # the common case first (a bare finite number, its unit's factor known): one part of a
-    # large body reads ~10 of these
+    # the common cases first (a bare finite number, its unit's factor known; a text read
+    # before): one part of a large body reads ~10 of these
     if node.__class__ is ys.ScalarNode:
         value = node.value
         if value.__class__ is float or value.__class__ is int:
@@ -81,6 +88,10 @@ def number(ctx: Any, node: ys.Node, kind: str, what: str) -> float:
                 x = float(value) * factor[0]
                 if -HUGE <= x <= HUGE:  # also refuses inf and nan: the checks below say why
                     return x
+        elif value.__class__ is str:
+            x = _READ.get((value, kind))
+            if x is not None:
+                return x
     return quantity(ctx, node, kind, what)
 
 
@@ -101,7 +112,12 @@ def quantity(ctx: Any, node: ys.Node, kind: str, what: str) -> float:
         raise ctx.error(node, f"{what} must be finite, not {node.raw}")
     if abs(x) > HUGE:
         raise ctx.error(node, f"{what} is too large ({node.raw}); numbers are limited to 1e60 in SI units")
-    return float(x)
+    x = float(x)
+    if value.__class__ is str:
+        if len(_READ) >= _MAX_READ:
+            _READ.clear()
+        _READ[value, kind] = x
+    return x
 
 
 def floats(ctx: Any, node: ys.Node, kind: str, what: str, n: int | tuple[int, ...] = 3) -> list[float]:
@@ -116,12 +132,13 @@ def floats(ctx: Any, node: ys.Node, kind: str, what: str, n: int | tuple[int, ..
     factor = ctx.factors.get(kind)
     if factor is not None:  # number's common case, inline
         f = factor[0]
+        scalar = ys.ScalarNode
         out = []
         for item in node.items:
-            if item.__class__ is ys.ScalarNode:
+            if item.__class__ is scalar:
                 value = item.value
                 if value.__class__ is float or value.__class__ is int:
-                    x = float(value) * f
+                    x = value * f  # an int is converted as float(value) would
                     if -HUGE <= x <= HUGE:
                         out.append(x)
                         continue
@@ -223,7 +240,7 @@ def rotation(ctx: Any, node: ys.Node) -> tuple:
             seq_node = m.items["seq"][1]
             seq = string(ctx, seq_node, "seq")
             angles_node = m.items["euler"][1]
-            angles = floats(ctx, angles_node, "angle", "euler angles", n=(len(seq),) if 1 <= len(seq) <= 3 else 3)
+            angles = floats(ctx, angles_node, "angle", "euler angles", n=len(seq) if 1 <= len(seq) <= 3 else 3)
             try:
                 rot.euler_intrinsic(seq)
             except ValueError as exc:

@@ -6,11 +6,16 @@ rotations per kind (:func:`rbcli.core.rotation.from_specs`), ``com = at + R c`` 
 ``J = R (m U) Rᵀ`` as stacked matrix products — the same numbers, bit for bit, as one
 product per part (numpy makes the same BLAS call for each matrix of a stack) — and
 makes their :class:`rbcli.model.Part` s, whose arrays are rows of a few shared arrays.
+
+An included file's parts stay arrays (a :class:`Stack`): each use of the file moves all of
+them at once (:meth:`Stack.moved`) and only the top file makes Part objects, so that an
+included part costs about what the same part written inline does (issue 16).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import chain
 
 import numpy as np
 
@@ -46,14 +51,29 @@ class Pending:
 def dims_of(params: dict) -> tuple:
     """The drawing's description of a primitive part: its parameters (m) as
     :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
-    dims = []
-    for k, v in params.items():
+    dims = tuple(params.items())
+    for k, v in dims:
+        if v.__class__ is not float:  # else as it is (most parameters: one length)
+            break
+    else:
+        return dims
+    out = []
+    for k, v in dims:
         if isinstance(v, list):  # size, semi_axes (n,), vertices (3, 3)
             v = tuple(tuple(r) for r in v) if isinstance(v[0], list) else tuple(v)
         elif not isinstance(v, bool):
             v = float(v)  # type: ignore[arg-type]
-        dims.append((k, v))
-    return tuple(dims)
+        out.append((k, v))
+    return tuple(out)
+
+
+def _rows(vectors: list) -> np.ndarray:
+    """The (n, 3) array of ``n`` 3-vectors (lists, tuples or arrays of floats): what
+    ``np.array(vectors, dtype=float)`` makes, without numpy reading nested sequences
+    (~3 x faster); an array that owns its data."""
+    a = np.fromiter(chain.from_iterable(vectors), dtype=float, count=3 * len(vectors))
+    a.shape = (len(vectors), 3)
+    return a
 
 
 def _units(pending: list) -> np.ndarray:
@@ -61,7 +81,7 @@ def _units(pending: list) -> np.ndarray:
     units = [p.unit_inertia for p in pending]
     if all(u.__class__ is tuple for u in units):  # all diagonal (the common case): one copy
         U = np.zeros((len(units), 9))
-        U[:, ::4] = units  # the diagonal of each row's 3x3
+        U[:, ::4] = _rows(units)  # the diagonal of each row's 3x3
         return U.reshape(-1, 3, 3)
     return _mixed_units(pending)
 
@@ -80,9 +100,27 @@ def _mixed_units(pending: list) -> np.ndarray:
     return U
 
 
-def finish(items: list, start: int = 0) -> list[Part]:
+def _placed(pending: list) -> tuple:
+    """``pending`` placed: (coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines'
+    origins (n, 3) and rotations (n, 3, 3), read-only arrays that own their data)."""
+    ats = _rows([p.at for p in pending])  # (n, 3), not a view (see model._frozen)
+    Rs = rot.from_specs([p.spec for p in pending])
+    local_coms = _rows([p.com for p in pending])
+    U = _units(pending)
+    masses = np.array([p.mass for p in pending], dtype=float)
+    coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
+    Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
+    axes = Rs[:, :, 2].copy()
+    if Rs.base is not None:  # the outlines' rows: of an array that owns its data
+        Rs = Rs.copy()
+    ats.setflags(write=False)
+    Rs.setflags(write=False)
+    return coms, Js, axes, ats, Rs
+
+
+def finish(items: list, start: int = 0) -> list:
     """``items`` with every :class:`Pending` of ``items[start:]`` replaced by its placed
-    :class:`Part` (in place).
+    :class:`Part` (in place; a :class:`Stack` stays as it is).
 
     The primitives are placed together: their rotations per kind
     (:func:`rbcli.core.rotation.from_specs`), ``com = at + R c`` and ``J = R (m U) Rᵀ`` as stacked matrix
@@ -92,31 +130,137 @@ def finish(items: list, start: int = 0) -> list[Part]:
     pending = [p for p in items[start:] if p.__class__ is Pending]
     if not pending:
         return items
-    n = len(pending)
     dims = [p.dims for p in pending]
-    ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), not a view (see _frozen)
-    Rs = rot.from_specs([p.spec for p in pending])
-    local_coms = np.array([p.com for p in pending], dtype=float).reshape(n, 3)
-    U = _units(pending)
-    masses = np.array([p.mass for p in pending], dtype=float)
+    coms, Js, axes, ats, Rs = _placed(pending)
     del pending  # each one goes when its Part replaces it (the peak memory of a large body)
-    coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
-    Js = Rs @ (masses[:, None, None] * U) @ Rs.transpose(0, 2, 1)
-    axes = Rs[:, :, 2].copy()
-    if Rs.base is not None:  # the outlines' rows: of an array that owns its data
-        Rs = Rs.copy()
-    ats.setflags(write=False)
-    Rs.setflags(write=False)
     outline = Outline.of_frozen  # read-only rows of read-only arrays, as Outline keeps them
+    part = Part.positional
     i = 0
     for k in range(start, len(items)):
         p = items[k]
         if p.__class__ is not Pending:
             continue
         # Part's fields in order (positional: one part after another in a large body)
-        items[k] = Part(
+        items[k] = part(
             p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
             p.radius, axes[i], {}, p.where, outline(p.shape, dims[i], ats[i], Rs[i]),
         )
         i += 1
     return items
+
+
+class Stack:
+    """Placed parts kept as arrays, not yet :class:`Part` s: an included file's parts.
+
+    Each use of an included file moves all its parts at once (:meth:`moved`, stacked
+    products) and only the top file makes Part objects (:meth:`parts`), once a part: an
+    included file's parts are not made and then made again per use.
+
+    Attributes
+    ----------
+    names : list of str — the parts' names (``sub/part`` once moved by an include)
+    rows : list — per part what placing does not change: its :class:`Pending` (a primitive)
+        or its :class:`Part` (a mesh or given part: its ``extra`` and outline's kind, dims
+        and mesh are kept)
+    com, inertia, axis : (n, 3), (n, 3, 3), (n, 3) arrays — as :class:`Part` has them
+    at, R : (n, 3), (n, 3, 3) read-only arrays — the outlines' placements (a part without
+        an outline has the identity there, unused)
+    """
+
+    __slots__ = ("names", "rows", "com", "inertia", "axis", "at", "R")
+
+    def __init__(self, names: list, rows: list, com, inertia, axis, at, R) -> None:
+        self.names, self.rows = names, rows
+        self.com, self.inertia, self.axis, self.at, self.R = com, inertia, axis, at, R
+
+    def __len__(self) -> int:
+        return len(self.names)
+
+    @classmethod
+    def of(cls, items: list) -> Stack:
+        """Pending primitives, finished parts and stacks, in their order, as one stack (the
+        primitives placed together)."""
+        pending = [p for p in items if p.__class__ is Pending]
+        placed = _placed(pending) if pending else ()
+        pieces: list[Stack] = []
+        start = j = 0  # pending[start:j]: the run of primitives not yet in pieces
+        for item in items:
+            if item.__class__ is Pending:
+                j += 1
+                continue
+            if j > start:
+                pieces.append(cls._run(pending[start:j], [x[start:j] for x in placed]))
+                start = j
+            pieces.append(item if item.__class__ is Stack else cls._of_part(item))
+        if j > start:
+            pieces.append(cls._run(pending[start:j], [x[start:j] for x in placed]))
+        if len(pieces) == 1:
+            return pieces[0]
+        arrays = [np.concatenate([getattr(s, f) for s in pieces]) for f in cls.__slots__[2:]]
+        arrays[3].setflags(write=False)  # at, R: the outlines' (read-only, own data)
+        arrays[4].setflags(write=False)
+        return cls([n for s in pieces for n in s.names], [r for s in pieces for r in s.rows], *arrays)
+
+    @classmethod
+    def _run(cls, pending: list, placed: list) -> Stack:
+        return cls([p.name for p in pending], pending, *placed)
+
+    @classmethod
+    def _of_part(cls, p: Part) -> Stack:
+        o = p.outline
+        at, R = (np.zeros(3), np.eye(3)) if o is None else (o.at, o.R)
+        return cls([p.name], [p], p.com[None], p.inertia_com[None], p.axis[None], at[None], R[None])
+
+    def moved(self, at: np.ndarray, R: np.ndarray, prefix: str) -> Stack:
+        """The parts moved by ``x -> at + R x`` (an include's placement), their names
+        prefixed: ``com = at + c Rᵀ`` and ``J = R J Rᵀ`` for all at once, the outlines'
+        ``at + R a`` and ``R Q`` stacked (each the same numbers, bit for bit, as one part at
+        a time: tests/test_body_fast.py)."""
+        com = at + self.com @ R.T
+        inertia = np.einsum("ij,njk,lk->nil", R, self.inertia, R)
+        axis = self.axis @ R.T
+        o_at = at + (R @ self.at[:, :, None])[:, :, 0]
+        o_R = R @ self.R
+        o_at.setflags(write=False)
+        o_R.setflags(write=False)
+        return Stack([prefix + n for n in self.names], self.rows, com, inertia, axis, o_at, o_R)
+
+    def parts(self) -> list[Part]:
+        """The stacked parts as :class:`Part` s (their arrays rows of the stack's)."""
+        out = []
+        outline = Outline.of_frozen
+        part = Part.positional
+        for name, r, com, J, axis, at, R in zip(self.names, self.rows, self.com, self.inertia,
+                                                self.axis, self.at, self.R):
+            if r.__class__ is Pending:
+                o = outline(r.shape, r.dims, at, R)
+                extra = {}
+            else:
+                o = r.outline
+                o = None if o is None else outline(o.kind, o.dims, at, R, o.vertices, o.faces)
+                extra = r.extra
+            out.append(part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
+                            r.radius, axis, extra, r.where, o))
+        return out
+
+
+def to_stack(items: list, start: int = 0) -> list:
+    """``items`` with ``items[start:]`` replaced by one :class:`Stack` of them (in place):
+    :func:`finish` for an included file."""
+    if start < len(items):
+        items[start:] = [Stack.of(items[start:])]
+    return items
+
+
+def parts_of(items: list) -> list[Part]:
+    """Finished parts and stacks (an include's parts, :meth:`Stack.parts`) as one list of
+    :class:`Part` s, in order."""
+    if not any(p.__class__ is Stack for p in items):
+        return items
+    out = []
+    for p in items:
+        if p.__class__ is Stack:
+            out.extend(p.parts())
+        else:
+            out.append(p)
+    return out
