@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import json
 import math
 from itertools import chain
@@ -30,11 +31,18 @@ def dumps(obj: Any, *, lines: bool = False, plain: bool = False) -> str:
     data = obj if plain else jsonable(obj)
     if lines:
         return _LINE.encode(data) + "\n"
+    # The collector paused: the layout makes ~1 container a row (100 000 for a large
+    # body's parts) and no cycles; each gen-0 collection would also rescan the document.
+    was = gc.isenabled()
+    gc.disable()
     try:
         return _pretty(data, 0, True) + "\n"
     except Exception:  # noqa: BLE001 - written again value by value: the first error met
         # in document order is raised (the column path meets them column by column)
         return _pretty(data, 0, False) + "\n"
+    finally:
+        if was:
+            gc.enable()
 
 
 #: the encoder of one-line values inside the indented document, made once
