@@ -5,7 +5,7 @@ from __future__ import annotations
 import gc
 import json
 import math
-from itertools import chain
+from itertools import chain, compress
 from operator import itemgetter
 from typing import Any
 
@@ -129,14 +129,15 @@ def _rows(v: list, level: int) -> list[str] | None:
     # subclass, written the same). 1, 1.0 and True are one key: not grouped.
     if set(map(type, chain.from_iterable(groups))) != {str}:
         return None
-    texts: list[str] = [""] * len(rows)
+    texts: list[str] = []
+    placed: dict[int, str] = {}  # row number -> text, when there are several groups
     for group in groups:
         if len(groups) == 1:
             index = None
             members = rows
         else:
-            index = [i for i, k in enumerate(keys) if k == group]
-            members = [rows[i] for i in index]
+            index = list(compress(range(len(rows)), map(group.__eq__, keys)))
+            members = list(map(rows.__getitem__, index))
         pieces = []
         columns: list[list[str]] = []
         for key in group:
@@ -151,8 +152,9 @@ def _rows(v: list, level: int) -> list[str] | None:
         if index is None:
             texts = made
         else:
-            for i, text in zip(index, made):
-                texts[i] = text
+            placed.update(zip(index, made))
+    if placed:
+        texts = list(map(placed.__getitem__, range(len(rows))))
     if is_row is None:
         return texts
     it = iter(texts)
