@@ -76,3 +76,24 @@ def _outcome(fn, obj):
 @given(TREES)
 def test_jsonable_is_its_definition(obj):
     assert _outcome(result.jsonable, obj) == _outcome(reference, obj)
+
+
+# api.massprops converts the "parts" rows (100 000 for a large body) in its own loop: the
+# same data, or the same error, as jsonable of the whole document.
+ROW_VALUES = (FLOATS | st.integers() | st.booleans() | st.text(max_size=3) | FLOATS.map(np.float64)
+              | st.lists(FLOATS, min_size=3, max_size=3).map(lambda v: _array(v, float))
+              | st.lists(FLOATS, min_size=3, max_size=3).map(lambda v: _array(v, np.float32))
+              | st.lists(FLOATS, min_size=4, max_size=4).map(lambda v: _array(v, float).reshape(2, 2))
+              | st.lists(FLOATS, max_size=2).map(lambda v: _array(v, float)))
+ROWS = st.lists(st.dictionaries(st.sampled_from(["name", "shape", "mass", "com", "subtract"]), ROW_VALUES,
+                                min_size=1, max_size=5), max_size=6).map(tuple)
+
+
+@settings(max_examples=500, deadline=None)
+@given(ROWS)
+def test_parts_rows_are_jsonable(rows):
+    from rbcli.api.massprops import _with_parts
+
+    head = {"mass": 1.0, "com": np.array([-0.0, 1.0, 2.0])}
+    assert (_outcome(lambda r: _with_parts(head, r), rows)
+            == _outcome(reference, {**head, "parts": list(rows)}))

@@ -136,28 +136,29 @@ def _with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
 
 
 def _rows_json(out: dict, parts: tuple[dict, ...]) -> dict:
-    import math
-
+    add_zero = (0.0).__add__  # 0.0 + x is x, but 0.0 for -0.0
     rows = []
+    append = rows.append
     for row in parts:
         new = {}
         for key, v in row.items():
             cls = v.__class__
             if cls is float:
-                if not math.isfinite(v):
+                if v - v != 0.0:  # inf or NaN
                     break
-                new[key] = v if v != 0.0 else 0.0
+                new[key] = v + 0.0
             elif cls is str or cls is bool or cls is int:
                 new[key] = v
-            elif hasattr(v, "tolist") and v.ndim == 1:
+            elif hasattr(v, "tolist") and v.ndim == 1 and v.dtype.char == "d":  # float64
                 xs = v.tolist()
-                if xs.__class__ is not list or not all(x.__class__ is float and math.isfinite(x) for x in xs):
+                total = sum(xs)
+                if total - total != 0.0:  # inf or NaN (or a sum overflowing: jsonable decides)
                     break
-                new[key] = [x if x != 0.0 else 0.0 for x in xs]
+                new[key] = list(map(add_zero, xs))
             else:
                 break
         else:
-            rows.append(new)
+            append(new)
             continue
         return jsonable({**out, "parts": list(parts)})
     done = jsonable(out)
