@@ -35,6 +35,7 @@ def main(argv: list[str] | None = None) -> None:
     from rbcli import env as _env
 
     _env.prepare_streams()
+    _env.prepare_blas()
     args = sys.argv[1:] if argv is None else list(argv)
     old_signals = _env.handle_signals()
     try:

@@ -24,6 +24,8 @@ ENVIRONMENT = [
     ("NO_COLOR", "plain text tables without colour (also when standard output is not a terminal)."),
     ("COLUMNS", "table width when standard output is not a terminal (default 100)."),
     ("SOURCE_DATE_EPOCH", "the date written into reports, for reproducible output."),
+    ("OPENBLAS_NUM_THREADS", "BLAS threads; rbcli sets 1 unless it is set (its products are small; "
+     "the numbers are the same either way)."),
 ]
 
 
