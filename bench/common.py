@@ -38,6 +38,11 @@ ENV["PYTHONPATH"] = os.pathsep.join(filter(None, (str(ROOT), os.environ.get("PYT
 # recompile every rbcli module whose .pyc is stale on every run (measured: +6 ms for
 # rbcli.io.units alone). See also compile_rbcli().
 ENV.pop("PYTHONDONTWRITEBYTECODE", None)
+# One BLAS thread for every child, rbcli and its peers and floors alike: the command line
+# sets it itself (rbcli.env.prepare_blas) because OpenBLAS's idle workers busy-wait ~0.1 s
+# after `import numpy` (~50 ms of every run on 2 cores); a peer or floor without it would
+# pay that and rbcli not, and the ratios would credit rbcli's code with a setting.
+ENV["OPENBLAS_NUM_THREADS"] = "1"
 
 
 def compile_rbcli() -> None:
