@@ -9,6 +9,7 @@ units must have the right dimension, unknown keys are refused with a
 from __future__ import annotations
 
 import gc
+import math
 import os
 import stat
 import sys
@@ -768,7 +769,7 @@ def _body_defaults(
             mp = combine(parts)
     except ValueError as exc:
         raise ctx.error(node, str(exc)) from None
-    if not (np.isfinite(mp.com).all() and np.isfinite(mp.inertia_com).all()):
+    if not all(map(math.isfinite, (*mp.com.tolist(), *mp.inertia_com.ravel().tolist()))):
         raise ctx.error(
             node,
             "the body's mass properties overflow (a mass times a squared distance exceeds "
