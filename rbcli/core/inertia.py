@@ -8,6 +8,7 @@ the tensor about the centre of mass, and :func:`inertia_about` moves it.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
@@ -95,9 +96,13 @@ def combine(parts: Iterable[Part]) -> MassProps:
             f"the total mass is {total:.6g} kg; a body needs a positive mass "
             "(do the subtracted parts remove more than there is?)"
         )
-    # a point near the parts, so that far-away bodies keep their digits
-    w = np.abs(m)
-    origin = (w @ c) / w.sum()
+    # a point near the parts, so that far-away bodies keep their digits (the weights |m|
+    # are m itself when no part is a hole and no mass is -0.0: the same sums, not redone)
+    if holes or not all(x > 0.0 for x in m.tolist()):
+        w = np.abs(m)
+        origin = (w @ c) / w.sum()
+    else:
+        origin = (m @ c) / total
     rel = c - origin
     com_rel = (m @ rel) / total
     d = rel - com_rel
@@ -183,7 +188,7 @@ def checked_inertia_about(mp: MassProps, point: np.ndarray) -> np.ndarray:
     """
     with np.errstate(over="ignore", invalid="ignore"):
         J = inertia_about(mp, point)
-    if not np.isfinite(J).all():
+    if not all(map(math.isfinite, J.ravel().tolist())):
         raise InputOverflow(
             "reference", "the inertia about this point overflows: the point is too far from the body"
         )

@@ -9,7 +9,9 @@ units must have the right dimension, unknown keys are refused with a
 from __future__ import annotations
 
 import gc
+import math
 import os
+import stat
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -767,7 +769,7 @@ def _body_defaults(
             mp = combine(parts)
     except ValueError as exc:
         raise ctx.error(node, str(exc)) from None
-    if not (np.isfinite(mp.com).all() and np.isfinite(mp.inertia_com).all()):
+    if not all(map(math.isfinite, (*mp.com.tolist(), *mp.inertia_com.ravel().tolist()))):
         raise ctx.error(
             node,
             "the body's mass properties overflow (a mass times a squared distance exceeds "
@@ -802,7 +804,43 @@ def load_body(source: str, *, stdin: object = None) -> Body:
         return load_text(data, "<stdin>", Path.cwd(), name_default="body")
     path = Path(source)
     data = _read_file(path)
-    return load_text(data, source, path.parent, name_default=path.stem, stack=(os.path.realpath(path),))
+    return load_text(data, source, path.parent, name_default=path.stem, stack=(_realpath(str(path)),))
+
+
+#: :func:`_realpath`'s folders: (the cwd for a relative one, the folder as written) ->
+#: (its real path, its (st_dev, st_ino)); cleared when it reaches _REAL_DIRS_MAX
+_REAL_DIRS: dict[tuple[str, str], tuple[str, tuple[int, int]]] = {}
+_REAL_DIRS_MAX = 256
+
+
+def _realpath(path: str) -> str:
+    """``os.path.realpath(path)`` of a file just read, with its folder's real path taken
+    once for a batch of files in one folder (issue 16: ~6 lstat and a Python loop a file).
+
+    The folder's cached real path is used while ``os.stat`` of the folder as written is
+    still the same directory (device and inode); the last component is resolved by
+    ``os.path.realpath`` whenever it is a symbolic link, ``.`` or ``..`` (or gone). (A
+    folder moved and a link put in its place while a batch runs would keep its old real
+    path; a folder re-linked to another directory would not.)
+    """
+    head, tail = os.path.split(path)
+    if os.name != "posix" or tail in ("", ".", ".."):
+        return os.path.realpath(path)
+    folder = head or "."
+    try:
+        key = (folder if os.path.isabs(folder) else os.getcwd(), folder)
+        st = os.stat(folder)
+        if stat.S_ISLNK(os.lstat(path).st_mode):
+            return os.path.realpath(path)
+    except (OSError, ValueError):  # gone, or a name the system refuses: realpath's answer
+        return os.path.realpath(path)
+    ident = (st.st_dev, st.st_ino)
+    known = _REAL_DIRS.get(key)
+    if known is None or known[1] != ident:
+        if len(_REAL_DIRS) >= _REAL_DIRS_MAX:
+            _REAL_DIRS.clear()
+        known = _REAL_DIRS[key] = (os.path.realpath(folder), ident)
+    return os.path.join(known[0], tail)
 
 
 def load_expr(expr: str) -> Body:
