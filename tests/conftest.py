@@ -23,7 +23,15 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-import pytest
+# Pin OpenBLAS's kernel before numpy is first imported (here or in a child process): the
+# golden outputs are exact to the last digit, and OpenBLAS picks its kernels by CPU (the 3x3
+# products of an Intel AVX-512 machine and an AMD one differ in the last bit). Haswell's
+# kernels (AVX2+FMA) run on every x86-64 machine this suite is run on; a user's choice stands.
+from tests_blas import pin_blas_kernel  # noqa: E402
+
+pin_blas_kernel()
+
+import pytest  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"

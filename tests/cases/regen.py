@@ -19,6 +19,10 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(HERE.parent))
 
+from tests_blas import pin_blas_kernel  # noqa: E402  (before numpy: the kernel decides last digits)
+
+pin_blas_kernel()
+
 EXAMPLES = sorted(p.stem for p in (ROOT / "examples").glob("*.yaml"))
 
 #: bodies of revolution about z (a wheel, a top, a disk): rollcheck and top apply
