@@ -9,6 +9,8 @@ exits 1 itself.
 from __future__ import annotations
 
 import enum
+import re
+from collections.abc import Callable
 from dataclasses import FrozenInstanceError
 
 
@@ -69,18 +71,87 @@ class Location:
         return f"{self.file}:{self.line}:{self.col}"
 
 
+#: a parameter named inside a message (``{speed}``, ``{zero_mark_deg}``), or ``{{`` (a brace)
+_PARAM_REF = re.compile(r"\{\{|\{([a-z][a-z0-9_]*)\}")
+
+
+def spell(template: str, name: Callable[[str], str] | None = None) -> str:
+    """A message template with each ``{param}`` spelled by ``name``.
+
+    api and core write messages that mention a parameter as ``{param}``
+    (``"needs the correction planes, {planes} zA,zB"``). The Python API spells it as the
+    parameter (``name`` None: :func:`param_name`, ``planes``); the command line as its option
+    (``name=option_name``: ``--planes``). ``{{`` is one brace (text a user typed goes in
+    through :func:`literal`); other braces (``{shape: box}``) are left as they are.
+    """
+    if "{" not in template:
+        return template
+    name = name or param_name
+    return _PARAM_REF.sub(lambda m: name(m.group(1)) if m.group(1) else "{", template)
+
+
+def literal(text: object) -> str:
+    """``text`` (a value as the user typed it) safe inside a message template."""
+    return str(text).replace("{", "{{")
+
+
+class Note(str):
+    """A warning or remark from api or core: the text with parameters spelled as the Python
+    API spells them, keeping its :attr:`template` so the command line can spell options.
+
+    ``Note("{omega}: the rim would move faster than sound")`` is the string
+    ``"omega: the rim would move faster than sound"``; :func:`spell` of its ``template``
+    with :func:`option_name` gives ``"--omega: ..."``.
+    """
+
+    template: str
+
+    def __new__(cls, template: str) -> "Note":
+        self = super().__new__(cls, spell(template))
+        self.template = template
+        return self
+
+    def spelled(self, name: Callable[[str], str] | None = None) -> str:
+        return spell(self.template, name)
+
+
+def spelled(text: str, name: Callable[[str], str]) -> str:
+    """``text`` with its parameters spelled by ``name`` if it is a :class:`Note`."""
+    return text.spelled(name) if isinstance(text, Note) else text
+
+
 class RbcliError(Exception):
-    """Base of every error rbcli reports to the user."""
+    """Base of every error rbcli reports to the user.
+
+    ``message`` may name parameters as ``{param}`` (see :func:`spell`): :attr:`message` and
+    ``str()`` spell them as Python parameters; :meth:`spelled` spells them for the command
+    line.
+    """
 
     exit_status: ExitStatus = ExitStatus.INTERNAL
 
     def __init__(self, message: str, where: Location | None = None) -> None:
         super().__init__(message)
-        self.message = message
+        self.template = message
         self.where = where
 
+    @property
+    def message(self) -> str:
+        """The message, parameters spelled as the Python API's keyword arguments."""
+        return spell(self.template)
+
+    @message.setter
+    def message(self, text: str) -> None:
+        self.template = text
+
+    def spelled(self, name: Callable[[str], str] | None = None) -> str:
+        """``str(self)`` with parameters spelled by ``name`` (the command line passes
+        :func:`option_name`)."""
+        text = spell(self.template, name)
+        return f"{self.where}: {text}" if self.where else text
+
     def __str__(self) -> str:
-        return f"{self.where}: {self.message}" if self.where else self.message
+        return self.spelled()
 
 
 class InputError(RbcliError):
@@ -103,29 +174,40 @@ class InputError(RbcliError):
 
 
 class ParamError(InputError):
-    """A value given for one parameter is wrong; the message is prefixed with its option.
+    """A value given for one parameter is wrong; the message is prefixed with its name.
 
     Raised by the physics (``core``) and the services with the parameter's Python name
     (``ParamError("planes", "the two planes must differ")``); ``str()`` and ``message``
-    read ``--planes: the two planes must differ``, exactly as the command line prints it.
+    read ``planes: the two planes must differ``, and the command line prints
+    ``--planes: the two planes must differ`` (:meth:`spelled` with :func:`option_name`).
     No code ever reads the message text to find the parameter: it is ``param``.
     """
 
     def __init__(self, param: str, message: str, where: Location | None = None) -> None:
-        super().__init__(f"{option_name(param)}: {message}", where, param=param)
+        super().__init__(f"{{{param}}}: {message}", where, param=param)
         self.reason = message
 
 
-#: parameters whose option (or body key) is not simply ``--`` + the name with dashes; the one
-#: table that maps a parameter to what the user typed
-OPTIONS: dict[str, str] = {
-    "expr": "-e/--expr",
-    "output": "-o/--output",
+#: what stands in a message for a value that is not a parameter but a body's default
+BODY_DEFAULTS: dict[str, str] = {
     "body_reference": "the body's reference point",
     "body_shaft": "the body's shaft",
     "body_pivot": "the body's pivot",
     "body_rim_radius": "the body's rim_radius",
 }
+
+#: parameters whose option is not simply ``--`` + the name with dashes; the one table that
+#: maps a parameter to what the user typed on the command line
+OPTIONS: dict[str, str] = {
+    "expr": "-e/--expr",
+    "output": "-o/--output",
+    **BODY_DEFAULTS,
+}
+
+
+def param_name(param: str) -> str:
+    """How the Python API names ``param`` in a message: itself, or the body default it is."""
+    return BODY_DEFAULTS.get(param, param)
 
 
 def option_name(param: str) -> str:

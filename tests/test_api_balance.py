@@ -14,6 +14,7 @@ import math
 import pytest
 
 import rbcli
+from rbcli.errors import option_name
 from rbcli.errors import InputError, NonFiniteResult, ParamError
 
 from conftest import EXAMPLES
@@ -167,9 +168,9 @@ def test_errors_are_the_command_lines(cli, kwargs, param):
         text = v if isinstance(v, str) else str(v)
         args.append(f"--{k.replace('_', '-')}={text}")
     r = cli("balance", "examples/two_disk_rotor.yaml", *args)
-    assert r.code == 2 and r.err == f"rbcli: {exc.value}\n"
+    assert r.code == 2 and r.err == f"rbcli: {exc.value.spelled(option_name)}\n"
     if param is not None:
-        assert exc.value.param == param and str(exc.value).startswith(f"--{param.replace('_', '-')}: ")
+        assert exc.value.param == param and exc.value.spelled(option_name).startswith(f"--{param.replace('_', '-')}: ")
 
 
 def test_positions_blames_positions_not_planes(cli):
@@ -201,4 +202,4 @@ def test_field_errors(cli, kwargs, param):
         for x in ([v] if isinstance(v, str) else v):
             args += [f"--{k}", x]
     r = cli("field-balance", *args)
-    assert r.code == 2 and r.err == f"rbcli: {exc.value}\n"
+    assert r.code == 2 and r.err == f"rbcli: {exc.value.spelled(option_name)}\n"

@@ -13,6 +13,7 @@ import math
 import pytest
 
 import rbcli
+from rbcli.errors import option_name
 from rbcli.api.rollcheck import RollcheckOptions, RollcheckResult, run
 
 ROUND = ["penny", "hoop", "bicycle_wheel", "spoked_wheel", "thick_coin", "frisbee", "top", "gyroscope",
@@ -53,7 +54,7 @@ def test_api_json_is_the_cli_json(cli, name, args, kw):
         r = cli("rollcheck", f"examples/{name}.yaml", *args, "--json")
         with pytest.raises(rbcli.InputError) as e:
             rbcli.rollcheck(body, **kw)
-        assert r.code == 2 and r.out == "" and r.err == f"rbcli: {e.value}\n"
+        assert r.code == 2 and r.out == "" and r.err == f"rbcli: {e.value.spelled(option_name)}\n"
         return
     r, d = _cli_json(cli, name, args)
     res = rbcli.rollcheck(body, **kw)
@@ -132,7 +133,7 @@ def test_errors_are_the_cli_line(cli, args, kw):
     assert r.code == 2 and r.err.count("\n") == 1
     with pytest.raises(rbcli.InputError) as e:
         rbcli.rollcheck(rbcli.load("examples/hoop.yaml"), **kw)
-    assert r.err == f"rbcli: {e.value}\n"
+    assert r.err == f"rbcli: {e.value.spelled(option_name)}\n"
 
 
 def test_errors_name_their_parameter():
@@ -152,7 +153,7 @@ def test_body_that_cannot_roll_is_located(cli):
     assert e.value.where is not None and e.value.where.file == "examples/rectangular_block.yaml"
     assert "not a body of revolution" in e.value.message
     r = cli("rollcheck", "examples/rectangular_block.yaml", "--radius", "0.2")
-    assert r.code == 2 and r.err == f"rbcli: {e.value}\n"
+    assert r.code == 2 and r.err == f"rbcli: {e.value.spelled(option_name)}\n"
     cube = rbcli.load("examples/cube.yaml")
     with pytest.raises(rbcli.InputError, match="no rim radius"):
         rbcli.rollcheck(cube)

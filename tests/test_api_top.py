@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import rbcli
+from rbcli.errors import option_name
 from rbcli.errors import InputError
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -83,7 +84,7 @@ def test_top_on_every_example_answers_or_refuses_as_the_cli(cli, example):
         with pytest.raises(InputError) as exc:
             rbcli.top(body, spin=150, theta=30)
         error = r.err.splitlines()[-1]  # after the loader's warnings (a welded mesh), if any
-        assert str(exc.value) == error[len("rbcli: "):]
+        assert exc.value.spelled(option_name) == error[len("rbcli: "):]
 
 
 TOP_ERRORS = [
@@ -103,7 +104,7 @@ def test_top_errors_carry_the_cli_message(cli, args, kw, param):
     msg = cli_error(cli, "top", "examples/top.yaml", *args)
     with pytest.raises(InputError) as exc:
         rbcli.top(rbcli.load("examples/top.yaml"), **kw)
-    assert str(exc.value) == msg
+    assert exc.value.spelled(option_name) == msg
     if param is not None:
         assert exc.value.param == param
 
@@ -116,7 +117,7 @@ def test_missing_spin_or_theta_in_the_options_say_what_the_cli_says(cli):
         msg = cli_error(cli, "top", "examples/top.yaml", *args)
         with pytest.raises(InputError) as exc:
             TopOptions.parse(body, **kw)
-        assert str(exc.value) == msg
+        assert exc.value.spelled(option_name) == msg
 
 
 def test_options_resolve_the_pivot_and_say_where_it_came_from():
@@ -223,7 +224,7 @@ def test_gyrocompass_errors_carry_the_cli_message(cli, args, path, kw):
     body = rbcli.load(path) if path else None
     with pytest.raises(InputError) as exc:
         rbcli.gyrocompass(body, **kw)
-    assert str(exc.value) == msg
+    assert exc.value.spelled(option_name) == msg
 
 
 # ----------------------------------------------------------------------------- nearly symmetric bodies
@@ -247,7 +248,7 @@ def test_nearly_symmetric_errors_and_gyrocompass(cli):
                     "--symmetry-tol", "0.001%")
     with pytest.raises(InputError) as exc:
         rbcli.top(body, spin="1500 rpm", theta=60, symmetry_tol=1e-5)
-    assert str(exc.value) == msg
+    assert exc.value.spelled(option_name) == msg
     g = rbcli.gyrocompass(body, spin="6000 rpm", latitude=45)
     assert g.to_json() == cli_json(cli, "gyrocompass", "examples/cad_flywheel.yaml", "--spin", "6000 rpm",
                                    "--latitude", "45")

@@ -153,6 +153,9 @@ class _NonFinite(NonFiniteResult):
     def message(self, _text: str) -> None:
         pass
 
+    def spelled(self, name=None) -> str:  # names no parameter
+        return str(self)
+
     def __str__(self) -> str:
         where = "".join(f"[{p}]" if isinstance(p, int) else (f".{p}" if i else p)
                         for i, p in enumerate(self.path))

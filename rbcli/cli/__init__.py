@@ -12,7 +12,7 @@ import sys
 import typer
 
 from rbcli.cli.app import COMMANDS, COMPLETE_VAR, app, completion_init
-from rbcli.errors import ExitStatus, RbcliError
+from rbcli.errors import ExitStatus, RbcliError, option_name
 
 __all__ = ["app", "main"]
 
@@ -89,7 +89,7 @@ def _run_app(args: list[str]) -> int:
     except SystemExit as exc:
         return 0 if exc.code is None else exc.code if isinstance(exc.code, int) else 1
     except RbcliError as exc:
-        _say(f"rbcli: {exc}")
+        _say(f"rbcli: {exc.spelled(option_name)}")
         return int(exc.exit_status)
     except typer.TyperException as exc:  # click's UsageError, BadParameter, NoSuchOption, ...
         return _usage_error(exc, args)
