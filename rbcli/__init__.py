@@ -19,7 +19,9 @@ modules on first use.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+# not `from typing import ...`: typing costs ~2-5 ms, and the `rbcli` console script imports
+# this package before rbcli.interrupts can handle Ctrl-C (rbcli.__main__)
+TYPE_CHECKING = False
 
 __version__ = "0.1.0"
 
@@ -46,6 +48,8 @@ _API = {
 __all__ = ["__version__", *_API]
 
 if TYPE_CHECKING:  # pragma: no cover
+    from typing import Any
+
     from rbcli.api.load import load, load_text  # noqa: F401
     from rbcli.errors import ExitStatus, InputError, NonFiniteResult, ParamError  # noqa: F401
     from rbcli.model import Body  # noqa: F401

@@ -14,6 +14,9 @@ import re
 import sys
 from typing import IO
 
+from rbcli import interrupts
+from rbcli.interrupts import Terminated  # noqa: F401 - raised for SIGTERM and SIGHUP
+
 # ----------------------------------------------------------------------------- user text
 
 #: the longest run of non-blank characters shown whole in a message or a table cell; longer
@@ -224,64 +227,25 @@ def finish_stdout(code: int) -> int:
 # ----------------------------------------------------------------------------- signals
 
 
-class Terminated(KeyboardInterrupt):
-    """SIGTERM or SIGHUP arrived: raised in the main thread like Ctrl-C, so that every
-    ``finally`` and cleanup runs (no temporary file is left); exit status 128 + signal."""
-
-    def __init__(self, signum: int) -> None:
-        super().__init__(signum)
-        self.signum = signum
-
-
-#: the signal that ended the run, if one did (typer turns any KeyboardInterrupt into exit
-#: 130, so the signal is recorded here too)
-SIGNALLED: dict[str, int] = {}
-
-
-def _raise_terminated(signum, frame):  # noqa: ARG001
-    SIGNALLED["signum"] = signum
-    raise Terminated(signum)
+# SIGINT, SIGTERM and SIGHUP: rbcli.interrupts (stdlib only, installed by rbcli.__main__ before
+# anything is imported); these are the in-process side that rbcli.cli.main uses.
 
 
 def signalled_status(code: int) -> int:
-    """``code``, or 128 + the signal when SIGTERM or SIGHUP ended the run."""
-    signum = SIGNALLED.get("signum")
-    return 128 + signum if signum else code
+    """``code``, or 128 + the signal when one arrived during the run (its one line
+    written, :func:`rbcli.interrupts.status`)."""
+    return interrupts.status() if interrupts.received() else code
 
 
 def handle_signals() -> dict:
-    """Turn SIGTERM and SIGHUP into :class:`Terminated` (in the main thread); returns the
+    """SIGTERM and SIGHUP raise :class:`Terminated` while :func:`rbcli.cli.main` runs in
+    another program (in rbcli's own process the handlers are already there); returns the
     previous handlers for :func:`restore_signals`."""
-    import signal
-    import threading
-
-    old: dict = {}
-    SIGNALLED.clear()
-    if threading.current_thread() is not threading.main_thread():
-        return old
-    for name in ("SIGTERM", "SIGHUP"):
-        signum = getattr(signal, name, None)
-        if signum is None:
-            continue
-        try:
-            previous = signal.getsignal(signum)
-            if previous == signal.SIG_IGN:  # nohup: leave an ignored signal ignored
-                continue
-            signal.signal(signum, _raise_terminated)
-            old[signum] = previous
-        except (ValueError, OSError):
-            pass
-    return old
+    return interrupts.install(process=False)
 
 
 def restore_signals(old: dict) -> None:
-    import signal
-
-    for signum, handler in old.items():
-        try:
-            signal.signal(signum, handler)
-        except (ValueError, OSError, TypeError):
-            pass
+    interrupts.restore(old)
 
 
 # ----------------------------------------------------------------------------- matplotlib

@@ -7,7 +7,10 @@ repository root unless ``cwd`` is given. ``env`` adds or removes (value None) en
 variables for the run; ``input`` is standard input (text or bytes).
 
 ``cli_proc(...)`` runs ``python -m rbcli`` as a real process, for what only a process
-shows: exit codes through the interpreter, signals, closed or full streams, start-up.
+shows: exit codes through the interpreter, signals, closed or full streams, start-up
+(``script=True``: the ``rbcli`` console script). ``cli_proc.start(...)`` starts one and
+returns the ``Popen`` at once (to signal it while it runs); ``cli_proc.finish(p)`` waits
+for it and gives its Run.
 
 Both return a :class:`Run` with ``code``, ``out``, ``err`` and ``json()``.
 """
@@ -74,11 +77,7 @@ def run_inprocess(*args: str, input: str | bytes | None = None, env: dict | None
     os.chdir(cwd if cwd is not None else ROOT)
     try:
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            try:
-                main([str(a) for a in args])
-                code = 0
-            except SystemExit as exc:
-                code = 0 if exc.code is None else int(exc.code)
+            code = main([str(a) for a in args])
     finally:
         os.chdir(old_cwd)
         sys.stdin = old_stdin
@@ -87,12 +86,15 @@ def run_inprocess(*args: str, input: str | bytes | None = None, env: dict | None
                 os.environ.pop(k, None)
             else:
                 os.environ[k] = v
+    assert type(code) is int, f"main() returned {code!r}, not an exit status"
     return Run(code, out.getvalue(), err.getvalue())
 
 
-def run_process(*args: str, input: str | bytes | None = None, env: dict | None = None,
-                cwd: str | os.PathLike | None = None, timeout: float = 120) -> Run:
-    """Run ``python -m rbcli ARGS`` as a process; see the module docstring."""
+#: the ``rbcli`` console script beside this interpreter (pip writes it), if installed
+SCRIPT = Path(sys.executable).with_name("rbcli")
+
+
+def _process_env(env: dict | None) -> dict:
     full = dict(os.environ)
     for k, v in {**_PLAIN, **(env or {})}.items():
         if v is None:
@@ -100,20 +102,63 @@ def run_process(*args: str, input: str | bytes | None = None, env: dict | None =
         else:
             full[k] = v
     full["PYTHONPATH"] = os.pathsep.join([str(ROOT), full.get("PYTHONPATH", "")]).rstrip(os.pathsep)
-    p = subprocess.run([sys.executable, "-m", "rbcli", *[str(a) for a in args]],
+    return full
+
+
+def _command(args, script: bool) -> list[str]:
+    if script and not SCRIPT.exists():
+        pytest.skip(f"no console script {SCRIPT} (rbcli is not installed in this interpreter)")
+    head = [str(SCRIPT)] if script else [sys.executable, "-m", "rbcli"]
+    return [*head, *[str(a) for a in args]]
+
+
+def run_process(*args: str, input: str | bytes | None = None, env: dict | None = None,
+                cwd: str | os.PathLike | None = None, timeout: float = 120,
+                script: bool = False) -> Run:
+    """Run ``python -m rbcli ARGS`` (``script=True``: the ``rbcli`` console script) as a
+    process; see the module docstring."""
+    p = subprocess.run(_command(args, script),
                        input=input.encode() if isinstance(input, str) else input,
                        capture_output=True, cwd=cwd if cwd is not None else ROOT,
-                       env=full, timeout=timeout)
+                       env=_process_env(env), timeout=timeout)
     return Run(p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace"))
 
 
-@pytest.fixture
+def start_process(*args: str, env: dict | None = None, cwd: str | os.PathLike | None = None,
+                  script: bool = False, stdin=subprocess.DEVNULL,
+                  ignore: tuple[int, ...] = ()) -> subprocess.Popen:
+    """Start ``python -m rbcli ARGS`` (or the console script) and return at once, with
+    standard output and error as pipes: for what happens *while* it runs (signals).
+    ``ignore``: signals the process starts with ignored (as under ``nohup``)."""
+    def ignored() -> None:
+        import signal
+
+        for signum in ignore:
+            signal.signal(signum, signal.SIG_IGN)
+
+    return subprocess.Popen(_command(args, script), stdin=stdin, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, cwd=cwd if cwd is not None else ROOT,
+                            env=_process_env(env), preexec_fn=ignored if ignore else None)
+
+
+def finish(p: subprocess.Popen, timeout: float = 120) -> Run:
+    """Wait for a process of :func:`start_process`; its Run."""
+    out, err = p.communicate(timeout=timeout)
+    return Run(p.returncode, out.decode("utf-8", "replace"), err.decode("utf-8", "replace"))
+
+
+run_process.start = start_process  # type: ignore[attr-defined]
+run_process.finish = finish  # type: ignore[attr-defined]
+
+
+@pytest.fixture(scope="session")
 def cli():
     """Run rbcli in-process: ``cli(*args, input=None, env=None, cwd=None) -> Run``."""
     return run_inprocess
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def cli_proc():
-    """Run rbcli as a process: ``cli_proc(*args, input=None, env=None, cwd=None, timeout=120)``."""
+    """Run rbcli as a process: ``cli_proc(*args, input=None, env=None, cwd=None, timeout=120,
+    script=False)``; ``cli_proc.start(...)`` / ``cli_proc.finish(p)``."""
     return run_process

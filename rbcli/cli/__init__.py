@@ -11,21 +11,25 @@ import sys
 
 import typer
 
-from rbcli.cli.app import COMMANDS, COMPLETE_VAR, app, completion_init
+from rbcli.cli.app import COMMANDS, COMPLETE_VAR, app, completion_init, completion_state_ok
 from rbcli.errors import ExitStatus, RbcliError, option_name
 
 __all__ = ["app", "main"]
 
 
-def main(argv: list[str] | None = None) -> None:
-    """Entry point of the ``rbcli`` console script; never returns.
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line with ``argv`` (default ``sys.argv[1:]``); the exit status.
 
-    typer runs with ``standalone_mode=False``, so everything that ends a run comes back
-    here and becomes one of SPEC §4's exit codes: a usage error (click's) or bad input
-    (InputError, a result too large or too small to compute with) is one line on standard
-    error and exit 2; a failed check returns 1 from the command; Ctrl-C is 130, SIGTERM
-    143 and SIGHUP 129 (each raised as an exception, so that no temporary file is left);
-    anything else is a bug (70), with a traceback under ``--debug`` or ``RBCLI_DEBUG=1``.
+    The one place where everything that ends a run becomes one of SPEC §4's exit codes
+    (typer runs with ``standalone_mode=False``, so all of it comes back here): a usage error
+    (click's) or bad input (InputError, a result too large or too small to compute with) is
+    one line on standard error and exit 2; a failed check returns 1 from the command;
+    SIGINT (Ctrl-C), SIGTERM and SIGHUP are 130, 143 and 129 with the line ``rbcli:
+    interrupted by SIGINT`` (each raised as an exception, so that no temporary file is
+    left: :mod:`rbcli.interrupts`); anything else is a bug (70), with a traceback under
+    ``--debug`` or ``RBCLI_DEBUG=1``. The ``rbcli`` console script and ``python -m rbcli``
+    (:mod:`rbcli.__main__`) exit with the status returned; a caller in Python gets it as
+    an int (the values of :class:`rbcli.errors.ExitStatus`, or 128 + a signal).
 
     Streams: a pipe closed early (``| head -1``) is quiet; standard output closed or full
     (``>&-``, ``> /dev/full``) is exit 2 with a message; standard error closed or full
@@ -45,15 +49,14 @@ def main(argv: list[str] | None = None) -> None:
         code = _interrupted(exc)
     finally:
         _env.restore_signals(old_signals)
-    sys.exit(code)
+    return code
 
 
 def _interrupted(exc: BaseException) -> int:
-    from rbcli.env import Terminated
+    """The exit status of a run ended by a signal (128 + it), its one line written."""
+    from rbcli import interrupts
 
-    if isinstance(exc, Terminated):
-        return 128 + int(exc.signum)
-    return int(ExitStatus.INTERRUPTED)
+    return interrupts.status(exc)
 
 
 def _run(args: list[str]) -> int:
@@ -66,6 +69,8 @@ def _run(args: list[str]) -> int:
     import os
 
     if os.environ.get(COMPLETE_VAR):  # a shell asks for completions (rbcli --show-completion)
+        if not completion_state_ok(os.environ):
+            return 0  # malformed completion state: no candidates
         completion_init()
     _env.prepare_matplotlib()
     with warnings.catch_warnings():
@@ -94,8 +99,7 @@ def _run_app(args: list[str]) -> int:
     except typer.TyperException as exc:  # click's UsageError, BadParameter, NoSuchOption, ...
         return _usage_error(exc, args)
     except typer.Abort as exc:  # click turns Ctrl-C (and our SIGTERM) into Abort
-        cause = exc.__cause__ or exc.__context__
-        return _interrupted(cause) if isinstance(cause, KeyboardInterrupt) else int(ExitStatus.INTERRUPTED)
+        return _interrupted(exc.__cause__ or exc.__context__ or exc)
     except (OverflowError, ZeroDivisionError, FloatingPointError) as exc:
         _say(
             f"rbcli: a value is too large or too small to compute with ({exc or type(exc).__name__}); "
@@ -124,10 +128,18 @@ def _run_app(args: list[str]) -> int:
     except Exception as exc:  # an internal error: a bug
         return _internal(exc, args, debug())
     # a command returns None when done, typer.Exit(n) ends as n (c.finish, --help, --version)
+    if code == ExitStatus.INTERRUPTED:  # typer's own answer to a KeyboardInterrupt (Exit(130))
+        return _interrupted(KeyboardInterrupt())
     return code if isinstance(code, int) else 0
 
 
 def _internal(exc: BaseException, args: list[str], debug: bool) -> int:
+    from rbcli import interrupts
+
+    if interrupts.received() or _caused_by_interrupt(exc):
+        # an error that a signal caused (a KeyboardInterrupt wrapped in a RuntimeError by
+        # class creation, a module left half-imported): the signal is the answer
+        return _interrupted(exc)
     if debug:
         import traceback
 
@@ -139,6 +151,18 @@ def _internal(exc: BaseException, args: list[str], debug: bool) -> int:
         "RBCLI_DEBUG=1)"
     )
     return int(ExitStatus.INTERNAL)
+
+
+def _caused_by_interrupt(exc: BaseException) -> bool:
+    """Whether a KeyboardInterrupt is among the causes or contexts of ``exc``."""
+    seen: set[int] = set()
+    e: BaseException | None = exc
+    while e is not None and id(e) not in seen:
+        if isinstance(e, KeyboardInterrupt):
+            return True
+        seen.add(id(e))
+        e = e.__cause__ or e.__context__
+    return False
 
 
 def _usage_error(exc: Exception, args: list[str]) -> int:

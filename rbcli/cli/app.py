@@ -284,8 +284,8 @@ _fast_coercion()
 MANUAL: dict[str, dict] = {}
 
 
-def _version(value: bool) -> None:
-    if value:
+def _version(ctx: typer.Context, value: bool) -> None:
+    if value and not ctx.resilient_parsing:  # not while a shell asks for completions
         typer.echo(f"rbcli {__version__}")
         raise typer.Exit()
 
@@ -306,6 +306,32 @@ def completion_init() -> None:
     init()
 
 
+#: the longest COMP_CWORD read (a word index; bash's command lines are far shorter)
+MAX_CWORD_DIGITS = 6
+
+
+def completion_state_ok(environ) -> bool:
+    """Whether a shell's request for completions (``COMPLETE_VAR`` set) can be answered.
+
+    typer reads bash's ``COMP_WORDS`` and ``COMP_CWORD`` as given: a ``COMP_CWORD`` that is
+    not a word index (``x``, ``1.5``, ``-1``, 5000 digits, beyond the words) or a missing
+    variable was a ValueError or KeyError, an internal error (exit 70; issue 27). A shell
+    that sends malformed state gets no candidates, quietly (exit 0, nothing printed); the
+    other shells' variables (``_TYPER_COMPLETE_ARGS``...) are read with defaults by typer.
+    """
+    instruction = environ.get(COMPLETE_VAR, "")
+    if not (instruction.startswith("complete_") and instruction.endswith("_bash")):
+        return True
+    words, cword = environ.get("COMP_WORDS"), environ.get("COMP_CWORD")
+    if words is None or cword is None:
+        return False
+    if not (cword.isascii() and cword.isdigit() and len(cword) <= MAX_CWORD_DIGITS):
+        return False
+    from typer._click.shell_completion import split_arg_string
+
+    return int(cword) <= len(split_arg_string(words))
+
+
 def _shell(value: str) -> str:
     shell = value.strip().lower()
     if shell not in SHELLS:
@@ -314,8 +340,8 @@ def _shell(value: str) -> str:
     return shell
 
 
-def _show_completion(value: str | None) -> None:
-    if value is None:
+def _show_completion(ctx: typer.Context, value: str | None) -> None:
+    if value is None or ctx.resilient_parsing:  # not while a shell asks for completions
         return
     shell = _shell(value)
     completion_init()
@@ -325,8 +351,10 @@ def _show_completion(value: str | None) -> None:
     raise typer.Exit()
 
 
-def _install_completion(value: str | None) -> None:
-    if value is None:
+def _install_completion(ctx: typer.Context, value: str | None) -> None:
+    # never while a shell asks for completions: `rbcli --install-completion bash <TAB>`
+    # wrote into ~/.bashrc
+    if value is None or ctx.resilient_parsing:
         return
     shell = _shell(value)
     completion_init()
