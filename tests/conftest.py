@@ -7,12 +7,15 @@ repository root unless ``cwd`` is given. ``env`` adds or removes (value None) en
 variables for the run; ``input`` is standard input (text or bytes).
 
 ``cli_proc(...)`` runs ``python -m rbcli`` as a real process, for what only a process
-shows: exit codes through the interpreter, signals, closed or full streams, start-up
-(``script=True``: the ``rbcli`` console script). ``cli_proc.start(...)`` starts one and
-returns the ``Popen`` at once (to signal it while it runs); ``cli_proc.finish(p)`` waits
-for it and gives its Run.
+shows: exit codes through the interpreter, signals, closed or full streams (``redirect=">&-"``),
+a terminal (``tty=True``), the modules a run imports (``imports=True``), the console script
+(``script=True``). ``cli_proc.start(...)`` starts one and returns the ``Popen`` at once (to
+signal it while it runs, or read a little and go away); ``cli_proc.finish(p)`` waits for it
+and gives its Run.
 
-Both return a :class:`Run` with ``code``, ``out``, ``err`` and ``json()``.
+Both return a :class:`Run` with ``code``, ``out``, ``err`` and ``json()``
+(``code, out, err = cli(...)`` unpacks it). Use them for every test of the command line;
+a test that starts a process another way says why.
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ import subprocess
 import sys
 from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 # Pin OpenBLAS's kernel before numpy is first imported (here or in a child process): the
 # golden outputs are exact to the last digit, and OpenBLAS picks its kernels by CPU (the 3x3
@@ -42,9 +46,18 @@ EXAMPLES = ROOT / "examples"
 
 @dataclass(frozen=True)
 class Run:
+    """A finished run: exit status, standard output and standard error (text).
+    ``code, out, err = cli(...)`` unpacks it."""
+
     code: int
     out: str
     err: str
+    #: the modules a process imported (``cli_proc(..., imports=True)``; not a field, so
+    #: ``dataclasses.astuple(run)`` stays (code, out, err))
+    imported: ClassVar[frozenset] = frozenset()
+
+    def __iter__(self):
+        return iter((self.code, self.out, self.err))
 
     def json(self):
         """The JSON document on standard output (a list for JSON Lines)."""
@@ -105,31 +118,106 @@ def _process_env(env: dict | None) -> dict:
     return full
 
 
-def _command(args, script: bool) -> list[str]:
+#: ``python -c`` program for ``imports=True``: rbcli's own entry point, after an atexit
+#: function (rbcli's exit runs them) that writes the modules the run imported to a file
+_WITH_IMPORTS = (
+    "import atexit, sys\n"
+    "def _dump(path=sys.argv.pop(1)):\n"
+    "    with open(path, 'w') as f:\n"
+    "        f.write('\\n'.join(sorted(sys.modules)))\n"
+    "atexit.register(_dump)\n"
+    "from rbcli.__main__ import main\n"
+    "main()\n"
+)
+
+
+def _command(args, script: bool, imports: str | None = None) -> list[str]:
     if script and not SCRIPT.exists():
         pytest.skip(f"no console script {SCRIPT} (rbcli is not installed in this interpreter)")
-    head = [str(SCRIPT)] if script else [sys.executable, "-m", "rbcli"]
+    if script:
+        head = [str(SCRIPT)]
+    elif imports:
+        head = [sys.executable, "-c", _WITH_IMPORTS, imports]
+    else:
+        head = [sys.executable, "-m", "rbcli"]
     return [*head, *[str(a) for a in args]]
+
+
+def _read_tty(cmd: list[str], cwd, env: dict, timeout: float) -> tuple[int, bytes]:
+    """Run ``cmd`` with standard output on a new pseudo-terminal; (status, what it showed)."""
+    import pty
+    import select
+    import time
+
+    master, slave = pty.openpty()
+    p = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=slave, stderr=subprocess.DEVNULL,
+                         cwd=cwd, env=env)
+    os.close(slave)
+    chunks, end = [], time.monotonic() + timeout
+    try:
+        while time.monotonic() < end:
+            if not select.select([master], [], [], 0.5)[0]:
+                if p.poll() is not None:
+                    break
+                continue
+            try:
+                data = os.read(master, 65536)
+            except OSError:  # EIO once the child has closed the terminal
+                break
+            if not data:
+                break
+            chunks.append(data)
+        return p.wait(timeout=max(1.0, end - time.monotonic())), b"".join(chunks)
+    finally:
+        os.close(master)
 
 
 def run_process(*args: str, input: str | bytes | None = None, env: dict | None = None,
                 cwd: str | os.PathLike | None = None, timeout: float = 120,
-                script: bool = False) -> Run:
-    """Run ``python -m rbcli ARGS`` (``script=True``: the ``rbcli`` console script) as a
-    process; see the module docstring."""
-    p = subprocess.run(_command(args, script),
-                       input=input.encode() if isinstance(input, str) else input,
-                       capture_output=True, cwd=cwd if cwd is not None else ROOT,
-                       env=_process_env(env), timeout=timeout)
-    return Run(p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace"))
+                script: bool = False, imports: bool = False, tty: bool = False,
+                redirect: str = "") -> Run:
+    """Run ``python -m rbcli ARGS`` as a process; see the module docstring.
+
+    ``script=True``: the ``rbcli`` console script instead. ``imports=True``: ``Run.imported``
+    is the set of modules the run imported (``sys.modules`` when it ends). ``tty=True``: standard output is a pseudo-terminal
+    (``out`` is what it showed; standard error is dropped). ``redirect``: shell
+    redirections for ``sh -c`` (``">&-"``, ``"2>/dev/full"``, ``"| head -1"``): a stream
+    redirected away reads as ''.
+    """
+    listing = None
+    if imports:
+        import tempfile
+
+        fd, listing = tempfile.mkstemp(prefix="rbcli-modules-", suffix=".txt")
+        os.close(fd)
+    cmd = _command(args, script, listing)
+    where = cwd if cwd is not None else ROOT
+    full = _process_env(env)
+    try:
+        if tty:
+            code, shown = _read_tty(cmd, where, full, timeout)
+            return Run(code, shown.decode("utf-8", "replace"), "")
+        if redirect:
+            import shlex
+
+            cmd = ["sh", "-c", " ".join(shlex.quote(c) for c in cmd) + " " + redirect]
+        p = subprocess.run(cmd, input=input.encode() if isinstance(input, str) else input,
+                           capture_output=True, cwd=where, env=full, timeout=timeout)
+        run = Run(p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace"))
+        if listing:
+            object.__setattr__(run, "imported", frozenset(Path(listing).read_text().split()))
+        return run
+    finally:
+        if listing:
+            os.unlink(listing)
 
 
 def start_process(*args: str, env: dict | None = None, cwd: str | os.PathLike | None = None,
                   script: bool = False, stdin=subprocess.DEVNULL,
                   ignore: tuple[int, ...] = ()) -> subprocess.Popen:
     """Start ``python -m rbcli ARGS`` (or the console script) and return at once, with
-    standard output and error as pipes: for what happens *while* it runs (signals).
-    ``ignore``: signals the process starts with ignored (as under ``nohup``)."""
+    standard output and error as pipes: for what happens *while* it runs (signals, a reader
+    that goes away). ``ignore``: signals the process starts with ignored (as under ``nohup``)."""
     def ignored() -> None:
         import signal
 
@@ -160,5 +248,6 @@ def cli():
 @pytest.fixture(scope="session")
 def cli_proc():
     """Run rbcli as a process: ``cli_proc(*args, input=None, env=None, cwd=None, timeout=120,
-    script=False)``; ``cli_proc.start(...)`` / ``cli_proc.finish(p)``."""
+    script=False, imports=False, tty=False, redirect="")``; ``cli_proc.start(...)`` /
+    ``cli_proc.finish(p)``."""
     return run_process

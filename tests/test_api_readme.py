@@ -36,6 +36,7 @@ def test_import_rbcli_is_cheap():
     import subprocess
     import sys
 
+    # a fresh interpreter (not the cli fixtures: no command runs): what `import rbcli` loads
     code = "import rbcli, sys; print(sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'yaml', 'typer') if m in sys.modules))"
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert r.stdout.strip() == "[]"

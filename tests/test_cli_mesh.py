@@ -18,8 +18,6 @@ import json
 import math
 import os
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -516,22 +514,13 @@ def test_the_shapes_catalogue_describes_the_mesh(cli):
     assert "allow_open" in entry["parameters"]
 
 
-def test_bodies_without_meshes_do_not_import_the_mesh_modules():
-    code = (
-        "import sys\n"
-        "from rbcli.cli import main\n"
-        "try:\n    main(['inertia', 'examples/bracket.yaml', '--json'])\n"
-        "except SystemExit:\n    pass\n"
-        "print('MODS', [m for m in ('rbcli.core.mesh', 'rbcli.io.meshfile', 'trimesh') if m in sys.modules])\n"
-        "main(['inertia', 'examples/housing.yaml', '--json'])\n"
-    )
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
-    lines = [x for x in r.stdout.splitlines() if x.startswith("MODS")]
-    assert lines == ["MODS []"], r.stdout + r.stderr
-    code2 = code.replace("examples/bracket.yaml", "examples/housing.yaml")
-    r = subprocess.run([sys.executable, "-c", code2], capture_output=True, text=True, cwd=ROOT, timeout=60)
+def test_bodies_without_meshes_do_not_import_the_mesh_modules(cli_proc):
+    mesh_modules = {"rbcli.core.mesh", "rbcli.io.meshfile", "trimesh"}
+    r = cli_proc("inertia", "examples/bracket.yaml", "--json", imports=True)
+    assert r.code == 0 and not mesh_modules & r.imported, (r.err, sorted(mesh_modules & r.imported))
     # the check can fail: a mesh body does import them (and never trimesh)
-    assert "MODS ['rbcli.core.mesh', 'rbcli.io.meshfile']" in r.stdout, r.stdout + r.stderr
+    r = cli_proc("inertia", "examples/housing.yaml", "--json", imports=True)
+    assert r.code == 0 and mesh_modules & r.imported == {"rbcli.core.mesh", "rbcli.io.meshfile"}, r.err
 
 
 # ---------------------------------------------------------------------------- the example

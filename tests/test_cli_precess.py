@@ -29,21 +29,15 @@ I123 = "{shape: given, mass: 1, inertia: [[1, 0, 0], [0, 2, 0], [0, 0, 3]]}"
 DEG = math.pi / 180
 
 
-def run(cli, *args: str) -> tuple[int, str, str]:
-    """``rbcli precess ARGS`` through the conftest ``cli`` fixture, as (code, out, err)."""
-    r = cli("precess", *args)
-    return r.code, r.out, r.err
-
-
 def js(cli, *args: str, code: int = 0) -> dict:
-    rc, out, err = run(cli, *args, "--json")
+    rc, out, err = cli("precess", *args, "--json")
     assert rc == code, err
     return json.loads(out, parse_constant=lambda c: pytest.fail(f"JSON has {c}"))
 
 
 def bad(cli, *args: str) -> str:
     """Exit status 2 with one line on standard error; returns that line."""
-    rc, out, err = run(cli, *args)
+    rc, out, err = cli("precess", *args)
     assert rc == 2, (args, out, err)
     assert err.startswith("rbcli: ") and err.count("\n") == 1, err
     assert out == ""
@@ -115,11 +109,11 @@ def test_p1_frisbee_thin_disk_wobbles_twice_as_fast_as_it_spins(cli):
 
 
 def test_frisbee_header_numbers_print(cli):
-    rc, out, _ = run(cli, str(EX / "frisbee.yaml"), "--omega", "0.8715574275,0,9.961946981")
+    rc, out, _ = cli("precess", str(EX / "frisbee.yaml"), "--omega", "0.8715574275,0,9.961946981")
     assert rc == 0
     for s in ("9.96195", "2.00191", "2.49523", "19.9429"):  # the header's claims (sheet P1)
         assert s in out
-    rc, out, _ = run(cli, str(EX / "frisbee.yaml"), "--omega", "0,0,300 rpm")
+    rc, out, _ = cli("precess", str(EX / "frisbee.yaml"), "--omega", "0,0,300 rpm")
     # steady spin at 300 rpm = 10 pi rad/s: a small wobble has W = w3, period 2 pi/w3 = 0.2 s
     assert rc == 0 and "| 0.2 | s" in " ".join(out.split()).replace("  ", " ")
 
@@ -146,7 +140,7 @@ def test_p2_football_prolate_spheroid(cli):
 
 
 def test_football_header_numbers_print(cli):
-    rc, out, _ = run(cli, str(EX / "football.yaml"), "--omega", "1.736481777,0,9.848077530")
+    rc, out, _ = cli("precess", str(EX / "football.yaml"), "--omega", "1.736481777,0,9.848077530")
     assert rc == 0
     for s in ("-4.92404", "5.22126", "19.4254", "9.4254", "| 10 |"):  # header claims (P2)
         assert s in " ".join(out.split())
@@ -175,10 +169,10 @@ def test_p3_earth_euler_period_and_the_chandler_note(cli, tilt):
 
 
 def test_earth_header_and_table_in_days_and_hours(cli):
-    rc, out, _ = run(cli, str(EX / "earth.yaml"), "--omega", "7.292115858e-11,0,7.292115858e-5")
+    rc, out, _ = cli("precess", str(EX / "earth.yaml"), "--omega", "7.292115858e-11,0,7.292115858e-5")
     flat = " ".join(out.split())
     assert rc == 0 and "2.63499e+07" in flat and "304.975 d" in flat and "85883.3" in flat
-    rc, out, _ = run(cli, str(EX / "earth.yaml"), "--omega", "0,0,7.292115858e-5", "--units", "h")
+    rc, out, _ = cli("precess", str(EX / "earth.yaml"), "--omega", "0,0,7.292115858e-5", "--units", "h")
     # --units h changes the time columns: T_rot I/(Is - I) = 86164.0905 s/0.00327 in hours
     # (7319.41 h), and the sheet's space nutation period 23.8565 h
     assert rc == 0 and f"{86164.0905 / 0.00327 / 3600:.6g} | h" in out and "23.8565 | h" in out
@@ -241,13 +235,13 @@ def test_p6_tennis_racket_flips(cli):
 
 
 def test_book_header_numbers_and_scaling(cli):
-    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "0.01,1,0.01")
+    rc, out, _ = cli("precess", str(EX / "book.yaml"), "--omega", "0.01,1,0.01")
     assert rc == 0 and "19.5529" in out and "10.9169" in out and "39.1057" in out
     # Euler's equations are homogeneous: w -> 10 w gives the same motion 10 times faster
     j = js(cli, str(EX / "book.yaml"), "--omega", "0.1,10,0.1")
     assert j["flip_interval"] == pytest.approx(1.95529, **sheet(1.95529))
     assert j["first_flip"] == pytest.approx(1.09169, **sheet(1.09169))
-    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "1,0.1,0.2")
+    rc, out, _ = cli("precess", str(EX / "book.yaml"), "--omega", "1,0.1,0.2")
     assert rc == 0 and "11.205 " in out  # P4 with the book's 1:2:3 moments: 11.2050 s
 
 
@@ -261,7 +255,7 @@ def test_p8_separatrix_said_plainly(cli):
         assert got == pytest.approx(want, **sheet(want))
     assert j["elliptic_rate"] == pytest.approx(0.585947, **sheet(0.585947))
     assert "no period" in " ".join(j["notes"])
-    rc, out, _ = run(cli, "-e", I123, "--omega", f"{0.1 * math.sqrt(3)!r},1,0.1")
+    rc, out, _ = cli("precess", "-e", I123, "--omega", f"{0.1 * math.sqrt(3)!r},1,0.1")
     flat = " ".join(out.split())
     assert "separatrix" in flat and "no period" in flat
     # the one flip: tau0 = 2.45384, lambda = 0.585947 -> t = -tau0/lambda, before t = 0
@@ -291,8 +285,8 @@ BODIES = {
 @pytest.mark.parametrize("name", BODIES)
 def test_spec_keys_always_present_and_deterministic(cli, name):
     expr, omega = BODIES[name]
-    rc, out1, _ = run(cli, "-e", expr, "--omega", omega, "--json", "--at", "2.5")
-    rc2, out2, _ = run(cli, "-e", expr, "--omega", omega, "--json", "--at", "2.5")
+    rc, out1, _ = cli("precess", "-e", expr, "--omega", omega, "--json", "--at", "2.5")
+    rc2, out2, _ = cli("precess", "-e", expr, "--omega", omega, "--json", "--at", "2.5")
     assert rc == rc2 == 0 and out1 == out2  # same bytes
     j = json.loads(out1, parse_constant=lambda c: pytest.fail(f"JSON has {c}"))
     assert list(j)[: len(SPEC_KEYS)] == list(SPEC_KEYS)  # SPEC keys, first, in order
@@ -303,7 +297,7 @@ def test_spec_keys_always_present_and_deterministic(cli, name):
     if j["symmetric"]:
         for k in ("precession_rate", "space_precession_rate", "body_cone_deg", "space_cone_deg"):
             assert isinstance(j[k], float), k
-    rc, table, _ = run(cli, "-e", expr, "--omega", omega, "--at", "2.5")
+    rc, table, _ = cli("precess", "-e", expr, "--omega", omega, "--at", "2.5")
     assert rc == 0 and "nan" not in table.lower()
 
 
@@ -384,7 +378,7 @@ def test_invariants_at_any_time_for_any_body(a, b, c, w, t):
 
 def test_csv_time_series(cli, tmp_path):
     out = tmp_path / "p4.csv"
-    rc, text, _ = run(cli, "-e", I123, "--omega", "1,0.1,0.2", "--duration", "112.05",
+    rc, text, _ = cli("precess", "-e", I123, "--omega", "1,0.1,0.2", "--duration", "112.05",
                       "--samples", "2001", "--csv", str(out))
     assert rc == 0 and str(out) in text
     lines = out.read_text().splitlines()
@@ -413,15 +407,15 @@ def test_csv_time_series(cli, tmp_path):
 
 
 def test_csv_to_stdout_and_deterministic(cli, tmp_path):
-    rc, out1, _ = run(cli, "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
-    rc2, out2, _ = run(cli, "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
+    rc, out1, _ = cli("precess", "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
+    rc2, out2, _ = cli("precess", "-e", I123, "--omega", "0.01,1,0.01", "--duration", "20", "--samples", "5", "--csv", "-")
     assert rc == rc2 == 0 and out1 == out2
     lines = out1.splitlines()
     assert lines[0].startswith("t,wx") and len(lines) == 6
     assert [float(x.split(",")[0]) for x in lines[1:]] == [0.0, 5.0, 10.0, 15.0, 20.0]
     # default rows
     f = tmp_path / "d.csv"
-    assert run(cli, "-e", I123, "--omega", "1,0,0", "--duration", "1", "--csv", str(f))[0] == 0
+    assert cli("precess", "-e", I123, "--omega", "1,0,0", "--duration", "1", "--csv", str(f)).code == 0
     assert len(f.read_text().splitlines()) == 1 + 1001
 
 
@@ -433,7 +427,7 @@ def test_csv_replaces_an_existing_file_but_never_an_input(cli, tmp_path):
     assert "input" in err and body.read_bytes() == before
     old = tmp_path / "old.csv"
     old.write_text("something else\n")
-    assert run(cli, str(body), "--omega", "1,0,0", "--duration", "1", "--samples", "3", "--csv", str(old))[0] == 0
+    assert cli("precess", str(body), "--omega", "1,0,0", "--duration", "1", "--samples", "3", "--csv", str(old)).code == 0
     assert old.read_text().startswith("t,wx,wy,wz")
     err = bad(cli, str(body), "--omega", "1,0,0", "--duration", "1", "--csv", str(tmp_path / "no" / "x.csv"))
     assert "does not exist" in err
@@ -449,7 +443,7 @@ def test_verify(cli):
     assert v["omega_error"] < 1e-9 and v["attitude_error"] < 1e-9  # DOP853 at 1e-12 over 3 periods
     for k in ("exact_energy_drift", "exact_momentum_drift", "exact_L_drift"):
         assert v[k] < 1e-13, k  # along the exact solution: round-off only
-    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "1,0.1,0.2", "--verify")
+    rc, out, _ = cli("precess", str(EX / "book.yaml"), "--omega", "1,0.1,0.2", "--verify")
     assert rc == 0 and "agree" in out and "|Δω|/|ω|" in out
 
 
@@ -462,7 +456,7 @@ def test_verify_failure_exits_1_after_printing_everything(cli, monkeypatch):
     monkeypatch.setattr(freeverify, "verify", lambda motion: replace(real(motion, periods=0.5), ok=False, omega_error=1.0))
     j = js(cli, "-e", I123, "--omega", "1,0.1,0.2", "--verify", code=1)
     assert j["verify"]["ok"] is False and "period" in j
-    rc, out, _ = run(cli, "-e", I123, "--omega", "1,0.1,0.2", "--verify")
+    rc, out, _ = cli("precess", "-e", I123, "--omega", "1,0.1,0.2", "--verify")
     assert rc == 1 and "DISAGREE" in out and "principal moments" in out
 
 
@@ -471,7 +465,7 @@ def test_verify_failure_exits_1_after_printing_everything(cli, monkeypatch):
 @pytest.mark.parametrize("ext, magic", [("png", b"\x89PNG"), ("svg", b"<?xml"), ("pdf", b"%PDF")])
 def test_plot_formats(cli, tmp_path, ext, magic):
     f = tmp_path / f"p.{ext}"
-    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", "0.01,1,0.01", "--plot", str(f))
+    rc, out, _ = cli("precess", str(EX / "book.yaml"), "--omega", "0.01,1,0.01", "--plot", str(f))
     assert rc == 0 and f.read_bytes().startswith(magic) and f"plot written to {f}" in out
     if ext == "svg":
         text = f.read_text()
@@ -483,7 +477,7 @@ def test_plot_symmetric_separatrix_and_rest(cli, tmp_path):
                                    (I123, f"{0.1 * math.sqrt(3)!r},1,0.1"), (I123, "0,0,0"),
                                    ("{shape: sphere, mass: 1, radius: 1}", "0,1,0")]):
         f = tmp_path / f"s{i}.png"
-        assert run(cli, "-e", expr, "--omega", w, "--plot", str(f), "--duration", "3")[0] == 0
+        assert cli("precess", "-e", expr, "--omega", w, "--plot", str(f), "--duration", "3").code == 0
         assert f.stat().st_size > 1000
 
 
@@ -548,7 +542,7 @@ def test_no_flip_near_the_largest_or_smallest_axis(cli, omega, axis):
     assert j["circles_axis"] == axis and j["period"] is not None
     assert j["flip_interval"] is None and j["first_flip"] is None and j["flip_interval_estimate"] is None
     assert f"no flip: stable about axis {axis}" in j["description"]
-    rc, out, _ = run(cli, str(EX / "book.yaml"), "--omega", omega)
+    rc, out, _ = cli("precess", str(EX / "book.yaml"), "--omega", omega)
     assert rc == 0 and f"no flip: stable about axis {axis}" in out and "flip interval" not in out
 
 
@@ -581,18 +575,8 @@ def test_flip_criterion_is_geometric():
 
 @pytest.mark.parametrize("extra, loads_scipy", [((), False), (("--at", "1e9", "--json"), False),
                                                  (("--verify",), True)])
-def test_default_path_does_not_import_scipy(extra, loads_scipy):
+def test_default_path_does_not_import_scipy(cli_proc, extra, loads_scipy):
     """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
-    import os
-    import subprocess
-    import sys
-
-    code = ("import sys\nfrom rbcli.cli import main\n"
-            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
-            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy'}), file=sys.stderr)\n")
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    p = subprocess.run([sys.executable, "-c", code, "precess", "examples/book.yaml", "--omega",
-                        "0.01,1,0.01", *extra], capture_output=True, text=True, cwd=ROOT, env=env,
-                       timeout=120)
-    assert p.returncode == 0, p.stderr
-    assert p.stderr.strip().splitlines()[-1] == ("['scipy']" if loads_scipy else "[]")
+    r = cli_proc("precess", "examples/book.yaml", "--omega", "0.01,1,0.01", *extra, imports=True)
+    assert r.code == 0, r.err
+    assert ("scipy" in r.imported) == loads_scipy

@@ -31,7 +31,6 @@ from pathlib import Path
 
 import pytest
 
-from rbcli.cli import main
 from rbcli.render.fmt import num
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -50,19 +49,10 @@ def _fixed_date(monkeypatch):
     monkeypatch.chdir(ROOT)  # bodies named by relative path, as the snapshots show them
 
 
-def run(capsys, *args: str) -> tuple[int, str, str]:
-    """rbcli in-process through main() (with its error-to-exit-code map)."""
-    with pytest.raises(SystemExit) as exc:
-        main(list(args))
-    out, err = capsys.readouterr()
-    code = exc.value.code
-    return (0 if code is None else int(code)), out, err
-
-
-def js(capsys, *args: str, code: int = 0) -> dict:
-    rc, out, err = run(capsys, *args, "--json")
-    assert rc == code, err
-    return json.loads(out)
+def js(cli, *args: str, code: int = 0) -> dict:
+    r = cli(*args, "--json")
+    assert r.code == code, r.err
+    return r.json()
 
 
 class Page(HTMLParser):
@@ -151,9 +141,9 @@ class Page(HTMLParser):
             self.pre.append(data)
 
 
-def report(capsys, tmp_path, *args: str, name: str = "r.html", code: int = 0) -> tuple[Path, str]:
+def report(cli, tmp_path, *args: str, name: str = "r.html", code: int = 0) -> tuple[Path, str]:
     out = tmp_path / name
-    rc, stdout, err = run(capsys, "report", *args, "-o", str(out))
+    rc, stdout, err = cli("report", *args, "-o", str(out))
     assert rc == code, err
     assert stdout == ""  # the report goes to the file; nothing on standard output
     return out, err
@@ -172,9 +162,9 @@ def sections_of(page: Page) -> set[str]:
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=[p.stem for p in EXAMPLES])
-def test_every_example_builds_a_report_with_the_commands_numbers(capsys, tmp_path, example):
+def test_every_example_builds_a_report_with_the_commands_numbers(cli, tmp_path, example):
     src = str(example.relative_to(ROOT))
-    out, err = report(capsys, tmp_path, src)
+    out, err = report(cli, tmp_path, src)
     text = out.read_text(encoding="utf-8")
     page = Page(text)
     # every section is there, as a section or as one line saying why not
@@ -184,12 +174,12 @@ def test_every_example_builds_a_report_with_the_commands_numbers(capsys, tmp_pat
         assert "\n" not in why.strip() and why.strip(), (key, why)
     # mass properties: the same numbers as rbcli inertia --json (tables show 6 significant
     # figures of the SI value, so the formatted JSON value must be the cell's text)
-    ij = js(capsys, "inertia", src)
+    ij = js(cli, "inertia", src)
     cells_have(page, num(ij["mass"]), *(num(x) for x in ij["com"]))
     cells_have(page, *(num(x) for x in [ij["inertia_com"][i][i] for i in range(3)]))
     cells_have(page, *(num(x) for x in [ij["inertia"][i][i] for i in range(3)]))
     # principal axes: moments as rbcli principal --json gives them
-    pj = js(capsys, "principal", src)
+    pj = js(cli, "principal", src)
     cells_have(page, *(num(x) for x in pj["moments"]))
     # parts: one row per part (in the file's order, signed mass as inertia --json gives it),
     # then the total row with the body's mass
@@ -206,7 +196,7 @@ def test_every_example_builds_a_report_with_the_commands_numbers(capsys, tmp_pat
     assert "2023-11-14 22:13 UTC" in page.cells
     # rolling stability is computed or explained; when computed it agrees with rollcheck
     if "rolling-stability" in page.sections:
-        rj = js(capsys, "rollcheck", src)
+        rj = js(cli, "rollcheck", src)
         cells_have(page, num(rj["critical_speed"]), num(rj["critical_spin"]))
     else:
         assert page.skips["rolling-stability"].startswith("rolling stability: ")
@@ -215,15 +205,15 @@ def test_every_example_builds_a_report_with_the_commands_numbers(capsys, tmp_pat
 # ----------------------------------------------------------------------------- sections with options
 
 
-def test_balance_section_has_the_numbers_of_rbcli_balance(capsys, tmp_path):
+def test_balance_section_has_the_numbers_of_rbcli_balance(cli, tmp_path):
     args = ["examples/two_disk_rotor.yaml", "--planes", "0,400mm", "--radius", "100mm",
             "--speed", "3000 rpm", "--bearings", "0,400mm", "--grade", "G6.3"]
     # the rotor as given fails G6.3 (by 17-24x): both exit 1 after writing the full result
-    out, err = report(capsys, tmp_path, *args, code=1)
+    out, err = report(cli, tmp_path, *args, code=1)
     assert "a check failed: balance:" in err
     page = Page(out.read_text(encoding="utf-8"))
     assert "balance" in page.sections
-    bj = js(capsys, "balance", *args, code=1)
+    bj = js(cli, "balance", *args, code=1)
     assert bj["iso"]["pass"] is False and bj["iso"]["after"]["pass"] is True
     # balance tables are in shop units (g, mm, g·mm, N): SI value times the unit factor,
     # then 6 significant figures, as rbcli balance prints them
@@ -237,49 +227,49 @@ def test_balance_section_has_the_numbers_of_rbcli_balance(capsys, tmp_path):
     cells_have(page, "8.5", "208.072", "12.2577", "258.232", "83.8916", "120.978")
 
 
-def test_precess_section_has_the_numbers_of_rbcli_precess(capsys, tmp_path):
+def test_precess_section_has_the_numbers_of_rbcli_precess(cli, tmp_path):
     args = ["examples/rectangular_block.yaml", "--omega", "0,10,0.1"]
-    out, err = report(capsys, tmp_path, *args)
+    out, err = report(cli, tmp_path, *args)
     assert err == ""  # no progress line: standard error is not a terminal here
     page = Page(out.read_text(encoding="utf-8"))
     assert "free-precession" in page.sections
-    pj = js(capsys, "precess", *args)
+    pj = js(cli, "precess", *args)
     cells_have(page, num(pj["kinetic_energy"]), num(pj["period"]), num(pj["flip_interval"]))
     assert page.tags.count("svg") >= 2  # the body and the precession figure
 
 
-def test_top_section_has_the_numbers_of_rbcli_top(capsys, tmp_path):
+def test_top_section_has_the_numbers_of_rbcli_top(cli, tmp_path):
     args = ["examples/top.yaml", "--spin", "150", "--theta", "30", "--g", "9.81"]
-    out, _ = report(capsys, tmp_path, *args)
+    out, _ = report(cli, tmp_path, *args)
     page = Page(out.read_text(encoding="utf-8"))
     assert "heavy-top" in page.sections
-    tj = js(capsys, "top", *args)
+    tj = js(cli, "top", *args)
     cells_have(page, num(tj["theta2_deg"]), num(tj["nutation_period"]), num(tj["mean_precession_rate"]),
                *(num(x) for x in tj["steady_precession_rates"]))
     # the course numbers the example's header states (dynamics.md cases T1, T2)
     cells_have(page, "34.5082", "0.142133", "3.46842", "3.47973", "54.2553")
 
 
-def test_rolling_at_a_speed_that_falls_is_written_then_exit_1(capsys, tmp_path):
-    out, err = report(capsys, tmp_path, "examples/penny.yaml", "--speed", "0.1 m/s", code=1)
+def test_rolling_at_a_speed_that_falls_is_written_then_exit_1(cli, tmp_path):
+    out, err = report(cli, tmp_path, "examples/penny.yaml", "--speed", "0.1 m/s", code=1)
     page = Page(out.read_text(encoding="utf-8"))
-    rj = js(capsys, "rollcheck", "examples/penny.yaml", "--speed", "0.1", code=1)
+    rj = js(cli, "rollcheck", "examples/penny.yaml", "--speed", "0.1", code=1)
     assert rj["stable"] is False
     cells_have(page, num(rj["critical_speed"]), num(rj["margin"]))
     assert "a check failed" in err and "rolling" in err
 
 
-def test_angular_speed_goes_to_balance_and_to_the_rolling_spin(capsys, tmp_path):
+def test_angular_speed_goes_to_balance_and_to_the_rolling_spin(cli, tmp_path):
     args = ["examples/hoop.yaml", "--shaft", "z", "--speed", "300 rpm"]
-    out, _ = report(capsys, tmp_path, *args)
+    out, _ = report(cli, tmp_path, *args)
     page = Page(out.read_text(encoding="utf-8"))
     assert {"balance", "rolling-stability"} <= set(page.sections)
-    rj = js(capsys, "rollcheck", "examples/hoop.yaml", "--spin", "300 rpm")
+    rj = js(cli, "rollcheck", "examples/hoop.yaml", "--spin", "300 rpm")
     cells_have(page, num(rj["speed"]), num(rj["margin"]))
 
 
-def test_sections_that_do_not_apply_say_why_in_one_line(capsys, tmp_path):
-    out, _ = report(capsys, tmp_path, "examples/cube.yaml")
+def test_sections_that_do_not_apply_say_why_in_one_line(cli, tmp_path):
+    out, _ = report(cli, tmp_path, "examples/cube.yaml")
     page = Page(out.read_text(encoding="utf-8"))
     assert page.sections == ["parts", "mass-properties", "principal-axes", "input-file"]
     assert page.skips["balance"].startswith("balance: no shaft in the body file")
@@ -288,16 +278,16 @@ def test_sections_that_do_not_apply_say_why_in_one_line(capsys, tmp_path):
     assert page.skips["rolling-stability"].startswith("rolling stability: no rim radius")
 
 
-def test_a_section_that_cannot_be_computed_says_why(capsys, tmp_path):
+def test_a_section_that_cannot_be_computed_says_why(cli, tmp_path):
     # a box is not of revolution about z: rollcheck refuses it, the report says so in one line
-    out, _ = report(capsys, tmp_path, "examples/rectangular_block.yaml", "--rim-radius", "0.2")
+    out, _ = report(cli, tmp_path, "examples/rectangular_block.yaml", "--rim-radius", "0.2")
     page = Page(out.read_text(encoding="utf-8"))
     why = page.skips["rolling-stability"]
     assert why.startswith("rolling stability: not computed: ") and "revolution" in why
-    rc, _, err = run(capsys, "rollcheck", "examples/rectangular_block.yaml", "--radius", "0.2")
+    rc, _, err = cli("rollcheck", "examples/rectangular_block.yaml", "--radius", "0.2")
     assert rc == 2 and err.strip().removeprefix("rbcli: ") in why
     # the top without --spin/--theta: the pivot is there, the report says what is missing
-    out, _ = report(capsys, tmp_path, "examples/top.yaml", name="t.html")
+    out, _ = report(cli, tmp_path, "examples/top.yaml", name="t.html")
     assert "no --spin and --theta" in Page(out.read_text(encoding="utf-8")).skips["heavy-top"]
 
 
@@ -312,8 +302,8 @@ def test_a_section_that_cannot_be_computed_says_why(capsys, tmp_path):
     (["examples/penny.yaml", "--speed", "1e300 m/s"],
      "rolling-stability", "rolling stability: not computed: 'lean oscillation frequency"),
 ])
-def test_a_section_whose_numbers_overflow_says_why(capsys, tmp_path, args, key, needle):
-    out, err = report(capsys, tmp_path, *args)  # written, exit 0: a section not there checks nothing
+def test_a_section_whose_numbers_overflow_says_why(cli, tmp_path, args, key, needle):
+    out, err = report(cli, tmp_path, *args)  # written, exit 0: a section not there checks nothing
     page = Page(out.read_text(encoding="utf-8"))
     assert key not in page.sections and page.skips[key].startswith(needle), page.skips.get(key)
     assert "inf" not in page.cells and err == ""
@@ -327,8 +317,8 @@ HOSTILE = ('{name: "</title><script>alert(1)</script>", description: "a & b <i>x
            '{name: "| `pipe` ![i](x.svg)", shape: sphere, mass: 1, radius: 0.5, at: [2, 0, 0]}]}')
 
 
-def test_user_text_stays_text_in_html(capsys, tmp_path):
-    out, _ = report(capsys, tmp_path, "-e", HOSTILE)
+def test_user_text_stays_text_in_html(cli, tmp_path):
+    out, _ = report(cli, tmp_path, "-e", HOSTILE)
     text = out.read_text(encoding="utf-8")
     assert "<script" not in text.lower()
     assert "<i>" not in text
@@ -340,8 +330,8 @@ def test_user_text_stays_text_in_html(capsys, tmp_path):
     assert "alert(1)" not in "".join(v for _, _, v in page.attrs)
 
 
-def test_user_text_stays_text_in_markdown(capsys, tmp_path):
-    out, _ = report(capsys, tmp_path, "-e", HOSTILE, name="r.md")
+def test_user_text_stays_text_in_markdown(cli, tmp_path):
+    out, _ = report(cli, tmp_path, "-e", HOSTILE, name="r.md")
     text = out.read_text(encoding="utf-8")
     body = text.split("## Input file")[0]  # the echoed input is in a code block
     assert "<script>" not in body and "\\<script\\>" in body
@@ -353,8 +343,8 @@ def test_user_text_stays_text_in_markdown(capsys, tmp_path):
     assert text.count(fence + "yaml") == 1
 
 
-def test_no_network_references_and_no_scripts(capsys, tmp_path):
-    out, _ = report(capsys, tmp_path, "examples/top.yaml", "--spin", "150", "--theta", "30")
+def test_no_network_references_and_no_scripts(cli, tmp_path):
+    out, _ = report(cli, tmp_path, "examples/top.yaml", "--spin", "150", "--theta", "30")
     text = out.read_text(encoding="utf-8")
     assert "http:" not in text and "https:" not in text  # not even XML namespaces or DTDs
     page = Page(text)
@@ -368,8 +358,8 @@ def test_no_network_references_and_no_scripts(capsys, tmp_path):
 # ----------------------------------------------------------------------------- Markdown
 
 
-def test_markdown_figures_sit_beside_it_and_links_resolve(capsys, tmp_path):
-    out, _ = report(capsys, tmp_path, "examples/top.yaml", "--spin", "150", "--theta", "30", name="top.md")
+def test_markdown_figures_sit_beside_it_and_links_resolve(cli, tmp_path):
+    out, _ = report(cli, tmp_path, "examples/top.yaml", "--spin", "150", "--theta", "30", name="top.md")
     text = out.read_text(encoding="utf-8")
     links = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", text)
     assert len(links) >= 2  # body, top (rolling is left out: the disk's rim is 10 mm off the com)
@@ -388,8 +378,8 @@ SNAPSHOTS = {
 
 
 @pytest.mark.parametrize("name", sorted(SNAPSHOTS))
-def test_markdown_snapshot(capsys, tmp_path, name):
-    out, _ = report(capsys, tmp_path, *SNAPSHOTS[name], name=name)
+def test_markdown_snapshot(cli, tmp_path, name):
+    out, _ = report(cli, tmp_path, *SNAPSHOTS[name], name=name)
     text = out.read_text(encoding="utf-8")
     snap = SNAP / name
     if os.environ.get("RBCLI_UPDATE_SNAPSHOTS"):
@@ -402,51 +392,44 @@ def test_markdown_snapshot(capsys, tmp_path, name):
 # ----------------------------------------------------------------------------- files and exit codes
 
 
-def test_same_input_same_bytes_and_force(capsys, tmp_path):
-    a, _ = report(capsys, tmp_path, "examples/spoked_wheel.yaml", "--speed", "5 km/h", name="a.html")
+def test_same_input_same_bytes_and_force(cli, tmp_path):
+    a, _ = report(cli, tmp_path, "examples/spoked_wheel.yaml", "--speed", "5 km/h", name="a.html")
     first = a.read_bytes()
-    rc, _, err = run(capsys, "report", "examples/spoked_wheel.yaml", "--speed", "5 km/h", "-o", str(a))
+    rc, _, err = cli("report", "examples/spoked_wheel.yaml", "--speed", "5 km/h", "-o", str(a))
     assert rc == 2 and "exists; use --force" in err and err.count("\n") == 1
     assert a.read_bytes() == first
-    rc, _, err = run(capsys, "report", "examples/spoked_wheel.yaml", "--speed", "5 km/h", "-o", str(a), "--force")
+    rc, _, err = cli("report", "examples/spoked_wheel.yaml", "--speed", "5 km/h", "-o", str(a), "--force")
     assert rc == 0, err
     assert a.read_bytes() == first  # same input, same bytes
     assert [p.name for p in tmp_path.iterdir()] == ["a.html"]  # no temporary files left
 
 
-def test_markdown_folder_is_not_replaced_without_force(capsys, tmp_path):
+def test_markdown_folder_is_not_replaced_without_force(cli, tmp_path):
     (tmp_path / "r_files").mkdir()
-    rc, _, err = run(capsys, "report", "examples/cube.yaml", "-o", str(tmp_path / "r.md"))
+    rc, _, err = cli("report", "examples/cube.yaml", "-o", str(tmp_path / "r.md"))
     assert rc == 2 and "r_files" in err and "--force" in err
     assert not (tmp_path / "r.md").exists()
-    rc, _, err = run(capsys, "report", "examples/cube.yaml", "-o", str(tmp_path / "r.md"), "--force")
+    rc, _, err = cli("report", "examples/cube.yaml", "-o", str(tmp_path / "r.md"), "--force")
     assert rc == 0, err
 
 
-def test_date_comes_from_source_date_epoch(capsys, tmp_path, monkeypatch):
+def test_date_comes_from_source_date_epoch(cli, tmp_path, monkeypatch):
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "0")
-    out, _ = report(capsys, tmp_path, "examples/cube.yaml")
+    out, _ = report(cli, tmp_path, "examples/cube.yaml")
     assert "1970-01-01 00:00 UTC" in Page(out.read_text(encoding="utf-8")).cells
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "yesterday")
-    rc, _, err = run(capsys, "report", "examples/cube.yaml", "-o", str(tmp_path / "x.html"))
+    rc, _, err = cli("report", "examples/cube.yaml", "-o", str(tmp_path / "x.html"))
     assert rc == 2 and "SOURCE_DATE_EPOCH" in err
 
 
-def test_input_is_never_overwritten(capsys, tmp_path):
+def test_input_is_never_overwritten(cli, tmp_path):
     body = tmp_path / "body.md"
     body.write_text((EX / "cube.yaml").read_text(encoding="utf-8"), encoding="utf-8")
     before = body.read_bytes()
     for extra in ([], ["--force"]):
-        rc, _, err = run(capsys, "report", str(body), "-o", str(body), *extra)
+        rc, _, err = cli("report", str(body), "-o", str(body), *extra)
         assert rc == 2 and "input file" in err and "never overwrites" in err
     assert body.read_bytes() == before
-
-
-def subprocess_rbcli(*args: str, env: dict | None = None) -> subprocess.CompletedProcess:
-    e = {k: v for k, v in os.environ.items() if not k.startswith(("COLUMNS", "NO_COLOR"))}
-    e.update(env or {})
-    return subprocess.run([sys.executable, "-m", "rbcli", *args], capture_output=True, text=True, cwd=ROOT,
-                          env=e, timeout=120)
 
 
 @pytest.mark.parametrize(
@@ -461,11 +444,11 @@ def subprocess_rbcli(*args: str, env: dict | None = None) -> subprocess.Complete
         (["examples/missing.yaml", "-o", "{tmp}/r.html"], "missing.yaml"),
     ],
 )
-def test_bad_usage_is_exit_2_with_one_line(tmp_path, args, needle):
-    p = subprocess_rbcli("report", *[a.format(tmp=tmp_path) for a in args])
-    assert p.returncode == 2, p.stderr
-    assert p.stderr.startswith("rbcli: ") and p.stderr.count("\n") == 1 and needle in p.stderr
-    assert "Traceback" not in p.stderr
+def test_bad_usage_is_exit_2_with_one_line(cli, tmp_path, args, needle):
+    r = cli("report", *[a.format(tmp=tmp_path) for a in args])
+    assert r.code == 2, r.err
+    assert r.err.startswith("rbcli: ") and r.err.count("\n") == 1 and needle in r.err
+    assert "Traceback" not in r.err
     assert not (tmp_path / "r.html").exists()
 
 
@@ -509,9 +492,9 @@ def test_progress_shows_on_a_terminal_after_a_second():
 
 
 @pytest.mark.skipif(CHROMIUM is None, reason="no browser: install Debian's chromium (apt-get install chromium) to render the report headless")
-def test_html_renders_in_a_real_browser(capsys, tmp_path):
+def test_html_renders_in_a_real_browser(cli, tmp_path):
     args = ["examples/gyroscope.yaml", "--spin", "3000 rpm", "--theta", "80", "--omega", "0,1,30", "--shaft", "z"]
-    out, _ = report(capsys, tmp_path, *args)
+    out, _ = report(cli, tmp_path, *args)
     page = Page(out.read_text(encoding="utf-8"))
     assert {"balance", "free-precession", "heavy-top", "rolling-stability"} <= set(page.sections)
     shot = tmp_path / "shot.png"

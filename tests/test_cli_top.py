@@ -15,8 +15,6 @@ from __future__ import annotations
 
 import json
 import math
-import subprocess
-import sys
 from dataclasses import astuple
 from pathlib import Path
 
@@ -291,7 +289,7 @@ def test_the_general_starts_cover_all_three_kinds_of_path():
     theta_deg=st.floats(5.0, 175.0),
     g=st.floats(1.0, 25.0),
 )
-def test_random_tops_released_from_rest_against_quadrature(mass, length, k_com, ratio, spin, theta_deg, g):
+def test_random_tops_released_from_rest_against_quadrature(cli, mass, length, k_com, ratio, spin, theta_deg, g):
     Ic = mass * (k_com * length) ** 2
     Is = ratio * Ic
     I = Ic + mass * length**2
@@ -302,14 +300,9 @@ def test_random_tops_released_from_rest_against_quadrature(mass, length, k_com, 
     assume(u1 > -0.98 and u2 - u1 > 1e-6 * (1 + abs(u0)))  # clear of the bottom pole and of steady
     body = (f"{{shape: given, mass: {mass!r}, com: [0, 0, {length!r}], "
             f"inertia: {{Ixx: {Ic!r}, Iyy: {Ic!r}, Izz: {Is!r}}}}}")
-    from typer.testing import CliRunner
-
-    from rbcli.cli import app
-
-    r = CliRunner().invoke(app, ["top", "-e", body, "--spin", repr(spin), "--theta", repr(theta_deg),
-                                 "--g", repr(g), "--json"])
-    assert r.exit_code == 0, r.stderr
-    d = json.loads(r.stdout)
+    r = cli("top", "-e", body, "--spin", repr(spin), "--theta", repr(theta_deg), "--g", repr(g), "--json")
+    assert r.code == 0, r.err
+    d = r.json()
     # the quadratic is exact up to rounding; the band u2 - u1 is >= 1e-6, so arccos of
     # roots good to ~1e-16 absolute is good to ~1e-10 relative in the worst case kept
     assert d["theta2_deg"] == pytest.approx(math.degrees(math.acos(u1)), rel=1e-8)
@@ -497,18 +490,14 @@ def test_a_point_mass_is_a_pendulum_not_a_top(cli):
     assert rc == 2 and "spherical pendulum" in err
 
 
-def test_exit_codes_through_a_real_process(tmp_path):
-    def rbcli(*args):
-        return subprocess.run([sys.executable, "-m", "rbcli", "top", *args], capture_output=True, text=True,
-                              cwd=tmp_path, timeout=60)
-
-    ok = rbcli(TOP, *SHEET)
-    assert ok.returncode == 0 and "34.5082" in ok.stdout and ok.stderr == ""
-    bad = rbcli(TOP, "--spin", "150", "--theta", "190")
-    assert bad.returncode == 2 and bad.stdout == ""
-    assert bad.stderr.startswith("rbcli: --theta:") and bad.stderr.count("\n") == 1
-    zero = rbcli(TOP, "--spin", "0 rpm", "--theta", "30")
-    assert zero.returncode == 2 and zero.stderr.startswith("rbcli: --spin:") and "Traceback" not in zero.stderr
+def test_exit_codes_through_a_real_process(cli_proc, tmp_path):
+    ok = cli_proc("top", TOP, *SHEET, cwd=tmp_path)
+    assert ok.code == 0 and "34.5082" in ok.out and ok.err == ""
+    bad = cli_proc("top", TOP, "--spin", "150", "--theta", "190", cwd=tmp_path)
+    assert bad.code == 2 and bad.out == ""
+    assert bad.err.startswith("rbcli: --theta:") and bad.err.count("\n") == 1
+    zero = cli_proc("top", TOP, "--spin", "0 rpm", "--theta", "30", cwd=tmp_path)
+    assert zero.code == 2 and zero.err.startswith("rbcli: --spin:") and "Traceback" not in zero.err
 
 
 # --------------------------------------------------------------------------- --verify
@@ -806,15 +795,8 @@ def test_gyrocompass_with_the_cad_flywheel(cli):
     (("gyrocompass", "examples/gyroscope.yaml", "--spin", "6000 rpm", "--latitude", "30"), False),
     (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--verify"), True),
 ])
-def test_default_path_does_not_import_scipy(args, loads_scipy):
+def test_default_path_does_not_import_scipy(cli_proc, args, loads_scipy):
     """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
-    import os
-
-    code = ("import sys\nfrom rbcli.cli import main\n"
-            "try:\n    main(sys.argv[1:])\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
-            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy'}), file=sys.stderr)\n")
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    p = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
-                       cwd=ROOT, env=env, timeout=120)
-    assert p.returncode == 0, p.stderr
-    assert p.stderr.strip().splitlines()[-1] == ("['scipy']" if loads_scipy else "[]")
+    r = cli_proc(*args, imports=True)
+    assert r.code == 0, r.err
+    assert ("scipy" in r.imported) == loads_scipy

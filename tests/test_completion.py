@@ -28,9 +28,8 @@ def path_with_rbcli(tmp_path):
     return f"{tmp_path}{os.pathsep}{os.environ.get('PATH', '')}"
 
 
-def _complete_bash(path: str, words: list[str], cwd) -> list[str]:
-    script = subprocess.run([sys.executable, "-m", "rbcli", "--show-completion", "bash"],
-                            capture_output=True, text=True, cwd=ROOT, check=True).stdout
+def _complete_bash(script: str, path: str, words: list[str], cwd) -> list[str]:
+    # bash itself runs here (not rbcli): the script calls rbcli back, as a shell would
     cword = len(words) - 1
     quoted = " ".join(f"'{w}'" for w in words)
     prog = (f"{script}\nCOMP_WORDS=({quoted}); COMP_CWORD={cword}; _rbcli_completion rbcli; "
@@ -43,21 +42,21 @@ def _complete_bash(path: str, words: list[str], cwd) -> list[str]:
 
 
 @pytest.mark.skipif(shutil.which("bash") is None, reason="bash is not installed")
-def test_bash_completes_commands_and_options(path_with_rbcli):
-    assert _complete_bash(path_with_rbcli, ["rbcli", "pr"], ROOT) == ["principal", "precess"]
-    assert _complete_bash(path_with_rbcli, ["rbcli", "inertia", "--ax"], ROOT) == ["--axis"]
-    opts = _complete_bash(path_with_rbcli, ["rbcli", "balance", "x.yaml", "--"], ROOT)
+def test_bash_completes_commands_and_options(cli, path_with_rbcli):
+    script = cli("--show-completion", "bash").out
+    assert _complete_bash(script, path_with_rbcli, ["rbcli", "pr"], ROOT) == ["principal", "precess"]
+    assert _complete_bash(script, path_with_rbcli, ["rbcli", "inertia", "--ax"], ROOT) == ["--axis"]
+    opts = _complete_bash(script, path_with_rbcli, ["rbcli", "balance", "x.yaml", "--"], ROOT)
     assert {"--planes", "--radius", "--grade", "--json"} <= set(opts)
 
 
 @pytest.mark.skipif(shutil.which("bash") is None, reason="bash is not installed")
-def test_bash_falls_back_to_file_names_for_body(path_with_rbcli):
+def test_bash_falls_back_to_file_names_for_body(cli, path_with_rbcli):
     # rbcli offers nothing for BODY, and the script's `complete -o default` lets bash offer
     # file names; the script must say so, and rbcli must offer no words of its own there
-    script = subprocess.run([sys.executable, "-m", "rbcli", "--show-completion", "bash"],
-                            capture_output=True, text=True, cwd=ROOT, check=True).stdout
+    script = cli("--show-completion", "bash").out
     assert "complete -o default -F _rbcli_completion rbcli" in script
-    assert _complete_bash(path_with_rbcli, ["rbcli", "inertia", "exam"], ROOT) == []
+    assert _complete_bash(script, path_with_rbcli, ["rbcli", "inertia", "exam"], ROOT) == []
 
 
 def test_zsh_and_fish_protocols(cli_proc):
@@ -82,3 +81,42 @@ def test_unknown_shell_is_one_line_exit_2(cli):
     r = cli("--show-completion", "tcsh")
     assert r.code == 2
     assert r.err.count("\n") == 1 and "tcsh" in r.err and "bash" in r.err
+
+
+# ----------------------------------------------------------------------------- malformed state (issue 27)
+
+BASH = {"_RBCLI_COMPLETE": "complete_bash", "COMP_WORDS": "rbcli pr"}
+
+
+@pytest.mark.parametrize("cword", ["", "x", "-1", "1.5", "1e3", " 1", "1_0", "\u0663", "3",
+                                   "9" * 5000, "99999999"])
+def test_a_malformed_comp_cword_gives_no_candidates(cli, cword):
+    # was an internal error (exit 70): int('x'), an index beyond the words, 5000 digits
+    r = cli(env={**BASH, "COMP_CWORD": cword})
+    assert (r.code, r.out, r.err) == (0, "", "")
+
+
+def test_missing_completion_variables_give_no_candidates(cli):
+    assert tuple(cli(env={**BASH, "COMP_CWORD": None})) == (0, "", "")
+    assert tuple(cli(env={**BASH, "COMP_WORDS": None, "COMP_CWORD": "1"})) == (0, "", "")
+    # the check can fail: the same request well formed is answered
+    assert cli(env={**BASH, "COMP_CWORD": "1"}).out.split() == ["principal", "precess"]
+    assert cli(env={**BASH, "COMP_CWORD": "2"}).out.split()[:2] == ["inertia", "principal"]
+
+
+def test_other_shells_with_missing_variables_answer(cli):
+    for shell in ("zsh", "fish", "powershell"):
+        r = cli(env={"_RBCLI_COMPLETE": f"complete_{shell}", "_TYPER_COMPLETE_ARGS": None,
+                     "_TYPER_COMPLETE_WORD_TO_COMPLETE": None, "_TYPER_COMPLETE_FISH_ACTION": None})
+        assert r.code == 0 and "internal error" not in r.err, (shell, r)
+
+
+def test_completing_after_an_eager_option_runs_nothing(cli, tmp_path):
+    # `rbcli --install-completion bash <TAB>` wrote into ~/.bashrc; --version printed itself
+    home = tmp_path / "home"
+    home.mkdir()
+    for words in ("rbcli --install-completion bash ", "rbcli --show-completion bash ", "rbcli --version "):
+        r = cli(env={**BASH, "COMP_WORDS": words, "COMP_CWORD": str(len(words.split())), "HOME": str(home)})
+        assert r.code == 0 and "inertia" in r.out.split(), (words, r)
+        assert "rbcli 0" not in r.out and "_rbcli_completion" not in r.out and "installed" not in r.out
+    assert list(home.iterdir()) == []

@@ -786,6 +786,7 @@ def test_json_keys_and_types():
 
 
 def test_import_does_not_load_scipy():
+    # a fresh interpreter (not the cli fixtures: no command runs): what the import loads
     code = "import sys, rbcli.core.rolling; print(any(k.startswith('scipy') for k in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()

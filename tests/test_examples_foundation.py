@@ -30,8 +30,8 @@ def _at_root(monkeypatch):
 
 
 @pytest.fixture
-def run(cli):
-    """``run(*args)``: standard output of ``rbcli ARGS`` (the conftest ``cli`` fixture), exit 0."""
+def printed(cli):
+    """``printed(*args)``: standard output of ``rbcli ARGS`` (the ``cli`` fixture), exit 0."""
 
     def go(*args: str) -> str:
         r = cli(*args)
@@ -42,14 +42,14 @@ def run(cli):
 
 
 @pytest.fixture
-def js(run):
+def js(printed):
     """``js(*args)``: the JSON of ``rbcli ARGS --json``."""
-    return lambda *args: json.loads(run(*args, "--json"))
+    return lambda *args: json.loads(printed(*args, "--json"))
 
 
 # --------------------------------------------------------------------------- the five
 
-def test_square_lamina_about_a_corner(run, js):
+def test_square_lamina_about_a_corner(printed, js):
     m, a = 1.0, 1.0  # the file: a 1 m square plate of 1 kg with a corner at the origin
     j = js("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0", "--omega", "1,0,0")
     course = m * a * a * np.array([[1 / 3, -1 / 4, 0], [-1 / 4, 1 / 3, 0], [0, 0, 2 / 3]])
@@ -59,7 +59,7 @@ def test_square_lamina_about_a_corner(run, js):
     # L = J w for w = (1, 0, 0): (1/3, -1/4, 0) m a^2 -- a y-component
     np.testing.assert_allclose(j["angular_momentum"], course[:, 0], rtol=1e-12, atol=1e-15)
     # the header's printed number: m a^2/12 = 0.0833333 to six figures
-    assert "0.0833333" in run("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0")
+    assert "0.0833333" in printed("inertia", "examples/square_lamina.yaml", "--axis", "1,1,0")
     p = js("principal", "examples/square_lamina.yaml", "--about", "origin")
     s = 1 / math.sqrt(2)
     np.testing.assert_allclose(p["axes"][0], [s, s, 0], atol=1e-12)  # along the diagonal
@@ -78,13 +78,13 @@ def test_rectangular_block_about_a_corner(js):
     np.testing.assert_allclose(j["inertia"][0], want, rtol=1e-12)
 
 
-def test_cube_is_spherical(run, js):
+def test_cube_is_spherical(printed, js):
     rho, a = 7850.0, 0.1
     m = rho * a**3  # 7.85 kg
     j = js("principal", "examples/cube.yaml")
     assert j["symmetry"] == "spherical"
     np.testing.assert_allclose(j["moments"], [m * a * a / 6] * 3, rtol=1e-12)
-    assert "0.0130833" in run("principal", "examples/cube.yaml")  # m a^2/6 to six figures
+    assert "0.0130833" in printed("principal", "examples/cube.yaml")  # m a^2/6 to six figures
 
 
 def test_two_blade_fan_principal_axes_at_45_degrees(js):
@@ -107,7 +107,7 @@ def test_two_blade_fan_header_claim_for_axis_1(js):
     np.testing.assert_allclose(js("principal", "examples/two_blade_fan.yaml")["axes"][0], want, atol=1e-6)
 
 
-def test_bracket_in_shop_units(run, js):
+def test_bracket_in_shop_units(printed, js):
     rho = 0.284  # lb/in^3
     # (volume in^3, centroid in): base 6 x 4 x 0.5, upright 0.5 x 4 x 3, two 0.5 in holes x 0.5 deep
     hole = math.pi * 0.25**2 * 0.5
@@ -121,7 +121,7 @@ def test_bracket_in_shop_units(run, js):
     # unit factors are exact and rounded once: 1e-12 relative is round-off
     assert j["mass"] == pytest.approx(mass_lb * LB, rel=1e-12)
     np.testing.assert_allclose(j["com"], com_in * IN, rtol=1e-12)
-    table = run("inertia", "examples/bracket.yaml", "--units", "in,lb")
+    table = printed("inertia", "examples/bracket.yaml", "--units", "in,lb")
     assert re.search(r"mass\s*\|\s*5\.05624\s*\|\s*lb", table)
     assert re.search(rf"com x\s*\|\s*{com_in[0]:.6g}\s*\|\s*in", table)
 

@@ -14,8 +14,6 @@ from __future__ import annotations
 import os
 import random
 import re
-import subprocess
-import sys
 import warnings
 from pathlib import Path
 
@@ -132,7 +130,7 @@ def test_hostile_classics():
         load_or_input_error(text)
 
 
-def test_mutated_files_through_a_real_process(tmp_path):
+def test_mutated_files_through_a_real_process(cli_proc, tmp_path):
     rng = random.Random(20240613)  # fixed: the same files every run
     files = []
     for k in range(25):
@@ -148,15 +146,13 @@ def test_mutated_files_through_a_real_process(tmp_path):
         f = tmp_path / f"m{k}.yaml"
         f.write_text("\n".join(lines), encoding="utf-8", errors="surrogatepass")
         files.append(str(f))
-    env = {k: v for k, v in os.environ.items() if k != "NO_COLOR"}
-    r = subprocess.run([sys.executable, "-m", "rbcli", "inertia", "--json", *files],
-                       capture_output=True, text=True, cwd=ROOT, env=env, timeout=120)
-    assert r.returncode in (0, 2), r.stderr
-    assert "Traceback" not in r.stderr and "Warning" not in r.stderr
-    for line in r.stderr.splitlines():
+    r = cli_proc("inertia", "--json", *files, env={"NO_COLOR": None})
+    assert r.code in (0, 2), r.err
+    assert "Traceback" not in r.err and "Warning" not in r.err
+    for line in r.err.splitlines():
         assert line.startswith("rbcli: "), line
     # every file either printed a result or gave exactly one error line
-    assert len(r.stdout.splitlines()) + len(r.stderr.splitlines()) == len(files)
+    assert len(r.out.splitlines()) + len(r.err.splitlines()) == len(files)
 
 
 # --------------------------------------------------------------------------- units and options

@@ -201,19 +201,12 @@ def test_rename_noreplace_fallback_is_no_clobber_too(tree, monkeypatch):
 
 
 @pytest.mark.slow
-def test_twenty_parallel_reports_without_force_exactly_one_wins(tree):
-    import subprocess
-    import sys
-
-    root = Path(__file__).resolve().parent.parent
-    env = {**os.environ, "PYTHONPATH": str(root)}
-    procs = [subprocess.Popen([sys.executable, "-m", "rbcli", "report", "body.yaml", "-o", "new.html"],
-                              cwd=tree, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-             for _ in range(20)]
-    codes = [p.wait(timeout=300) for p in procs]
-    errs = [p.stderr.read().decode() for p in procs]
-    assert sorted(codes) == [0] + [2] * 19, (codes, errs)
-    assert all("exists; use --force" in e for e, c in zip(errs, codes) if c == 2)
+def test_twenty_parallel_reports_without_force_exactly_one_wins(cli_proc, tree):
+    procs = [cli_proc.start("report", "body.yaml", "-o", "new.html", cwd=tree) for _ in range(20)]
+    runs = [cli_proc.finish(p, timeout=300) for p in procs]
+    codes = [r.code for r in runs]
+    assert sorted(codes) == [0] + [2] * 19, (codes, [r.err for r in runs])
+    assert all("exists; use --force" in r.err for r in runs if r.code == 2)
     assert leftovers(tree) == []
 
 

@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import os
 import signal
-import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -22,38 +20,40 @@ GOOD = ("inertia", "examples/cube.yaml")
 BAD = ("inertia", "examples/nope.yaml")
 
 
-def sh(args: tuple[str, ...], redirect: str, cwd: Path = ROOT, timeout: float = 120):
-    """Run ``python -m rbcli ARGS REDIRECT`` through sh (for ``>&-``, ``2>/dev/full``...);
-    (exit status, stdout, stderr) — a stream redirected away reads as ''."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT), "NO_COLOR": "1", "COLUMNS": "100"}
-    env.pop("RBCLI_DEBUG", None)
-    cmd = " ".join([f"'{sys.executable}'", "-m", "rbcli", *(f"'{a}'" for a in args), redirect])
-    p = subprocess.run(["sh", "-c", cmd], capture_output=True, cwd=cwd, env=env, timeout=timeout)
-    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+@pytest.fixture
+def sh(cli_proc):
+    """``sh(ARGS, REDIRECT)``: ``python -m rbcli ARGS REDIRECT`` through sh (``>&-``,
+    ``2>/dev/full``...); (exit status, stdout, stderr) — a stream redirected away reads as ''."""
+
+    def run(args: tuple[str, ...], redirect: str, cwd: Path = ROOT):
+        r = cli_proc(*args, redirect=redirect, cwd=cwd)
+        return r.code, r.out, r.err
+
+    return run
 
 
 # --------------------------------------------------------------------------- stdout
 
 
-def test_closed_stdout_is_exit_2_with_a_message():
+def test_closed_stdout_is_exit_2_with_a_message(sh):
     code, _, err = sh(GOOD, ">&-")
     assert code == 2 and err == "rbcli: cannot write to standard output: it is closed\n", err
 
 
-def test_full_stdout_is_exit_2_with_a_message():
+def test_full_stdout_is_exit_2_with_a_message(sh):
     code, _, err = sh(GOOD, "> /dev/full")
     assert code == 2 and "no space left on device" in err and err.count("\n") == 1, err
     code, _, err = sh(("--help",), "> /dev/full")
     assert code == 2 and err.startswith("rbcli: "), err
 
 
-def test_a_pipe_closed_early_is_quiet():
+def test_a_pipe_closed_early_is_quiet(sh):
     code, out, err = sh(("precess", "examples/cube.yaml", "--omega", "1,2,3", "--csv", "-",
                          "--duration", "100", "--samples", "200000"), "| head -1")
     assert code == 0 and err == "" and out.startswith("t,"), err
 
 
-def test_a_report_needs_no_stdout():
+def test_a_report_needs_no_stdout(sh):
     import tempfile
 
     with tempfile.TemporaryDirectory() as d:
@@ -65,7 +65,7 @@ def test_a_report_needs_no_stdout():
 
 
 @pytest.mark.parametrize("redirect", ["2>&-", "2>/dev/full"])
-def test_exit_status_never_depends_on_stderr(redirect):
+def test_exit_status_never_depends_on_stderr(sh, redirect):
     assert sh(BAD, redirect)[0] == 2
     assert sh(GOOD, redirect + " >/dev/null")[0] == 0
     assert sh(("inertia", "examples/cube.yaml", "--nope"), redirect)[0] == 2
@@ -74,17 +74,17 @@ def test_exit_status_never_depends_on_stderr(redirect):
 # --------------------------------------------------------------------------- stdin
 
 
-def test_closed_stdin_with_body_dash_is_a_clear_exit_2():
+def test_closed_stdin_with_body_dash_is_a_clear_exit_2(sh):
     code, _, err = sh(("inertia", "-"), "<&-")
     assert code == 2 and "standard input" in err and "closed" in err and err.count("\n") == 1, err
 
 
-def test_stdin_from_dev_zero_stops_at_the_cap():
+def test_stdin_from_dev_zero_stops_at_the_cap(sh):
     code, _, err = sh(("inertia", "-"), "< /dev/zero")
     assert code == 2 and "limited to 32 MiB" in err, err
 
 
-def test_a_closed_stdin_does_not_matter_to_a_body_file():
+def test_a_closed_stdin_does_not_matter_to_a_body_file(sh):
     assert sh(GOOD, "<&- >/dev/null")[0] == 0
 
 
@@ -106,12 +106,6 @@ def test_an_ascii_terminal_gets_ascii(cli_proc, args):
 # --------------------------------------------------------------------------- signals
 
 
-def _popen(args, cwd):
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    return subprocess.Popen([sys.executable, "-m", "rbcli", *args], cwd=cwd, env=env,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-
-
 def _wait_for(predicate, timeout=60.0):
     end = time.monotonic() + timeout
     while time.monotonic() < end:
@@ -121,19 +115,21 @@ def _wait_for(predicate, timeout=60.0):
     return False
 
 
-def test_sigterm_during_a_long_csv_leaves_no_temporary_file(tmp_path):
+def test_sigterm_during_a_long_csv_leaves_no_temporary_file(cli_proc, tmp_path):
     (tmp_path / "b.yaml").write_text((ROOT / "examples/football.yaml").read_text())
-    p = _popen(["precess", "b.yaml", "--omega", "1.7,0,9.8", "--duration", "100",
-                "--samples", "1000000", "--csv", "out.csv"], tmp_path)
+    p = cli_proc.start("precess", "b.yaml", "--omega", "1.7,0,9.8", "--duration", "100",
+                       "--samples", "1000000", "--csv", "out.csv", cwd=tmp_path)
     assert _wait_for(lambda: any(n.startswith(".rbcli-") for n in os.listdir(tmp_path))), "no temp file seen"
     p.send_signal(signal.SIGTERM)
-    assert p.wait(timeout=60) == 128 + signal.SIGTERM, p.stderr.read()
+    r = cli_proc.finish(p, timeout=60)
+    assert (r.code, r.err) == (128 + signal.SIGTERM, "rbcli: interrupted by SIGTERM\n"), r
     assert sorted(os.listdir(tmp_path)) == ["b.yaml"]
 
 
-def test_sigint_during_a_markdown_report_leaves_no_figures_folder(tmp_path):
+def test_sigint_during_a_markdown_report_leaves_no_figures_folder(cli_proc, tmp_path):
     # SIGINT at several moments of the run: each run either finished (r.md and r_files/) or
-    # left nothing at all; never r_files/ alone, never a temporary file
+    # left nothing at all; never r_files/ alone, never a temporary file (tests/test_signals.py
+    # sweeps the moments for the other outputs)
     (tmp_path / "b.yaml").write_text((ROOT / "examples/top.yaml").read_text())
     args = ["report", "b.yaml", "-o", "r.md", "--force", "--spin", "150", "--theta", "30"]
     outcomes = set()
@@ -145,17 +141,14 @@ def test_sigint_during_a_markdown_report_leaves_no_figures_folder(tmp_path):
                 shutil.rmtree(tmp_path / name)
             elif (tmp_path / name).exists():
                 (tmp_path / name).unlink()
-        p = _popen(args, tmp_path)
+        p = cli_proc.start(*args, cwd=tmp_path)
         time.sleep(delay)
         p.send_signal(signal.SIGINT)
-        code = p.wait(timeout=120)
+        r = cli_proc.finish(p, timeout=120)
         names = sorted(os.listdir(tmp_path))
-        err = p.stderr.read().decode("utf-8", "replace")
-        if code == 1 and "Fatal Python error" in err:  # Ctrl-C inside the interpreter's own
-            code = -signal.SIGINT  # start-up (site), before any rbcli code: nothing written
-        assert code in (0, 130, -signal.SIGINT), (code, err)
-        assert names in (["b.yaml"], ["b.yaml", "r.md", "r_files"]), (delay, code, names)
-        if code == 0:
+        assert (r.code, r.err) in ((0, ""), (130, "rbcli: interrupted by SIGINT\n")), (delay, r)
+        assert names in (["b.yaml"], ["b.yaml", "r.md", "r_files"]), (delay, r.code, names)
+        if r.code == 0:
             assert names == ["b.yaml", "r.md", "r_files"]
-        outcomes.add(code)
-    assert outcomes & {130, -signal.SIGINT}
+        outcomes.add(r.code)
+    assert 130 in outcomes

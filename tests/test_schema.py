@@ -11,9 +11,7 @@ import json
 from pathlib import Path
 
 import pytest
-from typer.testing import CliRunner
 
-from rbcli.cli import app
 from rbcli.io import yamlsafe
 from rbcli.io.body import load_text
 from rbcli.io.schema import SCHEMA_PATH, body_schema, schema_text
@@ -43,13 +41,13 @@ def test_installed_schema_file_is_current():
     assert json.loads(schema_text())["$schema"] == "http://json-schema.org/draft-07/schema#"
 
 
-def test_schema_command_prints_the_path_of_an_existing_file_and_the_schema():
-    r = CliRunner().invoke(app, ["schema", "--path"])
-    assert r.exit_code == 0
-    path = Path(r.stdout.strip())
+def test_schema_command_prints_the_path_of_an_existing_file_and_the_schema(cli):
+    r = cli("schema", "--path")
+    assert r.code == 0, r.err
+    path = Path(r.out.strip())
     assert path.is_file() and path.read_text(encoding="utf-8") == schema_text()
-    r = CliRunner().invoke(app, ["schema"])
-    assert r.exit_code == 0 and json.loads(r.stdout) == body_schema()
+    r = cli("schema")
+    assert r.code == 0 and r.json() == body_schema()
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=[p.stem for p in EXAMPLES])
