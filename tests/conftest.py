@@ -43,6 +43,65 @@ import pytest  # noqa: E402
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
 
+# ----------------------------------------------------------------------------- sampled tests
+# The default run (`pytest`: -m 'not slow') samples the exhaustive tests: an oracle compared
+# over fewer random cases, a figure or a report rendered for a few examples. `pytest -m slow`
+# runs them in full (and the tests marked slow); `pytest -m ''` runs everything in full.
+# A sampled test carries @pytest.mark.sampled and takes its sizes from sample(); a
+# parametrized one lists its values through sampled_params(). Either way every test can
+# still fail by default, on the sample.
+
+#: whether this run is the full one (set from -m in pytest_configure, before the test
+#: modules are imported, so that decorators such as hypothesis' @settings can read it)
+FULL = False
+
+
+def _selects_slow(markexpr: str) -> bool:
+    """Whether ``-m markexpr`` selects a test marked slow."""
+    if not markexpr.strip():
+        return True
+    try:
+        from _pytest.mark.expression import Expression
+
+        return bool(Expression.compile(markexpr).evaluate(lambda name, **_: name in ("slow", "sampled")))
+    except Exception:  # noqa: BLE001 - another pytest: read the expression plainly
+        return "slow" in markexpr and "not slow" not in markexpr
+
+
+def pytest_configure(config) -> None:
+    global FULL
+    FULL = _selects_slow(config.getoption("markexpr") or "")
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(config, items) -> None:
+    """A sampled test is part of the full run: under -m slow it runs (in full) too."""
+    if FULL:
+        for item in items:
+            if item.get_closest_marker("sampled"):
+                item.add_marker(pytest.mark.slow)
+
+
+def sample(sample_value, full_value):
+    """``full_value`` in the full run (``-m slow``), else ``sample_value`` (mark the test
+    ``@pytest.mark.sampled``)."""
+    return full_value if FULL else sample_value
+
+
+def sampled_params(values, keep, ids=None, multi: bool = False) -> list:
+    """Parameters for ``@pytest.mark.parametrize``: the values at the indices ``keep`` run
+    by default and in the full run, the others only in the full run (marked slow).
+    ``keep`` may be a function of the value instead; ``ids``: a list or a function of the
+    value; ``multi``: each value is a tuple of several arguments."""
+    values = list(values)
+    kept = {i for i, v in enumerate(values) if keep(v)} if callable(keep) else set(keep)
+    out = []
+    for i, v in enumerate(values):
+        marks = pytest.mark.sampled if i in kept else pytest.mark.slow
+        pid = ids(v) if callable(ids) else ids[i] if ids is not None else None
+        out.append(pytest.param(*(v if multi else (v,)), marks=marks, id=pid))
+    return out
+
 
 @dataclass(frozen=True)
 class Run:

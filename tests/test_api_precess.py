@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import rbcli
+from conftest import sampled_params
 from rbcli.errors import option_name
 from rbcli.api.precess import PrecessOptions, PrecessResult
 
@@ -40,7 +41,8 @@ def test_to_json_is_the_cli_json(cli, name, omega):
     assert list(r.json())[list(r.json()).index("name") + 1] == "file"  # where the CLI puts it
 
 
-@pytest.mark.parametrize("name", ["book", "frisbee", "rectangular_block", "football"])
+@pytest.mark.parametrize("name", sampled_params(["book", "frisbee", "rectangular_block", "football"], [0, 3],
+                                                ids=["book", "frisbee", "rectangular_block", "football"]))
 def test_to_json_with_at_and_verify_is_the_cli_json(cli, name):
     path = f"examples/{name}.yaml"
     args = ("--omega", "0.3,1,0.2", "--at", "2.5 min", "--verify")

@@ -6,6 +6,9 @@ import math
 import warnings
 
 import numpy as np
+import pytest
+
+from conftest import sample
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -72,7 +75,8 @@ def _outcome(fn, obj):
     return ("ok", repr(out))  # repr: -0.0 and 0.0 differ, int and float differ
 
 
-@settings(max_examples=800, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(100, 800), deadline=None)
 @given(TREES)
 def test_jsonable_is_its_definition(obj):
     assert _outcome(result.jsonable, obj) == _outcome(reference, obj)
@@ -89,7 +93,8 @@ ROWS = st.lists(st.dictionaries(st.sampled_from(["name", "shape", "mass", "com",
                                 min_size=1, max_size=5), max_size=6).map(tuple)
 
 
-@settings(max_examples=500, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 500), deadline=None)
 @given(ROWS)
 def test_parts_rows_are_jsonable(rows):
     from rbcli.api.massprops import _with_parts

@@ -22,7 +22,7 @@ import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import run_inprocess
+from conftest import run_inprocess, sampled_params
 
 ROOT = Path(__file__).resolve().parent.parent
 EX = ROOT / "examples"
@@ -872,11 +872,11 @@ def _svg_texts(path) -> str:
     return " ".join(t for t in root.itertext())
 
 
-@pytest.mark.parametrize("args", [
+@pytest.mark.parametrize("args", sampled_params([
     [TWO_DISK, "--planes", "0,400mm", "--radius", "100mm", "--mass-step", "0.5 g"],
     [FAN, "--planes", "320,380mm", "--radius", "190mm", "--positions", "6", "--angle-sense", "against"],
     [TWO_DISK],
-])
+], [1], ids=["two-disk", "fan-positions", "plain"]))
 def test_balance_plot_renders(cli, tmp_path, args):
     path = tmp_path / "polar.svg"
     r = cli("balance", *args, "--plot", str(path))

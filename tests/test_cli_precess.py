@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
+from conftest import sampled_params
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -462,7 +464,8 @@ def test_verify_failure_exits_1_after_printing_everything(cli, monkeypatch):
 
 # ----------------------------------------------------------------------------- plots
 
-@pytest.mark.parametrize("ext, magic", [("png", b"\x89PNG"), ("svg", b"<?xml"), ("pdf", b"%PDF")])
+# one format by default here (svg; top draws png, rollcheck pdf), all three under -m slow
+@pytest.mark.parametrize("ext, magic", sampled_params([("png", b"\x89PNG"), ("svg", b"<?xml"), ("pdf", b"%PDF")], [1], multi=True, ids=["png", "svg", "pdf"]))
 def test_plot_formats(cli, tmp_path, ext, magic):
     f = tmp_path / f"p.{ext}"
     rc, out, _ = cli("precess", str(EX / "book.yaml"), "--omega", "0.01,1,0.01", "--plot", str(f))
@@ -573,8 +576,9 @@ def test_flip_criterion_is_geometric():
 
 # ----------------------------------------------------------------------------- start-up (issue 16)
 
-@pytest.mark.parametrize("extra, loads_scipy", [((), False), (("--at", "1e9", "--json"), False),
-                                                 (("--verify",), True)])
+@pytest.mark.parametrize("extra, loads_scipy", sampled_params(
+    [((), False), (("--at", "1e9", "--json"), False), (("--verify",), True)], [0, 2], multi=True,
+    ids=["default", "at", "verify"]))
 def test_default_path_does_not_import_scipy(cli_proc, extra, loads_scipy):
     """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
     r = cli_proc("precess", "examples/book.yaml", "--omega", "0.01,1,0.01", *extra, imports=True)

@@ -18,12 +18,10 @@ and review the diff of tests/snapshots/ before committing it.
 from __future__ import annotations
 
 import hashlib
-import json
 import os
 import re
 import shutil
 import subprocess
-import sys
 import time
 import xml.etree.ElementTree as ET
 from html.parser import HTMLParser
@@ -31,6 +29,7 @@ from pathlib import Path
 
 import pytest
 
+from conftest import sampled_params
 from rbcli.render.fmt import num
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -161,7 +160,13 @@ def sections_of(page: Page) -> set[str]:
 # ----------------------------------------------------------------------------- every example
 
 
-@pytest.mark.parametrize("example", EXAMPLES, ids=[p.stem for p in EXAMPLES])
+#: reported by default (the rest under -m slow): a mesh, a many-part wheel that rolls, a body
+#: in mm, a top with its pivot
+SAMPLE = ("housing", "bicycle_wheel", "rotor_mm", "top")
+
+
+@pytest.mark.parametrize("example", sampled_params(EXAMPLES, lambda p: p.stem in SAMPLE,
+                                                   ids=lambda p: p.stem))
 def test_every_example_builds_a_report_with_the_commands_numbers(cli, tmp_path, example):
     src = str(example.relative_to(ROOT))
     out, err = report(cli, tmp_path, src)
@@ -491,6 +496,7 @@ def test_progress_shows_on_a_terminal_after_a_second():
 # ----------------------------------------------------------------------------- a real browser
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(CHROMIUM is None, reason="no browser: install Debian's chromium (apt-get install chromium) to render the report headless")
 def test_html_renders_in_a_real_browser(cli, tmp_path):
     args = ["examples/gyroscope.yaml", "--spin", "3000 rpm", "--theta", "80", "--omega", "0,1,30", "--shaft", "z"]

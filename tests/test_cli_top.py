@@ -20,6 +20,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
+from conftest import sampled_params
 import yaml
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -531,7 +533,8 @@ def test_verify_failure_exits_1_after_printing_everything(cli, monkeypatch):
 # --------------------------------------------------------------------------- --plot
 
 
-@pytest.mark.parametrize("ext, magic", [("png", b"\x89PNG"), ("svg", b"<?xml"), ("pdf", b"%PDF")])
+# one format by default here (png; precess draws svg, rollcheck pdf), all three under -m slow
+@pytest.mark.parametrize("ext, magic", sampled_params([("png", b"\x89PNG"), ("svg", b"<?xml"), ("pdf", b"%PDF")], [0], multi=True, ids=["png", "svg", "pdf"]))
 def test_plot_formats(cli, tmp_path, ext, magic):
     p = tmp_path / f"path.{ext}"
     rc, out, _ = astuple(cli("top", TOP, *SHEET, "--plot", str(p)))
@@ -789,12 +792,12 @@ def test_gyrocompass_with_the_cad_flywheel(cli):
 
 # ----------------------------------------------------------------------------- start-up (issue 16)
 
-@pytest.mark.parametrize("args, loads_scipy", [
+@pytest.mark.parametrize("args, loads_scipy", sampled_params([
     (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--theta-dot", "2"), False),
     (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--csv", "-"), False),
     (("gyrocompass", "examples/gyroscope.yaml", "--spin", "6000 rpm", "--latitude", "30"), False),
     (("top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--verify"), True),
-])
+], [2, 3], multi=True, ids=["top", "csv", "gyrocompass", "verify"]))
 def test_default_path_does_not_import_scipy(cli_proc, args, loads_scipy):
     """scipy (its import costs more than a whole one-liner) is loaded only by --verify."""
     r = cli_proc(*args, imports=True)

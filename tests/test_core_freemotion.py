@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 import pytest
+
+from conftest import sample
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
@@ -362,7 +364,8 @@ def test_huge_times_cost_nothing_and_follow_quasi_periodicity():
 # ---------------------------------------------------------------------------------------
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@pytest.mark.sampled
+@settings(max_examples=sample(6, 25), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     a=st.floats(0.5, 5.0),
     b=st.floats(0.05, 1.0),

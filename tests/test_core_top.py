@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 import pytest
+
+from conftest import sample
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
@@ -346,7 +348,8 @@ def test_release_from_rest_always_cusps_at_start_angle(m, l, rt, rs, S, sgn, th_
 # closed form against the independent oracle, random tops and starts
 
 
-@settings(max_examples=20, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(5, 20), deadline=None)
 @given(
     m=st.floats(0.1, 3.0), l=st.floats(0.01, 0.2), rt=st.floats(0.02, 0.2),
     rs=st.floats(0.02, 0.2), S=st.floats(5.0, 120.0), sgn=st.sampled_from([-1.0, 1.0]),

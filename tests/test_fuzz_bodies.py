@@ -17,6 +17,9 @@ import re
 import warnings
 from pathlib import Path
 
+import pytest
+
+from conftest import sample
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -179,7 +182,8 @@ def unit_expr(draw, depth: int = 0) -> str:
     return text
 
 
-@settings(max_examples=300, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=2000, suppress_health_check=[HealthCheck.too_slow])
 @given(expr=unit_expr(), number=st.sampled_from(["1", "-2.5", "1e300", "3e-300", "0"]))
 def test_nested_unit_expressions_read_quickly_or_give_a_unit_error(expr, number):
     import math
@@ -217,7 +221,8 @@ def test_seven_nested_powers_of_twelve_are_refused_at_once():
 OPTION_KINDS = ["length", "angular_speed", "mass", "inertia", "acceleration"]
 
 
-@settings(max_examples=300, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=2000, suppress_health_check=[HealthCheck.too_slow])
 @given(values=st.lists(st.sampled_from(["1", "-2", "0.5", "1e308", "1e-320", "nan", "", " ", "1e999"]),
                        min_size=0, max_size=4),
        unit=st.one_of(st.just(""), unit_expr()), sep=st.sampled_from([",", ", ", " ", ";"]),

@@ -15,6 +15,8 @@ from decimal import Decimal, localcontext
 from fractions import Fraction
 
 import pytest
+
+from conftest import sample
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
@@ -613,6 +615,7 @@ def test_angular_speed_base_unit():
 # ----------------------------------------------------------------------------- start-up (issue 16)
 
 
+@pytest.mark.sampled
 def test_exact_rationals_match_fraction():
     """io.units' _Q and _decimal give Fraction's values (so every factor rounds the same)."""
     from fractions import Fraction
@@ -622,7 +625,7 @@ def test_exact_rationals_match_fraction():
 
     from rbcli.io import units as un
 
-    @settings(max_examples=500, deadline=None)
+    @settings(max_examples=sample(100, 500), deadline=None)
     @given(st.integers(-10**30, 10**30), st.integers(1, 10**30), st.integers(-10**6, 10**6),
            st.integers(1, 10**6), st.integers(-5, 5))
     def check(a, b, c, d, n):
@@ -661,6 +664,7 @@ def test_bare_table_names_take_the_short_paths_with_the_same_result():
         assert un._NAME_RE.fullmatch(name)  # what _is_name assumes of every such name
 
 
+@pytest.mark.sampled
 def test_plain_decimals_are_numbers_for_both_patterns():
     """plain_decimal (the short path that skips the number patterns) only says yes where
     both patterns match the whole text."""
@@ -672,7 +676,7 @@ def test_plain_decimals_are_numbers_for_both_patterns():
     from rbcli.api import options
     from rbcli.io import units as un
 
-    @settings(max_examples=3000, deadline=None)
+    @settings(max_examples=sample(300, 3000), deadline=None)
     @given(st.text("0123456789.+-eE \u2212\u0663\u00b2x", max_size=8))
     def check(s):
         if un.plain_decimal(s):

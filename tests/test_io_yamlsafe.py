@@ -12,6 +12,8 @@ import json
 import math
 
 import pytest
+
+from conftest import sample
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -517,19 +519,22 @@ def _load_or_input_error(text):
     to_python(node)
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=None)
 @given(st.text())
 def test_random_text_only_ever_gives_a_node_or_input_error(text):
     _load_or_input_error(text)
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=None)
 @given(st.binary())
 def test_random_bytes_only_ever_give_a_node_or_input_error(data):
     _load_or_input_error(data)
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=None)
 @given(st.text(alphabet="[]{}:,-?&*!|>'\"#%@` \n\t\rab01.eE+~\x07\x85\u2028\ufeff<", max_size=60))
 def test_random_yamlish_text_only_ever_gives_a_node_or_input_error(text):
     _load_or_input_error(text)

@@ -13,6 +13,8 @@ import math
 from pathlib import Path
 
 import pytest
+
+from conftest import sample
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -140,7 +142,8 @@ ODD_ROWS = st.lists(st.dictionaries(st.sampled_from(["a", "b", 1, True, 1.0]), s
 # ----------------------------------------------------------------------------------- tests
 
 
-@settings(max_examples=500, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(50, 500), deadline=None)
 @given(DOCS)
 def test_indented_json_is_the_oracles(doc):
     assert dumps(doc) == _oracle(jsonable(doc)) + "\n"  # both after the one check (no -0.0)
@@ -148,7 +151,8 @@ def test_indented_json_is_the_oracles(doc):
     assert json.loads(dumps(doc)) == doc
 
 
-@settings(max_examples=500, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(50, 500), deadline=None)
 @given(st.one_of(ROWS(), RESULTS, st.lists(RESULTS, min_size=2, max_size=3)))
 def test_rows_are_the_oracles(doc):
     data = jsonable(doc)
@@ -157,7 +161,8 @@ def test_rows_are_the_oracles(doc):
     assert dumps(doc, plain=True) == _old_pretty(doc) + "\n"
 
 
-@settings(max_examples=400, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(40, 400), deadline=None)
 @given(st.one_of(ODD_ROWS, st.builds(lambda rows: {"parts": rows}, ODD_ROWS)))
 def test_data_jsonable_would_refuse_gives_the_old_text_or_error(doc):
     assert _new_or_error(doc) == _old_or_error(doc)
@@ -199,7 +204,8 @@ def test_every_golden_json_document_is_the_oracles():
     assert seen > 20
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(30, 300), deadline=None)
 @given(DOCS)
 def test_plain_dumps_of_jsonable_data_is_dumps(doc):
     # the commands pass a result's to_json() (jsonable's result) with plain=True

@@ -9,10 +9,13 @@ rich's rendering of every item, exactly.
 
 from __future__ import annotations
 
+import io
+
+import pytest
+
+from conftest import sample
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-import io
 
 from rbcli.env import Env
 from rbcli.render.text import Doc, Heading, Note, Table, _plain, _rich_printer
@@ -40,7 +43,8 @@ def _rich(items, width: int) -> str:
     return "".join(render(item) for item in items)
 
 
-@settings(max_examples=400, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(50, 400), deadline=None)
 @given(st.lists(ITEMS, min_size=1, max_size=4), st.integers(20, 120))
 def test_plain_layout_is_richs(items, width):
     doc = Doc(Env(io.StringIO(), io.StringIO(), False, color=False, width=width), list(items))

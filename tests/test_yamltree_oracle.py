@@ -20,6 +20,8 @@ import sys
 from pathlib import Path
 
 import pytest
+
+from conftest import sample
 import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -461,13 +463,15 @@ def documents(draw) -> str:
 _SLOW_OK = [HealthCheck.function_scoped_fixture, HealthCheck.too_slow]
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=_SLOW_OK)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=None, suppress_health_check=_SLOW_OK)
 @given(text=documents())
 def test_generated_documents(text, monkeypatch):
     check_same(text, monkeypatch)
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=_SLOW_OK)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 300), deadline=None, suppress_health_check=_SLOW_OK)
 @given(words=st.lists(_plain, min_size=1, max_size=20))
 def test_generated_plain_scalars(words, monkeypatch):
     """Plain scalars as values of a block mapping and as items of a block sequence."""
