@@ -24,8 +24,11 @@ def _without_file(d: dict) -> dict:
     return {k: v for k, v in d.items() if k != "file"}
 
 
-@pytest.mark.parametrize("omega", OMEGAS)
-@pytest.mark.parametrize("name", EXAMPLES)
+# by default every example with one of the omegas in turn (and every omega with six
+# examples); every pair under -m slow
+@pytest.mark.parametrize("name, omega", sampled_params(
+    [(n, w) for n in EXAMPLES for w in OMEGAS], lambda nw: (EXAMPLES.index(nw[0]) - OMEGAS.index(nw[1])) % 4 == 0,
+    ids=lambda nw: f"{nw[0]}-{nw[1]}", multi=True))
 def test_to_json_is_the_cli_json(cli, name, omega):
     path = f"examples/{name}.yaml"
     r = cli("precess", path, "--omega", omega, "--json")

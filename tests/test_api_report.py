@@ -50,8 +50,8 @@ def _cli_file(cli, tmp_path, name, args, ext):
     return r, out
 
 
-# by default one case in each format (two_disk_rotor, the most sections, as HTML; top as
-# Markdown); every case in both formats under -m slow
+# by default one case in each format (two_disk_rotor, the most sections, as HTML; bracket as
+# Markdown, and top's Markdown with its figures below); every case in both formats under -m slow
 @pytest.mark.parametrize("name", sampled_params(sorted(CASES), lambda n: n == "two_disk_rotor",
                                                 ids=sorted(CASES)))
 def test_html_text_is_the_file_the_cli_writes(cli, tmp_path, name):
@@ -62,7 +62,7 @@ def test_html_text_is_the_file_the_cli_writes(cli, tmp_path, name):
     assert text == out.read_text(encoding="utf-8")
 
 
-@pytest.mark.parametrize("name", sampled_params(sorted(CASES), lambda n: n == "top",
+@pytest.mark.parametrize("name", sampled_params(sorted(CASES), lambda n: n == "bracket",
                                                 ids=sorted(CASES)))
 def test_markdown_text_is_the_file_the_cli_writes(cli, tmp_path, name):
     args, kw = CASES[name]

@@ -13,6 +13,7 @@ import math
 import pytest
 
 import rbcli
+from conftest import sampled_params
 from rbcli.errors import option_name
 from rbcli.api.rollcheck import RollcheckOptions, RollcheckResult, run
 
@@ -46,8 +47,12 @@ def _cli_json(cli, name, args):
     return r, d
 
 
-@pytest.mark.parametrize("name", ROUND)
-@pytest.mark.parametrize("args, kw", OPTION_SETS, ids=[" ".join(a) or "default" for a, _ in OPTION_SETS])
+# by default every body with every third option set in turn (and every option set); every
+# pair under -m slow
+@pytest.mark.parametrize("name, args, kw", sampled_params(
+    [(n, a, k) for n in ROUND for a, k in OPTION_SETS],
+    lambda nak: (ROUND.index(nak[0]) - [a for a, _ in OPTION_SETS].index(nak[1])) % 3 == 0,
+    ids=lambda nak: f"{' '.join(nak[1]) or 'default'}-{nak[0]}", multi=True))
 def test_api_json_is_the_cli_json(cli, name, args, kw):
     body = rbcli.load(f"examples/{name}.yaml")
     if name in OFF_CENTRE:  # refused alike, with the CLI's line

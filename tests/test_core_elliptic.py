@@ -15,7 +15,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from conftest import sample
+from conftest import sample, sampled_params
 
 from rbcli.core import elliptic as E
 
@@ -120,8 +120,14 @@ def test_incomplete_F_any_angle(mc):
             assert float(abs(mp.mpf(g) - ref) / cond) / EPS < 8
 
 
-@pytest.mark.parametrize("n", [-50.0, -9.99, -3.0, -1.0, -0.5, -5.7e-5, 0.0, 0.3, 0.9])
-@pytest.mark.parametrize("mc", [0.7, 1e-3, 1e-10, 1e-15])
+_PI_N = [-50.0, -9.99, -3.0, -1.0, -0.5, -5.7e-5, 0.0, 0.3, 0.9]
+_PI_MC = [0.7, 1e-3, 1e-10, 1e-15]
+
+
+# by default half the (n, mc) grid, every n and every mc among it; all under -m slow
+@pytest.mark.parametrize("n, mc", sampled_params([(n, mc) for mc in _PI_MC for n in _PI_N],
+                                                 lambda p: (_PI_N.index(p[0]) + _PI_MC.index(p[1])) % 2 == 0,
+                                                 ids=lambda p: f"{p[1]}-{p[0]}", multi=True))
 def test_complete_and_incomplete_Pi(n, mc):
     """Pi(n|m) and Pi(n; phi|m) for |phi| <= pi/2 from (sin phi, cos phi).
 

@@ -93,10 +93,11 @@ def test_a_closed_stdin_does_not_matter_to_a_body_file(sh):
 # --------------------------------------------------------------------------- encodings
 
 
-@pytest.mark.parametrize("args", [("principal", "examples/cube.yaml"),
-                                  ("inertia", "examples/cube.yaml", "--units", "mm,g"),
-                                  ("precess", "examples/football.yaml", "--omega", "0.3,0,1"),
-                                  ("inertia", "-e", "{shape: box, mass: '2 µx·m²', size: [1, 1, 1]}")])
+@pytest.mark.parametrize("args", sampled_params([("principal", "examples/cube.yaml"),
+                                                 ("inertia", "examples/cube.yaml", "--units", "mm,g"),
+                                                 ("precess", "examples/football.yaml", "--omega", "0.3,0,1"),
+                                                 ("inertia", "-e", "{shape: box, mass: '2 µx·m²', size: [1, 1, 1]}")],
+                                                [1, 3], ids=["principal", "units", "precess", "message"]))
 def test_an_ascii_terminal_gets_ascii(cli_proc, args):
     r = cli_proc(*args, env={"PYTHONIOENCODING": "ascii"})
     assert r.code in (0, 2), r.err

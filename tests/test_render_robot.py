@@ -13,7 +13,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 import rbcli
-from conftest import EXAMPLES
+from conftest import EXAMPLES, sampled_params
 from rbcli.core.inertial import quaternion_wxyz, roll_pitch_yaw
 from rbcli.render import robot
 
@@ -54,8 +54,12 @@ def parse(fmt: str, out: str) -> dict:
     return {"mass": mass, "com": com, "R": np.asarray(R), "J": np.asarray(J, dtype=float)}
 
 
-@pytest.mark.parametrize("fmt", robot.FORMATS)
-@pytest.mark.parametrize("name", ALL)
+# by default every example in one of the formats in turn (and every format); every pair
+# under -m slow
+@pytest.mark.parametrize("name, fmt", sampled_params(
+    [(n, f) for n in ALL for f in robot.FORMATS],
+    lambda nf: (ALL.index(nf[0]) - list(robot.FORMATS).index(nf[1])) % len(robot.FORMATS) == 0,
+    ids=lambda nf: f"{nf[1]}-{nf[0]}", multi=True))
 def test_body_axes_element_is_the_json_exactly(cli, fmt, name):
     path = str(EXAMPLES / name)
     r = cli("inertia", path, "--format", fmt)

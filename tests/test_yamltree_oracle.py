@@ -479,12 +479,13 @@ def test_generated_plain_scalars(words, monkeypatch):
     check_same("".join(f"- {w}\n" for w in words), monkeypatch)
 
 
+@pytest.mark.sampled
 def test_generated_documents_are_varied(monkeypatch):
     """The document strategy reaches trees and refusals of every kind (a sanity check
     on the generator, not on the loader)."""
     seen: set[str] = set()
 
-    @settings(max_examples=200, deadline=None, database=None,
+    @settings(max_examples=sample(80, 200), deadline=None, database=None,
               suppress_health_check=[HealthCheck.function_scoped_fixture])
     @given(documents())
     def collect(text):
