@@ -17,9 +17,9 @@ elliptic integral of the third kind): :attr:`PrecessResult.motion` is a
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rbcli._startup import frozen
 from rbcli.api import options as o
 from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, ParamError
@@ -61,7 +61,7 @@ def _count(value: Any) -> int:
     return n
 
 
-@frozen
+@dataclass(frozen=True)
 class PrecessOptions:
     """The checked options of :func:`precess` (SI).
 
@@ -117,7 +117,7 @@ class PrecessOptions:
                    samples=n_rows, verify=bool(verify), given=given, warnings=warns)
 
 
-@frozen(eq=False)
+@dataclass(frozen=True, eq=False)
 class PrecessResult(Result):
     """The torque-free motion of a body and what was asked of it.
 
