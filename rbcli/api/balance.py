@@ -26,7 +26,7 @@ from rbcli.api import options as op
 from rbcli.api.fieldbalance import (  # noqa: F401  (re-exported: rbcli.field_balance)
     FieldBalanceOptions, FieldBalanceResult, field_balance,
 )
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -503,7 +503,7 @@ class BalanceResult(Result):
         d["mark_source"] = self.mark_source
         d["warnings"] = list(self.warnings)
         d["name"] = self.body.name
-        return d
+        return jsonable(d)
 
 
 # ----------------------------------------------------------------------------- the service

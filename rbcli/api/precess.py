@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rbcli.api import options as o
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import InputError, Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -188,7 +188,7 @@ class PrecessResult(Result):
             out["at"] = self.at_json
         if self.check is not None:
             out["verify"] = self.check.to_json()
-        return out
+        return jsonable(out)
 
     @property
     def return_code(self) -> int:

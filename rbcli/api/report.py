@@ -295,13 +295,15 @@ class ReportResult(Result):
 
     def to_json(self) -> dict[str, Any]:
         """The sections (key, title, whether included, why not) and the failed checks."""
-        return {
+        from rbcli.api.result import jsonable
+
+        return jsonable({
             "name": self.name,
             "sections": [{"key": s.key, "title": s.title, "included": s.skipped is None,
                           "reason": s.skipped} for s in self.sections],
             "failed": list(self.failed),
             "warnings": list(self.warnings),
-        }
+        })
 
 
 # ----------------------------------------------------------------------------- the sections

@@ -16,10 +16,18 @@ from rbcli.errors import ExitStatus, NonFiniteResult
 
 
 class Result:
-    """Mixin of every service result (use with ``@dataclass(frozen=True)``)."""
+    """Mixin of every service result (use with ``@dataclass(frozen=True)``).
+
+    A result is a value: after it is made, every field is :func:`frozen` (arrays read-only,
+    mappings read-only, lists as tuples, nested dataclasses likewise), so nothing a caller
+    does to it changes what it says.
+    """
 
     #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
     warnings: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        freeze_fields(self)
 
     def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
         raise NotImplementedError
@@ -28,6 +36,45 @@ class Result:
     def return_code(self) -> int:
         """0, or 1 (:attr:`ExitStatus.CHECK_FAILED`) when a check asked for failed."""
         return int(ExitStatus.OK)
+
+
+def frozen(value: Any, _depth: int = 0) -> Any:
+    """``value`` made immutable, deeply: numpy arrays read-only (a read-only copy when the
+    array is writable), dicts as read-only mappings, lists as tuples, the fields of
+    dataclass instances likewise (in place: :func:`freeze_fields`). Other objects are
+    returned as they are (a :class:`rbcli.model.Body` is frozen where it is made)."""
+    import dataclasses
+    from types import MappingProxyType
+
+    if _depth > 20:
+        return value
+    t = type(value)
+    if t.__name__ == "ndarray" and t.__module__ == "numpy":
+        if value.flags.writeable:
+            value = value.copy()
+            value.setflags(write=False)
+        return value
+    if t is dict:
+        return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
+    if t is list:
+        return tuple(frozen(v, _depth + 1) for v in value)
+    if t is tuple:
+        items = tuple(frozen(v, _depth + 1) for v in value)
+        return value if all(a is b for a, b in zip(items, value)) else items
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        freeze_fields(value, _depth + 1)
+    return value
+
+
+def freeze_fields(obj: Any, _depth: int = 0) -> None:
+    """Replace each field of the dataclass instance ``obj`` by :func:`frozen` of it."""
+    import dataclasses
+
+    for f in dataclasses.fields(obj):
+        v = getattr(obj, f.name)
+        fv = frozen(v, _depth)
+        if fv is not v:
+            object.__setattr__(obj, f.name, fv)
 
 
 def jsonable(obj: Any) -> Any:

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from rbcli.api import options as op
 from rbcli.api.options import symmetry_tolerance
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -276,7 +276,7 @@ class TopResult(Result):
             out["verify"] = self.verify.to_json()
             if self.real_body is not None:
                 out["verify"]["real_body"] = self.real_body.to_json()
-        return out
+        return jsonable(out)
 
     @property
     def return_code(self) -> int:
@@ -540,7 +540,7 @@ class GyrocompassResult(Result):
             if self.asymmetry is not None:
                 out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
             out["name"] = self.body.name
-        return out
+        return jsonable(out)
 
 
 def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
