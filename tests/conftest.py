@@ -310,3 +310,11 @@ def cli_proc():
     script=False, imports=False, tty=False, redirect="")``; ``cli_proc.start(...)`` /
     ``cli_proc.finish(p)``."""
     return run_process
+
+
+def as_cli(data):
+    """A result's ``to_json()`` as the command's ``--json`` prints it: its remarks and warnings
+    name options (``--radius``) where the API names parameters (``radius``)."""
+    from rbcli.errors import option_name, spelled_data
+
+    return spelled_data(data, option_name)
