@@ -7,6 +7,9 @@ import math
 import warnings
 
 import numpy as np
+import pytest
+
+from conftest import sample
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -56,7 +59,8 @@ def _walk(obj, path=()):
         yield path, obj
 
 
-@settings(max_examples=500, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(60, 500), deadline=None)
 @given(TREES)
 def test_jsonable_is_plain_json_or_names_the_first_non_finite_number(obj):
     import json

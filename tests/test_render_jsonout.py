@@ -8,6 +8,8 @@ import json
 from pathlib import Path
 
 import pytest
+
+from conftest import sample
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -49,7 +51,8 @@ DOCS = st.recursive(SCALARS, lambda kids: st.one_of(st.lists(kids, max_size=4),
 # ----------------------------------------------------------------------------------- tests
 
 
-@settings(max_examples=500, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(50, 500), deadline=None)
 @given(DOCS)
 def test_indented_json_is_the_oracles(doc):
     data = jsonable(doc)  # the one check (no -0.0, no NaN), as results give their JSON
@@ -57,7 +60,8 @@ def test_indented_json_is_the_oracles(doc):
     assert json.loads(dumps(data)) == doc
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.sampled
+@settings(max_examples=sample(40, 300), deadline=None)
 @given(DOCS)
 def test_json_lines_are_compact_json(doc):
     data = jsonable(doc)
