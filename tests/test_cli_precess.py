@@ -475,13 +475,14 @@ def test_plot_formats(cli, tmp_path, ext, magic):
         assert "Notebook" in text or "precess" in text  # titled (fonts as paths: check the id)
 
 
-def test_plot_symmetric_separatrix_and_rest(cli, tmp_path):
-    for i, (expr, w) in enumerate([("{shape: disk, mass: 1, radius: 1}", "0.1,0,5"),
-                                   (I123, f"{0.1 * math.sqrt(3)!r},1,0.1"), (I123, "0,0,0"),
-                                   ("{shape: sphere, mass: 1, radius: 1}", "0,1,0")]):
-        f = tmp_path / f"s{i}.png"
-        assert cli("precess", "-e", expr, "--omega", w, "--plot", str(f), "--duration", "3").code == 0
-        assert f.stat().st_size > 1000
+@pytest.mark.parametrize("expr, w", sampled_params(
+    [("{shape: disk, mass: 1, radius: 1}", "0.1,0,5"), (I123, f"{0.1 * math.sqrt(3)!r},1,0.1"),
+     (I123, "0,0,0"), ("{shape: sphere, mass: 1, radius: 1}", "0,1,0")],
+    [1, 2], multi=True, ids=["symmetric", "separatrix", "rest", "sphere"]))
+def test_plot_symmetric_separatrix_and_rest(cli, tmp_path, expr, w):
+    f = tmp_path / "s.png"
+    assert cli("precess", "-e", expr, "--omega", w, "--plot", str(f), "--duration", "3").code == 0
+    assert f.stat().st_size > 1000
 
 
 def test_plot_unknown_extension_and_input(cli, tmp_path):
