@@ -19,6 +19,8 @@ on this machine (so a loaded machine moves the delays with the run), up to past 
 default one or two moments per command, every signal used; ``pytest -m slow`` sweeps 40
 fractions for every signal and command (``inertia``, ``top --plot``, ``report -o``, and
 ``inertia`` of a 5 MB ASCII OBJ mesh, whose reading is the long step).
+``RBCLI_SIGNAL_TALLY=FILE`` appends each run's outcome (command, signal, delay, exit
+status, files left) to FILE.
 
 Before rbcli's first line runs, the interpreter is starting (its own initialisation, ``site``,
 then the console script's ``import re`` or ``python -m``'s runpy): no rbcli code can act
@@ -177,6 +179,10 @@ def _sweep(cli_proc, tmp_path, inputs, reference, name, plan, after_ready=True):
                  f"{'after the handlers' if after_ready else 'from the spawn'} "
                  f"({'rbcli' if script else 'python -m rbcli'})")
         _check(name, r, cwd, sig, ready, ref, where)
+        if os.environ.get("RBCLI_SIGNAL_TALLY"):  # a record of the outcomes, for reports
+            with open(os.environ["RBCLI_SIGNAL_TALLY"], "a") as f:
+                f.write(f"{name} {signal.Signals(sig).name} {'ready' if ready else 'start'} "
+                        f"{delay:.4f} {r.code} {sorted(os.listdir(cwd))}\n")
 
 
 def _fractions(reference, name, plan):
