@@ -17,7 +17,10 @@ EXIT_STATUS = [
     ("2", "bad usage or bad input: the message on standard error says file:line:column, what is "
           "wrong and what is allowed."),
     ("70", "an internal error (a bug in rbcli), said in one line; --debug shows the traceback."),
-    ("130", "interrupted (Ctrl-C)."),
+    ("130", "interrupted (Ctrl-C, SIGINT), at any moment: one line on standard error, no output "
+            "file left half-written."),
+    ("143", "terminated (SIGTERM), as 130."),
+    ("129", "hung up (SIGHUP), as 130."),
 ]
 
 ENVIRONMENT = [
