@@ -31,10 +31,11 @@ How a signal is handled (:func:`_handler`):
 - Once the run is over (:func:`exit_process`) it is only recorded.
 
 :func:`exit_process` ends the process without finalising the interpreter: it runs the
-``atexit`` functions, flushes the standard streams and calls ``os._exit``. Finalisation is
-where the remaining native aborts came from ("Fatal Python error: PyThreadState_Get ...
-finalizing": a signal handled, or a progress thread still running, while modules were
-being torn down), and there is nothing in it a finished run needs.
+``atexit`` functions, flushes the standard streams and calls ``os._exit``. The native
+aborts ("Fatal Python error: PyThreadState_Get ... finalizing", exit -6) happened in
+finalisation — modules being torn down after an interrupt, with an extension module left
+half-imported or a progress thread still running — and there is nothing in it that a
+finished run needs.
 
 A library caller of :func:`rbcli.cli.main` (tests, embedding) gets the in-process subset
 (:func:`install` with ``process=False``): SIGTERM and SIGHUP raise :class:`Terminated`
