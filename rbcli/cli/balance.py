@@ -67,9 +67,7 @@ def balance(
     from rbcli.errors import InputError
     from rbcli.render import balance as rb
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    su = rb.ShopUnits(units)
+    e, out, su = c.start(json_, fmt, units, shop=True)
     b = c.load_one(body, expr, e)
     o = api.BalanceOptions.parse(
         b, shaft=shaft, through=through, mark=mark, zero_mark_deg=zero_mark_deg,

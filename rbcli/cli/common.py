@@ -63,6 +63,21 @@ def said_json(data: Any) -> Any:
     return spelled_data(data, option_name)
 
 
+def start(json_: bool, fmt: str | None, units: str | None, *, shop: bool = False,
+          extra: tuple[str, ...] = ()):
+    """What every command does first: (the environment, the output format, the table units).
+
+    The output format from ``--json``/``--format`` (:func:`output_format`, ``extra`` formats
+    allowed), the units of the tables from ``--units`` (:class:`rbcli.render.units.DisplayUnits`,
+    or the balance tables' :class:`~rbcli.render.units.ShopUnits` with ``shop``). Bad values
+    are one line, exit 2, before any body is read."""
+    from rbcli.render.units import DisplayUnits, ShopUnits
+
+    e = env()
+    out = output_format(json_, fmt, extra)
+    return e, out, ShopUnits(units) if shop else DisplayUnits.parse(units)
+
+
 def env():
     from rbcli.env import Env
 

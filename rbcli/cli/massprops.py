@@ -151,11 +151,7 @@ def principal(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    out = c.output_format(json_, fmt)
-    e = c.env()
-    from rbcli.render.units import DisplayUnits
-
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
     from rbcli.api import massprops as api
 
     api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body

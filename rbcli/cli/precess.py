@@ -73,11 +73,8 @@ def precess(
 ) -> None:
     from rbcli.api import precess as api
     from rbcli.errors import InputError
-    from rbcli.render.units import DisplayUnits
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
 
     # --- option values, checked before the body is read (bad usage is bad usage)
     opts = api.PrecessOptions.parse(None, omega=omega, at=at, duration=duration, samples=samples,
