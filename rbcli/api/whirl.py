@@ -382,12 +382,12 @@ def _rotor(body: Body, o: WhirlOptions, warnings: list[str]):
             "raise {symmetry_tol} up to 10 % to answer anyway")
     if asym > ROUND_OFF:
         warnings.append(Note(
-            f"whirl: the moments across the shaft differ by {100.0 * asym:.3g} % ({I1:.6g} and "
+            f"the moments across the shaft differ by {100.0 * asym:.3g} % ({I1:.6g} and "
             f"{I2:.6g} kg m²): answered for the symmetrised rotor, It = {It:.6g} kg m² (within "
             "{symmetry_tol}); its frequencies may be off by about half that"))
     if unb.tilt_deg > 0.0 and abs(unb.couple) > unb.tol_couple:
         warnings.append(Note(
-            f"whirl: the rotor's nearest principal axis is tilted {unb.tilt_deg:.3g}° from the "
+            f"the rotor's nearest principal axis is tilted {unb.tilt_deg:.3g}° from the "
             f"shaft (couple unbalance {abs(unb.couple):.6g} kg m², {100.0 * coupling:.3g} % of "
             "It): its products of inertia force the rotor once per revolution (the couple "
             "unbalance in the response); their effect on the frequencies is neglected"))
@@ -517,7 +517,7 @@ def _run(body: Body, o: WhirlOptions) -> WhirlResult:
             force_phase_deg=resp.force_phase_deg[i]) for i, z in enumerate(o.bearings)),
         peaks=tuple(peak_rows), at_speed=at_rows)
     if forcing.zero:
-        warnings.append(Note("whirl: the rotor is balanced (no static or couple unbalance about "
+        warnings.append(Note("the rotor is balanced (no static or couple unbalance about "
                              "the shaft): its unbalance response is zero; give {unbalance} and "
                              "{unbalance_planes} to see the response to a test unbalance"))
 
@@ -545,7 +545,7 @@ def _run(body: Body, o: WhirlOptions) -> WhirlResult:
         margins = Margins(rule=API_RULE, operating_speed=o.speed, checks=tuple(checks),
                           passed=None if not checks else all(c.passed for c in checks))
         if not checks and not forcing.zero:
-            warnings.append(Note("whirl: no response peak in the speed range: no critical speed "
+            warnings.append(Note("no response peak in the speed range: no critical speed "
                                  "to judge against the operating speed (widen {speed_range} to "
                                  "see peaks beyond it)"))
 
@@ -612,7 +612,7 @@ def _unstable_note(cb, st: Stability, stable_at, o: WhirlOptions) -> str:
     at = ""
     if stable_at is False:
         at = " AT THE OPERATING SPEED {speed}"
-    return Note(f"whirl: UNSTABLE{at}: a whirl mode grows (damping ratio down to "
+    return Note(f"UNSTABLE{at}: a whirl mode grows (damping ratio down to "
                 f"{st.least_damping_ratio:.3g} at {st.least_damping_speed:.6g} rad/s{where}); "
                 "the cross-coupled stiffness feeds it more than the damping takes out")
 
