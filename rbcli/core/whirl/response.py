@@ -30,8 +30,9 @@ Omega^2 (P - z_1 U)/(z_2 - z_1)`` (P about z = 0) for two bearings.
 Peaks and amplification factor (API 684, 2nd ed. 2005, SP6.8.2.1; API 617, 8th ed. 2014,
 §6.8.2.4): at each local maximum Nc of a bearing's amplitude, ``AF = Nc / (N2 - N1)``
 with N1 < Nc < N2 the speeds where the amplitude is the peak's 1/sqrt(2) (the half-power
-points). The peak is refined by golden-section search and N1, N2 by Brent's method, each
-to ~1e-12 of the speed.
+points). The peak is the root of the amplitude's exact slope (:func:`amplitude_slope`)
+and N1, N2 the roots of amplitude - peak/sqrt 2, each by Brent's method to ~1e-12 of the
+speed or better.
 
 Separation margin (API 617 8th ed. §6.8.2.5 / API 684 SP6.8.2.10, as implemented in
 ROSS, ``ross/api_report.py`` of github.com/petrobras/ross): AF < 2.5 needs no margin;
@@ -159,8 +160,36 @@ def response(rotor: Rotor, forcing: Forcing, speeds) -> Response:
 
 def amplitude(rotor: Rotor, forcing: Forcing, bearing: int, speed: float) -> float:
     """m, the semi-major axis of bearing ``bearing``'s orbit at one speed."""
-    D, _ = bearing_motion(rotor, forcing, np.array([float(speed)]))
-    return float(_orbit(D[bearing, :, 0], D[bearing, :, 1])[0][0])
+    return amplitude_slope(rotor, forcing, bearing, speed)[0]
+
+
+def amplitude_slope(rotor: Rotor, forcing: Forcing, bearing: int, speed: float) -> tuple[float, float]:
+    """(A, dA/dOmega): the semi-major axis (m) of bearing ``bearing``'s orbit at ``speed``
+    and its derivative with the speed (m s/rad), exactly.
+
+    ``Q = Z^-1 F`` with ``Z = K - W^2 M + i W (C + W G)``, ``F = W^2 f``; so
+    ``dQ = Z^-1 (2 W f - dZ Q)`` with ``dZ = -2 W M + i (C + 2 W G)``. The orbit's parts
+    ``D_f = (D_x + i D_y)/2``, ``D_b = conj(D_x - i D_y)/2`` and ``A = |D_f| + |D_b|``, so
+    ``dA = Re(conj(D_f) dD_f)/|D_f| + Re(conj(D_b) dD_b)/|D_b|``."""
+    W = float(speed)
+    M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
+    Z = K - W * W * M + 1j * W * (C + W * G)
+    dZ = -2.0 * W * M + 1j * (C + 2.0 * W * G)
+    f = forcing_vector(forcing)
+    Q = np.linalg.solve(Z, W * W * f)
+    dQ = np.linalg.solve(Z, 2.0 * W * f - dZ @ Q)
+    a = float(rotor.arms()[bearing])
+    Dx, Dy = Q[0] + a * Q[3], Q[1] - a * Q[2]
+    dDx, dDy = dQ[0] + a * dQ[3], dQ[1] - a * dQ[2]
+    parts = ((0.5 * (Dx + 1j * Dy), 0.5 * (dDx + 1j * dDy)),
+             (0.5 * np.conj(Dx - 1j * Dy), 0.5 * np.conj(dDx - 1j * dDy)))
+    A = dA = 0.0
+    for d, dd in parts:
+        r = abs(d)
+        A += r
+        if r > 0.0:
+            dA += float((np.conj(d) * dd).real) / r
+    return float(A), float(dA)
 
 
 def forcing_vector(forcing: Forcing) -> np.ndarray:
@@ -244,6 +273,19 @@ def _golden_max(f, a: float, b: float, tol: float) -> float:
     return 0.5 * (a + b)
 
 
+def _peak(rotor: Rotor, forcing: Forcing, i: int, lo: float, hi: float) -> float:
+    """The speed of the amplitude's maximum in [lo, hi]: the root of its exact slope by
+    Brent's method when the slope changes sign there (to ~1e-15 of the speed), else
+    golden-section search on the amplitude (to ~1e-8: the maximum is flat)."""
+    from rbcli.core.roots import brentq
+
+    slope = lambda x: amplitude_slope(rotor, forcing, i, x)[1]  # noqa: E731
+    s_lo, s_hi = slope(lo), slope(hi)
+    if s_lo > 0.0 > s_hi:
+        return brentq(slope, lo, hi, xtol=1e-14 * hi, rtol=4e-16)
+    return _golden_max(lambda x: amplitude(rotor, forcing, i, x), lo, hi, 1e-12 * hi)
+
+
 def _half_power(f, Nc: float, level: float, grid: np.ndarray, amps: np.ndarray, j: int,
                 direction: int, limit: float) -> float | None:
     """The speed beside the peak (grid index j) where f = level, going down (direction -1)
@@ -294,7 +336,7 @@ def peaks(rotor: Rotor, forcing: Forcing, res: Response) -> list[Peak]:
         for j in range(1, len(W) - 1):
             if not (amps[j] > amps[j - 1] and amps[j] >= amps[j + 1]):
                 continue
-            Nc = _golden_max(f, float(W[j - 1]), float(W[j + 1]), 1e-12 * float(W[j + 1]))
+            Nc = _peak(rotor, forcing, i, float(W[j - 1]), float(W[j + 1]))
             A = f(Nc)
             level = SQRT_HALF * A
             N1 = _half_power(f, Nc, level, W, amps, j, -1, 0.0)
