@@ -476,6 +476,11 @@ def _run(body: Body, o: WhirlOptions) -> WhirlResult:
 
     # -- unbalance response
     resp = W.response(rotor, forcing, speeds)
+    if len(resp.speeds) < len(speeds):
+        gone = sorted(set(float(x) for x in speeds) - set(float(x) for x in resp.speeds))
+        warnings.append(Note("the response is unbounded at " + ", ".join(f"{x:.6g}" for x in gone)
+                             + " rad/s (an undamped critical speed on the grid): those speeds are "
+                             "left out of the response"))
     damped = rotor.damped
     peaks = W.peaks(rotor, forcing, resp) if damped else []
     peak_rows = []

@@ -184,17 +184,18 @@ def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo:
     # critical speeds
     crows = []
     for c in res.critical_speeds:
-        crows.append((f"{c.order}×", num(c.speed * RPM, digits), num(c.speed, digits), c.mode, c.whirl,
-                      "—" if c.node is None else du.show(c.node, "length", digits),
+        crows.append((f"{c.order}×", num(c.speed * RPM, digits) + ("" if c.in_range else " *"), num(c.speed, digits),
+                      c.mode, c.whirl, "—" if c.node is None else du.show(c.node, "length", digits),
                       "—" if c.damped_speed is None else num(c.damped_speed * RPM, digits),
                       "—" if c.damping_ratio is None else num(c.damping_ratio, d4),
-                      "yes" if c.in_range else "no",
                       "—" if c.excited is None else ("yes" if c.excited else "no")))
     doc.table("critical speeds (undamped: an eigenproblem in the speed; damped: a root solve)",
               ("order", "speed [rpm]", "[rad/s]", "mode", "whirl", f"node z [{L}]", "damped [rpm]",
-               "ζ", "in range", "driven"), crows, right=(1, 2, 5, 6, 7))
-    doc.note("ζ: the damping ratio at the damped critical speed; driven: the unbalance excites the "
-             "mode (order 1 only).")
+               "ζ", "driven"), crows, right=(1, 2, 5, 6, 7))
+    if res.critical_speeds:
+        doc.note("ζ: the damping ratio at the damped critical speed; driven: the unbalance excites the "
+                 "mode (order 1 only)" + ("; *: outside the speed range" if not all(
+                     c.in_range for c in res.critical_speeds) else "") + ".")
     if not res.critical_speeds:
         doc.note("no critical speed: no whirl frequency meets an n× line.")
     for m in res.no_crossings:

@@ -87,13 +87,23 @@ class Forcing:
 
 
 def _amplitudes(rotor: Rotor, forcing: Forcing, speeds: np.ndarray) -> np.ndarray:
-    """(N, 4) complex ndarray: Q at each speed."""
+    """(N, 4) complex ndarray: Q at each speed; NaN at a speed where the dynamic stiffness
+    is singular (an undamped critical speed: the response is unbounded there)."""
     W = np.asarray(speeds, dtype=float)
     M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
     Z = (K[None, :, :] - (W**2)[:, None, None] * M[None, :, :]
          + 1j * W[:, None, None] * (C[None, :, :] + W[:, None, None] * G[None, :, :]))
     F = (W**2)[:, None] * forcing_vector(forcing)[None, :]
-    return np.linalg.solve(Z, F[:, :, None])[:, :, 0]
+    try:
+        return np.linalg.solve(Z, F[:, :, None])[:, :, 0]
+    except np.linalg.LinAlgError:  # one speed at least is exactly critical: each on its own
+        out = np.full((len(W), 4), np.nan, dtype=complex)
+        for j in range(len(W)):
+            try:
+                out[j] = np.linalg.solve(Z[j], F[j])
+            except np.linalg.LinAlgError:
+                pass
+        return out
 
 
 def _orbit(Dx: np.ndarray, Dy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -147,8 +157,12 @@ def bearing_motion(rotor: Rotor, forcing: Forcing, speeds) -> tuple[np.ndarray, 
 
 
 def response(rotor: Rotor, forcing: Forcing, speeds) -> Response:
-    """The unbalance response at ``speeds`` (rad/s, (N,)); see the module docstring."""
+    """The unbalance response at ``speeds`` (rad/s, (N,)); see the module docstring.
+    A speed where the response is unbounded (exactly an undamped critical speed) is left
+    out."""
     W = np.array(speeds, dtype=float)
+    Q = _amplitudes(rotor, forcing, W)
+    W = W[np.all(np.isfinite(Q), axis=1)]
     D, F = bearing_motion(rotor, forcing, W)
     dm, dn, dp = _orbit(D[:, :, 0], D[:, :, 1])
     fm, _, fp = _orbit(F[:, :, 0], F[:, :, 1])
