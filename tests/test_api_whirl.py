@@ -228,3 +228,23 @@ def test_the_units_a_body_is_written_in_change_nothing():
     np.testing.assert_allclose(cb, ca, rtol=1e-11)
     for x, y in zip(ra, rb):
         np.testing.assert_allclose(y, x, rtol=1e-10, atol=1e-13 * float(x.max()))
+
+
+def test_the_fan_critical_speeds_from_its_mass_properties_by_hand():
+    """The fan's forward 1x critical speeds from rbcli.inertia's mass properties and the
+    sheet's forward eigenproblem det(K_c - W^2 diag(m, It - Ip)) = 0, a quadratic in W^2
+    written out here: (m (It - Ip)) W^4 - (m K11 + (It - Ip) K00) W^2 + det K = 0 with
+    K = sum k [[1, a], [a, a^2]]. Round-off only (a quadratic formula): 1e-12."""
+    body = rbcli.load(FAN)
+    mp = rbcli.inertia(body, about="com")
+    m, zG = mp.mass, mp.com[2]
+    J = np.asarray(mp.inertia)
+    It, Ip = 0.5 * (J[0, 0] + J[1, 1]), J[2, 2]
+    k = 5e6
+    K = sum(k * np.array([[1.0, a], [a, a * a]]) for a in (0.0 - zG, 0.5 - zG))
+    A, B, C = m * (It - Ip), m * K[1, 1] + (It - Ip) * K[0, 0], np.linalg.det(K)
+    roots = sorted(math.sqrt((B + s * math.sqrt(B * B - 4 * A * C)) / (2 * A)) for s in (-1, 1))
+    res = rbcli.whirl(body, **FAN_KW)
+    fwd = sorted(c.speed for c in res.critical_speeds if c.order == 1 and c.whirl == "forward")
+    np.testing.assert_allclose(fwd, roots, rtol=1e-12)
+    assert round(roots[0] * 30 / math.pi, 2) == 1958.84  # the README's and the header's digits
