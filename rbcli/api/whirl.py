@@ -623,7 +623,7 @@ def _unstable_note(cb, st: Stability, stable_at, o: WhirlOptions) -> str:
 
 
 def _plausibility(body: Body, o: WhirlOptions, rotor) -> list[str]:
-    """Bearings more than 10 body sizes from the com (a unit missing?)."""
+    """Bearings or unbalance planes more than 10 body sizes from the com (a unit missing?)."""
     from rbcli.api import options as op
     from rbcli.core.scale import FAR, body_scale
 
@@ -633,6 +633,10 @@ def _plausibility(body: Body, o: WhirlOptions, rotor) -> list[str]:
     far = max(abs(z - rotor.z_com) for z in o.bearings)
     if far > FAR * sc.size:
         out.append(Note(u.far(_opt("bearings"), "a bearing", far, sc.size)))
+    if o.unbalance is not None:
+        far = max(abs(z - rotor.z_com) for z, _ in o.unbalance)
+        if far > FAR * sc.size:
+            out.append(Note(u.far(_opt("unbalance_planes"), "an unbalance plane", far, sc.size)))
     return out
 
 
