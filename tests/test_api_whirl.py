@@ -128,6 +128,8 @@ def test_the_fan_example_numbers():
     (dict(stiffness=1e6), "bearings", "needs the bearing positions"),
     (dict(bearings="-0.2,0.2"), "stiffness", "needs the bearing stiffness"),
     (dict(bearings="-0.2,0.2", stiffness="1e6 N"), "stiffness", "stiffness"),
+    (dict(bearings="-0.2,0.2", stiffness=1e6, symmetry_tol="20 %"), "symmetry_tol", "must be from 0"),
+    (dict(bearings="{ab}", stiffness=1e6), "bearings", "'{ab}' does not start with a number"),
 ])
 def test_bad_values_name_the_parameter(kwargs, param, says):
     # a ParamError, or the option readers' InputError with ``param`` set

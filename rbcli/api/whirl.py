@@ -18,6 +18,8 @@ parameter names).
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -47,8 +49,25 @@ MAX_ORDER = 10
 
 def _opt(param: str) -> str:
     """What the readers of rbcli.api.options put before a message: ``{param}``, spelled
-    as the parameter by the Python API and as the option on the command line."""
+    as the parameter by the Python API and as the option on the command line. (The one
+    place to change when the readers take parameter names.)"""
     return "{" + param + "}"
+
+
+@contextmanager
+def _reading(param: str) -> Iterator[None]:
+    """An InputError raised by an option reader inside names ``param``, and the text after
+    its leading ``{param}`` (the value as typed) is kept literally (a typed brace is not a
+    parameter)."""
+    try:
+        yield
+    except InputError as exc:
+        head = _opt(param)
+        if exc.template.startswith(head):
+            exc.template = head + literal(exc.template[len(head):])
+        if exc.param is None:
+            exc.param = param
+        raise
 
 
 # ----------------------------------------------------------------------------- options
@@ -113,7 +132,7 @@ class WhirlOptions:
         if stiffness is None:
             raise ParamError("stiffness", "needs the bearing stiffness, {stiffness} k (N/m, "
                              "one for all bearings or one per bearing)")
-        with op.naming("bearings"):
+        with _reading("bearings"):
             zs = u.numbers(bearings, "length", _opt("bearings"), counts=tuple(range(1, MAX_BEARINGS + 1)))
         _check_bearings(zs)
         n = len(zs)
@@ -130,7 +149,7 @@ class WhirlOptions:
             if damping_y is not None else cx
         rng = None
         if speed_range is not None:
-            with op.naming("speed_range"):
+            with _reading("speed_range"):
                 a, b = u.numbers(speed_range, "angular_speed", _opt("speed_range"), counts=(2,))
             text = literal(_as_text(speed_range))
             if a < 0.0:
@@ -148,7 +167,7 @@ class WhirlOptions:
         ords = _orders(orders)
         W = None
         if speed is not None:
-            with op.naming("speed"):
+            with _reading("speed"):
                 vals = u.numbers(speed, "angular_speed", _opt("speed"), counts=(1, 2))
             for v in vals:
                 if not v > 0.0:
@@ -159,11 +178,12 @@ class WhirlOptions:
                                  f"first), got {literal(_as_text(speed))}")
             W = (vals[0], vals[-1])
         unb = _unbalance(u, unbalance, unbalance_planes)
-        with op.naming("shaft"):
+        with _reading("shaft"):
             n_shaft = op.direction(shaft, _opt("shaft")) if shaft is not None else None
-        with op.naming("through"):
+        with _reading("through"):
             p_through = u.point(through, _opt("through")) if through is not None else None
-        tol = op.symmetry_tolerance(symmetry_tol)
+        with _reading("symmetry_tol"):
+            tol = op.symmetry_tolerance(symmetry_tol, _opt("symmetry_tol"))
         if n_shaft is not None:
             axis, shaft_source = tuple(n_shaft), "shaft"
         elif body.shaft is not None:
@@ -214,7 +234,7 @@ def _per_bearing(u, value, param: str, kind: str, n: int, *, positive: bool | No
     (damping, positive=False) or any sign (positive=None)."""
     from rbcli.api import options as op
 
-    with op.naming(param):
+    with _reading(param):
         vals = u.numbers(value, kind, _opt(param), counts=(1, n) if n > 1 else (1,))
     unit = "N/m" if kind == "stiffness" else "N s/m"
     for i, v in enumerate(vals):
@@ -282,7 +302,7 @@ def _unbalance(u, unbalance, planes) -> tuple[tuple[float, complex], ...] | None
     texts: list[str] = []
     for it in items:
         texts += [p.strip() for p in str(it).split(",")] if isinstance(it, str) else [it]
-    with op.naming("unbalance_planes"):
+    with _reading("unbalance_planes"):
         zs = u.numbers(planes, "length", _opt("unbalance_planes"), counts=tuple(range(1, MAX_BEARINGS + 1)))
     if len(texts) != len(zs):
         raise ParamError("unbalance", f"{len(texts)} unbalance{'s' if len(texts) != 1 else ''} for "
@@ -295,7 +315,7 @@ def _unbalance(u, unbalance, planes) -> tuple[tuple[float, complex], ...] | None
                              "(amount in kg m unless a unit is given; angle in degrees from the 0° "
                              "mark in the direction of rotation)")
         amount, angle = (s.strip() for s in t.split("@"))
-        with op.naming("unbalance"):
+        with _reading("unbalance"):
             U = u.quantity(amount, "unbalance", _opt("unbalance"))
             a = op.degrees(angle, _opt("unbalance"))
         if U < 0.0 or not math.isfinite(a):
