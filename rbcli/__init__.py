@@ -37,6 +37,8 @@ _API = {
     "rollcheck": "rbcli.api.rollcheck",
     "whirl": "rbcli.api.whirl",
     "report": "rbcli.api.report",
+    "report_text": "rbcli.documents",
+    "write_report": "rbcli.documents",
     "Body": "rbcli.model",
     "InputError": "rbcli.errors",
     "ParamError": "rbcli.errors",

@@ -100,9 +100,12 @@ def balance(
                  ("--speed", speed), ("--grade", grade)]
         applied = _apply(res, out_path, apply, b, given)
     for w in res.warnings:
-        e.warn(f"rbcli: warning: {w}")
+        e.warn(f"rbcli: warning: {c.said(w)}")
+    from rbcli.render.units import echo_rows
+
     c.emit(e, out, lambda: _json(res, applied),
-           lambda doc: rb.document(doc, res, su, digits, applied=applied), given=o.echo)
+           lambda doc: rb.document(doc, res, su, digits, applied=applied),
+           given=echo_rows(o, b, rb.OPTIONS))
     c.finish(res.return_code)
 
 
@@ -301,7 +304,7 @@ def field_balance(
         reading = rb.READING_DISPLAY.get(res.reading_kind, (1.0, ""))
         c.save_plot(balanceplot.plot(res.diagram(), su, reading), plot_path)
     for w in res.warnings:
-        e.warn(f"rbcli: warning: {w}")
+        e.warn(f"rbcli: warning: {c.said(w)}")
     c.emit(e, out, res.to_json, lambda doc: rb.field_document(doc, res, su, digits))
 
 
