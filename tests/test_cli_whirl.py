@@ -98,7 +98,7 @@ def test_csv_and_help(cli):
 
 def test_report_section_from_a_result():
     from rbcli.render import whirl as rw
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits
     from rbcli.render.report import Figure, Section
     from rbcli.render.text import Table
 

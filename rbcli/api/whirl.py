@@ -18,8 +18,6 @@ parameter names).
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -48,26 +46,15 @@ MAX_ORDER = 10
 
 
 def _opt(param: str) -> str:
-    """What the readers of rbcli.api.options put before a message: ``{param}``, spelled
-    as the parameter by the Python API and as the option on the command line. (The one
-    place to change when the readers take parameter names.)"""
-    return "{" + param + "}"
+    """What the readers of :mod:`rbcli.api.options` are asked about: the parameter."""
+    return param
 
 
-@contextmanager
-def _reading(param: str) -> Iterator[None]:
-    """An InputError raised by an option reader inside names ``param``, and the text after
-    its leading ``{param}`` (the value as typed) is kept literally (a typed brace is not a
-    parameter)."""
-    try:
-        yield
-    except InputError as exc:
-        head = _opt(param)
-        if exc.template.startswith(head):
-            exc.template = head + literal(exc.template[len(head):])
-        if exc.param is None:
-            exc.param = param
-        raise
+def _reading(param: str):
+    """An InputError raised inside by a reader that could not tell names ``param``."""
+    from rbcli.api import options as op
+
+    return op.naming(param)
 
 
 # ----------------------------------------------------------------------------- options
@@ -92,8 +79,7 @@ class WhirlOptions:
     shaft : (3,) tuple — shaft direction, body frame; ``shaft_source`` where it came from
     through : str | (3,) tuple — a point of the shaft; ``through_source``
     symmetry_tol : float — fraction
-    given : dict — the values given, as keyword arguments (for the echo of the options)
-    units : dict — the body's units block (what bare numbers meant)
+    given : tuple of str — the parameters the caller gave (the tables echo them)
     """
 
     bearings: tuple[float, ...]
@@ -110,6 +96,7 @@ class WhirlOptions:
     through: Any
     through_source: str
     symmetry_tol: float
+    given: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, bearings=None, stiffness=None, stiffness_y=None,
@@ -203,6 +190,12 @@ class WhirlOptions:
             damping=tuple(zip(cx, cy)), speed_range=rng, points=npts, orders=ords, speed=W,
             unbalance=unb, shaft=axis, shaft_source=shaft_source, through=where,
             through_source=through_source, symmetry_tol=tol,
+            given=tuple(k for k, v in (
+                ("bearings", bearings), ("stiffness", stiffness), ("stiffness_y", stiffness_y),
+                ("cross_stiffness", cross_stiffness), ("damping", damping), ("damping_y", damping_y),
+                ("speed_range", speed_range), ("points", points), ("orders", orders), ("speed", speed),
+                ("unbalance", unbalance), ("unbalance_planes", unbalance_planes), ("shaft", shaft),
+                ("through", through), ("symmetry_tol", symmetry_tol)) if v is not None),
         )
 
 
@@ -593,7 +586,8 @@ def _run(body: Body, o: WhirlOptions) -> WhirlResult:
         modes=tuple(_mode_row(m) for m in at), campbell=campbell, critical_speeds=tuple(crit_rows),
         no_crossings=missing_rows, stability=stability, response=response, margins=margins,
         warnings=tuple(warnings), units=dict(getattr(body, "units", None) or {}),
-        source=str(getattr(body, "source", "")), points=o.points, isotropic=rotor.isotropic)
+        source=str(getattr(body, "source", "")), points=o.points, isotropic=rotor.isotropic,
+        given=o.given)
 
 
 def dataclass_replace(obj, **kw):
@@ -652,11 +646,11 @@ def _plausibility(body: Body, o: WhirlOptions, rotor) -> list[str]:
     out = []
     far = max(abs(z - rotor.z_com) for z in o.bearings)
     if far > FAR * sc.size:
-        out.append(Note(u.far(_opt("bearings"), "a bearing", far, sc.size)))
+        out.append(u.far(_opt("bearings"), "a bearing", far, sc.size))
     if o.unbalance is not None:
         far = max(abs(z - rotor.z_com) for z, _ in o.unbalance)
         if far > FAR * sc.size:
-            out.append(Note(u.far(_opt("unbalance_planes"), "an unbalance plane", far, sc.size)))
+            out.append(u.far(_opt("unbalance_planes"), "an unbalance plane", far, sc.size))
     return out
 
 

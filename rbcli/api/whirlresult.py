@@ -320,7 +320,8 @@ class WhirlResult(Result):
     keys (plus ``name``), arrays read-only.
 
     Hidden from the JSON (for the tables): ``units`` (the body's units block: what bare
-    numbers meant), ``source`` (the body's file), ``points``, ``isotropic``.
+    numbers meant), ``source`` (the body's file), ``points``, ``isotropic``, ``given`` (the
+    parameters the caller gave: the options table echoes them).
     """
 
     name: str
@@ -349,6 +350,7 @@ class WhirlResult(Result):
     source: str = _hidden(default="")
     points: int = _hidden(default=0)
     isotropic: bool = _hidden(default=True)
+    given: tuple[str, ...] = _hidden(default=())
 
     @property
     def return_code(self) -> int:
@@ -365,5 +367,5 @@ class WhirlResult(Result):
         from rbcli.api.result import jsonable
 
         d = to_json(self)
-        d["warnings"] = [str(w) for w in self.warnings]
+        d["warnings"] = list(self.warnings)  # Notes: --json spells their options
         return jsonable(d)

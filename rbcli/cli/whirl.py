@@ -71,9 +71,8 @@ def whirl(
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api import whirl as api
-    from rbcli.errors import option_name, spelled
     from rbcli.render import whirl as rw
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits
 
     e = c.env()
     out = c.output_format(json_, fmt)
@@ -105,7 +104,7 @@ def whirl(
 
     c.emit(e, out, lambda: {**res.to_json(), "file": b.source}, tables)
     for w in res.warnings:  # after the output: a result that cannot be printed says only that
-        e.warn(f"rbcli: {b.source}: warning: {spelled(w, option_name)}")
+        e.warn(f"rbcli: {b.source}: warning: {c.said(w)}")
     c.finish(res.return_code)
 
 

@@ -17,8 +17,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.fmt import num
 from rbcli.render.text import Doc
+from rbcli.render.units import RPM, BodyUnits, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.whirlresult import WhirlResult
@@ -27,7 +28,6 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["document", "echo_rows", "campbell_figure", "response_figure", "report_section",
            "conventions_note"]
 
-RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min (and a whirl frequency in rad/s -> cpm)
 UM = 1e6  # m -> µm
 
 #: how each whirl direction is drawn: (label, colour, line style)
@@ -46,65 +46,55 @@ def _speed(x: float | None, digits: int) -> str:
     return f"{num(x * RPM, digits)} rpm ({num(x, digits)} rad/s)"
 
 
-def _length_unit(units: dict) -> str:
-    """The unit bare lengths were in (the body's units), for the echo."""
-    return str(units.get("length", "m")) if units else "m"
-
-
-def _in_body_length(x: float, units: dict) -> str:
-    from rbcli.io.units import unit_for_kind
-
-    factor, text = unit_for_kind(units or {}, "length")
-    return num(x / factor)
-
-
 # ----------------------------------------------------------------------------- tables
 
 
 def echo_rows(res: WhirlResult) -> list[tuple[str, str, str]]:
-    """The options as understood: (option, value, unit) rows, lengths in the body's length
-    unit (what a bare number meant), speeds in rad/s and rpm."""
+    """The options as understood, one row per parameter the caller gave (and the speed range,
+    marked when it is the default): (option, value, unit), lengths in the body's bare unit
+    (what a bare number meant, :class:`rbcli.render.units.BodyUnits`), speeds in rad/s and
+    rpm, stiffness N/m and damping N s/m."""
     from rbcli.errors import option_name
 
-    L = _length_unit(res.units)
-    rows = [(option_name("bearings"), ", ".join(_in_body_length(b.plane, res.units) for b in res.bearings), L)]
+    bu = BodyUnits(res.units)
+    given = set(res.given)
+    rows = []
+    if "bearings" in given:
+        rows.append(bu.echo("bearings", [b.plane for b in res.bearings], "length"))
     kx = [b.stiffness[0] for b in res.bearings]
     ky = [b.stiffness[1] for b in res.bearings]
-    rows.append((option_name("stiffness"), _values(kx), "N/m"))
-    if kx != ky:
+    if "stiffness" in given:
+        rows.append((option_name("stiffness"), _values(kx), "N/m"))
+    if "stiffness_y" in given:
         rows.append((option_name("stiffness_y"), _values(ky), "N/m"))
-    kq = [b.cross_stiffness[0] for b in res.bearings]
-    if any(kq):
-        rows.append((option_name("cross_stiffness"), _values(kq), "N/m (kyx = -kxy)"))
-    cx = [b.damping[0] for b in res.bearings]
-    cy = [b.damping[1] for b in res.bearings]
-    if any(cx) or any(cy):
-        rows.append((option_name("damping"), _values(cx), "N s/m"))
-        if cx != cy:
-            rows.append((option_name("damping_y"), _values(cy), "N s/m"))
+    if "cross_stiffness" in given:
+        rows.append((option_name("cross_stiffness"), _values([b.cross_stiffness[0] for b in res.bearings]),
+                     "N/m (kyx = -kxy)"))
+    if "damping" in given:
+        rows.append((option_name("damping"), _values([b.damping[0] for b in res.bearings]), "N s/m"))
+    if "damping_y" in given:
+        rows.append((option_name("damping_y"), _values([b.damping[1] for b in res.bearings]), "N s/m"))
     a, b = res.speed_range
-    src = "" if res.speed_range_source == "speed_range" else " (default)"
-    rows.append((option_name("speed_range"), f"{num(a)}, {num(b)} ({num(a * RPM)}, {num(b * RPM)} rpm){src}",
-                 "rad/s"))
-    rows.append((option_name("points"), str(res.points), ""))
-    rows.append((option_name("orders"), ", ".join(str(n) for n in res.orders), "× speed"))
-    if res.speed is not None:
+    opt, val, unit = bu.echo("speed_range", [a, b], "angular_speed")
+    rows.append((opt, val + ("" if "speed_range" in given else " (default)"), unit))
+    if "points" in given:
+        rows.append((option_name("points"), str(res.points), ""))
+    if "orders" in given:
+        rows.append((option_name("orders"), ", ".join(str(n) for n in res.orders), "× speed"))
+    if "speed" in given and res.speed is not None:
         lo, hi = res.speed
-        val = f"{num(lo)} ({num(lo * RPM)} rpm)" if lo == hi else \
-            f"{num(lo)}, {num(hi)} ({num(lo * RPM)}, {num(hi * RPM)} rpm)"
-        rows.append((option_name("speed"), val, "rad/s"))
-    if res.response.source == "planes":
+        rows.append(bu.echo("speed", lo if lo == hi else [lo, hi], "angular_speed"))
+    if "unbalance" in given:
         rows.append((option_name("unbalance"), ", ".join(
             f"{num(u.amount * 1e6)}@{num(u.angle_deg)}" for u in res.response.unbalance), "g·mm@deg"))
-        rows.append((option_name("unbalance_planes"), ", ".join(
-            _in_body_length(u.plane, res.units) for u in res.response.unbalance), L))
-    if res.shaft_source == "shaft":
-        rows.append((option_name("shaft"), ", ".join(num(x) for x in res.shaft), "direction"))
-    if res.through_source == "through":
+    if "unbalance_planes" in given:
+        rows.append(bu.echo("unbalance_planes", [u.plane for u in res.response.unbalance], "length"))
+    if "shaft" in given:
+        rows.append((option_name("shaft"), bu.show(res.shaft, "dimensionless"), "direction"))
+    if "through" in given:
         t = res.through
-        rows.append((option_name("through"), t if isinstance(t, str) else
-                     ", ".join(_in_body_length(x, res.units) for x in t), "" if isinstance(t, str) else L))
-    if res.symmetry_tol != 0.01:
+        rows.append((option_name("through"), t, "") if isinstance(t, str) else bu.echo("through", t, "length"))
+    if "symmetry_tol" in given:
         rows.append((option_name("symmetry_tol"), num(100.0 * res.symmetry_tol, 3), "%"))
     return rows
 
@@ -432,16 +422,25 @@ def _continuous_phase(deg: np.ndarray, amp: np.ndarray) -> np.ndarray:
 
 def report_section(res: WhirlResult, du: DisplayUnits, digits: int, *, figures: bool = True,
                    key: str = "whirl", title: str = "Whirl: critical speeds and unbalance response") -> Section:
-    """The report's whirl section: the tables of :func:`document` (without the body's
-    heading) and, with ``figures``, the Campbell diagram and the response as SVG
-    :class:`rbcli.render.report.Figure` items."""
+    """The report's whirl section: the tables of :func:`document` (the options as
+    understood first, no heading), the result's warnings as notes (options spelled as the
+    command line spells them) and, with ``figures``, the Campbell diagram and the response as
+    SVG :class:`rbcli.render.report.Figure` items.
+
+    ``rbcli.render.reportdoc`` would build it from a computed section ``c`` (``c.result`` a
+    :class:`rbcli.api.whirlresult.WhirlResult`) as
+    ``report_section(c.result, du, digits, key=c.key, title=c.title)``."""
+    from rbcli.render.fmt import said
     from rbcli.render.plots import figure_bytes
     from rbcli.render.report import Figure, Section
+    from rbcli.render.text import Note
 
     doc = Doc()
     document(doc, res, du, digits, heading=False)
     s = Section(key, title)
     s.add_doc(doc)
+    for w in res.warnings:
+        s.items.append(Note("warning: " + said(w)))
     if figures:
         s.items.append(Figure("whirl-campbell", "Campbell diagram: whirl frequencies against speed, "
                               "the n× lines and the critical speeds.",
