@@ -10,6 +10,7 @@ exits with its status.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from typing import Any
 
 from rbcli.errors import ExitStatus, NonFiniteResult
@@ -32,10 +33,69 @@ class Result:
     def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
         raise NotImplementedError
 
+    def __getattr__(self, name: str) -> Any:
+        """Every key of :meth:`to_json` is an attribute with that value (one vocabulary:
+        ``r.static_unbalance`` is ``r.to_json()["static_unbalance"]``); a mapping in it is a
+        :class:`Record` (``r.corrections[0].angle_deg``), a list a tuple. Fields and
+        properties of the result class come first."""
+        if name.startswith("_"):
+            raise AttributeError(name)
+        data = self.__dict__.get("_json_data")
+        if data is None:
+            data = self.to_json()
+            object.__setattr__(self, "_json_data", data)
+        if name in data:
+            return record(data[name])
+        raise AttributeError(f"{type(self).__name__!r} has no attribute {name!r} (its JSON keys: "
+                             f"{', '.join(data)})")
+
     @property
     def return_code(self) -> int:
         """0, or 1 (:attr:`ExitStatus.CHECK_FAILED`) when a check asked for failed."""
         return int(ExitStatus.OK)
+
+
+class Record(Mapping):
+    """A read-only JSON object whose keys are also attributes: ``rec.angle_deg`` is
+    ``rec["angle_deg"]``. What a mapping inside a result's JSON is, seen as an attribute."""
+
+    __slots__ = ("_data",)
+
+    def __init__(self, data: Mapping[str, Any]) -> None:
+        object.__setattr__(self, "_data", dict(data))
+
+    def __getitem__(self, key: str) -> Any:
+        return record(self._data[key])
+
+    def __iter__(self):
+        return iter(self._data)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return record(self._data[name])
+        except KeyError:
+            raise AttributeError(f"no key {name!r} (keys: {', '.join(self._data)})") from None
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Record is read-only")
+
+    def __repr__(self) -> str:
+        return f"Record({self._data!r})"
+
+    def to_json(self) -> dict[str, Any]:
+        return self._data
+
+
+def record(value: Any) -> Any:
+    """JSON data as attributes see it: mappings as :class:`Record`, lists as tuples."""
+    if isinstance(value, dict):
+        return Record(value)
+    if isinstance(value, list):
+        return tuple(record(v) for v in value)
+    return value
 
 
 def frozen(value: Any, _depth: int = 0) -> Any:
