@@ -250,3 +250,15 @@ def test_the_fan_critical_speeds_from_its_mass_properties_by_hand():
     fwd = sorted(c.speed for c in res.critical_speeds if c.order == 1 and c.whirl == "forward")
     np.testing.assert_allclose(fwd, roots, rtol=1e-12)
     assert round(roots[0] * 30 / math.pi, 2) == 1958.84  # the README's and the header's digits
+
+
+def test_every_json_key_is_an_attribute_with_its_value():
+    """One vocabulary (issue 22): r.<key> is the JSON's value, nested values too."""
+    from rbcli.api.result import jsonable
+
+    r = rbcli.whirl(rbcli.load(FAN), **FAN_KW)
+    d = r.to_json()
+    for key, value in d.items():
+        assert jsonable(getattr(r, key)) == value, key
+    assert r.critical_speeds[0].speed == d["critical_speeds"][0]["speed"]
+    assert r.margins.checks[0].required_margin_percent == d["margins"]["checks"][0]["required_margin_percent"]

@@ -65,13 +65,20 @@ def to_json(obj: Any) -> Any:
     return obj
 
 
+class _Json:
+    """A nested value of the result: its JSON is its fields (``to_json()``)."""
+
+    def to_json(self) -> Any:
+        return to_json(self)
+
+
 def _hidden(**default: Any) -> Any:
     """A field that is not a JSON key (kept for the renderer)."""
     return dataclasses.field(metadata={"json": False}, **default)
 
 
 @dataclass(frozen=True)
-class RotorData:
+class RotorData(_Json):
     """The rigid rotor taken from the body (JSON ``rotor``).
 
     mass : kg; com : m, the centre of mass along the shaft; polar_moment : kg m², Ip;
@@ -96,7 +103,7 @@ class RotorData:
 
 
 @dataclass(frozen=True)
-class BearingData:
+class BearingData(_Json):
     """One bearing: plane (m along the shaft), stiffness [kxx, kyy] N/m, cross_stiffness
     [kxy, kyx] N/m, damping [cxx, cyy] N s/m."""
 
@@ -107,7 +114,7 @@ class BearingData:
 
 
 @dataclass(frozen=True)
-class Mode:
+class Mode(_Json):
     """A whirl mode at one speed: frequency (rad/s, fixed frame), whirl, kind
     (cylindrical, conical, mixed), node (m along the shaft, null for none), damping_ratio,
     log_decrement (null when not oscillating), stable (it does not grow)."""
@@ -122,7 +129,7 @@ class Mode:
 
 
 @dataclass(frozen=True)
-class Campbell:
+class Campbell(_Json):
     """The Campbell diagram: speeds (N, rad/s); per mode (numbered by frequency at each
     speed, lowest first) frequencies (4 x N, rad/s), whirl, kind, damping_ratio,
     log_decrement (null where a mode does not oscillate)."""
@@ -136,7 +143,7 @@ class Campbell:
 
 
 @dataclass(frozen=True)
-class CriticalSpeed:
+class CriticalSpeed(_Json):
     """A critical speed: speed (rad/s, undamped, exact), order (the n× line), mode (its
     kind), whirl, node (m or null); damped_speed (rad/s, where the damped whirl frequency
     crosses the line; null if it does not), damping_ratio and log_decrement there;
@@ -156,7 +163,7 @@ class CriticalSpeed:
 
 
 @dataclass(frozen=True)
-class NoCrossing:
+class NoCrossing(_Json):
     """A branch that never meets its n× line: order, whirl, mode, reason
     ("gyroscopic": n It < Ip; "coincident": n It = Ip, met only at infinite speed;
     "complex": cross-coupled stiffness, no real crossing), and the moments."""
@@ -190,7 +197,7 @@ class NoCrossing:
 
 
 @dataclass(frozen=True)
-class Stability:
+class Stability(_Json):
     """stable_in_range: no mode grows anywhere in the speed range; onset_speeds: speeds
     (rad/s) in the range where a mode starts or stops growing; least_damping_ratio and
     least_damping_speed: the smallest damping ratio over the range and where;
@@ -204,7 +211,7 @@ class Stability:
 
 
 @dataclass(frozen=True)
-class UnbalanceRow:
+class UnbalanceRow(_Json):
     """An unbalance driving the response: plane (m along the shaft), amount (kg m),
     angle_deg (rotor frame)."""
 
@@ -214,7 +221,7 @@ class UnbalanceRow:
 
 
 @dataclass(frozen=True)
-class ResponseBearing:
+class ResponseBearing(_Json):
     """One bearing's response over the speeds: plane; displacement and displacement_minor
     (m, the orbit's semi-axes), displacement_phase_deg (high spot, rotor frame); force (N,
     semi-major axis of the force on the bearing), force_phase_deg."""
@@ -228,7 +235,7 @@ class ResponseBearing:
 
 
 @dataclass(frozen=True)
-class PeakRow:
+class PeakRow(_Json):
     """A response peak: bearing (1-based) and its plane, speed (rad/s), amplitude (m),
     amplification_factor (half-power, null when not defined or undamped), half_power
     [N1, N2] rad/s (null when not defined), mode and whirl of the nearest critical speed,
@@ -246,7 +253,7 @@ class PeakRow:
 
 
 @dataclass(frozen=True)
-class AtSpeed:
+class AtSpeed(_Json):
     """A bearing at the (maximum) operating speed: displacement (m) and its phase, force (N)
     and its phase; rigid_force: the force on rigid bearings at that speed (balance's, two
     bearings only; null otherwise)."""
@@ -260,7 +267,7 @@ class AtSpeed:
 
 
 @dataclass(frozen=True)
-class ResponseData:
+class ResponseData(_Json):
     """The unbalance response: source ("body": its own static and couple unbalance, or
     "planes": the unbalances given), unbalance (the rows given; empty for the body),
     speeds (rad/s), bearings, peaks, at_speed (at the maximum operating speed; empty
@@ -275,7 +282,7 @@ class ResponseData:
 
 
 @dataclass(frozen=True)
-class MarginCheck:
+class MarginCheck(_Json):
     """A critical speed (a response peak) judged by the API rule: bearing (1-based, null
     for an undamped critical speed) and plane, speed (rad/s), mode, amplification_factor,
     basis (how the AF was found: "half-power"; "undamped": no damping, AF infinite;
@@ -297,7 +304,7 @@ class MarginCheck:
 
 
 @dataclass(frozen=True)
-class Margins:
+class Margins(_Json):
     """The separation margins: rule (the standard's clause), operating_speed [min, max]
     rad/s, checks, passed (every check passed; null when nothing could be judged)."""
 
