@@ -48,6 +48,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
                    "sleeping."),
     "gyrocompass": ("top", "A gyrocompass: the period of its swing about north and where it "
                            "settles."),
+    "whirl": ("whirl", "The rotor on its bearings: critical speeds, Campbell diagram, unbalance "
+                       "response."),
     "report": ("report", "One document with every answer that applies to the body, its tables "
                          "and figures."),
 }
