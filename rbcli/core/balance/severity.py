@@ -73,16 +73,18 @@ def zone_boundaries(group: int, foundation: str) -> tuple[float, float, float]:
         raise ValueError(f"no ISO 20816-3 zones for group {group!r} on a {foundation!r} support") from None
 
 
+#: a value within this fraction of a boundary is on it (4.5 mm/s typed is 0.0045000000000000005
+#: m/s after a conversion; the table's 4.5e-3 is 0.0045)
+ON_BOUNDARY_RTOL = 1e-9
+
+
 def zone(v_rms: float, group: int, foundation: str) -> str:
     """The ISO 20816-3 zone ("A" to "D") of an r.m.s. velocity ``v_rms`` (m/s); a value on
-    a boundary belongs to the lower zone."""
+    a boundary (to :data:`ON_BOUNDARY_RTOL`) belongs to the lower zone."""
     ab, bc, cd = zone_boundaries(group, foundation)
     if not v_rms >= 0.0:
         raise ValueError("an r.m.s. velocity is a number >= 0")
-    if v_rms <= ab:
-        return "A"
-    if v_rms <= bc:
-        return "B"
-    if v_rms <= cd:
-        return "C"
+    for name, edge in (("A", ab), ("B", bc), ("C", cd)):
+        if v_rms <= edge * (1.0 + ON_BOUNDARY_RTOL):
+            return name
     return "D"

@@ -84,7 +84,7 @@ def plane_significance(alpha: object, limit: float = SIGNIFICANCE_LIMIT) -> Sign
             for e in basis:
                 v = v - (e.conj() @ v) * e
         nv = float(np.linalg.norm(v))
-        factors[j] = min(nv / nu, 1.0)
+        factors[j] = min(nv / nu, 1.0) if basis else 1.0  # the first plane: nothing before it
         if nv > 0.0:
             basis.append(v / nv)
     factors.setflags(write=False)
