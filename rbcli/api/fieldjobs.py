@@ -310,8 +310,9 @@ def _finish(cls: type, s: dict, *, suggest: bool, rotor_mass, rotor, bearing_loa
     coeff_from = None
     n = len(s["initial"])
     if s["coefficients"] is not None:
-        coeffs, coeff_from, phase, sense, rotation, s = _coefficients(s, kind, meas.measure, phase, sense,
-                                                                     rotation, n, notes)
+        coeffs, coeff_from, phase, sense, rotation, measure, s = _coefficients(
+            s, kind, meas.measure, phase, sense, rotation, n, notes)
+        meas = fr.Measures(measure, meas.converted)
     if phase is not None and sense is None:
         raise ParamError("angle_sense", "say how the trial and correction angles are counted from the mark "
                                         "(with or against the rotation): the phases ({phase}) are converted "
@@ -374,14 +375,22 @@ def _coefficients(s: dict, kind: str | None, measure: str | None, phase, sense, 
         raise ParamError("coefficients", f"'{literal(where)}' holds {len(c.rows)} readings per run "
                                          f"({len(c.sensors)} sensors x {len(c.speeds)} speeds); the "
                                          f"initial readings are {n}")
-    if s["job"] is not None and list(c.sensors) != list(s["sensors"]):
-        raise ParamError("coefficients", f"'{literal(where)}' is for sensors {literal(', '.join(c.sensors))}, "
-                                         f"not {literal(', '.join(s['sensors']))}")
-    if len(c.speeds) != len(s["speeds"]):
-        raise ParamError("coefficients", f"'{literal(where)}' is for {len(c.speeds)} speeds, the job has "
-                                         f"{len(s['speeds'])}")
+    job_speeds = list(s["speeds"])
+    if s["job"] is not None:
+        if list(c.sensors) != list(s["sensors"]):
+            raise ParamError("coefficients", f"'{literal(where)}' is for sensors "
+                                             f"{literal(', '.join(c.sensors))}, not {literal(', '.join(s['sensors']))}")
+        if len(c.speeds) != len(job_speeds):
+            raise ParamError("coefficients", f"'{literal(where)}' is for {len(c.speeds)} speeds, the job has "
+                                             f"{len(job_speeds)}")
+    else:  # the command line: the readings in the file's order, its sensors and speeds
+        if len(c.speeds) > 1 and job_speeds[0][1] is not None:
+            raise ParamError("speed", f"'{literal(where)}' holds {len(c.speeds)} speeds; the readings are "
+                                      "at those (leave out {speed})")
+        job_speeds = [(n, job_speeds[0][1] if len(c.speeds) == 1 else None) for n, _ in c.speeds]
+        s = dict(s, sensors=list(c.sensors))
     speeds = []
-    for (cn, cw), (jn, jw) in zip(c.speeds, s["speeds"]):
+    for (cn, cw), (jn, jw) in zip(c.speeds, job_speeds):
         if cw is not None and jw is not None and abs(cw - jw) > 1e-9 * cw:
             raise ParamError("coefficients", f"'{literal(where)}' was measured at {cw:.6g} rad/s, this job "
                                              f"runs at {jw:.6g} rad/s: influence coefficients change with "
@@ -396,10 +405,12 @@ def _coefficients(s: dict, kind: str | None, measure: str | None, phase, sense, 
         f = convert_measure(1.0, c.measure, measure)
         alpha = [[a * f for a in row] for row in alpha]
         notes.append(f"coefficients converted from {c.measure} to {measure}")
-    elif (c.measure is None) != (measure is None):
-        raise ParamError("coefficients", f"'{literal(where)}' holds {c.measure or 'unstated'}-measure "
-                                         f"readings; these are {measure or 'unstated'}: say the measure "
-                                         "of both or of neither")
+    elif c.measure is not None and measure is None:
+        measure = c.measure
+        notes.append(f"the readings, which say no measure, taken as {c.measure} (the coefficients file's)")
+    elif c.measure is None and measure is not None:
+        raise ParamError("coefficients", f"'{literal(where)}' does not say its readings' measure; these "
+                                         f"are {measure}: leave the measure unsaid, as it was")
     # conventions: the job's own, or the file's when the job says none
     if phase is None and sense is None and rotation is None:
         phase, sense, rotation = c.phase, c.angle_sense, c.rotation
@@ -430,7 +441,7 @@ def _coefficients(s: dict, kind: str | None, measure: str | None, phase, sense, 
                  list(s["positions"]) + [None] * len(planes))[:len(planes)],
              plane_at=(list(s["plane_at"]) + [None] * len(planes))[:len(planes)],
              cumulative=False)
-    return tuple(tuple(row) for row in alpha), path, phase, sense, rotation, s
+    return tuple(tuple(row) for row in alpha), path, phase, sense, rotation, measure, s
 
 
 def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any:

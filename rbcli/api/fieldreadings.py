@@ -241,7 +241,7 @@ def common_measure(rs: list[Reading], default: str | None, want: str | None) -> 
         raise _located(b, ParamError("measure", (
             f"'{literal(s.text)}' ({{{s.param}}}) says {s.measure} but '{literal(b.text)}' "
             f"({{{b.param}}}) says no measure: say the measure (pk, pk-pk or rms) of every "
-            "reading or of none, or give the measure of the others")))
+            "reading or of none, or give the measure of those that say none ({measure})")))
     each = [r.measure or default for r in rs]
     if all(m is None for m in each):
         return [r.value for r in rs], Measures(None, ())

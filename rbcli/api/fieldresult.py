@@ -398,7 +398,7 @@ class FieldBalanceResult(Result):
                 arrows.append(Arrow("residual", "predicted after the correction", abs(r), deg(r), abs(r) > 0))
             if self.extended:
                 sensor, speed = rows[i]
-                title = f"sensor {sensor}" + (f" at {speed}" if speed else "") + " readings"
+                title = f"readings {sensor}" + (f" at {speed}" if speed else "")
             else:
                 title = "readings" if len(self.initial) == 1 else f"sensor {i + 1} readings"
             panels.append(Panel(title, "reading", tuple(arrows)))
@@ -411,7 +411,7 @@ class FieldBalanceResult(Result):
                                   mass=c.mass))
             if self.fitted is not None:
                 for fm in self.fitted.planes[j].masses:
-                    label = f"fit {fm.mass * 1e3:.4g} g" + (f" at position {fm.position}" if fm.position else "")
+                    label = "fit" + (f" at position {fm.position}" if fm.position else "")
                     arrows_m.append(Arrow("residual", label, fm.mass, fm.angle_deg, fm.mass > 0, mass=fm.mass))
             panels.append(Panel(f"plane {c.name}: masses", "mass", tuple(arrows_m)))
         sense = "with"

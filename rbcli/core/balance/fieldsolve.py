@@ -189,7 +189,9 @@ def solve(alpha: object, v0: object, method: str | None = None, weights: object 
     cond = float(sv[0] / sv[-1])
     if n == p:
         if p == 1:
-            W = np.array([-V0[0] / A[0, 0]])  # field_single_plane's W = -V0/H
+            # field_single_plane's W = -V0/H, in Python's complex division (numpy's differs in
+            # the last bit): a trim run from stored coefficients gives the classic bits
+            W = np.array([-complex(V0[0]) / complex(A[0, 0])])
         else:
             W = np.linalg.solve(A, -V0)  # field_two_plane's solve
         det = complex(A[0, 0]) if p == 1 else complex(np.linalg.det(A))
