@@ -399,3 +399,32 @@ def test_any_readings_give_a_result_or_a_one_line_error(readings, method):
     assert r.code in (0, 2), r.err
     if r.code == 2:
         assert len([ln for ln in r.err.splitlines() if not ln.startswith("rbcli: warning:")]) == 1, r.err
+
+
+# ------------------------------------------------------------------ the README says what runs
+
+
+def test_readme_field_balancing_commands_print_what_it_says(cli, tmp_path):
+    """Every command of the README's field-balancing section runs and prints the numbers its
+    comment gives (the outputs go to a temporary folder)."""
+    import re
+    import shlex
+
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("## Field balancing: `rbcli field-balance`"):]
+    section = section[:section.index("\n## ", 10)]
+    block = section[section.index("```sh") + 5:section.index("```", section.index("```sh") + 5)]
+    commands = [ln for ln in block.splitlines() if ln.startswith("rbcli field-balance")]
+    want = [["9.79831"], ["9.07998", "36.5937", "6.05332", "116.594"], ["1.97947", "236.17", "1.07051", "121.844", "2.701"],
+            [r"A +\| +— +\| +1 \|", r"B +\| +— +\| +1\.8 \|", r"\| +0\.4 \|"],
+            ["29.4325", "21.1288", "18.9552", "246.941", r"A +\| +— +\| +21\.1288 \| +29\n", r"B +\| +6 +\| +225 +\| +10\n"],
+            ["29.4325", "18.9552"]]
+    assert len(commands) == len(want)
+    for line, says in zip(commands, want):
+        args = shlex.split(line)[1:]
+        args = [str(tmp_path / a) if a in ("sheet.html", "fan.json") else a for a in args]
+        r = cli(*args)
+        assert r.code == 0, (line, r.err)
+        for s in says:
+            assert re.search(s, r.out), (line, s)
+    assert (tmp_path / "sheet.html").is_file() and (tmp_path / "fan.json").is_file()

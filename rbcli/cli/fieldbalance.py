@@ -53,7 +53,7 @@ FILE.html or FILE.md writes the job sheet.
 @app.command("field-balance", help=HELP)
 def field_balance(
     ctx: typer.Context,
-    job: str = typer.Argument(None, metavar="[JOB]", help="A job file (YAML): sensors, planes, speeds and runs (instead of --initial, --trial and --run).", show_default=False),
+    job: str = typer.Argument(None, metavar="JOB", help="A job file (YAML): sensors, planes, speeds and runs (instead of --initial, --trial and --run).", show_default=False),
     initial: str = typer.Option(None, "--initial", help="Readings without trial: amplitude@phase, one per sensor, e.g. '6.0@30', '6 mm/s@30' or '170@112,53@78' (all bare, or all with units of one kind: µm, mm, mil; mm/s, in/s; g, m/s²; optionally pk, pk-pk or rms after the unit).", show_default=False),
     trial: list[str] = typer.Option(None, "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (once per plane; a bare mass is in grams).", show_default=False),
     run_: list[str] = typer.Option(None, "--run", help="Readings with each trial on, in the order of --trial (as many as --initial).", show_default=False),
@@ -321,13 +321,14 @@ MANUAL["field-balance"] = {
          "Displacement readings in mm and µm, converted: the same 9.08 g at 36.594°, and the polar diagram."),
         ("rbcli field-balance --initial '170@112,53@78' --trial '1.15 g@0' --run '235@94,58@68' --trial '1.15 g@0' --run '185@115,77@104'",
          "The B&K two-plane example: 1.979 g at 236.2° and 1.071 g at 121.8°, cond 2.70."),
-        ("rbcli field-balance --initial '1@0,1@180,0@0' --trial '1@0' --run '4@0,4@180,5@0' --trial '1@0' --run '2@180,3@180,3@180'",
-         "Goodman's 1964 least-squares example, 3 sensors and 2 planes: 0.809524 g and 1.47619 g at 0°."),
+        ("rbcli field-balance --initial '1@0,1@180,0@0' --trial '1@0' --run '4@0,4@0,5@0' --trial '1@0' --run '1@180,3@180,3@180'",
+         "Goodman's 1964 least-squares example, 3 sensors and 2 planes: 0.809524 g and 1.47619 g at 0° "
+         "(17/21 and 31/21); with --method min-max 1 g and 1.8 g, every predicted reading 0.4."),
         ("rbcli field-balance examples/jobs/fan.yaml --report sheet.html",
          "The example job: two planes, four sensors, two speeds, the job sheet with its polar diagram and ISO 20816-3 zones."),
         ("rbcli field-balance examples/jobs/fan.yaml --save-coefficients fan-coeffs.json",
          "Keep the fan's coefficients; then 'rbcli field-balance --coefficients fan-coeffs.json --initial ...' trims the next fan without trial runs."),
         ("rbcli field-balance --suggest-trial --rotor-mass '120 kg' --speed '1480 rpm' --trial-radius '250 mm'",
-         "A trial mass whose force is 10 % of the load on one of two bearings: 9.78 g."),
+         "A trial mass whose force is 10 % of the load on one of two bearings (588.4 N): 9.79831 g."),
     ],
 }
