@@ -428,3 +428,22 @@ def test_readme_field_balancing_commands_print_what_it_says(cli, tmp_path):
         for s in says:
             assert re.search(s, r.out), (line, s)
     assert (tmp_path / "sheet.html").is_file() and (tmp_path / "fan.json").is_file()
+
+
+def test_darlow_flags_a_classic_two_plane_job_below_the_condition_warning(cli):
+    """alpha = [[1, 1], [1, 1 + 0.25i]] per gram: cond 16.19, under the warning at 50, but plane
+    A's column is nearly plane B's: Darlow's factor |a_A - proj_B a_A| / |a_A| = 0.123 (by hand:
+    the two columns' angle has sin^2 = 1 - |<a,b>|^2/(|a|^2|b|^2) = 1 - (4 + 0.0625)/(2 x 2.0625))."""
+    args = ["--initial", "2.23606797749979@26.56505117707799,1.118033988749895@-26.56505117707799",
+            "--trial", "1 g@0", "--run", "3.1622776601683795@18.43494882292201,2.0615528128088303@-14.036243467926479",
+            "--trial", "1 g@0", "--run", "3.1622776601683795@18.43494882292201,2.0155644370746373@-7.125016348901798"]
+    d = run_json(cli, *args)
+    assert d["cond"] == pytest.approx(16.188, abs=1e-3) and not d["ill_conditioned"]
+    sf = math.sqrt(1 - (4 + 0.0625) / (2 * 2.0625))
+    assert sf == pytest.approx(0.12309, abs=1e-5)
+    (w,) = d["warnings"]
+    assert w.startswith("plane A is ill-conditioned by Darlow's test: its significance factor 0.123 ")
+    assert "method" not in d  # still the classic output, with the warning
+    r = cli("field-balance", *args)
+    assert "rbcli: warning: plane A is ill-conditioned by Darlow's test" in r.err
+    assert "Darlow's plane-significance factor of plane A 0.123" in " ".join(r.out.split())

@@ -75,3 +75,20 @@ def test_agrees_with_hsbalance(hs_tools):
     # two planes of a published case, too
     bk = M(["78.43@58.4 15.34@145.3", "9.462@10.2 32.56@142.4"])
     assert list(hs_tools.ill_condition(bk)) == list(plane_significance(bk).flagged) == []
+
+
+def test_every_plane_hsbalance_flags_is_flagged(hs_tools):
+    """From three planes on hsbalance measures each column against the one before it only:
+    its factor is never smaller than the distance from the span of all earlier columns, so
+    it flags a subset of the planes flagged here."""
+    rng = np.random.default_rng(9)
+    more = 0
+    for _ in range(500):
+        n = int(rng.integers(3, 7))
+        A = rng.normal(size=(n, 3)) + 1j * rng.normal(size=(n, 3))
+        A[:, 2] = A[:, 1] * (1 + 0.2 * rng.normal()) + 0.3 * rng.normal() * A[:, 2]
+        theirs = {int(i) for i in hs_tools.ill_condition(A)}
+        mine = set(plane_significance(A).flagged)
+        assert theirs <= mine
+        more += mine != theirs
+    assert more  # and the difference shows

@@ -203,6 +203,12 @@ def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
             reading_kind=o.reading_kind, warnings=f.warnings)
     f2 = B.field_two_plane(o.initial, o.runs[0], o.runs[1], o.trials[0], o.trials[1],
                            cumulative=o.cumulative)
+    from rbcli.api.fieldsolve import significance_warning
+    from rbcli.core.balance.significance import plane_significance
+
+    sig = plane_significance(f2.influence)  # Darlow's test: a warning when it flags a plane
+    warnings = tuple(f2.warnings) + tuple(significance_warning("AB"[j], float(sig.factors[j]))
+                                          for j in sig.flagged)
     return FieldBalanceResult(
         planes=2, initial=o.initial, runs=o.runs,
         corrections=tuple(FieldCorrection(name, complex(w) * s, complex(w_on) * s)
@@ -213,7 +219,7 @@ def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
         small_response=tuple(bool(x) for x in f2.small_response),
         predicted_residual=tuple(complex(v) for v in f2.predicted_residual),
         cumulative=bool(f2.cumulative), reading_kind=o.reading_kind,
-        warnings=f2.warnings)
+        warnings=warnings, significance=tuple(float(x) for x in sig.factors))
 
 
 _run = run  # field_balance's parameter ``run`` (the readings) hides the function

@@ -94,10 +94,7 @@ def solve_job(o: Any) -> FieldBalanceResult:
                         f"{FIELD_COND_WARN:g}): the planes are not well separated")
     for j in sig.flagged:
         if p > 1:
-            warnings.append(
-                f"plane {o.plane_names[j]} moves the readings little that the other planes do not "
-                f"(Darlow's significance factor {sig.factors[j]:.3g} <= {SIGNIFICANCE_LIMIT:g}): its "
-                "correction is unreliable; consider balancing without it")
+            warnings.append(significance_warning(o.plane_names[j], float(sig.factors[j])))
     for j, sm in enumerate(small):
         if sm:
             warnings.append(f"trial {o.plane_names[j]} changed no reading by 25 % in amplitude or "
@@ -125,6 +122,15 @@ def solve_job(o: Any) -> FieldBalanceResult:
         significance=tuple(float(x) for x in sig.factors), significance_limit=SIGNIFICANCE_LIMIT,
         fitted=fitted, severity=severity, suggested_trial=sugg,
         warnings=tuple(warnings), **common)
+
+
+def significance_warning(plane: str, factor: float) -> str:
+    """The warning for a plane Darlow's test flags."""
+    from rbcli.core.balance.significance import SIGNIFICANCE_LIMIT
+
+    return (f"plane {plane} is ill-conditioned by Darlow's test: its significance factor {factor:.3g} is "
+            f"at or below {SIGNIFICANCE_LIMIT:g} (it moves the readings in little that the other planes "
+            "do not), so its correction is unreliable; consider balancing without it")
 
 
 def _unit(o: Any) -> str:

@@ -91,9 +91,12 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
         right=(1, 2, 3, 4),
     )
     if n == 2:
+        flagged = [(name, f) for name, f in zip(names, res.significance) if f <= res.significance_limit]
         doc.note(
             f"condition number of the influence matrix {num(d['cond'], 4)}"
             + (" (ill-conditioned: the planes are not well separated)" if d["ill_conditioned"] else "")
+            + "".join(f"; Darlow's plane-significance factor of plane {name} {num(f, 3)} (at or below "
+                      f"{num(res.significance_limit, 3)}: ill-conditioned)" for name, f in flagged)
             + ("; trial A left on during run B (--cumulative)" if d["cumulative"] else "")
         )
     doc.note(

@@ -18,8 +18,10 @@ balance planes in influence coefficient balancing", ASME paper 82-GT-269, 1982; 
 Notes
 -----
 hsbalance's loop subtracts the running sum of projections of the previous column rather
-than projecting each new column onto all earlier ones; the two agree for two planes (and
-wherever the earlier columns are orthogonal), and this module follows the definition above.
+than projecting each new column onto all earlier ones: from the third plane on, its factor is
+the distance of a column from the one before it, never smaller than the distance from the span
+of all of them that this module measures. The two agree for two planes, and every plane
+hsbalance flags is flagged here too (a test checks both).
 The factor equals ``|R_kk| / |u_k|`` of a QR factorisation of the reordered matrix, which
 the tests use as an independent check.
 """
