@@ -447,3 +447,33 @@ def test_darlow_flags_a_classic_two_plane_job_below_the_condition_warning(cli):
     r = cli("field-balance", *args)
     assert "rbcli: warning: plane A is ill-conditioned by Darlow's test" in r.err
     assert "Darlow's plane-significance factor of plane A 0.123" in " ".join(r.out.split())
+
+
+def test_units_everywhere_in_an_extended_job(cli):
+    """--units in,oz: masses in oz, radii in inches, readings and zones in in/s."""
+    out = cli("field-balance", FAN, "--units", "in,oz").out
+    flat = " ".join(out.split())
+    assert "mass [oz]" in flat and "radius [in]" in flat and "initial [in/s]" in flat
+    assert "before [in/s rms]" in flat and "mm/s" not in out and "[g]" not in out
+    # 4.41 mm/s is 0.173622 in/s
+    assert f"{4.41 / 25.4:.6g}" in out
+
+
+def test_no_output_replaces_a_file_the_job_reads(cli, tmp_path):
+    """The job's coefficients file and rotor body are inputs too."""
+    import shutil
+
+    coeffs = tmp_path / "c.json"
+    run_json(cli, *ONE, "--save-coefficients", str(coeffs))
+    body = tmp_path / "rotor.yaml"
+    body.write_text("{shape: cylinder, radius: 0.1, length: 0.5, mass: 40}\n")
+    job = tmp_path / "trim.yaml"
+    job.write_text("coefficients: c.json\ninitial: ['6.0@30']\nrotor: {body: rotor.yaml}\n")
+    before = coeffs.read_bytes()
+    for out in ("c.json", "rotor.yaml"):
+        r = cli("field-balance", str(job), "--save-coefficients", str(tmp_path / out), "--force")
+        assert r.code == 2 and "is an input file" in r.err, r.err
+    assert coeffs.read_bytes() == before and body.read_text().startswith("{shape")
+    r = cli("field-balance", str(job), "--plot", str(tmp_path / "rotor.yaml"))
+    assert r.code == 2
+    shutil.rmtree(tmp_path)

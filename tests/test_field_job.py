@@ -135,3 +135,46 @@ def test_relative_paths_in_a_job_file_are_the_job_files(tmp_path):
     job.write_text(ONE + "rotor: {body: rotor.yaml}\n")
     j = load_job_text(job.read_text(), str(job))
     assert j.rotor is not None and j.rotor.body == str(tmp_path / "sub" / "rotor.yaml")
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_KEYS = ["rbcli", "job", "name", "units", "conventions", "readings", "sensors", "planes", "speeds",
+         "initial", "trials", "cumulative", "method", "mass_step", "angle_step", "severity", "rotor",
+         "coefficients", "plane", "mass", "radius", "positions", "speed", "low", "run", "A"]
+_VALUES = st.recursive(
+    st.one_of(st.sampled_from(["1@0", "6 mm/s rms@30", "10 g@0", "x@y", "1e999@0", "-1@0", "lag", "rms",
+                               "least-squares", "A", "", "1480 rpm", "nan", "0"]),
+              st.integers(-5, 10), st.floats(allow_nan=True), st.booleans(), st.none()),
+    lambda inner: st.one_of(st.lists(inner, max_size=4),
+                            st.dictionaries(st.sampled_from(_KEYS), inner, max_size=4)),
+    max_leaves=12)
+
+
+@given(st.dictionaries(st.sampled_from(_KEYS), _VALUES, max_size=8))
+@settings(max_examples=150, deadline=None)
+def test_any_job_document_loads_or_is_one_located_error(doc):
+    """Whatever the structure: a result, or an InputError at a place in the file (or naming
+    a value); never another exception."""
+    import os
+    import tempfile
+
+    import yaml
+
+    text = yaml.safe_dump(doc)
+    try:
+        load_job_text(text, "job.yaml")
+    except InputError as exc:
+        assert exc.where is not None and exc.where.file == "job.yaml" and "\n" not in str(exc)
+        return
+    fd, path = tempfile.mkstemp(suffix=".yaml")
+    try:
+        with os.fdopen(fd, "w") as fh:
+            fh.write(text)
+        try:
+            rbcli.field_balance(job=path)
+        except InputError as exc:
+            assert "\n" not in str(exc)
+    finally:
+        os.unlink(path)

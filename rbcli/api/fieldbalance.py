@@ -78,6 +78,8 @@ class FieldBalanceOptions:
         are then in m, m/s or m/s²), None for bare readings (a relative scale)
     extended : bool — anything beyond the classic one- or two-plane job (the output then has
         ``method``, ``residuals``...)
+    inputs : tuple of str — the files the job reads (job file, coefficients, rotor body): no
+        output may replace them
     (the other attributes: see :func:`field_balance`)
     """
 
@@ -111,6 +113,7 @@ class FieldBalanceOptions:
     job: str | None = None
     name: str | None = None
     notes: tuple[str, ...] = field(default=())
+    inputs: tuple[str, ...] = ()
 
     @property
     def planes(self) -> int:

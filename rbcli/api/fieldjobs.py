@@ -233,6 +233,9 @@ def _from_job(path: Any, *, initial, trial, run, cumulative, trial_radius, radiu
         conv[attr] = _job_value(job, attr, "conventions", value, attr)
     s_sev = _job_value(job, "severity", "severity", severity, "severity")
     coeff = _job_value(job, "coefficients", "coefficients", coefficients, "coefficients")
+    if coeff is not None and job.trials:
+        raise ParamError("coefficients", "a trim run takes the initial readings alone; the job file has "
+                                         "trial runs")
     units_mass = job.units.get("mass", "g")
     initial_r: list[fr.Reading] = []
     if job.initial is not None:
@@ -347,6 +350,9 @@ def _finish(cls: type, s: dict, *, suggest: bool, rotor_mass, rotor, bearing_loa
     extended = not (s["classic_options"] and n_planes_ok and not stated_measure and not gravity
                     and coeffs is None and not suggest)
     radii = s["radii"]
+    jr = s.get("rotor")
+    inputs = tuple(str(x) for x in (s["job"], s["coefficients"], rotor,
+                                    jr.body if jr is not None else None) if x is not None)
     return cls(
         initial=init, runs=tuple(runs), trials=tuple(s["trials"]), cumulative=s["cumulative"],
         radii=radii, reading_kind=kind, extended=extended, method=s["method"],
@@ -357,7 +363,7 @@ def _finish(cls: type, s: dict, *, suggest: bool, rotor_mass, rotor, bearing_loa
         measures_converted=meas.converted, gravity=gravity, phase=phase, angle_sense=sense,
         rotation=rotation, flipped=flipped, severity=sev, coefficients=coeffs,
         coefficients_from=coeff_from, suggest=suggestion, job=s["job"], name=s["name"],
-        notes=tuple(notes),
+        notes=tuple(notes), inputs=inputs,
     )
 
 

@@ -108,11 +108,20 @@ def field_balance(
 
     out = c.output_format(json_, fmt)
     su = ShopUnits(units)
-    inputs = [p for p in (job, coefficients, rotor) if p is not None]
-    plot_path = c.check_plot(plot, inputs) if plot is not None else None
-    coeff_path = report_path = None
     if force and save_coefficients is None and report is None:
         raise InputError("--force: only used with --report or --save-coefficients")
+    o = api.FieldBalanceOptions.parse(
+        None, initial=initial, trial=trial or None, run=run_ or None, cumulative=cumulative,
+        trial_radius=trial_radius, radius=radius, job=job, method=method, weights=weights,
+        mass_step=mass_step, angle_step=angle_step, positions=positions, phase=phase,
+        angle_sense=angle_sense, rotation=rotation, measure=measure, severity=severity, group=group,
+        foundation=foundation, coefficients=coefficients, suggest_trial=suggest_trial,
+        rotor_mass=rotor_mass, rotor=rotor, bearing_load=bearing_load, trial_fraction=trial_fraction,
+        speed=speed, full=report is not None)
+    # the outputs, checked before anything is computed: never an input the job reads
+    inputs = list(o.inputs)
+    plot_path = c.check_plot(plot, inputs) if plot is not None else None
+    coeff_path = report_path = None
     if save_coefficients is not None:
         from rbcli.io import outfile
 
@@ -125,14 +134,6 @@ def field_balance(
                                     others={"--plot": plot_path, "--save-coefficients": coeff_path})
         if report_path.suffix.lower() == ".md":
             outfile.check_folder(outfile.files_dir(report_path), inputs, "--report", force=force)
-    o = api.FieldBalanceOptions.parse(
-        None, initial=initial, trial=trial or None, run=run_ or None, cumulative=cumulative,
-        trial_radius=trial_radius, radius=radius, job=job, method=method, weights=weights,
-        mass_step=mass_step, angle_step=angle_step, positions=positions, phase=phase,
-        angle_sense=angle_sense, rotation=rotation, measure=measure, severity=severity, group=group,
-        foundation=foundation, coefficients=coefficients, suggest_trial=suggest_trial,
-        rotor_mass=rotor_mass, rotor=rotor, bearing_load=bearing_load, trial_fraction=trial_fraction,
-        speed=speed, full=report is not None)
     res = api.run(None, o)
     if (save_coefficients is not None or plot is not None or report is not None) and not res.corrections:
         raise InputError("--suggest-trial without readings has no coefficients, diagram or sheet to "
@@ -292,7 +293,8 @@ MANUAL["field-balance"] = {
         "warnings, with the job file at the end (never over an input; an existing sheet only "
         "with --force).",
         "One- and two-plane jobs with one reading per plane, given with --initial, --trial, "
-        "--run, --cumulative, --radius and --trial-radius only, print what rbcli always printed; "
+        "--run, --cumulative, --radius and --trial-radius only, print what rbcli always printed "
+        "(with Darlow's warning, and the factor beside the condition number, when it flags a plane); "
         "anything more (a job file, more readings, more planes, a method, weights, rounding, "
         "conventions, measures, g readings, severity, coefficients, a trial suggestion, a report) "
         "gives the extended output.",

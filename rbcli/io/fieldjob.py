@@ -206,7 +206,7 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     relative ``coefficients`` or ``rotor.body`` path)."""
     if not text.strip():
         raise InputError("the job file is empty; a job names its sensors, planes and runs "
-                         "(see rbcli field-balance --help)", Location(source, 1, 1))
+                         "(see rbcli-field-balance(1))", Location(source, 1, 1))
     root = ys.load(text, source)
     ctx = _Ctx(source, {})
     m = fl.mapping(ctx, root, "a field-balancing job")
@@ -255,9 +255,12 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     elif "trials" in items or coefficients is None:
         raise ctx.error(m, "the job needs 'initial': the readings without trial masses")
     trials = _trials(ctx, items, planes, speeds)
+    if coefficients is not None and trials:
+        raise ctx.error(items["coefficients"][0], "a trim run from saved coefficients takes 'initial' alone; "
+                                                  "leave out 'trials' (the coefficients hold them)")
     if coefficients is None and not trials:
         raise ctx.error(m, "the job needs 'trials' (one trial run per plane), or 'coefficients' "
-                           "(a file saved by --save-coefficients) for a trim run")
+                           "(a file of saved influence coefficients) for a trim run")
     n = _check_counts(ctx, initial, trials, sensors)
     if sensors and len(sensors) != n:
         raise ctx.error(items["sensors"][1], f"sensors names {len(sensors)} sensors but the runs have "

@@ -167,7 +167,7 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     residuals_table(doc, res, scale, ru, rows, digits)
     significance_note(doc, res)
     if res.severity is not None:
-        severity_table(doc, res, rows, digits)
+        severity_table(doc, res, rows, digits, su)
     if res.suggested_trial:
         suggestion_table(doc, res, su, scale, ru, rows, digits)
     if res.coefficients_from is not None:
@@ -290,17 +290,18 @@ def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
               right=tuple(range(len(_head(res)), len(cols))))
 
 
-def severity_table(doc: Doc, res: FieldBalanceResult, rows, digits: int) -> None:
+def severity_table(doc: Doc, res: FieldBalanceResult, rows, digits: int, su: ShopUnits | None = None) -> None:
     sv = res.severity
     assert sv is not None
-    table = [[*_row_label(r.sensor, r.speed, res), num(r.before * 1e3, digits), r.before_zone,
-              num(r.after * 1e3, digits), r.after_zone] for r in sv.rows]
+    f, u = reading_display("velocity", su) if su is not None else READING_DISPLAY["velocity"]
+    table = [[*_row_label(r.sensor, r.speed, res), num(r.before / f, digits), r.before_zone,
+              num(r.after / f, digits), r.after_zone] for r in sv.rows]
     after = "with the masses fitted" if sv.after_is == "fitted" else "after the correction"
     doc.table(f"{sv.standard}, group {sv.group}, {sv.foundation} support: zones of the 1× readings",
-              [*_head(res), "before [mm/s rms]", "zone", f"{after} [mm/s rms]", "zone"], table,
+              [*_head(res), f"before [{u} rms]", "zone", f"{after} [{u} rms]", "zone"], table,
               right=(len(_head(res)), len(_head(res)) + 2))
-    ab, bc, cd = (num(x * 1e3, 3) for x in sv.boundaries)
-    doc.note(f"zone boundaries A/B {ab}, B/C {bc}, C/D {cd} mm/s r.m.s. (ISO 20816-3 Annex A, as ISO "
+    ab, bc, cd = (num(x / f, 3) for x in sv.boundaries)
+    doc.note(f"zone boundaries A/B {ab}, B/C {bc}, C/D {cd} {u} r.m.s. (ISO 20816-3 Annex A, as ISO "
              "10816-3:2009; a value on a boundary is in the lower zone). A: newly commissioned; B: "
              "unrestricted long-term operation; C: restricted operation; D: damage. The standard judges "
              "the broadband velocity (10 Hz to 1 kHz); these are the 1× readings only, so the machine's "

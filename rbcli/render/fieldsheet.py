@@ -83,7 +83,7 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
     if res.severity is not None:
         s = Section("severity", "Severity (ISO 20816-3)")
         d = Doc()
-        fb.severity_table(d, res, rows, digits)
+        fb.severity_table(d, res, rows, digits, su)
         s.add_doc(d)
         sections.append(s)
     else:
