@@ -167,7 +167,9 @@ def _fitted(o: Any, corrections: list[FieldCorrection], scales: list[float], alp
                                   abs(fp.net), deg(fp.net) if fp.net != 0 else 0.0, npos))
     nets = [complex(pl.mass * _unit_phasor(pl.angle_deg)) for pl in planes]
     # the fitted masses at the correction radius, as trial-radius masses: net / scale
-    r = V0 + alpha @ [nets[j] / scales[j] for j in range(len(nets))]
+    from rbcli.core.balance.fieldsolve import matvec
+
+    r = V0 + matvec(alpha, [nets[j] / scales[j] for j in range(len(nets))])
     res = tuple(_residual(rows[k], r[k], V0[k], o.flipped) for k in range(len(rows)))
     return Fitted(o.mass_step, o.angle_step, tuple(planes), res)
 
@@ -181,7 +183,9 @@ def _unit_phasor(angle_deg: float) -> complex:
 
 def _fitted_resid(o: Any, fitted: Fitted, scales: list[float], alpha: Any, V0: Any) -> list[complex]:
     nets = [pl.mass * _unit_phasor(pl.angle_deg) for pl in fitted.planes]
-    return list(V0 + alpha @ [nets[j] / scales[j] for j in range(len(nets))])
+    from rbcli.core.balance.fieldsolve import matvec
+
+    return list(V0 + matvec(alpha, [nets[j] / scales[j] for j in range(len(nets))]))
 
 
 def _severity(o: Any, V0: Any, after: Any, rows: list[tuple[str, str]], after_is: str) -> Severity:

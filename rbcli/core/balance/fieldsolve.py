@@ -195,18 +195,44 @@ def solve(alpha: object, v0: object, method: str | None = None, weights: object 
         else:
             W = np.linalg.solve(A, -V0)  # field_two_plane's solve
         det = complex(A[0, 0]) if p == 1 else complex(np.linalg.det(A))
-        return FieldSolution(_ro(W), _ro(V0 + A @ W), "exact", cond, det, 0.0)
+        return FieldSolution(_ro(W), _ro(V0 + (A @ W if p <= 2 else matvec(A, W))), "exact", cond, det, 0.0)
     W = least_squares(A, V0, w)
+    # the condition number of alpha is that of its R (A = QR, Q with orthonormal columns), a
+    # P x P matrix: the printed number is the same everywhere (LAPACK's kernels on a tall
+    # matrix can differ in the last bits from machine to machine)
+    R, _ = householder_qr(A, np.zeros(n, dtype=complex))
+    svr = np.linalg.svd(np.array(R), compute_uv=False)
+    cond = float(svr[0] / svr[-1])
     if method == "min-max":
         W = min_max(A, V0, w, start=W)
-        r = V0 + A @ W
+        r = V0 + matvec(A, W)
         return FieldSolution(_ro(W), _ro(r), "min-max", cond, None, float(np.max(w * np.abs(r))))
-    r = V0 + A @ W
+    r = V0 + matvec(A, W)
     return FieldSolution(_ro(W), _ro(r), "least-squares", cond, None, float(np.linalg.norm(w * r)))
+
+
+def _dot(a: list[complex], b: list[complex]) -> complex:
+    """sum a_k b_k, each part summed exactly rounded (math.fsum): the same bits on every
+    machine, BLAS kernel and memory alignment (a golden output is exact to the last digit)."""
+    import math
+
+    prods = [x * y for x, y in zip(a, b)]
+    return complex(math.fsum(z.real for z in prods), math.fsum(z.imag for z in prods))
+
+
+def matvec(alpha: np.ndarray, w: object) -> np.ndarray:
+    """``alpha @ w`` with :func:`_dot`'s exactly rounded sums."""
+    A = np.asarray(alpha, dtype=complex)
+    x = [complex(v) for v in np.asarray(w, dtype=complex)]
+    return np.array([_dot([complex(a) for a in row], x) for row in A], dtype=complex)
 
 
 def least_squares(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> np.ndarray:
     """``argmin_W sum_k (w_k |v0_k + (alpha W)_k|)^2`` by a Householder QR of ``D alpha``.
+
+    Plain Python complex arithmetic with exactly rounded sums (the matrices are small: N
+    readings by P planes): the answer is the same to the last bit on any machine, so golden
+    outputs and trim runs from stored coefficients reproduce it exactly.
 
     Parameters
     ----------
@@ -218,10 +244,46 @@ def least_squares(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> np.
     -------
     (P,) complex ndarray
     """
-    D = weights.astype(complex)
-    Q, R = np.linalg.qr(D[:, None] * alpha, mode="reduced")
-    rhs = Q.conj().T @ (-D * v0)
-    return np.linalg.solve(R, rhs)  # R is square upper triangular and non-singular here
+    R, c = householder_qr(weights[:, None] * alpha, -weights * v0)
+    p = len(R)
+    W = [0j] * p
+    for k in range(p - 1, -1, -1):
+        W[k] = (c[k] - _dot(R[k][k + 1:], W[k + 1:])) / R[k][k]
+    return np.array(W, dtype=complex)
+
+
+def householder_qr(A: np.ndarray, b: np.ndarray) -> tuple[list[list[complex]], list[complex]]:
+    """R (P x P, upper triangular, as lists) and the first P entries of Q^H b, for A = Q R.
+
+    Column k: ``x = A[k:, k]``, ``a = -e^{i arg x_0} |x|``, ``u = (x - a e_1)/|x - a e_1|``;
+    ``A[k:, k:] -= 2 u (u^H A[k:, k:])`` and the same for b (Golub and Van Loan, *Matrix
+    Computations*, §5.2). Python complex arithmetic, sums exactly rounded (:func:`_dot`).
+    """
+    import cmath
+    import math
+
+    n, p = A.shape
+    M = [[complex(A[i, j]) for j in range(p)] for i in range(n)]
+    y = [complex(v) for v in b]
+    for k in range(p):
+        x = [M[i][k] for i in range(k, n)]
+        norm = math.sqrt(math.fsum(abs(z) ** 2 for z in x))
+        if norm == 0.0:
+            continue
+        a = -cmath.exp(1j * cmath.phase(x[0])) * norm if x[0] != 0 else complex(-norm)
+        u = [x[0] - a] + x[1:]
+        un = math.sqrt(math.fsum(abs(z) ** 2 for z in u))
+        u = [z / un for z in u]
+        uc = [z.conjugate() for z in u]
+        for j in range(k, p):
+            f = 2.0 * _dot(uc, [M[i][j] for i in range(k, n)])
+            for i in range(k, n):
+                M[i][j] -= f * u[i - k]
+        f = 2.0 * _dot(uc, y[k:])
+        for i in range(k, n):
+            y[i] -= f * u[i - k]
+    R = [[M[i][j] if j >= i else 0j for j in range(p)] for i in range(p)]
+    return R, y[:p]
 
 
 # ----------------------------------------------------------------------------------------

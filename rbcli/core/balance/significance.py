@@ -28,6 +28,7 @@ the tests use as an independent check.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -56,6 +57,15 @@ class Significance:
     limit: float
 
 
+def _dot(a: list[complex], b: list[complex]) -> complex:
+    prods = [x * y for x, y in zip(a, b)]
+    return complex(math.fsum(z.real for z in prods), math.fsum(z.imag for z in prods))
+
+
+def _norm(a: list[complex]) -> float:
+    return math.sqrt(math.fsum(abs(z) ** 2 for z in a))
+
+
 def plane_significance(alpha: object, limit: float = SIGNIFICANCE_LIMIT) -> Significance:
     """Darlow's significance factors of the planes of an influence matrix.
 
@@ -71,24 +81,27 @@ def plane_significance(alpha: object, limit: float = SIGNIFICANCE_LIMIT) -> Sign
     A = np.asarray(alpha, dtype=complex)
     if A.ndim != 2 or A.shape[1] < 1:
         raise ValueError("alpha must be an (N, P) matrix with P >= 1")
-    norms = np.linalg.norm(A, axis=0)
+    # plain Python arithmetic with exactly rounded sums: the same bits on every machine
+    cols = [[complex(x) for x in A[:, j]] for j in range(A.shape[1])]
+    norms = np.array([_norm(c) for c in cols])
     order = np.argsort(-norms, kind="stable")
     factors = np.zeros(A.shape[1])
-    basis: list[np.ndarray] = []
+    basis: list[list[complex]] = []
     for j in order:
-        u = A[:, j]
+        u = cols[j]
         nu = norms[j]
         if not nu > 0.0:
             factors[j] = 0.0
             continue
-        v = u.copy()
+        v = list(u)
         for _ in range(2):  # Gram-Schmidt twice ("twice is enough"): orthogonal to round-off
             for e in basis:
-                v = v - (e.conj() @ v) * e
-        nv = float(np.linalg.norm(v))
+                c = _dot([z.conjugate() for z in e], v)
+                v = [vi - c * ei for vi, ei in zip(v, e)]
+        nv = _norm(v)
         factors[j] = min(nv / nu, 1.0) if basis else 1.0  # the first plane: nothing before it
         if nv > 0.0:
-            basis.append(v / nv)
+            basis.append([z / nv for z in v])
     factors.setflags(write=False)
     order = np.array(order, dtype=int)
     order.setflags(write=False)
