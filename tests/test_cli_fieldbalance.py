@@ -477,3 +477,13 @@ def test_no_output_replaces_a_file_the_job_reads(cli, tmp_path):
     r = cli("field-balance", str(job), "--plot", str(tmp_path / "rotor.yaml"))
     assert r.code == 2
     shutil.rmtree(tmp_path)
+
+
+def test_api_takes_lists_of_readings():
+    a = rbcli.field_balance(initial=["1@0", "1@180", "0@0"], trial=["1@0", "1@0"],
+                            run=[["4@0", "4@0", "5@0"], ["1@180", "3@180", "3@180"]])
+    b = rbcli.field_balance(initial="1@0,1@180,0@0", trial=["1@0", "1@0"],
+                            run=["4@0,4@0,5@0", "1@180,3@180,3@180"])
+    assert a.to_json() == b.to_json()
+    with pytest.raises(TypeError):
+        rbcli.field_balance(initial=6.0, trial="1@0", run="2@0")

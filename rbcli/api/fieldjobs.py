@@ -183,10 +183,12 @@ def _from_options(*, initial, trial, run, cumulative, trial_radius, radius, meth
 
 
 def _texts(v: Any, param: str) -> list[str]:
+    """One value or several (a run per plane); a run may itself be a list of readings."""
     if isinstance(v, str):
         return [v]
     if isinstance(v, (list, tuple)):
-        return [x if isinstance(x, str) else str(x) for x in v]
+        return [x if isinstance(x, str) else ",".join(str(y) for y in x) if isinstance(x, (list, tuple))
+                else str(x) for x in v]
     raise TypeError(f"{param}: expected a string or a list of strings, got {type(v).__name__}")
 
 
