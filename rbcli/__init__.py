@@ -36,6 +36,8 @@ _API = {
     "gyrocompass": "rbcli.api.top",
     "rollcheck": "rbcli.api.rollcheck",
     "report": "rbcli.api.report",
+    "report_text": "rbcli.documents",
+    "write_report": "rbcli.documents",
     "Body": "rbcli.model",
     "InputError": "rbcli.errors",
     "ParamError": "rbcli.errors",

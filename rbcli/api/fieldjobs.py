@@ -72,16 +72,16 @@ def parse(cls: type, *, initial, trial, run, cumulative, trial_radius, radius, j
     omega = None
     if speed is not None:
         with op.naming("speed"):
-            omega = op.positive(op.quantity(speed, "angular_speed", "{speed}"), "{speed}", "the speed")
+            omega = op.positive(op.quantity(speed, "angular_speed", "speed"), "speed", "the speed")
     step_m = None
     if mass_step is not None:
         with op.naming("mass_step"):
-            step_m = op.positive(op.quantity(mass_step, "mass", "{mass_step}", bare="kg"), "{mass_step}",
+            step_m = op.positive(op.quantity(mass_step, "mass", "mass_step", bare="kg"), "mass_step",
                                  "the mass step")
     step_a = None
     if angle_step is not None:
         with op.naming("angle_step"):
-            step_a = op.positive(op.degrees(angle_step, "{angle_step}"), "{angle_step}", "the angle step")
+            step_a = op.positive(op.degrees(angle_step, "angle_step"), "angle_step", "the angle step")
         if step_a > 360.0:
             raise ParamError("angle_step", "must not exceed 360 degrees")
     npos = None
@@ -154,11 +154,11 @@ def _from_options(*, initial, trial, run, cumulative, trial_radius, radius, meth
     rt = rc = None
     if trial_radius is not None:
         with op.naming("trial_radius"):
-            rt = op.positive(op.quantity(trial_radius, "length", "{trial_radius}"), "{trial_radius}",
+            rt = op.positive(op.quantity(trial_radius, "length", "trial_radius"), "trial_radius",
                              "the trial radius")
     if radius is not None:
         with op.naming("radius"):
-            rc = op.positive(op.quantity(radius, "length", "{radius}"), "{radius}", "the correction radius")
+            rc = op.positive(op.quantity(radius, "length", "radius"), "radius", "the correction radius")
     runs = [fr.readings(r, "run", n, what="one per sensor, as {initial} has") for r in runs_t]
     with op.naming("trial"):
         trials = [fr.trial(t, "trial") for t in trials_t]
@@ -196,7 +196,7 @@ def _weights(weights: Any, n: int) -> list[float]:
     if isinstance(weights, str):
         parts = [x.strip() for x in weights.split(",")]
         with op.naming("weights"):
-            vals = [op.quantity(x, "dimensionless", "{weights}") for x in parts]
+            vals = [op.quantity(x, "dimensionless", "weights") for x in parts]
     else:
         vals = [float(x) for x in weights]
     if len(vals) != n:
@@ -479,9 +479,9 @@ def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any
             text = trial_fraction.strip() if isinstance(trial_fraction, str) else trial_fraction
             with op.naming("trial_fraction"):
                 if isinstance(text, str) and text.endswith("%"):
-                    frac = op.quantity(text[:-1].strip(), "dimensionless", "{trial_fraction}") / 100.0
+                    frac = op.quantity(text[:-1].strip(), "dimensionless", "trial_fraction") / 100.0
                 else:
-                    frac = op.quantity(text, "dimensionless", "{trial_fraction}")
+                    frac = op.quantity(text, "dimensionless", "trial_fraction")
         else:
             frac = jr.trial_fraction
     given = [x for x in (rotor_mass, rotor, bearing_load) if x is not None]
@@ -495,7 +495,7 @@ def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any
     if bearing_load is not None or (jr is not None and jr.bearing_load is not None):
         if bearing_load is not None:
             with op.naming("bearing_load"):
-                F = op.positive(op.quantity(bearing_load, "force", "{bearing_load}"), "{bearing_load}",
+                F = op.positive(op.quantity(bearing_load, "force", "bearing_load"), "bearing_load",
                                 "the bearing load")
         else:
             F = jr.bearing_load
@@ -505,8 +505,8 @@ def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any
         com = None
         if rotor_mass is not None:
             with op.naming("rotor_mass"):
-                mass = op.positive(op.quantity(rotor_mass, "mass", "{rotor_mass}", bare="kg"),
-                                   "{rotor_mass}", "the rotor's mass")
+                mass = op.positive(op.quantity(rotor_mass, "mass", "rotor_mass", bare="kg"),
+                                   "rotor_mass", "the rotor's mass")
         elif rotor is not None or (jr is not None and jr.body is not None):
             from rbcli.core.inertia import body_mass_props
             from rbcli.io.body import load_body

@@ -85,7 +85,7 @@ def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bo
                                 f"({READING_UNITS})")
     number = text[: num.end()].strip().replace("\u2212", "-")
     unit = text[num.end():].strip()
-    option = "{" + param + "}"
+    option = param
     try:
         if not unit:
             return op.quantity(number, "dimensionless", option), None, False
@@ -121,7 +121,7 @@ def reading(text: str, param: str, where: Location | None = None) -> Reading:
         raise ParamError(param, f"'{lit}' is not amplitude@phase, e.g. '6.0@30' or '6 mm/s@30'")
     amp_text, measure = _split_measure(m["num"])
     amp, kind, gravity = _amplitude(amp_text, param, text)
-    ang = math.degrees(op.quantity(m["ang"], "angle", "{" + param + "}", bare="deg"))
+    ang = math.degrees(op.quantity(m["ang"], "angle", param, bare="deg"))
     if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
         raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
     return Reading(complex(cmath.rect(amp, math.radians(ang))), kind, measure, gravity, param, text, where)
@@ -141,7 +141,7 @@ def trial(text: str, param: str = "trial", bare: str = "g") -> complex:
     lit = literal(text)
     if not m:
         raise ParamError(param, f"'{lit}' is not mass@angle, e.g. '10 g@0' (a bare mass is grams)")
-    option = "{" + param + "}"
+    option = param
     with op.naming(param):
         amp = op.quantity(m["num"], "mass", option, bare=bare)
         ang = math.degrees(op.quantity(m["ang"], "angle", option, bare="deg"))
@@ -194,8 +194,12 @@ def at(where: Location | None, exc: InputError) -> InputError:
 
     if where is None:
         return exc
-    reason = exc.reason if isinstance(exc, ParamError) else exc.template
-    return InputError(literal(spell(reason, lambda p: JOB_WORDS.get(p, p))), where)
+    words = lambda p: JOB_WORDS.get(p, p)  # noqa: E731
+    if isinstance(exc, ParamError):
+        text = f"{words(exc.param)}: {spell(exc.reason, words)}"
+    else:
+        text = spell(exc.template, words)
+    return InputError(literal(text), where)
 
 
 def _located(r: Reading, exc: ParamError) -> InputError:

@@ -100,9 +100,12 @@ def balance(
                  ("--speed", speed), ("--grade", grade)]
         applied = _apply(res, out_path, apply, b, given)
     for w in res.warnings:
-        e.warn(f"rbcli: warning: {w}")
+        e.warn(f"rbcli: warning: {c.said(w)}")
+    from rbcli.render.units import echo_rows
+
     c.emit(e, out, lambda: _json(res, applied),
-           lambda doc: rb.document(doc, res, su, digits, applied=applied), given=o.echo)
+           lambda doc: rb.document(doc, res, su, digits, applied=applied),
+           given=echo_rows(o, b, rb.OPTIONS))
     c.finish(res.return_code)
 
 

@@ -45,6 +45,24 @@ UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 from rbcli.cli.app import debug  # noqa: E402,F401  (lives in app: main() needs it first)
 
 
+def said(x: object) -> str:
+    """A warning (:class:`rbcli.errors.Note`) or an error as the command line says it:
+    parameters spelled as options (``--radius``); anything else as ``str``."""
+    from rbcli.errors import RbcliError, option_name, spelled
+
+    if isinstance(x, RbcliError):
+        return x.spelled(option_name)
+    return spelled(x, option_name) if isinstance(x, str) else str(x)
+
+
+def said_json(data: Any) -> Any:
+    """A JSON document with its warnings and remarks (:class:`rbcli.errors.Note`) spelled as
+    the command line says them (the API's ``to_json()`` names parameters, ``--json`` options)."""
+    from rbcli.errors import option_name, spelled_data
+
+    return spelled_data(data, option_name)
+
+
 def env():
     from rbcli.env import Env
 
@@ -82,7 +100,7 @@ def load(source: str, expr: str | None, e: Any):
 
     gc.freeze()
     for w in body.warnings:
-        e.warn(f"rbcli: {w}")
+        e.warn(f"rbcli: {said(w)}")
     return body
 
 
@@ -209,7 +227,7 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     if fmt == "json":
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(data_fn(), lines=lines, plain=plain))
+        e.write(dumps(said_json(data_fn()), lines=lines, plain=plain))
         return
     from rbcli.render.text import Doc
 

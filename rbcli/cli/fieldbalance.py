@@ -104,7 +104,7 @@ def field_balance(
         raise MissingParameter(ctx=ctx, param=param)
     from rbcli.api import fieldbalance as api
     from rbcli.render import fieldbalance as rf
-    from rbcli.render.balance import ShopUnits
+    from rbcli.render.units import ShopUnits
 
     out = c.output_format(json_, fmt)
     su = ShopUnits(units)
@@ -157,7 +157,7 @@ def field_balance(
     if report_path is not None:
         _write_sheet(res, su, digits, report_path, fig_svg, job, force, ctx)
     for w in res.warnings:
-        e.warn(f"rbcli: warning: {w}")
+        e.warn(f"rbcli: warning: {c.said(w)}")
 
     def data() -> dict:
         d = res.to_json()

@@ -73,7 +73,7 @@ def precess(
 ) -> None:
     from rbcli.api import precess as api
     from rbcli.errors import InputError
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits
 
     e = c.env()
     out = c.output_format(json_, fmt)
@@ -103,7 +103,7 @@ def precess(
 
     result = api.run(b, opts)
     for w in opts.warnings:
-        e.warn(f"rbcli: {b.source}: warning: {w}")
+        e.warn(f"rbcli: {b.source}: warning: {c.said(w)}")
     csv_info = None
     if csv is not None:
         csv_info = {"file": csv, "samples": opts.samples or api.DEFAULT_SAMPLES, "duration": opts.duration}
@@ -124,9 +124,11 @@ def precess(
         return out
 
     if csv != "-":  # with --csv - the time series is the output
+        from rbcli.render.units import echo_rows
+
         c.emit(e, out, data, lambda doc: rp.document(
             doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None),
-               given=opts.echo)
+               given=echo_rows(opts, b, rp.OPTIONS))
     c.finish(result.return_code)
 
 

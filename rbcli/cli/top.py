@@ -50,7 +50,7 @@ def _spin_opt(what: str, eg: str):
 
 def _warn(e, result) -> None:
     for w in result.warnings:
-        e.warn(f"rbcli: {w}")
+        e.warn(f"rbcli: {c.said(w)}")
 
 
 @app.command(help=HELP)
@@ -76,7 +76,7 @@ def top(
 ) -> None:
     from rbcli.api import top as api
     from rbcli.errors import InputError
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits, echo_rows
 
     e = c.env()
     out = c.output_format(json_, fmt)
@@ -124,7 +124,8 @@ def top(
 
     c.emit(e, out, data, lambda doc: rt.document(
         doc, r, du, digits, plot=str(plot_path) if plot_path is not None else None, csv=csv,
-        rows=samples if csv is not None else None, duration=span), given=opts.echo)
+        rows=samples if csv is not None else None, duration=span),
+           given=echo_rows(opts, b, rt.TOP_OPTIONS))
     c.finish(r.return_code)
 
 
@@ -159,7 +160,7 @@ def gyrocompass(
 ) -> None:
     from rbcli.api import top as api
     from rbcli.render import top as rt
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits, echo_rows
 
     e = c.env()
     out = c.output_format(json_, fmt)
@@ -170,7 +171,8 @@ def gyrocompass(
     r = api.run_gyrocompass(b, opts)
     _warn(e, r)
     c.emit(e, out, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
-           lambda doc: rt.gyro_document(doc, r, du, digits), given=opts.echo)
+           lambda doc: rt.gyro_document(doc, r, du, digits),
+           given=echo_rows(opts, b, rt.GYRO_OPTIONS))
 
 
 # ----------------------------------------------------------------------------- manual

@@ -14,61 +14,26 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.fmt import num, said
+from rbcli.render.units import RPM, ShopUnits
 from rbcli.render.text import Doc
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.balance import BalanceResult
     from rbcli.core import balance as B
 
-RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
-SQUARE = "²"
 
 
-# ----------------------------------------------------------------------------- units
-
-
-class ShopUnits:
-    """Display units of the balance tables (JSON is always SI)."""
-
-    def __init__(self, spec: str | None) -> None:
-        if not spec:
-            self.length = (1e-3, "mm")
-            self.mass = (1e-3, "g")
-            self.rotor = (1.0, "kg")
-            self.ecc = (1e-6, "µm")
-        else:
-            du = DisplayUnits.parse(spec)
-            self.length = du.length
-            self.mass = du.mass
-            self.rotor = du.mass
-            self.ecc = du.length
-        m, L = self.mass[1], self.length[1]
-        self._kinds: dict[str, tuple[float, str]] = {
-            "length": self.length,
-            "mass": self.mass,
-            "rotor_mass": self.rotor,
-            "eccentricity": self.ecc,
-            "unbalance": (self.mass[0] * self.length[0], f"{m}·{L}"),
-            "couple": (self.mass[0] * self.length[0] ** 2, f"{m}·{L}{SQUARE}"),
-            "force": (1.0, "N"),
-            "torque": (1.0, "N·m"),
-            "angular_momentum": (1.0, "kg·m²/s"),
-            "grade": (1e-3, "mm/s"),
-            "acceleration": (1.0, "m/s²"),
-        }
-
-    def unit(self, kind: str) -> str:
-        return self._kinds[kind][1]
-
-    def factor(self, kind: str) -> float:
-        """SI per display unit of ``kind``."""
-        return self._kinds[kind][0]
-
-    def show(self, x: float | None, kind: str, digits: int) -> str:
-        if x is None:
-            return "—"
-        return num(float(x) / self._kinds[kind][0], digits)
+#: the "options" table of ``balance`` (:func:`rbcli.render.units.echo_rows`)
+OPTIONS = (
+    ("shaft", "shaft", "direction"), ("through", "through", "point"), ("mark", "mark", "direction"),
+    ("zero_mark_deg", "zero_mark_deg", "deg"), ("angle_sense", "angle_sense", "text"),
+    ("planes", "planes", "length"), ("radius", "radius", "length"), ("mass_step", "mass_step", "mass"),
+    ("angle_step", "angle_step", "deg"), ("positions", "positions", "count"),
+    ("speed", "speed", "angular_speed"), ("bearings", "bearings", "length"),
+    ("g", "g", "acceleration"), ("grade", "grade", "grade"),
+    ("tolerance_planes", "tolerance_planes", "text"),
+)
 
 
 def angle(value: float, defined: bool, digits: int) -> str:
@@ -103,7 +68,7 @@ def frame_sentence(r: BalanceResult) -> str | None:
         return None
     return (
         f"shaft frame (body components): z = {_vec(fr.rotation[2])} along the shaft; "
-        f"x = {_vec(fr.rotation[0])}, the 0° mark ({r.mark_source}); "
+        f"x = {_vec(fr.rotation[0])}, the 0° mark ({said(r.mark_source)}); "
         f"y = z × x = {_vec(fr.rotation[1])}"
     )
 
@@ -118,13 +83,13 @@ def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,
     doc.heading(f"{r.body.name}  ({r.body.source})")
     fr = u.frame
     doc.note(
-        f"shaft: {_vec(fr.axis)} ({r.shaft_source}) through {_vec(np.asarray(fr.origin) / su.length[0])} "
-        f"{su.unit('length')} ({r.through_source}); positions z along the shaft from that point"
+        f"shaft: {_vec(fr.axis)} ({said(r.shaft_source)}) through {_vec(np.asarray(fr.origin) / su.length[0])} "
+        f"{su.unit('length')} ({said(r.through_source)}); positions z along the shaft from that point"
     )
     fs = frame_sentence(r)
     if fs:
         doc.note(fs)
-    doc.note(r.angle_convention)
+    doc.note(said(r.angle_convention))
     _unbalance(doc, r, su, digits)
     if r.installed is not None:
         _corrections(doc, r, su, digits)
@@ -201,7 +166,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         ]
         rows.append(row)
     doc.table(
-        f"two-plane correction: masses to add{how} (radius from {r.radius_source})",
+        f"two-plane correction: masses to add{how} (radius from {said(r.radius_source)})",
         cols,
         rows,
         right=tuple(range(1, len(cols))),

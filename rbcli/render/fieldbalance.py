@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rbcli.render.balance import ShopUnits
+from rbcli.render.units import ShopUnits
 from rbcli.render.fmt import num
 from rbcli.render.text import Doc
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from rbcli.render import fieldbalance as fb
-from rbcli.render.balance import ShopUnits
+from rbcli.render.units import ShopUnits
 from rbcli.render.report import Figure, Report, Section
 from rbcli.render.text import Doc
 
