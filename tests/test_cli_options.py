@@ -325,10 +325,10 @@ def test_ctrl_c_is_130(cli, monkeypatch):
 
 
 def test_non_finite_json_is_a_typed_one_line_error():
-    from rbcli.render.jsonout import dumps
+    from rbcli.api.result import jsonable  # the one check every JSON document passes
 
     with pytest.raises(NonFiniteResult) as info:
-        dumps({"iso": {"ratio": [1.0, float("inf")]}})
+        jsonable({"iso": {"ratio": [1.0, float("inf")]}})
     assert isinstance(info.value, InputError)  # exit 2, not a bug
     text = str(info.value)
     assert text.startswith("the result 'iso.ratio[1]' is not a finite number (inf)")

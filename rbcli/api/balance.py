@@ -26,7 +26,7 @@ from rbcli.api import options as op
 from rbcli.api.fieldbalance import (  # noqa: F401  (re-exported: rbcli.field_balance)
     FieldBalanceOptions, FieldBalanceResult, field_balance,
 )
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -82,7 +82,7 @@ class BalanceOptions:
     angle_step : float | None — deg
     positions : int | None — number of equally spaced positions
     speed : float | None — rad/s
-    bearings : (float, float) | None — m
+    bearing_positions : (float, float) | None — m, the bearings along the shaft
     g : float — m/s² (default 9.80665)
     grade : float | None — ISO 21940-11 grade G, mm/s
     tolerance_planes : str — "bearings" or "corrections"
@@ -352,15 +352,15 @@ class BalanceResult(Result):
     installed : rbcli.core.balance.Corrections | None — what to fit: rounded when asked, the
         net of the masses at the positions with ``positions``; its ``residual`` is the rotor
         with exactly those masses added
-    positions : rbcli.core.balance.PositionCorrections | None — the masses on the positions
+    position_split : rbcli.core.balance.PositionCorrections | None — the masses on the positions
     radius_source : str | None — "--radius" or "the body's rim_radius"
-    corrected : rbcli.core.balance.Unbalance | None — the rotor with ``added`` fitted
+    corrected_unbalance : rbcli.core.balance.Unbalance | None — the rotor with ``added`` fitted
     added : tuple of AddedMass — the masses to fit as body points (kg, m)
     speed : float | None — rad/s
-    bearings : (float, float) | None — m
+    bearing_positions : (float, float) | None — m, the bearings along the shaft
     forces : rbcli.core.balance.BearingForces | None — at ``speed`` (N), static loads (N)
     forces_after : rbcli.core.balance.BearingForces | None — the same after the corrections
-    iso : rbcli.core.balance.IsoCheck | None — the ISO 21940-11 check (``passed``)
+    iso_check : rbcli.core.balance.IsoCheck | None — the ISO 21940-11 check (``passed``)
     warnings : tuple of str — one-line warnings (the command prints them on standard error)
     """
 
@@ -372,23 +372,23 @@ class BalanceResult(Result):
     angle_convention: str
     ideal: B.Corrections | None = None
     installed: B.Corrections | None = None
-    positions: B.PositionCorrections | None = None
+    position_split: B.PositionCorrections | None = None
     radius_source: str | None = None
-    corrected: B.Unbalance | None = None
+    corrected_unbalance: B.Unbalance | None = None
     added: tuple[AddedMass, ...] = ()
     speed: float | None = None
-    bearings: tuple[float, float] | None = None
+    bearing_positions: tuple[float, float] | None = None
     forces: B.BearingForces | None = None
     forces_after: B.BearingForces | None = None
-    iso: B.IsoCheck | None = None
+    iso_check: B.IsoCheck | None = None
     warnings: tuple[str, ...] = ()
 
     @property
-    def corrections(self):
+    def correction_pair(self):
         """The two masses to add, planes A and B (``rbcli.core.balance.PlaneCorrection``:
         ``mass`` kg, ``angle_deg``, ``radius`` m, ``z`` m), as JSON ``corrections``: rounded
         when asked, the exact ones with ``positions``; None without ``planes``."""
-        c = self.ideal if self.positions is not None else self.installed
+        c = self.ideal if self.position_split is not None else self.installed
         return None if c is None else c.pair
 
     @property
@@ -417,7 +417,7 @@ class BalanceResult(Result):
     @property
     def return_code(self) -> int:
         """1 when the rotor as given fails the ISO grade asked for, else 0."""
-        if self.iso is not None and not self.iso.passed:
+        if self.iso_check is not None and not self.iso_check.passed:
             return int(ExitStatus.CHECK_FAILED)
         return int(ExitStatus.OK)
 
@@ -447,8 +447,8 @@ class BalanceResult(Result):
                 arrows = []
                 a, ok = u.angle_of(initial[i], res.tol_plane)
                 arrows.append(Arrow("initial", f"{pc.name}: unbalance as given", abs(initial[i]), a, ok))
-                if self.positions is not None:
-                    sp = self.positions.splits[i]
+                if self.position_split is not None:
+                    sp = self.position_split.splits[i]
                     for m, ang, k in zip(sp.masses, sp.angles_deg, sp.positions):
                         arrows.append(Arrow("correction", f"{pc.name}: add at position {k}",
                                             m * pc.radius, ang, m > 0.0, mass=m))
@@ -468,11 +468,11 @@ class BalanceResult(Result):
         """The document ``rbcli balance --json`` prints, less ``file`` (and ``apply``)."""
         from rbcli.api import balancejson as J
 
-        corr = self.ideal if self.positions is not None else self.installed
+        corr = self.ideal if self.position_split is not None else self.installed
         forces = self.forces if self.speed is not None else None
-        d = J.balance_json(self.unbalance, corr, forces, self.iso)
-        if self.positions is not None:
-            pj = J.positions_json(self.positions)
+        d = J.balance_json(self.unbalance, corr, forces, self.iso_check)
+        if self.position_split is not None:
+            pj = J.positions_json(self.position_split)
             det = d["correction_details"]
             det["residual"] = pj["residual"]
             det["rounded"] = pj["rounded"]
@@ -480,15 +480,15 @@ class BalanceResult(Result):
             d["positions"] = {k: v for k, v in pj.items() if k != "residual"}
         if self.installed is not None:
             d["correction_details"]["radius_source"] = self.radius_source
-        if self.corrected is not None:
-            cj = J.unbalance_json(self.corrected)
+        if self.corrected_unbalance is not None:
+            cj = J.unbalance_json(self.corrected_unbalance)
             d["corrected"] = {k: cj[k] for k in (
                 "mass", "eccentricity", "static_unbalance", "couple_unbalance", "tilt_deg",
                 "statically_balanced", "dynamically_balanced")}
-        if self.bearings is not None and self.forces is not None:
+        if self.bearing_positions is not None and self.forces is not None:
             d["bearings"] = [
                 {"plane": float(z), "name": str(i + 1), "static_load": float(w)}
-                for i, (z, w) in enumerate(zip(self.bearings, self.forces.static_loads))
+                for i, (z, w) in enumerate(zip(self.bearing_positions, self.forces.static_loads))
             ]
             if "dynamics" not in d:
                 d["static_load_assumption"] = "shaft horizontal, gravity at right angles to it"
@@ -503,7 +503,7 @@ class BalanceResult(Result):
         d["mark_source"] = self.mark_source
         d["warnings"] = list(self.warnings)
         d["name"] = self.body.name
-        return d
+        return jsonable(d)
 
 
 # ----------------------------------------------------------------------------- the service
@@ -609,9 +609,10 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
     return BalanceResult(
         body=body, unbalance=unb, shaft_source=o.shaft_source, through_source=o.through_source,
         mark_source=o.mark_source, angle_convention=_convention(o.angle_sense), ideal=ideal,
-        installed=installed, positions=positions, radius_source=o.radius_source,
-        corrected=corrected, added=tuple(added), speed=o.speed, bearings=o.bearings,
-        forces=forces, forces_after=forces_after, iso=iso, warnings=tuple(warnings),
+        installed=installed, position_split=positions, radius_source=o.radius_source,
+        corrected_unbalance=corrected, added=tuple(added), speed=o.speed,
+        bearing_positions=o.bearings, forces=forces, forces_after=forces_after, iso_check=iso,
+        warnings=tuple(warnings),
     )
 
 

@@ -139,45 +139,8 @@ def part_rows(body: Any) -> tuple[dict, ...]:
 
 
 def _with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
-    """``jsonable(out | {"parts": list(parts)})``, the rows (one a part: 100 000 for a
-    large body) converted here in one pass: numbers are checked finite and -0.0 written
-    0.0, as jsonable does. Anything else, or a number that is not finite, goes through
-    jsonable itself (its error names the row)."""
-    from rbcli.io.body import gc_paused
-
-    with gc_paused():  # ~2 objects a part, no cycles: the collector would rescan the body
-        return _rows_json(out, parts)
-
-
-def _rows_json(out: dict, parts: tuple[dict, ...]) -> dict:
-    add_zero = (0.0).__add__  # 0.0 + x is x, but 0.0 for -0.0
-    rows = []
-    append = rows.append
-    for row in parts:
-        new = {}
-        for key, v in row.items():
-            cls = v.__class__
-            if cls is float:
-                if v - v != 0.0:  # inf or NaN
-                    break
-                new[key] = v + 0.0
-            elif cls is str or cls is bool or cls is int:
-                new[key] = v
-            elif hasattr(v, "tolist") and v.ndim == 1 and v.dtype.char == "d":  # float64
-                xs = v.tolist()
-                total = sum(xs)
-                if total - total != 0.0:  # inf or NaN (or a sum overflowing: jsonable decides)
-                    break
-                new[key] = list(map(add_zero, xs))
-            else:
-                break
-        else:
-            append(new)
-            continue
-        return jsonable({**out, "parts": list(parts)})
-    done = jsonable(out)
-    done["parts"] = rows
-    return done
+    """``out`` and the parts' rows as JSON (checked finite by :func:`jsonable`)."""
+    return jsonable({**out, "parts": list(parts)})
 
 
 def _inertia_at(mp: Any, ref: Reference) -> tuple[Any, Any]:
@@ -367,10 +330,7 @@ def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
     except ci.InputOverflow as exc:
         raise ParamError(options.reference.param if exc.param == "reference" else exc.param,
                          str(exc)) from None
-    from rbcli.io.body import gc_paused
-
-    with gc_paused():
-        rows = part_rows(body)
+    rows = part_rows(body)
     return InertiaResult(
         name=body.name, mass=res.mass, com=res.com, reference=res.reference,
         reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,
@@ -525,10 +485,7 @@ def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
     point, J = _inertia_at(mp, options.reference)
     pr = principal_report(mp.mass, J, point)
     pa = pr.axes_info
-    from rbcli.io.body import gc_paused
-
-    with gc_paused():
-        rows = part_rows(body)
+    rows = part_rows(body)
     return PrincipalResult(
         name=body.name, mass=pr.mass, reference=pr.reference,
         reference_label=options.reference.label, moments=pa.moments, axes=pa.axes,

@@ -17,11 +17,11 @@ elliptic integral of the third kind): :attr:`PrecessResult.motion` is a
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rbcli._startup import frozen
 from rbcli.api import options as o
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import InputError, Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -61,7 +61,7 @@ def _count(value: Any) -> int:
     return n
 
 
-@frozen
+@dataclass(frozen=True)
 class PrecessOptions:
     """The checked options of :func:`precess` (SI).
 
@@ -117,7 +117,7 @@ class PrecessOptions:
                    samples=n_rows, verify=bool(verify), given=given, warnings=warns)
 
 
-@frozen(eq=False)
+@dataclass(frozen=True, eq=False)
 class PrecessResult(Result):
     """The torque-free motion of a body and what was asked of it.
 
@@ -188,7 +188,7 @@ class PrecessResult(Result):
             out["at"] = self.at_json
         if self.check is not None:
             out["verify"] = self.check.to_json()
-        return out
+        return jsonable(out)
 
     @property
     def return_code(self) -> int:

@@ -255,6 +255,11 @@ class Section:
     figure: Any = None
     warnings: tuple[str, ...] = ()
 
+    def to_json(self) -> dict[str, Any]:
+        """key, title, whether the section is in the report, and why not."""
+        return {"key": self.key, "title": self.title, "included": self.skipped is None,
+                "reason": self.skipped}
+
 
 @dataclass(frozen=True)
 class ReportResult(Result):
@@ -295,13 +300,14 @@ class ReportResult(Result):
 
     def to_json(self) -> dict[str, Any]:
         """The sections (key, title, whether included, why not) and the failed checks."""
-        return {
+        from rbcli.api.result import jsonable
+
+        return jsonable({
             "name": self.name,
-            "sections": [{"key": s.key, "title": s.title, "included": s.skipped is None,
-                          "reason": s.skipped} for s in self.sections],
+            "sections": [s.to_json() for s in self.sections],
             "failed": list(self.failed),
             "warnings": list(self.warnings),
-        }
+        })
 
 
 # ----------------------------------------------------------------------------- the sections
@@ -362,8 +368,8 @@ def _balance(ctx: _Ctx) -> Section:
         res = api.run(ctx.body, o.balance)
     except InputError as exc:
         return _skip(key, title, _not_computed("balance", exc))
-    if res.iso is not None and not res.iso.passed:
-        ctx.failed.append(f"balance: the rotor as given fails ISO 21940-11 G{res.iso.grade:g}")
+    if res.iso_check is not None and not res.iso_check.passed:
+        ctx.failed.append(f"balance: the rotor as given fails ISO 21940-11 G{res.iso_check.grade:g}")
     return Section(key, title, res, options=o.balance, figure=res.diagram(), warnings=res.warnings)
 
 

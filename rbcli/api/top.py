@@ -11,13 +11,12 @@ line); errors are :class:`rbcli.errors.InputError` with the command line's messa
 from __future__ import annotations
 
 import math
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rbcli._startup import frozen
 from rbcli.api import options as op
 from rbcli.api.options import symmetry_tolerance
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -43,7 +42,7 @@ _OVERFLOW = ("{spin}, {theta_dot}, {phi_dot}, {g}: the values overflow floating 
 # ----------------------------------------------------------------------------- top
 
 
-@frozen
+@dataclass(frozen=True)
 class TopOptions:
     """The heavy top's inputs, parsed and checked (SI), with where the pivot came from.
 
@@ -169,7 +168,7 @@ def _pivot(body: Body, p_opt: str | list[float] | None) -> tuple[tuple[float, fl
     return tuple(float(x) for x in P), Note(label)  # type: ignore[return-value]
 
 
-@frozen
+@dataclass(frozen=True)
 class TopResult(Result):
     """The heavy top's motion from the given start, and the numerical check if asked for.
 
@@ -277,7 +276,7 @@ class TopResult(Result):
             out["verify"] = self.verify.to_json()
             if self.real_body is not None:
                 out["verify"]["real_body"] = self.real_body.to_json()
-        return out
+        return jsonable(out)
 
     @property
     def return_code(self) -> int:
@@ -402,7 +401,7 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
 # ----------------------------------------------------------------------------- gyrocompass
 
 
-@frozen
+@dataclass(frozen=True)
 class GyrocompassOptions:
     """The gyrocompass's inputs, parsed and checked (SI).
 
@@ -486,7 +485,7 @@ class GyrocompassOptions:
                    given=given, warnings=_plausibility(body, u, None, S, "spin"))
 
 
-@frozen
+@dataclass(frozen=True)
 class GyrocompassResult(Result):
     """The gyrocompass's swing about north.
 
@@ -541,7 +540,7 @@ class GyrocompassResult(Result):
             if self.asymmetry is not None:
                 out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
             out["name"] = self.body.name
-        return out
+        return jsonable(out)
 
 
 def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:

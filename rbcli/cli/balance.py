@@ -130,7 +130,7 @@ def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
     pts = [NewPoint(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
                     a.mass, a.at) for a in res.added]
     fr = res.installed
-    if res.positions is not None:
+    if res.position_split is not None:
         state = "correction masses at the positions" + (" (rounded)" if fr.rounded else "")
     else:
         state = "rounded correction masses" if fr.rounded else "correction masses"

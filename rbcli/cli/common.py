@@ -227,7 +227,12 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     if fmt == "json":
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(said_json(data_fn()), lines=lines, plain=plain))
+        data = data_fn()
+        if not plain:
+            from rbcli.api.result import jsonable
+
+            data = jsonable(data)
+        e.write(dumps(said_json(data), lines=lines))
         return
     from rbcli.render.text import Doc
 

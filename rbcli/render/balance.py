@@ -93,9 +93,9 @@ def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,
     _unbalance(doc, r, su, digits)
     if r.installed is not None:
         _corrections(doc, r, su, digits)
-    if r.bearings is not None or r.speed is not None:
+    if r.bearing_positions is not None or r.speed is not None:
         _bearings(doc, r, su, digits)
-    if r.iso is not None:
+    if r.iso_check is not None:
         _iso(doc, r, su, digits)
     if applied is not None:
         doc.note(
@@ -139,7 +139,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
     ideal = r.ideal
     assert ideal is not None
     L, m = su.unit("length"), su.unit("mass")
-    rounded = r.positions is None and final.rounded
+    rounded = r.position_split is None and final.rounded
     how = ""
     if rounded:
         steps = []
@@ -153,13 +153,13 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         cols += [f"ideal mass [{m}]", "ideal angle [°]"]
     cols += [f"mass [{m}]", "angle [°]", "remove at [°]", f"unbalance [{su.unit('unbalance')}]"]
     rows = []
-    pairs = zip(ideal.pair, final.pair) if r.positions is None else zip(ideal.pair, ideal.pair)
+    pairs = zip(ideal.pair, final.pair) if r.position_split is None else zip(ideal.pair, ideal.pair)
     for pi, pc in pairs:
         row = [pc.name, su.show(pc.z, "length", digits), su.show(pc.radius, "length", digits)]
         if rounded:
             row += [mag(su, pi.mass, pi.angle_defined, "mass", digits), angle(pi.angle_deg, pi.angle_defined, digits)]
         row += [
-            mag(su, pc.mass, pc.angle_defined or pc.mass > 0 and r.positions is None and final.rounded, "mass", digits),
+            mag(su, pc.mass, pc.angle_defined or pc.mass > 0 and r.position_split is None and final.rounded, "mass", digits),
             angle(pc.angle_deg, pc.angle_defined, digits),
             angle(pc.remove_angle_deg, pc.angle_defined, digits),
             mag(su, abs(pc.unbalance), pc.angle_defined, "unbalance", digits),
@@ -171,7 +171,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         rows,
         right=tuple(range(1, len(cols))),
     )
-    st = (final if r.positions is None else ideal).static
+    st = (final if r.position_split is None else ideal).static
     if st.angle_defined:
         doc.note(
             f"single-plane (static) correction: {su.show(st.mass, 'mass', digits)} {m} at "
@@ -180,8 +180,8 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         )
     else:
         doc.note("single-plane (static) correction: none (the rotor is statically balanced)")
-    if r.positions is not None:
-        p = r.positions
+    if r.position_split is not None:
+        p = r.position_split
         prow = []
         for pc, sp in zip(ideal.pair, p.splits):
             for mass, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
@@ -199,7 +199,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         )
     res = final.residual
     tol = res.tol_static
-    which = "the masses at the positions" if r.positions is not None else (
+    which = "the masses at the positions" if r.position_split is not None else (
         "the rounded corrections" if final.rounded else "the corrections")
     s_ang = r.unbalance.angle_of(res.static, tol)
     c_ang = r.unbalance.angle_of(res.couple, res.tol_couple)
@@ -214,8 +214,8 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
             (f"residual in plane {name} (z = {su.show(z, 'length', digits)} {L})",
              mag(su, abs(uu), r.unbalance.angle_of(uu, res.tol_plane)[1], "unbalance", digits), su.unit("unbalance"))
         )
-    if r.corrected is not None:
-        c = r.corrected
+    if r.corrected_unbalance is not None:
+        c = r.corrected_unbalance
         rrows += [
             ("tilt of the nearest principal axis", num(c.tilt_deg if c.tilt_azimuth_defined else 0.0, digits), "°"),
             ("statically balanced", yes(c.statically_balanced), ""),
@@ -228,7 +228,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
     f = r.forces
     assert f is not None
     L = su.unit("length")
-    if r.bearings is not None:
+    if r.bearing_positions is not None:
         has_speed = r.speed is not None
         cols = ["bearing", f"z [{L}]"]
         if has_speed:
@@ -237,7 +237,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
                 cols += ["after correction [N]"]
         cols += ["static load [N]"]
         rows = []
-        for i, z in enumerate(r.bearings):
+        for i, z in enumerate(r.bearing_positions):
             row = [str(i + 1), su.show(z, "length", digits)]
             if has_speed:
                 F = f.forces[i]
@@ -279,7 +279,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
 
 
 def _iso(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
-    iso = r.iso
+    iso = r.iso_check
     assert iso is not None
     U = su.unit("unbalance")
     L = su.unit("length")
