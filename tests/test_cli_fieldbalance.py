@@ -487,3 +487,22 @@ def test_api_takes_lists_of_readings():
     assert a.to_json() == b.to_json()
     with pytest.raises(TypeError):
         rbcli.field_balance(initial=6.0, trial="1@0", run="2@0")
+
+
+@pytest.mark.parametrize("kwargs", [
+    dict(initial="6.0@30", trial="10 g@0", run="4.0@110"),
+    dict(initial="170@112,53@78", trial=["1.15 g@0"] * 2, run=["235@94,58@68", "185@115,77@104"],
+         trial_radius="100 mm", radius="120 mm"),
+    dict(job=FAN),
+    dict(job=FAN, suggest_trial=True),
+    dict(suggest_trial=True, rotor_mass="120 kg", speed="1480 rpm", trial_radius="250 mm"),
+])
+def test_every_json_key_is_an_attribute_with_its_value(kwargs):
+    """One vocabulary (issue 22): r.<key> is the JSON's value for every key."""
+    from rbcli.api.result import jsonable
+
+    r = rbcli.field_balance(**kwargs)
+    for key, value in r.to_json().items():
+        assert jsonable(getattr(r, key)) == value, key
+    if r.corrections:
+        assert r.corrections[0].mass_trial_on == r.to_json()["corrections"][0]["mass_trial_on"]

@@ -67,7 +67,7 @@ def test_several_speeds_stack_into_one_solve():
     job = load_job(str(FAN))
     assert len(r.initial) == 8 and r.method == "least-squares"
     assert r.row_names()[:2] == [("NDE-H", "low"), ("NDE-V", "low")] and r.row_names()[4] == ("NDE-H", "run")
-    alpha = np.array(r.influence)
+    alpha = np.array(r.alpha)
     V0 = np.array(r.initial)
     ref = np.linalg.lstsq(alpha, -V0, rcond=None)[0]
     # same problem, two backward-stable solvers: ~cond * eps

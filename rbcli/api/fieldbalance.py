@@ -199,10 +199,11 @@ def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
         f = B.field_single_plane(o.initial[0], o.runs[0][0], o.trials[0])
         return FieldBalanceResult(
             planes=1, initial=o.initial, runs=o.runs,
-            corrections=(FieldCorrection("A", f.correction * s, f.correction_trial_on * s),),
-            influence=((f.influence,),), trials=o.trials, radii=o.radii, cond=None,
+            corrections=(FieldCorrection("A", f.correction * s, f.correction_trial_on * s,
+                                         None if o.radii is None else o.radii[1]),),
+            alpha=((f.influence,),), trial_masses=o.trials, radii=o.radii, cond=None,
             det=None, ill_conditioned=False, small_response=(bool(f.small_response),),
-            predicted_residual=(f.predicted_residual,), cumulative=False,
+            residual_values=(f.predicted_residual,), cumulative=False,
             reading_kind=o.reading_kind, warnings=f.warnings)
     f2 = B.field_two_plane(o.initial, o.runs[0], o.runs[1], o.trials[0], o.trials[1],
                            cumulative=o.cumulative)
@@ -214,15 +215,16 @@ def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
                                           for j in sig.flagged)
     return FieldBalanceResult(
         planes=2, initial=o.initial, runs=o.runs,
-        corrections=tuple(FieldCorrection(name, complex(w) * s, complex(w_on) * s)
+        corrections=tuple(FieldCorrection(name, complex(w) * s, complex(w_on) * s,
+                                          None if o.radii is None else o.radii[1])
                           for name, w, w_on in zip("AB", f2.corrections, f2.corrections_trials_on)),
-        influence=tuple(tuple(complex(a) for a in row) for row in f2.influence),
-        trials=o.trials, radii=o.radii, cond=float(f2.cond), det=complex(f2.det),
+        alpha=tuple(tuple(complex(a) for a in row) for row in f2.influence),
+        trial_masses=o.trials, radii=o.radii, cond=float(f2.cond), det=complex(f2.det),
         ill_conditioned=bool(f2.ill_conditioned),
         small_response=tuple(bool(x) for x in f2.small_response),
-        predicted_residual=tuple(complex(v) for v in f2.predicted_residual),
+        residual_values=tuple(complex(v) for v in f2.predicted_residual),
         cumulative=bool(f2.cumulative), reading_kind=o.reading_kind,
-        warnings=warnings, significance=tuple(float(x) for x in sig.factors))
+        warnings=warnings, significance_factors=tuple(float(x) for x in sig.factors))
 
 
 _run = run  # field_balance's parameter ``run`` (the readings) hides the function

@@ -45,11 +45,13 @@ class FieldCorrection:
     correction : complex — kg e^{i angle}, to add with the trial removed (at the correction
         radius when radii are given), angles in the sense of the trial angles
     correction_trial_on : complex — kg, to add with that plane's trial left on
+    radius : float | None — m, the radius the correction goes at (None: the trial's, unsaid)
     """
 
     name: str
     correction: complex
     correction_trial_on: complex
+    radius: float | None = None
 
     @property
     def mass(self) -> float:
@@ -60,6 +62,20 @@ class FieldCorrection:
     def angle_deg(self) -> float:
         """deg, [0, 360), the sense of the trial angles"""
         return deg(self.correction) if self.correction != 0 else 0.0
+
+    @property
+    def mass_trial_on(self) -> float:
+        """kg, with that plane's trial left on"""
+        return abs(self.correction_trial_on)
+
+    @property
+    def angle_trial_on_deg(self) -> float:
+        return deg(self.correction_trial_on) if self.correction_trial_on != 0 else 0.0
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "mass": self.mass, "angle_deg": self.angle_deg,
+                "mass_trial_on": self.mass_trial_on, "angle_trial_on_deg": self.angle_trial_on_deg,
+                "radius": None if self.radius is None else float(self.radius)}
 
 
 @dataclass(frozen=True)
@@ -281,28 +297,31 @@ class FieldBalanceResult(Result):
     runs : tuple of tuple of complex — the readings of each trial run (none for a trim run
         from stored coefficients)
     corrections : tuple of FieldCorrection — per plane (kg)
-    influence : tuple of tuple of complex — reading (SI, or the relative scale) per kg at
-        the trial radius; row = reading, column = plane
-    trials : tuple of complex — kg e^{i angle}
+    alpha : tuple of tuple of complex — the influence coefficients: reading (SI, or the
+        relative scale) per kg at the trial radius; row = reading, column = plane (JSON
+        ``influence``: their magnitudes and angles)
+    trial_masses : tuple of complex — kg e^{i angle} (JSON ``trials``)
     radii : (float, float) | None — m, (trial radius, correction radius) (the command line's)
     cond : float | None — 2-norm condition number of the influence matrix
     det : complex | None — its determinant (square)
     ill_conditioned : bool — cond > 50
     small_response : tuple of bool — per trial run
-    predicted_residual : tuple of complex — per reading, after the correction (reading unit)
+    residual_values : tuple of complex — per reading, after the correction (reading unit; JSON
+        ``predicted_residual``: their magnitudes)
     cumulative : bool
     reading_kind : str | None — "displacement", "velocity", "acceleration", or None (bare)
     warnings : tuple of str
     method : str | None — "exact", "least-squares" or "min-max"; None: a one- or two-plane
         job given the classic way, reported as it always was
-    sensors, speeds : the readings' sensors (names) and speeds ((name, rad/s or None)); a
-        reading k is sensor ``k % len(sensors)`` at speed ``k // len(sensors)``
+    sensors, run_speeds : the readings' sensors (names) and speeds ((name, rad/s or None);
+        JSON ``speeds``); a reading k is sensor ``k % len(sensors)`` at speed
+        ``k // len(sensors)``
     plane_names : tuple of str
     plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius) m
     residuals : tuple of FieldResidual — the predicted readings, in the instrument's phase
         convention (extended results)
     weights : tuple of float | None
-    significance : tuple of float — Darlow's factor per plane
+    significance_factors : tuple of float — Darlow's factor per plane (JSON ``significance``)
     significance_limit : float
     measure : str | None — "pk", "pk-pk" or "rms": what every amplitude is in
     measures_converted : tuple of (str, str, int)
@@ -320,25 +339,25 @@ class FieldBalanceResult(Result):
     initial: tuple[complex, ...]
     runs: tuple[tuple[complex, ...], ...]
     corrections: tuple[FieldCorrection, ...]
-    influence: tuple[tuple[complex, ...], ...]
-    trials: tuple[complex, ...]
+    alpha: tuple[tuple[complex, ...], ...]
+    trial_masses: tuple[complex, ...]
     radii: tuple[float, float] | None
     cond: float | None
     det: complex | None
     ill_conditioned: bool
     small_response: tuple[bool, ...]
-    predicted_residual: tuple[complex, ...]
+    residual_values: tuple[complex, ...]
     cumulative: bool
     reading_kind: str | None = None
     warnings: tuple[str, ...] = ()
     method: str | None = None
     sensors: tuple[str, ...] = ()
-    speeds: tuple[tuple[str, float | None], ...] = ()
+    run_speeds: tuple[tuple[str, float | None], ...] = ()
     plane_names: tuple[str, ...] = ()
     plane_radii: tuple[tuple[float, float] | None, ...] = ()
     residuals: tuple[FieldResidual, ...] = ()
     weights: tuple[float, ...] | None = None
-    significance: tuple[float, ...] = ()
+    significance_factors: tuple[float, ...] = ()
     significance_limit: float = 0.2
     measure: str | None = None
     measures_converted: tuple[tuple[str, str, int], ...] = ()
@@ -366,7 +385,7 @@ class FieldBalanceResult(Result):
         """(sensor, speed) of each reading, in order."""
         n = max(len(self.sensors), 1)
         return [(self.sensors[k % n] if self.sensors else str(k + 1),
-                 self.speeds[k // n][0] if self.speeds else "") for k in range(len(self.initial))]
+                 self.run_speeds[k // n][0] if self.run_speeds else "") for k in range(len(self.initial))]
 
     # ------------------------------------------------------------------ the polar diagram
 
@@ -394,7 +413,7 @@ class FieldBalanceResult(Result):
                 arrows.append(Arrow("effect", f"T{name}: the trial's effect", abs(d), deg(d),
                                     d != 0, tail=(abs(ref), deg(ref))))
             if self.extended and self.residuals:
-                r = self.predicted_residual[i]
+                r = self.residual_values[i]
                 arrows.append(Arrow("residual", "predicted after the correction", abs(r), deg(r), abs(r) > 0))
             if self.extended:
                 sensor, speed = rows[i]
@@ -404,8 +423,8 @@ class FieldBalanceResult(Result):
             panels.append(Panel(title, "reading", tuple(arrows)))
         for j, c in enumerate(self.corrections):
             arrows_m = []
-            if j < len(self.trials):
-                t = self.trials[j]
+            if j < len(self.trial_masses):
+                t = self.trial_masses[j]
                 arrows_m.append(Arrow("trial", "trial mass", abs(t), deg(t), t != 0, mass=abs(t)))
             arrows_m.append(Arrow("correction", "add (trial removed)", c.mass, c.angle_deg, c.correction != 0,
                                   mass=c.mass))
@@ -441,21 +460,10 @@ class FieldBalanceResult(Result):
         if self.extended:
             out["method"] = self.method
             out["sensors"] = list(self.sensors)
-            out["speeds"] = [{"name": n, "speed": w} for n, w in self.speeds]
-        radii = self.plane_radii or (self.radii,) * self.planes
-        out["corrections"] = [
-            {
-                "name": c.name,
-                "mass": abs(c.correction),
-                "angle_deg": deg(c.correction) if c.correction != 0 else 0.0,
-                "mass_trial_on": abs(c.correction_trial_on),
-                "angle_trial_on_deg": deg(c.correction_trial_on) if c.correction_trial_on != 0 else 0.0,
-                "radius": None if radii[j] is None else float(radii[j][1]),
-            }
-            for j, c in enumerate(self.corrections)
-        ]
-        out["influence"] = [[{"magnitude": abs(a), "angle_deg": deg(a)} for a in row] for row in self.influence]
-        out["trials"] = [{"mass": abs(t), "angle_deg": deg(t)} for t in self.trials]
+            out["speeds"] = [{"name": n, "speed": w} for n, w in self.run_speeds]
+        out["corrections"] = [c.to_json() for c in self.corrections]
+        out["influence"] = [[{"magnitude": abs(a), "angle_deg": deg(a)} for a in row] for row in self.alpha]
+        out["trials"] = [{"mass": abs(t), "angle_deg": deg(t)} for t in self.trial_masses]
         out["trial_radius"] = None if self.radii is None else float(self.radii[0])
         readings: dict[str, Any] = {"kind": self.reading_kind or "relative", "unit": self.reading_unit}
         if self.extended:
@@ -478,10 +486,10 @@ class FieldBalanceResult(Result):
         if self.extended:
             out["significance"] = [
                 {"plane": n, "factor": f, "flagged": f <= self.significance_limit}
-                for n, f in zip(self.plane_names, self.significance)]
+                for n, f in zip(self.plane_names, self.significance_factors)]
             out["significance_limit"] = self.significance_limit
         out["small_response"] = [bool(s) for s in self.small_response]
-        out["predicted_residual"] = [float(abs(v)) for v in self.predicted_residual]
+        out["predicted_residual"] = [float(abs(v)) for v in self.residual_values]
         out["cumulative"] = bool(self.cumulative)
         if self.extended:
             out["fitted"] = None if self.fitted is None else self.fitted.to_json()
@@ -506,7 +514,7 @@ class FieldBalanceResult(Result):
         from rbcli.io.fieldcoeffs import FORMAT, VERSION
 
         rows = self.row_names()
-        speeds = list(self.speeds) or [("", None)]
+        speeds = list(self.run_speeds) or [("", None)]
         sensors = list(self.sensors) or [str(k + 1) for k in range(len(self.initial))]
         radii = self.plane_radii or (self.radii,) * self.planes
         names = self.plane_names or tuple("ABCDEFGHIJKLMNOPQRSTUVWXYZ"[:self.planes])
@@ -542,5 +550,5 @@ class FieldBalanceResult(Result):
                        for j in range(self.planes)],
             "rows": [{"sensor": s, "speed": v} for s, v in rows],
             "coefficients": [[{"re": a.real, "im": a.imag, "magnitude": abs(a), "angle_deg": deg(a)}
-                              for a in row] for row in self.influence],
+                              for a in row] for row in self.alpha],
         }

@@ -33,7 +33,7 @@ def solve_job(o: Any) -> FieldBalanceResult:
         conv = Conventions(o.phase, o.angle_sense, o.rotation, o.flipped,
                            convention_text(o.phase, o.angle_sense, o.rotation, o.flipped))
     warnings: list[str] = []
-    common = dict(reading_kind=o.reading_kind, sensors=o.sensors, speeds=o.speeds,
+    common = dict(reading_kind=o.reading_kind, sensors=o.sensors, run_speeds=o.speeds,
                   plane_names=o.plane_names, plane_radii=o.plane_radii, weights=o.weights,
                   measure=o.measure, measures_converted=o.measures_converted, gravity=o.gravity,
                   conventions=conv, coefficients_from=o.coefficients_from, job=o.job, name=o.name,
@@ -41,9 +41,9 @@ def solve_job(o: Any) -> FieldBalanceResult:
     if not o.initial:  # a trial mass sized, nothing measured yet
         sugg = _suggestions(o, None, None)
         return FieldBalanceResult(
-            planes=len(o.plane_names), initial=(), runs=(), corrections=(), influence=(), trials=(),
+            planes=len(o.plane_names), initial=(), runs=(), corrections=(), alpha=(), trial_masses=(),
             radii=o.radii, cond=None, det=None, ill_conditioned=False, small_response=(),
-            predicted_residual=(), cumulative=o.cumulative, method=None, suggested_trial=sugg,
+            residual_values=(), cumulative=o.cumulative, method=None, suggested_trial=sugg,
             warnings=tuple(warnings), significance_limit=SIGNIFICANCE_LIMIT, **common)
     V0 = np.array(o.initial, dtype=complex)
     n = V0.size
@@ -85,7 +85,8 @@ def solve_job(o: Any) -> FieldBalanceResult:
         on = (w - trials[j]) * scales[j] if trials else w * scales[j]
         if trials and abs(w - trials[j]) <= 1e-12 * max(abs(w), abs(trials[j])):
             on = 0j  # the correction is the trial itself, to round-off: nothing to add
-        corrections.append(FieldCorrection(o.plane_names[j], w * scales[j], on))
+        rr = o.plane_radii[j] if j < len(o.plane_radii) else None
+        corrections.append(FieldCorrection(o.plane_names[j], w * scales[j], on, None if rr is None else rr[1]))
     rows = _row_names(o)
     residuals = tuple(_residual(rows[k], resid[k], V0[k], o.flipped) for k in range(n))
     sig = plane_significance(alpha)
@@ -115,11 +116,11 @@ def solve_job(o: Any) -> FieldBalanceResult:
     sugg = _suggestions(o, alpha, V0) if o.suggest is not None else ()
     return FieldBalanceResult(
         planes=p, initial=o.initial, runs=o.runs, corrections=tuple(corrections),
-        influence=tuple(tuple(complex(a) for a in row) for row in alpha), trials=o.trials,
+        alpha=tuple(tuple(complex(a) for a in row) for row in alpha), trial_masses=o.trials,
         radii=o.radii, cond=float(cond), det=det, ill_conditioned=bool(cond > FIELD_COND_WARN),
-        small_response=small, predicted_residual=tuple(complex(r) for r in resid),
+        small_response=small, residual_values=tuple(complex(r) for r in resid),
         cumulative=o.cumulative, method=method, residuals=residuals,
-        significance=tuple(float(x) for x in sig.factors), significance_limit=SIGNIFICANCE_LIMIT,
+        significance_factors=tuple(float(x) for x in sig.factors), significance_limit=SIGNIFICANCE_LIMIT,
         fitted=fitted, severity=severity, suggested_trial=sugg,
         warnings=tuple(warnings), **common)
 

@@ -91,7 +91,7 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
         right=(1, 2, 3, 4),
     )
     if n == 2:
-        flagged = [(name, f) for name, f in zip(names, res.significance) if f <= res.significance_limit]
+        flagged = [(name, f) for name, f in zip(names, res.significance_factors) if f <= res.significance_limit]
         doc.note(
             f"condition number of the influence matrix {num(d['cond'], 4)}"
             + (" (ill-conditioned: the planes are not well separated)" if d["ill_conditioned"] else "")
@@ -110,7 +110,7 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
 
 def _speed_column(res: FieldBalanceResult) -> bool:
     """Whether the tables need a speed column (several speeds, or one named)."""
-    return len(res.speeds) > 1 or bool(res.speeds and res.speeds[0][0])
+    return len(res.run_speeds) > 1 or bool(res.run_speeds and res.run_speeds[0][0])
 
 
 def _row_label(sensor: str, speed: str, res: FieldBalanceResult) -> list[str]:
@@ -141,7 +141,7 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     L = su.unit("length")
     scale, ru = reading_display(res.reading_kind, su)
     rows = res.row_names()
-    n_sp = len(res.speeds)
+    n_sp = len(res.run_speeds)
     label = {"exact": "exact solve", "least-squares": "least squares", "min-max": "min-max"}[res.method or "exact"]
     what = (f"{len(res.sensors)} sensor{'s' if len(res.sensors) != 1 else ''}"
             + (f" × {n_sp} speeds" if n_sp > 1 else ""))
@@ -155,10 +155,10 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     doc.note("a correction is a mass to add; each plane's trial removed before the next run"
              if not res.cumulative else "a correction is a mass to add; each trial was left on for the later runs")
     readings_note(doc, res, ru)
-    if n_sp > 1 or any(w is not None for _, w in res.speeds):
+    if n_sp > 1 or any(w is not None for _, w in res.run_speeds):
         doc.table("speeds", ["speed", "rpm", "rad/s"],
                   [[n or "—", "—" if w is None else num(w * 30.0 / 3.141592653589793, digits),
-                    "—" if w is None else num(w, digits)] for n, w in res.speeds], right=(1, 2))
+                    "—" if w is None else num(w, digits)] for n, w in res.run_speeds], right=(1, 2))
     readings_table(doc, res, scale, ru, rows, digits)
     influence_table(doc, res, scale, ru, rows, su, digits)
     corrections_table(doc, res, su, digits)
@@ -178,7 +178,7 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
 
 def significance_note(doc: Doc, res: FieldBalanceResult) -> None:
     """The condition number and Darlow's plane-significance factors, in one note."""
-    sig = ", ".join(f"{n} {num(f, 3)}" for n, f in zip(res.plane_names, res.significance))
+    sig = ", ".join(f"{n} {num(f, 3)}" for n, f in zip(res.plane_names, res.significance_factors))
     doc.note(f"condition number of the influence matrix {num(res.cond, 4)}"
              + (" (ill-conditioned: the planes are not well separated)" if res.ill_conditioned else "")
              + f"; Darlow's plane-significance factors {sig} (flagged at or below "
@@ -225,7 +225,7 @@ def influence_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
     table = []
     for k, (s, v) in enumerate(rows):
         cells = [*_row_label(s, v, res)]
-        for a in res.influence[k]:
+        for a in res.alpha[k]:
             cells += [num(abs(a) * su.mass[0] / scale, digits), num(_ang(a), digits)]
         table.append(cells)
     doc.table("influence coefficients (at each plane's trial radius; phases in the angles' sense)",
@@ -236,7 +236,7 @@ def corrections_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     m = su.unit("mass")
     L = su.unit("length")
     radii = res.plane_radii or (res.radii,) * res.planes
-    trial_on = bool(res.trials)
+    trial_on = bool(res.trial_masses)
     cols = ["plane", f"radius [{L}]", f"mass [{m}]", "angle [°]"]
     if trial_on:
         cols += [f"trial left on: add [{m}]", "angle [°]"]
