@@ -30,7 +30,7 @@ _API = {
     "inertia": "rbcli.api.massprops",
     "principal": "rbcli.api.massprops",
     "balance": "rbcli.api.balance",
-    "field_balance": "rbcli.api.balance",
+    "field_balance": "rbcli.api.fieldbalance",
     "precess": "rbcli.api.precess",
     "top": "rbcli.api.top",
     "gyrocompass": "rbcli.api.top",

@@ -38,7 +38,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "examples": ("catalog", "List the bundled example bodies, or print one."),
     "balance": ("balance", "Rotor balance about a shaft: unbalance, two-plane corrections, "
                            "bearing forces, ISO 21940-11."),
-    "field-balance": ("balance", "Field (trial-weight) balancing from vibration readings: the "
+    "field-balance": ("fieldbalance", "Field (trial-weight) balancing from vibration readings: the "
                                  "influence-coefficient method."),
     "rollcheck": ("rollcheck", "Stability of a wheel, disk or hoop rolling on a rough floor: the "
                                "critical speed."),

@@ -113,6 +113,21 @@ def cases() -> dict[str, list[list[str]]]:
         "--run", "4.0 mm/s@110", "--json")
     add("field-balance", "error-mixed-units", "--initial", "6 mm@30", "--trial", "10 g@0", "--run",
         "4.0 mm/s@110")
+    # field-balance beyond one reading per plane (issue 25): a job file, least squares,
+    # min-max, a trial mass sized, display units
+    goodman = ["--initial", "1@0,1@180,0@0", "--trial", "1@0", "--run", "4@0,4@0,5@0", "--trial", "1@0",
+               "--run", "1@180,3@180,3@180"]
+    add("field-balance", "job-fan", "examples/jobs/fan.yaml")
+    add("field-balance", "job-fan-json", "examples/jobs/fan.yaml", "--json")
+    add("field-balance", "goodman-least-squares", *goodman)
+    add("field-balance", "goodman-least-squares-json", *goodman, "--json")
+    add("field-balance", "goodman-min-max", *goodman, "--method", "min-max")
+    add("field-balance", "suggest-trial", "--suggest-trial", "--rotor-mass", "120 kg", "--speed",
+        "1480 rpm", "--trial-radius", "250 mm")
+    add("field-balance", "units-in-oz", "--initial", "2 mil@30", "--trial", "1 oz@0", "--run",
+        "1.5 mil@110", "--units", "in,oz")
+    add("field-balance", "error-measure-mix", "--initial", "6 mm/s rms@30", "--trial", "10 g@0",
+        "--run", "4 mm/s@110")
     add("precess", "book", "examples/book.yaml", "--omega", "0.01,1,0.01")
     add("precess", "book-at-json", "examples/book.yaml", "--omega", "0.01,1,0.01", "--at", "1e9", "--json")
     add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5")
