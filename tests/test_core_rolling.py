@@ -25,21 +25,16 @@ from hypothesis import strategies as st
 
 from rbcli.core import rolling as R
 from rbcli.errors import InputError
+from rbcli.core.rollcircle import CircleMotion, circle, lean_for, radius_for, stability_map
 from rbcli.core.rolling import (
-    CircleMotion,
     StraightRolling,
     Verdict,
-    Wheel,
     at_speed,
-    circle,
-    lean_for,
     margin_curve,
-    radius_for,
     rollcheck,
-    stability_map,
     straight,
-    wheel_from_body,
 )
+from rbcli.core.wheel import Wheel, wheel_from_body
 
 G981 = 9.81  # the sheet's g unless stated ("Use 9.81 unless stated")
 

@@ -23,7 +23,9 @@ from rbcli.errors import InputError
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.rim import RimOffset
     from rbcli.core.symmetry import AxialSymmetry
-    from rbcli.core.rolling import CircleMotion, Curves, StraightRolling, Verdict, Wheel
+    from rbcli.core.rollcircle import CircleMotion
+    from rbcli.core.rolling import Curves, StraightRolling, Verdict
+    from rbcli.core.wheel import Wheel
     from rbcli.model import Body, Part
 
 __all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
@@ -292,7 +294,7 @@ def _largest_round_part(body: Body, n, P, mp, tol) -> Part:
 def _wheel(body: Body, mp, axle, through, radius, tol) -> Wheel:
     """The body reduced to a rolling wheel; a body that cannot roll is an InputError
     located at the body."""
-    from rbcli.core.rolling import wheel_from_body
+    from rbcli.core.wheel import wheel_from_body
     from rbcli.errors import Location
 
     try:
@@ -314,7 +316,7 @@ class RollcheckResult(Result):
         The body's file (``"<expr>"``, ``"<text>"`` for bodies given as text).
     options : RollcheckOptions
         The options as used (SI), with the provenance of the axle and the rim radius.
-    wheel : rbcli.core.rolling.Wheel
+    wheel : rbcli.core.wheel.Wheel
         mass (kg), ``A`` = I across the axle and ``C`` = Is about it (kg m², about the
         centre of mass), ``com`` (m) and unit ``axle``; for a nearly symmetric wheel the
         symmetrised one (``A`` the mean of the two moments across; ``wheel.asymmetry``).
@@ -326,7 +328,7 @@ class RollcheckResult(Result):
         With a speed or spin: ``speed`` (m/s), ``spin`` (rad/s), ``stable``, ``margin``
         (|speed| / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
         ``lean_frequency_hz``, ``growth_rate`` (1/s), ``backwards``.
-    circle : rbcli.core.rolling.CircleMotion or None
+    circle : rbcli.core.rollcircle.CircleMotion or None
         With a steady circle: ``lean`` (rad), ``lean_deg``, ``radius`` R_G (m),
         ``turn_rate`` (rad/s), ``spin`` (rad/s), ``speed`` (m/s), ``contact_radius`` (m),
         ``kappa`` (N m), ``stable``, ``lean_frequency`` (rad/s), ``growth_rate`` (1/s).
@@ -359,7 +361,7 @@ class RollcheckResult(Result):
         between the ones computed with either moment: s_c ∝ sqrt(I)); the coupling relative
         to the mean moment across (the principal moments move by at most the coupling, and
         the wheel wobbles); e/(2 (a - r)) for a com e off the axle (the gravity lever swings
-        by ±e). Derivation: :func:`rbcli.core.rolling.wheel_from_body`, Notes."""
+        by ±e). Derivation: :func:`rbcli.core.wheel.wheel_from_body`, Notes."""
         a = self.asymmetry
         if a is None:
             return None

@@ -24,7 +24,9 @@ if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
 
     from rbcli.core.gyrocompass import Gyrocompass
-    from rbcli.core.top import TopMotion, TopParams, TopState
+    from rbcli.core.top import TopMotion
+    from rbcli.core.topbody import TopParams
+    from rbcli.core.toppath import TopState
     from rbcli.core.symmetry import AxialSymmetry
     from rbcli.core.topverify import RealBodyCheck, VerifyResult
     from rbcli.model import Body
@@ -294,15 +296,16 @@ def run(body: Body, options: TopOptions) -> TopResult:
     import numpy as np
 
     from rbcli.core import top as core
+    from rbcli.core import topbody
     from rbcli.core.inertia import body_mass_props
 
     mp = body_mass_props(body)
     P = np.asarray(options.pivot, dtype=float)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            params = core.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
+            params = topbody.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
                                         sym_rtol=options.symmetry_tol)
-    except core.PivotAtCom as exc:
+    except topbody.PivotAtCom as exc:
         if options.pivot_given:
             raise ParamError("pivot", str(exc)) from None
         raise InputError(str(exc), Location(body.source)) from None

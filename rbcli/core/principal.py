@@ -11,16 +11,16 @@ space, and the axes are chosen aligned with the body axes where that is possible
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli._startup import frozen
 from rbcli.core.rotation import matrix_to_axis_angle
 
 DEGENERATE_RTOL = 1e-9
 
 
-@frozen
+@dataclass(frozen=True)
 class PrincipalAxes:
     """Principal decomposition of an inertia tensor.
 
@@ -148,7 +148,7 @@ def _right_handed(axes: np.ndarray) -> np.ndarray:
     return best
 
 
-@frozen
+@dataclass(frozen=True)
 class PrincipalResult:
     """Answer of ``rbcli principal``.
 

@@ -5,8 +5,11 @@ notation are Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed., §5.7 (
 symmetrical top with one point fixed"); "sheet §n" in the comments names the sections of
 rbcli's physics notes that follow that text (the formulas are restated where they are used).
 The elliptic integrals are in Carlson's symmetric form, DLMF §19.25
-(https://dlmf.nist.gov/19.25). The numerical check of ``--verify`` is
-:mod:`rbcli.core.topverify`; the gyrocompass is :mod:`rbcli.core.gyrocompass`.
+(https://dlmf.nist.gov/19.25). This module computes the constants of the motion
+(:func:`analyse`); a body is reduced to a top by :mod:`rbcli.core.topbody`, the motion is
+evaluated at any times by :mod:`rbcli.core.toppath`, checked against a numerical
+integration (``--verify``) by :mod:`rbcli.core.topverify`; the gyrocompass is
+:mod:`rbcli.core.gyrocompass`.
 
 Conventions
 -----------
@@ -33,15 +36,17 @@ quantities (1 - m, 1 - n, 1 - u) carried separately so that no digits are lost.
 
 from __future__ import annotations
 
+from __future__ import annotations
+
 import math
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from rbcli._startup import frozen
-from rbcli.core.symmetry import AxialSymmetry, about_axis, require
-from rbcli.errors import ParamError
 from rbcli.core.checks import finite, json_float
+from rbcli.core.topbody import TopParams
+from rbcli.core.toppath import TopState, carlson_F, complete_Pi, state_at
+from rbcli.errors import ParamError
 
 #: Standard gravity, m/s^2 (SPEC §2 default of ``--g``).
 STANDARD_GRAVITY = 9.80665
@@ -50,19 +55,8 @@ STANDARD_GRAVITY = 9.80665
 STEADY_ULPS = 1e3
 #: The apex point u' = b/a within this fraction of the band of a turning point: cusps.
 CUSP_RTOL = 1e-9
-#: Pivot closer to the com than this fraction of the body's size: no top.
-PIVOT_AT_COM_RTOL = 1e-9
 #: |cos θ0| below this: the axis is horizontal and the fast steady root is infinite.
 HORIZONTAL_COS = 4.0 * np.finfo(float).eps
-
-
-class PivotAtCom(ValueError):
-    """The pivot is at the centre of mass: there is no gravity torque, no heavy top."""
-
-
-class NotATop(ValueError):
-    """The body is not a symmetric top about the pivot–com axis (asymmetric, the axis not
-    principal, or no moment about the axis); the message says how, with the numbers."""
 
 
 class TopInputError(ParamError, ValueError):
@@ -70,218 +64,8 @@ class TopInputError(ParamError, ValueError):
     ``"theta"``, ``"theta_dot"``, ``"phi_dot"`` or ``"g"``)."""
 
 
-# --------------------------------------------------------------------------------------
-# small helpers
 
-
-def _num(x: float) -> str:
-    """A short number for messages: 1.2e-3, 0.04, 22."""
-    x = float(x)
-    if x == 0.0:
-        return "0"
-    if 1e-2 <= abs(x) < 1e4:
-        return f"{x:.3g}"
-    mant, exp = f"{x:.2e}".split("e")
-    mant = mant.rstrip("0").rstrip(".")
-    return f"{mant}e{int(exp)}"
-
-
-def _carlson_F(phi: np.ndarray, m1: float) -> np.ndarray:
-    """F(φ|m) for |φ| <= π/2, from RF, with m1 = 1 - m given exactly."""
-    from rbcli.core.elliptic import elliprf
-
-    s = np.sin(phi)
-    c = np.cos(phi)
-    return s * elliprf(c * c, c * c + m1 * s * s, 1.0)
-
-
-def _carlson_Pi(n: float, n1: float, phi: np.ndarray, m1: float) -> np.ndarray:
-    """Π(n; φ|m) for |φ| <= π/2 (sheet §0): s RF(c², 1-ms², 1) + n/3 s³ RJ(c², 1-ms², 1, 1-ns²).
-
-    ``n1 = 1 - n`` and ``m1 = 1 - m`` are passed separately so that 1 - m s² = c² + m1 s²
-    and 1 - n s² = c² + n1 s² keep their digits.
-    """
-    from rbcli.core.elliptic import elliprc, elliprf, elliprj
-
-    s = np.sin(phi)
-    c = np.cos(phi)
-    c2 = c * c
-    s2 = s * s
-    y = c2 + m1 * s2
-    if n < -1.0:
-        # F and n/3 s³ RJ nearly cancel for n ≪ -1. Use n·ω = m (DLMF 19.7.9 in Carlson form):
-        # Π(n) = F - Π(ω) + s RC(c²Δ², (1-ns²)(1-ωs²)) and F - Π(ω) = -ω/3 s³ RJ(.., 1-ωs²),
-        # two positive terms.
-        om = (1.0 - m1) / n
-        out = -(om / 3.0) * s * s2 * elliprj(c2, y, 1.0, 1.0 - om * s2)
-        return out + s * elliprc(c2 * y, (c2 + n1 * s2) * (1.0 - om * s2))
-    out = s * elliprf(c2, y, 1.0)
-    if n != 0.0:
-        out = out + (n / 3.0) * s * s2 * elliprj(c2, y, 1.0, c2 + n1 * s2)
-    return out
-
-
-def _complete_Pi(n: float, n1: float, m1: float) -> float:
-    """Π(n|m) = RF(0, 1-m, 1) + n/3 RJ(0, 1-m, 1, 1-n) (sheet §0); see _carlson_Pi for n < -1."""
-    if n < -1.0:
-        return float(_carlson_Pi(n, n1, np.asarray(0.5 * np.pi), m1))
-    from rbcli.core.elliptic import elliprf, elliprj
-
-    out = float(elliprf(0.0, m1, 1.0))
-    if n != 0.0:
-        out += n / 3.0 * float(elliprj(0.0, m1, 1.0, n1))
-    return out
-
-
-# --------------------------------------------------------------------------------------
-# the top's parameters
-
-
-@frozen
-class TopParams:
-    """Mass properties of a symmetric top about its pivot.
-
-    Attributes
-    ----------
-    mass : float — kg
-    length : float — m, distance l from the pivot to the centre of mass
-    I : float — kg m^2, moment about the pivot across the symmetry axis (I_cm + m l²)
-    Is : float — kg m^2, moment about the symmetry axis
-    axis : tuple[float, float, float] | None — unit symmetry axis e3 in the body frame,
-        pointing from the pivot to the com (None when built from numbers)
-    pivot : tuple[float, float, float] | None — m, body frame
-    com : tuple[float, float, float] | None — m, body frame
-    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
-        above rounding, within the tolerance): how far it departs, and its real inertia
-        tensor about the pivot; I is then the mean of the two moments across (None for a
-        body symmetric to rounding)
-    """
-
-    mass: float
-    length: float
-    I: float  # noqa: E741 - the sheet's name
-    Is: float
-    axis: tuple[float, float, float] | None = None
-    pivot: tuple[float, float, float] | None = None
-    com: tuple[float, float, float] | None = None
-    asymmetry: AxialSymmetry | None = field(default=None, repr=False)
-
-    def __post_init__(self) -> None:
-        for name in ("mass", "length", "I", "Is"):
-            v = finite(name, getattr(self, name))
-            if v <= 0.0:
-                raise ValueError(f"{name} of a top must be positive, not {v}")
-
-    def to_json(self) -> dict:
-        out: dict = {"mass": self.mass, "length": self.length, "I": self.I, "Is": self.Is}
-        for k in ("axis", "pivot", "com"):
-            v = getattr(self, k)
-            out[k] = None if v is None else [float(c) for c in v]
-        return out
-
-
-def top_from_body(
-    mass: float,
-    com: np.ndarray,
-    inertia_com: np.ndarray,
-    pivot: np.ndarray,
-    *,
-    sym_rtol: float = 1e-6,
-) -> TopParams:
-    """Reduce a body's mass properties to a symmetric (or nearly symmetric) top on a pivot.
-
-    Parameters
-    ----------
-    mass : float — kg, > 0
-    com : (3,) array_like — m, centre of mass in the body frame
-    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
-        convention: off-diagonals are -∫xy dm)
-    pivot : (3,) array_like — m, the fixed point, body frame
-    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis" (the
-        ``--symmetry-tol`` of :mod:`rbcli.core.symmetry`); a body within it but above
-        rounding is symmetrised (I the mean of the two moments across) and its departures
-        are kept in ``TopParams.asymmetry``
-
-    Returns
-    -------
-    TopParams
-
-    Raises
-    ------
-    PivotAtCom
-        The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
-        no gravity torque; the motion is free precession (``rbcli precess``).
-    rbcli.core.symmetry.Asymmetric
-        The two moments across the axis differ by more than ``sym_rtol`` (relative to
-        their mean), the axis is not a principal axis (its products of inertia with the
-        transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
-        about the axis is zero (a pendulum).
-    ValueError
-        an input is not finite, or the mass is not positive.
-
-    Notes
-    -----
-    The symmetry axis is e3 = (com - pivot)/l, l = |com - pivot| (SPEC §2 ``top``).
-    Parallel-axis theorem: I_pivot = I_com + m (l² E - d dᵀ), d = com - pivot.
-    Is = e3·I_pivot·e3 (= e3·I_com·e3); the moments across are the eigenvalues of the
-    2x2 block of I_pivot on a basis (e1, e2) of the plane normal to e3
-    (sheet §2 "Setup", §4b item 6).
-    """
-    m = finite("mass", mass)
-    if m <= 0.0:
-        raise ValueError(f"the mass of a top must be positive, not {m}")
-    c = np.asarray(com, dtype=float).reshape(3)
-    p = np.asarray(pivot, dtype=float).reshape(3)
-    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
-    if not (np.all(np.isfinite(c)) and np.all(np.isfinite(p)) and np.all(np.isfinite(J))):
-        raise ValueError("the com, pivot and inertia tensor must be finite numbers")
-    J = 0.5 * (J + J.T)
-    d = c - p
-    length = float(np.linalg.norm(d))
-    r_gyr = math.sqrt(max(float(np.trace(J)), 0.0) / (2.0 * m))
-    size = max(r_gyr, float(np.linalg.norm(c)), float(np.linalg.norm(p)))
-    if length == 0.0 or length <= PIVOT_AT_COM_RTOL * size:
-        raise PivotAtCom(
-            f"the pivot is at the centre of mass (they are {_num(length)} m apart): gravity "
-            "exerts no torque about it, so this is not a heavy top; for torque-free motion "
-            "use `rbcli precess`"
-        )
-    e3 = d / length
-    Ip = J + m * (length**2 * np.eye(3) - np.outer(d, d))
-    Is = float(e3 @ Ip @ e3)
-    # a basis of the transverse plane
-    k = int(np.argmin(np.abs(e3)))
-    e1 = np.cross(e3, np.eye(3)[k])
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(e3, e1)
-    mean = 0.5 * (float(e1 @ Ip @ e1) + float(e2 @ Ip @ e2))  # the symmetrised moment across
-    if mean <= 0.0:
-        raise NotATop("the moment of inertia across the pivot–com axis is zero")
-    sym = about_axis(m, c, J, p, e3)
-    require(sym, sym_rtol, "the pivot–com axis", "a top")
-    if Is <= 1e-12 * mean:
-        raise NotATop(
-            f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
-            "kg m²: a point mass or a thin rod along the axis): it cannot carry spin, so it "
-            "is a spherical pendulum, not a top"
-        )
-    return TopParams(
-        mass=m,
-        length=length,
-        I=mean,
-        Is=Is,
-        axis=tuple(float(v) for v in e3),  # type: ignore[arg-type]
-        pivot=tuple(float(v) for v in p),  # type: ignore[arg-type]
-        com=tuple(float(v) for v in c),  # type: ignore[arg-type]
-        asymmetry=None if sym.exact else sym,
-    )
-
-
-# --------------------------------------------------------------------------------------
-# results
-
-
-@frozen
+@dataclass(frozen=True)
 class FastTop:
     """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top").
 
@@ -315,7 +99,7 @@ class FastTop:
         }
 
 
-@frozen
+@dataclass(frozen=True)
 class EllipticSolution:
     """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t).
 
@@ -358,7 +142,7 @@ class EllipticSolution:
     bottom_jump: float = 0.0
 
 
-@frozen
+@dataclass(frozen=True)
 class TopMotion:
     """The exact motion of a heavy symmetric top from a given start.
 
@@ -429,7 +213,7 @@ class TopMotion:
     fast_top: FastTop
     elliptic: EllipticSolution = field(repr=False)
 
-    def at(self, t) -> "TopState":
+    def at(self, t) -> TopState:
         """The Euler angles and their rates at times ``t`` (s): :func:`state_at`."""
         return state_at(self, t)
 
@@ -503,6 +287,7 @@ class TopMotion:
 
 # --------------------------------------------------------------------------------------
 # the analysis
+
 
 
 def _cubic_roots_shifted(
@@ -726,9 +511,9 @@ def analyse(
         n_minus, n_minus1 = -band / opu1, opu2 / opu1
     else:
         n_minus, n_minus1 = 0.0, 1.0  # u1 = -1 exactly: cm = 0, the term drops out
-    K = _complete_Pi(0.0, 1.0, m1)
-    Pi_p = _complete_Pi(n_plus, n_plus1, m1) if cp != 0.0 else K
-    Pi_m = _complete_Pi(n_minus, n_minus1, m1) if cm != 0.0 else K
+    K = complete_Pi(0.0, 1.0, m1)
+    Pi_p = complete_Pi(n_plus, n_plus1, m1) if cp != 0.0 else K
+    Pi_m = complete_Pi(n_minus, n_minus1, m1) if cm != 0.0 else K
     jt = top_sign if top_pass else 0.0
     jb = bottom_sign if bottom_pass else 0.0
     if math.isfinite(K):
@@ -748,7 +533,7 @@ def analyse(
     if band > 0.0:
         r, r1 = -x1 / band, x2 / band  # sn²(τ0) and cn²(τ0)
         am0 = math.atan2(math.sqrt(max(r, 0.0)), math.sqrt(max(r1, 0.0)))
-        F0 = float(_carlson_F(np.asarray(am0), m1))
+        F0 = float(carlson_F(np.asarray(am0), m1))
         if thd > 0.0:  # θ increasing: u decreasing, τ0 in [-K, 0]
             am0, F0 = -am0, -F0
     else:
@@ -828,133 +613,3 @@ def analyse(
         critical_spin=S_c, sleeps=abs(S) > S_c, apex_u=u0 + xstar, path=path,
         steady=steady, fast_top=fast, elliptic=ell,
     )  # fmt: skip
-
-
-# --------------------------------------------------------------------------------------
-# the motion in time
-
-
-def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The exact Euler angles of the top at times ``t``.
-
-    Parameters
-    ----------
-    motion : TopMotion
-    t : array_like — s, any shape (negative times are fine)
-
-    Returns
-    -------
-    theta, phi, psi : ndarray, shape of ``t`` — rad; θ is the tilt from the upward
-        vertical; φ and ψ are continuous (not wrapped) and start at 0 at t = 0.
-
-    Notes
-    -----
-    Sheet §2 "Closed form": u(t) = u1 + (u2-u1) sn²(τ|m), τ = λ t + τ0, and with
-    ∫dt/(1 - n sn²(λt)) = Π(n; am(λt)|m)/λ:
-    φ(t) = [cp ΔΠ(n+) + cm ΔΠ(n-)]/λ, ψ(t) = (S - a) t - [cp ΔΠ(n+) - cm ΔΠ(n-)]/λ,
-    where ΔΠ(n) = Π(n; am τ|m) - Π(n; am τ0|m). τ is reduced to τr in [-K, K] with
-    τ = τr + 2Kj, so am τ = am τr + jπ and Π(n; am τ) = Π(n; am τr) + 2j Π(n|m)
-    (quasi-periodicity).
-    """
-    theta, phi, psi, _sn, _cn = _path(motion, t)
-    return theta, phi, psi
-
-
-def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
-    """θ, φ, ψ as :func:`path_at`, and sn τ, cn τ of the reduced phase τr (for the rates)."""
-    from rbcli.core.elliptic import ellipj
-
-    e = motion.elliptic
-    tt = np.asarray(t, dtype=float)
-    if not np.isfinite(e.K):
-        raise ValueError("the motion is on the separatrix (m = 1): no periodic closed form")
-    tau = e.lam * tt + e.tau0
-    j = np.rint(tau / (2.0 * e.K))
-    tau_r = tau - 2.0 * e.K * j
-    sn, cn, _dn, ph = ellipj(tau_r, e.m, e.m1)
-    ph = np.clip(ph, -0.5 * np.pi, 0.5 * np.pi)
-    # 1 - u = (1 - u2) + (u2 - u1) cn² and 1 + u = (1 + u1) + (u2 - u1) sn²: sums of
-    # non-negative terms, accurate near either pole
-    one_minus_u = e.one_minus_u2 + e.band * cn * cn
-    one_plus_u = e.one_plus_u1 + e.band * sn * sn
-    theta = 2.0 * np.arctan2(np.sqrt(one_minus_u), np.sqrt(one_plus_u))
-
-    # the phase at t = 0 reduced and evaluated exactly as at any t (not the stored atan2
-    # value, equal to it within ~1 ulp), so that φ(0) and ψ(0) are exactly 0
-    j0 = float(np.rint(e.tau0 / (2.0 * e.K)))
-    am0 = np.clip(ellipj(e.tau0 - 2.0 * e.K * j0, e.m, e.m1)[3], -0.5 * np.pi, 0.5 * np.pi)
-
-    def dPi(n: float, n1: float, Pc: float) -> np.ndarray:
-        now = _carlson_Pi(n, n1, ph, e.m1) + 2.0 * j * Pc
-        return now - (_carlson_Pi(n, n1, am0, e.m1) + 2.0 * j0 * Pc)
-
-    zero = np.zeros_like(tt)
-    dp = dPi(e.n_plus, e.n_plus1, e.Pi_plus) if e.cp != 0.0 else zero
-    dm = dPi(e.n_minus, e.n_minus1, e.Pi_minus) if e.cm != 0.0 else zero
-    phi = (e.cp * dp + e.cm * dm) / e.lam
-    psi = (motion.spin - motion.a) * tt - (e.cp * dp - e.cm * dm) / e.lam
-    if e.top_jump:  # u = 1 at τ = K (mod 2K): φ += ±π, ψ -= ±π per passage
-        k = np.floor((tau - e.K) / (2.0 * e.K)) - math.floor((e.tau0 - e.K) / (2.0 * e.K))
-        phi = phi + e.top_jump * np.pi * k
-        psi = psi - e.top_jump * np.pi * k
-    if e.bottom_jump:  # u = -1 at τ = 0 (mod 2K): φ += ±π, ψ += ±π per passage
-        k = np.floor(tau / (2.0 * e.K)) - math.floor(e.tau0 / (2.0 * e.K))
-        phi = phi + e.bottom_jump * np.pi * k
-        psi = psi + e.bottom_jump * np.pi * k
-    return theta, phi, psi, sn, cn
-
-
-@frozen
-class TopState:
-    """The top at given times (every array has the shape of ``t``).
-
-    Attributes
-    ----------
-    t : ndarray — s
-    theta : ndarray — rad, tilt of the axis from the upward vertical
-    phi, psi : ndarray — rad, precession and spin angles, continuous, 0 at t = 0
-    theta_dot, phi_dot, psi_dot : ndarray — rad/s, their rates (ψ' = S - φ' cos θ)
-    """
-
-    t: np.ndarray
-    theta: np.ndarray
-    phi: np.ndarray
-    psi: np.ndarray
-    theta_dot: np.ndarray
-    phi_dot: np.ndarray
-    psi_dot: np.ndarray
-
-    @property
-    def axis(self) -> np.ndarray:
-        """Unit symmetry axis in space, shape ``t.shape + (3,)``: (sin θ cos φ, sin θ sin φ,
-        cos θ), z up."""
-        st = np.sin(self.theta)
-        return np.stack([st * np.cos(self.phi), st * np.sin(self.phi), np.cos(self.theta)], axis=-1)
-
-
-def state_at(motion: TopMotion, t: np.ndarray) -> TopState:
-    """The exact Euler angles and their rates at times ``t`` (s, any shape).
-
-    Notes
-    -----
-    Angles from :func:`path_at`. With u = cos θ = u1 + (u2 - u1) sn²(τ|m), τ = λ t + τ0:
-    u' = 2 λ (u2 - u1) sn cn dn, θ' = -u'/sin θ, and from the two conserved momenta
-    (Goldstein §5.7) φ' = (b - a u)/(1 - u²), ψ' = S - φ' u. At an instant where the axis
-    is exactly vertical (only when it passes through a pole) φ' and θ' are not defined
-    (NaN there).
-    """
-    e = motion.elliptic
-    tt = np.asarray(t, dtype=float)
-    theta, phi, psi, sn, cn = _path(motion, tt)
-    one_minus_u = e.one_minus_u2 + e.band * cn * cn
-    one_plus_u = e.one_plus_u1 + e.band * sn * sn
-    dn = np.sqrt(e.m1 + e.m * cn * cn)
-    sin_theta = np.sqrt(one_minus_u * one_plus_u)
-    u = 1.0 - one_minus_u
-    with np.errstate(divide="ignore", invalid="ignore"):
-        theta_dot = -2.0 * e.lam * e.band * sn * cn * dn / sin_theta
-        phi_dot = (motion.b - motion.a * u) / (one_minus_u * one_plus_u)
-    theta_dot = np.where(e.band == 0.0, 0.0, theta_dot)
-    psi_dot = motion.spin - phi_dot * u
-    return TopState(t=tt, theta=theta, phi=phi, psi=psi, theta_dot=theta_dot, phi_dot=phi_dot,
-                    psi_dot=psi_dot)
