@@ -307,8 +307,12 @@ def _cubic_roots_shifted(
 
     if c0 == 0.0:
         # x = 0 is a root (released with θ0' = 0, sheet §2 "Released from rest"): deflate.
-        disc = max(c2 * c2 - 4.0 * beta * c1, 0.0)
-        q = -0.5 * (c2 + math.copysign(math.sqrt(disc), c2))
+        disc = c2 * c2 - 4.0 * beta * c1
+        if math.isfinite(disc):
+            root = math.sqrt(max(disc, 0.0))
+        else:  # c2² overflows (rates ~1e152 and up): |c2| sqrt(1 - 4 β c1/c2²)
+            root = abs(c2) * math.sqrt(max(1.0 - 4.0 * beta * (c1 / c2) / c2, 0.0))
+        q = -0.5 * (c2 + math.copysign(root, c2))
         ra = q / beta
         rb = c1 / q if q != 0.0 else 0.0
         x1, x2, x3 = sorted((0.0, ra, rb))
@@ -329,20 +333,87 @@ def _cubic_roots_shifted(
                 return fb
             return P(x)
 
-        return float(brentq(g, a_, b_, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=500))
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # extreme starts
+            return float(brentq(g, a_, b_, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=500))
 
-    x1 = bracketed(lo, f_lo, 0.0, c0)
-    x2 = bracketed(0.0, c0, hi, f_hi)
+    def next_to_zero(lo_: float, hi_: float) -> float | None:
+        # The root beside x = 0 when P is linear there to round-off: x0 = -c0/c1 with
+        # |c2 x0| + |β x0²| <= eps/2 |c1| is the root to within rounding (P(x0)/c1 is below
+        # half an ulp of x0). θ0' tiny beside the other rates (c0 ~ 1e-300) put that root
+        # where P's values are subnormal, and Brent's method then crept in steps of
+        # xtol/2 (issue 27: θ0 = 1e-6°, θ0' = 1e-144 rad/s did not converge).
+        if c1 == 0.0:
+            return None
+        x0 = -c0 / c1
+        if lo_ <= x0 <= hi_ and abs(c2 * x0) + abs(beta * x0 * x0) <= 0.5 * np.finfo(float).eps * abs(c1):
+            return x0
+        return None
+
+    x1 = next_to_zero(lo, 0.0)
+    if x1 is None:
+        x1 = bracketed(lo, f_lo, 0.0, c0)
+    x2 = next_to_zero(0.0, hi)
+    if x2 is None:
+        x2 = bracketed(0.0, c0, hi, f_hi)
+
     x3 = -c2 / beta - x1 - x2  # Vieta
     for _ in range(3):  # Newton polish of the isolated large root
         d = dP(x3)
-        if d == 0.0:
+        p = P(x3)
+        if not (math.isfinite(d) and math.isfinite(p)):
+            # β x3³ overflows (a large root, ~1e103 and up): the same step from
+            # P(x)/x³ = β + c2 t + c1 t² + c0 t³ and P'(x)/x² = 3β + 2 c2 t + c1 t², t = 1/x
+            t = 1.0 / x3
+            d = (c1 * t + 2.0 * c2) * t + 3.0 * beta
+            if d == 0.0:
+                break
+            step = x3 * ((((c0 * t + c1) * t + c2) * t + beta) / d)
+        elif d == 0.0:
             break
-        step = P(x3) / d
+        else:
+            step = p / d
         x3 -= step
         if abs(step) <= 1e-16 * abs(x3):
             break
     return x1, x2, x3
+
+
+def _require_representable(
+    thd: float, w_s0: float, a: float, beta: float, g: float, given: tuple[float, float, float],
+    c0: float, c1: float, c2: float, bpa: float, bma: float,
+) -> None:
+    """Refuse, naming the parameter, a start whose turning-point cubic is beyond doubles.
+
+    The cubic is evaluated on |x| <= 2 (u in [-1, 1]), so its terms must stay below the
+    largest double: |c0| + 2|c1| + 4|c2| + 8β and (b ± a)² finite; its large root
+    u3 ≈ -c2/β must be finite too (the energy more than ~1e308 times gravity's range).
+    The parameter blamed is the one whose rate dominates the energy per unit moment
+    (θ0', φ0' sin θ0, a = Is S/I, sqrt(β)), or g when β = 2 m g l/I itself underflows.
+    Found by the audit of issue 27: ``top --theta-dot 1e300`` ran Brent's method on
+    infinite coefficients, and θ0' = 1e66..1e153 overflowed the Newton polish of u3.
+    """
+    size = abs(c0) + 2.0 * abs(c1) + 4.0 * abs(c2) + 8.0 * beta + bpa * bpa + bma * bma
+    tiny = not beta >= np.finfo(float).tiny
+    if math.isfinite(size) and not tiny and math.isfinite(c2 / beta):
+        return
+    S, thd_given, w_given = given
+    if tiny:
+        raise TopInputError(
+            "g", f"gravity {g:.6g} m/s² is too small for the top's equations: "
+            "β = 2 m g l/I underflows double precision; give a value of a physical size")
+    rates = {"theta_dot": abs(thd), "phi_dot": abs(w_s0), "spin": abs(a), "g": math.sqrt(beta)}
+    param = max(rates, key=lambda k: rates[k])
+    what = {"theta_dot": f"the initial tilt rate {thd_given:.6g} rad/s",
+            "phi_dot": f"the initial precession rate {w_given:.6g} rad/s",
+            "spin": f"the spin {S:.6g} rad/s",
+            "g": f"gravity {g:.6g} m/s²"}[param]
+    if math.isfinite(size):
+        why = ("the top's energy is more than 1e308 times the range of its potential energy, so "
+               "the third turning point u3 of its motion overflows double precision")
+    else:
+        why = ("the squares of the rates (the energy per unit moment) overflow double "
+               "precision in the top's equations")
+    raise TopInputError(param, f"{what} is too large: {why}; give a value of a physical size")
 
 
 def _pole_root(e0: float, e1: float, e2: float, e3: float, d: float) -> float:
@@ -442,6 +513,14 @@ def analyse(
         )
     m_, l_, I, Is = params.mass, params.length, params.I, params.Is
     mgl = m_ * gg * l_
+    slow = mgl / (Is * S)  # m g l/(Is S): the horizontal (and fast-top) precession rate
+    if not (math.isfinite(slow * slow) and math.isfinite(2.0 * I * slow / (Is * S))):
+        raise TopInputError(
+            "spin",
+            f"the spin {S:.6g} rad/s is too small against gravity for the top's equations: "
+            f"its precession rate m g l/(Is S) overflows double precision; give a spin of a "
+            "physical size (without spin the body is a spherical pendulum, not a top)"
+        )
 
     u0 = math.cos(th0)
     s0 = math.sin(th0)
@@ -461,6 +540,7 @@ def analyse(
     c2 = 2.0 * u0 * beta - A0 - a * a
     bpa = B0 + a * opu0  # b + a
     bma = B0 - a * omu0  # b - a
+    _require_representable(thd, w * s0, a, beta, gg, (S, thd, w), c0, c1, c2, bpa, bma)
     x1, x2, x3 = _cubic_roots_shifted(c0, c1, c2, beta, -opu0, omu0, -(bpa**2), -(bma**2))
     # a root exactly at u = ±1 (the axis passes through a pole): snap it there
     x1 = -opu0 if bpa == 0.0 else max(x1, -opu0)
