@@ -461,10 +461,17 @@ class PrincipalResult(Result):
     unique_axis : int or None — for ``"symmetric"``, the index (0 or 2) of the moment that
         differs
     free_axes : tuple of int — 0-based indices of the axes free to choose (equal moments)
-    stable : tuple of 3 bool — is free rotation about each axis stable
+    stable : tuple of 3 bool — is free rotation about each axis stable (false for a neutral
+        axis: see ``stability``)
+    stability : tuple of 3 str — ``"stable"``, ``"unstable"`` or ``"neutral"`` per axis (neutral:
+        an axis of the equal pair of a symmetric body, about which the spin axis wanders)
     direction_angles_deg : (3, 3) ndarray — degrees, principal axis i from body axis j
-    rotation_axis : (3,) ndarray — unit axis of the rotation taking body to principal axes
-    rotation_angle_deg : float — its angle, degrees
+    tilt_deg : (3,) ndarray — degrees, each principal axis from its nearest body axis line
+    tilt_axis : tuple of 3 str — that body axis, ``"x"``, ``"y"`` or ``"z"``
+    rotation_axis : (3,) ndarray — unit axis of the rotation taking the body axes to the
+        principal axes 1, 2, 3 in ascending order of the moments
+    rotation_angle_deg : float — its angle, degrees (~90° when the ascending order permutes
+        the body axes, however small the tilts)
     equivalent_box : (3,) ndarray — m, sides along axes 1, 2, 3 of the uniform box with the
         same mass and principal moments
     equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same uniform ellipsoid
@@ -487,6 +494,9 @@ class PrincipalResult(Result):
     rotation_angle_deg: float
     equivalent_box: Any
     equivalent_ellipsoid: Any
+    stability: tuple[str, str, str] = ("stable", "stable", "stable")
+    tilt_deg: Any = None
+    tilt_axis: tuple[str, str, str] = ("x", "y", "z")
     parts: tuple[dict, ...] = ()
     warnings: tuple[str, ...] = field(default=())
 
@@ -505,6 +515,9 @@ class PrincipalResult(Result):
             "rotation_angle_deg": self.rotation_angle_deg,
             "equivalent_box": self.equivalent_box,
             "equivalent_ellipsoid": self.equivalent_ellipsoid,
+            "stability": list(self.stability),
+            "tilt_deg": self.tilt_deg,
+            "tilt_axis": list(self.tilt_axis),
             "name": self.name,
         }, self.parts)
 
@@ -529,6 +542,7 @@ def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
         stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
         rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
         equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
+        stability=pr.stability, tilt_deg=pr.tilt_deg, tilt_axis=tuple("xyz"[j] for j in pr.tilt_axis),
         parts=rows, warnings=options.warnings)
 
 
@@ -557,7 +571,10 @@ def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:
     Notes
     -----
     Free rotation about the axes of the largest and smallest moment is stable, about the
-    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37).
+    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37); about an axis of the
+    equal pair of a symmetric body neutral (``stability``; ``stable`` false). ``tilt_deg``
+    is each axis's angle from its nearest body axis (``tilt_axis``): the headline of a
+    body whose principal axes are near its body axes.
     """
     return run_principal(body, PrincipalOptions.parse(body, about=about))
 
