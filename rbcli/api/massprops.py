@@ -242,7 +242,7 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
         return ()
     import math
 
-    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+    from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 
     far_point = ref.param == "about" and ref.point is not None
     if not far_point and omega is None:
@@ -253,8 +253,13 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
         d = sc.far(ref.point)
         if d is not None:
             out.append(u.far("--about", "the point", d, sc.size))
-    if omega is not None:
-        v = math.sqrt(sum(x * x for x in omega)) * sc.half_diagonal
+    w = 0.0 if omega is None else math.sqrt(sum(x * x for x in omega))
+    if 0.0 < w < math.inf:
+        from rbcli.core.inertia import body_mass_props
+
+        # the body turning about omega through the reference point: its farthest material
+        through = body_mass_props(body).com if ref.point is None else ref.point
+        v = w * axis_reach(body.parts, omega, through)
         if SPEED_OF_SOUND < v < math.inf:
             out.append(f"--omega: the body's rim would move at {v:.4g} m/s, faster than sound "
                        f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "

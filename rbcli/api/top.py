@@ -124,7 +124,7 @@ class TopOptions:
                                       ("--g", gv, g, "acceleration")):
             if given is not None:
                 echo.append(u.echo(opt, val, kind))
-        warns = _plausibility(body, u, p_opt, S, "--pivot")
+        warns = _plausibility(body, u, p_opt, S, "--pivot", through=P)
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
                    pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
                    echo=tuple(echo), warnings=warns)
@@ -135,18 +135,28 @@ class TopOptions:
         return self.theta_dot == 0.0 and self.phi_dot == 0.0
 
 
-def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str) -> tuple[str, ...]:
+def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str,
+                  axis: Any = None, through: Any = None) -> tuple[str, ...]:
     """One-line warnings for values far outside the body's scale (issue 13): a pivot more
-    than 10 body sizes away, a rim faster than sound."""
+    than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
+    ``through``: the body's farthest material from that line, issue 24)."""
     if body is None:
         return ()
-    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+    import numpy as np
+
+    from rbcli.core.inertia import body_mass_props
+    from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 
     sc = body_scale(body.parts)
     out = []
     if point is not None and not isinstance(point, str) and sc.far(point):
         out.append(f"{body.source}: warning: " + u.far(option, "the pivot", sc.far(point), sc.size))
-    v = abs(spin) * sc.half_diagonal
+    com = body_mass_props(body).com
+    if axis is None:  # a top: its symmetry axis, from the pivot to the com
+        axis = com - np.asarray(through, dtype=float)
+    if not float(np.linalg.norm(axis)) > 0.0:  # the pivot at the com: refused later
+        return tuple(out)
+    v = abs(spin) * axis_reach(body.parts, axis, com if through is None else through)
     if SPEED_OF_SOUND < v < math.inf:
         out.append(f"{body.source}: warning: --spin: the body's rim would move at {v:.4g} m/s, faster "
                    f"than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
@@ -484,7 +494,7 @@ class GyrocompassOptions:
         return cls(ratio=None, axis=unit, axis_source=src, spin=S, latitude=lat,  # type: ignore[arg-type]
                    earth_rate=W, symmetry_tol=tol,
                    echo=_gyro_echo(u, None, n_axis, S, lat, W, earth_rate),
-                   warnings=_plausibility(body, u, None, S, "--spin"))
+                   warnings=_plausibility(body, u, None, S, "--spin", axis=unit))
 
 
 @frozen

@@ -154,10 +154,15 @@ class FreeMotion:
         intermediate axis or about a transverse axis of a symmetric body
     period : float | None — s, period of omega in the body frame (None: not periodic — rest,
         spherical, steady, separatrix)
-    stable : bool | None — is rotation about the axis the motion circles (or is steady about)
-        stable: True for axes 1 and 3 (and a symmetry axis), False for the intermediate axis;
-        None where not applicable (rest, spherical, separatrix, transverse axis of a
-        symmetric body — neutral)
+    stable : bool | None — is the motion reported stable: a small change of omega0 changes
+        it only a little, and the body keeps wobbling about the principal axis it circles.
+        True when omega circles (or spins steadily about) the largest or the smallest axis,
+        or a symmetric body's symmetry axis, without flipping; False when the body flips
+        (L passes nearer to the intermediate axis: the tennis-racket motion, however long
+        its period), spins steadily about the intermediate axis, or is on the separatrix;
+        None at rest, for a spherical body (nothing to be stable about) and for a steady
+        spin about a transverse axis of a symmetric body (neutral: a small disturbance makes
+        the spin axis wander round the symmetry axis)
     linear_coefficients : (3,) ndarray — sqrt|k_j|, k_j = (Ij-Ik)(Ij-Il)/(Ik Il): a small
         deviation from steady rotation at rate W about axis j oscillates at W sqrt(k_j)
         (k_j > 0) or grows as exp(W sqrt(-k_j) t) (k_j < 0)
@@ -575,7 +580,7 @@ def analyse(
             f"no flip: stable about axis {circles}"
         )
     return FreeMotion(
-        case=case, description=desc, circles_axis=circles, period=period, stable=True,
+        case=case, description=desc, circles_axis=circles, period=period, stable=not flips,
         elliptic=ell, flip_interval=flip, first_flip=first, flip_interval_estimate=est,
         precession_per_period=dphi, mean_precession_rate=dphi / period, **common,
     )
@@ -648,7 +653,7 @@ def _analyse_separatrix(common: dict[str, Any], wp: np.ndarray, G: float, T: flo
         "t -> +-infinity and w2 changes sign once"
     )
     return FreeMotion(
-        case=CASE_SEPARATRIX, description=desc, circles_axis=None, period=None, stable=None,
+        case=CASE_SEPARATRIX, description=desc, circles_axis=None, period=None, stable=False,
         elliptic=ell, first_flip=first, **common,
     )
 
