@@ -28,12 +28,16 @@ from typing import Any
 import numpy as np
 
 from rbcli.core.rollcircle import CircleMotion, circle, circle_arrays, lean_for, radius_for, stability_map
+from rbcli.core.rim import fmt_length
 from rbcli.core.wheel import STANDARD_GRAVITY, Wheel, blame, check_geometry, opt_float, param_finite
 
 MODEL_NOTE = (
-    "knife-edge or toroidal rim rolling without slip; A and C about the centre G, "
-    "C + m a^2 about the contact point; neutral stability (undamped)"
+    "knife-edge, toroidal, spherical or flat-band rim rolling without slip; A and C about the "
+    "centre G, C + m a^2 about the contact point; neutral stability (undamped)"
 )
+
+#: what a rim is (:attr:`StraightRolling.rim`): a knife edge, a torus, a sphere, a flat band
+RIMS = ("edge", "torus", "sphere", "band")
 
 
 # --------------------------------------------------------------------------- straight
@@ -47,12 +51,23 @@ class StraightRolling:
     ----------
     wheel : Wheel
     radius : float — m, rim radius a (G to contact point when upright)
-    tyre_radius : float — m, tube radius r of a rounded rim (0 = knife edge)
+    tyre_radius : float — m, tube radius r of a rounded rim (0 = knife edge or flat band,
+        a = a sphere)
     g : float — m/s^2
-    critical_spin : float — rad/s, s_c = sqrt(m g (a - r) A / (C (C + m a^2)))
-    critical_speed : float — m/s, v_c = a s_c
+    critical_spin : float — rad/s: edge, torus: s_c = sqrt(m g (a - r) A / (C (C + m a^2)));
+        sphere: 0 (no lean instability); band: the larger of the edges' thresholds
+        (:func:`edge_critical_spin`)
+    critical_speed : float — m/s, a times the critical spin
     C_contact : float — kg m^2, C + m a^2 (axial direction, about the contact point)
     A_contact : float — kg m^2, A + m a^2 (fore-aft axis, about the contact point)
+    rim : str — ``"edge"`` (r = 0), ``"torus"`` (0 < r < a), ``"sphere"`` (r = a) or
+        ``"band"`` (a flat band: a cylinder on its side, a thick coin, two wheels on an axle)
+    band : tuple of 2 floats or None — m, the band's edges' distances c1, c2 >= 0 from the
+        plane of G, one each side (band only)
+    static_lean_limit : float or None — rad, atan(min(c1, c2)/a): the band holds the body up
+        by its weight alone for leans below this, at any speed (band only)
+    knife_edge_critical_spin : float or None — rad/s, the knife-edge idealisation at the
+        plane of G, for comparison (band only)
     """
 
     wheel: Wheel
@@ -63,24 +78,35 @@ class StraightRolling:
     critical_speed: float
     C_contact: float
     A_contact: float
+    rim: str = "edge"
+    band: tuple[float, float] | None = None
+    static_lean_limit: float | None = None
+    knife_edge_critical_spin: float | None = None
 
     def nu2(self, spin: Any) -> Any:
-        """Squared lean-oscillation frequency (rad^2/s^2) at spin(s) s (rad/s), sheet §3.2.
+        """Squared lean-oscillation frequency (rad^2/s^2) at spin(s) s (rad/s).
 
-        nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] / [A (A + m a^2)]
-             = C (C + m a^2) (s^2 - s_c^2) / [A (A + m a^2)].
+        Edge, torus, sphere (sheet §3.2): nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] /
+        [A (A + m a^2)]. Band: the smaller of the two edges' (:func:`edge_nu2`): balanced
+        on either edge the lean oscillates at least this fast, or grows.
         """
         s = np.asarray(spin, dtype=float)
         w = self.wheel
-        sc = self.critical_spin
-        out = w.C * self.C_contact * (s * s - sc * sc) / (w.A * self.A_contact)
+        if self.band is not None:
+            out = np.minimum(*(edge_nu2(w, self.radius, c, self.g, s) for c in self.band))
+        else:
+            out = (w.C * self.C_contact * s * s - w.A * w.mass * self.g * (self.radius - self.tyre_radius)) / (
+                w.A * self.A_contact)
+        out = np.asarray(out, dtype=float)
         return float(out) if out.ndim == 0 else out
 
     def to_json(self) -> dict[str, Any]:
         """SPEC keys ``radius``, ``mass``, ``I``, ``Is``, ``critical_spin``,
         ``critical_speed`` plus ``tyre_radius``, ``g``, ``I_contact``, ``Is_contact``,
-        ``model``."""
-        return {
+        ``model``, ``rim``; a band adds ``band_width``, ``band_edges`` (c1, c2),
+        ``static_lean_limit_deg`` and ``knife_edge_critical_spin``,
+        ``knife_edge_critical_speed``."""
+        out = {
             "radius": float(self.radius),
             "tyre_radius": float(self.tyre_radius),
             "mass": float(self.wheel.mass),
@@ -92,22 +118,34 @@ class StraightRolling:
             "critical_spin": float(self.critical_spin),
             "critical_speed": float(self.critical_speed),
             "model": MODEL_NOTE,
+            "rim": self.rim,
         }
+        if self.band is not None:
+            assert self.static_lean_limit is not None and self.knife_edge_critical_spin is not None
+            out.update({
+                "band_width": float(self.band[0] + self.band[1]),
+                "band_edges": [float(c) for c in self.band],
+                "static_lean_limit_deg": math.degrees(self.static_lean_limit),
+                "knife_edge_critical_spin": float(self.knife_edge_critical_spin),
+                "knife_edge_critical_speed": float(self.radius * self.knife_edge_critical_spin),
+            })
+        return out
 
 
 def straight(wheel: Wheel, a: float, r: float = 0.0, g: float = STANDARD_GRAVITY) -> StraightRolling:
-    """Critical spin and speed for stable straight upright rolling.
+    """Critical spin and speed for stable straight upright rolling on a round rim.
 
     Parameters
     ----------
     wheel : Wheel — A and C about the centre G
     a : float — m, rim radius (centre to contact point when upright), > 0
-    r : float — m, tube radius of a rounded (toroidal) rim, 0 <= r < a; 0 = knife edge
+    r : float — m, tube radius of a rounded (toroidal) rim, 0 <= r <= a; 0 = knife edge,
+        a = a sphere
     g : float — m/s^2, > 0
 
     Returns
     -------
-    StraightRolling
+    StraightRolling — ``rim`` "edge", "torus" or "sphere"
 
     Notes
     -----
@@ -116,15 +154,102 @@ def straight(wheel: Wheel, a: float, r: float = 0.0, g: float = STANDARD_GRAVITY
     stays bounded (neutral stability, undamped) iff
     s^2 > s_c^2 = m g (a - r) A / [C (C + m a^2)], and v_c = a s_c.
     A and C are about the centre G; C + m a^2 is the axial moment about the contact
-    point. A rounded rim only weakens gravity (a -> a - r in the gravity term).
-    Thin disk: s_c^2 = g/(3a); hoop: s_c^2 = g/(4a).
+    point. A rounded rim only weakens gravity (a -> a - r in the gravity term): the
+    contact-to-G vector is (a - r) u + r z (u the wheel plane's upward direction), whose
+    horizontal part, the lever of the weight, is (a - r) sin(lean). Thin disk:
+    s_c^2 = g/(3a); hoop: s_c^2 = g/(4a). A sphere (r = a) has no lever at any lean: no
+    lean instability, s_c = 0, and nu^2 = C (C + m a^2) s^2 / (A (A + m a^2)) >= 0. Checked
+    against the eigenvalues and integrations of the vector equations of a toroidal rim
+    (tests/test_rollcheck_rims.py).
     """
     a, r, g = check_geometry(a, r, g)
     m, A, C = wheel.mass, wheel.A, wheel.C
     Cc = C + m * a * a
     Ac = A + m * a * a
     sc = math.sqrt(m * g * (a - r) * A / (C * Cc))
-    return StraightRolling(wheel, a, r, g, sc, a * sc, Cc, Ac)
+    rim = "edge" if r == 0.0 else ("sphere" if r == a else "torus")
+    return StraightRolling(wheel, a, r, g, sc, a * sc, Cc, Ac, rim=rim)
+
+
+def _edge_terms(wheel: Wheel, a: float, c: float, g: float) -> tuple[float, float]:
+    """(k2, k0) of nu^2 = k2 s^2 + k0 balanced on the edge at c (see :func:`edge_nu2`)."""
+    m, A, C = wheel.mass, wheel.A, wheel.C
+    l2 = a * a + c * c
+    Cc = C + m * a * a
+    delta = Cc * (A + m * c * c) - (m * a * c) ** 2
+    k2 = C * Cc * (C + m * l2) / (delta * (A + m * l2))
+    k0 = -m * g * math.sqrt(l2) / (A + m * l2)
+    return k2, k0
+
+
+def edge_nu2(wheel: Wheel, a: float, c: float, g: float, spin: Any) -> Any:
+    """Squared lean frequency (rad^2/s^2) of straight rolling balanced on an edge circle.
+
+    A body of revolution rolling on a sharp edge, a circle of radius a whose plane is c
+    (>= 0) along the axle from the centre of mass G, leaning atan(c/a) onto it so that G is
+    straight above the contact point (l = sqrt(a^2 + c^2) up): that is straight rolling at
+    any spin s, and linearising about it (derived here from the vector equations of sheet
+    §3.1 with the contact-to-G vector a u - c n) gives
+    lambda^4 (lambda^2 + nu^2) = 0 with nu^2 = k2 s^2 + k0,
+    k2 = C (C + m a^2)(C + m l^2) / [Delta (A + m l^2)],
+    k0 = -m g l / (A + m l^2),
+    Delta = (C + m a^2)(A + m c^2) - m^2 a^2 c^2.
+    A + m l^2 is the moment about the fore-aft axis through the contact point; at c = 0 it
+    is the knife edge of sheet §3.2. Checked against the eigenvalues and integrations of the
+    vector equations (tests/test_rollcheck_rims.py).
+    """
+    k2, k0 = _edge_terms(wheel, a, c, g)
+    s = np.asarray(spin, dtype=float)
+    out = k2 * s * s + k0
+    return float(out) if out.ndim == 0 else out
+
+
+def edge_critical_spin(wheel: Wheel, a: float, c: float, g: float = STANDARD_GRAVITY) -> float:
+    """rad/s: balanced on the edge at c, rolling is (neutrally) stable above
+    s_e = sqrt(-k0/k2) = sqrt(m g l Delta / [C (C + m a^2)(C + m l^2)]) (:func:`edge_nu2`)."""
+    k2, k0 = _edge_terms(wheel, a, c, g)
+    return math.sqrt(-k0 / k2)
+
+
+def band_rolling(wheel: Wheel, a: float, c1: float, c2: float, g: float = STANDARD_GRAVITY) -> StraightRolling:
+    """Straight rolling on a flat band: a cylinder on its side, a thick coin, two coaxial
+    wheels on an axle.
+
+    Parameters
+    ----------
+    wheel : Wheel
+    a : float — m, the band's radius
+    c1, c2 : float — m, >= 0, the distances of the band's two edges from the plane of the
+        centre of mass, one each side (a band of width c1 + c2 that holds that plane)
+    g : float — m/s^2
+
+    Returns
+    -------
+    StraightRolling — ``rim`` "band"; ``critical_spin`` the larger of the edges'
+    :func:`edge_critical_spin`, ``static_lean_limit`` atan(min(c1, c2)/a),
+    ``knife_edge_critical_spin`` the knife edge at G's plane for comparison.
+
+    Notes
+    -----
+    Upright the body stands on a line of contact across the band. Leaning by less than
+    atan(c/a) towards an edge at c it pivots on that edge with its weight's line still
+    inside the band, and the weight rights it: the band holds it up statically, at any
+    speed, against leans below the smaller limit (at speed a lean within it rolls the
+    body along a curve on its edge; it never leans further: tests/test_rollcheck_rims.py).
+    Tipped further it balances on one edge circle, where straight rolling is stable
+    only above that edge's critical spin: above the larger of the two it stays up
+    however it is tipped onto its band's edges. At c1 = c2 = 0 this is the knife edge.
+    """
+    a, _, g = check_geometry(a, 0.0, g)
+    for name, c in (("c1", c1), ("c2", c2)):
+        if not (math.isfinite(c) and c >= 0.0):
+            raise ValueError(f"the band's edge distance {name} must be >= 0, got {c!r}")
+    knife = straight(wheel, a, 0.0, g)
+    se = max(edge_critical_spin(wheel, a, c1, g), edge_critical_spin(wheel, a, c2, g))
+    return StraightRolling(wheel, a, 0.0, g, se, a * se, knife.C_contact, knife.A_contact,
+                           rim="band", band=(float(c1), float(c2)),
+                           static_lean_limit=math.atan2(min(c1, c2), a),
+                           knife_edge_critical_spin=knife.critical_spin)
 
 
 @dataclass(frozen=True)
@@ -136,8 +261,9 @@ class Verdict:
     speed : float — m/s, speed of the centre as given (negative = rolling backwards)
     spin : float — rad/s, spin about the axle, speed / a (same sign as speed)
     stable : bool — |spin| > s_c: the lean stays bounded (neutral stability, undamped).
-        Exactly at s_c the lean drifts (a repeated zero root): **not stable**.
-    margin : float — |speed| / v_c (> 1 stable)
+        Exactly at s_c the lean drifts (a repeated zero root): **not stable**. A sphere is
+        stable at every speed (no lean instability); a band above the larger edge threshold
+    margin : float or None — |speed| / v_c (> 1 stable); None for a sphere (v_c = 0)
     nu2 : float — rad^2/s^2, squared lean-oscillation frequency (sheet §3.2)
     lean_frequency : float or None — rad/s, sqrt(nu2) when nu2 > 0, else None
     lean_frequency_hz : float or None — Hz, lean_frequency / (2 pi)
@@ -150,7 +276,7 @@ class Verdict:
     speed: float
     spin: float
     stable: bool
-    margin: float
+    margin: float | None
     nu2: float
     lean_frequency: float | None
     lean_frequency_hz: float | None
@@ -164,7 +290,7 @@ class Verdict:
             "speed": float(self.speed),
             "spin": float(self.spin),
             "stable": bool(self.stable),
-            "margin": float(self.margin),
+            "margin": opt_float(self.margin),
             "lean_frequency": opt_float(self.lean_frequency),
             "lean_frequency_hz": opt_float(self.lean_frequency_hz),
             "growth_rate": opt_float(self.growth_rate),
@@ -213,14 +339,15 @@ def at_speed(
         v = a * spin
     s = abs(spin)
     nu2 = straight.nu2(s)
-    stable = nu2 > 0.0
-    freq = math.sqrt(nu2) if stable else None
+    sphere = straight.rim == "sphere"
+    stable = nu2 > 0.0 or sphere  # a sphere at rest: nu^2 = 0, and nothing to fall
+    freq = math.sqrt(max(nu2, 0.0)) if stable else None
     growth = None if stable else math.sqrt(-nu2)
     return Verdict(
         speed=v,
         spin=spin,
         stable=stable,
-        margin=s / straight.critical_spin,
+        margin=None if sphere else s / straight.critical_spin,
         nu2=nu2,
         lean_frequency=freq,
         lean_frequency_hz=None if freq is None else freq / (2.0 * math.pi),
@@ -247,6 +374,12 @@ def margin_curve(wheel: Wheel, a: float, r: float, g: float, speeds: Any) -> np.
     st = straight(wheel, a, r, g)
     v = np.asarray(speeds, dtype=float)
     return np.asarray(st.nu2(v / a), dtype=float).reshape(v.shape)
+
+
+def nu2_curve(st: StraightRolling, speeds: Any) -> np.ndarray:
+    """:meth:`StraightRolling.nu2` at the speeds (m/s, sign ignored): any rim, for plots."""
+    v = np.asarray(speeds, dtype=float)
+    return np.asarray(st.nu2(v / st.radius), dtype=float).reshape(v.shape)
 
 
 # --------------------------------------------------------------------------- the whole check
@@ -290,19 +423,26 @@ def rollcheck(
     spin: float | None = None,
     lean_rad: float | None = None,
     circle_radius: float | None = None,
+    band: tuple[float, float] | None = None,
 ) -> RollCheck:
     """Assemble a :class:`RollCheck`.
 
-    - always: :func:`straight`;
+    - always: :func:`straight` (or :func:`band_rolling` for a ``band`` (c1, c2), m: then
+      ``r`` must be 0);
     - ``speed`` and/or ``spin``: :func:`at_speed` (straight rolling at that speed);
     - ``lean_rad`` and ``circle_radius``: :func:`circle`;
     - ``circle_radius`` and a speed, no lean: :func:`lean_for`;
     - ``lean_rad`` and a speed, no circle radius: :func:`radius_for`;
     - ``lean_rad`` or ``circle_radius`` alone: :class:`rbcli.errors.ParamError`.
-    A circle with a rounded rim (r > 0) raises a ParamError (knife edge only). Errors of
-    the circle name the parameters given (``lean``, ``circle``, ``speed``, ``spin``).
+    A circle with a rounded rim (r > 0) raises a ParamError (knife edge only), as does a
+    circle on a band (naming ``lean`` or ``circle``). Errors of the circle name the
+    parameters given (``lean``, ``circle``, ``speed``, ``spin``).
     """
-    st = straight(wheel, a, r, g)
+    st = straight(wheel, a, r, g) if band is None else band_rolling(wheel, a, band[0], band[1], g)
+    if band is not None and (lean_rad is not None or circle_radius is not None):
+        raise blame(("lean",) if lean_rad is not None else ("circle",),
+                    "steady circular rolling is computed for a knife-edge rim only: this rim is a "
+                    f"flat band {fmt_length(band[0] + band[1])} wide")
     verdict = None
     if speed is not None or spin is not None:
         verdict = at_speed(st, v=speed, spin=spin)
@@ -369,11 +509,11 @@ def curves(check: RollCheck, n_speeds: int = 501, n_leans: int = 200, n_radii: i
     st = check.straight
     w = st.wheel
     vc = st.critical_speed
-    vmax = 2.5 * vc
+    vmax = 2.5 * vc if vc > 0.0 else 2.0 * math.sqrt(st.g * st.radius)  # a sphere: v_c = 0
     if check.verdict is not None:
         vmax = max(vmax, 1.25 * abs(check.verdict.speed))
     speeds = np.linspace(0.0, vmax, n_speeds)
-    nu2 = margin_curve(w, st.radius, st.tyre_radius, st.g, speeds)
+    nu2 = nu2_curve(st, speeds)
     out = dict(speeds=speeds, nu2=nu2, lean_frequency=np.sqrt(np.clip(nu2, 0.0, None)),
                growth_rate=np.sqrt(np.clip(-nu2, 0.0, None)), critical_speed=vc)
     if check.circle is not None:

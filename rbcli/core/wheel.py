@@ -72,10 +72,11 @@ def check_geometry(a: float, r: float, g: float) -> tuple[float, float, float]:
         raise blame(("g",), f"gravity g must be positive, got {g:.6g}")
     if r < 0.0:
         raise blame(("tyre_radius",), f"the tyre radius r must be >= 0 (0 = knife edge), got {r:.6g} m")
-    if r >= a:
+    if r > a:
         raise blame(
             ("tyre_radius",),
-            f"the tyre radius r = {r:.6g} m must be smaller than the rim radius a = {a:.6g} m",
+            f"the tyre radius r = {r:.6g} m must be at most the rim radius a = {a:.6g} m "
+            "(r = a is a sphere)",
         )
     return a, r, g
 
