@@ -308,9 +308,9 @@ def test_a_section_that_cannot_be_computed_says_why(capsys, tmp_path):
     # an arithmetic error in the physics (a critical spin that underflows to 0)
     (["examples/penny.yaml", "--rim-radius", "1e300", "--speed", "1 m/s"],
      "rolling-stability", "rolling stability: not computed: a value is too large or too small"),
-    # a table cell that overflows to inf is refused, as rbcli rollcheck refuses it
+    # a result that overflows to inf is refused, as rbcli rollcheck --json refuses it
     (["examples/penny.yaml", "--speed", "1e300 m/s"],
-     "rolling-stability", "rolling stability: not computed: 'lean oscillation frequency"),
+     "rolling-stability", "rolling stability: not computed: the result 'lean_frequency' is not a finite"),
 ])
 def test_a_section_whose_numbers_overflow_says_why(capsys, tmp_path, args, key, needle):
     out, err = report(capsys, tmp_path, *args)  # written, exit 0: a section not there checks nothing

@@ -52,7 +52,7 @@ def report(
 ) -> None:
     import time
 
-    from rbcli.api import report as api
+    from rbcli.documents import write_report
     from rbcli.errors import InputError
 
     t0 = time.monotonic()
@@ -60,22 +60,18 @@ def report(
     if output is None:
         raise InputError("-o/--output: required: the report file, e.g. -o report.html or -o report.md")
     b = c.load_one(body, expr, e)
-    fmt, out, files_dir = api.check_output(output, b, force=force)
-    opts = api.ReportOptions.parse(
-        b, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings, grade=grade,
-        speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-        phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol,
-        digits=digits, units=units,
-    )
     progress = _Progress(t0)
     try:
-        result = api.run(b, opts, progress.step)
-        progress.step("writing")
-        api.write(result, out, fmt, files_dir, force=force)
+        result = write_report(
+            b, output, force=force, digits=digits, units=units, progress=progress.step,
+            shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
+            grade=grade, speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta,
+            theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius,
+            g=g, symmetry_tol=symmetry_tol)
     finally:
         progress.stop()
     if result.failed:
-        e.warn(f"rbcli: {out}: written; a check failed: {'; '.join(result.failed)}")
+        e.warn(f"rbcli: {output}: written; a check failed: {'; '.join(c.said(f) for f in result.failed)}")
     c.finish(result.return_code)
 
 

@@ -18,6 +18,9 @@ import numpy as np
 from rbcli.core.rotation import matrix_to_axis_angle
 
 DEGENERATE_RTOL = 1e-9
+#: sideways components of a unit principal axis up to this are round-off (8 ulp of 1): its
+#: tilt from the body axis reads 0 (``numpy.linalg.eigh`` leaves ~1e-16 on an aligned axis)
+TILT_ROUND_OFF = 8.0 * float(np.finfo(float).eps)
 
 
 @dataclass(frozen=True)
@@ -165,7 +168,7 @@ def axis_tilts(axes: np.ndarray) -> tuple[np.ndarray, tuple[int, int, int]]:
     -----
     With j the largest |component| of the unit axis u, the tilt is
     atan2(sqrt(Σ_{k≠j} u_k²), |u_j|): exact near 0° where arccos(|u_j|) loses half its
-    digits. A line is at most arccos(1/√3) from all three body axes. This is the headline of
+    digits; a sideways part below :data:`TILT_ROUND_OFF` (round-off) reads 0. A line is at most arccos(1/√3) from all three body axes. This is the headline of
     a body whose principal axes are near its body axes: the ascending order of the moments
     may put axis 1 along body z, so the rotation taking the body axes to the principal
     axes 1, 2, 3 can be ~90° for a body tilted 0.5° (issue 24).
@@ -175,7 +178,10 @@ def axis_tilts(axes: np.ndarray) -> tuple[np.ndarray, tuple[int, int, int]]:
     tilt = np.empty(3)
     for i, j in enumerate(nearest):
         others = [k for k in range(3) if k != j]
-        tilt[i] = np.degrees(np.arctan2(np.linalg.norm(a[i, others]), abs(a[i, j])))
+        off = float(np.linalg.norm(a[i, others]))
+        # the round-off of an eigenvector's unit components (a few ulp) is no tilt
+        off = 0.0 if off <= TILT_ROUND_OFF else off
+        tilt[i] = np.degrees(np.arctan2(off, abs(a[i, j])))
     return tilt, (nearest[0], nearest[1], nearest[2])
 
 
