@@ -106,9 +106,11 @@ class PrecessOptions:
         if body is not None:
             import math
 
-            from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+            from rbcli.core.inertia import body_mass_props
+            from rbcli.core.scale import SPEED_OF_SOUND, axis_reach
 
-            v = math.sqrt(sum(x * x for x in w)) * body_scale(body.parts).half_diagonal
+            wn = math.sqrt(sum(x * x for x in w))  # free rotation: about omega through the com
+            v = wn * axis_reach(body.parts, w, body_mass_props(body).com) if 0.0 < wn < math.inf else 0.0
             if SPEED_OF_SOUND < v < math.inf:
                 warns = (Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
                               f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "

@@ -234,12 +234,18 @@ MANUAL["inertia"] = {
 MANUAL["principal"] = {
     "notes": [
         "Free rotation about the axes of the largest and the smallest principal moment is "
-        "stable, about the intermediate one unstable (the tennis-racket flip). The equivalent "
+        "stable, about the intermediate one unstable (the tennis-racket flip); for a symmetric "
+        "body, stable about its symmetry axis and neutral about the others. The equivalent "
         "uniform box and ellipsoid have the same mass and principal moments.",
+        "Tilts: each principal axis's angle from its nearest body axis (a rod turned 0.5 degrees "
+        "reads 0.5 degrees). The moments are listed in ascending order, so the rotation taking the "
+        "body axes to principal axes 1, 2, 3 may be about 90 degrees for a body tilted a little; "
+        "it is printed too, labelled so.",
         "Signs of the axes: of the sign choices that keep the axes right-handed, the one "
         "whose rotation from the body axes is smallest (largest trace of the axes matrix), so "
         "a flywheel tilted 0.5 degrees has its axis 3 along +z tilted 0.5 degrees, and the "
-        "rotation reads 0.5 degrees. Where moments coincide, the free axes are also ordered "
+        "rotation reads 0.5 degrees when the ascending order keeps each axis on its own body axis. "
+        "Where moments coincide, the free axes are also ordered "
         "this way. Exact ties keep the first two axes with their largest component positive.",
     ],
     "json": [
@@ -248,10 +254,16 @@ MANUAL["principal"] = {
         ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set "
                  "(a rotation matrix) with the signs that make it the rotation nearest the body frame."),
         ("symmetry", "asymmetric, symmetric or spherical."),
-        ("stable", "[3] whether free rotation about each axis is stable."),
+        ("stable", "[3] whether free rotation about each axis is stable (false for a neutral axis)."),
+        ("stability", "[3] stable, unstable or neutral: neutral about an axis of the equal pair of a "
+                      "symmetric body (the spin axis wanders round the symmetry axis)."),
+        ("tilt_deg, tilt_axis", "[3] each principal axis's angle from its nearest body axis, degrees, "
+                                "and that axis (x, y or z): the tilt of a body near its body axes."),
         ("free_axes", "axes (1-based) that are free to choose where moments coincide."),
         ("direction_angles_deg", "[3x3] angle of principal axis i from body axis j."),
-        ("rotation_axis, rotation_angle_deg", "the rotation taking the body axes onto the principal axes."),
+        ("rotation_axis, rotation_angle_deg", "the rotation taking the body axes onto the principal "
+                                              "axes 1, 2, 3 in ascending order (about 90 degrees or more "
+                                              "when that order permutes the body axes)."),
         ("equivalent_box, equivalent_ellipsoid", "[3] box sides and ellipsoid semi-axes along the principal axes, m."),
         ("mass, name, file", "the body's mass (kg), name and source."),
         ("parts", "[{name, shape, mass, com}] each part's contribution, as in inertia (mesh parts "
