@@ -136,15 +136,15 @@ def test_bad_combinations_exit_2(cli, args, message):
     assert r.code == 2 and r.out == "" and message in r.err and r.err.count("\n") == 1
 
 
-def test_format_json_is_json_and_csv_is_the_tables(cli):
+def test_format_json_is_json_and_csv_is_one_table(cli):
     path = str(EXAMPLES / "square_lamina.yaml")
     for cmd in ("inertia", "principal"):
         assert cli(cmd, path, "--format", "json").out == cli(cmd, path, "--json").out
         csv = cli(cmd, path, "--format", "csv")
-        assert csv.code == 0 and csv.out.startswith("table,")
+        assert csv.code == 0 and csv.out.startswith("quantity,value,text,unit\n")
     many = cli("inertia", str(EXAMPLES / "cube.yaml"), path, "--format", "csv").out
-    assert many.startswith("file,table,") and path in many
-    assert "\n\nfile,table,quantity" in many  # the second body's first block, after an empty line
+    assert many.startswith("file,quantity,value,text,unit\n") and path in many
+    assert "\n\n" not in many and many.count("quantity") == 1  # one table, one header
 
 
 # ----------------------------------------------------------------------------- MuJoCo
