@@ -53,7 +53,7 @@ def inertia(
     about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm').", show_default=False),
     axis: str = typer.Option(None, "--axis", help="Moment about this direction x,y,z through the point.", show_default=False),
     omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
-    products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
+    products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive), in the tables; --format urdf, sdf and mjcf fix the tensor's sign (positive is refused there)."),
     json_: bool = c.JsonOpt,
     fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
     principal_: bool = typer.Option(False, "--principal", help="With --format urdf|sdf|mjcf: the principal moments and the principal axes' orientation instead of the full tensor in body axes."),
@@ -66,6 +66,9 @@ def inertia(
     choice(products, "--products", ("tensor", "positive"))
     out = c.output_format(json_, fmt, ROBOT_FORMATS)
     if out in ROBOT_FORMATS:
+        if products.strip().lower() == "positive":
+            raise InputError(f"--products positive does not apply to --format {out}: the element "
+                             "holds the tensor's entries (ixy = -sum m x y), as the format requires")
         given = [o for o, v in (("--about", about), ("--axis", axis), ("--omega", omega), ("--units", units)) if v is not None]
         if given:
             raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
@@ -203,8 +206,9 @@ MANUAL["inertia"] = {
         "With --principal it is the principal moments (ascending, as rbcli principal) and the "
         "orientation of the principal axes: URDF <origin rpy> and SDF <pose> as fixed-axis "
         "roll, pitch, yaw in rad (R = Rz(yaw) Ry(pitch) Rx(roll)), MJCF quat=\"w x y z\" with "
-        "diaginertia. --about, --axis, --omega and --units do not apply to these formats "
-        "(exit 2). Several bodies: one element per body, one after another.",
+        "diaginertia. Every comment states the off-diagonals' sign. --about, --axis, --omega, "
+        "--units and --products positive do not apply to these formats (exit 2: they fix "
+        "the tensor's sign). Several bodies: one element per body, one after another.",
     ],
     "json": [
         ("mass", "total mass, kg."),

@@ -54,8 +54,8 @@ def comment(fmt: str, name: str, source: str, inertial: Any) -> str:
         frame = (f"inertia: the principal moments (ascending) about the centre of mass, along the "
                  f"principal axes; {turn}: the principal axes in the link frame")
     else:
-        tensor = ("fullinertia = ixx iyy izz ixy ixz iyz" if fmt == "mjcf"
-                  else "ixy = -(integral of x y dm)")
+        sign = "ixy = -(integral of x y dm)"
+        tensor = f"fullinertia = ixx iyy izz ixy ixz iyz; {sign}" if fmt == "mjcf" else sign
         frame = (f"inertia: the tensor about the centre of mass in the body axes ({tensor}); "
                  "the inertial frame is not rotated")
     lines = [

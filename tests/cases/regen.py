@@ -159,6 +159,7 @@ def cases() -> dict[str, list[list[str]]]:
     add("inertia", "bracket-urdf", "examples/bracket.yaml", "--format", "urdf")
     add("inertia", "fan-sdf-principal", "examples/two_blade_fan.yaml", "--format", "sdf", "--principal")
     add("inertia", "fan-mjcf", "examples/two_blade_fan.yaml", "--format", "mjcf")
+    add("inertia", "error-urdf-positive", "examples/bracket.yaml", "--format", "urdf", "--products", "positive")
     add("inertia", "fan-mjcf-principal", "examples/two_blade_fan.yaml", "--format", "mjcf", "--principal")
     add("principal", "fan-csv", "examples/two_blade_fan.yaml", "--format", "csv")
     add("balance", "rotor-grade-csv", "examples/two_disk_rotor.yaml", "--planes", "0,400mm", "--radius",
