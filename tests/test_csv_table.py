@@ -182,6 +182,23 @@ def test_csv_is_the_json(args):
     _check(out, docs)
 
 
+def test_csv_with_files_written(tmp_path):
+    """The JSON keys of the files a command writes (--apply, --csv, --plot) are rows too."""
+    body = tmp_path / "rotor.yaml"
+    body.write_text((ROOT / "examples" / "two_disk_rotor.yaml").read_text(encoding="utf-8"), encoding="utf-8")
+    for args in (
+        ["balance", str(body), "--planes", "0,400mm", "--radius", "100mm", "--apply", str(tmp_path / "out.yaml"),
+         "--force"],
+        ["precess", "examples/book.yaml", "--omega", "0.01,1,0.01", "--csv", str(tmp_path / "p.csv"),
+         "--duration", "1", "--plot", str(tmp_path / "p.png")],
+        ["top", "examples/top.yaml", "--spin", "150", "--theta", "30", "--csv", str(tmp_path / "t.csv"),
+         "--duration", "0.5"],
+    ):
+        out, docs = _csv_and_json(args)
+        _check(out, docs)
+        assert any(key in docs[0] for key in ("apply", "csv"))
+
+
 @pytest.mark.parametrize("args", [EXTRA[0], EXTRA[3], ["principal", "examples/two_blade_fan.yaml"],
                                   ["precess", "examples/book.yaml", "--omega", "0.01,1,0.01"]],
                          ids=lambda a: " ".join(a)[:60])
