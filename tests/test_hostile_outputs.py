@@ -185,3 +185,24 @@ def test_api_error_messages_are_escaped_as_the_command_line_prints_them():
     assert not RAW.search(msg) and "\\e[31m\\n3\\u202e" in msg and "\n" not in str(exc.value)
     cli = run_inprocess("inertia", "examples/cube.yaml", "--about", "1,2,\x1b[31m\n3\u202e")
     assert cli.code == 2 and msg.split(": ", 1)[1] in cli.err  # the same text, option spelled
+
+
+def test_output_escapes_are_the_terminals():
+    """render.safe.escape writes what rbcli.env.clean shows on a terminal (one look for a name
+    everywhere), and more: what XML cannot hold (U+FFFE, U+FFFF)."""
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from rbcli.env import clean
+    from rbcli.render.safe import escape
+
+    chars = st.sampled_from(["a", " ", "\t", "\n", "\r", "\x00", "\x1b", "\x7f", "\x85", "\x9f", "\u2028",
+                             "\u2029", "\u200e", "\u202e", "\u2066", "\u2069", "\ufeff", "é", "="])
+
+    @settings(max_examples=300, deadline=None)
+    @given(st.lists(chars, max_size=40).map("".join))
+    def same(text):
+        assert escape(text) == clean(text, max_line=None)
+
+    same()
+    assert escape("a\ufffeb\uffff") == "a\\ufffeb\\uffff"
