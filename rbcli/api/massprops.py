@@ -374,6 +374,16 @@ def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = N
     -----
     Parallel axes (Huygens–Steiner): ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G``;
     ``L`` and ``T`` about a fixed point P: Goldstein, *Classical Mechanics*, §5.3–5.4.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> lamina = rbcli.load("examples/square_lamina.yaml")   # 1 kg, 1 m square, about a corner
+    >>> r = rbcli.inertia(lamina, axis=[1, 1, 0])
+    >>> round(r.axis_moment, 12)                              # m a²/12 about the diagonal
+    0.083333333333
+    >>> r.mass, r.com.tolist()
+    (1.0, [0.5, 0.5, 0.0])
     """
     return run_inertia(body, InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
 
@@ -522,6 +532,15 @@ def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:
     -----
     Free rotation about the axes of the largest and smallest moment is stable, about the
     intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37).
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> p = rbcli.principal(rbcli.load("examples/square_lamina.yaml"), about="origin")
+    >>> [round(float(m), 6) for m in p.moments]                # m a²/12, 7 m a²/12, 2 m a²/3
+    [0.083333, 0.583333, 0.666667]
+    >>> p.symmetry
+    'asymmetric'
     """
     return run_principal(body, PrincipalOptions.parse(body, about=about))
 

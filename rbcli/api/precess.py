@@ -263,8 +263,17 @@ def precess(body: Body, *, omega: Any, at: Any = None, duration: Any = None, sam
     Raises
     ------
     rbcli.InputError
-        A bad value (the message names the option, as the command line prints it), an
-        inertia that is not positive definite, a time too far away to have a phase.
+        A bad value (the message names the parameter), an inertia that is not positive
+        definite, a time too far away to have a phase.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> book = rbcli.precess(rbcli.load("examples/book.yaml"), omega=[0.01, 1, 0.01])
+    >>> book.case, round(book.flip_interval, 4)         # spun near the intermediate axis: it flips
+    ('circulates_max', 19.5529)
+    >>> round(float(book.at(1.0).omega[1]), 6)           # rad/s, body frame, at t = 1 s
+    1.000049
     """
     return run(body, PrecessOptions.parse(body, omega=omega, at=at, duration=duration,
                                           samples=samples, verify=verify))

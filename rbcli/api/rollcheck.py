@@ -324,7 +324,7 @@ class RollcheckResult(Result):
         (kg m²), ``nu2(spin)``.
     verdict : rbcli.core.rolling.Verdict or None
         With a speed or spin: ``speed`` (m/s), ``spin`` (rad/s), ``stable``, ``margin``
-        (|speed| / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
+        (``|speed|`` / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
         ``lean_frequency_hz``, ``growth_rate`` (1/s), ``backwards``.
     circle : rbcli.core.rolling.CircleMotion or None
         With a steady circle: ``lean`` (rad), ``lean_deg``, ``radius`` R_G (m),
