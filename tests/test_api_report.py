@@ -103,8 +103,8 @@ def test_the_result_says_which_sections_and_checks():
     res = run(body, ReportOptions.parse(body, **kw))
     j = res.to_json()
     assert [s["key"] for s in j["sections"]] == [
-        "parts", "mass-properties", "principal-axes", "balance", "free-precession", "heavy-top",
-        "rolling-stability"]
+        "parts", "mass-properties", "principal-axes", "balance", "whirl", "free-precession",
+        "heavy-top", "rolling-stability"]
     included = {s["key"]: s["included"] for s in j["sections"]}
     assert included["balance"] and not included["free-precession"] and not included["heavy-top"]
     assert res.failed == ("balance: the rotor as given fails ISO 21940-11 G6.3",) and res.return_code == 1

@@ -34,13 +34,15 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.precess import PrecessOptions
     from rbcli.api.rollcheck import RollcheckOptions
     from rbcli.api.top import TopOptions
+    from rbcli.api.whirl import WhirlOptions
     from rbcli.model import Body
 
 __all__ = ["ReportOptions", "ReportResult", "Section", "report", "run"]
 
 #: the report's options in the order the header lists them (Python name -> option)
-_OPTIONS = ("shaft", "through", "planes", "radius", "bearings", "grade", "speed", "omega", "pivot",
-            "spin", "theta", "theta_dot", "phi_dot", "rim_radius", "tyre_radius", "g", "symmetry_tol")
+_OPTIONS = ("shaft", "through", "planes", "radius", "bearings", "grade", "speed", "stiffness",
+            "damping", "omega", "pivot", "spin", "theta", "theta_dot", "phi_dot", "rim_radius",
+            "tyre_radius", "g", "symmetry_tol")
 
 #: stand-ins for a missing --spin or --theta, so that the one given is still checked by
 #: TopOptions.parse (the heavy-top section is then left out, saying what is missing)
@@ -126,6 +128,8 @@ class ReportOptions:
     balance : BalanceOptions or None — None when the body has no shaft and no balance
         option is given (``balance_skip`` says so), or the body cannot have one
         (``balance_error``)
+    whirl : WhirlOptions or None — None without ``stiffness`` (``whirl_skip``), or when the
+        body cannot have one (``whirl_error``)
     precess : PrecessOptions or None — None without ``omega``
     top : TopOptions or None — None without a pivot or without ``spin`` and ``theta``
         (``top_skip`` says which)
@@ -136,21 +140,24 @@ class ReportOptions:
 
     given: tuple[tuple[str, str], ...]
     balance: BalanceOptions | None
+    whirl: WhirlOptions | None
     precess: PrecessOptions | None
     top: TopOptions | None
     rollcheck: RollcheckOptions | None
     date: str
     balance_skip: str | None = None
     balance_error: InputError | None = None
+    whirl_skip: str | None = None
+    whirl_error: InputError | None = None
     top_skip: str | None = None
     rolling_skip: str | None = None
     rolling_error: InputError | None = None
 
     @classmethod
     def parse(cls, body: Body, *, shaft=None, through=None, planes=None, radius=None,
-              bearings=None, grade=None, speed=None, omega=None, pivot=None, spin=None,
-              theta=None, theta_dot=None, phi_dot=None, rim_radius=None, tyre_radius=None,
-              g=None, symmetry_tol=None) -> ReportOptions:
+              bearings=None, grade=None, speed=None, stiffness=None, damping=None, omega=None,
+              pivot=None, spin=None, theta=None, theta_dot=None, phi_dot=None, rim_radius=None,
+              tyre_radius=None, g=None, symmetry_tol=None) -> ReportOptions:
         """Read the keyword arguments of :func:`report` (see there) for ``body``.
 
         Raises
@@ -163,9 +170,11 @@ class ReportOptions:
         from rbcli.api.precess import PrecessOptions
         from rbcli.api.rollcheck import RollcheckOptions, round_parts
         from rbcli.api.top import TopOptions
+        from rbcli.api.whirl import WhirlOptions
 
         kw = dict(shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
-                  grade=grade, speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta,
+                  grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega,
+                  pivot=pivot, spin=spin, theta=theta,
                   theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
                   tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol)
         given = tuple((k, _text(kw[k])) for k in _OPTIONS if kw[k] is not None)
@@ -197,6 +206,16 @@ class ReportOptions:
             b_opts, b_err = None, None
             b_skip = Note("balance: no shaft in the body file and no {shaft}, {planes}, {bearings} "
                           "or rotation {speed} option")
+        # the rotor on its bearings: with a bearing stiffness
+        w_opts = w_err = w_skip = None
+        if stiffness is not None:
+            w_opts, w_err = _section_parse(lambda: WhirlOptions.parse(
+                body, bearings=bearings, stiffness=stiffness, damping=damping, speed=rotor_speed,
+                shaft=shaft, through=through, symmetry_tol=symmetry_tol))
+        elif damping is not None:
+            raise ParamError("damping", "needs {stiffness}, the bearings' stiffness (the whirl section)")
+        else:
+            w_skip = Note("whirl: no {stiffness} given (the bearings' stiffness, with {bearings})")
         # free precession
         p_opts = PrecessOptions.parse(body, omega=omega) if omega is not None else None
         # heavy top: every value given is checked, the section needs a pivot, spin and theta
@@ -222,9 +241,10 @@ class ReportOptions:
             r_opts, r_err = None, None
             r_skip = Note("rolling stability: no rim radius: none in the body file (rim_radius), "
                           "no {rim_radius} option and no round part")
-        return cls(given=given, balance=b_opts, precess=p_opts, top=t_opts, rollcheck=r_opts,
-                   date=date, balance_skip=b_skip, balance_error=b_err, top_skip=t_skip,
-                   rolling_skip=r_skip, rolling_error=r_err)
+        return cls(given=given, balance=b_opts, whirl=w_opts, precess=p_opts, top=t_opts,
+                   rollcheck=r_opts, date=date, balance_skip=b_skip, balance_error=b_err,
+                   whirl_skip=w_skip, whirl_error=w_err, top_skip=t_skip, rolling_skip=r_skip,
+                   rolling_error=r_err)
 
 
 # ----------------------------------------------------------------------------- the result
@@ -373,6 +393,24 @@ def _balance(ctx: _Ctx) -> Section:
     return Section(key, title, res, options=o.balance, figure=res.diagram(), warnings=res.warnings)
 
 
+def _whirl(ctx: _Ctx) -> Section:
+    key, title = "whirl", "Whirl: critical speeds and unbalance response"
+    o = ctx.opts
+    if o.whirl_skip is not None:
+        return _skip(key, title, o.whirl_skip)
+    if o.whirl_error is not None:
+        return _skip(key, title, _not_computed("whirl", o.whirl_error))
+    from rbcli.api import whirl as api
+
+    try:
+        res = api.run(ctx.body, o.whirl)
+    except InputError as exc:
+        return _skip(key, title, _not_computed("whirl", exc))
+    if res.return_code:
+        ctx.failed.append("whirl: a separation margin fails, or a mode grows, at {speed}")
+    return Section(key, title, res, options=o.whirl, warnings=res.warnings)
+
+
 def _precess(ctx: _Ctx) -> Section:
     key, title = "free-precession", "Free precession"
     if ctx.opts.precess is None:
@@ -429,6 +467,7 @@ STEPS = (
     ("mass properties", "mass-properties", "Mass properties", _massprops),
     ("principal axes", "principal-axes", "Principal axes", _principal),
     ("balance", "balance", "Balance", _balance),
+    ("whirl", "whirl", "Whirl: critical speeds and unbalance response", _whirl),
     ("free precession", "free-precession", "Free precession", _precess),
     ("heavy top", "heavy-top", "Heavy top", _top),
     ("rolling stability", "rolling-stability", "Rolling stability", _rollcheck),
@@ -474,9 +513,9 @@ def run(body: Body, options: ReportOptions,
 
 
 def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, bearings=None,
-           grade=None, speed=None, omega=None, pivot=None, spin=None, theta=None,
-           theta_dot=None, phi_dot=None, rim_radius=None, tyre_radius=None, g=None,
-           symmetry_tol=None) -> ReportResult:
+           grade=None, speed=None, stiffness=None, damping=None, omega=None, pivot=None,
+           spin=None, theta=None, theta_dot=None, phi_dot=None, rim_radius=None,
+           tyre_radius=None, g=None, symmetry_tol=None) -> ReportResult:
     """Every answer that applies to the body, computed for one report.
 
     The sections ``rbcli report BODY -o FILE`` writes: a parts table, mass properties,
@@ -496,8 +535,11 @@ def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, be
     grade : "G6.3" or a number (mm/s) — ISO 21940-11 grade; needs an angular ``speed`` and
         ``bearings``
     speed : quantity string with a unit — an angular speed ("3000 rpm", rad/s) is the
-        balance rotor speed and the rolling spin; a speed ("20 km/h", m/s) is the rolling
-        speed; a bare number is refused
+        balance rotor speed, the whirl operating speed and the rolling spin; a speed
+        ("20 km/h", m/s) is the rolling speed; a bare number is refused
+    stiffness : N/m, one value or one per bearing — whirl: the bearings' stiffness (with
+        ``bearings``); the whirl section is there when it is given
+    damping : N s/m, one value or one per bearing — whirl: the bearings' damping
     omega : x,y,z (rad/s) — free precession: the initial angular velocity, body frame
     pivot : "com", "origin" or x,y,z (m) — heavy top: the fixed point (default: the body's)
     spin : rad/s — heavy top: spin about the symmetry axis
@@ -525,10 +567,10 @@ def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, be
     >>> import rbcli
     >>> r = rbcli.report(rbcli.load("examples/top.yaml"), spin=150, theta=30)
     >>> [s.key for s in r.sections if s.skipped is None]
-    ['parts', 'mass-properties', 'principal-axes', 'heavy-top', 'rolling-stability']
+    ['parts', 'mass-properties', 'principal-axes', 'heavy-top']
     """
     return run(body, ReportOptions.parse(
         body, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
-        grade=grade, speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta,
-        theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius,
-        g=g, symmetry_tol=symmetry_tol))
+        grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega, pivot=pivot,
+        spin=spin, theta=theta, theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
+        tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol))

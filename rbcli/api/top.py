@@ -23,10 +23,16 @@ if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
 
     from rbcli.core.gyrocompass import Gyrocompass
-    from rbcli.core.top import TopMotion, TopParams, TopState
+    from rbcli.core.top import TopMotion
+    from rbcli.core.topbody import TopParams
+    from rbcli.core.toppath import TopState
     from rbcli.core.symmetry import AxialSymmetry
     from rbcli.core.topverify import RealBodyCheck, VerifyResult
     from rbcli.model import Body
+
+#: rows of the path's time series: the default and the most (``top --csv``)
+DEFAULT_SAMPLES = 600
+MAX_SAMPLES = 1_000_000
 
 #: standard gravity, m/s² (the default of ``g``)
 STANDARD_GRAVITY = 9.80665
@@ -56,7 +62,10 @@ class TopOptions:
     pivot_source : str — where it came from: ``"--pivot"``, ``"--pivot com"``,
         ``"--pivot origin"``, ``"the body's pivot"`` or ``"the origin, as no pivot was given"``
     pivot_given : bool — the pivot was an option (errors about it then name ``--pivot``)
-    verify : bool — integrate numerically and compare (``--verify``)
+    verify : bool — integrate numerically and compare
+    duration : float or None — s, the span of the path's time series (None: three nutation
+        periods, :meth:`TopResult.default_duration`)
+    samples : int — rows of that series
     symmetry_tol : float — how far from symmetric about the pivot–com axis the body may be
         (a fraction; default 0.01): within it the answer is for the symmetrised body, with a
         warning; beyond it the body is refused
@@ -76,14 +85,18 @@ class TopOptions:
     verify: bool = False
     symmetry_tol: float = 0.01
     pivot_as_given: Any = None
+    duration: float | None = None
+    samples: int = DEFAULT_SAMPLES
     given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
               theta_dot: Any = None, phi_dot: Any = None, g: Any = None,
-              verify: bool = False, symmetry_tol: Any = None) -> TopOptions:
+              verify: bool = False, symmetry_tol: Any = None, duration: Any = None,
+              samples: Any = None) -> TopOptions:
         """Read and check the values (see :func:`top` for their meaning and units)."""
+        span, rows = series(duration, samples)
         if spin is None:
             raise InputError("{spin}: required: the spin w3 about the symmetry axis, e.g. {spin} 150 (rad/s) or {spin} '3000 rpm'",
                              param="spin")
@@ -117,11 +130,11 @@ class TopOptions:
                                      ("theta_dot", theta_dot), ("phi_dot", phi_dot), ("g", g),
                                      ("verify", verify or None), ("symmetry_tol", symmetry_tol))
                       if v is not None)
-        warns = _plausibility(body, u, p_opt, S, "pivot")
+        warns = _plausibility(body, u, p_opt, S, "pivot", through=P)
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
                    pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
                    pivot_as_given=p_opt if isinstance(p_opt, str) or p_opt is None else tuple(p_opt),
-                   given=given, warnings=warns)
+                   duration=span, samples=rows, given=given, warnings=warns)
 
     @property
     def released(self) -> bool:
@@ -129,19 +142,49 @@ class TopOptions:
         return self.theta_dot == 0.0 and self.phi_dot == 0.0
 
 
-def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str) -> tuple[str, ...]:
+def series(duration: Any = None, samples: Any = None) -> tuple[float | None, int]:
+    """(duration, samples) of the path's time series (``top --csv``, ``--plot``): a positive
+    time in s (None: three nutation periods, :meth:`TopResult.default_duration`) and a
+    whole number of rows from 2 to :data:`MAX_SAMPLES` (default :data:`DEFAULT_SAMPLES`)."""
+    span = None
+    if duration is not None:
+        span = op.finite(op.quantity(duration, "time", "duration"), "duration")
+        if not span > 0.0:
+            raise ParamError("duration", f"must be a positive time, got {literal(duration)}")
+    rows = DEFAULT_SAMPLES
+    if samples is not None:
+        try:
+            rows = int(samples) if not isinstance(samples, (bool, float)) else None
+        except (TypeError, ValueError):
+            rows = None
+        if rows is None or not 2 <= rows <= MAX_SAMPLES:
+            raise ParamError("samples", f"must be from 2 to {MAX_SAMPLES}, got {literal(samples)}")
+    return span, rows
+
+
+def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str,
+                  axis: Any = None, through: Any = None) -> tuple[str, ...]:
     """One-line warnings for values far outside the body's scale (issue 13): a pivot more
-    than 10 body sizes away, a rim faster than sound."""
+    than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
+    ``through``: the body's farthest material from that line, issue 24)."""
     if body is None:
         return ()
-    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+    import numpy as np
+
+    from rbcli.core.inertia import body_mass_props
+    from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 
     sc = body_scale(body.parts)
     out = []
     if point is not None and not isinstance(point, str) and sc.far(point):
         out.append(Note(f"{literal(body.source)}: warning: "
                         + u.far(option, "the pivot", sc.far(point), sc.size).template))
-    v = abs(spin) * sc.half_diagonal
+    com = body_mass_props(body).com
+    if axis is None:  # a top: its symmetry axis, from the pivot to the com
+        axis = com - np.asarray(through, dtype=float)
+    if not float(np.linalg.norm(axis)) > 0.0:  # the pivot at the com: refused later
+        return tuple(out)
+    v = abs(spin) * axis_reach(body.parts, axis, com if through is None else through)
     if SPEED_OF_SOUND < v < math.inf:
         out.append(Note(f"{literal(body.source)}: warning: {{spin}}: the body's rim would move at "
                         f"{v:.4g} m/s, faster than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds "
@@ -291,15 +334,16 @@ def run(body: Body, options: TopOptions) -> TopResult:
     import numpy as np
 
     from rbcli.core import top as core
+    from rbcli.core import topbody
     from rbcli.core.inertia import body_mass_props
 
     mp = body_mass_props(body)
     P = np.asarray(options.pivot, dtype=float)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            params = core.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
+            params = topbody.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
                                         sym_rtol=options.symmetry_tol)
-    except core.PivotAtCom as exc:
+    except topbody.PivotAtCom as exc:
         if options.pivot_given:
             raise ParamError("pivot", str(exc)) from None
         raise InputError(str(exc), Location(body.source)) from None
@@ -337,7 +381,7 @@ def run(body: Body, options: TopOptions) -> TopResult:
 
 def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any = None,
         phi_dot: Any = None, g: Any = None, verify: bool = False,
-        symmetry_tol: Any = None) -> TopResult:
+        symmetry_tol: Any = None, duration: Any = None, samples: Any = None) -> TopResult:
     """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
     The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
@@ -373,6 +417,11 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
         (``0.01``) or a percentage (``"1 %"``), at most 10 %. Default 1 %. A body within it
         (and above rounding, 1e-6) is answered for its symmetrised form (the mean moment
         across) with a warning and ``asymmetry`` in the JSON; beyond it, refused.
+    duration : float or str, optional
+        The span of the path's time series (:meth:`TopResult.sample`, ``top --csv``): s or
+        with a unit. Default: three nutation periods.
+    samples : int, optional
+        Rows of that series, 2 to 1 000 000. Default 600.
 
     Returns
     -------
@@ -395,7 +444,8 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
     (0.142133, 'cusps')
     """
     return run(body, TopOptions.parse(body, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol))
+                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
+                                      duration=duration, samples=samples))
 
 
 # ----------------------------------------------------------------------------- gyrocompass
@@ -482,7 +532,7 @@ class GyrocompassOptions:
         unit = tuple(float(x) for x in v / np.linalg.norm(v))
         return cls(ratio=None, axis=unit, axis_source=Note(src), spin=S, latitude=lat,  # type: ignore[arg-type]
                    earth_rate=W, symmetry_tol=tol, axis_as_given=None if n_axis is None else tuple(n_axis),
-                   given=given, warnings=_plausibility(body, u, None, S, "spin"))
+                   given=given, warnings=_plausibility(body, u, None, S, "spin", axis=unit))
 
 
 @dataclass(frozen=True)

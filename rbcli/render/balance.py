@@ -1,4 +1,5 @@
-"""Tables of ``rbcli balance`` and ``rbcli field-balance`` (the JSON is the result's own).
+"""Tables of ``rbcli balance`` (the JSON is the result's own; ``field-balance``'s tables are
+:mod:`rbcli.render.fieldbalance`).
 
 Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
 correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
@@ -18,7 +19,7 @@ from rbcli.render.units import RPM, ShopUnits
 from rbcli.render.text import Doc
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.balance import BalanceResult, FieldBalanceResult
+    from rbcli.api.balance import BalanceResult
     from rbcli.core import balance as B
 
 
@@ -341,64 +342,3 @@ def _iso(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
 def after_words(iso: B.IsoCheck) -> str:
     """What the ISO prediction assumes is fitted: the corrections, rounded or not."""
     return "the rounded corrections" if iso.after_state == "after rounded corrections" else "the corrections"
-
-
-# ----------------------------------------------------------------------------- field balancing
-
-
-#: how the tables show readings of each kind: (SI per display unit, display unit)
-READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
-
-
-def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
-    """The tables of ``rbcli field-balance`` (from the result's finished numbers)."""
-    d = res.to_json()
-    m = su.unit("mass")
-    n = d["planes"]
-    doc.heading(f"field balancing, {'one plane' if n == 1 else 'two planes, two sensors'} (influence coefficients)")
-    doc.note(
-        "angles in degrees, counted in the same sense as the trial angles and the phase readings "
-        "(they must agree); a correction is a mass to add"
-    )
-    names = ["A", "B"][:n]
-    kind = d["readings"]["kind"]
-    scale, ru = READING_DISPLAY.get(kind, (1.0, ""))
-    if ru:
-        doc.note(f"readings: {kind}, shown in {ru} (JSON: SI, {d['readings']['unit']})")
-    rows = []
-    for i, row in enumerate(d["influence"]):
-        cells = [str(i + 1)]
-        for a in row:
-            per = a["magnitude"] * su.mass[0] / scale  # reading per display mass unit
-            cells += [num(per, digits), num(a["angle_deg"], digits)]
-        rows.append(cells)
-    cols = ["sensor"]
-    for name in names:
-        cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
-    title = ("influence coefficients (reading per unit trial mass)" if not ru
-             else f"influence coefficients ({ru} per {m})")
-    doc.table(title, cols, rows, right=tuple(range(1, len(cols))))
-    crow = []
-    for c in d["corrections"]:
-        crow.append([c["name"], su.show(c["mass"], "mass", digits), num(c["angle_deg"], digits),
-                     su.show(c["mass_trial_on"], "mass", digits), num(c["angle_trial_on_deg"], digits)])
-    radii = res.radii
-    where = "" if radii is None else (
-        f" at radius {su.show(radii[1], 'length', digits)} {su.unit('length')} (trials at "
-        f"{su.show(radii[0], 'length', digits)} {su.unit('length')})")
-    doc.table(
-        f"corrections to add{where}",
-        ["plane", f"mass [{m}]", "angle [°]", f"trial left on: add [{m}]", "angle [°]"],
-        crow,
-        right=(1, 2, 3, 4),
-    )
-    if n == 2:
-        doc.note(
-            f"condition number of the influence matrix {num(d['cond'], 4)}"
-            + (" (ill-conditioned: the planes are not well separated)" if d["ill_conditioned"] else "")
-            + ("; trial A left on during run B (--cumulative)" if d["cumulative"] else "")
-        )
-    doc.note(
-        "predicted residual reading after the corrections (linear model, 0 up to round-off): "
-        + ", ".join(num(v / scale, 3) for v in d["predicted_residual"]) + (f" {ru}" if ru else "")
-    )

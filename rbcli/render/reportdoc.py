@@ -101,6 +101,12 @@ def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
     return s
 
 
+def _whirl(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
+    from rbcli.render.whirl import report_section
+
+    return report_section(c.result, du, digits, key=c.key, title=c.title)
+
+
 def _precess(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
     from rbcli.render import precess as rp
 
@@ -145,6 +151,7 @@ _BUILDERS: dict[str, tuple[str, Callable[..., Section]]] = {
     "mass-properties": ("mass properties", _massprops),
     "principal-axes": ("principal axes", _principal),
     "balance": ("balance", _balance),
+    "whirl": ("whirl", _whirl),
     "free-precession": ("free precession", _precess),
     "heavy-top": ("heavy top", _top),
     "rolling-stability": ("rolling stability", _rollcheck),
