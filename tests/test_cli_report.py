@@ -536,10 +536,10 @@ def test_html_renders_in_a_real_browser(cli, tmp_path):
 # ----------------------------------------------------------------------------- whirl
 
 
-def test_whirl_section_with_a_stiffness_has_the_commands_critical_speeds(capsys, tmp_path, cli):
+def test_whirl_section_with_a_stiffness_has_the_commands_critical_speeds(cli, tmp_path):
     args = ["--bearings", "0,500mm", "--stiffness", "5 N/um", "--damping", "1 N*s/mm",
             "--speed", "1480 rpm"]
-    out, err = report(capsys, tmp_path, "examples/fan_rotor.yaml", *args)
+    out, err = report(cli, tmp_path, "examples/fan_rotor.yaml", *args)
     page = Page(out.read_text(encoding="utf-8"))
     assert "whirl" in page.sections and err == ""
     w = cli("whirl", "examples/fan_rotor.yaml", *args, "--json").json()
@@ -552,7 +552,7 @@ def test_whirl_section_with_a_stiffness_has_the_commands_critical_speeds(capsys,
     for c in crit:
         assert num(c["speed"] * RPM, 6) in "".join(page.text) or num(c["speed"], 6) in "".join(page.text)
     # without a stiffness the section says what it needs, in one line
-    out, _ = report(capsys, tmp_path, "examples/fan_rotor.yaml", name="plain.html")
+    out, _ = report(cli, tmp_path, "examples/fan_rotor.yaml", name="plain.html")
     why = Page(out.read_text(encoding="utf-8")).skips["whirl"]
     assert "--stiffness" in why and "--bearings" in why
     # damping alone is a mistake, said before anything is written
