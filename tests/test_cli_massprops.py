@@ -269,6 +269,19 @@ def test_version_help_and_python_m_rbcli(cli_proc):
     assert ih.code == 0 and "--products" in ih.out and "--omega" in ih.out
 
 
+def test_main_returns_the_status_and_both_entry_points_exit_with_it(cli, cli_proc):
+    # rbcli.cli.main(argv) returns the exit status (no SystemExit); the console script and
+    # python -m rbcli (rbcli.__main__) exit with it
+    from rbcli.cli import main
+
+    assert main(["--version"]) == 0
+    for script in (False, True):
+        assert cli_proc("--version", script=script).code == 0
+        r = cli_proc("inertia", "examples/nope.yaml", script=script)
+        assert (r.code, r.err.count("\n")) == (2, 1), r
+    assert cli("inertia", "examples/nope.yaml").code == 2
+
+
 def test_a_run_of_the_cli_loads_no_heavy_modules(cli_proc):
     # what the command line imports before a command (the root's --version): typer and the
     # standard library only
