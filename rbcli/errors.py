@@ -11,6 +11,7 @@ from __future__ import annotations
 import enum
 import re
 from collections.abc import Callable
+from contextvars import ContextVar
 from dataclasses import FrozenInstanceError
 
 
@@ -227,14 +228,30 @@ OPTIONS: dict[str, str] = {
 }
 
 
+#: parameters whose option is another word in one command (the Python API says one name for
+#: one idea: the shaft, the rim radius, the rolling speed; the command line keeps its options)
+COMMAND_OPTIONS: dict[str, dict[str, str]] = {
+    "rollcheck": {"shaft": "--axle", "rim_radius": "--radius", "rolling_speed": "--speed"},
+    "gyrocompass": {"shaft": "--axis"},
+    "report": {"rolling_speed": "--speed"},
+}
+
+#: the command whose options a message's parameters are spelled as: set by the command line
+#: while it runs one (None in the library: the general table)
+COMMAND: ContextVar[str | None] = ContextVar("rbcli_command", default=None)
+
+
 def param_name(param: str) -> str:
     """How the Python API names ``param`` in a message: itself, or the body default it is."""
     return BODY_DEFAULTS.get(param, param)
 
 
-def option_name(param: str) -> str:
-    """How the user wrote parameter ``param``: ``"zero_mark_deg"`` -> ``"--zero-mark-deg"``."""
-    return OPTIONS.get(param) or "--" + param.replace("_", "-")
+def option_name(param: str, command: str | None = None) -> str:
+    """How the user wrote parameter ``param`` on the command line: ``"zero_mark_deg"`` ->
+    ``"--zero-mark-deg"``; in ``command`` (default: the one running, :data:`COMMAND`) its
+    own word where it has one (rollcheck's ``rim_radius`` is ``--radius``)."""
+    own = COMMAND_OPTIONS.get(command or COMMAND.get() or "", {}).get(param)
+    return own or OPTIONS.get(param) or "--" + param.replace("_", "-")
 
 
 class NonFiniteResult(InputError):

@@ -27,7 +27,7 @@ CALLS = [
     lambda: rbcli.precess(rbcli.load(EXAMPLES / "book.yaml"), omega=[0.01, 1, 0.01]),
     lambda: rbcli.top(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=30),
     lambda: rbcli.gyrocompass(rbcli.load(EXAMPLES / "gyroscope.yaml"), spin="6000 rpm", latitude=30),
-    lambda: rbcli.rollcheck(rbcli.load(EXAMPLES / "penny.yaml"), speed="3 m/s"),
+    lambda: rbcli.rollcheck(rbcli.load(EXAMPLES / "penny.yaml"), rolling_speed="3 m/s"),
     lambda: rbcli.whirl(rbcli.load(EXAMPLES / "fan_rotor.yaml"), bearings="0,500 mm",
                         stiffness="5 N/um", damping="1 N*s/mm", speed="1480 rpm"),
     lambda: rbcli.field_balance(initial="6.0@30", trial="10 g@0", run="4.0@110"),

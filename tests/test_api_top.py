@@ -188,7 +188,7 @@ GYRO_CASES = [
     (["--spin", "100", "--latitude", "0.5 rad"], "examples/top.yaml", dict(spin=100, latitude="0.5 rad")),
     (["--spin", "6000 rpm", "--latitude", "30"], "examples/penny.yaml", dict(spin="6000 rpm", latitude=30)),
     (["--spin", "6000 rpm", "--latitude", "30", "--axis", "z"], "examples/frisbee.yaml",
-     dict(spin="6000 rpm", latitude=30, axis="z")),
+     dict(spin="6000 rpm", latitude=30, shaft="z")),
 ]
 
 

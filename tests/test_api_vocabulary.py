@@ -22,7 +22,7 @@ CASES = [
     ("precess", "examples/frisbee.yaml", dict(omega=[0, 1, 30])),
     ("top", "examples/top.yaml", dict(spin=150, theta=30)),
     ("gyrocompass", "examples/gyroscope.yaml", dict(spin="6000 rpm", latitude=30)),
-    ("rollcheck", "examples/penny.yaml", dict(speed="3 m/s")),
+    ("rollcheck", "examples/penny.yaml", dict(rolling_speed="3 m/s")),
     ("report", "examples/top.yaml", dict(spin=150, theta=30)),
 ]
 

@@ -16,6 +16,7 @@ import math
 import pytest
 
 import rbcli
+from conftest import as_cli
 from rbcli.errors import option_name
 from rbcli.core.rolling import straight
 
@@ -59,7 +60,7 @@ def test_cad_wheel_answered_with_warning_and_asymmetry(cli, as_file):
     w = res.warnings[0]
     assert w.startswith("the wheel is not exactly symmetric about its axle: the moments across it "
                         "differ by 0.01 %") and "of the rim radius off it" in w
-    assert w.endswith("the answer is for the symmetrised wheel (--symmetry-tol 1 %)")
+    assert w.endswith("the answer is for the symmetrised wheel (symmetry_tol 1 %)")
     d = res.to_json()
     assert d["asymmetry"] == a.to_json(0.01)
     assert set(d["asymmetry"]) == {"transverse_moments", "relative", "coupling", "coupling_relative",
@@ -68,8 +69,8 @@ def test_cad_wheel_answered_with_warning_and_asymmetry(cli, as_file):
     assert d["warnings"] == [w]
     # the command line: the same JSON, the warning once on standard error, located
     r = cli("rollcheck", f, "--json")
-    assert r.code == 0 and r.err == f"rbcli: {f}: warning: {w}\n"
-    assert {k: v for k, v in r.json().items() if k != "file"} == d
+    assert r.code == 0 and r.err == f"rbcli: {f}: warning: {w.spelled(option_name)}\n"
+    assert {k: v for k, v in r.json().items() if k != "file"} == as_cli(d)
     # the table says how far the answer may be off
     r = cli("rollcheck", "-e", CAD)
     table = " ".join(r.out.split())
@@ -110,10 +111,10 @@ def test_wider_tolerance_accepts_a_1_5_percent_wheel(cli, as_file):
         res = rbcli.rollcheck(body, symmetry_tol=tol)
         assert res.options.symmetry_tol == pytest.approx(0.02)
         assert res.asymmetry.relative == pytest.approx(0.0148, abs=1e-4)
-        assert res.warnings[0].endswith("(--symmetry-tol 2 %)")
+        assert res.warnings[0].endswith("(symmetry_tol 2 %)")
     r = cli("rollcheck", f, "--symmetry-tol", "2%", "--speed", "3", "--json")
-    d = rbcli.rollcheck(body, symmetry_tol="2%", speed=3).to_json()
-    assert r.code == 0 and {k: v for k, v in r.json().items() if k != "file"} == d
+    d = rbcli.rollcheck(body, symmetry_tol="2%", rolling_speed=3).to_json()
+    assert r.code == 0 and {k: v for k, v in r.json().items() if k != "file"} == as_cli(d)
     assert d["asymmetry"]["tolerance"] == 0.02
 
 
@@ -147,12 +148,12 @@ def test_axle_not_principal_follows_the_same_rule(cli):
     def tilted(deg):
         return ("{shape: disk, radius: 0.2, mass: 20, rotate: {axis: [0, 1, 0], angle: %r}}" % deg)
 
-    res = rbcli.rollcheck(rbcli.load_text(tilted(0.5)), radius=0.2)
+    res = rbcli.rollcheck(rbcli.load_text(tilted(0.5)), rim_radius=0.2)
     # coupling (C - A) sin(2θ)/2 = 0.2 sin 1° / 2 = 1.745e-3 kg m², 0.87 % of A = 0.2
     assert res.asymmetry.coupling_relative == pytest.approx(0.2 * math.sin(math.radians(1)) / 2 / 0.2, rel=1e-4)
     assert "products of inertia with the plane across are 0.87 %" in res.warnings[0]
     with pytest.raises(rbcli.InputError) as e:
-        rbcli.rollcheck(rbcli.load_text(tilted(0.5)), radius=0.2, symmetry_tol="0.5 %")
+        rbcli.rollcheck(rbcli.load_text(tilted(0.5)), rim_radius=0.2, symmetry_tol="0.5 %")
     assert "the axle is not a principal axis" in str(e.value) and "--symmetry-tol (0.5 %)" in str(e.value)
     r = cli("rollcheck", "-e", tilted(2), "--radius", "0.2")
     assert r.code == 2 and "not a principal axis" in r.err and "2° away" in r.err

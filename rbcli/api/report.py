@@ -234,8 +234,8 @@ class ReportOptions:
             t_opts = None
         # rolling stability
         r_opts, r_err = _section_parse(lambda: RollcheckOptions.parse(
-            body, axle=axle, through=through, radius=rim, tyre_radius=tyre_radius, g=g,
-            speed=roll_speed, spin=rotor_speed, symmetry_tol=symmetry_tol))
+            body, shaft=axle, through=through, rim_radius=rim, tyre_radius=tyre_radius, g=g,
+            rolling_speed=roll_speed, spin=rotor_speed, symmetry_tol=symmetry_tol))
         r_skip = None
         if rim is None and body.rim_radius is None and not round_parts(body):
             r_opts, r_err = None, None

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rbcli.api.result import Result
-from rbcli.errors import InputError
+from rbcli.errors import InputError, Note, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.rim import Rim
@@ -53,25 +53,27 @@ class RollcheckOptions:
         m, a point of the axle line, body frame.
     axle_source : str
         Where the axle and its point came from, in words (``"the body's shaft, through the
-        body's shaft"``, ``"--axle, through the origin"``, ...).
+        body's shaft"``, ``"shaft, through the origin"``, ...; parameters named as
+        :func:`rbcli.errors.spell` says).
     radius : float
         m, the rim radius a (centre to floor when upright).
     radius_source : str
-        Where a came from, in words: ``"--radius"``, ``"the body's rim_radius"`` or ``"the
+        Where a came from, in words: ``"rim_radius"``, ``"the body's rim_radius"`` or ``"the
         largest round part 'rim' (ring, coaxial with the axle)"``.
     radius_kind : str
-        ``"--radius"``, ``"rim_radius"`` or ``"largest_round_part"`` (JSON ``radius_source``).
+        ``rim_radius`` (the parameter), ``"rim_radius"`` (the body's) or
+        ``"largest_round_part"`` (JSON ``radius_source``).
     radius_part : str or None
         The part's name when ``radius_kind`` is ``"largest_round_part"``.
     tyre_radius : float
         m, tube radius r of a rounded rim: 0 is a knife edge (or a flat band), a a sphere;
-        from ``--tyre-radius``, else from the rim's shape (a torus's tube, a sphere's radius).
+        from ``tyre_radius``, else from the rim's shape (a torus's tube, a sphere's radius).
     tyre_radius_kind : str
-        ``"--tyre-radius"`` (given), ``"shape"`` (the rim part's: a torus, a sphere) or
+        ``tyre_radius`` (given), ``"shape"`` (the rim part's: a torus, a sphere) or
         ``"knife_edge"`` (none: 0) (JSON ``tyre_radius_source``).
     band : tuple of 2 floats or None
         m, for a rim that is a flat band (a cylinder on its side, rim circles in two planes)
-        and no ``--tyre-radius``: its edges' distances from the plane of the centre of mass,
+        and no ``tyre_radius``: its edges' distances from the plane of the centre of mass,
         one each side.
     g : float
         m/s², gravity.
@@ -93,12 +95,15 @@ class RollcheckOptions:
         body's scale (the command line prints them as ``rbcli: FILE: warning: ...``).
     symmetry_tol : float
         How far from a body of revolution about the axle the wheel may be (a fraction;
-        default 0.01, ``--symmetry-tol``): the two moments across the axle (about the com)
+        default 0.01): the two moments across the axle (about the com)
         may differ, and the products coupling the axle to the plane across it may be, up
         to this fraction of their mean; the com may be this fraction of the rim radius off
         the axle. Within it the answer is for the symmetrised wheel, with a warning.
-    echo : tuple of (option, value, unit)
-        The options given, as understood (in the body's units; tables echo them).
+    shaft_as_given, through_as_given : the ``shaft`` and ``through`` values as given (a
+        direction with its largest component ±1; ``"com"``, ``"origin"`` or a point, m), None
+        when not given
+    given : tuple of str
+        The parameters the caller gave.
     """
 
     axle: tuple[float, float, float]
@@ -119,7 +124,9 @@ class RollcheckOptions:
     rim: Rim | None = None
     warnings: tuple[str, ...] = ()
     symmetry_tol: float = 0.01
-    echo: tuple[tuple[str, str, str], ...] = ()
+    shaft_as_given: tuple[float, float, float] | None = None
+    through_as_given: Any = None
+    given: tuple[str, ...] = ()
 
     @property
     def straight_asked(self) -> bool:
@@ -136,8 +143,8 @@ class RollcheckOptions:
         return self.lean is not None or self.circle is not None
 
     @classmethod
-    def parse(cls, body: Body, *, axle: Any = None, through: Any = None, radius: Any = None,
-              tyre_radius: Any = None, g: Any = None, speed: Any = None, spin: Any = None,
+    def parse(cls, body: Body, *, shaft: Any = None, through: Any = None, rim_radius: Any = None,
+              tyre_radius: Any = None, g: Any = None, rolling_speed: Any = None, spin: Any = None,
               lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckOptions:
         """Read the options of :func:`rollcheck` (see there) and resolve the body's defaults.
 
@@ -153,38 +160,39 @@ class RollcheckOptions:
         from rbcli.errors import ParamError
 
         u = o.Units.of(body)
-        n_axle = o.direction(axle, "--axle") if axle is not None else None
-        p_through = u.point(through, "--through") if through is not None else None
-        a_opt = (o.positive(u.quantity(radius, "length", "--radius"), "--radius", "the rim radius")
-                 if radius is not None else None)
-        r = u.quantity(tyre_radius, "length", "--tyre-radius") if tyre_radius is not None else 0.0
+        n_axle = o.direction(shaft, "shaft") if shaft is not None else None
+        p_through = u.point(through, "through") if through is not None else None
+        a_opt = (o.positive(u.quantity(rim_radius, "length", "rim_radius"), "rim_radius",
+                            "the rim radius") if rim_radius is not None else None)
+        r = u.quantity(tyre_radius, "length", "tyre_radius") if tyre_radius is not None else 0.0
         if not (r >= 0.0 and math.isfinite(r)):
             raise ParamError("tyre_radius", f"must be 0 (knife edge) or a positive length, got {tyre_radius}")
-        gv = (o.positive(u.quantity(g, "acceleration", "--g"), "--g", "gravity")
+        gv = (o.positive(u.quantity(g, "acceleration", "g"), "g", "gravity")
               if g is not None else STANDARD_GRAVITY)
-        v = o.finite(u.quantity(speed, "speed", "--speed"), "--speed") if speed is not None else None
-        s = o.finite(u.quantity(spin, "angular_speed", "--spin"), "--spin") if spin is not None else None
+        v = (o.finite(u.quantity(rolling_speed, "speed", "rolling_speed"), "rolling_speed")
+             if rolling_speed is not None else None)
+        s = o.finite(u.quantity(spin, "angular_speed", "spin"), "spin") if spin is not None else None
         beta = None
         if lean is not None:
-            beta = u.quantity(lean, "angle", "--lean")
+            beta = u.quantity(lean, "angle", "lean")
             if not (0.0 <= beta < 0.5 * math.pi):
                 raise ParamError("lean", "the inward lean from the vertical must be from 0 up to "
                                  f"(not including) 90 degrees, got {lean}")
         R_G = None
         if circle is not None:
-            R_G = u.quantity(circle, "length", "--circle")
+            R_G = u.quantity(circle, "length", "circle")
             if not (R_G >= 0.0 and R_G != math.inf):
                 raise ParamError("circle", f"the circle radius must be 0 (spinning in place) or "
                                  f"positive, got {circle}")
         asked_speed = v is not None or s is not None
         if (beta is None) != (R_G is None) and not asked_speed:
-            have, need = ("lean", "--circle") if beta is not None else ("circle", "--lean")
-            raise ParamError(have, "a steady circle needs two of --lean, --circle and --speed (or "
-                             f"--spin); add {need} or --speed")
+            have, need = ("lean", "circle") if beta is not None else ("circle", "lean")
+            raise ParamError(have, "a steady circle needs two of {lean}, {circle} and {rolling_speed} (or "
+                             f"{{spin}}); add {need} or {{rolling_speed}}")
         if R_G is not None and R_G == 0.0 and beta is None and asked_speed:
             raise InputError(
-                "--circle 0: spinning in place the centre does not move, so --speed cannot fix "
-                "the lean; give --lean instead", param="circle")
+                "{circle} 0: spinning in place the centre does not move, so {rolling_speed} cannot fix "
+                "the lean; give {lean} instead", param="circle")
 
         tol = o.symmetry_tolerance(symmetry_tol)
         axle_v, P, axle_source, a, source, kind, part, rim, warns = _resolve(body, n_axle, p_through, a_opt, tol)
@@ -192,7 +200,7 @@ class RollcheckOptions:
             raise ParamError("tyre_radius", f"the tyre radius {r:.6g} m must be at most the rim "
                              f"radius a = {a:.6g} m ({source}; a tyre radius equal to it is a sphere)")
         band = None
-        r_kind = "--tyre-radius" if tyre_radius is not None else "knife_edge"
+        r_kind = "{tyre_radius}" if tyre_radius is not None else "knife_edge"
         if tyre_radius is None and rim is not None:
             if rim.kind == "band":
                 band = rim.edges
@@ -201,33 +209,29 @@ class RollcheckOptions:
         if (beta is not None or R_G is not None) and (r != 0.0 or band is not None):
             if tyre_radius is not None:
                 raise ParamError(
-                    "tyre_radius", "steady circular rolling (--lean/--circle) is computed for a "
+                    "tyre_radius", "steady circular rolling ({lean}/{circle}) is computed for a "
                     "knife-edge rim only (tyre radius 0); the straight-rolling threshold takes a "
                     "rounded rim")
             assert rim is not None
             what = {"band": "a flat band", "torus": "a torus", "sphere": "a sphere"}[rim.kind]
-            parts = ", ".join(f"'{n}' ({sh})" for n, sh in rim.parts)
+            parts = ", ".join(f"'{literal(n)}' ({sh})" for n, sh in rim.parts)
             raise ParamError(
                 "lean" if beta is not None else "circle",
                 f"steady circular rolling is computed for a knife-edge rim only; this body's rim "
                 f"is {what} (part {parts}): the straight-rolling threshold takes it")
-        given = []
-        if n_axle is not None:
-            given.append(("--axle", u.show(n_axle, "dimensionless"), "direction"))
-        if p_through is not None:
-            given.append(("--through", p_through, "") if isinstance(p_through, str)
-                         else u.echo("--through", p_through, "length"))
-        for opt, val, k in (("--radius", a_opt, "length"), ("--tyre-radius", r if tyre_radius is not None else None, "length"),
-                               ("--g", gv if g is not None else None, "acceleration"), ("--speed", v, "speed"),
-                               ("--spin", s, "angular_speed"), ("--lean", beta, "angle"), ("--circle", R_G, "length")):
-            if val is not None:
-                given.append(u.echo(opt, val, k))
+        given = tuple(p for p, x in (
+            ("shaft", shaft), ("through", through), ("rim_radius", rim_radius),
+            ("tyre_radius", tyre_radius), ("g", g), ("rolling_speed", rolling_speed),
+            ("spin", spin), ("lean", lean), ("circle", circle), ("symmetry_tol", symmetry_tol))
+            if x is not None)
         warns = warns + _plausibility(body, u, a_opt, p_through, R_G, v, s, a)
-        return cls(axle=axle_v, through=P, axle_source=axle_source, radius=a, radius_source=source,
-                   radius_kind=kind, radius_part=part, tyre_radius=r, tyre_radius_kind=r_kind,
-                   band=band, g=gv, speed=v, spin=s,
+        return cls(axle=axle_v, through=P, axle_source=Note(axle_source), radius=a,
+                   radius_source=Note(source), radius_kind=Note(kind), radius_part=part,
+                   tyre_radius=r, tyre_radius_kind=Note(r_kind), band=band, g=gv, speed=v, spin=s,
                    lean=beta, circle=R_G, rim=rim, warnings=warns, symmetry_tol=tol,
-                   echo=tuple(given))
+                   shaft_as_given=None if n_axle is None else tuple(n_axle),
+                   through_as_given=p_through if p_through is None or isinstance(p_through, str)
+                   else tuple(p_through), given=given)
 
 
 def _plausibility(body: Body, u, a_opt, p_through, R_G, v, s, a) -> tuple[str, ...]:
@@ -238,15 +242,15 @@ def _plausibility(body: Body, u, a_opt, p_through, R_G, v, s, a) -> tuple[str, .
     sc = body_scale(body.parts)
     out = []
     if a_opt is not None and a_opt > FAR * sc.size:
-        out.append(u.far("--radius", "the rim radius", a_opt, sc.size))
+        out.append(u.far("rim_radius", "the rim radius", a_opt, sc.size))
     if p_through is not None and not isinstance(p_through, str) and sc.far(p_through):
-        out.append(u.far("--through", "the point", sc.far(p_through), sc.size))
+        out.append(u.far("through", "the point", sc.far(p_through), sc.size))
     rim = max(abs(v or 0.0), abs(s or 0.0) * a)
     if SPEED_OF_SOUND < rim < math.inf:
-        opt = "--speed" if abs(v or 0.0) >= abs(s or 0.0) * a else "--spin"
-        out.append(f"{opt}: the rim moves at {rim:.4g} m/s relative to the centre, faster than "
-                   f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                   f"{u.label('angular_speed')}: is a unit missing?")
+        opt = "{rolling_speed}" if abs(v or 0.0) >= abs(s or 0.0) * a else "{spin}"
+        out.append(Note(f"{opt}: the rim moves at {rim:.4g} m/s relative to the centre, faster "
+                        f"than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                        f"{u.label('angular_speed')}: is a unit missing?"))
     return tuple(out)
 
 
@@ -260,7 +264,7 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     mp = body_mass_props(body)
     if n_axle is not None:
         n = np.asarray(n_axle, dtype=float)
-        axle_source = "--axle"
+        axle_source = "{shaft}"
     elif body.shaft is not None:
         n = np.asarray(body.shaft.axis, dtype=float)
         axle_source = "the body's shaft"
@@ -270,10 +274,10 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     n = n / np.linalg.norm(n)
     if isinstance(p_through, str):
         P = mp.com.copy() if p_through == "com" else np.zeros(3)
-        through_source = f"--through {p_through}"
+        through_source = f"{{through}} {p_through}"
     elif p_through is not None:
         P = np.asarray(p_through, dtype=float)
-        through_source = "--through"
+        through_source = "{through}"
     elif body.shaft is not None:
         P = np.asarray(body.shaft.through, dtype=float)
         through_source = "the body's shaft"
@@ -282,13 +286,13 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
         through_source = "the origin"
     part = None
     if a_opt is not None:
-        a, source, kind = a_opt, "--radius", "--radius"
+        a, source, kind = a_opt, "{rim_radius}", "{rim_radius}"
     elif body.rim_radius is not None:
         a, source, kind = float(body.rim_radius), "the body's rim_radius", "rim_radius"
     else:
         best = _largest_round_part(body, n, P, mp, tol)
         a, part, kind = float(best.radius), best.name, "largest_round_part"
-        source = f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)"
+        source = f"the largest round part '{literal(best.name)}' ({best.shape}, coaxial with the axle)"
     rim = rim_of(body.parts, mp.com, n, P, a, tol=tol)
     warnings: list[str] = []
     if rim is not None and rim.outside > 1e-6 * a and rim.upright_equilibrium:
@@ -313,7 +317,7 @@ def _largest_round_part(body: Body, n, P, mp, tol) -> Part:
     if best is None:
         _wheel(body, mp, n, P, None, tol)  # a body that cannot roll at all says so first
         raise InputError(
-            "no rim radius: give --radius, or rim_radius in the body file (no round part — ring, "
+            "no rim radius: give {rim_radius}, or rim_radius in the body file (no round part — ring, "
             "disk, cylinder, torus, sphere, ... — is centred on the axle and coaxial with it)",
             Location(body.source))
     return best
@@ -506,11 +510,11 @@ def _refuse_off_centre_rim(body: Body, o: RollcheckOptions) -> None:
 
     rim = o.rim
     assert rim is not None
-    asked = ("the steady circle asked for (--lean/--circle) is not computed either: the circle "
+    asked = ("the steady circle asked for ({lean}/{circle}) is not computed either: the circle "
              "model takes the rim in that plane" if o.circle_asked else
              "the steady-circle model, which takes the rim in that plane, does not apply either")
     raise OffCentreRim(
-        f"{rim.describe()}: upright rolling is not an equilibrium (the centre of mass is not "
+        f"{literal(rim.describe())}: upright rolling is not an equilibrium (the centre of mass is not "
         "above the contact point: gravity tips the body over or steers it into a curve), so "
         f"straight rolling has no critical speed; {asked}; rollcheck analyses rims within "
         f"{100 * RIM_OFFSET_LIMIT:g} % of the radius of the plane of the centre of mass",
@@ -540,16 +544,16 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
                        lean_rad=o.lean, circle_radius=o.circle)
     warnings = o.warnings
     if wheel.asymmetry is not None:
-        warnings += (f"the wheel is not exactly symmetric about its axle: "
-                     f"{wheel.asymmetry.percent('the rim radius')}; the answer is for the symmetrised "
-                     f"wheel (--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+        warnings += (Note(f"the wheel is not exactly symmetric about its axle: "
+                          f"{wheel.asymmetry.percent('the rim radius')}; the answer is for the "
+                          f"symmetrised wheel ({{symmetry_tol}} {o.symmetry_tol * 100:g} %)"),)
     return RollcheckResult(name=body.name, source=body.source, options=o, wheel=wheel,
                            straight=res.straight, verdict=res.verdict, circle=res.circle,
                            warnings=warnings)
 
 
-def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any = None,
-              tyre_radius: Any = None, g: Any = None, speed: Any = None, spin: Any = None,
+def rollcheck(body: Body, *, shaft: Any = None, through: Any = None, rim_radius: Any = None,
+              tyre_radius: Any = None, g: Any = None, rolling_speed: Any = None, spin: Any = None,
               lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckResult:
     """Stability of a wheel, disk or hoop rolling without slipping on a rough level floor.
 
@@ -566,14 +570,15 @@ def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any 
     ----------
     body : rbcli.Body
         From :func:`rbcli.load` or :func:`rbcli.load_text`.
-    axle : str or sequence of 3, optional
-        Axle direction in the body frame (``"x"``, ``[0, 0, 1]``). Default: the body's
-        shaft axis, else body z.
+    shaft : str or sequence of 3, optional
+        The axle's direction in the body frame (``"x"``, ``[0, 0, 1]``; the command line's
+        ``--axle``). Default: the body's shaft axis, else body z.
     through : str or sequence of 3, optional
         m, a point of the axle line, or ``"com"``/``"origin"``. Default: the body's shaft
         point, else the origin.
-    radius : float or str, optional
-        m, the rim radius a. Default: the body's ``rim_radius``, else the largest round
+    rim_radius : float or str, optional
+        m, the rim radius a (the command line's ``--radius``). Default: the body's
+        ``rim_radius``, else the largest round
         part (ring, disk, cylinder, torus, sphere, hemisphere, cone; not a hole) centred
         on the axle and coaxial with it.
     tyre_radius : float or str, optional
@@ -582,16 +587,18 @@ def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any 
         the cylinder's length; a disk, ring, cone or hemisphere a knife edge, 0).
     g : float or str, optional
         m/s², gravity. Default 9.80665.
-    speed : float or str, optional
-        m/s, speed of the centre for straight rolling (negative: backwards).
+    rolling_speed : float or str, optional
+        m/s, the speed of the centre for straight rolling (negative: backwards; the command
+        line's ``--speed``; JSON ``speed``).
     spin : float or str, optional
-        rad/s, spin about the axle (speed = a x spin); with ``speed`` they must agree.
+        rad/s, spin about the axle (rolling speed = a × spin); with ``rolling_speed`` they
+        must agree.
     lean : float or str, optional
         Degrees (a number) or an angle with its unit: inward lean of a steady circle,
         0 <= lean < 90.
     circle : float or str, optional
         m, radius of the circle the centre runs on; 0 = spinning in place. A steady circle
-        needs two of ``lean``, ``circle`` and a speed (knife edge only).
+        needs two of ``lean``, ``circle`` and a speed or spin (knife edge only).
     symmetry_tol : float or str, optional
         How far from a body of revolution about the axle the wheel may be: a fraction
         (``0.01``) or a percentage (``"1 %"``), at most 10 %; default 1 %. The two moments
@@ -611,17 +618,18 @@ def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any 
     Raises
     ------
     rbcli.InputError
-        With the message the command line prints (``--speed: ...``, or the body's file
-        for a body that cannot roll).
+        Naming the parameter (``rolling_speed: ...``), or located in the body's file for a
+        body that cannot roll.
 
     Examples
     --------
     >>> import rbcli
     >>> penny = rbcli.load("examples/penny.yaml")
-    >>> r = rbcli.rollcheck(penny, speed="10 cm/s")
+    >>> r = rbcli.rollcheck(penny, rolling_speed="10 cm/s")
     >>> round(r.critical_speed, 6), r.verdict.stable, r.return_code
     (0.176454, False, 1)
     """
-    return run(body, RollcheckOptions.parse(body, axle=axle, through=through, radius=radius,
-                                            tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
-                                            lean=lean, circle=circle, symmetry_tol=symmetry_tol))
+    return run(body, RollcheckOptions.parse(
+        body, shaft=shaft, through=through, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g,
+        rolling_speed=rolling_speed, spin=spin, lean=lean, circle=circle,
+        symmetry_tol=symmetry_tol))

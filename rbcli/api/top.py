@@ -481,7 +481,7 @@ class GyrocompassOptions:
     warnings: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any = None,
+    def parse(cls, body: Body | None = None, *, ratio: Any = None, shaft: Any = None, spin: Any = None,
               latitude: Any = None, earth_rate: Any = None,
               symmetry_tol: Any = None) -> GyrocompassOptions:
         """Read and check the values (see :func:`gyrocompass`)."""
@@ -502,9 +502,9 @@ class GyrocompassOptions:
             u.quantity(earth_rate, "angular_speed", "earth_rate"), "earth_rate")
         if not W > 0.0:
             raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
-        n_axis = op.direction(axis, "axis") if axis is not None else None
+        n_axis = op.direction(shaft, "shaft") if shaft is not None else None
         tol = symmetry_tolerance(symmetry_tol)
-        given = tuple(p for p, v in (("ratio", ratio), ("axis", axis), ("spin", spin),
+        given = tuple(p for p, v in (("ratio", ratio), ("shaft", shaft), ("spin", spin),
                                      ("latitude", latitude), ("earth_rate", earth_rate),
                                      ("symmetry_tol", symmetry_tol)) if v is not None)
         r = None
@@ -515,13 +515,13 @@ class GyrocompassOptions:
             if body is not None:
                 raise ParamError("ratio", "give either {ratio} or a body (BODY or -e), not both")
             if n_axis is not None:
-                raise ParamError("axis", "the axis belongs to a body; with {ratio} there is no body")
+                raise ParamError("shaft", "the spin axis belongs to a body; with {ratio} there is no body")
             return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
                        symmetry_tol=tol, given=given)
         if body is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
         if n_axis is not None:
-            n, src = n_axis, "{axis}"
+            n, src = n_axis, "{shaft}"
         elif body.shaft is not None:
             n, src = body.shaft.axis, "the body's shaft"
         else:
@@ -627,7 +627,7 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
                              asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
 
 
-def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None, spin: Any,
+def gyrocompass(body: Body | None = None, *, ratio: Any = None, shaft: Any = None, spin: Any,
                 latitude: Any, earth_rate: Any = None, symmetry_tol: Any = None) -> GyrocompassResult:
     """A gyrocompass: the period of its swing about north and where it settles.
 
@@ -642,9 +642,9 @@ def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None
         ``ratio`` instead.
     ratio : float or str, optional
         C/A, the axial moment over the moment about the vertical (a flat disk: 2).
-    axis : str or sequence of 3, optional
-        The rotor's spin axis in the body frame (``"x"``, ``[0, 0, 1]``). Default: the
-        body's shaft axis, else z.
+    shaft : str or sequence of 3, optional
+        The rotor's spin axis in the body frame (``"x"``, ``[0, 0, 1]``; the command line's
+        ``--axis``). Default: the body's shaft axis, else z.
     spin : float or str
         The rotor's spin: rad/s or ``"6000 rpm"``; negative the other way. Not 0.
     latitude : float or str
@@ -673,6 +673,6 @@ def gyrocompass(body: Body | None = None, *, ratio: Any = None, axis: Any = None
     >>> round(rbcli.gyrocompass(ratio=2, spin="6000 rpm", latitude=30).swing.period, 3)
     22.304
     """
-    return run_gyrocompass(body, GyrocompassOptions.parse(body, ratio=ratio, axis=axis, spin=spin,
+    return run_gyrocompass(body, GyrocompassOptions.parse(body, ratio=ratio, shaft=shaft, spin=spin,
                                                           latitude=latitude, earth_rate=earth_rate,
                                                           symmetry_tol=symmetry_tol))

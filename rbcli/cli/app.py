@@ -369,6 +369,7 @@ def _install_completion(ctx: typer.Context, value: str | None) -> None:
 
 @app.callback()
 def root(
+    ctx: typer.Context,
     version: bool = typer.Option(
         False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
     ),
@@ -388,3 +389,6 @@ def root(
     ),
 ) -> None:
     STATE["debug"] = debug
+    from rbcli.errors import COMMAND
+
+    COMMAND.set(ctx.invoked_subcommand)  # messages name parameters by this command's options

@@ -58,14 +58,13 @@ def rollcheck(
 ) -> None:
     from rbcli.api.rollcheck import RollcheckOptions, run
     from rbcli.render import rollcheck as rr
-    from rbcli.render.units import DisplayUnits
+    from rbcli.render.units import echo_rows
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
     b = c.load_one(body, expr, e)
-    opts = RollcheckOptions.parse(b, axle=axle, through=through, radius=radius,
-                                  tyre_radius=tyre_radius, g=g, speed=speed, spin=spin,
+    # the API's names for the command line's --axle, --radius and --speed (one name per idea)
+    opts = RollcheckOptions.parse(b, shaft=axle, through=through, rim_radius=radius,
+                                  tyre_radius=tyre_radius, g=g, rolling_speed=speed, spin=spin,
                                   lean=lean, circle=circle, symmetry_tol=symmetry_tol)
     plot_path = c.check_plot(plot, b) if plot is not None else None
     res = run(b, opts)
@@ -77,7 +76,8 @@ def rollcheck(
         if plot_path is not None:
             doc.note(f"plot written to {plot_path}")
 
-    c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables, given=opts.echo)
+    c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables,
+           given=echo_rows(opts, b, rr.OPTIONS))
     for w in res.warnings:  # after the output: a result that cannot be printed says only that
         e.warn(f"rbcli: {res.source}: warning: {c.said(w)}")
     c.finish(res.return_code)

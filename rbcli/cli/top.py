@@ -153,7 +153,7 @@ def gyrocompass(
 
     e, out, du = c.start(json_, fmt, units)
     b = c.load_one(body, expr, e) if body is not None or expr is not None else None
-    opts = api.GyrocompassOptions.parse(b, ratio=ratio, axis=axis, spin=spin, latitude=latitude,
+    opts = api.GyrocompassOptions.parse(b, ratio=ratio, shaft=axis, spin=spin, latitude=latitude,
                                         earth_rate=earth_rate, symmetry_tol=symmetry_tol)
     r = api.run_gyrocompass(b, opts)
     _warn(e, r)

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.render.fmt import num
+from rbcli.render.fmt import num, said
 from rbcli.render.units import DisplayUnits
 from rbcli.render.text import Doc
 from rbcli.render.top import asymmetry_note
@@ -20,6 +20,13 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.rolling import Curves
 
 from rbcli.render.units import RPM  # noqa: E402
+
+#: the "options" table of ``rollcheck`` (:func:`rbcli.render.units.echo_rows`)
+OPTIONS = (("shaft", "shaft_as_given", "direction"), ("through", "through_as_given", "point"),
+           ("rim_radius", "radius", "length"), ("tyre_radius", "tyre_radius", "length"),
+           ("g", "g", "acceleration"), ("rolling_speed", "speed", "speed"),
+           ("spin", "spin", "angular_speed"), ("lean", "lean", "angle"),
+           ("circle", "circle", "length"))
 
 
 # ----------------------------------------------------------------------------- tables
@@ -55,8 +62,8 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
     if st.band is not None:
         rows[2:2] = [("band width (along the axle)", du.show(st.band[0] + st.band[1], "length", digits), L)]
     doc.kv("wheel", rows)
-    doc.note(f"rim radius from {o.radius_source}{_tyre_source(res)}; axle along "
-             f"[{', '.join(num(x, digits) for x in w.axle)}] ({o.axle_source}).")
+    doc.note(f"rim radius from {said(o.radius_source)}{_tyre_source(res)}; axle along "
+             f"[{', '.join(num(x, digits) for x in w.axle)}] ({said(o.axle_source)}).")
     if res.asymmetry is not None:
         asymmetry_note(doc, res.asymmetry, o.symmetry_tol, res.asymmetry_effect, du, digits, "wheel", "I")
     doc.note("model: " + res.model + ".")
@@ -139,8 +146,8 @@ def _speed_text(v: float, du: DisplayUnits, digits: int) -> str:
 
 def _tyre_source(res: RollcheckResult) -> str:
     o, st = res.options, res.straight
-    if o.tyre_radius_kind == "--tyre-radius":
-        return "; tyre radius from --tyre-radius"
+    if o.tyre_radius_kind == "tyre_radius":  # given (a Note: "{tyre_radius}")
+        return f"; tyre radius from {said(o.tyre_radius_kind)}"
     if o.rim is None:
         return ""
     parts = ", ".join(f"'{n}' ({s})" for n, s in o.rim.parts)

@@ -39,7 +39,7 @@ PATHS = {
 TOP_OPTIONS = (("pivot", "pivot_as_given", "point"), ("spin", "spin", "angular_speed"),
                ("theta", "theta", "angle"), ("theta_dot", "theta_dot", "angular_speed"),
                ("phi_dot", "phi_dot", "angular_speed"), ("g", "g", "acceleration"))
-GYRO_OPTIONS = (("ratio", "ratio", "=C/A"), ("axis", "axis_as_given", "direction"),
+GYRO_OPTIONS = (("ratio", "ratio", "=C/A"), ("shaft", "axis_as_given", "direction"),
                 ("spin", "spin", "angular_speed"), ("latitude", "latitude", "angle"),
                 ("earth_rate", "earth_rate", "angular_speed"))
 
