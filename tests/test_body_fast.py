@@ -217,11 +217,11 @@ def test_the_batch_size_does_not_change_a_number(monkeypatch, batch):
     makes the same BLAS call for each matrix of a stack). One at a time takes the paths for
     a batch of one kind (placing._units of diagonal inertias only, rotation.from_specs of
     one kind or of none); all at once the mixed ones."""
-    import rbcli.io.body as io_body
+    import rbcli.io.parts as io_parts
 
     text = _body_text(200)
     whole = load_text(text, "<bench>", ROOT)
-    monkeypatch.setattr(io_body, "BATCH", batch)
+    monkeypatch.setattr(io_parts, "BATCH", batch)
     small = load_text(text, "<bench>", ROOT)
     for a, b in zip(whole.parts, small.parts, strict=True):
         assert a.name == b.name and a.mass == b.mass

@@ -614,20 +614,20 @@ def test_angular_speed_base_unit():
 
 
 def test_exact_rationals_match_fraction():
-    """io.units' _Q and _decimal give Fraction's values (so every factor rounds the same)."""
+    """io.unittable's Rational and exact_decimal give Fraction's values (so every factor rounds the same)."""
     from fractions import Fraction
 
     from hypothesis import given, settings
     from hypothesis import strategies as st
 
-    from rbcli.io import units as un
+    from rbcli.io import unittable as un
 
     @settings(max_examples=500, deadline=None)
     @given(st.integers(-10**30, 10**30), st.integers(1, 10**30), st.integers(-10**6, 10**6),
            st.integers(1, 10**6), st.integers(-5, 5))
     def check(a, b, c, d, n):
-        q, f = un._Q(a, b), Fraction(a, b)
-        r, g = un._Q(c, d), Fraction(c, d)
+        q, f = un.Rational(a, b), Fraction(a, b)
+        r, g = un.Rational(c, d), Fraction(c, d)
         for x, y in ((q, f), (q * r, f * g), (q * 7, f * 7), (q / 3, f / 3)):
             assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
             assert float(x) == float(y)
@@ -642,7 +642,7 @@ def test_exact_rationals_match_fraction():
     @given(st.from_regex(r"[+-]?(?:[0-9]{1,30}\.?[0-9]{0,30}|\.[0-9]{1,30})(?:[eE][+-]?[0-9]{1,3})?",
                          fullmatch=True))
     def decimal(text):
-        x, y = un._decimal(text), Fraction(text)
+        x, y = un.exact_decimal(text), Fraction(text)
         assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
 
     decimal()
@@ -650,15 +650,16 @@ def test_exact_rationals_match_fraction():
 
 def test_bare_table_names_take_the_short_paths_with_the_same_result():
     """A unit text that is one name of the table skips the parser and the name regex."""
-    from rbcli.io import units as un
+    from rbcli.io import unitparse as up
+    from rbcli.io import unittable as ut
 
-    for name, unit in un._BY_NAME.items():
+    for name, unit in ut.BY_NAME.items():
         if "/" in name:
             continue
-        fast = un._parse_unit_exact(name)
-        slow = un._UnitParser(name, name).parse()
+        fast = up.parse_unit_exact(name)
+        slow = up._UnitParser(name, name).parse()
         assert fast == slow
-        assert un._NAME_RE.fullmatch(name)  # what _is_name assumes of every such name
+        assert ut.NAME_RE.fullmatch(name)  # what _is_name assumes of every such name
 
 
 def test_plain_decimals_are_numbers_for_both_patterns():
@@ -670,13 +671,14 @@ def test_plain_decimals_are_numbers_for_both_patterns():
     from hypothesis import strategies as st
 
     from rbcli.api import options
+    from rbcli.io import unitparse as up
     from rbcli.io import units as un
 
     @settings(max_examples=3000, deadline=None)
     @given(st.text("0123456789.+-eE \u2212\u0663\u00b2x", max_size=8))
     def check(s):
         if un.plain_decimal(s):
-            assert re.fullmatch(un._NUMBER_RE.pattern, s) and options.NUMBER.fullmatch(s)
+            assert re.fullmatch(up._NUMBER_RE.pattern, s) and options.NUMBER.fullmatch(s)
             assert un.parse_quantity(s) == (float(s), un.Dim())
 
     check()

@@ -48,6 +48,11 @@ class Pending:
     dims: tuple
 
 
+def place(part_com, part_I, at, R):
+    """A part placed one by one (a mesh or given part): ``(at + R com, R J Rᵀ)``."""
+    return at + R @ part_com, R @ part_I @ R.T
+
+
 def dims_of(params: dict) -> tuple:
     """The drawing's description of a primitive part: its parameters (m) as
     :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
