@@ -34,24 +34,24 @@ def _frozen(a, dtype=_FLOAT) -> np.ndarray:
 class Outline:
     """What a drawing of a part needs: its shape, its local dimensions and its placement.
 
-    Built by the body loader beside the part; read by :mod:`rbcli.core.outline`, which turns
-    it into surface triangles and outlines for the body figure. Nothing here is used by
-    any calculation.
+    Built by the body loader beside the part; read by :mod:`rbcli.render.outline`, which
+    turns it into surface triangles and outlines for the body figure when one is drawn.
+    Nothing here is used by any calculation.
 
     Attributes
     ----------
     kind : str — a primitive shape name (SPEC §1), ``"given"`` (drawn as the part's
-        equivalent uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or
-        ``"mesh"``
+        equivalent uniform ellipsoid) or ``"mesh"``
     dims : tuple[tuple[str, object], ...] — the shape's parameters as
         :func:`rbcli.core.shapes.geometry` took them (lengths in m, ``size`` and
         ``semi_axes`` as tuples, ``vertices`` as three 3-tuples, ``shell`` a bool); for a
-        mesh ``(("triangles", n),)``, the file's count. ``dict(outline.dims)`` reads them.
+        mesh ``(("triangles", n),)``, the file's count; for a given part its ``mass`` (kg)
+        and ``inertia`` (kg m², about its com, in the local axes, three 3-tuples).
+        ``dict(outline.dims)`` reads them.
     at : (3,) ndarray — m, the local origin in the body frame
     R : (3, 3) ndarray — the local-to-body rotation (its columns are the local axes)
-    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame, decimated
-        to at most :data:`rbcli.core.outline.MESH_MAX_TRIANGLES` triangles (not the file's
-        mesh: a drawing's copy)
+    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame: the file's
+        mesh (a figure draws a decimated copy)
     faces : (k, 3) int ndarray | None — a mesh's triangles (indices into ``vertices``)
 
     The arrays are read-only.

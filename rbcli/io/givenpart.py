@@ -87,10 +87,10 @@ def pretty_unit(text: str) -> str:
     return text.replace("*", "·").replace("^2", "²").replace("^3", "³")
 
 
-def _given_outline(mass: float, com: np.ndarray, J: np.ndarray):
-    """A given part is drawn as its equivalent uniform ellipsoid, centred on its com."""
-    from rbcli.core.outline import equivalent_ellipsoid
-
-    semi, axes = equivalent_ellipsoid(mass, J)
-    return Outline("given", (("semi_axes", tuple(float(x) for x in semi)),), com, axes)
+def _given_outline(mass: float, com: np.ndarray, J: np.ndarray) -> Outline:
+    """A given part is drawn as its equivalent uniform ellipsoid, centred on its com: the
+    outline keeps its mass and its inertia about the com (body axes), from which the figure
+    makes the ellipsoid when it draws (:mod:`rbcli.render.outline`)."""
+    inertia = tuple(tuple(row) for row in J.tolist())
+    return Outline("given", (("mass", float(mass)), ("inertia", inertia)), com, np.eye(3))
 

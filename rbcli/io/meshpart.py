@@ -91,10 +91,8 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
         if exc.boundary:
             msg += "; allow_open: true accepts small holes, with a warning"
         raise ctx.error(fnode, f"{what}: {shown}: {msg}") from None
-    from rbcli.core.outline import decimate
-
-    # for drawings: a small copy (at most MESH_MAX_TRIANGLES), not the file's mesh
-    outline = Outline("mesh", (("triangles", len(faces)),), at, R, *decimate(vertices, faces))
+    # for drawings: the file's mesh (a figure decimates it when it draws: rbcli.render.outline)
+    outline = Outline("mesh", (("triangles", len(faces)),), at, R, vertices, faces)
     del vertices, faces
     for w in props.warnings:
         ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {shown}: {w}")

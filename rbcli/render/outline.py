@@ -22,7 +22,9 @@ Circles are sampled with :data:`SEGMENTS` points; every vertex lies on the exact
 so outlines are inscribed polygons (the shape's boundary to within ``R (1 − cos(π/n))``).
 Meshes are drawn from a decimated copy (:func:`decimate`: vertex clustering, Rossignac &
 Borrel, "Multi-resolution 3D approximations for rendering complex scenes", 1993) of at
-most :data:`MESH_MAX_TRIANGLES` triangles.
+most :data:`MESH_MAX_TRIANGLES` triangles, made here when a figure is drawn (the body
+keeps its file's mesh); a part given by its mass properties is drawn as its equivalent
+uniform ellipsoid (:func:`equivalent_ellipsoid`), also made here.
 """
 
 from __future__ import annotations
@@ -224,8 +226,9 @@ def local_sketch(kind: str, dims: dict, vertices=None, faces=None, n: int = SEGM
 
     Parameters
     ----------
-    kind : str — a primitive shape name, ``"given"`` (an ellipsoid of ``semi_axes`` with
-        its centre marked) or ``"mesh"``
+    kind : str — a primitive shape name, ``"given"`` (the equivalent uniform ellipsoid of
+        ``mass`` (kg) and ``inertia`` (kg m², about the com, 3×3, local axes), with its centre
+        marked) or ``"mesh"``
     dims : dict — the shape's parameters in m, as :func:`rbcli.core.shapes.geometry` takes
         them
     vertices, faces : arrays — a mesh's (m; indices), for ``kind == "mesh"``
@@ -291,8 +294,9 @@ def _local(kind: str, dims: dict, vertices, faces, n: int) -> Sketch:
     if kind == "ellipsoid":
         return _ellipsoid(*(float(x) for x in d["semi_axes"]), n)
     if kind == "given":
-        s = _ellipsoid(*(float(x) for x in d["semi_axes"]), n)
-        return _make(s.vertices, s.faces, points=[(0.0, 0.0, 0.0)])
+        semi, axes = equivalent_ellipsoid(d["mass"], d["inertia"])
+        s = _ellipsoid(*(float(x) for x in semi), n)
+        return _make(s.vertices @ axes.T, s.faces, points=[(0.0, 0.0, 0.0)])
     if kind == "torus":
         R, r = float(d["major_radius"]), float(d["minor_radius"])
         prof = _arc(r, 0.0, 2.0 * math.pi, n // 3, cr=R)[:-1]
@@ -304,10 +308,13 @@ def _local(kind: str, dims: dict, vertices, faces, n: int) -> Sketch:
 
 def sketch(outline, n: int = SEGMENTS, max_triangles: int | None = None) -> Sketch:
     """The sketch of a part's :class:`rbcli.model.Outline`, in the body frame (m), with
-    ``n`` points around a full circle; a mesh decimated to ``max_triangles`` if given."""
+    ``n`` points around a full circle; a mesh decimated to :data:`MESH_MAX_TRIANGLES`, then
+    to ``max_triangles`` if given and fewer."""
     V, F = outline.vertices, outline.faces
-    if outline.kind == "mesh" and max_triangles is not None and len(F) > max_triangles:
-        V, F = decimate(V, F, max_triangles)
+    if outline.kind == "mesh":
+        V, F = decimate(V, F)  # the drawing's copy (its unused vertices dropped)
+        if max_triangles is not None and len(F) > max_triangles:
+            V, F = decimate(V, F, max_triangles)
     s = local_sketch(outline.kind, dict(outline.dims), V, F, n)
     if outline.kind == "mesh" and len(F) < int(dict(outline.dims).get("triangles", len(F))):
         s = replace(s, rough=True)
