@@ -12,7 +12,6 @@ import numpy as np
 
 from rbcli.errors import Location
 
-
 _FLOAT = np.dtype(float)
 
 
@@ -74,24 +73,6 @@ class Outline:
             object.__setattr__(self, "vertices", _frozen(self.vertices))
             object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
 
-    @staticmethod
-    def of_frozen(kind: str, dims: tuple, at: np.ndarray, R: np.ndarray,
-                  vertices: np.ndarray | None = None, faces: np.ndarray | None = None) -> Outline:
-        """``Outline(kind, dims, at, R, vertices, faces)`` for arrays that the constructor
-        would keep as they are (read-only views of read-only arrays that own their data: the
-        body loader's rows, one outline a part; a mesh outline's own arrays), without
-        checking them again (made as :func:`_twin` says)."""
-        o = _OutlineFields()
-        o.kind = kind
-        o.dims = dims
-        o.at = at
-        o.R = R
-        o.vertices = vertices
-        o.faces = faces
-        o.__class__ = Outline
-        return o
-
-
 
 @dataclass(frozen=True, slots=True)
 class Part:
@@ -133,41 +114,6 @@ class Part:
     def signed_mass(self) -> float:
         """kg, negative for a subtracted part."""
         return -self.mass if self.subtract else self.mass
-
-    @staticmethod
-    def positional(name, shape, mass, subtract, com, inertia_com, measure, measure_kind,
-                   radius, axis, extra, where, outline) -> Part:
-        """``Part(...)`` with every field given in order, made as :func:`_twin` says (the
-        body loader makes one a part: 100 000 in a large body)."""
-        o = _PartFields()
-        o.name = name
-        o.shape = shape
-        o.mass = mass
-        o.subtract = subtract
-        o.com = com
-        o.inertia_com = inertia_com
-        o.measure = measure
-        o.measure_kind = measure_kind
-        o.radius = radius
-        o.axis = axis
-        o.extra = extra
-        o.where = where
-        o.outline = outline
-        o.__class__ = Part
-        return o
-
-
-def _twin(cls: type) -> type:
-    """A plain class with the slots of the frozen dataclass ``cls``, to make its many
-    instances quickly: an object of the twin, its fields assigned (~20 ns each), then given
-    ``cls`` as its class (the same slots: Python allows it), is the object ``cls(...)``
-    makes, whose frozen ``__init__`` sets each field with ``object.__setattr__`` (~150 ns
-    each). tests/test_body_fast.py compares the two."""
-    return type(f"_{cls.__name__}Fields", (), {"__slots__": cls.__slots__})
-
-
-_PartFields = _twin(Part)
-_OutlineFields = _twin(Outline)
 
 
 @dataclass(frozen=True)

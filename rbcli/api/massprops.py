@@ -134,10 +134,7 @@ def _with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
     large body) converted here in one pass: numbers are checked finite and -0.0 written
     0.0, as jsonable does. Anything else, or a number that is not finite, goes through
     jsonable itself (its error names the row)."""
-    from rbcli.io.body import gc_paused
-
-    with gc_paused():  # ~2 objects a part, no cycles: the collector would rescan the body
-        return _rows_json(out, parts)
+    return _rows_json(out, parts)
 
 
 def _rows_json(out: dict, parts: tuple[dict, ...]) -> dict:
@@ -365,10 +362,7 @@ def run_inertia(body: Any, options: InertiaOptions) -> InertiaResult:
     except ci.InputOverflow as exc:
         raise ParamError(options.reference.param if exc.param == "reference" else exc.param,
                          str(exc)) from None
-    from rbcli.io.body import gc_paused
-
-    with gc_paused():
-        rows = part_rows(body)
+    rows = part_rows(body)
     return InertiaResult(
         name=body.name, mass=res.mass, com=res.com, reference=res.reference,
         reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,
@@ -518,10 +512,7 @@ def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
     point, J = _inertia_at(mp, options.reference)
     pr = principal_report(mp.mass, J, point)
     pa = pr.axes_info
-    from rbcli.io.body import gc_paused
-
-    with gc_paused():
-        rows = part_rows(body)
+    rows = part_rows(body)
     return PrincipalResult(
         name=body.name, mass=pr.mass, reference=pr.reference,
         reference_label=options.reference.label, moments=pa.moments, axes=pa.axes,

@@ -14,7 +14,6 @@ special parts), :mod:`rbcli.io.fields` (numbers, vectors, placements, masses) an
 
 from __future__ import annotations
 
-import gc
 import math
 import os
 import stat
@@ -258,30 +257,6 @@ def load_expr(expr: str) -> Body:
     return load_text(expr, "<expr>", Path.cwd(), name_default="expr")
 
 
-class gc_paused:  # noqa: N801 - used as a function: ``with gc_paused():``
-    """The cyclic garbage collector off while a body is built (issue 16), or while a
-    command makes one small object a part (its JSON rows).
-
-    Loading allocates a tree of ~20 objects a part that stays alive until the end, and the
-    collector kept re-scanning it: 25-35 % of the CPU time of a 10 000-part body. The loader
-    makes next to no reference cycles; whatever it makes is collected after. The tree is
-    freed (by reference counting) inside the pause, so that the first collection after it
-    scans only the body (~4 objects a part), not the tree too.
-
-    A class, not a ``contextmanager`` generator: entered three times a file in a batch.
-    """
-
-    __slots__ = ("_was",)
-
-    def __enter__(self) -> None:
-        self._was = gc.isenabled()
-        gc.disable()
-
-    def __exit__(self, *exc: object) -> None:
-        if self._was:
-            gc.enable()
-
-
 def load_text(
     data: bytes | str,
     filename: str,
@@ -301,13 +276,10 @@ def load_text(
         text = data.decode("utf-8", errors="replace")
     else:
         text = data
-    with gc_paused():
-        loaded = _load(data, filename, base_dir, stack, units)
-        inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
-        body = _body_defaults(loaded, name_default, filename, text, inputs)
-        # the YAML tree goes before the collector runs again: it would scan it once more;
-        # the included files' results too (session -> parsed -> their ctx -> session is a
-        # reference cycle, which only the collector would free, scanning all of it)
-        loaded.ctx.session.parsed.clear()
-        del loaded
+    loaded = _load(data, filename, base_dir, stack, units)
+    inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
+    body = _body_defaults(loaded, name_default, filename, text, inputs)
+    # the included files' results are freed now (session -> parsed -> their ctx -> session
+    # is a reference cycle, which only the collector would free, scanning all of it)
+    loaded.ctx.session.parsed.clear()
     return body

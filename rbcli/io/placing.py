@@ -138,17 +138,14 @@ def finish(items: list, start: int = 0) -> list:
     dims = [p.dims for p in pending]
     coms, Js, axes, ats, Rs = _placed(pending)
     del pending  # each one goes when its Part replaces it (the peak memory of a large body)
-    outline = Outline.of_frozen  # read-only rows of read-only arrays, as Outline keeps them
-    part = Part.positional
     i = 0
     for k in range(start, len(items)):
         p = items[k]
         if p.__class__ is not Pending:
             continue
-        # Part's fields in order (positional: one part after another in a large body)
-        items[k] = part(
+        items[k] = Part(
             p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
-            p.radius, axes[i], {}, p.where, outline(p.shape, dims[i], ats[i], Rs[i]),
+            p.radius, axes[i], {}, p.where, Outline(p.shape, dims[i], ats[i], Rs[i]),
         )
         i += 1
     return items
@@ -233,18 +230,16 @@ class Stack:
     def parts(self) -> list[Part]:
         """The stacked parts as :class:`Part` s (their arrays rows of the stack's)."""
         out = []
-        outline = Outline.of_frozen
-        part = Part.positional
         for name, r, com, J, axis, at, R in zip(self.names, self.rows, self.com, self.inertia,
                                                 self.axis, self.at, self.R):
             if r.__class__ is Pending:
-                o = outline(r.shape, r.dims, at, R)
+                o = Outline(r.shape, r.dims, at, R)
                 extra = {}
             else:
                 o = r.outline
-                o = None if o is None else outline(o.kind, o.dims, at, R, o.vertices, o.faces)
+                o = None if o is None else Outline(o.kind, o.dims, at, R, o.vertices, o.faces)
                 extra = r.extra
-            out.append(part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
+            out.append(Part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
                             r.radius, axis, extra, r.where, o))
         return out
 

@@ -22,7 +22,6 @@ are always strings.
 
 from __future__ import annotations
 
-import gc
 import re
 from dataclasses import FrozenInstanceError
 from typing import NamedTuple
@@ -98,10 +97,11 @@ class Node:
     ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
     ``"bool"``, ``"null"``.
 
-    The loader stores libyaml's own (0-based) start mark of the node's event, which
-    the event already carries, and ``.mark`` turns it into a :class:`Mark` when first
-    read: most marks are never read (they locate errors), and making two million of
-    them up front was a tenth of the load time of a 100 000-part body.
+    The loader stores the node's 0-based start as one integer, ``line << 32 | column``
+    (not an object the cyclic garbage collector would track: a large body's tree holds
+    millions), and ``.mark`` turns it into a :class:`Mark` when first read: most marks are
+    never read (they locate errors), and making two million of them up front was a tenth
+    of the load time of a 100 000-part body.
     """
 
     __slots__ = ("_mark",)
@@ -113,8 +113,8 @@ class Node:
     def mark(self) -> Mark:
         """Where the node starts (1-based line and column)."""
         m = self._mark
-        if m.__class__ is not Mark:  # libyaml's mark, as the loader keeps it
-            m = _new_tuple(Mark, (m.line + 1, m.column + 1))
+        if m.__class__ is int:  # as the loader keeps it: line << 32 | column, 0-based
+            m = _new_tuple(Mark, ((m >> 32) + 1, (m & 0xFFFFFFFF) + 1))
             _set_mark(self, m)
         return m
 
@@ -588,7 +588,7 @@ def _parse(text: str, filename: str) -> Node | None:
                     key_mark = mark
                     continue
                 node = new_object(scalar_class)
-                set_mark(node, start)  # made a Mark when read (Node.mark)
+                set_mark(node, start.line << 32 | start.column)  # a Mark when read (Node.mark)
                 if event.style:  # quoted or block: a string
                     set_value(node, raw)
                     set_quoted(node, True)
@@ -653,7 +653,7 @@ def _parse(text: str, filename: str) -> Node | None:
                     new_items = []
                     node = new_object(SeqNode)
                     _set_seq_items(node, new_items)
-                set_mark(node, start)
+                set_mark(node, start.line << 32 | start.column)  # (Node.mark)
                 if in_map:
                     items[key] = (key_mark, node)  # type: ignore[index, call-overload]
                     key = None
@@ -713,10 +713,6 @@ def load(text: str | bytes, filename: str) -> Node:
     (recursive in C, and resolving by YAML 1.1) is never used.
     """
     text = _decode(text, filename)
-    # The tree is acyclic; pausing the cyclic garbage collector while it is built
-    # halves the time for large files (it would otherwise rescan every new node).
-    gc_was_enabled = gc.isenabled()
-    gc.disable()
     try:
         root = _parse(text, filename)
     except yaml.MarkedYAMLError as exc:
@@ -735,9 +731,6 @@ def load(text: str | bytes, filename: str) -> Node:
         raise _error(
             f"cannot read the file as YAML: {_one_line(exc)}", filename, Mark(1, 1)
         ) from exc
-    finally:
-        if gc_was_enabled:
-            gc.enable()
     if root is None or (isinstance(root, ScalarNode) and not root.quoted and root.raw == ""):
         raise _error(_EMPTY, filename, Mark(1, 1))
     return root
