@@ -2,17 +2,25 @@
 
 A leaf module (stdlib + numpy only) shared by io (which builds it) and core and
 render (which read it). Every vector is in the body frame.
+
+Bodies are values, deeply immutable whatever path built them (the loader, ``Part(...)`` in
+code, ``dataclasses.replace``): every array is read-only (a writable one passed in is
+copied), ``Part.extra`` and ``Body.units`` are read-only mappings of their own, the
+sequences are tuples. One body, one answer.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from types import MappingProxyType
 
 import numpy as np
 
 from rbcli.errors import Location
 
 _FLOAT = np.dtype(float)
+#: the empty read-only mapping (most parts' ``extra``, an SI body's ``units``): one shared object
+EMPTY_MAPPING: MappingProxyType = MappingProxyType({})
 
 
 def _frozen(a, dtype=_FLOAT) -> np.ndarray:
@@ -27,6 +35,25 @@ def _frozen(a, dtype=_FLOAT) -> np.ndarray:
     a = np.array(a, dtype=dtype)  # a private copy
     a.setflags(write=False)
     return a
+
+
+def _freeze_fields(obj: object, names: tuple[str, ...], optional: bool = False) -> None:
+    """Make the array fields ``names`` of the frozen dataclass ``obj`` read-only
+    (:func:`_frozen`); None stays None when ``optional``."""
+    for name in names:
+        a = getattr(obj, name)
+        if a is None and optional:
+            continue
+        f = _frozen(a)
+        if f is not a:
+            object.__setattr__(obj, name, f)
+
+
+def _mapping(m) -> MappingProxyType:
+    """A read-only mapping of its own with the items of ``m`` (EMPTY_MAPPING when empty)."""
+    if m is EMPTY_MAPPING:
+        return m
+    return MappingProxyType(dict(m)) if m else EMPTY_MAPPING
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,10 +117,13 @@ class Part:
     measure_kind : str — "volume", "area", "length", "point" or "given"
     radius : float | None — m, the outer radius of a round part (disk, ring, cylinder, ...)
     axis : (3,) ndarray — the part's local z axis in the body frame
-    extra : dict — shape-specific facts worth reporting (e.g. a mesh's volume and area)
+    extra : Mapping[str, object] — shape-specific facts worth reporting (e.g. a mesh's
+        volume and area), read-only
     where : Location | None — where the part is defined
     outline : Outline | None — the part's shape and placement for drawings (None when the
         loader did not record one: it is then drawn as a dot at its com)
+
+    The arrays are read-only (writable ones passed in are copied).
     """
 
     name: str
@@ -105,10 +135,15 @@ class Part:
     measure: float | None = None
     measure_kind: str = "point"
     radius: float | None = None
-    axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
-    extra: dict = field(default_factory=dict)
+    axis: np.ndarray = field(default_factory=lambda: _frozen(np.array([0.0, 0.0, 1.0])))
+    extra: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
     where: Location | None = None
     outline: Outline | None = None
+
+    def __post_init__(self) -> None:
+        _freeze_fields(self, ("com", "inertia_com", "axis"))
+        if self.extra is not EMPTY_MAPPING:
+            object.__setattr__(self, "extra", _mapping(self.extra))
 
     @property
     def signed_mass(self) -> float:
@@ -118,10 +153,13 @@ class Part:
 
 @dataclass(frozen=True)
 class Shaft:
-    """A shaft line: unit ``axis`` through the point ``through`` (m)."""
+    """A shaft line: unit ``axis`` through the point ``through`` (m); read-only arrays."""
 
     axis: np.ndarray
     through: np.ndarray
+
+    def __post_init__(self) -> None:
+        _freeze_fields(self, ("axis", "through"))
 
 
 @dataclass(frozen=True)
@@ -143,8 +181,8 @@ class Body:
     inputs : tuple[str, ...] — real paths of every file read to build the body: the body
         file, every include at any depth and every mesh file (outputs must avoid them);
         empty for standard input or ``-e`` unless those include files or meshes
-    units : dict[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its bare
-        numbers mean; empty for SI
+    units : Mapping[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its
+        bare numbers mean; empty for SI; read-only
 
     The loader also leaves the body's combined mass properties on it (not a field: a
     ``dataclasses.replace`` with other parts does not carry them); commands read them with
@@ -163,4 +201,12 @@ class Body:
     description: str = ""
     warnings: tuple[str, ...] = ()
     inputs: tuple[str, ...] = ()
-    units: dict = field(default_factory=dict)
+    units: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
+
+    def __post_init__(self) -> None:
+        _freeze_fields(self, ("reference", "pivot"), optional=True)
+        for name in ("parts", "warnings", "inputs"):
+            value = getattr(self, name)
+            if value.__class__ is not tuple:
+                object.__setattr__(self, name, tuple(value))
+        object.__setattr__(self, "units", _mapping(self.units))

@@ -11,8 +11,10 @@ import gc
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import rbcli
+from rbcli.errors import Location
 from rbcli.model import Body, Outline, Part, Shaft
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -79,3 +81,68 @@ def test_part_and_outline_are_plain_frozen_dataclasses():
     assert not hasattr(model, "_twin")
     for cls in (Part, Outline, Body, Shaft):
         assert dataclasses.is_dataclass(cls) and cls.__dataclass_params__.frozen
+
+
+# ----------------------------------------------------------------------------- deeply immutable
+
+
+def test_every_array_of_a_loaded_body_is_read_only(tmp_path):
+    for what, body in _bodies(tmp_path).items():
+        arrays = list(_arrays(body))
+        assert len(arrays) >= 3 * len(body.parts), what  # the walk reaches the parts' arrays
+        assert [a for a in arrays if a.flags.writeable] == [], what
+
+
+def test_changing_a_part_of_a_loaded_body_raises_and_the_answers_stay(tmp_path):
+    b = rbcli.load(ROOT / "examples" / "top.yaml")
+    before = rbcli.inertia(b).to_json()
+    with pytest.raises(ValueError, match="read-only"):
+        b.parts[0].com[2] = 10
+    with pytest.raises(ValueError, match="read-only"):
+        b.parts[0].inertia_com[0, 0] = 10
+    with pytest.raises(ValueError, match="read-only"):
+        b.parts[0].outline.at[0] = 1
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        b.parts[0].mass = 5  # type: ignore[misc]
+    assert rbcli.inertia(b).to_json() == before  # one body, one answer
+
+
+def test_extra_and_units_are_read_only_mappings(tmp_path):
+    b = rbcli.load(_include_tree(tmp_path))
+    mesh = next(p for p in b.parts if p.shape == "mesh")
+    assert mesh.extra["triangles"] == 32
+    with pytest.raises(TypeError):
+        mesh.extra["triangles"] = 1  # type: ignore[index]
+    with pytest.raises(TypeError):
+        b.parts[0].extra["x"] = 1  # type: ignore[index]
+    assert b.units == {"length": "mm"}
+    with pytest.raises(TypeError):
+        b.units["length"] = "km"  # type: ignore[index]
+    # what bare numbers mean stays what the file said
+    assert rbcli.inertia(b, about="1,0,0").to_json() == rbcli.inertia(b, about="1,0,0").to_json()
+
+
+def test_bodies_built_in_code_are_frozen_too():
+    """Part, Outline, Shaft and Body made by hand (or by dataclasses.replace) from writable
+    arrays and dicts keep read-only copies: changing what was passed in changes nothing."""
+    com, J, axis, at = np.array([0.0, 0, 1]), np.eye(3), np.array([0.0, 0, 1]), np.zeros(3)
+    extra = {"volume": 1.0}
+    o = Outline("box", (("size", (1.0, 1.0, 1.0)),), at, np.eye(3))
+    p = Part("p", "box", 1.0, False, com, J, 1.0, "volume", None, axis, extra, Location("f", 1, 1), o)
+    units = {"length": "mm"}
+    body = Body("b", "<code>", "", (p,), reference=np.array([1.0, 2, 3]), pivot=np.zeros(3),
+                shaft=Shaft(np.array([0.0, 0, 1]), np.zeros(3)), units=units)
+    com[2] = 99.0
+    J[0, 0] = 99.0
+    at[0] = 99.0
+    extra["volume"] = 99.0
+    units["length"] = "km"
+    assert p.com[2] == 1.0 and p.inertia_com[0, 0] == 1.0 and o.at[0] == 0.0
+    assert p.extra == {"volume": 1.0} and body.units == {"length": "mm"}
+    assert [a for a in _arrays(body) if a.flags.writeable] == []
+    q = dataclasses.replace(p, com=np.array([1.0, 2.0, 3.0]), extra={"area": 2.0})
+    assert not q.com.flags.writeable
+    with pytest.raises(TypeError):
+        q.extra["area"] = 3.0  # type: ignore[index]
+    with pytest.raises(ValueError, match="read-only"):
+        body.shaft.axis[0] = 1.0
