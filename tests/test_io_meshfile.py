@@ -348,7 +348,8 @@ def test_obj_index_out_of_range_names_the_line(tmp_path):
 def test_obj_malformed_lines(tmp_path):
     path = tmp_path / "bad.obj"
     cases = [
-        ("v 0 0\n", r":1: vertex line needs x y z"),
+        ("v 0 0\nf 1 2 3\n", r":1: vertex line needs x y z"),
+        ("v 0 0\n", r"obj file without faces"),  # no face line: refused before the numbers
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", r":4: face needs at least 3 vertices"),
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", r":4: bad face index 'x'"),
         ("v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n", r":2: 'zero' is not a number"),

@@ -75,8 +75,8 @@ def _units(ctx: Ctx, m: ys.MapNode) -> None:
 def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...],
           units: dict[str, str] | None = None, *, session: Session | None = None,
           stacked: bool = False) -> _Loaded:
-    root = ys.load(data, filename)
     session = session if session is not None else new_session(_load)
+    root = ys.load(data, filename, list_cap=session.list_cap(filename))
     ctx = Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
     spent = session.used
     if units:  # the caller's default units (rbcli.load_text(..., units=...)); the file's win
@@ -211,6 +211,10 @@ def load_body(source: str, *, stdin: object = None) -> Body:
         stream = stdin if stdin is not None else getattr(sys.stdin, "buffer", sys.stdin)
         data = read_stream(stream, ys.max_bytes(), "body file", env="RBCLI_MAX_BODY_BYTES")  # type: ignore[arg-type]
         return load_text(data, "<stdin>", Path.cwd(), name_default="body")
+    if inc.names_a_folder(source):
+        from rbcli.io.reader import ReadError
+
+        raise ReadError(source, "names a folder (it ends with '/'), not a body file")
     path = Path(source)
     data = inc.read_body_file(path)
     return load_text(data, source, path.parent, name_default=path.stem, stack=(_realpath(str(path)),))

@@ -22,6 +22,12 @@ MAX_INCLUDE_DEPTH = 16
 INCLUDE_KEYS = ("name", "shape", "file", *PLACEMENT_KEYS)
 
 
+def names_a_folder(name: str) -> bool:
+    """Whether a file name as written ends with a path separator: it names a folder
+    (``Path`` drops the slash, and would read ``c.yaml/`` as the file ``c.yaml``)."""
+    return name.endswith(("/", os.sep))
+
+
 def read_body_file(path: Path, where: Location | None = None) -> bytes:
     """A body file or an included file: :func:`rbcli.io.reader.read_regular` (a regular
     file only, its size checked before reading)."""
@@ -32,6 +38,9 @@ def read_body_file(path: Path, where: Location | None = None) -> bytes:
 
 def _resolve(ctx: Ctx, node: ys.Node, what: str) -> Path:
     rel = fl.string(ctx, node, what)
+    if names_a_folder(rel):
+        raise ctx.error(node, f"{what}: '{rel}' names a folder (it ends with '/'); include "
+                        "takes a body file")
     path = Path(rel)
     if not path.is_absolute():
         path = ctx.base_dir / path

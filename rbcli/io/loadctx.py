@@ -39,12 +39,19 @@ class Session:
     def spend(self, ctx: Ctx, node: ys.Node | None, n: int) -> None:
         self.used += n
         if self.used > self.max_parts:
-            raise ctx.error(
-                node,
-                f"the body has more than {self.max_parts} parts (counting every use of an "
+            raise ctx.error(node, self.over_message())
+
+    def over_message(self) -> str:
+        return (f"the body has more than {self.max_parts} parts (counting every use of an "
                 f"included file's parts, and each include); set RBCLI_MAX_PARTS to raise the "
-                "limit",
-            )
+                "limit")
+
+    def list_cap(self, filename: str) -> tuple:
+        """:func:`rbcli.io.yamlsafe.load`'s ``list_cap`` for a file read now: its ``parts``
+        list may hold what is left of the budget (each item costs at least one part), so a
+        file far over the cap is refused while its tree is built, at the first part beyond."""
+        return ("parts", self.max_parts - self.used,
+                lambda mark: InputError(self.over_message(), Location(filename, mark.line, mark.col)))
 
 
 def new_session(load: Callable | None = None) -> Session:

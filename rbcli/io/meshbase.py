@@ -3,7 +3,12 @@ helpers that word its messages (a line number, a long token shortened)."""
 
 from __future__ import annotations
 
-__all__ = ["MeshFileError", "read_all", "line_of", "cut"]
+import re
+
+__all__ = ["MeshFileError", "read_all", "line_of", "cut", "odd_number"]
+
+_DECIMAL_CHARS = b"0123456789.+-eE"
+_NON_FINITE = re.compile(rb"[+-]?(?:inf(?:inity)?|nan)", re.IGNORECASE)
 
 
 class MeshFileError(ValueError):
@@ -35,6 +40,19 @@ def read_all(name: str, fh, size: int) -> bytes:
 def line_of(text: bytes, offset: int) -> int:
     """The 1-based line of the byte ``offset`` of ``text``."""
     return text.count(b"\n", 0, offset) + 1
+
+
+def odd_number(token: bytes) -> bool:
+    """Whether a coordinate's text holds a character the formats' numbers do not have.
+
+    STL and OBJ numbers are C's decimal floating-point numbers (a sign, digits with a
+    point, an exponent); ``inf`` and ``nan`` words are let through to the finiteness check,
+    which says what is wrong with them. Python's ``float()`` (and numpy's conversion of
+    bytes, which calls it) also takes ``1_000``, which no STL or OBJ reader does: the line
+    readers ask this before converting. A text of the right characters that is still not
+    a number (``1.2.3``) is left to the conversion, which refuses it.
+    """
+    return bool(token.strip(_DECIMAL_CHARS)) and _NON_FINITE.fullmatch(token) is None
 
 
 def cut(text: str, limit: int = 24) -> str:

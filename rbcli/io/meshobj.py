@@ -3,7 +3,10 @@
 A plain file is read in blocks of whole lines with numpy (:func:`_read_obj_fast`); the
 line-by-line reader (:func:`_read_obj_lines`) says where a file the fast path refuses is
 wrong, and reads the unusual layouts it leaves to it. The numbers are the same bits
-either way, which the tests check.
+either way, which the tests check. Numbers follow the format's grammar (C's decimal
+numbers; indices ``[+-]digits``), not Python's (no ``1_000``). A file without a face line
+is refused before any number is read (a cloud of 10^7 vertices costs a scan of its bytes,
+not its numbers), and so is a face of more than :data:`MAX_FACE_CORNERS` corners.
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ import re
 import numpy as np
 
 from rbcli.io import meshnumbers
-from rbcli.io.meshbase import MeshFileError, cut
+from rbcli.io.meshbase import MeshFileError, cut, odd_number
 from rbcli.io.meshweld import join_ranges, weld_points
 
 _CHUNK = 1 << 21  # the text is parsed in blocks of about 2 MiB (cache-sized: 30 % faster than 16)
@@ -21,15 +24,36 @@ _CHUNK = 1 << 21  # the text is parsed in blocks of about 2 MiB (cache-sized: 30
 _CONTINUATION = re.compile(rb"\\\r?\n")
 _COMMENT = re.compile(rb"#[^\r\n]*")
 _BIG_INDEX = 1 << 62
+#: the most corners a face (polygon) may have: Assimp's AI_MAX_FACE_INDICES (0x7fff, its
+#: mesh.h); a face of more is no CAD face (the audit's had one vertex repeated 10^5 times)
+MAX_FACE_CORNERS = 0x7FFF
+#: a face line: 'f' as the first word of a line (what the line reader reads as one; a line
+#: continued onto the next, or a comment right after the f, counted too)
+_FACE_LINE = re.compile(rb"(?:\A|[\r\n])\s*f(?:[\s#\\]|\Z)")
+_INDEX = re.compile(rb"[+-]?[0-9]+")
 
 
 def read_obj(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """An OBJ file's (distinct vertices, triangles), welded exactly."""
+    if not _has_face_line(text):  # before any number is read
+        raise MeshFileError(name, "obj file without faces (empty mesh)")
     got = _read_obj_fast(text)
     if got is None:  # say where the file is wrong (or read an unusual layout)
         got = _read_obj_lines(name, text)
     points, faces = got
     unique, inverse = weld_points(points + 0.0)
     return unique, inverse[faces]
+
+
+def _has_face_line(text: bytes) -> bool:
+    """Whether a line of ``text`` starts with the word ``f`` (what the line reader reads as
+    a face; a false yes only leaves the refusal to it). The common answers are found by
+    ``bytes`` searches (C's memchr/memmem): a face line at the start of a line, or no ``f``
+    at all; only a file with an ``f`` elsewhere and no plain face line is scanned by
+    :data:`_FACE_LINE`."""
+    if b"\nf " in text or text.startswith(b"f "):
+        return True
+    return b"f" in text and _FACE_LINE.search(text) is not None
 
 
 def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
@@ -114,7 +138,7 @@ def _obj_block(text: bytes, nv0: int) -> tuple[np.ndarray, np.ndarray] | None:
     del tok
     line_end = np.flatnonzero(fa == 10)  # every gathered line ends with a newline
     per_line = np.diff(np.searchsorted(tok_at, line_end), prepend=0)
-    if per_line.min() < 3:
+    if per_line.min() < 3 or per_line.max() > MAX_FACE_CORNERS:
         return None
     if b"/" in ftext:
         slash = np.flatnonzero(fa == 47)
@@ -188,15 +212,17 @@ def _read_obj_lines(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
         elif key == b"f":
             if len(parts) < 4:
                 raise MeshFileError(name, "face needs at least 3 vertices", start)
+            if len(parts) - 1 > MAX_FACE_CORNERS:
+                raise MeshFileError(name, f"a face of {len(parts) - 1} corners; faces have at most "
+                                    f"{MAX_FACE_CORNERS}", start)
             n_now = len(verts)
             idx = []
             for item in parts[1:]:
                 head = item.split(b"/", 1)[0]
-                try:
-                    i = int(head)
-                except ValueError:
+                if not (head.isdigit() or _INDEX.fullmatch(head)):  # not int()'s '1_0'
                     got = cut(item.decode("ascii", "replace"))
-                    raise MeshFileError(name, f"bad face index '{got}'", start) from None
+                    raise MeshFileError(name, f"bad face index '{got}'", start)
+                i = int(head)
                 if i < 0:
                     i += n_now  # relative: -1 is the latest vertex so far
                     if i < 0:
@@ -221,11 +247,15 @@ def _read_obj_lines(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
     if not tris:
         raise MeshFileError(name, "obj file without faces (empty mesh)")
     try:
+        if any(odd_number(t) for row in verts for t in row):
+            raise ValueError  # a Python-only spelling such as 1_000: say where
         points = np.array(verts, dtype=np.float64)
     except ValueError:
         for row, lineno in zip(verts, vert_lines):
             for t in row:
                 try:
+                    if odd_number(t):
+                        raise ValueError
                     float(t)
                 except ValueError:
                     got = cut(t.decode("ascii", "replace"))

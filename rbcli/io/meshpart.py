@@ -11,6 +11,7 @@ from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 from rbcli.io.fields import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtract
+from rbcli.io.includes import names_a_folder
 from rbcli.io.loadctx import Ctx
 from rbcli.io.placing import place
 from rbcli.model import Outline, Part
@@ -119,6 +120,9 @@ def mesh_path(ctx: Ctx, fnode: ys.Node) -> Path:
         raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
     if "\0" in rel:
         raise ctx.error(fnode, "file: a file name cannot contain a NUL character")
+    if names_a_folder(rel):
+        raise ctx.error(fnode, f"file: '{rel}' names a folder (it ends with '/'); a mesh part "
+                        "reads a mesh file (.stl or .obj)")
     path = Path(rel)
     if path.is_absolute():
         return path

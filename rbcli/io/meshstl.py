@@ -15,7 +15,7 @@ import re
 import numpy as np
 
 from rbcli.io import meshnumbers
-from rbcli.io.meshbase import MeshFileError, line_of, read_all
+from rbcli.io.meshbase import MeshFileError, line_of, odd_number, read_all
 from rbcli.io.meshweld import distinct_spans, join_ranges, weld_blocks, weld_points
 
 # One binary STL record: normal (ignored), three vertices, "attribute byte count".
@@ -262,10 +262,14 @@ def _read_stl_ascii(name: str, data: bytes) -> np.ndarray:
     for k in _FACET_COORDS:
         column = tokens[k::21]
         try:
+            if any(map(odd_number, column)):
+                raise ValueError  # a Python-only spelling such as 1_000: say where
             cols.append(np.array(column, dtype=np.float64))
         except ValueError:
             for i, t in enumerate(column):
                 try:
+                    if odd_number(t):
+                        raise ValueError
                     float(t)
                 except ValueError:
                     got = t.decode("ascii", "replace")

@@ -527,7 +527,7 @@ _new_tuple = tuple.__new__
 _new_object = object.__new__
 
 
-def _parse(text: str, filename: str) -> Node | None:
+def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
     """Build the node tree from libyaml's (iterative) event stream in one pass.
 
     Anchors, aliases, tags, nesting deeper than MAX_DEPTH and a second document are
@@ -537,7 +537,7 @@ def _parse(text: str, filename: str) -> Node | None:
     A mapping or sequence node is made (with its still empty dict or list) and put in
     its parent when its start event arrives; its items are added as they come. The
     state of the open collection lives in locals (``items``, ``in_map``, ``key``); the
-    enclosing ones wait on ``stack``.
+    enclosing ones wait on ``stack``. ``cap`` is :func:`load`'s ``list_cap``.
     """
     loader = _LOADER(text)
     get_event = loader.get_event
@@ -567,6 +567,8 @@ def _parse(text: str, filename: str) -> Node | None:
     seq_end = _SEQ_END
     mark_class = Mark
     scalar_class = ScalarNode
+    cap_key, cap_items, cap_error = cap if cap is not None else (None, 0, None)
+    capped: list | None = None  # the root mapping's list under cap_key, once open
     try:
         while True:
             event = get_event()
@@ -623,6 +625,11 @@ def _parse(text: str, filename: str) -> Node | None:
                     items[key] = (key_mark, node)  # type: ignore[index, call-overload]
                     key = None
                 else:
+                    if items is capped and len(items) >= cap_items:
+                        top.clear()  # the tree goes now, not with the traceback
+                        stack.clear()
+                        items = capped = None  # type: ignore[assignment]
+                        raise cap_error(_yaml_mark(start))  # type: ignore[misc]
                     items.append(node)  # type: ignore[union-attr]
             elif kind is map_end or kind is seq_end:
                 items, in_map = stack.pop()
@@ -655,9 +662,16 @@ def _parse(text: str, filename: str) -> Node | None:
                     _set_seq_items(node, new_items)
                 set_mark(node, start.line << 32 | start.column)  # (Node.mark)
                 if in_map:
+                    if key == cap_key and len(stack) == 1 and kind is seq_start:
+                        capped = new_items  # type: ignore[assignment]
                     items[key] = (key_mark, node)  # type: ignore[index, call-overload]
                     key = None
                 else:
+                    if items is capped and len(items) >= cap_items:
+                        top.clear()  # the tree goes now, not with the traceback
+                        stack.clear()
+                        items = capped = None  # type: ignore[assignment]
+                        raise cap_error(_yaml_mark(start))  # type: ignore[misc]
                     items.append(node)  # type: ignore[union-attr]
                 stack.append((items, in_map))
                 items = new_items
@@ -684,7 +698,7 @@ def _parse(text: str, filename: str) -> Node | None:
 # ----------------------------------------------------------------------------- load
 
 
-def load(text: str | bytes, filename: str) -> Node:
+def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> Node:
     """Parse a body file safely.
 
     Parameters
@@ -693,6 +707,12 @@ def load(text: str | bytes, filename: str) -> Node:
         The file's contents (bytes are decoded as UTF-8; a leading BOM is dropped).
     filename : str
         Used only in error locations.
+    list_cap : (key, n, make_error), optional
+        A budget checked while the tree is built: the list under the root mapping's
+        ``key`` holds at most ``n`` items; the start of the next one raises
+        ``make_error(mark)`` (an InputError at its :class:`Mark`) at once, before the rest
+        of the file is read (a body's part cap: a file far over it costs no more than the
+        cap's worth of parsing).
 
     Returns
     -------
@@ -714,7 +734,7 @@ def load(text: str | bytes, filename: str) -> Node:
     """
     text = _decode(text, filename)
     try:
-        root = _parse(text, filename)
+        root = _parse(text, filename, list_cap)
     except yaml.MarkedYAMLError as exc:
         raise _marked_error(exc, filename) from exc
     except ReaderError as exc:
