@@ -62,7 +62,7 @@ def _eval_cpu(make, duration: float, rows: int, runs: int) -> float:
 
 
 def _repr_format(block) -> str:
-    """The rows as rows_text made them before rbcli.render.shortest: one ``%r`` format."""
+    """The rows in one ``%r`` format (the peer rows_text is measured against)."""
     import numpy as np
 
     a = np.asarray(block, dtype=float) + 0.0

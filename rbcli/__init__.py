@@ -10,7 +10,7 @@ The Python API runs the same computations as the commands::
 
 Functions: :func:`load`, :func:`load_text`, :func:`inertia`, :func:`principal`,
 :func:`balance`, :func:`field_balance`, :func:`precess`, :func:`top`,
-:func:`gyrocompass`, :func:`rollcheck`, :func:`report`. Keyword arguments take SI numbers
+:func:`gyrocompass`, :func:`rollcheck`, :func:`whirl`, :func:`report`. Keyword arguments take SI numbers
 or quantity strings (``"30 cm"``, ``"3000 rpm"``) read exactly as the command line reads
 them. Bad input raises :class:`InputError` (``.message``, ``.where``, ``.param``) with
 the message the command line prints. ``import rbcli`` is cheap: each function loads its
@@ -30,12 +30,15 @@ _API = {
     "inertia": "rbcli.api.massprops",
     "principal": "rbcli.api.massprops",
     "balance": "rbcli.api.balance",
-    "field_balance": "rbcli.api.balance",
+    "field_balance": "rbcli.api.fieldbalance",
     "precess": "rbcli.api.precess",
     "top": "rbcli.api.top",
     "gyrocompass": "rbcli.api.top",
     "rollcheck": "rbcli.api.rollcheck",
+    "whirl": "rbcli.api.whirl",
     "report": "rbcli.api.report",
+    "report_text": "rbcli.documents",
+    "write_report": "rbcli.documents",
     "Body": "rbcli.model",
     "InputError": "rbcli.errors",
     "ParamError": "rbcli.errors",

@@ -120,6 +120,19 @@ def spelled(text: str, name: Callable[[str], str]) -> str:
     return text.spelled(name) if isinstance(text, Note) else text
 
 
+def spelled_data(data: object, name: Callable[[str], str]) -> object:
+    """JSON data (a result's ``to_json()``) with every :class:`Note` in it spelled by ``name``:
+    ``spelled_data(r.to_json(), option_name)`` is what the command's ``--json`` prints. The
+    rows under ``parts`` are passed over (no text of rbcli's in them)."""
+    if isinstance(data, dict):
+        return {k: v if k == "parts" else spelled_data(v, name) for k, v in data.items()}
+    if isinstance(data, list):
+        return [spelled_data(v, name) for v in data]
+    if isinstance(data, Note):
+        return data.spelled(name)
+    return data
+
+
 class RbcliError(Exception):
     """Base of every error rbcli reports to the user.
 
@@ -200,7 +213,7 @@ BODY_DEFAULTS: dict[str, str] = {
 #: maps a parameter to what the user typed on the command line
 OPTIONS: dict[str, str] = {
     "expr": "-e/--expr",
-    "output": "-o/--output",
+    "output": "-o",
     **BODY_DEFAULTS,
 }
 

@@ -117,3 +117,11 @@ def cli():
 def cli_proc():
     """Run rbcli as a process: ``cli_proc(*args, input=None, env=None, cwd=None, timeout=120)``."""
     return run_process
+
+
+def as_cli(data):
+    """A result's ``to_json()`` as the command's ``--json`` prints it: its remarks and warnings
+    name options (``--radius``) where the API names parameters (``radius``)."""
+    from rbcli.errors import option_name, spelled_data
+
+    return spelled_data(data, option_name)

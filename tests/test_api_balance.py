@@ -17,7 +17,7 @@ import rbcli
 from rbcli.errors import option_name
 from rbcli.errors import InputError, NonFiniteResult, ParamError
 
-from conftest import EXAMPLES
+from conftest import as_cli, EXAMPLES
 
 BODIES = sorted(p.name for p in EXAMPLES.glob("*.yaml"))
 
@@ -80,7 +80,7 @@ def _without_file(d: dict) -> dict:
 def test_every_example_with_default_options(cli, name):
     r = cli("balance", f"examples/{name}", "--json")
     res = rbcli.balance(rbcli.load(EXAMPLES / name))
-    assert res.to_json() == _without_file(r.json())
+    assert as_cli(res.to_json()) == _without_file(r.json())
     assert res.return_code == r.code == 0
 
 
@@ -88,7 +88,7 @@ def test_every_example_with_default_options(cli, name):
 def test_documented_option_sets(cli, name, args, kwargs):
     r = cli("balance", f"examples/{name}", *args, "--json")
     res = rbcli.balance(rbcli.load(EXAMPLES / name), **kwargs)
-    assert res.to_json() == _without_file(r.json())
+    assert as_cli(res.to_json()) == _without_file(r.json())
     assert res.return_code == r.code
     # the warnings the command prints are the result's, in order
     assert [ln.removeprefix("rbcli: warning: ") for ln in r.err.splitlines()] == list(res.warnings)
@@ -98,7 +98,7 @@ def test_documented_option_sets(cli, name, args, kwargs):
 def test_field_balance_documented(cli, args, kwargs):
     r = cli("field-balance", *args, "--json")
     assert r.code == 0, r.err
-    assert rbcli.field_balance(**kwargs).to_json() == r.json()
+    assert as_cli(rbcli.field_balance(**kwargs).to_json()) == r.json()
 
 
 def test_typed_fields_and_frozen():
@@ -109,9 +109,11 @@ def test_typed_fields_and_frozen():
     a, b = r.corrections
     assert a.mass == pytest.approx(8.5e-3, rel=1e-6) and a.angle_deg == pytest.approx(208.072, abs=1e-3)
     assert b.mass == pytest.approx(12.2577e-3, rel=1e-5) and b.angle_deg == pytest.approx(258.232, abs=1e-3)
-    assert r.speed == pytest.approx(3000 * math.pi / 30) and r.bearings == (0.0, 0.4)
-    assert r.iso is not None and not r.iso.passed and r.return_code == 1
-    assert r.shaft_source == "the body's shaft" and r.radius_source == "--radius"
+    assert r.speed == pytest.approx(3000 * math.pi / 30) and r.bearing_positions == (0.0, 0.4)
+    assert [b.plane for b in r.bearings] == [0.0, 0.4]  # the JSON's "bearings"
+    assert r.iso_check is not None and not r.iso_check.passed and r.return_code == 1
+    assert r.iso["pass"] is False and r.iso.grade == 6.3  # the JSON's "iso" ("pass" is a keyword)
+    assert r.shaft_source == "the body's shaft" and r.radius_source == "radius"
     assert isinstance(r.warnings, tuple)
     assert [x.plane for x in r.added] == ["A", "B"] and r.corrected is not None
     assert r.corrected.static_unbalance < 1e-12

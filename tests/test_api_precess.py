@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import rbcli
+from conftest import as_cli
 from rbcli.errors import option_name
 from rbcli.api.precess import PrecessOptions, PrecessResult
 
@@ -36,7 +37,7 @@ def test_to_json_is_the_cli_json(cli, name, omega):
         return
     assert r.code == 0, r.err
     res = rbcli.precess(body, omega=omega)
-    assert res.to_json() == _without_file(r.json())
+    assert as_cli(res.to_json()) == _without_file(r.json())
     assert list(r.json())[list(r.json()).index("name") + 1] == "file"  # where the CLI puts it
 
 
@@ -47,7 +48,7 @@ def test_to_json_with_at_and_verify_is_the_cli_json(cli, name):
     r = cli("precess", path, *args, "--json")
     assert r.code == 0, r.err
     res = rbcli.precess(rbcli.load(ROOT / path), omega="0.3,1,0.2", at="2.5 min", verify=True)
-    assert res.to_json() == _without_file(r.json())
+    assert as_cli(res.to_json()) == _without_file(r.json())
     assert res.return_code == 0 and res.check is not None and res.check.ok
 
 
@@ -56,9 +57,13 @@ def test_typed_fields_and_sampling():
     res = rbcli.precess(body, omega=[0.01, 1, 0.01], at=1e9, duration=60.0, samples=7)
     assert isinstance(res, PrecessResult)
     assert res.options == PrecessOptions(omega=(0.01, 1.0, 0.01), at=1e9, duration=60.0, samples=7,
-                                         echo=res.options.echo)
+                                         given=("omega", "at", "duration", "samples"))
     # what the table echoes: the values as understood, angular speeds also in rpm
-    assert res.options.echo[0] == ("--omega", "0.01, 1, 0.01 (0.095493, 9.5493, 0.095493 rpm)", "rad/s")
+    from rbcli.render.precess import OPTIONS
+    from rbcli.render.units import echo_rows
+
+    assert echo_rows(res.options, body, OPTIONS)[0] == (
+        "--omega", "0.01, 1, 0.01 (0.095493, 9.5493, 0.095493 rpm)", "rad/s")
     m = res.motion
     assert m.case == "circulates_max" and m.flip_interval == pytest.approx(19.5529, rel=1e-5)
     assert isinstance(m.period, float)

@@ -29,7 +29,7 @@ def test_the_readme_python_example_runs_and_prints_what_its_comments_say():
     assert lines[0] == "1"  # the rotor as given fails G6.3 (README balance section)
     assert abs(float(lines[2]) - 1 / 12) < 1e-15  # m a^2 / 12, to a few ulps of round-off
     assert abs(float(lines[4]) - 0.142133) < 5e-7  # the sheet's T1 nutation period, 6 figures
-    assert lines[-1].startswith("--about: expected 3") and lines[-1].endswith(" about")
+    assert lines[-1].startswith("about: expected 3") and lines[-1].endswith(" about")
 
 
 def test_import_rbcli_is_cheap():

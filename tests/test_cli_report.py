@@ -39,8 +39,8 @@ EX = ROOT / "examples"
 SNAP = Path(__file__).resolve().parent / "snapshots"
 EXAMPLES = sorted(EX.glob("*.yaml"))
 EPOCH = "1700000000"  # 2023-11-14 22:13:20 UTC
-SECTIONS = ("parts", "mass-properties", "principal-axes", "balance", "free-precession", "heavy-top",
-            "rolling-stability", "input-file")
+SECTIONS = ("parts", "mass-properties", "principal-axes", "balance", "whirl", "free-precession",
+            "heavy-top", "rolling-stability", "input-file")
 CHROMIUM = shutil.which("chromium") or ("/usr/bin/chromium" if Path("/usr/bin/chromium").exists() else None)
 
 
@@ -308,9 +308,9 @@ def test_a_section_that_cannot_be_computed_says_why(capsys, tmp_path):
     # an arithmetic error in the physics (a critical spin that underflows to 0)
     (["examples/penny.yaml", "--rim-radius", "1e300", "--speed", "1 m/s"],
      "rolling-stability", "rolling stability: not computed: a value is too large or too small"),
-    # a table cell that overflows to inf is refused, as rbcli rollcheck refuses it
+    # a result that overflows to inf is refused, as rbcli rollcheck --json refuses it
     (["examples/penny.yaml", "--speed", "1e300 m/s"],
-     "rolling-stability", "rolling stability: not computed: 'lean oscillation frequency"),
+     "rolling-stability", "rolling stability: not computed: the result 'lean_frequency' is not a finite"),
 ])
 def test_a_section_whose_numbers_overflow_says_why(capsys, tmp_path, args, key, needle):
     out, err = report(capsys, tmp_path, *args)  # written, exit 0: a section not there checks nothing
@@ -542,3 +542,30 @@ def test_html_renders_in_a_real_browser(capsys, tmp_path):
     data = pdf.read_bytes()
     assert data.startswith(b"%PDF")
     assert len(re.findall(rb"/Type\s*/Page[^s]", data)) >= 3
+
+
+# ----------------------------------------------------------------------------- whirl
+
+
+def test_whirl_section_with_a_stiffness_has_the_commands_critical_speeds(capsys, tmp_path, cli):
+    args = ["--bearings", "0,500mm", "--stiffness", "5 N/um", "--damping", "1 N*s/mm",
+            "--speed", "1480 rpm"]
+    out, err = report(capsys, tmp_path, "examples/fan_rotor.yaml", *args)
+    page = Page(out.read_text(encoding="utf-8"))
+    assert "whirl" in page.sections and err == ""
+    w = cli("whirl", "examples/fan_rotor.yaml", *args, "--json").json()
+    # the critical speeds of rbcli whirl, at the tables' six significant figures
+    from rbcli.render.fmt import num
+    from rbcli.render.units import RPM
+
+    crit = [c for c in w["critical_speeds"] if c["in_range"]]
+    assert crit
+    for c in crit:
+        assert num(c["speed"] * RPM, 6) in "".join(page.text) or num(c["speed"], 6) in "".join(page.text)
+    # without a stiffness the section says what it needs, in one line
+    out, _ = report(capsys, tmp_path, "examples/fan_rotor.yaml", name="plain.html")
+    why = Page(out.read_text(encoding="utf-8")).skips["whirl"]
+    assert "--stiffness" in why and "--bearings" in why
+    # damping alone is a mistake, said before anything is written
+    r = cli("report", "examples/fan_rotor.yaml", "--damping", "5", "-o", tmp_path / "d.html")
+    assert r.code == 2 and "--damping: needs --stiffness" in r.err and not (tmp_path / "d.html").exists()

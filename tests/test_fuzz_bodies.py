@@ -230,11 +230,11 @@ def test_option_values_with_nested_units_read_or_give_an_input_error(values, uni
     from rbcli.api import options
 
     text = sep.join(values) + (" " + unit if unit else "")
-    for read in (lambda: options.vector(text, kind, "--x"), lambda: options.quantity(text, kind, "--x")):
+    for read in (lambda: options.vector(text, kind, "x"), lambda: options.quantity(text, kind, "x")):
         try:
             out = read()
         except InputError as exc:
-            assert str(exc).startswith("--x"), str(exc)
+            assert str(exc).startswith("x: "), str(exc)
         else:
             import math
 

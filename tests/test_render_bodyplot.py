@@ -20,7 +20,7 @@ from rbcli.render import outline as ol
 from rbcli.core.inertia import combine
 from rbcli.core.principal import principal_report
 from rbcli.render.bodyplot import VIEWS, body_figure
-from rbcli.render.fmt import DisplayUnits
+from rbcli.render.units import DisplayUnits
 from rbcli.render.plots import figure_bytes
 
 ROOT = Path(__file__).resolve().parent.parent

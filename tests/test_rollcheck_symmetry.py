@@ -16,6 +16,7 @@ import math
 import pytest
 
 import rbcli
+from rbcli.errors import option_name
 from rbcli.core.rolling import straight
 
 RING = "{shape: ring, radius: 0.3, mass: 1}"
@@ -169,9 +170,9 @@ def test_car_wheel_example_now_answered():
 def test_bad_symmetry_tolerance(cli, value):
     with pytest.raises(rbcli.InputError) as e:
         rbcli.rollcheck(rbcli.load_text(RING), symmetry_tol=value)
-    assert e.value.param == "symmetry_tol" and str(e.value).startswith("--symmetry-tol")
+    assert e.value.param == "symmetry_tol" and str(e.value).startswith("symmetry_tol: ")
     r = cli("rollcheck", "-e", RING, "--symmetry-tol", value)
-    assert r.code == 2 and r.err == f"rbcli: {e.value}\n"
+    assert r.code == 2 and r.err == f"rbcli: {e.value.spelled(option_name)}\n"
 
 
 def test_tilted_rim_part_still_found_as_the_rim(cli):

@@ -16,6 +16,7 @@ module             public functions (re-exported by ``rbcli``)
 ``precess``        ``precess``
 ``top``            ``top``, ``gyrocompass``
 ``rollcheck``      ``rollcheck``
+``whirl``          ``whirl``
 ``report``         ``report``
 =================  ==========================================
 """

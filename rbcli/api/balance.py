@@ -26,8 +26,8 @@ from rbcli.api import options as op
 from rbcli.api.fieldbalance import (  # noqa: F401  (re-exported: rbcli.field_balance)
     FieldBalanceOptions, FieldBalanceResult, field_balance,
 )
-from rbcli.api.result import Result
-from rbcli.errors import ExitStatus, InputError, ParamError
+from rbcli.api.result import Result, jsonable
+from rbcli.errors import ExitStatus, InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core import balance as B
@@ -46,6 +46,10 @@ _CORE_PARAMS = {
     "mass_step": "mass_step", "angle_step_deg": "angle_step", "n_positions": "positions",
     "speed": "speed", "g": "g", "grade": "grade",
 }
+
+
+#: the parameters whose size can make a result overflow (named when one does)
+_SIZES = ("planes", "radius", "bearings", "speed", "mass_step", "through", "g")
 
 
 def _num(x: float) -> str:
@@ -78,13 +82,11 @@ class BalanceOptions:
     angle_step : float | None — deg
     positions : int | None — number of equally spaced positions
     speed : float | None — rad/s
-    bearings : (float, float) | None — m
-    g : float — m/s² (default 9.80665); ``g_given`` whether it was given
+    bearing_positions : (float, float) | None — m, the bearings along the shaft
+    g : float — m/s² (default 9.80665)
     grade : float | None — ISO 21940-11 grade G, mm/s
     tolerance_planes : str — "bearings" or "corrections"
-    given : tuple of str — the options given whose size can make the result overflow
-    echo : tuple of (option, value, unit) — the options given, as understood, in the body's
-        units (tables show them first)
+    given : tuple of str — the parameters the caller gave
     """
 
     shaft: tuple[float, float, float]
@@ -105,11 +107,9 @@ class BalanceOptions:
     speed: float | None = None
     bearings: tuple[float, float] | None = None
     g: float = STANDARD_GRAVITY
-    g_given: bool = False
     grade: float | None = None
     tolerance_planes: str = "bearings"
     given: tuple[str, ...] = ()
-    echo: tuple[tuple[str, str, str], ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, shaft=None, through=None, mark=None, zero_mark_deg=None,
@@ -124,88 +124,74 @@ class BalanceOptions:
             with the message the command line prints (``--planes: ...``).
         """
         angle_sense_given = angle_sense not in (None, "with")
-        with op.naming("angle_sense"):
-            angle_sense = op.choice(angle_sense if angle_sense is not None else "with",
-                                    "--angle-sense", ("with", "against"))
+        angle_sense = op.choice(angle_sense if angle_sense is not None else "with",
+                                "angle_sense", ("with", "against"))
         if tolerance_planes is not None:
-            with op.naming("tolerance_planes"):
-                op.choice(tolerance_planes, "--tolerance-planes", ("bearings", "corrections"))
+            op.choice(tolerance_planes, "tolerance_planes", ("bearings", "corrections"))
         t_planes = tolerance_planes or "bearings"
         zero_deg = 0.0
         if zero_mark_deg is not None:
-            with op.naming("zero_mark_deg"):
-                zero_deg = op.degrees(zero_mark_deg, "--zero-mark-deg")
+            zero_deg = op.degrees(zero_mark_deg, "zero_mark_deg")
             if not math.isfinite(zero_deg):
-                raise InputError("--zero-mark-deg: must be a finite angle", param="zero_mark_deg")
+                raise InputError("{zero_mark_deg}: must be a finite angle", param="zero_mark_deg")
         u = op.Units.of(body)
-        with op.naming("shaft"):
-            n_shaft = op.direction(shaft, "--shaft") if shaft is not None else None
-        with op.naming("through"):
-            p_through = u.point(through, "--through") if through is not None else None
-        with op.naming("mark"):
-            v_mark = op.vector(mark, "dimensionless", "--mark") if mark is not None else None
-        with op.naming("planes"):
-            z_planes = (op.distinct(u.numbers(planes, "length", "--planes", counts=(2,)),
-                                    "--planes", "correction planes") if planes is not None else None)
+        n_shaft = op.direction(shaft, "shaft") if shaft is not None else None
+        p_through = u.point(through, "through") if through is not None else None
+        v_mark = op.vector(mark, "dimensionless", "mark") if mark is not None else None
+        z_planes = (op.distinct(u.numbers(planes, "length", "planes", counts=(2,)),
+                                "planes", "correction planes") if planes is not None else None)
         r_opt = None
         if radius is not None:
-            with op.naming("radius"):
-                r_opt = [op.positive(x, "--radius", "the correction radius")
-                         for x in u.numbers(radius, "length", "--radius", counts=(1, 2))]
-        with op.naming("mass_step"):
-            m_step = (op.positive(u.quantity(mass_step, "mass", "--mass-step"), "--mass-step",
-                                  "the mass step") if mass_step is not None else None)
+            r_opt = [op.positive(x, "radius", "the correction radius")
+                     for x in u.numbers(radius, "length", "radius", counts=(1, 2))]
+        m_step = (op.positive(u.quantity(mass_step, "mass", "mass_step"), "mass_step",
+                              "the mass step") if mass_step is not None else None)
         a_step = None
         if angle_step is not None:
-            with op.naming("angle_step"):
-                a_step = op.degrees(angle_step, "--angle-step")
+            a_step = op.degrees(angle_step, "angle_step")
             if not (0.0 < a_step <= 360.0):
-                raise InputError(f"--angle-step: must be more than 0 and at most 360 degrees, got "
+                raise InputError(f"{{angle_step}}: must be more than 0 and at most 360 degrees, got "
                                  f"{angle_step}", param="angle_step")
         n_pos = _positions(positions)
-        with op.naming("speed"):
-            W = (op.positive(u.quantity(speed, "angular_speed", "--speed"), "--speed",
-                             "the speed (to turn the other way, reverse --shaft)")
-                 if speed is not None else None)
-        with op.naming("bearings"):
-            z_bear = (op.distinct(u.numbers(bearings, "length", "--bearings", counts=(2,)),
-                                  "--bearings", "bearings") if bearings is not None else None)
-        with op.naming("g"):
-            gv = (op.positive(u.quantity(g, "acceleration", "--g"), "--g", "gravity")
-                  if g is not None else None)
-        with op.naming("grade"):
-            G = op.grade(grade) if grade is not None else None
+        W = (op.positive(u.quantity(speed, "angular_speed", "speed"), "speed",
+                         "the speed (to turn the other way, reverse {shaft})")
+             if speed is not None else None)
+        z_bear = (op.distinct(u.numbers(bearings, "length", "bearings", counts=(2,)),
+                              "bearings", "bearings") if bearings is not None else None)
+        gv = (op.positive(u.quantity(g, "acceleration", "g"), "g", "gravity")
+              if g is not None else None)
+        G = op.grade(grade) if grade is not None else None
         # --- which options need which
         if z_planes is None:
             for name, val in (("radius", radius), ("mass_step", mass_step),
                               ("angle_step", angle_step), ("positions", positions)):
                 if val is not None:
-                    raise ParamError(name, "needs the correction planes, --planes zA,zB")
+                    raise ParamError(name, "needs the correction planes, {planes} zA,zB")
         if n_pos is not None and a_step is not None:
-            raise ParamError("angle_step", "the angles are fixed by --positions; give one or the other")
+            raise ParamError("angle_step", "the angles are fixed by {positions}; give one or the other")
         if G is not None:
             if W is None:
-                raise ParamError("grade", "needs --speed, the maximum service speed (e.g. --speed '3000 rpm')")
+                raise ParamError("grade", "needs {speed}, the maximum service speed (e.g. {speed} '3000 rpm')")
             if t_planes == "bearings" and z_bear is None:
                 raise ParamError(
-                    "grade", "needs --bearings z1,z2, the planes ISO 21940-11 allocates the tolerance "
-                    "to (or --tolerance-planes corrections with --planes)")
+                    "grade", "needs {bearings} z1,z2, the planes ISO 21940-11 allocates the tolerance "
+                    "to (or {tolerance_planes} corrections with {planes})")
             if t_planes == "corrections" and z_planes is None:
-                raise InputError("--tolerance-planes corrections: needs --planes zA,zB",
+                raise InputError("{tolerance_planes} corrections: needs {planes} zA,zB",
                                  param="tolerance_planes")
         elif tolerance_planes is not None:
-            raise ParamError("tolerance_planes", "only used with --grade")
+            raise ParamError("tolerance_planes", "only used with {grade}")
         # --- the body's defaults, and where each value came from
         if n_shaft is not None:
-            axis, shaft_source = tuple(n_shaft), "--shaft"
+            axis, shaft_source = tuple(n_shaft), "{shaft}"
         elif body.shaft is not None:
             axis, shaft_source = tuple(float(x) for x in body.shaft.axis), "the body's shaft"
         else:
             axis, shaft_source = (0.0, 0.0, 1.0), "body z, the default"
         if isinstance(p_through, str):
-            where, through_source = p_through, f"--through {p_through}"
+            where, through_source = p_through, f"{{through}} {p_through}"
         elif p_through is not None:
-            where, through_source = tuple(p_through), "--through"
+            where, through_source = tuple(p_through), "{through}"
         elif body.shaft is not None:
             where, through_source = tuple(float(x) for x in body.shaft.through), "the body's shaft"
         else:
@@ -214,63 +200,30 @@ class BalanceOptions:
         if z_planes is not None:
             if r_opt is not None:
                 radii = r_opt[0] if len(r_opt) == 1 else (r_opt[0], r_opt[1])
-                radius_source = "--radius"
+                radius_source = "{radius}"
             elif body.rim_radius is not None:
                 radii, radius_source = float(body.rim_radius), "the body's rim_radius"
             else:
-                raise ParamError("planes", "needs --radius (the radius the correction masses sit at), "
+                raise ParamError("planes", "needs {radius} (the radius the correction masses sit at), "
                                  "or rim_radius in the body file")
-        given = tuple(o for o, v in (("--planes", planes), ("--radius", radius),
-                                     ("--bearings", bearings), ("--speed", speed),
-                                     ("--mass-step", mass_step), ("--through", through),
-                                     ("--g", g)) if v is not None)
+        given = tuple(p for p, v in (
+            ("shaft", shaft), ("through", through), ("mark", mark), ("zero_mark_deg", zero_mark_deg),
+            ("angle_sense", "against" if angle_sense_given else None), ("planes", planes),
+            ("radius", radius), ("mass_step", mass_step), ("angle_step", angle_step),
+            ("positions", positions), ("speed", speed), ("bearings", bearings), ("g", g),
+            ("grade", grade), ("tolerance_planes", tolerance_planes)) if v is not None)
         return cls(
-            shaft=axis, shaft_source=shaft_source, through=where, through_source=through_source,
+            shaft=axis, shaft_source=Note(shaft_source), through=where,
+            through_source=Note(through_source),
             mark=tuple(v_mark) if v_mark is not None else None,
             mark_source=_mark_source(axis, v_mark is not None, zero_deg),
             zero_mark_deg=zero_deg, angle_sense=angle_sense,
-            planes=z_planes, radius=radii, radius_source=radius_source,
+            planes=z_planes, radius=radii,
+            radius_source=None if radius_source is None else Note(radius_source),
             mass_step=m_step, mass_step_text=None if mass_step is None else _as_text(mass_step),
             angle_step=a_step, positions=n_pos, speed=W, bearings=z_bear,
-            g=STANDARD_GRAVITY if gv is None else gv, g_given=gv is not None, grade=G,
-            tolerance_planes=t_planes, given=given,
-            echo=_echo(u, n_shaft, p_through, v_mark, zero_mark_deg, zero_deg, angle_sense_given,
-                       z_planes, r_opt, m_step, a_step, n_pos, W, z_bear, gv, G, tolerance_planes),
-        )
-
-
-def _echo(u, n_shaft, p_through, v_mark, zero_text, zero_deg, sense_given, z_planes, r_opt,
-          m_step, a_step, n_pos, W, z_bear, gv, G, t_planes) -> tuple[tuple[str, str, str], ...]:
-    """The options given, as understood (see :meth:`rbcli.api.options.Units.echo`)."""
-    rows = []
-    if n_shaft is not None:
-        rows.append(("--shaft", u.show(n_shaft, "dimensionless"), "direction"))
-    if p_through is not None:
-        rows.append(("--through", p_through, "") if isinstance(p_through, str)
-                    else u.echo("--through", p_through, "length"))
-    if v_mark is not None:
-        rows.append(("--mark", u.show(v_mark, "dimensionless"), "direction"))
-    if zero_text is not None:
-        rows.append(("--zero-mark-deg", f"{zero_deg:.6g}", "deg"))
-    if sense_given:
-        rows.append(("--angle-sense", "against", ""))
-    for opt, val, kind in (("--planes", z_planes, "length"), ("--radius", r_opt, "length"),
-                           ("--mass-step", m_step, "mass")):
-        if val is not None:
-            rows.append(u.echo(opt, val, kind))
-    if a_step is not None:
-        rows.append(("--angle-step", f"{a_step:.6g}", "deg"))
-    if n_pos is not None:
-        rows.append(("--positions", str(n_pos), ""))
-    for opt, val, kind in (("--speed", W, "angular_speed"), ("--bearings", z_bear, "length"),
-                           ("--g", gv, "acceleration")):
-        if val is not None:
-            rows.append(u.echo(opt, val, kind))
-    if G is not None:
-        rows.append(("--grade", f"G{G:g}", "mm/s"))
-    if t_planes is not None:
-        rows.append(("--tolerance-planes", t_planes, ""))
-    return tuple(rows)
+            g=STANDARD_GRAVITY if gv is None else gv, grade=G,
+            tolerance_planes=t_planes, given=given)
 
 
 def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:
@@ -287,9 +240,9 @@ def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:
     n = n / np.linalg.norm(n)
     out = []
     radii = () if o.radius is None else (o.radius if isinstance(o.radius, tuple) else (o.radius,))
-    if o.radius_source == "--radius" and max(radii) > FAR * sc.size:
-        out.append(u.far("--radius", "the correction radius", max(radii), sc.size))
-    for opt, zs, what in (("--planes", o.planes, "correction plane"), ("--bearings", o.bearings, "bearing")):
+    if o.radius_source is not None and o.radius_source.template == "{radius}" and max(radii) > FAR * sc.size:
+        out.append(u.far("radius", "the correction radius", max(radii), sc.size))
+    for opt, zs, what in (("planes", o.planes, "correction plane"), ("bearings", o.bearings, "bearing")):
         for z in zs or ():
             d = sc.far(np.asarray(P, dtype=float) + z * n)
             if d is not None:
@@ -299,10 +252,10 @@ def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:
     if o.speed is not None:
         r = max([*radii, sc.half_diagonal])
         if SPEED_OF_SOUND < o.speed * r < math.inf:
-            out.append(f"--speed: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "
+            out.append(Note(f"{{speed}}: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "
                        f"a radius of {u.show(r, 'length')} {u.label('length')} moves at "
                        f"{o.speed * r:.4g} m/s, faster than sound ({SPEED_OF_SOUND:g} m/s); bare "
-                       f"angular speeds are in {u.label('angular_speed')}: is a unit missing?")
+                       f"angular speeds are in {u.label('angular_speed')}: is a unit missing?"))
     return out
 
 
@@ -335,7 +288,7 @@ def _positions(v: Any) -> int | None:
 def _mark_source(axis, mark_given: bool, zero_mark_deg: float) -> str:
     """How the 0° mark was chosen (the rule of :func:`rbcli.core.balance.shaft_frame`)."""
     if mark_given:
-        text = "the --mark direction projected at right angles to the shaft"
+        text = "the {mark} direction projected at right angles to the shaft"
     else:
         from rbcli.core.balance import FRAME_SWITCH_COS
 
@@ -345,18 +298,18 @@ def _mark_source(axis, mark_given: bool, zero_mark_deg: float) -> str:
         else:
             text = "body x projected at right angles to the shaft"
     if zero_mark_deg:
-        text += f", turned {_num(zero_mark_deg)}° about the shaft by --zero-mark-deg"
-    return text
+        text += f", turned {_num(zero_mark_deg)}° about the shaft by {{zero_mark_deg}}"
+    return Note(text)
 
 
 def _convention(angle_sense: str) -> str:
     """The angle convention, in words (printed with every result)."""
     against = angle_sense == "against"
     towards = "−y" if against else "+y"
-    sense = ("against the direction of rotation for a positive speed (--angle-sense against)"
+    sense = ("against the direction of rotation for a positive speed ({angle_sense} against)"
              if against else "in the direction of rotation for a positive speed")
-    return (f"angles: degrees about the shaft axis (+z) from +x, the 0° mark, towards {towards} — "
-            f"{sense}; a correction is a mass to add (remove the same mass at +180°)")
+    return Note(f"angles: degrees about the shaft axis (+z) from +x, the 0° mark, towards {towards} — "
+                f"{sense}; a correction is a mass to add (remove the same mass at +180°)")
 
 
 # ----------------------------------------------------------------------------- result
@@ -399,15 +352,15 @@ class BalanceResult(Result):
     installed : rbcli.core.balance.Corrections | None — what to fit: rounded when asked, the
         net of the masses at the positions with ``positions``; its ``residual`` is the rotor
         with exactly those masses added
-    positions : rbcli.core.balance.PositionCorrections | None — the masses on the positions
+    position_split : rbcli.core.balance.PositionCorrections | None — the masses on the positions
     radius_source : str | None — "--radius" or "the body's rim_radius"
-    corrected : rbcli.core.balance.Unbalance | None — the rotor with ``added`` fitted
+    corrected_unbalance : rbcli.core.balance.Unbalance | None — the rotor with ``added`` fitted
     added : tuple of AddedMass — the masses to fit as body points (kg, m)
     speed : float | None — rad/s
-    bearings : (float, float) | None — m
+    bearing_positions : (float, float) | None — m, the bearings along the shaft
     forces : rbcli.core.balance.BearingForces | None — at ``speed`` (N), static loads (N)
     forces_after : rbcli.core.balance.BearingForces | None — the same after the corrections
-    iso : rbcli.core.balance.IsoCheck | None — the ISO 21940-11 check (``passed``)
+    iso_check : rbcli.core.balance.IsoCheck | None — the ISO 21940-11 check (``passed``)
     warnings : tuple of str — one-line warnings (the command prints them on standard error)
     """
 
@@ -419,23 +372,23 @@ class BalanceResult(Result):
     angle_convention: str
     ideal: B.Corrections | None = None
     installed: B.Corrections | None = None
-    positions: B.PositionCorrections | None = None
+    position_split: B.PositionCorrections | None = None
     radius_source: str | None = None
-    corrected: B.Unbalance | None = None
+    corrected_unbalance: B.Unbalance | None = None
     added: tuple[AddedMass, ...] = ()
     speed: float | None = None
-    bearings: tuple[float, float] | None = None
+    bearing_positions: tuple[float, float] | None = None
     forces: B.BearingForces | None = None
     forces_after: B.BearingForces | None = None
-    iso: B.IsoCheck | None = None
+    iso_check: B.IsoCheck | None = None
     warnings: tuple[str, ...] = ()
 
     @property
-    def corrections(self):
+    def correction_pair(self):
         """The two masses to add, planes A and B (``rbcli.core.balance.PlaneCorrection``:
         ``mass`` kg, ``angle_deg``, ``radius`` m, ``z`` m), as JSON ``corrections``: rounded
         when asked, the exact ones with ``positions``; None without ``planes``."""
-        c = self.ideal if self.positions is not None else self.installed
+        c = self.ideal if self.position_split is not None else self.installed
         return None if c is None else c.pair
 
     @property
@@ -464,7 +417,7 @@ class BalanceResult(Result):
     @property
     def return_code(self) -> int:
         """1 when the rotor as given fails the ISO grade asked for, else 0."""
-        if self.iso is not None and not self.iso.passed:
+        if self.iso_check is not None and not self.iso_check.passed:
             return int(ExitStatus.CHECK_FAILED)
         return int(ExitStatus.OK)
 
@@ -494,8 +447,8 @@ class BalanceResult(Result):
                 arrows = []
                 a, ok = u.angle_of(initial[i], res.tol_plane)
                 arrows.append(Arrow("initial", f"{pc.name}: unbalance as given", abs(initial[i]), a, ok))
-                if self.positions is not None:
-                    sp = self.positions.splits[i]
+                if self.position_split is not None:
+                    sp = self.position_split.splits[i]
                     for m, ang, k in zip(sp.masses, sp.angles_deg, sp.positions):
                         arrows.append(Arrow("correction", f"{pc.name}: add at position {k}",
                                             m * pc.radius, ang, m > 0.0, mass=m))
@@ -515,11 +468,11 @@ class BalanceResult(Result):
         """The document ``rbcli balance --json`` prints, less ``file`` (and ``apply``)."""
         from rbcli.api import balancejson as J
 
-        corr = self.ideal if self.positions is not None else self.installed
+        corr = self.ideal if self.position_split is not None else self.installed
         forces = self.forces if self.speed is not None else None
-        d = J.balance_json(self.unbalance, corr, forces, self.iso)
-        if self.positions is not None:
-            pj = J.positions_json(self.positions)
+        d = J.balance_json(self.unbalance, corr, forces, self.iso_check)
+        if self.position_split is not None:
+            pj = J.positions_json(self.position_split)
             det = d["correction_details"]
             det["residual"] = pj["residual"]
             det["rounded"] = pj["rounded"]
@@ -527,15 +480,15 @@ class BalanceResult(Result):
             d["positions"] = {k: v for k, v in pj.items() if k != "residual"}
         if self.installed is not None:
             d["correction_details"]["radius_source"] = self.radius_source
-        if self.corrected is not None:
-            cj = J.unbalance_json(self.corrected)
+        if self.corrected_unbalance is not None:
+            cj = J.unbalance_json(self.corrected_unbalance)
             d["corrected"] = {k: cj[k] for k in (
                 "mass", "eccentricity", "static_unbalance", "couple_unbalance", "tilt_deg",
                 "statically_balanced", "dynamically_balanced")}
-        if self.bearings is not None and self.forces is not None:
+        if self.bearing_positions is not None and self.forces is not None:
             d["bearings"] = [
                 {"plane": float(z), "name": str(i + 1), "static_load": float(w)}
-                for i, (z, w) in enumerate(zip(self.bearings, self.forces.static_loads))
+                for i, (z, w) in enumerate(zip(self.bearing_positions, self.forces.static_loads))
             ]
             if "dynamics" not in d:
                 d["static_load_assumption"] = "shaft horizontal, gravity at right angles to it"
@@ -550,7 +503,7 @@ class BalanceResult(Result):
         d["mark_source"] = self.mark_source
         d["warnings"] = list(self.warnings)
         d["name"] = self.body.name
-        return d
+        return jsonable(d)
 
 
 # ----------------------------------------------------------------------------- the service
@@ -584,7 +537,8 @@ def run(body: Body, options: BalanceOptions) -> BalanceResult:
             jsonable(res.to_json())  # the one finiteness check: refuses inf and NaN
     except (OverflowError, ZeroDivisionError, NonFiniteResult):
         raise NonFiniteResult(
-            f"{', '.join(options.given) or 'balance'}: the result overflows (a number beyond "
+            f"{', '.join('{%s}' % p for p in _SIZES if p in options.given) or 'balance'}: the result "
+            "overflows (a number beyond "
             "1e308): an option value is too large or too small for this body"
         ) from None
     return res
@@ -647,17 +601,18 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
     if o.mass_step is not None and ideal is not None:
         biggest = max(pc.mass for pc in ideal.pair)
         if o.mass_step > biggest:
-            warnings.append(
-                f"--mass-step {o.mass_step_text} is larger than the largest correction "
+            warnings.append(Note(
+                f"{{mass_step}} {literal(o.mass_step_text)} is larger than the largest correction "
                 f"({biggest * 1e3:.4g} g): the masses round to 0 or one step "
                 "(a bare number is kg: did you mean grams, e.g. '1 g'?)"
-            )
+            ))
     return BalanceResult(
         body=body, unbalance=unb, shaft_source=o.shaft_source, through_source=o.through_source,
         mark_source=o.mark_source, angle_convention=_convention(o.angle_sense), ideal=ideal,
-        installed=installed, positions=positions, radius_source=o.radius_source,
-        corrected=corrected, added=tuple(added), speed=o.speed, bearings=o.bearings,
-        forces=forces, forces_after=forces_after, iso=iso, warnings=tuple(warnings),
+        installed=installed, position_split=positions, radius_source=o.radius_source,
+        corrected_unbalance=corrected, added=tuple(added), speed=o.speed,
+        bearing_positions=o.bearings, forces=forces, forces_after=forces_after, iso_check=iso,
+        warnings=tuple(warnings),
     )
 
 

@@ -22,7 +22,7 @@ from typing import Any
 
 from rbcli.api import options as o
 from rbcli.api.result import Result, jsonable
-from rbcli.errors import ParamError
+from rbcli.errors import Note, ParamError
 
 __all__ = [
     "Reference", "InertiaOptions", "InertiaResult", "inertia", "PrincipalOptions",
@@ -62,7 +62,7 @@ class Reference:
         the origin."""
         if about is not None:
             u = o.Units.of(body)
-            p = u.point(about, "--about")
+            p = u.point(about, "about")
             if p == "com":
                 return cls(None, "the com", "about")
             if p == "origin":
@@ -80,6 +80,15 @@ class Reference:
             return cls(tuple(float(x) for x in body.reference), "the body's reference point",  # type: ignore[arg-type]
                        "body_reference")
         return cls((0.0, 0.0, 0.0), "the origin", "body_reference")
+
+    @property
+    def as_given(self) -> str | tuple[float, float, float] | None:
+        """``"com"``, ``"origin"`` or the point (m) when given as ``about``, else None."""
+        if self.param != "about":
+            return None
+        if self.point is None:
+            return "com"
+        return "origin" if self.label == "the origin" else self.point
 
     def resolve(self, mp: Any) -> Any:
         """The point as a (3,) ndarray, m, given the body's mass properties ``mp``."""
@@ -130,42 +139,8 @@ def part_rows(body: Any) -> tuple[dict, ...]:
 
 
 def _with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
-    """``jsonable(out | {"parts": list(parts)})``, the rows (one a part: 100 000 for a
-    large body) converted here in one pass: numbers are checked finite and -0.0 written
-    0.0, as jsonable does. Anything else, or a number that is not finite, goes through
-    jsonable itself (its error names the row)."""
-    return _rows_json(out, parts)
-
-
-def _rows_json(out: dict, parts: tuple[dict, ...]) -> dict:
-    add_zero = (0.0).__add__  # 0.0 + x is x, but 0.0 for -0.0
-    rows = []
-    append = rows.append
-    for row in parts:
-        new = {}
-        for key, v in row.items():
-            cls = v.__class__
-            if cls is float:
-                if v - v != 0.0:  # inf or NaN
-                    break
-                new[key] = v + 0.0
-            elif cls is str or cls is bool or cls is int:
-                new[key] = v
-            elif hasattr(v, "tolist") and v.ndim == 1 and v.dtype.char == "d":  # float64
-                xs = v.tolist()
-                total = sum(xs)
-                if total - total != 0.0:  # inf or NaN (or a sum overflowing: jsonable decides)
-                    break
-                new[key] = list(map(add_zero, xs))
-            else:
-                break
-        else:
-            append(new)
-            continue
-        return jsonable({**out, "parts": list(parts)})
-    done = jsonable(out)
-    done["parts"] = rows
-    return done
+    """``out`` and the parts' rows as JSON (checked finite by :func:`jsonable`)."""
+    return jsonable({**out, "parts": list(parts)})
 
 
 def _inertia_at(mp: Any, ref: Reference) -> tuple[Any, Any]:
@@ -191,15 +166,20 @@ class InertiaOptions:
     reference : Reference — the point the tensor is about
     axis : tuple of 3 floats, or None — a direction (largest component ±1), body frame
     omega : tuple of 3 floats, or None — rad/s, body frame
-    echo : tuple of (option, value, unit) — the options given, as understood (body's units)
+    given : tuple of str — the parameters the caller gave
     warnings : tuple of str — a point or a rim speed far outside the body's scale
     """
 
     reference: Reference
     axis: tuple[float, float, float] | None = None
     omega: tuple[float, float, float] | None = None
-    echo: tuple[tuple[str, str, str], ...] = ()
+    given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+
+    @property
+    def about(self) -> str | tuple[float, float, float] | None:
+        """The point as given: ``"com"``, ``"origin"`` or x, y, z (m); None when not given."""
+        return self.reference.as_given
 
     @classmethod
     def parse(cls, body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
@@ -214,22 +194,10 @@ class InertiaOptions:
         """
         u = o.Units.of(body)
         ref = Reference.parse(body, about)
-        n = tuple(o.direction(axis, "--axis")) if axis is not None else None
-        w = tuple(u.vector(omega, "angular_speed", "--omega")) if omega is not None else None
-        echo = _echo_about(u, ref)
-        if n is not None:
-            echo += (("--axis", u.show(n, "dimensionless"), "direction"),)
-        if w is not None:
-            echo += (u.echo("--omega", w, "angular_speed"),)
-        return cls(ref, n, w, echo, _plausibility(body, u, ref, w))  # type: ignore[arg-type]
-
-
-def _echo_about(u: o.Units, ref: Reference) -> tuple[tuple[str, str, str], ...]:
-    if ref.param != "about":
-        return ()
-    if ref.point is None or ref.label == "the origin":
-        return (("--about", ref.label.removeprefix("the "), ""),)
-    return (u.echo("--about", ref.point, "length"),)
+        n = tuple(o.direction(axis, "axis")) if axis is not None else None
+        w = tuple(u.vector(omega, "angular_speed", "omega")) if omega is not None else None
+        given = tuple(p for p, v in (("about", about), ("axis", axis), ("omega", omega)) if v is not None)
+        return cls(ref, n, w, given, _plausibility(body, u, ref, w))  # type: ignore[arg-type]
 
 
 def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> tuple[str, ...]:
@@ -249,13 +217,13 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
     if far_point:
         d = sc.far(ref.point)
         if d is not None:
-            out.append(u.far("--about", "the point", d, sc.size))
+            out.append(u.far("about", "the point", d, sc.size))
     if omega is not None:
         v = math.sqrt(sum(x * x for x in omega)) * sc.half_diagonal
         if SPEED_OF_SOUND < v < math.inf:
-            out.append(f"--omega: the body's rim would move at {v:.4g} m/s, faster than sound "
-                       f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                       f"{u.label('angular_speed')}: is a unit missing?")
+            out.append(Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
+                            f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                            f"{u.label('angular_speed')}: is a unit missing?"))
     return tuple(out)
 
 
@@ -420,13 +388,18 @@ class PrincipalOptions:
     Attributes
     ----------
     reference : Reference — the point the moments are about (default the com)
-    echo : tuple of (option, value, unit) — ``--about`` as understood, unless the com
+    given : tuple of str — ``("about",)`` when a point other than the com was given
     warnings : tuple of str — a point far outside the body's scale
     """
 
     reference: Reference
-    echo: tuple[tuple[str, str, str], ...] = ()
+    given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+
+    @property
+    def about(self) -> str | tuple[float, float, float] | None:
+        """The point as given (see :attr:`InertiaOptions.about`)."""
+        return self.reference.as_given
 
     @classmethod
     def parse(cls, body: Any, *, about: o.Value | None = "com") -> "PrincipalOptions":
@@ -434,8 +407,8 @@ class PrincipalOptions:
         length unit; None = the com)."""
         ref = Reference.parse(body, about, default="com")
         u = o.Units.of(body)
-        echo = () if ref.point is None else _echo_about(u, ref)  # the com is the default
-        return cls(ref, echo, _plausibility(body, u, ref))
+        given = ("about",) if ref.point is not None and ref.param == "about" else ()  # com: the default
+        return cls(ref, given, _plausibility(body, u, ref))
 
 
 @dataclass(frozen=True)

@@ -9,8 +9,9 @@ through these functions, so ``rbcli.balance(body, radius="100 mm")`` and
 - a string as typed on the command line: ``"30 cm"``, ``"1,1,1 mm"``, ``"3000 rpm"``.
 
 Strings follow one rule for lists (:data:`UNIT_RULE`): a unit after the last number
-applies to every bare number before it. Errors are :class:`rbcli.errors.InputError`
-whose message starts with the option as the user wrote it (``--radius: ...``).
+applies to every bare number before it. Each reader takes the Python parameter it reads
+(``"radius"``); errors are :class:`rbcli.errors.ParamError` naming it (``radius: ...`` in
+the API, ``--radius: ...`` on the command line, see :func:`rbcli.errors.spell`).
 
 Standard library only at module level; :mod:`rbcli.io.units` is imported on first use.
 """
@@ -23,7 +24,7 @@ from contextlib import contextmanager
 from typing import Any
 
 from rbcli._startup import LazyRe
-from rbcli.errors import InputError
+from rbcli.errors import InputError, Note, ParamError, literal
 
 #: a number at the start of a value: what is left after it is the value's unit
 NUMBER = LazyRe(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
@@ -35,29 +36,29 @@ UNIT_RULE = "a unit after the last number applies to every bare number before it
 Value = Any
 
 
-def param_of(option: str) -> str | None:
-    """The keyword argument an option stands for: ``"--zero-mark-deg"`` -> ``"zero_mark_deg"``
-    (None for what is not an option, e.g. "the body's shaft")."""
-    last = option.split("/")[-1].strip()
-    if not last.startswith("-"):
-        return None
-    return last.lstrip("-").replace("-", "_") or None
+def param(name: str) -> str:
+    """The Python parameter a reader is asked about: ``"radius"``; an option spelling
+    (``"--zero-mark-deg"``) is taken as its parameter (``"zero_mark_deg"``)."""
+    if name.startswith("-"):
+        return name.split("/")[-1].strip().lstrip("-").replace("-", "_")
+    return name
 
 
 @contextmanager
-def naming(param: str) -> Iterator[None]:
-    """An InputError raised inside (by a reader that could not tell) names ``param``."""
+def naming(name: str) -> Iterator[None]:
+    """An InputError raised inside that names no parameter is given ``name``'s (a reader
+    that could not tell). Most readers name their parameter themselves."""
     try:
         yield
     except InputError as exc:
         if exc.param is None:
-            exc.param = param
+            exc.param = param(name)
         raise
 
 
-def _error(option: str, message: str) -> InputError:
-    """An InputError about ``option`` (its ``param`` set), with the message as printed."""
-    return InputError(message, param=param_of(option))
+def _error(name: str, reason: str) -> ParamError:
+    """The error of parameter ``name``: ``{name}: reason``."""
+    return ParamError(param(name), reason)
 
 
 def _is_number(v: Any) -> bool:
@@ -74,7 +75,7 @@ def _text(v: Value, option: str) -> str:
     if isinstance(v, Sequence) or hasattr(v, "tolist"):
         items = v.tolist() if hasattr(v, "tolist") else list(v)
         return ",".join(_text(x, option) for x in items)
-    raise _error(option, f"{option}: expected a number, a quantity string or a list, got "
+    raise _error(option, f"expected a number, a quantity string or a list, got "
                      f"{type(v).__name__}")
 
 
@@ -100,7 +101,7 @@ def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) ->
     try:
         value, dim = un.parse_quantity(s)
     except un.UnitError as exc:
-        raise _error(option, f"{option}: {exc}") from None
+        raise _error(option, literal(exc)) from None
     if dim == un.Dim() and _bare(s):
         if bare is None:
             return value
@@ -109,7 +110,7 @@ def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) ->
     try:
         return un.to_si(s, kind)
     except un.UnitError as exc:
-        raise _error(option, f"{option}: {exc}") from None
+        raise _error(option, literal(exc)) from None
 
 
 def degrees(text: Value, option: str) -> float:
@@ -138,8 +139,8 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
     parts = [p.strip() for p in text.split(",")]
     if len(parts) not in counts or not all(parts):
         want = " or ".join(str(n) for n in counts)
-        raise _error(option, f"{option}: expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
-                         f"got '{text}'")
+        raise _error(option, f"expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
+                         f"got '{literal(text)}'")
     last = quantity(parts[-1], kind, option, bare=bare)  # its own errors first
     m = NUMBER.match(parts[-1])
     unit = parts[-1][m.end():].strip() if m else ""
@@ -149,34 +150,34 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
         stray = [p for p in parts if _bare(p) and float(p.replace("\u2212", "-")) != 0.0]
         if stray:
             raise _error(option, 
-                f"{option}: '{text}' has a unit on some numbers but none after the last, so the "
+                f"'{literal(text)}' has a unit on some numbers but none after the last, so the "
                 f"unit of {stray[0]} is unclear; put the unit after the last number (it then "
                 "applies to every bare number before it) or after each number"
             )
     vals = [quantity(p, kind, option, bare=bare) for p in parts[:-1]] + [last]
     if not all(math.isfinite(v) for v in vals):
-        raise _error(option, f"{option}: values must be finite numbers, got '{text}'")
+        raise _error(option, f"values must be finite numbers, got '{literal(text)}'")
     return vals
 
 
 def finite(x: float, option: str) -> float:
     """``x`` if it is a finite number, else an InputError naming ``option``."""
     if not math.isfinite(x):
-        raise _error(option, f"{option}: must be a finite number")
+        raise _error(option, f"must be a finite number")
     return x
 
 
 def positive(x: float, option: str, what: str) -> float:
     """``x`` if it is a positive finite number, else an InputError saying ``what`` it is."""
     if not (x > 0.0 and math.isfinite(x)):
-        raise _error(option, f"{option}: {what} must be a positive number, got {x:.6g}")
+        raise _error(option, f"{what} must be a positive number, got {x:.6g}")
     return x
 
 
 def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
     """Two positions along a shaft that must differ (``--planes``, ``--bearings``)."""
     if vals[0] == vals[1]:
-        raise _error(option, f"{option}: the two {what} are both at z = {vals[0]:.6g} m; they must differ")
+        raise _error(option, f"the two {what} are both at z = {vals[0]:.6g} m; they must differ")
     return vals[0], vals[1]
 
 
@@ -193,13 +194,13 @@ def grade(text: Value, option: str = "--grade") -> float:
     m = _GRADE.fullmatch(text.strip())
     if not m:
         raise _error(option, 
-            f"{option}: '{text}' is not a balance quality grade; write e.g. G6.3, 6.3 or g2.5 "
+            f"'{literal(text)}' is not a balance quality grade; write e.g. G6.3, 6.3 or g2.5 "
             "(G in mm/s, from G0.4 to G4000)"
         )
     G = float(m.group(1))
     if not (math.isfinite(G) and ISO_GRADE_MIN <= G <= ISO_GRADE_MAX):
         raise _error(option, 
-            f"{option}: ISO 21940-11 grades run from G{ISO_GRADE_MIN:g} to G{ISO_GRADE_MAX:g} "
+            f"ISO 21940-11 grades run from G{ISO_GRADE_MIN:g} to G{ISO_GRADE_MAX:g} "
             f"(mm/s), got {text}"
         )
     return G
@@ -210,7 +211,7 @@ def vector(text: Value, kind: str, option: str, n: int = 3, *, bare: str | None 
     :func:`numbers`)."""
     t = _text(text, option)
     if len(t.split(",")) != n:
-        raise _error(option, f"{option}: expected {n} comma-separated numbers like 1,0,0, got '{t}'")
+        raise _error(option, f"expected {n} comma-separated numbers like 1,0,0, got '{literal(t)}'")
     return numbers(t, kind, option, counts=(n,), bare=bare)
 
 
@@ -232,7 +233,7 @@ def direction(text: Value, option: str) -> list[float]:
     v = vector(t, "dimensionless", option)
     big = max(abs(x) for x in v)
     if not big > 0:
-        raise _error(option, f"{option}: the direction must be a non-zero vector")
+        raise _error(option, f"the direction must be a non-zero vector")
     return [x / big for x in v]  # largest component ±1: no under/overflow when normalised
 
 
@@ -240,7 +241,8 @@ def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
     """One of ``allowed`` (e.g. ``--products tensor|positive``)."""
     if text not in allowed:
         ways = " or ".join(f"'{a}'" for a in allowed)
-        raise _error(option, f"{option} must be {ways}, not '{text}'")
+        raise InputError(f"{{{param(option)}}} must be {ways}, not '{literal(text)}'",
+                         param=param(option))
     return str(text)
 
 
@@ -258,8 +260,8 @@ def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
     else:
         x = quantity(text, "dimensionless", option)
     if not (0.0 <= x <= MAX_TOLERANCE):
-        raise InputError(f"{option}: must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
-                         f"0.01 or a percentage such as '1 %'), got {value}", param="symmetry_tol")
+        raise _error(option, f"must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
+                     f"0.01 or a percentage such as '1 %'), got {literal(value)}")
     return x
 
 
@@ -267,16 +269,11 @@ def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
 
 
 class Units:
-    """What a bare number means for one body: the one place of the bare-number rule.
+    """The bare-number rule for one body (:mod:`rbcli.io.bare`), as the readers apply it.
 
-    A bare number typed for an option (``--radius 180``, ``radius="180"``) means what it
-    would mean in that body's file: lengths and masses in the file's ``units`` (SI for
-    ``-e``, for standard input without ``units`` and for files without ``units``), angles
-    in degrees, angular speeds in rad/s unless the file's ``units`` name another
-    (``angular_speed: rpm``); every other kind (a speed in m/s, gravity in m/s², a time in
-    s) is SI, since a body file has no bare speed or gravity to follow. A Python number
-    passed to the API is always SI (it never went through a file). Commands without a
-    body use SI.
+    A Python number passed to the API is always SI (it never went through a file), except
+    an angle (degrees); a string without a unit is in the body's bare unit of its kind.
+    Commands without a body use SI.
 
     Parameters
     ----------
@@ -287,7 +284,7 @@ class Units:
 
     __slots__ = ("base", "_cache")
 
-    def __init__(self, base: dict[str, str] | None = None) -> None:
+    def __init__(self, base: Any = None) -> None:
         self.base = dict(base or {})
         self._cache: dict[str, str | None] = {}
 
@@ -298,46 +295,34 @@ class Units:
 
     def bare(self, kind: str) -> str | None:
         """The unit a bare number of ``kind`` is in (None: SI)."""
-        if kind in self._cache:
-            return self._cache[kind]
-        unit: str | None
-        if kind == "angle":
-            unit = "deg"
-        elif kind == "angular_speed":
-            unit = self.base.get("angular_speed")
-        elif kind in ("length", "mass") and kind in self.base:
-            from rbcli.io import units as un
+        if kind not in self._cache:
+            from rbcli.io.bare import bare_unit
 
-            factor, text = un.unit_for_kind({kind: self.base[kind]}, kind)
-            unit = text if factor != 1.0 else None
-        else:  # speeds, accelerations, times, ...: SI (a body file has no bare g or speed)
-            unit = None
-        self._cache[kind] = unit
-        return unit
+            self._cache[kind] = bare_unit(self.base, kind)
+        return self._cache[kind]
 
     def label(self, kind: str) -> str:
-        """How help and echo lines name the bare unit of ``kind`` (``"mm"``, ``"SI"``...)."""
-        return self.bare(kind) or {"length": "m", "mass": "kg", "angular_speed": "rad/s",
-                                   "speed": "m/s", "acceleration": "m/s^2", "time": "s"}.get(kind, "SI")
+        """How messages name the bare unit of ``kind`` (``"mm"``, ``"m"``, ``"SI"``...)."""
+        from rbcli.io.bare import SI_LABELS
+
+        return self.bare(kind) or SI_LABELS.get(kind, "SI")
 
     def factor(self, kind: str) -> float:
         """SI per bare unit of ``kind`` (1.0 for SI; an angle's is pi/180)."""
-        from rbcli.io import units as un
+        from rbcli.io.bare import factor
 
-        unit = self.bare(kind)
-        return 1.0 if unit is None else un.parse_unit(unit)[0]
+        return factor(self.base, kind)
 
     def show(self, si: Any, kind: str) -> str:
-        """An SI value (or a sequence) as a number in the bare unit of ``kind``, 6 digits."""
+        """An SI value (or a sequence) in the bare unit of ``kind``, 6 digits, for messages."""
         f = self.factor(kind)
         if _is_number(si):
             return _g(float(si) / f)
         return ", ".join(_g(float(x) / f) for x in (si.tolist() if hasattr(si, "tolist") else si))
 
     def echo(self, option: str, si: Any, kind: str) -> tuple[str, str, str]:
-        """One row of a table's ``options`` echo: (option, value, unit), the value as
-        understood, in this body's bare unit of ``kind``; an angular speed also in rpm
-        (or in rad/s when the bare unit is rpm)."""
+        """Transitional, for rollcheck only until its options table moves to render
+        (:meth:`rbcli.render.units.BodyUnits.echo` is the one to use)."""
         value, unit = self.show(si, kind), self.label(kind)
         if kind == "angular_speed":
             vals = [float(si)] if _is_number(si) else [float(x) for x in si]
@@ -350,9 +335,9 @@ class Units:
         """The one-line plausibility warning for a point or radius ``distance`` m away
         while the body is ``size`` m across (lengths quoted in the bare unit)."""
         unit = self.label("length")
-        return (f"{option}: {what} is {self.show(distance, 'length')} {unit}, more than 10× the "
-                f"body's size ({self.show(size, 'length')} {unit}); bare lengths are in {unit} "
-                "(the body's units): is a unit missing?")
+        return Note(f"{{{param(option)}}}: {what} is {self.show(distance, 'length')} {unit}, more "
+                    f"than 10× the body's size ({self.show(size, 'length')} {unit}); bare lengths are "
+                    f"in {unit} (the body's units): is a unit missing?")
 
     def quantity(self, value: Value, kind: str, option: str) -> float:
         """:func:`quantity` with this body's bare unit (a Python number is SI, except an

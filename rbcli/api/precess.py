@@ -17,12 +17,12 @@ elliptic integral of the third kind): :attr:`PrecessResult.motion` is a
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rbcli._startup import frozen
 from rbcli.api import options as o
-from rbcli.api.result import Result
-from rbcli.errors import InputError, ParamError
+from rbcli.api.result import Result, jsonable
+from rbcli.errors import InputError, Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
@@ -61,7 +61,7 @@ def _count(value: Any) -> int:
     return n
 
 
-@frozen
+@dataclass(frozen=True)
 class PrecessOptions:
     """The checked options of :func:`precess` (SI).
 
@@ -72,7 +72,7 @@ class PrecessOptions:
     duration : float or None — s, > 0: the span of the time series (from t = 0)
     samples : int or None — rows of the time series (2 .. 10 000 000); None: 1001
     verify : bool — compare with a numerical integration (DOP853) over 3 periods
-    echo : tuple of (option, value, unit) — the options given, as understood (body's units)
+    given : tuple of str — the parameters the caller gave
     warnings : tuple of str — a rotation whose rim is faster than sound
     """
 
@@ -81,7 +81,7 @@ class PrecessOptions:
     duration: float | None = None
     samples: int | None = None
     verify: bool = False
-    echo: tuple[tuple[str, str, str], ...] = ()
+    given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
@@ -90,20 +90,18 @@ class PrecessOptions:
         """Read the values as :func:`precess` takes them (numbers SI, or quantity strings)."""
         if omega is None:
             raise ParamError("omega", "the initial angular velocity is required: x,y,z in the "
-                                      "body frame, e.g. --omega 0,0,10 (rad/s) or --omega '0,0,300 rpm'")
+                                      "body frame, e.g. {omega} 0,0,10 (rad/s) or {omega} '0,0,300 rpm'")
         u = o.Units.of(body)
-        w = u.vector(omega, "angular_speed", "--omega")
-        t_at = o.finite(o.quantity(at, "time", "--at"), "--at") if at is not None else None
+        w = u.vector(omega, "angular_speed", "omega")
+        t_at = o.finite(o.quantity(at, "time", "at"), "at") if at is not None else None
         span = None
         if duration is not None:
-            span = o.finite(o.quantity(duration, "time", "--duration"), "--duration")
+            span = o.finite(o.quantity(duration, "time", "duration"), "duration")
             if not span > 0.0:
                 raise ParamError("duration", f"must be a positive time, got '{duration}'")
         n_rows = _count(samples) if samples is not None else None
-        echo = [u.echo("--omega", w, "angular_speed")]
-        for opt, val in (("--at", t_at), ("--duration", span)):
-            if val is not None:
-                echo.append(u.echo(opt, val, "time"))
+        given = tuple(p for p, v in (("omega", omega), ("at", at), ("duration", duration),
+                                     ("samples", samples), ("verify", verify or None)) if v is not None)
         warns: tuple[str, ...] = ()
         if body is not None:
             import math
@@ -112,14 +110,14 @@ class PrecessOptions:
 
             v = math.sqrt(sum(x * x for x in w)) * body_scale(body.parts).half_diagonal
             if SPEED_OF_SOUND < v < math.inf:
-                warns = (f"--omega: the body's rim would move at {v:.4g} m/s, faster than sound "
-                         f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                         f"{u.label('angular_speed')}: is a unit missing?",)
+                warns = (Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
+                              f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                              f"{u.label('angular_speed')}: is a unit missing?"),)
         return cls(omega=(float(w[0]), float(w[1]), float(w[2])), at=t_at, duration=span,
-                   samples=n_rows, verify=bool(verify), echo=tuple(echo), warnings=warns)
+                   samples=n_rows, verify=bool(verify), given=given, warnings=warns)
 
 
-@frozen(eq=False)
+@dataclass(frozen=True, eq=False)
 class PrecessResult(Result):
     """The torque-free motion of a body and what was asked of it.
 
@@ -190,7 +188,7 @@ class PrecessResult(Result):
             out["at"] = self.at_json
         if self.check is not None:
             out["verify"] = self.check.to_json()
-        return out
+        return jsonable(out)
 
     @property
     def return_code(self) -> int:

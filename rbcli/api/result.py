@@ -10,19 +10,44 @@ exits with its status.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from typing import Any
 
 from rbcli.errors import ExitStatus, NonFiniteResult
 
 
 class Result:
-    """Mixin of every service result (use with ``@dataclass(frozen=True)``)."""
+    """Mixin of every service result (use with ``@dataclass(frozen=True)``).
+
+    A result is a value: after it is made, every field is :func:`frozen` (arrays read-only,
+    mappings read-only, lists as tuples, nested dataclasses likewise), so nothing a caller
+    does to it changes what it says.
+    """
 
     #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
     warnings: tuple[str, ...] = ()
 
+    def __post_init__(self) -> None:
+        freeze_fields(self)
+
     def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
         raise NotImplementedError
+
+    def __getattr__(self, name: str) -> Any:
+        """Every key of :meth:`to_json` is an attribute with that value (one vocabulary:
+        ``r.static_unbalance`` is ``r.to_json()["static_unbalance"]``); a mapping in it is a
+        :class:`Record` (``r.corrections[0].angle_deg``), a list a tuple. Fields and
+        properties of the result class come first."""
+        if name.startswith("_"):
+            raise AttributeError(name)
+        data = self.__dict__.get("_json_data")
+        if data is None:
+            data = self.to_json()
+            object.__setattr__(self, "_json_data", data)
+        if name in data:
+            return record(data[name])
+        raise AttributeError(f"{type(self).__name__!r} has no attribute {name!r} (its JSON keys: "
+                             f"{', '.join(data)})")
 
     @property
     def return_code(self) -> int:
@@ -30,8 +55,90 @@ class Result:
         return int(ExitStatus.OK)
 
 
+class Record(Mapping):
+    """A read-only JSON object whose keys are also attributes: ``rec.angle_deg`` is
+    ``rec["angle_deg"]``. What a mapping inside a result's JSON is, seen as an attribute."""
+
+    __slots__ = ("_data",)
+
+    def __init__(self, data: Mapping[str, Any]) -> None:
+        object.__setattr__(self, "_data", dict(data))
+
+    def __getitem__(self, key: str) -> Any:
+        return record(self._data[key])
+
+    def __iter__(self):
+        return iter(self._data)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return record(self._data[name])
+        except KeyError:
+            raise AttributeError(f"no key {name!r} (keys: {', '.join(self._data)})") from None
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Record is read-only")
+
+    def __repr__(self) -> str:
+        return f"Record({self._data!r})"
+
+    def to_json(self) -> dict[str, Any]:
+        return self._data
+
+
+def record(value: Any) -> Any:
+    """JSON data as attributes see it: mappings as :class:`Record`, lists as tuples."""
+    if isinstance(value, dict):
+        return Record(value)
+    if isinstance(value, list):
+        return tuple(record(v) for v in value)
+    return value
+
+
+def frozen(value: Any, _depth: int = 0) -> Any:
+    """``value`` made immutable, deeply: numpy arrays read-only (a read-only copy when the
+    array is writable), dicts as read-only mappings, lists as tuples, the fields of
+    dataclass instances likewise (in place: :func:`freeze_fields`). Other objects are
+    returned as they are (a :class:`rbcli.model.Body` is frozen where it is made)."""
+    import dataclasses
+    from types import MappingProxyType
+
+    if _depth > 20:
+        return value
+    t = type(value)
+    if t.__name__ == "ndarray" and t.__module__ == "numpy":
+        if value.flags.writeable:
+            value = value.copy()
+            value.setflags(write=False)
+        return value
+    if t is dict:
+        return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
+    if t is list:
+        return tuple(frozen(v, _depth + 1) for v in value)
+    if t is tuple:
+        items = tuple(frozen(v, _depth + 1) for v in value)
+        return value if all(a is b for a, b in zip(items, value)) else items
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        freeze_fields(value, _depth + 1)
+    return value
+
+
+def freeze_fields(obj: Any, _depth: int = 0) -> None:
+    """Replace each field of the dataclass instance ``obj`` by :func:`frozen` of it."""
+    import dataclasses
+
+    for f in dataclasses.fields(obj):
+        v = getattr(obj, f.name)
+        fv = frozen(v, _depth)
+        if fv is not v:
+            object.__setattr__(obj, f.name, fv)
+
+
 def jsonable(obj: Any) -> Any:
-    """Plain JSON data from results: numpy arrays to lists, -0.0 to 0.0.
+    """Plain JSON data from results: numpy arrays to lists, tuples to lists, -0.0 to 0.0.
 
     This is the one finiteness check of a result's numbers: every JSON document and every
     result of the Python API passes through it.
@@ -41,76 +148,18 @@ def jsonable(obj: Any) -> Any:
     NonFiniteResult
         for an inf or NaN anywhere (an InputError, exit 2: the inputs were too large or too
         small to compute with), naming the key it was found under.
+    TypeError
+        for a value that has no JSON form.
     """
-    return _fast(obj)
+    from collections.abc import Mapping
 
-
-def _fast(obj: Any) -> Any:
-    """:func:`_slow`'s result, dispatched on the exact type of the common values (dict, list,
-    tuple, float, str, int, bool, None, a numpy float array checked in bulk); anything else,
-    and every error, goes through :func:`_slow`, so values and messages are its own."""
-    t = type(obj)
-    if t is float:
-        if obj - obj != 0.0:  # inf or NaN (x - x is NaN for both, 0.0 for every finite x)
-            raise _NonFinite(obj)
-        return obj if obj != 0.0 else 0.0
-    if t is dict:
-        out = {}
-        k = None
-        try:
-            for k, v in obj.items():
-                # a finite float inline (most values): no call
-                out[str(k)] = (v if v != 0.0 else 0.0) if type(v) is float and v - v == 0.0 else _fast(v)
-        except _NonFinite as exc:
-            exc.path.insert(0, str(k))
-            raise
-        return out
-    if t is list or t is tuple:
-        out_list = []
-        append = out_list.append
-        i = 0
-        try:
-            for i, v in enumerate(obj):
-                append((v if v != 0.0 else 0.0) if type(v) is float and v - v == 0.0 else _fast(v))
-        except _NonFinite as exc:
-            exc.path.insert(0, i)
-            raise
-        return out_list
-    if t is str or t is int or t is bool or obj is None:
-        return obj
-    if t.__name__ == "ndarray" and t.__module__ == "numpy":
-        if obj.size <= 64 or obj.dtype.kind != "f" or obj.dtype.itemsize > 8:
-            # a small array: tolist() and the loops above beat numpy's calls (what _slow does
-            # with an ndarray, which has no to_json)
-            lst = obj.tolist()
-            if obj.ndim == 2 and obj.dtype.kind == "f":  # a 3x3 tensor: its rows here
-                rows = []
-                for row in lst:
-                    for x in row:
-                        if x - x != 0.0:  # inf or NaN: the list path names it
-                            return _fast(lst)
-                    rows.append([x if x != 0.0 else 0.0 for x in row])
-                return rows
-            return _fast(lst)
-        import numpy as np
-
-        if obj.size and not np.isfinite(obj).all():
-            return _slow(obj)  # names the element
-        # + 0.0 turns -0.0 into 0.0 and changes no other value (IEEE round to nearest)
-        return (obj + 0.0).tolist()
-    return _slow(obj)
-
-
-def _slow(obj: Any) -> Any:
-    """The general case of :func:`jsonable`: ``to_json()``, any mapping or sequence type,
-    numpy scalars and arrays through ``tolist()``."""
     if hasattr(obj, "to_json"):
-        return _fast(obj.to_json())
-    if isinstance(obj, dict):
+        return jsonable(obj.to_json())
+    if isinstance(obj, Mapping):
         out = {}
         for k, v in obj.items():
             try:
-                out[str(k)] = _fast(v)
+                out[str(k)] = jsonable(v)
             except _NonFinite as exc:
                 exc.path.insert(0, str(k))
                 raise
@@ -119,13 +168,13 @@ def _slow(obj: Any) -> Any:
         out_list = []
         for i, v in enumerate(obj):
             try:
-                out_list.append(_fast(v))
+                out_list.append(jsonable(v))
             except _NonFinite as exc:
                 exc.path.insert(0, i)
                 raise
         return out_list
     if hasattr(obj, "tolist"):  # numpy arrays and scalars
-        return _fast(obj.tolist())
+        return jsonable(obj.tolist())
     if isinstance(obj, bool) or obj is None or isinstance(obj, str):
         return obj
     if isinstance(obj, int):

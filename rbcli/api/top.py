@@ -11,14 +11,13 @@ line); errors are :class:`rbcli.errors.InputError` with the command line's messa
 from __future__ import annotations
 
 import math
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rbcli._startup import frozen
 from rbcli.api import options as op
 from rbcli.api.options import symmetry_tolerance
-from rbcli.api.result import Result
-from rbcli.errors import ExitStatus, InputError, Location, ParamError
+from rbcli.api.result import Result, jsonable
+from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
@@ -29,6 +28,10 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.topverify import RealBodyCheck, VerifyResult
     from rbcli.model import Body
 
+#: rows of the path's time series: the default and the most (``top --csv``)
+DEFAULT_SAMPLES = 600
+MAX_SAMPLES = 1_000_000
+
 #: standard gravity, m/s² (the default of ``g``)
 STANDARD_GRAVITY = 9.80665
 #: the Earth's sidereal rotation rate, rad/s (the default of ``earth_rate``)
@@ -36,14 +39,14 @@ EARTH_RATE = 7.2921150e-5
 #: nutation periods that ``verify`` integrates and that :meth:`TopResult.default_duration` spans
 PERIODS = 3
 
-_OVERFLOW = ("--spin, --theta-dot, --phi-dot, --g: the values overflow floating point in the "
+_OVERFLOW = ("{spin}, {theta_dot}, {phi_dot}, {g}: the values overflow floating point in the "
              "top's equations; give values of a physical size")
 
 
 # ----------------------------------------------------------------------------- top
 
 
-@frozen
+@dataclass(frozen=True)
 class TopOptions:
     """The heavy top's inputs, parsed and checked (SI), with where the pivot came from.
 
@@ -57,11 +60,15 @@ class TopOptions:
     pivot_source : str — where it came from: ``"--pivot"``, ``"--pivot com"``,
         ``"--pivot origin"``, ``"the body's pivot"`` or ``"the origin, as no pivot was given"``
     pivot_given : bool — the pivot was an option (errors about it then name ``--pivot``)
-    verify : bool — integrate numerically and compare (``--verify``)
+    verify : bool — integrate numerically and compare
+    duration : float or None — s, the span of the path's time series (None: three nutation
+        periods, :meth:`TopResult.default_duration`)
+    samples : int — rows of that series
     symmetry_tol : float — how far from symmetric about the pivot–com axis the body may be
         (a fraction; default 0.01): within it the answer is for the symmetrised body, with a
         warning; beyond it the body is refused
-    echo : tuple of (option, value, unit) — the options given, as understood (body's units)
+    pivot_as_given : "com", "origin", (3,) tuple or None — ``pivot`` as given (m)
+    given : tuple of str — the parameters the caller gave
     warnings : tuple of str — a pivot or a rim speed far outside the body's scale
     """
 
@@ -75,62 +82,82 @@ class TopOptions:
     pivot_given: bool = False
     verify: bool = False
     symmetry_tol: float = 0.01
-    echo: tuple[tuple[str, str, str], ...] = ()
+    pivot_as_given: Any = None
+    duration: float | None = None
+    samples: int = DEFAULT_SAMPLES
+    given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
               theta_dot: Any = None, phi_dot: Any = None, g: Any = None,
-              verify: bool = False, symmetry_tol: Any = None) -> TopOptions:
+              verify: bool = False, symmetry_tol: Any = None, duration: Any = None,
+              samples: Any = None) -> TopOptions:
         """Read and check the values (see :func:`top` for their meaning and units)."""
+        span, rows = series(duration, samples)
         if spin is None:
-            raise InputError("--spin: required: the spin w3 about the symmetry axis, e.g. --spin 150 (rad/s) or --spin '3000 rpm'",
+            raise InputError("{spin}: required: the spin w3 about the symmetry axis, e.g. {spin} 150 (rad/s) or {spin} '3000 rpm'",
                              param="spin")
         if theta is None:
-            raise InputError("--theta: required: the start tilt of the axis from the upward vertical, e.g. --theta 30 (degrees)",
+            raise InputError("{theta}: required: the start tilt of the axis from the upward vertical, e.g. {theta} 30 (degrees)",
                              param="theta")
         u = op.Units.of(body)
-        S = op.finite(u.quantity(spin, "angular_speed", "--spin"), "--spin")
+        S = op.finite(u.quantity(spin, "angular_speed", "spin"), "spin")
         if S == 0.0:
             raise ParamError("spin", "must not be 0: a top without spin is a spherical pendulum (it cannot "
-                             "stand); give the spin w3, e.g. --spin 150 or --spin '3000 rpm'")
-        th = op.finite(op.quantity(theta, "angle", "--theta", bare="deg"), "--theta")
+                             "stand); give the spin w3, e.g. {spin} 150 or {spin} '3000 rpm'")
+        th = op.finite(op.quantity(theta, "angle", "theta", bare="deg"), "theta")
         if not (0.0 < th < math.pi):
             raise ParamError(
                 "theta",
                 f"the start tilt must be strictly between 0 and 180 degrees, got {theta} "
                 "(at 0 or 180 the axis is vertical and the precession angle is undefined; start it "
-                "slightly tilted, e.g. --theta 0.1)"
+                "slightly tilted, e.g. {theta} 0.1)"
             )
         thd = 0.0 if theta_dot is None else op.finite(
-            u.quantity(theta_dot, "angular_speed", "--theta-dot"), "--theta-dot")
+            u.quantity(theta_dot, "angular_speed", "theta_dot"), "theta_dot")
         phd = 0.0 if phi_dot is None else op.finite(
-            u.quantity(phi_dot, "angular_speed", "--phi-dot"), "--phi-dot")
-        gv = STANDARD_GRAVITY if g is None else op.finite(u.quantity(g, "acceleration", "--g"), "--g")
+            u.quantity(phi_dot, "angular_speed", "phi_dot"), "phi_dot")
+        gv = STANDARD_GRAVITY if g is None else op.finite(u.quantity(g, "acceleration", "g"), "g")
         if not gv > 0.0:
             raise ParamError("g", f"gravity must be positive (it points down, towards -z), got {g}")
-        p_opt = u.point(pivot, "--pivot") if pivot is not None else None
+        p_opt = u.point(pivot, "pivot") if pivot is not None else None
         tol = symmetry_tolerance(symmetry_tol)
         P, label = _pivot(body, p_opt)
-        echo = []
-        if p_opt is not None:
-            echo.append(("--pivot", p_opt, "") if isinstance(p_opt, str) else u.echo("--pivot", p_opt, "length"))
-        echo.append(u.echo("--spin", S, "angular_speed"))
-        echo.append(u.echo("--theta", th, "angle"))
-        for opt, val, given, kind in (("--theta-dot", thd, theta_dot, "angular_speed"),
-                                      ("--phi-dot", phd, phi_dot, "angular_speed"),
-                                      ("--g", gv, g, "acceleration")):
-            if given is not None:
-                echo.append(u.echo(opt, val, kind))
-        warns = _plausibility(body, u, p_opt, S, "--pivot")
+        given = tuple(p for p, v in (("pivot", pivot), ("spin", spin), ("theta", theta),
+                                     ("theta_dot", theta_dot), ("phi_dot", phi_dot), ("g", g),
+                                     ("verify", verify or None), ("symmetry_tol", symmetry_tol))
+                      if v is not None)
+        warns = _plausibility(body, u, p_opt, S, "pivot")
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
                    pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
-                   echo=tuple(echo), warnings=warns)
+                   pivot_as_given=p_opt if isinstance(p_opt, str) or p_opt is None else tuple(p_opt),
+                   duration=span, samples=rows, given=given, warnings=warns)
 
     @property
     def released(self) -> bool:
         """Released from rest: θ0' = φ0' = 0."""
         return self.theta_dot == 0.0 and self.phi_dot == 0.0
+
+
+def series(duration: Any = None, samples: Any = None) -> tuple[float | None, int]:
+    """(duration, samples) of the path's time series (``top --csv``, ``--plot``): a positive
+    time in s (None: three nutation periods, :meth:`TopResult.default_duration`) and a
+    whole number of rows from 2 to :data:`MAX_SAMPLES` (default :data:`DEFAULT_SAMPLES`)."""
+    span = None
+    if duration is not None:
+        span = op.finite(op.quantity(duration, "time", "duration"), "duration")
+        if not span > 0.0:
+            raise ParamError("duration", f"must be a positive time, got {literal(duration)}")
+    rows = DEFAULT_SAMPLES
+    if samples is not None:
+        try:
+            rows = int(samples) if not isinstance(samples, (bool, float)) else None
+        except (TypeError, ValueError):
+            rows = None
+        if rows is None or not 2 <= rows <= MAX_SAMPLES:
+            raise ParamError("samples", f"must be from 2 to {MAX_SAMPLES}, got {literal(samples)}")
+    return span, rows
 
 
 def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str) -> tuple[str, ...]:
@@ -143,12 +170,13 @@ def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, optio
     sc = body_scale(body.parts)
     out = []
     if point is not None and not isinstance(point, str) and sc.far(point):
-        out.append(f"{body.source}: warning: " + u.far(option, "the pivot", sc.far(point), sc.size))
+        out.append(Note(f"{literal(body.source)}: warning: "
+                        + u.far(option, "the pivot", sc.far(point), sc.size).template))
     v = abs(spin) * sc.half_diagonal
     if SPEED_OF_SOUND < v < math.inf:
-        out.append(f"{body.source}: warning: --spin: the body's rim would move at {v:.4g} m/s, faster "
-                   f"than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                   f"{u.label('angular_speed')}: is a unit missing?")
+        out.append(Note(f"{literal(body.source)}: warning: {{spin}}: the body's rim would move at "
+                        f"{v:.4g} m/s, faster than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds "
+                        f"are in {u.label('angular_speed')}: is a unit missing?"))
     return tuple(out)
 
 
@@ -161,17 +189,17 @@ def _pivot(body: Body, p_opt: str | list[float] | None) -> tuple[tuple[float, fl
             P = body_mass_props(body).com
         else:
             P = (0.0, 0.0, 0.0)
-        label = f"--pivot {p_opt}"
+        label = f"{{pivot}} {p_opt}"
     elif p_opt is not None:
-        P, label = p_opt, "--pivot"
+        P, label = p_opt, "{pivot}"
     elif body.pivot is not None:
         P, label = body.pivot, "the body's pivot"
     else:
         P, label = (0.0, 0.0, 0.0), "the origin, as no pivot was given"
-    return tuple(float(x) for x in P), label  # type: ignore[return-value]
+    return tuple(float(x) for x in P), Note(label)  # type: ignore[return-value]
 
 
-@frozen
+@dataclass(frozen=True)
 class TopResult(Result):
     """The heavy top's motion from the given start, and the numerical check if asked for.
 
@@ -279,7 +307,7 @@ class TopResult(Result):
             out["verify"] = self.verify.to_json()
             if self.real_body is not None:
                 out["verify"]["real_body"] = self.real_body.to_json()
-        return out
+        return jsonable(out)
 
     @property
     def return_code(self) -> int:
@@ -331,16 +359,16 @@ def run(body: Body, options: TopOptions) -> TopResult:
             raise ParamError("verify", str(exc)) from None
     warnings = o.warnings
     if params.asymmetry is not None:
-        warnings += (f"{body.source}: warning: the body is not exactly symmetric about the pivot–com "
-                    f"axis: {params.asymmetry.percent()}; the answer is for the symmetrised body "
-                    f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+        warnings += (Note(f"{literal(body.source)}: warning: the body is not exactly symmetric about "
+                          f"the pivot–com axis: {params.asymmetry.percent()}; the answer is for the "
+                          f"symmetrised body ({{symmetry_tol}} {o.symmetry_tol * 100:g} %)"),)
     return TopResult(body=body, options=o, motion=motion, verify=check, real_body=real,
                      warnings=warnings)
 
 
 def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any = None,
         phi_dot: Any = None, g: Any = None, verify: bool = False,
-        symmetry_tol: Any = None) -> TopResult:
+        symmetry_tol: Any = None, duration: Any = None, samples: Any = None) -> TopResult:
     """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
     The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
@@ -376,6 +404,11 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
         (``0.01``) or a percentage (``"1 %"``), at most 10 %. Default 1 %. A body within it
         (and above rounding, 1e-6) is answered for its symmetrised form (the mean moment
         across) with a warning and ``asymmetry`` in the JSON; beyond it, refused.
+    duration : float or str, optional
+        The span of the path's time series (:meth:`TopResult.sample`, ``top --csv``): s or
+        with a unit. Default: three nutation periods.
+    samples : int, optional
+        Rows of that series, 2 to 1 000 000. Default 600.
 
     Returns
     -------
@@ -398,13 +431,14 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
     (0.142133, 'cusps')
     """
     return run(body, TopOptions.parse(body, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol))
+                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
+                                      duration=duration, samples=samples))
 
 
 # ----------------------------------------------------------------------------- gyrocompass
 
 
-@frozen
+@dataclass(frozen=True)
 class GyrocompassOptions:
     """The gyrocompass's inputs, parsed and checked (SI).
 
@@ -417,7 +451,8 @@ class GyrocompassOptions:
     latitude : float — rad, in [-π/2, π/2]
     earth_rate : float — rad/s, > 0
     symmetry_tol : float — how far from symmetric about its spin axis the body may be
-    echo : tuple of (option, value, unit) — the options given, as understood
+    axis_as_given : tuple[float, float, float] | None — ``axis`` as given (largest component ±1)
+    given : tuple of str — the parameters the caller gave
     warnings : tuple of str — a rim speed far outside the body's scale
     """
 
@@ -428,7 +463,8 @@ class GyrocompassOptions:
     latitude: float
     earth_rate: float
     symmetry_tol: float = 0.01
-    echo: tuple[tuple[str, str, str], ...] = ()
+    axis_as_given: tuple[float, float, float] | None = None
+    given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
@@ -437,39 +473,42 @@ class GyrocompassOptions:
               symmetry_tol: Any = None) -> GyrocompassOptions:
         """Read and check the values (see :func:`gyrocompass`)."""
         if spin is None:
-            raise InputError("--spin: required: the rotor's spin about its axis, e.g. --spin '6000 rpm'",
+            raise InputError("{spin}: required: the rotor's spin about its axis, e.g. {spin} '6000 rpm'",
                              param="spin")
         if latitude is None:
-            raise InputError("--latitude: required: the latitude in degrees, -90 to 90 (negative = south), "
-                             "e.g. --latitude 52", param="latitude")
+            raise InputError("{latitude}: required: the latitude in degrees, -90 to 90 (negative = south), "
+                             "e.g. {latitude} 52", param="latitude")
         u = op.Units.of(body)
-        S = op.finite(u.quantity(spin, "angular_speed", "--spin"), "--spin")
+        S = op.finite(u.quantity(spin, "angular_speed", "spin"), "spin")
         if S == 0.0:
             raise ParamError("spin", "must not be 0: a gyrocompass needs a spinning rotor")
-        lat = op.finite(op.quantity(latitude, "angle", "--latitude", bare="deg"), "--latitude")
+        lat = op.finite(op.quantity(latitude, "angle", "latitude", bare="deg"), "latitude")
         if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
             raise ParamError("latitude", f"must be from -90 to 90 degrees, got {latitude}")
         W = EARTH_RATE if earth_rate is None else op.finite(
-            u.quantity(earth_rate, "angular_speed", "--earth-rate"), "--earth-rate")
+            u.quantity(earth_rate, "angular_speed", "earth_rate"), "earth_rate")
         if not W > 0.0:
             raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
-        n_axis = op.direction(axis, "--axis") if axis is not None else None
+        n_axis = op.direction(axis, "axis") if axis is not None else None
         tol = symmetry_tolerance(symmetry_tol)
+        given = tuple(p for p, v in (("ratio", ratio), ("axis", axis), ("spin", spin),
+                                     ("latitude", latitude), ("earth_rate", earth_rate),
+                                     ("symmetry_tol", symmetry_tol)) if v is not None)
         r = None
         if ratio is not None:
-            r = op.finite(op.quantity(ratio, "dimensionless", "--ratio"), "--ratio")
+            r = op.finite(op.quantity(ratio, "dimensionless", "ratio"), "ratio")
             if not r > 0.0:
                 raise ParamError("ratio", f"C/A must be positive, got {ratio}")
             if body is not None:
-                raise ParamError("ratio", "give either --ratio or a body (BODY or -e), not both")
+                raise ParamError("ratio", "give either {ratio} or a body (BODY or -e), not both")
             if n_axis is not None:
-                raise ParamError("axis", "the axis belongs to a body; with --ratio there is no body")
+                raise ParamError("axis", "the axis belongs to a body; with {ratio} there is no body")
             return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
-                       symmetry_tol=tol, echo=_gyro_echo(u, r, None, S, lat, W, earth_rate))
+                       symmetry_tol=tol, given=given)
         if body is None:
-            raise InputError("no rotor given: name a BODY file, use -e '{...}', or give --ratio C/A")
+            raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
         if n_axis is not None:
-            n, src = n_axis, "--axis"
+            n, src = n_axis, "{axis}"
         elif body.shaft is not None:
             n, src = body.shaft.axis, "the body's shaft"
         else:
@@ -478,13 +517,12 @@ class GyrocompassOptions:
 
         v = np.asarray(n, dtype=float)
         unit = tuple(float(x) for x in v / np.linalg.norm(v))
-        return cls(ratio=None, axis=unit, axis_source=src, spin=S, latitude=lat,  # type: ignore[arg-type]
-                   earth_rate=W, symmetry_tol=tol,
-                   echo=_gyro_echo(u, None, n_axis, S, lat, W, earth_rate),
-                   warnings=_plausibility(body, u, None, S, "--spin"))
+        return cls(ratio=None, axis=unit, axis_source=Note(src), spin=S, latitude=lat,  # type: ignore[arg-type]
+                   earth_rate=W, symmetry_tol=tol, axis_as_given=None if n_axis is None else tuple(n_axis),
+                   given=given, warnings=_plausibility(body, u, None, S, "spin"))
 
 
-@frozen
+@dataclass(frozen=True)
 class GyrocompassResult(Result):
     """The gyrocompass's swing about north.
 
@@ -539,20 +577,7 @@ class GyrocompassResult(Result):
             if self.asymmetry is not None:
                 out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
             out["name"] = self.body.name
-        return out
-
-
-def _gyro_echo(u: op.Units, r, n_axis, S, lat, W, earth_rate) -> tuple[tuple[str, str, str], ...]:
-    rows = []
-    if r is not None:
-        rows.append(("--ratio", f"{r:.6g}", "C/A"))
-    if n_axis is not None:
-        rows.append(("--axis", u.show(n_axis, "dimensionless"), "direction"))
-    rows.append(u.echo("--spin", S, "angular_speed"))
-    rows.append(u.echo("--latitude", lat, "angle"))
-    if earth_rate is not None:
-        rows.append(u.echo("--earth-rate", W, "angular_speed"))
-    return tuple(rows)
+        return jsonable(out)
 
 
 def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
@@ -571,19 +596,20 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
         try:
             rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
         except ValueError as exc:
-            raise InputError(f"{exc}; spin axis from {o.axis_source}", Location(body.source)) from None
+            raise InputError(f"{literal(exc)}; spin axis from {o.axis_source.template}",
+                             Location(body.source)) from None
         C, A, mass = rotor.C, rotor.A, rotor.mass
         r = C / A
     try:
         swing = core.gyrocompass(r, o.spin, o.latitude, o.earth_rate)
     except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
-        who = ["--ratio" if body is None else body.source, "--spin", "--earth-rate"]
+        who = ["{ratio}" if body is None else literal(body.source), "{spin}", "{earth_rate}"]
         raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
     warnings = o.warnings
     if body is not None and rotor.asymmetry is not None:
-        warnings += (f"{body.source}: warning: the rotor is not exactly symmetric about its spin axis: "
-                    f"{rotor.asymmetry.percent()}; the answer is for the symmetrised rotor "
-                    f"(--symmetry-tol {o.symmetry_tol * 100:g} %)",)
+        warnings += (Note(f"{literal(body.source)}: warning: the rotor is not exactly symmetric about "
+                          f"its spin axis: {rotor.asymmetry.percent()}; the answer is for the "
+                          f"symmetrised rotor ({{symmetry_tol}} {o.symmetry_tol * 100:g} %)"),)
     return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass,
                              asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
 

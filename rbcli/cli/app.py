@@ -38,7 +38,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "examples": ("catalog", "List the bundled example bodies, or print one."),
     "balance": ("balance", "Rotor balance about a shaft: unbalance, two-plane corrections, "
                            "bearing forces, ISO 21940-11."),
-    "field-balance": ("balance", "Field (trial-weight) balancing from vibration readings: the "
+    "field-balance": ("fieldbalance", "Field (trial-weight) balancing from vibration readings: the "
                                  "influence-coefficient method."),
     "rollcheck": ("rollcheck", "Stability of a wheel, disk or hoop rolling on a rough floor: the "
                                "critical speed."),
@@ -48,6 +48,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
                    "sleeping."),
     "gyrocompass": ("top", "A gyrocompass: the period of its swing about north and where it "
                            "settles."),
+    "whirl": ("whirl", "The rotor on its bearings: critical speeds, Campbell diagram, unbalance "
+                       "response."),
     "report": ("report", "One document with every answer that applies to the body, its tables "
                          "and figures."),
 }

@@ -67,9 +67,7 @@ def balance(
     from rbcli.errors import InputError
     from rbcli.render import balance as rb
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    su = rb.ShopUnits(units)
+    e, out, su = c.start(json_, fmt, units, shop=True)
     b = c.load_one(body, expr, e)
     o = api.BalanceOptions.parse(
         b, shaft=shaft, through=through, mark=mark, zero_mark_deg=zero_mark_deg,
@@ -100,9 +98,12 @@ def balance(
                  ("--speed", speed), ("--grade", grade)]
         applied = _apply(res, out_path, apply, b, given)
     for w in res.warnings:
-        e.warn(f"rbcli: warning: {w}")
+        e.warn(f"rbcli: warning: {c.said(w)}")
+    from rbcli.render.units import echo_rows
+
     c.emit(e, out, lambda: _json(res, applied),
-           lambda doc: rb.document(doc, res, su, digits, applied=applied), given=o.echo)
+           lambda doc: rb.document(doc, res, su, digits, applied=applied),
+           given=echo_rows(o, b, rb.OPTIONS))
     c.finish(res.return_code)
 
 
@@ -127,7 +128,7 @@ def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
     pts = [NewPoint(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
                     a.mass, a.at) for a in res.added]
     fr = res.installed
-    if res.positions is not None:
+    if res.position_split is not None:
         state = "correction masses at the positions" + (" (rounded)" if fr.rounded else "")
     else:
         state = "rounded correction masses" if fr.rounded else "correction masses"
@@ -247,105 +248,5 @@ MANUAL["balance"] = {
          "The polar diagram: per plane the unbalance as given, the 8.5 g and 12.5 g to add and the residual."),
         ("rbcli balance examples/car_wheel.yaml --planes=-100,100mm --mass-step '5 g' --apply wheel_balanced.yaml",
          "Writes the wheel with its two 45 g weights; 'rbcli balance wheel_balanced.yaml' shows the residual."),
-    ],
-}
-
-
-# ----------------------------------------------------------------------------- field balancing
-
-FIELD_HELP = """Field (trial-weight) balancing from vibration readings: the influence-coefficient method.
-
-Readings are amplitude@phase, the phase in degrees from the keyphasor: all bare numbers
-('6.0@30', one relative scale: the corrections do not depend on it) or all with units of one
-kind, converted exactly: displacement µm, mm, mil ('40 um@30'), velocity mm/s, in/s
-('6 mm/s@30') or acceleration g (standard gravity), m/s² ('0.5 g@30'). Mixed kinds, unknown
-units and a mix of bare and unit readings are refused. Trial masses are mass@angle
-('10 g@0'; a bare mass is in grams). One plane: --initial V0, one --trial T and one --run V1
-(with the trial on) give H = (V1 - V0)/T and the correction W = -V0/H (trial removed; with it
-left on, add W - T). Two planes: two sensors per run (--initial V1,V2), --trial twice (planes
-A and B) and --run twice (trial A on, then trial B on and A removed, or left on with
---cumulative) give the 2x2 influence matrix and W = -alpha^-1 V0, with its condition number
-(a warning above 50) and a warning for a trial that changed no reading by 25 % or 25°. The
-correction angles are counted in the same sense as the trial angles and the phases (they
-must agree). --trial-radius and --radius (m unless a unit is given) move the corrections to
-another radius (m = m_trial r_trial / r). --plot FILE draws the polar diagram.
-"""
-
-@app.command("field-balance", help=FIELD_HELP)
-def field_balance(
-    initial: str = typer.Option(..., "--initial", help="Readings without trial: amplitude@phase, one per sensor (1 or 2), e.g. '6.0@30', '6 mm/s@30' or '170@112,53@78' (all bare, or all with units of one kind: µm, mm, mil; mm/s, in/s; g, m/s²).", show_default=False),
-    trial: list[str] = typer.Option(..., "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (give it twice for two planes; a bare mass is in grams).", show_default=False),
-    run_: list[str] = typer.Option(..., "--run", help="Readings with each trial on, in the order of --trial (same form as --initial).", show_default=False),
-    cumulative: bool = typer.Option(False, "--cumulative", help="Two planes: trial A was left on during the run with trial B."),
-    trial_radius: str = typer.Option(None, "--trial-radius", help="Radius the trials sat at (m, or with units); with --radius.", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Radius the corrections go at (m, or with units); needs --trial-radius.", show_default=False),
-    plot: str = typer.Option(None, "--plot", help="Write the polar diagram of the balancing sheet (png, svg or pdf): per sensor the readings O, O+T and the trial's effect; per plane the trial and the correction mass.", show_default=False),
-    json_: bool = c.JsonOpt,
-    fmt: str = c.FormatOpt,
-    digits: int = c.DigitsOpt,
-    units: str = c.UnitsOpt,
-) -> None:
-    from rbcli.api import fieldbalance as api
-    from rbcli.render import balance as rb
-
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    su = rb.ShopUnits(units)
-    plot_path = c.check_plot(plot) if plot is not None else None
-    o = api.FieldBalanceOptions.parse(None, initial=initial, trial=trial, run=run_,
-                                      cumulative=cumulative, trial_radius=trial_radius, radius=radius)
-    res = api.run(None, o)
-    if plot_path is not None:
-        from rbcli.render import balanceplot
-
-        reading = rb.READING_DISPLAY.get(res.reading_kind, (1.0, ""))
-        c.save_plot(balanceplot.plot(res.diagram(), su, reading), plot_path)
-    for w in res.warnings:
-        e.warn(f"rbcli: warning: {w}")
-    c.emit(e, out, res.to_json, lambda doc: rb.field_document(doc, res, su, digits))
-
-
-MANUAL["field-balance"] = {
-    "notes": [
-        "Physics notes balance.md §5: readings are complex numbers V = amplitude e^{i phase}; "
-        "trials T = mass e^{i angle}. One plane: H = (V1 - V0)/T, W = -V0/H (trial removed), "
-        "W - T with the trial left on; the predicted residual V0 + H W is 0 in the linear model. "
-        "Two planes, two sensors: alpha_iA = (V_iA - V_i0)/T_A, alpha_iB = (V_iB - V_i0)/T_B "
-        "(V_iB - V_iA with --cumulative), W = -alpha^-1 V0. Warnings: cond(alpha) > 50 (planes "
-        "not well separated), a trial run that changed no reading by 25 % in amplitude or 25° "
-        "in phase (use a larger trial).",
-        "The trial angles and the phases must be counted in the same sense; the correction "
-        "angles come out in that sense. Correction masses (kg in JSON, g in tables) are scaled "
-        "by --trial-radius / --radius when given.",
-        "Readings and units: all readings (--initial and every --run) are either bare numbers, "
-        "one relative scale (the corrections do not depend on it; JSON readings.kind "
-        "'relative'), or all carry units of one kind, converted exactly to SI: displacement "
-        "(µm, um, mm, mil = 25.4 µm; JSON in m), velocity (mm/s, in/s, m/s; m/s) or "
-        "acceleration (g = standard gravity 9.80665 m/s², m/s²; m/s²). Influence coefficients "
-        "are then per kg in SI and the tables show µm, mm/s or m/s² per g. Refused (exit 2), "
-        "naming the readings found: readings of two kinds, a mix of bare and unit readings, an "
-        "unknown unit or one that is not a vibration reading. A trial mass needs no unit: a "
-        "bare mass is in grams ('10@0' = '10 g@0'), as balancing sheets write it; --trial-radius "
-        "and --radius are metres unless a unit is given.",
-        "--plot FILE (png, svg or pdf) draws the balancing sheet's polar diagram: per sensor the "
-        "reading O without trial, each run O+T and the change T the trial made (from O's tip to "
-        "O+T's), and per plane the trial mass and the correction to add; angles as given, 0° on "
-        "the right, counterclockwise.",
-    ],
-    "json": [
-        ("planes", "1 or 2."),
-        ("corrections", "[{name, mass (kg), angle_deg, mass_trial_on, angle_trial_on_deg, radius (m or null)}]; trial removed, and with that plane's trial left on."),
-        ("influence", "[[{magnitude (per kg: the readings' SI unit, m, m/s or m/s^2, or their relative scale), angle_deg}]] row = sensor, column = plane."),
-        ("cond, det_magnitude", "2-norm condition number and |det| of the influence matrix (two planes)."),
-        ("readings", "{kind: relative, displacement, velocity or acceleration; unit: null, m, m/s or m/s^2}: what the reading numbers (influence, predicted_residual) are in."),
-        ("small_response, predicted_residual, cumulative, warnings", "checks as in the notes."),
-    ],
-    "examples": [
-        ("rbcli field-balance --initial '6.0 mm/s@30' --trial '10 g@0' --run '4.0 mm/s@110'",
-         "One plane: H = 0.660794 (mm/s)/g at 173.406°, add 9.07998 g at 36.594° (trial removed)."),
-        ("rbcli field-balance --initial '6 mm@30' --trial '10 g@0' --run '4000 um@110' --plot sheet.png",
-         "Displacement readings in mm and µm, converted: the same 9.08 g at 36.594°, and the polar diagram."),
-        ("rbcli field-balance --initial '170@112,53@78' --trial '1.15 g@0' --run '235@94,58@68' --trial '1.15 g@0' --run '185@115,77@104'",
-         "The B&K two-plane example: 1.979 g at 236.2° and 1.071 g at 121.8°, cond 2.70."),
     ],
 }

@@ -45,6 +45,39 @@ UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 from rbcli.cli.app import debug  # noqa: E402,F401  (lives in app: main() needs it first)
 
 
+def said(x: object) -> str:
+    """A warning (:class:`rbcli.errors.Note`) or an error as the command line says it:
+    parameters spelled as options (``--radius``); anything else as ``str``."""
+    from rbcli.errors import RbcliError, option_name, spelled
+
+    if isinstance(x, RbcliError):
+        return x.spelled(option_name)
+    return spelled(x, option_name) if isinstance(x, str) else str(x)
+
+
+def said_json(data: Any) -> Any:
+    """A JSON document with its warnings and remarks (:class:`rbcli.errors.Note`) spelled as
+    the command line says them (the API's ``to_json()`` names parameters, ``--json`` options)."""
+    from rbcli.errors import option_name, spelled_data
+
+    return spelled_data(data, option_name)
+
+
+def start(json_: bool, fmt: str | None, units: str | None, *, shop: bool = False,
+          extra: tuple[str, ...] = ()):
+    """What every command does first: (the environment, the output format, the table units).
+
+    The output format from ``--json``/``--format`` (:func:`output_format`, ``extra`` formats
+    allowed), the units of the tables from ``--units`` (:class:`rbcli.render.units.DisplayUnits`,
+    or the balance tables' :class:`~rbcli.render.units.ShopUnits` with ``shop``). Bad values
+    are one line, exit 2, before any body is read."""
+    from rbcli.render.units import DisplayUnits, ShopUnits
+
+    e = env()
+    out = output_format(json_, fmt, extra)
+    return e, out, ShopUnits(units) if shop else DisplayUnits.parse(units)
+
+
 def env():
     from rbcli.env import Env
 
@@ -90,7 +123,7 @@ def load(source: str, expr: str | None, e: Any):
             gc.enable()
     gc.freeze()
     for w in body.warnings:
-        e.warn(f"rbcli: {w}")
+        e.warn(f"rbcli: {said(w)}")
     return body
 
 
@@ -217,7 +250,12 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     if fmt == "json":
         from rbcli.render.jsonout import dumps
 
-        e.write(dumps(data_fn(), lines=lines, plain=plain))
+        data = data_fn()
+        if not plain:
+            from rbcli.api.result import jsonable
+
+            data = jsonable(data)
+        e.write(dumps(said_json(data), lines=lines))
         return
     from rbcli.render.text import Doc
 

@@ -73,7 +73,7 @@ def inertia(
     elif principal_:
         raise InputError(f"--principal applies to --format urdf, sdf or mjcf, not to {out}")
     e = c.env()
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits
 
     du = DisplayUnits.parse(units)
     from rbcli.api import massprops as api
@@ -102,7 +102,7 @@ def _run(bodies, expr, e, one, sep: str = "") -> None:
         if isinstance(body, InputError):
             if len(srcs) == 1:
                 raise body
-            e.warn(f"rbcli: {body}")
+            e.warn(f"rbcli: {c.said(body)}")
             failed = True
             continue
         try:
@@ -113,7 +113,7 @@ def _run(bodies, expr, e, one, sep: str = "") -> None:
         except InputError as exc:
             if len(srcs) == 1:
                 raise
-            e.warn(f"rbcli: {src}: {exc}")
+            e.warn(f"rbcli: {src}: {c.said(exc)}")
             failed = True
     if failed:
         c.finish(2)
@@ -122,11 +122,12 @@ def _run(bodies, expr, e, one, sep: str = "") -> None:
 def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
+    from rbcli.render.units import echo_rows
 
     opts = api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega)
     res = api.run_inertia(body, opts)
     for w in res.warnings:
-        e.warn(f"rbcli: {body.source}: warning: {w}")
+        e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
     if out in ROBOT_FORMATS:
         from rbcli.render import robot
 
@@ -135,7 +136,8 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
         return
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
-           file=body.source if many else None, given=opts.echo, plain=True)
+           file=body.source if many else None, given=echo_rows(opts, body, r.INERTIA_OPTIONS),
+           plain=True)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -149,11 +151,7 @@ def principal(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    out = c.output_format(json_, fmt)
-    e = c.env()
-    from rbcli.render.fmt import DisplayUnits
-
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
     from rbcli.api import massprops as api
 
     api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
@@ -166,12 +164,13 @@ def principal(
 def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None = None) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
+    from rbcli.render.units import echo_rows
 
     plot_path = c.check_plot(plot, body) if plot is not None else None
     opts = api.PrincipalOptions.parse(body, about=about)
     res = api.run_principal(body, opts)
     for w in res.warnings:
-        e.warn(f"rbcli: {body.source}: warning: {w}")
+        e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
     if plot_path is not None:
         from rbcli.render.bodyplot import body_figure
 
@@ -181,7 +180,8 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
         c.save_plot(fig, plot_path)
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
-           file=body.source if many else None, given=opts.echo, plain=True)
+           file=body.source if many else None, given=echo_rows(opts, body, r.PRINCIPAL_OPTIONS),
+           plain=True)
 
 
 MANUAL["inertia"] = {

@@ -73,11 +73,8 @@ def precess(
 ) -> None:
     from rbcli.api import precess as api
     from rbcli.errors import InputError
-    from rbcli.render.fmt import DisplayUnits
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
 
     # --- option values, checked before the body is read (bad usage is bad usage)
     opts = api.PrecessOptions.parse(None, omega=omega, at=at, duration=duration, samples=samples,
@@ -103,7 +100,7 @@ def precess(
 
     result = api.run(b, opts)
     for w in opts.warnings:
-        e.warn(f"rbcli: {b.source}: warning: {w}")
+        e.warn(f"rbcli: {b.source}: warning: {c.said(w)}")
     csv_info = None
     if csv is not None:
         csv_info = {"file": csv, "samples": opts.samples or api.DEFAULT_SAMPLES, "duration": opts.duration}
@@ -124,9 +121,11 @@ def precess(
         return out
 
     if csv != "-":  # with --csv - the time series is the output
+        from rbcli.render.units import echo_rows
+
         c.emit(e, out, data, lambda doc: rp.document(
             doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None),
-               given=opts.echo)
+               given=echo_rows(opts, b, rp.OPTIONS))
     c.finish(result.return_code)
 
 

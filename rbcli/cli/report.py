@@ -16,7 +16,8 @@ its SHA-256, rbcli version, date), a parts table with each part's contribution, 
 properties (as `inertia`), principal axes (as `principal`) with a picture of the
 equivalent ellipsoid and box, and - where the body file or the options give what they
 need - balance (the body's shaft, or --shaft, --planes, --bearings, --grade or a rotation
---speed), free precession (--omega), the heavy top (the body's pivot or --pivot, with
+--speed), the rotor on its bearings (--stiffness with --bearings: critical speeds, Campbell
+diagram, unbalance response, as `whirl`), free precession (--omega), the heavy top (the body's pivot or --pivot, with
 --spin and --theta) and rolling stability (a rim radius or a round part). A section that does not apply, or cannot be computed for this
 body, says why in one line. The same input gives the same bytes when SOURCE_DATE_EPOCH
 is set. Exit status 1 when a check asked for fails (--grade, rolling at --speed); the
@@ -36,7 +37,9 @@ def report(
     radius: str = typer.Option(None, "--radius", help="Balance: correction radius r, or rA,rB (a bare number in the body's length unit, m by default; or with units as for --planes). Default: the body's rim_radius.", show_default=False),
     bearings: str = typer.Option(None, "--bearings", help="Balance: bearing positions z1,z2 along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
     grade: str = typer.Option(None, "--grade", help="Balance: ISO 21940-11 grade, e.g. G6.3; needs an angular --speed and --bearings.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="With a unit: an angular speed ('3000 rpm', rad/s) is the balance rotor speed and the rolling spin; a speed ('20 km/h', m/s) is the rolling speed.", show_default=False),
+    speed: str = typer.Option(None, "--speed", help="With a unit: an angular speed ('3000 rpm', rad/s) is the balance rotor speed, the whirl operating speed and the rolling spin; a speed ('20 km/h', m/s) is the rolling speed.", show_default=False),
+    stiffness: str = typer.Option(None, "--stiffness", help="Whirl: the bearings' stiffness (N/m, or with units, e.g. '200 N/mm'), one value for every bearing or one per --bearings position; the report then has a whirl section (critical speeds, Campbell diagram, unbalance response).", show_default=False),
+    damping: str = typer.Option(None, "--damping", help="Whirl: the bearings' damping (N s/m, or with units), one value or one per bearing. Default: none.", show_default=False),
     omega: str = typer.Option(None, "--omega", help="Free precession: initial angular velocity x,y,z, body frame (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
     pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot; without either there is no top section.", show_default=False),
     spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (rad/s, or e.g. '3000 rpm').", show_default=False),
@@ -52,7 +55,7 @@ def report(
 ) -> None:
     import time
 
-    from rbcli.api import report as api
+    from rbcli.documents import write_report
     from rbcli.errors import InputError
 
     t0 = time.monotonic()
@@ -60,22 +63,19 @@ def report(
     if output is None:
         raise InputError("-o/--output: required: the report file, e.g. -o report.html or -o report.md")
     b = c.load_one(body, expr, e)
-    fmt, out, files_dir = api.check_output(output, b, force=force)
-    opts = api.ReportOptions.parse(
-        b, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings, grade=grade,
-        speed=speed, omega=omega, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-        phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol,
-        digits=digits, units=units,
-    )
     progress = _Progress(t0)
     try:
-        result = api.run(b, opts, progress.step)
-        progress.step("writing")
-        api.write(result, out, fmt, files_dir, force=force)
+        result = write_report(
+            b, output, force=force, digits=digits, units=units, progress=progress.step,
+            shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
+            grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega,
+            pivot=pivot, spin=spin, theta=theta,
+            theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius,
+            g=g, symmetry_tol=symmetry_tol)
     finally:
         progress.stop()
     if result.failed:
-        e.warn(f"rbcli: {out}: written; a check failed: {'; '.join(result.failed)}")
+        e.warn(f"rbcli: {output}: written; a check failed: {'; '.join(c.said(f) for f in result.failed)}")
     c.finish(result.return_code)
 
 
@@ -153,11 +153,13 @@ MANUAL["report"] = {
         "(as rbcli inertia: about the body's reference point, else the origin, and about the com), "
         "principal axes (as rbcli principal, about the com) with a figure of the equivalent "
         "uniform ellipsoid and box and the principal axes (a 3-D view and views from +z, -y and "
-        "+x at one scale), balance, free precession, heavy top and rolling stability. The tables "
+        "+x at one scale), balance, whirl, free precession, heavy top and rolling stability. The tables "
         "are the same as the commands print (--digits, --units).",
         "When a section is in the report: balance when the body file has a shaft or one of "
         "--shaft, --planes, --bearings, --grade or a rotation --speed is given (the shaft "
-        "defaults as in rbcli balance); free precession with --omega; heavy top when the body "
+        "defaults as in rbcli balance); whirl (as rbcli whirl, with its default speed range) when "
+        "--stiffness is given, with --bearings, an optional --damping and an angular --speed as "
+        "the operating speed; free precession with --omega; heavy top when the body "
         "file has a pivot or --pivot is given, and --spin and --theta are given; rolling "
         "stability when the body has a rim_radius, --rim-radius is given or a part is round "
         "(ring, disk, cylinder, ...). Otherwise the report says why in one line, and so it does "

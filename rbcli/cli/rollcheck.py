@@ -54,7 +54,7 @@ def rollcheck(
 ) -> None:
     from rbcli.api.rollcheck import RollcheckOptions, run
     from rbcli.render import rollcheck as rr
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import DisplayUnits
 
     e = c.env()
     out = c.output_format(json_, fmt)
@@ -75,7 +75,7 @@ def rollcheck(
 
     c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables, given=opts.echo)
     for w in res.warnings:  # after the output: a result that cannot be printed says only that
-        e.warn(f"rbcli: {res.source}: warning: {w}")
+        e.warn(f"rbcli: {res.source}: warning: {c.said(w)}")
     c.finish(res.return_code)
 
 

@@ -35,9 +35,6 @@ T = 2 pi/w0 (undamped). C/A is the axial moment over the moment about the vertic
 body's shaft axis, else body z), both moments about its centre of mass.
 """
 
-#: most rows --csv (and points --plot) will compute
-MAX_SAMPLES = 1_000_000
-
 #: the body options and the spin, shared by top and gyrocompass (the spin's help differs)
 _SPIN = "Required. {what} (rad/s, or the body's units' angular_speed; or e.g. '{eg}'); negative = the other way."
 
@@ -50,7 +47,7 @@ def _spin_opt(what: str, eg: str):
 
 def _warn(e, result) -> None:
     for w in result.warnings:
-        e.warn(f"rbcli: {w}")
+        e.warn(f"rbcli: {c.said(w)}")
 
 
 @app.command(help=HELP)
@@ -76,25 +73,17 @@ def top(
 ) -> None:
     from rbcli.api import top as api
     from rbcli.errors import InputError
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import echo_rows
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    du = DisplayUnits.parse(units)
-    # the output options (the command line's own), checked before the body is read
-    dur = None
-    if duration is not None:
-        dur = c.finite(c.quantity(duration, "time", "--duration"), "--duration")
-        if not dur > 0.0:
-            raise InputError(f"--duration: must be a positive time, got {duration}")
-    if not 2 <= samples <= MAX_SAMPLES:
-        raise InputError(f"--samples: must be from 2 to {MAX_SAMPLES}, got {samples}")
+    e, out, du = c.start(json_, fmt, units)
+    api.series(duration, samples)  # bad values: one line, before the body is read
     if csv == "-" and out != "table":
         raise InputError(f"--csv -: the CSV would go to standard output together with --{'json' if json_ else 'format ' + out}; write it to a file")
 
     b = c.load_one(body, expr, e)
     opts = api.TopOptions.parse(b, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol)
+                                phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
+                                duration=duration, samples=samples)
     plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
     r = api.run(b, opts)
     _warn(e, r)
@@ -103,13 +92,13 @@ def top(
 
     span = None
     if plot_path is not None or csv is not None:
-        span = dur if dur is not None else r.default_duration()
+        span = opts.duration if opts.duration is not None else r.default_duration()
     if plot_path is not None:
         c.save_plot(rt.plot(r, r.sample(span), span), plot_path)
     if csv is not None:
         from rbcli.render.csvout import times
 
-        c.write_csv(e, csv_path, rt.CSV_HEADER, (rt.csv_block(r.at(t)) for t in times(span, samples)))
+        c.write_csv(e, csv_path, rt.CSV_HEADER, (rt.csv_block(r.at(t)) for t in times(span, opts.samples)))
         if csv_path is None:  # '-': standard output, instead of the tables
             c.finish(r.return_code)
             return
@@ -119,12 +108,13 @@ def top(
         if plot_path is not None:
             out["plot"] = str(plot_path)
         if csv is not None:
-            out["csv"] = {"file": csv, "rows": samples, "duration": span}
+            out["csv"] = {"file": csv, "rows": opts.samples, "duration": span}
         return out
 
     c.emit(e, out, data, lambda doc: rt.document(
         doc, r, du, digits, plot=str(plot_path) if plot_path is not None else None, csv=csv,
-        rows=samples if csv is not None else None, duration=span), given=opts.echo)
+        rows=opts.samples if csv is not None else None, duration=span),
+           given=echo_rows(opts, b, rt.TOP_OPTIONS))
     c.finish(r.return_code)
 
 
@@ -159,18 +149,17 @@ def gyrocompass(
 ) -> None:
     from rbcli.api import top as api
     from rbcli.render import top as rt
-    from rbcli.render.fmt import DisplayUnits
+    from rbcli.render.units import echo_rows
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
     b = c.load_one(body, expr, e) if body is not None or expr is not None else None
     opts = api.GyrocompassOptions.parse(b, ratio=ratio, axis=axis, spin=spin, latitude=latitude,
                                         earth_rate=earth_rate, symmetry_tol=symmetry_tol)
     r = api.run_gyrocompass(b, opts)
     _warn(e, r)
     c.emit(e, out, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
-           lambda doc: rt.gyro_document(doc, r, du, digits), given=opts.echo)
+           lambda doc: rt.gyro_document(doc, r, du, digits),
+           given=echo_rows(opts, b, rt.GYRO_OPTIONS))
 
 
 # ----------------------------------------------------------------------------- manual

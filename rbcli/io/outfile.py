@@ -43,11 +43,17 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import IO
 
-from rbcli.errors import InputError
+from rbcli.errors import InputError, literal
 from rbcli.model import Body
 
 _TMP_PREFIX = ".rbcli-"
 _TMP_SUFFIX = ".tmp"
+
+
+def _opt(option: str) -> str:
+    """How a message names the output: an option as typed (``"--plot"``), or a parameter
+    (``"output"``) as a message template's ``{output}`` (:func:`rbcli.errors.spell`)."""
+    return option if option.startswith(("-", "{")) else "{" + option + "}"
 
 
 def _is_file(source: str) -> bool:
@@ -119,33 +125,34 @@ def check(
         the run, a folder, a folder that does not exist, or an existing file without
         ``force`` when ``replace_ok`` is False.
     """
+    option = _opt(option)
     text = os.fspath(path)
     if "\x00" in text:
         raise InputError(f"{option}: the file name contains a NUL character")
     _probe(text, option)
     p = Path(text)
     if not text or text.endswith(("/", os.sep)) or p.is_dir():
-        raise InputError(f"{option}: '{text}' is a folder; give a file name")
+        raise InputError(f"{option}: '{literal(text)}' is a folder; give a file name")
     inputs = input_files(body_or_inputs)
     if is_input(p, inputs):
-        raise InputError(f"{option}: '{text}' is an input file; rbcli never overwrites its inputs")
+        raise InputError(f"{option}: '{literal(text)}' is an input file; rbcli never overwrites its inputs")
     if exts is not None:
         allowed = _ext_list(exts)
         if p.suffix.lower() not in allowed:
             raise InputError(
-                f"{option}: cannot tell the format of '{text}' from its extension; use one of "
+                f"{option}: cannot tell the format of '{literal(text)}' from its extension; use one of "
                 + ", ".join(allowed)
             )
     for other, opath in (others or {}).items():
         if opath is not None and os.path.realpath(opath) == os.path.realpath(p):
-            raise InputError(f"{option}: '{text}' is also the {other} file; give two different files")
+            raise InputError(f"{option}: '{literal(text)}' is also the {other} file; give two different files")
     parent = p.parent
     if not parent.exists():
-        raise InputError(f"{option}: the folder '{parent}' does not exist")
+        raise InputError(f"{option}: the folder '{literal(parent)}' does not exist")
     if not parent.is_dir():
-        raise InputError(f"{option}: '{parent}' is not a folder")
+        raise InputError(f"{option}: '{literal(parent)}' is not a folder")
     if _kind(p, option) is not None and not (force or replace_ok):
-        raise InputError(f"{option}: '{text}' exists; use --force to replace it")
+        raise InputError(f"{option}: '{literal(text)}' exists; use --force to replace it")
     return p
 
 
@@ -178,7 +185,7 @@ def _kind(path: str | Path, option: str) -> os.stat_result | None:
     except FileNotFoundError:
         return None
     except (OSError, ValueError) as exc:
-        raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+        raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
     mode = st.st_mode
     if stat.S_ISREG(mode):
         return st
@@ -192,7 +199,7 @@ def _kind(path: str | Path, option: str) -> os.stat_result | None:
         what = "a FIFO (named pipe), not a regular file; rbcli writes only regular files"
     else:
         what = "not a regular file; rbcli writes only regular files"
-    raise InputError(f"{option}: '{text}' is {what}")
+    raise InputError(f"{option}: '{literal(text)}' is {what}")
 
 
 def _reason(exc: BaseException) -> str:
@@ -348,7 +355,7 @@ def _commit(tmp: str, path: str, option: str, replace: bool) -> None:
     try:
         rename_noreplace(tmp, path)
     except FileExistsError:
-        raise InputError(f"{option}: '{path}' exists; use --force to replace it") from None
+        raise InputError(f"{option}: '{literal(path)}' exists; use --force to replace it") from None
 
 
 def _remove(tmp: str | None) -> None:
@@ -386,6 +393,7 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
         a full disk), ``option: 'path' exists; use --force ...`` (``replace`` False), or
         ``option: 'path' is a device ...`` (found at write time).
     """
+    option = _opt(option)
     text = os.fspath(path)
     if "\x00" in text:
         raise InputError(f"{option}: the file name contains a NUL character")
@@ -408,7 +416,7 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
         with _held_signals():  # a second Ctrl-C cannot stop the cleanup halfway
             _remove(tmp)
         if isinstance(exc, OSError):
-            raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+            raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
         raise
 
 
@@ -447,35 +455,36 @@ def check_folder(folder: str | Path, body_or_inputs: Body | Iterable[str] | None
         (exit 2, one line naming ``option``).
     """
     folder = Path(folder)
+    option = _opt(option)
     text = os.fspath(folder)
     real = os.path.realpath(folder)
     for inp in input_files(body_or_inputs):
         if inp == real or inp.startswith(real + os.sep):
-            raise InputError(f"{option}: '{text}' (for the figures) holds an input file; "
+            raise InputError(f"{option}: '{literal(text)}' (for the figures) holds an input file; "
                              "rbcli never overwrites its inputs")
     try:
         st = os.lstat(text)
     except FileNotFoundError:
         return folder
     except OSError as exc:
-        raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+        raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
     if stat.S_ISLNK(st.st_mode):
-        raise InputError(f"{option}: '{text}' (for the figures) is a symbolic link; rbcli never "
+        raise InputError(f"{option}: '{literal(text)}' (for the figures) is a symbolic link; rbcli never "
                          "writes through a link: remove it or choose another -o name")
     if not stat.S_ISDIR(st.st_mode):
-        raise InputError(f"{option}: '{text}' (for the figures) exists and is not a folder")
+        raise InputError(f"{option}: '{literal(text)}' (for the figures) exists and is not a folder")
     if not force:
-        raise InputError(f"{option}: '{text}' exists; use --force to replace it")
+        raise InputError(f"{option}: '{literal(text)}' exists; use --force to replace it")
     try:
         entries = list(os.scandir(text))
     except OSError as exc:
-        raise InputError(f"{option}: cannot read the folder '{text}': {_reason(exc)}") from None
+        raise InputError(f"{option}: cannot read the folder '{literal(text)}': {literal(_reason(exc))}") from None
     for entry in entries:
         if entry.is_dir(follow_symlinks=False):
-            raise InputError(f"{option}: '{text}' holds the folder '{entry.name}', which rbcli did "
+            raise InputError(f"{option}: '{literal(text)}' holds the folder '{entry.name}', which rbcli did "
                              "not write; move it away to replace the report")
         if is_input(entry.path, input_files(body_or_inputs)):
-            raise InputError(f"{option}: '{text}' holds an input file ('{entry.name}'); rbcli never "
+            raise InputError(f"{option}: '{literal(text)}' holds an input file ('{entry.name}'); rbcli never "
                              "overwrites its inputs")
     return folder
 
@@ -497,6 +506,7 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
     InputError
         ``option: cannot write ...``, ``option: '...' exists; use --force ...``.
     """
+    option = _opt(option)
     text = os.fspath(path)
     if not files:
         write_atomic(text, data, option, replace=replace)
@@ -557,7 +567,7 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
                 shutil.rmtree(stage, ignore_errors=True)
             _remove(doc_tmp)
         if isinstance(exc, OSError):
-            raise InputError(f"{option}: cannot write '{text}': {_reason(exc)}") from None
+            raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
         raise
 
 

@@ -186,6 +186,8 @@ KINDS: dict[str, Dim] = {
     "torque": Dim(M=1, L=2, T=-2),
     "angular_momentum": Dim(M=1, L=2, T=-1),
     "energy": Dim(M=1, L=2, T=-2),
+    "stiffness": Dim(M=1, T=-2),
+    "damping": Dim(M=1, T=-1),
 }
 
 # How a kind is named in messages, and units to suggest for it.
@@ -210,6 +212,8 @@ _KIND_NOUN: dict[str, str] = {
     "torque": "a torque",
     "angular_momentum": "an angular momentum",
     "energy": "an energy",
+    "stiffness": "a stiffness",
+    "damping": "a damping coefficient",
 }
 KIND_EXAMPLES: dict[str, str] = {
     "dimensionless": "2.5",
@@ -232,6 +236,8 @@ KIND_EXAMPLES: dict[str, str] = {
     "torque": "N*m, lbf*in",
     "angular_momentum": "kg*m^2/s, N*m*s",
     "energy": "J, N*m",
+    "stiffness": "N/m, N/mm, lbf/in",
+    "damping": "N*s/m, N*s/mm, lbf*s/in",
 }
 # The noun for a dimension found in the input (first match wins; torque = energy).
 _DIM_NOUN: dict[Dim, str] = {

@@ -1,4 +1,5 @@
-"""Tables of ``rbcli balance`` and ``rbcli field-balance`` (the JSON is the result's own).
+"""Tables of ``rbcli balance`` (the JSON is the result's own; ``field-balance``'s tables are
+:mod:`rbcli.render.fieldbalance`).
 
 Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
 correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
@@ -13,61 +14,26 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.fmt import num, said
+from rbcli.render.units import RPM, ShopUnits
 from rbcli.render.text import Doc
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.balance import BalanceResult, FieldBalanceResult
+    from rbcli.api.balance import BalanceResult
     from rbcli.core import balance as B
 
-RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
-SQUARE = "²"
 
 
-# ----------------------------------------------------------------------------- units
-
-
-class ShopUnits:
-    """Display units of the balance tables (JSON is always SI)."""
-
-    def __init__(self, spec: str | None) -> None:
-        if not spec:
-            self.length = (1e-3, "mm")
-            self.mass = (1e-3, "g")
-            self.rotor = (1.0, "kg")
-            self.ecc = (1e-6, "µm")
-        else:
-            du = DisplayUnits.parse(spec)
-            self.length = du.length
-            self.mass = du.mass
-            self.rotor = du.mass
-            self.ecc = du.length
-        m, L = self.mass[1], self.length[1]
-        self._kinds: dict[str, tuple[float, str]] = {
-            "length": self.length,
-            "mass": self.mass,
-            "rotor_mass": self.rotor,
-            "eccentricity": self.ecc,
-            "unbalance": (self.mass[0] * self.length[0], f"{m}·{L}"),
-            "couple": (self.mass[0] * self.length[0] ** 2, f"{m}·{L}{SQUARE}"),
-            "force": (1.0, "N"),
-            "torque": (1.0, "N·m"),
-            "angular_momentum": (1.0, "kg·m²/s"),
-            "grade": (1e-3, "mm/s"),
-            "acceleration": (1.0, "m/s²"),
-        }
-
-    def unit(self, kind: str) -> str:
-        return self._kinds[kind][1]
-
-    def factor(self, kind: str) -> float:
-        """SI per display unit of ``kind``."""
-        return self._kinds[kind][0]
-
-    def show(self, x: float | None, kind: str, digits: int) -> str:
-        if x is None:
-            return "—"
-        return num(float(x) / self._kinds[kind][0], digits)
+#: the "options" table of ``balance`` (:func:`rbcli.render.units.echo_rows`)
+OPTIONS = (
+    ("shaft", "shaft", "direction"), ("through", "through", "point"), ("mark", "mark", "direction"),
+    ("zero_mark_deg", "zero_mark_deg", "deg"), ("angle_sense", "angle_sense", "text"),
+    ("planes", "planes", "length"), ("radius", "radius", "length"), ("mass_step", "mass_step", "mass"),
+    ("angle_step", "angle_step", "deg"), ("positions", "positions", "count"),
+    ("speed", "speed", "angular_speed"), ("bearings", "bearings", "length"),
+    ("g", "g", "acceleration"), ("grade", "grade", "grade"),
+    ("tolerance_planes", "tolerance_planes", "text"),
+)
 
 
 def angle(value: float, defined: bool, digits: int) -> str:
@@ -102,7 +68,7 @@ def frame_sentence(r: BalanceResult) -> str | None:
         return None
     return (
         f"shaft frame (body components): z = {_vec(fr.rotation[2])} along the shaft; "
-        f"x = {_vec(fr.rotation[0])}, the 0° mark ({r.mark_source}); "
+        f"x = {_vec(fr.rotation[0])}, the 0° mark ({said(r.mark_source)}); "
         f"y = z × x = {_vec(fr.rotation[1])}"
     )
 
@@ -117,19 +83,19 @@ def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,
     doc.heading(f"{r.body.name}  ({r.body.source})")
     fr = u.frame
     doc.note(
-        f"shaft: {_vec(fr.axis)} ({r.shaft_source}) through {_vec(np.asarray(fr.origin) / su.length[0])} "
-        f"{su.unit('length')} ({r.through_source}); positions z along the shaft from that point"
+        f"shaft: {_vec(fr.axis)} ({said(r.shaft_source)}) through {_vec(np.asarray(fr.origin) / su.length[0])} "
+        f"{su.unit('length')} ({said(r.through_source)}); positions z along the shaft from that point"
     )
     fs = frame_sentence(r)
     if fs:
         doc.note(fs)
-    doc.note(r.angle_convention)
+    doc.note(said(r.angle_convention))
     _unbalance(doc, r, su, digits)
     if r.installed is not None:
         _corrections(doc, r, su, digits)
-    if r.bearings is not None or r.speed is not None:
+    if r.bearing_positions is not None or r.speed is not None:
         _bearings(doc, r, su, digits)
-    if r.iso is not None:
+    if r.iso_check is not None:
         _iso(doc, r, su, digits)
     if applied is not None:
         doc.note(
@@ -173,7 +139,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
     ideal = r.ideal
     assert ideal is not None
     L, m = su.unit("length"), su.unit("mass")
-    rounded = r.positions is None and final.rounded
+    rounded = r.position_split is None and final.rounded
     how = ""
     if rounded:
         steps = []
@@ -187,25 +153,25 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         cols += [f"ideal mass [{m}]", "ideal angle [°]"]
     cols += [f"mass [{m}]", "angle [°]", "remove at [°]", f"unbalance [{su.unit('unbalance')}]"]
     rows = []
-    pairs = zip(ideal.pair, final.pair) if r.positions is None else zip(ideal.pair, ideal.pair)
+    pairs = zip(ideal.pair, final.pair) if r.position_split is None else zip(ideal.pair, ideal.pair)
     for pi, pc in pairs:
         row = [pc.name, su.show(pc.z, "length", digits), su.show(pc.radius, "length", digits)]
         if rounded:
             row += [mag(su, pi.mass, pi.angle_defined, "mass", digits), angle(pi.angle_deg, pi.angle_defined, digits)]
         row += [
-            mag(su, pc.mass, pc.angle_defined or pc.mass > 0 and r.positions is None and final.rounded, "mass", digits),
+            mag(su, pc.mass, pc.angle_defined or pc.mass > 0 and r.position_split is None and final.rounded, "mass", digits),
             angle(pc.angle_deg, pc.angle_defined, digits),
             angle(pc.remove_angle_deg, pc.angle_defined, digits),
             mag(su, abs(pc.unbalance), pc.angle_defined, "unbalance", digits),
         ]
         rows.append(row)
     doc.table(
-        f"two-plane correction: masses to add{how} (radius from {r.radius_source})",
+        f"two-plane correction: masses to add{how} (radius from {said(r.radius_source)})",
         cols,
         rows,
         right=tuple(range(1, len(cols))),
     )
-    st = (final if r.positions is None else ideal).static
+    st = (final if r.position_split is None else ideal).static
     if st.angle_defined:
         doc.note(
             f"single-plane (static) correction: {su.show(st.mass, 'mass', digits)} {m} at "
@@ -214,8 +180,8 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         )
     else:
         doc.note("single-plane (static) correction: none (the rotor is statically balanced)")
-    if r.positions is not None:
-        p = r.positions
+    if r.position_split is not None:
+        p = r.position_split
         prow = []
         for pc, sp in zip(ideal.pair, p.splits):
             for mass, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
@@ -233,7 +199,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         )
     res = final.residual
     tol = res.tol_static
-    which = "the masses at the positions" if r.positions is not None else (
+    which = "the masses at the positions" if r.position_split is not None else (
         "the rounded corrections" if final.rounded else "the corrections")
     s_ang = r.unbalance.angle_of(res.static, tol)
     c_ang = r.unbalance.angle_of(res.couple, res.tol_couple)
@@ -248,8 +214,8 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
             (f"residual in plane {name} (z = {su.show(z, 'length', digits)} {L})",
              mag(su, abs(uu), r.unbalance.angle_of(uu, res.tol_plane)[1], "unbalance", digits), su.unit("unbalance"))
         )
-    if r.corrected is not None:
-        c = r.corrected
+    if r.corrected_unbalance is not None:
+        c = r.corrected_unbalance
         rrows += [
             ("tilt of the nearest principal axis", num(c.tilt_deg if c.tilt_azimuth_defined else 0.0, digits), "°"),
             ("statically balanced", yes(c.statically_balanced), ""),
@@ -262,7 +228,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
     f = r.forces
     assert f is not None
     L = su.unit("length")
-    if r.bearings is not None:
+    if r.bearing_positions is not None:
         has_speed = r.speed is not None
         cols = ["bearing", f"z [{L}]"]
         if has_speed:
@@ -271,7 +237,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
                 cols += ["after correction [N]"]
         cols += ["static load [N]"]
         rows = []
-        for i, z in enumerate(r.bearings):
+        for i, z in enumerate(r.bearing_positions):
             row = [str(i + 1), su.show(z, "length", digits)]
             if has_speed:
                 F = f.forces[i]
@@ -313,7 +279,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
 
 
 def _iso(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
-    iso = r.iso
+    iso = r.iso_check
     assert iso is not None
     U = su.unit("unbalance")
     L = su.unit("length")
@@ -376,64 +342,3 @@ def _iso(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
 def after_words(iso: B.IsoCheck) -> str:
     """What the ISO prediction assumes is fitted: the corrections, rounded or not."""
     return "the rounded corrections" if iso.after_state == "after rounded corrections" else "the corrections"
-
-
-# ----------------------------------------------------------------------------- field balancing
-
-
-#: how the tables show readings of each kind: (SI per display unit, display unit)
-READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
-
-
-def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
-    """The tables of ``rbcli field-balance`` (from the result's finished numbers)."""
-    d = res.to_json()
-    m = su.unit("mass")
-    n = d["planes"]
-    doc.heading(f"field balancing, {'one plane' if n == 1 else 'two planes, two sensors'} (influence coefficients)")
-    doc.note(
-        "angles in degrees, counted in the same sense as the trial angles and the phase readings "
-        "(they must agree); a correction is a mass to add"
-    )
-    names = ["A", "B"][:n]
-    kind = d["readings"]["kind"]
-    scale, ru = READING_DISPLAY.get(kind, (1.0, ""))
-    if ru:
-        doc.note(f"readings: {kind}, shown in {ru} (JSON: SI, {d['readings']['unit']})")
-    rows = []
-    for i, row in enumerate(d["influence"]):
-        cells = [str(i + 1)]
-        for a in row:
-            per = a["magnitude"] * su.mass[0] / scale  # reading per display mass unit
-            cells += [num(per, digits), num(a["angle_deg"], digits)]
-        rows.append(cells)
-    cols = ["sensor"]
-    for name in names:
-        cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
-    title = ("influence coefficients (reading per unit trial mass)" if not ru
-             else f"influence coefficients ({ru} per {m})")
-    doc.table(title, cols, rows, right=tuple(range(1, len(cols))))
-    crow = []
-    for c in d["corrections"]:
-        crow.append([c["name"], su.show(c["mass"], "mass", digits), num(c["angle_deg"], digits),
-                     su.show(c["mass_trial_on"], "mass", digits), num(c["angle_trial_on_deg"], digits)])
-    radii = res.radii
-    where = "" if radii is None else (
-        f" at radius {su.show(radii[1], 'length', digits)} {su.unit('length')} (trials at "
-        f"{su.show(radii[0], 'length', digits)} {su.unit('length')})")
-    doc.table(
-        f"corrections to add{where}",
-        ["plane", f"mass [{m}]", "angle [°]", f"trial left on: add [{m}]", "angle [°]"],
-        crow,
-        right=(1, 2, 3, 4),
-    )
-    if n == 2:
-        doc.note(
-            f"condition number of the influence matrix {num(d['cond'], 4)}"
-            + (" (ill-conditioned: the planes are not well separated)" if d["ill_conditioned"] else "")
-            + ("; trial A left on during run B (--cumulative)" if d["cumulative"] else "")
-        )
-    doc.note(
-        "predicted residual reading after the corrections (linear model, 0 up to round-off): "
-        + ", ".join(num(v / scale, 3) for v in d["predicted_residual"]) + (f" {ru}" if ru else "")
-    )

@@ -52,13 +52,15 @@ def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
     from rbcli.render.plots import figure
 
     n = len(diagram.panels)
-    fig, axes = figure(diagram.title.replace("$", r"\$"), ncols=n, size=(3.8 * n, 5.4))
+    cols = n if n <= 4 else 4  # a field job's many readings: rows of four dials
+    rows = -(-n // cols)
+    fig, axes = figure(diagram.title.replace("$", r"\$"), nrows=rows, ncols=cols, size=(3.8 * cols, 5.4 * rows))
     for ax in axes.flat:
         fig.delaxes(ax)
     m_unit = su.unit("mass")
     m_scale = su.factor("mass")
     for k, panel in enumerate(diagram.panels):
-        ax = fig.add_subplot(1, n, k + 1, projection="polar")
+        ax = fig.add_subplot(rows, cols, k + 1, projection="polar")
         ax.set_theta_zero_location("E")
         ax.set_theta_direction(-1 if diagram.angle_sense == "against" else 1)
         scale, unit = _units(panel, su, reading)

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits
+from rbcli.render.units import DisplayUnits
 
 #: (title, index of the horizontal body axis, index of the vertical one, sign of the third
 #: axis toward the viewer)

@@ -1,10 +1,13 @@
 """The one CSV writer of rbcli's time series (``top --csv``, ``precess --csv``).
 
 A header line, then one row per time; every number is Python's shortest round-trip
-``repr`` (reads back exactly, the same bytes every run), with no negative zeros, made for
-whole blocks at once by :mod:`rbcli.render.shortest`. Rows
-come in blocks (2-D arrays) so that millions of rows never sit in memory at once. The
-cli sends them to a file (atomically, rbcli.io.outfile) or to standard output.
+``repr`` (reads back exactly, the same bytes every run), with no negative zeros. Rows come
+in blocks (2-D arrays) so that millions of rows never sit in memory at once. The cli sends
+them to a file (atomically, rbcli.io.outfile) or to standard output.
+
+Plain ``repr`` (~0.5 µs a number) is the goal's measure: 10^5 rows within 2x Python's csv
+module writing ``repr`` floats (bench/csv_rows.py); a vectorised shortest-digits formatter
+once saved 0.38 s on a 22 MB CSV and was retired (issue 23).
 """
 
 from __future__ import annotations
@@ -27,18 +30,13 @@ def times(duration: float, samples: int, chunk: int = CHUNK) -> Iterator[np.ndar
 def rows_text(block: np.ndarray) -> str:
     """The CSV lines of a (rows, columns) block, each ending in a newline.
 
-    Every number is ``repr`` of the float (shortest round trip), with no negative zeros:
-    the same bytes as ``",".join(map(repr, row))`` per row. CPython's own ``repr`` costs
-    ~0.5 µs a number; :func:`rbcli.render.shortest.csv_text` makes the same text for the
-    whole block with numpy (~0.2 µs a number; NaN, infinities and subnormals through
-    ``repr``).
+    Every number is ``repr`` of the float (shortest round trip), with no negative zeros.
     """
-    from rbcli.render.shortest import csv_text
-
     a = np.asarray(block, dtype=float) + 0.0  # + 0.0: no negative zeros
     if a.ndim != 2:
         raise ValueError(f"a CSV block is 2-D (rows, columns), not {a.shape}")
-    return csv_text(a)
+    fmt = ",".join(["%r"] * a.shape[1]) + "\n"
+    return "".join([fmt % row for row in map(tuple, a.tolist())])
 
 
 def write(sink: Callable[[str], object], header: Sequence[str], blocks: Iterable[np.ndarray]) -> int:

@@ -12,7 +12,8 @@ import numpy as np
 from typing import TYPE_CHECKING, Any
 
 from rbcli.model import Body
-from rbcli.render.fmt import DisplayUnits, num, snap
+from rbcli.render.fmt import num, snap
+from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
@@ -70,6 +71,13 @@ def _matrix(doc: Doc, title: str, J, du: DisplayUnits, digits: int, products: st
     rows = [[a] + [num(J[i, j] * f, digits) for j in range(3)] for i, a in enumerate(AXES)]
     doc.table(f"{title} [{unit}]", ("", "x", "y", "z"), rows, right=(1, 2, 3))
     doc.note("(the tensor: off-diagonal entries are −∫xy dm; --products positive shows +∫xy dm)")
+
+
+#: the "options" table of ``inertia`` and ``principal``: (parameter, options attribute, how)
+#: rows for :func:`rbcli.render.units.echo_rows`
+INERTIA_OPTIONS = (("about", "about", "point"), ("axis", "axis", "direction"),
+                   ("omega", "omega", "angular_speed"))
+PRINCIPAL_OPTIONS = (("about", "about", "point"),)
 
 
 def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, products: str,

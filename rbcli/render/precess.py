@@ -10,7 +10,11 @@ import numpy as np
 from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
 from rbcli.model import Body
-from rbcli.render.fmt import DisplayUnits, num, snap
+from rbcli.render.fmt import num, snap
+from rbcli.render.units import DisplayUnits
+
+#: the "options" table of ``precess`` (:func:`rbcli.render.units.echo_rows`)
+OPTIONS = (("omega", "omega", "angular_speed"), ("at", "at", "time"), ("duration", "duration", "time"))
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text

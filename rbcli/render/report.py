@@ -25,7 +25,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.fmt import num
+from rbcli.render.units import DisplayUnits
 from rbcli.render.text import Doc, Heading, Note, Table
 
 

@@ -10,7 +10,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.fmt import num
+from rbcli.render.units import DisplayUnits
 from rbcli.render.text import Doc
 from rbcli.render.top import asymmetry_note
 
@@ -18,7 +19,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.rollcheck import RollcheckResult
     from rbcli.core.rolling import Curves
 
-RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
+from rbcli.render.units import RPM  # noqa: E402
 
 
 # ----------------------------------------------------------------------------- tables

@@ -15,28 +15,29 @@ import shutil
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from rbcli._startup import frozen
+from dataclasses import dataclass
+
 from rbcli.env import clean
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.env import Env
 
 
-@frozen
+@dataclass(frozen=True)
 class Heading:
     """A heading line."""
 
     text: str
 
 
-@frozen
+@dataclass(frozen=True)
 class Note:
     """A paragraph of text."""
 
     text: str
 
 
-@frozen
+@dataclass(frozen=True)
 class Table:
     """A titled table of text cells; ``right`` are the right-aligned columns."""
 
@@ -79,30 +80,15 @@ class Doc:
         self.table(title, ("quantity", "value", "unit"), rows, right=(1,))
 
     def render(self) -> str:
-        """The document for a terminal or a pipe: plain ASCII tables without colour when not
-        a terminal, rich's tables with colour on one.
-
-        Without colour every item that fits the width in single-cell characters is laid out
-        here (:func:`_plain`), byte for byte as rich lays it out (tests/test_render_text.py
-        compares the two on generated documents): rich costs ~0.2 ms a table row, which a
-        100 000-part body's parts table would spend for minutes. Anything else (a line to
-        wrap, a wide or zero-width character, colour) is rich's.
-        """
+        """The document for a terminal or a pipe (rich's tables): plain ASCII tables without
+        colour when not a terminal, with colour on one."""
         env = self.env
         color = bool(env and env.color)
         width = env.width if env and env.width else None
         if width is None:
             width = shutil.get_terminal_size((100, 24)).columns if env and env.stdout_isatty else _columns()
-        out: list[str] = []
-        rich_print = None
-        for item in self.items:
-            text = None if color else _plain(item, width)
-            if text is None:
-                if rich_print is None:
-                    rich_print = _rich_printer(color, width)
-                text = rich_print(item)
-            out.append(text)
-        return "".join(out)
+        rich_print = _rich_printer(color, width)
+        return "".join(rich_print(item) for item in self.items)
 
 
 def _rich_printer(color: bool, width: int):
@@ -152,63 +138,6 @@ def _rich_printer(color: bool, width: int):
         return buf.getvalue()
 
     return render
-
-
-def _single_cells(text: str) -> bool:
-    """Whether every character of ``text`` takes one terminal cell (as rich counts them):
-    printable ASCII, or a character that is neither wide, combining nor a control/format."""
-    if text.isascii():
-        return text.isprintable()
-    import unicodedata
-
-    for ch in text:
-        if ch.isascii():
-            if not ch.isprintable():
-                return False
-        elif (unicodedata.east_asian_width(ch) in ("W", "F") or unicodedata.combining(ch)
-              or unicodedata.category(ch) in ("Mn", "Me", "Mc", "Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")):
-            return False
-    return True
-
-
-def _plain(item, width: int) -> str | None:
-    """``item`` as rich prints it without colour (box ASCII2, no edge, no edge padding,
-    title left-justified above), or None when rich would do more than this: wrap a line or a
-    cell, or count a character as other than one cell."""
-    if isinstance(item, (Heading, Note)):
-        lines = clean(item.text, keep_newlines=True, max_line=None).split("\n")
-        for line in lines:
-            if len(line) > width or not _single_cells(line):
-                return None
-        return "\n".join(lines) + "\n"
-    cols = [clean(c) for c in item.columns]
-    n = len(cols)
-    rows = [[clean(x) for x in r] for r in item.rows]
-    if n == 0 or any(len(r) != n for r in rows):
-        return None
-    widths = [len(c) for c in cols]
-    for r in rows:
-        for i, x in enumerate(r):
-            if len(x) > widths[i]:
-                widths[i] = len(x)
-    total = sum(widths) + 3 * (n - 1)
-    title = clean(item.title)
-    if 0 in widths or total > width or len(title) > total:
-        return None
-    if not all(_single_cells(x) and x == x.strip(" ") for x in (title, *cols)) or not all(
-            _single_cells("".join(r)) and all(x == x.strip(" ") for x in r) for r in rows):
-        return None  # rich strips a cell's edge spaces before it justifies it
-    right = set(item.right)
-    just = [str.rjust if i in right else str.ljust for i in range(n)]
-
-    def line(cells) -> str:
-        return " | ".join([just[i](x, widths[i]) for i, x in enumerate(cells)])
-
-    out = [title.ljust(total)] if title else []
-    out.append(line(cols))
-    out.append("-+-".join(["-" * w for w in widths]))
-    out.extend(line(r) for r in rows)
-    return "\n".join(out) + "\n"
 
 
 def _columns() -> int:

@@ -12,14 +12,15 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rbcli.render.fmt import DisplayUnits, num
+from rbcli.render.fmt import num, said
+from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
     from rbcli.api.top import GyrocompassResult, TopResult
     from rbcli.core.top import TopState
 
-RPM = 60.0 / (2.0 * math.pi)  # rad/s -> rev/min
+from rbcli.render.units import RPM  # noqa: E402
 EPS = float(np.finfo(float).eps)
 
 PATHS = {
@@ -32,6 +33,15 @@ PATHS = {
 
 
 # ----------------------------------------------------------------------------- tables
+
+
+#: the "options" tables of ``top`` and ``gyrocompass`` (:func:`rbcli.render.units.echo_rows`)
+TOP_OPTIONS = (("pivot", "pivot_as_given", "point"), ("spin", "spin", "angular_speed"),
+               ("theta", "theta", "angle"), ("theta_dot", "theta_dot", "angular_speed"),
+               ("phi_dot", "phi_dot", "angular_speed"), ("g", "g", "acceleration"))
+GYRO_OPTIONS = (("ratio", "ratio", "=C/A"), ("axis", "axis_as_given", "direction"),
+                ("spin", "spin", "angular_speed"), ("latitude", "latitude", "angle"),
+                ("earth_rate", "earth_rate", "angular_speed"))
 
 
 def _deg(x: float | None, digits: int) -> str:
@@ -64,7 +74,7 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
     doc.kv("top", rows)
     piv = ", ".join(du.show(x, "length", d) for x in (p.pivot or (0.0, 0.0, 0.0)))
     ax = ", ".join(num(x, d) for x in (p.axis or (0.0, 0.0, 1.0)))
-    doc.note(f"pivot [{piv}] {L} ({result.options.pivot_source}); symmetry axis, pivot to com, along [{ax}] "
+    doc.note(f"pivot [{piv}] {L} ({said(result.options.pivot_source)}); symmetry axis, pivot to com, along [{ax}] "
              "(body frame).")
     if result.asymmetry is not None:
         asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
@@ -305,7 +315,7 @@ def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits:
             ("A, across the spin axis", du.show(result.A, "inertia", d), J),
             ("C/A", num(res.C_over_A, d), ""),
         ])
-        doc.note(f"spin axis [{', '.join(num(x, d) for x in result.options.axis)}] ({result.options.axis_source}).")
+        doc.note(f"spin axis [{', '.join(num(x, d) for x in result.options.axis)}] ({said(result.options.axis_source)}).")
         if result.asymmetry is not None:
             asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
                             du, d, "rotor", "A")

@@ -113,6 +113,21 @@ def cases() -> dict[str, list[list[str]]]:
         "--run", "4.0 mm/s@110", "--json")
     add("field-balance", "error-mixed-units", "--initial", "6 mm@30", "--trial", "10 g@0", "--run",
         "4.0 mm/s@110")
+    # field-balance beyond one reading per plane (issue 25): a job file, least squares,
+    # min-max, a trial mass sized, display units
+    goodman = ["--initial", "1@0,1@180,0@0", "--trial", "1@0", "--run", "4@0,4@0,5@0", "--trial", "1@0",
+               "--run", "1@180,3@180,3@180"]
+    add("field-balance", "job-fan", "examples/jobs/fan.yaml")
+    add("field-balance", "job-fan-json", "examples/jobs/fan.yaml", "--json")
+    add("field-balance", "goodman-least-squares", *goodman)
+    add("field-balance", "goodman-least-squares-json", *goodman, "--json")
+    add("field-balance", "goodman-min-max", *goodman, "--method", "min-max")
+    add("field-balance", "suggest-trial", "--suggest-trial", "--rotor-mass", "120 kg", "--speed",
+        "1480 rpm", "--trial-radius", "250 mm")
+    add("field-balance", "units-in-oz", "--initial", "2 mil@30", "--trial", "1 oz@0", "--run",
+        "1.5 mil@110", "--units", "in,oz")
+    add("field-balance", "error-measure-mix", "--initial", "6 mm/s rms@30", "--trial", "10 g@0",
+        "--run", "4 mm/s@110")
     add("precess", "book", "examples/book.yaml", "--omega", "0.01,1,0.01")
     add("precess", "book-at-json", "examples/book.yaml", "--omega", "0.01,1,0.01", "--at", "1e9", "--json")
     add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5")
@@ -153,6 +168,31 @@ def cases() -> dict[str, list[list[str]]]:
     add("precess", "book-csv", "examples/book.yaml", "--omega", "0.01,1,0.01", "--format", "csv")
     add("rollcheck", "bicycle-csv", "examples/bicycle_wheel.yaml", "--speed", "5 km/h", "--format", "csv")
     add("rollcheck", "error-format", "examples/penny.yaml", "--format", "xml")
+    # whirl (issue 26): the physics sheet's worked examples, the README's fan, bad input
+    cyl = "{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}"
+    disk = "{shape: cylinder, radius: 0.3, length: 0.05, mass: 100}"
+    fan = ["examples/fan_rotor.yaml", "--bearings", "0,500mm", "--stiffness", "5 N/um", "--damping",
+           "1 N*s/mm", "--speed", "1480 rpm", "--speed-range", "0,3000 rpm", "--orders", "1,2"]
+    add("whirl", "sheet-cylinder", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6")
+    add("whirl", "sheet-cylinder-json", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6",
+        "--points", "11", "--json")
+    add("whirl", "sheet-disk", "-e", disk, "--bearings=-0.1,0.1", "--stiffness", "2e6", "--orders", "1,2")
+    add("whirl", "fan", *fan)
+    add("whirl", "fan-json", *fan, "--points", "31", "--json")
+    add("whirl", "fan-csv", *fan, "--format", "csv")
+    add("whirl", "fan-fail", *fan[:-6], "--speed", "1800 rpm")
+    add("whirl", "fan-anisotropic-planes", "examples/fan_rotor.yaml", "--bearings", "0,500", "--stiffness",
+        "5e6,4e6", "--stiffness-y", "8e6", "--damping", "800", "--speed", "1200,1600 rpm", "--unbalance",
+        "50 g*mm@0,30 g*mm@120", "--unbalance-planes", "710,800", "--units", "mm,kg")
+    add("whirl", "unstable", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--cross-stiffness",
+        "1e5", "--damping", "100", "--speed", "150")
+    add("whirl", "error-one-bearing", "-e", cyl, "--bearings", "0.1", "--stiffness", "1e6")
+    add("whirl", "error-one-place", "-e", cyl, "--bearings", "0.1,0.1", "--stiffness", "1e6")
+    add("whirl", "error-negative-stiffness", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness=-1e6")
+    add("whirl", "error-empty-range", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6",
+        "--speed-range", "1000,1000 rpm")
+    add("whirl", "error-not-a-range", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6",
+        "--speed-range", "3000,0 rpm")
     add("shapes", "all")
     add("shapes", "cylinder", "cylinder")
     add("shapes", "mesh", "mesh")

@@ -1,4 +1,9 @@
-"""Field (trial-weight) balancing by influence coefficients, one or two planes (sheet §5)."""
+"""Field (trial-weight) balancing by influence coefficients, one or two planes (sheet §5).
+
+The one- and two-plane solves of ``rbcli field-balance`` as it always was (their outputs
+are golden); any number of planes and readings is :mod:`rbcli.core.balance.fieldsolve`,
+which does the same arithmetic for these two cases.
+"""
 
 from __future__ import annotations
 
@@ -15,8 +20,12 @@ from rbcli.core.balance.common import (
 )
 
 
-def _small_response(v0: complex, v1: complex) -> bool:
-    """Rule of thumb (sheet §5.1): small unless amplitude changed >= 25 % or phase >= 25 deg."""
+def small_response(v0: complex, v1: complex) -> bool:
+    """Whether a trial changed a reading too little to trust its influence coefficient.
+
+    Rule of thumb (sheet §5.1; ACOEM, "Balancing How To #2 - Selecting a Proper Trial
+    Weight", asks for 30 %): small unless the amplitude changed by >= 25 % or the phase by
+    >= 25 deg."""
     a0, a1 = abs(v0), abs(v1)
     if a0 == 0.0:
         return a1 == 0.0
@@ -99,7 +108,7 @@ def field_single_plane(v0: complex, v1: complex, trial: complex) -> FieldSingleP
     H = (V1 - V0) / T
     W = -V0 / H
     Won = W - T
-    small = _small_response(V0, V1)
+    small = small_response(V0, V1)
     warns = []
     if small:
         warns.append(
@@ -208,8 +217,8 @@ def field_two_plane(
     W = np.linalg.solve(alpha, -V0)
     cond = float(np.linalg.cond(alpha))
     small = (
-        all(_small_response(V0[i], VA[i]) for i in range(2)),
-        all(_small_response(refB[i], VB[i]) for i in range(2)),
+        all(small_response(V0[i], VA[i]) for i in range(2)),
+        all(small_response(refB[i], VB[i]) for i in range(2)),
     )
     warns = []
     if cond > FIELD_COND_WARN:

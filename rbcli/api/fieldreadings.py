@@ -1,0 +1,262 @@
+"""How field-balancing readings and trial masses are read: ``"6 mm/s rms@30"``, ``"10 g@0"``.
+
+A reading is ``amplitude [unit] [measure]@phase``: the amplitude a number, bare (one
+relative scale for every reading) or with a unit of vibration converted exactly to SI —
+displacement (µm, um, mm, mil = 25.4 µm, m), velocity (mm/s, in/s, m/s) or acceleration
+(``g`` = standard gravity 9.80665 m/s², m/s²) — optionally followed by its measure
+``pk``, ``pk-pk`` or ``rms`` (also ``peak``, ``0-pk``, ``p-p``, ``pp``); the phase in
+degrees (or with an angle unit). A trial mass is ``mass@angle``; a bare mass is grams,
+as balancing sheets write it, and there ``g`` is the gram — in a reading it is gravity.
+
+Messages name the parameter as ``{param}`` (:mod:`rbcli.errors`); the text a user typed
+goes in through :func:`rbcli.errors.literal`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from rbcli.api import options as op
+from rbcli.errors import InputError, Location, ParamError, literal
+
+#: what a reading's unit may measure -> its kind; readings are converted to SI
+READING_KINDS = {"displacement": (1, 0), "velocity": (1, -1), "acceleration": (1, -2)}
+#: the SI unit of each kind, as JSON reports it
+SI_UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
+#: the units a reading may carry, for messages and help
+READING_UNITS = "displacement µm, mm, mil; velocity mm/s, in/s; acceleration g, m/s²"
+#: how a reading may say its measure -> the measure
+MEASURE_WORDS = {"pk": "pk", "peak": "pk", "0-pk": "pk", "0-p": "pk", "pk-pk": "pk-pk", "p-p": "pk-pk",
+                 "pp": "pk-pk", "peak-peak": "pk-pk", "peak-to-peak": "pk-pk", "rms": "rms"}
+
+_READING = re.compile(r"\s*(?P<num>[^@]+?)\s*@\s*(?P<ang>.+?)\s*")
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One reading as read.
+
+    Attributes
+    ----------
+    value : complex — amplitude e^{i phase}: SI of ``kind`` (m, m/s, m/s²), or the bare
+        number (kind None); in its own ``measure``
+    kind : str | None — "displacement", "velocity", "acceleration"; None for bare
+    measure : str | None — "pk", "pk-pk", "rms" as the reading says, or None
+    gravity : bool — its unit was ``g``, read as standard gravity
+    param : str — the parameter it was given for ("initial", "run")
+    text : str — as typed
+    where : Location | None — its place in a job file
+    """
+
+    value: complex
+    kind: str | None
+    measure: str | None
+    gravity: bool
+    param: str
+    text: str
+    where: Location | None = None
+
+
+def _split_measure(amp: str) -> tuple[str, str | None]:
+    """``"6 mm/s rms"`` -> ``("6 mm/s", "rms")``; no measure word -> ``(amp, None)``."""
+    parts = amp.rsplit(None, 1)
+    if len(parts) == 2 and parts[1].lower() in MEASURE_WORDS:
+        return parts[0], MEASURE_WORDS[parts[1].lower()]
+    if len(parts) == 1:  # "6rms": a number glued to the word
+        m = op.NUMBER.match(amp)
+        if m and amp[m.end():].strip().lower() in MEASURE_WORDS:
+            return amp[: m.end()], MEASURE_WORDS[amp[m.end():].strip().lower()]
+    return amp, None
+
+
+def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bool]:
+    """A reading's amplitude: (value, kind, read g as gravity) - SI for a unit of
+    vibration, the number for a bare one (kind None)."""
+    from fractions import Fraction
+
+    from rbcli.io import units as un
+
+    num = op.NUMBER.match(text)
+    lit = literal(whole)
+    if not num:
+        raise ParamError(param, f"'{lit}': the amplitude must be a number, optionally with a unit "
+                                f"({READING_UNITS})")
+    number = text[: num.end()].strip().replace("\u2212", "-")
+    unit = text[num.end():].strip()
+    option = param
+    try:
+        if not unit:
+            return op.quantity(number, "dimensionless", option), None, False
+        if unit in ("mil", "mils"):
+            op.quantity(number, "dimensionless", option)  # its checks (range, digits)
+            return float(Fraction(number) * Fraction(254, 10**7)), "displacement", False
+        if unit == "g":
+            return un.to_si(f"{number} g0", "acceleration"), "acceleration", True
+        value, dim = un.parse_quantity(f"{number} {unit}")
+    except un.UnitError as exc:
+        raise ParamError(param, f"'{lit}': {literal(exc)}") from None
+    for kind, (L, T) in READING_KINDS.items():
+        if dim == un.Dim(L=L, T=T):
+            return value, kind, False
+    raise ParamError(param, f"'{lit}': '{literal(unit)}' is {dim.describe()}, not a vibration reading; "
+                            f"give {READING_UNITS}, or bare numbers for all readings (a relative scale)")
+
+
+def reading(text: str, param: str, where: Location | None = None) -> Reading:
+    """``'6.0@30'``, ``'6 mm@30'``, ``'4.0 in/s pk@110'`` -> a :class:`Reading` (the phase in
+    degrees).
+
+    Raises
+    ------
+    rbcli.ParamError
+        naming ``param``.
+    """
+    import cmath
+
+    m = _READING.fullmatch(text)
+    lit = literal(text)
+    if not m:
+        raise ParamError(param, f"'{lit}' is not amplitude@phase, e.g. '6.0@30' or '6 mm/s@30'")
+    amp_text, measure = _split_measure(m["num"])
+    amp, kind, gravity = _amplitude(amp_text, param, text)
+    ang = math.degrees(op.quantity(m["ang"], "angle", param, bare="deg"))
+    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
+        raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
+    return Reading(complex(cmath.rect(amp, math.radians(ang))), kind, measure, gravity, param, text, where)
+
+
+def trial(text: str, param: str = "trial", bare: str = "g") -> complex:
+    """``'10 g@0'`` or ``'10@0'`` (a bare mass in ``bare``, grams by default) -> kg e^{i angle}.
+
+    Raises
+    ------
+    rbcli.ParamError
+        naming ``param``.
+    """
+    import cmath
+
+    m = _READING.fullmatch(text)
+    lit = literal(text)
+    if not m:
+        raise ParamError(param, f"'{lit}' is not mass@angle, e.g. '10 g@0' (a bare mass is grams)")
+    option = param
+    with op.naming(param):
+        amp = op.quantity(m["num"], "mass", option, bare=bare)
+        ang = math.degrees(op.quantity(m["ang"], "angle", option, bare="deg"))
+    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
+        raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
+    value = complex(cmath.rect(amp, math.radians(ang)))
+    if value == 0:
+        raise ParamError(param, "the trial mass must not be zero")
+    return value
+
+
+def readings(text: str, param: str, n: int | None, *, what: str = "") -> list[Reading]:
+    """Comma-separated readings, ``n`` of them (None: any number)."""
+    parts = text.split(",")
+    if n is not None and len(parts) != n:
+        raise ParamError(param, f"expected {n} reading{'s' if n > 1 else ''} ({what}), got "
+                                f"{len(parts)} in '{literal(text)}'")
+    with op.naming(param):
+        return [reading(p, param) for p in parts]
+
+
+def one_kind(rs: list[Reading]) -> str | None:
+    """The one kind every reading has (None: all bare), else a ParamError saying what was
+    found."""
+    first = rs[0]
+    for r in rs[1:]:
+        if (r.kind is None) != (first.kind is None):
+            b, u = (r, first) if r.kind is None else (first, r)
+            raise _located(r, ParamError(r.param, (
+                f"'{literal(b.text)}' ({{{b.param}}}) is a bare number but '{literal(u.text)}' "
+                f"({{{u.param}}}) has a unit ({u.kind}): give every reading a unit of one kind "
+                f"({READING_UNITS}) or none (all bare: a relative scale)")))
+        if r.kind != first.kind:
+            raise _located(r, ParamError(r.param, (
+                f"'{literal(r.text)}' ({{{r.param}}}) is a {r.kind} but '{literal(first.text)}' "
+                f"({{{first.param}}}) is a {first.kind}: every reading must be of one kind "
+                f"({READING_UNITS})")))
+    return first.kind
+
+
+#: how a message about a job file's reading names what the command line calls a parameter
+JOB_WORDS = {"initial": "initial", "run": "a trial run", "measure": "readings: measure",
+             "trial": "a trial mass"}
+
+
+def at(where: Location | None, exc: InputError) -> InputError:
+    """``exc`` about a value of a job file: its reason, located at ``where`` (parameters
+    spelled as the job file's words); ``exc`` itself when ``where`` is None."""
+    from rbcli.errors import spell
+
+    if where is None:
+        return exc
+    words = lambda p: JOB_WORDS.get(p, p)  # noqa: E731
+    if isinstance(exc, ParamError):
+        text = f"{words(exc.param)}: {spell(exc.reason, words)}"
+    else:
+        text = spell(exc.template, words)
+    return InputError(literal(text), where)
+
+
+def _located(r: Reading, exc: ParamError) -> InputError:
+    """A job file's reading: the reason at its place; a command line's: the ParamError."""
+    return at(r.where, exc)
+
+
+@dataclass(frozen=True)
+class Measures:
+    """How the readings' measures were reconciled.
+
+    Attributes
+    ----------
+    measure : str | None — the measure every amplitude is now in (None: unknown, as given)
+    converted : tuple of (str, str, int) — (from, to, how many readings) converted
+    """
+
+    measure: str | None
+    converted: tuple[tuple[str, str, int], ...]
+
+
+def common_measure(rs: list[Reading], default: str | None, want: str | None) -> tuple[list[complex], Measures]:
+    """Every reading in one measure (sinusoidal conversion: pk-pk = 2 pk, rms = pk/sqrt 2).
+
+    Parameters
+    ----------
+    rs : the readings, in order
+    default : the measure of a reading that states none (``measure``), or None
+    want : the measure wanted (severity: "rms"), or None: the first reading's
+
+    Raises
+    ------
+    rbcli.ParamError
+        a reading with a measure and one without, and no default: which measure the other
+        is in is a guess (``measure``).
+    """
+    from rbcli.core.balance.severity import convert_measure
+
+    stated = [r for r in rs if r.measure is not None]
+    bare = [r for r in rs if r.measure is None]
+    if stated and bare and default is None:
+        s, b = stated[0], bare[0]
+        raise _located(b, ParamError("measure", (
+            f"'{literal(s.text)}' ({{{s.param}}}) says {s.measure} but '{literal(b.text)}' "
+            f"({{{b.param}}}) says no measure: say the measure (pk, pk-pk or rms) of every "
+            "reading or of none, or give the measure of those that say none ({measure})")))
+    each = [r.measure or default for r in rs]
+    if all(m is None for m in each):
+        return [r.value for r in rs], Measures(None, ())
+    target = want or each[0]
+    counts: dict[tuple[str, str], int] = {}
+    out = []
+    for r, m in zip(rs, each):
+        assert m is not None
+        if m != target:
+            counts[(m, target)] = counts.get((m, target), 0) + 1
+            out.append(r.value * convert_measure(1.0, m, target))
+        else:
+            out.append(r.value)
+    return out, Measures(target, tuple((a, b, n) for (a, b), n in counts.items()))

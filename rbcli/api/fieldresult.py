@@ -1,0 +1,554 @@
+"""The result of ``rbcli field-balance`` (:func:`rbcli.field_balance`): values, their JSON,
+the polar diagram's numbers and the coefficients file's document.
+
+One- and two-plane jobs given with the options rbcli always had (``initial``, ``trial``,
+``run``, ``cumulative``, ``radius``, ``trial_radius``) are solved and written as they
+always were, byte for byte (:attr:`FieldBalanceResult.method` is None). Anything else — more
+readings than planes, more planes, a job file, stored coefficients, a method, weights,
+rounding, conventions, measures, severity, a trial suggestion — is an extended result: its
+JSON adds ``method``, ``residuals`` and the keys below.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from rbcli.api.result import Result
+
+#: the angle convention of field balancing, in words (as it always was)
+CONVENTION = ("angles and phases in degrees, counted in the same sense as the trial angles and the "
+              "phase readings (they must agree)")
+
+#: the SI unit of each reading kind, as JSON reports it
+SI_UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
+
+
+def deg(z: complex) -> float:
+    """arg z in degrees in [0, 360) (within 1e-9° below 360 is 0; never -0.0)."""
+    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
+    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
+
+
+def _mag_deg(z: complex) -> tuple[float, float]:
+    return abs(z), (deg(z) if z != 0 else 0.0)
+
+
+@dataclass(frozen=True)
+class FieldCorrection:
+    """One plane's correction.
+
+    Attributes
+    ----------
+    name : str — the plane's name ("A", "B", ... or the job file's)
+    correction : complex — kg e^{i angle}, to add with the trial removed (at the correction
+        radius when radii are given), angles in the sense of the trial angles
+    correction_trial_on : complex — kg, to add with that plane's trial left on
+    radius : float | None — m, the radius the correction goes at (None: the trial's, unsaid)
+    """
+
+    name: str
+    correction: complex
+    correction_trial_on: complex
+    radius: float | None = None
+
+    @property
+    def mass(self) -> float:
+        """kg"""
+        return abs(self.correction)
+
+    @property
+    def angle_deg(self) -> float:
+        """deg, [0, 360), the sense of the trial angles"""
+        return deg(self.correction) if self.correction != 0 else 0.0
+
+    @property
+    def mass_trial_on(self) -> float:
+        """kg, with that plane's trial left on"""
+        return abs(self.correction_trial_on)
+
+    @property
+    def angle_trial_on_deg(self) -> float:
+        return deg(self.correction_trial_on) if self.correction_trial_on != 0 else 0.0
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "mass": self.mass, "angle_deg": self.angle_deg,
+                "mass_trial_on": self.mass_trial_on, "angle_trial_on_deg": self.angle_trial_on_deg,
+                "radius": None if self.radius is None else float(self.radius)}
+
+
+@dataclass(frozen=True)
+class FieldResidual:
+    """A predicted reading after the correction (JSON ``residuals[k]``).
+
+    Attributes
+    ----------
+    sensor, speed : str — the reading's sensor and speed names
+    amplitude : float — in the readings' unit and measure (SI, or bare for bare readings)
+    angle_deg : float — deg, [0, 360), in the readings' own phase convention
+    initial : float — the reading's amplitude before, same unit
+    """
+
+    sensor: str
+    speed: str
+    amplitude: float
+    angle_deg: float
+    initial: float
+
+    def to_json(self) -> dict[str, Any]:
+        return {"sensor": self.sensor, "speed": self.speed, "amplitude": self.amplitude,
+                "angle_deg": self.angle_deg, "initial": self.initial}
+
+
+@dataclass(frozen=True)
+class FittedMass:
+    """A mass to fit (JSON ``fitted.planes[j].masses[i]``): mass kg, angle_deg, position
+    (1-based, or None)."""
+
+    mass: float
+    angle_deg: float
+    position: int | None
+
+    def to_json(self) -> dict[str, Any]:
+        return {"mass": self.mass, "angle_deg": self.angle_deg, "position": self.position}
+
+
+@dataclass(frozen=True)
+class FittedPlane:
+    """The masses fitted in one plane and their net correction (mass, angle_deg)."""
+
+    name: str
+    masses: tuple[FittedMass, ...]
+    mass: float
+    angle_deg: float
+    positions: int | None
+
+    def to_json(self) -> dict[str, Any]:
+        return {"name": self.name, "positions": self.positions, "mass": self.mass,
+                "angle_deg": self.angle_deg, "masses": [m.to_json() for m in self.masses]}
+
+
+@dataclass(frozen=True)
+class Fitted:
+    """The corrections as fitted — rounded and/or split — and the readings they leave.
+
+    Attributes
+    ----------
+    mass_step : float | None — kg
+    angle_step_deg : float | None — deg
+    planes : tuple of FittedPlane
+    residuals : tuple of FieldResidual — the readings predicted with these masses
+    """
+
+    mass_step: float | None
+    angle_step_deg: float | None
+    planes: tuple[FittedPlane, ...]
+    residuals: tuple[FieldResidual, ...]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"mass_step": self.mass_step, "angle_step_deg": self.angle_step_deg,
+                "planes": [p.to_json() for p in self.planes],
+                "residuals": [r.to_json() for r in self.residuals]}
+
+
+@dataclass(frozen=True)
+class SeverityRow:
+    """One reading judged (mm/s r.m.s. values in m/s, SI): before and predicted after."""
+
+    sensor: str
+    speed: str
+    before: float
+    before_zone: str
+    after: float
+    after_zone: str
+
+    def to_json(self) -> dict[str, Any]:
+        return {"sensor": self.sensor, "speed": self.speed, "before": self.before,
+                "before_zone": self.before_zone, "after": self.after, "after_zone": self.after_zone}
+
+
+@dataclass(frozen=True)
+class Severity:
+    """ISO 20816-3 zones of the readings (JSON ``severity``).
+
+    Attributes
+    ----------
+    standard : str — "ISO 20816-3"
+    group : int — 1 or 2
+    foundation : str — "rigid" or "flexible"
+    boundaries : (float, float, float) — A/B, B/C, C/D, m/s r.m.s.
+    after_is : str — "fitted" (the rounded or split masses) or "computed"
+    rows : tuple of SeverityRow
+    """
+
+    standard: str
+    group: int
+    foundation: str
+    boundaries: tuple[float, float, float]
+    after_is: str
+    rows: tuple[SeverityRow, ...]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"standard": self.standard, "group": self.group, "foundation": self.foundation,
+                "boundaries": list(self.boundaries), "after_is": self.after_is,
+                "readings": [r.to_json() for r in self.rows]}
+
+
+@dataclass(frozen=True)
+class SuggestedTrial:
+    """A trial mass sized before the run (JSON ``suggested_trial``).
+
+    Attributes
+    ----------
+    plane : str
+    mass : float — kg at ``radius``
+    radius : float — m
+    speed : float — rad/s
+    bearing_load : float — N, the static load of the bearing nearest the plane
+    bearing_load_from : str — how it was found, in words
+    fraction : float — the trial's force / bearing_load
+    force : float — N
+    expected_change : tuple of float | None — per reading, the change the trial should make
+        (its influence coefficients times the trial), reading unit; None without coefficients
+    expected_change_ratio : tuple of float | None — that change over the initial reading
+    """
+
+    plane: str
+    mass: float
+    radius: float
+    speed: float
+    bearing_load: float
+    bearing_load_from: str
+    fraction: float
+    force: float
+    expected_change: tuple[float, ...] | None
+    expected_change_ratio: tuple[float, ...] | None
+
+    def to_json(self) -> dict[str, Any]:
+        return {"plane": self.plane, "mass": self.mass, "radius": self.radius, "speed": self.speed,
+                "bearing_load": self.bearing_load, "bearing_load_from": self.bearing_load_from,
+                "fraction": self.fraction, "force": self.force,
+                "expected_change": None if self.expected_change is None else list(self.expected_change),
+                "expected_change_ratio": (None if self.expected_change_ratio is None
+                                          else list(self.expected_change_ratio))}
+
+
+@dataclass(frozen=True)
+class Conventions:
+    """How angles and readings were counted (JSON ``conventions``).
+
+    Attributes
+    ----------
+    phase : str | None — the instrument's phase: "lag" (grows against the rotation) or
+        "lead"; None: not said (the phases are taken in the sense of the trial angles)
+    angle_sense : str | None — the trial and correction angles are counted "with" or
+        "against" the rotation; None: not said
+    rotation : str | None — the rotor turns "cw" or "ccw" (seen from where the angles are
+        read); None: not said
+    converted : bool — the phases were mirrored into the angles' sense (lag with angles
+        counted with the rotation, or lead against it)
+    text : str — all of it in words
+    """
+
+    phase: str | None
+    angle_sense: str | None
+    rotation: str | None
+    converted: bool
+    text: str
+
+    def to_json(self) -> dict[str, Any]:
+        return {"phase": self.phase, "angle_sense": self.angle_sense, "rotation": self.rotation,
+                "converted": self.converted, "text": self.text}
+
+
+def convention_text(phase: str | None, angle_sense: str | None, rotation: str | None, converted: bool) -> str:
+    """The conventions of a job in one sentence."""
+    if phase is None and angle_sense is None and rotation is None:
+        return CONVENTION
+    parts = []
+    if angle_sense is not None:
+        parts.append(f"trial and correction angles in degrees from the reference mark, counted "
+                     f"{angle_sense} the rotation")
+    else:
+        parts.append("trial and correction angles in degrees from the reference mark")
+    if rotation is not None:
+        parts.append(f"the rotor turns {'clockwise' if rotation == 'cw' else 'counterclockwise'} "
+                     "seen from where the angles are read")
+    if phase is not None:
+        grows = "against" if phase == "lag" else "with"
+        parts.append(f"phases are phase {phase} (growing {grows} the rotation)"
+                     + ("; mirrored into the angles' sense" if converted else
+                        ", the same sense as the angles"))
+    else:
+        parts.append("phases counted in the same sense as the angles")
+    return "; ".join(parts)
+
+
+@dataclass(frozen=True)
+class FieldBalanceResult(Result):
+    """What ``rbcli field-balance`` reports.
+
+    Attributes
+    ----------
+    planes : int — the number of correction planes P
+    initial : tuple of complex — the readings without trial, N of them (SI, or the relative
+        scale), in the angles' sense (after any conversion)
+    runs : tuple of tuple of complex — the readings of each trial run (none for a trim run
+        from stored coefficients)
+    corrections : tuple of FieldCorrection — per plane (kg)
+    alpha : tuple of tuple of complex — the influence coefficients: reading (SI, or the
+        relative scale) per kg at the trial radius; row = reading, column = plane (JSON
+        ``influence``: their magnitudes and angles)
+    trial_masses : tuple of complex — kg e^{i angle} (JSON ``trials``)
+    radii : (float, float) | None — m, (trial radius, correction radius) (the command line's)
+    cond : float | None — 2-norm condition number of the influence matrix
+    det : complex | None — its determinant (square)
+    ill_conditioned : bool — cond > 50
+    small_response : tuple of bool — per trial run
+    residual_values : tuple of complex — per reading, after the correction (reading unit; JSON
+        ``predicted_residual``: their magnitudes)
+    cumulative : bool
+    reading_kind : str | None — "displacement", "velocity", "acceleration", or None (bare)
+    warnings : tuple of str
+    method : str | None — "exact", "least-squares" or "min-max"; None: a one- or two-plane
+        job given the classic way, reported as it always was
+    sensors, run_speeds : the readings' sensors (names) and speeds ((name, rad/s or None);
+        JSON ``speeds``); a reading k is sensor ``k % len(sensors)`` at speed
+        ``k // len(sensors)``
+    plane_names : tuple of str
+    plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius) m
+    residuals : tuple of FieldResidual — the predicted readings, in the instrument's phase
+        convention (extended results)
+    weights : tuple of float | None
+    significance_factors : tuple of float — Darlow's factor per plane (JSON ``significance``)
+    significance_limit : float
+    measure : str | None — "pk", "pk-pk" or "rms": what every amplitude is in
+    measures_converted : tuple of (str, str, int)
+    gravity : bool — a reading's "g" was read as standard gravity
+    conventions : Conventions | None
+    fitted : Fitted | None
+    severity : Severity | None
+    suggested_trial : tuple of SuggestedTrial
+    coefficients_from : str | None — the file the coefficients were read from (trim run)
+    job : str | None — the job file; name: its name
+    notes : tuple of str — what was converted on the way (coefficients' measure or sense)
+    """
+
+    planes: int
+    initial: tuple[complex, ...]
+    runs: tuple[tuple[complex, ...], ...]
+    corrections: tuple[FieldCorrection, ...]
+    alpha: tuple[tuple[complex, ...], ...]
+    trial_masses: tuple[complex, ...]
+    radii: tuple[float, float] | None
+    cond: float | None
+    det: complex | None
+    ill_conditioned: bool
+    small_response: tuple[bool, ...]
+    residual_values: tuple[complex, ...]
+    cumulative: bool
+    reading_kind: str | None = None
+    warnings: tuple[str, ...] = ()
+    method: str | None = None
+    sensors: tuple[str, ...] = ()
+    run_speeds: tuple[tuple[str, float | None], ...] = ()
+    plane_names: tuple[str, ...] = ()
+    plane_radii: tuple[tuple[float, float] | None, ...] = ()
+    residuals: tuple[FieldResidual, ...] = ()
+    weights: tuple[float, ...] | None = None
+    significance_factors: tuple[float, ...] = ()
+    significance_limit: float = 0.2
+    measure: str | None = None
+    measures_converted: tuple[tuple[str, str, int], ...] = ()
+    gravity: bool = False
+    conventions: Conventions | None = None
+    fitted: Fitted | None = None
+    severity: Severity | None = None
+    suggested_trial: tuple[SuggestedTrial, ...] = ()
+    coefficients_from: str | None = None
+    job: str | None = None
+    name: str | None = None
+    notes: tuple[str, ...] = ()
+
+    @property
+    def extended(self) -> bool:
+        return self.method is not None or bool(self.suggested_trial)
+
+    @property
+    def reading_unit(self) -> str | None:
+        """The SI unit the readings (and the influence coefficients per kg) are in: "m",
+        "m/s" or "m/s^2"; None for bare readings (a relative scale)."""
+        return None if self.reading_kind is None else SI_UNITS[self.reading_kind]
+
+    def row_names(self) -> list[tuple[str, str]]:
+        """(sensor, speed) of each reading, in order."""
+        n = max(len(self.sensors), 1)
+        return [(self.sensors[k % n] if self.sensors else str(k + 1),
+                 self.run_speeds[k // n][0] if self.run_speeds else "") for k in range(len(self.initial))]
+
+    # ------------------------------------------------------------------ the polar diagram
+
+    def diagram(self):
+        """The polar diagram of a balancing sheet (what ``--plot`` draws), an
+        :class:`rbcli.api.diagram.Diagram`: per reading the reading O without trial, each
+        run O+T and the change T made (from O's tip to O+T's); then per plane the trial
+        mass and the correction to add (trial removed). Angles as given and printed."""
+        from rbcli.api.diagram import Arrow, Diagram, Panel
+
+        panels = []
+        n = self.planes
+        names = self.plane_names or tuple("AB"[:n])
+        rows = self.row_names()
+        for i in range(len(self.initial)):
+            o = self.initial[i]
+            arrows = [Arrow("initial", "O, no trial", abs(o), deg(o))]
+            for j, run in enumerate(self.runs):
+                name = names[j] if n > 1 else ""
+                v = run[i]
+                arrows.append(Arrow("run", f"O+T{name}, trial {name or ''} on".replace("  ", " "),
+                                    abs(v), deg(v)))
+                ref = self.runs[j - 1][i] if (j >= 1 and self.cumulative) else o
+                d = v - ref
+                arrows.append(Arrow("effect", f"T{name}: the trial's effect", abs(d), deg(d),
+                                    d != 0, tail=(abs(ref), deg(ref))))
+            if self.extended and self.residuals:
+                r = self.residual_values[i]
+                arrows.append(Arrow("residual", "predicted after the correction", abs(r), deg(r), abs(r) > 0))
+            if self.extended:
+                sensor, speed = rows[i]
+                title = f"readings {sensor}" + (f" at {speed}" if speed else "")
+            else:
+                title = "readings" if len(self.initial) == 1 else f"sensor {i + 1} readings"
+            panels.append(Panel(title, "reading", tuple(arrows)))
+        for j, c in enumerate(self.corrections):
+            arrows_m = []
+            if j < len(self.trial_masses):
+                t = self.trial_masses[j]
+                arrows_m.append(Arrow("trial", "trial mass", abs(t), deg(t), t != 0, mass=abs(t)))
+            arrows_m.append(Arrow("correction", "add (trial removed)", c.mass, c.angle_deg, c.correction != 0,
+                                  mass=c.mass))
+            if self.fitted is not None:
+                for fm in self.fitted.planes[j].masses:
+                    label = "fit" + (f" at position {fm.position}" if fm.position else "")
+                    arrows_m.append(Arrow("residual", label, fm.mass, fm.angle_deg, fm.mass > 0, mass=fm.mass))
+            panels.append(Panel(f"plane {c.name}: masses", "mass", tuple(arrows_m)))
+        sense = "with"
+        note = "angles as given: the trial angles and the phases in the same sense"
+        if self.conventions is not None and self.conventions.rotation is not None:
+            # the dial as the rotor is seen from where the angles are read: angles counted
+            # with a counterclockwise rotation run counterclockwise
+            ccw = (self.conventions.rotation == "ccw") == (self.conventions.angle_sense != "against")
+            sense = "with" if ccw else "against"
+            note = self.conventions.text
+        elif self.conventions is not None:
+            note = self.conventions.text
+        return Diagram("field balancing", tuple(panels), sense, note, self.reading_kind)
+
+    # ------------------------------------------------------------------ JSON
+
+    def to_json(self) -> dict[str, Any]:
+        """The document ``rbcli field-balance --json`` prints."""
+        if not self.corrections:  # a trial suggestion only
+            return {
+                "suggested_trial": [s.to_json() for s in self.suggested_trial],
+                "conventions": None if self.conventions is None else self.conventions.to_json(),
+                "angle_convention": CONVENTION if self.conventions is None else self.conventions.text,
+                "warnings": list(self.warnings),
+            }
+        out: dict[str, Any] = {"planes": self.planes}
+        if self.extended:
+            out["method"] = self.method
+            out["sensors"] = list(self.sensors)
+            out["speeds"] = [{"name": n, "speed": w} for n, w in self.run_speeds]
+        out["corrections"] = [c.to_json() for c in self.corrections]
+        out["influence"] = [[{"magnitude": abs(a), "angle_deg": deg(a)} for a in row] for row in self.alpha]
+        out["trials"] = [{"mass": abs(t), "angle_deg": deg(t)} for t in self.trial_masses]
+        out["trial_radius"] = None if self.radii is None else float(self.radii[0])
+        readings: dict[str, Any] = {"kind": self.reading_kind or "relative", "unit": self.reading_unit}
+        if self.extended:
+            readings["measure"] = self.measure
+            readings["converted"] = [{"from": a, "to": b, "count": n} for a, b, n in self.measures_converted]
+            readings["g"] = "standard gravity 9.80665 m/s^2 (an acceleration)" if self.gravity else None
+        out["readings"] = readings
+        if self.extended:
+            out["residuals"] = [r.to_json() for r in self.residuals]
+            amps = [r.amplitude for r in self.residuals]
+            out["residual_max"] = max(amps)
+            out["residual_rms"] = math.sqrt(sum(a * a for a in amps) / len(amps))
+            if self.weights is not None:
+                out["weights"] = list(self.weights)
+        if self.planes == 2 or (self.extended and self.cond is not None):
+            out["cond"] = float(self.cond)
+            if self.det is not None:
+                out["det_magnitude"] = float(abs(self.det))
+            out["ill_conditioned"] = bool(self.ill_conditioned)
+        if self.extended:
+            out["significance"] = [
+                {"plane": n, "factor": f, "flagged": f <= self.significance_limit}
+                for n, f in zip(self.plane_names, self.significance_factors)]
+            out["significance_limit"] = self.significance_limit
+        out["small_response"] = [bool(s) for s in self.small_response]
+        out["predicted_residual"] = [float(abs(v)) for v in self.residual_values]
+        out["cumulative"] = bool(self.cumulative)
+        if self.extended:
+            out["fitted"] = None if self.fitted is None else self.fitted.to_json()
+            out["severity"] = None if self.severity is None else self.severity.to_json()
+            out["suggested_trial"] = [s.to_json() for s in self.suggested_trial]
+            out["coefficients_from"] = self.coefficients_from
+            out["conventions"] = None if self.conventions is None else self.conventions.to_json()
+            out["job"] = self.job
+            out["name"] = self.name
+            out["notes"] = list(self.notes)
+        out["angle_convention"] = CONVENTION if self.conventions is None else self.conventions.text
+        out["warnings"] = list(self.warnings)
+        return out
+
+    # ------------------------------------------------------------------ stored coefficients
+
+    def coefficients_document(self) -> dict[str, Any]:
+        """The influence coefficients as the file ``--save-coefficients`` writes (see
+        :mod:`rbcli.io.fieldcoeffs` for the format): exact (re, im) per reading and plane,
+        with their units, speeds, sensor and plane names and conventions."""
+        from rbcli import __version__
+        from rbcli.io.fieldcoeffs import FORMAT, VERSION
+
+        rows = self.row_names()
+        speeds = list(self.run_speeds) or [("", None)]
+        sensors = list(self.sensors) or [str(k + 1) for k in range(len(self.initial))]
+        radii = self.plane_radii or (self.radii,) * self.planes
+        names = self.plane_names or tuple("ABCDEFGHIJKLMNOPQRSTUVWXYZ"[:self.planes])
+        conv = self.conventions
+        return {
+            "format": FORMAT,
+            "version": VERSION,
+            "written_by": f"rbcli {__version__} field-balance",
+            "job": self.name,
+            "description": (
+                "Influence coefficients alpha[k][j]: the change of reading k per kg of trial mass "
+                "added in plane j at that plane's trial radius, as the complex number re + i im "
+                "(magnitude, angle_deg for people). Readings in the SI unit of their kind (m, "
+                "m/s, m/s^2), or a relative scale when bare, in the measure given; phases "
+                "counted in the sense of the trial angles (see conventions). Reuse with "
+                "rbcli field-balance --coefficients FILE --initial ... (a trim run) on the same "
+                "machine (or the same machine type) at the same speeds, sensors and radii."),
+            "influence": {
+                "reading_kind": self.reading_kind,
+                "reading_unit": self.reading_unit,
+                "measure": self.measure,
+                "per": "kg of trial mass at the plane's trial radius",
+            },
+            "conventions": {
+                "phase": None if conv is None else conv.phase,
+                "angle_sense": None if conv is None else conv.angle_sense,
+                "rotation": None if conv is None else conv.rotation,
+                "text": CONVENTION if conv is None else conv.text,
+            },
+            "sensors": sensors,
+            "speeds": [{"name": n, "speed": w} for n, w in speeds],
+            "planes": [{"name": names[j], "trial_radius": None if radii[j] is None else radii[j][0]}
+                       for j in range(self.planes)],
+            "rows": [{"sensor": s, "speed": v} for s, v in rows],
+            "coefficients": [[{"re": a.real, "im": a.imag, "magnitude": abs(a), "angle_deg": deg(a)}
+                              for a in row] for row in self.alpha],
+        }

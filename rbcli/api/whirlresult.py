@@ -1,0 +1,378 @@
+"""The result of :func:`rbcli.whirl`: frozen values whose attribute names are the JSON keys.
+
+Every array is read-only; ``to_json()`` is built from the attributes (each nested value
+the same way), so ``WhirlResult.to_json()`` is exactly what ``rbcli whirl --json`` prints
+less ``file``. Units: SI (m, kg, s, N, rad/s, N/m, N s/m); angles in degrees under keys
+ending in ``_deg``; margins in % under keys ending in ``_percent``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any
+
+from rbcli.api.result import Result
+from rbcli.errors import ExitStatus
+
+__all__ = ["CONVENTIONS", "WhirlResult", "RotorData", "BearingData", "Mode", "Campbell",
+           "CriticalSpeed", "NoCrossing", "Stability", "UnbalanceRow", "ResponseBearing",
+           "PeakRow", "AtSpeed", "ResponseData", "MarginCheck", "Margins", "readonly", "to_json"]
+
+#: the conventions every output states (JSON ``conventions``)
+CONVENTIONS: dict[str, str] = {
+    "speeds": "rad/s (tables also in rpm); the rotor spins about +z of the shaft frame",
+    "frequencies": "whirl frequencies in rad/s, seen in the fixed frame of the bearings",
+    "whirl": "forward: the orbit turns the same way as the spin; backward: the opposite way; "
+             "linear: a straight-line orbit (forward and backward parts equal); none: no "
+             "oscillation (overdamped)",
+    "positions": "m along the shaft, z = 0 at the shaft point (through)",
+    "stiffness": "N/m; x and y are the shaft frame's axes with the rotor at angle 0 (x on the "
+                 "0 deg mark); the bearings do not turn",
+    "damping": "N s/m",
+    "angles": "deg in the rotor frame, from the 0 deg mark in the direction of rotation (as "
+              "balance); a phase is the angle of the high spot when the motion is largest",
+    "amplitudes": "displacement: m, semi-major axis of the orbit; force: N, semi-major axis "
+                  "of the force the rotor exerts on the bearing",
+    "margins": "% of the minimum operating speed (critical speed below it) or of the maximum "
+               "operating speed (above it)",
+}
+
+
+def readonly(a: Any):
+    """A float ndarray that cannot be written."""
+    import numpy as np
+
+    out = np.array(a, dtype=float)
+    out.setflags(write=False)
+    return out
+
+
+def to_json(obj: Any) -> Any:
+    """Plain JSON data of a result value: dataclasses by their fields (then the extra
+    keys of ``_json_extra``), arrays and tuples as lists."""
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        d = {f.name: to_json(getattr(obj, f.name)) for f in dataclasses.fields(obj)
+             if not f.name.startswith("_") and f.metadata.get("json", True)}
+        extra = getattr(obj, "_json_extra", None)
+        if extra is not None:
+            d.update({k: to_json(v) for k, v in extra().items()})
+        return d
+    if isinstance(obj, (list, tuple)):
+        return [to_json(x) for x in obj]
+    if hasattr(obj, "tolist"):
+        return obj.tolist()
+    return obj
+
+
+class _Json:
+    """A nested value of the result: its JSON is its fields (``to_json()``)."""
+
+    def to_json(self) -> Any:
+        return to_json(self)
+
+
+def _hidden(**default: Any) -> Any:
+    """A field that is not a JSON key (kept for the renderer)."""
+    return dataclasses.field(metadata={"json": False}, **default)
+
+
+@dataclass(frozen=True)
+class RotorData(_Json):
+    """The rigid rotor taken from the body (JSON ``rotor``).
+
+    mass : kg; com : m, the centre of mass along the shaft; polar_moment : kg m², Ip;
+    transverse_moment : kg m², It (the mean of the two moments across the shaft, about the
+    com); transverse_moments : [I1, I2] kg m²; asymmetry : (I2 - I1)/It; tilt_deg : the
+    nearest principal axis from the shaft; static_unbalance : kg m and its angle;
+    couple_unbalance : kg m² about the com and its angle; eccentricity : m
+    """
+
+    mass: float
+    com: float
+    polar_moment: float
+    transverse_moment: float
+    transverse_moments: tuple[float, float]
+    asymmetry: float
+    tilt_deg: float
+    eccentricity: float
+    static_unbalance: float
+    static_unbalance_angle_deg: float
+    couple_unbalance: float
+    couple_unbalance_angle_deg: float
+
+
+@dataclass(frozen=True)
+class BearingData(_Json):
+    """One bearing: plane (m along the shaft), stiffness [kxx, kyy] N/m, cross_stiffness
+    [kxy, kyx] N/m, damping [cxx, cyy] N s/m."""
+
+    plane: float
+    stiffness: tuple[float, float]
+    cross_stiffness: tuple[float, float]
+    damping: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Mode(_Json):
+    """A whirl mode at one speed: frequency (rad/s, fixed frame), whirl, kind
+    (cylindrical, conical, mixed), node (m along the shaft, null for none), damping_ratio,
+    log_decrement (null when not oscillating), stable (it does not grow)."""
+
+    frequency: float
+    whirl: str
+    kind: str
+    node: float | None
+    damping_ratio: float
+    log_decrement: float | None
+    stable: bool
+
+
+@dataclass(frozen=True)
+class Campbell(_Json):
+    """The Campbell diagram: speeds (N, rad/s); per mode (numbered by frequency at each
+    speed, lowest first) frequencies (4 x N, rad/s), whirl, kind, damping_ratio,
+    log_decrement (null where a mode does not oscillate)."""
+
+    speeds: Any
+    frequencies: Any
+    whirl: tuple[tuple[str, ...], ...]
+    damping_ratio: Any
+    log_decrement: tuple[tuple[float | None, ...], ...]
+    kind: tuple[tuple[str, ...], ...]
+
+
+@dataclass(frozen=True)
+class CriticalSpeed(_Json):
+    """A critical speed: speed (rad/s, undamped, exact), order (the n× line), mode (its
+    kind), whirl, node (m or null); damped_speed (rad/s, where the damped whirl frequency
+    crosses the line; null if it does not), damping_ratio and log_decrement there;
+    in_range (inside the speed range); excited (the unbalance drives it: order 1 only,
+    null otherwise)."""
+
+    speed: float
+    order: int
+    mode: str
+    whirl: str
+    node: float | None
+    damped_speed: float | None
+    damping_ratio: float | None
+    log_decrement: float | None
+    in_range: bool
+    excited: bool | None
+
+
+@dataclass(frozen=True)
+class NoCrossing(_Json):
+    """A branch that never meets its n× line: order, whirl, mode, reason
+    ("gyroscopic": n It < Ip; "coincident": n It = Ip, met only at infinite speed;
+    "complex": cross-coupled stiffness, no real crossing), and the moments."""
+
+    order: int
+    whirl: str
+    mode: str
+    reason: str
+    polar_moment: float
+    transverse_moment: float
+
+    @property
+    def explanation(self) -> str:
+        """The reason in words."""
+        n = self.order
+        line = "1×" if n == 1 else f"{n}×"
+        if self.reason == "complex":
+            return (f"no undamped {self.whirl} critical speed of order {n} for one mode: the "
+                    "cross-coupled stiffness leaves no real crossing of the "
+                    f"{line} line (the mode is driven unstable rather than resonant)")
+        nIt = f"{n} It = {n * self.transverse_moment:.6g}" if n != 1 else f"It = {self.transverse_moment:.6g}"
+        rel = "=" if self.reason == "coincident" else ">"
+        return (f"the forward conical whirl never meets the {line} line: Ip = "
+                f"{self.polar_moment:.6g} kg m² {rel} {nIt} kg m², so the gyroscopic stiffening "
+                f"Ip Ω keeps its frequency above {line} the speed at every speed "
+                + ("(it approaches the line only as the speed grows without bound)"
+                   if self.reason == "coincident" else "(a disk-like rotor)"))
+
+    def _json_extra(self) -> dict[str, Any]:
+        return {"explanation": self.explanation}
+
+
+@dataclass(frozen=True)
+class Stability(_Json):
+    """stable_in_range: no mode grows anywhere in the speed range; onset_speeds: speeds
+    (rad/s) in the range where a mode starts or stops growing; least_damping_ratio and
+    least_damping_speed: the smallest damping ratio over the range and where;
+    stable_at_speed: at the operating speed (null without one)."""
+
+    stable_in_range: bool
+    onset_speeds: tuple[float, ...]
+    least_damping_ratio: float
+    least_damping_speed: float
+    stable_at_speed: bool | None
+
+
+@dataclass(frozen=True)
+class UnbalanceRow(_Json):
+    """An unbalance driving the response: plane (m along the shaft), amount (kg m),
+    angle_deg (rotor frame)."""
+
+    plane: float
+    amount: float
+    angle_deg: float
+
+
+@dataclass(frozen=True)
+class ResponseBearing(_Json):
+    """One bearing's response over the speeds: plane; displacement and displacement_minor
+    (m, the orbit's semi-axes), displacement_phase_deg (high spot, rotor frame); force (N,
+    semi-major axis of the force on the bearing), force_phase_deg."""
+
+    plane: float
+    displacement: Any
+    displacement_minor: Any
+    displacement_phase_deg: Any
+    force: Any
+    force_phase_deg: Any
+
+
+@dataclass(frozen=True)
+class PeakRow(_Json):
+    """A response peak: bearing (1-based) and its plane, speed (rad/s), amplitude (m),
+    amplification_factor (half-power, null when not defined or undamped), half_power
+    [N1, N2] rad/s (null when not defined), mode and whirl of the nearest critical speed,
+    undamped (the peak is an undamped critical speed: infinite response)."""
+
+    bearing: int
+    plane: float
+    speed: float
+    amplitude: float | None
+    amplification_factor: float | None
+    half_power: tuple[float, float] | None
+    mode: str | None
+    whirl: str | None
+    undamped: bool
+
+
+@dataclass(frozen=True)
+class AtSpeed(_Json):
+    """A bearing at the (maximum) operating speed: displacement (m) and its phase, force (N)
+    and its phase; rigid_force: the force on rigid bearings at that speed (balance's, two
+    bearings only; null otherwise)."""
+
+    plane: float
+    displacement: float
+    displacement_phase_deg: float
+    force: float
+    force_phase_deg: float
+    rigid_force: float | None
+
+
+@dataclass(frozen=True)
+class ResponseData(_Json):
+    """The unbalance response: source ("body": its own static and couple unbalance, or
+    "planes": the unbalances given), unbalance (the rows given; empty for the body),
+    speeds (rad/s), bearings, peaks, at_speed (at the maximum operating speed; empty
+    without one)."""
+
+    source: str
+    unbalance: tuple[UnbalanceRow, ...]
+    speeds: Any
+    bearings: tuple[ResponseBearing, ...]
+    peaks: tuple[PeakRow, ...]
+    at_speed: tuple[AtSpeed, ...]
+
+
+@dataclass(frozen=True)
+class MarginCheck(_Json):
+    """A critical speed (a response peak) judged by the API rule: bearing (1-based, null
+    for an undamped critical speed) and plane, speed (rad/s), mode, amplification_factor,
+    basis (how the AF was found: "half-power"; "undamped": no damping, AF infinite;
+    "undefined": the response does not fall to 1/sqrt(2) of the peak between it and the
+    next one; both of the last judged as AF infinite, the full margin), position ("below",
+    "above" or "within" the operating range), margin_percent, required_margin_percent,
+    passed."""
+
+    bearing: int | None
+    plane: float | None
+    speed: float
+    mode: str | None
+    amplification_factor: float | None
+    basis: str
+    position: str
+    margin_percent: float
+    required_margin_percent: float
+    passed: bool
+
+
+@dataclass(frozen=True)
+class Margins(_Json):
+    """The separation margins: rule (the standard's clause), operating_speed [min, max]
+    rad/s, checks, passed (every check passed; null when nothing could be judged)."""
+
+    rule: str
+    operating_speed: tuple[float, float]
+    checks: tuple[MarginCheck, ...]
+    passed: bool | None
+
+
+#: the rule, as every output cites it
+API_RULE = ("API 617 (8th ed.) 6.8.2.4-6.8.2.5 / API 684 (2nd ed.) SP6.8.2.1, SP6.8.2.10: "
+            "AF = Nc/(N2 - N1) at the half-power points; AF < 2.5 needs no margin; below the "
+            "minimum operating speed SM >= min(16, 17 (1 - 1/(AF - 1.5))) %, above the maximum "
+            "SM >= min(26, 10 + 17 (1 - 1/(AF - 1.5))) %")
+
+
+@dataclass(frozen=True)
+class WhirlResult(Result):
+    """The rotor on its bearings (see :func:`rbcli.whirl`); attribute names are the JSON
+    keys (plus ``name``), arrays read-only.
+
+    Hidden from the JSON (for the tables): ``units`` (the body's units block: what bare
+    numbers meant), ``source`` (the body's file), ``points``, ``isotropic``, ``given`` (the
+    parameters the caller gave: the options table echoes them).
+    """
+
+    name: str
+    conventions: dict
+    shaft: tuple[float, float, float]
+    shaft_source: str
+    through: Any
+    through_source: str
+    rotor: RotorData
+    bearings: tuple[BearingData, ...]
+    speed_range: tuple[float, float]
+    speed_range_source: str
+    orders: tuple[int, ...]
+    speed: tuple[float, float] | None
+    symmetry_tol: float
+    modes_speed: float
+    modes: tuple[Mode, ...]
+    campbell: Campbell
+    critical_speeds: tuple[CriticalSpeed, ...]
+    no_crossings: tuple[NoCrossing, ...]
+    stability: Stability
+    response: ResponseData
+    margins: Margins | None
+    warnings: tuple[str, ...]
+    units: dict = _hidden(default_factory=dict)
+    source: str = _hidden(default="")
+    points: int = _hidden(default=0)
+    isotropic: bool = _hidden(default=True)
+    given: tuple[str, ...] = _hidden(default=())
+
+    @property
+    def return_code(self) -> int:
+        """1 when the operating speed fails the separation-margin rule or a mode grows
+        there; else 0."""
+        if self.margins is not None and self.margins.passed is False:
+            return int(ExitStatus.CHECK_FAILED)
+        if self.stability.stable_at_speed is False:
+            return int(ExitStatus.CHECK_FAILED)
+        return int(ExitStatus.OK)
+
+    def to_json(self) -> dict[str, Any]:
+        """The document ``rbcli whirl --json`` prints, less ``file``."""
+        from rbcli.api.result import jsonable
+
+        d = to_json(self)
+        d["warnings"] = list(self.warnings)  # Notes: --json spells their options
+        return jsonable(d)

@@ -1,0 +1,420 @@
+"""Unbalance response of the rigid rotor, its peaks, amplification factors and the
+API separation margins.
+
+Forcing. A static unbalance U = M (x_G + i y_G) (kg m) and a couple unbalance about the
+com P_G = D_xz + i D_yz (kg m², D = -J_xz of the tensor in shaft axes), both fixed in the
+rotor (angles from the 0° mark in the direction of rotation, as ``rbcli balance`` gives
+them), turning at Omega: the centre of mass runs U/M off the shaft axis and the rotor's
+angular momentum has a turning part Omega (J_xz, J_yz), so (physics sheet ``whirl.md``)
+
+    m r'' + ... = Omega^2 U e^{i Omega t},    It phi'' - ... = Omega^2 P_G e^{i Omega t}
+
+in the directional coordinates; in the real ones, with ``q = Re(Q e^{i Omega t})``,
+the complex amplitudes of the forces and moments on (x, y, theta_x, theta_y) are
+``Omega^2 (U, -i U, i P_G, P_G)``. Correction-plane unbalances U_k at z_k (kg m) are a
+static unbalance sum U_k and a couple sum (z_k - z_G) U_k.
+
+Steady state: ``(K - Omega^2 M + i Omega (C + Omega G)) Q = F`` at each speed. At bearing
+i the axis moves by ``D = T_i Q`` (complex amplitudes of d_x, d_y) and the rotor pushes
+the bearing with ``F_i = (K_i + i Omega C_i) D``. An orbit ``Re(D e^{i Omega t})`` is an
+ellipse with forward part ``D_f = (D_x + i D_y)/2`` and backward part
+``D_b = conj(D_x - i D_y)/2``; its semi-major axis ``|D_f| + |D_b|`` is the amplitude
+reported, and the phase is arg D_f, the angle of the high spot in the rotor frame (from
+the 0° mark, in the direction of rotation, as balance's angles): the displacement is
+largest when it points there. Isotropic bearings: a circle, D_b = 0.
+
+Rigid-support limit: as every stiffness grows without bound the bearing forces tend to
+balance's rigid-bearing forces ``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``, ``F_2 =
+Omega^2 (P - z_1 U)/(z_2 - z_1)`` (P about z = 0) for two bearings.
+
+Peaks and amplification factor (API 684, 2nd ed. 2005, SP6.8.2.1; API 617, 8th ed. 2014,
+§6.8.2.4): at each local maximum Nc of a bearing's amplitude, ``AF = Nc / (N2 - N1)``
+with N1 < Nc < N2 the speeds where the amplitude is the peak's 1/sqrt(2) (the half-power
+points). The peak is the root of the amplitude's exact slope (:func:`amplitude_slope`)
+and N1, N2 the roots of amplitude - peak/sqrt 2, each by Brent's method to ~1e-12 of the
+speed or better.
+
+Separation margin (API 617 8th ed. §6.8.2.5 / API 684 SP6.8.2.10, as implemented in
+ROSS, ``ross/api_report.py`` of github.com/petrobras/ross): AF < 2.5 needs no margin;
+otherwise a critical speed below the minimum operating speed N_min needs
+``SM = min(16, 17 (1 - 1/(AF - 1.5)))`` % of N_min, one above the maximum continuous
+speed N_max ``SM = min(26, 10 + 17 (1 - 1/(AF - 1.5)))`` % of N_max. The actual margin is
+``(N_min - Nc)/N_min`` or ``(Nc - N_max)/N_max``. (Check the clause against a licensed
+copy of the standard before claiming conformity.)
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rbcli.core.whirl.model import Rotor
+
+__all__ = ["Forcing", "Response", "response", "Peak", "peaks", "required_margin", "Margin",
+           "margin", "SQRT_HALF"]
+
+SQRT_HALF = 1.0 / math.sqrt(2.0)
+_GOLD = (math.sqrt(5.0) - 1.0) / 2.0
+
+
+@dataclass(frozen=True)
+class Forcing:
+    """The unbalance that drives the response.
+
+    Attributes
+    ----------
+    static : complex — kg m, U (rotor frame)
+    couple : complex — kg m², P_G about the com (rotor frame)
+    """
+
+    static: complex
+    couple: complex
+
+    @classmethod
+    def from_planes(cls, z_com: float, planes: list[tuple[float, complex]]) -> "Forcing":
+        """Unbalances U_k (kg m, complex in the rotor frame) at z_k (m):
+        U = sum U_k, P_G = sum (z_k - z_G) U_k."""
+        U = sum((u for _, u in planes), 0j)
+        P = sum(((z - z_com) * u for z, u in planes), 0j)
+        return cls(complex(U), complex(P))
+
+    @property
+    def zero(self) -> bool:
+        return self.static == 0.0 and self.couple == 0.0
+
+
+def _amplitudes(rotor: Rotor, forcing: Forcing, speeds: np.ndarray) -> np.ndarray:
+    """(N, 4) complex ndarray: Q at each speed; NaN at a speed where the dynamic stiffness
+    is singular (an undamped critical speed: the response is unbounded there)."""
+    W = np.asarray(speeds, dtype=float)
+    M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
+    Z = (K[None, :, :] - (W**2)[:, None, None] * M[None, :, :]
+         + 1j * W[:, None, None] * (C[None, :, :] + W[:, None, None] * G[None, :, :]))
+    F = (W**2)[:, None] * forcing_vector(forcing)[None, :]
+    try:
+        return np.linalg.solve(Z, F[:, :, None])[:, :, 0]
+    except np.linalg.LinAlgError:  # one speed at least is exactly critical: each on its own
+        out = np.full((len(W), 4), np.nan, dtype=complex)
+        for j in range(len(W)):
+            try:
+                out[j] = np.linalg.solve(Z[j], F[j])
+            except np.linalg.LinAlgError:
+                pass
+        return out
+
+
+def _orbit(Dx: np.ndarray, Dy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(semi-major axis, semi-minor axis, phase deg in [0, 360)) of Re((Dx, Dy) e^{iwt})."""
+    Df = 0.5 * (Dx + 1j * Dy)
+    Db = 0.5 * np.conj(Dx - 1j * Dy)
+    major = np.abs(Df) + np.abs(Db)
+    minor = np.abs(np.abs(Df) - np.abs(Db))
+    phase = np.degrees(np.angle(Df)) % 360.0
+    phase = np.where(np.abs(Df) > 0.0, phase, 0.0)
+    return major, minor, phase
+
+
+@dataclass(frozen=True, eq=False)
+class Response:
+    """Unbalance response at each speed, per bearing.
+
+    Attributes
+    ----------
+    speeds : (N,) ndarray — rad/s
+    displacement : (n_b, N) ndarray — m, semi-major axis of each bearing's orbit
+    displacement_minor : (n_b, N) ndarray — m, semi-minor axis
+    displacement_phase_deg : (n_b, N) ndarray — deg, high spot in the rotor frame
+    force : (n_b, N) ndarray — N, semi-major axis of the force the rotor exerts on it
+    force_phase_deg : (n_b, N) ndarray — deg, its direction when largest, rotor frame
+    """
+
+    speeds: np.ndarray
+    displacement: np.ndarray
+    displacement_minor: np.ndarray
+    displacement_phase_deg: np.ndarray
+    force: np.ndarray
+    force_phase_deg: np.ndarray
+
+
+def bearing_motion(rotor: Rotor, forcing: Forcing, speeds) -> tuple[np.ndarray, np.ndarray]:
+    """(D, F): complex amplitudes (n_b, N, 2) of each bearing's displacement (m) and of the
+    force the rotor exerts on it (N), in x and y."""
+    W = np.asarray(speeds, dtype=float)
+    Q = _amplitudes(rotor, forcing, W)
+    Ds, Fs = [], []
+    for b, a in zip(rotor.bearings, rotor.arms()):
+        Dx = Q[:, 0] + a * Q[:, 3]
+        Dy = Q[:, 1] - a * Q[:, 2]
+        D = np.stack([Dx, Dy], axis=1)
+        Kb, Cb = b.K, b.C
+        F = D @ Kb.T + 1j * W[:, None] * (D @ Cb.T)
+        Ds.append(D)
+        Fs.append(F)
+    return np.array(Ds), np.array(Fs)
+
+
+def response(rotor: Rotor, forcing: Forcing, speeds) -> Response:
+    """The unbalance response at ``speeds`` (rad/s, (N,)); see the module docstring.
+    A speed where the response is unbounded (exactly an undamped critical speed) is left
+    out."""
+    W = np.array(speeds, dtype=float)
+    Q = _amplitudes(rotor, forcing, W)
+    W = W[np.all(np.isfinite(Q), axis=1)]
+    D, F = bearing_motion(rotor, forcing, W)
+    dm, dn, dp = _orbit(D[:, :, 0], D[:, :, 1])
+    fm, _, fp = _orbit(F[:, :, 0], F[:, :, 1])
+    arrays = [W, dm, dn, dp, fm, fp]
+    for a in arrays:
+        a.setflags(write=False)
+    return Response(*arrays)
+
+
+def amplitude(rotor: Rotor, forcing: Forcing, bearing: int, speed: float) -> float:
+    """m, the semi-major axis of bearing ``bearing``'s orbit at one speed."""
+    return amplitude_slope(rotor, forcing, bearing, speed)[0]
+
+
+def amplitude_slope(rotor: Rotor, forcing: Forcing, bearing: int, speed: float) -> tuple[float, float]:
+    """(A, dA/dOmega): the semi-major axis (m) of bearing ``bearing``'s orbit at ``speed``
+    and its derivative with the speed (m s/rad), exactly.
+
+    ``Q = Z^-1 F`` with ``Z = K - W^2 M + i W (C + W G)``, ``F = W^2 f``; so
+    ``dQ = Z^-1 (2 W f - dZ Q)`` with ``dZ = -2 W M + i (C + 2 W G)``. The orbit's parts
+    ``D_f = (D_x + i D_y)/2``, ``D_b = conj(D_x - i D_y)/2`` and ``A = |D_f| + |D_b|``, so
+    ``dA = Re(conj(D_f) dD_f)/|D_f| + Re(conj(D_b) dD_b)/|D_b|``."""
+    W = float(speed)
+    M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
+    Z = K - W * W * M + 1j * W * (C + W * G)
+    dZ = -2.0 * W * M + 1j * (C + 2.0 * W * G)
+    f = forcing_vector(forcing)
+    Q = np.linalg.solve(Z, W * W * f)
+    dQ = np.linalg.solve(Z, 2.0 * W * f - dZ @ Q)
+    a = float(rotor.arms()[bearing])
+    Dx, Dy = Q[0] + a * Q[3], Q[1] - a * Q[2]
+    dDx, dDy = dQ[0] + a * dQ[3], dQ[1] - a * dQ[2]
+    parts = ((0.5 * (Dx + 1j * Dy), 0.5 * (dDx + 1j * dDy)),
+             (0.5 * np.conj(Dx - 1j * Dy), 0.5 * np.conj(dDx - 1j * dDy)))
+    A = dA = 0.0
+    for d, dd in parts:
+        r = abs(d)
+        A += r
+        if r > 0.0:
+            dA += float((np.conj(d) * dd).real) / r
+    return float(A), float(dA)
+
+
+def forcing_vector(forcing: Forcing) -> np.ndarray:
+    """(4,) complex: the amplitudes per Omega^2 of the forces and moments on (x, y,
+    theta_x, theta_y), (U, -i U, i P_G, P_G)."""
+    U, P = forcing.static, forcing.couple
+    return np.array([U, -1j * U, 1j * P, P], dtype=complex)
+
+
+def excitation(rotor: Rotor, forcing: Forcing, speed: float, q: np.ndarray) -> float:
+    """How much the unbalance drives the undamped mode ``q`` (real coordinates) at its
+    critical speed ``speed`` (order 1), relative: |y^H f| / (|y| |f|) with y the mode's
+    left null vector of the undamped dynamic stiffness Z = K - W^2 M + i W^2 G.
+
+    Without cross-coupled stiffness Z is Hermitian (K, M symmetric, i G Hermitian), so y
+    is q itself; a forward forcing then has no part along a backward mode on isotropic
+    bearings (exactly 0, to round-off). With cross-coupling y is Z's smallest left
+    singular vector. The moments are scaled by the radius of gyration sqrt(It/m) so that
+    forces and moments weigh alike. 0 when there is no unbalance."""
+    r = rotor.undamped()
+    sc = np.array([1.0, 1.0, 1.0 / math.sqrt(r.It / r.mass), 1.0 / math.sqrt(r.It / r.mass)])
+    f = forcing_vector(forcing) * sc
+    nf = float(np.linalg.norm(f))
+    if nf == 0.0:
+        return 0.0
+    if all(b.kxy == 0.0 and b.kyx == 0.0 for b in rotor.bearings):
+        y = np.asarray(q, dtype=complex) / sc
+    else:
+        Z = r.K() - speed * speed * r.M() + 1j * speed * speed * r.G()
+        u, _, _ = np.linalg.svd(Z)
+        y = u[:, -1]
+    return float(abs(np.vdot(y, f)) / (float(np.linalg.norm(y)) * nf))
+
+
+#: a critical speed is driven by the unbalance when :func:`excitation` exceeds this (the
+#: round-off of an undriven one is ~1e-16)
+EXCITED_RTOL = 1e-8
+
+
+# ---------------------------------------------------------------------- peaks
+
+
+@dataclass(frozen=True)
+class Peak:
+    """A resonance peak of one bearing's response.
+
+    Attributes
+    ----------
+    bearing : int — index of the bearing
+    speed : float — rad/s, Nc (the peak)
+    amplitude : float — m, the peak's semi-major axis
+    half_power : (float, float) | None — rad/s, (N1, N2) where the amplitude is the
+        peak's 1/sqrt(2); None when the curve does not fall that far on both sides before
+        rising into another peak (AF not defined)
+    amplification_factor : float | None — Nc/(N2 - N1)
+    """
+
+    bearing: int
+    speed: float
+    amplitude: float
+    half_power: tuple[float, float] | None
+    amplification_factor: float | None
+
+
+def _golden_max(f, a: float, b: float, tol: float) -> float:
+    """The maximiser of a unimodal f on [a, b] to ``tol`` (golden-section search)."""
+    c = b - _GOLD * (b - a)
+    d = a + _GOLD * (b - a)
+    fc, fd = f(c), f(d)
+    for _ in range(200):
+        if b - a <= tol:
+            break
+        if fc >= fd:
+            b, d, fd = d, c, fc
+            c = b - _GOLD * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + _GOLD * (b - a)
+            fd = f(d)
+    return 0.5 * (a + b)
+
+
+def _peak(rotor: Rotor, forcing: Forcing, i: int, lo: float, hi: float) -> float:
+    """The speed of the amplitude's maximum in [lo, hi]: the root of its exact slope by
+    Brent's method when the slope changes sign there (to ~1e-15 of the speed), else
+    golden-section search on the amplitude (to ~1e-8: the maximum is flat)."""
+    from rbcli.core.roots import brentq
+
+    slope = lambda x: amplitude_slope(rotor, forcing, i, x)[1]  # noqa: E731
+    s_lo, s_hi = slope(lo), slope(hi)
+    if s_lo > 0.0 > s_hi:
+        return brentq(slope, lo, hi, xtol=1e-14 * hi, rtol=4e-16)
+    return _golden_max(lambda x: amplitude(rotor, forcing, i, x), lo, hi, 1e-12 * hi)
+
+
+def _half_power(f, Nc: float, level: float, grid: np.ndarray, amps: np.ndarray, j: int,
+                direction: int, limit: float) -> float | None:
+    """The speed beside the peak (grid index j) where f = level, going down (direction -1)
+    or up (+1); None when the curve turns up again first."""
+    from rbcli.core.roots import brentq
+
+    g = lambda x: f(x) - level  # noqa: E731
+    prev_x, prev_a = Nc, f(Nc)
+    k = j + direction
+    while 0 <= k < len(grid):
+        x, a = float(grid[k]), float(amps[k])
+        if a <= level:
+            lo, hi = (x, prev_x) if x < prev_x else (prev_x, x)
+            return brentq(g, lo, hi, xtol=1e-12 * Nc, rtol=4e-16)
+        if a > prev_a:  # rising again: another peak before the half-power point
+            return None
+        prev_x, prev_a = x, a
+        k += direction
+    # beyond the grid: step on (down to 0, up to ``limit``)
+    x = prev_x
+    for _ in range(200):
+        x = x * 0.9 if direction < 0 else x * 1.1
+        if direction > 0 and x > limit:
+            return None
+        a = f(x) if x > 0.0 else 0.0
+        if a <= level:
+            lo, hi = (x, prev_x) if x < prev_x else (prev_x, x)
+            return brentq(g, lo, hi, xtol=1e-12 * Nc, rtol=4e-16)
+        if a > prev_a:
+            return None
+        prev_x, prev_a = x, a
+    return None
+
+
+def peaks(rotor: Rotor, forcing: Forcing, res: Response) -> list[Peak]:
+    """The resonance peaks of every bearing's amplitude over ``res.speeds``, refined, with
+    their half-power points and amplification factors (see the module docstring).
+
+    A peak is a grid point higher than its neighbours (the range's end points are not
+    peaks). Without damping the response has no finite peak (it is infinite at an excited
+    critical speed): the caller judges those from the critical speeds instead.
+    """
+    out = []
+    W = res.speeds
+    for i in range(len(rotor.bearings)):
+        amps = res.displacement[i]
+        f = lambda x, i=i: amplitude(rotor, forcing, i, x)  # noqa: E731
+        for j in range(1, len(W) - 1):
+            if not (amps[j] > amps[j - 1] and amps[j] >= amps[j + 1]):
+                continue
+            Nc = _peak(rotor, forcing, i, float(W[j - 1]), float(W[j + 1]))
+            A = f(Nc)
+            level = SQRT_HALF * A
+            N1 = _half_power(f, Nc, level, W, amps, j, -1, 0.0)
+            N2 = _half_power(f, Nc, level, W, amps, j, +1, 10.0 * Nc)
+            if N1 is None or N2 is None or not N2 > N1:
+                out.append(Peak(i, Nc, A, None, None))
+            else:
+                out.append(Peak(i, Nc, A, (N1, N2), Nc / (N2 - N1)))
+    return out
+
+
+# ---------------------------------------------------------------------- API margins
+
+
+def required_margin(af: float | None, position: str) -> float:
+    """%, the separation margin the API rule asks of a critical speed with amplification
+    factor ``af`` (None: undamped, infinite) lying ``position`` ("below" the minimum
+    operating speed or "above" the maximum continuous speed); 0 when AF < 2.5."""
+    if af is not None and af < 2.5:
+        return 0.0
+    base = 17.0 if af is None else 17.0 * (1.0 - 1.0 / (af - 1.5))
+    return min(16.0, base) if position == "below" else min(26.0, 10.0 + base)
+
+
+@dataclass(frozen=True)
+class Margin:
+    """One critical speed judged against the operating speed range.
+
+    Attributes
+    ----------
+    speed : float — rad/s, the critical (peak) speed Nc
+    amplification_factor : float | None — None when undamped (infinite)
+    position : str — "below", "above" or "within" the operating range
+    margin_percent : float — % of N_min (below) or N_max (above); 0 within
+    required_percent : float — % (within: the API rule allows none when AF >= 2.5)
+    passed : bool
+    """
+
+    speed: float
+    amplification_factor: float | None
+    position: str
+    margin_percent: float
+    required_percent: float
+    passed: bool
+
+
+def margin(speed: float, af: float | None, n_min: float, n_max: float) -> Margin:
+    """The API 617 / 684 separation margin check of a critical speed ``speed`` (rad/s) with
+    amplification factor ``af`` against the operating range [n_min, n_max] (rad/s)."""
+    if speed < n_min:
+        pos, actual = "below", 100.0 * (n_min - speed) / n_min
+    elif speed > n_max:
+        pos, actual = "above", 100.0 * (speed - n_max) / n_max
+    else:
+        pos, actual = "within", 0.0
+    if pos == "within":
+        req = 0.0 if (af is not None and af < 2.5) else required_margin(af, "below")
+        ok = af is not None and af < 2.5
+    else:
+        req = required_margin(af, pos)
+        ok = actual >= req
+    return Margin(float(speed), af, pos, float(actual), float(req), bool(ok))
+
+
+def phase_deg(z: complex) -> float:
+    """deg in [0, 360) of a complex number (0 for 0)."""
+    return math.degrees(cmath.phase(z)) % 360.0 if z != 0 else 0.0

@@ -1,0 +1,166 @@
+"""Documents from Python: the report's text, or the report written to a file.
+
+The library's counterpart of what ``rbcli report`` does: compute with :mod:`rbcli.api`
+(:func:`rbcli.report`), lay out with :mod:`rbcli.render` (:mod:`rbcli.render.reportdoc`,
+HTML or Markdown) and write with :mod:`rbcli.io.outfile` (never over an input, never
+through a link, all or nothing, an existing file only with ``force``). The command line
+uses these same functions, so a document made here has the bytes the command writes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from os import PathLike
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.report import ReportResult
+    from rbcli.model import Body
+
+__all__ = ["FORMATS", "report_text", "write_report", "check_report_path"]
+
+#: the report's document formats, by file extension
+FORMATS = (".html", ".md")
+
+
+def _format(format: str | None) -> str | None:  # noqa: A002 - the command line's word
+    from rbcli.api.options import choice
+
+    return None if format is None else "." + choice(format, "format", ("html", "md"))
+
+
+def _layout(digits: int, units: str | None) -> tuple[int, Any]:
+    from rbcli.errors import ParamError
+    from rbcli.render.units import DisplayUnits
+
+    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 17:
+        raise ParamError("digits", f"must be a whole number from 1 to 17, got {digits!r}")
+    return digits, DisplayUnits.parse(units)
+
+
+def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A002
+                units: str | None = None, **options: Any) -> str:
+    """The report of ``body`` as one document's text.
+
+    Parameters
+    ----------
+    body : rbcli.Body
+    format : {"html", "md"}
+        One self-contained HTML5 file (inline CSS and SVG figures), or Markdown whose
+        figures are linked as ``report_files/NAME.svg`` (:func:`write_report` writes them).
+    digits : int
+        Significant figures in the tables, 1 to 17.
+    units : str, optional
+        Units of the tables, e.g. ``"mm,g"`` (default SI).
+    **options
+        The options of :func:`rbcli.report` (``spin``, ``theta``, ``planes``, ...).
+
+    Returns
+    -------
+    str
+        The document (the bytes ``rbcli report`` writes for the same options; set
+        ``SOURCE_DATE_EPOCH`` for a fixed date).
+
+    Raises
+    ------
+    rbcli.InputError
+        naming the parameter, for a value a command refuses.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> html = rbcli.report_text(rbcli.load("examples/top.yaml"), spin=150, theta=30)
+    >>> html.startswith("<!DOCTYPE html>")
+    True
+    """
+    from rbcli.api.report import report
+    from rbcli.render import report as R
+    from rbcli.render.reportdoc import document
+
+    fmt = _format(format)
+    digits, du = _layout(digits, units)
+    doc = document(report(body, **options), du, digits)
+    return R.html(doc) if fmt == ".html" else R.markdown(doc, "report_files")[0]
+
+
+def check_report_path(path: str | PathLike, body: Body, *, force: bool = False) -> tuple[str, Any, Any]:
+    """(format ``".html"`` or ``".md"``, the path, its figures folder), checked by
+    :mod:`rbcli.io.outfile` before anything is computed: never an input file (the body, its
+    includes, its meshes), never a link or a device; an existing report, or figures folder
+    (an output too), only with ``force``.
+
+    Raises
+    ------
+    rbcli.InputError
+        naming ``output``.
+    """
+    from rbcli.io import outfile
+
+    p = outfile.check(path, body, "output", force=force, exts=FORMATS)
+    ext = p.suffix.lower()
+    files = outfile.files_dir(p)
+    if ext == ".md":
+        outfile.check_folder(files, body, "output", force=force)
+    return ext, p, files
+
+
+def write_report(body: Body, path: str | PathLike, *, force: bool = False,
+                 format: str | None = None, digits: int = 6,  # noqa: A002
+                 units: str | None = None,
+                 progress: Callable[[str, int, int], None] | None = None,
+                 **options: Any) -> ReportResult:
+    """Write the report of ``body`` to ``path`` and return what it found.
+
+    ``.html`` is one self-contained file; ``.md`` writes its figures to ``FILE_files/``
+    beside it. All or nothing; an existing report (and figures folder) is replaced only
+    with ``force``; an input file (the body, a file it includes, a mesh it reads) never.
+
+    Parameters
+    ----------
+    body : rbcli.Body
+    path : str or path-like — ``.html`` or ``.md``
+    force : bool — replace an existing report
+    format : {"html", "md"}, optional — must agree with the extension when given
+    digits, units : as :func:`report_text`
+    progress : callable, optional — ``progress(what, i, n)`` before each step
+    **options : the options of :func:`rbcli.report`
+
+    Returns
+    -------
+    ReportResult
+        ``return_code`` is 1 when a check asked for failed (``failed`` says which), as the
+        command's exit status; the report is written all the same.
+
+    Raises
+    ------
+    rbcli.InputError
+        naming the parameter, for a value a command refuses or a path that may not be
+        written.
+    TypeError
+        ``force`` that is not a bool.
+    """
+    from rbcli.api.report import ReportOptions, run
+    from rbcli.errors import ParamError
+    from rbcli.io.outfile import write_document
+    from rbcli.render import report as R
+    from rbcli.render.reportdoc import document
+
+    if not isinstance(force, bool):
+        raise TypeError(f"force: expected a bool, got {type(force).__name__}")
+    fmt = _format(format)
+    digits, du = _layout(digits, units)
+    ext, p, files = check_report_path(path, body, force=force)
+    if fmt is not None and fmt != ext:
+        from rbcli.errors import literal
+
+        raise ParamError("format", f"'{literal(format)}' does not match the file '{literal(path)}' ({ext})")
+    result = run(body, ReportOptions.parse(body, **options), progress)
+    doc = document(result, du, digits, progress)
+    if progress is not None:
+        progress("writing", 1, 1)
+    if ext == ".html":
+        write_document(p, R.html(doc), "output", replace=force)
+    else:
+        text, figures = R.markdown(doc, files.name)
+        write_document(p, text, "output", replace=force, folder=files, files=figures)
+    return result

@@ -1,0 +1,170 @@
+"""Read a file of influence coefficients written by ``rbcli field-balance --save-coefficients``.
+
+The file is JSON (:data:`FORMAT`, version 1)::
+
+    {
+      "format": "rbcli field-balance influence coefficients",
+      "version": 1,
+      "influence": {"reading_kind": "velocity", "reading_unit": "m/s", "measure": "rms",
+                    "per": "kg of trial mass at the plane's trial radius", ...},
+      "conventions": {"phase": "lag", "angle_sense": "against", "rotation": "cw", ...},
+      "sensors": ["NDE-H", "NDE-V"],
+      "speeds": [{"name": "run", "speed": 154.985}],            # rad/s, or null
+      "planes": [{"name": "A", "trial_radius": 0.25}],          # m, or null
+      "rows": [{"sensor": "NDE-H", "speed": "run"}, ...],       # one per reading
+      "coefficients": [[{"re": ..., "im": ..., "magnitude": ..., "angle_deg": ...}, ...], ...]
+    }
+
+``re`` and ``im`` are the coefficients exactly (JSON numbers are written with Python's
+shortest round-trip repr, so they read back bit for bit); ``magnitude`` and ``angle_deg``
+are for people and are not read. Every problem is an :class:`rbcli.errors.InputError`
+naming the file.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from rbcli.errors import InputError, Location
+
+FORMAT = "rbcli field-balance influence coefficients"
+VERSION = 1
+MAX_COEFF_BYTES = 8 * 1024 * 1024
+
+
+@dataclass(frozen=True)
+class SavedCoefficients:
+    """What a coefficients file holds (SI: rad/s, m; coefficients per kg).
+
+    ``coefficients`` is row-major: ``coefficients[k][j]`` for reading ``k`` (``rows[k]``)
+    and plane ``j``.
+    """
+
+    source: str
+    reading_kind: str | None
+    measure: str | None
+    phase: str | None
+    angle_sense: str | None
+    rotation: str | None
+    sensors: tuple[str, ...]
+    speeds: tuple[tuple[str, float | None], ...]
+    planes: tuple[tuple[str, float | None], ...]
+    rows: tuple[tuple[str, str], ...]
+    coefficients: tuple[tuple[complex, ...], ...]
+
+
+def _err(source: str, message: str) -> InputError:
+    return InputError(message, Location(source))
+
+
+def _get(d: Any, key: str, source: str, what: str) -> Any:
+    if not isinstance(d, dict) or key not in d:
+        raise _err(source, f"not a coefficients file: {what} has no '{key}'")
+    return d[key]
+
+
+def _opt_str(v: Any, allowed: tuple[str, ...], source: str, what: str) -> str | None:
+    if v is None:
+        return None
+    if v not in allowed:
+        raise _err(source, f"{what} must be {' or '.join(allowed)} or null, not {v!r}")
+    return str(v)
+
+
+def _number(v: Any, source: str, what: str, *, positive: bool = False) -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise _err(source, f"{what} must be a finite number, not {v!r}")
+    if positive and not v > 0:
+        raise _err(source, f"{what} must be positive, not {v!r}")
+    return float(v)
+
+
+def load_coefficients(path: str) -> SavedCoefficients:
+    """Read and check a coefficients file.
+
+    Raises
+    ------
+    rbcli.InputError
+        a file that cannot be read, is not JSON, or is not a coefficients file of this
+        format (one line naming the file and what is wrong).
+    """
+    from rbcli.io.reader import read_regular
+
+    data = read_regular(path, MAX_COEFF_BYTES, "coefficients file")
+    try:
+        doc = json.loads(data.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise _err(path, "the coefficients file is not UTF-8 text") from None
+    except json.JSONDecodeError as exc:
+        raise InputError(f"invalid JSON: {exc.msg}", Location(path, exc.lineno, exc.colno)) from None
+    except RecursionError:
+        raise _err(path, "invalid JSON: nested too deeply") from None
+    return parse_coefficients(doc, path)
+
+
+def parse_coefficients(doc: Any, source: str = "<coefficients>") -> SavedCoefficients:
+    """Check a coefficients document (parsed JSON)."""
+    if not isinstance(doc, dict) or doc.get("format") != FORMAT:
+        raise _err(source, f"not a coefficients file: its 'format' is not '{FORMAT}'")
+    if doc.get("version") != VERSION:
+        raise _err(source, f"coefficients file version {doc.get('version')!r}; this rbcli reads version {VERSION}")
+    inf = _get(doc, "influence", source, "the file")
+    kind = _opt_str(_get(inf, "reading_kind", source, "influence"), ("displacement", "velocity", "acceleration"),
+                    source, "influence.reading_kind")
+    measure = _opt_str(inf.get("measure"), ("pk", "pk-pk", "rms"), source, "influence.measure")
+    conv = _get(doc, "conventions", source, "the file")
+    phase = _opt_str(conv.get("phase"), ("lag", "lead"), source, "conventions.phase")
+    sense = _opt_str(conv.get("angle_sense"), ("with", "against"), source, "conventions.angle_sense")
+    rotation = _opt_str(conv.get("rotation"), ("cw", "ccw"), source, "conventions.rotation")
+    sensors = _get(doc, "sensors", source, "the file")
+    if not isinstance(sensors, list) or not sensors or not all(isinstance(s, str) for s in sensors):
+        raise _err(source, "sensors must be a list of names")
+    speeds_raw = _get(doc, "speeds", source, "the file")
+    if not isinstance(speeds_raw, list) or not speeds_raw:
+        raise _err(source, "speeds must be a list of {name, speed}")
+    speeds = []
+    for s in speeds_raw:
+        name = _get(s, "name", source, "a speed")
+        sp = _get(s, "speed", source, "a speed")
+        if not isinstance(name, str):
+            raise _err(source, "a speed's name must be a text")
+        speeds.append((name, None if sp is None else _number(sp, source, "a speed", positive=True)))
+    planes_raw = _get(doc, "planes", source, "the file")
+    if not isinstance(planes_raw, list) or not planes_raw:
+        raise _err(source, "planes must be a list of {name, trial_radius}")
+    planes = []
+    for p in planes_raw:
+        name = _get(p, "name", source, "a plane")
+        r = _get(p, "trial_radius", source, "a plane")
+        if not isinstance(name, str):
+            raise _err(source, "a plane's name must be a text")
+        planes.append((name, None if r is None else _number(r, source, "a trial radius", positive=True)))
+    rows_raw = _get(doc, "rows", source, "the file")
+    if not isinstance(rows_raw, list) or len(rows_raw) != len(sensors) * len(speeds):
+        raise _err(source, f"rows must list {len(sensors) * len(speeds)} readings (every sensor at every speed)")
+    rows = []
+    for r in rows_raw:
+        s, v = _get(r, "sensor", source, "a row"), _get(r, "speed", source, "a row")
+        if s not in sensors or v not in [x[0] for x in speeds]:
+            raise _err(source, f"a row names sensor {s!r} at speed {v!r}, not among the file's sensors and speeds")
+        rows.append((s, v))
+    coeffs_raw = _get(doc, "coefficients", source, "the file")
+    if not isinstance(coeffs_raw, list) or len(coeffs_raw) != len(rows):
+        raise _err(source, f"coefficients must have {len(rows)} rows, one per reading")
+    coeffs = []
+    for row in coeffs_raw:
+        if not isinstance(row, list) or len(row) != len(planes):
+            raise _err(source, f"each row of coefficients must have {len(planes)} entries, one per plane")
+        out = []
+        for c in row:
+            out.append(complex(_number(_get(c, "re", source, "a coefficient"), source, "re"),
+                               _number(_get(c, "im", source, "a coefficient"), source, "im")))
+        coeffs.append(tuple(out))
+    return SavedCoefficients(
+        source=source, reading_kind=kind, measure=measure, phase=phase, angle_sense=sense,
+        rotation=rotation, sensors=tuple(sensors), speeds=tuple(speeds), planes=tuple(planes),
+        rows=tuple(rows), coefficients=tuple(coeffs),
+    )

@@ -1,0 +1,597 @@
+"""Read a field-balancing job file (YAML) into a checked :class:`FieldJob`, every problem
+located at ``file:line:col``.
+
+A job names its sensors, planes (radius, positions), speeds and runs; the readings and
+trial masses stay located texts (``"6.2 mm/s@112"``, ``"50 g@0"``) that
+:mod:`rbcli.api.fieldbalance` reads as the command line reads ``--initial`` and
+``--trial``, so a bad reading is reported at its place in the file. The format::
+
+    rbcli: 1
+    job: field-balance
+    name: ID fan 3
+    units: {length: mm, mass: g}     # bare lengths and masses (default m, and g for masses)
+    conventions: {phase: lag, angle_sense: against, rotation: cw}
+    readings: {measure: rms}         # the measure of readings that state none
+    sensors: [NDE-H, {name: NDE-V, weight: 2}]
+    planes:
+      - {name: A, radius: 250, positions: 8}
+      - {name: B, radius: 250, correction_radius: 300, at: 900}
+    speeds: [{name: run, speed: 1480 rpm}]
+    initial: {run: ["6.2 mm/s@112", "3.9 mm/s@200"]}
+    trials:
+      - {plane: A, mass: "50 g@0", readings: {run: [...]}}
+      - {plane: B, mass: "50 g@0", readings: {run: [...]}}
+
+With one speed, ``speeds`` may be left out and ``initial`` and each trial's ``readings``
+written as plain lists. The JSON Schema is :func:`job_schema` (installed as
+``rbcli/data/fieldjob.schema.json``).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from rbcli.errors import InputError, Location
+from rbcli.io import fields as fl
+from rbcli.io import units as un
+from rbcli.io import yamlsafe as ys
+
+SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "fieldjob.schema.json"
+
+#: a job file is refused above this size (bytes): a job holds a few hundred readings
+MAX_JOB_BYTES = 4 * 1024 * 1024
+
+TOP_KEYS = ("rbcli", "job", "name", "description", "units", "conventions", "readings", "sensors",
+            "planes", "speeds", "initial", "trials", "cumulative", "method", "mass_step",
+            "angle_step", "severity", "rotor", "coefficients")
+UNIT_KEYS = ("length", "mass", "angular_speed")
+CONVENTION_KEYS = ("phase", "angle_sense", "rotation")
+PLANE_KEYS = ("name", "radius", "correction_radius", "positions", "at")
+SPEED_KEYS = ("name", "speed")
+SENSOR_KEYS = ("name", "weight")
+TRIAL_KEYS = ("plane", "mass", "readings")
+SEVERITY_KEYS = ("standard", "group", "foundation")
+ROTOR_KEYS = ("mass", "body", "bearings", "com", "bearing_load", "g", "trial_fraction")
+
+#: the words a job file (and the command line) accepts, per key
+CHOICES = {
+    "method": ("least-squares", "min-max", "exact"),
+    "phase": ("lag", "lead"),
+    "angle_sense": ("with", "against"),
+    "rotation": ("cw", "ccw"),
+    "measure": ("pk", "pk-pk", "rms"),
+    "standard": ("iso20816-3",),
+    "foundation": ("rigid", "flexible"),
+}
+
+
+@dataclass(frozen=True)
+class Text:
+    """A value as written in the file (a reading, a trial mass) and where."""
+
+    text: str
+    where: Location
+
+
+@dataclass(frozen=True)
+class JobPlane:
+    """name; radius, correction_radius, at: m or None; positions: int or None."""
+
+    name: str
+    radius: float | None
+    correction_radius: float | None
+    positions: int | None
+    at: float | None
+    where: Location
+
+
+@dataclass(frozen=True)
+class JobSpeed:
+    """name; speed: rad/s or None (not given)."""
+
+    name: str
+    speed: float | None
+    where: Location
+
+
+@dataclass(frozen=True)
+class JobTrial:
+    """The trial run of one plane: its mass@angle and readings per speed, per sensor."""
+
+    plane: str
+    mass: Text
+    readings: tuple[tuple[Text, ...], ...]
+    where: Location
+
+
+@dataclass(frozen=True)
+class JobRotor:
+    """What sizes a trial mass: the rotor's mass (kg) or body file (a path), bearings and com
+    (m, along the shaft), an explicit bearing load (N), g (m/s²), the fraction."""
+
+    mass: float | None
+    body: str | None
+    bearings: tuple[float, float] | None
+    com: float | None
+    bearing_load: float | None
+    g: float | None
+    trial_fraction: float | None
+    where: Location
+
+
+@dataclass(frozen=True)
+class FieldJob:
+    """A checked job file. Lengths m, masses kg, speeds rad/s; readings as located texts.
+
+    ``initial`` and each trial's ``readings`` hold one tuple per speed (in ``speeds``
+    order), each one Text per sensor (in ``sensors`` order). ``keys`` maps every top-level
+    key given to where it is (to locate a conflict with a command-line option); ``units``
+    the file's bare units (a bare trial mass is in ``units["mass"]``, grams by default).
+    """
+
+    source: str
+    text: str
+    name: str | None
+    sensors: tuple[str, ...]
+    weights: tuple[float, ...] | None
+    planes: tuple[JobPlane, ...]
+    speeds: tuple[JobSpeed, ...]
+    initial: tuple[tuple[Text, ...], ...] | None
+    trials: tuple[JobTrial, ...]
+    cumulative: bool | None
+    method: str | None
+    mass_step: float | None
+    angle_step: float | None
+    measure: str | None
+    phase: str | None
+    angle_sense: str | None
+    rotation: str | None
+    severity: tuple[str, int, str] | None
+    rotor: JobRotor | None
+    coefficients: str | None
+    keys: dict[str, Location]
+    units: dict[str, str]
+
+
+class _Ctx:
+    """Located errors and the file's bare units (what :mod:`rbcli.io.fields` needs)."""
+
+    def __init__(self, file: str, units: dict[str, str]) -> None:
+        self.file = file
+        self.base_units = units
+        self.factors: dict[str, tuple[float, str]] = {}
+
+    def where(self, node_or_mark: Any) -> Location:
+        if node_or_mark is None:
+            return Location(self.file)
+        mark = node_or_mark if isinstance(node_or_mark, ys.Mark) else node_or_mark.mark
+        return Location(self.file, mark.line, mark.col)
+
+    def error(self, node_or_mark: Any, message: str) -> InputError:
+        return InputError(message, self.where(node_or_mark))
+
+    def factor(self, kind: str, node: Any = None) -> tuple[float, str]:
+        if kind not in self.factors:
+            try:
+                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
+            except un.UnitError as exc:
+                raise self.error(node, str(exc)) from None
+        return self.factors[kind]
+
+
+def load_job(path: str) -> FieldJob:
+    """Read and check the job file ``path``.
+
+    Raises
+    ------
+    rbcli.InputError
+        one located line for any problem (the file, its YAML, a key, a value).
+    """
+    from rbcli.io.reader import read_regular
+
+    data = read_regular(path, MAX_JOB_BYTES, "job file")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"the job file is not UTF-8 text (byte {exc.start})", Location(path)) from None
+    return load_job_text(text, path)
+
+
+def load_job_text(text: str, source: str = "<job>") -> FieldJob:
+    """Check the text of a job file (``source`` names it in messages and resolves a
+    relative ``coefficients`` or ``rotor.body`` path)."""
+    if not text.strip():
+        raise InputError("the job file is empty; a job names its sensors, planes and runs "
+                         "(see rbcli-field-balance(1))", Location(source, 1, 1))
+    root = ys.load(text, source)
+    ctx = _Ctx(source, {})
+    m = fl.mapping(ctx, root, "a field-balancing job")
+    fl.check_keys(ctx, m, TOP_KEYS, "the job")
+    items = m.items
+    keys = {k: ctx.where(mark) for k, (mark, _) in items.items()}
+    if "rbcli" in items:
+        v = items["rbcli"][1]
+        if not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
+            raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
+    if "job" in items:
+        v = items["job"][1]
+        if fl.string(ctx, v, "job") != "field-balance":
+            raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, not {fl.describe(v)}")
+    units = {"mass": "g"}  # a bare trial mass is in grams, as on the command line
+    if "units" in items:
+        um = fl.mapping(ctx, items["units"][1], "units")
+        fl.check_keys(ctx, um, UNIT_KEYS, "units")
+        for k, (_, node) in um.items.items():
+            units[k] = fl.string(ctx, node, f"units: {k}")
+            try:
+                un.unit_for_kind({k: units[k]}, k)
+            except un.UnitError as exc:
+                raise ctx.error(node, f"units: {k}: {exc}") from None
+    ctx.base_units = units
+    name = fl.string(ctx, items["name"][1], "name") if "name" in items else None
+    if "description" in items:
+        fl.string(ctx, items["description"][1], "description")
+    conv = _conventions(ctx, items)
+    measure = None
+    if "readings" in items:
+        rm = fl.mapping(ctx, items["readings"][1], "readings")
+        fl.check_keys(ctx, rm, ("measure",), "readings")
+        if "measure" in rm.items:
+            measure = _choice(ctx, rm.items["measure"][1], "measure", "readings: measure")
+    sensors, weights = _sensors(ctx, items)
+    planes = _planes(ctx, items)
+    speeds = _speeds(ctx, items)
+    coefficients = None
+    if "coefficients" in items:
+        node = items["coefficients"][1]
+        coefficients = _relative(source, fl.string(ctx, node, "coefficients"))
+    initial = None
+    if "initial" in items:
+        initial = _runs(ctx, items["initial"][1], speeds, "initial")
+    elif "trials" in items or coefficients is None:
+        raise ctx.error(m, "the job needs 'initial': the readings without trial masses")
+    trials = _trials(ctx, items, planes, speeds)
+    if coefficients is not None and trials:
+        raise ctx.error(items["coefficients"][0], "a trim run from saved coefficients takes 'initial' alone; "
+                                                  "leave out 'trials' (the coefficients hold them)")
+    if coefficients is None and not trials:
+        raise ctx.error(m, "the job needs 'trials' (one trial run per plane), or 'coefficients' "
+                           "(a file of saved influence coefficients) for a trim run")
+    n = _check_counts(ctx, initial, trials, sensors)
+    if sensors and len(sensors) != n:
+        raise ctx.error(items["sensors"][1], f"sensors names {len(sensors)} sensors but the runs have "
+                                             f"{n} readings per speed")
+    if not sensors:
+        sensors = tuple(str(i + 1) for i in range(n))
+    cumulative = fl.flag(ctx, items["cumulative"][1], "cumulative") if "cumulative" in items else None
+    method = _choice(ctx, items["method"][1], "method", "method") if "method" in items else None
+    mass_step = fl.positive(ctx, items["mass_step"][1], "mass", "mass_step") if "mass_step" in items else None
+    angle_step = None
+    if "angle_step" in items:
+        node = items["angle_step"][1]
+        angle_step = math.degrees(fl.positive(ctx, node, "angle", "angle_step"))
+        if not angle_step <= 360.0 * (1 + 1e-12):
+            raise ctx.error(node, "angle_step must not exceed 360 degrees")
+    severity = _severity(ctx, items)
+    rotor = _rotor(ctx, items, source)
+    return FieldJob(
+        source=source, text=text, name=name, sensors=sensors, weights=weights, planes=planes,
+        speeds=speeds, initial=initial, trials=trials, cumulative=cumulative, method=method,
+        mass_step=mass_step, angle_step=angle_step, measure=measure, phase=conv.get("phase"),
+        angle_sense=conv.get("angle_sense"), rotation=conv.get("rotation"), severity=severity,
+        rotor=rotor, coefficients=coefficients, keys=keys, units=dict(units),
+    )
+
+
+def _relative(source: str, path: str) -> str:
+    """A path written in the job file, relative to the job file's folder."""
+    if os.path.isabs(path) or source.startswith("<"):
+        return path
+    return os.path.join(os.path.dirname(source), path) if os.path.dirname(source) else path
+
+
+def _choice(ctx: _Ctx, node: ys.Node, key: str, what: str) -> str:
+    allowed = CHOICES[key]
+    word = fl.string(ctx, node, what)
+    if word not in allowed:
+        raise ctx.error(node, f"{what} must be {' or '.join(allowed)}, not '{word}'{fl.suggest(word, allowed)}")
+    return word
+
+
+def _conventions(ctx: _Ctx, items: dict) -> dict[str, str]:
+    if "conventions" not in items:
+        return {}
+    cm = fl.mapping(ctx, items["conventions"][1], "conventions")
+    fl.check_keys(ctx, cm, CONVENTION_KEYS, "conventions")
+    return {k: _choice(ctx, node, k, f"conventions: {k}") for k, (_, node) in cm.items.items()}
+
+
+def _name(ctx: _Ctx, node: ys.Node, what: str, seen: set[str]) -> str:
+    if isinstance(node, ys.ScalarNode) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool):
+        name = node.raw  # a sensor called 1 or 2
+    else:
+        name = fl.string(ctx, node, what)
+    if not name.strip():
+        raise ctx.error(node, f"{what} must not be empty")
+    if name in seen:
+        raise ctx.error(node, f"two {what}s are called '{name}'; names must differ")
+    seen.add(name)
+    return name
+
+
+def _sensors(ctx: _Ctx, items: dict) -> tuple[tuple[str, ...], tuple[float, ...] | None]:
+    if "sensors" not in items:
+        return (), None
+    node = items["sensors"][1]
+    if not isinstance(node, ys.SeqNode) or not node.items:
+        raise ctx.error(node, f"sensors must be a list of sensor names, not {fl.describe(node)}")
+    names: list[str] = []
+    weights: list[float] = []
+    any_weight = False
+    seen: set[str] = set()
+    for item in node.items:
+        if isinstance(item, ys.MapNode):
+            fl.check_keys(ctx, item, SENSOR_KEYS, "a sensor", required=("name",))
+            names.append(_name(ctx, item.items["name"][1], "sensor name", seen))
+            if "weight" in item.items:
+                any_weight = True
+                weights.append(fl.positive(ctx, item.items["weight"][1], "dimensionless", "weight"))
+            else:
+                weights.append(1.0)
+        else:
+            names.append(_name(ctx, item, "sensor name", seen))
+            weights.append(1.0)
+    return tuple(names), (tuple(weights) if any_weight else None)
+
+
+def _planes(ctx: _Ctx, items: dict) -> tuple[JobPlane, ...]:
+    if "planes" not in items:
+        return ()
+    node = items["planes"][1]
+    if not isinstance(node, ys.SeqNode) or not node.items:
+        raise ctx.error(node, f"planes must be a list of planes, not {fl.describe(node)}")
+    out = []
+    seen: set[str] = set()
+    for item in node.items:
+        pm = fl.mapping(ctx, item, "a plane")
+        fl.check_keys(ctx, pm, PLANE_KEYS, "a plane", required=("name",))
+        it = pm.items
+        name = _name(ctx, it["name"][1], "plane name", seen)
+        radius = fl.positive(ctx, it["radius"][1], "length", f"plane {name}: radius") if "radius" in it else None
+        rc = None
+        if "correction_radius" in it:
+            rc = fl.positive(ctx, it["correction_radius"][1], "length", f"plane {name}: correction_radius")
+            if radius is None:
+                raise ctx.error(it["correction_radius"][0], f"plane {name}: correction_radius needs the "
+                                                            "trial radius, 'radius'")
+        positions = None
+        if "positions" in it:
+            pn = it["positions"][1]
+            if not (isinstance(pn, ys.ScalarNode) and isinstance(pn.value, int)
+                    and not isinstance(pn.value, bool) and 3 <= pn.value <= 100_000):
+                raise ctx.error(pn, f"plane {name}: positions must be a whole number from 3 to "
+                                    f"100000 (holes or blades), not {fl.describe(pn)}")
+            positions = int(pn.value)
+        at = fl.number(ctx, it["at"][1], "length", f"plane {name}: at") if "at" in it else None
+        out.append(JobPlane(name, radius, rc, positions, at, ctx.where(item)))
+    return tuple(out)
+
+
+def _speeds(ctx: _Ctx, items: dict) -> tuple[JobSpeed, ...]:
+    if "speeds" not in items:
+        return (JobSpeed("", None, ctx.where(None)),)
+    node = items["speeds"][1]
+    if not isinstance(node, ys.SeqNode) or not node.items:
+        raise ctx.error(node, f"speeds must be a list of speeds, not {fl.describe(node)}")
+    out = []
+    seen: set[str] = set()
+    for i, item in enumerate(node.items):
+        if isinstance(item, ys.MapNode):
+            fl.check_keys(ctx, item, SPEED_KEYS, "a speed", required=("name",))
+            name = _name(ctx, item.items["name"][1], "speed name", seen)
+            w = (fl.positive(ctx, item.items["speed"][1], "angular_speed", f"speed {name}")
+                 if "speed" in item.items else None)
+        else:  # a bare speed: named by its text
+            w = fl.positive(ctx, item, "angular_speed", "speed")
+            name = _name(ctx, item, "speed name", seen) if isinstance(item, ys.ScalarNode) else str(i + 1)
+        out.append(JobSpeed(name, w, ctx.where(item)))
+    return tuple(out)
+
+
+def _texts(ctx: _Ctx, node: ys.Node, what: str) -> tuple[Text, ...]:
+    if not isinstance(node, ys.SeqNode) or not node.items:
+        raise ctx.error(node, f"{what} must be a list of readings amplitude@phase, one per sensor, "
+                              f"not {fl.describe(node)}")
+    out = []
+    for item in node.items:
+        if not isinstance(item, ys.ScalarNode) or item.value is None or isinstance(item.value, bool):
+            raise ctx.error(item, f"{what}: a reading is amplitude@phase, e.g. '6.2 mm/s@112', not {fl.describe(item)}")
+        out.append(Text(item.raw if not isinstance(item.value, str) else item.value, ctx.where(item)))
+    return tuple(out)
+
+
+def _runs(ctx: _Ctx, node: ys.Node, speeds: tuple[JobSpeed, ...], what: str) -> tuple[tuple[Text, ...], ...]:
+    """One run's readings: a list (one speed) or a mapping speed name -> list."""
+    if isinstance(node, ys.SeqNode):
+        if len(speeds) != 1:
+            raise ctx.error(node, f"{what}: with {len(speeds)} speeds give the readings per speed, "
+                                  f"e.g. {{{speeds[0].name}: [...], {speeds[1].name}: [...]}}")
+        return (_texts(ctx, node, what),)
+    rm = fl.mapping(ctx, node, what)
+    names = [s.name for s in speeds]
+    fl.check_keys(ctx, rm, names, f"{what} (the speeds)")
+    out = []
+    for s in speeds:
+        if s.name not in rm.items:
+            raise ctx.error(rm, f"{what} has no readings at speed '{s.name}'")
+        out.append(_texts(ctx, rm.items[s.name][1], f"{what} at {s.name}"))
+    return tuple(out)
+
+
+def _trials(ctx: _Ctx, items: dict, planes: tuple[JobPlane, ...], speeds: tuple[JobSpeed, ...]) -> tuple[JobTrial, ...]:
+    if "trials" not in items:
+        return ()
+    node = items["trials"][1]
+    if not isinstance(node, ys.SeqNode) or not node.items:
+        raise ctx.error(node, f"trials must be a list of trial runs, one per plane, not {fl.describe(node)}")
+    names = [p.name for p in planes]
+    by_plane: dict[str, JobTrial] = {}
+    order: list[str] = []
+    for i, item in enumerate(node.items):
+        tm = fl.mapping(ctx, item, "a trial run")
+        fl.check_keys(ctx, tm, TRIAL_KEYS, "a trial run", required=("mass", "readings"))
+        it = tm.items
+        if "plane" in it:
+            plane = _name(ctx, it["plane"][1], "trial plane", set())
+            if names and plane not in names:
+                raise ctx.error(it["plane"][1], f"no plane is called '{plane}'{fl.suggest(plane, names)} "
+                                                f"(planes: {', '.join(names)})")
+        elif names:
+            raise ctx.error(tm, "a trial run needs 'plane': the plane its trial mass sat in")
+        else:
+            plane = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[i] if i < 26 else str(i + 1)
+        if plane in by_plane:
+            raise ctx.error(it.get("plane", (tm.mark, tm))[1], f"plane {plane} has two trial runs; give one per plane")
+        mnode = it["mass"][1]
+        if not isinstance(mnode, ys.ScalarNode) or not isinstance(mnode.value, str):
+            raise ctx.error(mnode, f"mass must be mass@angle, e.g. '50 g@0', not {fl.describe(mnode)}")
+        by_plane[plane] = JobTrial(plane, Text(mnode.value, ctx.where(mnode)),
+                                   _runs(ctx, it["readings"][1], speeds, f"trial {plane} readings"),
+                                   ctx.where(item))
+        order.append(plane)
+    if names:
+        missing = [p for p in names if p not in by_plane]
+        if missing:
+            raise ctx.error(node, f"no trial run for plane {', '.join(missing)}; give one per plane")
+        return tuple(by_plane[p] for p in names)
+    return tuple(by_plane[p] for p in order)
+
+
+def _check_counts(ctx: _Ctx, initial: Any, trials: tuple[JobTrial, ...], sensors: tuple[str, ...]) -> int:
+    """The number of sensors, the same in every run at every speed."""
+    runs = ([("initial", initial)] if initial is not None else []) + [(f"trial {t.plane}", t.readings) for t in trials]
+    n = len(sensors) if sensors else len(runs[0][1][0]) if runs else 0
+    for what, per_speed in runs:
+        for texts in per_speed:
+            if len(texts) != n:
+                raise InputError(f"{what}: {len(texts)} readings where the job has {n} sensors; give one "
+                                 "reading per sensor, in the sensors' order", texts[0].where)
+    return n
+
+
+def _severity(ctx: _Ctx, items: dict) -> tuple[str, int, str] | None:
+    if "severity" not in items:
+        return None
+    sm = fl.mapping(ctx, items["severity"][1], "severity")
+    fl.check_keys(ctx, sm, SEVERITY_KEYS, "severity", required=("group", "foundation"))
+    it = sm.items
+    std = _choice(ctx, it["standard"][1], "standard", "severity: standard") if "standard" in it else "iso20816-3"
+    g = it["group"][1]
+    if not (isinstance(g, ys.ScalarNode) and g.value in (1, 2) and not isinstance(g.value, bool)):
+        raise ctx.error(g, f"severity: group must be 1 (large machines, above 300 kW) or 2 (15 to 300 kW), not {fl.describe(g)}")
+    return std, int(g.value), _choice(ctx, it["foundation"][1], "foundation", "severity: foundation")
+
+
+def _rotor(ctx: _Ctx, items: dict, source: str) -> JobRotor | None:
+    if "rotor" not in items:
+        return None
+    rm = fl.mapping(ctx, items["rotor"][1], "rotor")
+    fl.check_keys(ctx, rm, ROTOR_KEYS, "rotor")
+    it = rm.items
+    if ("mass" in it) == ("body" in it):
+        raise ctx.error(rm, "rotor needs its 'mass' or a 'body' file (one of them)")
+    mass = fl.positive(ctx, it["mass"][1], "mass", "rotor: mass") if "mass" in it else None
+    body = _relative(source, fl.string(ctx, it["body"][1], "rotor: body")) if "body" in it else None
+    bearings = None
+    if "bearings" in it:
+        b = fl.floats(ctx, it["bearings"][1], "length", "rotor: bearings", n=2)
+        if b[0] == b[1]:
+            raise ctx.error(it["bearings"][1], "rotor: bearings: the two bearings must be at different positions")
+        bearings = (b[0], b[1])
+    com = fl.number(ctx, it["com"][1], "length", "rotor: com") if "com" in it else None
+    load = fl.positive(ctx, it["bearing_load"][1], "force", "rotor: bearing_load") if "bearing_load" in it else None
+    g = fl.positive(ctx, it["g"][1], "acceleration", "rotor: g") if "g" in it else None
+    frac = fl.positive(ctx, it["trial_fraction"][1], "dimensionless", "rotor: trial_fraction") if "trial_fraction" in it else None
+    return JobRotor(mass, body, bearings, com, load, g, frac, ctx.where(rm))
+
+
+# ----------------------------------------------------------------------------- schema
+
+
+def job_schema() -> dict:
+    """The JSON Schema (draft-07) of a job file, for editors (yaml-language-server)."""
+    quantity = {"description": "a number in the file's units, or a string with a unit such as '250 mm'",
+                "anyOf": [{"type": "number"}, {"type": "string", "pattern": "^\\s*[-+]?[0-9.]"}]}
+    reading = {"type": "string", "pattern": "@",
+               "description": "amplitude@phase: '6.2 mm/s@112', '40 um pk-pk@30', '0.5 g rms@10' or bare '6.2@112'"}
+    readings = {"type": "array", "items": reading, "minItems": 1,
+                "description": "one reading per sensor, in the sensors' order"}
+    per_speed = {"anyOf": [readings, {"type": "object", "additionalProperties": readings,
+                                      "description": "speed name -> readings"}]}
+    name = {"anyOf": [{"type": "string", "minLength": 1}, {"type": "number"}]}
+
+    def enum(key: str) -> dict:
+        return {"enum": list(CHOICES[key])}
+
+    return {
+        "$schema": "http://json-schema.org/draft-07/schema#",
+        "$id": "https://rbcli.invalid/fieldjob.schema.json",
+        "title": "rbcli field-balance job file",
+        "description": "Sensors, planes, speeds and runs of a field-balancing job (rbcli field-balance JOB.yaml).",
+        "type": "object",
+        "properties": {
+            "rbcli": {"const": 1},
+            "job": {"const": "field-balance"},
+            "name": {"type": "string"},
+            "description": {"type": "string"},
+            "units": {"type": "object", "properties": {k: {"type": "string"} for k in UNIT_KEYS},
+                      "additionalProperties": False,
+                      "description": "what bare lengths, masses and speeds mean (default m, g, rad/s)"},
+            "conventions": {"type": "object", "properties": {k: enum(k) for k in CONVENTION_KEYS},
+                            "additionalProperties": False},
+            "readings": {"type": "object", "properties": {"measure": enum("measure")},
+                         "additionalProperties": False},
+            "sensors": {"type": "array", "minItems": 1, "items": {"anyOf": [
+                name, {"type": "object", "properties": {"name": name, "weight": quantity},
+                       "required": ["name"], "additionalProperties": False}]}},
+            "planes": {"type": "array", "minItems": 1, "items": {
+                "type": "object",
+                "properties": {"name": name, "radius": quantity, "correction_radius": quantity,
+                               "positions": {"type": "integer", "minimum": 3}, "at": quantity},
+                "required": ["name"], "additionalProperties": False}},
+            "speeds": {"type": "array", "minItems": 1, "items": {"anyOf": [
+                quantity, {"type": "object", "properties": {"name": name, "speed": quantity},
+                           "required": ["name"], "additionalProperties": False}]}},
+            "initial": per_speed,
+            "trials": {"type": "array", "minItems": 1, "items": {
+                "type": "object",
+                "properties": {"plane": name, "mass": {"type": "string", "pattern": "@"}, "readings": per_speed},
+                "required": ["mass", "readings"], "additionalProperties": False}},
+            "cumulative": {"type": "boolean"},
+            "method": enum("method"),
+            "mass_step": quantity,
+            "angle_step": quantity,
+            "severity": {"type": "object",
+                         "properties": {"standard": enum("standard"), "group": {"enum": [1, 2]},
+                                        "foundation": enum("foundation")},
+                         "required": ["group", "foundation"], "additionalProperties": False},
+            "rotor": {"type": "object",
+                      "properties": {"mass": quantity, "body": {"type": "string"},
+                                     "bearings": {"type": "array", "items": quantity, "minItems": 2, "maxItems": 2},
+                                     "com": quantity, "bearing_load": quantity, "g": quantity,
+                                     "trial_fraction": quantity},
+                      "additionalProperties": False},
+            "coefficients": {"type": "string", "description": "a file written by --save-coefficients (trim run)"},
+        },
+        "additionalProperties": False,
+    }
+
+
+def schema_text() -> str:
+    import json
+
+    return json.dumps(job_schema(), indent=2, ensure_ascii=False) + "\n"

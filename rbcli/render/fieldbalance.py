@@ -1,0 +1,344 @@
+"""Tables of ``rbcli field-balance`` (the JSON is the result's own).
+
+Masses in g (or the ``--units`` mass), radii in mm (or the ``--units`` length); readings
+in µm, mm/s or m/s² — or, when ``--units`` names an inch-based length, in mil, in/s and g
+(standard gravity), the units of US practice. A classic one- or two-plane job keeps the
+tables it always had (:func:`classic_document`); an extended job (more readings, planes
+or speeds, rounding, conventions, severity...) gets :func:`extended_document`.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rbcli.render.units import ShopUnits
+from rbcli.render.fmt import num
+from rbcli.render.text import Doc
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.fieldresult import FieldBalanceResult
+
+#: how the tables show readings of each kind: (SI per display unit, display unit)
+READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
+#: the same in US practice (``--units in,...``): mil, in/s, g
+READING_DISPLAY_US = {"displacement": (25.4e-6, "mil"), "velocity": (0.0254, "in/s"),
+                      "acceleration": (9.80665, "g")}
+#: length units whose users read vibration in mil, in/s and g
+_US_LENGTHS = ("in", "inch", "inches", "ft", "foot", "feet", "mil", "mils", "thou", "yd", "yard")
+
+
+def reading_display(kind: str | None, su: ShopUnits) -> tuple[float, str]:
+    """(SI per display unit, unit) of readings of ``kind`` in the tables (bare: (1, ""))."""
+    if kind is None:
+        return 1.0, ""
+    table = READING_DISPLAY_US if su.length[1] in _US_LENGTHS else READING_DISPLAY
+    return table[kind]
+
+
+def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The tables of ``rbcli field-balance`` (from the result's finished numbers)."""
+    if not res.corrections:
+        _suggestion_only(doc, res, su, digits)
+    elif res.extended:
+        extended_document(doc, res, su, digits)
+    else:
+        classic_document(doc, res, su, digits)
+
+
+# ----------------------------------------------------------------------------- classic
+
+
+def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The tables of a one- or two-plane job as they always were."""
+    d = res.to_json()
+    m = su.unit("mass")
+    n = d["planes"]
+    doc.heading(f"field balancing, {'one plane' if n == 1 else 'two planes, two sensors'} (influence coefficients)")
+    doc.note(
+        "angles in degrees, counted in the same sense as the trial angles and the phase readings "
+        "(they must agree); a correction is a mass to add"
+    )
+    names = ["A", "B"][:n]
+    kind = d["readings"]["kind"]
+    scale, ru = reading_display(res.reading_kind, su)
+    if ru:
+        doc.note(f"readings: {kind}, shown in {ru} (JSON: SI, {d['readings']['unit']})")
+    rows = []
+    for i, row in enumerate(d["influence"]):
+        cells = [str(i + 1)]
+        for a in row:
+            per = a["magnitude"] * su.mass[0] / scale  # reading per display mass unit
+            cells += [num(per, digits), num(a["angle_deg"], digits)]
+        rows.append(cells)
+    cols = ["sensor"]
+    for name in names:
+        cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
+    title = ("influence coefficients (reading per unit trial mass)" if not ru
+             else f"influence coefficients ({ru} per {m})")
+    doc.table(title, cols, rows, right=tuple(range(1, len(cols))))
+    crow = []
+    for c in d["corrections"]:
+        crow.append([c["name"], su.show(c["mass"], "mass", digits), num(c["angle_deg"], digits),
+                     su.show(c["mass_trial_on"], "mass", digits), num(c["angle_trial_on_deg"], digits)])
+    radii = res.radii
+    where = "" if radii is None else (
+        f" at radius {su.show(radii[1], 'length', digits)} {su.unit('length')} (trials at "
+        f"{su.show(radii[0], 'length', digits)} {su.unit('length')})")
+    doc.table(
+        f"corrections to add{where}",
+        ["plane", f"mass [{m}]", "angle [°]", f"trial left on: add [{m}]", "angle [°]"],
+        crow,
+        right=(1, 2, 3, 4),
+    )
+    if n == 2:
+        flagged = [(name, f) for name, f in zip(names, res.significance_factors) if f <= res.significance_limit]
+        doc.note(
+            f"condition number of the influence matrix {num(d['cond'], 4)}"
+            + (" (ill-conditioned: the planes are not well separated)" if d["ill_conditioned"] else "")
+            + "".join(f"; Darlow's plane-significance factor of plane {name} {num(f, 3)} (at or below "
+                      f"{num(res.significance_limit, 3)}: ill-conditioned)" for name, f in flagged)
+            + ("; trial A left on during run B (--cumulative)" if d["cumulative"] else "")
+        )
+    doc.note(
+        "predicted residual reading after the corrections (linear model, 0 up to round-off): "
+        + ", ".join(num(v / scale, 3) for v in d["predicted_residual"]) + (f" {ru}" if ru else "")
+    )
+
+
+# ----------------------------------------------------------------------------- extended
+
+
+def _speed_column(res: FieldBalanceResult) -> bool:
+    """Whether the tables need a speed column (several speeds, or one named)."""
+    return len(res.run_speeds) > 1 or bool(res.run_speeds and res.run_speeds[0][0])
+
+
+def _row_label(sensor: str, speed: str, res: FieldBalanceResult) -> list[str]:
+    return [sensor, speed or "—"] if _speed_column(res) else [sensor]
+
+
+def _head(res: FieldBalanceResult) -> list[str]:
+    return ["sensor", "speed"] if _speed_column(res) else ["sensor"]
+
+
+def _ang(z: complex) -> float:
+    import math
+
+    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
+    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
+
+
+def _reported(z: complex, res: FieldBalanceResult) -> complex:
+    """A reading in the instrument's phase convention (the result keeps them in the angles'
+    sense)."""
+    return z.conjugate() if (res.conventions is not None and res.conventions.converted) else z
+
+
+def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The tables of an extended job: readings, coefficients, corrections as computed and as
+    fitted, the predicted readings, significance and severity."""
+    m = su.unit("mass")
+    L = su.unit("length")
+    scale, ru = reading_display(res.reading_kind, su)
+    rows = res.row_names()
+    n_sp = len(res.run_speeds)
+    label = {"exact": "exact solve", "least-squares": "least squares", "min-max": "min-max"}[res.method or "exact"]
+    what = (f"{len(res.sensors)} sensor{'s' if len(res.sensors) != 1 else ''}"
+            + (f" × {n_sp} speeds" if n_sp > 1 else ""))
+    head = f"field balancing: {res.planes} plane{'s' if res.planes != 1 else ''}, {len(rows)} readings ({what}), {label}"
+    if res.name:
+        head = f"{res.name} — {head}"
+    doc.heading(head)
+    doc.note(res.conventions.text if res.conventions is not None else
+             "angles in degrees, counted in the same sense as the trial angles and the phase readings "
+             "(they must agree)")
+    doc.note("a correction is a mass to add; each plane's trial removed before the next run"
+             if not res.cumulative else "a correction is a mass to add; each trial was left on for the later runs")
+    readings_note(doc, res, ru)
+    if n_sp > 1 or any(w is not None for _, w in res.run_speeds):
+        doc.table("speeds", ["speed", "rpm", "rad/s"],
+                  [[n or "—", "—" if w is None else num(w * 30.0 / 3.141592653589793, digits),
+                    "—" if w is None else num(w, digits)] for n, w in res.run_speeds], right=(1, 2))
+    readings_table(doc, res, scale, ru, rows, digits)
+    influence_table(doc, res, scale, ru, rows, su, digits)
+    corrections_table(doc, res, su, digits)
+    if res.fitted is not None:
+        fitted_table(doc, res, su, digits)
+    residuals_table(doc, res, scale, ru, rows, digits)
+    significance_note(doc, res)
+    if res.severity is not None:
+        severity_table(doc, res, rows, digits, su)
+    if res.suggested_trial:
+        suggestion_table(doc, res, su, scale, ru, rows, digits)
+    if res.coefficients_from is not None:
+        doc.note(f"influence coefficients from {res.coefficients_from} (a trim run: no trial runs)")
+    for note in res.notes:
+        doc.note(note)
+
+
+def significance_note(doc: Doc, res: FieldBalanceResult) -> None:
+    """The condition number and Darlow's plane-significance factors, in one note."""
+    sig = ", ".join(f"{n} {num(f, 3)}" for n, f in zip(res.plane_names, res.significance_factors))
+    doc.note(f"condition number of the influence matrix {num(res.cond, 4)}"
+             + (" (ill-conditioned: the planes are not well separated)" if res.ill_conditioned else "")
+             + f"; Darlow's plane-significance factors {sig} (flagged at or below "
+             f"{num(res.significance_limit, 3)}: a plane that adds no direction of its own)")
+
+
+def readings_note(doc: Doc, res: FieldBalanceResult, ru: str) -> None:
+    parts = []
+    if ru:
+        parts.append(f"readings: {res.reading_kind}, shown in {ru} (JSON: SI, {res.reading_unit})")
+    else:
+        parts.append("readings: bare numbers, one relative scale (the corrections do not depend on it)")
+    if res.measure is not None:
+        parts.append(f"amplitudes {res.measure}")
+    for a, b, k in res.measures_converted:
+        parts.append(f"{k} reading{'s' if k != 1 else ''} converted from {a} to {b} (a sinusoid: "
+                     "pk-pk = 2 pk, rms = pk/√2)")
+    if res.gravity:
+        parts.append("'g' in a reading read as standard gravity, 9.80665 m/s² (in a trial mass g is the gram)")
+    doc.note("; ".join(parts))
+
+
+def readings_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
+    cols = [*_head(res), f"initial{' [' + ru + ']' if ru else ''}", "phase [°]"]
+    for j, _ in enumerate(res.runs):
+        cols += [f"trial {res.plane_names[j]} on", "phase [°]"]
+    table = []
+    for k, (s, v) in enumerate(rows):
+        z = _reported(res.initial[k], res)
+        cells = [*_row_label(s, v, res), num(abs(z) / scale, digits), num(_ang(z), digits)]
+        for run in res.runs:
+            y = _reported(run[k], res)
+            cells += [num(abs(y) / scale, digits), num(_ang(y), digits)]
+        table.append(cells)
+    doc.table("readings", cols, table, right=tuple(range(len(_head(res)), len(cols))))
+
+
+def influence_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, su: ShopUnits,
+                     digits: int) -> None:
+    m = su.unit("mass")
+    cols = _head(res)
+    for name in res.plane_names:
+        cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
+    table = []
+    for k, (s, v) in enumerate(rows):
+        cells = [*_row_label(s, v, res)]
+        for a in res.alpha[k]:
+            cells += [num(abs(a) * su.mass[0] / scale, digits), num(_ang(a), digits)]
+        table.append(cells)
+    doc.table("influence coefficients (at each plane's trial radius; phases in the angles' sense)",
+              cols, table, right=tuple(range(len(_head(res)), len(cols))))
+
+
+def corrections_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    m = su.unit("mass")
+    L = su.unit("length")
+    radii = res.plane_radii or (res.radii,) * res.planes
+    trial_on = bool(res.trial_masses)
+    cols = ["plane", f"radius [{L}]", f"mass [{m}]", "angle [°]"]
+    if trial_on:
+        cols += [f"trial left on: add [{m}]", "angle [°]"]
+    table = []
+    for c, r in zip(res.corrections, radii):
+        cells = [c.name, "—" if r is None else su.show(r[1], "length", digits), su.show(c.mass, "mass", digits),
+                 num(c.angle_deg, digits)]
+        if trial_on:
+            z = c.correction_trial_on
+            cells += [su.show(abs(z), "mass", digits), num(_ang(z) if z != 0 else 0.0, digits)]
+        table.append(cells)
+    doc.table("corrections to add (as computed)", cols, table, right=tuple(range(1, len(cols))))
+
+
+def fitted_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    f = res.fitted
+    assert f is not None
+    m = su.unit("mass")
+    how = []
+    if f.mass_step is not None:
+        how.append(f"masses to {su.show(f.mass_step, 'mass', digits)} {m}")
+    if f.angle_step_deg is not None:
+        how.append(f"angles to {num(f.angle_step_deg, digits)}°")
+    if any(p.positions for p in f.planes):
+        how.append("split onto positions (position 1 on the 0° mark)")
+    table = []
+    for p in f.planes:
+        for fm in p.masses:
+            table.append([p.name, "—" if fm.position is None else str(fm.position), num(fm.angle_deg, digits),
+                          su.show(fm.mass, "mass", digits)])
+    doc.table(f"masses to fit ({'; '.join(how)})", ["plane", "position", "angle [°]", f"mass [{m}]"], table,
+              right=(1, 2, 3))
+
+
+def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
+    u = f" [{ru}]" if ru else ""
+    cols = [*_head(res), f"initial{u}", f"predicted{u}", "phase [°]", "change [%]"]
+    fitted = res.fitted.residuals if res.fitted is not None else None
+    if fitted is not None:
+        cols += [f"with the masses fitted{u}", "phase [°]"]
+    table = []
+    for k, (s, v) in enumerate(rows):
+        r = res.residuals[k]
+        change = "—" if r.initial == 0 else num(100.0 * (r.amplitude - r.initial) / r.initial, 3)
+        cells = [*_row_label(s, v, res), num(r.initial / scale, digits), num(r.amplitude / scale, digits),
+                 num(r.angle_deg, digits), change]
+        if fitted is not None:
+            cells += [num(fitted[k].amplitude / scale, digits), num(fitted[k].angle_deg, digits)]
+        table.append(cells)
+    doc.table("readings predicted after the correction (the linear model)", cols, table,
+              right=tuple(range(len(_head(res)), len(cols))))
+
+
+def severity_table(doc: Doc, res: FieldBalanceResult, rows, digits: int, su: ShopUnits | None = None) -> None:
+    sv = res.severity
+    assert sv is not None
+    f, u = reading_display("velocity", su) if su is not None else READING_DISPLAY["velocity"]
+    table = [[*_row_label(r.sensor, r.speed, res), num(r.before / f, digits), r.before_zone,
+              num(r.after / f, digits), r.after_zone] for r in sv.rows]
+    after = "with the masses fitted" if sv.after_is == "fitted" else "after the correction"
+    doc.table(f"{sv.standard}, group {sv.group}, {sv.foundation} support: zones of the 1× readings",
+              [*_head(res), f"before [{u} rms]", "zone", f"{after} [{u} rms]", "zone"], table,
+              right=(len(_head(res)), len(_head(res)) + 2))
+    ab, bc, cd = (num(x / f, 3) for x in sv.boundaries)
+    doc.note(f"zone boundaries A/B {ab}, B/C {bc}, C/D {cd} {u} r.m.s. (ISO 20816-3 Annex A, as ISO "
+             "10816-3:2009; a value on a boundary is in the lower zone). A: newly commissioned; B: "
+             "unrestricted long-term operation; C: restricted operation; D: damage. The standard judges "
+             "the broadband velocity (10 Hz to 1 kHz); these are the 1× readings only, so the machine's "
+             "zone is at least the one shown; the 'after' zone is a prediction: measure after fitting")
+
+
+def suggestion_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, scale: float, ru: str, rows,
+                      digits: int) -> None:
+    m = su.unit("mass")
+    L = su.unit("length")
+    table = []
+    for s in res.suggested_trial:
+        table.append([s.plane, su.show(s.mass, "mass", digits), su.show(s.radius, "length", digits),
+                      num(s.speed * 30.0 / 3.141592653589793, digits), num(s.force, digits),
+                      num(s.bearing_load, digits), num(100.0 * s.fraction, 3)])
+    doc.table("trial mass to start with",
+              ["plane", f"trial mass [{m}]", f"at radius [{L}]", "speed [rpm]", "its force [N]",
+               "static bearing load [N]", "fraction [%]"], table, right=(1, 2, 3, 4, 5, 6))
+    froms = sorted({s.bearing_load_from for s in res.suggested_trial})
+    doc.note("sized so that the trial's centrifugal force m r Ω² is the fraction of the static load on the "
+             f"bearing nearest its plane (rbcli's rule, physics notes balance.md §5.1; load: {'; '.join(froms)})")
+    for s in res.suggested_trial:
+        if s.expected_change is None:
+            doc.note(f"plane {s.plane}: the change the trial will make cannot be predicted without influence "
+                     "coefficients (a previous job's, --coefficients); after the run rbcli warns if it "
+                     "changed no reading by 25 % or 25°")
+        else:
+            parts = []
+            for k, c in enumerate(s.expected_change):
+                ratio = "" if s.expected_change_ratio is None else f" ({num(100 * s.expected_change_ratio[k], 3)} %)"
+                parts.append(f"{rows[k][0]}{' ' + rows[k][1] if rows[k][1] else ''}: {num(c / scale, 4)}"
+                             f"{' ' + ru if ru else ''}{ratio}")
+            doc.note(f"plane {s.plane}: expected change of the readings with this trial: " + ", ".join(parts))
+
+
+def _suggestion_only(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    doc.heading("field balancing: a trial mass to start with")
+    if res.conventions is not None:
+        doc.note(res.conventions.text)
+    suggestion_table(doc, res, su, 1.0, "", [], digits)

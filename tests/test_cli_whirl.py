@@ -1,0 +1,114 @@
+"""``rbcli whirl`` on the command line: exit statuses, one-line errors, figures, formats,
+and the report section render builds from a result."""
+
+from __future__ import annotations
+
+import pytest
+
+import rbcli
+
+from conftest import EXAMPLES
+
+CYL = ["-e", "{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}"]
+FAN = [str(EXAMPLES / "fan_rotor.yaml"), "--bearings", "0,500mm", "--stiffness", "5 N/um",
+       "--damping", "1 N*s/mm", "--speed-range", "0,3000 rpm"]
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--bearings", "0", "--stiffness", "1e6"], "--bearings: a rotor on bearings needs two or more"),
+    (["--bearings", "0.1,0.1", "--stiffness", "1e6"], "--bearings: the bearings are all at one place"),
+    (["--bearings=-0.2,0.2", "--stiffness=-1e6"], "--stiffness: must be positive"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--damping=-3"], "--damping: must not be negative"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--speed-range", "100,100"], "--speed-range: '100,100' is an empty range"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--speed-range", "3000,0 rpm"], "is not a range"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--speed-range", "0"], "--speed-range: expected 2"),
+    (["--bearings=-0.2,0.2"], "--stiffness: needs the bearing stiffness"),
+    (["--stiffness", "1e6"], "--bearings: needs the bearing positions"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--unbalance", "5 g*mm@0"], "--unbalance: needs the planes"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6 N"], "--stiffness:"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--plot", "a.png", "--plot-response", "a.png"],
+     "--plot-response: 'a.png' is also the --plot file"),
+    (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--plot", "a.txt"], "--plot:"),
+])
+def test_bad_input_is_one_located_line_exit_2(cli, args, says):
+    r = cli("whirl", *CYL, *args)
+    assert r.code == 2, r.err
+    assert r.out == ""
+    lines = r.err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("rbcli: ") and says in lines[0], r.err
+
+
+def test_an_asymmetric_rotor_is_refused_in_one_line(cli):
+    r = cli("whirl", str(EXAMPLES / "two_blade_fan.yaml"), "--bearings=-0.05,0.05", "--stiffness", "1e6")
+    assert r.code == 2
+    assert len(r.err.splitlines()) == 1 and "not symmetric about its shaft" in r.err and "--symmetry-tol" in r.err
+
+
+def test_separation_margin_pass_and_fail_set_the_exit_status(cli):
+    ok = cli("whirl", *FAN, "--speed", "1480 rpm")
+    assert ok.code == 0 and "separation margins: PASS" in ok.out
+    bad = cli("whirl", *FAN, "--speed", "1800 rpm")  # 1960 rpm is 8.9 % above: 26 % required
+    assert bad.code == 1 and "FAIL" in bad.out
+    j = cli("whirl", *FAN, "--speed", "1800 rpm", "--json")
+    assert j.code == 1 and j.json()["margins"]["passed"] is False
+
+
+def test_a_growing_mode_is_said_loudly_and_fails_at_the_operating_speed(cli):
+    args = [*CYL, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--cross-stiffness", "1e5",
+            "--damping", "100", "--speed", "150"]
+    r = cli("whirl", *args)
+    assert r.code == 1
+    assert "UNSTABLE" in r.out and "GROWS" in r.out
+    assert "warning: UNSTABLE AT THE OPERATING SPEED --speed" in r.err
+
+
+def test_figures_are_written_and_deterministic(cli, tmp_path):
+    files = {}
+    for run in (1, 2):
+        c, p = tmp_path / f"c{run}.svg", tmp_path / f"r{run}.png"
+        r = cli("whirl", *FAN, "--speed", "1480 rpm", "--plot", str(c), "--plot-response", str(p))
+        assert r.code == 0, r.err
+        assert f"--plot: figure written to {c}" in r.out
+        files[run] = (c.read_bytes(), p.read_bytes())
+    assert files[1][1].startswith(b"\x89PNG")
+    assert files[1] == files[2]
+
+
+def test_undamped_response_spikes_are_left_out_with_a_warning(cli):
+    # 0..250 rad/s in 201 points puts 200 rad/s (the cylindrical critical speed) on the grid
+    r = cli("whirl", *CYL, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--unbalance", "1 g*mm@0",
+            "--unbalance-planes", "0", "--speed-range", "0,250", "--json")
+    assert r.code == 0
+    d = r.json()
+    assert 200.0 not in d["response"]["speeds"] and len(d["response"]["speeds"]) == 200
+    assert "unbounded at 200 rad/s" in r.err
+    # no damping: the driven critical speeds are the (infinite) peaks
+    assert {(p["speed"], p["undamped"]) for p in d["response"]["peaks"]} == {(200.0, True)}
+
+
+def test_csv_and_help(cli):
+    r = cli("whirl", *FAN, "--speed", "1480 rpm", "--format", "csv")
+    assert r.code == 0 and "critical speeds" in r.out
+    h = cli("whirl", "--help")
+    assert h.code == 0
+    for words in ("--speed-range", "--unbalance-planes", "forward whirl turns the same way as the spin",
+                  "fixed frame", "API 617"):
+        assert words in " ".join(h.out.split()), words
+
+
+def test_report_section_from_a_result():
+    from rbcli.render import whirl as rw
+    from rbcli.render.units import DisplayUnits
+    from rbcli.render.report import Figure, Section
+    from rbcli.render.text import Table
+
+    res = rbcli.whirl(rbcli.load(EXAMPLES / "fan_rotor.yaml"), bearings="0,500mm", stiffness="5 N/um",
+                      damping="1 N*s/mm", speed="1480 rpm")
+    s = rw.report_section(res, DisplayUnits(), 6)
+    assert isinstance(s, Section) and s.key == "whirl" and s.skipped is None
+    titles = [i.title for i in s.items if isinstance(i, Table)]
+    assert any(t.startswith("critical speeds") for t in titles)
+    assert any(t.startswith("separation margins") for t in titles)
+    figs = [i for i in s.items if isinstance(i, Figure)]
+    assert [f.name for f in figs] == ["whirl-campbell", "whirl-response"]
+    assert all(f.svg.lstrip().startswith("<?xml") for f in figs)
