@@ -68,6 +68,7 @@ def _units(ctx: Ctx, m: ys.MapNode) -> None:
         except un.UnitError as exc:
             msg = str(exc)
             raise ctx.error(vnode, msg if msg.startswith("units:") else f"units: {key}: {msg}") from None
+        base[key] = un.canonical_unit(base[key])  # 'RPM', 'inches' are shown 'rpm', 'in'
     ctx.base_units = base
     ctx.factors = {}
 
@@ -88,7 +89,7 @@ def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ..
                 un.unit_for_kind({key: unit}, key)
             except un.UnitError as exc:
                 raise InputError(f"units: {key}: {exc}", Location(filename)) from None
-        ctx.base_units = dict(units)
+        ctx.base_units = {key: un.canonical_unit(unit) for key, unit in units.items()}
     if not isinstance(root, ys.MapNode):
         raise ctx.error(root, "a body file is a mapping with 'parts:' (a list of parts), or a single part with 'shape:'")
     if "rbcli" in root.items:

@@ -46,6 +46,8 @@ _RMIN_RE = LazyRe(
 )
 _SUPER = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
 _SUPER_CHARS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺"
+#: what may not follow an abbreviation's point for the point to be part of the name
+_NAME_ON = LazyRe(r"[A-Za-z0-9_µμ.]")
 _INT_RE = LazyRe(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
 
 
@@ -216,9 +218,13 @@ class _UnitParser:
             found = f"'{c}'" if c else "the end"
             raise self.error(f"expected a unit name, found {found}")
         self.i = m.end()
-        found = lookup(m.group())
+        name = m.group()
+        if self.s.startswith(".", self.i) and lookup(name + ".") is not None and not _NAME_ON.match(self.s, self.i + 1):
+            self.i += 1  # an abbreviation's point ('in.'), not a point before a name or digit
+            name += "."
+        found = lookup(name)
         if found is None:
-            raise _unknown_unit(m.group(), self.whole)
+            raise _unknown_unit(name, self.whole)
         unit, n = found
         if n != 1:
             self.check_exponent(str(n))

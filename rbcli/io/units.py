@@ -20,15 +20,18 @@ from rbcli.io.unitparse import check_text, parse_quantity_exact, parse_unit_exac
 from rbcli.io.unittable import (
     BASE_DEFAULTS,
     BASE_KEYS,
+    BY_NAME,
     DIM_ORDER,
     KIND_EXAMPLES,
     KINDS,
+    NAME_RE,
     Dim,
     Rational,
     UnitError,
     compose,
     format_unit_table,
     known_units,
+    lookup,
     noun_for_dim,
     noun_for_kind,
     to_float,
@@ -45,7 +48,24 @@ __all__ = [
     "known_units",
     "format_unit_table",
     "plain_decimal",
+    "canonical_unit",
 ]
+
+
+def canonical_unit(text: str) -> str:
+    """A unit text as rbcli shows it: one name of the table, whatever alias or case was
+    typed (``RPM``, ``r/min`` -> ``rpm``; ``inches``, ``in.`` -> ``in``; ``lbs``,
+    ``pounds`` -> ``lb``; ``feet`` -> ``ft``), as the table's first name; anything else (an
+    expression such as ``g/cm^3``, a name with a power ``m3``) as written, stripped.
+
+    Raises nothing: a text that is not a unit comes back stripped (it is refused where it
+    is read)."""
+    t = text.strip()
+    found = BY_NAME.get(t)
+    if found is None and NAME_RE.fullmatch(t.rstrip(".")):
+        got = lookup(t)
+        found = got[0] if got is not None and got[1] == 1 else None
+    return found.names[0] if found is not None else t
 
 
 def parse_unit(text: str) -> tuple[float, Dim]:
@@ -232,7 +252,7 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
                 f"not {noun_for_kind('angular_speed')} (e.g. {KIND_EXAMPLES['angular_speed']})"
             )
         if kind == "angular_speed":
-            return to_float(q, p), speed.strip()
+            return to_float(q, p), canonical_unit(speed)
         base_units = {k: v for k, v in base_units.items() if k != "angular_speed"}
     if kind == "angular_speed":
         return 1.0, "rad/s"
@@ -265,7 +285,7 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
                 f"not {noun_for_kind(key)} (e.g. {KIND_EXAMPLES[key]})"
             )
         exact[BASE_KEYS[key]] = (q, p)
-        texts[BASE_KEYS[key]] = text.strip()
+        texts[BASE_KEYS[key]] = canonical_unit(text)
     dim = KINDS[kind]
     q, p = Rational(1), 0
     for attr, _word in DIM_ORDER:

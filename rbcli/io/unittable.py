@@ -299,8 +299,8 @@ _UNITS: tuple[_Unit, ...] = (
     _Unit(("km",), _F(1000), 0, Dim(L=1), "kilometre"),
     _Unit(("um", "µm", "μm"), _F(1, 10**6), 0, Dim(L=1), "micrometre"),
     _Unit(("nm",), _F(1, 10**9), 0, Dim(L=1), "nanometre"),
-    _Unit(("in", "inch"), _IN, 0, Dim(L=1), "inch, exactly 0.0254 m"),
-    _Unit(("ft",), 12 * _IN, 0, Dim(L=1), "foot, 12 in"),
+    _Unit(("in", "inch", "inches", "in."), _IN, 0, Dim(L=1), "inch, exactly 0.0254 m"),
+    _Unit(("ft", "foot", "feet"), 12 * _IN, 0, Dim(L=1), "foot, 12 in"),
     _Unit(("yd",), 36 * _IN, 0, Dim(L=1), "yard, 3 ft"),
     _Unit(("mi",), 5280 * 12 * _IN, 0, Dim(L=1), "statute mile, 5280 ft"),
     _Unit(("mil", "thou"), _IN / 1000, 0, Dim(L=1), "thousandth of an inch, 25.4 um"),
@@ -309,7 +309,8 @@ _UNITS: tuple[_Unit, ...] = (
     _Unit(("g",), _F(1, 1000), 0, Dim(M=1), "gram"),
     _Unit(("mg",), _F(1, 10**6), 0, Dim(M=1), "milligram"),
     _Unit(("t", "tonne"), _F(1000), 0, Dim(M=1), "tonne (metric ton)"),
-    _Unit(("lb", "lbm"), _LB, 0, Dim(M=1), "avoirdupois pound, exactly 0.45359237 kg"),
+    _Unit(("lb", "lbm", "lbs", "pound", "pounds"), _LB, 0, Dim(M=1),
+          "avoirdupois pound, exactly 0.45359237 kg"),
     _Unit(("slug",), _LB * _GN / (12 * _IN), 0, Dim(M=1), "slug, lbf*s^2/ft"),
     _Unit(("oz",), _LB / 16, 0, Dim(M=1), "avoirdupois ounce, lb/16"),
     # volume
@@ -327,6 +328,8 @@ _UNITS: tuple[_Unit, ...] = (
     _Unit(("arcmin",), _F(1, 180 * 60), 1, Dim(A=1), "minute of arc, deg/60"),
     _Unit(("arcsec",), _F(1, 180 * 3600), 1, Dim(A=1), "second of arc, deg/3600"),
     _Unit(("rev", "turn"), _F(2), 1, Dim(A=1), "revolution, 2 pi rad"),
+    # speed
+    _Unit(("mph",), 5280 * 12 * _IN / 3600, 0, Dim(L=1, T=-1), "mile per hour, 0.44704 m/s"),
     # angular speed
     _Unit(("rpm", "r/min"), _F(2, 60), 1, Dim(A=1, T=-1), "revolution per minute, rev/min"),
     # frequency (1/time: NOT an angular speed)
