@@ -34,6 +34,7 @@ from rbcli.io import yamlsafe as ys
 from rbcli.io.givenpart import pretty_unit
 from rbcli.io.loadctx import Ctx, Session, new_session
 from rbcli.io.placing import Stack, finish, parts_of, to_stack
+from rbcli.io.plausible import density_warning
 from rbcli.model import Body, Part, Shaft
 
 __all__ = ["load_body", "load_text", "load_expr", "FORMAT_VERSION", "BODY_KEYS", "UNIT_KEYS"]
@@ -191,7 +192,8 @@ def _body_defaults(
     body = Body(
         name=name, source=source, text=text, parts=parts, reference=reference,
         reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
-        description=description, warnings=tuple(loaded.warnings), inputs=inputs,
+        description=description, warnings=(*loaded.warnings, *density_warning(ctx.session)),
+        inputs=inputs,
         units=dict(loaded.ctx.base_units),
     )
     remember_mass_props(body, mp)  # commands take it from there (body_mass_props)

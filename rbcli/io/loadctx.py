@@ -35,6 +35,8 @@ class Session:
     used: int = 0  # parts and includes so far, every use counted
     parsed: dict = field(default_factory=dict)  # (real path, real folder) -> its loaded file
     parses: int = 0  # files parsed (the work count the tests check)
+    #: densities no matter has, as located warnings (rbcli.io.plausible): the first is said
+    densities: list = field(default_factory=list)
 
     def spend(self, ctx: Ctx, node: ys.Node | None, n: int) -> None:
         self.used += n

@@ -14,6 +14,7 @@ from rbcli.io.fields import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtr
 from rbcli.io.includes import names_a_folder
 from rbcli.io.loadctx import Ctx
 from rbcli.io.placing import place
+from rbcli.io.plausible import note_density
 from rbcli.model import Outline, Part
 
 MESH_KEYS = (
@@ -59,6 +60,8 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
         else:
             weld = fl.positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
     mass, density, src = mass_source(ctx, m, "volume", known, what)
+    if mass is None and "cut_from" not in m.items:  # a density typed here: one matter has?
+        note_density(ctx, src, "density", density, None, True, what)
     removed = subtract(ctx, m)
     at, R = fl.placement(ctx, m)
 

@@ -21,12 +21,20 @@ from rbcli.errors import Location
 from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import MASS_KEYS, PLACEMENT_KEYS, check_mass, mass_source, subtract
+from rbcli.io.fields import (
+    DENSITY_FOR,
+    MASS_KEYS,
+    PLACEMENT_KEYS,
+    check_mass,
+    mass_source,
+    subtract,
+)
 from rbcli.io.givenpart import given_part
 from rbcli.io.includes import include_part
 from rbcli.io.loadctx import Ctx
 from rbcli.io.meshpart import mesh_part
 from rbcli.io.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
+from rbcli.io.plausible import note_density
 from rbcli.model import Part
 
 COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
@@ -206,6 +214,9 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
         if mass is None:
             mass = density * measure
             check_mass(ctx, src, what, mass, f"density × {measure_kind}")
+            if "cut_from" not in items:  # a density typed here: one matter has?
+                note_density(ctx, src, DENSITY_FOR[measure_kind], density, measure,
+                             measure_kind == "volume", what)
         elif measure:
             density = mass / measure
         known[name] = (density, measure_kind)

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from rbcli.core.shapes import SHAPES
 from rbcli.io.body import UNIT_KEYS
-from rbcli.io.givenpart import INERTIA_MAP_KEYS
+from rbcli.io.givenpart import INERTIA_NAMES
 from rbcli.io.parts import SPECIAL_SHAPES
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
@@ -90,10 +90,16 @@ def _variants(extra: dict) -> list[dict]:
                 {
                     "type": "object",
                     "properties": {
-                        **{k: {"$ref": "#/definitions/quantity"} for k in INERTIA_MAP_KEYS[:6]},
+                        **{k: {"$ref": "#/definitions/quantity"} for names in INERTIA_NAMES.values()
+                           for k in names},
                         "convention": {"enum": ["tensor", "positive"]},
                     },
-                    "required": ["Ixx", "Iyy", "Izz"],
+                    # each diagonal entry under one of its names; no entry under two
+                    "allOf": [
+                        *({"anyOf": [{"required": [n]} for n in INERTIA_NAMES[d]]} for d in ("Ixx", "Iyy", "Izz")),
+                        *({"not": {"required": [a, b]}} for names in INERTIA_NAMES.values()
+                          for i, a in enumerate(names) for b in names[i + 1:]),
+                    ],
                     "additionalProperties": False,
                 },
             ]
