@@ -48,8 +48,10 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from rbcli.core import top as tp  # noqa: E402
+from rbcli.core import toppath  # noqa: E402
+from rbcli.core.topbody import TopParams  # noqa: E402
 
-PARAMS = tp.TopParams(mass=0.5, length=0.04, I=1.2e-3, Is=4.0e-4)
+PARAMS = TopParams(mass=0.5, length=0.04, I=1.2e-3, Is=4.0e-4)
 SPIN, THETA0, G = 150.0, math.radians(30.0), 9.81
 
 
@@ -78,7 +80,7 @@ def run_exact(times: int, periods: float) -> tuple[float, np.ndarray]:
     t0 = time.perf_counter()
     m = motion()
     t = np.linspace(0.0, periods * m.nutation_period, times)
-    th, ph, ps = tp.path_at(m, t)
+    th, ph, ps = toppath.path_at(m, t)
     elapsed = time.perf_counter() - t0
     return elapsed, t
 
@@ -94,7 +96,7 @@ def exact_invariants(t_end: float, n: int = 200) -> dict:
     out = {}
     for name, ts in (("first_100_periods", np.linspace(0.0, 100 * m.nutation_period, n)),
                      ("last_0.1_percent", np.linspace(0.999 * t_end, t_end, n))):
-        a = {k: tp.path_at(m, ts + k * h) for k in (-3, -2, -1, 0, 1, 2, 3)}
+        a = {k: toppath.path_at(m, ts + k * h) for k in (-3, -2, -1, 0, 1, 2, 3)}
 
         def d(i, a=a):  # 6th-order central difference
             return (-a[-3][i] + 9 * a[-2][i] - 45 * a[-1][i] + 45 * a[1][i] - 9 * a[2][i] + a[3][i]) / (60 * h)
@@ -148,7 +150,7 @@ def numeric_errors(sol) -> dict:
     th_n = np.arctan2(np.hypot(n[:, 0], n[:, 1]), n[:, 2])
     ph_n = np.unwrap(np.arctan2(n[:, 1], n[:, 0]))
     ph_n -= ph_n[0]
-    th_c, ph_c, _ = tp.path_at(motion(), sol.t)
+    th_c, ph_c, _ = toppath.path_at(motion(), sol.t)
     axis_c = np.stack([np.sin(th_c) * np.cos(ph_c), np.sin(th_c) * np.sin(ph_c), np.cos(th_c)], -1)
     return {
         "energy": float(np.max(np.abs(E - E[0])) / (0.5 * Is * SPIN**2 + mgl)),

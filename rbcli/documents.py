@@ -138,6 +138,14 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
         written.
     TypeError
         ``force`` that is not a bool.
+
+    Examples
+    --------
+    >>> import rbcli, tempfile, pathlib
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "top.html"
+    >>> r = rbcli.write_report(rbcli.load("examples/top.yaml"), out, spin=150, theta=30)
+    >>> r.return_code, out.exists()
+    (0, True)
     """
     from rbcli.api.report import ReportOptions, run
     from rbcli.errors import ParamError

@@ -133,6 +133,13 @@ def spelled_data(data: object, name: Callable[[str], str]) -> object:
     return data
 
 
+def _clean(text: str) -> str:
+    """A message made safe as one line (:func:`rbcli.env.clean`; stdlib, imported when used)."""
+    from rbcli.env import clean
+
+    return clean(text)
+
+
 class RbcliError(Exception):
     """Base of every error rbcli reports to the user.
 
@@ -150,8 +157,10 @@ class RbcliError(Exception):
 
     @property
     def message(self) -> str:
-        """The message, parameters spelled as the Python API's keyword arguments."""
-        return spell(self.template)
+        """The message, parameters spelled as the Python API's keyword arguments, made safe to
+        show as the command line shows it (:func:`rbcli.env.clean`: control characters such as
+        ESC and newlines in a name or a value escaped, long words cut)."""
+        return _clean(spell(self.template))
 
     @message.setter
     def message(self, text: str) -> None:
@@ -161,7 +170,7 @@ class RbcliError(Exception):
         """``str(self)`` with parameters spelled by ``name`` (the command line passes
         :func:`option_name`)."""
         text = spell(self.template, name)
-        return f"{self.where}: {text}" if self.where else text
+        return _clean(f"{self.where}: {text}" if self.where else text)
 
     def __str__(self) -> str:
         return self.spelled()

@@ -714,7 +714,8 @@ def test_verify_at_exactly_the_critical_spin_is_bounded(cli, cli_proc):
 
 
 def test_verify_step_budget_in_the_core():
-    from rbcli.core.top import TopParams, analyse
+    from rbcli.core.top import analyse
+    from rbcli.core.topbody import TopParams
     from rbcli.core.topverify import TooLong, verify
 
     mo = analyse(TopParams(mass=0.5, length=0.04, I=1.2e-3, Is=4.0e-4), 150.0, math.radians(30), g=9.81)

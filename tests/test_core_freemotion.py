@@ -20,6 +20,7 @@ from scipy.spatial.transform import Rotation
 
 from rbcli.core import freemotion as fm
 from rbcli.core.elliptic import jacobi_reduced
+from rbcli.core.freepath import attitude_at, omega_at, precession_angle_at
 from rbcli.core.freeverify import verify
 from rbcli.core.rotation import quat_to_matrix
 from rbcli.core.freemotion import (
@@ -30,9 +31,6 @@ from rbcli.core.freemotion import (
     CASE_SPHERICAL,
     CASE_STEADY,
     analyse,
-    attitude_at,
-    omega_at,
-    precession_angle_at,
 
 )
 

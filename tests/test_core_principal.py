@@ -133,3 +133,75 @@ def test_a_small_rotation_of_an_aligned_body_is_recovered(a, b, c, rv):
     r = principal_report(1.0, J, np.zeros(3))
     np.testing.assert_allclose(r.axes, Q.as_matrix().T, rtol=0, atol=1e-8 / np.min(np.diff(m3)) * m3[-1])
     assert r.rotation_angle_deg == pytest.approx(np.degrees(Q.magnitude()), abs=1e-6)
+
+
+# ------------------------------------------------------------------ tilts (issue 24, item 2)
+
+
+def _axis_line_angle_deg(u: np.ndarray, e: np.ndarray) -> float:
+    """Angle between two axis lines (direction sign ignored), by the oracle arccos of the
+    dot product (in long double via math.acos is no better; the tests below stay > 0.01°)."""
+    c = abs(float(np.dot(u, e)) / (np.linalg.norm(u) * np.linalg.norm(e)))
+    return float(np.degrees(np.arccos(min(c, 1.0))))
+
+
+@pytest.mark.parametrize("angle", [0.5, 3.0, 20.0])
+@pytest.mark.parametrize("about", [0, 1, 2])
+def test_a_rotated_bar_reads_its_tilt_per_axis(angle, about):
+    """A long bar with three different moments (a 1 m bar, 80 x 120 mm, 1 kg) turned by
+    ``angle`` about body axis ``about``: the axis turned about keeps tilt 0, the other two
+    read ``angle`` each, each against the body axis it came from (scipy's Rotation as the
+    oracle for the turned frame; 1e-9°: atan2 of the rotated components, exact to
+    round-off)."""
+    from rbcli.core.principal import axis_tilts
+
+    d = np.diag([(1.0 + 0.12**2) / 12, (1.0 + 0.08**2) / 12, (0.08**2 + 0.12**2) / 12])
+    rv = np.zeros(3)
+    rv[about] = np.radians(angle)
+    Q = Rotation.from_rotvec(rv).as_matrix()
+    pa = principal_axes(Q @ d @ Q.T)
+    tilt, nearest = axis_tilts(pa.axes)
+    for i in range(3):
+        j = nearest[i]
+        assert tilt[i] == pytest.approx(_axis_line_angle_deg(pa.axes[i], np.eye(3)[j]), abs=1e-9)
+        # the body axis it came from: the column of Q nearest to this principal axis
+        src = int(np.argmax(np.abs(Q.T @ pa.axes[i])))
+        assert j == src
+        expected = 0.0 if src == about else angle
+        assert tilt[i] == pytest.approx(expected, abs=1e-9)
+
+
+@settings(max_examples=200, deadline=None)
+@given(a=moment, b=moment, c=moment, q=quat)
+def test_tilts_are_the_smallest_angle_to_any_body_axis(a, b, c, q):
+    """Each tilt is the angle from the principal axis line to its nearest body axis line:
+    no body axis is nearer (brute force over the three, the arccos oracle; 1e-6° covers
+    arccos's loss of digits near 0°), and it is at most arccos(1/sqrt 3) = 54.7356°, the
+    largest a line can be from all three axes."""
+    from rbcli.core.principal import axis_tilts
+
+    J, _ = _tensor(_physical(a, b, c), q)
+    pa = principal_axes(J)
+    tilt, nearest = axis_tilts(pa.axes)
+    for i in range(3):
+        angles = [_axis_line_angle_deg(pa.axes[i], e) for e in np.eye(3)]
+        assert tilt[i] == pytest.approx(min(angles), abs=1e-6)
+        assert angles[nearest[i]] == pytest.approx(min(angles), abs=1e-6)
+        assert tilt[i] <= np.degrees(np.arccos(1 / np.sqrt(3))) + 1e-9
+
+
+def test_stability_words_agree_with_the_symmetry_text():
+    """Free rotation: asymmetric stable/unstable/stable; a symmetric body is stable about its
+    symmetry axis and neutral about the equal pair (the spin axis wanders round the
+    symmetry axis: Euler's linearisation has k = 0, the tilt grows linearly) — not
+    "stable"; a sphere is stable about every axis (any nearby spin is as steady)."""
+    asym = principal_report(1.0, np.diag([1.0, 2.0, 3.0]), np.zeros(3))
+    assert asym.stability == ("stable", "unstable", "stable")
+    assert asym.stable == (True, False, True)
+    rod = principal_report(1.0, np.diag([1.0, 5.0, 5.0]), np.zeros(3))
+    assert rod.stability == ("stable", "neutral", "neutral")
+    assert rod.stable == (True, False, False)
+    disk = principal_report(1.0, np.diag([1.0, 1.0, 2.0]), np.zeros(3))
+    assert disk.stability == ("neutral", "neutral", "stable")
+    ball = principal_report(1.0, np.eye(3), np.zeros(3))
+    assert ball.stability == ("stable",) * 3 and ball.stable == (True,) * 3

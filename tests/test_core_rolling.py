@@ -25,21 +25,16 @@ from hypothesis import strategies as st
 
 from rbcli.core import rolling as R
 from rbcli.errors import InputError
+from rbcli.core.rollcircle import CircleMotion, circle, lean_for, radius_for, stability_map
 from rbcli.core.rolling import (
-    CircleMotion,
     StraightRolling,
     Verdict,
-    Wheel,
     at_speed,
-    circle,
-    lean_for,
     margin_curve,
-    radius_for,
     rollcheck,
-    stability_map,
     straight,
-    wheel_from_body,
 )
+from rbcli.core.wheel import Wheel, wheel_from_body
 
 G981 = 9.81  # the sheet's g unless stated ("Use 9.81 unless stated")
 
@@ -303,10 +298,17 @@ def test_rounded_rim_only_weakens_gravity():
     assert straight(w, a, r, 9.81).critical_speed == pytest.approx(a * s1, rel=1e-15)
 
 
-@pytest.mark.parametrize("r", [0.34, 0.5, -0.01, math.nan])
+@pytest.mark.parametrize("r", [0.3401, 0.5, -0.01, math.nan])
 def test_bad_tyre_radius_refused(r):
     with pytest.raises(InputError, match="tyre radius"):
         straight(Wheel(1.0, 0.09, 0.13), 0.34, r)
+
+
+def test_a_tyre_radius_equal_to_the_rim_radius_is_a_sphere():
+    # issue 24: r = a is a sphere: no gravity lever at any lean, no critical spin
+    st = straight(Wheel(1.0, 0.09, 0.13), 0.34, 0.34)
+    assert st.rim == "sphere" and st.critical_spin == 0.0 and st.critical_speed == 0.0
+    assert st.nu2(0.0) == 0.0 and st.nu2(2.0) > 0.0
 
 
 @pytest.mark.parametrize("a, g", [(0.0, 9.81), (-1.0, 9.81), (0.3, 0.0), (0.3, -9.81),
@@ -857,7 +859,7 @@ def test_rim_circle_centres_of_the_round_shapes():
     turns too."""
     from types import SimpleNamespace
 
-    from rbcli.core.rim import rim_circle_centre, rim_offset
+    from rbcli.core.rim import rim_circle_centre, rim_of
 
     def part(shape, axis=(0.0, 0.0, 1.0), R=0.05, measure=None, com=(0.0, 0.0, 0.0)):
         return SimpleNamespace(name=shape, shape=shape, radius=R, measure=measure, subtract=False,
@@ -872,7 +874,7 @@ def test_rim_circle_centres_of_the_round_shapes():
     for shape in ("disk", "ring", "cylinder", "sphere", "torus"):
         assert list(rim_circle_centre(part(shape, com=(0, 0, 0.3)))) == [0.0, 0.0, 0.3]
     # a rim radius no part has: nothing to measure; a part on another axis is no rim
-    assert rim_offset([part("disk")], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.07) is None
-    assert rim_offset([part("disk", axis=(1.0, 0.0, 0.0))], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.05) is None
-    off = rim_offset([part("hemisphere")], [0, 0, 0.01], [0, 0, 1], [0, 0, 0], 0.05)
+    assert rim_of([part("disk")], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.07) is None
+    assert rim_of([part("disk", axis=(1.0, 0.0, 0.0))], [0, 0, 0], [0, 0, 1], [0, 0, 0], 0.05) is None
+    off = rim_of([part("hemisphere")], [0, 0, 0.01], [0, 0, 1], [0, 0, 0], 0.05)
     assert off.offset == pytest.approx(-3 * 0.05 / 8 - 0.01) and not off.upright_equilibrium

@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from rbcli.core import symmetry as sy
-from rbcli.core.top import TopParams, analyse, top_from_body
+from rbcli.core.top import analyse
+from rbcli.core.topbody import TopParams, top_from_body
 from rbcli.core.topverify import verify_real_body
 
 RHO = 7850.0

@@ -19,13 +19,9 @@ from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 from rbcli.core.gyrocompass import gyrocompass
-from rbcli.core.top import (
-    PivotAtCom,
-    TopParams,
-    analyse,
-    path_at,
-    top_from_body,
-)
+from rbcli.core.top import analyse
+from rbcli.core.topbody import PivotAtCom, TopParams, top_from_body
+from rbcli.core.toppath import path_at
 from rbcli.core.topverify import verify
 
 # The sheet's top (§2.1, §6 "top"): m, l, I about the pivot across, Is, S, g, θ0.

@@ -1,10 +1,14 @@
 """rbcli.render.jsonout: the indented document against the straightforward layout (one
 ``json.dumps`` per one-line value), JSON Lines against ``json.dumps``, NaN and infinity
-refused, and every golden JSON document written back byte for byte."""
+refused, and every golden JSON document written back byte for byte. Characters a terminal or a
+JavaScript reader would act on (C1, DEL, line/paragraph separators, bidirectional controls,
+BOM, U+FFFE/U+FFFF) are ``\\uXXXX`` escapes (issue 27): the oracle finds them by Unicode
+category and lists, and the document reads back the same."""
 
 from __future__ import annotations
 
 import json
+import unicodedata
 from pathlib import Path
 
 import pytest
@@ -21,14 +25,26 @@ def _flat(v):
     return not isinstance(v, dict)
 
 
+#: the bidirectional controls (Unicode's Bidi_Control property less ALM U+061C, which is text)
+BIDI = set("\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+
+
+def _escaped(text: str) -> str:
+    """``text`` (encoded JSON) with every control (Cc), line or paragraph separator (Zl, Zp),
+    surrogate (Cs), bidirectional control, BOM and U+FFFE/U+FFFF as a \\uXXXX escape."""
+    return "".join(f"\\u{ord(c):04x}" if unicodedata.category(c) in ("Cc", "Zl", "Zp", "Cs")
+                   or c in BIDI or c in "\ufeff\ufffe\uffff" else c for c in text)
+
+
 def _oracle(v, level=0):
     if _flat(v):
-        return json.dumps(v, ensure_ascii=False, allow_nan=False, separators=(", ", ": "))
+        return _escaped(json.dumps(v, ensure_ascii=False, allow_nan=False, separators=(", ", ": ")))
     pad, end = "  " * (level + 1), "  " * level
     if isinstance(v, dict):
         if not v:
             return "{}"
-        items = [f"{pad}{json.dumps(k, ensure_ascii=False)}: {_oracle(x, level + 1)}" for k, x in v.items()]
+        items = [f"{pad}{_escaped(json.dumps(k, ensure_ascii=False))}: {_oracle(x, level + 1)}"
+                 for k, x in v.items()]
         return "{\n" + ",\n".join(items) + "\n" + end + "}"
     return "[\n" + ",\n".join(pad + _oracle(x, level + 1) for x in v) + "\n" + end + "]"
 
@@ -39,7 +55,8 @@ FLOATS = st.one_of(st.floats(allow_nan=False, allow_infinity=False),
                    st.sampled_from([0.0, -0.0, 1e16, -1e16, 5e-324, 1e-7, 1e22, 1.7976931348623157e308, 0.1]))
 TEXT = st.one_of(st.text(max_size=8),
                  st.sampled_from(["", "%", "%s", "%%", "a\"b", "back\\slash", "tab\t", "\n", "\x00", "é", "\u2028",
-                                  "\ud7ff", "😀", "%(x)s"]))
+                                  "\ud7ff", "😀", "%(x)s", "\x85", "\x7f", "\u202e",
+                                  "\u2066", "\ufeff", "\ufffe", "\u200f"]))
 SCALARS = st.one_of(st.none(), st.booleans(), st.integers(), FLOATS, TEXT)
 DOCS = st.recursive(SCALARS, lambda kids: st.one_of(st.lists(kids, max_size=4),
                                                     st.dictionaries(TEXT, kids, max_size=4)),
@@ -61,7 +78,8 @@ def test_indented_json_is_the_oracles(doc):
 @given(DOCS)
 def test_json_lines_are_compact_json(doc):
     data = jsonable(doc)
-    assert dumps(data, lines=True) == json.dumps(data, ensure_ascii=False, separators=(",", ":")) + "\n"
+    assert dumps(data, lines=True) == _escaped(json.dumps(data, ensure_ascii=False, separators=(",", ":"))) + "\n"
+    assert json.loads(dumps(data, lines=True)) == doc
 
 
 @pytest.mark.parametrize("bad", [float("nan"), float("inf"), {"a": [1.0, -float("inf")]}])

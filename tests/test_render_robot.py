@@ -130,21 +130,36 @@ def test_comment_is_valid_xml_whatever_the_name(cli):
     (("--principal",), "--principal applies to --format urdf, sdf or mjcf, not to table"),
     (("--format", "xml"), "--format must be table, json, csv, urdf, sdf or mjcf, not 'xml'"),
     (("--json", "--format", "urdf"), "--json and --format urdf ask for two formats"),
+    # the formats fix the sign (issue 24 item 6): positive products would be silently ignored
+    (("--format", "urdf", "--products", "positive"), "--products positive does not apply to --format urdf"),
+    (("--format", "sdf", "--products", "positive"), "--products positive does not apply to --format sdf"),
+    (("--format", "mjcf", "--products", "positive", "--principal"),
+     "--products positive does not apply to --format mjcf"),
 ])
 def test_bad_combinations_exit_2(cli, args, message):
     r = cli("inertia", str(EXAMPLES / "cube.yaml"), *args)
     assert r.code == 2 and r.out == "" and message in r.err and r.err.count("\n") == 1
 
 
-def test_format_json_is_json_and_csv_is_the_tables(cli):
+@pytest.mark.parametrize("fmt", robot.FORMATS)
+def test_every_comment_states_the_off_diagonal_sign(cli, fmt):
+    """URDF, SDF and MJCF alike say which sign the off-diagonals have (issue 24 item 6), and the
+    number written is the tensor's entry itself (the two-blade fan's Jxy about its com is not 0)."""
+    r = cli("inertia", str(EXAMPLES / "two_blade_fan.yaml"), "--format", fmt)
+    assert "ixy = -(integral of x y dm)" in r.out
+    J = np.array(cli("inertia", str(EXAMPLES / "two_blade_fan.yaml"), "--json").json()["inertia_com"])
+    assert repr(float(J[0, 1])) in r.out and J[0, 1] != 0  # the tensor's entry, its sign as it is
+
+
+def test_format_json_is_json_and_csv_is_one_table(cli):
     path = str(EXAMPLES / "square_lamina.yaml")
     for cmd in ("inertia", "principal"):
         assert cli(cmd, path, "--format", "json").out == cli(cmd, path, "--json").out
         csv = cli(cmd, path, "--format", "csv")
-        assert csv.code == 0 and csv.out.startswith("table,")
+        assert csv.code == 0 and csv.out.startswith("quantity,value,text,unit\n")
     many = cli("inertia", str(EXAMPLES / "cube.yaml"), path, "--format", "csv").out
-    assert many.startswith("file,table,") and path in many
-    assert "\n\nfile,table,quantity" in many  # the second body's first block, after an empty line
+    assert many.startswith("file,quantity,value,text,unit\n") and path in many
+    assert "\n\n" not in many and many.count("quantity") == 1  # one table, one header
 
 
 # ----------------------------------------------------------------------------- MuJoCo

@@ -250,7 +250,9 @@ def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:
                                  d, sc.size))
                 break
     if o.speed is not None:
-        r = max([*radii, sc.half_diagonal])
+        from rbcli.core.scale import axis_reach
+
+        r = max([*radii, axis_reach(body.parts, n, P)])  # the farthest material from the shaft
         if SPEED_OF_SOUND < o.speed * r < math.inf:
             out.append(Note(f"{{speed}}: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "
                        f"a radius of {u.show(r, 'length')} {u.label('length')} moves at "

@@ -28,6 +28,13 @@ def load(path: str | os.PathLike[str]) -> Body:
     rbcli.InputError
         Anything wrong with the file, with ``where`` (file, line, column) and the same
         one-line message the command line prints.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> body = rbcli.load("examples/square_lamina.yaml")
+    >>> body.name, len(body.parts)
+    ('Square lamina about a corner', 1)
     """
     from rbcli.io.body import load_body
 
@@ -59,6 +66,13 @@ def load_text(text: str | bytes, *, units: dict[str, str] | None = None, name: s
     ------
     rbcli.InputError
         As :func:`load`, located in ``<text>``.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> box = rbcli.load_text("{shape: box, mass: 2, size: [100, 200, 300]}", units={"length": "mm"})
+    >>> round(float(rbcli.inertia(box).inertia_com[2][2]), 10)   # m (a² + b²)/12, kg m²
+    0.0083333333
     """
     from rbcli.io.body import load_text as _load_text
 

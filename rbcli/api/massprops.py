@@ -207,7 +207,7 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
         return ()
     import math
 
-    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+    from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 
     far_point = ref.param == "about" and ref.point is not None
     if not far_point and omega is None:
@@ -218,8 +218,13 @@ def _plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> t
         d = sc.far(ref.point)
         if d is not None:
             out.append(u.far("about", "the point", d, sc.size))
-    if omega is not None:
-        v = math.sqrt(sum(x * x for x in omega)) * sc.half_diagonal
+    w = 0.0 if omega is None else math.sqrt(sum(x * x for x in omega))
+    if 0.0 < w < math.inf:
+        from rbcli.core.inertia import body_mass_props
+
+        # the body turning about omega through the reference point: its farthest material
+        through = body_mass_props(body).com if ref.point is None else ref.point
+        v = w * axis_reach(body.parts, omega, through)
         if SPEED_OF_SOUND < v < math.inf:
             out.append(Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
                             f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
@@ -374,6 +379,16 @@ def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = N
     -----
     Parallel axes (Huygens–Steiner): ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G``;
     ``L`` and ``T`` about a fixed point P: Goldstein, *Classical Mechanics*, §5.3–5.4.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> lamina = rbcli.load("examples/square_lamina.yaml")   # 1 kg, 1 m square, about a corner
+    >>> r = rbcli.inertia(lamina, axis=[1, 1, 0])
+    >>> round(r.axis_moment, 12)                              # m a²/12 about the diagonal
+    0.083333333333
+    >>> r.mass, r.com.tolist()
+    (1.0, [0.5, 0.5, 0.0])
     """
     return run_inertia(body, InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
 
@@ -428,10 +443,17 @@ class PrincipalResult(Result):
     unique_axis : int or None — for ``"symmetric"``, the index (0 or 2) of the moment that
         differs
     free_axes : tuple of int — 0-based indices of the axes free to choose (equal moments)
-    stable : tuple of 3 bool — is free rotation about each axis stable
+    stable : tuple of 3 bool — is free rotation about each axis stable (false for a neutral
+        axis: see ``stability``)
+    stability : tuple of 3 str — ``"stable"``, ``"unstable"`` or ``"neutral"`` per axis (neutral:
+        an axis of the equal pair of a symmetric body, about which the spin axis wanders)
     direction_angles_deg : (3, 3) ndarray — degrees, principal axis i from body axis j
-    rotation_axis : (3,) ndarray — unit axis of the rotation taking body to principal axes
-    rotation_angle_deg : float — its angle, degrees
+    tilt_deg : (3,) ndarray — degrees, each principal axis from its nearest body axis line
+    tilt_axis : tuple of 3 str — that body axis, ``"x"``, ``"y"`` or ``"z"``
+    rotation_axis : (3,) ndarray — unit axis of the rotation taking the body axes to the
+        principal axes 1, 2, 3 in ascending order of the moments
+    rotation_angle_deg : float — its angle, degrees (~90° when the ascending order permutes
+        the body axes, however small the tilts)
     equivalent_box : (3,) ndarray — m, sides along axes 1, 2, 3 of the uniform box with the
         same mass and principal moments
     equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same uniform ellipsoid
@@ -454,6 +476,9 @@ class PrincipalResult(Result):
     rotation_angle_deg: float
     equivalent_box: Any
     equivalent_ellipsoid: Any
+    stability: tuple[str, str, str] = ("stable", "stable", "stable")
+    tilt_deg: Any = None
+    tilt_axis: tuple[str, str, str] = ("x", "y", "z")
     parts: tuple[dict, ...] = ()
     warnings: tuple[str, ...] = field(default=())
 
@@ -472,6 +497,9 @@ class PrincipalResult(Result):
             "rotation_angle_deg": self.rotation_angle_deg,
             "equivalent_box": self.equivalent_box,
             "equivalent_ellipsoid": self.equivalent_ellipsoid,
+            "stability": list(self.stability),
+            "tilt_deg": self.tilt_deg,
+            "tilt_axis": list(self.tilt_axis),
             "name": self.name,
         }, self.parts)
 
@@ -493,6 +521,7 @@ def run_principal(body: Any, options: PrincipalOptions) -> PrincipalResult:
         stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
         rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
         equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
+        stability=pr.stability, tilt_deg=pr.tilt_deg, tilt_axis=tuple("xyz"[j] for j in pr.tilt_axis),
         parts=rows, warnings=options.warnings)
 
 
@@ -521,7 +550,19 @@ def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:
     Notes
     -----
     Free rotation about the axes of the largest and smallest moment is stable, about the
-    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37).
+    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37); about an axis of the
+    equal pair of a symmetric body neutral (``stability``; ``stable`` false). ``tilt_deg``
+    is each axis's angle from its nearest body axis (``tilt_axis``): the headline of a
+    body whose principal axes are near its body axes.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> p = rbcli.principal(rbcli.load("examples/square_lamina.yaml"), about="origin")
+    >>> [round(float(m), 6) for m in p.moments]                # m a²/12, 7 m a²/12, 2 m a²/3
+    [0.083333, 0.583333, 0.666667]
+    >>> p.symmetry
+    'asymmetric'
     """
     return run_principal(body, PrincipalOptions.parse(body, about=about))
 

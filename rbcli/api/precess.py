@@ -106,9 +106,11 @@ class PrecessOptions:
         if body is not None:
             import math
 
-            from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+            from rbcli.core.inertia import body_mass_props
+            from rbcli.core.scale import SPEED_OF_SOUND, axis_reach
 
-            v = math.sqrt(sum(x * x for x in w)) * body_scale(body.parts).half_diagonal
+            wn = math.sqrt(sum(x * x for x in w))  # free rotation: about omega through the com
+            v = wn * axis_reach(body.parts, w, body_mass_props(body).com) if 0.0 < wn < math.inf else 0.0
             if SPEED_OF_SOUND < v < math.inf:
                 warns = (Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
                               f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
@@ -263,8 +265,17 @@ def precess(body: Body, *, omega: Any, at: Any = None, duration: Any = None, sam
     Raises
     ------
     rbcli.InputError
-        A bad value (the message names the option, as the command line prints it), an
-        inertia that is not positive definite, a time too far away to have a phase.
+        A bad value (the message names the parameter), an inertia that is not positive
+        definite, a time too far away to have a phase.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> book = rbcli.precess(rbcli.load("examples/book.yaml"), omega=[0.01, 1, 0.01])
+    >>> book.case, round(book.flip_interval, 4)         # spun near the intermediate axis: it flips
+    ('circulates_max', 19.5529)
+    >>> round(float(book.at(1.0).omega[1]), 6)           # rad/s, body frame, at t = 1 s
+    1.000049
     """
     return run(body, PrecessOptions.parse(body, omega=omega, at=at, duration=duration,
                                           samples=samples, verify=verify))

@@ -567,7 +567,7 @@ def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, be
     >>> import rbcli
     >>> r = rbcli.report(rbcli.load("examples/top.yaml"), spin=150, theta=30)
     >>> [s.key for s in r.sections if s.skipped is None]
-    ['parts', 'mass-properties', 'principal-axes', 'heavy-top', 'rolling-stability']
+    ['parts', 'mass-properties', 'principal-axes', 'heavy-top']
     """
     return run(body, ReportOptions.parse(
         body, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,

@@ -21,9 +21,11 @@ from rbcli.api.result import Result
 from rbcli.errors import InputError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.core.rim import RimOffset
+    from rbcli.core.rim import Rim
     from rbcli.core.symmetry import AxialSymmetry
-    from rbcli.core.rolling import CircleMotion, Curves, StraightRolling, Verdict, Wheel
+    from rbcli.core.rollcircle import CircleMotion
+    from rbcli.core.rolling import Curves, StraightRolling, Verdict
+    from rbcli.core.wheel import Wheel
     from rbcli.model import Body, Part
 
 __all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
@@ -62,7 +64,15 @@ class RollcheckOptions:
     radius_part : str or None
         The part's name when ``radius_kind`` is ``"largest_round_part"``.
     tyre_radius : float
-        m, tube radius r of a rounded rim; 0 is a knife edge.
+        m, tube radius r of a rounded rim: 0 is a knife edge (or a flat band), a a sphere;
+        from ``--tyre-radius``, else from the rim's shape (a torus's tube, a sphere's radius).
+    tyre_radius_kind : str
+        ``"--tyre-radius"`` (given), ``"shape"`` (the rim part's: a torus, a sphere) or
+        ``"knife_edge"`` (none: 0) (JSON ``tyre_radius_source``).
+    band : tuple of 2 floats or None
+        m, for a rim that is a flat band (a cylinder on its side, rim circles in two planes)
+        and no ``--tyre-radius``: its edges' distances from the plane of the centre of mass,
+        one each side.
     g : float
         m/s², gravity.
     speed : float or None
@@ -73,9 +83,10 @@ class RollcheckOptions:
         rad, inward lean of a steady circle from the vertical, [0, pi/2).
     circle : float or None
         m, radius of the circle the centre runs on (0: spinning in place).
-    rim : rbcli.core.rim.RimOffset or None
-        Where the rim circle lies along the axle, measured from the parts whose outer
-        radius is the rim radius (``offset`` m from the centre of mass, ``fraction`` of the
+    rim : rbcli.core.rim.Rim or None
+        What the rim is (``kind``: edge, torus, sphere, band; ``tube_radius``) and where it
+        lies along the axle, measured from the parts whose outer radius is the rim radius
+        (``offset`` m from the centre of mass, ``low``/``high`` a band's ends, ``fraction`` of the
         radius); None when no part has that radius.
     warnings : tuple of str
         One-line warnings about the resolved defaults and about values far outside the
@@ -98,12 +109,14 @@ class RollcheckOptions:
     radius_kind: str
     radius_part: str | None
     tyre_radius: float = 0.0
+    tyre_radius_kind: str = "knife_edge"
+    band: tuple[float, float] | None = None
     g: float = STANDARD_GRAVITY
     speed: float | None = None
     spin: float | None = None
     lean: float | None = None
     circle: float | None = None
-    rim: RimOffset | None = None
+    rim: Rim | None = None
     warnings: tuple[str, ...] = ()
     symmetry_tol: float = 0.01
     echo: tuple[tuple[str, str, str], ...] = ()
@@ -133,7 +146,8 @@ class RollcheckOptions:
         rbcli.InputError
             A value that is not what its option takes (the message starts with the
             option), a steady circle without two of lean, circle and speed, a tyre radius
-            not smaller than the rim radius, or a body with no rim radius.
+            larger than the rim radius, a steady circle on a rim that is not a knife edge,
+            or a body with no rim radius.
         """
         from rbcli.api import options as o
         from rbcli.errors import ParamError
@@ -174,14 +188,29 @@ class RollcheckOptions:
 
         tol = o.symmetry_tolerance(symmetry_tol)
         axle_v, P, axle_source, a, source, kind, part, rim, warns = _resolve(body, n_axle, p_through, a_opt, tol)
-        if r >= a:
-            raise ParamError("tyre_radius", f"the tyre radius {r:.6g} m must be smaller than the rim "
-                             f"radius a = {a:.6g} m ({source})")
-        if (beta is not None or R_G is not None) and r != 0.0:
+        if r > a:
+            raise ParamError("tyre_radius", f"the tyre radius {r:.6g} m must be at most the rim "
+                             f"radius a = {a:.6g} m ({source}; a tyre radius equal to it is a sphere)")
+        band = None
+        r_kind = "--tyre-radius" if tyre_radius is not None else "knife_edge"
+        if tyre_radius is None and rim is not None:
+            if rim.kind == "band":
+                band = rim.edges
+            elif rim.tube_radius > 0.0:
+                r, r_kind = rim.tube_radius, "shape"
+        if (beta is not None or R_G is not None) and (r != 0.0 or band is not None):
+            if tyre_radius is not None:
+                raise ParamError(
+                    "tyre_radius", "steady circular rolling (--lean/--circle) is computed for a "
+                    "knife-edge rim only (tyre radius 0); the straight-rolling threshold takes a "
+                    "rounded rim")
+            assert rim is not None
+            what = {"band": "a flat band", "torus": "a torus", "sphere": "a sphere"}[rim.kind]
+            parts = ", ".join(f"'{n}' ({sh})" for n, sh in rim.parts)
             raise ParamError(
-                "tyre_radius", "steady circular rolling (--lean/--circle) is computed for a "
-                "knife-edge rim only (tyre radius 0); the straight-rolling threshold takes a "
-                "rounded rim")
+                "lean" if beta is not None else "circle",
+                f"steady circular rolling is computed for a knife-edge rim only; this body's rim "
+                f"is {what} (part {parts}): the straight-rolling threshold takes it")
         given = []
         if n_axle is not None:
             given.append(("--axle", u.show(n_axle, "dimensionless"), "direction"))
@@ -195,7 +224,8 @@ class RollcheckOptions:
                 given.append(u.echo(opt, val, k))
         warns = warns + _plausibility(body, u, a_opt, p_through, R_G, v, s, a)
         return cls(axle=axle_v, through=P, axle_source=axle_source, radius=a, radius_source=source,
-                   radius_kind=kind, radius_part=part, tyre_radius=r, g=gv, speed=v, spin=s,
+                   radius_kind=kind, radius_part=part, tyre_radius=r, tyre_radius_kind=r_kind,
+                   band=band, g=gv, speed=v, spin=s,
                    lean=beta, circle=R_G, rim=rim, warnings=warns, symmetry_tol=tol,
                    echo=tuple(given))
 
@@ -225,7 +255,7 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     import numpy as np
 
     from rbcli.core.inertia import body_mass_props
-    from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_offset
+    from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_of
 
     mp = body_mass_props(body)
     if n_axle is not None:
@@ -259,9 +289,9 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
         best = _largest_round_part(body, n, P, mp, tol)
         a, part, kind = float(best.radius), best.name, "largest_round_part"
         source = f"the largest round part '{best.name}' ({best.shape}, coaxial with the axle)"
-    rim = rim_offset(body.parts, mp.com, n, P, a, tol=tol)
+    rim = rim_of(body.parts, mp.com, n, P, a, tol=tol)
     warnings: list[str] = []
-    if rim is not None and abs(rim.offset) > 1e-6 * a and rim.upright_equilibrium:
+    if rim is not None and rim.outside > 1e-6 * a and rim.upright_equilibrium:
         warnings.append(
             f"{rim.describe()}; the model takes the rim circle in the plane of the centre of mass "
             f"(rollcheck refuses rims more than {100 * RIM_OFFSET_LIMIT:g} % of the radius off it)"
@@ -292,7 +322,7 @@ def _largest_round_part(body: Body, n, P, mp, tol) -> Part:
 def _wheel(body: Body, mp, axle, through, radius, tol) -> Wheel:
     """The body reduced to a rolling wheel; a body that cannot roll is an InputError
     located at the body."""
-    from rbcli.core.rolling import wheel_from_body
+    from rbcli.core.wheel import wheel_from_body
     from rbcli.errors import Location
 
     try:
@@ -314,7 +344,7 @@ class RollcheckResult(Result):
         The body's file (``"<expr>"``, ``"<text>"`` for bodies given as text).
     options : RollcheckOptions
         The options as used (SI), with the provenance of the axle and the rim radius.
-    wheel : rbcli.core.rolling.Wheel
+    wheel : rbcli.core.wheel.Wheel
         mass (kg), ``A`` = I across the axle and ``C`` = Is about it (kg m², about the
         centre of mass), ``com`` (m) and unit ``axle``; for a nearly symmetric wheel the
         symmetrised one (``A`` the mean of the two moments across; ``wheel.asymmetry``).
@@ -324,9 +354,9 @@ class RollcheckResult(Result):
         (kg m²), ``nu2(spin)``.
     verdict : rbcli.core.rolling.Verdict or None
         With a speed or spin: ``speed`` (m/s), ``spin`` (rad/s), ``stable``, ``margin``
-        (|speed| / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
+        (``|speed|`` / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
         ``lean_frequency_hz``, ``growth_rate`` (1/s), ``backwards``.
-    circle : rbcli.core.rolling.CircleMotion or None
+    circle : rbcli.core.rollcircle.CircleMotion or None
         With a steady circle: ``lean`` (rad), ``lean_deg``, ``radius`` R_G (m),
         ``turn_rate`` (rad/s), ``spin`` (rad/s), ``speed`` (m/s), ``contact_radius`` (m),
         ``kappa`` (N m), ``stable``, ``lean_frequency`` (rad/s), ``growth_rate`` (1/s).
@@ -359,13 +389,14 @@ class RollcheckResult(Result):
         between the ones computed with either moment: s_c ∝ sqrt(I)); the coupling relative
         to the mean moment across (the principal moments move by at most the coupling, and
         the wheel wobbles); e/(2 (a - r)) for a com e off the axle (the gravity lever swings
-        by ±e). Derivation: :func:`rbcli.core.rolling.wheel_from_body`, Notes."""
+        by ±e). Derivation: :func:`rbcli.core.wheel.wheel_from_body`, Notes."""
         a = self.asymmetry
         if a is None:
             return None
         d = a.relative
         lever = self.options.radius - self.options.tyre_radius
-        return max(d / (4.0 - d), a.coupling_relative, a.com_offset / (2.0 * lever))
+        e = a.com_offset / (2.0 * lever) if lever > 0.0 else a.com_offset / self.options.radius
+        return max(d / (4.0 - d), a.coupling_relative, e)
 
     @property
     def critical_speed(self) -> float:
@@ -380,9 +411,18 @@ class RollcheckResult(Result):
     @property
     def model(self) -> str:
         """The model in one sentence (JSON ``model``)."""
-        r = self.straight.tyre_radius
-        rim = ("knife-edge rim (tyre radius 0)" if r == 0.0
-               else f"rounded rim of tube radius r = {r:.6g} m (gravity term a - r)")
+        st = self.straight
+        r = st.tyre_radius
+        if st.rim == "band":
+            assert st.band is not None and st.static_lean_limit is not None
+            rim = (f"flat band {st.band[0] + st.band[1]:.6g} m wide (its weight holds it up for "
+                   f"leans below {math.degrees(st.static_lean_limit):.6g} deg at any speed; the "
+                   "critical speed is that of rolling balanced on either edge)")
+        elif st.rim == "sphere":
+            rim = "spherical rim (tyre radius = rim radius: no lean instability, stable at any speed)"
+        else:
+            rim = ("knife-edge rim (tyre radius 0)" if r == 0.0
+                   else f"rounded rim of tube radius r = {r:.6g} m (gravity term a - r)")
         return (
             f"{rim} rolling without slip on a rough level floor; I and Is about the centre of "
             "mass, Is + m a^2 about the contact point; stable means neutral stability (undamped): "
@@ -421,6 +461,7 @@ class RollcheckResult(Result):
         out["radius_source"] = self.options.radius_kind
         if self.options.radius_part is not None:
             out["radius_part"] = self.options.radius_part
+        out["tyre_radius_source"] = self.options.tyre_radius_kind
         for k, v in core.items():
             if k not in out and k != "model":
                 out[k] = v
@@ -446,11 +487,11 @@ class OffCentreRim(InputError):
 
     Attributes
     ----------
-    rim : rbcli.core.rim.RimOffset — the measured offset
+    rim : rbcli.core.rim.Rim — the rim and its measured offset
     reason : str — the short reason, one line (the report's)
     """
 
-    def __init__(self, message: str, where: Any, rim: RimOffset, reason: str) -> None:
+    def __init__(self, message: str, where: Any, rim: Rim, reason: str) -> None:
         super().__init__(message, where)
         self.rim = rim
         self.reason = reason
@@ -495,7 +536,7 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     wheel = _wheel(body, body_mass_props(body), o.axle, o.through, o.radius, o.symmetry_tol)
     if o.rim is not None and not o.rim.upright_equilibrium:
         _refuse_off_centre_rim(body, o)
-    res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, speed=o.speed, spin=o.spin,
+    res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, band=o.band, speed=o.speed, spin=o.spin,
                        lean_rad=o.lean, circle_radius=o.circle)
     warnings = o.warnings
     if wheel.asymmetry is not None:
@@ -536,7 +577,9 @@ def rollcheck(body: Body, *, axle: Any = None, through: Any = None, radius: Any 
         part (ring, disk, cylinder, torus, sphere, hemisphere, cone; not a hole) centred
         on the axle and coaxial with it.
     tyre_radius : float or str, optional
-        m, tube radius r of a rounded rim, 0 <= r < a. Default 0 (knife edge).
+        m, tube radius r of a rounded rim, 0 <= r <= a (r = a: a sphere). Default: the rim's
+        own shape (a torus its tube radius, a sphere its radius, a cylinder its flat band of
+        the cylinder's length; a disk, ring, cone or hemisphere a knife edge, 0).
     g : float or str, optional
         m/s², gravity. Default 9.80665.
     speed : float or str, optional

@@ -23,7 +23,9 @@ if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
 
     from rbcli.core.gyrocompass import Gyrocompass
-    from rbcli.core.top import TopMotion, TopParams, TopState
+    from rbcli.core.top import TopMotion
+    from rbcli.core.topbody import TopParams
+    from rbcli.core.toppath import TopState
     from rbcli.core.symmetry import AxialSymmetry
     from rbcli.core.topverify import RealBodyCheck, VerifyResult
     from rbcli.model import Body
@@ -128,7 +130,7 @@ class TopOptions:
                                      ("theta_dot", theta_dot), ("phi_dot", phi_dot), ("g", g),
                                      ("verify", verify or None), ("symmetry_tol", symmetry_tol))
                       if v is not None)
-        warns = _plausibility(body, u, p_opt, S, "pivot")
+        warns = _plausibility(body, u, p_opt, S, "pivot", through=P)
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
                    pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
                    pivot_as_given=p_opt if isinstance(p_opt, str) or p_opt is None else tuple(p_opt),
@@ -160,19 +162,29 @@ def series(duration: Any = None, samples: Any = None) -> tuple[float | None, int
     return span, rows
 
 
-def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str) -> tuple[str, ...]:
+def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str,
+                  axis: Any = None, through: Any = None) -> tuple[str, ...]:
     """One-line warnings for values far outside the body's scale (issue 13): a pivot more
-    than 10 body sizes away, a rim faster than sound."""
+    than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
+    ``through``: the body's farthest material from that line, issue 24)."""
     if body is None:
         return ()
-    from rbcli.core.scale import SPEED_OF_SOUND, body_scale
+    import numpy as np
+
+    from rbcli.core.inertia import body_mass_props
+    from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 
     sc = body_scale(body.parts)
     out = []
     if point is not None and not isinstance(point, str) and sc.far(point):
         out.append(Note(f"{literal(body.source)}: warning: "
                         + u.far(option, "the pivot", sc.far(point), sc.size).template))
-    v = abs(spin) * sc.half_diagonal
+    com = body_mass_props(body).com
+    if axis is None:  # a top: its symmetry axis, from the pivot to the com
+        axis = com - np.asarray(through, dtype=float)
+    if not float(np.linalg.norm(axis)) > 0.0:  # the pivot at the com: refused later
+        return tuple(out)
+    v = abs(spin) * axis_reach(body.parts, axis, com if through is None else through)
     if SPEED_OF_SOUND < v < math.inf:
         out.append(Note(f"{literal(body.source)}: warning: {{spin}}: the body's rim would move at "
                         f"{v:.4g} m/s, faster than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds "
@@ -322,15 +334,16 @@ def run(body: Body, options: TopOptions) -> TopResult:
     import numpy as np
 
     from rbcli.core import top as core
+    from rbcli.core import topbody
     from rbcli.core.inertia import body_mass_props
 
     mp = body_mass_props(body)
     P = np.asarray(options.pivot, dtype=float)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            params = core.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
+            params = topbody.top_from_body(mp.mass, mp.com, mp.inertia_com, P,
                                         sym_rtol=options.symmetry_tol)
-    except core.PivotAtCom as exc:
+    except topbody.PivotAtCom as exc:
         if options.pivot_given:
             raise ParamError("pivot", str(exc)) from None
         raise InputError(str(exc), Location(body.source)) from None
@@ -519,7 +532,7 @@ class GyrocompassOptions:
         unit = tuple(float(x) for x in v / np.linalg.norm(v))
         return cls(ratio=None, axis=unit, axis_source=Note(src), spin=S, latitude=lat,  # type: ignore[arg-type]
                    earth_rate=W, symmetry_tol=tol, axis_as_given=None if n_axis is None else tuple(n_axis),
-                   given=given, warnings=_plausibility(body, u, None, S, "spin"))
+                   given=given, warnings=_plausibility(body, u, None, S, "spin", axis=unit))
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from rbcli.errors import ExitStatus, InputError
 BODY_HELP = "Body file(s) (YAML); '-' reads standard input."
 EXPR_HELP = "Inline YAML body, e.g. -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'."
 JSON_HELP = "Print JSON (SI units) instead of tables."
-DIGITS_HELP = "Significant figures in tables."
+DIGITS_HELP = "Significant figures in tables; with --format csv, of its numbers (full precision unless given)."
 UNITS_HELP = "Units for tables, e.g. mm,g or in,lb (JSON is always SI)."
 
 BodiesArg = typer.Argument(None, metavar="BODY...", help=BODY_HELP, show_default=False)
@@ -33,7 +33,8 @@ SymmetryTolOpt = typer.Option(
          "it the answer is for the symmetrised body (the mean moment across) with a warning; "
          "beyond it the body is refused. Default: 1 %.",
     show_default=False)
-FORMAT_HELP = "Output: table (for people), json (= --json) or csv (the tables, for spreadsheets)."
+FORMAT_HELP = ("Output: table (for people), json (= --json) or csv (the JSON as one table for "
+               "spreadsheets: quantity,value,text,unit; full precision unless --digits).")
 FormatOpt = typer.Option(None, "--format", metavar="table|json|csv", help=FORMAT_HELP, show_default=False)
 
 #: the output formats of every command that prints tables
@@ -236,44 +237,63 @@ def output_format(json_: bool, fmt: str | None, extra: tuple[str, ...] = ()) -> 
 
 
 def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = False,
-         file: str | None = None, given: Any = (), plain: bool = False) -> None:
+         file: str | None = None, given: Any = (), plain: bool = False, header: bool = True) -> None:
     """Print a command's result in format ``fmt`` (:func:`output_format`; True = "json",
     False = "table"): JSON of ``data_fn()`` (one compact line with ``lines``, for JSON
-    Lines), or the tables ``doc_fn(doc)`` puts in a Doc, as text or as CSV (with a ``file``
-    column when ``file`` is given). All refuse inf and NaN (one line, exit 2):
+    Lines); that JSON as one CSV table (:mod:`rbcli.render.tablecsv`: a ``file`` column when
+    ``file`` is given, the header row only with ``header``); or the tables ``doc_fn(doc)``
+    puts in a Doc, as text. All refuse inf and NaN (one line, exit 2):
     :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
     printed is built. ``given`` (option, value, unit) rows are the options as understood
     (an XOptions' ``given``): the text output shows them first (after the title), in a table
     titled "options" (JSON and CSV stay as they are). ``plain``: ``data_fn()`` returns
     jsonable's result already (a result's ``to_json()``), not converted again."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
-    if fmt == "json":
-        from rbcli.render.jsonout import dumps
-
+    if fmt in ("json", "csv"):
         data = data_fn()
         if not plain:
             from rbcli.api.result import jsonable
 
             data = jsonable(data)
-        e.write(dumps(said_json(data), lines=lines))
+        data = said_json(data)
+        if fmt == "json":
+            from rbcli.render.jsonout import dumps
+
+            e.write(dumps(data, lines=lines))
+        else:
+            from rbcli.render import tablecsv
+
+            command, digits = _invocation()
+            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header))
         return
     from rbcli.render.text import Doc
 
     doc = Doc(e)
     doc_fn(doc)
-    if given and fmt == "table":
+    if given:
         from rbcli.render.text import Heading
 
         at = 1 if doc.items and isinstance(doc.items[0], Heading) else 0
         doc.table("options", ("option", "value", "unit"), given, right=(1,))
         doc.items.insert(at, doc.items.pop())
-    if fmt == "csv":
-        from rbcli.render import tablecsv
+    write_doc(e, doc)
 
-        check_finite_doc(doc)
-        e.write(tablecsv.render(doc, file))
-    else:
-        write_doc(e, doc)
+
+def _invocation() -> tuple[str, int | None]:
+    """(the command's name, ``--digits`` if it was typed, else None) of the command running.
+
+    The CSV's numbers are at full precision unless ``--digits`` was given (its default, 6,
+    is for the tables); typer's context (its vendored click) says where a value came from."""
+    from typer._click.core import ParameterSource
+    from typer._click.globals import get_current_context
+
+    ctx = get_current_context(silent=True)
+    if ctx is None:
+        return "", None
+    digits = ctx.params.get("digits")
+    if ctx.get_parameter_source("digits") in (None, ParameterSource.DEFAULT):
+        digits = None
+    return ctx.info_name or "", digits
 
 
 def finish(status: int | ExitStatus) -> None:

@@ -31,7 +31,7 @@ uniform box and ellipsoid.
 ROBOT_FORMATS = ("urdf", "sdf", "mjcf")
 
 INERTIA_FORMAT_HELP = (
-    "Output: table (for people), json (= --json), csv (the tables, for spreadsheets), or the "
+    "Output: table (for people), json (= --json), csv (the JSON as one table for spreadsheets), or the "
     "body's <inertial> element for a robot model: urdf, sdf or mjcf (about the com, SI, full "
     "precision; the frame is stated in a comment).")
 
@@ -53,7 +53,7 @@ def inertia(
     about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm').", show_default=False),
     axis: str = typer.Option(None, "--axis", help="Moment about this direction x,y,z through the point.", show_default=False),
     omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
-    products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive)."),
+    products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive), in the tables; --format urdf, sdf and mjcf fix the tensor's sign (positive is refused there)."),
     json_: bool = c.JsonOpt,
     fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
     principal_: bool = typer.Option(False, "--principal", help="With --format urdf|sdf|mjcf: the principal moments and the principal axes' orientation instead of the full tensor in body axes."),
@@ -66,6 +66,9 @@ def inertia(
     choice(products, "--products", ("tensor", "positive"))
     out = c.output_format(json_, fmt, ROBOT_FORMATS)
     if out in ROBOT_FORMATS:
+        if products.strip().lower() == "positive":
+            raise InputError(f"--products positive does not apply to --format {out}: the element "
+                             "holds the tensor's entries (ixy = -sum m x y), as the format requires")
         given = [o for o, v in (("--about", about), ("--axis", axis), ("--omega", omega), ("--units", units)) if v is not None]
         if given:
             raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
@@ -79,16 +82,17 @@ def inertia(
     from rbcli.api import massprops as api
 
     api.InertiaOptions.parse(None, about=about, axis=axis, omega=omega)  # bad values: one line, before any body
-    _run(bodies, expr, e, lambda body, many: _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many),
-         sep="\n" if out == "csv" else "")
+    _run(bodies, expr, e, lambda body, many, first: _inertia_one(
+        body, about, axis, omega, out, principal_, du, digits, products, e, many, first))
 
 
-def _run(bodies, expr, e, one, sep: str = "") -> None:
-    """Run ``one(body, many)`` per body; go on past bad files, exit 2 at the end if any failed.
+def _run(bodies, expr, e, one) -> None:
+    """Run ``one(body, many, first)`` per body; go on past bad files, exit 2 at the end if any
+    failed.
 
     ``many`` is true when more than one body was named: ``--json`` then prints JSON Lines
-    (one compact object per body). ``sep`` is written between two bodies' outputs (the
-    empty line between CSV blocks).
+    (one compact object per body), ``--format csv`` one table with a ``file`` column.
+    ``first`` is true for the first body printed (the CSV's header row comes with it).
     """
     srcs = c.sources(bodies, expr)
     many = len(srcs) > 1
@@ -106,9 +110,7 @@ def _run(bodies, expr, e, one, sep: str = "") -> None:
             failed = True
             continue
         try:
-            if done and sep:
-                e.write(sep)
-            one(body, many)
+            one(body, many, done == 0)
             done += 1
         except InputError as exc:
             if len(srcs) == 1:
@@ -119,7 +121,8 @@ def _run(bodies, expr, e, one, sep: str = "") -> None:
         c.finish(2)
 
 
-def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool) -> None:
+def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool,
+                 first: bool = True) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
     from rbcli.render.units import echo_rows
@@ -137,7 +140,7 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
            file=body.source if many else None, given=echo_rows(opts, body, r.INERTIA_OPTIONS),
-           plain=True)
+           plain=True, header=first)
 
 
 @app.command(help=PRINCIPAL_HELP)
@@ -157,11 +160,12 @@ def principal(
     api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
     if plot is not None:
         c.sources(bodies, expr, single=True)  # one figure, one body
-    _run(bodies, expr, e, lambda body, many: _principal_one(body, about, out, du, digits, e, many, plot),
-         sep="\n" if out == "csv" else "")
+    _run(bodies, expr, e, lambda body, many, first: _principal_one(
+        body, about, out, du, digits, e, many, plot, first))
 
 
-def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None = None) -> None:
+def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None = None,
+                   first: bool = True) -> None:
     from rbcli.api import massprops as api
     from rbcli.render import massprops as r
     from rbcli.render.units import echo_rows
@@ -181,7 +185,7 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
            file=body.source if many else None, given=echo_rows(opts, body, r.PRINCIPAL_OPTIONS),
-           plain=True)
+           plain=True, header=first)
 
 
 MANUAL["inertia"] = {
@@ -190,8 +194,9 @@ MANUAL["inertia"] = {
         "(Ixy = -sum m x y). --products positive shows the positive engineering products "
         "instead, and says so. Tables use six significant figures (--digits) and SI units "
         "unless --units is given; JSON is always SI with full precision.",
-        "--format table (default), json (the same as --json) or csv (the tables, one block per "
-        "table; several bodies add a file column; layout in rbcli(1)).",
+        "--format table (default), json (the same as --json) or csv (the JSON as one table, "
+        "quantity,value,text,unit, one row per value; several bodies add a file column; layout "
+        "in rbcli(1)).",
         "--format urdf, sdf or mjcf prints the body's <inertial> element for a robot or "
         "simulation model, after a comment that states its frame: the link frame is the body "
         "frame; the position is the centre of mass (m); the inertia is about the centre of "
@@ -201,8 +206,9 @@ MANUAL["inertia"] = {
         "With --principal it is the principal moments (ascending, as rbcli principal) and the "
         "orientation of the principal axes: URDF <origin rpy> and SDF <pose> as fixed-axis "
         "roll, pitch, yaw in rad (R = Rz(yaw) Ry(pitch) Rx(roll)), MJCF quat=\"w x y z\" with "
-        "diaginertia. --about, --axis, --omega and --units do not apply to these formats "
-        "(exit 2). Several bodies: one element per body, one after another.",
+        "diaginertia. Every comment states the off-diagonals' sign. --about, --axis, --omega, "
+        "--units and --products positive do not apply to these formats (exit 2: they fix "
+        "the tensor's sign). Several bodies: one element per body, one after another.",
     ],
     "json": [
         ("mass", "total mass, kg."),
@@ -234,12 +240,18 @@ MANUAL["inertia"] = {
 MANUAL["principal"] = {
     "notes": [
         "Free rotation about the axes of the largest and the smallest principal moment is "
-        "stable, about the intermediate one unstable (the tennis-racket flip). The equivalent "
+        "stable, about the intermediate one unstable (the tennis-racket flip); for a symmetric "
+        "body, stable about its symmetry axis and neutral about the others. The equivalent "
         "uniform box and ellipsoid have the same mass and principal moments.",
+        "Tilts: each principal axis's angle from its nearest body axis (a rod turned 0.5 degrees "
+        "reads 0.5 degrees). The moments are listed in ascending order, so the rotation taking the "
+        "body axes to principal axes 1, 2, 3 may be about 90 degrees for a body tilted a little; "
+        "it is printed too, labelled so.",
         "Signs of the axes: of the sign choices that keep the axes right-handed, the one "
         "whose rotation from the body axes is smallest (largest trace of the axes matrix), so "
         "a flywheel tilted 0.5 degrees has its axis 3 along +z tilted 0.5 degrees, and the "
-        "rotation reads 0.5 degrees. Where moments coincide, the free axes are also ordered "
+        "rotation reads 0.5 degrees when the ascending order keeps each axis on its own body axis. "
+        "Where moments coincide, the free axes are also ordered "
         "this way. Exact ties keep the first two axes with their largest component positive.",
     ],
     "json": [
@@ -248,10 +260,16 @@ MANUAL["principal"] = {
         ("axes", "[3x3] row i is the unit axis of moment i in the body frame; a right-handed set "
                  "(a rotation matrix) with the signs that make it the rotation nearest the body frame."),
         ("symmetry", "asymmetric, symmetric or spherical."),
-        ("stable", "[3] whether free rotation about each axis is stable."),
+        ("stable", "[3] whether free rotation about each axis is stable (false for a neutral axis)."),
+        ("stability", "[3] stable, unstable or neutral: neutral about an axis of the equal pair of a "
+                      "symmetric body (the spin axis wanders round the symmetry axis)."),
+        ("tilt_deg, tilt_axis", "[3] each principal axis's angle from its nearest body axis, degrees, "
+                                "and that axis (x, y or z): the tilt of a body near its body axes."),
         ("free_axes", "axes (1-based) that are free to choose where moments coincide."),
         ("direction_angles_deg", "[3x3] angle of principal axis i from body axis j."),
-        ("rotation_axis, rotation_angle_deg", "the rotation taking the body axes onto the principal axes."),
+        ("rotation_axis, rotation_angle_deg", "the rotation taking the body axes onto the principal "
+                                              "axes 1, 2, 3 in ascending order (about 90 degrees or more "
+                                              "when that order permutes the body axes)."),
         ("equivalent_box, equivalent_ellipsoid", "[3] box sides and ellipsoid semi-axes along the principal axes, m."),
         ("mass, name, file", "the body's mass (kg), name and source."),
         ("parts", "[{name, shape, mass, com}] each part's contribution, as in inertia (mesh parts "

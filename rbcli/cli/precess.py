@@ -139,7 +139,8 @@ MANUAL["precess"] = {
         "space coordinates.",
         "Which motion: w circles axis 3 when G^2 > 2 T I2 (G = |L|, T the kinetic energy), axis "
         "1 when G^2 < 2 T I2; both are stable for a rigid body (a body that dissipates energy "
-        "ends up turning about axis 3, the major-axis rule). G^2 = 2 T I2 is the separatrix: no "
+        "ends up turning about axis 3, the major-axis rule) unless the body flips: a motion that "
+        "flips is near the intermediate axis and is not called stable. G^2 = 2 T I2 is the separatrix: no "
         "period, w creeps towards the intermediate axis and the body turns over once. The "
         "intermediate component w2 changes sign every 2K(m)/lambda; that is a flip (the "
         "tennis-racket or Dzhanibekov effect, flip_interval) only when the motion carries the "
@@ -169,7 +170,7 @@ MANUAL["precess"] = {
         ("flip_interval", "time between flips, s: when the motion carries the intermediate axis through a reversal relative to L (L passes nearer to the intermediate axis than to the others, then to its opposite; w2 changes sign in the middle of each flip); null near the largest or smallest axis (no flip), for symmetric bodies and when not periodic."),
         ("first_flip, flip_interval_estimate", "the first t > 0 at which w2 changes sign in a flip (on the separatrix: the one flip, if ahead), s; the near-separatrix estimate (2/sigma) ln(4/k'), s; null when the body does not flip."),
         ("omega, angular_momentum_norm, symmetry, principal_moments, principal_axes", "the input w [3] rad/s; |L|; asymmetric/symmetric/spherical; moments ascending [3] and axes [3x3] (rows, body frame)."),
-        ("case, description, stable", "rest, spherical, steady, circulates_max, circulates_min or separatrix; one sentence; whether the motion is stable (null where neutral or n/a)."),
+        ("case, description, stable", "rest, spherical, steady, circulates_max, circulates_min or separatrix; one sentence; whether the motion reported is stable: true when w circles (or spins steadily about) the largest or smallest axis or a symmetry axis without flipping; false when the body flips, spins about the intermediate axis or is on the separatrix; null at rest, for a spherical body and about a transverse axis of a symmetric body (neutral)."),
         ("nutation_deg, symmetry_axis, oblate, spin_rate, wobble_to_spin, wobble_period, space_precession_period", "symmetric bodies: angle of L from the axis; the axis [3]; Is > I; psi' = -W; |phi'/psi'|; 2 pi/|W| s (also for steady spin about the axis: the period of a small wobble); 2 pi I/|L| s."),
         ("precession_per_period, mean_precession_rate", "angle the body turns about L per period of w, rad; that over the period, rad/s."),
         ("elliptic_parameter, elliptic_complement, elliptic_rate", "asymmetric motion: m, 1 - m and lambda (1/s) of the Jacobi solution."),

@@ -15,11 +15,15 @@ default 1 %: a nearly symmetric wheel is answered for its symmetrised form with 
 warning) and its rim circle in the
 plane of the centre of mass (within 1 % of the radius; a cone on its base rim is refused). It rolls without slipping
 on its rim, radius a (--radius, default the body's rim_radius, else the largest
-round part coaxial with the axle; the output says which). Straight upright rolling
-is stable (neutrally: undamped, a small lean oscillates) when the spin s satisfies
-s^2 > m g (a - r) I / (Is (Is + m a^2)), I across the axle and Is about it, both
-about the centre; r is the tube radius of a rounded rim (--tyre-radius, 0 = knife
-edge). At --speed or --spin: the verdict, the margin (speed over critical) and the
+round part coaxial with the axle; the output says which). The rim's shape sets the
+contact: a disk or ring is a knife edge, a torus has its tube radius r, a sphere
+(r = a) has no lean instability and stays up at any speed, a cylinder on its side is
+a flat band (its weight holds it up for leans below atan(c/a), c the band's half
+width; its critical speed is that of rolling balanced on an edge). Straight upright
+rolling is stable (neutrally: undamped, a small lean oscillates) when the spin s
+satisfies s^2 > m g (a - r) I / (Is (Is + m a^2)), I across the axle and Is about it,
+both about the centre; --tyre-radius r (0 <= r <= a) overrides the shape's r.
+At --speed or --spin: the verdict, the margin (speed over critical) and the
 lean oscillation frequency or growth rate. With two of --lean, --circle, --speed:
 steady circular rolling (turn rate, spin, speed, stable or not). Exit status 1 when
 the motion asked about is unstable.
@@ -39,7 +43,7 @@ def rollcheck(
     axle: str = typer.Option(None, "--axle", help="Axle direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft axis, else z.", show_default=False),
     through: str = typer.Option(None, "--through", help="A point of the axle line: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the origin.", show_default=False),
     radius: str = typer.Option(None, "--radius", help=RADIUS_HELP, show_default=False),
-    tyre_radius: str = typer.Option(None, "--tyre-radius", help="Tube radius r of a rounded rim (a bare number is in the body's length unit, else give one); 0 = knife edge. Default: 0.", show_default=False),
+    tyre_radius: str = typer.Option(None, "--tyre-radius", help="Tube radius r of a rounded rim, 0 <= r <= a (a bare number is in the body's length unit, else give one); 0 = knife edge, a = a sphere. Default: the rim's shape: a torus's tube radius, a sphere's radius, a flat band for a cylinder, else 0.", show_default=False),
     g: str = typer.Option(None, "--g", help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665.", show_default=False),
     speed: str = typer.Option(None, "--speed", help="Speed of the centre (m/s, or e.g. '20 km/h'); negative = backwards.", show_default=False),
     spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 rpm'); speed = a x spin.", show_default=False),
@@ -83,14 +87,32 @@ MANUAL["rollcheck"] = {
     "notes": [
         "Model (physics notes dynamics.md §3): a rigid body of revolution rolls without "
         "slipping, pivot friction or rolling resistance on a horizontal floor, touching it on "
-        "a circle of radius a in its mid-plane (a knife edge) or, with --tyre-radius r, on a "
-        "toroidal rim of tube radius r. I (= A) is the moment across the axle and Is (= C) the "
+        "a circle of radius a in its mid-plane (a knife edge) or on a toroidal rim of tube "
+        "radius r (0 < r < a), a sphere (r = a) or a flat band. I (= A) is the moment across the axle and Is (= C) the "
         "moment about it, both about the centre of mass; Is + m a^2 is the axial moment about "
         "the contact point, which is where the condition's mixed product comes from. Energy is "
         "conserved, so 'stable' means neutrally stable (undamped): a small lean oscillates at "
         "the lean frequency nu, nu^2 = [Is (Is + m a^2) s^2 - I m g (a - r)] / [I (I + m a^2)], "
         "and does not decay; 'unstable' means it grows at sqrt(-nu^2). Exactly at the critical "
         "speed the verdict is unstable. Thin disk: v_c = sqrt(g a/3); hoop: v_c = sqrt(g a/4).",
+        "The rim as it is (issue 24): the parts whose outer radius is the rim radius say what "
+        "touches the floor. A disk, ring, a cone's base or a hemisphere's flat face: a knife "
+        "edge, r = 0. A torus (a tyre): its tube radius r, which shortens gravity's lever to "
+        "a - r. A sphere: r = a, no lever at any lean: no lean instability, critical speed 0, "
+        "stable at every speed (JSON margin null). A cylinder on its side (a thick coin, a can), "
+        "or rim circles in two planes (two wheels on an axle): a flat band from c1 on one side "
+        "of the centre of mass's plane to c2 on the other. Upright it stands on the band, and "
+        "its weight holds it up against leans below atan(min(c1, c2)/a) at any speed (a "
+        "disturbance within that rocks it back, or rolls it along a curve on one edge: it "
+        "leans no further). Tipped past that it balances on one edge circle, c from the centre "
+        "of mass's plane, leaning atan(c/a) with the centre of mass above the contact; rolling "
+        "so is stable above s_e, s_e^2 = m g l Delta / (Is (Is + m a^2)(Is + m l^2)), "
+        "l^2 = a^2 + c^2, Delta = (Is + m a^2)(I + m c^2) - m^2 a^2 c^2 (derived from the "
+        "rolling equations, checked against their integration; c = 0 is the knife edge). The "
+        "critical speed of a band is the larger of its two edges'; the knife-edge value at the "
+        "centre of mass's plane (the sheet's idealisation) is printed beside it. --tyre-radius "
+        "overrides the shape (a torus of tube r; r = a a sphere). Steady circles are computed "
+        "for a knife edge only.",
         "The axle is --axle, else the body's shaft axis, else body z; it passes through "
         "--through, else the body's shaft point, else the origin. The body must be of "
         "revolution about it and its centre of mass must be on it, within --symmetry-tol (see "
@@ -98,11 +120,11 @@ MANUAL["rollcheck"] = {
         "else the body's rim_radius, else the largest outer radius of the round parts (ring, "
         "disk, cylinder, torus, sphere, hemisphere, cone; not holes) centred on and coaxial "
         "with the axle; the output says which.",
-        "Rims off the centre of mass: rollcheck measures where the rim circle lies along the "
+        "Rims off the centre of mass: rollcheck measures where the rim lies along the "
         "axle from the parts whose outer radius is the rim radius (disk, ring, sphere, torus: "
-        "their own plane; cylinder: the mid-plane of its two end circles; hemisphere: its flat "
+        "their own plane; cylinder: a band, its length, about its centre; hemisphere: its flat "
         "face, 3R/8 from its centre of mass; cone: its base, h/4 from its centre of mass; several "
-        "such parts: the mid-plane of the outermost circles). A rim circle off the plane of the "
+        "such parts: a band from the outermost to the other). A rim circle (a band) off the plane of the "
         "centre of mass makes upright rolling no equilibrium: the centre of mass is to the side "
         "of the contact point. Up to 1 % of the rim radius (a lean of 0.57° would bring the centre "
         "of mass over the rim) the model takes the rim in that plane and warns with the real "
@@ -151,13 +173,21 @@ MANUAL["rollcheck"] = {
         ("critical_spin", "spin above which straight rolling is stable, rad/s."),
         ("critical_speed", "critical_spin x radius, m/s."),
         ("speed, stable, margin", "when --speed or --spin is given: the speed of the centre "
-         "(m/s), whether straight rolling at it is stable, and |speed| / critical_speed."),
+         "(m/s), whether straight rolling at it is stable (a band: balanced on either edge; a "
+         "sphere: always), and |speed| / critical_speed (null for a sphere)."),
         ("circle", "with --lean/--circle: {lean_deg, radius (of the centre's circle, m), "
          "turn_rate (rad/s), spin (rad/s), speed (m/s), stable, contact_radius (m), kappa (N m), "
          "lean_frequency (rad/s or null), lean_frequency_hz, growth_rate (1/s or null)}."),
         ("radius_source, radius_part", "where the radius came from: '--radius', 'rim_radius' "
          "(the body file's) or 'largest_round_part', then radius_part is that part's name."),
         ("tyre_radius, g", "m and m/s^2 as used."),
+        ("rim, tyre_radius_source", "what touches the floor: edge, torus, sphere or band; where "
+         "r came from: '--tyre-radius', 'shape' (a torus's tube, a sphere's radius) or "
+         "'knife_edge' (0)."),
+        ("band_width, band_edges, static_lean_limit_deg, knife_edge_critical_spin, knife_edge_critical_speed",
+         "a flat band only: its width (m), its edges' distances c1, c2 from the centre of mass's "
+         "plane (m), the lean below which its weight holds it up (degrees), and the knife edge "
+         "at the centre of mass's plane for comparison (rad/s, m/s)."),
         ("I_contact, Is_contact", "I + m a^2 and Is + m a^2, about the contact point, kg m^2."),
         ("spin, lean_frequency, lean_frequency_hz, growth_rate, lean_frequency_squared, backwards",
          "with a speed: the spin (rad/s), nu (rad/s) and nu/(2 pi) (Hz) when stable, else null; "
@@ -183,7 +213,13 @@ MANUAL["rollcheck"] = {
         ("rbcli rollcheck examples/hoop.yaml --lean 20 --circle 1",
          "Steady circular rolling of a hoop leaning 20 degrees on a 1 m circle."),
         ("rbcli rollcheck examples/spoked_wheel.yaml --plot margin.svg",
-         "The spoked wheel's threshold and a plot of the lean frequency against speed."),
+         "The spoked wheel (its tyre a torus of tube radius 12.5 mm): critical speed 1.01418 m/s, "
+         "and a plot of the lean frequency against speed."),
+        ("rbcli rollcheck -e '{units: {length: mm}, shape: sphere, radius: 50, mass: 0.4}'",
+         "A ball: critical speed 0, it stays up at any speed."),
+        ("rbcli rollcheck -e '{units: {length: mm}, shape: cylinder, radius: 50, length: 100, mass: 0.4}'",
+         "A can on its side: its band holds it up for leans below 45 degrees; balanced on an edge it "
+         "needs 0.713105 m/s (the knife-edge idealisation says 0.617551)."),
         ("rbcli rollcheck examples/car_wheel.yaml",
          "A disk tilted 0.5° on its axle: products of inertia 0.87 % of the moment across, within "
          "the default --symmetry-tol of 1 %; answered for the symmetrised wheel (critical speed "

@@ -5,19 +5,20 @@
 quaternion's sign kept continuous; :func:`state_json` the ``--at`` object; :func:`notes`
 what the numbers mean in words; :func:`plot_span` and :func:`polhode_family` the time span
 and the reference curves of ``precess --plot``. Every formula of the motion itself is in
-:mod:`rbcli.core.freemotion`; every rotation formula in :mod:`rbcli.core.rotation`.
+:mod:`rbcli.core.freemotion` and :mod:`rbcli.core.freepath`; every rotation formula in :mod:`rbcli.core.rotation`.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from rbcli._startup import frozen
 from rbcli.core import freemotion as fm
+from rbcli.core import freepath
 from rbcli.core.rotation import quat_to_axis_angle, quat_to_matrix
 
 __all__ = [
@@ -50,7 +51,7 @@ CHUNK = 100_000
 _DAY = 86400.0
 
 
-@frozen(eq=False)
+@dataclass(frozen=True, eq=False)
 class FreeState:
     """The state of a torque-free motion at one time or an array of times.
 
@@ -89,8 +90,8 @@ def evaluate(motion: fm.FreeMotion, t: Any) -> FreeState:
     """
     scalar = np.ndim(t) == 0
     tt = np.atleast_1d(np.asarray(t, dtype=float))
-    w = fm.omega_at(motion, tt)
-    q = fm.attitude_at(motion, tt)
+    w = freepath.omega_at(motion, tt)
+    q = freepath.attitude_at(motion, tt)
     zero = tt == 0.0
     if np.any(zero):
         w[zero] = motion.omega0
@@ -249,7 +250,7 @@ def plot_span(motion: fm.FreeMotion, duration: float | None) -> tuple[float, flo
     return 0.0, 3.0 * (2 * math.pi / wn if wn > 0 else 1.0)
 
 
-@frozen
+@dataclass(frozen=True)
 class PlotSamples:
     """What the precess figure draws, sampled from the exact motion.
 
@@ -280,9 +281,9 @@ def plot_samples(motion: fm.FreeMotion, duration: float | None) -> PlotSamples:
     per = motion.period or (t1 - t0)
     n = int(min(20000, max(1500, 400 * (t1 - t0) / per)))
     t = np.linspace(t0, t1, n)
-    w = fm.omega_at(motion, t)
+    w = freepath.omega_at(motion, t)
     G = motion.angular_momentum_norm
-    m = (fm.omega_at(motion, t, frame="principal") * motion.moments) / G if G > 0 else np.zeros((0, 3))
+    m = (freepath.omega_at(motion, t, frame="principal") * motion.moments) / G if G > 0 else np.zeros((0, 3))
     m0 = motion.omega0_principal * motion.moments / G if G > 0 else np.zeros(3)
     flips = np.zeros(0)
     if motion.flip_interval is not None and motion.first_flip is not None:

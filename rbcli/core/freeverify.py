@@ -13,7 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from rbcli.core.freemotion import FreeMotion, attitude_at, omega_at
+from rbcli.core.freemotion import FreeMotion
+from rbcli.core.freepath import attitude_at, omega_at
 from rbcli.core.rotation import quat_to_matrix
 
 __all__ = ["VerifyResult", "verify"]

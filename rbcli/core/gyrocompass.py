@@ -12,10 +12,10 @@ motion below is the standard undamped one (see e.g. https://en.wikipedia.org/wik
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli._startup import frozen
 from rbcli.core.symmetry import AxialSymmetry, about_axis, require
 from rbcli.core.checks import finite, json_float
 
@@ -23,7 +23,7 @@ from rbcli.core.checks import finite, json_float
 EARTH_RATE = 7.2921150e-5
 
 
-@frozen
+@dataclass(frozen=True)
 class Gyrocompass:
     """Small oscillation of a gyrocompass about the meridian (see the module docstring).
 
@@ -143,7 +143,7 @@ def gyrocompass(
     )  # fmt: skip
 
 
-@frozen
+@dataclass(frozen=True)
 class Rotor:
     """A rotor's moments about its centre of mass.
 

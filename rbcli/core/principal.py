@@ -11,16 +11,19 @@ space, and the axes are chosen aligned with the body axes where that is possible
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli._startup import frozen
 from rbcli.core.rotation import matrix_to_axis_angle
 
 DEGENERATE_RTOL = 1e-9
+#: sideways components of a unit principal axis up to this are round-off (8 ulp of 1): its
+#: tilt from the body axis reads 0 (``numpy.linalg.eigh`` leaves ~1e-16 on an aligned axis)
+TILT_ROUND_OFF = 8.0 * float(np.finfo(float).eps)
 
 
-@frozen
+@dataclass(frozen=True)
 class PrincipalAxes:
     """Principal decomposition of an inertia tensor.
 
@@ -148,7 +151,41 @@ def _right_handed(axes: np.ndarray) -> np.ndarray:
     return best
 
 
-@frozen
+def axis_tilts(axes: np.ndarray) -> tuple[np.ndarray, tuple[int, int, int]]:
+    """Each principal axis's tilt from its nearest body axis.
+
+    Parameters
+    ----------
+    axes : (3, 3) array_like — row i is the unit principal axis i (body frame)
+
+    Returns
+    -------
+    tilt_deg : (3,) ndarray — degrees, the angle between axis line i and the nearest body
+        axis line (the sign of the direction ignored), in [0, 54.7356°]
+    nearest : tuple of 3 int — the body axis (0 = x, 1 = y, 2 = z) each is nearest to
+
+    Notes
+    -----
+    With j the largest |component| of the unit axis u, the tilt is
+    atan2(sqrt(Σ_{k≠j} u_k²), |u_j|): exact near 0° where arccos(|u_j|) loses half its
+    digits; a sideways part below :data:`TILT_ROUND_OFF` (round-off) reads 0. A line is at most arccos(1/√3) from all three body axes. This is the headline of
+    a body whose principal axes are near its body axes: the ascending order of the moments
+    may put axis 1 along body z, so the rotation taking the body axes to the principal
+    axes 1, 2, 3 can be ~90° for a body tilted 0.5° (issue 24).
+    """
+    a = np.asarray(axes, dtype=float)
+    nearest = tuple(int(k) for k in np.argmax(np.abs(a), axis=1))
+    tilt = np.empty(3)
+    for i, j in enumerate(nearest):
+        others = [k for k in range(3) if k != j]
+        off = float(np.linalg.norm(a[i, others]))
+        # the round-off of an eigenvector's unit components (a few ulp) is no tilt
+        off = 0.0 if off <= TILT_ROUND_OFF else off
+        tilt[i] = np.degrees(np.arctan2(off, abs(a[i, j])))
+    return tilt, (nearest[0], nearest[1], nearest[2])
+
+
+@dataclass(frozen=True)
 class PrincipalResult:
     """Answer of ``rbcli principal``.
 
@@ -157,22 +194,32 @@ class PrincipalResult:
     mass : float — kg
     reference : (3,) ndarray — m, the point the moments are about
     axes_info : PrincipalAxes — moments (kg m^2, ascending) and axes (rows)
-    stable : tuple[bool, bool, bool] — is free rotation about each axis stable
+    stable : tuple[bool, bool, bool] — is free rotation about each axis stable (a neutral
+        axis is not: see ``stability``)
+    stability : tuple[str, str, str] — "stable", "unstable" or "neutral" per axis
     equivalent_box : (3,) ndarray — m, side along each principal axis of the uniform box
         with the same mass and principal moments
     equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same for a uniform ellipsoid
-    rotation_axis : (3,) ndarray — unit axis of the rotation taking body axes to principal axes
-    rotation_angle_deg : float — its angle
+    rotation_axis : (3,) ndarray — unit axis of the rotation taking the body axes to the
+        principal axes 1, 2, 3 in ascending order of the moments
+    rotation_angle_deg : float — its angle (~90° or more when the ascending order permutes
+        the body axes, however small the tilts)
+    tilt_deg : (3,) ndarray — degrees, each principal axis from its nearest body axis
+        (:func:`axis_tilts`)
+    tilt_axis : tuple[int, int, int] — that body axis, 0 = x, 1 = y, 2 = z
     """
 
     mass: float
     reference: np.ndarray
     axes_info: PrincipalAxes
     stable: tuple[bool, bool, bool]
+    stability: tuple[str, str, str]
     equivalent_box: np.ndarray
     equivalent_ellipsoid: np.ndarray
     rotation_axis: np.ndarray
     rotation_angle_deg: float
+    tilt_deg: np.ndarray
+    tilt_axis: tuple[int, int, int]
 
     @property
     def moments(self) -> np.ndarray:
@@ -211,19 +258,28 @@ def principal_report(mass: float, inertia: np.ndarray, reference: np.ndarray) ->
     Notes
     -----
     Stability of free rotation: about the largest and the smallest principal moment
-    it is stable, about the intermediate one unstable (Euler's equations linearised;
-    Landau & Lifshitz §37). Where two moments are equal the body is symmetric and
-    every axis of the equal pair is equally principal; spherical: every axis is.
+    it is stable, about the intermediate one unstable (Euler's equations linearised,
+    e'' = -k W² e with k = (Ij - Ik)(Ij - Il)/(Ik Il); Landau & Lifshitz §37). Where two
+    moments are equal the body is symmetric and every axis of the equal pair is equally
+    principal: rotation about the symmetry axis is stable, about an axis of the pair
+    neutral (k = 0: a small disturbance makes the spin axis wander round the symmetry axis,
+    through the whole plane of the pair; not stable); spherical: every axis is principal
+    and any rotation steady, so stable.
     Equivalent uniform box of sides (a, b, c) along the principal axes:
     ``I₁ = m (b² + c²)/12`` … so ``a² = 6 (I₂ + I₃ − I₁)/m``; ellipsoid of semi-axes
     (a, b, c): ``I₁ = m (b² + c²)/5`` so ``a² = 5 (I₂ + I₃ − I₁)/(2 m)``.
     """
     pa = principal_axes(inertia)
     I1, I2, I3 = pa.moments
+    words: tuple[str, str, str]
     if pa.symmetry == "asymmetric":
-        stable = (True, False, True)
+        words = ("stable", "unstable", "stable")
+    elif pa.symmetry == "symmetric":
+        words = tuple("stable" if i == pa.unique_axis else "neutral" for i in range(3))  # type: ignore[assignment]
     else:
-        stable = (True, True, True)
+        words = ("stable", "stable", "stable")
+    stable = (words[0] == "stable", words[1] == "stable", words[2] == "stable")
+    tilt, nearest = axis_tilts(pa.axes)
     s = np.array([I2 + I3 - I1, I1 + I3 - I2, I1 + I2 - I3])
     s = np.clip(s, 0.0, None)
     box = np.sqrt(s / mass) * np.sqrt(6.0)  # divide first: 6 s may overflow where s/m does not
@@ -234,8 +290,11 @@ def principal_report(mass: float, inertia: np.ndarray, reference: np.ndarray) ->
         reference=np.asarray(reference, dtype=float),
         axes_info=pa,
         stable=stable,
+        stability=words,
         equivalent_box=box,
         equivalent_ellipsoid=ell,
         rotation_axis=axis,
         rotation_angle_deg=float(np.degrees(angle)),
+        tilt_deg=tilt,
+        tilt_axis=nearest,
     )

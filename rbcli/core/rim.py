@@ -1,18 +1,28 @@
-"""Where a rolling body's rim is: the parts that can make a rim and the rim circle's
-offset along the axle from the centre of mass (``rollcheck``, issue 14.3).
+"""What a rolling body's rim is and where it lies (``rollcheck``, issues 14.3 and 24).
 
-A rim circle off the plane of the centre of mass (across the axle, through it) makes
-upright rolling no equilibrium: the centre of mass is to the side of the contact point.
-:func:`rim_offset` measures that offset from the shapes that make the rim.
+The rim is made by the round parts (the shape registry's ``round`` shapes) coaxial with the
+axle whose outer radius is the rim radius a. What each touches the floor with is the
+registry's :class:`rbcli.core.shapes.RimRule`: a knife edge (a disk, a ring, a cone's base, a
+hemisphere's flat face), a torus (tube radius r), a sphere (r = a) or a flat band (a cylinder
+on its side: width along the axle). :func:`rim_of` gathers them into one :class:`Rim`:
+
+- its kind and tube radius (the largest of the parts': the tube that reaches lowest);
+- where it lies along the axle from the centre of mass: one plane (``low == high``) or a
+  band from ``low`` to ``high`` (a cylinder's width, or several rim circles in different
+  planes: two wheels on an axle stand on both, as a can stands on its band).
+
+A rim circle off the plane of the centre of mass (a band that does not hold that plane)
+makes upright rolling no equilibrium: the centre of mass is to the side of the contact.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from rbcli.core.shapes import SHAPES
 
 
 def fmt_length(d: float) -> str:
@@ -27,17 +37,15 @@ def fmt_length(d: float) -> str:
     return f"{d:.3g} m"
 
 
-#: shapes whose outer radius (``Part.radius``) can be a rim: round about their own axis.
-#: NOTE (issue 12.5): "is it round" and where its rim circle lies (:func:`rim_circle_centre`)
-#: are shape facts that belong in the shape registry (``core/shapes.py``); listed here until
-#: the registry carries them.
-ROUND_SHAPES = ("disk", "ring", "cylinder", "sphere", "hemisphere", "cone", "torus")
+#: shapes whose outer radius (``Part.radius``) can be a rim: round about their own axis
+#: (the registry's entries with a :class:`rbcli.core.shapes.RimRule`)
+ROUND_SHAPES = tuple(name for name, info in SHAPES.items() if info.rim is not None)
 
-#: straight upright rolling is analysed only when the rim circle lies within this fraction
-#: of the rim radius of the plane of the centre of mass (through it, across the axle). A
-#: rim offset d makes upright rolling no equilibrium: the centre of mass is d to the side
-#: of the contact point, so gravity tips the body or steers it into a curve; the centre of
-#: mass comes over the rim only at a lean of atan(d / a) (0.57° at the limit).
+#: straight upright rolling is analysed only when the centre of mass's plane (through it,
+#: across the axle) is within this fraction of the rim radius of the rim: of its circle, or
+#: inside its band. Off by d, upright rolling is no equilibrium: the centre of mass is d to
+#: the side of the contact point, so gravity tips the body or steers it into a curve; it
+#: comes over the rim only at a lean of atan(d / a) (0.57° at the limit).
 RIM_OFFSET_LIMIT = 0.01
 
 
@@ -55,7 +63,7 @@ def rim_candidates(parts: Any, axle: Any, through: Any, tol: float = 1e-6) -> li
     for p in parts:
         if p.subtract or p.radius is None or p.shape not in ROUND_SHAPES:
             continue
-        if (p.shape != "sphere" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9
+        if (SHAPES[p.shape].round != "any" and abs(abs(float(np.dot(p.axis, n))) - 1.0) > 1e-9
                 and float(np.linalg.norm(np.cross(p.axis, n))) > tol):
             continue  # round about another axis: not a rim for this axle
         d = np.asarray(p.com, dtype=float) - P
@@ -67,81 +75,138 @@ def rim_candidates(parts: Any, axle: Any, through: Any, tol: float = 1e-6) -> li
 
 def rim_circle_centre(part: Any) -> np.ndarray:
     """Centre (m, body frame) of the circle of radius ``part.radius`` on which a round part
-    touches the floor when it rolls on its outer rim.
-
-    disk, ring, sphere (its equator), torus (its outer equator): the plane of the part's
-    centre of mass; cylinder: the mid-plane of its two end circles, which is its centre
-    (the model's idealisation of a square edge, as a thick coin); hemisphere: its flat
-    face, 3R/8 from the centre of mass towards the face; cone: its base circle, h/4 from
-    the centre of mass towards the base, with h = 3 V / (pi R^2) from the part's volume.
-    (The hemisphere and cone centres and volumes are those of :mod:`rbcli.core.shapes`.)
-    """
+    touches the floor when it rolls on its outer rim (the middle of a cylinder's band): the
+    part's centre of mass moved along its axis by the registry's
+    :attr:`rbcli.core.shapes.RimRule.plane_from_com` (0 for a disk, ring, sphere (its
+    equator), torus (its outer equator) and cylinder; a hemisphere's flat face 3R/8 from its
+    com, a cone's base h/4, h = 3 V/(pi R^2) from the part's volume)."""
     com = np.asarray(part.com, dtype=float)
     n = np.asarray(part.axis, dtype=float)
     n = n / np.linalg.norm(n)
-    R = float(part.radius)
-    if part.shape == "hemisphere":  # dome towards local +z, flat face at local z = 0
-        return com - (3.0 * R / 8.0) * n
-    if part.shape == "cone":  # apex towards local +z, base at local z = 0
-        h = 3.0 * float(part.measure) / (math.pi * R * R)
-        return com - (h / 4.0) * n
-    return com
+    rule = SHAPES[part.shape].rim
+    assert rule is not None
+    return com + rule.plane_from_com(float(part.radius), part.measure) * n
+
+
+def _params(part: Any) -> dict[str, Any] | None:
+    """The part's checked shape parameters (its outline's), or None without one."""
+    o = getattr(part, "outline", None)
+    return dict(o.dims) if o is not None and o.kind == part.shape else None
+
+
+def _tube_and_width(part: Any) -> tuple[float, float]:
+    """The part's rim tube radius and band width (m) from the registry; without the
+    part's parameters a sphere's tube is its radius and the others' are 0 (a knife edge)."""
+    rule = SHAPES[part.shape].rim
+    assert rule is not None
+    params = _params(part)
+    if params is None:
+        return (float(part.radius) if rule.kind == "sphere" else 0.0), 0.0
+    return float(rule.tube_radius(params)), float(rule.width(params))
 
 
 @dataclass(frozen=True)
-class RimOffset:
-    """Where the rim circle lies along the axle, measured from the parts that make it.
+class Rim:
+    """What the rim is and where it lies along the axle, from the parts that make it.
 
     Attributes
     ----------
     offset : float — m, signed distance along the axle from the centre of mass to the
-        rim circle's plane (the mid-plane of the outermost rim circles when several parts
-        make the rim)
+        rim's middle (its circle's plane, a band's middle)
     radius : float — m, the rim radius a
     parts : tuple of (name, shape) — the parts whose outer radius is the rim
+    kind : str — ``"edge"``, ``"torus"``, ``"sphere"`` or ``"band"``
+    tube_radius : float — m, r: 0 for an edge or a band, a for a sphere
+    low, high : float — m, the band's ends along the axle from the centre of mass (equal
+        for a rim in one plane)
     """
 
     offset: float
     radius: float
     parts: tuple[tuple[str, str], ...]
+    kind: str = "edge"
+    tube_radius: float = 0.0
+    low: float = 0.0
+    high: float = 0.0
+
+    @property
+    def width(self) -> float:
+        """m, the band's width (0 for a rim in one plane)."""
+        return self.high - self.low
+
+    @property
+    def outside(self) -> float:
+        """m, how far the centre of mass's plane lies outside the rim's (its circle's plane, or
+        the band): 0 when a band holds it."""
+        if self.kind == "band":
+            return max(self.low, -self.high, 0.0)
+        return abs(self.offset)
+
+    @property
+    def edges(self) -> tuple[float, float]:
+        """m, a band's edges' distances (>= 0) from the centre of mass's plane, one each side."""
+        return max(-self.low, 0.0), max(self.high, 0.0)
 
     @property
     def fraction(self) -> float:
-        """|offset| / radius."""
-        return abs(self.offset) / self.radius
+        """:attr:`outside` / radius."""
+        return self.outside / self.radius
 
     @property
     def upright_equilibrium(self) -> bool:
-        """The offset is within :data:`RIM_OFFSET_LIMIT` of the radius: rolling upright is
-        (to that approximation) an equilibrium and the model applies."""
+        """The centre of mass's plane is within :data:`RIM_OFFSET_LIMIT` of the radius of the
+        rim (inside its band): rolling upright is (to that approximation) an equilibrium and
+        the model applies."""
         return self.fraction <= RIM_OFFSET_LIMIT
 
     def describe(self) -> str:
         """'the rim circle of part 'disk' (disk) is 10 mm from the centre of mass along the
-        axle (12.5 % of the rim radius 80 mm)'."""
+        axle (12.5 % of the rim radius 80 mm)'; a band: 'the rim band of part 'can'
+        (cylinder) ends 10 mm short of the centre of mass's plane along the axle (...)'."""
         names = ", ".join(f"'{n}' ({s})" for n, s in self.parts)
+        pct = (f"({100.0 * self.fraction:.3g} % of the rim radius {fmt_length(self.radius)})")
+        if self.kind == "band":
+            what = (f"the rim band of part {names}" if len(self.parts) == 1
+                    else f"the rim band of parts {names}")
+            return (f"{what} ends {fmt_length(self.outside)} short of the centre of mass's plane "
+                    f"along the axle {pct}")
         what = (f"the rim circle of part {names}" if len(self.parts) == 1
                 else f"the mid-plane of the rim circles of parts {names}")
-        return (f"{what} is {fmt_length(self.offset)} from the centre of mass "
-                f"along the axle ({100.0 * self.fraction:.3g} % of the rim radius "
-                f"{fmt_length(self.radius)})")
+        return f"{what} is {fmt_length(self.offset)} from the centre of mass along the axle {pct}"
 
 
-def rim_offset(parts: Any, com: Any, axle: Any, through: Any, radius: float,
-               rtol: float = 1e-9, tol: float = 1e-6) -> RimOffset | None:
-    """The rim circle's offset along the axle from the centre of mass ``com`` (m).
+def rim_of(parts: Any, com: Any, axle: Any, through: Any, radius: float,
+           rtol: float = 1e-9, tol: float = 1e-6) -> Rim | None:
+    """The rim of rim radius ``radius`` (m) about the axle, measured from the centre of mass
+    ``com`` (m).
 
     The rim is made by the :func:`rim_candidates` whose outer radius is ``radius`` (to
-    ``rtol``; ``tol`` as for :func:`rim_candidates`); each touches the floor on the circle of :func:`rim_circle_centre`. Several
-    such parts in different planes (two wheels on an axle) give the mid-plane of the
-    outermost circles. None when no part has that radius (a rim radius given as a number
-    for a body whose rim is not a round part: nothing to measure).
+    ``rtol``; ``tol`` as for :func:`rim_candidates`); each lies on the circle of
+    :func:`rim_circle_centre`, a cylinder's band half its length each side of it. Its kind:
+    a sphere if a part is one; else a band if the parts span a width along the axle (a
+    cylinder, or rim circles in different planes: the body stands on all of them); else a
+    torus if a part has a tube, else a knife edge. Its tube radius is the largest of the
+    parts' (at a lean the largest tube reaches lowest). None when no part has that radius
+    (a rim radius given as a number for a body whose rim is not a round part: nothing to
+    measure).
     """
     n = np.asarray(axle, dtype=float)
     G = np.asarray(com, dtype=float)
-    rim = [p for p in rim_candidates(parts, n, through, tol) if abs(p.radius - radius) <= rtol * radius]
+    a = float(radius)
+    rim = [p for p in rim_candidates(parts, n, through, tol) if abs(p.radius - a) <= rtol * a]
     if not rim:
         return None
     z = [float(np.dot(rim_circle_centre(p) - G, n)) for p in rim]
-    return RimOffset(offset=0.5 * (min(z) + max(z)), radius=float(radius),
-                     parts=tuple((p.name, p.shape) for p in rim))
+    tw = [_tube_and_width(p) for p in rim]
+    low = min(zi - 0.5 * w for zi, (_, w) in zip(z, tw))
+    high = max(zi + 0.5 * w for zi, (_, w) in zip(z, tw))
+    tube = max(t for t, _ in tw)
+    names = tuple((p.name, p.shape) for p in rim)
+    if any(SHAPES[p.shape].rim.kind == "sphere" for p in rim):  # type: ignore[union-attr]
+        return Rim(offset=0.5 * (low + high), radius=a, parts=names, kind="sphere",
+                   tube_radius=a, low=low, high=high)
+    if high - low > 1e-9 * a:
+        return Rim(offset=0.5 * (low + high), radius=a, parts=names, kind="band",
+                   tube_radius=0.0, low=low, high=high)
+    return Rim(offset=0.5 * (low + high), radius=a, parts=names,
+               kind="torus" if tube > 0.0 else "edge", tube_radius=min(tube, a), low=low, high=high)

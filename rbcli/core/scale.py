@@ -13,6 +13,7 @@ Only numpy.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any, Sequence
 
@@ -73,3 +74,210 @@ def body_scale(parts: Sequence[Any]) -> BodyScale:
         r = np.sqrt(np.maximum(1.5 * trace / np.where(mass > 0, mass, 1.0), 0.0))
     reach = np.maximum(np.where(mass > 0, r, 0.0), radius)[:, None]
     return BodyScale((coms - reach).min(axis=0), (coms + reach).max(axis=0))
+
+
+# ----------------------------------------------------------------------------- reach from an axis
+
+
+def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[float]) -> float:
+    """The largest distance (m) of the body's material from a spin axis line.
+
+    Parameters
+    ----------
+    parts : sequence of :class:`rbcli.model.Part` — holes (``subtract``) are left out: they
+        lie inside the material
+    axis : (3,) array_like — the line's direction, body frame (need not be unit)
+    through : (3,) array_like — m, a point of the line, body frame
+
+    Returns
+    -------
+    float — m; a point of the body farthest from the line moves at |omega| times this when
+    the body turns about it.
+
+    Notes
+    -----
+    The distance from a line is a convex function of the point, so over a part it is
+    largest at an extreme point of the part's convex hull, which lies on the part. Each part
+    is read from its placement (``part.outline``: kind, dimensions, local origin ``at`` and
+    axes ``R``; local frames as ``rbcli shapes`` states them) and measured exactly:
+
+    - point, rod, box, plate, triangle: the largest distance of their corners;
+    - ring, disk, cylinder (its two end circles), cone (base circle and apex), torus (its
+      centre circle plus the tube radius: a torus is that circle swept by a ball): a circle
+      c + r (cos t u1 + sin t u2) projected on the plane across the line is an ellipse
+      y(t) = p + L (cos t, sin t); |y(t)|² is a trigonometric polynomial of degree 2, whose
+      stationary points are the roots of a quartic in z = exp(i t) (all evaluated);
+    - sphere: the centre's distance plus the radius; hemisphere: that when the direction
+      away from the line points into the dome, else the rim circle;
+    - ellipsoid: its projection is the ellipse p + U S (cos t, sin t) (M = E R diag(a, b, c)
+      = U S Vᵀ), measured as a circle's; a ``given`` part (measured mass properties) as its
+      equivalent uniform ellipsoid (the outline's semi-axes): an estimate, its real extent
+      being unknown;
+    - mesh: the largest distance of the outline's vertices (the drawing's copy, decimated
+      by vertex clustering: its vertices are means of the file's, so this is within one
+      clustering cell below the file's own);
+    - a part without an outline: its centre of mass plus the ball of :func:`body_scale`
+      (an estimate).
+
+    Parts whose bounding ball (centre ``at``, radius the shape's local circumradius) cannot
+    beat the largest reach found so far are skipped, farthest balls first.
+    """
+    n = np.asarray(axis, dtype=float).reshape(3)
+    n = n / np.linalg.norm(n)
+    P = np.asarray(through, dtype=float).reshape(3)
+    k = int(np.argmin(np.abs(n)))
+    e1 = np.zeros(3)
+    e1[k] = 1.0
+    e1 = e1 - (e1 @ n) * n
+    e1 /= np.linalg.norm(e1)
+    E = np.array([e1, np.cross(n, e1)])  # (2, 3): coordinates across the line
+    solid = [p for p in parts if not p.subtract] or list(parts)
+    balls = [_ball(p) for p in solid]
+    ub = [float(np.linalg.norm(E @ (c - P))) + rho for c, rho in balls]
+    best = max((float(np.linalg.norm(E @ (np.asarray(p.com, dtype=float) - P))) for p in solid), default=0.0)
+    for i in sorted(range(len(solid)), key=lambda j: -ub[j]):
+        if ub[i] < best:
+            break
+        best = max(best, _part_reach(solid[i], E, P, balls[i]))
+    return best
+
+
+def _ball(p: Any) -> tuple[np.ndarray, float]:
+    """A ball holding the part: its local origin (body frame) and circumradius (m)."""
+    o = getattr(p, "outline", None)
+    if o is None or o.kind not in _RHO:
+        c = np.asarray(p.com, dtype=float)
+        m = float(p.mass)
+        tr = float(np.trace(np.asarray(p.inertia_com, dtype=float)))
+        r = math.sqrt(max(1.5 * tr / m, 0.0)) if m > 0 else 0.0
+        return c, max(r, float(p.radius or 0.0))
+    return np.asarray(o.at, dtype=float), _RHO[o.kind](dict(o.dims), o)
+
+
+def _mesh_rho(d: dict, o: Any) -> float:
+    V = o.vertices
+    return 0.0 if V is None or len(V) == 0 else float(np.max(np.linalg.norm(V, axis=1)))
+
+
+_RHO = {
+    "point": lambda d, o: 0.0,
+    "rod": lambda d, o: float(d["length"]) / 2,
+    "ring": lambda d, o: float(d["radius"]),
+    "disk": lambda d, o: float(d["radius"]),
+    "plate": lambda d, o: 0.5 * math.sqrt(sum(float(x) ** 2 for x in d["size"]) + float(d.get("thickness") or 0.0) ** 2),
+    "triangle": lambda d, o: float(np.max(np.linalg.norm(np.asarray(d["vertices"], dtype=float), axis=1))),
+    "box": lambda d, o: 0.5 * math.sqrt(sum(float(x) ** 2 for x in d["size"])),
+    "cylinder": lambda d, o: math.hypot(float(d["radius"]), float(d["length"]) / 2),
+    "sphere": lambda d, o: float(d["radius"]),
+    "hemisphere": lambda d, o: float(d["radius"]),
+    "cone": lambda d, o: max(float(d["radius"]), float(d["height"])),
+    "ellipsoid": lambda d, o: max(float(x) for x in d["semi_axes"]),
+    "given": lambda d, o: max(float(x) for x in d["semi_axes"]),
+    "torus": lambda d, o: float(d["major_radius"]) + float(d["minor_radius"]),
+    "mesh": _mesh_rho,
+}
+
+
+def _corners(E: np.ndarray, P: np.ndarray, pts: np.ndarray) -> float:
+    return float(np.max(np.linalg.norm((pts - P) @ E.T, axis=1)))
+
+
+def _part_reach(p: Any, E: np.ndarray, P: np.ndarray, ball: tuple[np.ndarray, float]) -> float:
+    """The largest distance of part ``p`` from the line (see :func:`axis_reach`)."""
+    o = getattr(p, "outline", None)
+    if o is None or o.kind not in _RHO or (o.kind == "mesh" and (o.vertices is None or len(o.vertices) == 0)):
+        c, rho = ball
+        return float(np.linalg.norm(E @ (c - P))) + rho
+    d = dict(o.dims)
+    at = np.asarray(o.at, dtype=float)
+    R = np.asarray(o.R, dtype=float)
+    kind = o.kind
+
+    def body(local: Any) -> np.ndarray:
+        return at + np.asarray(local, dtype=float).reshape(-1, 3) @ R.T
+
+    def circle(centre: np.ndarray, r: float) -> float:
+        return _ellipse_reach(E @ (centre - P), r * (E @ R[:, :2]))
+
+    if kind == "point":
+        return _corners(E, P, body([0.0, 0.0, 0.0]))
+    if kind == "rod":
+        h = float(d["length"]) / 2
+        return _corners(E, P, body([[0, 0, -h], [0, 0, h]]))
+    if kind in ("box", "plate"):
+        a, b, c = ((*d["size"], d.get("thickness") or 0.0) if kind == "plate" else d["size"])
+        s = np.array([float(a), float(b), float(c)]) / 2
+        signs = np.array([[i, j, k] for i in (-1, 1) for j in (-1, 1) for k in (-1, 1)], dtype=float)
+        return _corners(E, P, body(signs * s))
+    if kind == "triangle":
+        return _corners(E, P, body(d["vertices"]))
+    if kind in ("ring", "disk"):
+        return circle(at, float(d["radius"]))
+    if kind == "cylinder":
+        h = float(d["length"]) / 2
+        r = float(d["radius"])
+        return max(circle(at - h * R[:, 2], r), circle(at + h * R[:, 2], r))
+    if kind == "cone":
+        return max(circle(at, float(d["radius"])), _corners(E, P, body([0.0, 0.0, float(d["height"])])))
+    if kind == "torus":
+        return circle(at, float(d["major_radius"])) + float(d["minor_radius"])
+    if kind == "sphere":
+        return float(np.linalg.norm(E @ (at - P))) + float(d["radius"])
+    if kind == "hemisphere":  # dome towards local +z, flat face at local z = 0
+        r = float(d["radius"])
+        y = E @ (at - P)
+        dist = float(np.linalg.norm(y))
+        away = E.T @ (y / dist) if dist > 0 else None
+        dome = dist + r if away is None or float(away @ R[:, 2]) >= 0.0 else 0.0
+        return max(dome, circle(at, r))
+    if kind in ("ellipsoid", "given"):
+        M = E @ (R * np.asarray([float(x) for x in d["semi_axes"]]))  # (2, 3)
+        U, S, _ = np.linalg.svd(M)
+        return _ellipse_reach(E @ (at - P), U * S[:2])
+    # mesh
+    return _corners(E, P, body(o.vertices))
+
+
+def _ellipse_reach(p: np.ndarray, L: np.ndarray) -> float:
+    """max over t of |p + L (cos t, sin t)|, p (2,), L (2, 2) (a circle or an ellipsoid seen
+    along the line).
+
+    |y(t)|² = A + B cos t + C sin t + D cos 2t + F sin 2t with a = Lᵀ p, G = Lᵀ L:
+    A = |p|² + (G11 + G22)/2, B = 2 a1, C = 2 a2, D = (G11 - G22)/2, F = G12. Its
+    derivative times z² (z = exp(i t)) is the quartic
+    (F + iD) z⁴ + (C + iB)/2 z³ + (C - iB)/2 z + (F - iD); every stationary angle is the
+    argument of a root (numpy.roots, polished by Newton steps on the derivative), and the
+    largest value among them and the quarter turns is the maximum.
+    """
+    a = L.T @ p
+    G = L.T @ L
+    A = float(p @ p) + 0.5 * (G[0, 0] + G[1, 1])
+    B, C = 2.0 * a[0], 2.0 * a[1]
+    D, F = 0.5 * (G[0, 0] - G[1, 1]), G[0, 1]
+
+    def f(t: np.ndarray) -> np.ndarray:
+        return A + B * np.cos(t) + C * np.sin(t) + D * np.cos(2 * t) + F * np.sin(2 * t)
+
+    def df(t: np.ndarray) -> np.ndarray:
+        return -B * np.sin(t) + C * np.cos(t) - 2 * D * np.sin(2 * t) + 2 * F * np.cos(2 * t)
+
+    def d2f(t: np.ndarray) -> np.ndarray:
+        return -B * np.cos(t) - C * np.sin(t) - 4 * D * np.cos(2 * t) - 4 * F * np.sin(2 * t)
+
+    coeffs = np.array([F + 1j * D, 0.5 * (C + 1j * B), 0.0, 0.5 * (C - 1j * B), F - 1j * D])
+    t = np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False)
+    big = float(np.max(np.abs(coeffs)))
+    if big > 1e-13 * abs(A):  # else |y(t)|² is constant to round-off
+        # leading coefficients that are round-off of the others (a circle seen face-on has
+        # D = F = 0 up to it) would put roots at ~1e300: drop them (the degree drops)
+        c = coeffs / big
+        while len(c) > 1 and abs(c[0]) <= 1e-13:
+            c = c[1:]
+        if len(c) > 1:
+            roots = np.roots(c)
+            t = np.concatenate([t, np.angle(roots[np.isfinite(roots)])])
+    for _ in range(3):  # Newton on the derivative, only where it climbs (f'' < 0)
+        h = d2f(t)
+        step = np.where(h < 0, df(t) / np.where(h < 0, h, 1.0), 0.0)
+        t = t - step
+    return math.sqrt(max(float(np.max(f(t))), 0.0))

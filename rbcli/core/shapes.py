@@ -116,6 +116,33 @@ DIAMETERS = {"diameter": "radius", "inner_diameter": "inner_radius"}
 
 
 @dataclass(frozen=True)
+class RimRule:
+    """How a round shape touches a level floor when it rolls on its outer rim (``rollcheck``).
+
+    Attributes
+    ----------
+    kind : str — ``"edge"`` (a circle: a knife edge), ``"torus"`` (a circle swept by a ball:
+        a rounded tyre), ``"sphere"`` or ``"band"`` (a flat band: a cylinder on its side)
+    plane_from_com : callable ``(outer radius m, measure) -> m`` — where the rim circle (a
+        band's middle) lies along the local z axis from the part's centre of mass
+    tube_radius : callable ``(params) -> m`` — the rim's tube (tyre) radius r: 0 for an
+        edge or a band, the tube's for a torus, the radius for a sphere
+    width : callable ``(params) -> m`` — a band's width along local z (0 for the others)
+
+    ``params`` are the shape's checked parameters in SI (a part's ``outline.dims``).
+    """
+
+    kind: str
+    plane_from_com: Callable[[float, float | None], float]
+    tube_radius: Callable[[Mapping[str, Any]], float] = lambda p: 0.0
+    width: Callable[[Mapping[str, Any]], float] = lambda p: 0.0
+
+
+def _in_plane(radius: float, measure: float | None) -> float:
+    return 0.0
+
+
+@dataclass(frozen=True)
 class ShapeInfo:
     """One entry of the shape catalogue (for ``rbcli shapes`` and for validation).
 
@@ -134,6 +161,7 @@ class ShapeInfo:
         ``"any"``: round about every axis through its centre (a sphere); None: not round
     outer_radius : callable or None — ``outer_radius(params) -> m``, the largest distance of
         the shape from its local z axis, for a round shape
+    rim : RimRule or None — how a round shape rolls on that outer rim
 
     A new shape is one entry in :data:`SHAPES` and its builder in ``_BUILDERS``: the loader,
     the schema, the catalogue and ``rollcheck``'s rim search read these facts from here.
@@ -150,13 +178,14 @@ class ShapeInfo:
     kinds: Mapping[str, Kind] = field(default_factory=dict)
     round: str | None = None
     outer_radius: Callable[[Mapping[str, Any]], float] | None = None
+    rim: RimRule | None = None
 
     def __post_init__(self) -> None:
         unknown = set(self.kinds) - {*self.required, *self.optional}
         if unknown:  # pragma: no cover - a mistake in the table below
             raise ValueError(f"shape {self.name!r}: kinds for unknown parameters {sorted(unknown)}")
-        if (self.round is None) != (self.outer_radius is None):  # pragma: no cover
-            raise ValueError(f"shape {self.name!r}: a round shape has an outer radius, and only it")
+        if not ((self.round is None) == (self.outer_radius is None) == (self.rim is None)):  # pragma: no cover
+            raise ValueError(f"shape {self.name!r}: a round shape has an outer radius and a rim, and only it")
 
     def kind(self, param: str) -> Kind:
         """The :class:`Kind` of parameter ``param`` (a single length unless said)."""
@@ -193,13 +222,13 @@ SHAPES: dict[str, ShapeInfo] = {
             "ring", "thin hoop in the local xy plane", ("radius",), (), "length",
             "linear_density", "centroid (centre of the hoop)",
             "Izz = m R²; Ixx = Iyy = m R²/2; length 2πR",
-            round="z", outer_radius=_radius,
+            round="z", outer_radius=_radius, rim=RimRule("edge", _in_plane),
         ),
         ShapeInfo(
             "disk", "thin disk or annulus in the local xy plane", ("radius",),
             ("inner_radius",), "area", "areal_density", "centroid (centre)",
             "Izz = m(R² + r²)/2; Ixx = Iyy = m(R² + r²)/4; area π(R² − r²)",
-            round="z", outer_radius=_radius,
+            round="z", outer_radius=_radius, rim=RimRule("edge", _in_plane),
         ),
         ShapeInfo(
             "plate", "thin rectangle a x b in local x, y; with thickness t a box",
@@ -226,6 +255,7 @@ SHAPES: dict[str, ShapeInfo] = {
             "solid/tube: Izz = m(R² + r²)/2, Ixx = Iyy = m(3(R² + r²) + L²)/12; "
             "shell (no end caps): Izz = m R², Ixx = Iyy = m(R²/2 + L²/12)",
             kinds={"shell": BOOL}, round="z", outer_radius=_radius,
+            rim=RimRule("band", _in_plane, width=lambda p: float(p["length"])),
         ),
         ShapeInfo(
             "sphere", "solid or hollow sphere; shell: true for a thin shell", ("radius",),
@@ -233,6 +263,7 @@ SHAPES: dict[str, ShapeInfo] = {
             "density (or areal_density with shell: true)", "centroid",
             "solid/hollow: I = (2/5) m (R⁵ − r⁵)/(R³ − r³); shell: I = (2/3) m R²",
             kinds={"shell": BOOL}, round="any", outer_radius=_radius,
+            rim=RimRule("sphere", _in_plane, tube_radius=_radius),
         ),
         ShapeInfo(
             "hemisphere", "solid hemisphere, dome towards +z", ("radius",), (), "volume",
@@ -240,6 +271,8 @@ SHAPES: dict[str, ShapeInfo] = {
             "com z = 3R/8; about the com: Izz = (2/5) m R², Ixx = Iyy = (83/320) m R²; "
             "about the origin: Ixx = Iyy = Izz = (2/5) m R²",
             round="z", outer_radius=_radius,
+            # on the rim of its flat face, 3R/8 from the com towards the face
+            rim=RimRule("edge", lambda R, V: -3.0 * R / 8.0),
         ),
         ShapeInfo(
             "cone", "solid right circular cone, apex at +z", ("radius", "height"), (),
@@ -247,6 +280,8 @@ SHAPES: dict[str, ShapeInfo] = {
             "com z = h/4; about the com: Izz = (3/10) m R², "
             "Ixx = Iyy = m(3R²/20 + 3h²/80); about the origin: Ixx = Iyy = m(3R²/20 + h²/10)",
             round="z", outer_radius=_radius,
+            # on its base circle, h/4 from the com towards the base, h = 3 V/(pi R²)
+            rim=RimRule("edge", lambda R, V: -0.75 * float(V) / (math.pi * R * R)),
         ),
         ShapeInfo(
             "ellipsoid", "solid ellipsoid with semi-axes a, b, c along local x, y, z",
@@ -259,6 +294,7 @@ SHAPES: dict[str, ShapeInfo] = {
             (), "volume", "density", "centroid",
             "Izz = m(R² + 3r²/4); Ixx = Iyy = m(R²/2 + 5r²/8); volume 2π²Rr²",
             round="z", outer_radius=lambda p: float(p["major_radius"]) + float(p["minor_radius"]),
+            rim=RimRule("torus", _in_plane, tube_radius=lambda p: float(p["minor_radius"])),
         ),
     )
 }

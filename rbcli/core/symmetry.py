@@ -31,10 +31,10 @@ products and parallel-axis shift are the textbook ones (e.g. Goldstein, Poole an
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli._startup import frozen
 from rbcli.errors import option_name
 
 #: departures below this are rounding: the body is symmetric and nothing is reported
@@ -57,7 +57,7 @@ def inertia_about(mass: float, com, inertia_com, point) -> np.ndarray:
     return J + mass * (float(d @ d) * np.eye(3) - np.outer(d, d))
 
 
-@frozen
+@dataclass(frozen=True)
 class AxialSymmetry:
     """How symmetric a body is about an axis through a point (see the module docstring).
 

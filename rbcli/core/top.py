@@ -5,8 +5,11 @@ notation are Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed., §5.7 (
 symmetrical top with one point fixed"); "sheet §n" in the comments names the sections of
 rbcli's physics notes that follow that text (the formulas are restated where they are used).
 The elliptic integrals are in Carlson's symmetric form, DLMF §19.25
-(https://dlmf.nist.gov/19.25). The numerical check of ``--verify`` is
-:mod:`rbcli.core.topverify`; the gyrocompass is :mod:`rbcli.core.gyrocompass`.
+(https://dlmf.nist.gov/19.25). This module computes the constants of the motion
+(:func:`analyse`); a body is reduced to a top by :mod:`rbcli.core.topbody`, the motion is
+evaluated at any times by :mod:`rbcli.core.toppath`, checked against a numerical
+integration (``--verify``) by :mod:`rbcli.core.topverify`; the gyrocompass is
+:mod:`rbcli.core.gyrocompass`.
 
 Conventions
 -----------
@@ -33,15 +36,17 @@ quantities (1 - m, 1 - n, 1 - u) carried separately so that no digits are lost.
 
 from __future__ import annotations
 
+from __future__ import annotations
+
 import math
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from rbcli._startup import frozen
-from rbcli.core.symmetry import AxialSymmetry, about_axis, require
-from rbcli.errors import ParamError
 from rbcli.core.checks import finite, json_float
+from rbcli.core.topbody import TopParams
+from rbcli.core.toppath import TopState, carlson_F, complete_Pi, state_at
+from rbcli.errors import ParamError
 
 #: Standard gravity, m/s^2 (SPEC §2 default of ``--g``).
 STANDARD_GRAVITY = 9.80665
@@ -50,19 +55,8 @@ STANDARD_GRAVITY = 9.80665
 STEADY_ULPS = 1e3
 #: The apex point u' = b/a within this fraction of the band of a turning point: cusps.
 CUSP_RTOL = 1e-9
-#: Pivot closer to the com than this fraction of the body's size: no top.
-PIVOT_AT_COM_RTOL = 1e-9
 #: |cos θ0| below this: the axis is horizontal and the fast steady root is infinite.
 HORIZONTAL_COS = 4.0 * np.finfo(float).eps
-
-
-class PivotAtCom(ValueError):
-    """The pivot is at the centre of mass: there is no gravity torque, no heavy top."""
-
-
-class NotATop(ValueError):
-    """The body is not a symmetric top about the pivot–com axis (asymmetric, the axis not
-    principal, or no moment about the axis); the message says how, with the numbers."""
 
 
 class TopInputError(ParamError, ValueError):
@@ -70,218 +64,8 @@ class TopInputError(ParamError, ValueError):
     ``"theta"``, ``"theta_dot"``, ``"phi_dot"`` or ``"g"``)."""
 
 
-# --------------------------------------------------------------------------------------
-# small helpers
 
-
-def _num(x: float) -> str:
-    """A short number for messages: 1.2e-3, 0.04, 22."""
-    x = float(x)
-    if x == 0.0:
-        return "0"
-    if 1e-2 <= abs(x) < 1e4:
-        return f"{x:.3g}"
-    mant, exp = f"{x:.2e}".split("e")
-    mant = mant.rstrip("0").rstrip(".")
-    return f"{mant}e{int(exp)}"
-
-
-def _carlson_F(phi: np.ndarray, m1: float) -> np.ndarray:
-    """F(φ|m) for |φ| <= π/2, from RF, with m1 = 1 - m given exactly."""
-    from rbcli.core.elliptic import elliprf
-
-    s = np.sin(phi)
-    c = np.cos(phi)
-    return s * elliprf(c * c, c * c + m1 * s * s, 1.0)
-
-
-def _carlson_Pi(n: float, n1: float, phi: np.ndarray, m1: float) -> np.ndarray:
-    """Π(n; φ|m) for |φ| <= π/2 (sheet §0): s RF(c², 1-ms², 1) + n/3 s³ RJ(c², 1-ms², 1, 1-ns²).
-
-    ``n1 = 1 - n`` and ``m1 = 1 - m`` are passed separately so that 1 - m s² = c² + m1 s²
-    and 1 - n s² = c² + n1 s² keep their digits.
-    """
-    from rbcli.core.elliptic import elliprc, elliprf, elliprj
-
-    s = np.sin(phi)
-    c = np.cos(phi)
-    c2 = c * c
-    s2 = s * s
-    y = c2 + m1 * s2
-    if n < -1.0:
-        # F and n/3 s³ RJ nearly cancel for n ≪ -1. Use n·ω = m (DLMF 19.7.9 in Carlson form):
-        # Π(n) = F - Π(ω) + s RC(c²Δ², (1-ns²)(1-ωs²)) and F - Π(ω) = -ω/3 s³ RJ(.., 1-ωs²),
-        # two positive terms.
-        om = (1.0 - m1) / n
-        out = -(om / 3.0) * s * s2 * elliprj(c2, y, 1.0, 1.0 - om * s2)
-        return out + s * elliprc(c2 * y, (c2 + n1 * s2) * (1.0 - om * s2))
-    out = s * elliprf(c2, y, 1.0)
-    if n != 0.0:
-        out = out + (n / 3.0) * s * s2 * elliprj(c2, y, 1.0, c2 + n1 * s2)
-    return out
-
-
-def _complete_Pi(n: float, n1: float, m1: float) -> float:
-    """Π(n|m) = RF(0, 1-m, 1) + n/3 RJ(0, 1-m, 1, 1-n) (sheet §0); see _carlson_Pi for n < -1."""
-    if n < -1.0:
-        return float(_carlson_Pi(n, n1, np.asarray(0.5 * np.pi), m1))
-    from rbcli.core.elliptic import elliprf, elliprj
-
-    out = float(elliprf(0.0, m1, 1.0))
-    if n != 0.0:
-        out += n / 3.0 * float(elliprj(0.0, m1, 1.0, n1))
-    return out
-
-
-# --------------------------------------------------------------------------------------
-# the top's parameters
-
-
-@frozen
-class TopParams:
-    """Mass properties of a symmetric top about its pivot.
-
-    Attributes
-    ----------
-    mass : float — kg
-    length : float — m, distance l from the pivot to the centre of mass
-    I : float — kg m^2, moment about the pivot across the symmetry axis (I_cm + m l²)
-    Is : float — kg m^2, moment about the symmetry axis
-    axis : tuple[float, float, float] | None — unit symmetry axis e3 in the body frame,
-        pointing from the pivot to the com (None when built from numbers)
-    pivot : tuple[float, float, float] | None — m, body frame
-    com : tuple[float, float, float] | None — m, body frame
-    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
-        above rounding, within the tolerance): how far it departs, and its real inertia
-        tensor about the pivot; I is then the mean of the two moments across (None for a
-        body symmetric to rounding)
-    """
-
-    mass: float
-    length: float
-    I: float  # noqa: E741 - the sheet's name
-    Is: float
-    axis: tuple[float, float, float] | None = None
-    pivot: tuple[float, float, float] | None = None
-    com: tuple[float, float, float] | None = None
-    asymmetry: AxialSymmetry | None = field(default=None, repr=False)
-
-    def __post_init__(self) -> None:
-        for name in ("mass", "length", "I", "Is"):
-            v = finite(name, getattr(self, name))
-            if v <= 0.0:
-                raise ValueError(f"{name} of a top must be positive, not {v}")
-
-    def to_json(self) -> dict:
-        out: dict = {"mass": self.mass, "length": self.length, "I": self.I, "Is": self.Is}
-        for k in ("axis", "pivot", "com"):
-            v = getattr(self, k)
-            out[k] = None if v is None else [float(c) for c in v]
-        return out
-
-
-def top_from_body(
-    mass: float,
-    com: np.ndarray,
-    inertia_com: np.ndarray,
-    pivot: np.ndarray,
-    *,
-    sym_rtol: float = 1e-6,
-) -> TopParams:
-    """Reduce a body's mass properties to a symmetric (or nearly symmetric) top on a pivot.
-
-    Parameters
-    ----------
-    mass : float — kg, > 0
-    com : (3,) array_like — m, centre of mass in the body frame
-    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
-        convention: off-diagonals are -∫xy dm)
-    pivot : (3,) array_like — m, the fixed point, body frame
-    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis" (the
-        ``--symmetry-tol`` of :mod:`rbcli.core.symmetry`); a body within it but above
-        rounding is symmetrised (I the mean of the two moments across) and its departures
-        are kept in ``TopParams.asymmetry``
-
-    Returns
-    -------
-    TopParams
-
-    Raises
-    ------
-    PivotAtCom
-        The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
-        no gravity torque; the motion is free precession (``rbcli precess``).
-    rbcli.core.symmetry.Asymmetric
-        The two moments across the axis differ by more than ``sym_rtol`` (relative to
-        their mean), the axis is not a principal axis (its products of inertia with the
-        transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
-        about the axis is zero (a pendulum).
-    ValueError
-        an input is not finite, or the mass is not positive.
-
-    Notes
-    -----
-    The symmetry axis is e3 = (com - pivot)/l, l = |com - pivot| (SPEC §2 ``top``).
-    Parallel-axis theorem: I_pivot = I_com + m (l² E - d dᵀ), d = com - pivot.
-    Is = e3·I_pivot·e3 (= e3·I_com·e3); the moments across are the eigenvalues of the
-    2x2 block of I_pivot on a basis (e1, e2) of the plane normal to e3
-    (sheet §2 "Setup", §4b item 6).
-    """
-    m = finite("mass", mass)
-    if m <= 0.0:
-        raise ValueError(f"the mass of a top must be positive, not {m}")
-    c = np.asarray(com, dtype=float).reshape(3)
-    p = np.asarray(pivot, dtype=float).reshape(3)
-    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
-    if not (np.all(np.isfinite(c)) and np.all(np.isfinite(p)) and np.all(np.isfinite(J))):
-        raise ValueError("the com, pivot and inertia tensor must be finite numbers")
-    J = 0.5 * (J + J.T)
-    d = c - p
-    length = float(np.linalg.norm(d))
-    r_gyr = math.sqrt(max(float(np.trace(J)), 0.0) / (2.0 * m))
-    size = max(r_gyr, float(np.linalg.norm(c)), float(np.linalg.norm(p)))
-    if length == 0.0 or length <= PIVOT_AT_COM_RTOL * size:
-        raise PivotAtCom(
-            f"the pivot is at the centre of mass (they are {_num(length)} m apart): gravity "
-            "exerts no torque about it, so this is not a heavy top; for torque-free motion "
-            "use `rbcli precess`"
-        )
-    e3 = d / length
-    Ip = J + m * (length**2 * np.eye(3) - np.outer(d, d))
-    Is = float(e3 @ Ip @ e3)
-    # a basis of the transverse plane
-    k = int(np.argmin(np.abs(e3)))
-    e1 = np.cross(e3, np.eye(3)[k])
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(e3, e1)
-    mean = 0.5 * (float(e1 @ Ip @ e1) + float(e2 @ Ip @ e2))  # the symmetrised moment across
-    if mean <= 0.0:
-        raise NotATop("the moment of inertia across the pivot–com axis is zero")
-    sym = about_axis(m, c, J, p, e3)
-    require(sym, sym_rtol, "the pivot–com axis", "a top")
-    if Is <= 1e-12 * mean:
-        raise NotATop(
-            f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
-            "kg m²: a point mass or a thin rod along the axis): it cannot carry spin, so it "
-            "is a spherical pendulum, not a top"
-        )
-    return TopParams(
-        mass=m,
-        length=length,
-        I=mean,
-        Is=Is,
-        axis=tuple(float(v) for v in e3),  # type: ignore[arg-type]
-        pivot=tuple(float(v) for v in p),  # type: ignore[arg-type]
-        com=tuple(float(v) for v in c),  # type: ignore[arg-type]
-        asymmetry=None if sym.exact else sym,
-    )
-
-
-# --------------------------------------------------------------------------------------
-# results
-
-
-@frozen
+@dataclass(frozen=True)
 class FastTop:
     """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top").
 
@@ -315,7 +99,7 @@ class FastTop:
         }
 
 
-@frozen
+@dataclass(frozen=True)
 class EllipticSolution:
     """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t).
 
@@ -358,7 +142,7 @@ class EllipticSolution:
     bottom_jump: float = 0.0
 
 
-@frozen
+@dataclass(frozen=True)
 class TopMotion:
     """The exact motion of a heavy symmetric top from a given start.
 
@@ -429,7 +213,7 @@ class TopMotion:
     fast_top: FastTop
     elliptic: EllipticSolution = field(repr=False)
 
-    def at(self, t) -> "TopState":
+    def at(self, t) -> TopState:
         """The Euler angles and their rates at times ``t`` (s): :func:`state_at`."""
         return state_at(self, t)
 
@@ -505,6 +289,7 @@ class TopMotion:
 # the analysis
 
 
+
 def _cubic_roots_shifted(
     c0: float, c1: float, c2: float, beta: float, lo: float, hi: float, f_lo: float, f_hi: float
 ) -> tuple[float, float, float]:
@@ -522,8 +307,12 @@ def _cubic_roots_shifted(
 
     if c0 == 0.0:
         # x = 0 is a root (released with θ0' = 0, sheet §2 "Released from rest"): deflate.
-        disc = max(c2 * c2 - 4.0 * beta * c1, 0.0)
-        q = -0.5 * (c2 + math.copysign(math.sqrt(disc), c2))
+        disc = c2 * c2 - 4.0 * beta * c1
+        if math.isfinite(disc):
+            root = math.sqrt(max(disc, 0.0))
+        else:  # c2² overflows (rates ~1e152 and up): |c2| sqrt(1 - 4 β c1/c2²)
+            root = abs(c2) * math.sqrt(max(1.0 - 4.0 * beta * (c1 / c2) / c2, 0.0))
+        q = -0.5 * (c2 + math.copysign(root, c2))
         ra = q / beta
         rb = c1 / q if q != 0.0 else 0.0
         x1, x2, x3 = sorted((0.0, ra, rb))
@@ -544,20 +333,87 @@ def _cubic_roots_shifted(
                 return fb
             return P(x)
 
-        return float(brentq(g, a_, b_, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=500))
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # extreme starts
+            return float(brentq(g, a_, b_, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=500))
 
-    x1 = bracketed(lo, f_lo, 0.0, c0)
-    x2 = bracketed(0.0, c0, hi, f_hi)
+    def next_to_zero(lo_: float, hi_: float) -> float | None:
+        # The root beside x = 0 when P is linear there to round-off: x0 = -c0/c1 with
+        # |c2 x0| + |β x0²| <= eps/2 |c1| is the root to within rounding (P(x0)/c1 is below
+        # half an ulp of x0). θ0' tiny beside the other rates (c0 ~ 1e-300) put that root
+        # where P's values are subnormal, and Brent's method then crept in steps of
+        # xtol/2 (issue 27: θ0 = 1e-6°, θ0' = 1e-144 rad/s did not converge).
+        if c1 == 0.0:
+            return None
+        x0 = -c0 / c1
+        if lo_ <= x0 <= hi_ and abs(c2 * x0) + abs(beta * x0 * x0) <= 0.5 * np.finfo(float).eps * abs(c1):
+            return x0
+        return None
+
+    x1 = next_to_zero(lo, 0.0)
+    if x1 is None:
+        x1 = bracketed(lo, f_lo, 0.0, c0)
+    x2 = next_to_zero(0.0, hi)
+    if x2 is None:
+        x2 = bracketed(0.0, c0, hi, f_hi)
+
     x3 = -c2 / beta - x1 - x2  # Vieta
     for _ in range(3):  # Newton polish of the isolated large root
         d = dP(x3)
-        if d == 0.0:
+        p = P(x3)
+        if not (math.isfinite(d) and math.isfinite(p)):
+            # β x3³ overflows (a large root, ~1e103 and up): the same step from
+            # P(x)/x³ = β + c2 t + c1 t² + c0 t³ and P'(x)/x² = 3β + 2 c2 t + c1 t², t = 1/x
+            t = 1.0 / x3
+            d = (c1 * t + 2.0 * c2) * t + 3.0 * beta
+            if d == 0.0:
+                break
+            step = x3 * ((((c0 * t + c1) * t + c2) * t + beta) / d)
+        elif d == 0.0:
             break
-        step = P(x3) / d
+        else:
+            step = p / d
         x3 -= step
         if abs(step) <= 1e-16 * abs(x3):
             break
     return x1, x2, x3
+
+
+def _require_representable(
+    thd: float, w_s0: float, a: float, beta: float, g: float, given: tuple[float, float, float],
+    c0: float, c1: float, c2: float, bpa: float, bma: float,
+) -> None:
+    """Refuse, naming the parameter, a start whose turning-point cubic is beyond doubles.
+
+    The cubic is evaluated on |x| <= 2 (u in [-1, 1]), so its terms must stay below the
+    largest double: |c0| + 2|c1| + 4|c2| + 8β and (b ± a)² finite; its large root
+    u3 ≈ -c2/β must be finite too (the energy more than ~1e308 times gravity's range).
+    The parameter blamed is the one whose rate dominates the energy per unit moment
+    (θ0', φ0' sin θ0, a = Is S/I, sqrt(β)), or g when β = 2 m g l/I itself underflows.
+    Found by the audit of issue 27: ``top --theta-dot 1e300`` ran Brent's method on
+    infinite coefficients, and θ0' = 1e66..1e153 overflowed the Newton polish of u3.
+    """
+    size = abs(c0) + 2.0 * abs(c1) + 4.0 * abs(c2) + 8.0 * beta + bpa * bpa + bma * bma
+    tiny = not beta >= np.finfo(float).tiny
+    if math.isfinite(size) and not tiny and math.isfinite(c2 / beta):
+        return
+    S, thd_given, w_given = given
+    if tiny:
+        raise TopInputError(
+            "g", f"gravity {g:.6g} m/s² is too small for the top's equations: "
+            "β = 2 m g l/I underflows double precision; give a value of a physical size")
+    rates = {"theta_dot": abs(thd), "phi_dot": abs(w_s0), "spin": abs(a), "g": math.sqrt(beta)}
+    param = max(rates, key=lambda k: rates[k])
+    what = {"theta_dot": f"the initial tilt rate {thd_given:.6g} rad/s",
+            "phi_dot": f"the initial precession rate {w_given:.6g} rad/s",
+            "spin": f"the spin {S:.6g} rad/s",
+            "g": f"gravity {g:.6g} m/s²"}[param]
+    if math.isfinite(size):
+        why = ("the top's energy is more than 1e308 times the range of its potential energy, so "
+               "the third turning point u3 of its motion overflows double precision")
+    else:
+        why = ("the squares of the rates (the energy per unit moment) overflow double "
+               "precision in the top's equations")
+    raise TopInputError(param, f"{what} is too large: {why}; give a value of a physical size")
 
 
 def _pole_root(e0: float, e1: float, e2: float, e3: float, d: float) -> float:
@@ -657,6 +513,14 @@ def analyse(
         )
     m_, l_, I, Is = params.mass, params.length, params.I, params.Is
     mgl = m_ * gg * l_
+    slow = mgl / (Is * S)  # m g l/(Is S): the horizontal (and fast-top) precession rate
+    if not (math.isfinite(slow * slow) and math.isfinite(2.0 * I * slow / (Is * S))):
+        raise TopInputError(
+            "spin",
+            f"the spin {S:.6g} rad/s is too small against gravity for the top's equations: "
+            f"its precession rate m g l/(Is S) overflows double precision; give a spin of a "
+            "physical size (without spin the body is a spherical pendulum, not a top)"
+        )
 
     u0 = math.cos(th0)
     s0 = math.sin(th0)
@@ -676,6 +540,7 @@ def analyse(
     c2 = 2.0 * u0 * beta - A0 - a * a
     bpa = B0 + a * opu0  # b + a
     bma = B0 - a * omu0  # b - a
+    _require_representable(thd, w * s0, a, beta, gg, (S, thd, w), c0, c1, c2, bpa, bma)
     x1, x2, x3 = _cubic_roots_shifted(c0, c1, c2, beta, -opu0, omu0, -(bpa**2), -(bma**2))
     # a root exactly at u = ±1 (the axis passes through a pole): snap it there
     x1 = -opu0 if bpa == 0.0 else max(x1, -opu0)
@@ -726,9 +591,9 @@ def analyse(
         n_minus, n_minus1 = -band / opu1, opu2 / opu1
     else:
         n_minus, n_minus1 = 0.0, 1.0  # u1 = -1 exactly: cm = 0, the term drops out
-    K = _complete_Pi(0.0, 1.0, m1)
-    Pi_p = _complete_Pi(n_plus, n_plus1, m1) if cp != 0.0 else K
-    Pi_m = _complete_Pi(n_minus, n_minus1, m1) if cm != 0.0 else K
+    K = complete_Pi(0.0, 1.0, m1)
+    Pi_p = complete_Pi(n_plus, n_plus1, m1) if cp != 0.0 else K
+    Pi_m = complete_Pi(n_minus, n_minus1, m1) if cm != 0.0 else K
     jt = top_sign if top_pass else 0.0
     jb = bottom_sign if bottom_pass else 0.0
     if math.isfinite(K):
@@ -748,7 +613,7 @@ def analyse(
     if band > 0.0:
         r, r1 = -x1 / band, x2 / band  # sn²(τ0) and cn²(τ0)
         am0 = math.atan2(math.sqrt(max(r, 0.0)), math.sqrt(max(r1, 0.0)))
-        F0 = float(_carlson_F(np.asarray(am0), m1))
+        F0 = float(carlson_F(np.asarray(am0), m1))
         if thd > 0.0:  # θ increasing: u decreasing, τ0 in [-K, 0]
             am0, F0 = -am0, -F0
     else:
@@ -828,133 +693,3 @@ def analyse(
         critical_spin=S_c, sleeps=abs(S) > S_c, apex_u=u0 + xstar, path=path,
         steady=steady, fast_top=fast, elliptic=ell,
     )  # fmt: skip
-
-
-# --------------------------------------------------------------------------------------
-# the motion in time
-
-
-def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The exact Euler angles of the top at times ``t``.
-
-    Parameters
-    ----------
-    motion : TopMotion
-    t : array_like — s, any shape (negative times are fine)
-
-    Returns
-    -------
-    theta, phi, psi : ndarray, shape of ``t`` — rad; θ is the tilt from the upward
-        vertical; φ and ψ are continuous (not wrapped) and start at 0 at t = 0.
-
-    Notes
-    -----
-    Sheet §2 "Closed form": u(t) = u1 + (u2-u1) sn²(τ|m), τ = λ t + τ0, and with
-    ∫dt/(1 - n sn²(λt)) = Π(n; am(λt)|m)/λ:
-    φ(t) = [cp ΔΠ(n+) + cm ΔΠ(n-)]/λ, ψ(t) = (S - a) t - [cp ΔΠ(n+) - cm ΔΠ(n-)]/λ,
-    where ΔΠ(n) = Π(n; am τ|m) - Π(n; am τ0|m). τ is reduced to τr in [-K, K] with
-    τ = τr + 2Kj, so am τ = am τr + jπ and Π(n; am τ) = Π(n; am τr) + 2j Π(n|m)
-    (quasi-periodicity).
-    """
-    theta, phi, psi, _sn, _cn = _path(motion, t)
-    return theta, phi, psi
-
-
-def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
-    """θ, φ, ψ as :func:`path_at`, and sn τ, cn τ of the reduced phase τr (for the rates)."""
-    from rbcli.core.elliptic import ellipj
-
-    e = motion.elliptic
-    tt = np.asarray(t, dtype=float)
-    if not np.isfinite(e.K):
-        raise ValueError("the motion is on the separatrix (m = 1): no periodic closed form")
-    tau = e.lam * tt + e.tau0
-    j = np.rint(tau / (2.0 * e.K))
-    tau_r = tau - 2.0 * e.K * j
-    sn, cn, _dn, ph = ellipj(tau_r, e.m, e.m1)
-    ph = np.clip(ph, -0.5 * np.pi, 0.5 * np.pi)
-    # 1 - u = (1 - u2) + (u2 - u1) cn² and 1 + u = (1 + u1) + (u2 - u1) sn²: sums of
-    # non-negative terms, accurate near either pole
-    one_minus_u = e.one_minus_u2 + e.band * cn * cn
-    one_plus_u = e.one_plus_u1 + e.band * sn * sn
-    theta = 2.0 * np.arctan2(np.sqrt(one_minus_u), np.sqrt(one_plus_u))
-
-    # the phase at t = 0 reduced and evaluated exactly as at any t (not the stored atan2
-    # value, equal to it within ~1 ulp), so that φ(0) and ψ(0) are exactly 0
-    j0 = float(np.rint(e.tau0 / (2.0 * e.K)))
-    am0 = np.clip(ellipj(e.tau0 - 2.0 * e.K * j0, e.m, e.m1)[3], -0.5 * np.pi, 0.5 * np.pi)
-
-    def dPi(n: float, n1: float, Pc: float) -> np.ndarray:
-        now = _carlson_Pi(n, n1, ph, e.m1) + 2.0 * j * Pc
-        return now - (_carlson_Pi(n, n1, am0, e.m1) + 2.0 * j0 * Pc)
-
-    zero = np.zeros_like(tt)
-    dp = dPi(e.n_plus, e.n_plus1, e.Pi_plus) if e.cp != 0.0 else zero
-    dm = dPi(e.n_minus, e.n_minus1, e.Pi_minus) if e.cm != 0.0 else zero
-    phi = (e.cp * dp + e.cm * dm) / e.lam
-    psi = (motion.spin - motion.a) * tt - (e.cp * dp - e.cm * dm) / e.lam
-    if e.top_jump:  # u = 1 at τ = K (mod 2K): φ += ±π, ψ -= ±π per passage
-        k = np.floor((tau - e.K) / (2.0 * e.K)) - math.floor((e.tau0 - e.K) / (2.0 * e.K))
-        phi = phi + e.top_jump * np.pi * k
-        psi = psi - e.top_jump * np.pi * k
-    if e.bottom_jump:  # u = -1 at τ = 0 (mod 2K): φ += ±π, ψ += ±π per passage
-        k = np.floor(tau / (2.0 * e.K)) - math.floor(e.tau0 / (2.0 * e.K))
-        phi = phi + e.bottom_jump * np.pi * k
-        psi = psi + e.bottom_jump * np.pi * k
-    return theta, phi, psi, sn, cn
-
-
-@frozen
-class TopState:
-    """The top at given times (every array has the shape of ``t``).
-
-    Attributes
-    ----------
-    t : ndarray — s
-    theta : ndarray — rad, tilt of the axis from the upward vertical
-    phi, psi : ndarray — rad, precession and spin angles, continuous, 0 at t = 0
-    theta_dot, phi_dot, psi_dot : ndarray — rad/s, their rates (ψ' = S - φ' cos θ)
-    """
-
-    t: np.ndarray
-    theta: np.ndarray
-    phi: np.ndarray
-    psi: np.ndarray
-    theta_dot: np.ndarray
-    phi_dot: np.ndarray
-    psi_dot: np.ndarray
-
-    @property
-    def axis(self) -> np.ndarray:
-        """Unit symmetry axis in space, shape ``t.shape + (3,)``: (sin θ cos φ, sin θ sin φ,
-        cos θ), z up."""
-        st = np.sin(self.theta)
-        return np.stack([st * np.cos(self.phi), st * np.sin(self.phi), np.cos(self.theta)], axis=-1)
-
-
-def state_at(motion: TopMotion, t: np.ndarray) -> TopState:
-    """The exact Euler angles and their rates at times ``t`` (s, any shape).
-
-    Notes
-    -----
-    Angles from :func:`path_at`. With u = cos θ = u1 + (u2 - u1) sn²(τ|m), τ = λ t + τ0:
-    u' = 2 λ (u2 - u1) sn cn dn, θ' = -u'/sin θ, and from the two conserved momenta
-    (Goldstein §5.7) φ' = (b - a u)/(1 - u²), ψ' = S - φ' u. At an instant where the axis
-    is exactly vertical (only when it passes through a pole) φ' and θ' are not defined
-    (NaN there).
-    """
-    e = motion.elliptic
-    tt = np.asarray(t, dtype=float)
-    theta, phi, psi, sn, cn = _path(motion, tt)
-    one_minus_u = e.one_minus_u2 + e.band * cn * cn
-    one_plus_u = e.one_plus_u1 + e.band * sn * sn
-    dn = np.sqrt(e.m1 + e.m * cn * cn)
-    sin_theta = np.sqrt(one_minus_u * one_plus_u)
-    u = 1.0 - one_minus_u
-    with np.errstate(divide="ignore", invalid="ignore"):
-        theta_dot = -2.0 * e.lam * e.band * sn * cn * dn / sin_theta
-        phi_dot = (motion.b - motion.a * u) / (one_minus_u * one_plus_u)
-    theta_dot = np.where(e.band == 0.0, 0.0, theta_dot)
-    psi_dot = motion.spin - phi_dot * u
-    return TopState(t=tt, theta=theta, phi=phi, psi=psi, theta_dot=theta_dot, phi_dot=phi_dot,
-                    psi_dot=psi_dot)

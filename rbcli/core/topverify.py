@@ -15,7 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from rbcli.core.checks import json_float
-from rbcli.core.top import TopMotion, path_at
+from rbcli.core.top import TopMotion
+from rbcli.core.toppath import path_at
 
 #: the closed form and the integration must agree this well (axis chord, rad) ...
 AXIS_TOL = 1e-6

@@ -3,6 +3,11 @@
 :func:`dumps` lays out data that is JSON already (a result's ``to_json()``, which is where
 numbers are checked finite: :func:`rbcli.api.result.jsonable`). ``json.dumps`` refuses NaN
 and infinity here too (``allow_nan=False``), so nothing else can slip through.
+
+Strings are written as UTF-8 text, except the characters that could reorder or forge what a
+terminal shows (C1 controls, DEL, line and paragraph separators, bidirectional controls, and
+what UTF-8 or XML cannot hold): those are ``\\uXXXX`` escapes (:func:`rbcli.render.safe.json_escape`),
+which a JSON parser reads back as the very same string. C0 controls JSON escapes itself.
 """
 
 from __future__ import annotations
@@ -25,9 +30,11 @@ def dumps(data: Any, *, lines: bool = False) -> str:
     scalar, a list of scalars or of such lists, an empty mapping) is on one line as
     ``json.dumps(v, ensure_ascii=False, separators=(", ", ": "))`` writes it.
     """
+    from rbcli.render.safe import json_escape
+
     if lines:
-        return _LINE.encode(data) + "\n"
-    return _pretty(data, 0) + "\n"
+        return json_escape(_LINE.encode(data)) + "\n"
+    return json_escape(_pretty(data, 0)) + "\n"
 
 
 def _flat(v: Any) -> bool:

@@ -142,7 +142,7 @@ def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, r
                 num(r.moments[i] * f, digits),
                 ", ".join(num(x, digits) for x in snap(r.axes[i], scale=1.0, rtol=1e-15)),
                 ", ".join(num(x, 4) for x in angles[i]),
-                "stable" if r.stable[i] else "unstable",
+                r.stability[i],
             )
         )
     doc.table(
@@ -151,10 +151,18 @@ def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, r
         rows,
         right=(1,),
     )
+    if max(r.tilt_deg) == 0.0:
+        along = ", ".join(f"axis {i + 1} along {r.tilt_axis[i]}" for i in range(3))
+        doc.note(f"principal axes along the body axes (tilt 0°): {along}")
+    else:
+        tilts = ", ".join(f"axis {i + 1} by {num(r.tilt_deg[i], digits)}° from {r.tilt_axis[i]}"
+                          for i in range(3))
+        doc.note(f"principal axes tilted up to {num(max(r.tilt_deg), digits)}° from the body axes: {tilts}")
     doc.note(symmetry_sentence(r))
     doc.note(
-        "rotation from body axes to principal axes: "
-        f"{num(r.rotation_angle_deg, digits)}° about [{', '.join(num(x, digits) for x in r.rotation_axis)}]"
+        "rotation taking the body axes to principal axes 1, 2, 3 (in ascending order of the "
+        f"moments): {num(r.rotation_angle_deg, digits)}° about "
+        f"[{', '.join(num(x, digits) for x in r.rotation_axis)}]"
     )
     L = du.unit("length")
     doc.kv(

@@ -5,6 +5,11 @@ Figure API without pyplot, so nothing is ever drawn on screen. Figures are reada
 in print and in grey scale: black and dark greys with distinct line styles and
 markers rather than colour alone. SVG and PDF are written without dates (and honour
 SOURCE_DATE_EPOCH), so the same input gives the same bytes.
+
+Every text of a figure (titles, axis labels, legends, annotations: names of bodies, parts,
+planes and sensors among them) is made safe before it is drawn (:func:`label`): control,
+bidirectional and XML-illegal characters shown as visible escapes, so that an SVG stays
+well-formed XML (matplotlib copies each text into an SVG comment) whatever a name holds.
 """
 
 from __future__ import annotations
@@ -51,10 +56,31 @@ def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, flo
 
     fig = Figure(figsize=size, layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False)
-    from rbcli.env import clean
-
-    fig.suptitle(clean(title))  # control characters shown escaped, long names cut
+    fig.suptitle(label(title))
     return fig, axes
+
+
+def label(text: str) -> str:
+    """A figure's text made safe: control, bidirectional and XML-illegal characters (U+FFFE,
+    U+FFFF) shown as visible escapes (:func:`rbcli.render.safe.escape`), long words cut
+    (:func:`rbcli.env.clean`)."""
+    from rbcli.env import clean
+    from rbcli.render.safe import escape
+
+    return clean(escape(text))
+
+
+def sanitise(fig) -> None:
+    """Make every text artist of ``fig`` safe (:func:`label`) before it is drawn: the figure
+    modules label with names that came from files; this is the one place that sees them all."""
+    from matplotlib.text import Text
+
+    for t in fig.findobj(Text):
+        s = t.get_text()
+        if s:
+            safe = label(s)
+            if safe != s:
+                t.set_text(safe)
 
 
 def style(i: int) -> dict:
@@ -77,6 +103,7 @@ def figure_bytes(fig, fmt: str) -> bytes:
         metadata = {"Date": None}
     elif fmt == "pdf":
         metadata = {"CreationDate": None, "ModDate": None}
+    sanitise(fig)
     buf = io.BytesIO()
     fig.savefig(buf, format=fmt, metadata=metadata or None)
     return buf.getvalue()

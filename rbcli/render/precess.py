@@ -94,7 +94,13 @@ def document(doc: Doc, body: Body, result: Any, du: DisplayUnits, digits: int, *
     rows = []
     circ = motion.circles_axis
     rows.append(("ω circles", "—" if circ is None else _axis_label(motion, circ - 1), ""))
-    rows.append(("stable", {True: "yes", False: "no", None: "—"}[motion.stable], ""))
+    if motion.stable is False and motion.flip_interval is not None:
+        stable = "no: it flips over"
+    elif motion.stable is None and motion.case == fm.CASE_STEADY and motion.symmetry == "symmetric":
+        stable = "neutral"
+    else:
+        stable = {True: "yes", False: "no", None: "—"}[motion.stable]
+    rows.append(("stable", stable, ""))
     rows.append(("period of ω (body frame)", *_time(motion.period, du, digits)))
     el = motion.elliptic
     if el is not None:

@@ -13,7 +13,9 @@ only a one-line reason (``skipped``). This module writes a Report out:
 - :func:`markdown` — GitHub-flavoured Markdown with the figures as SVG files beside it
   (``FILE_files/<name>.svg``, linked relatively).
 
-Every piece of user text (names, descriptions, the input file) is escaped; the same
+Every piece of user text (names, descriptions, the input file) is escaped: control and
+bidirectional characters shown as visible escapes (:func:`rbcli.render.safe.escape`; the
+input file keeps its newlines and tabs), then HTML's or Markdown's own escaping. The same
 Report gives the same bytes.
 """
 
@@ -26,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbcli.render.fmt import num
+from rbcli.render.safe import escape
 from rbcli.render.units import DisplayUnits
 from rbcli.render.text import Doc, Heading, Note, Table
 
@@ -147,7 +150,7 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
     s = _COMMENT.sub("", s)
     s = _XMLNS.sub("", s)
     s = s.replace(' id="', f' id="{prefix}').replace('href="#', f'href="#{prefix}').replace("url(#", f"url(#{prefix}")
-    s = _ROOT.sub(f'<svg role="img" aria-label="{_html.escape(label, quote=True)}"', s, count=1)
+    s = _ROOT.sub(f'<svg role="img" aria-label="{_e(label)}"', s, count=1)
     return s.strip()
 
 
@@ -195,7 +198,14 @@ footer { margin-top: 2.5rem; font-size: .8rem; color: #555; border-top: 1px soli
 
 
 def _e(text: str) -> str:
-    return _html.escape(str(text), quote=True)
+    """Text safe in HTML: control characters escaped visibly, then HTML's escapes."""
+    return _html.escape(escape(text), quote=True)
+
+
+def _file_text(text: str) -> str:
+    """An input file's text shown whole: its lines and tabs kept (CRLF read as a line end),
+    every other control character escaped visibly."""
+    return escape(str(text).replace("\r\n", "\n"), keep="\n\t")
 
 
 def _html_table(t: Table) -> list[str]:
@@ -275,7 +285,7 @@ def html(report: Report) -> str:
         out.append("</section>")
     out.append(f'<section id="{INPUT_KEY}">')
     out.append(f"<h2>Input file: {_e(report.input_name)}</h2>")
-    out.append(f"<pre>{_e(report.input_text)}</pre>")
+    out.append(f"<pre>{_html.escape(_file_text(report.input_text), quote=True)}</pre>")
     out.append("</section>")
     out += ["</main>", f"<footer>Written by {_e(report.generator)}.</footer>", "</body>", "</html>"]
     return "\n".join(out) + "\n"
@@ -288,10 +298,10 @@ _MD_BLOCKSTART = re.compile(r"^(\s*)([-+=>]|\d+[.)])")
 
 
 def md_inline(text: str) -> str:
-    """Text safe inside a Markdown paragraph or table cell: one line, punctuation that
-    Markdown or HTML would act on backslash-escaped (CommonMark escapes any ASCII
-    punctuation), so ``<script>`` stays text."""
-    s = " ".join(str(text).split())
+    """Text safe inside a Markdown paragraph or table cell: one line, control characters
+    escaped visibly, punctuation that Markdown or HTML would act on backslash-escaped
+    (CommonMark escapes any ASCII punctuation), so ``<script>`` stays text."""
+    s = escape(" ".join(str(text).split()))
     return _MD_INLINE.sub(r"\\\1", s)
 
 
@@ -358,8 +368,9 @@ def markdown(report: Report, files_dir: str) -> tuple[str, dict[str, str]]:
                 out += [f"![{md_inline(item.caption)}]({link})", "", f"*{md_para(item.caption)}*", ""]
             else:  # pragma: no cover - a programming error
                 raise TypeError(f"unknown report item {type(item).__name__}")
-    fence = _fence(report.input_text)
-    text = report.input_text if report.input_text.endswith("\n") else report.input_text + "\n"
+    shown = _file_text(report.input_text)
+    fence = _fence(shown)
+    text = shown if shown.endswith("\n") else shown + "\n"
     out += ["## Input file", "", f"{md_inline(report.input_name)}:", "", f"{fence}yaml", text + fence, "",
             f"*Written by {md_inline(report.generator)}.*", ""]
     return "\n".join(out), files

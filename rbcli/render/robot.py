@@ -17,12 +17,11 @@ kg m², rad), each element preceded by a comment that states its frame:
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
-FORMATS = ("urdf", "sdf", "mjcf")
+from rbcli.render.safe import escape
 
-_NOT_XML = re.compile(r"[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+FORMATS = ("urdf", "sdf", "mjcf")
 
 
 def number(x: float) -> str:
@@ -36,8 +35,10 @@ def _nums(values: Any) -> str:
 
 
 def _comment_text(text: str) -> str:
-    """``text`` made safe inside an XML comment (no ``--``, no control characters)."""
-    text = _NOT_XML.sub("?", text)
+    """``text`` made safe inside an XML comment: control, bidirectional and XML-illegal
+    characters shown as visible escapes (:func:`rbcli.render.safe.escape`: a name can neither
+    end the comment's line nor hold what XML forbids), no ``--``, no trailing ``-``."""
+    text = escape(text)
     while "--" in text:
         text = text.replace("--", "- -")
     return text.rstrip("-")
@@ -54,8 +55,8 @@ def comment(fmt: str, name: str, source: str, inertial: Any) -> str:
         frame = (f"inertia: the principal moments (ascending) about the centre of mass, along the "
                  f"principal axes; {turn}: the principal axes in the link frame")
     else:
-        tensor = ("fullinertia = ixx iyy izz ixy ixz iyz" if fmt == "mjcf"
-                  else "ixy = -(integral of x y dm)")
+        sign = "ixy = -(integral of x y dm)"
+        tensor = f"fullinertia = ixx iyy izz ixy ixz iyz; {sign}" if fmt == "mjcf" else sign
         frame = (f"inertia: the tensor about the centre of mass in the body axes ({tensor}); "
                  "the inertial frame is not rotated")
     lines = [

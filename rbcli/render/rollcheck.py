@@ -6,7 +6,7 @@ Everything here is formatting: the numbers and the figure's arrays come finished
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -40,10 +40,11 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
     o = res.options
     L, M, I = du.unit("length"), du.unit("mass"), du.unit("inertia")
     doc.heading(f"{res.name}  ({res.source})")
+    rim_label = {"edge": " (knife edge)", "torus": " (rounded rim)", "sphere": " (a sphere)",
+                 "band": " (flat band)"}[st.rim]
     rows = [
         ("rim radius a", du.show(st.radius, "length", digits), L),
-        ("tyre radius r" + (" (knife edge)" if st.tyre_radius == 0.0 else " (rounded rim)"),
-         du.show(st.tyre_radius, "length", digits), L),
+        ("tyre radius r" + rim_label, du.show(st.tyre_radius, "length", digits), L),
         ("mass m", du.show(w.mass, "mass", digits), M),
         ("I = A, across the axle, about the com", du.show(w.A, "inertia", digits), I),
         ("Is = C, about the axle", du.show(w.C, "inertia", digits), I),
@@ -51,23 +52,30 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
         ("I + m a², fore-aft, about the contact point", du.show(st.A_contact, "inertia", digits), I),
         ("g", du.show(st.g, "acceleration", digits), du.unit("acceleration")),
     ]
+    if st.band is not None:
+        rows[2:2] = [("band width (along the axle)", du.show(st.band[0] + st.band[1], "length", digits), L)]
     doc.kv("wheel", rows)
-    doc.note(f"rim radius from {o.radius_source}; axle along "
+    doc.note(f"rim radius from {o.radius_source}{_tyre_source(res)}; axle along "
              f"[{', '.join(num(x, digits) for x in w.axle)}] ({o.axle_source}).")
     if res.asymmetry is not None:
         asymmetry_note(doc, res.asymmetry, o.symmetry_tol, res.asymmetry_effect, du, digits, "wheel", "I")
     doc.note("model: " + res.model + ".")
-    doc.kv(
-        "straight upright rolling: threshold",
-        [
-            ("critical spin s_c", du.show(st.critical_spin, "angular_speed", digits), "rad/s"),
-            ("critical spin s_c", num(st.critical_spin * RPM, digits), "rpm"),
-            ("critical speed v_c = a s_c", du.show(st.critical_speed, "speed", digits), du.unit("speed")),
-            ("critical speed v_c", num(st.critical_speed * 3.6, digits), "km/h"),
-        ],
-    )
-    doc.note("stable (neutrally) when the spin s about the axle has s² > s_c² = "
-             "m g (a − r) I / (Is (Is + m a²)).")
+    rows = [
+        ("critical spin s_c", du.show(st.critical_spin, "angular_speed", digits), "rad/s"),
+        ("critical spin s_c", num(st.critical_spin * RPM, digits), "rpm"),
+        ("critical speed v_c = a s_c", du.show(st.critical_speed, "speed", digits), du.unit("speed")),
+        ("critical speed v_c", num(st.critical_speed * 3.6, digits), "km/h"),
+    ]
+    if st.band is not None:
+        assert st.static_lean_limit is not None and st.knife_edge_critical_spin is not None
+        rows.insert(0, ("static lean limit atan(c/a) (weight within the band)",
+                        num(math.degrees(st.static_lean_limit), digits), "°"))
+        rows.append(("knife edge at the com's plane (for comparison)",
+                     du.show(st.radius * st.knife_edge_critical_spin, "speed", digits), du.unit("speed")))
+    title = {"band": "straight rolling on a flat band: threshold (balanced on an edge)",
+             "sphere": "straight rolling on a sphere: threshold"}.get(st.rim, "straight upright rolling: threshold")
+    doc.kv(title, rows)
+    doc.note(_threshold_note(st, digits))
     v = res.verdict
     if v is not None:
         given = "--speed" if o.speed is not None else "--spin"
@@ -76,8 +84,8 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
         rows = [
             ("speed v" + (" (backwards)" if v.backwards else ""), du.show(v.speed, "speed", digits), du.unit("speed")),
             ("spin s = v / a", du.show(v.spin, "angular_speed", digits), "rad/s"),
-            ("margin |v| / v_c", num(v.margin, digits), ""),
-            ("verdict", "STABLE" if v.stable else "UNSTABLE", ""),
+            ("margin |v| / v_c", "—" if v.margin is None else num(v.margin, digits), ""),
+            ("verdict", "STABLE" if v.stable else ("UNSTABLE on an edge" if st.rim == "band" else "UNSTABLE"), ""),
         ]
         if v.stable:
             rows.append(("lean oscillation frequency ν", du.show(v.lean_frequency, "angular_speed", digits), "rad/s"))
@@ -129,12 +137,50 @@ def _speed_text(v: float, du: DisplayUnits, digits: int) -> str:
     return f"{du.show(v, 'speed', digits)} {du.unit('speed')}"
 
 
+def _tyre_source(res: RollcheckResult) -> str:
+    o, st = res.options, res.straight
+    if o.tyre_radius_kind == "--tyre-radius":
+        return "; tyre radius from --tyre-radius"
+    if o.rim is None:
+        return ""
+    parts = ", ".join(f"'{n}' ({s})" for n, s in o.rim.parts)
+    what = {"edge": "a knife edge", "torus": "a torus: its tube radius", "sphere": "a sphere: its radius",
+            "band": "a flat band: its width along the axle"}[st.rim]
+    return f"; the rim is {what}, from part {parts}"
+
+
+def _threshold_note(st: Any, digits: int) -> str:
+    if st.rim == "sphere":
+        return ("critical speed 0: a rolling sphere has no lean instability: it stays up at any "
+                "speed (its weight acts through the contact point at every lean; ν² = "
+                "Is (Is + m a²) s² / (I (I + m a²)) ≥ 0).")
+    if st.rim == "band":
+        lim = num(math.degrees(st.static_lean_limit), digits)
+        return (f"on its flat band the weight holds it up against leans below {lim}° at any speed "
+                "(a disturbance within that rocks it back, or rolls it on along a curve on one "
+                f"edge); tipped past {lim}° it balances on an edge circle, c from the com's plane, "
+                "and is stable (neutrally) there when s² > s_e² = m g l Δ / (Is (Is + m a²) "
+                "(Is + m l²)), l² = a² + c², Δ = (Is + m a²)(I + m c²) − m² a² c²: s_c is the larger "
+                "of the two edges'.")
+    return ("stable (neutrally) when the spin s about the axle has s² > s_c² = "
+            "m g (a − r) I / (Is (Is + m a²)).")
+
+
 def _straight_verdict(res: RollcheckResult, du: DisplayUnits, digits: int) -> str:
     v = res.verdict
     st = res.straight
     assert v is not None
+    if st.rim == "sphere":
+        return (f"verdict: STABLE at {_speed_text(abs(v.speed), du, digits)}: a rolling sphere "
+                "stays up at any speed.")
     at = f"{_speed_text(abs(v.speed), du, digits)} ({num(v.margin, digits)} × the critical speed " \
          f"{_speed_text(st.critical_speed, du, digits)})"
+    if st.rim == "band" and not v.stable:
+        lim = num(math.degrees(st.static_lean_limit), digits)
+        return (f"verdict: UNSTABLE at {at} when balanced on an edge: the band holds it up against "
+                f"leans below {lim}°, but tipped past {lim}° onto an edge the lean grows as "
+                f"exp({num(v.growth_rate, digits)} t/s); roll faster than "
+                f"{_speed_text(st.critical_speed, du, digits)} to stay up however it is tipped.")
     if v.stable:
         return (f"verdict: STABLE at {at}: a small lean oscillates at "
                 f"{num(v.lean_frequency_hz, digits)} Hz and stays bounded (undamped).")
@@ -179,7 +225,9 @@ def plot(res: RollcheckResult, cv: Curves):
                 label=f"{v:.4g} m/s: {'stable' if res.verdict.stable else 'unstable'}")
     ax.set_xlabel("speed of the centre v [m/s]")
     ax.set_ylabel("squared lean frequency ν² [rad²/s²]")
-    ax.set_title("straight upright rolling (shaded: unstable)")
+    ax.set_title({"band": "straight rolling balanced on an edge (shaded: unstable)",
+                  "sphere": "straight rolling on a sphere (never unstable)"}.get(
+        res.straight.rim, "straight upright rolling (shaded: unstable)"))
     ax.set_xlim(0.0, vmax)
     ax.legend(loc="upper left")
 

@@ -1,66 +1,116 @@
-"""Tables as CSV (``--format csv``): what a spreadsheet reads.
+"""``--format csv``: a command's result as one table a spreadsheet or a script reads in one go.
 
-The layout is a contract (documented in rbcli(1)): one block per table of the document,
-blocks separated by an empty line; each block is a header row and its rows. The first
-column, ``table``, is the table's title, so every row says where it came from; with
-several bodies (``inertia``/``principal`` on many files) a ``file`` column comes first.
-The numeric columns of a table that names its unit in its title (``inertia about the
-origin [kg·m²]``) carry the unit in their header (``x [kg·m²]``), and the title loses
-it; quantity/value/unit tables
-keep their ``unit`` column. Numbers are the table's, at ``--digits`` significant
-figures (JSON has full precision). Notes and headings (prose) are not part of the CSV.
-Quoting follows RFC 4180 (Python's csv module, ``\\n`` line ends).
+The layout (a contract, documented in rbcli(1) and the README) is *long* ("tidy"): one row
+per value of the command's JSON, with the columns
+
+    quantity,value,text,unit
+
+- ``quantity`` — the value's JSON path: keys joined by ``.``, list positions in brackets,
+  counted from 0 (``mass``, ``com[2]``, ``inertia[1][2]``, ``corrections[0].mass``,
+  ``iso.before.residual[1]``), so that every row says what it is and the names are unique;
+- ``value`` — a number (and only a number): Python's ``repr`` of the float (it reads back to
+  the same double) unless ``--digits N`` was given, then N significant figures; an integer
+  as it is. Empty when the value is not a number, and for a number the JSON marks as not
+  defined: a key ``<name>_deg`` whose sibling ``<name>_defined`` is false (the angle of a
+  zero unbalance, which the tables show as "—");
+- ``text`` — a string (names, verdicts, notes, warnings) or a boolean (``true``/``false``);
+  text is escaped and neutralised for spreadsheets (:func:`rbcli.render.safe.csv_text`);
+- ``unit`` — the SI unit of a number (:mod:`rbcli.render.csvunits`; ``1`` when it has none),
+  empty for text.
+
+A ``null`` of the JSON, an empty list and an empty mapping are a row with ``value`` and
+``text`` both empty. With several bodies (``inertia``/``principal`` on many files) a
+``file`` column comes first and the header is written once. Quoting follows RFC 4180
+(Python's csv module, ``\\n`` line ends): ``csv.reader(open(f, newline=""))`` and
+``pandas.read_csv(f)`` read it in one call; ``df.pivot(columns="quantity", values="value")``
+or a filter on ``quantity`` gives the numbers back.
+
+Why long, not wide. The JSON is the contract (SI units, full precision, the same keys every
+time); a long table is that JSON, value by value, for every command alike: one header that
+never changes, names that are unique by construction, one number per cell, a unit for each.
+A wide layout (one row per body, one column per value) would need its own column list per
+command and per option set (corrections only with ``--planes``, a row per plane and
+bearing), and could not hold the lists of varying length (Campbell diagrams, residuals per
+reading) without inventing one naming scheme per list. The text tables stay for people.
 """
 
 from __future__ import annotations
 
 import csv
 import io
-import re
+from collections.abc import Iterator
+from typing import Any
 
-from rbcli.render.text import Doc, Table
+from rbcli.render.csvunits import unit
+from rbcli.render.safe import csv_text
 
-#: a unit in brackets in a table title ("inertia about the origin [kg·m²]")
-_TITLE_UNIT = re.compile(r"\s*\[([^\[\]]+)\]")
-
-
-def header(table: Table) -> list[str]:
-    """The CSV header of a table: its columns, numeric ones with the title's unit."""
-    m = _TITLE_UNIT.search(table.title)
-    if not m or "unit" in table.columns:
-        return list(table.columns)
-    unit = m.group(1)
-    return [f"{c} [{unit}]" if i in table.right else c for i, c in enumerate(table.columns)]
+#: the columns, in order (``file`` first with several bodies)
+COLUMNS = ("quantity", "value", "text", "unit")
 
 
-def title(table: Table) -> str:
-    """The table's title without a trailing bracketed unit (it moved into the header)."""
-    if "unit" in table.columns:
-        return table.title
-    return _TITLE_UNIT.sub("", table.title, count=1)
+def number(x: float | int, digits: int | None = None) -> str:
+    """A number cell: an integer as it is; a float at full precision (``repr``), or at
+    ``digits`` significant figures; never ``-0``."""
+    if isinstance(x, int):
+        return str(x)
+    x = float(x) + 0.0  # + 0.0: no negative zero
+    if digits is None:
+        return repr(x)
+    s = format(x, f".{int(digits)}g")
+    return "0" if s in ("-0", "0") else s
 
 
-def blocks(doc: Doc, file: str | None = None) -> list[list[list[str]]]:
-    """The CSV rows of each table of ``doc`` (header first), with a ``file`` column when
-    ``file`` is given."""
-    out = []
-    for item in doc.items:
-        if not isinstance(item, Table):
-            continue
-        lead = ["file"] if file is not None else []
-        first = [file] if file is not None else []
-        rows = [lead + ["table"] + header(item)]
-        rows += [first + [title(item)] + [cell.strip() for cell in row] for row in item.rows]
-        out.append(rows)
-    return out
+def _undefined(d: dict, key: str) -> Any:
+    """The ``<name>_defined`` flag (a bool or a list of them) of ``<name>_deg``, or None."""
+    if not key.endswith("_deg"):
+        return None
+    return d.get(key[:-4] + "_defined")
 
 
-def render(doc: Doc, file: str | None = None) -> str:
-    """The CSV text of a document (see the module docstring for the layout)."""
+def values(data: Any, path: str = "", defined: Any = True) -> Iterator[tuple[str, Any, bool]]:
+    """(path, leaf value, defined) for every leaf of JSON ``data``, in the JSON's order.
+
+    A leaf is a number, a string, a bool or None; an empty list or mapping is a leaf too
+    (its value None). ``defined`` is False for a number its ``_defined`` sibling flags."""
+    if isinstance(data, dict):
+        if not data:
+            yield path, None, True
+        for k, v in data.items():
+            flag = _undefined(data, k)
+            yield from values(v, f"{path}.{k}" if path else str(k), True if flag is None else flag)
+    elif isinstance(data, (list, tuple)):
+        if not data:
+            yield path, None, True
+        for i, v in enumerate(data):
+            flag = defined[i] if isinstance(defined, (list, tuple)) and i < len(defined) else defined
+            yield from values(v, f"{path}[{i}]", flag)
+    else:
+        yield path, data, defined is not False
+
+
+def rows(data: dict, command: str, digits: int | None = None) -> Iterator[list[str]]:
+    """The CSV rows (quantity, value, text, unit) of a command's JSON ``data``."""
+    for path, v, ok in values(data):
+        if isinstance(v, bool):
+            yield [path, "", "true" if v else "false", ""]
+        elif isinstance(v, (int, float)):
+            yield [path, number(v, digits) if ok else "", "", unit(command, path, data)]
+        elif isinstance(v, str):
+            yield [path, "", csv_text(v), ""]
+        else:  # None, [] or {}: not defined
+            yield [path, "", "", ""]
+
+
+def render(data: dict, command: str, *, digits: int | None = None, file: str | None = None,
+           header: bool = True) -> str:
+    """The CSV text of one result's JSON (see the module docstring for the layout).
+
+    ``file``: add the leading ``file`` column (several bodies); ``header``: write the header
+    row (the first body of several only)."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    for i, block in enumerate(blocks(doc, file)):
-        if i:
-            buf.write("\n")
-        w.writerows(block)
+    lead = [] if file is None else [csv_text(file)]
+    if header:
+        w.writerow((["file"] if file is not None else []) + list(COLUMNS))
+    w.writerows(lead + r for r in rows(data, command, digits))
     return buf.getvalue()

@@ -1,7 +1,7 @@
 """Tables, the figure and the CSV rows of ``rbcli top``; tables of ``rbcli gyrocompass``.
 
 Render only formats and draws what :mod:`rbcli.api.top` computed (its TopResult and
-GyrocompassResult, and the sampled motion, a :class:`rbcli.core.top.TopState`); the JSON is
+GyrocompassResult, and the sampled motion, a :class:`rbcli.core.toppath.TopState`); the JSON is
 the result's own ``to_json()``.
 """
 
@@ -18,7 +18,7 @@ from rbcli.render.units import DisplayUnits
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
     from rbcli.api.top import GyrocompassResult, TopResult
-    from rbcli.core.top import TopState
+    from rbcli.core.toppath import TopState
 
 from rbcli.render.units import RPM  # noqa: E402
 EPS = float(np.finfo(float).eps)

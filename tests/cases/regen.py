@@ -159,6 +159,7 @@ def cases() -> dict[str, list[list[str]]]:
     add("inertia", "bracket-urdf", "examples/bracket.yaml", "--format", "urdf")
     add("inertia", "fan-sdf-principal", "examples/two_blade_fan.yaml", "--format", "sdf", "--principal")
     add("inertia", "fan-mjcf", "examples/two_blade_fan.yaml", "--format", "mjcf")
+    add("inertia", "error-urdf-positive", "examples/bracket.yaml", "--format", "urdf", "--products", "positive")
     add("inertia", "fan-mjcf-principal", "examples/two_blade_fan.yaml", "--format", "mjcf", "--principal")
     add("principal", "fan-csv", "examples/two_blade_fan.yaml", "--format", "csv")
     add("balance", "rotor-grade-csv", "examples/two_disk_rotor.yaml", "--planes", "0,400mm", "--radius",
@@ -167,6 +168,10 @@ def cases() -> dict[str, list[list[str]]]:
         "235@94,58@68", "--trial", "1.15 g@0", "--run", "185@115,77@104", "--format", "csv")
     add("precess", "book-csv", "examples/book.yaml", "--omega", "0.01,1,0.01", "--format", "csv")
     add("rollcheck", "bicycle-csv", "examples/bicycle_wheel.yaml", "--speed", "5 km/h", "--format", "csv")
+    add("top", "sheet-csv", "examples/top.yaml", "--spin", "150", "--theta", "30", "--g", "9.81", "--format", "csv")
+    add("gyrocompass", "gyroscope-csv", "examples/gyroscope.yaml", "--spin", "6000 rpm", "--latitude", "30",
+        "--format", "csv")
+    add("principal", "fan-csv-digits", "examples/two_blade_fan.yaml", "--format", "csv", "--digits", "17")
     add("rollcheck", "error-format", "examples/penny.yaml", "--format", "xml")
     # whirl (issue 26): the physics sheet's worked examples, the README's fan, bad input
     cyl = "{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}"

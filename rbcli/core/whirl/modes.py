@@ -107,11 +107,16 @@ def _isotropic_modes(rotor: Rotor, speed: float) -> list[Mode]:
     lam, V = np.linalg.eig(A)
     snap = _conservative(rotor)
     sm, si = math.sqrt(rotor.mass), math.sqrt(rotor.It)
+    scale = float(np.max(np.abs(lam))) if lam.size else 1.0
     out = []
     for k in range(4):
         lk = complex(lam[k])
         if snap:
             lk = complex(0.0, lk.imag)
+        elif abs(lk.imag) <= 1e-12 * scale:
+            # an overdamped root: its imaginary part is round-off of the eigen-solve (as in
+            # _real_modes, the same bound), not a whirl
+            lk = complex(lk.real, 0.0)
         u = V[:2, k]
         forward = lk.imag >= 0.0
         osc = lk.imag != 0.0

@@ -1,0 +1,215 @@
+"""The exact torque-free motion in time: ω(t), the attitude R(t) and the precession angle.
+
+:func:`omega_at`, :func:`attitude_at` and :func:`precession_angle_at` evaluate the closed
+forms whose constants :func:`rbcli.core.freemotion.analyse` computes, at any array of times
+(the cost does not grow with ``t``: no numerical integration; the phase is reduced modulo
+the period). Conventions as in :mod:`rbcli.core.freemotion` (principal frame, ``R(0) = 1``,
+quaternions ``[w, x, y, z]`` scalar first, canonicalised to ``w >= 0``).
+
+Sources: physics sheet ``dynamics.md`` §1.1–1.2 — Landau & Lifshitz §37; Celledoni, Fassò,
+Säfström & Zanna (2008) with Leroy's corrections (Principia, ``documentation/Celledoni.tex``).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from rbcli.core import freemotion as fm
+from rbcli.core.elliptic import ellippi_sc
+from rbcli.core.elliptic import jacobi_reduced as _jacobi
+from rbcli.core.rotation import quat_about_axis as _qaxis
+from rbcli.core.rotation import quat_canonical as _qcanon
+from rbcli.core.rotation import quat_multiply as _qmul
+
+__all__ = ["omega_at", "attitude_at", "precession_angle_at", "big_phase"]
+
+_TWO_PI = 2.0 * math.pi
+
+
+def big_phase(j: np.ndarray, per: float) -> np.ndarray:
+    """``j * per`` reduced modulo 2 pi without forming the huge product first."""
+    return np.fmod(j * math.fmod(per, _TWO_PI), _TWO_PI)
+
+
+def _times(t: Any) -> np.ndarray:
+    tt = np.atleast_1d(np.asarray(t, dtype=float))
+    if tt.ndim != 1:
+        raise ValueError("t must be a number or a 1-d array of times")
+    if not np.all(np.isfinite(tt)):
+        raise ValueError("times must be finite")
+    return tt
+
+
+def _elliptic_state(motion: fm.FreeMotion, t: np.ndarray) -> dict[str, np.ndarray]:
+    """Principal-frame omega and the reduced phase data of an elliptic / separatrix motion."""
+    el = motion.elliptic
+    assert el is not None
+    A1, A2, A3 = el.amplitudes
+    tau = el.lam * t + el.tau0
+    if el.kind == "separatrix":
+        s1, s3 = el.signs
+        a = np.abs(tau)
+        e2 = np.exp(-2.0 * a)
+        sech = 2.0 * np.exp(-a) / (1.0 + e2)
+        th = np.tanh(tau)
+        w = np.stack([s1 * A1 * sech, s1 * s3 * A2 * th, s3 * A3 * sech], axis=1)
+        return {"w": w, "tanh": th}
+    K = float(el.K)  # type: ignore[arg-type]
+    j4 = np.floor((tau + 2.0 * K) / (4.0 * K))
+    taur = tau - 4.0 * K * j4
+    sn, cn, dn, j2, snu, cnu = _jacobi(taur, K, el.m, el.mc)
+    s = el.signs[0]
+    if el.kind == "3":
+        w = np.stack([A1 * cn, s * A2 * sn, s * A3 * dn], axis=1)
+    else:
+        w = np.stack([s * A1 * dn, s * A2 * sn, A3 * cn], axis=1)
+    return {"w": w, "j4": j4, "taur": taur, "j2": j2, "snu": snu, "cnu": cnu, "dnu": dn}
+
+
+def omega_at(motion: fm.FreeMotion, t: Any, *, frame: str = "body") -> np.ndarray:
+    """Exact angular velocity at the times ``t``.
+
+    Parameters
+    ----------
+    motion : fm.FreeMotion — from :func:`analyse`
+    t : float or (N,) array_like — s (any sign, any size: the phase is reduced modulo the
+        period, so t = 1e9 s costs what t = 1 s does)
+    frame : str — "body" (default) or "principal"
+
+    Returns
+    -------
+    (N, 3) ndarray — rad/s, omega(t) in the body (or principal) frame
+
+    Notes
+    -----
+    Sheet §1.1–1.2: Jacobi sn, cn, dn with tau = lambda t + tau0; sech/tanh on the
+    separatrix; omega1 + i omega2 = w_perp exp(i (W t + delta)) for a symmetric body;
+    constant for steady motion, rest and spherical bodies.
+    """
+    tt = _times(t)
+    if frame not in ("body", "principal"):
+        raise ValueError("frame must be 'body' or 'principal'")
+    axes = motion.axes
+    if motion.elliptic is not None:
+        wp = _elliptic_state(motion, tt)["w"]
+    elif motion.symmetry == "symmetric" and motion.case in (fm.CASE_MAX, fm.CASE_MIN):
+        u = int(motion.symmetry_index)  # type: ignore[arg-type]
+        a, b = (u + 1) % 3, (u + 2) % 3  # cyclic: (a, b, u) right-handed
+        w0 = motion.omega0_principal
+        ang = float(motion.precession_rate) * tt  # type: ignore[arg-type]
+        ca, sa = np.cos(ang), np.sin(ang)
+        wp = np.empty((tt.size, 3))
+        wp[:, a] = w0[a] * ca - w0[b] * sa
+        wp[:, b] = w0[a] * sa + w0[b] * ca
+        wp[:, u] = w0[u]
+    else:
+        wp = np.tile(motion.omega0_principal, (tt.size, 1))
+    return wp if frame == "principal" else wp @ axes
+
+
+def precession_angle_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
+    """Unwrapped precession angle phi(t) - phi(0) about L (Landau–Lifshitz angles).
+
+    Parameters
+    ----------
+    motion : fm.FreeMotion
+    t : float or (N,) array_like — s
+
+    Returns
+    -------
+    (N,) ndarray — rad. The pole is the dn axis (axis 3 when omega circles axis 3 or on the
+    separatrix, axis 1 when it circles axis 1), the symmetry axis for a symmetric body, and
+    omega0 for steady / spherical motion. After a whole period the value is convention-free:
+    R(T) = Rot(L, phi(T) - phi(0)).
+
+    Notes
+    -----
+    Sheet §1.2 "Orientation": phi(t) = phi(0) + (G/Ic) t + sigma_c G (I3-I1)/(lambda I1 I3)
+    [Pi(n_c; am tau | m) - Pi(n_c; am tau0 | m)], Pi through Carlson's RF, RJ, with
+    am(tau + 2Kj) = am(u) + j pi and Pi(n; phi + j pi) = Pi(n; phi) + 2 j Pi(n). On the
+    separatrix (derived here by u = tanh tau, partial fractions):
+    phi = (G/I2) t + G (I3-I2) r/(I2 I3 lambda) [atan(r tanh tau) - atan(r tanh tau0)],
+    r^2 = I3 (I2-I1)/(I1 (I3-I2)). Symmetric: phi' = G/I.
+    """
+    tt = _times(t)
+    el = motion.elliptic
+    if el is None:
+        return float(motion.mean_precession_rate or 0.0) * tt
+    big, local = _phi_parts(motion, tt, None)
+    per = el.precession_per_period
+    return local + (0.0 if per is None else big * per)
+
+
+def _phi_parts(
+    motion: fm.FreeMotion, t: np.ndarray, st: dict[str, np.ndarray] | None
+) -> tuple[np.ndarray, np.ndarray]:
+    """phi(t) - phi(0) = j4 * (Delta phi per period) + local; returns (j4, local)."""
+    el = motion.elliptic
+    assert el is not None
+    if st is None:
+        st = _elliptic_state(motion, t)
+    if el.kind == "separatrix":
+        r = math.sqrt(-el.n)
+        local = el._G / motion.moments[1] * t + el.coeff * (np.arctan(r * st["tanh"]) - el._pi_tau0)
+        return np.zeros_like(t), local
+    pi_tau = ellippi_sc(el.n, st["snu"], st["cnu"], el.m, el.mc) + 2.0 * st["j2"] * el.pi_complete
+    local = (el._G / el._Ic) * (st["taur"] - el.tau0) / el.lam + el.coeff * (pi_tau - el._pi_tau0)
+    return st["j4"], local
+
+
+def attitude_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
+    """Exact orientation: quaternions of the body-to-space rotation R(t), R(0) = 1.
+
+    Parameters
+    ----------
+    motion : fm.FreeMotion
+    t : float or (N,) array_like — s (cost independent of the size of t)
+
+    Returns
+    -------
+    (N, 4) ndarray — ``[w, x, y, z]``, scalar first, unit, ``w >= 0``. ``R(q)`` maps body
+    coordinates at time t to space coordinates; the space frame is the body frame at t = 0,
+    so L (constant in space) = ``motion.angular_momentum`` and
+    ``R(t) @ (I omega(t)) = L`` for every t.
+
+    Notes
+    -----
+    Asymmetric (sheet §1.2): with the principal axes relabelled cyclically so the dn axis c
+    is last (a proper permutation Pm), R_ZL(t) = Rz(phi) Rx(theta) Rz(psi) Pm maps principal
+    coordinates to a frame with Z along L, M_c = G cos theta, psi = atan2(M_a, M_b), phi from
+    :func:`precession_angle_at` reduced as j4 * Delta phi (mod 2 pi) + local. Then
+    R(t) = P^T R_ZL(0)^T R_ZL(t) P with P = ``motion.axes``.
+    Symmetric: R(t) = Rot(L^, (G/I) t) Rot(e_s, -W t) (omega = phi' L^ + psi' e_s with
+    psi' = -W). Steady and spherical: Rot(omega^, |omega| t). Rest: identity.
+    """
+    tt = _times(t)
+    el = motion.elliptic
+    if el is not None:
+        st = _elliptic_state(motion, tt)
+        j4, local = _phi_parts(motion, tt, st)
+        per = el.precession_per_period
+        phi = local if per is None else local + big_phase(j4, per)
+        Mrel = (motion.moments * st["w"])[:, list(el._perm)]
+        q = fm.ll_quat(phi, Mrel, el._G)
+        q = _qmul(_qmul(el._q_left[None, :], q), el._q_right[None, :])
+        return _qcanon(q)
+    if motion.case == fm.CASE_REST:
+        out = np.zeros((tt.size, 4))
+        out[:, 0] = 1.0
+        return out
+    if motion.symmetry == "symmetric" and motion.case in (fm.CASE_MAX, fm.CASE_MIN):
+        G = motion.angular_momentum_norm
+        Lhat = motion.angular_momentum / G
+        e = motion.symmetry_axis
+        phid = float(motion.space_precession_rate)  # type: ignore[arg-type]
+        W = float(motion.precession_rate)  # type: ignore[arg-type]
+        q = _qmul(_qaxis(Lhat, np.fmod(phid * tt, 2 * _TWO_PI)),
+                  _qaxis(e, np.fmod(-W * tt, 2 * _TWO_PI)))  # type: ignore[arg-type]
+        return _qcanon(q)
+    # steady rotation (any body) and spherical bodies: rotation about omega0
+    wn = float(np.linalg.norm(motion.omega0_principal))
+    axis = (motion.omega0_principal @ motion.axes) / wn
+    return _qcanon(_qaxis(axis, np.fmod(wn * tt, 2 * _TWO_PI)))

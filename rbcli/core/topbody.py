@@ -1,0 +1,185 @@
+"""A body reduced to a heavy symmetric top on a fixed pivot (``rbcli top``).
+
+:func:`top_from_body` takes a body's mass, centre of mass and inertia tensor about it and a
+pivot, and returns the :class:`TopParams` the closed form of :mod:`rbcli.core.top` needs:
+the distance l from the pivot to the centre of mass, the moment I across the symmetry axis
+about the pivot (parallel-axis theorem) and the moment Is about the axis. A body that is not
+a symmetric top about the pivot–com axis is refused with the numbers
+(:mod:`rbcli.core.symmetry`). Pure physics in SI units; sources: Goldstein, Poole and Safko,
+*Classical Mechanics*, 3rd ed., §5.7; physics sheet ``dynamics.md`` §2 "Setup", §4b item 6.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rbcli.core.checks import finite
+from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+
+#: Pivot closer to the com than this fraction of the body's size: no top.
+PIVOT_AT_COM_RTOL = 1e-9
+
+
+class PivotAtCom(ValueError):
+    """The pivot is at the centre of mass: there is no gravity torque, no heavy top."""
+
+
+class NotATop(ValueError):
+    """The body is not a symmetric top about the pivot–com axis (asymmetric, the axis not
+    principal, or no moment about the axis); the message says how, with the numbers."""
+
+
+
+def _num(x: float) -> str:
+    """A short number for messages: 1.2e-3, 0.04, 22."""
+    x = float(x)
+    if x == 0.0:
+        return "0"
+    if 1e-2 <= abs(x) < 1e4:
+        return f"{x:.3g}"
+    mant, exp = f"{x:.2e}".split("e")
+    mant = mant.rstrip("0").rstrip(".")
+    return f"{mant}e{int(exp)}"
+
+
+@dataclass(frozen=True)
+class TopParams:
+    """Mass properties of a symmetric top about its pivot.
+
+    Attributes
+    ----------
+    mass : float — kg
+    length : float — m, distance l from the pivot to the centre of mass
+    I : float — kg m^2, moment about the pivot across the symmetry axis (I_cm + m l²)
+    Is : float — kg m^2, moment about the symmetry axis
+    axis : tuple[float, float, float] | None — unit symmetry axis e3 in the body frame,
+        pointing from the pivot to the com (None when built from numbers)
+    pivot : tuple[float, float, float] | None — m, body frame
+    com : tuple[float, float, float] | None — m, body frame
+    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
+        above rounding, within the tolerance): how far it departs, and its real inertia
+        tensor about the pivot; I is then the mean of the two moments across (None for a
+        body symmetric to rounding)
+    """
+
+    mass: float
+    length: float
+    I: float  # noqa: E741 - the sheet's name
+    Is: float
+    axis: tuple[float, float, float] | None = None
+    pivot: tuple[float, float, float] | None = None
+    com: tuple[float, float, float] | None = None
+    asymmetry: AxialSymmetry | None = field(default=None, repr=False)
+
+    def __post_init__(self) -> None:
+        for name in ("mass", "length", "I", "Is"):
+            v = finite(name, getattr(self, name))
+            if v <= 0.0:
+                raise ValueError(f"{name} of a top must be positive, not {v}")
+
+    def to_json(self) -> dict:
+        out: dict = {"mass": self.mass, "length": self.length, "I": self.I, "Is": self.Is}
+        for k in ("axis", "pivot", "com"):
+            v = getattr(self, k)
+            out[k] = None if v is None else [float(c) for c in v]
+        return out
+
+
+def top_from_body(
+    mass: float,
+    com: np.ndarray,
+    inertia_com: np.ndarray,
+    pivot: np.ndarray,
+    *,
+    sym_rtol: float = 1e-6,
+) -> TopParams:
+    """Reduce a body's mass properties to a symmetric (or nearly symmetric) top on a pivot.
+
+    Parameters
+    ----------
+    mass : float — kg, > 0
+    com : (3,) array_like — m, centre of mass in the body frame
+    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
+        convention: off-diagonals are -∫xy dm)
+    pivot : (3,) array_like — m, the fixed point, body frame
+    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis" (the
+        ``--symmetry-tol`` of :mod:`rbcli.core.symmetry`); a body within it but above
+        rounding is symmetrised (I the mean of the two moments across) and its departures
+        are kept in ``TopParams.asymmetry``
+
+    Returns
+    -------
+    TopParams
+
+    Raises
+    ------
+    PivotAtCom
+        The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
+        no gravity torque; the motion is free precession (``rbcli precess``).
+    rbcli.core.symmetry.Asymmetric
+        The two moments across the axis differ by more than ``sym_rtol`` (relative to
+        their mean), the axis is not a principal axis (its products of inertia with the
+        transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
+        about the axis is zero (a pendulum).
+    ValueError
+        an input is not finite, or the mass is not positive.
+
+    Notes
+    -----
+    The symmetry axis is e3 = (com - pivot)/l, l = |com - pivot| (SPEC §2 ``top``).
+    Parallel-axis theorem: I_pivot = I_com + m (l² E - d dᵀ), d = com - pivot.
+    Is = e3·I_pivot·e3 (= e3·I_com·e3); the moments across are the eigenvalues of the
+    2x2 block of I_pivot on a basis (e1, e2) of the plane normal to e3
+    (sheet §2 "Setup", §4b item 6).
+    """
+    m = finite("mass", mass)
+    if m <= 0.0:
+        raise ValueError(f"the mass of a top must be positive, not {m}")
+    c = np.asarray(com, dtype=float).reshape(3)
+    p = np.asarray(pivot, dtype=float).reshape(3)
+    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+    if not (np.all(np.isfinite(c)) and np.all(np.isfinite(p)) and np.all(np.isfinite(J))):
+        raise ValueError("the com, pivot and inertia tensor must be finite numbers")
+    J = 0.5 * (J + J.T)
+    d = c - p
+    length = float(np.linalg.norm(d))
+    r_gyr = math.sqrt(max(float(np.trace(J)), 0.0) / (2.0 * m))
+    size = max(r_gyr, float(np.linalg.norm(c)), float(np.linalg.norm(p)))
+    if length == 0.0 or length <= PIVOT_AT_COM_RTOL * size:
+        raise PivotAtCom(
+            f"the pivot is at the centre of mass (they are {_num(length)} m apart): gravity "
+            "exerts no torque about it, so this is not a heavy top; for torque-free motion "
+            "use `rbcli precess`"
+        )
+    e3 = d / length
+    Ip = J + m * (length**2 * np.eye(3) - np.outer(d, d))
+    Is = float(e3 @ Ip @ e3)
+    # a basis of the transverse plane
+    k = int(np.argmin(np.abs(e3)))
+    e1 = np.cross(e3, np.eye(3)[k])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(e3, e1)
+    mean = 0.5 * (float(e1 @ Ip @ e1) + float(e2 @ Ip @ e2))  # the symmetrised moment across
+    if mean <= 0.0:
+        raise NotATop("the moment of inertia across the pivot–com axis is zero")
+    sym = about_axis(m, c, J, p, e3)
+    require(sym, sym_rtol, "the pivot–com axis", "a top")
+    if Is <= 1e-12 * mean:
+        raise NotATop(
+            f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
+            "kg m²: a point mass or a thin rod along the axis): it cannot carry spin, so it "
+            "is a spherical pendulum, not a top"
+        )
+    return TopParams(
+        mass=m,
+        length=length,
+        I=mean,
+        Is=Is,
+        axis=tuple(float(v) for v in e3),  # type: ignore[arg-type]
+        pivot=tuple(float(v) for v in p),  # type: ignore[arg-type]
+        com=tuple(float(v) for v in c),  # type: ignore[arg-type]
+        asymmetry=None if sym.exact else sym,
+    )

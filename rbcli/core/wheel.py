@@ -1,0 +1,303 @@
+"""A body of revolution reduced to what rolling needs, and the checks of the rolling inputs.
+
+:class:`Wheel` holds the mass and the moments A (across the axle) and C (about it), both
+about the centre of mass G; :func:`wheel_from_body` reduces a general body's mass
+properties to one, symmetrising a nearly symmetric wheel within a tolerance and refusing
+one beyond it with the numbers (:mod:`rbcli.core.symmetry`). :func:`check_geometry`,
+:func:`param_finite` and :func:`blame` check the rim radius, tyre radius, gravity and the
+motion's values for :mod:`rbcli.core.rolling` and :mod:`rbcli.core.rollcircle` and name
+the parameter at fault. Physics sheet ``dynamics.md`` §3. SI units throughout.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from rbcli.core.rim import fmt_length as _fmt_length
+from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis
+
+__all__ = ["STANDARD_GRAVITY", "Wheel", "wheel_from_body", "check_geometry", "param_finite",
+           "blame", "opt_float"]
+
+STANDARD_GRAVITY = 9.80665  # m/s^2
+
+
+def _finite(name: str, x: float) -> float:
+    x = float(x)
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be a finite number, got {x!r}")
+    return x
+
+
+def _positive(name: str, x: float) -> float:
+    x = _finite(name, x)
+    if x <= 0.0:
+        raise ValueError(f"{name} must be positive, got {x:.6g}")
+    return x
+
+
+def blame(params: tuple[str, ...], message: str) -> Exception:
+    """The error for bad values of the parameters ``params`` (the first one is ``param``):
+    a :class:`rbcli.errors.ParamError` for one, an InputError naming each option for more
+    (``--circle, --speed: ...``). Callers ``raise`` it."""
+    from rbcli.errors import InputError, ParamError, option_name
+
+    if len(params) == 1:
+        return ParamError(params[0], message)
+    return InputError(", ".join(option_name(p) for p in params) + ": " + message, param=params[0])
+
+
+def param_finite(param: str, what: str, x: float) -> float:
+    """``x`` as a float; a ParamError naming ``param`` ("``what`` must be a finite number")
+    when it is not finite."""
+    x = float(x)
+    if not math.isfinite(x):
+        raise blame((param,), f"{what} must be a finite number, got {x!r}")
+    return x
+
+
+def check_geometry(a: float, r: float, g: float) -> tuple[float, float, float]:
+    """a, r, g checked; errors are ParamErrors naming ``radius``, ``tyre_radius``, ``g``."""
+    a = param_finite("radius", "the rim radius a", a)
+    if a <= 0.0:
+        raise blame(("radius",), f"the rim radius a must be positive, got {a:.6g}")
+    r = param_finite("tyre_radius", "the tyre radius r", r)
+    g = param_finite("g", "gravity g", g)
+    if g <= 0.0:
+        raise blame(("g",), f"gravity g must be positive, got {g:.6g}")
+    if r < 0.0:
+        raise blame(("tyre_radius",), f"the tyre radius r must be >= 0 (0 = knife edge), got {r:.6g} m")
+    if r > a:
+        raise blame(
+            ("tyre_radius",),
+            f"the tyre radius r = {r:.6g} m must be at most the rim radius a = {a:.6g} m "
+            "(r = a is a sphere)",
+        )
+    return a, r, g
+
+
+def _vec(v: Any) -> tuple[float, float, float]:
+    a = np.asarray(v, dtype=float).reshape(3)
+    return (float(a[0]), float(a[1]), float(a[2]))
+
+
+def opt_float(x: float | None) -> float | None:
+    """None stays None; anything else becomes a float (for ``to_json``)."""
+    return None if x is None else float(x)
+
+
+# --------------------------------------------------------------------------- the wheel
+
+
+@dataclass(frozen=True)
+class Wheel:
+    """Mass properties of a body of revolution, reduced to what rolling needs.
+
+    Attributes
+    ----------
+    mass : float — kg, > 0
+    A : float — kg m^2, the diametral moment (across the axle) about the centre of mass G
+    C : float — kg m^2, the axial moment (about the axle) about G; 0 < C <= 2 A
+    com : tuple of 3 floats — m, the centre of mass in the body frame
+    axle : tuple of 3 floats — the unit axle direction in the body frame
+    com_offset : float — m, distance of the com from the axle line (below tolerance)
+    asymmetry : AxialSymmetry or None — for a wheel accepted as nearly of revolution
+        (departures above rounding, within the tolerance of :func:`wheel_from_body`): the
+        two moments across the axle about the com, the products coupling the axle to the
+        plane across it and the com's offset from the axle relative to the rim radius
+        (:mod:`rbcli.core.symmetry`); None for a wheel of revolution to rounding
+
+    Construct directly for textbook bodies (``Wheel(mass=1, A=0.25, C=0.5)`` is a thin
+    disk of unit mass and radius 1) or from a general body with :func:`wheel_from_body`.
+    """
+
+    mass: float
+    A: float
+    C: float
+    com: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    axle: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    com_offset: float = 0.0
+    asymmetry: AxialSymmetry | None = field(default=None, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        _positive("the mass", self.mass)
+        _positive("the diametral moment A", self.A)
+        _positive("the axial moment C", self.C)
+        # a body of revolution has principal moments (A, A, C): the triangle
+        # inequality allows C up to 2 A (a thin flat disk or hoop); 1e-9 for round-off
+        if self.C > 2.0 * self.A * (1.0 + 1e-9):
+            raise ValueError(
+                f"not a physical body of revolution: the axial moment C = {self.C:.6g} "
+                f"kg m² exceeds twice the diametral moment A = {self.A:.6g} kg m²"
+            )
+
+    def to_json(self) -> dict[str, Any]:
+        """``mass``, ``I`` (= A), ``Is`` (= C), ``com``, ``axle``, ``com_offset``."""
+        return {
+            "mass": float(self.mass),
+            "I": float(self.A),
+            "Is": float(self.C),
+            "com": [float(x) for x in self.com],
+            "axle": [float(x) for x in self.axle],
+            "com_offset": float(self.com_offset),
+        }
+
+
+def wheel_from_body(
+    mass: float,
+    com: Any,
+    inertia_com: Any,
+    axle: Any = (0.0, 0.0, 1.0),
+    *,
+    sym_rtol: float = ROUND_OFF,
+    axle_through: Any = None,
+    radius: float | None = None,
+    off_axis_rtol: float | None = None,
+) -> Wheel:
+    """Reduce a body's mass properties to a :class:`Wheel` (A and C about the centre).
+
+    Parameters
+    ----------
+    mass : float — kg
+    com : (3,) array_like — m, centre of mass in the body frame
+    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com
+        (tensor convention: off-diagonals are the negated products)
+    axle : (3,) array_like — axle direction in the body frame (need not be unit);
+        default body z
+    sym_rtol : float — how far from a body of revolution the wheel may be (the
+        ``--symmetry-tol``, a fraction; default 1e-6, rounding): the two moments across
+        the axle may differ by this fraction of their mean, and the products of inertia
+        coupling the axle to the plane across it may be this fraction of it
+    axle_through : (3,) array_like or None — m, a point of the axle line in the body
+        frame. **Default: the body origin** (the natural place to centre a wheel when it is
+        modelled), so a wheel whose com is off the origin — an unbalanced wheel, or a
+        wheel modelled away from the origin — is refused unless the axle point is given.
+    radius : float or None — m, the rim radius; the length scale of the com test
+        (default: the radius of gyration sqrt(C/m) about the axle)
+    off_axis_rtol : float or None — the com may be off the axle line by at most
+        ``off_axis_rtol * radius`` (default: ``sym_rtol``)
+
+    Returns
+    -------
+    Wheel
+        With ``asymmetry`` set when a departure is above rounding (1e-6) but within the
+        tolerance: the wheel is then the *symmetrised* one.
+
+    Raises
+    ------
+    rbcli.core.symmetry.Asymmetric (a ValueError)
+        not a body of revolution about the axle within the tolerance (the moments across
+        it differ, or the axle is not a principal axis, or the com is off the axle line),
+        with the numbers and the option ``--symmetry-tol``.
+    ValueError
+        zero axle, zero or negative moments.
+
+    Notes
+    -----
+    With n the unit axle: C = n.I.n; the two moments across the axle are the eigenvalues of
+    I restricted to the plane normal to n, A1 <= A2, with mean Ā = (A1 + A2)/2 and
+    relative spread δ = (A2 - A1)/Ā; the coupling is |(1 - n n^T) I n|; the com's offset
+    e is its distance from the axle line (:func:`rbcli.core.symmetry.about_axis`, about
+    the com, e relative to the rim radius). Rolling depends on the body only through m,
+    G and the inertia (sheet §3), so a body within the tolerance is answered for the
+    **symmetrised wheel**: A = Ā, C as measured, the products dropped and the com taken on
+    the axle (the rim centre; the model has no place for an offset).
+
+    How far that may be off (the bound :attr:`RollcheckResult.asymmetry_effect` reports;
+    first order in the departures). The threshold is s_c² = m g (a - r) A / (C (C + m a²))
+    (:func:`straight`), so s_c ∝ sqrt(A) with everything else fixed. As the real wheel
+    turns, its moment about the horizontal fore-aft diameter swings between A1 and A2, so
+    its threshold lies between the ones computed with A = A1 and A = A2, and
+    |s_c(A_i)/s_c(Ā) - 1| = |sqrt(1 ± δ/2) - 1| <= 1 - sqrt(1 - δ/2) <= δ/(4 - δ) ≈ δ/4
+    (using sqrt(1 - x) >= 1 - x); the critical speed a s_c alike. The products change the
+    principal moments by at most the coupling (Weyl's inequality) and tilt the principal
+    axis by about coupling/|C - Ā| (the wheel wobbles): of the order of the coupling
+    relative to Ā. A com e off the axle makes the gravity lever swing between a - r - e
+    and a - r + e: s_c by about e/(2 (a - r)). Sheet §3; the eigenvalue bound: Horn and
+    Johnson, *Matrix Analysis*, 2nd ed., Theorem 4.3.1.
+    """
+    m = _positive("the mass", mass)
+    G = np.asarray(com, dtype=float).reshape(3)
+    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+    if not (np.all(np.isfinite(G)) and np.all(np.isfinite(J))):
+        raise ValueError("the centre of mass and the inertia tensor must be finite")
+    J = 0.5 * (J + J.T)
+    n = np.asarray(axle, dtype=float).reshape(3)
+    nn = float(np.linalg.norm(n))
+    if not math.isfinite(nn) or nn == 0.0:
+        raise ValueError("the axle direction must be a non-zero finite vector")
+    n = n / nn
+    C = float(n @ J @ n)
+    # orthonormal basis (e1, e2) of the plane across the axle
+    k = int(np.argmin(np.abs(n)))
+    e1 = np.zeros(3)
+    e1[k] = 1.0
+    e1 = e1 - (e1 @ n) * n
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(n, e1)
+    E = np.array([e1, e2])
+    across = np.linalg.eigvalsh(E @ J @ E.T)
+    A1, A2 = float(across[0]), float(across[1])
+    scale = max(abs(A1), abs(A2), abs(C))
+    if not scale > 0.0:
+        raise ValueError("the inertia tensor is zero: a point mass cannot roll on a rim")
+    A = 0.5 * (A1 + A2)
+    if C <= 0.0 or A <= 0.0:
+        raise ValueError(
+            f"the moments about and across the axle must be positive, got C = {C:.6g} "
+            f"and A = {A:.6g} kg m²"
+        )
+    P = np.zeros(3) if axle_through is None else np.asarray(axle_through, dtype=float)
+    P = P.reshape(3)
+    d = G - P
+    offset = float(np.linalg.norm(d - (d @ n) * n))
+    L = math.sqrt(C / m) if radius is None else _positive("the rim radius", radius)
+    sym = about_axis(m, G, J, G, n, size=L)  # the moments about the com
+    sym = dataclasses.replace(sym, com_offset=offset, com_offset_relative=offset / L)
+    _require(sym, sym_rtol, sym_rtol if off_axis_rtol is None else off_axis_rtol, n, P,
+             axle_through is None)
+    return Wheel(mass=m, A=A, C=C, com=_vec(G), axle=_vec(n), com_offset=offset,
+                 asymmetry=None if sym.exact else sym)
+
+
+def _pct(x: float) -> str:
+    return f"{100.0 * x:.2g} %"
+
+
+def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, origin: bool) -> None:
+    """Refuse a wheel beyond the tolerance: :class:`Asymmetric` with the numbers, in the
+    order products, moments, com (the first that fails)."""
+    from rbcli.errors import option_name
+
+    opt = option_name("symmetry_tol")
+    tol_r, off_r = max(tol, ROUND_OFF), max(off_tol, ROUND_OFF)
+    if sym.coupling_relative > tol_r:
+        raise Asymmetric(
+            "not a body of revolution about the axle: the axle is not a principal axis "
+            f"(product of inertia {sym.coupling:.6g} kg m², {_pct(sym.coupling_relative)} of the "
+            f"moment across, {sym.mean:.6g} kg m²; the nearest principal axis is "
+            f"{math.degrees(sym.principal_tilt):.3g}° away); a rolling wheel needs it within "
+            f"{opt} ({_pct(tol)})", sym, tol)
+    if sym.relative > tol_r:
+        I1, I2 = sym.transverse
+        # enough digits that the two moments print differently
+        digits = 6 if not 0.0 < sym.relative < 1e-4 else min(17, math.ceil(-math.log10(sym.relative)) + 2)
+        raise Asymmetric(
+            "not a body of revolution about the axle: the moments across it are "
+            f"{I1:.{digits}g} and {I2:.{digits}g} kg m² (differ by {_pct(sym.relative)}); a "
+            f"rolling wheel needs them within {opt} ({_pct(tol)})", sym, tol)
+    if sym.com_offset_relative > off_r:
+        def _pt(v: Any) -> str:
+            return "[" + ", ".join(f"{float(x):.6g}" for x in v) + "]"
+
+        where = "the body origin" if origin else f"{_pt(P)} m"
+        raise Asymmetric(
+            f"the centre of mass is {_fmt_length(sym.com_offset)} off the axle (the axle line "
+            f"runs along {_pt(n)} through {where}; {_pct(sym.com_offset_relative)} of the rim "
+            f"radius {_fmt_length(sym.size)}); a rolling wheel needs its centre of mass on the "
+            f"axle, within {opt} ({_pct(off_tol)}) of the rim radius", sym, off_tol)
