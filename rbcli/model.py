@@ -37,6 +37,21 @@ def _frozen(a, dtype=_FLOAT) -> np.ndarray:
     return a
 
 
+def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
+    """Semi-axes (m) and axes (columns) of the uniform ellipsoid with a part's ``mass`` (kg)
+    and ``inertia`` about its com (kg m², 3×3): ``a² = 5 (I₂ + I₃ − I₁) / (2 m)``, etc.
+
+    The shape a part given only by its mass properties is drawn as and measured by (the
+    plausibility warnings' distance from a spin axis). A rank-deficient tensor gives zero
+    semi-axes (a flat or needle ellipsoid).
+    """
+    w, v = np.linalg.eigh(0.5 * (np.asarray(inertia, dtype=float) + np.asarray(inertia, dtype=float).T))
+    s = np.clip(np.array([w[1] + w[2] - w[0], w[0] + w[2] - w[1], w[0] + w[1] - w[2]]), 0.0, None)
+    if np.linalg.det(v) < 0:
+        v[:, 2] = -v[:, 2]
+    return np.sqrt(2.5 * s / float(mass)), v
+
+
 def _freeze_fields(obj: object, names: tuple[str, ...], optional: bool = False) -> None:
     """Make the array fields ``names`` of the frozen dataclass ``obj`` read-only
     (:func:`_frozen`); None stays None when ``optional``."""
@@ -66,14 +81,12 @@ class Outline:
 
     Attributes
     ----------
-    kind : str — a primitive shape name (SPEC §1), ``"given"`` (drawn as the part's
-        equivalent uniform ellipsoid) or ``"mesh"``
+    kind : str — a primitive shape name (SPEC §1), ``"given"`` (the part's equivalent
+        uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or ``"mesh"``
     dims : tuple[tuple[str, object], ...] — the shape's parameters as
         :func:`rbcli.core.shapes.geometry` took them (lengths in m, ``size`` and
         ``semi_axes`` as tuples, ``vertices`` as three 3-tuples, ``shell`` a bool); for a
-        mesh ``(("triangles", n),)``, the file's count; for a given part its ``mass`` (kg)
-        and ``inertia`` (kg m², about its com, in the local axes, three 3-tuples).
-        ``dict(outline.dims)`` reads them.
+        mesh ``(("triangles", n),)``, the file's count. ``dict(outline.dims)`` reads them.
     at : (3,) ndarray — m, the local origin in the body frame
     R : (3, 3) ndarray — the local-to-body rotation (its columns are the local axes)
     vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame: the file's

@@ -1,7 +1,7 @@
 """Drawing work only when a figure is drawn (issue 23): loading a body makes no drawing
-geometry — a mesh part keeps its file's mesh (read-only), not a decimated copy, and a given
-part its mass properties, not its equivalent ellipsoid; the figure's outline module
-(rbcli.render.outline) decimates and builds them when it draws."""
+geometry — a mesh part keeps its file's mesh (read-only), not a decimated copy, which the
+figure's outline module (rbcli.render.outline) decimates when it draws. (A given part keeps
+its equivalent ellipsoid: not only drawn, also measured by the plausibility warnings.)"""
 
 from __future__ import annotations
 
@@ -46,12 +46,14 @@ def test_a_mesh_part_keeps_its_files_mesh_and_only_a_figure_decimates_it(tmp_pat
     assert len(ol.sketch(o, max_triangles=400).faces) <= 400  # the 3-D view's coarser copy
 
 
-def test_a_given_part_is_drawn_as_its_equivalent_ellipsoid_built_when_drawn(tmp_path):
+def test_a_given_part_is_drawn_as_its_equivalent_ellipsoid(tmp_path):
     from rbcli.render import outline as ol
 
     # a uniform solid sphere of radius 0.1 m: 2/5 m R² about every axis, here 2 kg
     p = rbcli.load_text("{shape: given, mass: 2, com: [0.1, 0, 0], inertia: {Ixx: 0.008, Iyy: 0.008, Izz: 0.008}}").parts[0]
-    assert p.outline.kind == "given" and "semi_axes" not in dict(p.outline.dims)
+    assert p.outline.kind == "given"
+    # 1e-15 m: the square root of 2.5 (I2 + I3 - I1) / m, a few roundings of 0.1
+    assert np.allclose(dict(p.outline.dims)["semi_axes"], 0.1, rtol=0, atol=1e-15)
     s = ol.sketch(p.outline)
     # the sphere's surface points are 0.1 m from its centre; 1e-12 m: rounding of the
     # eigen-decomposition and the square root (~1e-16 relative), far below any wrong size

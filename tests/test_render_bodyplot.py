@@ -156,6 +156,7 @@ def test_given_part_is_its_equivalent_ellipsoid_and_a_marked_centre():
     # a uniform solid sphere's inertia, 2/5 m R², gives back the sphere of radius R
     p = one("{shape: given, mass: 2, com: [0.1, 0, 0], inertia: {Ixx: 0.008, Iyy: 0.008, Izz: 0.008}}")
     assert p.outline.kind == "given"
+    assert np.allclose(dict(p.outline.dims)["semi_axes"], 0.1)
     s = ol.sketch(p.outline)
     assert np.allclose(np.linalg.norm(s.vertices - [0.1, 0, 0], axis=1), 0.1)
     assert np.allclose(s.points, [[0.1, 0, 0]])

@@ -19,7 +19,7 @@ from rbcli.io import yamlsafe as ys
 from rbcli.io.fields import PLACEMENT_KEYS, subtract
 from rbcli.io.loadctx import Ctx
 from rbcli.io.placing import place
-from rbcli.model import Outline, Part
+from rbcli.model import Outline, Part, equivalent_ellipsoid
 
 GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", "convention", *PLACEMENT_KEYS)
 #: each entry of the map form, and the names it is read by: I.. (most tools), L.. (SolidWorks's
@@ -131,9 +131,8 @@ def pretty_unit(text: str) -> str:
 
 
 def _given_outline(mass: float, com: np.ndarray, J: np.ndarray) -> Outline:
-    """A given part is drawn as its equivalent uniform ellipsoid, centred on its com: the
-    outline keeps its mass and its inertia about the com (body axes), from which the figure
-    makes the ellipsoid when it draws (:mod:`rbcli.render.outline`)."""
-    inertia = tuple(tuple(row) for row in J.tolist())
-    return Outline("given", (("mass", float(mass)), ("inertia", inertia)), com, np.eye(3))
+    """A given part's shape: its equivalent uniform ellipsoid, centred on its com (drawn by
+    the figure, measured by the plausibility warnings: rbcli.core.scale)."""
+    semi, axes = equivalent_ellipsoid(mass, J)
+    return Outline("given", (("semi_axes", tuple(float(x) for x in semi)),), com, axes)
 

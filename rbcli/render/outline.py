@@ -24,7 +24,8 @@ Meshes are drawn from a decimated copy (:func:`decimate`: vertex clustering, Ros
 Borrel, "Multi-resolution 3D approximations for rendering complex scenes", 1993) of at
 most :data:`MESH_MAX_TRIANGLES` triangles, made here when a figure is drawn (the body
 keeps its file's mesh); a part given by its mass properties is drawn as its equivalent
-uniform ellipsoid (:func:`equivalent_ellipsoid`), also made here.
+uniform ellipsoid (:func:`rbcli.model.equivalent_ellipsoid`, which the loader keeps on its
+outline: the plausibility warnings measure it too).
 """
 
 from __future__ import annotations
@@ -33,6 +34,8 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
+
+from rbcli.model import equivalent_ellipsoid  # the given parts' shape (re-exported here)
 
 __all__ = [
     "CREASE_DEG", "MESH_MAX_TRIANGLES", "SEGMENTS", "Shadow", "Sketch", "decimate",
@@ -226,9 +229,8 @@ def local_sketch(kind: str, dims: dict, vertices=None, faces=None, n: int = SEGM
 
     Parameters
     ----------
-    kind : str — a primitive shape name, ``"given"`` (the equivalent uniform ellipsoid of
-        ``mass`` (kg) and ``inertia`` (kg m², about the com, 3×3, local axes), with its centre
-        marked) or ``"mesh"``
+    kind : str — a primitive shape name, ``"given"`` (an ellipsoid of ``semi_axes`` with
+        its centre marked) or ``"mesh"``
     dims : dict — the shape's parameters in m, as :func:`rbcli.core.shapes.geometry` takes
         them
     vertices, faces : arrays — a mesh's (m; indices), for ``kind == "mesh"``
@@ -294,9 +296,8 @@ def _local(kind: str, dims: dict, vertices, faces, n: int) -> Sketch:
     if kind == "ellipsoid":
         return _ellipsoid(*(float(x) for x in d["semi_axes"]), n)
     if kind == "given":
-        semi, axes = equivalent_ellipsoid(d["mass"], d["inertia"])
-        s = _ellipsoid(*(float(x) for x in semi), n)
-        return _make(s.vertices @ axes.T, s.faces, points=[(0.0, 0.0, 0.0)])
+        s = _ellipsoid(*(float(x) for x in d["semi_axes"]), n)
+        return _make(s.vertices, s.faces, points=[(0.0, 0.0, 0.0)])
     if kind == "torus":
         R, r = float(d["major_radius"]), float(d["minor_radius"])
         prof = _arc(r, 0.0, 2.0 * math.pi, n // 3, cr=R)[:-1]
@@ -319,20 +320,6 @@ def sketch(outline, n: int = SEGMENTS, max_triangles: int | None = None) -> Sket
     if outline.kind == "mesh" and len(F) < int(dict(outline.dims).get("triangles", len(F))):
         s = replace(s, rough=True)
     return s.placed(outline.at, outline.R)
-
-
-def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
-    """Semi-axes (m) and axes (columns) of the uniform ellipsoid with a part's ``mass`` (kg)
-    and ``inertia`` about its com (kg m², 3×3): ``a² = 5 (I₂ + I₃ − I₁) / (2 m)``, etc.
-
-    For drawing a part given only by its mass properties. A rank-deficient tensor gives
-    zero semi-axes (a flat or needle ellipsoid).
-    """
-    w, v = np.linalg.eigh(0.5 * (np.asarray(inertia, dtype=float) + np.asarray(inertia, dtype=float).T))
-    s = np.clip(np.array([w[1] + w[2] - w[0], w[0] + w[2] - w[1], w[0] + w[1] - w[2]]), 0.0, None)
-    if np.linalg.det(v) < 0:
-        v[:, 2] = -v[:, 2]
-    return np.sqrt(2.5 * s / float(mass)), v
 
 
 def decimate(vertices, faces, max_triangles: int = MESH_MAX_TRIANGLES) -> tuple[np.ndarray, np.ndarray]:
