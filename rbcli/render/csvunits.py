@@ -167,6 +167,8 @@ UNITS: dict[str, dict[str, str]] = {
         "kappa": NM, "lean_frequency": RADS, "growth_rate": PER_S,
         "lean_frequency_squared": "rad^2/s^2",
         "tyre_radius": M, "g": MS2, "axle": ONE, "axle_through": M, "com": M,
+        "band_width": M, "band_edges": M, "knife_edge_critical_spin": RADS,
+        "knife_edge_critical_speed": MS,
         **_ASYMMETRY,
     },
     "whirl": {
