@@ -2,18 +2,25 @@
 
 A leaf module (stdlib + numpy only) shared by io (which builds it) and core and
 render (which read it). Every vector is in the body frame.
+
+Bodies are values, deeply immutable whatever path built them (the loader, ``Part(...)`` in
+code, ``dataclasses.replace``): every array is read-only (a writable one passed in is
+copied), ``Part.extra`` and ``Body.units`` are read-only mappings of their own, the
+sequences are tuples. One body, one answer.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from types import MappingProxyType
 
 import numpy as np
 
 from rbcli.errors import Location
 
-
 _FLOAT = np.dtype(float)
+#: the empty read-only mapping (most parts' ``extra``, an SI body's ``units``): one shared object
+EMPTY_MAPPING: MappingProxyType = MappingProxyType({})
 
 
 def _frozen(a, dtype=_FLOAT) -> np.ndarray:
@@ -30,28 +37,60 @@ def _frozen(a, dtype=_FLOAT) -> np.ndarray:
     return a
 
 
+def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
+    """Semi-axes (m) and axes (columns) of the uniform ellipsoid with a part's ``mass`` (kg)
+    and ``inertia`` about its com (kg m², 3×3): ``a² = 5 (I₂ + I₃ − I₁) / (2 m)``, etc.
+
+    The shape a part given only by its mass properties is drawn as and measured by (the
+    plausibility warnings' distance from a spin axis). A rank-deficient tensor gives zero
+    semi-axes (a flat or needle ellipsoid).
+    """
+    w, v = np.linalg.eigh(0.5 * (np.asarray(inertia, dtype=float) + np.asarray(inertia, dtype=float).T))
+    s = np.clip(np.array([w[1] + w[2] - w[0], w[0] + w[2] - w[1], w[0] + w[1] - w[2]]), 0.0, None)
+    if np.linalg.det(v) < 0:
+        v[:, 2] = -v[:, 2]
+    return np.sqrt(2.5 * s / float(mass)), v
+
+
+def _freeze_fields(obj: object, names: tuple[str, ...], optional: bool = False) -> None:
+    """Make the array fields ``names`` of the frozen dataclass ``obj`` read-only
+    (:func:`_frozen`); None stays None when ``optional``."""
+    for name in names:
+        a = getattr(obj, name)
+        if a is None and optional:
+            continue
+        f = _frozen(a)
+        if f is not a:
+            object.__setattr__(obj, name, f)
+
+
+def _mapping(m) -> MappingProxyType:
+    """A read-only mapping of its own with the items of ``m`` (EMPTY_MAPPING when empty)."""
+    if m is EMPTY_MAPPING:
+        return m
+    return MappingProxyType(dict(m)) if m else EMPTY_MAPPING
+
+
 @dataclass(frozen=True, slots=True)
 class Outline:
     """What a drawing of a part needs: its shape, its local dimensions and its placement.
 
-    Built by the body loader beside the part; read by :mod:`rbcli.core.outline`, which turns
-    it into surface triangles and outlines for the body figure. Nothing here is used by
-    any calculation.
+    Built by the body loader beside the part; read by :mod:`rbcli.render.outline`, which
+    turns it into surface triangles and outlines for the body figure when one is drawn.
+    Nothing here is used by any calculation.
 
     Attributes
     ----------
-    kind : str — a primitive shape name (SPEC §1), ``"given"`` (drawn as the part's
-        equivalent uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or
-        ``"mesh"``
+    kind : str — a primitive shape name (SPEC §1), ``"given"`` (the part's equivalent
+        uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or ``"mesh"``
     dims : tuple[tuple[str, object], ...] — the shape's parameters as
         :func:`rbcli.core.shapes.geometry` took them (lengths in m, ``size`` and
         ``semi_axes`` as tuples, ``vertices`` as three 3-tuples, ``shell`` a bool); for a
         mesh ``(("triangles", n),)``, the file's count. ``dict(outline.dims)`` reads them.
     at : (3,) ndarray — m, the local origin in the body frame
     R : (3, 3) ndarray — the local-to-body rotation (its columns are the local axes)
-    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame, decimated
-        to at most :data:`rbcli.core.outline.MESH_MAX_TRIANGLES` triangles (not the file's
-        mesh: a drawing's copy)
+    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame: the file's
+        mesh (a figure draws a decimated copy)
     faces : (k, 3) int ndarray | None — a mesh's triangles (indices into ``vertices``)
 
     The arrays are read-only.
@@ -74,24 +113,6 @@ class Outline:
             object.__setattr__(self, "vertices", _frozen(self.vertices))
             object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
 
-    @staticmethod
-    def of_frozen(kind: str, dims: tuple, at: np.ndarray, R: np.ndarray,
-                  vertices: np.ndarray | None = None, faces: np.ndarray | None = None) -> Outline:
-        """``Outline(kind, dims, at, R, vertices, faces)`` for arrays that the constructor
-        would keep as they are (read-only views of read-only arrays that own their data: the
-        body loader's rows, one outline a part; a mesh outline's own arrays), without
-        checking them again (made as :func:`_twin` says)."""
-        o = _OutlineFields()
-        o.kind = kind
-        o.dims = dims
-        o.at = at
-        o.R = R
-        o.vertices = vertices
-        o.faces = faces
-        o.__class__ = Outline
-        return o
-
-
 
 @dataclass(frozen=True, slots=True)
 class Part:
@@ -109,10 +130,13 @@ class Part:
     measure_kind : str — "volume", "area", "length", "point" or "given"
     radius : float | None — m, the outer radius of a round part (disk, ring, cylinder, ...)
     axis : (3,) ndarray — the part's local z axis in the body frame
-    extra : dict — shape-specific facts worth reporting (e.g. a mesh's volume and area)
+    extra : Mapping[str, object] — shape-specific facts worth reporting (e.g. a mesh's
+        volume and area), read-only
     where : Location | None — where the part is defined
     outline : Outline | None — the part's shape and placement for drawings (None when the
         loader did not record one: it is then drawn as a dot at its com)
+
+    The arrays are read-only (writable ones passed in are copied).
     """
 
     name: str
@@ -124,58 +148,31 @@ class Part:
     measure: float | None = None
     measure_kind: str = "point"
     radius: float | None = None
-    axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
-    extra: dict = field(default_factory=dict)
+    axis: np.ndarray = field(default_factory=lambda: _frozen(np.array([0.0, 0.0, 1.0])))
+    extra: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
     where: Location | None = None
     outline: Outline | None = None
+
+    def __post_init__(self) -> None:
+        _freeze_fields(self, ("com", "inertia_com", "axis"))
+        if self.extra is not EMPTY_MAPPING:
+            object.__setattr__(self, "extra", _mapping(self.extra))
 
     @property
     def signed_mass(self) -> float:
         """kg, negative for a subtracted part."""
         return -self.mass if self.subtract else self.mass
 
-    @staticmethod
-    def positional(name, shape, mass, subtract, com, inertia_com, measure, measure_kind,
-                   radius, axis, extra, where, outline) -> Part:
-        """``Part(...)`` with every field given in order, made as :func:`_twin` says (the
-        body loader makes one a part: 100 000 in a large body)."""
-        o = _PartFields()
-        o.name = name
-        o.shape = shape
-        o.mass = mass
-        o.subtract = subtract
-        o.com = com
-        o.inertia_com = inertia_com
-        o.measure = measure
-        o.measure_kind = measure_kind
-        o.radius = radius
-        o.axis = axis
-        o.extra = extra
-        o.where = where
-        o.outline = outline
-        o.__class__ = Part
-        return o
-
-
-def _twin(cls: type) -> type:
-    """A plain class with the slots of the frozen dataclass ``cls``, to make its many
-    instances quickly: an object of the twin, its fields assigned (~20 ns each), then given
-    ``cls`` as its class (the same slots: Python allows it), is the object ``cls(...)``
-    makes, whose frozen ``__init__`` sets each field with ``object.__setattr__`` (~150 ns
-    each). tests/test_body_fast.py compares the two."""
-    return type(f"_{cls.__name__}Fields", (), {"__slots__": cls.__slots__})
-
-
-_PartFields = _twin(Part)
-_OutlineFields = _twin(Outline)
-
 
 @dataclass(frozen=True)
 class Shaft:
-    """A shaft line: unit ``axis`` through the point ``through`` (m)."""
+    """A shaft line: unit ``axis`` through the point ``through`` (m); read-only arrays."""
 
     axis: np.ndarray
     through: np.ndarray
+
+    def __post_init__(self) -> None:
+        _freeze_fields(self, ("axis", "through"))
 
 
 @dataclass(frozen=True)
@@ -197,8 +194,8 @@ class Body:
     inputs : tuple[str, ...] — real paths of every file read to build the body: the body
         file, every include at any depth and every mesh file (outputs must avoid them);
         empty for standard input or ``-e`` unless those include files or meshes
-    units : dict[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its bare
-        numbers mean; empty for SI
+    units : Mapping[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its
+        bare numbers mean; empty for SI; read-only
 
     The loader also leaves the body's combined mass properties on it (not a field: a
     ``dataclasses.replace`` with other parts does not carry them); commands read them with
@@ -217,4 +214,12 @@ class Body:
     description: str = ""
     warnings: tuple[str, ...] = ()
     inputs: tuple[str, ...] = ()
-    units: dict = field(default_factory=dict)
+    units: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
+
+    def __post_init__(self) -> None:
+        _freeze_fields(self, ("reference", "pivot"), optional=True)
+        for name in ("parts", "warnings", "inputs"):
+            value = getattr(self, name)
+            if value.__class__ is not tuple:
+                object.__setattr__(self, name, tuple(value))
+        object.__setattr__(self, "units", _mapping(self.units))

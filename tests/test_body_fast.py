@@ -217,11 +217,11 @@ def test_the_batch_size_does_not_change_a_number(monkeypatch, batch):
     makes the same BLAS call for each matrix of a stack). One at a time takes the paths for
     a batch of one kind (placing._units of diagonal inertias only, rotation.from_specs of
     one kind or of none); all at once the mixed ones."""
-    import rbcli.io.body as io_body
+    import rbcli.io.parts as io_parts
 
     text = _body_text(200)
     whole = load_text(text, "<bench>", ROOT)
-    monkeypatch.setattr(io_body, "BATCH", batch)
+    monkeypatch.setattr(io_parts, "BATCH", batch)
     small = load_text(text, "<bench>", ROOT)
     for a, b in zip(whole.parts, small.parts, strict=True):
         assert a.name == b.name and a.mass == b.mass
@@ -331,55 +331,6 @@ def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
     with pytest.raises(InputError, match="not physically possible"):
         load_text("{parts: [{shape: sphere, mass: 10, radius: 1}, "
                   "{shape: point, mass: 1, at: [0, 0, 5], subtract: true}]}", "<t>", ROOT)
-
-
-def test_placed_parts_are_what_the_plain_constructors_make(generated):
-    # placing.finish makes Parts positionally and outlines by Outline.of_frozen (no checks):
-    # the same objects as Part(**by name) and Outline(...), whose arrays it keeps as given
-    import dataclasses
-
-    from rbcli.model import Outline, Part, _frozen
-
-    assert [f.name for f in dataclasses.fields(Part)] == [
-        "name", "shape", "mass", "subtract", "com", "inertia_com", "measure", "measure_kind",
-        "radius", "axis", "extra", "where", "outline"]
-    body, _ = generated
-    for p in body.parts:
-        if p.shape in ("mesh", "given") or "/" in p.name:
-            continue
-        o = p.outline
-        plain = Outline(o.kind, o.dims, o.at, o.R)
-        assert plain == o and plain.at is o.at and plain.R is o.R, p.name
-        assert _frozen(o.at) is o.at and _frozen(o.R) is o.R
-        assert not o.at.flags.writeable and not o.R.flags.writeable
-        assert p.extra == {} and p.outline.vertices is None and p.outline.faces is None
-        assert dataclasses.replace(p) == p
-
-
-def test_the_quick_constructors_make_what_the_dataclasses_make():
-    # model.Part.positional and Outline.of_frozen assign a twin class's slots, then make the
-    # object a Part / an Outline: equal to the constructors' objects, of that very class,
-    # frozen, and without an instance dict
-    import dataclasses
-
-    from rbcli.errors import Location
-    from rbcli.model import Outline, Part
-
-    at = np.zeros(3)
-    at.setflags(write=False)
-    R = np.eye(3)
-    R.setflags(write=False)
-    o = Outline.of_frozen("box", (("size", (1.0, 2.0, 3.0)),), at, R)
-    assert type(o) is Outline and o == Outline("box", (("size", (1.0, 2.0, 3.0)),), at, R)
-    args = ("b", "box", 2.0, False, np.ones(3), np.eye(3), 6.0, "volume", None, np.array([0.0, 0, 1]),
-            {}, Location("f", 3, 4), o)
-    p = Part.positional(*args)
-    assert type(p) is Part and p == Part(*args) and dataclasses.replace(p) == p
-    assert [getattr(p, f.name) for f in dataclasses.fields(Part)] == list(args)
-    for obj, field in ((p, "mass"), (o, "kind")):
-        with pytest.raises(dataclasses.FrozenInstanceError):
-            setattr(obj, field, 1)
-        assert not hasattr(obj, "__dict__")
 
 
 def _triangle_with_arrays(v):

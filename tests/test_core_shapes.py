@@ -640,10 +640,10 @@ def test_the_registry_is_what_the_loader_schema_and_catalogue_read() -> None:
     from rbcli.cli.app import MANUAL
     from rbcli.cli.catalog import SPECIAL
     from rbcli.core.shapes import IO_SHAPES, SHAPES
-    from rbcli.io import body as b
+    from rbcli.io.parts import SPECIAL_SHAPES
     from rbcli.io.schema import body_schema
 
-    assert b.SPECIAL_SHAPES == tuple(IO_SHAPES) and set(SPECIAL) == set(IO_SHAPES)
+    assert SPECIAL_SHAPES == tuple(IO_SHAPES) and set(SPECIAL) == set(IO_SHAPES)
     assert body_schema()["definitions"]["part"]["properties"]["shape"]["enum"] == [*SHAPES, *IO_SHAPES]
     listed = MANUAL[""]["notes"][0]
     assert all(name in listed for name in [*SHAPES, *IO_SHAPES]), "rbcli(1) lists every shape"

@@ -29,6 +29,7 @@ from conftest import sampled_params
 
 from rbcli.errors import InputError
 from rbcli.io import body as body_mod
+from rbcli.io import includes as includes_mod
 from rbcli.io import outfile
 
 #: what a terminal must never receive from rbcli's messages or tables
@@ -231,14 +232,14 @@ def test_an_include_diamond_is_parsed_once_per_file(tmp_path, monkeypatch):
     parses: list[str] = []
     real_load = body_mod.ys.load
 
-    def counting(data, filename):
+    def counting(data, filename, **kw):
         parses.append(filename)
-        return real_load(data, filename)
+        return real_load(data, filename, **kw)
 
     monkeypatch.setattr(body_mod.ys, "load", counting)
     reads: list[str] = []
-    real_read = body_mod._read_file
-    monkeypatch.setattr(body_mod, "_read_file", lambda p, where=None: reads.append(str(p)) or real_read(p, where))
+    real_read = includes_mod.read_body_file
+    monkeypatch.setattr(includes_mod, "read_body_file", lambda p, where=None: reads.append(str(p)) or real_read(p, where))
     b = body_mod.load_body(str(top))
     assert len(parses) == 16 and len(set(parses)) == 16  # linear work: each file once
     assert len(reads) == 16
@@ -293,11 +294,11 @@ def test_nested_unit_powers_are_refused_at_once(cli, args):
 
 
 def test_unit_powers_are_bounded_before_anything_is_expanded():
-    from rbcli.io import units
+    from rbcli.io import unitparse, units
 
     calls = []
-    real = units._UnitParser.expand
-    units._UnitParser.expand = lambda self, p: calls.append(dict(p)) or real(self, p)
+    real = unitparse._UnitParser.expand
+    unitparse._UnitParser.expand = lambda self, p: calls.append(dict(p)) or real(self, p)
     try:
         with pytest.raises(units.UnitError, match="power of 'mm' reaches 144"):
             units.parse_quantity(f"1 {NESTED}")
@@ -305,7 +306,7 @@ def test_unit_powers_are_bounded_before_anything_is_expanded():
         assert units.parse_unit("(mm^2)^3")[1] == units.Dim(L=6)
         assert units.parse_unit("kg*m^2/s^2")[0] == 1.0
     finally:
-        units._UnitParser.expand = real
+        unitparse._UnitParser.expand = real
 
 
 INPUT_DEVICES = ["/dev/zero", "/dev/urandom", "/dev/null"]
@@ -371,9 +372,7 @@ def test_matplotlib_math_in_a_name_is_shown_as_text(cli, tmp_path, name):
 
 NUL_CASES = [
     "{shape: include, file: \"a\\0b.yaml\"}",
-    pytest.param("{shape: mesh, file: \"a\\0b.stl\", density: 1}", marks=pytest.mark.xfail(
-        reason="the mesh reader (io/meshfile.py, another branch) is to read through "
-               "rbcli.io.reader.read_regular, which refuses a NUL", strict=False)),
+    "{shape: mesh, file: \"a\\0b.stl\", density: 1}",
 ]
 
 

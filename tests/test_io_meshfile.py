@@ -348,7 +348,8 @@ def test_obj_index_out_of_range_names_the_line(tmp_path):
 def test_obj_malformed_lines(tmp_path):
     path = tmp_path / "bad.obj"
     cases = [
-        ("v 0 0\n", r":1: vertex line needs x y z"),
+        ("v 0 0\nf 1 2 3\n", r":1: vertex line needs x y z"),
+        ("v 0 0\n", r"obj file without faces"),  # no face line: refused before the numbers
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", r":4: face needs at least 3 vertices"),
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", r":4: bad face index 'x'"),
         ("v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n", r":2: 'zero' is not a number"),
@@ -442,12 +443,12 @@ def test_weld_merges_exact_duplicates_only():
 
 
 def test_weld_is_exact_even_when_every_hash_collides(monkeypatch):
-    import rbcli.io.meshfile as meshfile
+    import rbcli.io.meshweld as meshweld
 
     rng = np.random.default_rng(8)
     pts = rng.normal(size=(40, 3))[rng.integers(0, 40, 300)]
     good_u, good_inv = weld(pts)
-    monkeypatch.setattr(meshfile, "_MIX", (np.uint64(0),) * 3)  # every key the same
+    monkeypatch.setattr(meshweld, "_MIX", (np.uint64(0),) * 3)  # every key the same
     u, inv = weld(pts)
     assert len(u) == len(good_u) == len(np.unique(pts, axis=0))
     np.testing.assert_array_equal(u[inv], pts)
@@ -457,22 +458,22 @@ def test_weld_is_exact_even_when_every_hash_collides(monkeypatch):
 
 
 def _fast_and_slow_stl(path):
-    import rbcli.io.meshfile as meshfile
+    import rbcli.io.meshstl as meshstl
 
     data = pathlib.Path(path).read_bytes()
     with open(path, "rb") as fh:
-        fast = meshfile._read_stl_ascii_fast(fh, len(data))
+        fast = meshstl._read_stl_ascii_fast(fh, len(data))
     if fast is not None:  # (each block's distinct corners, which one each corner is)
         points, inverse = fast
         fast = points[inverse]
-    return fast, meshfile._read_stl_ascii(str(path), data)
+    return fast, meshstl._read_stl_ascii(str(path), data)
 
 
 def _fast_and_slow_obj(path):
-    import rbcli.io.meshfile as meshfile
+    import rbcli.io.meshobj as meshobj
 
     data = pathlib.Path(path).read_bytes()
-    return meshfile._read_obj_fast(data), meshfile._read_obj_lines(str(path), data)
+    return meshobj._read_obj_fast(data), meshobj._read_obj_lines(str(path), data)
 
 
 def bits(a):
@@ -480,9 +481,9 @@ def bits(a):
 
 
 def test_fast_ascii_stl_reader_gives_the_line_readers_bits(tmp_path, monkeypatch):
-    import rbcli.io.meshfile as meshfile
+    import rbcli.io.meshstl as meshstl
 
-    monkeypatch.setattr(meshfile, "_CHUNK", 1000)  # many blocks, cut at facet ends
+    monkeypatch.setattr(meshstl, "_CHUNK", 1000)  # many blocks, cut at facet ends
     v, f = sphere_arrays()
     v = v * np.random.default_rng(1).lognormal(0, 3, v.shape)  # digits of every size
     files = [write_ascii_stl(tmp_path / "a.stl", v, f)]
@@ -501,9 +502,9 @@ def test_fast_ascii_stl_reader_gives_the_line_readers_bits(tmp_path, monkeypatch
 
 @pytest.mark.parametrize("block", [1 << 24, 300])  # one block; many, cut between lines
 def test_fast_obj_reader_gives_the_line_readers_bits(tmp_path, monkeypatch, block):
-    import rbcli.io.meshfile as meshfile
+    import rbcli.io.meshobj as meshobj
 
-    monkeypatch.setattr(meshfile, "_CHUNK", block)
+    monkeypatch.setattr(meshobj, "_CHUNK", block)
     v, f = sphere_arrays()
     v = v * np.random.default_rng(2).lognormal(0, 3, v.shape)
     lines = ["# made here", "o part", "mtllib x.mtl"]
@@ -540,9 +541,9 @@ def test_fast_obj_reader_gives_the_line_readers_bits(tmp_path, monkeypatch, bloc
     ],
 )
 def test_what_the_fast_obj_reader_does_not_take_goes_to_the_line_reader(tmp_path, text):
-    import rbcli.io.meshfile as meshfile
+    import rbcli.io.meshobj as meshobj
 
-    assert meshfile._read_obj_fast(text.encode()) is None
+    assert meshobj._read_obj_fast(text.encode()) is None
 
 
 def test_obj_line_continuation(tmp_path):

@@ -62,7 +62,8 @@ def _ulps(a: float, b: float) -> float:
 # Names in our table -> pint's name for the same unit (identical unless listed).
 # pint's "mil" is an angle (the NATO mil); the engineer's mil is pint's "thou". pint has no
 # "lbm": it is the avoirdupois pound.
-PINT_NAME = {"rev": "revolution", "r/min": "rpm", "mil": "thou", "lbm": "pound"}
+PINT_NAME = {"rev": "revolution", "r/min": "rpm", "mil": "thou", "lbm": "pound", "lbs": "pound",
+             "in.": "inch"}
 # Test-side list of how many angle dimensions each unit carries (pint cannot tell us:
 # it treats the radian as dimensionless).
 ANGLE_EXPONENT = {
@@ -583,6 +584,22 @@ def test_unit_table_lists_every_unit():
         ("4 mil", "4 thou"),
         ("4 thou", "4 thou"),
         ("4 lbm*in2", "4 pound*inch**2"),
+        # issue 24: what people type
+        ("3 lbs", "3 pound"),
+        ("1 pound", "1 pound"),
+        ("2.5 pounds", "2.5 pound"),
+        ("2 LBS", "2 pound"),
+        ("1 inch", "1 inch"),
+        ("3 inches", "3 inch"),
+        ("3 in.", "3 inch"),
+        ("3 in.^2", "3 inch**2"),
+        ("4 in.*lbs", "4 inch*pound"),
+        ("5 ft", "5 foot"),
+        ("1 foot", "1 foot"),
+        ("6 feet", "6 foot"),
+        ("60 mph", "60 mile/hour"),
+        ("10 ft/s", "10 foot/second"),
+        ("2 lbs*ft^2", "2 pound*foot**2"),
     ],
 )
 def test_spellings_people_use_agree_with_pint(ureg, ours, pints):
@@ -605,6 +622,44 @@ def test_case_folding_never_changes_a_prefix_or_symbol(text):
         parse_quantity(text)
 
 
+def test_linear_speeds_people_type_are_speeds():
+    # mph and ft/s are linear speeds (L/T), never angular ones; exact: 1 mph is 1609.344 m
+    # an hour, 1 ft/s 0.3048 m/s (NIST SP 811)
+    assert to_si("1 mph", "speed") == float(Fraction("1609.344") / 3600)
+    assert to_si("1 ft/s", "speed") == 0.3048
+    with pytest.raises(UnitError, match="a speed"):
+        to_si("60 mph", "angular_speed")
+
+
+@pytest.mark.parametrize("text", ["1 in.m", "1 mm.", "1 kg.m^2", "1 in..", "1 .in"])
+def test_a_point_is_part_of_in_only(text):
+    with pytest.raises(UnitError):
+        parse_quantity(text)
+
+
+@pytest.mark.parametrize(("base", "kind", "shown"), [
+    ({"angular_speed": "RPM"}, "angular_speed", "rpm"),
+    ({"angular_speed": "r/min"}, "angular_speed", "rpm"),
+    ({"length": "inches"}, "length", "in"),
+    ({"length": "in."}, "area", "in^2"),
+    ({"length": "feet", "mass": "LBS"}, "density", "lb/ft^3"),
+    ({"length": "Mm"[1:], "mass": "Kg"}, "inertia", "kg*m^2"),
+    ({"length": "mm", "mass": "g"}, "density", "g/mm^3"),
+    ({"length": "(mm)"}, "length", "(mm)"),  # an expression stays as written
+])
+def test_bare_units_are_named_in_their_canonical_spelling(base, kind, shown):
+    assert unit_for_kind(base, kind)[1] == shown
+
+
+def test_canonical_unit_spelling():
+    from rbcli.io.units import canonical_unit
+
+    for text, shown in [("RPM", "rpm"), (" lbs ", "lb"), ("pounds", "lb"), ("inches", "in"),
+                        ("in.", "in"), ("feet", "ft"), ("Kg", "kg"), ("r/min", "rpm"),
+                        ("mph", "mph"), ("kg/m^3", "kg/m^3"), ("g/cc", "g/cc")]:
+        assert canonical_unit(text) == shown
+
+
 def test_angular_speed_base_unit():
     assert unit_for_kind({"angular_speed": "rpm"}, "angular_speed") == (float(2 * PI / 60), "rpm")
     assert unit_for_kind({"angular_speed": "rpm", "length": "mm"}, "length") == (0.001, "mm")
@@ -617,20 +672,20 @@ def test_angular_speed_base_unit():
 
 @pytest.mark.sampled
 def test_exact_rationals_match_fraction():
-    """io.units' _Q and _decimal give Fraction's values (so every factor rounds the same)."""
+    """io.unittable's Rational and exact_decimal give Fraction's values (so every factor rounds the same)."""
     from fractions import Fraction
 
     from hypothesis import given, settings
     from hypothesis import strategies as st
 
-    from rbcli.io import units as un
+    from rbcli.io import unittable as un
 
     @settings(max_examples=sample(100, 500), deadline=None)
     @given(st.integers(-10**30, 10**30), st.integers(1, 10**30), st.integers(-10**6, 10**6),
            st.integers(1, 10**6), st.integers(-5, 5))
     def check(a, b, c, d, n):
-        q, f = un._Q(a, b), Fraction(a, b)
-        r, g = un._Q(c, d), Fraction(c, d)
+        q, f = un.Rational(a, b), Fraction(a, b)
+        r, g = un.Rational(c, d), Fraction(c, d)
         for x, y in ((q, f), (q * r, f * g), (q * 7, f * 7), (q / 3, f / 3)):
             assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
             assert float(x) == float(y)
@@ -645,7 +700,7 @@ def test_exact_rationals_match_fraction():
     @given(st.from_regex(r"[+-]?(?:[0-9]{1,30}\.?[0-9]{0,30}|\.[0-9]{1,30})(?:[eE][+-]?[0-9]{1,3})?",
                          fullmatch=True))
     def decimal(text):
-        x, y = un._decimal(text), Fraction(text)
+        x, y = un.exact_decimal(text), Fraction(text)
         assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
 
     decimal()
@@ -653,15 +708,17 @@ def test_exact_rationals_match_fraction():
 
 def test_bare_table_names_take_the_short_paths_with_the_same_result():
     """A unit text that is one name of the table skips the parser and the name regex."""
-    from rbcli.io import units as un
+    from rbcli.io import unitparse as up
+    from rbcli.io import unittable as ut
 
-    for name, unit in un._BY_NAME.items():
+    for name, unit in ut.BY_NAME.items():
         if "/" in name:
             continue
-        fast = un._parse_unit_exact(name)
-        slow = un._UnitParser(name, name).parse()
+        fast = up.parse_unit_exact(name)
+        slow = up._UnitParser(name, name).parse()
         assert fast == slow
-        assert un._NAME_RE.fullmatch(name)  # what _is_name assumes of every such name
+        # what _is_name assumes of every such name ('in.': a name and its abbreviation point)
+        assert ut.NAME_RE.fullmatch(name.removesuffix("."))
 
 
 @pytest.mark.sampled
@@ -674,13 +731,14 @@ def test_plain_decimals_are_numbers_for_both_patterns():
     from hypothesis import strategies as st
 
     from rbcli.api import options
+    from rbcli.io import unitparse as up
     from rbcli.io import units as un
 
     @settings(max_examples=sample(300, 3000), deadline=None)
     @given(st.text("0123456789.+-eE \u2212\u0663\u00b2x", max_size=8))
     def check(s):
         if un.plain_decimal(s):
-            assert re.fullmatch(un._NUMBER_RE.pattern, s) and options.NUMBER.fullmatch(s)
+            assert re.fullmatch(up._NUMBER_RE.pattern, s) and options.NUMBER.fullmatch(s)
             assert un.parse_quantity(s) == (float(s), un.Dim())
 
     check()

@@ -3,7 +3,7 @@
 Every decimal parser the readers use (``decimals``, ``np.fromstring`` through
 ``numbers``, and ``floats``, which picks between them) is checked against Python's
 ``float()``, bit for bit, on random and adversarial decimal strings. The grouping of
-equal ``vertex`` texts in an ASCII STL (``_distinct_spans``) is checked to be exact, even
+equal ``vertex`` texts in an ASCII STL (``distinct_spans``) is checked to be exact, even
 when every hash collides, and the reader that uses it against the token-by-token reader
 and against welding every corner.
 """
@@ -17,9 +17,11 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-import rbcli.io.meshfile as mf
-from rbcli.io.meshfile import _distinct_spans, read_mesh
+import rbcli.io.meshstl as ms
+import rbcli.io.meshweld as mw
+from rbcli.io.meshfile import read_mesh
 from rbcli.io.meshnumbers import decimals, floats, numbers
+from rbcli.io.meshweld import distinct_spans
 
 # ------------------------------------------------------------------ strings to parse
 
@@ -161,13 +163,13 @@ def check_groups(strings, first, inverse):
 @pytest.mark.parametrize("collide", [False, True])
 def test_distinct_spans_group_exactly_equal_strings(monkeypatch, collide):
     if collide:  # every hash the same: only the word-by-word comparison separates them
-        monkeypatch.setattr(mf, "_MIX", (np.uint64(0),) * 2)
+        monkeypatch.setattr(mw, "_MIX", (np.uint64(0),) * 2)
     rng = random.Random(4)
     pool = [bytes(rng.choice(b"01.-e \x00") for _ in range(rng.randint(1, 40))) for _ in range(60)]
     pool += [b"1 2 3", b"1 2 3\x00", b"1 2 3\x00\x00", b"x" * 8, b"x" * 9, b"x" * 16, b"x" * 17]
     strings = [rng.choice(pool) for _ in range(3000)]
     a, lo, hi = spans_of(strings)
-    first, inverse = _distinct_spans(a, lo, hi)
+    first, inverse = distinct_spans(a, lo, hi)
     check_groups(strings, first, inverse)
     if not collide:
         assert first.size == len(set(strings))
@@ -176,7 +178,7 @@ def test_distinct_spans_group_exactly_equal_strings(monkeypatch, collide):
 def test_distinct_spans_leave_long_strings_apart():
     strings = [b"7" * 200, b"7" * 200, b"1 2 3"]  # over 128 bytes: no grouping at all
     a, lo, hi = spans_of(strings)
-    first, inverse = _distinct_spans(a, lo, hi)
+    first, inverse = distinct_spans(a, lo, hi)
     assert first.tolist() == [0, 1, 2] and inverse.tolist() == [0, 1, 2]
 
 
@@ -211,23 +213,23 @@ def write_spelled_stl(path, rng):
 def test_ascii_stl_with_spellings_reads_as_the_line_reader_and_welds_every_corner(
     tmp_path, monkeypatch, collide
 ):
-    monkeypatch.setattr(mf, "_CHUNK", 300)  # many blocks: texts repeat across blocks
+    monkeypatch.setattr(ms, "_CHUNK", 300)  # many blocks: texts repeat across blocks
     if collide:
-        monkeypatch.setattr(mf, "_MIX", (np.uint64(0),) * 2)
+        monkeypatch.setattr(mw, "_MIX", (np.uint64(0),) * 2)
     rng = random.Random(9)
     for k in range(5):
         path = tmp_path / f"s{k}.stl"
         v = write_spelled_stl(path, rng)
         data = path.read_bytes()
         with open(path, "rb") as fh:
-            points, inverse = mf._read_stl_ascii_fast(fh, len(data))
-        corners = mf._read_stl_ascii(str(path), data)
+            points, inverse = ms._read_stl_ascii_fast(fh, len(data))
+        corners = ms._read_stl_ascii(str(path), data)
         assert same_bits(points[inverse].ravel(), corners.ravel())
         got = read_mesh(path)
         assert len(got.vertices) == 6  # every spelling of a corner welded into one
         assert np.allclose(np.sort(got.vertices, axis=0), np.sort(v, axis=0), rtol=0, atol=1e-15)  # repr round-trips
         # the weld of all 3F corners, in the same order: the same arrays
-        unique, inv = mf._weld(corners + 0.0)
+        unique, inv = mw.weld_points(corners + 0.0)
         assert same_bits(got.vertices.ravel(), unique.ravel())
         assert got.faces.tolist() == inv.reshape(-1, 3).tolist()
 
@@ -238,27 +240,27 @@ def test_weld_span_gives_the_order_of_the_larger_array(monkeypatch):
     pts = base[rng.integers(0, 300, 5000)]
     for mix in (None, (np.uint64(0),) * 2):  # with and without every hash colliding
         if mix is not None:
-            monkeypatch.setattr(mf, "_MIX", mix)
-        u_all, _ = mf._weld(pts + 0.0)
-        u_few, _ = mf._weld(np.unique(pts, axis=0)[::-1].copy(), span=len(pts))
+            monkeypatch.setattr(mw, "_MIX", mix)
+        u_all, _ = mw.weld_points(pts + 0.0)
+        u_few, _ = mw.weld_points(np.unique(pts, axis=0)[::-1].copy(), span=len(pts))
         assert same_bits(u_all.ravel(), u_few.ravel())
 
 
 @pytest.mark.parametrize("collide", [False, True])
 @pytest.mark.parametrize("dtype", [np.float32, np.float64])
 def test_weld_in_blocks_is_the_weld_of_the_whole_array(monkeypatch, collide, dtype):
-    monkeypatch.setattr(mf, "_WELD_BLOCK", 64)  # many blocks, and points repeated across them
+    monkeypatch.setattr(mw, "_WELD_BLOCK", 64)  # many blocks, and points repeated across them
     if collide:
-        monkeypatch.setattr(mf, "_MIX", (np.uint64(0),) * 2)
+        monkeypatch.setattr(mw, "_MIX", (np.uint64(0),) * 2)
     rng = np.random.default_rng(12)
     base = rng.normal(size=(700, 3)).astype(dtype)
     pts = base[rng.integers(0, 700, 9000)] + dtype(0)
-    whole_u, whole_inv = mf._weld(pts.copy())
+    whole_u, whole_inv = mw.weld_points(pts.copy())
     for span in (0, 50000):
-        u, inv = mf._weld_blocks(pts.copy(), span)
-        ref_u, ref_inv = mf._weld(pts.copy(), span)
+        u, inv = mw.weld_blocks(pts.copy(), span)
+        ref_u, ref_inv = mw.weld_points(pts.copy(), span)
         assert same_bits(u.ravel(), ref_u.ravel()) and inv.tolist() == ref_inv.tolist()
-    u, inv = mf.weld(pts)
+    u, inv = mw.weld(pts)
     assert u.dtype == np.float64 and same_bits(u.ravel(), whole_u.ravel())
     assert inv.tolist() == whole_inv.tolist()
 
@@ -266,12 +268,12 @@ def test_weld_in_blocks_is_the_weld_of_the_whole_array(monkeypatch, collide, dty
 def test_binary_stl_is_the_weld_of_every_corner(tmp_path, monkeypatch):
     import trimesh
 
-    monkeypatch.setattr(mf, "_WELD_BLOCK", 100)
+    monkeypatch.setattr(mw, "_WELD_BLOCK", 100)
     path = tmp_path / "s.stl"
     trimesh.creation.icosphere(subdivisions=3).export(path)
     got = read_mesh(path)
-    rec = np.fromfile(path, dtype=mf._STL_RECORD, offset=84)
+    rec = np.fromfile(path, dtype=ms._STL_RECORD, offset=84)
     corners = np.ascontiguousarray(rec["v"].reshape(-1, 3)) + np.float32(0)
-    u, inv = mf._weld(corners)
+    u, inv = mw.weld_points(corners)
     assert same_bits(got.vertices.ravel(), u.ravel())
     assert got.faces.tolist() == inv.reshape(-1, 3).tolist()

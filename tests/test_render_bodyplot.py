@@ -1,4 +1,4 @@
-"""The body as built (issue 17.5): each part's outline (rbcli.core.outline) lies on the
+"""The body as built (issue 17.5): each part's outline (rbcli.render.outline) lies on the
 shape's true boundary, its shadows on the three views are right (silhouettes, fills,
 holes), meshes are decimated to a cap, and the figure (rbcli.render.bodyplot) renders
 for every example, for a body with a hole and a long shaft, and for every kind of part.
@@ -17,7 +17,7 @@ import pytest
 
 import rbcli
 from conftest import sampled_params
-from rbcli.core import outline as ol
+from rbcli.render import outline as ol
 from rbcli.core.inertia import combine
 from rbcli.core.principal import principal_report
 from rbcli.render.bodyplot import VIEWS, body_figure
@@ -294,12 +294,13 @@ def test_decimation_keeps_a_big_mesh_under_the_cap(tmp_path):
     assert 100 < len(F2) <= ol.MESH_MAX_TRIANGLES
     assert F2.max() < len(V2) and np.all(np.linalg.norm(V2, axis=1) <= 0.1 + 1e-12)
     assert np.all(np.linalg.norm(V2, axis=1) > 0.09)  # merged vertices stay near the surface
-    # through the loader: the part remembers only the decimated copy
+    # through the loader: the part keeps the file's mesh, the figure draws the decimated copy
     sphere.export(tmp_path / "ball.stl")
     (tmp_path / "ball.yaml").write_text("name: ball\nparts:\n  - {shape: mesh, file: ball.stl, density: 1000}\n")
     body = rbcli.load(tmp_path / "ball.yaml")
     o = body.parts[0].outline
-    assert len(o.faces) <= ol.MESH_MAX_TRIANGLES and body.parts[0].extra["triangles"] == 20480
+    assert len(o.faces) == body.parts[0].extra["triangles"] == 20480
+    assert len(ol.sketch(o).faces) <= ol.MESH_MAX_TRIANGLES
     svg = render(body, "mm")
     assert len(svg) < 1_000_000
 

@@ -63,6 +63,8 @@ GOOD = [
     "parts: [{shape: rod, from: [0, 0, 0], to: [1, 0, 0], mass: 1}]",
     "parts: [{shape: given, mass: 1, inertia: {Ixx: 1, Iyy: 1, Izz: 1, Ixy: 0.1, convention: positive}}]",
     "parts: [{shape: given, mass: 1, com: [0, 0, 1], inertia: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}]",
+    "parts: [{shape: given, mass: 1, inertia: {Lxx: 1, Lyy: 1, Lzz: 1, Lxz: 0.1, convention: positive}}]",
+    "parts: [{shape: given, mass: 1, inertia: {Ixx: 1, Lyy: 1, Izz: 1, Iyx: 0, Izy: 0}}]",
     "parts: [{shape: sphere, radius: 1, shell: true, areal_density: 2, rotate: {quaternion: [1, 0, 0, 0]}}]",
     "parts: [{shape: cylinder, radius: 1, length: 2, density: 1}, "
     "{name: h, shape: cylinder, radius: 0.1, length: 2, subtract: true, cut_from: cylinder1}]",
@@ -78,6 +80,9 @@ BAD = [
     "parts: []",  # at least one part
     "parts: [{shape: box, size: [1, 2, 3], mass: 1, rotate: {euler: [1, 2, 3], seq: ZyX}}]",  # mixed case
     "parts: [{shape: given, mass: 1, inertia: {Ixx: 1, Iyy: 1, Izz: 1, convention: cad}}]",
+    "parts: [{shape: given, mass: 1, inertia: {Ixx: 1, Lxx: 1, Iyy: 1, Izz: 1}}]",  # Ixx twice
+    "parts: [{shape: given, mass: 1, inertia: {Ixx: 1, Iyy: 1, Izx: 0, Lxz: 0, Izz: 1}}]",  # Izx twice
+    "parts: [{shape: given, mass: 1, inertia: {Lxx: 1, Lyy: 1}}]",  # no Izz
 ]
 
 

@@ -123,7 +123,7 @@ def _reference_set_key(parent: _OpenMap, event, mark: Mark, filename: str) -> No
     parent.key_mark = mark
 
 
-def _reference_parse(text: str, filename: str) -> Node | None:
+def _reference_parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
     """The straightforward builder (the oracle): public constructors only."""
     loader = ys._LOADER(text)
     stack: list = []

@@ -285,3 +285,84 @@ def placement(ctx: Any, m: ys.MapNode) -> tuple[np.ndarray, np.ndarray]:
     primitives are placed in batches: :mod:`rbcli.io.placing`)."""
     at, spec = placement_spec(ctx, m)
     return np.array(at), rot.from_specs([spec])[0]
+
+
+# --------------------------------------------------------------------------- mass
+
+
+PLACEMENT_KEYS = ("at", "axis", "rotate")
+MASS_KEYS = ("mass", "density", "areal_density", "linear_density")
+DENSITY_FOR = {
+    "volume": "density",
+    "area": "areal_density",
+    "length": "linear_density",
+}
+def _a(word: str) -> str:
+    """``word`` with its indefinite article: "an area", "a volume"."""
+    return f"{'an' if word[:1] in 'aeiou' else 'a'} {word}"
+
+
+
+
+#: what later parts may need from an earlier one (cut_from), by its name: the pair
+#: (its density, or None; its measure kind)
+Known = tuple
+
+
+def mass_source(ctx: Any, m: ys.MapNode, measure_kind: str, known: dict[str, Known], what: str):
+    """Return (mass or None, density or None, the node to blame)."""
+    items = m.items
+    given = list(filter(items.__contains__, MASS_KEYS))  # in MASS_KEYS's order
+    cut = items.get("cut_from")
+    if cut is not None:
+        given.append("cut_from")
+    if len(given) > 1:
+        raise ctx.error(
+            m.items[given[1]][0] if given[1] in m.items else m,
+            f"{what} gives both '{given[0]}' and '{given[1]}'; give exactly one of "
+            "mass, density, areal_density, linear_density (or cut_from for a hole)",
+        )
+    if not given:
+        want = DENSITY_FOR.get(measure_kind)
+        alt = f" or {want}" if want else ""
+        raise ctx.error(m, f"{what} needs its mass{alt}")
+    key = given[0]
+    kmark, node = (cut if key == "cut_from" else m.items[key])
+    if key == "mass":
+        return positive(ctx, node, "mass", f"{what}: mass"), None, node
+    if key == "cut_from":
+        if "subtract" not in m.items or not flag(ctx, m.items["subtract"][1], "subtract"):
+            raise ctx.error(kmark, "cut_from is for holes: it needs 'subtract: true'")
+        src = string(ctx, node, "cut_from")
+        if src not in known:
+            raise ctx.error(node, f"cut_from: no earlier part is named '{src}'{suggest(src, list(known))}")
+        density, kind = known[src]
+        if density is None:
+            raise ctx.error(node, f"cut_from: part '{src}' has no density to take (it is a {kind})")
+        if kind != measure_kind:
+            raise ctx.error(
+                node,
+                f"cut_from: part '{src}' has {_a(DENSITY_FOR.get(kind, kind))} "
+                f"but this {measure_kind} part needs {_a(DENSITY_FOR.get(measure_kind, 'mass'))}",
+            )
+        return None, density, node
+    want = DENSITY_FOR.get(measure_kind)
+    if key != want:
+        hint = f"; use '{want}'" if want else "; give its mass"
+        raise ctx.error(kmark, f"{what} is {_a(measure_kind)} part, so '{key}' does not apply{hint}")
+    kind = key  # density, areal_density, linear_density are also unit kinds
+    return None, positive(ctx, node, kind, f"{what}: {key}"), node
+
+
+def check_mass(ctx: Any, node: ys.Node, what: str, mass: float, how: str) -> None:
+    """A mass computed from a density must stay within the limits of any number (HUGE)."""
+    if not mass <= HUGE:  # also refuses inf and nan
+        raise ctx.error(
+            node,
+            f"{what}: its mass ({how}) is {mass:.3g} kg, too large; "
+            "numbers are limited to 1e60 in SI units",
+        )
+
+
+def subtract(ctx: Any, m: ys.MapNode) -> bool:
+    return flag(ctx, m.items["subtract"][1], "subtract") if "subtract" in m.items else False

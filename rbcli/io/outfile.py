@@ -129,6 +129,7 @@ def check(
     text = os.fspath(path)
     if "\x00" in text:
         raise InputError(f"{option}: the file name contains a NUL character")
+    _probe(text, option)
     p = Path(text)
     if not text or text.endswith(("/", os.sep)) or p.is_dir():
         raise InputError(f"{option}: '{literal(text)}' is a folder; give a file name")
@@ -153,6 +154,26 @@ def check(
     if _kind(p, option) is not None and not (force or replace_ok):
         raise InputError(f"{option}: '{literal(text)}' exists; use --force to replace it")
     return p
+
+
+def _probe(text: str, option: str) -> None:
+    """Refuse a name the system cannot take at all (ENAMETOOLONG: a component over 255
+    bytes or a path over 4096; ELOOP; EACCES on a folder on the way), as an output error,
+    before any other check asks the system about it. A name that does not exist yet, or
+    whose folder is missing or a file, is for the checks after (their own messages)."""
+    if not text:
+        return
+    try:
+        os.lstat(text)
+    except (FileNotFoundError, NotADirectoryError):
+        pass
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{option}: cannot write '{_shown_name(text)}': {_reason(exc)}") from None
+
+
+def _shown_name(text: str, limit: int = 80) -> str:
+    """A file name for a message: cut when it is long (its length said)."""
+    return text if len(text) <= limit else f"{text[:limit // 2]}… ({len(text)} characters)"
 
 
 def _kind(path: str | Path, option: str) -> os.stat_result | None:

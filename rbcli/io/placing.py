@@ -21,7 +21,7 @@ import numpy as np
 
 from rbcli.core import rotation as rot
 from rbcli.errors import Location
-from rbcli.model import Outline, Part
+from rbcli.model import EMPTY_MAPPING, Outline, Part
 
 #: primitives placed per batch: large enough for numpy to pay, small enough that the
 #: batch's arrays and pending parts add little to the peak memory of a large body
@@ -46,6 +46,11 @@ class Pending:
     com: object  # the local com: a 3-tuple or (3,) array
     unit_inertia: object  # the 3 diagonal entries, or a (3, 3) array
     dims: tuple
+
+
+def place(part_com, part_I, at, R):
+    """A part placed one by one (a mesh or given part): ``(at + R com, R J Rᵀ)``."""
+    return at + R @ part_com, R @ part_I @ R.T
 
 
 def dims_of(params: dict) -> tuple:
@@ -102,7 +107,8 @@ def _mixed_units(pending: list) -> np.ndarray:
 
 def _placed(pending: list) -> tuple:
     """``pending`` placed: (coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines'
-    origins (n, 3) and rotations (n, 3, 3), read-only arrays that own their data)."""
+    origins (n, 3) and rotations (n, 3, 3)), read-only arrays that own their data (their
+    rows are the parts' arrays: :class:`rbcli.model.Part` keeps such rows, not copies)."""
     ats = _rows([p.at for p in pending])  # (n, 3), not a view (see model._frozen)
     Rs = rot.from_specs([p.spec for p in pending])
     local_coms = _rows([p.com for p in pending])
@@ -113,8 +119,8 @@ def _placed(pending: list) -> tuple:
     axes = Rs[:, :, 2].copy()
     if Rs.base is not None:  # the outlines' rows: of an array that owns its data
         Rs = Rs.copy()
-    ats.setflags(write=False)
-    Rs.setflags(write=False)
+    for a in (coms, Js, axes, ats, Rs):  # the parts' rows: read-only, kept as they are
+        a.setflags(write=False)
     return coms, Js, axes, ats, Rs
 
 
@@ -133,17 +139,14 @@ def finish(items: list, start: int = 0) -> list:
     dims = [p.dims for p in pending]
     coms, Js, axes, ats, Rs = _placed(pending)
     del pending  # each one goes when its Part replaces it (the peak memory of a large body)
-    outline = Outline.of_frozen  # read-only rows of read-only arrays, as Outline keeps them
-    part = Part.positional
     i = 0
     for k in range(start, len(items)):
         p = items[k]
         if p.__class__ is not Pending:
             continue
-        # Part's fields in order (positional: one part after another in a large body)
-        items[k] = part(
+        items[k] = Part(
             p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
-            p.radius, axes[i], {}, p.where, outline(p.shape, dims[i], ats[i], Rs[i]),
+            p.radius, axes[i], EMPTY_MAPPING, p.where, Outline(p.shape, dims[i], ats[i], Rs[i]),
         )
         i += 1
     return items
@@ -197,8 +200,8 @@ class Stack:
         if len(pieces) == 1:
             return pieces[0]
         arrays = [np.concatenate([getattr(s, f) for s in pieces]) for f in cls.__slots__[2:]]
-        arrays[3].setflags(write=False)  # at, R: the outlines' (read-only, own data)
-        arrays[4].setflags(write=False)
+        for a in arrays:  # read-only, own data: the Parts keep their rows
+            a.setflags(write=False)
         return cls([n for s in pieces for n in s.names], [r for s in pieces for r in s.rows], *arrays)
 
     @classmethod
@@ -221,25 +224,23 @@ class Stack:
         axis = self.axis @ R.T
         o_at = at + (R @ self.at[:, :, None])[:, :, 0]
         o_R = R @ self.R
-        o_at.setflags(write=False)
-        o_R.setflags(write=False)
+        for a in (com, inertia, axis, o_at, o_R):  # read-only, own data: the Parts keep rows
+            a.setflags(write=False)
         return Stack([prefix + n for n in self.names], self.rows, com, inertia, axis, o_at, o_R)
 
     def parts(self) -> list[Part]:
         """The stacked parts as :class:`Part` s (their arrays rows of the stack's)."""
         out = []
-        outline = Outline.of_frozen
-        part = Part.positional
         for name, r, com, J, axis, at, R in zip(self.names, self.rows, self.com, self.inertia,
                                                 self.axis, self.at, self.R):
             if r.__class__ is Pending:
-                o = outline(r.shape, r.dims, at, R)
-                extra = {}
+                o = Outline(r.shape, r.dims, at, R)
+                extra = EMPTY_MAPPING
             else:
                 o = r.outline
-                o = None if o is None else outline(o.kind, o.dims, at, R, o.vertices, o.faces)
+                o = None if o is None else Outline(o.kind, o.dims, at, R, o.vertices, o.faces)
                 extra = r.extra
-            out.append(part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
+            out.append(Part(name, r.shape, r.mass, r.subtract, com, J, r.measure, r.measure_kind,
                             r.radius, axis, extra, r.where, o))
         return out
 

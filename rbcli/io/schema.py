@@ -9,7 +9,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from rbcli.core.shapes import SHAPES
-from rbcli.io import body as b
+from rbcli.io.body import UNIT_KEYS
+from rbcli.io.givenpart import INERTIA_NAMES
+from rbcli.io.parts import SPECIAL_SHAPES
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
 
@@ -88,10 +90,16 @@ def _variants(extra: dict) -> list[dict]:
                 {
                     "type": "object",
                     "properties": {
-                        **{k: {"$ref": "#/definitions/quantity"} for k in b.INERTIA_MAP_KEYS[:6]},
+                        **{k: {"$ref": "#/definitions/quantity"} for names in INERTIA_NAMES.values()
+                           for k in names},
                         "convention": {"enum": ["tensor", "positive"]},
                     },
-                    "required": ["Ixx", "Iyy", "Izz"],
+                    # each diagonal entry under one of its names; no entry under two
+                    "allOf": [
+                        *({"anyOf": [{"required": [n]} for n in INERTIA_NAMES[d]]} for d in ("Ixx", "Iyy", "Izz")),
+                        *({"not": {"required": [a, b]}} for names in INERTIA_NAMES.values()
+                          for i, a in enumerate(names) for b in names[i + 1:]),
+                    ],
                     "additionalProperties": False,
                 },
             ]
@@ -126,7 +134,7 @@ def _variants(extra: dict) -> list[dict]:
 
 
 def body_schema() -> dict:
-    shapes = [*SHAPES, *b.SPECIAL_SHAPES]
+    shapes = [*SHAPES, *SPECIAL_SHAPES]
     part = {
         "type": "object",
         "properties": {"shape": {"enum": shapes}},
@@ -135,7 +143,7 @@ def body_schema() -> dict:
     }
     units = {
         "type": "object",
-        "properties": {k: {"type": "string"} for k in b.UNIT_KEYS},
+        "properties": {k: {"type": "string"} for k in UNIT_KEYS},
         "additionalProperties": False,
         "description": "what bare numbers mean (default SI; bare angles are degrees, bare angular "
         "speeds rad/s unless angular_speed names a unit such as rpm)",

@@ -22,7 +22,6 @@ are always strings.
 
 from __future__ import annotations
 
-import gc
 import re
 from dataclasses import FrozenInstanceError
 from typing import NamedTuple
@@ -98,10 +97,11 @@ class Node:
     ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
     ``"bool"``, ``"null"``.
 
-    The loader stores libyaml's own (0-based) start mark of the node's event, which
-    the event already carries, and ``.mark`` turns it into a :class:`Mark` when first
-    read: most marks are never read (they locate errors), and making two million of
-    them up front was a tenth of the load time of a 100 000-part body.
+    The loader stores the node's 0-based start as one integer, ``line << 32 | column``
+    (not an object the cyclic garbage collector would track: a large body's tree holds
+    millions), and ``.mark`` turns it into a :class:`Mark` when first read: most marks are
+    never read (they locate errors), and making two million of them up front was a tenth
+    of the load time of a 100 000-part body.
     """
 
     __slots__ = ("_mark",)
@@ -113,8 +113,8 @@ class Node:
     def mark(self) -> Mark:
         """Where the node starts (1-based line and column)."""
         m = self._mark
-        if m.__class__ is not Mark:  # libyaml's mark, as the loader keeps it
-            m = _new_tuple(Mark, (m.line + 1, m.column + 1))
+        if m.__class__ is int:  # as the loader keeps it: line << 32 | column, 0-based
+            m = _new_tuple(Mark, ((m >> 32) + 1, (m & 0xFFFFFFFF) + 1))
             _set_mark(self, m)
         return m
 
@@ -527,7 +527,7 @@ _new_tuple = tuple.__new__
 _new_object = object.__new__
 
 
-def _parse(text: str, filename: str) -> Node | None:
+def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
     """Build the node tree from libyaml's (iterative) event stream in one pass.
 
     Anchors, aliases, tags, nesting deeper than MAX_DEPTH and a second document are
@@ -537,7 +537,7 @@ def _parse(text: str, filename: str) -> Node | None:
     A mapping or sequence node is made (with its still empty dict or list) and put in
     its parent when its start event arrives; its items are added as they come. The
     state of the open collection lives in locals (``items``, ``in_map``, ``key``); the
-    enclosing ones wait on ``stack``.
+    enclosing ones wait on ``stack``. ``cap`` is :func:`load`'s ``list_cap``.
     """
     loader = _LOADER(text)
     get_event = loader.get_event
@@ -567,6 +567,8 @@ def _parse(text: str, filename: str) -> Node | None:
     seq_end = _SEQ_END
     mark_class = Mark
     scalar_class = ScalarNode
+    cap_key, cap_items, cap_error = cap if cap is not None else (None, 0, None)
+    capped: list | None = None  # the root mapping's list under cap_key, once open
     try:
         while True:
             event = get_event()
@@ -588,7 +590,7 @@ def _parse(text: str, filename: str) -> Node | None:
                     key_mark = mark
                     continue
                 node = new_object(scalar_class)
-                set_mark(node, start)  # made a Mark when read (Node.mark)
+                set_mark(node, start.line << 32 | start.column)  # a Mark when read (Node.mark)
                 if event.style:  # quoted or block: a string
                     set_value(node, raw)
                     set_quoted(node, True)
@@ -623,6 +625,11 @@ def _parse(text: str, filename: str) -> Node | None:
                     items[key] = (key_mark, node)  # type: ignore[index, call-overload]
                     key = None
                 else:
+                    if items is capped and len(items) >= cap_items:
+                        top.clear()  # the tree goes now, not with the traceback
+                        stack.clear()
+                        items = capped = None  # type: ignore[assignment]
+                        raise cap_error(_yaml_mark(start))  # type: ignore[misc]
                     items.append(node)  # type: ignore[union-attr]
             elif kind is map_end or kind is seq_end:
                 items, in_map = stack.pop()
@@ -653,11 +660,18 @@ def _parse(text: str, filename: str) -> Node | None:
                     new_items = []
                     node = new_object(SeqNode)
                     _set_seq_items(node, new_items)
-                set_mark(node, start)
+                set_mark(node, start.line << 32 | start.column)  # (Node.mark)
                 if in_map:
+                    if key == cap_key and len(stack) == 1 and kind is seq_start:
+                        capped = new_items  # type: ignore[assignment]
                     items[key] = (key_mark, node)  # type: ignore[index, call-overload]
                     key = None
                 else:
+                    if items is capped and len(items) >= cap_items:
+                        top.clear()  # the tree goes now, not with the traceback
+                        stack.clear()
+                        items = capped = None  # type: ignore[assignment]
+                        raise cap_error(_yaml_mark(start))  # type: ignore[misc]
                     items.append(node)  # type: ignore[union-attr]
                 stack.append((items, in_map))
                 items = new_items
@@ -684,7 +698,7 @@ def _parse(text: str, filename: str) -> Node | None:
 # ----------------------------------------------------------------------------- load
 
 
-def load(text: str | bytes, filename: str) -> Node:
+def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> Node:
     """Parse a body file safely.
 
     Parameters
@@ -693,6 +707,12 @@ def load(text: str | bytes, filename: str) -> Node:
         The file's contents (bytes are decoded as UTF-8; a leading BOM is dropped).
     filename : str
         Used only in error locations.
+    list_cap : (key, n, make_error), optional
+        A budget checked while the tree is built: the list under the root mapping's
+        ``key`` holds at most ``n`` items; the start of the next one raises
+        ``make_error(mark)`` (an InputError at its :class:`Mark`) at once, before the rest
+        of the file is read (a body's part cap: a file far over it costs no more than the
+        cap's worth of parsing).
 
     Returns
     -------
@@ -713,12 +733,8 @@ def load(text: str | bytes, filename: str) -> Node:
     (recursive in C, and resolving by YAML 1.1) is never used.
     """
     text = _decode(text, filename)
-    # The tree is acyclic; pausing the cyclic garbage collector while it is built
-    # halves the time for large files (it would otherwise rescan every new node).
-    gc_was_enabled = gc.isenabled()
-    gc.disable()
     try:
-        root = _parse(text, filename)
+        root = _parse(text, filename, list_cap)
     except yaml.MarkedYAMLError as exc:
         raise _marked_error(exc, filename) from exc
     except ReaderError as exc:
@@ -735,9 +751,6 @@ def load(text: str | bytes, filename: str) -> Node:
         raise _error(
             f"cannot read the file as YAML: {_one_line(exc)}", filename, Mark(1, 1)
         ) from exc
-    finally:
-        if gc_was_enabled:
-            gc.enable()
     if root is None or (isinstance(root, ScalarNode) and not root.quoted and root.raw == ""):
         raise _error(_EMPTY, filename, Mark(1, 1))
     return root

@@ -3,7 +3,7 @@ parts, its holes, its centre of mass and principal axes, in a 3-D view and three
 orthographic views (top, front, side) of the body frame.
 
 Each part is drawn from its :class:`rbcli.model.Outline` through
-:mod:`rbcli.core.outline` (which does the geometry: surfaces, silhouettes, creases):
+:mod:`rbcli.render.outline` (which does the geometry: surfaces, silhouettes, creases):
 
 - solid parts: light-grey shadows ("0.88") with black outlines (silhouettes and borders),
   thin grey near-side creases and dashed inner surfaces (a tube's bore); rods, rings and
@@ -57,7 +57,7 @@ def _segments_path(segs: np.ndarray):
     element, dashes flowing along curves)."""
     from matplotlib.path import Path
 
-    from rbcli.core.outline import polylines
+    from rbcli.render.outline import polylines
 
     lines = polylines(segs)
     codes = np.concatenate([np.r_[Path.MOVETO, np.full(len(p) - 1, Path.LINETO)] for p in lines]).astype(np.uint8)
@@ -90,9 +90,9 @@ def _add_fill(ax, rings, f, z, colour):
 
 
 def segments(n_parts: int) -> int:
-    """Points around a circle in the flat views: :data:`rbcli.core.outline.SEGMENTS` for up
+    """Points around a circle in the flat views: :data:`rbcli.render.outline.SEGMENTS` for up
     to 24 parts, fewer (down to 12) for more, so a figure of many parts stays a few MB at most."""
-    from rbcli.core.outline import SEGMENTS
+    from rbcli.render.outline import SEGMENTS
 
     return SEGMENTS if n_parts <= 24 else max(12, int(SEGMENTS * (24 / n_parts) ** 0.5))
 
@@ -116,7 +116,7 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     """
     from matplotlib.ticker import MaxNLocator
 
-    from rbcli.core import outline as ol
+    from rbcli.render import outline as ol
     from rbcli.render.plots import figure
 
     f, L = du.factor("length")
@@ -270,7 +270,7 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     from matplotlib.ticker import MaxNLocator
     from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
-    from rbcli.core import outline as ol
+    from rbcli.render import outline as ol
 
     # coarse surfaces, only the faces turned to the camera: a few hundred polygons
     elev, azim = np.radians(ELEV), np.radians(AZIM)

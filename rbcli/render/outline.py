@@ -22,7 +22,10 @@ Circles are sampled with :data:`SEGMENTS` points; every vertex lies on the exact
 so outlines are inscribed polygons (the shape's boundary to within ``R (1 − cos(π/n))``).
 Meshes are drawn from a decimated copy (:func:`decimate`: vertex clustering, Rossignac &
 Borrel, "Multi-resolution 3D approximations for rendering complex scenes", 1993) of at
-most :data:`MESH_MAX_TRIANGLES` triangles.
+most :data:`MESH_MAX_TRIANGLES` triangles, made here when a figure is drawn (the body
+keeps its file's mesh); a part given by its mass properties is drawn as its equivalent
+uniform ellipsoid (:func:`rbcli.model.equivalent_ellipsoid`, which the loader keeps on its
+outline: the plausibility warnings measure it too).
 """
 
 from __future__ import annotations
@@ -31,6 +34,8 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
+
+from rbcli.model import equivalent_ellipsoid  # the given parts' shape (re-exported here)
 
 __all__ = [
     "CREASE_DEG", "MESH_MAX_TRIANGLES", "SEGMENTS", "Shadow", "Sketch", "decimate",
@@ -304,28 +309,17 @@ def _local(kind: str, dims: dict, vertices, faces, n: int) -> Sketch:
 
 def sketch(outline, n: int = SEGMENTS, max_triangles: int | None = None) -> Sketch:
     """The sketch of a part's :class:`rbcli.model.Outline`, in the body frame (m), with
-    ``n`` points around a full circle; a mesh decimated to ``max_triangles`` if given."""
+    ``n`` points around a full circle; a mesh decimated to :data:`MESH_MAX_TRIANGLES`, then
+    to ``max_triangles`` if given and fewer."""
     V, F = outline.vertices, outline.faces
-    if outline.kind == "mesh" and max_triangles is not None and len(F) > max_triangles:
-        V, F = decimate(V, F, max_triangles)
+    if outline.kind == "mesh":
+        V, F = decimate(V, F)  # the drawing's copy (its unused vertices dropped)
+        if max_triangles is not None and len(F) > max_triangles:
+            V, F = decimate(V, F, max_triangles)
     s = local_sketch(outline.kind, dict(outline.dims), V, F, n)
     if outline.kind == "mesh" and len(F) < int(dict(outline.dims).get("triangles", len(F))):
         s = replace(s, rough=True)
     return s.placed(outline.at, outline.R)
-
-
-def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
-    """Semi-axes (m) and axes (columns) of the uniform ellipsoid with a part's ``mass`` (kg)
-    and ``inertia`` about its com (kg m², 3×3): ``a² = 5 (I₂ + I₃ − I₁) / (2 m)``, etc.
-
-    For drawing a part given only by its mass properties. A rank-deficient tensor gives
-    zero semi-axes (a flat or needle ellipsoid).
-    """
-    w, v = np.linalg.eigh(0.5 * (np.asarray(inertia, dtype=float) + np.asarray(inertia, dtype=float).T))
-    s = np.clip(np.array([w[1] + w[2] - w[0], w[0] + w[2] - w[1], w[0] + w[1] - w[2]]), 0.0, None)
-    if np.linalg.det(v) < 0:
-        v[:, 2] = -v[:, 2]
-    return np.sqrt(2.5 * s / float(mass)), v
 
 
 def decimate(vertices, faces, max_triangles: int = MESH_MAX_TRIANGLES) -> tuple[np.ndarray, np.ndarray]:

@@ -1,0 +1,97 @@
+"""What one load of a body file shares: the :class:`Session` (the parts budget, the files
+already parsed) and each file's :class:`Ctx` (where its messages point, its units, what it
+read). The readers of :mod:`rbcli.io.parts`, :mod:`rbcli.io.fields` and the special parts
+take a ``ctx`` and raise ``ctx.error(node, message)``: an InputError at the node at fault.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rbcli.errors import InputError, Location
+from rbcli.io import units as un
+from rbcli.io import yamlsafe as ys
+
+__all__ = ["MAX_PARTS", "Session", "Ctx", "new_session"]
+
+#: the default budget of a body: its parts, counting every use of an included file's parts
+#: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
+MAX_PARTS = 200_000
+
+
+@dataclass
+class Session:
+    """What one load shares across its files: the parts budget and the files already
+    read and parsed (an included file is read and parsed once per real path, and its
+    parts placed per use, so a diamond of includes costs time linear in the files).
+
+    ``load`` reads an included file's text (:func:`rbcli.io.body._load`, given here so that
+    the include reader need not import the body reader that imports it)."""
+
+    max_parts: int
+    load: Callable | None = None
+    used: int = 0  # parts and includes so far, every use counted
+    parsed: dict = field(default_factory=dict)  # (real path, real folder) -> its loaded file
+    parses: int = 0  # files parsed (the work count the tests check)
+    #: densities no matter has, as located warnings (rbcli.io.plausible): the first is said
+    densities: list = field(default_factory=list)
+
+    def spend(self, ctx: Ctx, node: ys.Node | None, n: int) -> None:
+        self.used += n
+        if self.used > self.max_parts:
+            raise ctx.error(node, self.over_message())
+
+    def over_message(self) -> str:
+        return (f"the body has more than {self.max_parts} parts (counting every use of an "
+                f"included file's parts, and each include); set RBCLI_MAX_PARTS to raise the "
+                "limit")
+
+    def list_cap(self, filename: str) -> tuple:
+        """:func:`rbcli.io.yamlsafe.load`'s ``list_cap`` for a file read now: its ``parts``
+        list may hold what is left of the budget (each item costs at least one part), so a
+        file far over the cap is refused while its tree is built, at the first part beyond."""
+        return ("parts", self.max_parts - self.used,
+                lambda mark: InputError(self.over_message(), Location(filename, mark.line, mark.col)))
+
+
+def new_session(load: Callable | None = None) -> Session:
+    """A session with the parts budget of ``RBCLI_MAX_PARTS`` (else :data:`MAX_PARTS`)."""
+    from rbcli.io.reader import limit_from_env
+
+    return Session(limit_from_env("RBCLI_MAX_PARTS", MAX_PARTS), load)
+
+
+@dataclass
+class Ctx:
+    """One file being read: its name in messages, its folder, its units, what it found."""
+
+    file: str  # as shown in messages
+    base_dir: Path  # where relative paths start
+    stack: tuple[str, ...] = ()  # real paths of the files being included (cycle check)
+    base_units: dict[str, str] = field(default_factory=dict)
+    factors: dict[str, tuple[float, str]] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    #: real paths of the files read below this one (includes at any depth, meshes)
+    inputs: list[str] = field(default_factory=list)
+    session: Session = field(default_factory=lambda: Session(MAX_PARTS))
+    #: how deep includes go below this file (0: it includes nothing)
+    height: int = 0
+
+    def where(self, node_or_mark: ys.Node | ys.Mark | None) -> Location:
+        if node_or_mark is None:
+            return Location(self.file)
+        mark = node_or_mark if isinstance(node_or_mark, ys.Mark) else node_or_mark.mark
+        return Location(self.file, mark.line, mark.col)
+
+    def error(self, node_or_mark: ys.Node | ys.Mark | None, message: str) -> InputError:
+        return InputError(message, self.where(node_or_mark))
+
+    def factor(self, kind: str, node: ys.Node | None = None) -> tuple[float, str]:
+        if kind not in self.factors:
+            try:
+                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
+            except un.UnitError as exc:
+                raise self.error(node, str(exc)) from None
+        return self.factors[kind]

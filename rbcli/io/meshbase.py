@@ -1,0 +1,60 @@
+"""What the mesh readers share: :class:`MeshFileError`, the whole-file read and the
+helpers that word its messages (a line number, a long token shortened)."""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["MeshFileError", "read_all", "line_of", "cut", "odd_number"]
+
+_DECIMAL_CHARS = b"0123456789.+-eE"
+_NON_FINITE = re.compile(rb"[+-]?(?:inf(?:inity)?|nan)", re.IGNORECASE)
+
+
+class MeshFileError(ValueError):
+    """A mesh file that cannot be read: missing, unreadable, malformed or empty.
+
+    The message is lower case, starts with the file name and says what is wrong.
+    ``path`` is the file and ``line`` the 1-based line (0 when not applicable).
+    """
+
+    def __init__(self, path: str, message: str, line: int = 0) -> None:
+        where = f"{path}:{line}" if line > 0 else path
+        super().__init__(f"{where}: {message}")
+        self.path = path
+        self.line = line
+        self.reason = message
+
+
+
+def read_all(name: str, fh, size: int) -> bytes:
+    """The whole file (``size`` bytes, already checked against the limit)."""
+    data = fh.read(size + 1)
+    if len(data) > size:  # it grew while we read: take what fits the checked size
+        raise MeshFileError(name, "the file changed while it was read")
+    if not data:
+        raise MeshFileError(name, "empty file (no triangles)")
+    return data
+
+
+def line_of(text: bytes, offset: int) -> int:
+    """The 1-based line of the byte ``offset`` of ``text``."""
+    return text.count(b"\n", 0, offset) + 1
+
+
+def odd_number(token: bytes) -> bool:
+    """Whether a coordinate's text holds a character the formats' numbers do not have.
+
+    STL and OBJ numbers are C's decimal floating-point numbers (a sign, digits with a
+    point, an exponent); ``inf`` and ``nan`` words are let through to the finiteness check,
+    which says what is wrong with them. Python's ``float()`` (and numpy's conversion of
+    bytes, which calls it) also takes ``1_000``, which no STL or OBJ reader does: the line
+    readers ask this before converting. A text of the right characters that is still not
+    a number (``1.2.3``) is left to the conversion, which refuses it.
+    """
+    return bool(token.strip(_DECIMAL_CHARS)) and _NON_FINITE.fullmatch(token) is None
+
+
+def cut(text: str, limit: int = 24) -> str:
+    """A number or word from the file, shortened when it is long."""
+    return text if len(text) <= limit else f"{text[:limit]}… ({len(text)} characters)"

@@ -1,0 +1,138 @@
+"""A ``shape: mesh`` part: a closed triangle mesh read from an STL or OBJ file."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+
+from rbcli.io import fields as fl
+from rbcli.io import units as un
+from rbcli.io import yamlsafe as ys
+from rbcli.io.fields import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtract
+from rbcli.io.includes import names_a_folder
+from rbcli.io.loadctx import Ctx
+from rbcli.io.placing import place
+from rbcli.io.plausible import note_density
+from rbcli.model import Outline, Part
+
+MESH_KEYS = (
+    "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",
+    "mass", "density", *PLACEMENT_KEYS,
+)
+
+
+def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> Part:
+    """A ``shape: mesh`` part: a closed triangle mesh read from an STL or OBJ file.
+
+    Everything in the YAML is checked first (keys, scale, units, mass, placement), then
+    the file is read and checked. The mesh modules are imported here only, so that
+    bodies without meshes do not pay for them at start-up.
+    """
+    what = f"part '{name}' (mesh)"
+    fl.check_keys(ctx, m, MESH_KEYS, what, required=("file",))
+    fnode = m.items["file"][1]
+    path = mesh_path(ctx, fnode)
+    scale = 1.0
+    if "scale" in m.items:
+        scale = fl.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
+    if "units" in m.items:
+        unode = m.items["units"][1]
+        text = fl.string(ctx, unode, "units")
+        try:
+            factor, dim = un.parse_unit(text)
+        except un.UnitError as exc:
+            raise ctx.error(unode, f"{what}: units: {exc}") from None
+        if dim != un.KINDS["length"]:
+            raise ctx.error(
+                unode,
+                f"{what}: units is the length unit of the mesh's coordinates (m, mm, in, ...), not '{text}'",
+            )
+    else:
+        factor = ctx.factor("length", m)[0]
+    allow_open = fl.flag(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
+    weld = None  # None: the file's own default (meshfile.default_weld)
+    if "weld" in m.items:
+        wnode = m.items["weld"][1]
+        if isinstance(wnode, ys.ScalarNode) and wnode.value == "exact":
+            weld = 0.0
+        else:
+            weld = fl.positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
+    mass, density, src = mass_source(ctx, m, "volume", known, what)
+    if mass is None and "cut_from" not in m.items:  # a density typed here: one matter has?
+        note_density(ctx, src, "density", density, None, True, what)
+    removed = subtract(ctx, m)
+    at, R = fl.placement(ctx, m)
+
+    from rbcli.core import mesh as cmesh
+    from rbcli.io import meshfile
+
+    shown = str(path)
+    try:
+        vertices, faces, _fmt, file_weld = meshfile.read_mesh(path)
+    except meshfile.MeshFileError as exc:  # its message starts with the path
+        raise ctx.error(fnode, f"{what}: {exc}") from None
+    ctx.inputs.append(os.path.realpath(path))
+    k = scale * factor
+    if k != 1.0:
+        with np.errstate(over="ignore"):
+            vertices *= k  # in place: a private float64 array
+        if not np.isfinite(vertices).all():
+            raise ctx.error(
+                fnode,
+                f"{what}: {shown}: the coordinates times scale and units overflow "
+                "(numbers are limited to 1e60 in SI units)",
+            )
+    if float(np.abs(vertices).max()) > HUGE:
+        raise ctx.error(fnode, f"{what}: {shown}: coordinates are too large; numbers are limited to 1e60 in SI units")
+    if weld is None:
+        weld = file_weld * k
+    try:
+        props = cmesh.mass_properties(vertices, faces, allow_open=allow_open, weld=weld, unit="m")
+    except cmesh.MeshError as exc:  # says what is wrong, not which file
+        msg = str(exc)
+        if exc.boundary:
+            msg += "; allow_open: true accepts small holes, with a warning"
+        raise ctx.error(fnode, f"{what}: {shown}: {msg}") from None
+    # for drawings: the file's mesh (a figure decimates it when it draws: rbcli.render.outline)
+    outline = Outline("mesh", (("triangles", len(faces)),), at, R, vertices, faces)
+    del vertices, faces
+    for w in props.warnings:
+        ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {shown}: {w}")
+    if mass is None:
+        assert density is not None
+        mass = density * props.volume
+        check_mass(ctx, src, what, mass, "density × volume")
+    else:
+        density = mass / props.volume
+    known[name] = (density, "volume")
+    com, J = place(np.asarray(props.centroid), mass * np.asarray(props.unit_inertia), at, R)
+    return Part(
+        name=prefix + name, shape="mesh", mass=float(mass), subtract=removed, com=com,
+        inertia_com=J, measure=props.volume, measure_kind="volume", axis=R[:, 2].copy(),
+        extra={"volume": float(props.volume), "area": float(props.area), "triangles": int(props.n_triangles)},
+        where=ctx.where(m), outline=outline,
+    )
+
+
+def mesh_path(ctx: Ctx, fnode: ys.Node) -> Path:
+    """The mesh file, relative to the body file's folder; as written when that is the cwd."""
+    rel = fl.string(ctx, fnode, "file")
+    if not rel.strip():
+        raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
+    if "\0" in rel:
+        raise ctx.error(fnode, "file: a file name cannot contain a NUL character")
+    if names_a_folder(rel):
+        raise ctx.error(fnode, f"file: '{rel}' names a folder (it ends with '/'); a mesh part "
+                        "reads a mesh file (.stl or .obj)")
+    path = Path(rel)
+    if path.is_absolute():
+        return path
+    try:
+        if ctx.base_dir.is_absolute() and ctx.base_dir == Path.cwd():
+            return path  # standard input or -e: show the path the user wrote
+    except OSError:  # the cwd is gone
+        pass
+    return ctx.base_dir / path
+

@@ -1,0 +1,231 @@
+"""The parts of a body file: the walk over ``parts:`` and the checks of each part.
+
+Each part is checked in file order (keys, shape, parameters, mass or density, placement),
+each problem an InputError located at the node at fault. A primitive shape becomes a
+:class:`rbcli.io.placing.Pending` (placed in batches by :mod:`rbcli.io.placing`); a
+``given`` part (:mod:`rbcli.io.givenpart`) or a ``mesh`` (:mod:`rbcli.io.meshpart`) a
+finished :class:`rbcli.model.Part`; an ``include`` (:mod:`rbcli.io.includes`) a
+:class:`rbcli.io.placing.Stack` of its file's parts.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import NamedTuple
+
+import numpy as np
+
+from rbcli.core import rotation as rot
+from rbcli.core import shapes as shp
+from rbcli.errors import Location
+from rbcli.io import fields as fl
+from rbcli.io import units as un
+from rbcli.io import yamlsafe as ys
+from rbcli.io.fields import (
+    DENSITY_FOR,
+    MASS_KEYS,
+    PLACEMENT_KEYS,
+    check_mass,
+    mass_source,
+    subtract,
+)
+from rbcli.io.givenpart import given_part
+from rbcli.io.includes import include_part
+from rbcli.io.loadctx import Ctx
+from rbcli.io.meshpart import mesh_part
+from rbcli.io.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
+from rbcli.io.plausible import note_density
+from rbcli.model import Part
+
+COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
+SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not by core.shapes
+
+
+def all_shape_names() -> list[str]:
+    return [*shp.SHAPES.keys(), *SPECIAL_SHAPES]
+
+
+def _part_name(ctx: Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
+    item = m.items.get("name")
+    if item is not None:
+        name = fl.string(ctx, item[1], "name")
+        if not name.strip():
+            raise ctx.error(item[1], "a part name must not be empty")
+    else:
+        name = f"{shape}{index + 1}"
+    if name in names:
+        raise ctx.error(item[1] if item is not None else m, f"two parts are named '{name}'; names must differ")
+    names.add(name)
+    return name
+
+
+def parts(ctx: Ctx, node: ys.Node, prefix: str = "", *, stacked: bool = False) -> list[Part] | Stack:
+    """The parts of the list ``node``: as :class:`Part` s, or for an included file
+    (``stacked``) as one :class:`rbcli.io.placing.Stack` (each use moves it)."""
+    if not isinstance(node, ys.SeqNode):
+        raise ctx.error(node, f"parts must be a list of parts, not {fl.describe(node)}")
+    if not node.items:
+        raise ctx.error(node, "parts is empty; a body needs at least one part")
+    out: list = []  # Pending, Part or Stack (an include's parts)
+    names: set[str] = set()
+    known: dict[str, fl.Known] = {}
+    settle = to_stack if stacked else finish  # the primitives of out[done:], placed
+    done = 0  # out[:done] are placed
+    waiting = 0  # parts in out[done:]
+    for i, item in enumerate(node.items):
+        if not _is_include(item):
+            ctx.session.spend(ctx, item, 1)
+        p = part(ctx, item, i, names, known, prefix)
+        out.append(p)
+        waiting += len(p) if p.__class__ is Stack else 1
+        if waiting >= BATCH:
+            done = len(settle(out, done))
+            waiting = 0
+    out = settle(out, done)
+    return Stack.of(out) if stacked else parts_of(out)
+
+
+def _is_include(node: ys.Node) -> bool:
+    if not isinstance(node, ys.MapNode):
+        return False
+    shape = node.items.get("shape")
+    return shape is not None and isinstance(shape[1], ys.ScalarNode) and shape[1].value == "include"
+
+
+def part(ctx: Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, fl.Known], prefix: str):
+    """One entry of ``parts``: a primitive as a :class:`Pending` (placed by
+    :func:`rbcli.io.placing.finish` with others), an include as a :class:`Stack` of its
+    file's parts, a mesh or given part as a finished :class:`Part`."""
+    m = node if isinstance(node, ys.MapNode) else fl.mapping(ctx, node, f"part {index + 1}")
+    shape_item = m.items.get("shape")
+    if shape_item is None:
+        raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
+    shape_node = shape_item[1]
+    shape = fl.string(ctx, shape_node, "shape")
+    if shape not in shp.SHAPES and shape not in SPECIAL_SHAPES:
+        raise ctx.error(
+            shape_node,
+            f"unknown shape '{shape}'{fl.suggest(shape, all_shape_names())} (shapes: {', '.join(all_shape_names())})",
+        )
+    name = _part_name(ctx, m, index, shape, names)
+    what = f"part '{name}'"
+    if shape == "include":
+        return include_part(ctx, m, name, prefix)
+    if shape == "given":
+        return given_part(ctx, m, name, prefix, known)
+    if shape == "mesh":
+        return mesh_part(ctx, m, name, prefix, known)
+    return _primitive(ctx, m, shape, name, prefix, known, what)
+
+
+class _Plan(NamedTuple):
+    """How to read a part of one primitive shape (:func:`_plan`, made once per shape)."""
+
+    keys: tuple[str, ...]  # every key it takes, in the order messages list them
+    key_set: frozenset[str]
+    diameters: dict[str, str]  # a diameter spelling -> the radius it gives
+    required: tuple[str, ...]  # its parameters (ShapeInfo.required, .optional)
+    optional: tuple[str, ...]
+    kinds: tuple[tuple[str, str, int], ...]  # (parameter, its Kind's name, its n), in order
+    build: Callable  # the shape's formulas (core.shapes.builder): parameters checked here
+    radius: Callable | None  # ShapeInfo.radius of a round shape, else None
+
+
+_PLANS: dict[str, _Plan] = {}
+
+
+def _plan(shape: str) -> _Plan:
+    plan = _PLANS.get(shape)
+    if plan is None:
+        info = shp.SHAPES[shape]
+        extra_keys = ("from", "to") if shape == "rod" else ()
+        diameters = info.diameters
+        params = (*info.required, *info.optional)
+        keys = (*COMMON_PART_KEYS, *params, *diameters, *extra_keys)
+        kinds = tuple((k, info.kind(k).name, info.kind(k).n) for k in params)
+        plan = _PLANS[shape] = _Plan(keys, frozenset(keys), diameters, info.required, info.optional,
+                                     kinds, shp.builder(shape), info.radius if info.round else None)
+    return plan
+
+
+def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
+    plan = _plan(shape)
+    diameters = plan.diameters
+    items = m.items
+    if not plan.key_set.issuperset(items):
+        fl.check_keys(ctx, m, plan.keys, f"{what} ({shape})")
+    params: dict[str, object] = {}
+    nodes: dict[str, ys.Node] = {}
+    for dkey, rkey in diameters.items():
+        if dkey not in items:
+            continue
+        if rkey in items:
+            raise ctx.error(items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
+        nodes[rkey] = items[dkey][1]
+        params[rkey] = 0.5 * fl.number(ctx, nodes[rkey], "length", dkey)
+    at, spec = fl.placement_spec(ctx, m)
+    if shape == "rod" and ("from" in items or "to" in items):
+        for k in ("from", "to"):
+            if k not in items:
+                raise ctx.error(m, f"{what}: a rod given by endpoints needs both 'from' and 'to'")
+        for k in ("length", *PLACEMENT_KEYS):
+            if k in items:
+                raise ctx.error(items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
+        a = fl.vector(ctx, items["from"][1], "length", "from")
+        b = fl.vector(ctx, items["to"][1], "length", "to")
+        if not np.linalg.norm(b - a) > 0:
+            raise ctx.error(items["to"][1], f"{what}: 'from' and 'to' are the same point")
+        params["length"] = float(np.linalg.norm(b - a))
+        at = (0.5 * (a + b)).tolist()
+        spec = ("R", rot.axis_to_z(b - a))
+    for key in plan.required:
+        if key not in items and key not in params:
+            alt = next((f" or '{d}'" for d, r in diameters.items() if r == key), "")
+            params_allowed = (*plan.required, *plan.optional)
+            raise ctx.error(m, f"{what} ({shape}) needs '{key}'{alt} (parameters: {', '.join(params_allowed) or 'none'})")
+    for key, kind, n in plan.kinds:
+        if key not in items or key in params:
+            continue
+        vnode = items[key][1]
+        nodes[key] = vnode
+        if kind == "length":
+            params[key] = fl.number(ctx, vnode, "length", key)
+        elif kind == "lengths":
+            params[key] = fl.floats(ctx, vnode, "length", key, n=n)
+        elif kind == "points":
+            params[key] = fl.rows(ctx, vnode, "length", key)
+        elif kind == "bool":
+            params[key] = fl.flag(ctx, vnode, key)
+    try:
+        geo = plan.build(params)  # what shp.local_geometry checks first, checked above
+    except shp.ShapeError as exc:  # lengths quoted in the file's own length unit
+        factor, unit = ctx.factors.get("length") or un.unit_for_kind(ctx.base_units, "length")
+        message = exc.format(lambda x: f"{x / factor:g} {unit}")
+        raise ctx.error(nodes.get(exc.param, m), f"{what}: {message}") from None
+    except ValueError as exc:
+        raise ctx.error(m, f"{what}: {exc}") from None
+    measure_kind = geo.measure_kind
+    mass, density, src = mass_source(ctx, m, measure_kind, known, what)
+    if measure_kind == "point":
+        measure = None
+        known[name] = (None, measure_kind)
+    else:
+        measure = float(geo.measure)
+        if mass is None:
+            mass = density * measure
+            check_mass(ctx, src, what, mass, f"density × {measure_kind}")
+            if "cut_from" not in items:  # a density typed here: one matter has?
+                note_density(ctx, src, DENSITY_FOR[measure_kind], density, measure,
+                             measure_kind == "volume", what)
+        elif measure:
+            density = mass / measure
+        known[name] = (density, measure_kind)
+    if not mass > 0:
+        raise ctx.error(m, f"{what} has no mass")
+    mark = m.mark
+    radius = plan.radius
+    return Pending(
+        prefix + name, shape, mass, "subtract" in items and subtract(ctx, m), measure,
+        measure_kind, radius and radius(params), Location(ctx.file, mark.line, mark.col), at,
+        spec, geo.com, geo.unit_inertia, dims_of(params),
+    )
