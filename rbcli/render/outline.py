@@ -596,14 +596,22 @@ def polylines(segments: np.ndarray) -> list[np.ndarray]:
     for k, (a, b) in enumerate(keys):
         ends.setdefault(a, []).append((k, 1))  # from a, go to the segment's end 1
         ends.setdefault(b, []).append((k, 0))
-    used = np.zeros(len(segs), dtype=bool)
+    used = [False] * len(segs)
+    # the first unused segment at a point: every entry before ``seen[point]`` is used (a
+    # segment once used stays used), so the scans cost O(segments) in all even where
+    # thousands of segments meet at one point (many equal parts seen end-on)
+    seen: dict[tuple, int] = {}
 
     def walk(point: tuple, out: list) -> None:
         while True:
-            nxt = next(((k, e) for k, e in ends.get(point, ()) if not used[k]), None)
-            if nxt is None:
+            at = ends.get(point, ())
+            i = seen.get(point, 0)
+            while i < len(at) and used[at[i][0]]:
+                i += 1
+            seen[point] = i
+            if i == len(at):
                 return
-            k, e = nxt
+            k, e = at[i]
             used[k] = True
             point = keys[k][e]
             out.append(point)
