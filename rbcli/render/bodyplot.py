@@ -21,6 +21,8 @@ scale only. matplotlib is imported only inside :func:`body_figure` (through
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from rbcli.render.units import DisplayUnits
@@ -50,6 +52,75 @@ TRIANGLES_3D = 400
 #: above this many triangles in all (about twice what is drawn) the 3-D view goes coarser,
 #: and then shows only the heaviest parts that fit (the others as dots at their centres)
 BUDGET_3D = 2000
+#: the most parts drawn by their outline: the heaviest. Each costs ~1 ms and ~1 KB of SVG
+#: per view, and in a figure of more no one part can be told from its neighbours; 10 000
+#: drawn parts took 15 s and 10 MB of SVG
+FIGURE_MAX_PARTS = 500
+#: the most further parts drawn as a dot at their centre (the next heaviest), ~100 bytes of
+#: SVG a dot in each of the four views; the lighter parts beyond are not drawn, and the
+#: caption (:func:`caption`) and the figure's legend say how many and what share of the mass
+FIGURE_MAX_DOTS = 2000
+
+
+@dataclass(frozen=True)
+class Drawn:
+    """Which parts the body figure draws (indices into ``body.parts``, in file order).
+
+    Attributes
+    ----------
+    outlined : tuple of int — drawn by their outline (the heaviest, within
+        :data:`FIGURE_MAX_PARTS`, that have an outline)
+    dotted : tuple of int — drawn as a dot at their centre: those among the heaviest
+        without an outline, and the next heaviest (within :data:`FIGURE_MAX_DOTS`)
+    left_out : int — parts not drawn at all (the lightest)
+    left_out_mass : float — kg, their mass (holes counted by their mass too)
+    total : int — parts of the body
+    mass : float — kg, the mass of every part (holes counted by their mass too)
+    """
+
+    outlined: tuple[int, ...]
+    dotted: tuple[int, ...]
+    left_out: int
+    left_out_mass: float
+    total: int
+    mass: float
+
+    @property
+    def note(self) -> str:
+        """What was left out, in one sentence ("" when every part is drawn)."""
+        if self.total <= FIGURE_MAX_PARTS:
+            return ""
+        text = f"Of the {self.total} parts, the {FIGURE_MAX_PARTS} heaviest are drawn"
+        more = self.total - FIGURE_MAX_PARTS - self.left_out
+        if more:
+            text += f", the next {more} as dots at their centres"
+        if self.left_out:
+            share = 100.0 * self.left_out_mass / self.mass if self.mass > 0 else 0.0
+            text += (f"; the other {self.left_out}, the lightest ({share:.2g} % of the parts' mass), "
+                     "are not drawn")
+        return text + "."
+
+
+def drawn_parts(body) -> Drawn:
+    """The parts the figure draws: the :data:`FIGURE_MAX_PARTS` heaviest (by their outline,
+    or a dot without one), then dots at the centres of the next :data:`FIGURE_MAX_DOTS`;
+    ties go to the earlier part."""
+    parts = body.parts
+    n = len(parts)
+    mass = np.fromiter((p.mass for p in parts), dtype=float, count=n)
+    order = np.lexsort((np.arange(n), -mass))
+    top = np.sort(order[:FIGURE_MAX_PARTS])
+    outlined = tuple(int(i) for i in top if parts[i].outline is not None)
+    dotted = [int(i) for i in top if parts[i].outline is None]
+    dotted = tuple(sorted(dotted + order[FIGURE_MAX_PARTS:FIGURE_MAX_PARTS + FIGURE_MAX_DOTS].tolist()))
+    rest = order[FIGURE_MAX_PARTS + FIGURE_MAX_DOTS:]
+    return Drawn(outlined, dotted, len(rest), float(mass[rest].sum()), n, float(mass.sum()))
+
+
+def caption(body) -> str:
+    """The report's caption of the body figure: :data:`CAPTION` and what was left out."""
+    note = drawn_parts(body).note
+    return f"{CAPTION} {note}" if note else CAPTION
 
 
 def _segments_path(segs: np.ndarray):
@@ -124,14 +195,16 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     N = np.asarray(principal.axes, dtype=float)
     c = np.asarray(com, dtype=float)
 
-    solids, holes, dots = [], [], []
-    for p in body.parts:
-        if p.outline is None:
-            dots.append((p, np.asarray(p.com, dtype=float)))
-            continue
-        (holes if p.subtract else solids).append((p, ol.sketch(p.outline, n=segments(len(body.parts)))))
+    drawn = drawn_parts(body)
+    parts = body.parts
+    solids, holes = [], []
+    n_seg = segments(len(drawn.outlined))
+    for i in drawn.outlined:
+        p = parts[i]
+        (holes if p.subtract else solids).append((p, ol.sketch(p.outline, n=n_seg)))
+    dots = [(parts[i], np.asarray(parts[i].com, dtype=float)) for i in drawn.dotted]
     pts = [s.vertices for _, s in solids + holes] + [s.points for _, s in solids + holes]
-    pts += [d.reshape(1, 3) for _, d in dots] + [c.reshape(1, 3)]
+    pts += [np.array([d for _, d in dots]).reshape(-1, 3), c.reshape(1, 3)]
     allp = np.concatenate(pts)
     size = float(np.max(allp.max(axis=0) - allp.min(axis=0)))
     arrow = 0.6 * size if size > 0 else 1.15 * float(np.max(ell)) or 1.0
@@ -174,10 +247,12 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
                     ax.plot(x.points[:, 0] * f, x.points[:, 1] * f, linestyle="none", zorder=6,
                             **(MARKS["given"] if given else {**MARKS["point"], "markerfacecolor": face}))
                     shown.add("given" if given else "point" if face == "black" else "removed")
-        for p, d in dots:
-            ax.plot(d[i] * f, d[j] * f, linestyle="none", zorder=6,
-                    **{**MARKS["centre"], "markerfacecolor": "white" if p.subtract else "0.4"})
-            shown.add("centre")
+        for removed in (False, True):  # one artist for each kind of dot, however many
+            ds = np.array([d for p, d in dots if p.subtract == removed]).reshape(-1, 3)
+            if len(ds):
+                ax.plot(ds[:, i] * f, ds[:, j] * f, linestyle="none", zorder=6,
+                        **{**MARKS["centre"], "markerfacecolor": "white" if removed else "0.4"})
+                shown.add("centre")
         ci = np.array([c[i], c[j]])
         e2 = ol.ellipse_shadow(ell, N, i, j) + ci
         ax.plot(e2[:, 0] * f, e2[:, 1] * f, zorder=7, **LINES["ellipse"])
@@ -193,7 +268,7 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
         ax.set_axisbelow(True)
         for a in (ax.xaxis, ax.yaxis):
             a.set_major_locator(MaxNLocator(5))
-    _legend(fig, shown | {"com", "ellipse"})
+    _legend(fig, shown | {"com", "ellipse"}, drawn.note)
     return fig
 
 
@@ -218,8 +293,9 @@ LEGEND = (
 )
 
 
-def _legend(fig, shown: set) -> None:
-    """One legend under the views for what they show (proxy artists: nothing extra drawn)."""
+def _legend(fig, shown: set, note: str = "") -> None:
+    """One legend under the views for what they show (proxy artists: nothing extra drawn),
+    titled with ``note`` (what was left out) when there is one."""
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
@@ -234,8 +310,15 @@ def _legend(fig, shown: set) -> None:
         "ellipse": lambda: Line2D([], [], **LINES["ellipse"]),
     }
     keys = [(k, text) for k, text in LEGEND if k in shown]
+    extra = {"title": _wrap(note), "title_fontsize": 8} if note else {}
     fig.legend([proxy[k]() for k, _ in keys], [t for _, t in keys], loc="outside lower center",
-               ncols=min(len(keys), 3))
+               ncols=min(len(keys), 3), **extra)
+
+
+def _wrap(text: str, width: int = 90) -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width))
 
 
 def _arrows(ax, ci, N, arrow, i, j, f):

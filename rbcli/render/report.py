@@ -92,18 +92,34 @@ def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int
 
     ``contributions`` (kg m², one 3×3 per part, from
     :func:`rbcli.core.inertia.part_contributions`) are shown as their diagonals; the total
-    row is the body (``mp``: mass, com, inertia about the com).
+    row is the body (``mp``: mass, com, inertia about the com). Beyond
+    :data:`rbcli.render.massprops.PARTS_TABLE_ROWS` parts the table shows that many: the
+    largest contributions (``|Ixx + Iyy + Izz|``, then the heaviest), in file order, and
+    one row that sums the others (their mass, share, centre of mass and contributions), so
+    that the rows still add up to the total; a mesh part's note only for the parts shown.
     """
+    from rbcli.render.massprops import kept_parts, more_parts, rest_centre, rest_of
+
     m_unit, L, I_unit = du.unit("mass"), du.unit("length"), du.unit("inertia")
     fI, _ = du.factor("inertia")
-    rows = []
-    for p, Jc in zip(body.parts, contributions):
-        share = 100.0 * p.signed_mass / mp.mass
-        rows.append(
-            (p.name, p.shape + (" (hole)" if p.subtract else ""), du.show(p.signed_mass, "mass", digits),
-             num(share, 4), *(du.show(x, "length", digits) for x in p.com),
-             *(num(x * fI, digits) for x in np.diag(Jc)))
-        )
+    parts = body.parts
+    J = np.asarray(contributions, dtype=float).reshape(-1, 3, 3)
+    diag = np.einsum("kii->ki", J)  # (n, 3) the contributions to Ixx, Iyy, Izz
+    masses = np.fromiter((p.signed_mass for p in parts), dtype=float, count=len(parts))
+    keep = kept_parts(np.abs(diag.sum(axis=1)), np.abs(masses))
+    shown = range(len(parts)) if keep is None else keep.tolist()
+
+    def row(name, shape, m, com, d):
+        return (name, shape, du.show(m, "mass", digits), num(100.0 * m / mp.mass, 4),
+                *(("",) * 3 if com is None else (du.show(x, "length", digits) for x in com)),
+                *(num(x * fI, digits) for x in d))
+
+    rows = [row(parts[i].name, parts[i].shape + (" (hole)" if parts[i].subtract else ""),
+                parts[i].signed_mass, parts[i].com, diag[i]) for i in shown]
+    if keep is not None:
+        rest = rest_of(len(parts), keep)
+        rows.append(row(more_parts(int(rest.sum())), "", float(masses[rest].sum()),
+                        rest_centre(parts, masses, rest), diag[rest].sum(axis=0)))
     Jb = np.diag(mp.inertia_com)
     rows.append(("total", "", du.show(mp.mass, "mass", digits), num(100.0, 4),
                  *(du.show(x, "length", digits) for x in mp.com), *(num(x * fI, digits) for x in Jb)))
@@ -114,11 +130,20 @@ def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int
         rows,
         right=(2, 3, 4, 5, 6, 7, 8, 9),
     )
-    for p in body.parts:
-        if "volume" in p.extra:
-            tri = f", {p.extra['triangles']} triangles" if "triangles" in p.extra else ""
-            doc.note(f"mesh part '{p.name}': volume {du.show(p.extra['volume'], 'volume', digits)} "
-                     f"{du.unit('volume')}, area {du.show(p.extra['area'], 'area', digits)} {du.unit('area')}{tri}")
+    if keep is not None:
+        doc.note(f"The {len(keep)} parts of {len(parts)} with the largest contributions "
+                 "(|Ixx + Iyy + Izz|, then the heaviest) are listed, in file order; the row "
+                 f"{more_parts(len(parts) - len(keep))} sums the others: their mass, share, centre "
+                 "of mass and contributions. rbcli inertia --json lists every part.")
+    meshes = [parts[i] for i in shown if "volume" in parts[i].extra]
+    for p in meshes:
+        tri = f", {p.extra['triangles']} triangles" if "triangles" in p.extra else ""
+        doc.note(f"mesh part '{p.name}': volume {du.show(p.extra['volume'], 'volume', digits)} "
+                 f"{du.unit('volume')}, area {du.show(p.extra['area'], 'area', digits)} {du.unit('area')}{tri}")
+    if keep is not None:
+        hidden = sum(1 for p in parts if "volume" in p.extra) - len(meshes)
+        if hidden:
+            doc.note(f"({hidden} more mesh part{'s' if hidden != 1 else ''} among the parts summed)")
     doc.note(
         "A part's contribution is its own inertia about its centre plus the parallel-axis term "
         "m (d·d − d dᵀ), d from the body's centre of mass to the part's; holes count negative. "
@@ -202,10 +227,29 @@ def _e(text: str) -> str:
     return _html.escape(escape(text), quote=True)
 
 
-def _file_text(text: str) -> str:
-    """An input file's text shown whole: its lines and tabs kept (CRLF read as a line end),
-    every other control character escaped visibly."""
-    return escape(str(text).replace("\r\n", "\n"), keep="\n\t")
+#: the most characters of the input file the report shows (its last section): a file of
+#: ~2 500 generated parts (~190 characters a part) is shown whole, the examples are 1-4 KB;
+#: a longer file is cut at a line end within it, and a line after it says how much is left
+#: out (the header's SHA-256 identifies the whole file). A 100 000-part file (18.7 MB) made
+#: an HTML report of 22 MB
+INPUT_MAX_CHARS = 500_000
+
+
+def _file_text(text: str) -> tuple[str, str]:
+    """An input file's text to show: its lines and tabs kept (CRLF read as a line end),
+    every other control character escaped visibly; and "" or the sentence that says what
+    was cut (beyond :data:`INPUT_MAX_CHARS`, at a line end)."""
+    text = str(text).replace("\r\n", "\n")
+    cut = ""
+    if len(text) > INPUT_MAX_CHARS:
+        end = text.rfind("\n", 0, INPUT_MAX_CHARS) + 1 or INPUT_MAX_CHARS
+        rest = text[end:]
+        lines = rest.count("\n") + (not rest.endswith("\n"))
+        cut = (f"The file goes on for {lines} more line{'s' if lines != 1 else ''} ({len(rest)} "
+               f"characters), not shown here: the report shows the first {end} characters of "
+               "an input file; its SHA-256 above identifies the whole file.")
+        text = text[:end]
+    return escape(text, keep="\n\t"), cut
 
 
 def _html_table(t: Table) -> list[str]:
@@ -285,7 +329,10 @@ def html(report: Report) -> str:
         out.append("</section>")
     out.append(f'<section id="{INPUT_KEY}">')
     out.append(f"<h2>Input file: {_e(report.input_name)}</h2>")
-    out.append(f"<pre>{_html.escape(_file_text(report.input_text), quote=True)}</pre>")
+    shown, cut = _file_text(report.input_text)
+    out.append(f"<pre>{_html.escape(shown, quote=True)}</pre>")
+    if cut:
+        out.append(f'<p class="note">{_e(cut)}</p>')
     out.append("</section>")
     out += ["</main>", f"<footer>Written by {_e(report.generator)}.</footer>", "</body>", "</html>"]
     return "\n".join(out) + "\n"
@@ -368,9 +415,11 @@ def markdown(report: Report, files_dir: str) -> tuple[str, dict[str, str]]:
                 out += [f"![{md_inline(item.caption)}]({link})", "", f"*{md_para(item.caption)}*", ""]
             else:  # pragma: no cover - a programming error
                 raise TypeError(f"unknown report item {type(item).__name__}")
-    shown = _file_text(report.input_text)
+    shown, cut = _file_text(report.input_text)
     fence = _fence(shown)
     text = shown if shown.endswith("\n") else shown + "\n"
-    out += ["## Input file", "", f"{md_inline(report.input_name)}:", "", f"{fence}yaml", text + fence, "",
-            f"*Written by {md_inline(report.generator)}.*", ""]
+    out += ["## Input file", "", f"{md_inline(report.input_name)}:", "", f"{fence}yaml", text + fence, ""]
+    if cut:
+        out += [md_para(cut), ""]
+    out += [f"*Written by {md_inline(report.generator)}.*", ""]
     return "\n".join(out), files

@@ -70,14 +70,14 @@ def _massprops(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section
 
 def _principal(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
     from rbcli.render import massprops as r
-    from rbcli.render.bodyplot import CAPTION, body_figure
+    from rbcli.render.bodyplot import body_figure, caption
 
     doc = Doc()
     r.principal_doc(doc, body, c.result, du, digits, "the com", parts=False)
     s = _section(c, doc, body)
     fig = body_figure(body, c.result.reference, c.result, du,
                       f"principal: {body.name} — the body as built, centre of mass and principal axes")
-    _figure(s, "body", fig, CAPTION)
+    _figure(s, "body", fig, caption(body))
     return s
 
 
