@@ -463,3 +463,28 @@ def test_a_report_of_10000_includes_of_one_file(cli_proc, tmp_path):
     n = sample(2_500, 10_000)
     body = _includes(tmp_path, n)
     _report_within(cli_proc, body, 20.0, 300.0)
+
+
+# ----------------------------------------------------------------------------- documented
+
+
+@pytest.mark.parametrize("name, value, where", [
+    ("PARTS_TABLE_ROWS", PARTS_TABLE_ROWS, ("README.md", "man/rbcli-report.1", "man/rbcli-inertia.1",
+                                            "man/rbcli-principal.1")),
+    ("FIGURE_MAX_PARTS", bodyplot.FIGURE_MAX_PARTS, ("README.md", "man/rbcli-report.1")),
+    ("FIGURE_MAX_DOTS", bodyplot.FIGURE_MAX_DOTS, ("README.md", "man/rbcli-report.1")),
+    ("INPUT_MAX_CHARS", INPUT_MAX_CHARS, ("README.md", "man/rbcli-report.1")),
+])
+def test_the_limits_are_documented_with_their_values(name, value, where):
+    # each limit's value (written 500000, 500 000 or 500,000) stands just before its name
+    spellings = {str(value), f"{value:,}".replace(",", " "), f"{value:,}"}
+    for doc in where:
+        text = re.sub(r"\\[-&]|\\f[BIRP]", "", (ROOT / doc).read_text(encoding="utf-8"))  # man escapes
+        text = " ".join(text.split())
+        at = text.find(name)
+        assert at >= 0, f"{doc} does not name {name}"
+        assert any(s in text[max(0, at - 120):at] for s in spellings), f"{doc}: {name} is not {value}"
+    if name == "PARTS_TABLE_ROWS":  # principal's notes give --plot's limits by value
+        notes = " ".join((ROOT / "man/rbcli-principal.1").read_text(encoding="utf-8").split())
+        assert f"{bodyplot.FIGURE_MAX_PARTS} heaviest" in notes
+        assert f"{bodyplot.FIGURE_MAX_DOTS} as dots" in notes

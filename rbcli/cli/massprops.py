@@ -197,6 +197,10 @@ MANUAL["inertia"] = {
         "--format table (default), json (the same as --json) or csv (the JSON as one table, "
         "quantity,value,text,unit, one row per value; several bodies add a file column; layout "
         "in rbcli(1)).",
+        "The parts table lists at most 100 parts (PARTS_TABLE_ROWS): a body of more shows the "
+        "100 heaviest, in file order, and one row that sums the others (their mass and centre "
+        "of mass; a mesh's volume, area and triangles), and says so under it. --json and "
+        "--format csv list every part.",
         "--format urdf, sdf or mjcf prints the body's <inertial> element for a robot or "
         "simulation model, after a comment that states its frame: the link frame is the body "
         "frame; the position is the centre of mass (m); the inertia is about the centre of "
@@ -243,6 +247,10 @@ MANUAL["principal"] = {
         "stable, about the intermediate one unstable (the tennis-racket flip); for a symmetric "
         "body, stable about its symmetry axis and neutral about the others. The equivalent "
         "uniform box and ellipsoid have the same mass and principal moments.",
+        "The mesh parts table lists at most 100 mesh parts (PARTS_TABLE_ROWS): beyond that the "
+        "100 largest by volume and one row that sums the others. --plot draws the 500 heaviest "
+        "parts by their outline and the next 2000 as dots at their centres; the legend's title "
+        "says how many lighter parts are left out.",
         "Tilts: each principal axis's angle from its nearest body axis (a rod turned 0.5 degrees "
         "reads 0.5 degrees). The moments are listed in ascending order, so the rotation taking the "
         "body axes to principal axes 1, 2, 3 may be about 90 degrees for a body tilted a little; "

@@ -155,6 +155,17 @@ MANUAL["report"] = {
         "uniform ellipsoid and box and the principal axes (a 3-D view and views from +z, -y and "
         "+x at one scale), balance, whirl, free precession, heavy top and rolling stability. The tables "
         "are the same as the commands print (--digits, --units).",
+        "Large bodies: the parts table lists at most 100 parts (PARTS_TABLE_ROWS): beyond that, "
+        "the 100 with the largest contributions (|Ixx + Iyy + Izz|, then the heaviest), in file "
+        "order, one row that sums the others (their mass, share, centre of mass and "
+        "contributions) and the total; rbcli inertia --json lists every part. The body figure "
+        "draws the 500 heaviest parts (FIGURE_MAX_PARTS) by their outline, the next 2000 "
+        "(FIGURE_MAX_DOTS) as dots at their centres, and says under it how many lighter parts "
+        "it left out and their share of the mass. The input file is shown up to 500 000 "
+        "characters (INPUT_MAX_CHARS), cut at a line end, with a line saying how much is left "
+        "out (the SHA-256 in the header covers the whole file). So a 100 000-part body "
+        "reports in about 20 s and 0.7 GB (most of both reading the file), in an HTML file of "
+        "about 3 MB.",
         "When a section is in the report: balance when the body file has a shaft or one of "
         "--shaft, --planes, --bearings, --grade or a rotation --speed is given (the shaft "
         "defaults as in rbcli balance); whirl (as rbcli whirl, with its default speed range) when "
