@@ -32,7 +32,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from types import MappingProxyType
-from typing import Any, TypeVar, Union
+from typing import Any, TypeVar
 
 from rbcli.io.bodydata import PartSpec, freeze
 
@@ -41,7 +41,7 @@ __all__ = ["PartSpec", "Quantity", "Vector", "point", "rod", "ring", "disk", "pl
            "mesh", "given", "include"]
 
 #: a number (SI, or in the body's ``units``) or a quantity string (``"25 mm"``)
-Quantity = Union[float, str]
+Quantity = float | str
 #: three quantities: a point or a direction (a list, a tuple, a numpy array)
 Vector = Sequence[Quantity]
 

@@ -33,8 +33,7 @@ from rbcli.errors import InputError, Location
 from rbcli.io import yamlsafe as ys
 from rbcli.io.loadctx import DataMark, Label
 
-__all__ = ["PartSpec", "freeze", "thaw", "tree", "load_data", "from_parts", "document",
-           "rebuilt", "replace_part", "move_part", "with_points", "SOURCE"]
+__all__ = ["PartSpec", "freeze", "thaw", "tree", "load_data", "from_parts", "rebuilt", "replace_part", "move_part", "with_points", "SOURCE"]
 
 #: ``Body.source`` of a body built from Python data
 SOURCE = "<data>"
@@ -410,47 +409,18 @@ def from_parts(parts: Sequence[Mapping[str, object]], *, base_dir: object = None
 # --------------------------------------------------------------------------- from a body
 
 
-def document(body) -> dict:
-    """``body``'s document as plain data (dicts and lists), ready to change and write: a
-    one-part shorthand made a ``parts:`` list, ``name`` and the ``units`` bare numbers
-    follow always written.
-
-    Raises
-    ------
-    InputError
-        A body no reader of rbcli made (``Body(...)`` or ``dataclasses.replace``): it has
-        no document.
-    """
-    from rbcli.io.body import origin
-
-    if origin(body) is None:
-        raise InputError("this body has no document to write or change: it was not made by "
-                         "rbcli.load, load_text, load_data, Body.from_parts, Body.replace or "
-                         "Body.moved (a Body(...) or a dataclasses.replace of one is not)")
-    data = ys.to_python(ys.load(body.text, body.source))
-    if not isinstance(data, dict):  # the loader accepted it, so this cannot happen
-        raise InputError("the body's document is not a mapping", Location(body.source))
-    if "parts" not in data:  # one-part shorthand: the mapping is the part
-        part = {k: v for k, v in data.items() if k not in ("rbcli", "units")}
-        head = {k: data[k] for k in ("rbcli", "units") if k in data}
-        data = {**({"rbcli": head["rbcli"]} if "rbcli" in head else {}), "name": body.name,
-                **({"units": head["units"]} if "units" in head else {}), "parts": [part]}
-    if "name" not in data:
-        data = {**({"rbcli": data["rbcli"]} if "rbcli" in data else {}), "name": body.name,
-                **{k: v for k, v in data.items() if k != "rbcli"}}
-    if "units" not in data and body.units:  # load_text(..., units=...): the caller's units
-        at = list(data).index("parts")
-        items = list(data.items())
-        data = dict([*items[:at], ("units", dict(body.units)), *items[at:]])
-    return data
-
-
 def rebuilt(body, data: dict):
     """The body of ``data`` (:func:`document` of ``body``, changed), read from ``body``'s
     folder, its problems located by key path."""
     from rbcli.io.body import origin
 
     return load_data(data, base_dir=origin(body))
+
+
+def _document(body) -> dict:
+    from rbcli.io.writebody import document
+
+    return document(body)
 
 
 def _index(body, data: dict, which: object) -> int:
@@ -479,7 +449,7 @@ def replace_part(body, which: object, part: object, keys: Mapping[str, object]):
     """``body`` with its part ``which`` (a name, or an index in its ``parts:`` list) replaced
     by ``part`` (a spec or mapping, or None: the part as it is) with ``keys`` changed
     (None removes a key)."""
-    data = document(body)
+    data = _document(body)
     i = _index(body, data, which)
     if part is None:
         new = dict(data["parts"][i])
@@ -519,7 +489,7 @@ def with_points(body, points: Sequence[tuple[str, float, Sequence[float]]]):
     ``point`` parts with numbers in explicit units (``"43.631 g"``, ``"200 mm"``: 15
     significant figures, whatever the body's ``units``); a name already used gets `` (2)``,
     `` (3)``... (what ``rbcli balance --apply`` writes)."""
-    data = document(body)
+    data = _document(body)
     parts = data["parts"]
     names = {p["name"] for p in parts if isinstance(p, dict) and isinstance(p.get("name"), str)}
     names |= {p.name for p in body.parts}

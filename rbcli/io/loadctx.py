@@ -84,11 +84,11 @@ class DataMark:
     line = 0
     col = 0
 
-    def __init__(self, parent: "DataMark | None", key: "str | int | Label", root: str = "") -> None:
+    def __init__(self, parent: DataMark | None, key: str | int | Label, root: str = "") -> None:
         self.parent, self.key = parent, key
         self.root = root if parent is None else parent.root
 
-    def child(self, key: "str | int | Label") -> "DataMark":
+    def child(self, key: str | int | Label) -> DataMark:
         return DataMark(self, key)
 
     def path(self) -> str:

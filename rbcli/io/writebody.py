@@ -18,10 +18,11 @@ import os
 import re
 from pathlib import Path
 
+from rbcli.errors import InputError, Location
 from rbcli.io import outfile
 from rbcli.model import Body
 
-__all__ = ["to_yaml", "dump", "check_output"]
+__all__ = ["to_yaml", "document", "dump", "check_output"]
 
 _FILE_SHAPES = ("include", "mesh")
 
@@ -49,6 +50,42 @@ def _rebase(path: str, old_dir: str, new_dir: Path) -> str:
     return Path(rel).as_posix()
 
 
+def document(body) -> dict:
+    """``body``'s document as plain data (dicts and lists), ready to change and write: a
+    one-part shorthand made a ``parts:`` list, ``name`` and the ``units`` bare numbers
+    follow always written.
+
+    Raises
+    ------
+    InputError
+        A body no reader of rbcli made (``Body(...)`` or ``dataclasses.replace``): it has
+        no document.
+    """
+    from rbcli.io import yamlsafe as ys
+    from rbcli.io.body import origin
+
+    if origin(body) is None:
+        raise InputError("this body has no document to write or change: it was not made by "
+                         "rbcli.load, load_text, load_data, Body.from_parts, Body.replace or "
+                         "Body.moved (a Body(...) or a dataclasses.replace of one is not)")
+    data = ys.to_python(ys.load(body.text, body.source))
+    if not isinstance(data, dict):  # the loader accepted it, so this cannot happen
+        raise InputError("the body's document is not a mapping", Location(body.source))
+    if "parts" not in data:  # one-part shorthand: the mapping is the part
+        part = {k: v for k, v in data.items() if k not in ("rbcli", "units")}
+        head = {k: data[k] for k in ("rbcli", "units") if k in data}
+        data = {**({"rbcli": head["rbcli"]} if "rbcli" in head else {}), "name": body.name,
+                **({"units": head["units"]} if "units" in head else {}), "parts": [part]}
+    if "name" not in data:
+        data = {**({"rbcli": data["rbcli"]} if "rbcli" in data else {}), "name": body.name,
+                **{k: v for k, v in data.items() if k != "rbcli"}}
+    if "units" not in data and body.units:  # load_text(..., units=...): the caller's units
+        at = list(data).index("parts")
+        items = list(data.items())
+        data = dict([*items[:at], ("units", dict(body.units)), *items[at:]])
+    return data
+
+
 def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
     """``body``'s document as YAML text (see the module's notes), its relative file paths
     rewritten to resolve from ``base_dir`` (default: the current folder).
@@ -56,10 +93,9 @@ def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
     Raises
     ------
     InputError
-        A body no reader of rbcli made (:func:`rbcli.io.bodydata.document`).
+        A body no reader of rbcli made (:func:`document`).
     """
     from rbcli.io.body import origin
-    from rbcli.io.bodydata import document
 
     data = document(body)
     old_dir = origin(body)
