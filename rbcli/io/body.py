@@ -90,8 +90,9 @@ def default_units(units: dict[str, str]) -> dict[str, str]:
             raise ValueError(f"unknown kind '{key}'; allowed: {', '.join(UNIT_KEYS)}")
         try:
             un.unit_for_kind({key: unit}, key)
-        except un.UnitError as exc:
-            raise ValueError(f"{key}: {exc}") from None
+        except un.UnitError as exc:  # its message may say "units: length is 'kg', ..." itself
+            msg = str(exc)
+            raise ValueError(msg[7:] if msg.startswith("units: ") else f"{key}: {msg}") from None
         out[key] = un.canonical_unit(unit)
     return out
 

@@ -106,6 +106,8 @@ class DataMark:
         for k in reversed(keys):
             if k.__class__ is int:
                 out += f"[{k}]"
+            elif not k.isidentifier():
+                out += f"[{k!r}]"
             else:
                 out += f".{k}" if out else str(k)
         return out or self.root
