@@ -502,7 +502,7 @@ class BalanceResult(Result):
         """
         from rbcli.io.bodydata import with_points
 
-        if not self.added:
+        if self.installed is None:
             raise ParamError("planes", "balanced_body() needs the correction planes: "
                              "balance(..., {planes}=\"zA,zB\")")
         points = [(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),

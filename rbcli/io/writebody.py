@@ -113,6 +113,7 @@ _NOT_STR = re.compile(
     r"|[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"
     r"|[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?"
     r"|[-+]?(\.inf|\.Inf|\.INF)|\.nan|\.NaN|\.NAN"
+    r"|<<"  # a merge key, which body files refuse plain
 )
 
 
@@ -139,7 +140,8 @@ def _dumper() -> type:
         import yaml
 
         class _Dumper(getattr(yaml, "CSafeDumper", yaml.SafeDumper)):  # type: ignore[misc]
-            pass
+            def ignore_aliases(self, data: object) -> bool:
+                return True  # a value used twice is written twice (body files refuse aliases)
 
         def _str(dumper: yaml.SafeDumper, value: str) -> yaml.Node:
             style = '"' if (not value or _NOT_STR.fullmatch(value)) else None
