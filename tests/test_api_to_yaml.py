@@ -405,3 +405,15 @@ def test_balanced_body_names_do_not_clash():
     fitted = rbcli.balance(body, planes="-0.1,0.1", radius=0.1).balanced_body()
     assert [p.name for p in fitted.parts] == ["balance A", "balance A (2)", "balance B"]
     assert math.isclose(abs(rbcli.balance(fitted).static_unbalance), 0.0, abs_tol=1e-17)
+
+
+def test_apply_writes_the_name_a_file_left_to_its_stem(cli, tmp_path):
+    """A change of ``--apply`` (named in the commit): a file without ``name:`` is named by its
+    stem; the balanced file keeps that name (read back as ``out``, it would have been ``out``)."""
+    body = tmp_path / "wheel.yaml"
+    body.write_text("parts:\n  - {shape: disk, radius: 0.2, mass: 5, at: [0.001, 0, 0]}\n", encoding="utf-8")
+    out = tmp_path / "out.yaml"
+    r = cli("balance", str(body), "--planes=-0.1,0.1", "--radius", "0.2", "--apply", str(out))
+    assert r.code == 0, r.err
+    assert rbcli.load(out).name == "wheel"
+    assert "\nname: wheel\nparts:\n" in out.read_text(encoding="utf-8")
