@@ -88,6 +88,12 @@ def test_a_body_without_a_document_is_not_written():
         hand.moved(0, at=[0, 0, 0])
 
 
+def test_to_yaml_takes_a_folder():
+    b = rbcli.load(EXAMPLES / "cube.yaml")
+    with pytest.raises(TypeError, match=r"^base_dir: expected a folder"):
+        b.to_yaml(base_dir=5)
+
+
 def test_the_text_of_a_body_from_data_is_its_document():
     b = rbcli.Body.from_parts([P.disk(name="d", radius="10 cm", mass=1, at=[0, 0, 0.1])],
                               units={"mass": "g"}, shaft={"axis": [0, 0, 1]})

@@ -97,6 +97,8 @@ def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
     """
     from rbcli.io.body import origin
 
+    if base_dir is not None and not isinstance(base_dir, (str, os.PathLike)):
+        raise TypeError(f"base_dir: expected a folder (str or path-like), not {type(base_dir).__name__}")
     data = document(body)
     old_dir = origin(body)
     new_dir = Path(base_dir) if base_dir is not None else Path.cwd()
