@@ -191,8 +191,11 @@ class Body:
     Attributes
     ----------
     name : str
-    source : str — the file path, ``<stdin>`` or ``<expr>``
-    text : str — the input text as read (for reports: echo and SHA-256)
+    source : str — the file path, ``<stdin>``, ``<expr>``, ``<text>`` (``rbcli.load_text``) or
+        ``<data>`` (a body built from Python data: ``rbcli.load_data``, :meth:`from_parts`,
+        :meth:`replace`, :meth:`moved`)
+    text : str — the input text as read (for reports: echo and SHA-256); for a body built from
+        data, its document as YAML (what :meth:`to_yaml` writes)
     parts : tuple[Part, ...]
     reference, pivot : (3,) ndarray | None — m
     reference_is_com : bool — ``reference: com`` in the file

@@ -250,6 +250,11 @@ def test_load_text_takes_text(arg):
         rbcli.load_text(arg)
 
 
+def test_load_refuses_an_empty_path():
+    with pytest.raises(rbcli.ParamError, match=r"^path: an empty path names no file$"):
+        rbcli.load("")
+
+
 def test_the_doors_accept_what_they_document(tmp_path):
     from pathlib import Path
 

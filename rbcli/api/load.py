@@ -96,7 +96,10 @@ def load(path: str | os.PathLike[str]) -> Body:
     """
     from rbcli.io.body import load_body
 
-    return load_body(_path(path, "path"))
+    p = _path(path, "path")
+    if not p:
+        raise ParamError("path", "an empty path names no file")
+    return load_body(p)
 
 
 def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name: str = "body",
