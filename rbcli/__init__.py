@@ -8,7 +8,8 @@ The Python API runs the same computations as the commands::
     r.corrections[0].mass        # kg
     r.to_json()                  # what `rbcli balance ... --json` prints (less "file")
 
-Functions: :func:`load`, :func:`load_text`, :func:`inertia`, :func:`principal`,
+Bodies are read (:func:`load`, :func:`load_text`, :func:`load_data`) or built in code
+(:mod:`rbcli.parts` and :meth:`Body.from_parts`). Functions: :func:`inertia`, :func:`principal`,
 :func:`balance`, :func:`field_balance`, :func:`precess`, :func:`top`,
 :func:`gyrocompass`, :func:`rollcheck`, :func:`whirl`, :func:`report`. Keyword arguments take SI numbers
 or quantity strings (``"30 cm"``, ``"3000 rpm"``) read exactly as the command line reads
@@ -29,6 +30,7 @@ __version__ = "0.1.0"
 _API = {
     "load": "rbcli.api.load",
     "load_text": "rbcli.api.load",
+    "load_data": "rbcli.api.load",
     "inertia": "rbcli.api.massprops",
     "principal": "rbcli.api.massprops",
     "balance": "rbcli.api.balance",
@@ -48,12 +50,16 @@ _API = {
     "ExitStatus": "rbcli.errors",
 }
 
-__all__ = ["__version__", *_API]
+#: public submodules (loaded on first use too)
+_MODULES = {"parts": "rbcli.parts"}
+
+__all__ = ["__version__", *_API, *_MODULES]
 
 if TYPE_CHECKING:  # pragma: no cover
     from typing import Any
 
-    from rbcli.api.load import load, load_text  # noqa: F401
+    from rbcli import parts  # noqa: F401
+    from rbcli.api.load import load, load_data, load_text  # noqa: F401
     from rbcli.errors import ExitStatus, InputError, NonFiniteResult, ParamError  # noqa: F401
     from rbcli.model import Body  # noqa: F401
 
@@ -61,6 +67,10 @@ if TYPE_CHECKING:  # pragma: no cover
 def __getattr__(name: str) -> Any:
     module = _API.get(name)
     if module is None:
+        if name in _MODULES:
+            import importlib
+
+            return importlib.import_module(_MODULES[name])  # sets rbcli.parts itself
         raise AttributeError(f"module 'rbcli' has no attribute '{name}'")
     import importlib
 

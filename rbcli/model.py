@@ -7,12 +7,21 @@ Bodies are values, deeply immutable whatever path built them (the loader, ``Part
 code, ``dataclasses.replace``): every array is read-only (a writable one passed in is
 copied), ``Part.extra`` and ``Body.units`` are read-only mappings of their own, the
 sequences are tuples. One body, one answer.
+
+A body is built in code with :meth:`Body.from_parts`, changed with :meth:`Body.replace` and
+:meth:`Body.moved`, and written with :meth:`Body.to_yaml`: those methods are the body
+reader's and writer's (:mod:`rbcli.io.bodydata`, :mod:`rbcli.io.writebody`), imported when
+called, so that this module stays a leaf at import time (tests/test_architecture.py allows
+those two imports and no other).
 """
 
 from __future__ import annotations
 
+import os
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
 
@@ -182,8 +191,11 @@ class Body:
     Attributes
     ----------
     name : str
-    source : str — the file path, ``<stdin>`` or ``<expr>``
-    text : str — the input text as read (for reports: echo and SHA-256)
+    source : str — the file path, ``<stdin>``, ``<expr>``, ``<text>`` (``rbcli.load_text``) or
+        ``<data>`` (a body built from Python data: ``rbcli.load_data``, :meth:`from_parts`,
+        :meth:`replace`, :meth:`moved`)
+    text : str — the input text as read (for reports: echo and SHA-256); for a body built from
+        data, its document as YAML (what :meth:`to_yaml` writes)
     parts : tuple[Part, ...]
     reference, pivot : (3,) ndarray | None — m
     reference_is_com : bool — ``reference: com`` in the file
@@ -223,3 +235,217 @@ class Body:
             if value.__class__ is not tuple:
                 object.__setattr__(self, name, tuple(value))
         object.__setattr__(self, "units", _mapping(self.units))
+
+    # ------------------------------------------------------------------ built in code
+
+    @classmethod
+    def from_parts(cls, parts: Sequence[Mapping[str, Any]], *, name: str = "body",
+                   units: Mapping[str, str] | None = None, shaft: Mapping[str, Any] | None = None,
+                   reference: Sequence[Any] | str | None = None, pivot: Sequence[Any] | None = None,
+                   rim_radius: float | str | None = None, description: str | None = None,
+                   base_dir: str | os.PathLike[str] | None = None) -> Body:
+        """A body made of ``parts``, checked as a body file is.
+
+        Each argument is the body file's key of that name, with the values the file takes:
+        numbers in SI or in the body's ``units``, or quantity strings such as ``"25 mm"``.
+
+        Parameters
+        ----------
+        parts : sequence of PartSpec or mapping
+            The parts, in order: :mod:`rbcli.parts` makes them (``rbcli.parts.disk(...)``);
+            a mapping of a part's keys (``{"shape": "disk", "radius": 0.1, ...}``) is taken
+            too.
+        name : str
+            The body's name.
+        units : mapping, optional
+            What bare numbers mean, e.g. ``{"length": "mm", "mass": "g"}`` (kinds: length,
+            mass, time, angle, angular_speed). Default SI.
+        shaft : mapping, optional
+            The shaft line, ``{"axis": [0, 0, 1], "through": [0, 0, 0]}`` (``through`` m,
+            optional): the default of ``balance``, ``whirl``, ``rollcheck``, ...
+        reference : sequence of 3 or str, optional
+            The reference point (m), or ``"com"`` / ``"origin"``.
+        pivot : sequence of 3, optional
+            The pivot (m), for ``top``.
+        rim_radius : float or str, optional
+            The rim radius (m), for ``rollcheck``.
+        description : str, optional
+            A line of text about the body.
+        base_dir : path-like, optional
+            Where relative ``file:`` paths of ``mesh`` and ``include`` parts start (default:
+            the current folder).
+
+        Returns
+        -------
+        Body
+            The validated body (``source`` ``"<data>"``; ``text`` its document as YAML).
+
+        Raises
+        ------
+        TypeError
+            A part that is not a part or a mapping, a value of a type no body file holds
+            (a complex number, a set, ...), named by where it is (``parts[2].at``).
+        rbcli.InputError
+            Anything a body file could get wrong, with the message a file gets, located at
+            the part by the call: ``parts[2] (cylinder 'bore'): ...``.
+
+        Examples
+        --------
+        >>> import rbcli
+        >>> from rbcli import parts
+        >>> wheel = rbcli.Body.from_parts([
+        ...     parts.disk(name="web", radius="-150 mm", mass=2),
+        ...     parts.ring(name="rim", radius="150 mm", mass=1),
+        ... ], name="wheel", shaft={"axis": [0, 0, 1]})
+        Traceback (most recent call last):
+        ...
+        rbcli.errors.InputError: parts[0] (disk 'web'): part 'web': radius must be greater than 0 (got -0.15 m)
+        >>> wheel = rbcli.Body.from_parts([
+        ...     parts.disk(name="web", radius="150 mm", mass=2),
+        ...     parts.ring(name="rim", radius="150 mm", mass=1),
+        ... ], name="wheel", shaft={"axis": [0, 0, 1]})
+        >>> round(float(rbcli.inertia(wheel).inertia_com[2][2]), 12)   # 2 R²/2 + 1 R², kg m²
+        0.045
+        """
+        from rbcli.io.bodydata import from_parts
+
+        return from_parts(parts, name=name, units=units, shaft=shaft, reference=reference,
+                          pivot=pivot, rim_radius=rim_radius, description=description,
+                          base_dir=base_dir)
+
+    def to_yaml(self, *, base_dir: str | os.PathLike[str] | None = None) -> str:
+        """The body as a body file (YAML text) that reads back to the same body.
+
+        :func:`rbcli.load_text` (and ``rbcli.load`` of the text saved in ``base_dir``) reads
+        it back to the same mass, centre of mass and inertia tensor, bit for bit, and the
+        same name, units, shaft, reference, pivot and rim radius: every value is written as
+        it was read (a float as Python's ``repr``), in the body's ``units``.
+
+        What is kept: the document's data — its keys, values and their order, strings with
+        units (``"25 mm"``) as written, ``include`` and ``mesh`` parts as references to their
+        files (an included file's parts are not copied in; the files must still be there
+        when the text is read). What is not: comments, layout, quoting and number spelling
+        of a file (``1e3`` is written ``1000.0``); a one-part shorthand becomes a ``parts:``
+        list, and the body's ``name`` and ``units`` are written even when the file left them
+        to defaults (its stem, the caller's ``units=``).
+
+        Parameters
+        ----------
+        base_dir : path-like, optional
+            The folder the text will be read from (where it will be saved): relative
+            ``file:`` paths of ``include`` and ``mesh`` parts are rewritten to resolve from
+            there. Default: the current folder, where :func:`rbcli.load_text` starts.
+
+        Returns
+        -------
+        str
+            The YAML text.
+
+        Raises
+        ------
+        rbcli.InputError
+            For a body no reader of rbcli made (``Body(...)`` by hand, or a
+            ``dataclasses.replace`` of a body): it has no document. Build it with
+            :meth:`from_parts`, change it with :meth:`replace` or :meth:`moved`.
+
+        Examples
+        --------
+        >>> import rbcli
+        >>> box = rbcli.Body.from_parts([rbcli.parts.box(size=[100, 200, 300], mass=2)],
+        ...                             name="brick", units={"length": "mm"})
+        >>> print(box.to_yaml(), end="")
+        name: brick
+        units: {length: mm}
+        parts:
+        - shape: box
+          size: [100, 200, 300]
+          mass: 2
+        >>> again = rbcli.load_text(box.to_yaml())
+        >>> bool((rbcli.inertia(again).inertia_com == rbcli.inertia(box).inertia_com).all())
+        True
+        """
+        from rbcli.io.writebody import to_yaml
+
+        return to_yaml(self, base_dir)
+
+    def replace(self, which: str | int, part: Mapping[str, Any] | None = None, /,
+                **keys: Any) -> Body:
+        """The body with one of its parts replaced, or some of the part's keys changed.
+
+        The body's document is changed and read again, with every check; the body itself
+        is not changed (it is a value).
+
+        Parameters
+        ----------
+        which : str or int
+            The part: its name (``"disk"``; a part without one is named ``shape`` + its
+            number, ``disk2``), or its index in the body's ``parts:`` list (an included
+            file counts as one part there).
+        part : PartSpec or mapping, optional
+            The new part (:mod:`rbcli.parts`); default: the part as it is.
+        **keys
+            Keys of the part to set (``radius="110 mm"``, ``mass=2``, ``at=[0, 0, 0.1]``);
+            ``None`` removes a key. ``from_`` is the rod's ``from``.
+
+        Returns
+        -------
+        Body
+
+        Raises
+        ------
+        rbcli.InputError
+            No such part, or what the new body's checks say (located by key path,
+            ``parts[1].radius``).
+
+        Examples
+        --------
+        >>> import rbcli
+        >>> rotor = rbcli.Body.from_parts([
+        ...     rbcli.parts.disk(name="disk", radius="100 mm", mass=5, at=[0, 0, 0.2]),
+        ... ], shaft={"axis": [0, 0, 1]})
+        >>> heavier = rotor.replace("disk", mass=6)
+        >>> heavier.parts[0].mass, rotor.parts[0].mass
+        (6.0, 5.0)
+        """
+        from rbcli.io.bodydata import replace_part
+
+        return replace_part(self, which, part, keys)
+
+    def moved(self, which: str | int, *, at: Sequence[Any] | None = None,
+              axis: Sequence[Any] | None = None, rotate: Mapping[str, Any] | None = None) -> Body:
+        """The body with one part placed anew: what a sweep over a part's position needs.
+
+        Parameters
+        ----------
+        which : str or int
+            The part, as for :meth:`replace`.
+        at : sequence of 3, optional
+            Its new position (the ``at`` key: m, the body's units, or quantity strings).
+        axis : sequence of 3, optional
+            Its new local z axis (replaces a ``rotate``).
+        rotate : mapping, optional
+            Its new rotation, as the ``rotate`` key (replaces an ``axis``).
+
+        Returns
+        -------
+        Body
+            The keys not given stay as they are.
+
+        Raises
+        ------
+        rbcli.InputError
+            As :meth:`replace`; ``axis`` and ``rotate`` together.
+
+        Examples
+        --------
+        >>> import rbcli
+        >>> rotor = rbcli.Body.from_parts([
+        ...     rbcli.parts.disk(name="disk", radius="100 mm", mass=5, at=[0, 0, "200 mm"]),
+        ... ], shaft={"axis": [0, 0, 1]})
+        >>> off = rotor.moved("disk", at=["1 mm", 0, "200 mm"])
+        >>> round(abs(rbcli.balance(off).static_unbalance), 12)   # 5 kg × 1 mm, kg m
+        0.005
+        """
+        from rbcli.io.bodydata import move_part
+
+        return move_part(self, which, at, axis, rotate)

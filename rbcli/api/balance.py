@@ -466,6 +466,49 @@ class BalanceResult(Result):
                 + " the direction of rotation, as printed")
         return Diagram(f"balance: {self.body.name}", tuple(panels), sense, note)
 
+    def balanced_body(self) -> Body:
+        """The rotor with the correction masses fitted: what ``rbcli balance --apply`` writes.
+
+        The masses to fit (:attr:`added`: the corrections rounded with ``mass_step`` and
+        ``angle_step``, or split onto the ``positions``) become ``point`` parts named
+        ``balance A`` and ``balance B`` (``balance A (position 3)`` with ``positions``; a
+        name already used gets `` (2)``), their numbers written in explicit units (grams and
+        millimetres, 15 significant figures) whatever the body's ``units``. The new body is
+        checked as any body is; ``.to_yaml()`` writes it.
+
+        Returns
+        -------
+        Body
+            The balanced rotor (``source`` ``"<data>"``); balancing it again leaves the
+            residual of ``installed.residual``, to the 15 figures written.
+
+        Raises
+        ------
+        rbcli.InputError
+            Without the correction planes (``planes``) there is nothing to fit; or the
+            rotor is not one rbcli read or built (see :meth:`rbcli.Body.to_yaml`).
+
+        Examples
+        --------
+        >>> import rbcli
+        >>> rotor = rbcli.load("examples/two_disk_rotor.yaml")
+        >>> r = rbcli.balance(rotor, planes="0,400 mm", radius="100 mm", mass_step="1 g")
+        >>> fitted = r.balanced_body()
+        >>> [p.name for p in fitted.parts[-2:]]
+        ['balance A', 'balance B']
+        >>> again = rbcli.balance(fitted, planes="0,400 mm", radius="100 mm")
+        >>> bool(again.corrections[0].mass < 1e-3)    # less than the 1 g step, kg
+        True
+        """
+        from rbcli.io.bodydata import with_points
+
+        if self.installed is None:
+            raise ParamError("planes", "balanced_body() needs the correction planes: "
+                             "balance(..., {planes}=\"zA,zB\")")
+        points = [(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
+                   a.mass, a.at) for a in self.added]
+        return with_points(self.body, points)
+
     def to_json(self) -> dict[str, Any]:
         """The document ``rbcli balance --json`` prints, less ``file`` (and ``apply``)."""
         from rbcli.api import balancejson as J

@@ -1,11 +1,67 @@
-"""Reading a body for the Python API: :func:`load` (a path) and :func:`load_text` (YAML text)."""
+"""Reading a body for the Python API: :func:`load` (a path), :func:`load_text` (YAML text)
+and :func:`load_data` (a mapping already parsed, as a body file's).
+
+Each checks its arguments at the door: a wrong type is a ``TypeError`` naming the parameter,
+a bad value an :class:`rbcli.InputError` (a :class:`rbcli.ParamError` naming it); the body
+itself is checked by the one body reader (:mod:`rbcli.io.body`), with the messages the
+command line prints.
+"""
 
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from pathlib import Path
 
+from rbcli.errors import ParamError
 from rbcli.model import Body
+
+__all__ = ["load", "load_text", "load_data"]
+
+
+def _path(value: object, param: str) -> str:
+    """A file or folder path given as ``str`` or path-like (of text), as ``str``."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, os.PathLike):
+        p = os.fspath(value)
+        if isinstance(p, str):
+            return p
+    raise TypeError(f"{param}: expected a path (str or path-like), not {type(value).__name__}")
+
+
+def _base_dir(value: object) -> Path:
+    return Path.cwd() if value is None else Path(_path(value, "base_dir"))
+
+
+def _name(value: object) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"name: expected a text (str), not {type(value).__name__}")
+    return value
+
+
+def _units(units: object) -> dict[str, str] | None:
+    """The caller's default units, checked: a mapping of kinds to unit names."""
+    if units is None:
+        return None
+    if not isinstance(units, Mapping):
+        raise TypeError(f"units: expected a mapping of kinds to unit names, such as "
+                        f"{{'length': 'mm'}}, not {type(units).__name__}")
+    out: dict[str, str] = {}
+    for kind, unit in units.items():
+        if not isinstance(kind, str):
+            raise TypeError(f"units: its keys are kinds (length, mass, ...), not {type(kind).__name__}")
+        if not isinstance(unit, str):
+            raise TypeError(f"units: the unit of {kind!r} is a text such as 'mm', not "
+                            f"{type(unit).__name__}")
+        out[str(kind)] = str(unit)
+    from rbcli.io.body import default_units
+
+    try:
+        default_units(out)
+    except ValueError as exc:
+        raise ParamError("units", str(exc)) from None
+    return out
 
 
 def load(path: str | os.PathLike[str]) -> Body:
@@ -25,6 +81,8 @@ def load(path: str | os.PathLike[str]) -> Body:
 
     Raises
     ------
+    TypeError
+        ``path`` is not a path.
     rbcli.InputError
         Anything wrong with the file, with ``where`` (file, line, column) and the same
         one-line message the command line prints.
@@ -38,10 +96,13 @@ def load(path: str | os.PathLike[str]) -> Body:
     """
     from rbcli.io.body import load_body
 
-    return load_body(os.fspath(path))
+    p = _path(path, "path")
+    if not p:
+        raise ParamError("path", "an empty path names no file")
+    return load_body(p)
 
 
-def load_text(text: str | bytes, *, units: dict[str, str] | None = None, name: str = "body",
+def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name: str = "body",
               base_dir: str | os.PathLike[str] | None = None) -> Body:
     """Read and validate a body written as YAML text (a file's contents, or a one-part
     mapping such as ``"{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}"``).
@@ -50,9 +111,10 @@ def load_text(text: str | bytes, *, units: dict[str, str] | None = None, name: s
     ----------
     text : str or bytes
         The YAML.
-    units : dict, optional
+    units : mapping, optional
         What bare numbers mean when the text has no ``units:`` of its own, e.g.
-        ``{"length": "mm", "mass": "g"}`` (kinds: length, mass, time, angle). Default SI.
+        ``{"length": "mm", "mass": "g"}`` (kinds: length, mass, time, angle,
+        angular_speed). Default SI.
     name : str
         The body's name when the text gives none.
     base_dir : path-like, optional
@@ -64,8 +126,11 @@ def load_text(text: str | bytes, *, units: dict[str, str] | None = None, name: s
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type (``units=5``, ``units=["mm"]``), named.
     rbcli.InputError
-        As :func:`load`, located in ``<text>``.
+        A bad unit (``units: length: ...``); anything wrong with the body, as :func:`load`,
+        located in ``<text>``.
 
     Examples
     --------
@@ -76,5 +141,66 @@ def load_text(text: str | bytes, *, units: dict[str, str] | None = None, name: s
     """
     from rbcli.io.body import load_text as _load_text
 
-    base = Path(base_dir) if base_dir is not None else Path.cwd()
-    return _load_text(text, "<text>", base, name_default=name, units=units)
+    if not isinstance(text, (str, bytes, bytearray)):
+        raise TypeError(f"text: expected YAML text (str or bytes), not {type(text).__name__}")
+    if isinstance(text, bytearray):
+        text = bytes(text)
+    return _load_text(text, "<text>", _base_dir(base_dir), name_default=_name(name),
+                      units=_units(units))
+
+
+def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None = None,
+              name: str = "body", base_dir: str | os.PathLike[str] | None = None) -> Body:
+    """Read and validate a body given as Python data: the mapping a body file holds, as
+    ``yaml.safe_load`` or ``json.load`` of one would give it.
+
+    The data is checked as a body file is, with the same messages; a problem is located by
+    its key path (``parts[2].radius: ...``) instead of a line and column. Numbers may be
+    numpy scalars, vectors numpy arrays.
+
+    Parameters
+    ----------
+    mapping : mapping
+        ``{"name": ..., "units": ..., "parts": [{"shape": "disk", ...}, ...]}``, or a
+        one-part mapping ``{"shape": "box", "mass": 2, "size": [0.1, 0.2, 0.3]}``.
+    units : mapping, optional
+        What bare numbers mean when the mapping has no ``units`` of its own (as
+        :func:`load_text`).
+    name : str
+        The body's name when the mapping gives none.
+    base_dir : path-like, optional
+        Where relative ``include`` and mesh paths start (default: the current folder).
+
+    Returns
+    -------
+    Body
+        The validated body (``source`` ``"<data>"``, ``text`` the mapping as YAML).
+
+    Raises
+    ------
+    TypeError
+        An argument, or a value in the mapping, of a type no body file holds (a complex
+        number, a set, a key that is not a text), named by its key path.
+    rbcli.InputError
+        Anything a body file could get wrong, located by key path; a cycle in the data,
+        nesting deeper than 64 levels, an integer of more than 300 digits.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> data = {"name": "wheel", "units": {"length": "mm"},
+    ...         "parts": [{"name": "rim", "shape": "ring", "radius": 300, "mass": 2}]}
+    >>> round(float(rbcli.inertia(rbcli.load_data(data)).inertia_com[2][2]), 12)   # m R²
+    0.18
+    >>> data["parts"][0]["radius"] = -300
+    >>> rbcli.load_data(data)
+    Traceback (most recent call last):
+    ...
+    rbcli.errors.InputError: parts[0].radius: part 'rim': radius must be greater than 0 (got -300 mm)
+    """
+    from rbcli.io.bodydata import load_data as _load_data
+
+    if not isinstance(mapping, Mapping):
+        raise TypeError(f"mapping: expected a mapping like a body file's (a dict), not "
+                        f"{type(mapping).__name__}")
+    return _load_data(mapping, units=_units(units), name=_name(name), base_dir=_base_dir(base_dir))

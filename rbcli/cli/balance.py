@@ -119,14 +119,14 @@ def _json(res, applied) -> dict:
 
 
 def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
-    """Write ``--apply OUT``: the body with the correction masses as point parts.
-    Returns (the path written, the parts added as JSON rows)."""
+    """Write ``--apply OUT``: ``res.balanced_body().to_yaml()`` (the body with the correction
+    masses as point parts) under a header, never over an input nor, without ``--force``,
+    over an existing file. Returns (the path written, the parts added as JSON rows)."""
     import shlex
 
-    from rbcli.io.writebody import NewPoint, write_balanced
+    from rbcli.io import outfile
+    from rbcli.io.writebody import check_output
 
-    pts = [NewPoint(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
-                    a.mass, a.at) for a in res.added]
     fr = res.installed
     if res.position_split is not None:
         state = "correction masses at the positions" + (" (rounded)" if fr.rounded else "")
@@ -140,9 +140,13 @@ def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
         f"radii {fr.radii[0]:.6g} m and {fr.radii[1]:.6g} m). Check it:",
         f"  rbcli balance {shlex.quote(apply)} {check}",
     ]
-    write_balanced(b, pts, str(out_path), force=True, header=header)
-    return str(out_path), [{"name": p.name, "mass": float(p.mass), "at": [float(x) for x in p.at]}
-                           for p in pts]
+    text = "".join(f"# {line}\n" if line else "#\n" for line in header)
+    text += res.balanced_body().to_yaml(base_dir=out_path.parent)
+    path = check_output(str(out_path), b, force=True)  # checked again as it is written
+    outfile.write_atomic(path, text, "--apply", replace=True)
+    rows = [{"name": f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
+             "mass": float(a.mass), "at": [float(x) for x in a.at]} for a in res.added]
+    return str(out_path), rows
 
 
 MANUAL["balance"] = {
@@ -193,7 +197,9 @@ MANUAL["balance"] = {
         "--apply OUT.yaml writes the body's document again (comments are lost) with the "
         "correction masses (rounded, or at the positions, when asked) as point parts 'balance "
         "A' and 'balance B' (with numbers in explicit units), a one-part shorthand turned into a "
-        "parts: list and relative include/mesh paths rewritten for OUT's folder. It never writes "
+        "parts: list, the body's name written when the file left it to the file's stem, and "
+        "relative include/mesh paths rewritten for OUT's folder (in Python: "
+        "rbcli.balance(...).balanced_body().to_yaml()). It never writes "
         "over an input — the body file, any file it includes (at any depth) or any mesh it reads, "
         "also not through a link to one — nor over an existing OUT without --force (exit 2); it "
         "writes a temporary file beside OUT and renames it, so a failed run leaves no half-written "

@@ -37,7 +37,9 @@ from rbcli.io.placing import Stack, finish, parts_of, to_stack
 from rbcli.io.plausible import density_warning
 from rbcli.model import Body, Part, Shaft
 
-__all__ = ["load_body", "load_text", "load_expr", "FORMAT_VERSION", "BODY_KEYS", "UNIT_KEYS"]
+__all__ = ["load_body", "load_text", "load_expr", "load_node", "origin", "default_units",
+           "FORMAT_VERSION",
+           "BODY_KEYS", "UNIT_KEYS"]
 
 FORMAT_VERSION = 1
 BODY_KEYS = (
@@ -74,23 +76,42 @@ def _units(ctx: Ctx, m: ys.MapNode) -> None:
     ctx.factors = {}
 
 
-def _load(data: bytes | str, filename: str, base_dir: Path, stack: tuple[str, ...],
+def default_units(units: dict[str, str]) -> dict[str, str]:
+    """A caller's default ``units`` (``{"length": "mm"}``) checked, as canonical names.
+
+    Raises
+    ------
+    ValueError
+        An unknown kind or a unit of the wrong dimension (the message says which).
+    """
+    out = {}
+    for key, unit in units.items():
+        if key not in UNIT_KEYS:
+            raise ValueError(f"unknown kind '{key}'; allowed: {', '.join(UNIT_KEYS)}")
+        try:
+            un.unit_for_kind({key: unit}, key)
+        except un.UnitError as exc:  # its message may say "units: length is 'kg', ..." itself
+            msg = str(exc)
+            raise ValueError(msg[7:] if msg.startswith("units: ") else f"{key}: {msg}") from None
+        out[key] = un.canonical_unit(unit)
+    return out
+
+
+def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[str, ...],
           units: dict[str, str] | None = None, *, session: Session | None = None,
-          stacked: bool = False) -> _Loaded:
+          stacked: bool = False, root: ys.Node | None = None) -> _Loaded:
+    """Read a file's text ``data`` (or the tree ``root`` already made of Python data:
+    :mod:`rbcli.io.bodydata`)."""
     session = session if session is not None else new_session(_load)
-    root = ys.load(data, filename, list_cap=session.list_cap(filename))
+    if root is None:
+        root = ys.load(data, filename, list_cap=session.list_cap(filename))
     ctx = Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
     spent = session.used
     if units:  # the caller's default units (rbcli.load_text(..., units=...)); the file's win
-        for key, unit in units.items():
-            if key not in UNIT_KEYS:
-                raise InputError(f"units: unknown kind '{key}'; allowed: {', '.join(UNIT_KEYS)}",
-                                 Location(filename))
-            try:
-                un.unit_for_kind({key: unit}, key)
-            except un.UnitError as exc:
-                raise InputError(f"units: {key}: {exc}", Location(filename)) from None
-        ctx.base_units = {key: un.canonical_unit(unit) for key, unit in units.items()}
+        try:
+            ctx.base_units = default_units(units)
+        except ValueError as exc:
+            raise InputError(f"units: {exc}", Location(filename)) from None
     if not isinstance(root, ys.MapNode):
         raise ctx.error(root, "a body file is a mapping with 'parts:' (a list of parts), or a single part with 'shape:'")
     if "rbcli" in root.items:
@@ -284,9 +305,31 @@ def load_text(
     else:
         text = data
     loaded = _load(data, filename, base_dir, stack, units)
+    return _finish(loaded, name_default, filename, text, stack, base_dir)
+
+
+def load_node(root: ys.Node, source: str, base_dir: Path, *, text: str,
+              name_default: str = "body", units: dict[str, str] | None = None) -> Body:
+    """Load a body from a tree made of Python data (:func:`rbcli.io.bodydata.tree`, each node
+    located by its key path); ``text`` is its document as YAML (``Body.text``)."""
+    loaded = _load(None, source, base_dir, (), units, root=root)
+    return _finish(loaded, name_default, source, text, (), base_dir)
+
+
+def _finish(loaded: _Loaded, name_default: str, source: str, text: str,
+            stack: tuple[str, ...], base_dir: Path) -> Body:
     inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
-    body = _body_defaults(loaded, name_default, filename, text, inputs)
+    body = _body_defaults(loaded, name_default, source, text, inputs)
     # the included files' results are freed now (session -> parsed -> their ctx -> session
     # is a reference cycle, which only the collector would free, scanning all of it)
     loaded.ctx.session.parsed.clear()
+    object.__setattr__(body, "_origin", os.path.abspath(base_dir))
     return body
+
+
+def origin(body: Body) -> str | None:
+    """The folder (absolute) relative ``include`` and mesh paths of ``body.text`` start from,
+    for a body a reader of rbcli made (its document is ``body.text``); else None (a
+    ``Body(...)`` or a ``dataclasses.replace`` of one: its text, if any, need not say what
+    its parts are)."""
+    return body.__dict__.get("_origin") if hasattr(body, "__dict__") else None

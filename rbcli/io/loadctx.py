@@ -2,6 +2,11 @@
 already parsed) and each file's :class:`Ctx` (where its messages point, its units, what it
 read). The readers of :mod:`rbcli.io.parts`, :mod:`rbcli.io.fields` and the special parts
 take a ``ctx`` and raise ``ctx.error(node, message)``: an InputError at the node at fault.
+
+Where a node is: a :class:`rbcli.io.yamlsafe.Mark` (line and column) for a body read from
+YAML text, a :class:`DataMark` (its key path, ``parts[2].radius``, or the Python call that
+made it, ``parts[2] (cylinder 'bore')``) for a body built from Python data
+(:mod:`rbcli.io.bodydata`); :meth:`Ctx.where` makes either a :class:`rbcli.errors.Location`.
 """
 
 from __future__ import annotations
@@ -14,7 +19,7 @@ from rbcli.errors import InputError, Location
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 
-__all__ = ["MAX_PARTS", "Session", "Ctx", "new_session"]
+__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "new_session"]
 
 #: the default budget of a body: its parts, counting every use of an included file's parts
 #: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
@@ -63,6 +68,60 @@ def new_session(load: Callable | None = None) -> Session:
     return Session(limit_from_env("RBCLI_MAX_PARTS", MAX_PARTS), load)
 
 
+class DataMark:
+    """Where a value is in Python data: its key path from the root (``parts[2].radius``).
+
+    A node of a tree made from Python data (:mod:`rbcli.io.bodydata`) carries one where a
+    node read from YAML carries a :class:`rbcli.io.yamlsafe.Mark`. ``key`` is a mapping key
+    (``str``), a list index (``int``) or a :class:`Label`: a label names the value and all
+    it holds as a whole (``Body.from_parts`` labels each part by the call that made it, so
+    every problem in a part is located ``parts[2] (cylinder 'bore')``). The root's path is
+    ``root`` (the parameter that holds the data, e.g. ``mapping``). ``line`` and ``col`` are
+    0: there is no text.
+    """
+
+    __slots__ = ("parent", "key", "root")
+    line = 0
+    col = 0
+
+    def __init__(self, parent: DataMark | None, key: str | int | Label, root: str = "") -> None:
+        self.parent, self.key = parent, key
+        self.root = root if parent is None else parent.root
+
+    def child(self, key: str | int | Label) -> DataMark:
+        return DataMark(self, key)
+
+    def path(self) -> str:
+        """``parts[2].radius``; the nearest :class:`Label` on the way up, as it is; the
+        root's name for the root itself."""
+        keys: list = []
+        m: DataMark | None = self
+        while m is not None:
+            if m.key.__class__ is Label:
+                return str(m.key)
+            if m.parent is not None:
+                keys.append(m.key)
+            m = m.parent
+        out = ""
+        for k in reversed(keys):
+            if k.__class__ is int:
+                out += f"[{k}]"
+            elif not k.isidentifier():
+                out += f"[{k!r}]"
+            else:
+                out += f".{k}" if out else str(k)
+        return out or self.root
+
+    def __repr__(self) -> str:
+        return f"DataMark({self.path()!r})"
+
+
+class Label(str):
+    """A :class:`DataMark` key that names a value and all it holds as a whole."""
+
+    __slots__ = ()
+
+
 @dataclass
 class Ctx:
     """One file being read: its name in messages, its folder, its units, what it found."""
@@ -79,10 +138,14 @@ class Ctx:
     #: how deep includes go below this file (0: it includes nothing)
     height: int = 0
 
-    def where(self, node_or_mark: ys.Node | ys.Mark | None) -> Location:
+    def where(self, node_or_mark: ys.Node | ys.Mark | DataMark | None) -> Location:
+        """Where a node (or a mark) is: ``file:line:col`` in a file, or the key path of
+        Python data (:class:`DataMark`)."""
         if node_or_mark is None:
             return Location(self.file)
-        mark = node_or_mark if isinstance(node_or_mark, ys.Mark) else node_or_mark.mark
+        mark = node_or_mark.mark if isinstance(node_or_mark, ys.Node) else node_or_mark
+        if mark.__class__ is DataMark:
+            return Location(mark.path())
         return Location(self.file, mark.line, mark.col)
 
     def error(self, node_or_mark: ys.Node | ys.Mark | None, message: str) -> InputError:

@@ -17,7 +17,6 @@ import numpy as np
 
 from rbcli.core import rotation as rot
 from rbcli.core import shapes as shp
-from rbcli.errors import Location
 from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
@@ -29,10 +28,10 @@ from rbcli.io.fields import (
     mass_source,
     subtract,
 )
-from rbcli.io.givenpart import given_part
-from rbcli.io.includes import include_part
+from rbcli.io.givenpart import GIVEN_KEYS, given_part
+from rbcli.io.includes import INCLUDE_KEYS, include_part
 from rbcli.io.loadctx import Ctx
-from rbcli.io.meshpart import mesh_part
+from rbcli.io.meshpart import MESH_KEYS, mesh_part
 from rbcli.io.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
 from rbcli.io.plausible import note_density
 from rbcli.model import Part
@@ -43,6 +42,14 @@ SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not b
 
 def all_shape_names() -> list[str]:
     return [*shp.SHAPES.keys(), *SPECIAL_SHAPES]
+
+
+def part_keys(shape: str) -> tuple[str, ...]:
+    """Every key a part of ``shape`` takes (``shape`` among them), in the order messages
+    list them (what :mod:`rbcli.parts`'s constructors take: a test keeps them in step)."""
+    if shape in shp.SHAPES:
+        return _plan(shape).keys
+    return {"given": GIVEN_KEYS, "mesh": MESH_KEYS, "include": INCLUDE_KEYS}[shape]
 
 
 def _part_name(ctx: Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
@@ -222,10 +229,9 @@ def _primitive(ctx, m, shape, name, prefix, known, what) -> Pending:
         known[name] = (density, measure_kind)
     if not mass > 0:
         raise ctx.error(m, f"{what} has no mass")
-    mark = m.mark
     radius = plan.radius
     return Pending(
         prefix + name, shape, mass, "subtract" in items and subtract(ctx, m), measure,
-        measure_kind, radius and radius(params), Location(ctx.file, mark.line, mark.col), at,
+        measure_kind, radius and radius(params), ctx.where(m), at,
         spec, geo.com, geo.unit_inertia, dims_of(params),
     )
