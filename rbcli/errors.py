@@ -177,8 +177,12 @@ class RbcliError(Exception):
         return self.spelled()
 
 
-class InputError(RbcliError):
+class InputError(RbcliError, ValueError):
     """Bad input: a body file, an option value, a mesh file. Exit 2.
+
+    A :class:`ValueError` (as scipy and numpy raise for a bad value), so ``except
+    ValueError`` catches it; a wrong *type* of argument is a :class:`TypeError` naming the
+    parameter, never an InputError.
 
     Attributes
     ----------

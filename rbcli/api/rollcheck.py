@@ -332,6 +332,8 @@ def _wheel(body: Body, mp, axle, through, radius, tol) -> Wheel:
     try:
         return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through,
                                radius=radius, sym_rtol=tol)
+    except InputError:  # already names its parameter (an InputError is a ValueError)
+        raise
     except ValueError as exc:
         raise InputError(str(exc), Location(body.source)) from None
 

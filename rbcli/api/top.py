@@ -347,6 +347,8 @@ def run(body: Body, options: TopOptions) -> TopResult:
         if options.pivot_given:
             raise ParamError("pivot", str(exc)) from None
         raise InputError(str(exc), Location(body.source)) from None
+    except InputError:  # already names its parameter (an InputError is a ValueError)
+        raise
     except ValueError as exc:
         at = ", ".join(f"{x:.6g}" for x in P)
         raise InputError(f"{exc}; pivot at [{at}] m ({options.pivot_source})",
@@ -368,6 +370,8 @@ def run(body: Body, options: TopOptions) -> TopResult:
             check = verify(motion, periods=PERIODS)
             if params.asymmetry is not None:
                 real = verify_real_body(motion, periods=PERIODS)
+        except InputError:  # already names its parameter (an InputError is a ValueError)
+            raise
         except (ValueError, OverflowError, ArithmeticError) as exc:
             raise ParamError("verify", str(exc)) from None
     warnings = o.warnings
@@ -608,6 +612,8 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
         mp = body_mass_props(body)
         try:
             rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
+        except InputError:  # already names its parameter (an InputError is a ValueError)
+            raise
         except ValueError as exc:
             raise InputError(f"{literal(exc)}; spin axis from {o.axis_source.template}",
                              Location(body.source)) from None
@@ -615,6 +621,8 @@ def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> Gyrocompa
         r = C / A
     try:
         swing = core.gyrocompass(r, o.spin, o.latitude, o.earth_rate)
+    except InputError:  # already names its parameter (an InputError is a ValueError)
+        raise
     except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
         who = ["{ratio}" if body is None else literal(body.source), "{spin}", "{earth_rate}"]
         raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
