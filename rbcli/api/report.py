@@ -352,17 +352,17 @@ def _parts(ctx: _Ctx) -> Section:
 
 
 def _massprops(ctx: _Ctx) -> Section:
-    from rbcli.api.massprops import InertiaOptions, run_inertia
+    from rbcli.api import inertia as api
 
-    o = InertiaOptions.parse(ctx.body)
-    return Section("mass-properties", "Mass properties", run_inertia(ctx.body, o), options=o)
+    o = api.InertiaOptions.parse(ctx.body)
+    return Section("mass-properties", "Mass properties", api.run(ctx.body, o), options=o)
 
 
 def _principal(ctx: _Ctx) -> Section:
-    from rbcli.api.massprops import PrincipalOptions, run_principal
+    from rbcli.api import principal as api
 
-    o = PrincipalOptions.parse(ctx.body)
-    return Section("principal-axes", "Principal axes", run_principal(ctx.body, o), options=o)
+    o = api.PrincipalOptions.parse(ctx.body)
+    return Section("principal-axes", "Principal axes", api.run(ctx.body, o), options=o)
 
 
 def _skip(key: str, title: str, reason: str) -> Section:
