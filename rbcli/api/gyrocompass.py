@@ -14,7 +14,9 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as op
+from rbcli.api.check import Quantity, Vector
 from rbcli.api.options import symmetry_tolerance
 from rbcli.api.result import Result, jsonable
 from rbcli.api.top import plausibility
@@ -26,6 +28,10 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
 __all__ = ["GyrocompassOptions", "GyrocompassResult", "run", "gyrocompass", "EARTH_RATE"]
+
+#: the checker of each keyword argument of :func:`gyrocompass` (:mod:`rbcli.api.check`)
+KINDS = {"ratio": check.quantity, "shaft": check.vector, "spin": check.quantity,
+         "latitude": check.quantity, "earth_rate": check.quantity, "symmetry_tol": check.quantity}
 
 #: the Earth's sidereal rotation rate, rad/s (the default of ``earth_rate``)
 EARTH_RATE = 7.2921150e-5
@@ -61,9 +67,10 @@ class GyrocompassOptions:
     warnings: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body | None = None, *, ratio: Any = None, shaft: Any = None, spin: Any = None,
-              latitude: Any = None, earth_rate: Any = None,
-              symmetry_tol: Any = None) -> GyrocompassOptions:
+    def parse(cls, body: Body | None = None, *, ratio: Quantity | None = None,
+              shaft: Vector | None = None, spin: Quantity | None = None,
+              latitude: Quantity | None = None, earth_rate: Quantity | None = None,
+              symmetry_tol: Quantity | None = None) -> GyrocompassOptions:
         """Read and check the values (see :func:`gyrocompass`)."""
         if spin is None:
             raise InputError("{spin}: required: the rotor's spin about its axis, e.g. {spin} '6000 rpm'",
@@ -211,8 +218,10 @@ def run(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
                              asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
 
 
-def gyrocompass(body: Body | None = None, *, ratio: Any = None, shaft: Any = None, spin: Any,
-                latitude: Any, earth_rate: Any = None, symmetry_tol: Any = None) -> GyrocompassResult:
+def gyrocompass(body: Body | None = None, *, ratio: Quantity | None = None,
+                shaft: Vector | None = None, spin: Quantity, latitude: Quantity,
+                earth_rate: Quantity | None = None,
+                symmetry_tol: Quantity | None = None) -> GyrocompassResult:
     """A gyrocompass: the period of its swing about north and where it settles.
 
     A rotor spinning at ``spin`` about its axis, the axis held horizontal and free to turn
@@ -257,6 +266,7 @@ def gyrocompass(body: Body | None = None, *, ratio: Any = None, shaft: Any = Non
     >>> round(rbcli.gyrocompass(ratio=2, spin="6000 rpm", latitude=30).swing.period, 3)
     22.304
     """
-    return run(body, GyrocompassOptions.parse(body, ratio=ratio, shaft=shaft, spin=spin,
-                                                          latitude=latitude, earth_rate=earth_rate,
-                                                          symmetry_tol=symmetry_tol))
+    body = check.body(body, optional=True)
+    kw = check.arguments(KINDS, ratio=ratio, shaft=shaft, spin=spin, latitude=latitude,
+                         earth_rate=earth_rate, symmetry_tol=symmetry_tol)
+    return run(body, GyrocompassOptions.parse(body, **kw))

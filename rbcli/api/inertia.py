@@ -16,14 +16,23 @@ numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as o
+from rbcli.api.check import Point, Vector
 from rbcli.api.reference import Reference, part_rows, plausibility, snap, with_parts
 from rbcli.api.result import Result
 from rbcli.errors import ParamError
 
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.core.inertial import Inertial
+    from rbcli.model import Body
+
 __all__ = ["InertiaOptions", "InertiaResult", "run", "inertia"]
+
+#: the checker of each keyword argument of :func:`inertia` (:mod:`rbcli.api.check`)
+KINDS = {"about": check.vector, "axis": check.vector, "omega": check.vector}
 
 
 @dataclass(frozen=True)
@@ -51,8 +60,8 @@ class InertiaOptions:
         return self.reference.as_given
 
     @classmethod
-    def parse(cls, body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
-              omega: o.Value | None = None) -> "InertiaOptions":
+    def parse(cls, body: Body | None, *, about: Point | None = None, axis: Vector | None = None,
+              omega: Vector | None = None) -> InertiaOptions:
         """Read the keyword arguments of :func:`inertia` (SI numbers, sequences, or strings
         as typed on the command line).
 
@@ -131,7 +140,7 @@ class InertiaResult(Result):
         out["name"] = self.name
         return with_parts(out, self.parts)
 
-    def inertial(self, principal: bool = False) -> Any:
+    def inertial(self, principal: bool = False) -> Inertial:
         """The numbers of the body's ``<inertial>`` element for URDF, SDF or MJCF.
 
         Parameters
@@ -152,11 +161,12 @@ class InertiaResult(Result):
         """
         from rbcli.core.inertial import inertial
 
+        principal = check.flag(principal, "principal")
         J = self.inertia_com if principal else snap(self.inertia_com)
         return inertial(self.mass, self.com, J, principal=principal)
 
 
-def run(body: Any, options: InertiaOptions) -> InertiaResult:
+def run(body: Body, options: InertiaOptions) -> InertiaResult:
     """:func:`inertia` with options already parsed."""
     import numpy as np
 
@@ -181,8 +191,8 @@ def run(body: Any, options: InertiaOptions) -> InertiaResult:
         angle_L_omega_deg=res.angle_L_omega_deg, parts=rows, warnings=options.warnings)
 
 
-def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = None,
-            omega: o.Value | None = None) -> InertiaResult:
+def inertia(body: Body, *, about: Point | None = None, axis: Vector | None = None,
+            omega: Vector | None = None) -> InertiaResult:
     """Mass, centre of mass and the inertia tensor about a point; optionally the moment about
     an axis through it and the angular momentum and kinetic energy of a rotation.
 
@@ -227,4 +237,6 @@ def inertia(body: Any, *, about: o.Value | None = None, axis: o.Value | None = N
     >>> r.mass, r.com.tolist()
     (1.0, [0.5, 0.5, 0.0])
     """
-    return run(body, InertiaOptions.parse(body, about=about, axis=axis, omega=omega))
+    body = check.body(body)
+    kw = check.arguments(KINDS, about=about, axis=axis, omega=omega)
+    return run(body, InertiaOptions.parse(body, **kw))

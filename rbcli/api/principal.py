@@ -12,11 +12,16 @@ numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as o
+from rbcli.api.check import Point
 from rbcli.api.reference import Reference, inertia_at, part_rows, plausibility, snap, with_parts
 from rbcli.api.result import Result
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.model import Body
 
 __all__ = ["PrincipalOptions", "PrincipalResult", "run", "principal"]
 
@@ -42,7 +47,7 @@ class PrincipalOptions:
         return self.reference.as_given
 
     @classmethod
-    def parse(cls, body: Any, *, about: o.Value | None = "com") -> "PrincipalOptions":
+    def parse(cls, body: Body | None, *, about: Point | None = "com") -> PrincipalOptions:
         """Read ``about`` (``"com"``, ``"origin"``, x, y, z: a bare number in the body's
         length unit; None = the com)."""
         ref = Reference.parse(body, about, default="com")
@@ -129,7 +134,7 @@ class PrincipalResult(Result):
         }, self.parts)
 
 
-def run(body: Any, options: PrincipalOptions) -> PrincipalResult:
+def run(body: Body, options: PrincipalOptions) -> PrincipalResult:
     """:func:`principal` with options already parsed."""
     from rbcli.core.inertia import body_mass_props
     from rbcli.core.principal import principal_report
@@ -150,7 +155,7 @@ def run(body: Any, options: PrincipalOptions) -> PrincipalResult:
         parts=rows, warnings=options.warnings)
 
 
-def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:
+def principal(body: Body, *, about: Point | None = "com") -> PrincipalResult:
     """Principal moments and axes, symmetry, stability of free rotation and the equivalent
     uniform box and ellipsoid.
 
@@ -189,4 +194,5 @@ def principal(body: Any, *, about: o.Value | None = "com") -> PrincipalResult:
     >>> p.symmetry
     'asymmetric'
     """
-    return run(body, PrincipalOptions.parse(body, about=about))
+    body = check.body(body)
+    return run(body, PrincipalOptions.parse(body, about=check.vector(about, "about")))

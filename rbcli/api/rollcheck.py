@@ -17,6 +17,8 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
+from rbcli.api.check import Point, Quantity, Vector
 from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, literal
 
@@ -31,6 +33,12 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
 
 STANDARD_GRAVITY = 9.80665  # m/s^2
+
+#: the checker of each keyword argument of :func:`rollcheck` (:mod:`rbcli.api.check`)
+KINDS = {"shaft": check.vector, "through": check.vector, "rim_radius": check.quantity,
+         "tyre_radius": check.quantity, "g": check.quantity, "rolling_speed": check.quantity,
+         "spin": check.quantity, "lean": check.quantity, "circle": check.quantity,
+         "symmetry_tol": check.quantity}
 
 
 def round_parts(body: Body) -> list[Part]:
@@ -143,9 +151,11 @@ class RollcheckOptions:
         return self.lean is not None or self.circle is not None
 
     @classmethod
-    def parse(cls, body: Body, *, shaft: Any = None, through: Any = None, rim_radius: Any = None,
-              tyre_radius: Any = None, g: Any = None, rolling_speed: Any = None, spin: Any = None,
-              lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckOptions:
+    def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+              rim_radius: Quantity | None = None, tyre_radius: Quantity | None = None,
+              g: Quantity | None = None, rolling_speed: Quantity | None = None,
+              spin: Quantity | None = None, lean: Quantity | None = None,
+              circle: Quantity | None = None, symmetry_tol: Quantity | None = None) -> RollcheckOptions:
         """Read the options of :func:`rollcheck` (see there) and resolve the body's defaults.
 
         Raises
@@ -554,9 +564,11 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
                            warnings=warnings)
 
 
-def rollcheck(body: Body, *, shaft: Any = None, through: Any = None, rim_radius: Any = None,
-              tyre_radius: Any = None, g: Any = None, rolling_speed: Any = None, spin: Any = None,
-              lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckResult:
+def rollcheck(body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+              rim_radius: Quantity | None = None, tyre_radius: Quantity | None = None,
+              g: Quantity | None = None, rolling_speed: Quantity | None = None,
+              spin: Quantity | None = None, lean: Quantity | None = None,
+              circle: Quantity | None = None, symmetry_tol: Quantity | None = None) -> RollcheckResult:
     """Stability of a wheel, disk or hoop rolling without slipping on a rough level floor.
 
     The body must be of revolution about its axle with its centre of mass on it (to
@@ -631,7 +643,8 @@ def rollcheck(body: Body, *, shaft: Any = None, through: Any = None, rim_radius:
     >>> round(r.critical_speed, 6), r.verdict.stable, r.return_code
     (0.176454, False, 1)
     """
-    return run(body, RollcheckOptions.parse(
-        body, shaft=shaft, through=through, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g,
-        rolling_speed=rolling_speed, spin=spin, lean=lean, circle=circle,
-        symmetry_tol=symmetry_tol))
+    body = check.body(body)
+    kw = check.arguments(KINDS, shaft=shaft, through=through, rim_radius=rim_radius,
+                         tyre_radius=tyre_radius, g=g, rolling_speed=rolling_speed, spin=spin,
+                         lean=lean, circle=circle, symmetry_tol=symmetry_tol)
+    return run(body, RollcheckOptions.parse(body, **kw))

@@ -14,13 +14,15 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as op
+from rbcli.api.check import Point, Quantity
 from rbcli.api.options import symmetry_tolerance
 from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    import numpy as np
+    from numpy.typing import ArrayLike
 
     from rbcli.core.top import TopMotion
     from rbcli.core.topbody import TopParams
@@ -30,6 +32,12 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
 __all__ = ["TopOptions", "TopResult", "run", "top", "series", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
+
+#: the checker of each keyword argument of :func:`top` (:mod:`rbcli.api.check`)
+KINDS = {"pivot": check.vector, "spin": check.quantity, "theta": check.quantity,
+         "theta_dot": check.quantity, "phi_dot": check.quantity, "g": check.quantity,
+         "verify": check.flag, "symmetry_tol": check.quantity, "duration": check.quantity,
+         "samples": check.count}
 
 #: rows of the path's time series: the default and the most (``top --csv``)
 DEFAULT_SAMPLES = 600
@@ -90,10 +98,11 @@ class TopOptions:
     warnings: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
-              theta_dot: Any = None, phi_dot: Any = None, g: Any = None,
-              verify: bool = False, symmetry_tol: Any = None, duration: Any = None,
-              samples: Any = None) -> TopOptions:
+    def parse(cls, body: Body, *, pivot: Point | None = None, spin: Quantity | None = None,
+              theta: Quantity | None = None, theta_dot: Quantity | None = None,
+              phi_dot: Quantity | None = None, g: Quantity | None = None,
+              verify: bool = False, symmetry_tol: Quantity | None = None,
+              duration: Quantity | None = None, samples: int | str | None = None) -> TopOptions:
         """Read and check the values (see :func:`top` for their meaning and units)."""
         span, rows = series(duration, samples)
         if spin is None:
@@ -141,7 +150,7 @@ class TopOptions:
         return self.theta_dot == 0.0 and self.phi_dot == 0.0
 
 
-def series(duration: Any = None, samples: Any = None) -> tuple[float | None, int]:
+def series(duration: Quantity | None = None, samples: int | str | None = None) -> tuple[float | None, int]:
     """(duration, samples) of the path's time series (``top --csv``, ``--plot``): a positive
     time in s (None: three nutation periods, :meth:`TopResult.default_duration`) and a
     whole number of rows from 2 to :data:`MAX_SAMPLES` (default :data:`DEFAULT_SAMPLES`)."""
@@ -268,10 +277,19 @@ class TopResult(Result):
         the axis is horizontal); see :attr:`rbcli.core.top.TopMotion.steady_estimates`."""
         return self.motion.steady_estimates
 
-    def at(self, t: Any) -> TopState:
-        """The Euler angles θ, φ, ψ (rad) and their rates (rad/s) at times ``t`` (s, any
-        shape): ``result.at(0.1).theta``. Exact (the closed form)."""
-        return self.motion.at(t)
+    def at(self, t: Quantity | ArrayLike) -> TopState:
+        """The Euler angles θ, φ, ψ (rad) and their rates (rad/s) at times ``t`` (s: a number,
+        a quantity string such as ``"2 min"``, or numbers of any shape, at most
+        :data:`rbcli.api.check.MAX_TIMES`): ``result.at(0.1).theta``. Exact (the closed form).
+
+        Raises
+        ------
+        TypeError
+            ``t`` that is not a number, a string or numbers.
+        rbcli.InputError
+            a time that is not finite, too many times.
+        """
+        return self.motion.at(check.times(t, "t"))
 
     def default_duration(self) -> float:
         """s, the span ``--csv`` and ``--plot`` cover by default: 3 nutation periods.
@@ -289,12 +307,18 @@ class TopResult(Result):
             )
         return PERIODS * self.motion.nutation_period
 
-    def sample(self, duration: float, points: int | None = None) -> TopState:
-        """The motion at ``points`` evenly spaced times from 0 to ``duration`` (s) inclusive:
-        by default 400 per nutation period, at least 2000 and at most 200 000 (what
-        ``--plot`` draws)."""
+    def sample(self, duration: Quantity, points: int | None = None) -> TopState:
+        """The motion at ``points`` evenly spaced times from 0 to ``duration`` (s, > 0)
+        inclusive: by default 400 per nutation period, at least 2000 and at most 200 000
+        (what the command line's plot draws); given, from 2 to :data:`MAX_SAMPLES`."""
         import numpy as np
 
+        duration, points = check.quantity(duration, "duration"), check.count(points, "points")
+        duration = series(duration)[0]
+        if duration is None:
+            raise ParamError("duration", "needs the span to sample (s, from t = 0)")
+        if points is not None and not 2 <= points <= MAX_SAMPLES:
+            raise ParamError("points", f"must be from 2 to {MAX_SAMPLES}, got {points}")
         if points is None:
             tn = self.motion.nutation_period or duration
             points = int(min(200_000, max(2_000, 400 * duration / tn)))
@@ -382,9 +406,10 @@ def run(body: Body, options: TopOptions) -> TopResult:
                      warnings=warnings)
 
 
-def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any = None,
-        phi_dot: Any = None, g: Any = None, verify: bool = False,
-        symmetry_tol: Any = None, duration: Any = None, samples: Any = None) -> TopResult:
+def top(body: Body, *, pivot: Point | None = None, spin: Quantity, theta: Quantity,
+        theta_dot: Quantity | None = None, phi_dot: Quantity | None = None,
+        g: Quantity | None = None, verify: bool = False, symmetry_tol: Quantity | None = None,
+        duration: Quantity | None = None, samples: int | None = None) -> TopResult:
     """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
     The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
@@ -446,6 +471,8 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
     >>> round(r.motion.nutation_period, 6), r.motion.path
     (0.142133, 'cusps')
     """
-    return run(body, TopOptions.parse(body, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
-                                      duration=duration, samples=samples))
+    body = check.body(body)
+    kw = check.arguments(KINDS, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
+                         phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
+                         duration=duration, samples=samples)
+    return run(body, TopOptions.parse(body, **kw))
