@@ -111,15 +111,15 @@ def check_report_path(path: str | PathLike, body: Body, *, force: bool = False) 
     Raises
     ------
     rbcli.InputError
-        naming ``output``.
+        naming ``path`` (the command line's ``-o``).
     """
     from rbcli.io import outfile
 
-    p = outfile.check(path, body, "output", force=force, exts=FORMATS)
+    p = outfile.check(path, body, "path", force=force, exts=FORMATS)
     ext = p.suffix.lower()
     files = outfile.files_dir(p)
     if ext == ".md":
-        outfile.check_folder(files, body, "output", force=force)
+        outfile.check_folder(files, body, "path", force=force)
     return ext, p, files
 
 
@@ -192,8 +192,8 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     if progress is not None:
         progress("writing", 1, 1)
     if ext == ".html":
-        write_document(p, R.html(doc), "output", replace=force)
+        write_document(p, R.html(doc), "path", replace=force)
     else:
         text, figures = R.markdown(doc, files.name)
-        write_document(p, text, "output", replace=force, folder=files, files=figures)
+        write_document(p, text, "path", replace=force, folder=files, files=figures)
     return result

@@ -237,7 +237,7 @@ OPTIONS: dict[str, str] = {
 COMMAND_OPTIONS: dict[str, dict[str, str]] = {
     "rollcheck": {"shaft": "--axle", "rim_radius": "--radius", "rolling_speed": "--speed"},
     "gyrocompass": {"shaft": "--axis"},
-    "report": {"rolling_speed": "--speed"},
+    "report": {"rolling_speed": "--speed", "path": "-o"},
 }
 
 #: the command whose options a message's parameters are spelled as: set by the command line

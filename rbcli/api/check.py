@@ -214,16 +214,21 @@ def flag(value: Any, param: str) -> bool:
     raise _wrong(param, "True or False", value)
 
 
+#: the largest count any parameter takes is far below this (a 64-bit integer's range)
+_MAX_COUNT = 2**63 - 1
+
+
 def count(value: Any, param: str) -> int | None:
     """A whole number (an ``int`` or a numpy integer; not a bool, a float or a string), or
-    None. Its range is the reader's to check (an InputError naming ``param``)."""
+    None. Its range is the reader's to check (an InputError naming ``param``); one beyond a
+    64-bit integer is refused here (no count is that large, and its digits are not printed)."""
     if value is None:
         return None
     if _is_bool(value) or isinstance(value, (str, bytes, float)):
         raise _wrong(param, "an int", value)
-    if isinstance(value, int):
-        return int(value)
-    if isinstance(value, numbers.Integral) or _shape(value) == ():
+    if not isinstance(value, int):
+        if not (isinstance(value, numbers.Integral) or _shape(value) == ()):
+            raise _wrong(param, "an int", value)
         if _shape(value) == ():
             value = _item(value, param, "an int")
             if _is_bool(value) or not isinstance(value, numbers.Integral):
@@ -231,10 +236,14 @@ def count(value: Any, param: str) -> int | None:
         try:
             import operator
 
-            return int(operator.index(value))
+            value = operator.index(value)
         except Exception as exc:  # noqa: BLE001 - a user's integer type
             raise _failed(param, "an int", value, "__index__", exc) from None
-    raise _wrong(param, "an int", value)
+    n = int(value)
+    if abs(n) > _MAX_COUNT:
+        raise ParamError(param, f"an integer of about {int(n.bit_length() * math.log10(2)) + 1} "
+                         "digits is far beyond any count")
+    return n
 
 
 def quantity(value: Any, param: str) -> float | str | None:

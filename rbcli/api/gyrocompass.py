@@ -198,7 +198,8 @@ def run(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
         except InputError:  # already names its parameter (an InputError is a ValueError)
             raise
         except ValueError as exc:
-            raise InputError(f"{literal(exc)}; spin axis from {o.axis_source.template}",
+            # core's message names its parameters as {param} templates (no user text in it)
+            raise InputError(f"{exc}; spin axis from {o.axis_source.template}",
                              Location(body.source)) from None
         C, A, mass = rotor.C, rotor.A, rotor.mass
         r = C / A

@@ -516,8 +516,10 @@ def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Se
             jsonable(s.result.to_json())  # the commands' one finiteness check
     except (OverflowError, ZeroDivisionError, FloatingPointError, NonFiniteResult) as exc:
         del ctx.failed[n_failed:]  # a check of a section that is not there has not failed
-        reason = (literal(exc) if isinstance(exc, NonFiniteResult)
-                  else f"a value is too large or too small to compute with ({literal(exc)})")
+        if isinstance(exc, NonFiniteResult):  # its parameters stay parameters (spelled when shown)
+            reason = exc.template or literal(exc)
+        else:
+            reason = f"a value is too large or too small to compute with ({literal(exc)})"
         return _skip(key, title, Note(f"{what}: not computed: {reason}"))
     return s
 

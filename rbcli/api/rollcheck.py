@@ -533,6 +533,24 @@ def _refuse_off_centre_rim(body: Body, o: RollcheckOptions) -> None:
         Location(body.source), rim, f"{rim.describe()}, so upright rolling is not an equilibrium")
 
 
+#: the core's names of the rim radius and the rolling speed -> the parameters of :func:`rollcheck`
+_CORE_PARAMS = {"radius": "rim_radius", "speed": "rolling_speed"}
+
+
+def _renamed(exc: InputError) -> InputError:
+    """A core error (:mod:`rbcli.core.rolling`) naming the rim radius and the speed by the
+    parameters of :func:`rollcheck` (``rim_radius``, ``rolling_speed``); the command line
+    spells them as its options (``--radius``, ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)."""
+    template = exc.template
+    for core, param in _CORE_PARAMS.items():
+        template = template.replace("{%s}" % core, "{%s}" % param)
+    exc.template = template
+    exc.args = (template,)
+    if exc.param in _CORE_PARAMS:
+        exc.param = _CORE_PARAMS[exc.param]
+    return exc
+
+
 def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     """The rolling check of ``body`` with parsed ``options`` (:meth:`RollcheckOptions.parse`).
 
@@ -552,8 +570,11 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     wheel = _wheel(body, body_mass_props(body), o.axle, o.through, o.radius, o.symmetry_tol)
     if o.rim is not None and not o.rim.upright_equilibrium:
         _refuse_off_centre_rim(body, o)
-    res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, band=o.band, speed=o.speed, spin=o.spin,
-                       lean_rad=o.lean, circle_radius=o.circle)
+    try:
+        res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, band=o.band, speed=o.speed,
+                           spin=o.spin, lean_rad=o.lean, circle_radius=o.circle)
+    except InputError as exc:
+        raise _renamed(exc) from None
     warnings = o.warnings
     if wheel.asymmetry is not None:
         warnings += (Note(f"the wheel is not exactly symmetric about its axle: "

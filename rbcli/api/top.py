@@ -374,7 +374,8 @@ def run(body: Body, options: TopOptions) -> TopResult:
         raise
     except ValueError as exc:
         at = ", ".join(f"{x:.6g}" for x in P)
-        raise InputError(f"{exc}; pivot at [{at}] m ({options.pivot_source})",
+        source = getattr(options.pivot_source, "template", options.pivot_source)
+        raise InputError(f"{exc}; pivot at [{at}] m ({source})",
                          Location(body.source)) from None
     o = options
     try:
