@@ -12,8 +12,10 @@ Functions: :func:`load`, :func:`load_text`, :func:`inertia`, :func:`principal`,
 :func:`balance`, :func:`field_balance`, :func:`precess`, :func:`top`,
 :func:`gyrocompass`, :func:`rollcheck`, :func:`whirl`, :func:`report`. Keyword arguments take SI numbers
 or quantity strings (``"30 cm"``, ``"3000 rpm"``) read exactly as the command line reads
-them. Bad input raises :class:`InputError` (``.message``, ``.where``, ``.param``) with
-the message the command line prints. ``import rbcli`` is cheap: each function loads its
+them. A bad value raises :class:`InputError`, a ``ValueError`` (``.message``, ``.where``,
+``.param``) naming the parameter (``spin: ...``; the command line prints ``--spin: ...``); a
+wrong type a ``TypeError`` naming it. Every function checks its arguments first
+(:mod:`rbcli.api.check`). ``import rbcli`` is cheap: each function loads its
 modules on first use.
 """
 

@@ -79,6 +79,8 @@ def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected.
     rbcli.InputError
         naming the parameter, for a value a command refuses.
 
@@ -156,7 +158,8 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
         naming the parameter, for a value a command refuses or a path that may not be
         written.
     TypeError
-        ``force`` that is not a bool.
+        An argument of the wrong type, naming the parameter and the type expected (``force``
+        that is not ``True`` or ``False``: never read as true).
 
     Examples
     --------

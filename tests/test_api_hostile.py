@@ -13,6 +13,7 @@ what one thread gets, errors included.
 
 from __future__ import annotations
 
+import inspect
 import itertools
 import math
 import re
@@ -169,6 +170,9 @@ CALLS = {
                      ["body", "path", "force", "format", "digits", "units", "progress", "spin"]),
 }
 
+#: report_text's and write_report's **options: report's parameters
+KINDS_OF_REPORT = set(CALLS["report"][2])
+
 #: the parameters not to be driven with a verify=True-like flag value that runs a long check
 SLOW_VALID = {("top", "verify"), ("precess", "verify")}
 
@@ -271,6 +275,17 @@ def test_hostile_arguments_give_a_type_error_or_an_input_error(pair, tmp_path):
     name, param = pair
     bad = _drive(name, param, tmp_path)
     assert not bad, "\n".join(bad)
+
+
+def test_every_public_function_and_parameter_is_driven():
+    # load and load_text read files and text (tests/test_hostile_inputs.py drives them)
+    functions = {n for n in rbcli.__all__ if inspect.isfunction(getattr(rbcli, n))} - {"load", "load_text"}
+    assert functions == set(CALLS)
+    for name, (_, _, driven) in CALLS.items():
+        params = {p.name for p in inspect.signature(getattr(rbcli, name)).parameters.values()
+                  if p.kind is not inspect.Parameter.VAR_KEYWORD}
+        assert params <= set(driven) | {"options"}, (name, params - set(driven))
+        assert set(driven) <= params | set(KINDS_OF_REPORT), name
 
 
 def test_the_hostile_classes_are_what_the_audit_names():

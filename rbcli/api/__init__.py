@@ -27,3 +27,5 @@ Shared: ``options`` (how a typed value is read), ``check`` (the arguments' types
 checked at the door of every public function), ``result`` (the ``Result`` mixin, the one
 finiteness check), ``reference`` (the point an inertia is about).
 """
+
+__all__: list[str] = []  # the modules are the API; rbcli re-exports the public functions

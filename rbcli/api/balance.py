@@ -691,8 +691,11 @@ def balance(body: Body, *, shaft: Vector | None = None, through: Point | None = 
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        A bad or missing value, with the command line's message and ``param``.
+        A bad or missing value, naming the parameter and ``param``.
 
     Examples
     --------

@@ -320,8 +320,11 @@ def field_balance(*, initial: Readings | None = None, trial: Readings | None = N
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        with the command line's message and ``param``.
+        naming the parameter and ``param``.
 
     Examples
     --------

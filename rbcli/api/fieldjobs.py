@@ -19,6 +19,8 @@ from rbcli.api import options as op
 from rbcli.errors import InputError, Location, ParamError, literal
 from rbcli.io.fieldjob import CHOICES
 
+__all__ = ["parse", "PLANE_LETTERS"]
+
 PLANE_LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 
 

@@ -257,8 +257,11 @@ def gyrocompass(body: Body | None = None, *, ratio: Quantity | None = None,
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        With the command line's message: a value out of range, both or neither of ``body``
+        Naming the parameter: a value out of range, both or neither of ``body``
         and ``ratio``, a body not symmetric about its spin axis.
 
     Examples

@@ -218,8 +218,11 @@ def inertia(body: Body, *, about: Point | None = None, axis: Vector | None = Non
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        A bad value, with the command line's message (``--about: ...``); a point so far
+        A bad value, naming the parameter (``about: ...``); a point so far
         away that the inertia overflows (a :class:`rbcli.ParamError`).
 
     Notes

@@ -293,6 +293,9 @@ def precess(body: Body, *, omega: Vector, at: Quantity | None = None,
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         A bad value (the message names the parameter), an inertia that is not positive
         definite, a time too far away to have a phase.

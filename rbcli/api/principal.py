@@ -173,8 +173,11 @@ def principal(body: Body, *, about: Point | None = "com") -> PrincipalResult:
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        A bad ``about`` (message ``--about: ...``), or a point so far away that the inertia
+        A bad ``about`` (``about: ...``), or a point so far away that the inertia
         overflows.
 
     Notes

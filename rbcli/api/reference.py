@@ -11,11 +11,15 @@ numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rbcli.api import options as o
+from rbcli.api.check import Point
 from rbcli.api.result import jsonable
 from rbcli.errors import Note, ParamError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.model import Body
 
 __all__ = ["Reference", "part_rows", "plausibility", "snap", "with_parts", "inertia_at"]
 
@@ -42,7 +46,7 @@ class Reference:
     param: str
 
     @classmethod
-    def parse(cls, body: Any, about: o.Value | None, *, default: str = "body") -> "Reference":
+    def parse(cls, body: Body | None, about: Point | None, *, default: str = "body") -> Reference:
         """``about`` (``"com"``, ``"origin"``, ``"x,y,z"`` or a sequence, m), else the
         default: ``"body"`` = the body's ``reference`` (``com``, a point), else the
         origin; ``"com"`` = the com. ``body`` None (values checked before a body is read):

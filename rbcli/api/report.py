@@ -595,6 +595,9 @@ def report(body: Body, *, shaft: Vector | None = None, through: Point | None = N
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         naming the parameter, for a value a command refuses.
 

@@ -652,6 +652,9 @@ def rollcheck(body: Body, *, shaft: Vector | None = None, through: Point | None 
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         Naming the parameter (``rolling_speed: ...``), or located in the body's file for a
         body that cannot roll.

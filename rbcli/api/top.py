@@ -460,8 +460,11 @@ def top(body: Body, *, pivot: Point | None = None, spin: Quantity, theta: Quanti
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        With the command line's message: a value out of range, a body that is not a top
+        Naming the parameter: a value out of range, a body that is not a top
         about this pivot (asymmetric, the pivot at the com, a point mass), values that
         overflow the top's equations.
 

@@ -729,6 +729,9 @@ def whirl(body: Body, *, bearings: Values | None = None, stiffness: Values | Non
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         A bad or missing value (``bearings: ...``), or a rotor the model does not fit.
 
