@@ -100,7 +100,10 @@ def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A
         raise TypeError("format: expected a str, got NoneType")
     fmt = _format(format)
     digits, du = _layout(digits, units)
-    doc = document(run(body, ReportOptions.parse(body, **options)), du, digits)
+    from rbcli.api import check
+
+    with check.arithmetic(options):
+        doc = document(run(body, ReportOptions.parse(body, **options)), du, digits)
     return R.html(doc) if fmt == ".html" else R.markdown(doc, "report_files")[0]
 
 
@@ -190,8 +193,9 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
         from rbcli.errors import literal
 
         raise ParamError("format", f"'{literal(format)}' does not match the file '{literal(path)}' ({ext})")
-    result = run(body, ReportOptions.parse(body, **options), progress)
-    doc = document(result, du, digits, progress)
+    with check.arithmetic(options):
+        result = run(body, ReportOptions.parse(body, **options), progress)
+        doc = document(result, du, digits, progress)
     if progress is not None:
         progress("writing", 1, 1)
     if ext == ".html":

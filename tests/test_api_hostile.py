@@ -91,6 +91,10 @@ HOSTILE = {
     "inf": math.inf,
     "-inf": -math.inf,
     "-0.0": -0.0,
+    "1e300": 1e300,
+    "-1e300": -1e300,
+    "1e-300": 1e-300,
+    "huge-str-number": "1e300 m",
     "cyclic-list": _cyclic_list(),
     "cyclic-dict": _cyclic_dict(),
     "matrix": np.array([[1.0, 2.0, 3.0]]).view(np.matrix),  # np.matrix() warns; the class is the point

@@ -597,7 +597,10 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
                 added = [AddedMass(name, None, m, tuple(float(v) for v in x))
                          for name, (m, x) in zip(names, B.correction_points(installed))]
             warnings += installed.warnings
-            corrected = B.add_point_masses(unb, [(a.mass, a.at) for a in added])
+            try:
+                corrected = B.add_point_masses(unb, [(a.mass, a.at) for a in added])
+            except B.BalanceValueError:  # the masses at the radius given overflow the rotor's
+                raise OverflowError("the corrected rotor") from None
         forces = forces_after = None
         if o.speed is not None or o.bearings is not None:
             forces = B.bearing_forces(unb, o.speed if o.speed is not None else 0.0, o.bearings, g=o.g)
@@ -711,4 +714,5 @@ def balance(body: Body, *, shaft: Vector | None = None, through: Point | None = 
         angle_sense=angle_sense, planes=planes, radius=radius, mass_step=mass_step,
         angle_step=angle_step, positions=positions, speed=speed, bearings=bearings, g=g,
         grade=grade, tolerance_planes=tolerance_planes)
-    return run(body, BalanceOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, BalanceOptions.parse(body, **kw))

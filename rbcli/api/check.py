@@ -34,10 +34,11 @@ from __future__ import annotations
 import math
 import numbers
 import os
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
-from rbcli.errors import ParamError
+from rbcli.errors import NonFiniteResult, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
@@ -45,7 +46,7 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = [
     "Quantity", "Vector", "Point", "Values", "MAX_TEXT", "MAX_ITEMS", "MAX_TIMES",
     "body", "flag", "count", "quantity", "values", "vector", "text", "texts", "integers",
-    "path", "function", "times", "arguments",
+    "path", "function", "times", "arguments", "arithmetic",
 ]
 
 #: a number in SI units (angles in degrees) or a quantity string as typed on the command
@@ -407,3 +408,25 @@ def arguments(kinds: Mapping[str, Callable[[Any, str], Any]], **given: Any) -> d
             raise TypeError(f"unexpected keyword argument {name!r}")
         out[name] = kind(value, name)
     return out
+
+
+@contextmanager
+def arithmetic(given: Mapping[str, Any]) -> Iterator[None]:
+    """The other half of the door: an arithmetic error deep in a computation (a float that
+    overflows, a division by zero) with values that passed every check comes out as a
+    :class:`rbcli.NonFiniteResult` (an InputError) naming the parameters ``given`` (those not
+    None or False), as the command line says it (exit 2), never as itself. numpy's warnings
+    of such values are not shown (the result's finiteness check refuses what they would
+    warn of); numpy's error state is the caller's again afterwards."""
+    import numpy as np
+
+    try:
+        with np.errstate(all="ignore"):  # NaN and inf are refused on the way out, as one error
+            yield
+    except (OverflowError, ZeroDivisionError, FloatingPointError) as exc:
+        names = [n for n, v in given.items() if v is not None and v is not False]
+        who = ", ".join("{%s}" % n for n in names)
+        raise NonFiniteResult(
+            f"{who + ': ' if who else ''}a value is too large or too small to compute with "
+            f"({literal(exc) or type(exc).__name__}); check the values and the body's numbers"
+        ) from None

@@ -341,4 +341,5 @@ def field_balance(*, initial: Readings | None = None, trial: Readings | None = N
         group=group, foundation=foundation, coefficients=coefficients,
         suggest_trial=suggest_trial, rotor_mass=rotor_mass, rotor=rotor, bearing_load=bearing_load,
         trial_fraction=trial_fraction, speed=speed, full=full)
-    return _run(None, FieldBalanceOptions.parse(None, **kw))
+    with check.arithmetic(kw):
+        return _run(None, FieldBalanceOptions.parse(None, **kw))

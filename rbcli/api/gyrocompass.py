@@ -273,4 +273,5 @@ def gyrocompass(body: Body | None = None, *, ratio: Quantity | None = None,
     body = check.body(body, optional=True)
     kw = check.arguments(KINDS, ratio=ratio, shaft=shaft, spin=spin, latitude=latitude,
                          earth_rate=earth_rate, symmetry_tol=symmetry_tol)
-    return run(body, GyrocompassOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, GyrocompassOptions.parse(body, **kw))

@@ -242,4 +242,5 @@ def inertia(body: Body, *, about: Point | None = None, axis: Vector | None = Non
     """
     body = check.body(body)
     kw = check.arguments(KINDS, about=about, axis=axis, omega=omega)
-    return run(body, InertiaOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, InertiaOptions.parse(body, **kw))

@@ -312,4 +312,5 @@ def precess(body: Body, *, omega: Vector, at: Quantity | None = None,
     body = check.body(body)
     kw = check.arguments(KINDS, omega=omega, at=at, duration=duration, samples=samples,
                          verify=verify)
-    return run(body, PrecessOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, PrecessOptions.parse(body, **kw))

@@ -198,4 +198,6 @@ def principal(body: Body, *, about: Point | None = "com") -> PrincipalResult:
     'asymmetric'
     """
     body = check.body(body)
-    return run(body, PrincipalOptions.parse(body, about=check.vector(about, "about")))
+    kw = {"about": check.vector(about, "about")}
+    with check.arithmetic(kw):
+        return run(body, PrincipalOptions.parse(body, **kw))

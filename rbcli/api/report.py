@@ -614,4 +614,5 @@ def report(body: Body, *, shaft: Vector | None = None, through: Point | None = N
         grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega, pivot=pivot,
         spin=spin, theta=theta, theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
         tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol)
-    return run(body, ReportOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, ReportOptions.parse(body, **kw))

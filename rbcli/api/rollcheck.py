@@ -671,4 +671,5 @@ def rollcheck(body: Body, *, shaft: Vector | None = None, through: Point | None 
     kw = check.arguments(KINDS, shaft=shaft, through=through, rim_radius=rim_radius,
                          tyre_radius=tyre_radius, g=g, rolling_speed=rolling_speed, spin=spin,
                          lean=lean, circle=circle, symmetry_tol=symmetry_tol)
-    return run(body, RollcheckOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, RollcheckOptions.parse(body, **kw))

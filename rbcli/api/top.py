@@ -479,4 +479,5 @@ def top(body: Body, *, pivot: Point | None = None, spin: Quantity, theta: Quanti
     kw = check.arguments(KINDS, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
                          phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
                          duration=duration, samples=samples)
-    return run(body, TopOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, TopOptions.parse(body, **kw))

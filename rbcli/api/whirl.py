@@ -749,4 +749,5 @@ def whirl(body: Body, *, bearings: Values | None = None, stiffness: Values | Non
         cross_stiffness=cross_stiffness, damping=damping, damping_y=damping_y,
         speed_range=speed_range, points=points, orders=orders, speed=speed, unbalance=unbalance,
         unbalance_planes=unbalance_planes, shaft=shaft, through=through, symmetry_tol=symmetry_tol)
-    return run(body, WhirlOptions.parse(body, **kw))
+    with check.arithmetic(kw):
+        return run(body, WhirlOptions.parse(body, **kw))
