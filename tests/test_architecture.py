@@ -173,3 +173,131 @@ def test_the_private_name_check_sees_both_forms(tmp_path):
     assert [name for _, name in _private_uses(mod, tmp_path)] == [
         "rbcli.cli.massprops._reference", "rbcli.cli.balance._compute", "rbcli.core.top._finite",
         "rbcli.render.text._wrap"]
+
+
+# ----------------------------------------------------------------------------- issue 23's rules
+
+
+def _runtime_imports(path: Path) -> list[tuple[str, int]]:
+    """The rbcli modules ``path`` imports when it runs: every import statement except those
+    under ``if TYPE_CHECKING:`` (types for annotations only)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    skip: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            skip |= {id(n) for child in node.body for n in ast.walk(child)}
+    out = []
+    for node in ast.walk(tree):
+        if id(node) in skip:
+            continue
+        if isinstance(node, ast.Import):
+            out += [(a.name, node.lineno) for a in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            out.append((node.module, node.lineno))
+    return out
+
+
+@pytest.mark.parametrize("path", [p for p in MODULES if _layer(p) == "render"],
+                         ids=lambda p: str(p.relative_to(PKG)))
+def test_render_never_imports_the_services_at_run_time(path):
+    """render turns results into text and figures; it reads a result's fields and may name
+    the result types for annotations (under TYPE_CHECKING), but never calls a service."""
+    bad = [f"line {line}: {n}" for n, line in _runtime_imports(path)
+           if n == "rbcli.api" or n.startswith("rbcli.api.")]
+    assert not bad, f"{path.relative_to(PKG)} imports the services at run time: {bad}"
+
+
+ALL_MODULES = sorted(PKG.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", ALL_MODULES, ids=lambda p: str(p.relative_to(PKG)))
+def test_each_module_is_at_most_800_lines(path):
+    n = len(path.read_text(encoding="utf-8").splitlines())
+    assert n <= 800, f"{path.relative_to(PKG)} has {n} lines: split it by job"
+
+
+def _module_level_imports(path: Path) -> set[str]:
+    """The rbcli modules imported at module level (not inside functions, not for types)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out = set()
+    for node in tree.body:
+        if isinstance(node, ast.Import):
+            out |= {a.name for a in node.names if a.name.startswith("rbcli.")}
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0 \
+                and node.module.startswith("rbcli"):
+            out.add(node.module)
+            out |= {f"{node.module}.{a.name}" for a in node.names}
+    return out
+
+
+def test_no_import_cycle_between_modules():
+    """Modules import each other one way at module level: a cycle would make the import order
+    matter (and start-up fragile). Imports inside functions are lazy and allowed both ways
+    within a layer."""
+    names = {_module_name(p): p for p in ALL_MODULES}
+    graph = {m: {d for d in _module_level_imports(p) if d in names and d != m} for m, p in names.items()}
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(m: str) -> list[str] | None:
+        state[m] = 1
+        stack.append(m)
+        for d in sorted(graph[m]):
+            if state.get(d) == 1:
+                return stack[stack.index(d):] + [d]
+            if d not in state:
+                found = visit(d)
+                if found:
+                    return found
+        stack.pop()
+        state[m] = 2
+        return None
+
+    for m in sorted(graph):
+        if m not in state:
+            cycle = visit(m)
+            assert cycle is None, " -> ".join(cycle)
+
+
+#: calls that change the whole process: only the command line may make them (for itself)
+_PROCESS_CALLS = ("gc.disable", "gc.enable", "gc.freeze", "gc.set_threshold", "os.putenv",
+                  "warnings.filterwarnings", "warnings.simplefilter", "warnings.catch_warnings",
+                  "warnings.resetwarnings", "locale.setlocale", "np.seterr", "numpy.seterr",
+                  "sys.setrecursionlimit")
+
+
+def _process_changes(path: Path) -> list[str]:
+    """The calls and assignments in ``path`` that change the whole process."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    bad = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            name = ast.unparse(node.func)
+            if name in _PROCESS_CALLS or (name.startswith("os.environ.") and name.split(".")[-1]
+                                          in ("pop", "setdefault", "update", "clear")):
+                bad.append(f"line {node.lineno}: {name}()")
+        if isinstance(node, (ast.Assign, ast.AugAssign)):
+            for t in node.targets if isinstance(node, ast.Assign) else [node.target]:
+                if "os.environ" in ast.unparse(t):
+                    bad.append(f"line {node.lineno}: {ast.unparse(t)} = ...")
+    return bad
+
+
+@pytest.mark.parametrize("path", [p for p in ALL_MODULES if _layer(p) not in ("cli", "env")
+                                  and p.name not in ("interrupts.py", "__main__.py")],
+                         ids=lambda p: str(p.relative_to(PKG)))
+def test_a_library_call_leaves_the_process_alone(path):
+    """No library code switches the garbage collector, the environment, the warning filters,
+    numpy's error state or the locale (issue 22: a notebook's process is the user's). The
+    command line may, in rbcli/cli, rbcli/env.py and the entry modules."""
+    bad = _process_changes(path)
+    assert not bad, f"{path.relative_to(PKG)} changes the process: {bad}"
+
+
+def test_the_process_check_sees_what_it_forbids(tmp_path):
+    f = tmp_path / "m.py"
+    f.write_text("import gc, os, warnings\ngc.disable()\nos.environ['X'] = '1'\n"
+                 "os.environ.setdefault('Y', '2')\nwith warnings.catch_warnings():\n    pass\n",
+                 encoding="utf-8")
+    assert sorted(b.split(": ")[1] for b in _process_changes(f)) == [
+        "gc.disable()", "os.environ.setdefault()", "os.environ['X'] = ...", "warnings.catch_warnings()"]

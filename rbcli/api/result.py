@@ -105,17 +105,16 @@ def frozen(value: Any, _depth: int = 0) -> Any:
     array is writable), dicts as read-only mappings, lists as tuples, the fields of
     dataclass instances likewise (in place: :func:`freeze_fields`). Other objects are
     returned as they are (a :class:`rbcli.model.Body` is frozen where it is made)."""
-    import dataclasses
-    from types import MappingProxyType
-
-    if _depth > 20:
-        return value
     t = type(value)
+    if t is float or t is str or t is int or t is bool or value is None or _depth > 20:
+        return value
     if t.__name__ == "ndarray" and t.__module__ == "numpy":
         if value.flags.writeable:
             value = value.copy()
             value.setflags(write=False)
         return value
+    from types import MappingProxyType
+
     if t is dict:
         return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
     if t is list:
@@ -123,7 +122,7 @@ def frozen(value: Any, _depth: int = 0) -> Any:
     if t is tuple:
         items = tuple(frozen(v, _depth + 1) for v in value)
         return value if all(a is b for a, b in zip(items, value)) else items
-    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+    if hasattr(t, "__dataclass_fields__"):  # a dataclass instance (not a class: t is its type)
         freeze_fields(value, _depth + 1)
     return value
 
@@ -153,19 +152,33 @@ def jsonable(obj: Any) -> Any:
     TypeError
         for a value that has no JSON form.
     """
-    from collections.abc import Mapping
-
+    t = type(obj)
+    if t is float:  # the common values first, by their exact type
+        if not math.isfinite(obj):
+            raise _NonFinite(obj)
+        return 0.0 if obj == 0.0 else obj
+    if t is str or t is int or t is bool or obj is None:
+        return obj
+    if t is dict or t is list or t is tuple:
+        return _container(obj)
     if hasattr(obj, "to_json"):
         return jsonable(obj.to_json())
-    if isinstance(obj, Mapping):
-        out = {}
-        for k, v in obj.items():
-            try:
-                out[str(k)] = jsonable(v)
-            except _NonFinite as exc:
-                exc.path.insert(0, str(k))
-                raise
-        return out
+    from collections.abc import Mapping
+
+    if isinstance(obj, (Mapping, list, tuple)):
+        return _container(obj)
+    if hasattr(obj, "tolist"):  # numpy arrays and scalars
+        return jsonable(obj.tolist())
+    if isinstance(obj, (bool, str, int)):  # subclasses (a Note is a str: kept as it is)
+        return obj
+    if isinstance(obj, float):
+        return jsonable(float(obj))
+    raise TypeError(f"cannot write {type(obj).__name__} as JSON")
+
+
+def _container(obj: Any) -> Any:
+    """:func:`jsonable` of a mapping (keys as strings) or a list or tuple (a list), naming
+    the key or index of a number that is not finite."""
     if isinstance(obj, (list, tuple)):
         out_list = []
         for i, v in enumerate(obj):
@@ -175,17 +188,14 @@ def jsonable(obj: Any) -> Any:
                 exc.path.insert(0, i)
                 raise
         return out_list
-    if hasattr(obj, "tolist"):  # numpy arrays and scalars
-        return jsonable(obj.tolist())
-    if isinstance(obj, bool) or obj is None or isinstance(obj, str):
-        return obj
-    if isinstance(obj, int):
-        return obj
-    if isinstance(obj, float):
-        if not math.isfinite(obj):
-            raise _NonFinite(obj)
-        return 0.0 if obj == 0.0 else obj
-    raise TypeError(f"cannot write {type(obj).__name__} as JSON")
+    out = {}
+    for k, v in obj.items():
+        try:
+            out[str(k)] = jsonable(v)
+        except _NonFinite as exc:
+            exc.path.insert(0, str(k))
+            raise
+    return out
 
 
 class _NonFinite(NonFiniteResult):

@@ -212,7 +212,14 @@ MANUAL[""] = {
         "numbers are in the file's units (SI unless 'units:' says otherwise; bare angles are "
         "degrees, bare angular speeds rad/s unless units: names an angular_speed such as rpm); "
         "any number may be a string with a unit, such as '30 cm', '2.5 lb', '7850 kg/m^3', "
-        "'12 deg' or '1200 rpm'. See rbcli-shapes(1).",
+        "'12 deg' or '1200 rpm'; the spellings people type are read too (lbs, pound, pounds, "
+        "inch, inches, in., ft, foot, feet, mph, ft/s), and a unit is echoed in one spelling "
+        "(RPM as rpm). See rbcli-shapes(1).",
+        "A bare density follows the file's units too: density: 7850 in a body whose length unit "
+        "is mm is 7850 kg/mm^3. A density (or areal or linear density) that no matter has — "
+        "above osmium's 22 590 kg/m^3, or for a solid part below the lightest aerogels — is "
+        "warned once per body, with the value in kg/m^3 and the reading probably meant (did "
+        "you mean \"7850 kg/m^3\"?).",
         "Bare numbers on the command line mean what they would mean in that body's file: "
         "lengths and masses in the body's units (SI for -e and for files without units), angles "
         "in degrees, angular speeds in rad/s unless the body's units has angular_speed (e.g. "

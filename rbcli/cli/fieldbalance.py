@@ -72,7 +72,7 @@ def field_balance(
     severity: str = typer.Option(None, "--severity", help="Judge the readings: iso20816-3 (with --group and --foundation; velocity readings, or displacement and acceleration at --speed).", show_default=False),
     group: str = typer.Option(None, "--group", help="ISO 20816-3 machine group: 1 (above 300 kW, or shaft height >= 315 mm) or 2 (15 kW to 300 kW).", show_default=False),
     foundation: str = typer.Option(None, "--foundation", help="ISO 20816-3 support: rigid or flexible.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="The balancing speed (rad/s, or e.g. '1480 rpm'): for --suggest-trial, for --severity with displacement or acceleration readings, and saved with the coefficients.", show_default=False),
+    speed: str = typer.Option(None, "--speed", help="The balancing speed (a bare number is rad/s; or e.g. '1480 rpm'): for --suggest-trial, for --severity with displacement or acceleration readings, and saved with the coefficients.", show_default=False),
     coefficients: str = typer.Option(None, "--coefficients", help="Influence coefficients saved by --save-coefficients: with --initial alone, a trim run.", show_default=False),
     save_coefficients: str = typer.Option(None, "--save-coefficients", help="Write the influence coefficients to this JSON file (never over an input; an existing file only with --force).", show_default=False),
     suggest_trial: bool = typer.Option(False, "--suggest-trial", help="Size a trial mass before the first run (with --rotor-mass, --rotor or --bearing-load, --speed and --trial-radius)."),

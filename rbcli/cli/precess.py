@@ -25,15 +25,16 @@ is the body frame at t = 0.
 """
 
 OMEGA_HELP = (
-    "Initial angular velocity x,y,z in the body frame (rad/s; a unit after the last number "
-    "applies to every bare number before it, e.g. '0,0,300 rpm'). Required."
+    "Initial angular velocity x,y,z in the body frame (a bare number is rad/s, or the body's "
+    "units' angular_speed; a unit after the last number applies to every bare number before "
+    "it, e.g. '0,0,300 rpm'). Required."
 )
 AT_HELP = (
-    "Also give w, L and the orientation (quaternion, axis and angle) at this time (s, or "
-    "with units, e.g. '7320 h'; negative = before t = 0)."
+    "Also give w, L and the orientation (quaternion, axis and angle) at this time (a bare "
+    "number is s; or with units, e.g. '7320 h'; negative = before t = 0)."
 )
 DURATION_HELP = (
-    "Span of the --csv time series, from t = 0 (s, or with units); also the span of "
+    "Span of the --csv time series, from t = 0 (a bare number is s; or with units); also the span of "
     "--plot (default: 3 periods of w)."
 )
 SAMPLES_HELP = "Rows of the --csv time series, evenly spaced from t = 0 to --duration inclusive (2 to 1000000, about 100 MB of CSV)."

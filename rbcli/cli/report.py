@@ -42,7 +42,7 @@ def report(
     damping: str = typer.Option(None, "--damping", help="Whirl: the bearings' damping (N s/m, or with units), one value or one per bearing. Default: none.", show_default=False),
     omega: str = typer.Option(None, "--omega", help="Free precession: initial angular velocity x,y,z, body frame (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
     pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot; without either there is no top section.", show_default=False),
-    spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (rad/s, or e.g. '3000 rpm').", show_default=False),
+    spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (a bare number is rad/s, or the body's units' angular_speed; or e.g. '3000 rpm').", show_default=False),
     theta: str = typer.Option(None, "--theta", help="Heavy top: start tilt of the axis from the upward vertical (degrees, or with units).", show_default=False),
     theta_dot: str = typer.Option(None, "--theta-dot", help="Heavy top: start rate theta' (rad/s, or with units). Default: 0.", show_default=False),
     phi_dot: str = typer.Option(None, "--phi-dot", help="Heavy top: start precession rate phi' (rad/s, or with units). Default: 0.", show_default=False),

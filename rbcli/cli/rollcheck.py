@@ -45,7 +45,7 @@ def rollcheck(
     radius: str = typer.Option(None, "--radius", help=RADIUS_HELP, show_default=False),
     tyre_radius: str = typer.Option(None, "--tyre-radius", help="Tube radius r of a rounded rim, 0 <= r <= a (a bare number is in the body's length unit, else give one); 0 = knife edge, a = a sphere. Default: the rim's shape: a torus's tube radius, a sphere's radius, a flat band for a cylinder, else 0.", show_default=False),
     g: str = typer.Option(None, "--g", help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="Speed of the centre (m/s, or e.g. '20 km/h'); negative = backwards.", show_default=False),
+    speed: str = typer.Option(None, "--speed", help="Speed of the centre (a bare number is m/s, whatever the body's units: a body file has no speeds; or with a unit, e.g. '20 km/h', '10 mph'); negative = backwards.", show_default=False),
     spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 rpm'); speed = a x spin.", show_default=False),
     lean: str = typer.Option(None, "--lean", help="Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.", show_default=False),
     circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (a bare number in the body's length unit, m by default; or with units); 0 = spinning in place.", show_default=False),

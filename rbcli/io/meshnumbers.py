@@ -11,7 +11,6 @@ not a number makes the answer None: the caller's line reader then says where.
 
 from __future__ import annotations
 
-import warnings
 
 import numpy as np
 
@@ -28,13 +27,16 @@ _PIECE = 1 << 18  # decimals() reads about 256 KiB at a time: small temporaries,
 
 
 def numbers(text: bytes, dtype=np.float64) -> np.ndarray | None:
-    """Whitespace-separated numbers, or None if any token is not one (no partial result)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        try:
-            return np.fromstring(text, dtype=dtype, sep=" ")
-        except (ValueError, DeprecationWarning):
-            return None
+    """Whitespace-separated numbers, or None if any token is not one (no partial result).
+
+    numpy stops at the first token it cannot read (with a DeprecationWarning, a ValueError in
+    later versions): fewer numbers than tokens is that. The warning filters are left alone (a
+    library call does not switch them: another thread may be reading warnings)."""
+    try:
+        out = np.fromstring(text, dtype=dtype, sep=" ")
+    except ValueError:
+        return None
+    return out if out.size == len(text.split()) else None
 
 
 def floats(text: bytes) -> np.ndarray | None:
