@@ -110,6 +110,7 @@ HOSTILE = {
     "huge-list": [0.0] * (10**6 + 1),  # one more than the most times at(t) takes
     "huge-seq": HugeSeq(),
     "huge-str": "1," * 10**6,
+    "huge-str-list": ["1" * 9_999] * 10_000,  # each string short enough, 10^8 characters in all
     "bytes": b"1,0,0",
     "bad-float": BadFloat(1.0),
     "bad-index": BadIndex(),

@@ -44,7 +44,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
 __all__ = [
-    "Quantity", "Vector", "Point", "Values", "MAX_TEXT", "MAX_ITEMS", "MAX_TIMES",
+    "Quantity", "Vector", "Point", "Values", "MAX_TEXT", "MAX_TEXT_TOTAL", "MAX_ITEMS", "MAX_TIMES",
     "body", "flag", "count", "quantity", "values", "vector", "text", "texts", "integers",
     "path", "function", "times", "arguments", "arithmetic",
 ]
@@ -61,6 +61,8 @@ Values: TypeAlias = Union[Quantity, Sequence[Quantity]]
 
 #: the longest string argument, characters (a quantity, a list typed as text, a reading)
 MAX_TEXT = 10_000
+#: the most characters of all the strings of one argument (a sequence of readings)
+MAX_TEXT_TOTAL = 100_000
 #: the most items of a sequence argument whose parameter names no size of its own
 MAX_ITEMS = 10_000
 #: the most times ``at(t)`` takes at once (the rows of the longest time series)
@@ -70,9 +72,13 @@ _NUMBER = "a number or a quantity string"
 
 
 def _type(value: object) -> str:
-    """How a message names the type of ``value`` (never its text)."""
+    """How a message names the type of ``value`` (never its text; a class's name made safe
+    to show, as the command line shows names: :func:`rbcli.env.clean`)."""
+    from rbcli.env import clean
+
     t = type(value)
-    return t.__name__ if t.__module__ in ("builtins", None) else f"{t.__module__}.{t.__qualname__}"
+    name = t.__name__ if t.__module__ in ("builtins", None) else f"{t.__module__}.{t.__qualname__}"
+    return clean(name, max_line=120)
 
 
 def _wrong(param: str, expected: str, value: object) -> TypeError:
@@ -188,6 +194,21 @@ def _sequence(value: Any, param: str, most: int, expected: str) -> list:
     return items
 
 
+def _total(value: Any, param: str) -> Any:
+    """``value`` (a tuple of strings and numbers, nested at most twice), refused when its
+    strings hold more than :data:`MAX_TEXT_TOTAL` characters in all."""
+    n = 0
+    for x in value if isinstance(value, tuple) else (value,):
+        if isinstance(x, str):
+            n += len(x)
+        elif isinstance(x, tuple):
+            n += sum(len(y) for y in x if isinstance(y, str))
+    if n > MAX_TEXT_TOTAL:
+        raise ParamError(param, f"the strings given hold {n} characters; a value has at most "
+                         f"{MAX_TEXT_TOTAL} in all")
+    return value
+
+
 # ----------------------------------------------------------------------------- the checkers
 
 
@@ -266,7 +287,7 @@ def values(most: int, *, expected: str | None = None) -> Callable[[Any, str], An
                 or _shape(value) == ():
             return _scalar(value, param, what)
         items = _sequence(value, param, most, what)
-        return tuple(_scalar(x, f"{param}[{i}]", _NUMBER) for i, x in enumerate(items))
+        return _total(tuple(_scalar(x, f"{param}[{i}]", _NUMBER) for i, x in enumerate(items)), param)
 
     return check
 
@@ -301,7 +322,7 @@ def texts(depth: int = 1, most: int = MAX_ITEMS) -> Callable[[Any, str], Any]:
     def check(value: Any, param: str) -> Any:
         if value is None:
             return None
-        return one(value, param, depth)
+        return _total(one(value, param, depth), param)
 
     return check
 

@@ -344,7 +344,10 @@ class ReportResult(Result):
         for s in self.sections:
             if s.key == key:
                 return s
-        raise KeyError(f"no section {key!r} (the sections: {', '.join(s.key for s in self.sections)})")
+        from rbcli.env import clean
+
+        raise KeyError(f"no section {clean(repr(key), max_line=120)} (the sections: "
+                       f"{', '.join(s.key for s in self.sections)})")
 
     def to_json(self) -> dict[str, Any]:
         """The sections (key, title, whether included, why not) and the failed checks."""
