@@ -13,8 +13,10 @@ Bodies are read (:func:`load`, :func:`load_text`, :func:`load_data`) or built in
 :func:`balance`, :func:`field_balance`, :func:`precess`, :func:`top`,
 :func:`gyrocompass`, :func:`rollcheck`, :func:`whirl`, :func:`report`. Keyword arguments take SI numbers
 or quantity strings (``"30 cm"``, ``"3000 rpm"``) read exactly as the command line reads
-them. Bad input raises :class:`InputError` (``.message``, ``.where``, ``.param``) with
-the message the command line prints. ``import rbcli`` is cheap: each function loads its
+them. A bad value raises :class:`InputError`, a ``ValueError`` (``.message``, ``.where``,
+``.param``) naming the parameter (``spin: ...``; the command line prints ``--spin: ...``); a
+wrong type a ``TypeError`` naming it. Every function checks its arguments first
+(:mod:`rbcli.api.check`). ``import rbcli`` is cheap: each function loads its
 modules on first use.
 """
 
@@ -31,13 +33,13 @@ _API = {
     "load": "rbcli.api.load",
     "load_text": "rbcli.api.load",
     "load_data": "rbcli.api.load",
-    "inertia": "rbcli.api.massprops",
-    "principal": "rbcli.api.massprops",
+    "inertia": "rbcli.api.inertia",
+    "principal": "rbcli.api.principal",
     "balance": "rbcli.api.balance",
     "field_balance": "rbcli.api.fieldbalance",
     "precess": "rbcli.api.precess",
     "top": "rbcli.api.top",
-    "gyrocompass": "rbcli.api.top",
+    "gyrocompass": "rbcli.api.gyrocompass",
     "rollcheck": "rbcli.api.rollcheck",
     "whirl": "rbcli.api.whirl",
     "report": "rbcli.api.report",

@@ -33,9 +33,25 @@ def _layout(digits: int, units: str | None) -> tuple[int, Any]:
     from rbcli.errors import ParamError
     from rbcli.render.units import DisplayUnits
 
-    if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 17:
+    if not 1 <= digits <= 17:
         raise ParamError("digits", f"must be a whole number from 1 to 17, got {digits!r}")
     return digits, DisplayUnits.parse(units)
+
+
+def _door(body: Any, format: Any, digits: Any, units: Any,  # noqa: A002
+          options: dict[str, Any]) -> tuple[Any, str | None, int, str | None, dict[str, Any]]:
+    """The arguments of :func:`report_text` and :func:`write_report` checked at the door
+    (:mod:`rbcli.api.check`): TypeErrors naming the parameter before anything is read."""
+    from rbcli.api import check
+    from rbcli.api.report import KINDS
+
+    body = check.body(body)
+    format = check.text(format, "format")  # noqa: A001
+    digits = check.count(digits, "digits")
+    if digits is None:
+        raise TypeError("digits: expected an int, got NoneType")
+    units = check.text(units, "units")
+    return body, format, digits, units, check.arguments(KINDS, **options)
 
 
 def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A002
@@ -63,6 +79,8 @@ def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected.
     rbcli.InputError
         naming the parameter, for a value a command refuses.
 
@@ -73,13 +91,19 @@ def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A
     >>> html.startswith("<!DOCTYPE html>")
     True
     """
-    from rbcli.api.report import report
+    from rbcli.api.report import ReportOptions, run
     from rbcli.render import report as R
     from rbcli.render.reportdoc import document
 
+    body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
+    if format is None:
+        raise TypeError("format: expected a str, got NoneType")
     fmt = _format(format)
     digits, du = _layout(digits, units)
-    doc = document(report(body, **options), du, digits)
+    from rbcli.api import check
+
+    with check.arithmetic(options):
+        doc = document(run(body, ReportOptions.parse(body, **options)), du, digits)
     return R.html(doc) if fmt == ".html" else R.markdown(doc, "report_files")[0]
 
 
@@ -92,15 +116,15 @@ def check_report_path(path: str | PathLike, body: Body, *, force: bool = False) 
     Raises
     ------
     rbcli.InputError
-        naming ``output``.
+        naming ``path`` (the command line's ``-o``).
     """
     from rbcli.io import outfile
 
-    p = outfile.check(path, body, "output", force=force, exts=FORMATS)
+    p = outfile.check(path, body, "path", force=force, exts=FORMATS)
     ext = p.suffix.lower()
     files = outfile.files_dir(p)
     if ext == ".md":
-        outfile.check_folder(files, body, "output", force=force)
+        outfile.check_folder(files, body, "path", force=force)
     return ext, p, files
 
 
@@ -137,7 +161,8 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
         naming the parameter, for a value a command refuses or a path that may not be
         written.
     TypeError
-        ``force`` that is not a bool.
+        An argument of the wrong type, naming the parameter and the type expected (``force``
+        that is not ``True`` or ``False``: never read as true).
 
     Examples
     --------
@@ -153,8 +178,14 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     from rbcli.render import report as R
     from rbcli.render.reportdoc import document
 
-    if not isinstance(force, bool):
-        raise TypeError(f"force: expected a bool, got {type(force).__name__}")
+    from rbcli.api import check
+
+    body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
+    path = check.path(path, "path")
+    if path is None:
+        raise TypeError("path: expected a str or an os.PathLike (a pathlib.Path), got NoneType")
+    force = check.flag(force, "force")
+    progress = check.function(progress, "progress")
     fmt = _format(format)
     digits, du = _layout(digits, units)
     ext, p, files = check_report_path(path, body, force=force)
@@ -162,13 +193,14 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
         from rbcli.errors import literal
 
         raise ParamError("format", f"'{literal(format)}' does not match the file '{literal(path)}' ({ext})")
-    result = run(body, ReportOptions.parse(body, **options), progress)
-    doc = document(result, du, digits, progress)
+    with check.arithmetic(options):
+        result = run(body, ReportOptions.parse(body, **options), progress)
+        doc = document(result, du, digits, progress)
     if progress is not None:
         progress("writing", 1, 1)
     if ext == ".html":
-        write_document(p, R.html(doc), "output", replace=force)
+        write_document(p, R.html(doc), "path", replace=force)
     else:
         text, figures = R.markdown(doc, files.name)
-        write_document(p, text, "output", replace=force, folder=files, files=figures)
+        write_document(p, text, "path", replace=force, folder=files, files=figures)
     return result

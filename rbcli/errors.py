@@ -177,8 +177,12 @@ class RbcliError(Exception):
         return self.spelled()
 
 
-class InputError(RbcliError):
+class InputError(RbcliError, ValueError):
     """Bad input: a body file, an option value, a mesh file. Exit 2.
+
+    A :class:`ValueError` (as scipy and numpy raise for a bad value), so ``except
+    ValueError`` catches it; a wrong *type* of argument is a :class:`TypeError` naming the
+    parameter, never an InputError.
 
     Attributes
     ----------
@@ -233,7 +237,7 @@ OPTIONS: dict[str, str] = {
 COMMAND_OPTIONS: dict[str, dict[str, str]] = {
     "rollcheck": {"shaft": "--axle", "rim_radius": "--radius", "rolling_speed": "--speed"},
     "gyrocompass": {"shaft": "--axis"},
-    "report": {"rolling_speed": "--speed"},
+    "report": {"rolling_speed": "--speed", "path": "-o"},
 }
 
 #: the command whose options a message's parameters are spelled as: set by the command line

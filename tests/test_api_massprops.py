@@ -13,7 +13,8 @@ import pytest
 import rbcli
 from rbcli.errors import option_name
 from conftest import as_cli, EXAMPLES
-from rbcli.api import massprops as api
+from rbcli.api import inertia as api
+from rbcli.api import principal as api_p
 
 ALL = sorted(p.name for p in EXAMPLES.glob("*.yaml"))
 
@@ -75,7 +76,7 @@ def test_typed_fields_and_labels():
     assert rbcli.inertia(lamina, about=[1, 2, 3]).reference_label == "[1, 2, 3]"
     assert rbcli.inertia(lamina, about="1,2,3 mm").reference_label == "[1,2,3 mm]"
     p = rbcli.principal(lamina, about="origin")
-    assert isinstance(p, api.PrincipalResult) and p.symmetry == "asymmetric"
+    assert isinstance(p, api_p.PrincipalResult) and p.symmetry == "asymmetric"
     assert p.moments == pytest.approx([1 / 12, 7 / 12, 2 / 3])
     np.testing.assert_allclose(p.axes @ p.axes.T, np.eye(3), atol=1e-15)
     assert p.stable == (True, False, True) and p.free_axes == ()

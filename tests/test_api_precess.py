@@ -151,8 +151,8 @@ def test_errors_are_the_cli_messages(cli):
     cases = [
         (dict(omega=None), ("examples/book.yaml",)),
         (dict(omega="1,2"), ("examples/book.yaml", "--omega", "1,2")),
-        (dict(omega=[1, 0, 0], samples="x"), ("examples/book.yaml", "--omega", "1,0,0", "--samples", "x",
-                                             "--csv", "-", "--duration", "1")),
+        (dict(omega=[1, 0, 0], samples=1), ("examples/book.yaml", "--omega", "1,0,0", "--samples", "1",
+                                            "--csv", "-", "--duration", "1")),
         (dict(omega=[1, 0, 0], duration="-1 s"), ("examples/book.yaml", "--omega", "1,0,0", "--duration=-1 s",
                                                   "--plot", "x.svg")),
         (dict(omega=[1, 0, 0], at="1e20"), ("examples/book.yaml", "--omega", "1,0,0", "--at", "1e20")),
@@ -164,6 +164,8 @@ def test_errors_are_the_cli_messages(cli):
         with pytest.raises(rbcli.InputError) as exc:
             rbcli.precess(body, **kwargs)
         assert r.err == f"rbcli: {exc.value.spelled(option_name)}\n", args
+    with pytest.raises(TypeError, match="^samples: expected an int, got str$"):
+        rbcli.precess(body, omega=[1, 0, 0], samples="x")  # a count is an int in Python
     point = rbcli.load_text("{shape: point, mass: 1}")
     with pytest.raises(rbcli.InputError, match="positive definite"):
         rbcli.precess(point, omega=[1, 0, 0])

@@ -88,7 +88,9 @@ def test_written_through_the_api_as_by_the_cli(cli, tmp_path, name):
     # the same rules as the CLI: an existing report only with force
     with pytest.raises(rbcli.InputError) as exc:
         rbcli.write_report(_body(name), mine, **kw)
-    assert "exists; use --force" in str(exc.value)
+    assert str(exc.value).startswith("path: ") and "exists; use force" in str(exc.value)  # its parameters
+    cli_text = exc.value.spelled(lambda p: option_name(p, "report"))  # as `rbcli report` says it
+    assert cli_text.startswith("-o: ") and cli_text.endswith("exists; use --force to replace it")
     assert rbcli.write_report(_body(name), mine, force=True, **kw).return_code == r.code
     for bad in ("false", "no", 0, 1, None):  # a flag takes a bool: no string turns it on
         with pytest.raises(TypeError, match="force"):

@@ -154,7 +154,7 @@ def test_errors_are_the_cli_line(cli, args, kw):
 
 def test_errors_name_their_parameter():
     hoop = rbcli.load("examples/hoop.yaml")
-    for kw, param in [({"rolling_speed": 1, "spin": 1}, "speed"), ({"circle": 1, "rolling_speed": 1e-300}, "circle"),
+    for kw, param in [({"rolling_speed": 1, "spin": 1}, "rolling_speed"), ({"circle": 1, "rolling_speed": 1e-300}, "circle"),
                       ({"spin": 1, "lean": 0}, "lean"), ({"tyre_radius": 0.6}, "tyre_radius"),
                       ({"lean": 95, "circle": 1}, "lean")]:
         with pytest.raises(rbcli.InputError) as e:

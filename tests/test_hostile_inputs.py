@@ -27,7 +27,7 @@ import pytest
 
 from conftest import sampled_params
 
-from rbcli.errors import InputError
+from rbcli.errors import InputError, option_name
 from rbcli.io import body as body_mod
 from rbcli.io import includes as includes_mod
 from rbcli.io import outfile
@@ -187,8 +187,9 @@ def test_no_clobber_is_one_step(tree, monkeypatch):
         return real_commit(tmp, path, option, replace)
 
     monkeypatch.setattr(outfile, "_commit", racing)
-    with pytest.raises(InputError, match="exists; use --force"):
+    with pytest.raises(InputError, match="exists; use force") as info:
         outfile.write_atomic(target, "mine\n", "-o", replace=False)
+    assert "exists; use --force" in info.value.spelled(option_name)  # the command line's words
     assert target.read_text() == "the other run's report\n"
     assert leftovers(tree) == []
 

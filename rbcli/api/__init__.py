@@ -11,12 +11,21 @@ and ``return_code``. Nothing here prints, draws or imports the command line.
 module             public functions (re-exported by ``rbcli``)
 =================  ==========================================
 ``load``           ``load``, ``load_text``
-``massprops``      ``inertia``, ``principal``
-``balance``        ``balance``, ``field_balance``
+``inertia``        ``inertia``
+``principal``      ``principal``
+``balance``        ``balance`` (``field_balance`` too)
+``fieldbalance``   ``field_balance``
 ``precess``        ``precess``
-``top``            ``top``, ``gyrocompass``
+``top``            ``top``
+``gyrocompass``    ``gyrocompass``
 ``rollcheck``      ``rollcheck``
 ``whirl``          ``whirl``
 ``report``         ``report``
 =================  ==========================================
+
+Shared: ``options`` (how a typed value is read), ``check`` (the arguments' types and sizes,
+checked at the door of every public function), ``result`` (the ``Result`` mixin, the one
+finiteness check), ``reference`` (the point an inertia is about).
 """
+
+__all__: list[str] = []  # the modules are the API; rbcli re-exports the public functions

@@ -22,7 +22,9 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as op
+from rbcli.api.check import Point, Quantity, Values, Vector
 from rbcli.api.fieldbalance import (  # noqa: F401  (re-exported: rbcli.field_balance)
     FieldBalanceOptions, FieldBalanceResult, field_balance,
 )
@@ -35,6 +37,15 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["AddedMass", "BalanceOptions", "BalanceResult", "balance", "run",
            "FieldBalanceOptions", "FieldBalanceResult", "field_balance"]
+
+#: the checker of each keyword argument of :func:`balance` (:mod:`rbcli.api.check`)
+KINDS = {
+    "shaft": check.vector, "through": check.vector, "mark": check.vector,
+    "zero_mark_deg": check.quantity, "angle_sense": check.text, "planes": check.values(2),
+    "radius": check.values(2), "mass_step": check.quantity, "angle_step": check.quantity,
+    "positions": check.count, "speed": check.quantity, "bearings": check.values(2),
+    "g": check.quantity, "grade": check.quantity, "tolerance_planes": check.text,
+}
 
 #: the default gravity for the static bearing loads, m/s² (standard gravity)
 STANDARD_GRAVITY = 9.80665
@@ -112,10 +123,14 @@ class BalanceOptions:
     given: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body, *, shaft=None, through=None, mark=None, zero_mark_deg=None,
-              angle_sense="with", planes=None, radius=None, mass_step=None, angle_step=None,
-              positions=None, speed=None, bearings=None, g=None, grade=None,
-              tolerance_planes=None) -> BalanceOptions:
+    def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+              mark: Vector | None = None, zero_mark_deg: Quantity | None = None,
+              angle_sense: str | None = "with", planes: Values | None = None,
+              radius: Values | None = None, mass_step: Quantity | None = None,
+              angle_step: Quantity | None = None, positions: int | None = None,
+              speed: Quantity | None = None, bearings: Values | None = None,
+              g: Quantity | None = None, grade: Quantity | None = None,
+              tolerance_planes: str | None = None) -> BalanceOptions:
         """Read the keyword arguments of :func:`balance` (see there) for ``body``.
 
         Raises
@@ -625,7 +640,10 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
                 added = [AddedMass(name, None, m, tuple(float(v) for v in x))
                          for name, (m, x) in zip(names, B.correction_points(installed))]
             warnings += installed.warnings
-            corrected = B.add_point_masses(unb, [(a.mass, a.at) for a in added])
+            try:
+                corrected = B.add_point_masses(unb, [(a.mass, a.at) for a in added])
+            except B.BalanceValueError:  # the masses at the radius given overflow the rotor's
+                raise OverflowError("the corrected rotor") from None
         forces = forces_after = None
         if o.speed is not None or o.bearings is not None:
             forces = B.bearing_forces(unb, o.speed if o.speed is not None else 0.0, o.bearings, g=o.g)
@@ -661,10 +679,13 @@ def _run(body: Body, o: BalanceOptions) -> BalanceResult:
     )
 
 
-def balance(body: Body, *, shaft=None, through=None, mark=None, zero_mark_deg=None,
-            angle_sense="with", planes=None, radius=None, mass_step=None, angle_step=None,
-            positions=None, speed=None, bearings=None, g=None, grade=None,
-            tolerance_planes=None) -> BalanceResult:
+def balance(body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+            mark: Vector | None = None, zero_mark_deg: Quantity | None = None,
+            angle_sense: str = "with", planes: Values | None = None, radius: Values | None = None,
+            mass_step: Quantity | None = None, angle_step: Quantity | None = None,
+            positions: int | None = None, speed: Quantity | None = None,
+            bearings: Values | None = None, g: Quantity | None = None,
+            grade: Quantity | None = None, tolerance_planes: str | None = None) -> BalanceResult:
     """Unbalance of a rotor about its shaft, corrections, bearing forces and ISO 21940-11.
 
     Every value may be an SI number (a sequence for lists) or a string as typed on the
@@ -716,8 +737,11 @@ def balance(body: Body, *, shaft=None, through=None, mark=None, zero_mark_deg=No
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        A bad or missing value, with the command line's message and ``param``.
+        A bad or missing value, naming the parameter and ``param``.
 
     Examples
     --------
@@ -727,8 +751,11 @@ def balance(body: Body, *, shaft=None, through=None, mark=None, zero_mark_deg=No
     >>> round(r.corrections[0].mass * 1e3, 4)   # g, plane A
     8.5
     """
-    return run(body, BalanceOptions.parse(
-        body, shaft=shaft, through=through, mark=mark, zero_mark_deg=zero_mark_deg,
+    body = check.body(body)
+    kw = check.arguments(
+        KINDS, shaft=shaft, through=through, mark=mark, zero_mark_deg=zero_mark_deg,
         angle_sense=angle_sense, planes=planes, radius=radius, mass_step=mass_step,
         angle_step=angle_step, positions=positions, speed=speed, bearings=bearings, g=g,
-        grade=grade, tolerance_planes=tolerance_planes))
+        grade=grade, tolerance_planes=tolerance_planes)
+    with check.arithmetic(kw):
+        return run(body, BalanceOptions.parse(body, **kw))

@@ -15,6 +15,10 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core import balance as B
 
+__all__ = ["frame_json", "unbalance_json", "plane_correction_json", "residual_json",
+    "corrections_json", "positions_json", "bearing_forces_json", "allocation_json",
+    "iso_state_json", "iso_json", "balance_json"]
+
 
 def _f(x: float) -> float | None:
     """Plain finite float, or None."""

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+__all__ = ["Arrow", "Panel", "Diagram"]
+
 
 @dataclass(frozen=True)
 class Arrow:

@@ -16,20 +16,25 @@ once (:class:`FieldBalanceOptions`) and returns a frozen
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeAlias
 
-from rbcli.api import fieldreadings as fr
-from rbcli.api import options as op
+from rbcli.api import check
+from rbcli.api.check import Quantity
 from rbcli.api.fieldresult import (  # noqa: F401  (re-exported: the result types)
     CONVENTION, SI_UNITS, Conventions, FieldBalanceResult, FieldCorrection, FieldResidual,
     convention_text,
 )
 from rbcli.api.fieldreadings import READING_KINDS, READING_UNITS  # noqa: F401  (re-exported)
-from rbcli.errors import InputError, ParamError, literal
+from rbcli.errors import ParamError, literal
 
-__all__ = ["FieldBalanceOptions", "FieldBalanceResult", "field_balance", "run"]
+__all__ = ["FieldBalanceOptions", "FieldBalanceResult", "field_balance", "run", "Readings"]
+
+#: readings as the command line takes them: ``"6.0@30"``, ``"170@112,53@78"``, or a sequence
+#: of such strings (one per sensor)
+Readings: TypeAlias = str | Sequence[str]
 
 #: the core's parameter names -> the options of :func:`field_balance`
 _CORE_PARAMS = {"v0": "initial", "v1": "run", "va": "run", "vb": "run", "trial": "trial",
@@ -37,6 +42,24 @@ _CORE_PARAMS = {"v0": "initial", "v1": "run", "va": "run", "vb": "run", "trial":
                 "weights": "weights", "method": "method", "mass_step": "mass_step",
                 "angle_step": "angle_step", "positions": "positions", "bearing_load": "bearing_load",
                 "trial_radius": "trial_radius", "speed": "speed", "trial_fraction": "trial_fraction"}
+
+def _group(value: Any, param: str) -> int | str | None:
+    """ISO 20816-3's machine group: 1 or 2, as an int or a string."""
+    return check.text(value, param) if value is None or isinstance(value, str) else check.count(value, param)
+
+
+#: the checker of each keyword argument of :func:`field_balance` (:mod:`rbcli.api.check`)
+KINDS = {
+    "initial": check.texts(1), "trial": check.texts(1), "run": check.texts(2),
+    "cumulative": check.flag, "trial_radius": check.quantity, "radius": check.quantity,
+    "job": check.path, "method": check.text, "weights": check.values(check.MAX_ITEMS),
+    "mass_step": check.quantity, "angle_step": check.quantity, "positions": check.count,
+    "phase": check.text, "angle_sense": check.text, "rotation": check.text,
+    "measure": check.text, "severity": check.text, "group": _group, "foundation": check.text,
+    "coefficients": check.path, "suggest_trial": check.flag, "rotor_mass": check.quantity,
+    "rotor": check.path, "bearing_load": check.quantity, "trial_fraction": check.quantity,
+    "speed": check.quantity, "full": check.flag,
+}
 
 #: plane names of a command-line job
 PLANE_LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -51,15 +74,6 @@ class TrialRequest:
     radii: tuple[float, ...]
     speed: float
     fraction: float
-
-
-def _texts(v: Any, param: str) -> list[str]:
-    """One option value or several (``--trial`` given twice): a list of strings."""
-    if isinstance(v, str):
-        return [v]
-    if isinstance(v, Sequence):
-        return [x if isinstance(x, str) else str(x) for x in v]
-    raise TypeError(f"{param}: expected a string or a list of strings, got {type(v).__name__}")
 
 
 @dataclass(frozen=True)
@@ -230,12 +244,20 @@ def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
 _run = run  # field_balance's parameter ``run`` (the readings) hides the function
 
 
-def field_balance(*, initial=None, trial=None, run=None, cumulative: bool = False, trial_radius=None,
-                  radius=None, job=None, method=None, weights=None, mass_step=None, angle_step=None,
-                  positions=None, phase=None, angle_sense=None, rotation=None, measure=None,
-                  severity=None, group=None, foundation=None, coefficients=None,
-                  suggest_trial: bool = False, rotor_mass=None, rotor=None, bearing_load=None,
-                  trial_fraction=None, speed=None, full: bool = False) -> FieldBalanceResult:
+def field_balance(*, initial: Readings | None = None, trial: Readings | None = None,
+                  run: Readings | Sequence[Readings] | None = None, cumulative: bool = False,
+                  trial_radius: Quantity | None = None, radius: Quantity | None = None,
+                  job: str | os.PathLike[str] | None = None, method: str | None = None,
+                  weights: str | Sequence[float] | None = None, mass_step: Quantity | None = None,
+                  angle_step: Quantity | None = None, positions: int | None = None,
+                  phase: str | None = None, angle_sense: str | None = None,
+                  rotation: str | None = None, measure: str | None = None,
+                  severity: str | None = None, group: int | str | None = None,
+                  foundation: str | None = None,
+                  coefficients: str | os.PathLike[str] | None = None, suggest_trial: bool = False,
+                  rotor_mass: Quantity | None = None, rotor: str | os.PathLike[str] | None = None,
+                  bearing_load: Quantity | None = None, trial_fraction: Quantity | None = None,
+                  speed: Quantity | None = None, full: bool = False) -> FieldBalanceResult:
     """Field (trial-weight) balancing from vibration readings: influence coefficients.
 
     Readings are ``"amplitude@phase"`` strings (phases in degrees from the keyphasor):
@@ -298,8 +320,11 @@ def field_balance(*, initial=None, trial=None, run=None, cumulative: bool = Fals
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        with the command line's message and ``param``.
+        naming the parameter and ``param``.
 
     Examples
     --------
@@ -308,11 +333,13 @@ def field_balance(*, initial=None, trial=None, run=None, cumulative: bool = Fals
     >>> round(r.corrections[0].mass * 1e3, 2)   # g
     9.08
     """
-    return _run(None, FieldBalanceOptions.parse(
-        None, initial=initial, trial=trial, run=run, cumulative=cumulative,
+    kw = check.arguments(
+        KINDS, initial=initial, trial=trial, run=run, cumulative=cumulative,
         trial_radius=trial_radius, radius=radius, job=job, method=method, weights=weights,
         mass_step=mass_step, angle_step=angle_step, positions=positions, phase=phase,
         angle_sense=angle_sense, rotation=rotation, measure=measure, severity=severity,
         group=group, foundation=foundation, coefficients=coefficients,
         suggest_trial=suggest_trial, rotor_mass=rotor_mass, rotor=rotor, bearing_load=bearing_load,
-        trial_fraction=trial_fraction, speed=speed, full=full))
+        trial_fraction=trial_fraction, speed=speed, full=full)
+    with check.arithmetic(kw):
+        return _run(None, FieldBalanceOptions.parse(None, **kw))

@@ -19,6 +19,8 @@ from rbcli.api import options as op
 from rbcli.errors import InputError, Location, ParamError, literal
 from rbcli.io.fieldjob import CHOICES
 
+__all__ = ["parse", "PLANE_LETTERS"]
+
 PLANE_LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 
 
@@ -195,10 +197,10 @@ def _texts(v: Any, param: str) -> list[str]:
 def _weights(weights: Any, n: int) -> list[float]:
     if isinstance(weights, str):
         parts = [x.strip() for x in weights.split(",")]
-        with op.naming("weights"):
-            vals = [op.quantity(x, "dimensionless", "weights") for x in parts]
     else:
-        vals = [float(x) for x in weights]
+        parts = list(weights) if isinstance(weights, (list, tuple)) else [weights]
+    with op.naming("weights"):
+        vals = [op.quantity(x, "dimensionless", "weights") for x in parts]
     if len(vals) != n:
         raise ParamError("weights", f"give one weight per reading ({n}), not {len(vals)}")
     if not all(v > 0 and v < float("inf") for v in vals):

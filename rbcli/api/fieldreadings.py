@@ -21,6 +21,9 @@ from dataclasses import dataclass
 from rbcli.api import options as op
 from rbcli.errors import InputError, Location, ParamError, literal
 
+__all__ = ["Reading", "reading", "trial", "readings", "one_kind", "at", "Measures",
+    "common_measure", "READING_KINDS", "READING_UNITS", "SI_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
+
 #: what a reading's unit may measure -> its kind; readings are converted to SI
 READING_KINDS = {"displacement": (1, 0), "velocity": (1, -1), "acceleration": (1, -2)}
 #: the SI unit of each kind, as JSON reports it

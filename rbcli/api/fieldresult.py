@@ -17,6 +17,10 @@ from typing import Any
 
 from rbcli.api.result import Result
 
+__all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedMass", "FittedPlane",
+    "Fitted", "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "deg",
+    "CONVENTION", "SI_UNITS"]
+
 #: the angle convention of field balancing, in words (as it always was)
 CONVENTION = ("angles and phases in degrees, counted in the same sense as the trial angles and the "
               "phase readings (they must agree)")

@@ -18,6 +18,8 @@ from rbcli.api.fieldresult import (
     Severity, SeverityRow, SuggestedTrial, convention_text, deg,
 )
 
+__all__ = ["solve_job", "significance_warning"]
+
 
 def solve_job(o: Any) -> FieldBalanceResult:
     """The result of an extended job ``o`` (a :class:`FieldBalanceOptions`)."""

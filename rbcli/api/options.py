@@ -26,6 +26,10 @@ from typing import Any
 from rbcli._startup import LazyRe
 from rbcli.errors import InputError, Note, ParamError, literal
 
+__all__ = ["Value", "UNIT_RULE", "NUMBER", "Units", "param", "naming", "is_bare", "quantity",
+    "degrees", "numbers", "finite", "positive", "distinct", "grade", "vector", "point",
+    "direction", "choice", "symmetry_tolerance"]
+
 #: a number at the start of a value: what is left after it is the value's unit
 NUMBER = LazyRe(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
 
@@ -163,7 +167,7 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
 def finite(x: float, option: str) -> float:
     """``x`` if it is a finite number, else an InputError naming ``option``."""
     if not math.isfinite(x):
-        raise _error(option, f"must be a finite number")
+        raise _error(option, "must be a finite number")
     return x
 
 
@@ -233,7 +237,7 @@ def direction(text: Value, option: str) -> list[float]:
     v = vector(t, "dimensionless", option)
     big = max(abs(x) for x in v)
     if not big > 0:
-        raise _error(option, f"the direction must be a non-zero vector")
+        raise _error(option, "the direction must be a non-zero vector")
     return [x / big for x in v]  # largest component ±1: no under/overflow when normalised
 
 

@@ -20,12 +20,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as o
+from rbcli.api.check import Quantity, Vector
 from rbcli.api.result import Result, jsonable
 from rbcli.errors import InputError, Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
+    from numpy.typing import ArrayLike
 
     from rbcli.core.freemotion import FreeMotion
     from rbcli.core.freeverify import VerifyResult
@@ -37,6 +40,10 @@ __all__ = ["PrecessOptions", "PrecessResult", "run", "precess", "DEFAULT_SAMPLES
 #: rows of a time series when ``samples`` is not given, and the most allowed
 DEFAULT_SAMPLES = 1001
 MAX_SAMPLES = 1_000_000  # 1 048 576 rows is what a spreadsheet holds; 10^6 rows is ~100 MB of CSV
+
+#: the checker of each keyword argument of :func:`precess` (:mod:`rbcli.api.check`)
+KINDS = {"omega": check.vector, "at": check.quantity, "duration": check.quantity,
+         "samples": check.count, "verify": check.flag}
 
 #: SPEC §3 keys, first in the JSON object
 SPEC_KEYS = (
@@ -59,6 +66,14 @@ def _count(value: Any) -> int:
     if not 2 <= n <= MAX_SAMPLES:
         raise ParamError("samples", f"expected a whole number of rows from 2 to {MAX_SAMPLES}, got {n}")
     return n
+
+
+def _span(duration: Any) -> float:
+    """A positive finite time span in s (``duration``)."""
+    span = o.finite(o.quantity(duration, "time", "duration"), "duration")
+    if not span > 0.0:
+        raise ParamError("duration", f"must be a positive time, got '{duration}'")
+    return span
 
 
 @dataclass(frozen=True)
@@ -85,8 +100,9 @@ class PrecessOptions:
     warnings: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body | None = None, *, omega: Any = None, at: Any = None,
-              duration: Any = None, samples: Any = None, verify: bool = False) -> PrecessOptions:
+    def parse(cls, body: Body | None = None, *, omega: Vector | None = None,
+              at: Quantity | None = None, duration: Quantity | None = None,
+              samples: int | str | None = None, verify: bool = False) -> PrecessOptions:
         """Read the values as :func:`precess` takes them (numbers SI, or quantity strings)."""
         if omega is None:
             raise ParamError("omega", "the initial angular velocity is required: x,y,z in the "
@@ -94,11 +110,7 @@ class PrecessOptions:
         u = o.Units.of(body)
         w = u.vector(omega, "angular_speed", "omega")
         t_at = o.finite(o.quantity(at, "time", "at"), "at") if at is not None else None
-        span = None
-        if duration is not None:
-            span = o.finite(o.quantity(duration, "time", "duration"), "duration")
-            if not span > 0.0:
-                raise ParamError("duration", f"must be a positive time, got '{duration}'")
+        span = _span(duration) if duration is not None else None
         n_rows = _count(samples) if samples is not None else None
         given = tuple(p for p, v in (("omega", omega), ("at", at), ("duration", duration),
                                      ("samples", samples), ("verify", verify or None)) if v is not None)
@@ -148,23 +160,39 @@ class PrecessResult(Result):
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
-    def at(self, t: Any) -> FreeState:
-        """The exact state at ``t`` (s, a number or an array): ω, L (body frame), quaternion
-        and rotation matrix (body → space; space = body frame at t = 0)."""
+    def at(self, t: Quantity | ArrayLike) -> FreeState:
+        """The exact state at ``t`` (s: a number, a quantity string such as ``"7320 h"``, or a
+        1-D sequence of at most :data:`rbcli.api.check.MAX_TIMES` numbers): ω, L (body frame),
+        quaternion and rotation matrix (body → space; space = body frame at t = 0).
+
+        Raises
+        ------
+        TypeError
+            ``t`` that is not a number, a string or numbers.
+        rbcli.InputError
+            a time that is not finite, too many times, a time too far away to have a phase.
+        """
+        import numpy as np
+
+        from rbcli.core.freestate import check_phase
+
+        t = check.times(t, "t", ndim=1)
+        check_phase(self.motion, float(np.max(np.abs(t), initial=0.0)), "t")
         return self.motion.at(t)
 
-    def series_blocks(self, duration: float | None = None,
+    def series_blocks(self, duration: Quantity | None = None,
                       samples: int | None = None) -> Iterator[np.ndarray]:
         """The time series in blocks of at most 100 000 rows; see :meth:`series`."""
         from rbcli.core.freestate import series
 
-        span = self.options.duration if duration is None else float(duration)
+        duration, samples = check.quantity(duration, "duration"), check.count(samples, "samples")
+        span = self.options.duration if duration is None else _span(duration)
         if span is None:
             raise ParamError("duration", "needs a span for the time series (from t = 0)")
-        n = samples if samples is not None else (self.options.samples or DEFAULT_SAMPLES)
+        n = _count(samples) if samples is not None else (self.options.samples or DEFAULT_SAMPLES)
         return series(self.motion, span, n)
 
-    def series(self, duration: float | None = None, samples: int | None = None) -> np.ndarray:
+    def series(self, duration: Quantity | None = None, samples: int | None = None) -> np.ndarray:
         """Rows t, ωx, ωy, ωz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body → space) at
         ``samples`` times from 0 to ``duration`` s inclusive (defaults: the options';
         1001 rows); the quaternion's sign is continuous along the series. (N, 11) array."""
@@ -231,7 +259,8 @@ def run(body: Body, options: PrecessOptions) -> PrecessResult:
     )
 
 
-def precess(body: Body, *, omega: Any, at: Any = None, duration: Any = None, samples: Any = None,
+def precess(body: Body, *, omega: Vector, at: Quantity | None = None,
+            duration: Quantity | None = None, samples: int | None = None,
             verify: bool = False) -> PrecessResult:
     """The exact torque-free motion of a rigid body from an initial angular velocity.
 
@@ -264,6 +293,9 @@ def precess(body: Body, *, omega: Any, at: Any = None, duration: Any = None, sam
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         A bad value (the message names the parameter), an inertia that is not positive
         definite, a time too far away to have a phase.
@@ -277,5 +309,8 @@ def precess(body: Body, *, omega: Any, at: Any = None, duration: Any = None, sam
     >>> round(float(book.at(1.0).omega[1]), 6)           # rad/s, body frame, at t = 1 s
     1.000049
     """
-    return run(body, PrecessOptions.parse(body, omega=omega, at=at, duration=duration,
-                                          samples=samples, verify=verify))
+    body = check.body(body)
+    kw = check.arguments(KINDS, omega=omega, at=at, duration=duration, samples=samples,
+                         verify=verify)
+    with check.arithmetic(kw):
+        return run(body, PrecessOptions.parse(body, **kw))

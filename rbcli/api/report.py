@@ -26,6 +26,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
+from rbcli.api.check import Point, Quantity, Values, Vector
 from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, ParamError, literal
 
@@ -44,7 +46,18 @@ _OPTIONS = ("shaft", "through", "planes", "radius", "bearings", "grade", "speed"
             "damping", "omega", "pivot", "spin", "theta", "theta_dot", "phi_dot", "rim_radius",
             "tyre_radius", "g", "symmetry_tol")
 
-#: stand-ins for a missing --spin or --theta, so that the one given is still checked by
+#: the checker of each keyword argument of :func:`report` (:mod:`rbcli.api.check`)
+KINDS = {
+    "shaft": check.vector, "through": check.vector, "planes": check.values(2),
+    "radius": check.values(2), "bearings": check.values(2), "grade": check.quantity,
+    "speed": check.quantity, "stiffness": check.values(2), "damping": check.values(2),
+    "omega": check.vector, "pivot": check.vector, "spin": check.quantity,
+    "theta": check.quantity, "theta_dot": check.quantity, "phi_dot": check.quantity,
+    "rim_radius": check.quantity, "tyre_radius": check.quantity, "g": check.quantity,
+    "symmetry_tol": check.quantity,
+}
+
+#: stand-ins for a missing spin or theta, so that the one given is still checked by
 #: TopOptions.parse (the heavy-top section is then left out, saying what is missing)
 _TOP_STAND_INS = {"spin": 1.0, "theta": 90.0}
 
@@ -154,10 +167,16 @@ class ReportOptions:
     rolling_error: InputError | None = None
 
     @classmethod
-    def parse(cls, body: Body, *, shaft=None, through=None, planes=None, radius=None,
-              bearings=None, grade=None, speed=None, stiffness=None, damping=None, omega=None,
-              pivot=None, spin=None, theta=None, theta_dot=None, phi_dot=None, rim_radius=None,
-              tyre_radius=None, g=None, symmetry_tol=None) -> ReportOptions:
+    def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+              planes: Values | None = None, radius: Values | None = None,
+              bearings: Values | None = None, grade: Quantity | None = None,
+              speed: Quantity | None = None, stiffness: Values | None = None,
+              damping: Values | None = None, omega: Vector | None = None,
+              pivot: Point | None = None, spin: Quantity | None = None,
+              theta: Quantity | None = None, theta_dot: Quantity | None = None,
+              phi_dot: Quantity | None = None, rim_radius: Quantity | None = None,
+              tyre_radius: Quantity | None = None, g: Quantity | None = None,
+              symmetry_tol: Quantity | None = None) -> ReportOptions:
         """Read the keyword arguments of :func:`report` (see there) for ``body``.
 
         Raises
@@ -328,11 +347,23 @@ class ReportResult(Result):
         return 1 if self.failed else 0
 
     def section(self, key: str) -> Section:
-        """The section with this key (``"balance"``, ``"heavy-top"``, ...)."""
+        """The section with this key (``"balance"``, ``"heavy-top"``, ...).
+
+        Raises
+        ------
+        TypeError
+            ``key`` that is not a string.
+        KeyError
+            a key no section has (the message lists the keys).
+        """
+        key = check.text(key, "key")
         for s in self.sections:
             if s.key == key:
                 return s
-        raise KeyError(key)
+        from rbcli.env import clean
+
+        raise KeyError(f"no section {clean(repr(key), max_line=120)} (the sections: "
+                       f"{', '.join(s.key for s in self.sections)})")
 
     def to_json(self) -> dict[str, Any]:
         """The sections (key, title, whether included, why not) and the failed checks."""
@@ -368,17 +399,17 @@ def _parts(ctx: _Ctx) -> Section:
 
 
 def _massprops(ctx: _Ctx) -> Section:
-    from rbcli.api.massprops import InertiaOptions, run_inertia
+    from rbcli.api import inertia as api
 
-    o = InertiaOptions.parse(ctx.body)
-    return Section("mass-properties", "Mass properties", run_inertia(ctx.body, o), options=o)
+    o = api.InertiaOptions.parse(ctx.body)
+    return Section("mass-properties", "Mass properties", api.run(ctx.body, o), options=o)
 
 
 def _principal(ctx: _Ctx) -> Section:
-    from rbcli.api.massprops import PrincipalOptions, run_principal
+    from rbcli.api import principal as api
 
-    o = PrincipalOptions.parse(ctx.body)
-    return Section("principal-axes", "Principal axes", run_principal(ctx.body, o), options=o)
+    o = api.PrincipalOptions.parse(ctx.body)
+    return Section("principal-axes", "Principal axes", api.run(ctx.body, o), options=o)
 
 
 def _skip(key: str, title: str, reason: str) -> Section:
@@ -517,8 +548,10 @@ def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Se
             jsonable(_without_part_rows(s.result).to_json())  # the commands' one finiteness check
     except (OverflowError, ZeroDivisionError, FloatingPointError, NonFiniteResult) as exc:
         del ctx.failed[n_failed:]  # a check of a section that is not there has not failed
-        reason = (literal(exc) if isinstance(exc, NonFiniteResult)
-                  else f"a value is too large or too small to compute with ({literal(exc)})")
+        if isinstance(exc, NonFiniteResult):  # its parameters stay parameters (spelled when shown)
+            reason = exc.template or literal(exc)
+        else:
+            reason = f"a value is too large or too small to compute with ({literal(exc)})"
         return _skip(key, title, Note(f"{what}: not computed: {reason}"))
     return s
 
@@ -541,10 +574,16 @@ def run(body: Body, options: ReportOptions,
                         failed=tuple(Note(f) for f in ctx.failed), warnings=warnings)
 
 
-def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, bearings=None,
-           grade=None, speed=None, stiffness=None, damping=None, omega=None, pivot=None,
-           spin=None, theta=None, theta_dot=None, phi_dot=None, rim_radius=None,
-           tyre_radius=None, g=None, symmetry_tol=None) -> ReportResult:
+def report(body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+           planes: Values | None = None, radius: Values | None = None,
+           bearings: Values | None = None, grade: Quantity | None = None,
+           speed: Quantity | None = None, stiffness: Values | None = None,
+           damping: Values | None = None, omega: Vector | None = None,
+           pivot: Point | None = None, spin: Quantity | None = None,
+           theta: Quantity | None = None, theta_dot: Quantity | None = None,
+           phi_dot: Quantity | None = None, rim_radius: Quantity | None = None,
+           tyre_radius: Quantity | None = None, g: Quantity | None = None,
+           symmetry_tol: Quantity | None = None) -> ReportResult:
     """Every answer that applies to the body, computed for one report.
 
     The sections ``rbcli report BODY -o FILE`` writes: a parts table, mass properties,
@@ -588,6 +627,9 @@ def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, be
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         naming the parameter, for a value a command refuses.
 
@@ -598,8 +640,11 @@ def report(body: Body, *, shaft=None, through=None, planes=None, radius=None, be
     >>> [s.key for s in r.sections if s.skipped is None]
     ['parts', 'mass-properties', 'principal-axes', 'heavy-top']
     """
-    return run(body, ReportOptions.parse(
-        body, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
+    body = check.body(body)
+    kw = check.arguments(
+        KINDS, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
         grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega, pivot=pivot,
         spin=spin, theta=theta, theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
-        tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol))
+        tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol)
+    with check.arithmetic(kw):
+        return run(body, ReportOptions.parse(body, **kw))

@@ -15,6 +15,8 @@ from typing import Any
 
 from rbcli.errors import ExitStatus, NonFiniteResult
 
+__all__ = ["Result", "Record", "record", "frozen", "freeze_fields", "jsonable"]
+
 
 class Result:
     """Mixin of every service result (use with ``@dataclass(frozen=True)``).

@@ -17,6 +17,8 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
+from rbcli.api.check import Point, Quantity, Vector
 from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, literal
 
@@ -31,6 +33,12 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
 
 STANDARD_GRAVITY = 9.80665  # m/s^2
+
+#: the checker of each keyword argument of :func:`rollcheck` (:mod:`rbcli.api.check`)
+KINDS = {"shaft": check.vector, "through": check.vector, "rim_radius": check.quantity,
+         "tyre_radius": check.quantity, "g": check.quantity, "rolling_speed": check.quantity,
+         "spin": check.quantity, "lean": check.quantity, "circle": check.quantity,
+         "symmetry_tol": check.quantity}
 
 
 def round_parts(body: Body) -> list[Part]:
@@ -143,9 +151,11 @@ class RollcheckOptions:
         return self.lean is not None or self.circle is not None
 
     @classmethod
-    def parse(cls, body: Body, *, shaft: Any = None, through: Any = None, rim_radius: Any = None,
-              tyre_radius: Any = None, g: Any = None, rolling_speed: Any = None, spin: Any = None,
-              lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckOptions:
+    def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+              rim_radius: Quantity | None = None, tyre_radius: Quantity | None = None,
+              g: Quantity | None = None, rolling_speed: Quantity | None = None,
+              spin: Quantity | None = None, lean: Quantity | None = None,
+              circle: Quantity | None = None, symmetry_tol: Quantity | None = None) -> RollcheckOptions:
         """Read the options of :func:`rollcheck` (see there) and resolve the body's defaults.
 
         Raises
@@ -332,6 +342,8 @@ def _wheel(body: Body, mp, axle, through, radius, tol) -> Wheel:
     try:
         return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through,
                                radius=radius, sym_rtol=tol)
+    except InputError:  # already names its parameter (an InputError is a ValueError)
+        raise
     except ValueError as exc:
         raise InputError(str(exc), Location(body.source)) from None
 
@@ -521,6 +533,24 @@ def _refuse_off_centre_rim(body: Body, o: RollcheckOptions) -> None:
         Location(body.source), rim, f"{rim.describe()}, so upright rolling is not an equilibrium")
 
 
+#: the core's names of the rim radius and the rolling speed -> the parameters of :func:`rollcheck`
+_CORE_PARAMS = {"radius": "rim_radius", "speed": "rolling_speed"}
+
+
+def _renamed(exc: InputError) -> InputError:
+    """A core error (:mod:`rbcli.core.rolling`) naming the rim radius and the speed by the
+    parameters of :func:`rollcheck` (``rim_radius``, ``rolling_speed``); the command line
+    spells them as its options (``--radius``, ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)."""
+    template = exc.template
+    for core, param in _CORE_PARAMS.items():
+        template = template.replace("{%s}" % core, "{%s}" % param)
+    exc.template = template
+    exc.args = (template,)
+    if exc.param in _CORE_PARAMS:
+        exc.param = _CORE_PARAMS[exc.param]
+    return exc
+
+
 def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     """The rolling check of ``body`` with parsed ``options`` (:meth:`RollcheckOptions.parse`).
 
@@ -540,8 +570,11 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
     wheel = _wheel(body, body_mass_props(body), o.axle, o.through, o.radius, o.symmetry_tol)
     if o.rim is not None and not o.rim.upright_equilibrium:
         _refuse_off_centre_rim(body, o)
-    res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, band=o.band, speed=o.speed, spin=o.spin,
-                       lean_rad=o.lean, circle_radius=o.circle)
+    try:
+        res = rl.rollcheck(wheel, o.radius, o.tyre_radius, o.g, band=o.band, speed=o.speed,
+                           spin=o.spin, lean_rad=o.lean, circle_radius=o.circle)
+    except InputError as exc:
+        raise _renamed(exc) from None
     warnings = o.warnings
     if wheel.asymmetry is not None:
         warnings += (Note(f"the wheel is not exactly symmetric about its axle: "
@@ -552,9 +585,11 @@ def run(body: Body, options: RollcheckOptions) -> RollcheckResult:
                            warnings=warnings)
 
 
-def rollcheck(body: Body, *, shaft: Any = None, through: Any = None, rim_radius: Any = None,
-              tyre_radius: Any = None, g: Any = None, rolling_speed: Any = None, spin: Any = None,
-              lean: Any = None, circle: Any = None, symmetry_tol: Any = None) -> RollcheckResult:
+def rollcheck(body: Body, *, shaft: Vector | None = None, through: Point | None = None,
+              rim_radius: Quantity | None = None, tyre_radius: Quantity | None = None,
+              g: Quantity | None = None, rolling_speed: Quantity | None = None,
+              spin: Quantity | None = None, lean: Quantity | None = None,
+              circle: Quantity | None = None, symmetry_tol: Quantity | None = None) -> RollcheckResult:
     """Stability of a wheel, disk or hoop rolling without slipping on a rough level floor.
 
     The body must be of revolution about its axle with its centre of mass on it (to
@@ -617,6 +652,9 @@ def rollcheck(body: Body, *, shaft: Any = None, through: Any = None, rim_radius:
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         Naming the parameter (``rolling_speed: ...``), or located in the body's file for a
         body that cannot roll.
@@ -629,7 +667,9 @@ def rollcheck(body: Body, *, shaft: Any = None, through: Any = None, rim_radius:
     >>> round(r.critical_speed, 6), r.verdict.stable, r.return_code
     (0.176454, False, 1)
     """
-    return run(body, RollcheckOptions.parse(
-        body, shaft=shaft, through=through, rim_radius=rim_radius, tyre_radius=tyre_radius, g=g,
-        rolling_speed=rolling_speed, spin=spin, lean=lean, circle=circle,
-        symmetry_tol=symmetry_tol))
+    body = check.body(body)
+    kw = check.arguments(KINDS, shaft=shaft, through=through, rim_radius=rim_radius,
+                         tyre_radius=tyre_radius, g=g, rolling_speed=rolling_speed, spin=spin,
+                         lean=lean, circle=circle, symmetry_tol=symmetry_tol)
+    with check.arithmetic(kw):
+        return run(body, RollcheckOptions.parse(body, **kw))

@@ -1,9 +1,9 @@
-"""The heavy top and the gyrocompass as services: :func:`top` and :func:`gyrocompass`.
+"""The heavy top as a service: :func:`top` (``rbcli top``).
 
 ``rbcli.top(body, spin=..., theta=...)`` is ``rbcli top BODY --spin ... --theta ...``:
 the exact closed-form motion of a symmetric top on a fixed pivot (Goldstein, Poole and
 Safko, *Classical Mechanics*, 3rd ed., §5.7), optionally checked against a numerical
-integration (``verify=True``). ``rbcli.gyrocompass(...)`` is ``rbcli gyrocompass``. Values
+integration (``verify=True``). The gyrocompass is :mod:`rbcli.api.gyrocompass`. Values
 are read by :mod:`rbcli.api.options` (SI numbers, or strings as typed on the command
 line); errors are :class:`rbcli.errors.InputError` with the command line's message.
 """
@@ -14,15 +14,16 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
 from rbcli.api import options as op
+from rbcli.api.check import Point, Quantity
 from rbcli.api.options import symmetry_tolerance
 from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    import numpy as np
+    from numpy.typing import ArrayLike
 
-    from rbcli.core.gyrocompass import Gyrocompass
     from rbcli.core.top import TopMotion
     from rbcli.core.topbody import TopParams
     from rbcli.core.toppath import TopState
@@ -30,14 +31,20 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.topverify import RealBodyCheck, VerifyResult
     from rbcli.model import Body
 
+__all__ = ["TopOptions", "TopResult", "run", "top", "series", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
+
+#: the checker of each keyword argument of :func:`top` (:mod:`rbcli.api.check`)
+KINDS = {"pivot": check.vector, "spin": check.quantity, "theta": check.quantity,
+         "theta_dot": check.quantity, "phi_dot": check.quantity, "g": check.quantity,
+         "verify": check.flag, "symmetry_tol": check.quantity, "duration": check.quantity,
+         "samples": check.count}
+
 #: rows of the path's time series: the default and the most (``top --csv``)
 DEFAULT_SAMPLES = 600
 MAX_SAMPLES = 1_000_000
 
 #: standard gravity, m/s² (the default of ``g``)
 STANDARD_GRAVITY = 9.80665
-#: the Earth's sidereal rotation rate, rad/s (the default of ``earth_rate``)
-EARTH_RATE = 7.2921150e-5
 #: nutation periods that ``verify`` integrates and that :meth:`TopResult.default_duration` spans
 PERIODS = 3
 
@@ -91,10 +98,11 @@ class TopOptions:
     warnings: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body, *, pivot: Any = None, spin: Any = None, theta: Any = None,
-              theta_dot: Any = None, phi_dot: Any = None, g: Any = None,
-              verify: bool = False, symmetry_tol: Any = None, duration: Any = None,
-              samples: Any = None) -> TopOptions:
+    def parse(cls, body: Body, *, pivot: Point | None = None, spin: Quantity | None = None,
+              theta: Quantity | None = None, theta_dot: Quantity | None = None,
+              phi_dot: Quantity | None = None, g: Quantity | None = None,
+              verify: bool = False, symmetry_tol: Quantity | None = None,
+              duration: Quantity | None = None, samples: int | str | None = None) -> TopOptions:
         """Read and check the values (see :func:`top` for their meaning and units)."""
         span, rows = series(duration, samples)
         if spin is None:
@@ -130,7 +138,7 @@ class TopOptions:
                                      ("theta_dot", theta_dot), ("phi_dot", phi_dot), ("g", g),
                                      ("verify", verify or None), ("symmetry_tol", symmetry_tol))
                       if v is not None)
-        warns = _plausibility(body, u, p_opt, S, "pivot", through=P)
+        warns = plausibility(body, u, p_opt, S, "pivot", through=P)
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
                    pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
                    pivot_as_given=p_opt if isinstance(p_opt, str) or p_opt is None else tuple(p_opt),
@@ -142,7 +150,7 @@ class TopOptions:
         return self.theta_dot == 0.0 and self.phi_dot == 0.0
 
 
-def series(duration: Any = None, samples: Any = None) -> tuple[float | None, int]:
+def series(duration: Quantity | None = None, samples: int | str | None = None) -> tuple[float | None, int]:
     """(duration, samples) of the path's time series (``top --csv``, ``--plot``): a positive
     time in s (None: three nutation periods, :meth:`TopResult.default_duration`) and a
     whole number of rows from 2 to :data:`MAX_SAMPLES` (default :data:`DEFAULT_SAMPLES`)."""
@@ -162,7 +170,7 @@ def series(duration: Any = None, samples: Any = None) -> tuple[float | None, int
     return span, rows
 
 
-def _plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str,
+def plausibility(body: Body | None, u: op.Units, point: Any, spin: float, option: str,
                   axis: Any = None, through: Any = None) -> tuple[str, ...]:
     """One-line warnings for values far outside the body's scale (issue 13): a pivot more
     than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
@@ -269,10 +277,19 @@ class TopResult(Result):
         the axis is horizontal); see :attr:`rbcli.core.top.TopMotion.steady_estimates`."""
         return self.motion.steady_estimates
 
-    def at(self, t: Any) -> TopState:
-        """The Euler angles θ, φ, ψ (rad) and their rates (rad/s) at times ``t`` (s, any
-        shape): ``result.at(0.1).theta``. Exact (the closed form)."""
-        return self.motion.at(t)
+    def at(self, t: Quantity | ArrayLike) -> TopState:
+        """The Euler angles θ, φ, ψ (rad) and their rates (rad/s) at times ``t`` (s: a number,
+        a quantity string such as ``"2 min"``, or numbers of any shape, at most
+        :data:`rbcli.api.check.MAX_TIMES`): ``result.at(0.1).theta``. Exact (the closed form).
+
+        Raises
+        ------
+        TypeError
+            ``t`` that is not a number, a string or numbers.
+        rbcli.InputError
+            a time that is not finite, too many times.
+        """
+        return self.motion.at(check.times(t, "t"))
 
     def default_duration(self) -> float:
         """s, the span ``--csv`` and ``--plot`` cover by default: 3 nutation periods.
@@ -290,12 +307,18 @@ class TopResult(Result):
             )
         return PERIODS * self.motion.nutation_period
 
-    def sample(self, duration: float, points: int | None = None) -> TopState:
-        """The motion at ``points`` evenly spaced times from 0 to ``duration`` (s) inclusive:
-        by default 400 per nutation period, at least 2000 and at most 200 000 (what
-        ``--plot`` draws)."""
+    def sample(self, duration: Quantity, points: int | None = None) -> TopState:
+        """The motion at ``points`` evenly spaced times from 0 to ``duration`` (s, > 0)
+        inclusive: by default 400 per nutation period, at least 2000 and at most 200 000
+        (what the command line's plot draws); given, from 2 to :data:`MAX_SAMPLES`."""
         import numpy as np
 
+        duration, points = check.quantity(duration, "duration"), check.count(points, "points")
+        duration = series(duration)[0]
+        if duration is None:
+            raise ParamError("duration", "needs the span to sample (s, from t = 0)")
+        if points is not None and not 2 <= points <= MAX_SAMPLES:
+            raise ParamError("points", f"must be from 2 to {MAX_SAMPLES}, got {points}")
         if points is None:
             tn = self.motion.nutation_period or duration
             points = int(min(200_000, max(2_000, 400 * duration / tn)))
@@ -347,9 +370,12 @@ def run(body: Body, options: TopOptions) -> TopResult:
         if options.pivot_given:
             raise ParamError("pivot", str(exc)) from None
         raise InputError(str(exc), Location(body.source)) from None
+    except InputError:  # already names its parameter (an InputError is a ValueError)
+        raise
     except ValueError as exc:
         at = ", ".join(f"{x:.6g}" for x in P)
-        raise InputError(f"{exc}; pivot at [{at}] m ({options.pivot_source})",
+        source = getattr(options.pivot_source, "template", options.pivot_source)
+        raise InputError(f"{exc}; pivot at [{at}] m ({source})",
                          Location(body.source)) from None
     o = options
     try:
@@ -368,6 +394,8 @@ def run(body: Body, options: TopOptions) -> TopResult:
             check = verify(motion, periods=PERIODS)
             if params.asymmetry is not None:
                 real = verify_real_body(motion, periods=PERIODS)
+        except InputError:  # already names its parameter (an InputError is a ValueError)
+            raise
         except (ValueError, OverflowError, ArithmeticError) as exc:
             raise ParamError("verify", str(exc)) from None
     warnings = o.warnings
@@ -379,9 +407,10 @@ def run(body: Body, options: TopOptions) -> TopResult:
                      warnings=warnings)
 
 
-def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any = None,
-        phi_dot: Any = None, g: Any = None, verify: bool = False,
-        symmetry_tol: Any = None, duration: Any = None, samples: Any = None) -> TopResult:
+def top(body: Body, *, pivot: Point | None = None, spin: Quantity, theta: Quantity,
+        theta_dot: Quantity | None = None, phi_dot: Quantity | None = None,
+        g: Quantity | None = None, verify: bool = False, symmetry_tol: Quantity | None = None,
+        duration: Quantity | None = None, samples: int | None = None) -> TopResult:
     """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
     The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
@@ -431,8 +460,11 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
-        With the command line's message: a value out of range, a body that is not a top
+        Naming the parameter: a value out of range, a body that is not a top
         about this pivot (asymmetric, the pivot at the com, a point mass), values that
         overflow the top's equations.
 
@@ -443,236 +475,9 @@ def top(body: Body, *, pivot: Any = None, spin: Any, theta: Any, theta_dot: Any 
     >>> round(r.motion.nutation_period, 6), r.motion.path
     (0.142133, 'cusps')
     """
-    return run(body, TopOptions.parse(body, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                      phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
-                                      duration=duration, samples=samples))
-
-
-# ----------------------------------------------------------------------------- gyrocompass
-
-
-@dataclass(frozen=True)
-class GyrocompassOptions:
-    """The gyrocompass's inputs, parsed and checked (SI).
-
-    Attributes
-    ----------
-    ratio : float | None — C/A given directly (no body)
-    axis : tuple[float, float, float] | None — the spin axis in the body frame (with a body)
-    axis_source : str | None — ``"--axis"``, ``"the body's shaft"`` or ``"body z (default)"``
-    spin : float — rad/s, ≠ 0
-    latitude : float — rad, in [-π/2, π/2]
-    earth_rate : float — rad/s, > 0
-    symmetry_tol : float — how far from symmetric about its spin axis the body may be
-    axis_as_given : tuple[float, float, float] | None — ``axis`` as given (largest component ±1)
-    given : tuple of str — the parameters the caller gave
-    warnings : tuple of str — a rim speed far outside the body's scale
-    """
-
-    ratio: float | None
-    axis: tuple[float, float, float] | None
-    axis_source: str | None
-    spin: float
-    latitude: float
-    earth_rate: float
-    symmetry_tol: float = 0.01
-    axis_as_given: tuple[float, float, float] | None = None
-    given: tuple[str, ...] = ()
-    warnings: tuple[str, ...] = ()
-
-    @classmethod
-    def parse(cls, body: Body | None = None, *, ratio: Any = None, shaft: Any = None, spin: Any = None,
-              latitude: Any = None, earth_rate: Any = None,
-              symmetry_tol: Any = None) -> GyrocompassOptions:
-        """Read and check the values (see :func:`gyrocompass`)."""
-        if spin is None:
-            raise InputError("{spin}: required: the rotor's spin about its axis, e.g. {spin} '6000 rpm'",
-                             param="spin")
-        if latitude is None:
-            raise InputError("{latitude}: required: the latitude in degrees, -90 to 90 (negative = south), "
-                             "e.g. {latitude} 52", param="latitude")
-        u = op.Units.of(body)
-        S = op.finite(u.quantity(spin, "angular_speed", "spin"), "spin")
-        if S == 0.0:
-            raise ParamError("spin", "must not be 0: a gyrocompass needs a spinning rotor")
-        lat = op.finite(op.quantity(latitude, "angle", "latitude", bare="deg"), "latitude")
-        if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
-            raise ParamError("latitude", f"must be from -90 to 90 degrees, got {latitude}")
-        W = EARTH_RATE if earth_rate is None else op.finite(
-            u.quantity(earth_rate, "angular_speed", "earth_rate"), "earth_rate")
-        if not W > 0.0:
-            raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
-        n_axis = op.direction(shaft, "shaft") if shaft is not None else None
-        tol = symmetry_tolerance(symmetry_tol)
-        given = tuple(p for p, v in (("ratio", ratio), ("shaft", shaft), ("spin", spin),
-                                     ("latitude", latitude), ("earth_rate", earth_rate),
-                                     ("symmetry_tol", symmetry_tol)) if v is not None)
-        r = None
-        if ratio is not None:
-            r = op.finite(op.quantity(ratio, "dimensionless", "ratio"), "ratio")
-            if not r > 0.0:
-                raise ParamError("ratio", f"C/A must be positive, got {ratio}")
-            if body is not None:
-                raise ParamError("ratio", "give either {ratio} or a body (BODY or -e), not both")
-            if n_axis is not None:
-                raise ParamError("shaft", "the spin axis belongs to a body; with {ratio} there is no body")
-            return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
-                       symmetry_tol=tol, given=given)
-        if body is None:
-            raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
-        if n_axis is not None:
-            n, src = n_axis, "{shaft}"
-        elif body.shaft is not None:
-            n, src = body.shaft.axis, "the body's shaft"
-        else:
-            n, src = (0.0, 0.0, 1.0), "body z (default)"
-        import numpy as np
-
-        v = np.asarray(n, dtype=float)
-        unit = tuple(float(x) for x in v / np.linalg.norm(v))
-        return cls(ratio=None, axis=unit, axis_source=Note(src), spin=S, latitude=lat,  # type: ignore[arg-type]
-                   earth_rate=W, symmetry_tol=tol, axis_as_given=None if n_axis is None else tuple(n_axis),
-                   given=given, warnings=_plausibility(body, u, None, S, "spin", axis=unit))
-
-
-@dataclass(frozen=True)
-class GyrocompassResult(Result):
-    """The gyrocompass's swing about north.
-
-    Attributes
-    ----------
-    swing : Gyrocompass — C/A, spin (rad/s), latitude (rad), Earth rate (rad/s), directive
-        (1/s²), omega0 and its estimate (rad/s), period (s) and where it settles (None
-        with no directive torque)
-    body : Body | None — the rotor's body (None with ``ratio``)
-    C, A : float | None — kg m², with a body: the moments about and across the spin axis,
-        about the com
-    mass : float | None — kg, with a body
-    options : GyrocompassOptions — the inputs as understood (SI)
-    asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric about its
-        spin axis: how far it departs (A is then the mean of its two moments across)
-    warnings : tuple[str, ...] — located one-line warnings: a nearly symmetric rotor
-    """
-
-    swing: Gyrocompass
-    options: GyrocompassOptions
-    body: Body | None = field(default=None, repr=False)
-    C: float | None = None
-    A: float | None = None
-    mass: float | None = None
-    asymmetry: AxialSymmetry | None = None
-    warnings: tuple[str, ...] = ()
-
-    @property
-    def asymmetry_effect(self) -> float | None:
-        """The relative error of C/A from symmetrising the rotor: up to half the difference
-        of the moments across (the moment about the vertical swings between them as the
-        rotor turns); the period's is about half that. None when symmetric."""
-        a = self.asymmetry
-        return None if a is None else max(0.5 * a.relative, a.coupling_relative)
-
-    def to_json(self) -> dict[str, Any]:
-        """The JSON of ``rbcli gyrocompass ... --json``, less ``file``."""
-        out: dict[str, Any] = {}
-        for k, v in self.swing.to_json().items():
-            out[k] = v
-            if k == "C_over_A":
-                out["Is_over_I"] = v
-        out["period_approx"] = self.swing.period_approx
-        if self.body is not None:
-            out["C"] = self.C
-            out["A"] = self.A
-            out["Is"] = self.C
-            out["I"] = self.A
-            out["mass"] = self.mass
-            out["axis"] = list(self.options.axis or ())
-            out["axis_source"] = self.options.axis_source
-            if self.asymmetry is not None:
-                out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
-            out["name"] = self.body.name
-        return jsonable(out)
-
-
-def run_gyrocompass(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
-    """The gyrocompass for parsed options."""
-    from rbcli.core import gyrocompass as core
-
-    o = options
-    C = A = mass = rotor = None
-    if o.ratio is not None:
-        r = o.ratio
-    else:
-        assert body is not None and o.axis is not None
-        from rbcli.core.inertia import body_mass_props
-
-        mp = body_mass_props(body)
-        try:
-            rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
-        except ValueError as exc:
-            raise InputError(f"{literal(exc)}; spin axis from {o.axis_source.template}",
-                             Location(body.source)) from None
-        C, A, mass = rotor.C, rotor.A, rotor.mass
-        r = C / A
-    try:
-        swing = core.gyrocompass(r, o.spin, o.latitude, o.earth_rate)
-    except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
-        who = ["{ratio}" if body is None else literal(body.source), "{spin}", "{earth_rate}"]
-        raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
-    warnings = o.warnings
-    if body is not None and rotor.asymmetry is not None:
-        warnings += (Note(f"{literal(body.source)}: warning: the rotor is not exactly symmetric about "
-                          f"its spin axis: {rotor.asymmetry.percent()}; the answer is for the "
-                          f"symmetrised rotor ({{symmetry_tol}} {o.symmetry_tol * 100:g} %)"),)
-    return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass,
-                             asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
-
-
-def gyrocompass(body: Body | None = None, *, ratio: Any = None, shaft: Any = None, spin: Any,
-                latitude: Any, earth_rate: Any = None, symmetry_tol: Any = None) -> GyrocompassResult:
-    """A gyrocompass: the period of its swing about north and where it settles.
-
-    A rotor spinning at ``spin`` about its axis, the axis held horizontal and free to turn
-    about the vertical, at ``latitude`` on the rotating Earth: ω0² = (C/A) S Ω_E cos λ -
-    Ω_E² cos² λ, period T = 2π/ω0 (undamped).
-
-    Parameters
-    ----------
-    body : Body, optional
-        A rotor symmetric about its spin axis (C and A about its centre of mass); or give
-        ``ratio`` instead.
-    ratio : float or str, optional
-        C/A, the axial moment over the moment about the vertical (a flat disk: 2).
-    shaft : str or sequence of 3, optional
-        The rotor's spin axis in the body frame (``"x"``, ``[0, 0, 1]``; the command line's
-        ``--axis``). Default: the body's shaft axis, else z.
-    spin : float or str
-        The rotor's spin: rad/s or ``"6000 rpm"``; negative the other way. Not 0.
-    latitude : float or str
-        Degrees (a number) or with a unit, -90 to 90; negative is south.
-    earth_rate : float or str, optional
-        Ω_E, rad/s or with a unit. Default 7.2921150e-5 (sidereal).
-    symmetry_tol : float or str, optional
-        How far from symmetric about its spin axis the body may be: a fraction or a
-        percentage (``"1 %"``), at most 10 %. Default 1 %. Within it, A is the mean of the
-        two moments across, with a warning and ``asymmetry`` in the JSON.
-
-    Returns
-    -------
-    GyrocompassResult
-        ``result.swing.period`` (s), ``result.swing.settles_to``, ``result.to_json()``.
-
-    Raises
-    ------
-    rbcli.InputError
-        With the command line's message: a value out of range, both or neither of ``body``
-        and ``ratio``, a body not symmetric about its spin axis.
-
-    Examples
-    --------
-    >>> import rbcli
-    >>> round(rbcli.gyrocompass(ratio=2, spin="6000 rpm", latitude=30).swing.period, 3)
-    22.304
-    """
-    return run_gyrocompass(body, GyrocompassOptions.parse(body, ratio=ratio, shaft=shaft, spin=spin,
-                                                          latitude=latitude, earth_rate=earth_rate,
-                                                          symmetry_tol=symmetry_tol))
+    body = check.body(body)
+    kw = check.arguments(KINDS, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
+                         phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
+                         duration=duration, samples=samples)
+    with check.arithmetic(kw):
+        return run(body, TopOptions.parse(body, **kw))

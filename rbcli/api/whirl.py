@@ -18,10 +18,12 @@ parameter names).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rbcli.api.result import Result
+from rbcli.api import check
+from rbcli.api.check import Point, Quantity, Values, Vector
 from rbcli.api.whirlresult import (  # noqa: F401
     API_RULE, AtSpeed,
     CONVENTIONS, Campbell, CriticalSpeed, Margins, MarginCheck, Mode, NoCrossing, PeakRow,
@@ -43,6 +45,17 @@ MAX_POINTS = 20001
 MAX_BEARINGS = 20
 #: the highest order asked for
 MAX_ORDER = 10
+
+#: the checker of each keyword argument of :func:`whirl` (:mod:`rbcli.api.check`)
+KINDS = {
+    "bearings": check.values(MAX_BEARINGS), "stiffness": check.values(MAX_BEARINGS),
+    "stiffness_y": check.values(MAX_BEARINGS), "cross_stiffness": check.values(MAX_BEARINGS),
+    "damping": check.values(MAX_BEARINGS), "damping_y": check.values(MAX_BEARINGS),
+    "speed_range": check.values(2), "points": check.count,
+    "orders": check.integers(10 * MAX_ORDER), "speed": check.values(2),
+    "unbalance": check.texts(1, MAX_BEARINGS), "unbalance_planes": check.values(MAX_BEARINGS),
+    "shaft": check.vector, "through": check.vector, "symmetry_tol": check.quantity,
+}
 
 
 def _opt(param: str) -> str:
@@ -99,10 +112,14 @@ class WhirlOptions:
     given: tuple[str, ...] = ()
 
     @classmethod
-    def parse(cls, body: Body, *, bearings=None, stiffness=None, stiffness_y=None,
-              cross_stiffness=None, damping=None, damping_y=None, speed_range=None,
-              points=None, orders=None, speed=None, unbalance=None, unbalance_planes=None,
-              shaft=None, through=None, symmetry_tol=None) -> WhirlOptions:
+    def parse(cls, body: Body, *, bearings: Values | None = None, stiffness: Values | None = None,
+              stiffness_y: Values | None = None, cross_stiffness: Values | None = None,
+              damping: Values | None = None, damping_y: Values | None = None,
+              speed_range: Values | None = None, points: int | str | None = None,
+              orders: int | str | Sequence[int] | None = None, speed: Values | None = None,
+              unbalance: str | Sequence[str] | None = None, unbalance_planes: Values | None = None,
+              shaft: Vector | None = None, through: Point | None = None,
+              symmetry_tol: Quantity | None = None) -> WhirlOptions:
         """Read the keyword arguments of :func:`whirl` (see there) for ``body``.
 
         Raises
@@ -225,8 +242,6 @@ def _check_bearings(zs: list[float]) -> None:
 def _per_bearing(u, value, param: str, kind: str, n: int, *, positive: bool | None) -> list[float]:
     """One value for every bearing, or one per bearing; positive (stiffness), >= 0
     (damping, positive=False) or any sign (positive=None)."""
-    from rbcli.api import options as op
-
     with _reading(param):
         vals = u.numbers(value, kind, _opt(param), counts=(1, n) if n > 1 else (1,))
     unit = "N/m" if kind == "stiffness" else "N s/m"
@@ -654,10 +669,14 @@ def _plausibility(body: Body, o: WhirlOptions, rotor) -> list[str]:
     return out
 
 
-def whirl(body: Body, *, bearings=None, stiffness=None, stiffness_y=None, cross_stiffness=None,
-          damping=None, damping_y=None, speed_range=None, points=None, orders=None, speed=None,
-          unbalance=None, unbalance_planes=None, shaft=None, through=None,
-          symmetry_tol=None) -> WhirlResult:
+def whirl(body: Body, *, bearings: Values | None = None, stiffness: Values | None = None,
+          stiffness_y: Values | None = None, cross_stiffness: Values | None = None,
+          damping: Values | None = None, damping_y: Values | None = None,
+          speed_range: Values | None = None, points: int | None = None,
+          orders: int | str | Sequence[int] | None = None, speed: Values | None = None,
+          unbalance: str | Sequence[str] | None = None, unbalance_planes: Values | None = None,
+          shaft: Vector | None = None, through: Point | None = None,
+          symmetry_tol: Quantity | None = None) -> WhirlResult:
     """The rigid rotor on linear bearings: Campbell diagram, critical speeds, stability,
     unbalance response and API separation margins.
 
@@ -710,6 +729,9 @@ def whirl(body: Body, *, bearings=None, stiffness=None, stiffness_y=None, cross_
 
     Raises
     ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
     rbcli.InputError
         A bad or missing value (``bearings: ...``), or a rotor the model does not fit.
 
@@ -721,8 +743,11 @@ def whirl(body: Body, *, bearings=None, stiffness=None, stiffness_y=None, cross_
     >>> [round(c.speed, 3) for c in r.critical_speeds]
     [200.0, 200.0, 206.559, 241.209]
     """
-    return run(body, WhirlOptions.parse(
-        body, bearings=bearings, stiffness=stiffness, stiffness_y=stiffness_y,
+    body = check.body(body)
+    kw = check.arguments(
+        KINDS, bearings=bearings, stiffness=stiffness, stiffness_y=stiffness_y,
         cross_stiffness=cross_stiffness, damping=damping, damping_y=damping_y,
         speed_range=speed_range, points=points, orders=orders, speed=speed, unbalance=unbalance,
-        unbalance_planes=unbalance_planes, shaft=shaft, through=through, symmetry_tol=symmetry_tol))
+        unbalance_planes=unbalance_planes, shaft=shaft, through=through, symmetry_tol=symmetry_tol)
+    with check.arithmetic(kw):
+        return run(body, WhirlOptions.parse(body, **kw))

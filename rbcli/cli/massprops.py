@@ -79,7 +79,7 @@ def inertia(
     from rbcli.render.units import DisplayUnits
 
     du = DisplayUnits.parse(units)
-    from rbcli.api import massprops as api
+    from rbcli.api import inertia as api
 
     api.InertiaOptions.parse(None, about=about, axis=axis, omega=omega)  # bad values: one line, before any body
     _run(bodies, expr, e, lambda body, many, first: _inertia_one(
@@ -123,12 +123,12 @@ def _run(bodies, expr, e, one) -> None:
 
 def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool,
                  first: bool = True) -> None:
-    from rbcli.api import massprops as api
+    from rbcli.api import inertia as api
     from rbcli.render import massprops as r
     from rbcli.render.units import echo_rows
 
     opts = api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega)
-    res = api.run_inertia(body, opts)
+    res = api.run(body, opts)
     for w in res.warnings:
         e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
     if out in ROBOT_FORMATS:
@@ -155,7 +155,7 @@ def principal(
     units: str = c.UnitsOpt,
 ) -> None:
     e, out, du = c.start(json_, fmt, units)
-    from rbcli.api import massprops as api
+    from rbcli.api import principal as api
 
     api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
     if plot is not None:
@@ -166,13 +166,13 @@ def principal(
 
 def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None = None,
                    first: bool = True) -> None:
-    from rbcli.api import massprops as api
+    from rbcli.api import principal as api
     from rbcli.render import massprops as r
     from rbcli.render.units import echo_rows
 
     plot_path = c.check_plot(plot, body) if plot is not None else None
     opts = api.PrincipalOptions.parse(body, about=about)
-    res = api.run_principal(body, opts)
+    res = api.run(body, opts)
     for w in res.warnings:
         e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
     if plot_path is not None:

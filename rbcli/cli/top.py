@@ -147,7 +147,7 @@ def gyrocompass(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    from rbcli.api import top as api
+    from rbcli.api import gyrocompass as api
     from rbcli.render import top as rt
     from rbcli.render.units import echo_rows
 
@@ -155,7 +155,7 @@ def gyrocompass(
     b = c.load_one(body, expr, e) if body is not None or expr is not None else None
     opts = api.GyrocompassOptions.parse(b, ratio=ratio, shaft=axis, spin=spin, latitude=latitude,
                                         earth_rate=earth_rate, symmetry_tol=symmetry_tol)
-    r = api.run_gyrocompass(b, opts)
+    r = api.run(b, opts)
     _warn(e, r)
     c.emit(e, out, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
            lambda doc: rt.gyro_document(doc, r, du, digits),

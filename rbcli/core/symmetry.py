@@ -35,7 +35,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli.errors import option_name
 
 #: departures below this are rounding: the body is symmetric and nothing is reported
 ROUND_OFF = 1e-6
@@ -235,7 +234,7 @@ def require(sym: AxialSymmetry, tolerance: float, subject: str, needs: str) -> N
     option that sets the tolerance.
     """
     tol = max(tolerance, ROUND_OFF)
-    opt = option_name("symmetry_tol")
+    opt = "{symmetry_tol}"  # the parameter, spelled by whoever shows the message (rbcli.errors.spell)
     allowed = f"{needs} needs them within {opt} ({_pct(tolerance)})"
     I1, I2 = sym.transverse
     # enough digits that the two moments print differently

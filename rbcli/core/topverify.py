@@ -133,7 +133,7 @@ def integrate(rhs, y0: np.ndarray, T: float, ts: np.ndarray, *, rtol: float, ato
             raise TooLong(
                 f"the numerical integration cannot finish in {limit} steps ({what}; it reached "
                 f"t = {solver.t:.4g} s): this motion is too long to check step by step; run "
-                "without --verify (the closed form is exact and does not need it)"
+                "without {verify} (the closed form is exact and does not need it)"
             )
         solver.step()
         steps += 1

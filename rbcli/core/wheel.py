@@ -43,13 +43,14 @@ def _positive(name: str, x: float) -> float:
 
 def blame(params: tuple[str, ...], message: str) -> Exception:
     """The error for bad values of the parameters ``params`` (the first one is ``param``):
-    a :class:`rbcli.errors.ParamError` for one, an InputError naming each option for more
-    (``--circle, --speed: ...``). Callers ``raise`` it."""
-    from rbcli.errors import InputError, ParamError, option_name
+    a :class:`rbcli.errors.ParamError` for one, an InputError naming each parameter for more
+    (``{circle}, {speed}: ...``: the Python API spells them as parameters, the command line
+    as options, :func:`rbcli.errors.spell`). Callers ``raise`` it."""
+    from rbcli.errors import InputError, ParamError
 
     if len(params) == 1:
         return ParamError(params[0], message)
-    return InputError(", ".join(option_name(p) for p in params) + ": " + message, param=params[0])
+    return InputError(", ".join("{%s}" % p for p in params) + ": " + message, param=params[0])
 
 
 def param_finite(param: str, what: str, x: float) -> float:
@@ -272,9 +273,7 @@ def _pct(x: float) -> str:
 def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, origin: bool) -> None:
     """Refuse a wheel beyond the tolerance: :class:`Asymmetric` with the numbers, in the
     order products, moments, com (the first that fails)."""
-    from rbcli.errors import option_name
-
-    opt = option_name("symmetry_tol")
+    opt = "{symmetry_tol}"  # the parameter, spelled by whoever shows the message (rbcli.errors.spell)
     tol_r, off_r = max(tol, ROUND_OFF), max(off_tol, ROUND_OFF)
     if sym.coupling_relative > tol_r:
         raise Asymmetric(

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from rbcli.core import rotation as rot
+from rbcli.errors import InputError
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 
@@ -260,6 +261,8 @@ def rotation(ctx: Any, node: ys.Node) -> tuple:
             return ("R", rot.from_matrix(np.array(mat)))
         except ValueError as exc:
             raise ctx.error(mat_node, f"rotation matrix: {exc}") from None
+    except InputError:  # already located (an InputError is a ValueError)
+        raise
     except ValueError as exc:  # a ValueError not already located
         raise ctx.error(m, str(exc)) from None
 

@@ -152,7 +152,7 @@ def check(
     if not parent.is_dir():
         raise InputError(f"{option}: '{literal(parent)}' is not a folder")
     if _kind(p, option) is not None and not (force or replace_ok):
-        raise InputError(f"{option}: '{literal(text)}' exists; use --force to replace it")
+        raise InputError(f"{option}: '{literal(text)}' exists; use {{force}} to replace it")
     return p
 
 
@@ -355,7 +355,7 @@ def _commit(tmp: str, path: str, option: str, replace: bool) -> None:
     try:
         rename_noreplace(tmp, path)
     except FileExistsError:
-        raise InputError(f"{option}: '{literal(path)}' exists; use --force to replace it") from None
+        raise InputError(f"{option}: '{literal(path)}' exists; use {{force}} to replace it") from None
 
 
 def _remove(tmp: str | None) -> None:
@@ -474,7 +474,7 @@ def check_folder(folder: str | Path, body_or_inputs: Body | Iterable[str] | None
     if not stat.S_ISDIR(st.st_mode):
         raise InputError(f"{option}: '{literal(text)}' (for the figures) exists and is not a folder")
     if not force:
-        raise InputError(f"{option}: '{literal(text)}' exists; use --force to replace it")
+        raise InputError(f"{option}: '{literal(text)}' exists; use {{force}} to replace it")
     try:
         entries = list(os.scandir(text))
     except OSError as exc:
@@ -535,7 +535,7 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
             os.chmod(stage, 0o777 & ~_umask())
             if os.path.lexists(folder):
                 if not replace:
-                    raise InputError(f"{option}: '{folder}' exists; use --force to replace it")
+                    raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it")
                 if os.path.islink(folder) or not os.path.isdir(folder):
                     raise InputError(f"{option}: '{folder}' (for the figures) is not a folder")
                 aside = _tmp_name(parent, ".old")
@@ -543,7 +543,7 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
             try:
                 rename_noreplace(stage, folder)
             except FileExistsError:
-                raise InputError(f"{option}: '{folder}' exists; use --force to replace it") from None
+                raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it") from None
             stage, placed = None, True
             _commit(doc_tmp, text, option, replace)
             doc_tmp = None

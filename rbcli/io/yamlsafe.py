@@ -747,6 +747,8 @@ def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> 
             filename,
             Mark(1, 1),
         ) from exc
+    except InputError:  # located already (an InputError is a ValueError)
+        raise
     except ValueError as exc:  # defensive: e.g. an encoding problem inside PyYAML
         raise _error(
             f"cannot read the file as YAML: {_one_line(exc)}", filename, Mark(1, 1)

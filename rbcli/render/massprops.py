@@ -1,7 +1,7 @@
 """Tables for ``inertia`` and ``principal`` (the JSON is the results' ``to_json()``).
 
-The functions take a result of :mod:`rbcli.api.massprops` (``InertiaResult``,
-``PrincipalResult``); the report also passes :mod:`rbcli.core` results, which have the
+The functions take a result of :mod:`rbcli.api.inertia` or :mod:`rbcli.api.principal`
+(``InertiaResult``, ``PrincipalResult``); the report also passes :mod:`rbcli.core` results, which have the
 same attributes.
 """
 

@@ -17,7 +17,8 @@ from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
-    from rbcli.api.top import GyrocompassResult, TopResult
+    from rbcli.api.gyrocompass import GyrocompassResult
+    from rbcli.api.top import TopResult
     from rbcli.core.toppath import TopState
 
 from rbcli.render.units import RPM  # noqa: E402

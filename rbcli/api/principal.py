@@ -1,0 +1,203 @@
+"""Principal moments and axes about a point: :func:`principal` (``rbcli principal``).
+
+::
+
+    import rbcli
+    p = rbcli.principal(rbcli.load("examples/square_lamina.yaml"))
+    p.moments, p.axes        # ascending, rows = unit axes in the body frame
+
+numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from rbcli.api import check
+from rbcli.api import options as o
+from rbcli.api.check import Point
+from rbcli.api.reference import Reference, inertia_at, part_rows, plausibility, snap, with_parts
+from rbcli.api.result import Result
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.model import Body
+
+__all__ = ["PrincipalOptions", "PrincipalResult", "run", "principal"]
+
+
+@dataclass(frozen=True)
+class PrincipalOptions:
+    """What :func:`principal` was asked, parsed once.
+
+    Attributes
+    ----------
+    reference : Reference — the point the moments are about (default the com)
+    given : tuple of str — ``("about",)`` when a point other than the com was given
+    warnings : tuple of str — a point far outside the body's scale
+    """
+
+    reference: Reference
+    given: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def about(self) -> str | tuple[float, float, float] | None:
+        """The point as given (see :attr:`InertiaOptions.about`)."""
+        return self.reference.as_given
+
+    @classmethod
+    def parse(cls, body: Body | None, *, about: Point | None = "com") -> PrincipalOptions:
+        """Read ``about`` (``"com"``, ``"origin"``, x, y, z: a bare number in the body's
+        length unit; None = the com)."""
+        ref = Reference.parse(body, about, default="com")
+        u = o.Units.of(body)
+        given = ("about",) if ref.point is not None and ref.param == "about" else ()  # com: the default
+        return cls(ref, given, plausibility(body, u, ref))
+
+
+@dataclass(frozen=True)
+class PrincipalResult(Result):
+    """Principal moments and axes about a point (``rbcli principal``).
+
+    Attributes
+    ----------
+    name : str — the body's name
+    mass : float — kg
+    reference : (3,) ndarray — m, the point the moments are about
+    reference_label : str — how tables name it
+    moments : (3,) ndarray — kg m², ascending
+    axes : (3, 3) ndarray — row i is the unit axis of ``moments[i]`` (body frame); a proper
+        rotation matrix taking body to principal coordinates
+    symmetry : str — ``"asymmetric"``, ``"symmetric"`` or ``"spherical"``
+    unique_axis : int or None — for ``"symmetric"``, the index (0 or 2) of the moment that
+        differs
+    free_axes : tuple of int — 0-based indices of the axes free to choose (equal moments)
+    stable : tuple of 3 bool — is free rotation about each axis stable (false for a neutral
+        axis: see ``stability``)
+    stability : tuple of 3 str — ``"stable"``, ``"unstable"`` or ``"neutral"`` per axis (neutral:
+        an axis of the equal pair of a symmetric body, about which the spin axis wanders)
+    direction_angles_deg : (3, 3) ndarray — degrees, principal axis i from body axis j
+    tilt_deg : (3,) ndarray — degrees, each principal axis from its nearest body axis line
+    tilt_axis : tuple of 3 str — that body axis, ``"x"``, ``"y"`` or ``"z"``
+    rotation_axis : (3,) ndarray — unit axis of the rotation taking the body axes to the
+        principal axes 1, 2, 3 in ascending order of the moments
+    rotation_angle_deg : float — its angle, degrees (~90° when the ascending order permutes
+        the body axes, however small the tilts)
+    equivalent_box : (3,) ndarray — m, sides along axes 1, 2, 3 of the uniform box with the
+        same mass and principal moments
+    equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same uniform ellipsoid
+    parts : tuple of dict — each part's contribution (see :func:`part_rows`)
+    warnings : tuple of str — none for this command
+    """
+
+    name: str
+    mass: float
+    reference: Any
+    reference_label: str
+    moments: Any
+    axes: Any
+    symmetry: str
+    unique_axis: int | None
+    free_axes: tuple[int, ...]
+    stable: tuple[bool, bool, bool]
+    direction_angles_deg: Any
+    rotation_axis: Any
+    rotation_angle_deg: float
+    equivalent_box: Any
+    equivalent_ellipsoid: Any
+    stability: tuple[str, str, str] = ("stable", "stable", "stable")
+    tilt_deg: Any = None
+    tilt_axis: tuple[str, str, str] = ("x", "y", "z")
+    parts: tuple[dict, ...] = ()
+    warnings: tuple[str, ...] = field(default=())
+
+    def to_json(self) -> dict[str, Any]:
+        """What ``rbcli principal BODY --json`` prints, less ``"file"`` (SI)."""
+        return with_parts({
+            "reference": self.reference,
+            "moments": self.moments,
+            "axes": snap(self.axes, scale=1.0, rtol=1e-15),
+            "symmetry": self.symmetry,
+            "stable": list(self.stable),
+            "mass": self.mass,
+            "free_axes": [i + 1 for i in self.free_axes],
+            "direction_angles_deg": self.direction_angles_deg,
+            "rotation_axis": self.rotation_axis,
+            "rotation_angle_deg": self.rotation_angle_deg,
+            "equivalent_box": self.equivalent_box,
+            "equivalent_ellipsoid": self.equivalent_ellipsoid,
+            "stability": list(self.stability),
+            "tilt_deg": self.tilt_deg,
+            "tilt_axis": list(self.tilt_axis),
+            "name": self.name,
+        }, self.parts)
+
+
+def run(body: Body, options: PrincipalOptions) -> PrincipalResult:
+    """:func:`principal` with options already parsed."""
+    from rbcli.core.inertia import body_mass_props
+    from rbcli.core.principal import principal_report
+
+    mp = body_mass_props(body)
+    point, J = inertia_at(mp, options.reference)
+    pr = principal_report(mp.mass, J, point)
+    pa = pr.axes_info
+    rows = part_rows(body)
+    return PrincipalResult(
+        name=body.name, mass=pr.mass, reference=pr.reference,
+        reference_label=options.reference.label, moments=pa.moments, axes=pa.axes,
+        symmetry=pa.symmetry, unique_axis=pa.unique_axis, free_axes=tuple(pa.free_axes),
+        stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
+        rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
+        equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
+        stability=pr.stability, tilt_deg=pr.tilt_deg, tilt_axis=tuple("xyz"[j] for j in pr.tilt_axis),
+        parts=rows, warnings=options.warnings)
+
+
+def principal(body: Body, *, about: Point | None = "com") -> PrincipalResult:
+    """Principal moments and axes, symmetry, stability of free rotation and the equivalent
+    uniform box and ellipsoid.
+
+    Parameters
+    ----------
+    body : rbcli.Body
+    about : str or sequence of 3
+        ``"com"`` (default), ``"origin"``, or x, y, z in m (or ``"10,0,5 mm"``).
+
+    Returns
+    -------
+    PrincipalResult
+        Moments ascending; ``axes`` rows are the unit axes, a right-handed set;
+        ``to_json()`` is what ``rbcli principal BODY --json`` prints, less ``"file"``.
+
+    Raises
+    ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
+    rbcli.InputError
+        A bad ``about`` (``about: ...``), or a point so far away that the inertia
+        overflows.
+
+    Notes
+    -----
+    Free rotation about the axes of the largest and smallest moment is stable, about the
+    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37); about an axis of the
+    equal pair of a symmetric body neutral (``stability``; ``stable`` false). ``tilt_deg``
+    is each axis's angle from its nearest body axis (``tilt_axis``): the headline of a
+    body whose principal axes are near its body axes.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> p = rbcli.principal(rbcli.load("examples/square_lamina.yaml"), about="origin")
+    >>> [round(float(m), 6) for m in p.moments]                # m a²/12, 7 m a²/12, 2 m a²/3
+    [0.083333, 0.583333, 0.666667]
+    >>> p.symmetry
+    'asymmetric'
+    """
+    body = check.body(body)
+    kw = {"about": check.vector(about, "about")}
+    with check.arithmetic(kw):
+        return run(body, PrincipalOptions.parse(body, **kw))
