@@ -822,19 +822,26 @@ def test_lean_for_round_trip_property(v, RG, Ak, CA):
     assert radius_for(w, a, v, c.lean, g).radius == pytest.approx(RG, rel=tol)
 
 
+def _cli(exc):
+    """The message as the command line prints it (parameters spelled as its options)."""
+    from rbcli.errors import option_name
+
+    return exc.spelled(option_name)
+
+
 def test_errors_name_their_parameters():
     """Core errors carry the parameter (no caller reads the message to find the option)."""
     w = thin_disk(0.05)
     st_ = straight(w, 0.05)
     with pytest.raises(InputError) as e:
         at_speed(st_, v=1.0, spin=1.0)
-    assert e.value.param == "speed" and str(e.value).startswith("--speed, --spin: ")
+    assert e.value.param == "speed" and _cli(e.value).startswith("--speed, --spin: ")
     with pytest.raises(InputError) as e:
         rollcheck(w, 0.05, spin=20.0, circle_radius=0.0)
-    assert e.value.param == "circle" and str(e.value).startswith("--circle, --spin: no lean")
+    assert e.value.param == "circle" and _cli(e.value).startswith("--circle, --spin: no lean")
     with pytest.raises(InputError) as e:
         rollcheck(w, 0.05, speed=1.0, lean_rad=0.0)
-    assert e.value.param == "lean" and str(e.value).startswith("--lean, --speed: an upright")
+    assert e.value.param == "lean" and _cli(e.value).startswith("--lean, --speed: an upright")
     with pytest.raises(InputError) as e:
         straight(w, 0.05, 0.06)
     assert e.value.param == "tyre_radius"
@@ -847,7 +854,7 @@ def test_a_speed_too_small_for_its_circle_is_refused_by_name(v):
     w = thin_disk(0.05)
     with pytest.raises(InputError) as e:
         rollcheck(w, 0.05, speed=v, circle_radius=1.0)
-    assert e.value.param == "circle" and str(e.value).startswith("--circle, --speed: the speed ")
+    assert e.value.param == "circle" and _cli(e.value).startswith("--circle, --speed: the speed ")
     assert "too small" in str(e.value)
     # a small speed whose lean is still a float is solved
     c = lean_for(w, 0.05, 1e-100, 1.0)

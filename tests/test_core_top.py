@@ -444,10 +444,10 @@ def test_asymmetric_body_is_refused_with_how_asymmetric():
     Icom = np.diag([1.2e-3 - M * L * L, 1.5e-3 - M * L * L, 4e-4])
     with pytest.raises(ValueError) as err:
         top_from_body(M, [0, 0, L], Icom, [0, 0, 0])
-    msg = str(err.value)
+    msg = str(err.value)  # the parameter as a template the caller spells ({symmetry_tol})
     assert not isinstance(err.value, PivotAtCom)
     assert "not symmetric" in msg
-    assert "1.2e-3" in msg and "1.5e-3" in msg and "22 %" in msg and "--symmetry-tol" in msg
+    assert "1.2e-3" in msg and "1.5e-3" in msg and "22 %" in msg and "{symmetry_tol}" in msg
 
 
 def test_tolerance_of_symmetry_is_honoured():

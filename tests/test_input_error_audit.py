@@ -32,6 +32,7 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("api/balance.py", "_positions"): (1, "int() of the value"),
     ("api/fieldjobs.py", "parse"): (1, "int(group)"),
+    ("api/load.py", "_units"): (1, "io.body.default_units: plain ValueErrors (it turns UnitError into one)"),
     ("api/precess.py", "_count"): (1, "int() of the text"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),
     ("api/top.py", "series"): (1, "int(samples)"),
@@ -58,6 +59,7 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("interrupts.py", "install"): (2, "signal.getsignal, signal.signal"),
     ("interrupts.py", "restore"): (1, "signal.signal"),
     ("io/body.py", "_body_defaults"): (1, "core.inertia.combine: plain ValueErrors"),
+    ("io/body.py", "_load"): (1, "default_units: plain ValueErrors (it turns UnitError into one)"),
     ("io/body.py", "_realpath"): (1, "os.stat, os.lstat"),
     ("io/fields.py", "rotation"): (2, "core.rotation's euler_intrinsic, from_matrix: plain ValueErrors"),
     ("io/meshfile.py", "read_mesh"): (1, "max_mesh_bytes: plain ValueErrors"),

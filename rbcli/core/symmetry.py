@@ -140,7 +140,8 @@ class AxialSymmetry:
 
 class Asymmetric(ValueError):
     """The body departs from symmetry about the axis by more than the tolerance; the
-    message gives the numbers and names ``--symmetry-tol``.
+    message gives the numbers and names the tolerance as ``{symmetry_tol}`` (a template the
+    caller spells: the API's parameter, the command line's ``--symmetry-tol``).
 
     Attributes
     ----------
