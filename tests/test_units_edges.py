@@ -56,6 +56,60 @@ def test_table_echoes_the_options_with_units(cli):
     assert "options" not in d and d["dynamics"]["speed"] == pytest.approx(100 * math.pi)
 
 
+def _row(out: str, option: str) -> list[str]:
+    line = next(x for x in out.splitlines() if x.startswith(option + " "))
+    return [c.strip() for c in line.split("|")]
+
+
+@pytest.mark.parametrize("args, option, value, unit", [
+    # issue 24.5: a value is echoed in the unit typed, whatever the body's units
+    (("--mass-step", "0.5 g"), "--mass-step", "0.5", "g"),
+    (("--mass-step", "2 oz"), "--mass-step", "2", "oz"),
+    (("--speed", "314.159265358979 rad/s"), "--speed", "314.159 (3000 rpm)", "rad/s"),
+    (("--radius", "7.08661 in"), "--radius", "7.08661", "in"),
+    (("--planes", "-5,5 cm"), "--planes", "-5, 5", "cm"),
+    # a bare number: the body's unit (mm, g, rpm)
+    (("--mass-step", "0.5"), "--mass-step", "0.5", "g"),
+    (("--speed", "3000"), "--speed", "3000 (314.159 rad/s)", "rpm"),
+])
+def test_the_echo_is_in_the_unit_typed(cli, args, option, value, unit):
+    base = {"--radius": "180", "--planes": "-50,50", "--speed": "3000"}
+    base[args[0]] = args[1]
+    argv = [x for kv in base.items() for x in kv]
+    if args[0] == "--mass-step":
+        argv += list(args)
+    r = cli("balance", ROTOR, *argv)
+    assert r.code == 0, r.err
+    assert _row(r.out, option)[1:] == [value, unit]
+
+
+def test_the_echo_in_a_typed_unit_is_the_value_read():
+    # the same numbers reach the computation whichever unit the echo shows
+    body = rbcli.load(ROTOR)
+    a = rbcli.balance(body, radius="180", planes="-50,50", mass_step="0.5 g")
+    b = rbcli.balance(body, radius="18 cm", planes="-5,5 cm", mass_step="0.0005 kg")
+    assert a.to_json() == b.to_json()
+    from rbcli.api.balance import BalanceOptions
+
+    oa = BalanceOptions.parse(body, radius="180", planes="-50,50", mass_step="0.5 g")
+    ob = BalanceOptions.parse(body, radius="18 cm", planes="-5,5 cm", mass_step="0.0005 kg")
+    assert dict(oa.typed) == {"mass_step": "g"}
+    assert dict(ob.typed) == {"radius": "cm", "planes": "cm", "mass_step": "kg"}
+
+
+@pytest.mark.parametrize("args, says", [
+    (("--radius", "-180"), "--radius: the correction radius must be a positive number, got -180 mm"),
+    (("--radius", "-0.18 m"), "--radius: the correction radius must be a positive number, got -180 mm"),
+    (("--speed", "-3"), "must be a positive number, got -3 rpm"),
+    (("--mass-step", "0"), "--mass-step: the mass step must be a positive number, got 0 g"),
+])
+def test_errors_quote_the_value_with_its_unit(cli, args, says):
+    base = {"--radius": "180", "--planes": "-50,50"}
+    base[args[0]] = args[1]
+    r = cli("balance", ROTOR, *[x for kv in base.items() for x in kv])
+    assert r.code == 2 and says in r.err, r.err
+
+
 def _rotor_by_hand():
     """The rotor's corrections from its two point masses (the disk and shaft are centred):
     u_A + u_B = -U, z_A u_A + z_B u_B = -P, with U = Σ m r and P = Σ m r z (g·mm)."""

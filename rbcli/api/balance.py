@@ -121,6 +121,8 @@ class BalanceOptions:
     grade: float | None = None
     tolerance_planes: str = "bearings"
     given: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
@@ -157,10 +159,10 @@ class BalanceOptions:
                                 "planes", "correction planes") if planes is not None else None)
         r_opt = None
         if radius is not None:
-            r_opt = [op.positive(x, "radius", "the correction radius")
+            r_opt = [u.check_positive(x, "length", "radius", "the correction radius")
                      for x in u.numbers(radius, "length", "radius", counts=(1, 2))]
-        m_step = (op.positive(u.quantity(mass_step, "mass", "mass_step"), "mass_step",
-                              "the mass step") if mass_step is not None else None)
+        m_step = (u.positive(mass_step, "mass", "mass_step", "the mass step")
+                  if mass_step is not None else None)
         a_step = None
         if angle_step is not None:
             a_step = op.degrees(angle_step, "angle_step")
@@ -168,13 +170,12 @@ class BalanceOptions:
                 raise InputError(f"{{angle_step}}: must be more than 0 and at most 360 degrees, got "
                                  f"{angle_step}", param="angle_step")
         n_pos = _positions(positions)
-        W = (op.positive(u.quantity(speed, "angular_speed", "speed"), "speed",
-                         "the speed (to turn the other way, reverse {shaft})")
+        W = (u.positive(speed, "angular_speed", "speed",
+                        "the speed (to turn the other way, reverse {shaft})")
              if speed is not None else None)
         z_bear = (op.distinct(u.numbers(bearings, "length", "bearings", counts=(2,)),
                               "bearings", "bearings") if bearings is not None else None)
-        gv = (op.positive(u.quantity(g, "acceleration", "g"), "g", "gravity")
-              if g is not None else None)
+        gv = u.positive(g, "acceleration", "g", "gravity") if g is not None else None
         G = op.grade(grade) if grade is not None else None
         # --- which options need which
         if z_planes is None:
@@ -238,7 +239,7 @@ class BalanceOptions:
             mass_step=m_step, mass_step_text=None if mass_step is None else _as_text(mass_step),
             angle_step=a_step, positions=n_pos, speed=W, bearings=z_bear,
             g=STANDARD_GRAVITY if gv is None else gv, grade=G,
-            tolerance_planes=t_planes, given=given)
+            tolerance_planes=t_planes, given=given, typed=tuple(u.typed.items()))
 
 
 def _plausibility(body: Body, o: BalanceOptions, P: Any) -> list[str]:

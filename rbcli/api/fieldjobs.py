@@ -74,16 +74,16 @@ def parse(cls: type, *, initial, trial, run, cumulative, trial_radius, radius, j
     omega = None
     if speed is not None:
         with op.naming("speed"):
-            omega = op.positive(op.quantity(speed, "angular_speed", "speed"), "speed", "the speed")
+            omega = op.positive(op.quantity(speed, "angular_speed", "speed"), "speed", "the speed", "rad/s")
     step_m = None
     if mass_step is not None:
         with op.naming("mass_step"):
             step_m = op.positive(op.quantity(mass_step, "mass", "mass_step", bare="kg"), "mass_step",
-                                 "the mass step")
+                                 "the mass step", "kg")
     step_a = None
     if angle_step is not None:
         with op.naming("angle_step"):
-            step_a = op.positive(op.degrees(angle_step, "angle_step"), "angle_step", "the angle step")
+            step_a = op.positive(op.degrees(angle_step, "angle_step"), "angle_step", "the angle step", "deg")
         if step_a > 360.0:
             raise ParamError("angle_step", "must not exceed 360 degrees")
     npos = None
@@ -157,10 +157,10 @@ def _from_options(*, initial, trial, run, cumulative, trial_radius, radius, meth
     if trial_radius is not None:
         with op.naming("trial_radius"):
             rt = op.positive(op.quantity(trial_radius, "length", "trial_radius"), "trial_radius",
-                             "the trial radius")
+                             "the trial radius", "m")
     if radius is not None:
         with op.naming("radius"):
-            rc = op.positive(op.quantity(radius, "length", "radius"), "radius", "the correction radius")
+            rc = op.positive(op.quantity(radius, "length", "radius"), "radius", "the correction radius", "m")
     runs = [fr.readings(r, "run", n, what="one per sensor, as {initial} has") for r in runs_t]
     with op.naming("trial"):
         trials = [fr.trial(t, "trial") for t in trials_t]
@@ -498,7 +498,7 @@ def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any
         if bearing_load is not None:
             with op.naming("bearing_load"):
                 F = op.positive(op.quantity(bearing_load, "force", "bearing_load"), "bearing_load",
-                                "the bearing load")
+                                "the bearing load", "N")
         else:
             F = jr.bearing_load
         loads = [(F, "the static bearing load given")] * p
@@ -508,7 +508,7 @@ def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any
         if rotor_mass is not None:
             with op.naming("rotor_mass"):
                 mass = op.positive(op.quantity(rotor_mass, "mass", "rotor_mass", bare="kg"),
-                                   "rotor_mass", "the rotor's mass")
+                                   "rotor_mass", "the rotor's mass", "kg")
         elif rotor is not None or (jr is not None and jr.body is not None):
             from rbcli.core.inertia import body_mass_props
             from rbcli.io.body import load_body

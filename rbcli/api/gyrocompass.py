@@ -64,6 +64,8 @@ class GyrocompassOptions:
     symmetry_tol: float = 0.01
     axis_as_given: tuple[float, float, float] | None = None
     given: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
@@ -104,7 +106,7 @@ class GyrocompassOptions:
             if n_axis is not None:
                 raise ParamError("shaft", "the spin axis belongs to a body; with {ratio} there is no body")
             return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
-                       symmetry_tol=tol, given=given)
+                       symmetry_tol=tol, given=given, typed=tuple(u.typed.items()))
         if body is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
         if n_axis is not None:
@@ -119,7 +121,8 @@ class GyrocompassOptions:
         unit = tuple(float(x) for x in v / np.linalg.norm(v))
         return cls(ratio=None, axis=unit, axis_source=Note(src), spin=S, latitude=lat,  # type: ignore[arg-type]
                    earth_rate=W, symmetry_tol=tol, axis_as_given=None if n_axis is None else tuple(n_axis),
-                   given=given, warnings=plausibility(body, u, None, S, "spin", axis=unit))
+                   given=given, typed=tuple(u.typed.items()),
+                   warnings=plausibility(body, u, None, S, "spin", axis=unit))
 
 
 @dataclass(frozen=True)

@@ -53,6 +53,8 @@ class InertiaOptions:
     omega: tuple[float, float, float] | None = None
     given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
 
     @property
     def about(self) -> str | tuple[float, float, float] | None:
@@ -75,7 +77,7 @@ class InertiaOptions:
         n = tuple(o.direction(axis, "axis")) if axis is not None else None
         w = tuple(u.vector(omega, "angular_speed", "omega")) if omega is not None else None
         given = tuple(p for p, v in (("about", about), ("axis", axis), ("omega", omega)) if v is not None)
-        return cls(ref, n, w, given, plausibility(body, u, ref, w))  # type: ignore[arg-type]
+        return cls(ref, n, w, given, plausibility(body, u, ref, w), tuple(u.typed.items()))  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True)

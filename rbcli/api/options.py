@@ -171,10 +171,11 @@ def finite(x: float, option: str) -> float:
     return x
 
 
-def positive(x: float, option: str, what: str) -> float:
-    """``x`` if it is a positive finite number, else an InputError saying ``what`` it is."""
+def positive(x: float, option: str, what: str, unit: str = "") -> float:
+    """``x`` if it is a positive finite number, else an InputError saying ``what`` it is
+    and the value with its ``unit`` (``x`` is in it: SI for a value read in SI)."""
     if not (x > 0.0 and math.isfinite(x)):
-        raise _error(option, f"{what} must be a positive number, got {x:.6g}")
+        raise _error(option, f"{what} must be a positive number, got {x:.6g}{' ' + unit if unit else ''}")
     return x
 
 
@@ -286,11 +287,19 @@ class Units:
         ``{"length": "mm", "mass": "g"}``.
     """
 
-    __slots__ = ("base", "_cache")
+    __slots__ = ("base", "_cache", "typed")
 
     def __init__(self, base: Any = None) -> None:
         self.base = dict(base or {})
         self._cache: dict[str, str | None] = {}
+        #: parameter -> the unit the caller typed after its (last) number, for the options
+        #: table to echo the value in it (``"0.5 g"`` shown as 0.5 g, not 0.0005 kg)
+        self.typed: dict[str, str] = {}
+
+    def _typed(self, value: Value, option: str) -> None:
+        unit = typed_unit(value)
+        if unit:
+            self.typed[param(option)] = unit
 
     @classmethod
     def of(cls, body: Any) -> "Units":
@@ -324,17 +333,6 @@ class Units:
             return _g(float(si) / f)
         return ", ".join(_g(float(x) / f) for x in (si.tolist() if hasattr(si, "tolist") else si))
 
-    def echo(self, option: str, si: Any, kind: str) -> tuple[str, str, str]:
-        """Transitional, for rollcheck only until its options table moves to render
-        (:meth:`rbcli.render.units.BodyUnits.echo` is the one to use)."""
-        value, unit = self.show(si, kind), self.label(kind)
-        if kind == "angular_speed":
-            vals = [float(si)] if _is_number(si) else [float(x) for x in si]
-            other = "rad/s" if unit == "rpm" else "rpm"
-            per = 1.0 if other == "rad/s" else math.pi / 30.0
-            value += f" ({', '.join(_g(v / per) for v in vals)} {other})"
-        return option, value, unit
-
     def far(self, option: str, what: str, distance: float, size: float) -> str:
         """The one-line plausibility warning for a point or radius ``distance`` m away
         while the body is ``size`` m across (lengths quoted in the bare unit)."""
@@ -348,26 +346,56 @@ class Units:
         angle: degrees)."""
         if _is_number(value) and kind != "angle":
             return finite(float(value), option)
-        return quantity(value, kind, option, bare=self.bare(kind))
+        x = quantity(value, kind, option, bare=self.bare(kind))
+        self._typed(value, option)
+        return x
+
+    def positive(self, value: Value, kind: str, option: str, what: str) -> float:
+        """:meth:`quantity`, which must be positive; the message quotes the value read in
+        the bare unit of ``kind`` (``got -180 mm``)."""
+        return self.check_positive(self.quantity(value, kind, option), kind, option, what)
+
+    def check_positive(self, x: float, kind: str, option: str, what: str) -> float:
+        """``x`` (SI) if positive and finite, else the error quoting it in the bare unit."""
+        if not (x > 0.0 and math.isfinite(x)):
+            raise _error(option, f"{what} must be a positive number, got {self.show(x, kind)} "
+                                 f"{self.label(kind)}")
+        return x
 
     def numbers(self, value: Value, kind: str, option: str, *,
                 counts: tuple[int, ...] = (3,)) -> list[float]:
         """:func:`numbers` with this body's bare unit (a Python sequence of numbers is SI)."""
         if _is_number(value) or _is_sequence_of_numbers(value):
             return numbers(value, kind, option, counts=counts)
-        return numbers(value, kind, option, counts=counts, bare=self.bare(kind))
+        vals = numbers(value, kind, option, counts=counts, bare=self.bare(kind))
+        self._typed(value, option)
+        return vals
 
     def vector(self, value: Value, kind: str, option: str, n: int = 3) -> list[float]:
         """:func:`vector` with this body's bare unit."""
         if _is_sequence_of_numbers(value):
             return vector(value, kind, option, n)
-        return vector(value, kind, option, n, bare=self.bare(kind))
+        vals = vector(value, kind, option, n, bare=self.bare(kind))
+        self._typed(value, option)
+        return vals
 
     def point(self, value: Value, option: str) -> str | list[float]:
         """:func:`point` (``com``, ``origin`` or x,y,z) with this body's bare length unit."""
         if isinstance(value, str) and value.strip() in ("com", "origin"):
             return value.strip()
         return self.vector(value, "length", option)
+
+
+def typed_unit(value: Any) -> str | None:
+    """The unit typed after the last number of a quantity string (``"0.5 g"`` -> ``"g"``,
+    ``"-50,50 mm"`` -> ``"mm"``, ``"3000rpm"`` -> ``"rpm"``); None for a bare number, a
+    Python number or anything else."""
+    if not isinstance(value, str):
+        return None
+    last = value.rsplit(",", 1)[-1].strip()
+    m = NUMBER.match(last)
+    unit = last[m.end():].strip() if m else ""
+    return unit or None
 
 
 def _g(x: float) -> str:

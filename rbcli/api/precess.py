@@ -97,6 +97,8 @@ class PrecessOptions:
     samples: int | None = None
     verify: bool = False
     given: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
@@ -128,7 +130,8 @@ class PrecessOptions:
                               f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
                               f"{u.label('angular_speed')}: is a unit missing?"),)
         return cls(omega=(float(w[0]), float(w[1]), float(w[2])), at=t_at, duration=span,
-                   samples=n_rows, verify=bool(verify), given=given, warnings=warns)
+                   samples=n_rows, verify=bool(verify), given=given,
+                   typed=tuple(u.typed.items()), warnings=warns)
 
 
 @dataclass(frozen=True, eq=False)

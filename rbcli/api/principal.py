@@ -40,6 +40,8 @@ class PrincipalOptions:
     reference: Reference
     given: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
 
     @property
     def about(self) -> str | tuple[float, float, float] | None:
@@ -53,7 +55,7 @@ class PrincipalOptions:
         ref = Reference.parse(body, about, default="com")
         u = o.Units.of(body)
         given = ("about",) if ref.point is not None and ref.param == "about" else ()  # com: the default
-        return cls(ref, given, plausibility(body, u, ref))
+        return cls(ref, given, plausibility(body, u, ref), tuple(u.typed.items()))
 
 
 @dataclass(frozen=True)

@@ -212,8 +212,8 @@ class ReportOptions:
         # the options the report names differently from rollcheck (shaft for axle, rim_radius
         # for radius), read under the report's names
         axle = op.direction(shaft, "shaft") if shaft is not None else None
-        rim = (op.positive(op.Units.of(body).quantity(rim_radius, "length", "rim_radius"),
-                           "rim_radius", "the rim radius") if rim_radius is not None else None)
+        rim = (op.Units.of(body).positive(rim_radius, "length", "rim_radius", "the rim radius")
+               if rim_radius is not None else None)
 
         # balance
         b_opts, b_err = _section_parse(lambda: BalanceOptions.parse(

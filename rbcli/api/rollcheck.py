@@ -135,6 +135,8 @@ class RollcheckOptions:
     shaft_as_given: tuple[float, float, float] | None = None
     through_as_given: Any = None
     given: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
 
     @property
     def straight_asked(self) -> bool:
@@ -172,13 +174,12 @@ class RollcheckOptions:
         u = o.Units.of(body)
         n_axle = o.direction(shaft, "shaft") if shaft is not None else None
         p_through = u.point(through, "through") if through is not None else None
-        a_opt = (o.positive(u.quantity(rim_radius, "length", "rim_radius"), "rim_radius",
-                            "the rim radius") if rim_radius is not None else None)
+        a_opt = (u.positive(rim_radius, "length", "rim_radius", "the rim radius")
+                 if rim_radius is not None else None)
         r = u.quantity(tyre_radius, "length", "tyre_radius") if tyre_radius is not None else 0.0
         if not (r >= 0.0 and math.isfinite(r)):
             raise ParamError("tyre_radius", f"must be 0 (knife edge) or a positive length, got {tyre_radius}")
-        gv = (o.positive(u.quantity(g, "acceleration", "g"), "g", "gravity")
-              if g is not None else STANDARD_GRAVITY)
+        gv = u.positive(g, "acceleration", "g", "gravity") if g is not None else STANDARD_GRAVITY
         v = (o.finite(u.quantity(rolling_speed, "speed", "rolling_speed"), "rolling_speed")
              if rolling_speed is not None else None)
         s = o.finite(u.quantity(spin, "angular_speed", "spin"), "spin") if spin is not None else None
@@ -241,7 +242,7 @@ class RollcheckOptions:
                    lean=beta, circle=R_G, rim=rim, warnings=warns, symmetry_tol=tol,
                    shaft_as_given=None if n_axle is None else tuple(n_axle),
                    through_as_given=p_through if p_through is None or isinstance(p_through, str)
-                   else tuple(p_through), given=given)
+                   else tuple(p_through), given=given, typed=tuple(u.typed.items()))
 
 
 def _plausibility(body: Body, u, a_opt, p_through, R_G, v, s, a) -> tuple[str, ...]:

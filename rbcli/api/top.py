@@ -95,6 +95,8 @@ class TopOptions:
     duration: float | None = None
     samples: int = DEFAULT_SAMPLES
     given: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
     warnings: tuple[str, ...] = ()
 
     @classmethod
@@ -142,7 +144,8 @@ class TopOptions:
         return cls(spin=S, theta=th, theta_dot=thd, phi_dot=phd, g=gv, pivot=P, pivot_source=label,
                    pivot_given=p_opt is not None, verify=bool(verify), symmetry_tol=tol,
                    pivot_as_given=p_opt if isinstance(p_opt, str) or p_opt is None else tuple(p_opt),
-                   duration=span, samples=rows, given=given, warnings=warns)
+                   duration=span, samples=rows, given=given, typed=tuple(u.typed.items()),
+                   warnings=warns)
 
     @property
     def released(self) -> bool:

@@ -110,6 +110,8 @@ class WhirlOptions:
     through_source: str
     symmetry_tol: float
     given: tuple[str, ...] = ()
+    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
+    typed: tuple[tuple[str, str], ...] = ()
 
     @classmethod
     def parse(cls, body: Body, *, bearings: Values | None = None, stiffness: Values | None = None,
@@ -213,6 +215,7 @@ class WhirlOptions:
                 ("speed_range", speed_range), ("points", points), ("orders", orders), ("speed", speed),
                 ("unbalance", unbalance), ("unbalance_planes", unbalance_planes), ("shaft", shaft),
                 ("through", through), ("symmetry_tol", symmetry_tol)) if v is not None),
+            typed=tuple(u.typed.items()),
         )
 
 
@@ -602,7 +605,7 @@ def _run(body: Body, o: WhirlOptions) -> WhirlResult:
         no_crossings=missing_rows, stability=stability, response=response, margins=margins,
         warnings=tuple(warnings), units=dict(getattr(body, "units", None) or {}),
         source=str(getattr(body, "source", "")), points=o.points, isotropic=rotor.isotropic,
-        given=o.given)
+        given=o.given, typed=o.typed)
 
 
 def dataclass_replace(obj, **kw):

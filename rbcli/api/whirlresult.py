@@ -358,6 +358,7 @@ class WhirlResult(Result):
     points: int = _hidden(default=0)
     isotropic: bool = _hidden(default=True)
     given: tuple[str, ...] = _hidden(default=())
+    typed: tuple[tuple[str, str], ...] = _hidden(default=())
 
     @property
     def return_code(self) -> int:

@@ -181,20 +181,23 @@ class BodyUnits:
 
         return label(self.base, kind)
 
-    def show(self, si: Any, kind: str) -> str:
-        """An SI value (or a sequence) as numbers in the bare unit of ``kind``, 6 digits."""
+    def show(self, si: Any, kind: str, unit: tuple[float, str] | None = None) -> str:
+        """An SI value (or a sequence) as numbers in the bare unit of ``kind`` (or in
+        ``unit``, (SI per unit, name)), 6 digits."""
         from rbcli.io.bare import factor
 
-        f = factor(self.base, kind)
+        f = unit[0] if unit else factor(self.base, kind)
         vals = si.tolist() if hasattr(si, "tolist") else si
         if isinstance(vals, (list, tuple)):
             return ", ".join(_g(float(x) / f) for x in vals)
         return _g(float(vals) / f)
 
-    def echo(self, param: str, si: Any, kind: str) -> tuple[str, str, str]:
-        """One row (option, value, unit) of the "options" table; an angular speed also in
-        rpm (or in rad/s when the bare unit is rpm)."""
-        value, unit = self.show(si, kind), self.label(kind)
+    def echo(self, param: str, si: Any, kind: str, typed: str | None = None) -> tuple[str, str, str]:
+        """One row (option, value, unit) of the "options" table: the value in the unit the
+        caller typed (``typed``, e.g. ``"g"`` for ``--mass-step "0.5 g"``), else in the bare
+        unit of ``kind``; an angular speed also in rpm (or in rad/s when shown in rpm)."""
+        shown = _typed(typed, kind)
+        value, unit = self.show(si, kind, shown), shown[1] if shown else self.label(kind)
         if kind == "angular_speed":
             vals = si.tolist() if hasattr(si, "tolist") else si
             vals = [float(x) for x in vals] if isinstance(vals, (list, tuple)) else [float(vals)]
@@ -202,6 +205,19 @@ class BodyUnits:
             per = 1.0 if other == "rad/s" else 1.0 / RPM
             value += f" ({', '.join(_g(v / per) for v in vals)} {other})"
         return option_name(param), value, unit
+
+
+def _typed(typed: str | None, kind: str) -> tuple[float, str] | None:
+    """(SI per unit, its name) of the unit a caller typed for a value of ``kind``; None when
+    nothing was typed or it is not a unit of ``kind`` (the value then shows in the bare unit)."""
+    if not typed:
+        return None
+    from rbcli.io import units as un
+
+    try:
+        return un.to_si(f"1 {typed}", kind), un.canonical_unit(typed)
+    except un.UnitError:
+        return None
 
 
 def echo_rows(options: Any, body: Any, spec: Iterable[tuple[str, str, str]]) -> tuple[tuple[str, str, str], ...]:
@@ -217,6 +233,7 @@ def echo_rows(options: Any, body: Any, spec: Iterable[tuple[str, str, str]]) -> 
     bu = BodyUnits.of(body)
     rows = []
     given = set(options.given)
+    typed = dict(getattr(options, "typed", ()))
     for param, attr, how in spec:
         if param not in given:
             continue
@@ -227,7 +244,7 @@ def echo_rows(options: Any, body: Any, spec: Iterable[tuple[str, str, str]]) -> 
         if how == "direction":
             rows.append((opt, bu.show(v, "dimensionless"), "direction"))
         elif how == "point":
-            rows.append((opt, v, "") if isinstance(v, str) else bu.echo(param, v, "length"))
+            rows.append((opt, v, "") if isinstance(v, str) else bu.echo(param, v, "length", typed.get(param)))
         elif how == "deg":
             rows.append((opt, f"{v:.6g}", "deg"))
         elif how == "count":
@@ -239,5 +256,5 @@ def echo_rows(options: Any, body: Any, spec: Iterable[tuple[str, str, str]]) -> 
         elif how.startswith("="):  # a plain number in the unit after "="
             rows.append((opt, f"{v:.6g}", how[1:]))
         else:
-            rows.append(bu.echo(param, v, how))
+            rows.append(bu.echo(param, v, how, typed.get(param)))
     return tuple(rows)

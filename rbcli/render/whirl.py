@@ -58,9 +58,10 @@ def echo_rows(res: WhirlResult) -> list[tuple[str, str, str]]:
 
     bu = BodyUnits(res.units)
     given = set(res.given)
+    typed = dict(res.typed)
     rows = []
     if "bearings" in given:
-        rows.append(bu.echo("bearings", [b.plane for b in res.bearings], "length"))
+        rows.append(bu.echo("bearings", [b.plane for b in res.bearings], "length", typed.get("bearings")))
     kx = [b.stiffness[0] for b in res.bearings]
     ky = [b.stiffness[1] for b in res.bearings]
     if "stiffness" in given:
@@ -75,7 +76,7 @@ def echo_rows(res: WhirlResult) -> list[tuple[str, str, str]]:
     if "damping_y" in given:
         rows.append((option_name("damping_y"), _values([b.damping[1] for b in res.bearings]), "N s/m"))
     a, b = res.speed_range
-    opt, val, unit = bu.echo("speed_range", [a, b], "angular_speed")
+    opt, val, unit = bu.echo("speed_range", [a, b], "angular_speed", typed.get("speed_range"))
     rows.append((opt, val + ("" if "speed_range" in given else " (default)"), unit))
     if "points" in given:
         rows.append((option_name("points"), str(res.points), ""))
@@ -83,17 +84,19 @@ def echo_rows(res: WhirlResult) -> list[tuple[str, str, str]]:
         rows.append((option_name("orders"), ", ".join(str(n) for n in res.orders), "× speed"))
     if "speed" in given and res.speed is not None:
         lo, hi = res.speed
-        rows.append(bu.echo("speed", lo if lo == hi else [lo, hi], "angular_speed"))
+        rows.append(bu.echo("speed", lo if lo == hi else [lo, hi], "angular_speed", typed.get("speed")))
     if "unbalance" in given:
         rows.append((option_name("unbalance"), ", ".join(
             f"{num(u.amount * 1e6)}@{num(u.angle_deg)}" for u in res.response.unbalance), "g·mm@deg"))
     if "unbalance_planes" in given:
-        rows.append(bu.echo("unbalance_planes", [u.plane for u in res.response.unbalance], "length"))
+        rows.append(bu.echo("unbalance_planes", [u.plane for u in res.response.unbalance], "length",
+                            typed.get("unbalance_planes")))
     if "shaft" in given:
         rows.append((option_name("shaft"), bu.show(res.shaft, "dimensionless"), "direction"))
     if "through" in given:
         t = res.through
-        rows.append((option_name("through"), t, "") if isinstance(t, str) else bu.echo("through", t, "length"))
+        rows.append((option_name("through"), t, "") if isinstance(t, str) else bu.echo("through", t, "length",
+                                                                                  typed.get("through")))
     if "symmetry_tol" in given:
         rows.append((option_name("symmetry_tol"), num(100.0 * res.symmetry_tol, 3), "%"))
     return rows
