@@ -161,14 +161,14 @@ def jsonable(obj: Any) -> Any:
         return obj
     if t is dict or t is list or t is tuple:
         return _container(obj)
+    if hasattr(obj, "tolist"):  # numpy arrays and scalars
+        return jsonable(obj.tolist())
     if hasattr(obj, "to_json"):
         return jsonable(obj.to_json())
     from collections.abc import Mapping
 
     if isinstance(obj, (Mapping, list, tuple)):
         return _container(obj)
-    if hasattr(obj, "tolist"):  # numpy arrays and scalars
-        return jsonable(obj.tolist())
     if isinstance(obj, (bool, str, int)):  # subclasses (a Note is a str: kept as it is)
         return obj
     if isinstance(obj, float):
@@ -181,20 +181,22 @@ def _container(obj: Any) -> Any:
     the key or index of a number that is not finite."""
     if isinstance(obj, (list, tuple)):
         out_list = []
-        for i, v in enumerate(obj):
-            try:
+        i = 0
+        try:
+            for i, v in enumerate(obj):
                 out_list.append(jsonable(v))
-            except _NonFinite as exc:
-                exc.path.insert(0, i)
-                raise
+        except _NonFinite as exc:
+            exc.path.insert(0, i)
+            raise
         return out_list
     out = {}
-    for k, v in obj.items():
-        try:
+    k = ""
+    try:
+        for k, v in obj.items():
             out[str(k)] = jsonable(v)
-        except _NonFinite as exc:
-            exc.path.insert(0, str(k))
-            raise
+    except _NonFinite as exc:
+        exc.path.insert(0, str(k))
+        raise
     return out
 
 
