@@ -126,12 +126,17 @@ def spelled_data(data: object, name: Callable[[str], str]) -> object:
     ``spelled_data(r.to_json(), option_name)`` is what the command's ``--json`` prints. The
     rows under ``parts`` are passed over (no text of rbcli's in them)."""
     if isinstance(data, dict):
-        return {k: v if k == "parts" else spelled_data(v, name) for k, v in data.items()}
+        return {k: v if k == "parts" or not isinstance(v, _SPELLED) else spelled_data(v, name)
+                for k, v in data.items()}
     if isinstance(data, list):
-        return [spelled_data(v, name) for v in data]
+        return [spelled_data(v, name) if isinstance(v, _SPELLED) else v for v in data]
     if isinstance(data, Note):
         return data.spelled(name)
     return data
+
+
+#: what :func:`spelled_data` looks into (a number is passed over without a call)
+_SPELLED = (dict, list, Note)
 
 
 def _clean(text: str) -> str:
