@@ -2,7 +2,7 @@
 
 Expected scalar values come from the YAML 1.2.2 spec, §10.3.2 (core schema tag
 resolution); expected line/column numbers are counted by hand from the test texts.
-Every test runs twice: with libyaml's CSafeLoader and with the pure-Python
+Every test runs twice: with libyaml's parser (CParser) and with the pure-Python
 SafeLoader the module falls back to when PyYAML lacks libyaml.
 """
 
@@ -34,7 +34,7 @@ from rbcli.io.yamlsafe import (
 
 LOADERS = [yaml.SafeLoader]
 if yaml.__with_libyaml__:
-    LOADERS.insert(0, yaml.CSafeLoader)
+    LOADERS.insert(0, yaml.cyaml.CParser)  # what yamlsafe uses: libyaml's parser alone
 
 
 @pytest.fixture(autouse=True, params=LOADERS, ids=lambda c: c.__name__)

@@ -54,9 +54,10 @@ MAX_DEPTH = 64
 
 _MAX_DIGITS = 300  # integers longer than this are refused ("number too long")
 
-# libyaml's loader when PyYAML was built with it; the pure-Python one otherwise.
+# libyaml's parser when PyYAML was built with it (only its events are read: no constructor
+# or resolver is made); the pure-Python loader otherwise.
 _LOADER: type = (
-    yaml.CSafeLoader if getattr(yaml, "__with_libyaml__", False) else yaml.SafeLoader
+    yaml.cyaml.CParser if getattr(yaml, "__with_libyaml__", False) else yaml.SafeLoader
 )
 
 _EMPTY = "the file is empty; a body needs `parts:` or a single part"
@@ -526,6 +527,11 @@ _ALIAS = yaml.AliasEvent
 _new_tuple = tuple.__new__
 _new_object = object.__new__
 
+#: plain keys found to be names (:func:`_check_plain_key` depends on the text alone), kept
+#: across files: a batch of body files repeats the same few keys; emptied past the maximum
+_GOOD_KEYS: set[str] = set()
+_GOOD_KEYS_MAX = 4096
+
 
 def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
     """Build the node tree from libyaml's (iterative) event stream in one pass.
@@ -547,7 +553,9 @@ def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
     in_map = False  # whether ``items`` is a mapping's
     key: str | None = None  # the key awaiting its value (None: the mapping awaits a key)
     key_mark: Mark | None = None
-    good_keys: set[str] = set()  # plain keys already found to be names
+    good_keys = _GOOD_KEYS  # plain keys already found to be names
+    if len(good_keys) > _GOOD_KEYS_MAX:
+        good_keys.clear()
     documents = 0
     max_depth = MAX_DEPTH
     new_tuple = _new_tuple
@@ -727,7 +735,7 @@ def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> 
     Notes
     -----
     Steps: size limit, UTF-8 decoding, then one pass over libyaml's event stream
-    (``CSafeLoader``'s parser, which is iterative) that refuses anchors, aliases,
+    (libyaml's ``CParser``, which is iterative) that refuses anchors, aliases,
     tags, deep nesting and extra documents as their events arrive and builds the
     tree, resolving plain scalars by the YAML 1.2 core schema. PyYAML's composer
     (recursive in C, and resolving by YAML 1.1) is never used.
