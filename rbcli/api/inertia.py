@@ -185,6 +185,10 @@ def run(body: Body, options: InertiaOptions) -> InertiaResult:
         raise ParamError(options.reference.param if exc.param == "reference" else exc.param,
                          str(exc)) from None
     rows = part_rows(body)
+    for a in (res.com, res.reference, res.inertia, res.inertia_com, res.axis, res.omega,
+              res.angular_momentum):  # made for this result alone: read-only, not copied again
+        if a is not None:
+            a.setflags(write=False)
     return InertiaResult(
         name=body.name, mass=res.mass, com=res.com, reference=res.reference,
         reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,

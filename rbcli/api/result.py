@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from types import MappingProxyType
 from typing import Any
 
 from rbcli.errors import ExitStatus, NonFiniteResult
@@ -113,8 +114,6 @@ def frozen(value: Any, _depth: int = 0) -> Any:
             value = value.copy()
             value.setflags(write=False)
         return value
-    from types import MappingProxyType
-
     if t is dict:
         return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
     if t is list:
@@ -129,13 +128,21 @@ def frozen(value: Any, _depth: int = 0) -> Any:
 
 def freeze_fields(obj: Any, _depth: int = 0) -> None:
     """Replace each field of the dataclass instance ``obj`` by :func:`frozen` of it."""
-    import dataclasses
+    names = _FIELD_NAMES.get(obj.__class__)
+    if names is None:
+        import dataclasses
 
-    for f in dataclasses.fields(obj):
-        v = getattr(obj, f.name)
+        names = _FIELD_NAMES[obj.__class__] = tuple(f.name for f in dataclasses.fields(obj))
+    for name in names:
+        v = getattr(obj, name)
         fv = frozen(v, _depth)
         if fv is not v:
-            object.__setattr__(obj, f.name, fv)
+            object.__setattr__(obj, name, fv)
+
+
+#: the field names of each dataclass :func:`freeze_fields` has seen (a class's fields are
+#: fixed when it is made)
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
 
 
 def jsonable(obj: Any) -> Any:
@@ -159,7 +166,7 @@ def jsonable(obj: Any) -> Any:
         return 0.0 if obj == 0.0 else obj
     if t is str or t is int or t is bool or obj is None:
         return obj
-    if t is dict or t is list or t is tuple:
+    if t is dict or t is list or t is tuple or t is MappingProxyType:  # (a frozen dict)
         return _container(obj)
     if hasattr(obj, "tolist"):  # numpy arrays and scalars
         return jsonable(obj.tolist())
@@ -182,9 +189,14 @@ def _container(obj: Any) -> Any:
     if isinstance(obj, (list, tuple)):
         out_list = []
         i = 0
+        isfinite = math.isfinite
         try:
             for i, v in enumerate(obj):
-                out_list.append(jsonable(v))
+                # jsonable(v) of a float, inline (most items are): -0.0 as 0.0
+                if v.__class__ is float and isfinite(v):
+                    out_list.append(v if v != 0.0 else 0.0)
+                else:
+                    out_list.append(jsonable(v))
         except _NonFinite as exc:
             exc.path.insert(0, i)
             raise
