@@ -245,8 +245,9 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     puts in a Doc, as text. All refuse inf and NaN (one line, exit 2):
     :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
     printed is built. ``given`` (option, value, unit) rows are the options as understood
-    (an XOptions' ``given``): the text output shows them first (after the title), in a table
-    titled "options" (JSON and CSV stay as they are). ``plain``: ``data_fn()`` returns
+    (an XOptions' ``given``), or a function that makes them (called only for a table): the
+    text output shows them first (after the title), in a table titled "options" (JSON and
+    CSV stay as they are). ``plain``: ``data_fn()`` returns
     jsonable's result already (a result's ``to_json()``), not converted again."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
     if fmt in ("json", "csv"):
@@ -270,6 +271,8 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
 
     doc = Doc(e)
     doc_fn(doc)
+    if callable(given):
+        given = given()
     if given:
         from rbcli.render.text import Heading
 

@@ -139,7 +139,7 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
         return
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
-           file=body.source if many else None, given=echo_rows(opts, body, r.INERTIA_OPTIONS),
+           file=body.source if many else None, given=lambda: echo_rows(opts, body, r.INERTIA_OPTIONS),
            plain=True, header=first)
 
 
@@ -184,7 +184,7 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
         c.save_plot(fig, plot_path)
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
-           file=body.source if many else None, given=echo_rows(opts, body, r.PRINCIPAL_OPTIONS),
+           file=body.source if many else None, given=lambda: echo_rows(opts, body, r.PRINCIPAL_OPTIONS),
            plain=True, header=first)
 
 
