@@ -454,8 +454,11 @@ _EYE.setflags(write=False)
 
 def unit_rows(v: np.ndarray) -> np.ndarray:
     """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
-    w = v / np.abs(v).max(axis=1)[:, None]
+    w = v / _row_max(np.abs(v), axis=1)[:, None]
     return w / np.sqrt(np.vecdot(w, w))[:, None]
+
+
+_row_max = np.maximum.reduce  # ndarray.max's own reduction, without its Python wrapper
 
 
 def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
@@ -498,12 +501,13 @@ def _tilted_rows(d: np.ndarray, cross: np.ndarray) -> np.ndarray:
     ``1 − cos θ`` with the same correctly rounded operations as its floats (``s² / (1 + c)``
     for c > 0, which keeps digits near +z, else ``1 − c``)."""
     n = unit_rows(cross)
-    c = d[:, 2]
     hypot = math.hypot
-    s = np.array([hypot(x, y) for x, y in d[:, :2].tolist()], dtype=float).reshape(-1)
-    with np.errstate(divide="ignore", invalid="ignore"):  # 1 + c = 0: that row takes 1 - c
-        one_minus_c = np.where(c > 0, s * s / (1.0 + c), 1.0 - c)
-    return _rodrigues_rows(n, c, s, one_minus_c)
+    s_list = [hypot(x, y) for x, y, _ in d.tolist()]
+    # the same correctly rounded operations on the same floats as one_minus_c of axis_to_z
+    one_minus_c = [si * si / (1.0 + c) if c > 0 else 1.0 - c
+                   for si, c in zip(s_list, d[:, 2].tolist())]
+    return _rodrigues_rows(n, d[:, 2], np.array(s_list, dtype=float).reshape(-1),
+                           np.array(one_minus_c, dtype=float).reshape(-1))
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
