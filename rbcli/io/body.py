@@ -30,6 +30,7 @@ from rbcli.io import fields as fl
 from rbcli.io import includes as inc
 from rbcli.io import parts as pt
 from rbcli.io import units as un
+from rbcli.io import yamlplain
 from rbcli.io import yamlsafe as ys
 from rbcli.io.givenpart import pretty_unit
 from rbcli.io.loadctx import Ctx, Session, new_session
@@ -104,7 +105,10 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
     :mod:`rbcli.io.bodydata`)."""
     session = session if session is not None else new_session(_load)
     if root is None:
-        root = ys.load(data, filename, list_cap=session.list_cap(filename))
+        cap = session.list_cap(filename)
+        root = yamlplain.tree(data, cap)  # the plainest files; None: libyaml's loader reads it
+        if root is None:
+            root = ys.load(data, filename, list_cap=cap)
     ctx = Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
     spent = session.used
     if units:  # the caller's default units (rbcli.load_text(..., units=...)); the file's win

@@ -40,6 +40,8 @@ __all__ = [
     "ScalarNode",
     "SeqNode",
     "load",
+    "max_bytes",
+    "plain_value",
     "to_python",
     "where",
 ]
@@ -453,6 +455,12 @@ def _resolve_plain(raw: str, filename: str, mark: Mark) -> str | int | float | b
     if _NAN.fullmatch(raw):
         return float("nan")
     return raw
+
+
+def plain_value(raw: str) -> str | int | float | bool | None:
+    """The value of the plain scalar ``raw`` by the YAML 1.2 core schema, as :func:`load`
+    gives it (an integer of more than 300 digits raises an InputError located at 1:1)."""
+    return _resolve_plain(raw, "", Mark(1, 1))
 
 
 _KIND = {type(None): "null", bool: "a boolean", int: "a number", float: "a number"}
