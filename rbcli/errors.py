@@ -129,7 +129,10 @@ def spelled_data(data: object, name: Callable[[str], str]) -> object:
         return {k: v if k == "parts" or not isinstance(v, _SPELLED) else spelled_data(v, name)
                 for k, v in data.items()}
     if isinstance(data, list):
-        return [spelled_data(v, name) if isinstance(v, _SPELLED) else v for v in data]
+        for v in data:
+            if isinstance(v, _SPELLED):
+                return [spelled_data(v, name) if isinstance(v, _SPELLED) else v for v in data]
+        return data  # numbers and plain strings only: nothing to spell
     if isinstance(data, Note):
         return data.spelled(name)
     return data

@@ -195,6 +195,8 @@ def _container(obj: Any) -> Any:
                 # jsonable(v) of a float, inline (most items are): -0.0 as 0.0
                 if v.__class__ is float and isfinite(v):
                     out_list.append(v if v != 0.0 else 0.0)
+                elif v.__class__ is list:  # a row of a matrix
+                    out_list.append(_container(v))
                 else:
                     out_list.append(jsonable(v))
         except _NonFinite as exc:

@@ -11,7 +11,7 @@ from typing import Any
 
 import typer
 
-from rbcli.errors import ExitStatus, InputError
+from rbcli.errors import ExitStatus, InputError, option_name, spelled_data
 
 BODY_HELP = "Body file(s) (YAML); '-' reads standard input."
 EXPR_HELP = "Inline YAML body, e.g. -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'."
@@ -59,8 +59,6 @@ def said(x: object) -> str:
 def said_json(data: Any) -> Any:
     """A JSON document with its warnings and remarks (:class:`rbcli.errors.Note`) spelled as
     the command line says them (the API's ``to_json()`` names parameters, ``--json`` options)."""
-    from rbcli.errors import option_name, spelled_data
-
     return spelled_data(data, option_name)
 
 

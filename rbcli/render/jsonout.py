@@ -15,6 +15,8 @@ from __future__ import annotations
 import json
 from typing import Any
 
+from rbcli.render.safe import json_escape
+
 __all__ = ["dumps"]
 
 #: the encoder of JSON Lines, and of one-line values inside the indented document
@@ -30,8 +32,6 @@ def dumps(data: Any, *, lines: bool = False) -> str:
     scalar, a list of scalars or of such lists, an empty mapping) is on one line as
     ``json.dumps(v, ensure_ascii=False, separators=(", ", ": "))`` writes it.
     """
-    from rbcli.render.safe import json_escape
-
     if lines:
         return json_escape(_LINE.encode(data)) + "\n"
     return json_escape(_pretty(data, 0)) + "\n"
