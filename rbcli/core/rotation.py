@@ -461,63 +461,63 @@ def unit_rows(v: np.ndarray) -> np.ndarray:
 _row_max = np.maximum.reduce  # ndarray.max's own reduction, without its Python wrapper
 
 
-def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
-    # [n]x of each row (negation is exact: the same numbers as the entries set one by one
-    # in a zero array)
-    x, y, z = n[:, 0], n[:, 1], n[:, 2]
-    cross = np.zeros((len(n), 3, 3))
-    cross[:, 0, 1] = -z
-    cross[:, 0, 2] = y
-    cross[:, 1, 0] = z
-    cross[:, 1, 2] = -x
-    cross[:, 2, 0] = -y
-    cross[:, 2, 1] = x
-    return (c[:, None, None] * _EYE + s[:, None, None] * cross
-            + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
+def _rodrigues_row(n: list, c: float, s: float, one_minus_c: float) -> list:
+    """:func:`_rodrigues` of one unit axis ``n`` (3 floats), entry by entry in Python floats:
+    ``c I + s [n]x`` then ``+ (1 - c) (n_i n_j)``, the same correctly rounded operations in
+    the same order as the single version's arrays (elementwise: no BLAS call to match)."""
+    x, y, z = n
+    return [c * 1.0 + s * 0.0 + one_minus_c * (x * x), c * 0.0 + s * -z + one_minus_c * (x * y),
+            c * 0.0 + s * y + one_minus_c * (x * z),
+            c * 0.0 + s * z + one_minus_c * (y * x), c * 1.0 + s * 0.0 + one_minus_c * (y * y),
+            c * 0.0 + s * -x + one_minus_c * (y * z),
+            c * 0.0 + s * -y + one_minus_c * (z * x), c * 0.0 + s * x + one_minus_c * (z * y),
+            c * 1.0 + s * 0.0 + one_minus_c * (z * z)]
+
+
+def _stack(rows: list) -> np.ndarray:
+    """The (k, 3, 3) array of ``k`` rotations given as 9 floats each (row-major)."""
+    a = np.fromiter(itertools.chain.from_iterable(rows), dtype=float, count=9 * len(rows))
+    a.shape = (len(rows), 3, 3)
+    return a
+
+
+#: :func:`axis_to_z` of a direction exactly along +z and exactly along -z, as 9 floats
+_ALONG_PLUS_Z = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+_ALONG_MINUS_Z = [1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0]
 
 
 def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
-    """:func:`axis_to_z` of each row of ``directions`` (k, 3)."""
-    d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
-    # z × d of each row, and whether it is zero (d exactly along +z or -z)
-    cross = np.zeros((len(d), 3))
-    cross[:, 0] = -d[:, 1]
-    cross[:, 1] = d[:, 0]
-    along = (d[:, 0] == 0.0) & (d[:, 1] == 0.0)
-    if not along.any():  # the common case: the same operations on all rows, unindexed
-        return _tilted_rows(d, cross)
-    out = np.empty((len(d), 3, 3))
-    out[along] = _EYE
-    out[along & (d[:, 2] <= 0)] = np.diag([1.0, -1.0, -1.0])
-    ok = ~along
-    if ok.any():
-        out[ok] = _tilted_rows(d[ok], cross[ok])
-    return out
+    """:func:`axis_to_z` of each row of ``directions`` (k, 3).
 
-
-def _tilted_rows(d: np.ndarray, cross: np.ndarray) -> np.ndarray:
-    """:func:`axis_to_z_rows` of unit rows ``d`` (k, 3) none along z; ``cross`` (k, 3)
-    is each row's ``z × d``. ``sin θ`` by :func:`math.hypot` per row, as :func:`axis_to_z`;
-    ``1 − cos θ`` with the same correctly rounded operations as its floats (``s² / (1 + c)``
-    for c > 0, which keeps digits near +z, else ``1 − c``)."""
-    n = unit_rows(cross)
+    The unit vectors by :func:`unit_rows` (the dot products of the single version's
+    ``_unit``), the rest per row in Python floats as :func:`axis_to_z` computes it: ``sin θ``
+    by :func:`math.hypot`, ``1 − cos θ`` as ``s² / (1 + c)`` for c > 0 (which keeps digits
+    near +z), else ``1 − c``, and Rodrigues' formula (:func:`_rodrigues_row`)."""
+    d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3)).tolist()
+    # z × d of the rows not exactly along ±z, made unit
+    crosses = [[-y, x, 0.0] for x, y, _ in d if x != 0.0 or y != 0.0]
+    axes = iter(unit_rows(np.array(crosses, dtype=float).reshape(-1, 3)).tolist() if crosses else ())
     hypot = math.hypot
-    s_list = [hypot(x, y) for x, y, _ in d.tolist()]
-    # the same correctly rounded operations on the same floats as one_minus_c of axis_to_z
-    one_minus_c = [si * si / (1.0 + c) if c > 0 else 1.0 - c
-                   for si, c in zip(s_list, d[:, 2].tolist())]
-    return _rodrigues_rows(n, d[:, 2], np.array(s_list, dtype=float).reshape(-1),
-                           np.array(one_minus_c, dtype=float).reshape(-1))
+    out = []
+    for x, y, c in d:
+        if x == 0.0 and y == 0.0:
+            out.append(_ALONG_PLUS_Z if c > 0 else _ALONG_MINUS_Z)
+            continue
+        s = hypot(x, y)
+        out.append(_rodrigues_row(next(axes), c, s, s * s / (1.0 + c) if c > 0 else 1.0 - c))
+    return _stack(out)
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
     """:func:`axis_angle` of each row of ``axes`` (k, 3) with its angle (k,)."""
-    n = unit_rows(np.asarray(axes, dtype=float).reshape(-1, 3))
+    n = unit_rows(np.asarray(axes, dtype=float).reshape(-1, 3)).tolist()
     theta = np.asarray(angles_rad, dtype=float).reshape(-1).tolist()
-    half = np.array([math.sin(t / 2.0) for t in theta]).reshape(-1)
-    c = np.array([math.cos(t) for t in theta]).reshape(-1)
-    s = np.array([math.sin(t) for t in theta]).reshape(-1)
-    return _rodrigues_rows(n, c, s, 2.0 * half * half)
+    sin, cos = math.sin, math.cos
+    out = []
+    for axis, t in zip(n, theta):
+        half = sin(t / 2.0)
+        out.append(_rodrigues_row(axis, cos(t), sin(t), 2.0 * half * half))
+    return _stack(out)
 
 
 def _elementary_rows(axis: str, angles: list[float]) -> np.ndarray:
