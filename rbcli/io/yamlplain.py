@@ -113,7 +113,7 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
                 return None
             m = key_match(rest)
             if m is None:
-                node = _value(rest, number, col)
+                node = _scalar(rest, number, col) if rest[0] not in "[{" else _value(rest, number, col)
                 if node is None:
                     return None
                 seq.append(node)
@@ -146,14 +146,15 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
                 elif not (frame.is_map and frame.pending is None and frame.indent == indent):
                     return None
             col = indent
-        key, value = m.group(1), m.group(2)
+        key, value = m.groups()
         if key in frame.items or key in _WORDS:
             return None
         key_mark = _new_tuple(Mark, (number + 1, col + 1))
         if not value:
             frame.pending, frame.pending_mark = key, key_mark
             continue
-        node = _value(value, number, col + m.start(2))
+        at = col + m.start(2)
+        node = _scalar(value, number, at) if value[0] not in "[{" else _value(value, number, at)
         if node is None:
             return None
         frame.items[key] = (key_mark, node)
