@@ -207,7 +207,8 @@ def _container(obj: Any) -> Any:
     k = ""
     try:
         for k, v in obj.items():
-            out[str(k)] = jsonable(v)
+            # names and texts as they are (jsonable's first case after floats)
+            out[k if k.__class__ is str else str(k)] = v if v.__class__ is str else jsonable(v)
     except _NonFinite as exc:
         exc.path.insert(0, str(k))
         raise

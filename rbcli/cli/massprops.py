@@ -36,6 +36,13 @@ INERTIA_FORMAT_HELP = (
     "precision; the frame is stated in a comment).")
 
 
+def _echo(opts, body, spec):
+    """The options table's rows (rbcli.render.units.echo_rows), for a table only."""
+    from rbcli.render.units import echo_rows
+
+    return echo_rows(opts, body, spec)
+
+
 def with_file(data: dict, source: str) -> dict:
     """A result's JSON with ``"file"`` after ``"name"``, as the command prints it."""
     out = {}
@@ -125,7 +132,6 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
                  first: bool = True) -> None:
     from rbcli.api import inertia as api
     from rbcli.render import massprops as r
-    from rbcli.render.units import echo_rows
 
     opts = api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega)
     res = api.run(body, opts)
@@ -139,7 +145,7 @@ def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products
         return
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
-           file=body.source if many else None, given=lambda: echo_rows(opts, body, r.INERTIA_OPTIONS),
+           file=body.source if many else None, given=lambda: _echo(opts, body, r.INERTIA_OPTIONS),
            plain=True, header=first)
 
 
@@ -168,7 +174,6 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
                    first: bool = True) -> None:
     from rbcli.api import principal as api
     from rbcli.render import massprops as r
-    from rbcli.render.units import echo_rows
 
     plot_path = c.check_plot(plot, body) if plot is not None else None
     opts = api.PrincipalOptions.parse(body, about=about)
@@ -184,7 +189,7 @@ def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None
         c.save_plot(fig, plot_path)
     c.emit(e, out, lambda: with_file(res.to_json(), body.source),
            lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
-           file=body.source if many else None, given=lambda: echo_rows(opts, body, r.PRINCIPAL_OPTIONS),
+           file=body.source if many else None, given=lambda: _echo(opts, body, r.PRINCIPAL_OPTIONS),
            plain=True, header=first)
 
 

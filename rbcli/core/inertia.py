@@ -227,12 +227,14 @@ def tensor_problem(J: np.ndarray, rtol: float = 1e-9, *, unit: str = "kg·m²",
     followed by ``unit`` (e.g. ``factor=1e-9, unit="g·mm²"`` for a file in g and mm).
     """
     J = np.asarray(J, dtype=float)
-    if J.shape != (3, 3) or not np.all(np.isfinite(J)):
+    rows = J.tolist() if J.shape == (3, 3) else None
+    if rows is None or not all(math.isfinite(x) for row in rows for x in row):
         return "it must be a 3x3 matrix of finite numbers"
-    scale = float(np.max(np.abs(J)))
+    # the largest magnitudes of J and of J - Jᵀ, in Python floats (nine numbers each)
+    scale = max(abs(x) for row in rows for x in row)
     if scale == 0.0:
         return None
-    asym = float(np.max(np.abs(J - J.T)))
+    asym = max(abs(rows[i][j] - rows[j][i]) for i in range(3) for j in range(3))
     if asym > rtol * scale:
         return f"it is not symmetric (|J − Jᵀ| = {asym / factor:.3g} {unit})"
     w = np.linalg.eigvalsh(0.5 * (J + J.T))

@@ -102,6 +102,10 @@ def _os_reason(exc: OSError) -> str:
     return f"cannot read the file: {(exc.strerror or str(exc)).lower()}"
 
 
+#: how a file is opened for reading: never blocking (a FIFO), never a controlling terminal
+_READ_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
+
+
 def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
                  where: Location | None = None, env: str | None = None) -> bytes:
     """The bytes of the regular file ``path``, at most ``limit`` of them.
@@ -124,7 +128,7 @@ def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
     name = os.fspath(path)
     if "\x00" in name:
         raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
+    flags = _READ_FLAGS
     try:
         st = os.stat(name)  # refuse a FIFO or device before opening it at all
         reason = _kind(st.st_mode)
