@@ -35,7 +35,7 @@ EMPTY_MAPPING: MappingProxyType = MappingProxyType({})
 def _frozen(a, dtype=_FLOAT) -> np.ndarray:
     """``a`` as a read-only array: itself when it is one already (its data cannot change:
     no writable array shares it), else a private read-only copy."""
-    if a.__class__ is np.ndarray and not a.flags.writeable and a.dtype == dtype:
+    if a.__class__ is np.ndarray and (a.dtype is dtype or a.dtype == dtype) and not a.flags.writeable:
         base = a
         while base.base is not None and base.base.__class__ is np.ndarray:
             base = base.base

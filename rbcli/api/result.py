@@ -169,7 +169,8 @@ def jsonable(obj: Any) -> Any:
     if t is dict or t is list or t is tuple or t is MappingProxyType:  # (a frozen dict)
         return _container(obj)
     if hasattr(obj, "tolist"):  # numpy arrays and scalars
-        return jsonable(obj.tolist())
+        value = obj.tolist()
+        return _container(value) if value.__class__ is list else jsonable(value)
     if hasattr(obj, "to_json"):
         return jsonable(obj.to_json())
     from collections.abc import Mapping

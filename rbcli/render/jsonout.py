@@ -19,9 +19,10 @@ from rbcli.render.safe import json_escape
 
 __all__ = ["dumps"]
 
-#: the encoder of JSON Lines, and of one-line values inside the indented document
-_LINE = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"))
-_FLAT = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(", ", ": "))
+#: the encoder of JSON Lines, and of one-line values inside the indented document (no
+#: check for circular references: the data is a tree, made by jsonable or a to_json())
+_LINE = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"), check_circular=False)
+_FLAT = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(", ", ": "), check_circular=False)
 
 
 def dumps(data: Any, *, lines: bool = False) -> str:
