@@ -55,11 +55,13 @@ _EYE.setflags(write=False)
 def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
     """Parallel-axis term ``m (d·d E − d dᵀ)`` (kg m^2) for an offset ``d`` (m)."""
     d = np.asarray(d, dtype=float)
-    return mass * (float(d @ d) * _EYE - np.outer(d, d))
+    return mass * (float(d @ d) * _EYE - d[:, None] * d[None, :])  # d dᵀ: np.outer's products
 
 
 #: parts summed per step of :func:`combine`
 _CHUNK = 4096
+#: ndarray.sum's own reduction (pairwise summation), without its Python wrapper
+_sum = np.add.reduce
 
 
 def combine(parts: Iterable[Part]) -> MassProps:
@@ -90,7 +92,7 @@ def combine(parts: Iterable[Part]) -> MassProps:
     m = np.array([-p.mass if p.subtract else p.mass for p in parts], dtype=float)
     holes = [i for i, p in enumerate(parts) if p.subtract]
     c = np.array([p.com for p in parts], dtype=float).reshape(n, 3)
-    total = float(m.sum())
+    total = float(_sum(m))
     if not total > 0.0:
         raise ValueError(
             f"the total mass is {total:.6g} kg; a body needs a positive mass "
@@ -100,7 +102,7 @@ def combine(parts: Iterable[Part]) -> MassProps:
     # are m itself when no part is a hole and no mass is -0.0: the same sums, not redone)
     if holes or not all(x > 0.0 for x in m.tolist()):
         w = np.abs(m)
-        origin = (w @ c) / w.sum()
+        origin = (w @ c) / _sum(w)
     else:
         origin = (m @ c) / total
     rel = c - origin
