@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from operator import is_
 from types import MappingProxyType
 from typing import Any
 
@@ -117,10 +118,10 @@ def frozen(value: Any, _depth: int = 0) -> Any:
     if t is dict:
         return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
     if t is list:
-        return tuple(frozen(v, _depth + 1) for v in value)
+        return tuple([frozen(v, _depth + 1) for v in value])
     if t is tuple:
-        items = tuple(frozen(v, _depth + 1) for v in value)
-        return value if all(a is b for a, b in zip(items, value)) else items
+        items = tuple([frozen(v, _depth + 1) for v in value])
+        return value if all(map(is_, items, value)) else items
     if hasattr(t, "__dataclass_fields__"):  # a dataclass instance (not a class: t is its type)
         freeze_fields(value, _depth + 1)
     return value
