@@ -33,7 +33,7 @@ from rbcli.io import units as un
 from rbcli.io import yamlplain
 from rbcli.io import yamlsafe as ys
 from rbcli.io.givenpart import pretty_unit
-from rbcli.io.loadctx import Ctx, Session, new_session
+from rbcli.io.loadctx import Ctx, Session, new_session, shared_factors
 from rbcli.io.placing import Stack, finish, parts_of, to_stack
 from rbcli.io.plausible import density_warning
 from rbcli.model import Body, Part, Shaft
@@ -74,7 +74,6 @@ def _units(ctx: Ctx, m: ys.MapNode) -> None:
             raise ctx.error(vnode, msg if msg.startswith("units:") else f"units: {key}: {msg}") from None
         base[key] = un.canonical_unit(base[key])  # 'RPM', 'inches' are shown 'rpm', 'in'
     ctx.base_units = base
-    ctx.factors = {}
 
 
 def default_units(units: dict[str, str]) -> dict[str, str]:
@@ -123,6 +122,7 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
         if not (isinstance(vnode, ys.ScalarNode) and vnode.value == FORMAT_VERSION and not isinstance(vnode.value, bool)):
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
     _units(ctx, root)
+    ctx.factors = shared_factors(ctx.base_units)
     if "parts" in root.items:
         fl.check_keys(ctx, root, BODY_KEYS, "the body")
         parts = pt.parts(ctx, root.items["parts"][1], stacked=stacked)

@@ -19,7 +19,7 @@ from rbcli.errors import InputError, Location
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 
-__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "new_session"]
+__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "new_session", "shared_factors"]
 
 #: the default budget of a body: its parts, counting every use of an included file's parts
 #: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
@@ -59,6 +59,24 @@ class Session:
         file far over the cap is refused while its tree is built, at the first part beyond."""
         return ("parts", self.max_parts - self.used,
                 lambda mark: InputError(self.over_message(), Location(filename, mark.line, mark.col)))
+
+
+#: the unit factors of each set of base units, shared by the files that have them (a factor
+#: depends on the base units and the kind alone): kind -> (factor, unit)
+_FACTORS: dict[tuple, dict[str, tuple[float, str]]] = {}
+_MAX_FACTORS = 256
+
+
+def shared_factors(base_units: dict[str, str]) -> dict[str, tuple[float, str]]:
+    """The dict of :attr:`Ctx.factors` for files with ``base_units``, shared between them
+    (a batch of files in mm and kg looks each kind's unit up once)."""
+    key = tuple(sorted(base_units.items()))
+    found = _FACTORS.get(key)
+    if found is None:
+        if len(_FACTORS) >= _MAX_FACTORS:
+            _FACTORS.clear()
+        found = _FACTORS[key] = {}
+    return found
 
 
 def new_session(load: Callable | None = None) -> Session:
