@@ -101,7 +101,7 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
                 if top.pending is None:
                     return None
                 items: list = []
-                top.items[top.pending] = (top.pending_mark, SeqNode(_new_tuple(Mark, (number + 1, indent + 1)), items))
+                top.items[top.pending] = (top.pending_mark, SeqNode(number << 32 | indent, items))
                 top.pending = None
                 stack.append(_Frame(indent, items, False))
             elif top.indent != indent:
@@ -119,7 +119,7 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
                 seq.append(node)
                 continue
             entries: dict = {}
-            seq.append(MapNode(_new_tuple(Mark, (number + 1, col + 1)), entries))
+            seq.append(MapNode(number << 32 | col, entries))
             frame = _Frame(col, entries, True)
             stack.append(frame)
         else:
@@ -131,7 +131,7 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
             if not stack:
                 if root is not None or indent != 0:
                     return None
-                root = MapNode(_new_tuple(Mark, (number + 1, 1)), {})
+                root = MapNode(number << 32, {})
                 frame = _Frame(0, root.items, True)
                 stack.append(frame)
             else:
@@ -139,7 +139,7 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
                 if frame.is_map and frame.pending is not None and indent > frame.indent:
                     entries = {}
                     frame.items[frame.pending] = (frame.pending_mark,
-                                                  MapNode(_new_tuple(Mark, (number + 1, indent + 1)), entries))
+                                                  MapNode(number << 32 | indent, entries))
                     frame.pending = None
                     frame = _Frame(indent, entries, True)
                     stack.append(frame)
@@ -188,7 +188,7 @@ def _value(s: str, number: int, col: int) -> Node | None:
                     return None
                 items.append(node)
                 start += len(piece) + 1
-        return SeqNode(_new_tuple(Mark, (number + 1, col + 1)), items)
+        return SeqNode(number << 32 | col, items)
     if first == "{":
         if s[-1] != "}":
             return None
@@ -207,7 +207,7 @@ def _value(s: str, number: int, col: int) -> Node | None:
                     return None
                 entries[m.group(1)] = (_new_tuple(Mark, (number + 1, kcol + 1)), node)
                 start += len(piece) + 1
-        return MapNode(_new_tuple(Mark, (number + 1, col + 1)), entries)
+        return MapNode(number << 32 | col, entries)
     return _scalar(s, number, col)
 
 
@@ -215,7 +215,7 @@ def _scalar(s: str, number: int, col: int) -> ScalarNode | None:
     """A plain or double-quoted scalar ``s`` (its whole text), or None."""
     if not s or len(s) > _LONGEST:
         return None
-    mark = _new_tuple(Mark, (number + 1, col + 1))
+    mark = number << 32 | col  # the loader's form of a node's mark (yamlsafe.Node.mark)
     first = s[0]
     if not s.strip(_DECIMAL_CHARS):  # the usual numbers, read as the loader reads them
         if first == "-" and (len(s) == 1 or s[1] not in _DIGIT_OR_POINT):

@@ -104,12 +104,13 @@ class Node:
     (not an object the cyclic garbage collector would track: a large body's tree holds
     millions), and ``.mark`` turns it into a :class:`Mark` when first read: most marks are
     never read (they locate errors), and making two million of them up front was a tenth
-    of the load time of a 100 000-part body.
+    of the load time of a 100 000-part body. The constructors take either form: a
+    :class:`Mark`, or that integer (as :mod:`rbcli.io.yamlplain` gives it).
     """
 
     __slots__ = ("_mark",)
 
-    def __init__(self, mark: Mark) -> None:
+    def __init__(self, mark: Mark | int) -> None:
         _set_mark(self, mark)
 
     @property
@@ -161,7 +162,7 @@ class ScalarNode(Node):
     quoted: bool
 
     def __init__(
-        self, mark: Mark, value: str | int | float | bool | None, raw: str, quoted: bool
+        self, mark: Mark | int, value: str | int | float | bool | None, raw: str, quoted: bool
     ) -> None:
         _set_mark(self, mark)
         _set_value(self, value)
@@ -197,7 +198,7 @@ class MapNode(Node):
     __match_args__ = ("mark", "items")
     items: dict[str, tuple[Mark, Node]]
 
-    def __init__(self, mark: Mark, items: dict[str, tuple[Mark, Node]]) -> None:
+    def __init__(self, mark: Mark | int, items: dict[str, tuple[Mark, Node]]) -> None:
         _set_mark(self, mark)
         _set_map_items(self, items)
 
@@ -219,7 +220,7 @@ class SeqNode(Node):
     __match_args__ = ("mark", "items")
     items: list[Node]
 
-    def __init__(self, mark: Mark, items: list[Node]) -> None:
+    def __init__(self, mark: Mark | int, items: list[Node]) -> None:
         _set_mark(self, mark)
         _set_seq_items(self, items)
 
