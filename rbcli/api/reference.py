@@ -98,12 +98,15 @@ def snap(values: Any, scale: float | None = None, rtol: float = 1e-14) -> Any:
     moments of 1): what JSON and tables show."""
     import numpy as np
 
-    a = np.array(values, dtype=float)
+    a = np.asarray(values, dtype=float)
     flat = a.ravel().tolist()
-    if flat and (scale is not None or all(x == x for x in flat)):  # no NaN: numpy's max is NaN
+    if flat and (scale is not None or all(map(float.__eq__, flat, flat))):  # no NaN: numpy's max is NaN
         # the same comparisons on the same floats, in Python: faster for a 3x3 (a batch)
         limit = rtol * (max(map(abs, flat)) if scale is None else scale)
-        return np.array([0.0 if abs(x) <= limit or x == 0.0 else x for x in flat]).reshape(a.shape)
+        out = np.array([0.0 if abs(x) <= limit or x == 0.0 else x for x in flat])
+        out.shape = a.shape
+        return out
+    a = a.copy()  # the caller's values stay as they are
     mag = np.abs(a)
     s = float(mag.max()) if scale is None else scale
     a[mag <= rtol * s] = 0.0

@@ -207,10 +207,13 @@ def _container(obj: Any) -> Any:
         return out_list
     out = {}
     k = ""
+    isfinite = math.isfinite
     try:
         for k, v in obj.items():
             # names and texts as they are (jsonable's first case after floats)
-            out[k if k.__class__ is str else str(k)] = v if v.__class__ is str else jsonable(v)
+            cls = v.__class__
+            out[k if k.__class__ is str else str(k)] = (
+                v if cls is str or (cls is float and isfinite(v) and v != 0.0) else jsonable(v))
     except _NonFinite as exc:
         exc.path.insert(0, str(k))
         raise
