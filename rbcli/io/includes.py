@@ -17,6 +17,7 @@ from rbcli.io import yamlsafe as ys
 from rbcli.io.fields import PLACEMENT_KEYS
 from rbcli.io.loadctx import Ctx
 from rbcli.io.placing import Stack
+from rbcli.io.reader import read_regular
 
 MAX_INCLUDE_DEPTH = 16
 INCLUDE_KEYS = ("name", "shape", "file", *PLACEMENT_KEYS)
@@ -31,8 +32,6 @@ def names_a_folder(name: str) -> bool:
 def read_body_file(path: Path, where: Location | None = None) -> bytes:
     """A body file or an included file: :func:`rbcli.io.reader.read_regular` (a regular
     file only, its size checked before reading)."""
-    from rbcli.io.reader import read_regular
-
     return read_regular(path, ys.max_bytes(), "body file", where=where, env="RBCLI_MAX_BODY_BYTES")
 
 

@@ -18,6 +18,7 @@ from pathlib import Path
 from rbcli.errors import InputError, Location
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io.reader import limit_from_env
 
 __all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "new_session", "shared_factors"]
 
@@ -81,8 +82,6 @@ def shared_factors(base_units: dict[str, str]) -> dict[str, tuple[float, str]]:
 
 def new_session(load: Callable | None = None) -> Session:
     """A session with the parts budget of ``RBCLI_MAX_PARTS`` (else :data:`MAX_PARTS`)."""
-    from rbcli.io.reader import limit_from_env
-
     return Session(limit_from_env("RBCLI_MAX_PARTS", MAX_PARTS), load)
 
 

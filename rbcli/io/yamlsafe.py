@@ -30,6 +30,7 @@ import yaml
 from yaml.reader import ReaderError
 
 from rbcli.errors import InputError, Location
+from rbcli.io.reader import limit_from_env
 
 __all__ = [
     "MAX_BYTES",
@@ -347,8 +348,6 @@ def _size_text(n: int) -> str:
 
 def max_bytes() -> int:
     """The size limit of a body file: :data:`MAX_BYTES`, or ``RBCLI_MAX_BODY_BYTES``."""
-    from rbcli.io.reader import limit_from_env
-
     return limit_from_env("RBCLI_MAX_BODY_BYTES", MAX_BYTES)
 
 
