@@ -126,13 +126,19 @@ def spelled_data(data: object, name: Callable[[str], str]) -> object:
     ``spelled_data(r.to_json(), option_name)`` is what the command's ``--json`` prints. The
     rows under ``parts`` are passed over (no text of rbcli's in them)."""
     if isinstance(data, dict):
-        return {k: v if k == "parts" or not isinstance(v, _SPELLED) else spelled_data(v, name)
-                for k, v in data.items()}
+        return {k: v if k == "parts" or v.__class__ is float or not isinstance(v, _SPELLED)
+                else spelled_data(v, name) for k, v in data.items()}
     if isinstance(data, list):
-        for v in data:
-            if isinstance(v, _SPELLED):
-                return [spelled_data(v, name) if isinstance(v, _SPELLED) else v for v in data]
-        return data  # numbers and plain strings only: nothing to spell
+        out = None  # a copy, once an item is spelled differently
+        for i, v in enumerate(data):
+            if v.__class__ is float or not isinstance(v, _SPELLED):  # a number, a plain text
+                continue
+            s = spelled_data(v, name)
+            if s is not v:
+                if out is None:
+                    out = list(data)
+                out[i] = s
+        return data if out is None else out
     if isinstance(data, Note):
         return data.spelled(name)
     return data
