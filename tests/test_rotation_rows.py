@@ -119,3 +119,11 @@ def test_small_batches_are_the_single_rotations(rng, k):
         for got, spec in zip(rot.from_specs(specs), specs):
             want = np.eye(3) if spec is None else rot.axis_to_z(rot.unit_rows(np.array([spec[1]]))[0])
             assert same_bits(got, want)
+
+
+def test_unit_lists_is_unit_rows(rng):
+    """The axis path's unit vectors from lists (no arrays for one part): unit_rows' bytes."""
+    v = _vectors(rng, 300, 3)
+    for k in (1, 2, 300):
+        rows = rot._unit_lists(v[:k].tolist())
+        assert same_bits(np.array(rows), rot.unit_rows(v[:k]))

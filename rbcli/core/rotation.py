@@ -461,6 +461,19 @@ def unit_rows(v: np.ndarray) -> np.ndarray:
 _row_max = np.maximum.reduce  # ndarray.max's own reduction, without its Python wrapper
 
 
+def _unit_lists(rows: list) -> list:
+    """:func:`unit_rows` of ``k`` vectors given as lists of floats, as lists: the same
+    numbers — each row divided by its largest magnitude and by the square root of its
+    squared length in Python floats, that squared length by ``np.vecdot`` (the BLAS dot)."""
+    w = []
+    for r in rows:
+        big = max(map(abs, r))
+        w.append([x / big for x in r])
+    a = np.array(w, dtype=float)
+    sqrt = math.sqrt
+    return [[x / s for x in r] for r, s in zip(w, map(sqrt, np.vecdot(a, a).tolist()))]
+
+
 def _rodrigues_row(n: list, c: float, s: float, one_minus_c: float) -> list:
     """:func:`_rodrigues` of one unit axis ``n`` (3 floats), entry by entry in Python floats:
     ``c I + s [n]x`` then ``+ (1 - c) (n_i n_j)``, the same correctly rounded operations in
@@ -489,14 +502,19 @@ _ALONG_MINUS_Z = [1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0]
 def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
     """:func:`axis_to_z` of each row of ``directions`` (k, 3).
 
-    The unit vectors by :func:`unit_rows` (the dot products of the single version's
-    ``_unit``), the rest per row in Python floats as :func:`axis_to_z` computes it: ``sin θ``
-    by :func:`math.hypot`, ``1 − cos θ`` as ``s² / (1 + c)`` for c > 0 (which keeps digits
-    near +z), else ``1 − c``, and Rodrigues' formula (:func:`_rodrigues_row`)."""
-    d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3)).tolist()
+    The unit vectors as :func:`unit_rows` makes them (the dot products of the single
+    version's ``_unit``), the rest per row in Python floats as :func:`axis_to_z` computes it:
+    ``sin θ`` by :func:`math.hypot`, ``1 − cos θ`` as ``s² / (1 + c)`` for c > 0 (which
+    keeps digits near +z), else ``1 − c``, and Rodrigues' formula (:func:`_rodrigues_row`)."""
+    return _axis_to_z(np.asarray(directions, dtype=float).reshape(-1, 3).tolist())
+
+
+def _axis_to_z(directions: list) -> np.ndarray:
+    """:func:`axis_to_z_rows` of directions given as lists of 3 floats."""
+    d = _unit_lists(directions)
     # z × d of the rows not exactly along ±z, made unit
     crosses = [[-y, x, 0.0] for x, y, _ in d if x != 0.0 or y != 0.0]
-    axes = iter(unit_rows(np.array(crosses, dtype=float).reshape(-1, 3)).tolist() if crosses else ())
+    axes = iter(_unit_lists(crosses) if crosses else ())
     hypot = math.hypot
     out = []
     for x, y, c in d:
@@ -617,7 +635,7 @@ def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
     if kind == "R":
         return np.array([s[1] for s in specs], dtype=float)  # (k, 3, 3), its own data
     if kind == "axis":
-        return axis_to_z_rows(unit_rows(_floats([s[1] for s in specs], 3)))
+        return _axis_to_z(_unit_lists([s[1] for s in specs]))
     if kind == "axis-angle":
         axes = unit_rows(_floats([s[1] for s in specs], 3))
         return axis_angle_rows(axes, np.array([s[2] for s in specs]))
