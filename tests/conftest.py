@@ -43,6 +43,25 @@ import pytest  # noqa: E402
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
 
+
+@pytest.fixture(autouse=True, scope="session")
+def _signals_as_from_a_terminal():
+    """Child processes start with the default action of SIGINT, SIGTERM and SIGHUP, as
+    from a terminal, even when pytest itself was started with one ignored: a background
+    job of a non-interactive shell (``.ci/run &``) ignores SIGINT, ``nohup`` SIGHUP, and a
+    child inherits an ignored signal (rbcli keeps it ignored, as it should), so the
+    signal tests would see no signal. A handler set here becomes the default in a child."""
+    import signal
+
+    saved = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)}
+    for s, h in saved.items():
+        if h == signal.SIG_IGN:
+            signal.signal(s, signal.default_int_handler if s == signal.SIGINT else signal.SIG_DFL)
+    yield
+    for s, h in saved.items():
+        if h is not None:
+            signal.signal(s, h)
+
 # ----------------------------------------------------------------------------- sampled tests
 # The default run (`pytest`: -m 'not slow') samples the exhaustive tests: an oracle compared
 # over fewer random cases, a figure or a report rendered for a few examples. `pytest -m slow`

@@ -79,16 +79,16 @@ class BalanceOptions:
     Attributes
     ----------
     shaft : (3,) tuple of float — shaft direction, body frame (largest component ±1)
-    shaft_source : str — "--shaft", "the body's shaft" or "body z, the default"
+    shaft_source : Note — ``{shaft}`` (the parameter, spelled by the caller), "the body's shaft" or "body z, the default"
     through : str | (3,) tuple — "com", "origin" or a point (m, body frame)
-    through_source : str — "--through ...", "the body's shaft" or "the origin, the default"
+    through_source : Note — ``{through}`` (with ``com``/``origin`` when given so), "the body's shaft" or "the origin, the default"
     mark : (3,) tuple | None — direction of the 0° mark (body frame), None for the rule
     mark_source : str — how the 0° mark was chosen, in words
     zero_mark_deg : float — deg, the mark turned about the shaft
     angle_sense : str — "with" or "against"
     planes : (float, float) | None — m, correction planes z_A, z_B along the shaft
     radius : float | (float, float) | None — m, correction radius (or one per plane)
-    radius_source : str | None — "--radius" or "the body's rim_radius"
+    radius_source : Note | None — ``{radius}`` or "the body's rim_radius"
     mass_step : float | None — kg; ``mass_step_text`` as given (for the warning)
     angle_step : float | None — deg
     positions : int | None — number of equally spaced positions
@@ -371,7 +371,7 @@ class BalanceResult(Result):
         net of the masses at the positions with ``positions``; its ``residual`` is the rotor
         with exactly those masses added
     position_split : rbcli.core.balance.PositionCorrections | None — the masses on the positions
-    radius_source : str | None — "--radius" or "the body's rim_radius"
+    radius_source : Note | None — ``{radius}`` or "the body's rim_radius"
     corrected_unbalance : rbcli.core.balance.Unbalance | None — the rotor with ``added`` fitted
     added : tuple of AddedMass — the masses to fit as body points (kg, m)
     speed : float | None — rad/s

@@ -45,7 +45,7 @@ class GyrocompassOptions:
     ----------
     ratio : float | None — C/A given directly (no body)
     axis : tuple[float, float, float] | None — the spin axis in the body frame (with a body)
-    axis_source : str | None — ``"--axis"``, ``"the body's shaft"`` or ``"body z (default)"``
+    axis_source : Note | None — ``{shaft}`` (the parameter, spelled by the caller), ``"the body's shaft"`` or ``"body z (default)"``
     spin : float — rad/s, ≠ 0
     latitude : float — rad, in [-π/2, π/2]
     earth_rate : float — rad/s, > 0

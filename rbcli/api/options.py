@@ -42,7 +42,7 @@ Value = Any
 
 def param(name: str) -> str:
     """The Python parameter a reader is asked about: ``"radius"``; an option spelling
-    (``"--zero-mark-deg"``) is taken as its parameter (``"zero_mark_deg"``)."""
+    (two dashes, then zero-mark-deg) is taken as its parameter (``"zero_mark_deg"``)."""
     if name.startswith("-"):
         return name.split("/")[-1].strip().lstrip("-").replace("-", "_")
     return name
@@ -190,7 +190,7 @@ def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
 _GRADE = LazyRe(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
 
 
-def grade(text: Value, option: str = "--grade") -> float:
+def grade(text: Value, option: str = "grade") -> float:
     """A balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s' -> 6.3 (mm/s), within the
     grades ISO 21940-11 defines (G0.4 to G4000)."""
     from rbcli.core.balance import ISO_GRADE_MAX, ISO_GRADE_MIN
@@ -251,7 +251,7 @@ def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
     return str(text)
 
 
-def symmetry_tolerance(value: Any, option: str = "--symmetry-tol") -> float:
+def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
     """The tolerance of a nearly symmetric body (``top``, ``gyrocompass``, ``rollcheck``):
     a fraction (``0.01``) or a percentage (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None
     gives the default, 1 % (:data:`rbcli.core.symmetry.DEFAULT_TOLERANCE`)."""

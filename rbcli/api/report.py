@@ -91,7 +91,7 @@ def _section_parse(parse: Callable[[], Any]) -> tuple[Any, InputError | None]:
 
 
 def _speed(text: Any) -> tuple[Any, Any]:
-    """--speed takes its meaning from its unit: (angular speed, speed), one of them None."""
+    """The report's speed takes its meaning from its unit: (angular speed, speed), one of them None."""
     from rbcli.io import units as un
 
     s = _text(text)

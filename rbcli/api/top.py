@@ -66,8 +66,8 @@ class TopOptions:
     theta_dot, phi_dot : float — rad/s, the start rates θ' and φ'
     g : float — m/s², > 0
     pivot : tuple[float, float, float] — m, the fixed point in the body frame
-    pivot_source : str — where it came from: ``"--pivot"``, ``"--pivot com"``,
-        ``"--pivot origin"``, ``"the body's pivot"`` or ``"the origin, as no pivot was given"``
+    pivot_source : Note — where it came from: ``{pivot}``, ``{pivot} com``,
+        ``{pivot} origin`` (the parameter, spelled by the caller), ``"the body's pivot"`` or ``"the origin, as no pivot was given"``
     pivot_given : bool — the pivot was an option (errors about it then name ``--pivot``)
     verify : bool — integrate numerically and compare
     duration : float or None — s, the span of the path's time series (None: three nutation
