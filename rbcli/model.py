@@ -36,9 +36,9 @@ def _frozen(a, dtype=_FLOAT) -> np.ndarray:
     """``a`` as a read-only array: itself when it is one already (its data cannot change:
     no writable array shares it), else a private read-only copy."""
     if a.__class__ is np.ndarray and (a.dtype is dtype or a.dtype == dtype) and not a.flags.writeable:
-        base = a
-        while base.base is not None and base.base.__class__ is np.ndarray:
-            base = base.base
+        base, up = a, a.base
+        while up.__class__ is np.ndarray:  # to the array that owns the data
+            base, up = up, up.base
         if not base.flags.writeable:
             return a
     a = np.array(a, dtype=dtype)  # a private copy
