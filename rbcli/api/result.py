@@ -188,7 +188,7 @@ def jsonable(obj: Any) -> Any:
 def _container(obj: Any) -> Any:
     """:func:`jsonable` of a mapping (keys as strings) or a list or tuple (a list), naming
     the key or index of a number that is not finite."""
-    if isinstance(obj, (list, tuple)):
+    if obj.__class__ is list or isinstance(obj, (list, tuple)):
         out_list = []
         i = 0
         isfinite = math.isfinite
