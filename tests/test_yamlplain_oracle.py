@@ -131,6 +131,15 @@ def test_the_parts_cap_is_left_to_the_loader():
     assert outcome(text, cap(4)) == "refused"
 
 
+@pytest.mark.parametrize("levels", [3, 20, 40, 70, 200])
+def test_deep_nesting_is_left_to_the_loader(levels):
+    """Block mappings nested by indentation alone: the loader refuses more than MAX_DEPTH (64)
+    levels, located; the plain reader answers only well inside that (a tree it answered
+    would reach code that counts on the loader's limit)."""
+    text = "".join("  " * i + f"k{i}:\n" for i in range(levels)) + "  " * levels + "x: 1\n"
+    assert outcome(text) == ("same" if levels <= 20 else "declined" if levels < ys.MAX_DEPTH else "refused")
+
+
 def test_the_size_limit_is_left_to_the_loader(monkeypatch):
     text = "name: a body of more than forty bytes of text\nparts: []\n"
     assert outcome(text) == "same"

@@ -15,8 +15,8 @@ in the plainest block style in about half of that. It reads only:
   (a leading ``-`` only before a digit or ``.``), double-quoted strings without escapes,
   and one-line flow lists ``[...]`` and mappings ``{key: value, ...}`` of such scalars.
 
-Anything else — a comment, a key without a value, a duplicate key, nested flow values, a
-document marker, a scalar that could go on to the next line, a list longer than the
+Anything else — a comment, a key without a value, a duplicate key, nested flow values,
+nesting deeper than half the loader's limit, a document marker, a scalar that could go on to the next line, a list longer than the
 loader's cap, a file over the size limit — and this reader answers None: the caller then
 reads the file with :func:`rbcli.io.yamlsafe.load`, which gives every error and its
 location. It never raises for a text. Where it answers, its tree equals the loader's,
@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import re
 
-from rbcli.io.yamlsafe import MapNode, Mark, Node, ScalarNode, SeqNode, max_bytes, plain_value
+from rbcli.io.yamlsafe import MAX_DEPTH, MapNode, Mark, Node, ScalarNode, SeqNode, max_bytes, plain_value
 
 __all__ = ["tree"]
 
@@ -52,6 +52,11 @@ _DECIMAL_CHARS = "0123456789.eE+-"
 _DIGIT_OR_POINT = frozenset("0123456789.")
 
 _new_tuple = tuple.__new__
+
+#: the deepest nesting this reader takes: well inside the loader's MAX_DEPTH (a line adds at
+#: most two block levels and a flow value one), so a text the loader refuses as too deep is
+#: never answered here (body files nest at most 6 levels)
+_DEEPEST = MAX_DEPTH // 2
 
 
 class _Frame:
@@ -85,6 +90,8 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
     stack: list[_Frame] = []
     root: MapNode | None = None
     for number, line in enumerate(text.split("\n")):
+        if len(stack) > _DEEPEST:
+            return None
         content = line.lstrip(" ")
         if not content:
             continue
