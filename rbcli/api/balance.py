@@ -98,6 +98,8 @@ class BalanceOptions:
     grade : float | None — ISO 21940-11 grade G, mm/s
     tolerance_planes : str — "bearings" or "corrections"
     given : tuple of str — the parameters the caller gave
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     """
 
     shaft: tuple[float, float, float]

@@ -52,6 +52,8 @@ class GyrocompassOptions:
     symmetry_tol : float — how far from symmetric about its spin axis the body may be
     axis_as_given : tuple[float, float, float] | None — ``axis`` as given (largest component ±1)
     given : tuple of str — the parameters the caller gave
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     warnings : tuple of str — a rim speed far outside the body's scale
     """
 

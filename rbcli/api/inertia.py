@@ -45,6 +45,8 @@ class InertiaOptions:
     axis : tuple of 3 floats, or None — a direction (largest component ±1), body frame
     omega : tuple of 3 floats, or None — rad/s, body frame
     given : tuple of str — the parameters the caller gave
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     warnings : tuple of str — a point or a rim speed far outside the body's scale
     """
 

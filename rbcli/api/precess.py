@@ -88,6 +88,8 @@ class PrecessOptions:
     samples : int or None — rows of the time series (2 .. 10 000 000); None: 1001
     verify : bool — compare with a numerical integration (DOP853) over 3 periods
     given : tuple of str — the parameters the caller gave
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     warnings : tuple of str — a rotation whose rim is faster than sound
     """
 

@@ -34,6 +34,8 @@ class PrincipalOptions:
     ----------
     reference : Reference — the point the moments are about (default the com)
     given : tuple of str — ``("about",)`` when a point other than the com was given
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     warnings : tuple of str — a point far outside the body's scale
     """
 

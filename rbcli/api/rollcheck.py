@@ -111,6 +111,8 @@ class RollcheckOptions:
         direction with its largest component ±1; ``"com"``, ``"origin"`` or a point, m), None
         when not given
     given : tuple of str
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
         The parameters the caller gave.
     """
 

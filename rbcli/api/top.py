@@ -78,6 +78,8 @@ class TopOptions:
         warning; beyond it the body is refused
     pivot_as_given : "com", "origin", (3,) tuple or None — ``pivot`` as given (m)
     given : tuple of str — the parameters the caller gave
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     warnings : tuple of str — a pivot or a rim speed far outside the body's scale
     """
 

@@ -93,6 +93,8 @@ class WhirlOptions:
     through : str | (3,) tuple — a point of the shaft; ``through_source``
     symmetry_tol : float — fraction
     given : tuple of str — the parameters the caller gave (the tables echo them)
+    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
+        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
     """
 
     bearings: tuple[float, ...]
