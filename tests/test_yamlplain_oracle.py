@@ -140,6 +140,18 @@ def test_deep_nesting_is_left_to_the_loader(levels):
     assert outcome(text) == ("same" if levels <= 20 else "declined" if levels < ys.MAX_DEPTH else "refused")
 
 
+@pytest.mark.parametrize("length", [1, 250, 1024, 1025, 1100])
+@pytest.mark.parametrize("form", ["{k}: 1\n", "x:\n  {k}: 1\n", "p:\n- {k}: 1\n",
+                                  "p:\n  - b: 1\n    {k}: 1\n", "a: {{{k}: 1}}\n"])
+def test_long_keys_are_left_to_the_loader(form, length):
+    """libyaml finds a key's ':' only within 1024 characters of the key's start (a "simple
+    key"; yaml_parser_stale_simple_keys): a longer key is refused, in block and flow
+    mappings alike, so the plain reader must not answer it."""
+    text = form.format(k="k" * length)
+    expected = {"same"} if length <= 250 else {"refused"} if length > 1024 else {"same", "declined"}
+    assert outcome(text) in expected
+
+
 def test_the_size_limit_is_left_to_the_loader(monkeypatch):
     text = "name: a body of more than forty bytes of text\nparts: []\n"
     assert outcome(text) == "same"

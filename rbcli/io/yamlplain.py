@@ -7,8 +7,8 @@ in the plainest block style in about half of that. It reads only:
 
 - printable ASCII text and line breaks (``\\n``), without the characters that start
   anything else (``# & * ! | > ' % @ ` \\ ? <``, tabs, ``\\r``);
-- block mappings whose keys are names (``[A-Za-z_][A-Za-z0-9_]*``, not a null or bool
-  word) followed by ``:`` and a space or the line's end; block lists (``- ``), also at
+- block mappings whose keys are names (``[A-Za-z_][A-Za-z0-9_]*``, at most 250
+  characters, not a null or bool word) followed by ``:`` and a space or the line's end; block lists (``- ``), also at
   their key's indentation; a list item that is a scalar, a one-line flow value or a
   mapping that starts on the item's line;
 - values on their key's line: plain scalars of ``[A-Za-z0-9_.+~/^()]`` and inner spaces
@@ -35,8 +35,10 @@ __all__ = ["tree"]
 #: a character outside the subset, anywhere in the text
 _OUTSIDE = re.compile("[^\\n" + re.escape(
     "".join(chr(c) for c in range(0x20, 0x7F) if chr(c) not in "#&*!|>'%@`\\?<")) + "]")
-#: a key and what follows its colon (group 2: the value, possibly empty)
-_KEY = re.compile(r"([A-Za-z_][A-Za-z0-9_]*):(?: +(.*)|$)")
+#: a key and what follows its colon (group 2: the value, possibly empty); at most 250
+#: characters: libyaml refuses a key whose ':' is more than 1024 characters past its start
+#: (a "simple key", yaml_parser_stale_simple_keys), in block and flow mappings alike
+_KEY = re.compile(r"([A-Za-z_][A-Za-z0-9_]{0,249}):(?: +(.*)|$)")
 #: a plain scalar on its key's line or in a flow value (no ',', no brackets)
 _PLAIN = re.compile(r"(?:[A-Za-z0-9_.+~/^(]|-[0-9.])[A-Za-z0-9_.+~/^()\- ]*")
 #: a double-quoted string without escapes
