@@ -159,6 +159,15 @@ def test_the_size_limit_is_left_to_the_loader(monkeypatch):
     assert outcome(text) == "refused"
 
 
+@pytest.mark.parametrize("limit", ["abc", "0", "-1", "1" * 21])
+def test_a_bad_size_limit_is_left_to_the_loader(monkeypatch, limit):
+    """A limit in the environment that is not a positive whole number: the loader refuses it
+    (an InputError naming the variable); the plain reader does not raise, it declines."""
+    monkeypatch.setenv("RBCLI_MAX_BODY_BYTES", limit)
+    assert outcome("a: 1\n") == "refused"
+    assert outcome(b"a: 1\n") == "refused"
+
+
 def test_other_inputs_are_declined():
     """What is not str or bytes, and texts outside the subset, are not answered."""
     assert yamlplain.tree(bytearray(b"a: 1\n")) is None

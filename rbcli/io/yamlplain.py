@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import re
 
+from rbcli.errors import InputError
 from rbcli.io.yamlsafe import MAX_DEPTH, MapNode, Mark, Node, ScalarNode, SeqNode, max_bytes, plain_value
 
 __all__ = ["tree"]
@@ -86,7 +87,11 @@ def tree(data: bytes | str, list_cap: tuple | None = None) -> Node | None:
         text = data if data.isascii() else ""
     else:
         return None
-    if not text or len(text) > max_bytes() or _OUTSIDE.search(text) is not None:
+    try:
+        limit = max_bytes()
+    except InputError:  # RBCLI_MAX_BODY_BYTES is not a whole number: the loader says so
+        return None
+    if not text or len(text) > limit or _OUTSIDE.search(text) is not None:
         return None
     key_match = _KEY.fullmatch
     stack: list[_Frame] = []
