@@ -292,3 +292,101 @@ def test_generated_documents_reach_every_outcome():
 
     collect()
     assert seen == {"same", "declined", "refused"}, seen
+
+
+# ------------------------------------------------------------------- walked, line by line
+
+#: keys that are names, and (with the odd-case pool) keys that are not, or are too long
+_NAMES = ["a", "b", "c", "name", "parts", "y", "n", "on", "off", "e", "_", "nan", "inf", "k1"]
+_ODD_KEYS = _KEYS + ["k" * 250, "k" * 1024, "k" * 1025, "a ", "a\t", "nULL", "tRUE", "-a", ".a"]
+#: values the subset reads, and values at or beyond its edge
+_PLAIN_VALUES = ["1", "-1", "+1", "007", "1.5", "-.5", "+.5", "5.", "1e3", "1.e5", "-0", ".",
+                 "-.", "+", "0x1F", "0o17", ".inf", "-.Inf", ".nan", "1_0", ".5.", "~", "~/x",
+                 "null", "TRUE", "tRUE", "yes", "mm", "7850 kg/m^3", "(x)", "a - b", "1 -",
+                 "x" * 250, "1" * 250, '"x"', '""', '" a "', '"a: b"', '"] ["', '"}"']
+_EDGE_VALUES = ["-", "-x", "- 1", "--1", "a  b", "a:b", "a: b", "a #b", "#", "a,b", "x\"",
+                '"x', "'a'", "x" * 251, "1" * 301, "0" * 251, "&a x", "*a", "!x", "|", ">",
+                "?", "? x", "%", "@", "`", "=", "[1,,2]", "[1, 2,]", "{a:1}", "{a: }", "[[1]]",
+                '["a, b"]', "{a: 1, a: 2}", "{null: 1}", "[1] x", "\x7f", "\x0c", "é", "\t1"]
+
+
+def walked(rng: random.Random, odd: float) -> str:
+    """A text written line by line as an author would, keeping a stack of open block
+    collections (a key's child one to four columns deeper, or a list at its key's own
+    indentation; compact ``- key: value`` items at their odd columns), with the probability
+    ``odd`` of each kind of slip: a bad key or value, a line off by a column, a stray
+    blank, trailing characters, one character or line break inserted or replaced."""
+    def value():
+        if rng.random() < odd:
+            return rng.choice(_EDGE_VALUES)
+        r = rng.random()
+        if r < 0.2:
+            return "[" + rng.choice([", ", ",", " , "]).join(
+                rng.choice(_PLAIN_VALUES) for _ in range(rng.randint(0, 3))) + "]"
+        if r < 0.3:
+            keys = rng.sample(_NAMES, rng.randint(0, 3))
+            return "{" + ", ".join(f"{k}: {rng.choice(_PLAIN_VALUES)}" for k in keys) + "}"
+        return rng.choice(_PLAIN_VALUES)
+
+    lines: list[str] = []
+    stack: list[tuple[str, int, set]] = [("map", 0, set())]  # open collections
+    pending = False  # the last line was `key:` whose value is still to come
+    for _ in range(rng.randint(1, 14)):
+        if rng.random() < odd * 0.3:
+            lines.append(rng.choice(["", " ", "   "]))
+        if not pending and len(stack) > 1 and rng.random() < 0.3:
+            stack.pop()
+        if pending:
+            step = rng.choice([1, 2, 2, 3, 4]) if rng.random() >= odd else rng.choice([-1, 0, 5])
+            kind, indent, _ = stack[-1]
+            seq = rng.random() < 0.5
+            stack.append(("seq" if seq else "map", indent + (rng.choice([0, step]) if seq else step), set()))
+            pending = False
+        kind, indent, used = stack[-1]
+        pad = " " * max(0, indent + (rng.choice([-1, 1, 2]) if rng.random() < odd else 0))
+        key = rng.choice(_NAMES) if rng.random() >= odd else rng.choice(_ODD_KEYS)
+        if kind == "map":
+            if key in used and rng.random() >= odd:
+                key += str(len(used))
+            used.add(key)
+            if rng.random() < 0.3:
+                lines.append(pad + key + ":" + rng.choice(["", " "]))
+                pending = True
+            else:
+                lines.append(pad + key + rng.choice([": ", ":  "]) + value())
+        else:
+            dash = rng.choice(["- ", "- ", "-  ", "-   "])
+            if rng.random() < 0.4:
+                lines.append(pad + dash + value())
+            else:
+                stack.append(("map", len(pad) + len(dash), {key}))
+                pending = rng.random() < 0.3
+                lines.append(pad + dash + key + (":" if pending else ": " + value()))
+        if rng.random() < odd * 0.2:
+            lines[-1] += rng.choice([" ", "  ", " #c", ":", " -", ",", "\r", "\t"])
+    text = "\n".join(lines) + rng.choice(["\n", "", "\n\n", "\n  "])
+    if rng.random() < odd:
+        i = rng.randint(0, len(text))
+        piece = rng.choice(list(" -:,[]{}\"#\n.0aeE+~'&!?|>\r\x7fé") + ["\n  ", "\n- ", ": ", "- "])
+        text = text[:i] + piece + text[i + rng.randint(0, 1):]
+    return text
+
+
+@pytest.mark.sampled
+@settings(max_examples=sample(300, 5000), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.randoms(use_true_random=False), st.sampled_from([0.0, 0.02, 0.08, 0.25]))
+def test_walked_documents(rng, odd):
+    """Texts written line by line (:func:`walked`), mostly inside the subset with a few
+    slips: the same tree, declined or refused; as text and as bytes."""
+    text = walked(rng, odd)
+    outcome(text)
+    outcome(text.encode("utf-8"))
+
+
+def test_walked_documents_reach_every_outcome():
+    """:func:`walked` writes texts the plain reader answers (most at ``odd=0``), texts it
+    declines and texts the loader refuses (a check of the generator)."""
+    rng = random.Random(3)
+    seen = [outcome(walked(rng, odd)) for odd in (0.0, 0.25) for _ in range(300)]
+    assert seen[:300].count("same") > 60, seen[:300].count("same")
+    assert {"same", "declined", "refused"} <= set(seen)
