@@ -487,7 +487,9 @@ def test_generated_documents_are_varied(monkeypatch):
     on the generator, not on the loader)."""
     seen: set[str] = set()
 
-    @settings(max_examples=sample(80, 200), deadline=None, database=None,
+    # derandomized: a check on the generator must not depend on the draw (80 random documents
+    # missed the fifth kind about one run in twelve)
+    @settings(max_examples=sample(80, 200), deadline=None, database=None, derandomize=True,
               suppress_health_check=[HealthCheck.function_scoped_fixture])
     @given(documents())
     def collect(text):
