@@ -285,7 +285,8 @@ def test_generated_documents_reach_every_outcome():
     the loader refuses (a check of the generator, not of the readers)."""
     seen: set[str] = set()
 
-    @settings(max_examples=sample(200, 600), deadline=None, database=None)
+    # derandomized: a check of the generator must not depend on the draw
+    @settings(max_examples=sample(200, 600), deadline=None, database=None, derandomize=True)
     @given(documents())
     def collect(text):
         seen.add(outcome(text))
