@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+from rbcli.core.symmetry import AxialSymmetry, about_axis, across, require
 from rbcli.core.checks import finite, json_float
 
 #: Earth's sidereal rotation rate, rad/s (IERS conventions).
@@ -198,12 +198,7 @@ def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e
         raise ValueError("the spin axis direction must be a non-zero finite vector")
     n = n / nn
     C = float(n @ J @ n)
-    k = int(np.argmin(np.abs(n)))
-    e1 = np.zeros(3)
-    e1[k] = 1.0
-    e1 = e1 - (e1 @ n) * n
-    e1 /= np.linalg.norm(e1)
-    E = np.array([e1, np.cross(n, e1)])
+    E = across(n)
     A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
     if not max(abs(A1), abs(A2), abs(C)) > 0.0:
         raise ValueError("the inertia tensor is zero: a point mass cannot be a rotor")

@@ -19,6 +19,8 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from rbcli.core.symmetry import across
+
 #: how many body sizes away a point or a radius may be before rbcli warns
 FAR = 10.0
 #: m/s, the speed of sound in air at 20 °C: a rim faster than this is worth a warning
@@ -125,12 +127,7 @@ def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[fl
     n = np.asarray(axis, dtype=float).reshape(3)
     n = n / np.linalg.norm(n)
     P = np.asarray(through, dtype=float).reshape(3)
-    k = int(np.argmin(np.abs(n)))
-    e1 = np.zeros(3)
-    e1[k] = 1.0
-    e1 = e1 - (e1 @ n) * n
-    e1 /= np.linalg.norm(e1)
-    E = np.array([e1, np.cross(n, e1)])  # (2, 3): coordinates across the line
+    E = across(n)  # (2, 3): coordinates across the line
     solid = [p for p in parts if not p.subtract] or list(parts)
     balls = [_ball(p) for p in solid]
     ub = [float(np.linalg.norm(E @ (c - P))) + rho for c, rho in balls]

@@ -159,6 +159,17 @@ def _pct(x: float) -> str:
     return f"{100.0 * x:.2g} %"
 
 
+def across(n: np.ndarray) -> np.ndarray:
+    """(2, 3): an orthonormal basis (e1, e2 = n × e1) of the plane across the unit vector
+    ``n``; e1 is the body axis least aligned with ``n``, made normal to it (Gram–Schmidt)."""
+    k = int(np.argmin(np.abs(n)))
+    e1 = np.zeros(3)
+    e1[k] = 1.0
+    e1 = e1 - (e1 @ n) * n
+    e1 /= np.linalg.norm(e1)
+    return np.array([e1, np.cross(n, e1)])
+
+
 def about_axis(mass: float, com, inertia_com, point, axis, *, size: float | None = None) -> AxialSymmetry:
     """Measure how symmetric a body is about the line through ``point`` along ``axis``.
 

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from rbcli.core.rim import fmt_length as _fmt_length
-from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis
+from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis, across
 
 __all__ = ["STANDARD_GRAVITY", "Wheel", "wheel_from_body", "check_geometry", "param_finite",
            "blame", "opt_float"]
@@ -234,16 +234,8 @@ def wheel_from_body(
         raise ValueError("the axle direction must be a non-zero finite vector")
     n = n / nn
     C = float(n @ J @ n)
-    # orthonormal basis (e1, e2) of the plane across the axle
-    k = int(np.argmin(np.abs(n)))
-    e1 = np.zeros(3)
-    e1[k] = 1.0
-    e1 = e1 - (e1 @ n) * n
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(n, e1)
-    E = np.array([e1, e2])
-    across = np.linalg.eigvalsh(E @ J @ E.T)
-    A1, A2 = float(across[0]), float(across[1])
+    E = across(n)  # orthonormal basis of the plane across the axle
+    A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
     scale = max(abs(A1), abs(A2), abs(C))
     if not scale > 0.0:
         raise ValueError("the inertia tensor is zero: a point mass cannot roll on a rim")
