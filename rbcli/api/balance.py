@@ -200,20 +200,15 @@ class BalanceOptions:
         elif tolerance_planes is not None:
             raise ParamError("tolerance_planes", "only used with {grade}")
         # --- the body's defaults, and where each value came from
-        if n_shaft is not None:
-            axis, shaft_source = tuple(n_shaft), "{shaft}"
-        elif body.shaft is not None:
-            axis, shaft_source = tuple(float(x) for x in body.shaft.axis), "the body's shaft"
-        else:
-            axis, shaft_source = (0.0, 0.0, 1.0), "body z, the default"
-        if isinstance(p_through, str):
-            where, through_source = p_through, f"{{through}} {p_through}"
-        elif p_through is not None:
-            where, through_source = tuple(p_through), "{through}"
-        elif body.shaft is not None:
-            where, through_source = tuple(float(x) for x in body.shaft.through), "the body's shaft"
-        else:
-            where, through_source = (0.0, 0.0, 0.0), "the origin, the default"
+        from rbcli.api.reference import shaft_axis, shaft_point
+
+        axis, came = shaft_axis(body, n_shaft)
+        shaft_source = {"given": "{shaft}", "body": "the body's shaft", "default": "body z, the default"}[came]
+        where, came = shaft_point(body, p_through)
+        through_source = {"given": "{through}", "body": "the body's shaft",
+                          "default": "the origin, the default"}[came]
+        if isinstance(where, str):
+            through_source = f"{{through}} {where}"
         radii = radius_source = None
         if z_planes is not None:
             if r_opt is not None:

@@ -111,12 +111,10 @@ class GyrocompassOptions:
                        symmetry_tol=tol, given=given, typed=tuple(u.typed.items()))
         if body is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
-        if n_axis is not None:
-            n, src = n_axis, "{shaft}"
-        elif body.shaft is not None:
-            n, src = body.shaft.axis, "the body's shaft"
-        else:
-            n, src = (0.0, 0.0, 1.0), "body z (default)"
+        from rbcli.api.reference import shaft_axis
+
+        n, came = shaft_axis(body, n_axis)
+        src = {"given": "{shaft}", "body": "the body's shaft", "default": "body z (default)"}[came]
         import numpy as np
 
         v = np.asarray(n, dtype=float)

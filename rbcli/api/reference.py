@@ -1,6 +1,8 @@
-"""What :func:`rbcli.inertia` and :func:`rbcli.principal` share: the point an inertia is
-taken about (:class:`Reference`), the parts' rows of the JSON, the snapping of round-off to
-zero, and the plausibility warnings of a point far outside the body.
+"""What the services share: the point an inertia is taken about (:class:`Reference`), the
+parts' rows of the JSON, the snapping of round-off to zero, the plausibility warnings of a
+point far outside the body (``inertia``, ``principal``), and the shaft's line with its
+defaults (:func:`shaft_axis`, :func:`shaft_point`: ``balance``, ``whirl``, ``rollcheck``,
+``gyrocompass``).
 
 Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
 off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
@@ -21,7 +23,8 @@ from rbcli.errors import Note, ParamError
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
-__all__ = ["Reference", "part_rows", "plausibility", "snap", "with_parts", "inertia_at"]
+__all__ = ["Reference", "part_rows", "plausibility", "snap", "with_parts", "inertia_at",
+           "shaft_axis", "shaft_point"]
 
 
 @dataclass(frozen=True)
@@ -178,3 +181,26 @@ def plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> tu
                             f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
                             f"{u.label('angular_speed')}: is a unit missing?"))
     return tuple(out)
+
+
+def shaft_axis(body: Any, given: Any) -> tuple[tuple[float, float, float], str]:
+    """The shaft's direction: the one ``given``, else the body's ``shaft``, else body z; with
+    where it came from, ``"given"``, ``"body"`` or ``"default"`` (each command words it)."""
+    if given is not None:
+        return tuple(float(x) for x in given), "given"  # type: ignore[return-value]
+    if body is not None and body.shaft is not None:
+        return tuple(float(x) for x in body.shaft.axis), "body"  # type: ignore[return-value]
+    return (0.0, 0.0, 1.0), "default"
+
+
+def shaft_point(body: Any, given: Any) -> tuple[Any, str]:
+    """A point of the shaft's line: the one ``given`` (``"com"``, ``"origin"`` or x, y, z),
+    else the body's ``shaft.through``, else the origin; with where it came from, as
+    :func:`shaft_axis` says it."""
+    if isinstance(given, str):
+        return given, "given"
+    if given is not None:
+        return tuple(float(x) for x in given), "given"
+    if body is not None and body.shaft is not None:
+        return tuple(float(x) for x in body.shaft.through), "body"
+    return (0.0, 0.0, 0.0), "default"

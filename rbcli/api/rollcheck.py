@@ -271,32 +271,22 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     """Axle, its point, the rim radius, where each came from, and warnings."""
     import numpy as np
 
+    from rbcli.api.reference import shaft_axis, shaft_point
     from rbcli.core.inertia import body_mass_props
     from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_of
 
     mp = body_mass_props(body)
-    if n_axle is not None:
-        n = np.asarray(n_axle, dtype=float)
-        axle_source = "{shaft}"
-    elif body.shaft is not None:
-        n = np.asarray(body.shaft.axis, dtype=float)
-        axle_source = "the body's shaft"
-    else:
-        n = np.array([0.0, 0.0, 1.0])
-        axle_source = "body z (default)"
+    axis, came = shaft_axis(body, n_axle)
+    axle_source = {"given": "{shaft}", "body": "the body's shaft", "default": "body z (default)"}[came]
+    n = np.asarray(axis, dtype=float)
     n = n / np.linalg.norm(n)
-    if isinstance(p_through, str):
-        P = mp.com.copy() if p_through == "com" else np.zeros(3)
-        through_source = f"{{through}} {p_through}"
-    elif p_through is not None:
-        P = np.asarray(p_through, dtype=float)
-        through_source = "{through}"
-    elif body.shaft is not None:
-        P = np.asarray(body.shaft.through, dtype=float)
-        through_source = "the body's shaft"
+    where, came = shaft_point(body, p_through)
+    through_source = {"given": "{through}", "body": "the body's shaft", "default": "the origin"}[came]
+    if isinstance(where, str):
+        P = mp.com.copy() if where == "com" else np.zeros(3)
+        through_source = f"{{through}} {where}"
     else:
-        P = np.zeros(3)
-        through_source = "the origin"
+        P = np.asarray(where, dtype=float)
     part = None
     if a_opt is not None:
         a, source, kind = a_opt, "{rim_radius}", "{rim_radius}"

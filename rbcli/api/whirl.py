@@ -192,20 +192,12 @@ class WhirlOptions:
             p_through = u.point(through, _opt("through")) if through is not None else None
         with _reading("symmetry_tol"):
             tol = op.symmetry_tolerance(symmetry_tol, _opt("symmetry_tol"))
-        if n_shaft is not None:
-            axis, shaft_source = tuple(n_shaft), "shaft"
-        elif body.shaft is not None:
-            axis, shaft_source = tuple(float(x) for x in body.shaft.axis), "body_shaft"
-        else:
-            axis, shaft_source = (0.0, 0.0, 1.0), "default"
-        if isinstance(p_through, str):
-            where, through_source = p_through, "through"
-        elif p_through is not None:
-            where, through_source = tuple(p_through), "through"
-        elif body.shaft is not None:
-            where, through_source = tuple(float(x) for x in body.shaft.through), "body_shaft"
-        else:
-            where, through_source = (0.0, 0.0, 0.0), "default"
+        from rbcli.api.reference import shaft_axis, shaft_point
+
+        axis, came = shaft_axis(body, n_shaft)
+        shaft_source = {"given": "shaft", "body": "body_shaft", "default": "default"}[came]
+        where, came = shaft_point(body, p_through)
+        through_source = {"given": "through", "body": "body_shaft", "default": "default"}[came]
         return cls(
             bearings=tuple(zs), stiffness=tuple(zip(kx, ky)), cross_stiffness=tuple(kq),
             damping=tuple(zip(cx, cy)), speed_range=rng, points=npts, orders=ords, speed=W,
