@@ -31,6 +31,38 @@ from common import DATA, med, rbcli_cmd, time_once  # noqa: E402
 DIR = DATA / "batch"
 
 
+def body_text(rng: random.Random, i: int) -> str:
+    """Body file ``i`` of the batch: 1 to 4 boxes, cylinders, spheres or point masses in mm
+    and kg, sometimes a hole cut from a box (tests/test_yamlplain_oracle.py reads these too)."""
+    lines = [f"name: batch body {i}", "units: {length: mm, mass: kg}", "parts:"]
+    box = None
+    for j in range(rng.randint(1, 4)):
+        at = ", ".join(f"{rng.uniform(-100, 100):.4g}" for _ in range(3))
+        k = rng.choice(["box", "cylinder", "sphere", "point"])
+        lines.append(f"  - name: part{j}")
+        if k == "box":
+            size = [rng.uniform(20, 80) for _ in range(3)]
+            lines += ["    shape: box", f"    size: [{', '.join(f'{s:.4g}' for s in size)}]",
+                      '    density: "7850 kg/m^3"']
+            box = (f"part{j}", at, size)
+        elif k == "cylinder":
+            lines += ["    shape: cylinder", f"    radius: {rng.uniform(5, 40):.4g}",
+                      f"    length: {rng.uniform(10, 100):.4g}", '    density: "2.7 g/cm^3"',
+                      f"    axis: [{rng.uniform(-1, 1):.3f}, {rng.uniform(-1, 1):.3f}, 1]"]
+        elif k == "sphere":
+            lines += ["    shape: sphere", f"    radius: {rng.uniform(5, 40):.4g}",
+                      f"    mass: {rng.uniform(0.1, 3):.3g}"]
+        else:
+            lines += ["    shape: point", f"    mass: {rng.uniform(0.01, 1):.3g}"]
+        lines.append(f"    at: [{at}]")
+    if box is not None and rng.random() < 0.5:
+        name, at, size = box
+        lines += ["  - name: hole", "    shape: cylinder", f"    radius: {0.2 * min(size[:2]):.4g}",
+                  f"    length: {size[2]:.4g}", "    subtract: true", f"    cut_from: {name}",
+                  f"    at: [{at}]"]
+    return "\n".join(lines) + "\n"
+
+
 def make_files(n: int, seed: int = 2) -> list[Path]:
     rng = random.Random(seed)
     DIR.mkdir(parents=True, exist_ok=True)
@@ -39,34 +71,8 @@ def make_files(n: int, seed: int = 2) -> list[Path]:
             old.unlink()
     paths = []
     for i in range(n):
-        lines = [f"name: batch body {i}", "units: {length: mm, mass: kg}", "parts:"]
-        box = None
-        for j in range(rng.randint(1, 4)):
-            at = ", ".join(f"{rng.uniform(-100, 100):.4g}" for _ in range(3))
-            k = rng.choice(["box", "cylinder", "sphere", "point"])
-            lines.append(f"  - name: part{j}")
-            if k == "box":
-                size = [rng.uniform(20, 80) for _ in range(3)]
-                lines += ["    shape: box", f"    size: [{', '.join(f'{s:.4g}' for s in size)}]",
-                          '    density: "7850 kg/m^3"']
-                box = (f"part{j}", at, size)
-            elif k == "cylinder":
-                lines += ["    shape: cylinder", f"    radius: {rng.uniform(5, 40):.4g}",
-                          f"    length: {rng.uniform(10, 100):.4g}", '    density: "2.7 g/cm^3"',
-                          f"    axis: [{rng.uniform(-1, 1):.3f}, {rng.uniform(-1, 1):.3f}, 1]"]
-            elif k == "sphere":
-                lines += ["    shape: sphere", f"    radius: {rng.uniform(5, 40):.4g}",
-                          f"    mass: {rng.uniform(0.1, 3):.3g}"]
-            else:
-                lines += ["    shape: point", f"    mass: {rng.uniform(0.01, 1):.3g}"]
-            lines.append(f"    at: [{at}]")
-        if box is not None and rng.random() < 0.5:
-            name, at, size = box
-            lines += ["  - name: hole", "    shape: cylinder", f"    radius: {0.2 * min(size[:2]):.4g}",
-                      f"    length: {size[2]:.4g}", "    subtract: true", f"    cut_from: {name}",
-                      f"    at: [{at}]"]
+        text = body_text(rng, i)
         p = DIR / f"body_{i:03d}.yaml"
-        text = "\n".join(lines) + "\n"
         if not p.exists() or p.read_text() != text:
             p.write_text(text)
         paths.append(p)

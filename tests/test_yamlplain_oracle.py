@@ -14,6 +14,7 @@ also mutated by one character inserted, deleted or replaced.
 
 from __future__ import annotations
 
+import functools
 import random
 from pathlib import Path
 
@@ -77,36 +78,22 @@ def test_every_yaml_file_of_the_repository():
     assert "same" in seen
 
 
+@functools.cache
+def _bench_batch():
+    """bench/batch.py, whose body files the batch goal is measured on (a script, not a
+    package: loaded from its path)."""
+    import importlib.util
+
+    path = Path(__file__).resolve().parent.parent / "bench" / "batch.py"
+    spec = importlib.util.spec_from_file_location("rbcli_bench_batch", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)  # type: ignore[union-attr]
+    return module
+
+
 def batch_body(rng: random.Random, i: int) -> str:
-    """A body as bench/batch.py writes them (1 to 4 boxes, cylinders, spheres, points; a
-    hole cut from a box; mm, densities as quoted quantities)."""
-    lines = [f"name: batch body {i}", "units: {length: mm, mass: kg}", "parts:"]
-    box = None
-    for j in range(rng.randint(1, 4)):
-        at = ", ".join(f"{rng.uniform(-100, 100):.4g}" for _ in range(3))
-        k = rng.choice(["box", "cylinder", "sphere", "point"])
-        lines.append(f"  - name: part{j}")
-        if k == "box":
-            size = [rng.uniform(20, 80) for _ in range(3)]
-            lines += ["    shape: box", f"    size: [{', '.join(f'{s:.4g}' for s in size)}]",
-                      '    density: "7850 kg/m^3"']
-            box = (f"part{j}", at, size)
-        elif k == "cylinder":
-            lines += ["    shape: cylinder", f"    radius: {rng.uniform(5, 40):.4g}",
-                      f"    length: {rng.uniform(10, 100):.4g}", '    density: "2.7 g/cm^3"',
-                      f"    axis: [{rng.uniform(-1, 1):.3f}, {rng.uniform(-1, 1):.3f}, 1]"]
-        elif k == "sphere":
-            lines += ["    shape: sphere", f"    radius: {rng.uniform(5, 40):.4g}",
-                      f"    mass: {rng.uniform(0.1, 3):.3g}"]
-        else:
-            lines += ["    shape: point", f"    mass: {rng.uniform(0.01, 1):.3g}"]
-        lines.append(f"    at: [{at}]")
-    if box is not None and rng.random() < 0.5:
-        name, at, size = box
-        lines += ["  - name: hole", "    shape: cylinder", f"    radius: {0.2 * min(size[:2]):.4g}",
-                  f"    length: {size[2]:.4g}", "    subtract: true", f"    cut_from: {name}",
-                  f"    at: [{at}]"]
-    return "\n".join(lines) + "\n"
+    """A body as bench/batch.py writes them (its own generator)."""
+    return _bench_batch().body_text(rng, i)
 
 
 def test_batch_bodies_are_read_by_the_plain_reader():
