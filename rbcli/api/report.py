@@ -2,7 +2,7 @@
 ``rbcli report``.
 
 :class:`ReportOptions` reads the report's options once, through each command's own options
-object (:class:`rbcli.api.balance.BalanceOptions`, :class:`rbcli.api.precess.PrecessOptions`,
+object (:func:`rbcli.api.balance.parse`, :class:`rbcli.api.precess.PrecessOptions`,
 :class:`rbcli.api.top.TopOptions`, :class:`rbcli.api.rollcheck.RollcheckOptions`), so a value
 means in the report what it means to the command. :func:`run` computes each section by
 calling the services and returns a :class:`ReportResult` holding each section's result (or the
@@ -32,7 +32,6 @@ from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.balance import BalanceOptions
     from rbcli.api.precess import PrecessOptions
     from rbcli.api.rollcheck import RollcheckOptions
     from rbcli.api.top import TopOptions
@@ -138,7 +137,7 @@ class ReportOptions:
     Attributes
     ----------
     given : tuple of (str, str) — the parameters given, as (parameter, text), for the header
-    balance : BalanceOptions or None — None when the body has no shaft and no balance
+    balance : Options or None — None when the body has no shaft and no balance
         option is given (``balance_skip`` says so), or the body cannot have one
         (``balance_error``)
     whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
@@ -152,7 +151,7 @@ class ReportOptions:
     """
 
     given: tuple[tuple[str, str], ...]
-    balance: BalanceOptions | None
+    balance: Options | None
     whirl: Options | None
     precess: PrecessOptions | None
     top: TopOptions | None
@@ -185,7 +184,7 @@ class ReportOptions:
             naming the parameter at fault (``planes: ...``).
         """
         from rbcli.api import options as op
-        from rbcli.api.balance import BalanceOptions
+        from rbcli.api import balance
         from rbcli.api.precess import PrecessOptions
         from rbcli.api.rollcheck import RollcheckOptions, round_parts
         from rbcli.api.top import TopOptions
@@ -216,7 +215,7 @@ class ReportOptions:
                if rim_radius is not None else None)
 
         # balance
-        b_opts, b_err = _section_parse(lambda: BalanceOptions.parse(
+        b_opts, b_err = _section_parse(lambda: balance.parse(
             body, shaft=shaft, through=through, planes=planes, radius=radius, speed=rotor_speed,
             bearings=bearings, g=g, grade=grade))
         asked = planes is not None or bearings is not None or grade is not None or rotor_speed is not None

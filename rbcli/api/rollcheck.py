@@ -271,7 +271,7 @@ def _resolve(body: Body, n_axle, p_through, a_opt, tol):
     """Axle, its point, the rim radius, where each came from, and warnings."""
     import numpy as np
 
-    from rbcli.api.reference import shaft_axis, shaft_point
+    from rbcli.api.shaft import shaft_axis, shaft_point
     from rbcli.core.inertia import body_mass_props
     from rbcli.core.rim import RIM_OFFSET_LIMIT, rim_of
 
