@@ -138,7 +138,7 @@ def _rollcheck(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section
 
     doc = Doc()
     rr.document(doc, c.result, du, digits)
-    _options_table(doc, echo_rows(c.options, body, rr.OPTIONS))
+    _options_table(doc, rr.echo_rows(c.result))
     s = _section(c, doc, body)
     _figure(s, "rollcheck", rr.plot(c.result, c.figure),
             "Lean frequency squared and growth rate against speed (as rbcli rollcheck --plot).")
