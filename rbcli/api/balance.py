@@ -145,6 +145,11 @@ class AddedMass:
     mass: float
     at: tuple[float, float, float]
 
+    @property
+    def name(self) -> str:
+        """The point part's name: ``balance A``, ``balance A (position 3)``."""
+        return f"balance {self.plane}" + (f" (position {self.position})" if self.position is not None else "")
+
 
 @dataclass(frozen=True)
 class BalanceResult(Result):
@@ -193,14 +198,6 @@ class BalanceResult(Result):
     forces_after: B.BearingForces | None = None
     iso_check: B.IsoCheck | None = None
     warnings: tuple[str, ...] = ()
-
-    @property
-    def correction_pair(self):
-        """The two masses to add, planes A and B (``rbcli.core.balance.PlaneCorrection``:
-        ``mass`` kg, ``angle_deg``, ``radius`` m, ``z`` m), as JSON ``corrections``: rounded
-        when asked, the exact ones with ``positions``; None without ``planes``."""
-        c = self.ideal if self.position_split is not None else self.installed
-        return None if c is None else c.pair
 
     @property
     def angular_momentum_magnitude(self) -> float | None:
@@ -305,8 +302,7 @@ class BalanceResult(Result):
         if self.installed is None:
             raise ParamError("planes", "balanced_body() needs the correction planes: "
                              "balance(..., {planes}=\"zA,zB\")")
-        points = [(f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
-                   a.mass, a.at) for a in self.added]
+        points = [(a.name, a.mass, a.at) for a in self.added]
         return with_points(self.body, points)
 
     def to_json(self) -> dict[str, Any]:

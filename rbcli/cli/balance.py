@@ -113,7 +113,7 @@ def _apply(res, out_path, apply: str, b, args: dict) -> tuple[str, list[dict]]:
     else:
         state = "rounded correction masses" if fr.rounded else "correction masses"
     check = " ".join(f"{option_name(p)}={shlex.quote(str(args[p]))}" for p in _CHECK
-                     if args[p] is not None and (p, args[p]) != ("angle_sense", "with"))
+                     if p in res.options.given)
     header = [
         f"Written by rbcli balance --apply from {b.source} ({b.name}):",
         f"the body with the two-plane {state} added as point parts",
@@ -125,8 +125,7 @@ def _apply(res, out_path, apply: str, b, args: dict) -> tuple[str, list[dict]]:
     text += res.balanced_body().to_yaml(base_dir=out_path.parent)
     path = check_output(str(out_path), b, force=True)  # checked again as it is written
     outfile.write_atomic(path, text, "--apply", replace=True)
-    rows = [{"name": f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
-             "mass": float(a.mass), "at": [float(x) for x in a.at]} for a in res.added]
+    rows = [{"name": a.name, "mass": float(a.mass), "at": [float(x) for x in a.at]} for a in res.added]
     return str(out_path), rows
 
 
