@@ -244,3 +244,16 @@ def test_rims_in_the_plane_of_the_com_are_unchanged():
     # a radius no part has: nothing to measure
     top = rbcli.load("examples/top.yaml")
     assert wheel_setup(top, parse(top, rim_radius="5 cm")).rim is None
+
+
+def test_what_the_wheel_cannot_take_is_run_s_to_refuse():
+    # parse reads values; a tyre radius above the body's rim radius is known only once the
+    # body is made a wheel (wheel_setup, in run): the command refuses it (exit 2), the report
+    # leaves its rolling section out with the same reason, as for a whirl rotor run refuses
+    hoop = rbcli.load("examples/hoop.yaml")
+    o = parse(hoop, tyre_radius="10 m")
+    with pytest.raises(rbcli.InputError) as e:
+        run(hoop, o)
+    assert e.value.param == "tyre_radius" and "at most the rim radius a = 0.5 m" in e.value.message
+    skipped = rbcli.report(hoop, tyre_radius="10 m").section("rolling-stability").skipped
+    assert skipped == f"rolling stability: not computed: {e.value.message}"
