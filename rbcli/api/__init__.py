@@ -13,8 +13,8 @@ module             public functions (re-exported by ``rbcli``)
 ``load``           ``load``, ``load_text``
 ``inertia``        ``inertia``
 ``principal``      ``principal``
-``balance``        ``balance`` (``field_balance`` too)
-``fieldbalance``   ``field_balance``
+``balance``        ``balance``
+``field``          ``field_balance`` (a package: ``field.service`` and its parts)
 ``precess``        ``precess``
 ``top``            ``top``
 ``gyrocompass``    ``gyrocompass``

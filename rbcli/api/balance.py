@@ -1,4 +1,4 @@
-"""Rotor balance about a shaft: the service behind ``rbcli balance`` (and ``field-balance``).
+"""Rotor balance about a shaft: the service behind ``rbcli balance``.
 
 :func:`balance` reads its options once (:class:`BalanceOptions`: SI numbers or quantity
 strings, the body's defaults and where each value came from) and runs the physics of
@@ -7,9 +7,6 @@ corrections (rounded or on fixed positions) with the residual they leave, bearin
 speed and the ISO 21940-11 check. The result (:class:`BalanceResult`) is frozen, knows its
 JSON (``to_json()``, exactly what ``rbcli balance --json`` prints less ``file``) and its exit
 status (1 when the rotor as given fails the grade).
-
-:func:`field_balance` (trial-weight balancing from vibration readings, no body) lives in
-:mod:`rbcli.api.fieldbalance` and is re-exported here.
 
 The physics and its sources: the physics sheet ``physics/balance.md`` (cited in
 :mod:`rbcli.core.balance`), ISO 21940-11:2016 "Mechanical vibration — Rotor balancing —
@@ -25,9 +22,6 @@ from typing import TYPE_CHECKING, Any
 from rbcli.api import check
 from rbcli.api import options as op
 from rbcli.api.check import Point, Quantity, Values, Vector
-from rbcli.api.fieldbalance import (  # noqa: F401  (re-exported: rbcli.field_balance)
-    FieldBalanceOptions, FieldBalanceResult, field_balance,
-)
 from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus, InputError, Note, ParamError, literal
 
@@ -35,8 +29,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core import balance as B
     from rbcli.model import Body
 
-__all__ = ["AddedMass", "BalanceOptions", "BalanceResult", "balance", "run",
-           "FieldBalanceOptions", "FieldBalanceResult", "field_balance"]
+__all__ = ["AddedMass", "BalanceOptions", "BalanceResult", "balance", "run"]
 
 #: the checker of each keyword argument of :func:`balance` (:mod:`rbcli.api.check`)
 KINDS = {

@@ -93,7 +93,7 @@ def field_balance(
 
     e = c.env()
     if job_schema:
-        from rbcli.io.fieldjob import schema_text
+        from rbcli.io.field.jobfile import schema_text
 
         e.write(schema_text())
         return
@@ -102,8 +102,8 @@ def field_balance(
 
         param = next(p for p in ctx.command.params if p.name == "initial")
         raise MissingParameter(ctx=ctx, param=param)
-    from rbcli.api import fieldbalance as api
-    from rbcli.render import fieldbalance as rf
+    from rbcli.api.field import service as api
+    from rbcli.render.field import tables as rf
     from rbcli.render.units import ShopUnits
 
     out = c.output_format(json_, fmt)
@@ -178,7 +178,7 @@ def _write_sheet(res, su, digits, path, fig_svg, job, force, ctx) -> None:
     from rbcli import __version__
     from rbcli.io import outfile
     from rbcli.render import report as rr
-    from rbcli.render.fieldsheet import job_sheet
+    from rbcli.render.field.sheet import job_sheet
 
     if job is not None:
         from rbcli.io.reader import read_regular

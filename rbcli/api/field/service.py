@@ -3,14 +3,14 @@
 The influence-coefficient method (physics sheet ``physics/balance.md`` §5; the two-plane
 example is Brüel & Kjær application note 17-227, "Static and dynamic balancing of rigid
 rotors"): P correction planes, N >= P readings per run (sensors at one or more speeds),
-one trial run per plane. N = P is solved exactly (:mod:`rbcli.core.balance.field` for
+one trial run per plane. N = P is solved exactly (:mod:`rbcli.core.field.classic` for
 the classic one- and two-plane jobs, whose outputs never change); N > P by least squares
-or min-max (:mod:`rbcli.core.balance.fieldsolve`). A job comes from keyword arguments
+or min-max (:mod:`rbcli.core.field.solve`). A job comes from keyword arguments
 (the command line's shorthand for a one-speed job) or from a job file
-(:mod:`rbcli.io.fieldjob`); stored coefficients (:mod:`rbcli.io.fieldcoeffs`) turn a run
+(:mod:`rbcli.io.field.jobfile`); stored coefficients (:mod:`rbcli.io.field.coefficients`) turn a run
 with the initial readings alone into a trim run. :func:`field_balance` reads the options
 once (:class:`FieldBalanceOptions`) and returns a frozen
-:class:`~rbcli.api.fieldresult.FieldBalanceResult` whose ``to_json()`` is what
+:class:`~rbcli.api.field.result.FieldBalanceResult` whose ``to_json()`` is what
 ``rbcli field-balance --json`` prints. No body is needed.
 """
 
@@ -23,11 +23,11 @@ from typing import Any, TypeAlias
 
 from rbcli.api import check
 from rbcli.api.check import Quantity
-from rbcli.api.fieldresult import (  # noqa: F401  (re-exported: the result types)
+from rbcli.api.field.result import (  # noqa: F401  (re-exported: the result types)
     CONVENTION, SI_UNITS, Conventions, FieldBalanceResult, FieldCorrection, FieldResidual,
     convention_text,
 )
-from rbcli.api.fieldreadings import READING_KINDS, READING_UNITS  # noqa: F401  (re-exported)
+from rbcli.api.field.readings import READING_KINDS, READING_UNITS  # noqa: F401  (re-exported)
 from rbcli.errors import ParamError, literal
 
 __all__ = ["FieldBalanceOptions", "FieldBalanceResult", "field_balance", "run", "Readings"]
@@ -153,7 +153,7 @@ class FieldBalanceOptions:
             with the message the command line prints (``--trial: ...``), located in the job
             file for a job file's value.
         """
-        from rbcli.api import fieldjobs
+        from rbcli.api.field import job as fieldjobs
 
         return fieldjobs.parse(cls, initial=initial, trial=trial, run=run, cumulative=cumulative,
                                trial_radius=trial_radius, radius=radius, job=job, method=method,
@@ -188,7 +188,7 @@ def run(body: None, options: FieldBalanceOptions) -> FieldBalanceResult:
                 if not o.extended:
                     res = _classic(o)
                 else:
-                    from rbcli.api import fieldsolve
+                    from rbcli.api.field import compute as fieldsolve
 
                     res = fieldsolve.solve_job(o)
             except B.BalanceValueError as exc:
@@ -206,11 +206,11 @@ def run(body: None, options: FieldBalanceOptions) -> FieldBalanceResult:
 
 def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
     """The one- or two-plane job as rbcli always solved and reported it."""
-    from rbcli.core import balance as B
+    from rbcli.core.field.classic import field_single_plane, field_two_plane
 
     s = o.scale
     if o.planes == 1:
-        f = B.field_single_plane(o.initial[0], o.runs[0][0], o.trials[0])
+        f = field_single_plane(o.initial[0], o.runs[0][0], o.trials[0])
         return FieldBalanceResult(
             planes=1, initial=o.initial, runs=o.runs,
             corrections=(FieldCorrection("A", f.correction * s, f.correction_trial_on * s,
@@ -219,10 +219,10 @@ def _classic(o: FieldBalanceOptions) -> FieldBalanceResult:
             det=None, ill_conditioned=False, small_response=(bool(f.small_response),),
             residual_values=(f.predicted_residual,), cumulative=False,
             reading_kind=o.reading_kind, warnings=f.warnings)
-    f2 = B.field_two_plane(o.initial, o.runs[0], o.runs[1], o.trials[0], o.trials[1],
+    f2 = field_two_plane(o.initial, o.runs[0], o.runs[1], o.trials[0], o.trials[1],
                            cumulative=o.cumulative)
-    from rbcli.api.fieldsolve import significance_warning
-    from rbcli.core.balance.significance import plane_significance
+    from rbcli.api.field.compute import significance_warning
+    from rbcli.core.field.significance import plane_significance
 
     sig = plane_significance(f2.influence)  # Darlow's test: a warning when it flags a plane
     warnings = tuple(f2.warnings) + tuple(significance_warning("AB"[j], float(sig.factors[j]))

@@ -2,9 +2,9 @@
 
 A job comes either from keyword arguments (the command line: ``initial``, ``trial``,
 ``run`` — a one-speed job whose sensors are numbered 1..N and planes lettered A, B, ...)
-or from a job file (:func:`rbcli.io.fieldjob.load_job`), never both; the other settings
+or from a job file (:func:`rbcli.io.field.jobfile.load_job`), never both; the other settings
 (method, weights, rounding, conventions, measure, severity, coefficients, speed) may come
-from either, but not from both. Every reading is read by :mod:`rbcli.api.fieldreadings`;
+from either, but not from both. Every reading is read by :mod:`rbcli.api.field.readings`;
 then all of them are of one kind, converted to one measure, and their phases brought into
 the sense of the trial angles; stored coefficients are checked against the job and
 converted the same way.
@@ -14,10 +14,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from rbcli.api import fieldreadings as fr
+from rbcli.api.field import readings as fr
 from rbcli.api import options as op
 from rbcli.errors import InputError, Location, ParamError, literal
-from rbcli.io.fieldjob import CHOICES
+from rbcli.io.field.jobfile import CHOICES
 
 __all__ = ["parse", "PLANE_LETTERS"]
 
@@ -212,7 +212,7 @@ def _from_job(path: Any, *, initial, trial, run, cumulative, trial_radius, radiu
               mass_step, angle_step, positions, phase, angle_sense, rotation, measure, severity,
               coefficients, speed) -> dict:
     """The job a job file describes, with the command line's settings that it leaves open."""
-    from rbcli.io.fieldjob import load_job
+    from rbcli.io.field.jobfile import load_job
 
     for value, param in ((initial, "initial"), (trial, "trial"), (run, "run")):
         if value is not None:
@@ -374,8 +374,8 @@ def _finish(cls: type, s: dict, *, suggest: bool, rotor_mass, rotor, bearing_loa
 def _coefficients(s: dict, kind: str | None, measure: str | None, phase, sense, rotation, n: int,
                   notes: list[str]):
     """Stored coefficients for this job: checked and brought into its units and senses."""
-    from rbcli.core.balance.severity import convert_measure
-    from rbcli.io.fieldcoeffs import load_coefficients
+    from rbcli.core.field.severity import convert_measure
+    from rbcli.io.field.coefficients import load_coefficients
 
     path = str(s["coefficients"])
     with op.naming("coefficients"):
@@ -455,10 +455,10 @@ def _coefficients(s: dict, kind: str | None, measure: str | None, phase, sense, 
 
 
 def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any:
-    """What sizes the trial masses (see :func:`rbcli.core.balance.fieldfit.suggest_trial`)."""
-    from rbcli.api.fieldbalance import TrialRequest
+    """What sizes the trial masses (see :func:`rbcli.core.field.fit.suggest_trial`)."""
+    from rbcli.api.field.service import TrialRequest
     from rbcli.core.balance.common import STANDARD_GRAVITY
-    from rbcli.core.balance.fieldfit import TRIAL_FRACTION, static_bearing_loads
+    from rbcli.core.field.fit import TRIAL_FRACTION, static_bearing_loads
 
     speeds = [w for _, w in s["speeds"] if w is not None]
     if not speeds:

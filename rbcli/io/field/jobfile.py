@@ -3,7 +3,7 @@ located at ``file:line:col``.
 
 A job names its sensors, planes (radius, positions), speeds and runs; the readings and
 trial masses stay located texts (``"6.2 mm/s@112"``, ``"50 g@0"``) that
-:mod:`rbcli.api.fieldbalance` reads as the command line reads ``--initial`` and
+:mod:`rbcli.api.field.service` reads as the command line reads ``--initial`` and
 ``--trial``, so a bad reading is reported at its place in the file. The format::
 
     rbcli: 1
@@ -40,7 +40,7 @@ from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 
-SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "fieldjob.schema.json"
+SCHEMA_PATH = Path(__file__).resolve().parents[2] / "data" / "fieldjob.schema.json"
 
 #: a job file is refused above this size (bytes): a job holds a few hundred readings
 MAX_JOB_BYTES = 4 * 1024 * 1024

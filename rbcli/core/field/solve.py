@@ -11,8 +11,8 @@ converts them first). The linear model of a rotor on linear supports is
 correction ``W`` (kg at the trial radius, to ADD) from :func:`solve`:
 
 * ``exact`` — N = P: ``alpha W = -V0`` (``W = -V0/alpha`` for one plane, as
-  :func:`rbcli.core.balance.field.field_single_plane` computes it, else LAPACK's LU solve,
-  as :func:`rbcli.core.balance.field.field_two_plane`: the same arithmetic, so the same
+  :func:`rbcli.core.field.classic.field_single_plane` computes it, else LAPACK's LU solve,
+  as :func:`rbcli.core.field.classic.field_two_plane`: the same arithmetic, so the same
   bits).
 * ``least-squares`` — N > P: minimise ``sum_k (w_k |r_k|)^2`` over the residuals
   ``r = V0 + alpha W`` with weights ``w_k`` (Goodman 1964, "A least-squares method for

@@ -512,10 +512,10 @@ class FieldBalanceResult(Result):
 
     def coefficients_document(self) -> dict[str, Any]:
         """The influence coefficients as the file ``--save-coefficients`` writes (see
-        :mod:`rbcli.io.fieldcoeffs` for the format): exact (re, im) per reading and plane,
+        :mod:`rbcli.io.field.coefficients` for the format): exact (re, im) per reading and plane,
         with their units, speeds, sensor and plane names and conventions."""
         from rbcli import __version__
-        from rbcli.io.fieldcoeffs import FORMAT, VERSION
+        from rbcli.io.field.coefficients import FORMAT, VERSION
 
         rows = self.row_names()
         speeds = list(self.run_speeds) or [("", None)]

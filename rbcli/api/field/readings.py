@@ -239,7 +239,7 @@ def common_measure(rs: list[Reading], default: str | None, want: str | None) -> 
         a reading with a measure and one without, and no default: which measure the other
         is in is a guess (``measure``).
     """
-    from rbcli.core.balance.severity import convert_measure
+    from rbcli.core.field.severity import convert_measure
 
     stated = [r for r in rs if r.measure is not None]
     bare = [r for r in rs if r.measure is None]

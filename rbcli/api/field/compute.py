@@ -1,19 +1,19 @@
 """The extended field-balancing job: solve, fit, judge and size (the work of
-:func:`rbcli.api.fieldbalance.run` for anything beyond the classic one- and two-plane job).
+:func:`rbcli.api.field.service.run` for anything beyond the classic one- and two-plane job).
 
-Square one- and two-plane jobs still go through :mod:`rbcli.core.balance.field` (the same
-bits as the classic output); everything else through :mod:`rbcli.core.balance.fieldsolve`.
+Square one- and two-plane jobs still go through :mod:`rbcli.core.field.classic` (the same
+bits as the classic output); everything else through :mod:`rbcli.core.field.solve`.
 Then: the corrections at their radii, the masses as fitted
-(:mod:`rbcli.core.balance.fieldfit`) and the readings they leave, Darlow's significance
-(:mod:`rbcli.core.balance.significance`), the ISO 20816-3 zones
-(:mod:`rbcli.core.balance.severity`) and a trial mass to start with.
+(:mod:`rbcli.core.field.fit`) and the readings they leave, Darlow's significance
+(:mod:`rbcli.core.field.significance`), the ISO 20816-3 zones
+(:mod:`rbcli.core.field.severity`) and a trial mass to start with.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from rbcli.api.fieldresult import (
+from rbcli.api.field.result import (
     Conventions, FieldBalanceResult, FieldCorrection, FieldResidual, Fitted, FittedMass, FittedPlane,
     Severity, SeverityRow, SuggestedTrial, convention_text, deg,
 )
@@ -25,10 +25,10 @@ def solve_job(o: Any) -> FieldBalanceResult:
     """The result of an extended job ``o`` (a :class:`FieldBalanceOptions`)."""
     import numpy as np
 
-    from rbcli.core.balance import field as fld
-    from rbcli.core.balance import fieldsolve as fs
+    from rbcli.core.field import classic as fld
+    from rbcli.core.field import solve as fs
     from rbcli.core.balance.common import FIELD_COND_WARN
-    from rbcli.core.balance.significance import SIGNIFICANCE_LIMIT, plane_significance
+    from rbcli.core.field.significance import SIGNIFICANCE_LIMIT, plane_significance
 
     conv = None
     if o.phase is not None or o.angle_sense is not None or o.rotation is not None:
@@ -129,7 +129,7 @@ def solve_job(o: Any) -> FieldBalanceResult:
 
 def significance_warning(plane: str, factor: float) -> str:
     """The warning for a plane Darlow's test flags."""
-    from rbcli.core.balance.significance import SIGNIFICANCE_LIMIT
+    from rbcli.core.field.significance import SIGNIFICANCE_LIMIT
 
     return (f"plane {plane} is ill-conditioned by Darlow's test: its significance factor {factor:.3g} is "
             f"at or below {SIGNIFICANCE_LIMIT:g} (it moves the readings in little that the other planes "
@@ -137,7 +137,7 @@ def significance_warning(plane: str, factor: float) -> str:
 
 
 def _unit(o: Any) -> str:
-    from rbcli.api.fieldresult import SI_UNITS
+    from rbcli.api.field.result import SI_UNITS
 
     return SI_UNITS[o.reading_kind]
 
@@ -157,7 +157,7 @@ def _residual(row: tuple[str, str], r: complex, v0: complex, flipped: bool) -> F
 def _fitted(o: Any, corrections: list[FieldCorrection], scales: list[float], alpha: Any, V0: Any,
             rows: list[tuple[str, str]]) -> Fitted | None:
     """The corrections rounded or split as asked, and the readings they leave."""
-    from rbcli.core.balance.fieldfit import fit_plane
+    from rbcli.core.field.fit import fit_plane
 
     positions = list(o.positions) + [None] * (len(corrections) - len(o.positions))
     if o.mass_step is None and o.angle_step is None and not any(positions):
@@ -170,7 +170,7 @@ def _fitted(o: Any, corrections: list[FieldCorrection], scales: list[float], alp
                                   abs(fp.net), deg(fp.net) if fp.net != 0 else 0.0, npos))
     nets = [complex(pl.mass * _unit_phasor(pl.angle_deg)) for pl in planes]
     # the fitted masses at the correction radius, as trial-radius masses: net / scale
-    from rbcli.core.balance.fieldsolve import matvec
+    from rbcli.core.field.solve import matvec
 
     r = V0 + matvec(alpha, [nets[j] / scales[j] for j in range(len(nets))])
     res = tuple(_residual(rows[k], r[k], V0[k], o.flipped) for k in range(len(rows)))
@@ -186,14 +186,14 @@ def _unit_phasor(angle_deg: float) -> complex:
 
 def _fitted_resid(o: Any, fitted: Fitted, scales: list[float], alpha: Any, V0: Any) -> list[complex]:
     nets = [pl.mass * _unit_phasor(pl.angle_deg) for pl in fitted.planes]
-    from rbcli.core.balance.fieldsolve import matvec
+    from rbcli.core.field.solve import matvec
 
     return list(V0 + matvec(alpha, [nets[j] / scales[j] for j in range(len(nets))]))
 
 
 def _severity(o: Any, V0: Any, after: Any, rows: list[tuple[str, str]], after_is: str) -> Severity:
     """ISO 20816-3 zones of each reading before and after (r.m.s. velocity)."""
-    from rbcli.core.balance.severity import to_velocity, zone, zone_boundaries
+    from rbcli.core.field.severity import to_velocity, zone, zone_boundaries
 
     std, group, foundation = o.severity
     ns = max(len(o.sensors), 1)
@@ -208,7 +208,7 @@ def _severity(o: Any, V0: Any, after: Any, rows: list[tuple[str, str]], after_is
 
 
 def _suggestions(o: Any, alpha: Any, V0: Any) -> tuple[SuggestedTrial, ...]:
-    from rbcli.core.balance.fieldfit import suggest_trial
+    from rbcli.core.field.fit import suggest_trial
 
     req = o.suggest
     if req is None:

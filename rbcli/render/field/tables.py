@@ -16,7 +16,7 @@ from rbcli.render.fmt import num
 from rbcli.render.text import Doc
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.fieldresult import FieldBalanceResult
+    from rbcli.api.field.result import FieldBalanceResult
 
 #: how the tables show readings of each kind: (SI per display unit, display unit)
 READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
