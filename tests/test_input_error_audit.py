@@ -31,7 +31,6 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 #: ValueErrors only). One more handler in the function changes the count: review it.
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("api/balance.py", "_positions"): (1, "int() of the value"),
-    ("api/field/job.py", "parse"): (1, "int(group)"),
     ("api/load.py", "_units"): (1, "io.body.default_units: plain ValueErrors (it turns UnitError into one)"),
     ("api/precess.py", "_count"): (1, "int() of the text"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),

@@ -57,7 +57,9 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
     function receives ``args``: the table's values as typed (None: not given), by parameter.
 
     Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``),
-    its help the table's text with parameters spelled as this command's options."""
+    its help the table's text with parameters spelled as this command's options; a
+    parameter of ``form`` "argument" is a positional argument, of "options" an option given
+    once per item (a list; not given: None)."""
     import inspect
 
     from rbcli.cli.app import app
@@ -71,15 +73,16 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         opts = []
         for p in table:
             decls = [d for d in (p.short, p.flag or spelled(p.name)) if d]
-            kind = {"count": int, "flag": bool}.get(p.kind, str)
-            info = typer.Option(p.default, *decls, help=spell(p.help, spelled),
-                                metavar=p.metavar, show_default=p.default is not None)
+            kind = list[str] if p.form == "options" else {"count": int, "flag": bool}.get(p.kind, str)
+            how = dict(help=spell(p.help, spelled), metavar=p.metavar, show_default=p.default is not None)
+            info = (typer.Argument(p.default, **how) if p.form == "argument"
+                    else typer.Option(p.default, *decls, **how))
             opts.append(inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=info,
                                           annotation=kind))
-        names = [p.name for p in table]
+        names = [(p.name, p.form == "options") for p in table]
 
         def run(**kw):
-            args = {n: kw.pop(n) for n in names}
+            args = {n: kw.pop(n) or None if many else kw.pop(n) for n, many in names}
             return fn(args=args, **kw)
 
         run.__name__, run.__qualname__, run.__module__ = fn.__name__, fn.__qualname__, fn.__module__

@@ -1,542 +1,354 @@
-"""Reading a field-balancing job once: :meth:`FieldBalanceOptions.parse`'s work.
+"""A field-balancing job, read once: what :func:`rbcli.api.field.service.parse` returns.
 
-A job comes either from keyword arguments (the command line: ``initial``, ``trial``,
-``run`` — a one-speed job whose sensors are numbered 1..N and planes lettered A, B, ...)
-or from a job file (:func:`rbcli.io.field.jobfile.load_job`), never both; the other settings
-(method, weights, rounding, conventions, measure, severity, coefficients, speed) may come
-from either, but not from both. Every reading is read by :mod:`rbcli.api.field.readings`;
-then all of them are of one kind, converted to one measure, and their phases brought into
-the sense of the trial angles; stored coefficients are checked against the job and
-converted the same way.
+A job comes either from the parameters (the command line's shorthand for a one-speed job:
+``initial``, ``trial``, ``run``; sensors numbered 1..N, planes lettered A, B, ...) or from
+a job file (:func:`rbcli.io.field.jobfile.load_job`), never both. A job file's settings are
+the parameters of :data:`rbcli.api.commands.FIELD_BALANCE` (method, weights, rounding,
+conventions, measure, severity, coefficients, speed): a setting comes from the file or from
+the parameters, and one given in both is refused. Every reading is read by
+:mod:`rbcli.api.field.readings`; then all of them are of one kind, in one measure, with
+their phases in the sense of the trial angles; stored coefficients are checked against the
+job and converted the same way (:mod:`rbcli.api.field.coefficients`); a trial mass to start
+with is sized from the rotor (:mod:`rbcli.api.field.trial`).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass, replace
 from typing import Any
 
-from rbcli.api.field import readings as fr
 from rbcli.api import options as op
+from rbcli.api.field import coefficients, trial
+from rbcli.api.field.readings import (
+    Reading, at, common_measure, one_kind, reading, readings, trial_mass,
+)
+from rbcli.api.params import Options
 from rbcli.errors import InputError, Location, ParamError, literal
-from rbcli.io.field.jobfile import CHOICES
+from rbcli.io.field import plane_names
+from rbcli.io.field.jobfile import JobRotor, Text, load_job
 
-__all__ = ["parse", "PLANE_LETTERS"]
+__all__ = ["Job", "make"]
 
-PLANE_LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+#: the parameters a one- or two-plane job may be given with and keep the output rbcli always
+#: printed for it (anything else asks for the extended output)
+CLASSIC = {"initial", "trial", "run", "cumulative", "trial_radius", "radius", "suggest_trial",
+           "rotor_mass", "rotor", "bearing_load", "trial_fraction"}
 
-
-def _choice(value: Any, param: str, key: str | None = None) -> str | None:
-    if value is None:
-        return None
-    allowed = CHOICES[key or param]
-    if not isinstance(value, str) or value not in allowed:
-        ways = ", ".join(allowed[:-1]) + (" or " if len(allowed) > 1 else "") + allowed[-1]
-        raise ParamError(param, f"must be {ways}, not '{literal(value)}'")
-    return value
-
-
-def _twice(param: str, where: Location) -> ParamError:
-    return ParamError(param, f"given twice: on the command line and in the job file ({literal(where)}); give it once")
+#: the settings a job file gives as the parameters do: parameter -> the job file's key
+SETTINGS = {"cumulative": "cumulative", "weights": "sensors", "positions": "planes",
+            "speed": "speeds", "phase": "conventions", "angle_sense": "conventions",
+            "rotation": "conventions", "severity": "severity", "coefficients": "coefficients",
+            "method": "method", "mass_step": "mass_step", "angle_step": "angle_step",
+            "measure": "readings"}
 
 
-def _job_value(job: Any, attr: str, key: str, value: Any, param: str) -> Any:
-    """The command line's ``value`` or the job file's ``attr``, never both."""
-    jv = getattr(job, attr)
-    if value is not None and value is not False and jv is not None:
-        raise _twice(param, job.keys.get(key, Location(job.source)))
-    return jv if jv is not None else value
+@dataclass(frozen=True)
+class Job:
+    """A field-balancing job, read and checked.
+
+    Attributes
+    ----------
+    options : Options — the parameters (:data:`rbcli.api.commands.FIELD_BALANCE`), a job
+        file's settings among them; ``phase``, ``angle_sense`` and ``rotation`` those the
+        solve uses (a coefficients file's when the job says none)
+    name : str | None — the job file's name
+    sensors, speeds : the readings' sensors (names) and speeds ((name, rad/s or None)); a
+        reading k is sensor ``k % len(sensors)`` at speed ``k // len(sensors)``
+    plane_names : tuple of str
+    plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius), m
+    positions : tuple of (int | None) — per plane, the positions a correction is split onto
+    plane_at : tuple of (float | None) — per plane, its place along the shaft (m)
+    rotor : JobRotor | None — the job file's rotor (what sizes a trial mass)
+    radii : (float, float) | None — m, the command line's (trial radius, correction radius)
+    initial : tuple of complex — the readings without trial, N of them (reading unit, in
+        :attr:`measure`, phases in the sense of the trial angles)
+    runs : tuple of tuple of complex — the readings of each trial run
+    trials : tuple of complex — trial mass (kg) e^{i angle}, one per plane
+    reading_kind : str | None — "displacement", "velocity" or "acceleration" (readings in m,
+        m/s or m/s²), None for bare readings (a relative scale)
+    measure : str | None — the measure every amplitude is in (None: unsaid)
+    measures_converted : tuple of (str, str, int) — (from, to, how many readings)
+    gravity : bool — a reading's ``g`` was read as standard gravity
+    weights : tuple of float | None — one per reading
+    alpha : tuple of tuple of complex | None — stored influence coefficients (a trim run),
+        per kg, in this job's measure and angle sense
+    flipped : bool — the phases were mirrored into the angles' sense
+    suggest : TrialRequest | None — what sizes a trial mass (``suggest_trial``)
+    notes : tuple of str — what was converted on the way
+    classic : bool — given with the classic parameters only (:data:`CLASSIC`)
+    extended : bool — anything beyond the classic one- or two-plane job (the output then
+        has ``method``, ``residuals``...)
+    """
+
+    options: Options
+    sensors: tuple[str, ...]
+    speeds: tuple[tuple[str, float | None], ...]
+    plane_names: tuple[str, ...]
+    plane_radii: tuple[tuple[float, float] | None, ...]
+    positions: tuple[int | None, ...]
+    plane_at: tuple[float | None, ...]
+    trials: tuple[complex, ...]
+    name: str | None = None
+    rotor: JobRotor | None = None
+    radii: tuple[float, float] | None = None
+    initial: tuple[complex, ...] = ()
+    runs: tuple[tuple[complex, ...], ...] = ()
+    reading_kind: str | None = None
+    measure: str | None = None
+    measures_converted: tuple[tuple[str, str, int], ...] = ()
+    gravity: bool = False
+    weights: tuple[float, ...] | None = None
+    alpha: tuple[tuple[complex, ...], ...] | None = None
+    flipped: bool = False
+    suggest: trial.TrialRequest | None = None
+    notes: tuple[str, ...] = ()
+    classic: bool = False
+    extended: bool = True
+
+    @property
+    def planes(self) -> int:
+        return len(self.plane_names)
+
+    @property
+    def severity(self) -> tuple[str, int, str] | None:
+        """(standard, group, foundation) of ``severity``, or None."""
+        o = self.options
+        return None if o.severity is None else (o.severity, int(o.group), o.foundation)
+
+    @property
+    def inputs(self) -> tuple[str, ...]:
+        """The files the job reads (job file, coefficients, rotor body): no output may
+        replace them."""
+        o = self.options
+        body = self.rotor.body if self.rotor is not None else None
+        return tuple(str(x) for x in (o.job, o.coefficients, o.rotor, body) if x is not None)
 
 
-def parse(cls: type, *, initial, trial, run, cumulative, trial_radius, radius, job, method, weights,
-          mass_step, angle_step, positions, phase, angle_sense, rotation, measure, severity, group,
-          foundation, coefficients, suggest_trial, rotor_mass, rotor, bearing_load, trial_fraction,
-          speed, full=False) -> Any:
-    method = _choice(method, "method")
-    phase = _choice(phase, "phase")
-    angle_sense = _choice(angle_sense, "angle_sense")
-    rotation = _choice(rotation, "rotation")
-    measure = _choice(measure, "measure")
-    if severity is not None:
-        _choice(severity, "severity", "standard")
-    if (group is not None or foundation is not None) and severity is None:
+def make(o: Options) -> Job:
+    """The job of the parameters ``o`` (read by :func:`rbcli.api.params.read`).
+
+    Raises
+    ------
+    rbcli.InputError
+        with the message the command line prints (``--trial: ...``), located in the job
+        file for a job file's value.
+    """
+    if (o.group is not None or o.foundation is not None) and o.severity is None:
         raise ParamError("severity", "{group} and {foundation} go with {severity} iso20816-3")
-    sev = None
-    if severity is not None:
-        if group is None or foundation is None:
-            raise ParamError("severity", "needs the machine {group} (1 or 2) and its {foundation} (rigid or flexible)")
-        try:
-            g = int(group)
-        except (TypeError, ValueError):
-            g = -1
-        if g not in (1, 2) or str(group).strip() not in ("1", "2"):
-            raise ParamError("group", f"must be 1 (large machines, above 300 kW) or 2 (15 kW to 300 kW), "
-                                      f"not '{literal(group)}'")
-        sev = ("iso20816-3", g, _choice(foundation, "foundation"))
-    omega = None
-    if speed is not None:
-        with op.naming("speed"):
-            omega = op.positive(op.quantity(speed, "angular_speed", "speed"), "speed", "the speed", "rad/s")
-    step_m = None
-    if mass_step is not None:
-        with op.naming("mass_step"):
-            step_m = op.positive(op.quantity(mass_step, "mass", "mass_step", bare="kg"), "mass_step",
-                                 "the mass step", "kg")
-    step_a = None
-    if angle_step is not None:
-        with op.naming("angle_step"):
-            step_a = op.positive(op.degrees(angle_step, "angle_step"), "angle_step", "the angle step", "deg")
-        if step_a > 360.0:
-            raise ParamError("angle_step", "must not exceed 360 degrees")
-    npos = None
-    if positions is not None:
-        if isinstance(positions, bool) or not isinstance(positions, int) or not 3 <= positions <= 100_000:
-            raise ParamError("positions", f"must be a whole number from 3 to 100000 (holes or blades), "
-                                          f"not {literal(positions)}")
-        npos = int(positions)
-
-    if job is not None:
-        spec = _from_job(job, initial=initial, trial=trial, run=run, cumulative=cumulative,
-                         trial_radius=trial_radius, radius=radius, method=method, weights=weights,
-                         mass_step=step_m, angle_step=step_a, positions=npos, phase=phase,
-                         angle_sense=angle_sense, rotation=rotation, measure=measure, severity=sev,
-                         coefficients=coefficients, speed=omega)
-    else:
-        spec = _from_options(initial=initial, trial=trial, run=run, cumulative=cumulative,
-                             trial_radius=trial_radius, radius=radius, method=method, weights=weights,
-                             mass_step=step_m, angle_step=step_a, positions=npos, phase=phase,
-                             angle_sense=angle_sense, rotation=rotation, measure=measure, severity=sev,
-                             coefficients=coefficients, speed=omega, suggest=bool(suggest_trial))
-    if full:
-        spec["classic_options"] = False
-    return _finish(cls, spec, suggest=bool(suggest_trial), rotor_mass=rotor_mass, rotor=rotor,
-                   bearing_load=bearing_load, trial_fraction=trial_fraction)
+    if o.severity is not None and (o.group is None or o.foundation is None):
+        raise ParamError("severity", "needs the machine {group} (1 or 2) and its {foundation} "
+                                     "(rigid or flexible)")
+    job = from_file(o) if o.job is not None else from_options(o)
+    if job.options.coefficients is not None:
+        job = coefficients.apply(job)
+    return _finish(job)
 
 
 # ----------------------------------------------------------------------------- two sources
 
 
-def _from_options(*, initial, trial, run, cumulative, trial_radius, radius, method, weights, mass_step,
-                  angle_step, positions, phase, angle_sense, rotation, measure, severity, coefficients,
-                  speed, suggest) -> dict:
-    """The job the keyword arguments describe (one speed)."""
-    trials_t = _texts(trial, "trial") if trial is not None else []
-    runs_t = _texts(run, "run") if run is not None else []
-    if coefficients is not None and (trials_t or runs_t):
+def from_options(o: Options) -> Job:
+    """The job the parameters describe (one speed)."""
+    trials_t, runs_t = _texts(o.trial), _texts(o.run)
+    _check_options(o, trials_t, runs_t)
+    initial = [] if o.initial is None else readings(",".join(_texts(o.initial)), "initial", None)
+    n, p = len(initial), len(trials_t)
+    _check_counts(o, n, p, len(runs_t))
+    runs = [readings(r, "run", n, what="one per sensor, as {initial} has") for r in runs_t]
+    with op.naming("trial"):
+        trials = tuple(trial_mass(t, "trial") for t in trials_t)
+    pair = None if o.trial_radius is None else \
+        (o.trial_radius, o.trial_radius if o.radius is None else o.radius)
+    # a trial suggestion alone: plane A
+    names = plane_names(p) if p or o.coefficients is not None else ("A",)
+    job = Job(o, tuple(str(k + 1) for k in range(n)), (("", o.speed),), names,
+              (pair,) * len(names), (o.positions,) * len(names), (None,) * p, trials,
+              radii=pair if p > 0 else None, weights=_weights(o.weights, n),
+              classic=set(o.given) - {"full"} <= CLASSIC and not o.full)
+    return _measured(job, initial, runs)
+
+
+def _texts(v: Any) -> list[str]:
+    """One value or several (a run per plane; a run may itself be a sequence of readings)."""
+    if v is None:
+        return []
+    return [v] if isinstance(v, str) else [x if isinstance(x, str) else ",".join(x) for x in v]
+
+
+def _check_options(o: Options, trials: list[str], runs: list[str]) -> None:
+    """What the parameters must say together, before a reading is read."""
+    if o.coefficients is not None and (trials or runs):
         raise ParamError("trial", "a trim run from {coefficients} takes the initial readings alone; "
                                   "the trial runs are in the file")
-    if initial is None:
-        if trials_t or runs_t or coefficients is not None or not suggest:
-            raise ParamError("initial", "required: the readings without trial masses, e.g. '6.0@30' or "
-                                        "'170@112,53@78' (one per sensor)")
-        readings0: list[fr.Reading] = []
-    else:
-        if not isinstance(initial, str):
-            initial = ",".join(_texts(initial, "initial"))
-        readings0 = fr.readings(initial, "initial", None)
-    n = len(readings0)
-    p = len(trials_t)
-    if coefficients is None and initial is not None:
+    if o.initial is None and (trials or runs or o.coefficients is not None or not o.suggest_trial):
+        raise ParamError("initial", "required: the readings without trial masses, e.g. '6.0@30' or "
+                                    "'170@112,53@78' (one per sensor)")
+
+
+def _check_counts(o: Options, n: int, p: int, runs: int) -> None:
+    """Runs, planes and readings that go together."""
+    if o.coefficients is None and o.initial is not None:
         if p == 0:
             raise ParamError("trial", "required: one trial mass per plane, e.g. '10 g@0' (or "
                                       "{coefficients} FILE for a trim run)")
-        if len(runs_t) != p:
-            raise ParamError("run", f"give one run per trial ({p}), not {len(runs_t)}")
+        if runs != p:
+            raise ParamError("run", f"give one run per trial ({p}), not {runs}")
         if n < p:
             raise ParamError("initial", f"{p} planes need at least {p} readings per run (one per "
-                                        f"sensor), got {n} in '{literal(initial)}'")
-    elif runs_t and not trials_t:
+                                        f"sensor), got {n} in '{literal(','.join(_texts(o.initial)))}'")
+    elif runs and not p:
         raise ParamError("run", "needs its {trial}")
-    if cumulative and p < 2 and coefficients is None:
+    if o.cumulative and p < 2 and o.coefficients is None:
         raise ParamError("cumulative", "only for two planes or more")
-    if (trial_radius is None) != (radius is None) and coefficients is None and p > 0:
+    if (o.trial_radius is None) != (o.radius is None) and o.coefficients is None and p > 0:
         raise InputError("{radius} and {trial_radius} go together (the corrections move from the "
                          "trial radius to {radius})", param="radius")
-    if trial_radius is not None and coefficients is not None:
+    if o.trial_radius is not None and o.coefficients is not None:
         raise ParamError("trial_radius", "the coefficients file has the trial radius; give the "
                                          "correction {radius} alone")
-    rt = rc = None
-    if trial_radius is not None:
-        with op.naming("trial_radius"):
-            rt = op.positive(op.quantity(trial_radius, "length", "trial_radius"), "trial_radius",
-                             "the trial radius", "m")
-    if radius is not None:
-        with op.naming("radius"):
-            rc = op.positive(op.quantity(radius, "length", "radius"), "radius", "the correction radius", "m")
-    runs = [fr.readings(r, "run", n, what="one per sensor, as {initial} has") for r in runs_t]
-    with op.naming("trial"):
-        trials = [fr.trial(t, "trial") for t in trials_t]
-    w = None
-    if weights is not None:
-        w = _weights(weights, n)
-    names = [PLANE_LETTERS[j] if j < 26 else str(j + 1) for j in range(p)]
-    pair = None if rt is None else (rt, rc if rc is not None else rt)
-    if p == 0 and coefficients is None:  # a trial suggestion alone: one plane
-        names = ["A"]
-    return dict(
-        job=None, name=None, sensors=[str(k + 1) for k in range(n)], speeds=[("", speed)],
-        plane_names=names, plane_radii=[pair] * len(names), radii=pair if p > 0 else None,
-        correction_radius=rc, positions=[positions] * len(names), positions_all=positions, initial=readings0, runs=runs, trials=trials,
-        cumulative=bool(cumulative), method=method, weights=w, mass_step=mass_step,
-        angle_step=angle_step, phase=phase, angle_sense=angle_sense, rotation=rotation,
-        measure=measure, severity=severity, coefficients=coefficients, rotor=None, plane_at=[None] * p,
-        classic_options=all(v is None for v in (method, weights, mass_step, angle_step, positions, phase,
-                                                 angle_sense, rotation, measure, severity, coefficients,
-                                                 speed)),
-    )
 
 
-def _texts(v: Any, param: str) -> list[str]:
-    """One value or several (a run per plane); a run may itself be a list of readings."""
-    if isinstance(v, str):
-        return [v]
-    if isinstance(v, (list, tuple)):
-        return [x if isinstance(x, str) else ",".join(str(y) for y in x) if isinstance(x, (list, tuple))
-                else str(x) for x in v]
-    raise TypeError(f"{param}: expected a string or a list of strings, got {type(v).__name__}")
-
-
-def _weights(weights: Any, n: int) -> list[float]:
-    if isinstance(weights, str):
-        parts = [x.strip() for x in weights.split(",")]
-    else:
-        parts = list(weights) if isinstance(weights, (list, tuple)) else [weights]
+def _weights(weights: Any, n: int) -> tuple[float, ...] | None:
+    """``weights`` (``"1,2,1"`` or numbers), one per reading."""
+    if weights is None:
+        return None
+    parts = [x.strip() for x in weights.split(",")] if isinstance(weights, str) else \
+        list(weights) if isinstance(weights, tuple) else [weights]
     with op.naming("weights"):
         vals = [op.quantity(x, "dimensionless", "weights") for x in parts]
     if len(vals) != n:
         raise ParamError("weights", f"give one weight per reading ({n}), not {len(vals)}")
-    if not all(v > 0 and v < float("inf") for v in vals):
+    if not all(0 < v < float("inf") for v in vals):
         raise ParamError("weights", "weights must be positive finite numbers")
-    return vals
+    return tuple(vals)
 
 
-def _from_job(path: Any, *, initial, trial, run, cumulative, trial_radius, radius, method, weights,
-              mass_step, angle_step, positions, phase, angle_sense, rotation, measure, severity,
-              coefficients, speed) -> dict:
-    """The job a job file describes, with the command line's settings that it leaves open."""
-    from rbcli.io.field.jobfile import load_job
-
-    for value, param in ((initial, "initial"), (trial, "trial"), (run, "run")):
-        if value is not None:
+def from_file(o: Options) -> Job:
+    """The job a job file describes, with the parameters' settings that it leaves open."""
+    for param in ("initial", "trial", "run"):
+        if getattr(o, param) is not None:
             raise ParamError(param, "the job file holds the readings; give the {job} file or the "
                                     "readings on the command line, not both")
-    for value, param in ((trial_radius, "trial_radius"), (radius, "radius")):
-        if value is not None:
+    for param in ("trial_radius", "radius"):
+        if getattr(o, param) is not None:
             raise ParamError(param, "give the radii in the job file's planes (radius, correction_radius)")
-    job = load_job(str(path))
-    if cumulative and job.cumulative is not None:
-        raise _twice("cumulative", job.keys["cumulative"])
-    if weights is not None and job.weights is not None:
-        raise _twice("weights", job.keys["sensors"])
-    if positions is not None and any(p.positions is not None for p in job.planes):
-        raise _twice("positions", job.keys["planes"])
-    if speed is not None and any(s.speed is not None for s in job.speeds):
-        raise _twice("speed", job.keys["speeds"])
-    if speed is not None and len(job.speeds) > 1:
-        raise ParamError("speed", "the job has several speeds: give each its speed in the job file")
-    conv = {}
-    for attr, value in (("phase", phase), ("angle_sense", angle_sense), ("rotation", rotation)):
-        conv[attr] = _job_value(job, attr, "conventions", value, attr)
-    s_sev = _job_value(job, "severity", "severity", severity, "severity")
-    coeff = _job_value(job, "coefficients", "coefficients", coefficients, "coefficients")
-    if coeff is not None and job.trials:
+    job = load_job(str(o.job))
+    o = _settings(o, job)
+    if o.coefficients is not None and job.trials:
         raise ParamError("coefficients", "a trim run takes the initial readings alone; the job file has "
                                          "trial runs")
-    units_mass = job.units.get("mass", "g")
-    initial_r: list[fr.Reading] = []
-    if job.initial is not None:
-        for per_speed in job.initial:
-            for t in per_speed:
-                initial_r.append(_reading(t, "initial"))
-    runs = []
-    trials = []
-    for tr in job.trials:
-        runs.append([_reading(t, "run") for per_speed in tr.readings for t in per_speed])
-        try:
-            trials.append(fr.trial(tr.mass.text, "trial", bare=units_mass))
-        except InputError as exc:
-            raise fr.at(tr.mass.where, exc) from None
+    initial = [_reading(t, "initial") for per_speed in job.initial or () for t in per_speed]
+    runs = [[_reading(t, "run") for per_speed in tr.readings for t in per_speed] for tr in job.trials]
+    trials = tuple(_trial(tr.mass, job.units.get("mass", "g")) for tr in job.trials)
     p = len(job.planes) if job.planes else len(job.trials)
-    n = len(initial_r)
-    if coeff is None and n < p:
+    n = len(initial)
+    if o.coefficients is None and n < p:
         raise InputError(f"{p} planes need at least {p} readings per run (sensors x speeds), got {n}",
                          Location(job.source))
-    names = [pl.name for pl in job.planes] or [tr.plane for tr in job.trials]
-    radii = []
-    for pl in job.planes or ():
-        if pl.radius is None:
-            radii.append(None)
-        else:
-            radii.append((pl.radius, pl.correction_radius if pl.correction_radius is not None else pl.radius))
-    if not job.planes:
-        radii = [None] * p
-    w = None
-    if job.weights is not None:
-        w = [job.weights[k % len(job.sensors)] for k in range(n)]
-    elif weights is not None:
-        w = _weights(weights, n)
-    speeds = [(s.name, s.speed) for s in job.speeds]
-    if speed is not None:
-        speeds = [(speeds[0][0], speed)]
-    pos = [pl.positions for pl in job.planes] if job.planes else [None] * p
-    if positions is not None:
-        pos = [positions] * p
-    return dict(
-        job=job.source, name=job.name, sensors=list(job.sensors), speeds=speeds, plane_names=names,
-        plane_radii=radii, radii=None, correction_radius=None, positions=pos, initial=initial_r,
-        runs=runs, trials=trials, cumulative=bool(job.cumulative if job.cumulative is not None else cumulative),
-        method=_job_value(job, "method", "method", method, "method"), weights=w,
-        mass_step=_job_value(job, "mass_step", "mass_step", mass_step, "mass_step"),
-        angle_step=_job_value(job, "angle_step", "angle_step", angle_step, "angle_step"),
-        phase=conv["phase"], angle_sense=conv["angle_sense"], rotation=conv["rotation"],
-        measure=_job_value(job, "measure", "readings", measure, "measure"), severity=s_sev,
-        coefficients=coeff, rotor=job.rotor, positions_all=None,
-        plane_at=[pl.at for pl in job.planes] if job.planes else [None] * p, classic_options=False,
-        job_where=Location(job.source),
-    )
+    planes = job.planes or (None,) * p
+    weights = _weights(o.weights, n) if job.weights is None else \
+        tuple(job.weights[k % len(job.sensors)] for k in range(n))
+    speeds = tuple((s.name, s.speed) for s in job.speeds)
+    return _measured(Job(
+        o, job.sensors, speeds if o.speed is None else ((speeds[0][0], o.speed),),
+        tuple(pl.name for pl in job.planes) or tuple(tr.plane for tr in job.trials),
+        tuple(None if pl is None or pl.radius is None else
+              (pl.radius, pl.radius if pl.correction_radius is None else pl.correction_radius)
+              for pl in planes),
+        (o.positions,) * p if o.positions is not None else
+        tuple(None if pl is None else pl.positions for pl in planes),
+        tuple(None if pl is None else pl.at for pl in planes), trials, name=job.name,
+        rotor=job.rotor, weights=weights), initial, runs)
 
 
-def _reading(t: Any, param: str) -> fr.Reading:
+def _settings(o: Options, job: Any) -> Options:
+    """The parameters ``o`` with the settings of the job file ``job``; one given in both is
+    refused (located at the job file's key)."""
+    theirs = dict(
+        cumulative=job.cumulative, weights=job.weights, method=job.method, mass_step=job.mass_step,
+        angle_step=job.angle_step, measure=job.measure, phase=job.phase, angle_sense=job.angle_sense,
+        rotation=job.rotation, coefficients=job.coefficients, severity=job.severity,
+        positions=next((pl.positions for pl in job.planes if pl.positions is not None), None),
+        speed=next((s.speed for s in job.speeds if s.speed is not None), None))
+    for name, key in SETTINGS.items():
+        mine = getattr(o, name)
+        if theirs[name] is not None and mine is not None and mine is not False:
+            raise ParamError(name, f"given twice: on the command line and in the job file "
+                                   f"({literal(job.keys.get(key, Location(job.source)))}); give it once")
+    if o.speed is not None and len(job.speeds) > 1:
+        raise ParamError("speed", "the job has several speeds: give each its speed in the job file")
+    if job.severity is not None:
+        theirs.update(zip(("severity", "group", "foundation"), job.severity))
+    for name in ("weights", "positions", "speed"):  # the job's own, per sensor, plane or speed
+        del theirs[name]
+    return o.replace(**{k: v for k, v in theirs.items() if v is not None})
+
+
+def _reading(t: Text, param: str) -> Reading:
     try:
-        return fr.reading(t.text, param, t.where)
+        return reading(t.text, param, t.where)
     except InputError as exc:
-        raise fr.at(t.where, exc) from None
+        raise at(t.where, exc) from None
+
+
+def _trial(t: Text, bare: str) -> complex:
+    try:
+        return trial_mass(t.text, "trial", bare=bare)
+    except InputError as exc:
+        raise at(t.where, exc) from None
 
 
 # ----------------------------------------------------------------------------- one job
 
 
-def _finish(cls: type, s: dict, *, suggest: bool, rotor_mass, rotor, bearing_load, trial_fraction) -> Any:
-    every = list(s["initial"]) + [r for run in s["runs"] for r in run]
-    kind = fr.one_kind(every) if every else None
-    gravity = any(r.gravity for r in every)
-    stated_measure = any(r.measure is not None for r in every)
-    sev = s["severity"]
-    values, meas = fr.common_measure(every, s["measure"], "rms" if sev is not None else None) if every else ([], fr.Measures(None, ()))
-    phase, sense, rotation = s["phase"], s["angle_sense"], s["rotation"]
-    notes: list[str] = []
-    coeffs = None
-    coeff_from = None
-    n = len(s["initial"])
-    if s["coefficients"] is not None:
-        coeffs, coeff_from, phase, sense, rotation, measure, s = _coefficients(
-            s, kind, meas.measure, phase, sense, rotation, n, notes)
-        meas = fr.Measures(measure, meas.converted)
-    if phase is not None and sense is None:
+def _measured(job: Job, initial: list[Reading], runs: list[list[Reading]]) -> Job:
+    """``job`` with its readings: all of one kind, in one measure (r.m.s. for the severity
+    zones)."""
+    every = initial + [r for run in runs for r in run]
+    if not every:  # a trial mass sized before the first run
+        return job
+    kind = one_kind(every)
+    o = job.options
+    values, measures = common_measure(every, o.measure, "rms" if o.severity is not None else None)
+    it = iter(values)
+    return replace(job, initial=tuple(next(it) for _ in initial),
+                   runs=tuple(tuple(next(it) for _ in run) for run in runs),
+                   reading_kind=kind, gravity=any(r.gravity for r in every),
+                   measure=measures.measure, measures_converted=measures.converted)
+
+
+def _finish(job: Job) -> Job:
+    """The phases in the angles' sense, the severity's needs checked, the trial request."""
+    o = job.options
+    if o.phase is not None and o.angle_sense is None:
         raise ParamError("angle_sense", "say how the trial and correction angles are counted from the mark "
                                         "(with or against the rotation): the phases ({phase}) are converted "
                                         "to the angles' sense")
-    flipped = (phase == "lag" and sense == "with") or (phase == "lead" and sense == "against")
+    flipped = (o.phase, o.angle_sense) in (("lag", "with"), ("lead", "against"))
     if flipped:
-        values = [v.conjugate() for v in values]
-    init = tuple(values[:n])
-    runs = []
-    k = n
-    for run in s["runs"]:
-        runs.append(tuple(values[k:k + len(run)]))
-        k += len(run)
-    p = len(s["plane_names"])
-    if sev is not None:
-        if kind is None:
-            raise ParamError("severity", "the ISO 20816-3 zones judge velocities (mm/s r.m.s.): give the "
-                                         "readings with units (mm/s, in/s; or displacement or acceleration "
-                                         "at a known speed), not bare numbers")
-        if meas.measure is None:
-            raise ParamError("measure", "the ISO 20816-3 zones are in r.m.s.: say the readings' measure "
-                                        "(pk, pk-pk or rms) in each reading or with {measure}")
-        if kind != "velocity" and any(w is None for _, w in s["speeds"]):
-            raise ParamError("speed", f"the readings are {kind}s: the ISO 20816-3 zones judge velocities, "
-                                      f"so give the speed ({{speed}}) to convert them (v = omega x for the "
-                                      "1x reading)")
-    suggestion = None
-    if suggest:
-        suggestion = _suggest(s, rotor_mass=rotor_mass, rotor=rotor, bearing_load=bearing_load,
-                              trial_fraction=trial_fraction)
-    n_planes_ok = p in (1, 2) and n == p and len(s["speeds"]) == 1
-    extended = not (s["classic_options"] and n_planes_ok and not stated_measure and not gravity
-                    and coeffs is None and not suggest)
-    radii = s["radii"]
-    jr = s.get("rotor")
-    inputs = tuple(str(x) for x in (s["job"], s["coefficients"], rotor,
-                                    jr.body if jr is not None else None) if x is not None)
-    return cls(
-        initial=init, runs=tuple(runs), trials=tuple(s["trials"]), cumulative=s["cumulative"],
-        radii=radii, reading_kind=kind, extended=extended, method=s["method"],
-        weights=None if s["weights"] is None else tuple(s["weights"]), sensors=tuple(s["sensors"]),
-        speeds=tuple(s["speeds"]), plane_names=tuple(s["plane_names"]),
-        plane_radii=tuple(s["plane_radii"]), positions=tuple(s["positions"]),
-        mass_step=s["mass_step"], angle_step=s["angle_step"], measure=meas.measure,
-        measures_converted=meas.converted, gravity=gravity, phase=phase, angle_sense=sense,
-        rotation=rotation, flipped=flipped, severity=sev, coefficients=coeffs,
-        coefficients_from=coeff_from, suggest=suggestion, job=s["job"], name=s["name"],
-        notes=tuple(notes), inputs=inputs,
-    )
+        job = replace(job, initial=tuple(v.conjugate() for v in job.initial),
+                      runs=tuple(tuple(v.conjugate() for v in run) for run in job.runs))
+    if o.severity is not None:
+        _check_severity(job)
+    n, p = len(job.initial), job.planes
+    classic = (job.classic and p in (1, 2) and n == p and len(job.speeds) == 1 and job.measure is None
+               and not job.gravity and job.alpha is None and not o.suggest_trial)
+    return replace(job, flipped=flipped, extended=not classic,
+                   suggest=trial.request(job) if o.suggest_trial else None)
 
 
-def _coefficients(s: dict, kind: str | None, measure: str | None, phase, sense, rotation, n: int,
-                  notes: list[str]):
-    """Stored coefficients for this job: checked and brought into its units and senses."""
-    from rbcli.core.field.severity import convert_measure
-    from rbcli.io.field.coefficients import load_coefficients
-
-    path = str(s["coefficients"])
-    with op.naming("coefficients"):
-        c = load_coefficients(path)
-    where = path
-    if len(c.rows) != n:
-        raise ParamError("coefficients", f"'{literal(where)}' holds {len(c.rows)} readings per run "
-                                         f"({len(c.sensors)} sensors x {len(c.speeds)} speeds); the "
-                                         f"initial readings are {n}")
-    job_speeds = list(s["speeds"])
-    if s["job"] is not None:
-        if list(c.sensors) != list(s["sensors"]):
-            raise ParamError("coefficients", f"'{literal(where)}' is for sensors "
-                                             f"{literal(', '.join(c.sensors))}, not {literal(', '.join(s['sensors']))}")
-        if len(c.speeds) != len(job_speeds):
-            raise ParamError("coefficients", f"'{literal(where)}' is for {len(c.speeds)} speeds, the job has "
-                                             f"{len(job_speeds)}")
-    else:  # the command line: the readings in the file's order, its sensors and speeds
-        if len(c.speeds) > 1 and job_speeds[0][1] is not None:
-            raise ParamError("speed", f"'{literal(where)}' holds {len(c.speeds)} speeds; the readings are "
-                                      "at those (leave out {speed})")
-        job_speeds = [(n, job_speeds[0][1] if len(c.speeds) == 1 else None) for n, _ in c.speeds]
-        s = dict(s, sensors=list(c.sensors))
-    speeds = []
-    for (cn, cw), (jn, jw) in zip(c.speeds, job_speeds):
-        if cw is not None and jw is not None and abs(cw - jw) > 1e-9 * cw:
-            raise ParamError("coefficients", f"'{literal(where)}' was measured at {cw:.6g} rad/s, this job "
-                                             f"runs at {jw:.6g} rad/s: influence coefficients change with "
-                                             "speed")
-        speeds.append((jn or cn, jw if jw is not None else cw))
-    if (c.reading_kind is None) != (kind is None) or (c.reading_kind != kind):
-        raise ParamError("coefficients", f"'{literal(where)}' holds coefficients for "
-                                         f"{c.reading_kind or 'bare'} readings; these readings are "
-                                         f"{kind or 'bare'}")
-    alpha = [list(row) for row in c.coefficients]
-    if c.measure is not None and measure is not None and c.measure != measure:
-        f = convert_measure(1.0, c.measure, measure)
-        alpha = [[a * f for a in row] for row in alpha]
-        notes.append(f"coefficients converted from {c.measure} to {measure}")
-    elif c.measure is not None and measure is None:
-        measure = c.measure
-        notes.append(f"the readings, which say no measure, taken as {c.measure} (the coefficients file's)")
-    elif c.measure is None and measure is not None:
-        raise ParamError("coefficients", f"'{literal(where)}' does not say its readings' measure; these "
-                                         f"are {measure}: leave the measure unsaid, as it was")
-    # conventions: the job's own, or the file's when the job says none
-    if phase is None and sense is None and rotation is None:
-        phase, sense, rotation = c.phase, c.angle_sense, c.rotation
-        if phase or sense or rotation:
-            notes.append("conventions from the coefficients file")
-    elif c.angle_sense is None and (sense is not None or phase is not None):
-        raise ParamError("coefficients", f"'{literal(where)}' does not say its conventions; this job "
-                                         "does: balance it with the conventions unsaid, as they were")
-    elif c.angle_sense is not None and sense is not None and c.angle_sense != sense:
-        alpha = [[a.conjugate() for a in row] for row in alpha]
-        notes.append("coefficients mirrored into this job's angle sense")
-    planes = [name for name, _ in c.planes]
-    rc = s.get("correction_radius")
-    radii = []
-    for name, rt in c.planes:
-        if rt is None:
-            if rc is not None:
-                raise ParamError("radius", f"'{literal(where)}' has no trial radius for plane "
-                                           f"{literal(name)}: the corrections stay at the trial radius")
-            radii.append(None)
-        else:
-            radii.append((rt, rc if rc is not None else rt))
-    s = dict(s)
-    s.update(plane_names=planes, plane_radii=radii, speeds=speeds,
-             radii=(c.planes[0][1], rc if rc is not None else c.planes[0][1]) if (
-                 c.planes[0][1] is not None and len({r for _, r in c.planes}) == 1) else None,
-             positions=[s["positions_all"]] * len(planes) if s["job"] is None else (
-                 list(s["positions"]) + [None] * len(planes))[:len(planes)],
-             plane_at=(list(s["plane_at"]) + [None] * len(planes))[:len(planes)],
-             cumulative=False)
-    return tuple(tuple(row) for row in alpha), path, phase, sense, rotation, measure, s
-
-
-def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any:
-    """What sizes the trial masses (see :func:`rbcli.core.field.fit.suggest_trial`)."""
-    from rbcli.api.field.service import TrialRequest
-    from rbcli.core.balance.common import STANDARD_GRAVITY
-    from rbcli.core.field.fit import TRIAL_FRACTION, static_bearing_loads
-
-    speeds = [w for _, w in s["speeds"] if w is not None]
-    if not speeds:
-        raise ParamError("speed", "the trial mass needs the balancing speed, e.g. '1480 rpm'")
-    omega = max(speeds)
-    jr = s.get("rotor")
-    p = max(len(s["plane_names"]), 1)
-    radii = []
-    for j in range(p):
-        rr = s["plane_radii"][j] if j < len(s["plane_radii"]) else None
-        if rr is None:
-            raise ParamError("trial_radius", "the trial mass needs the radius it sits at ({trial_radius}, or "
-                                             "each plane's radius in the job file)")
-        radii.append(rr[0])
-    frac = TRIAL_FRACTION
-    if trial_fraction is not None or (jr is not None and jr.trial_fraction is not None):
-        if trial_fraction is not None and jr is not None and jr.trial_fraction is not None:
-            raise ParamError("trial_fraction", "given twice: on the command line and in the job's rotor")
-        if trial_fraction is not None:
-            text = trial_fraction.strip() if isinstance(trial_fraction, str) else trial_fraction
-            with op.naming("trial_fraction"):
-                if isinstance(text, str) and text.endswith("%"):
-                    frac = op.quantity(text[:-1].strip(), "dimensionless", "trial_fraction") / 100.0
-                else:
-                    frac = op.quantity(text, "dimensionless", "trial_fraction")
-        else:
-            frac = jr.trial_fraction
-    given = [x for x in (rotor_mass, rotor, bearing_load) if x is not None]
-    if jr is not None and given:
-        raise ParamError("rotor_mass", "the job file has the rotor; give it once")
-    if len(given) > 1:
-        raise ParamError("rotor_mass", "give the rotor's mass, its body file ({rotor}) or the "
-                                       "{bearing_load}, one of them")
-    g = STANDARD_GRAVITY if jr is None or jr.g is None else jr.g
-    loads: list[tuple[float, str]] = []
-    if bearing_load is not None or (jr is not None and jr.bearing_load is not None):
-        if bearing_load is not None:
-            with op.naming("bearing_load"):
-                F = op.positive(op.quantity(bearing_load, "force", "bearing_load"), "bearing_load",
-                                "the bearing load", "N")
-        else:
-            F = jr.bearing_load
-        loads = [(F, "the static bearing load given")] * p
-    else:
-        mass = None
-        com = None
-        if rotor_mass is not None:
-            with op.naming("rotor_mass"):
-                mass = op.positive(op.quantity(rotor_mass, "mass", "rotor_mass", bare="kg"),
-                                   "rotor_mass", "the rotor's mass", "kg")
-        elif rotor is not None or (jr is not None and jr.body is not None):
-            from rbcli.core.inertia import body_mass_props
-            from rbcli.io.body import load_body
-
-            mp = body_mass_props(load_body(str(rotor if rotor is not None else jr.body)))
-            mass, com = float(mp.mass), float(mp.com[2])
-        elif jr is not None and jr.mass is not None:
-            mass = jr.mass
-        else:
-            raise ParamError("rotor_mass", "the trial mass needs the rotor's mass ({rotor_mass}, or a body "
-                                           "file {rotor}) or the static {bearing_load}")
-        if jr is not None and jr.com is not None:
-            com = jr.com
-        if jr is not None and jr.bearings is not None and com is not None:
-            F1, F2 = static_bearing_loads(mass, g, com, jr.bearings)
-            for j in range(p):
-                z = s["plane_at"][j] if j < len(s["plane_at"]) else None
-                if z is None:
-                    b = 0 if F1 >= F2 else 1
-                    why = "the larger static bearing load (the plane's position is not given)"
-                else:
-                    b = 0 if abs(z - jr.bearings[0]) <= abs(z - jr.bearings[1]) else 1
-                    why = f"the static load of bearing {b + 1}, nearest the plane (lever rule)"
-                F = (F1, F2)[b]
-                if not F > 0:
-                    raise ParamError("rotor_mass", f"bearing {b + 1} carries no static load ({F:.4g} N: "
-                                                   "the rotor hangs beyond it); give the {bearing_load}")
-                loads.append((F, why))
-        else:
-            loads = [(mass * g / 2.0, "half the rotor's weight (two bearings sharing it equally)")] * p
-    return TrialRequest(tuple(loads), tuple(radii), omega, frac)
+def _check_severity(job: Job) -> None:
+    """Readings the ISO 20816-3 zones can judge: with units, a measure, and a speed for a
+    displacement or an acceleration."""
+    kind = job.reading_kind
+    if kind is None:
+        raise ParamError("severity", "the ISO 20816-3 zones judge velocities (mm/s r.m.s.): give the "
+                                     "readings with units (mm/s, in/s; or displacement or acceleration "
+                                     "at a known speed), not bare numbers")
+    if job.measure is None:
+        raise ParamError("measure", "the ISO 20816-3 zones are in r.m.s.: say the readings' measure "
+                                    "(pk, pk-pk or rms) in each reading or with {measure}")
+    if kind != "velocity" and any(w is None for _, w in job.speeds):
+        raise ParamError("speed", f"the readings are {kind}s: the ISO 20816-3 zones judge velocities, "
+                                  f"so give the speed ({{speed}}) to convert them (v = omega x for the "
+                                  "1x reading)")

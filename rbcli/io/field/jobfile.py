@@ -39,6 +39,7 @@ from rbcli.errors import InputError, Location
 from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io.field import CHOICES, plane_names
 
 SCHEMA_PATH = Path(__file__).resolve().parents[2] / "data" / "fieldjob.schema.json"
 
@@ -57,16 +58,6 @@ TRIAL_KEYS = ("plane", "mass", "readings")
 SEVERITY_KEYS = ("standard", "group", "foundation")
 ROTOR_KEYS = ("mass", "body", "bearings", "com", "bearing_load", "g", "trial_fraction")
 
-#: the words a job file (and the command line) accepts, per key
-CHOICES = {
-    "method": ("least-squares", "min-max", "exact"),
-    "phase": ("lag", "lead"),
-    "angle_sense": ("with", "against"),
-    "rotation": ("cw", "ccw"),
-    "measure": ("pk", "pk-pk", "rms"),
-    "standard": ("iso20816-3",),
-    "foundation": ("rigid", "flexible"),
-}
 
 
 @dataclass(frozen=True)
@@ -453,7 +444,7 @@ def _trials(ctx: _Ctx, items: dict, planes: tuple[JobPlane, ...], speeds: tuple[
         elif names:
             raise ctx.error(tm, "a trial run needs 'plane': the plane its trial mass sat in")
         else:
-            plane = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[i] if i < 26 else str(i + 1)
+            plane = plane_names(i + 1)[i]
         if plane in by_plane:
             raise ctx.error(it.get("plane", (tm.mark, tm))[1], f"plane {plane} has two trial runs; give one per plane")
         mnode = it["mass"][1]
