@@ -21,14 +21,14 @@ import numpy as np
 from rbcli.api.field import trial
 from rbcli.api.field.result import (
     SI_UNITS, Conventions, FieldBalanceResult, FieldCorrection, FieldResidual, Fitted, FittedPlane,
-    Severity, SeverityRow, convention_text, deg, row_names,
+    Severity, SeverityRow, convention_text, row_names,
 )
 from rbcli.core.balance.common import FIELD_COND_WARN
 from rbcli.core.field.classic import field_single_plane, field_two_plane, small_response
 from rbcli.core.field.fit import fit_plane
 from rbcli.core.field.severity import to_velocity, zone, zone_boundaries
 from rbcli.core.field.significance import SIGNIFICANCE_LIMIT, plane_significance
-from rbcli.core.field.solve import FieldSolution, influence_matrix, matvec, solve
+from rbcli.core.field.solve import FieldSolution, deg, influence_matrix, matvec, solve
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.job import Job

@@ -245,20 +245,26 @@ def from_file(o: Options) -> Job:
     if o.coefficients is None and n < p:
         raise InputError(f"{p} planes need at least {p} readings per run (sensors x speeds), got {n}",
                          Location(job.source))
-    planes = job.planes or (None,) * p
     weights = _weights(o.weights, n) if job.weights is None else \
         tuple(job.weights[k % len(job.sensors)] for k in range(n))
     speeds = tuple((s.name, s.speed) for s in job.speeds)
+    names, radii, positions, at = _planes(job, p)
     return _measured(Job(
-        o, job.sensors, speeds if o.speed is None else ((speeds[0][0], o.speed),),
-        tuple(pl.name for pl in job.planes) or tuple(tr.plane for tr in job.trials),
-        tuple(None if pl is None or pl.radius is None else
-              (pl.radius, pl.radius if pl.correction_radius is None else pl.correction_radius)
-              for pl in planes),
-        (o.positions,) * p if o.positions is not None else
-        tuple(None if pl is None else pl.positions for pl in planes),
-        tuple(None if pl is None else pl.at for pl in planes), trials, name=job.name,
+        o, job.sensors, speeds if o.speed is None else ((speeds[0][0], o.speed),), names, radii,
+        positions if o.positions is None else (o.positions,) * p, at, trials, name=job.name,
         rotor=job.rotor, weights=weights), initial, runs)
+
+
+def _planes(job: Any, p: int) -> tuple[tuple, tuple, tuple, tuple]:
+    """The names, (trial, correction) radii, positions and places of the job file's ``p``
+    planes (named by its trial runs when it lists none)."""
+    if not job.planes:
+        return tuple(tr.plane for tr in job.trials), (None,) * p, (None,) * p, (None,) * p
+    radii = tuple(None if pl.radius is None else
+                  (pl.radius, pl.radius if pl.correction_radius is None else pl.correction_radius)
+                  for pl in job.planes)
+    return (tuple(pl.name for pl in job.planes), radii, tuple(pl.positions for pl in job.planes),
+            tuple(pl.at for pl in job.planes))
 
 
 def _settings(o: Options, job: Any) -> Options:

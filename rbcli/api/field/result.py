@@ -20,11 +20,12 @@ from rbcli import __version__
 from rbcli.api.diagram import Arrow, Diagram, Panel
 from rbcli.api.result import Result
 from rbcli.core.field.fit import FittedMass
+from rbcli.core.field.solve import deg
 from rbcli.io.field import plane_names
 from rbcli.io.field.coefficients import FORMAT, VERSION
 
 __all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedPlane", "Fitted",
-    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "deg",
+    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text",
     "row_names", "CONVENTION", "SI_UNITS"]
 
 #: the angle convention of field balancing, in words (as it always was)
@@ -33,16 +34,6 @@ CONVENTION = ("angles and phases in degrees, counted in the same sense as the tr
 
 #: the SI unit of each reading kind, as JSON reports it
 SI_UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
-
-
-def deg(z: complex) -> float:
-    """arg z in degrees in [0, 360) (within 1e-9° below 360 is 0; never -0.0)."""
-    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
-    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
-
-
-def _mag_deg(z: complex) -> tuple[float, float]:
-    return abs(z), (deg(z) if z != 0 else 0.0)
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 from rbcli.render.field import tables as fb
 from rbcli.render.units import ShopUnits
 from rbcli.render.report import Figure, Report, Section
-from rbcli.render.text import Doc
+from rbcli.render.text import Doc, Note
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.result import FieldBalanceResult
@@ -99,12 +99,8 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
     if res.warnings:
         s = Section("warnings", "Warnings")
         for w in res.warnings:
-            s.items.append(_note(w))
+            s.items.append(Note(w))
         sections.append(s)
     return Report(title, meta, sections, input_name, input_text, generator="rbcli field-balance")
 
 
-def _note(text: str):
-    from rbcli.render.text import Note
-
-    return Note(text)
