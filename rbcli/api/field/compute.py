@@ -209,7 +209,7 @@ def _fitted(job: Job, corrections: tuple[FieldCorrection, ...], scales: list[flo
     for c, npos in zip(corrections, positions):
         fp = fit_plane(c.correction, mass_step=o.mass_step, angle_step_deg=None if npos else o.angle_step,
                        positions=npos)
-        planes.append(FittedPlane(c.name, fp.masses, abs(fp.net), deg(fp.net) if fp.net != 0 else 0.0, npos))
+        planes.append(FittedPlane(c.name, npos, abs(fp.net), deg(fp.net) if fp.net != 0 else 0.0, fp.masses))
     # the masses fitted at the correction radius, as trial-radius masses: net / scale
     nets = [complex(pl.mass * cmath.rect(1.0, math.radians(pl.angle_deg))) / scale
             for pl, scale in zip(planes, scales)]

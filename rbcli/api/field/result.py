@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, is_dataclass
 from typing import Any
 
 from rbcli import __version__
@@ -34,6 +34,21 @@ CONVENTION = ("angles and phases in degrees, counted in the same sense as the tr
 
 #: the SI unit of each reading kind, as JSON reports it
 SI_UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
+
+
+class Plain:
+    """A record whose JSON is its fields, in order (records in it likewise, tuples as lists)."""
+
+    def to_json(self) -> dict[str, Any]:
+        return {f.name: _plain(getattr(self, f.name)) for f in fields(self)}  # type: ignore[arg-type]
+
+
+def _plain(v: Any) -> Any:
+    if isinstance(v, tuple):
+        return [_plain(x) for x in v]
+    if hasattr(v, "to_json"):
+        return v.to_json()
+    return {f.name: _plain(getattr(v, f.name)) for f in fields(v)} if is_dataclass(v) else v
 
 
 @dataclass(frozen=True)
@@ -80,7 +95,7 @@ class FieldCorrection:
 
 
 @dataclass(frozen=True)
-class FieldResidual:
+class FieldResidual(Plain):
     """A predicted reading after the correction (JSON ``residuals[k]``).
 
     Attributes
@@ -97,10 +112,6 @@ class FieldResidual:
     angle_deg: float
     initial: float
 
-    def to_json(self) -> dict[str, Any]:
-        return {"sensor": self.sensor, "speed": self.speed, "amplitude": self.amplitude,
-                "angle_deg": self.angle_deg, "initial": self.initial}
-
 
 def row_names(sensors: Sequence[str], speeds: Sequence[tuple[str, Any]], n: int) -> list[tuple[str, str]]:
     """(sensor, speed) of each of ``n`` readings: reading k is sensor ``k % len(sensors)`` at
@@ -111,24 +122,19 @@ def row_names(sensors: Sequence[str], speeds: Sequence[tuple[str, Any]], n: int)
 
 
 @dataclass(frozen=True)
-class FittedPlane:
+class FittedPlane(Plain):
     """The masses fitted in one plane (:class:`rbcli.core.field.fit.FittedMass`: mass kg,
     angle_deg, position 1-based or None) and their net correction (mass, angle_deg)."""
 
     name: str
-    masses: tuple[FittedMass, ...]
+    positions: int | None
     mass: float
     angle_deg: float
-    positions: int | None
-
-    def to_json(self) -> dict[str, Any]:
-        return {"name": self.name, "positions": self.positions, "mass": self.mass,
-                "angle_deg": self.angle_deg, "masses": [
-                    {"mass": m.mass, "angle_deg": m.angle_deg, "position": m.position} for m in self.masses]}
+    masses: tuple[FittedMass, ...]
 
 
 @dataclass(frozen=True)
-class Fitted:
+class Fitted(Plain):
     """The corrections as fitted — rounded and/or split — and the readings they leave.
 
     Attributes
@@ -144,14 +150,9 @@ class Fitted:
     planes: tuple[FittedPlane, ...]
     residuals: tuple[FieldResidual, ...]
 
-    def to_json(self) -> dict[str, Any]:
-        return {"mass_step": self.mass_step, "angle_step_deg": self.angle_step_deg,
-                "planes": [p.to_json() for p in self.planes],
-                "residuals": [r.to_json() for r in self.residuals]}
-
 
 @dataclass(frozen=True)
-class SeverityRow:
+class SeverityRow(Plain):
     """One reading judged (mm/s r.m.s. values in m/s, SI): before and predicted after."""
 
     sensor: str
@@ -161,13 +162,9 @@ class SeverityRow:
     after: float
     after_zone: str
 
-    def to_json(self) -> dict[str, Any]:
-        return {"sensor": self.sensor, "speed": self.speed, "before": self.before,
-                "before_zone": self.before_zone, "after": self.after, "after_zone": self.after_zone}
-
 
 @dataclass(frozen=True)
-class Severity:
+class Severity(Plain):
     """ISO 20816-3 zones of the readings (JSON ``severity``).
 
     Attributes
@@ -177,7 +174,7 @@ class Severity:
     foundation : str — "rigid" or "flexible"
     boundaries : (float, float, float) — A/B, B/C, C/D, m/s r.m.s.
     after_is : str — "fitted" (the rounded or split masses) or "computed"
-    rows : tuple of SeverityRow
+    readings : tuple of SeverityRow
     """
 
     standard: str
@@ -185,16 +182,11 @@ class Severity:
     foundation: str
     boundaries: tuple[float, float, float]
     after_is: str
-    rows: tuple[SeverityRow, ...]
-
-    def to_json(self) -> dict[str, Any]:
-        return {"standard": self.standard, "group": self.group, "foundation": self.foundation,
-                "boundaries": list(self.boundaries), "after_is": self.after_is,
-                "readings": [r.to_json() for r in self.rows]}
+    readings: tuple[SeverityRow, ...]
 
 
 @dataclass(frozen=True)
-class SuggestedTrial:
+class SuggestedTrial(Plain):
     """A trial mass sized before the run (JSON ``suggested_trial``).
 
     Attributes
@@ -223,17 +215,9 @@ class SuggestedTrial:
     expected_change: tuple[float, ...] | None
     expected_change_ratio: tuple[float, ...] | None
 
-    def to_json(self) -> dict[str, Any]:
-        return {"plane": self.plane, "mass": self.mass, "radius": self.radius, "speed": self.speed,
-                "bearing_load": self.bearing_load, "bearing_load_from": self.bearing_load_from,
-                "fraction": self.fraction, "force": self.force,
-                "expected_change": None if self.expected_change is None else list(self.expected_change),
-                "expected_change_ratio": (None if self.expected_change_ratio is None
-                                          else list(self.expected_change_ratio))}
-
 
 @dataclass(frozen=True)
-class Conventions:
+class Conventions(Plain):
     """How angles and readings were counted (JSON ``conventions``).
 
     Attributes
@@ -254,10 +238,6 @@ class Conventions:
     rotation: str | None
     converted: bool
     text: str
-
-    def to_json(self) -> dict[str, Any]:
-        return {"phase": self.phase, "angle_sense": self.angle_sense, "rotation": self.rotation,
-                "converted": self.converted, "text": self.text}
 
 
 def convention_text(phase: str | None, angle_sense: str | None, rotation: str | None, converted: bool) -> str:

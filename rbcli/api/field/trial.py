@@ -1,6 +1,6 @@
 """A trial mass to start with (``suggest_trial``): what sizes it — the static load on the
 bearing nearest each plane, from the parameters or the job file's rotor (:func:`request`) —
-and the suggestion per plane (:func:`suggestions`, by :func:`rbcli.core.field.fit.suggest_trial`),
+and the suggestion per plane (:func:`suggestions`, by :func:`rbcli.core.field.trial.suggest_trial`),
 with the change it should make where influence coefficients are known.
 """
 
@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 from rbcli.api.field.result import SuggestedTrial
 from rbcli.api.load import load
 from rbcli.core.balance.common import STANDARD_GRAVITY
-from rbcli.core.field.fit import TRIAL_FRACTION, static_bearing_loads, suggest_trial
+from rbcli.core.field.trial import TRIAL_FRACTION, static_bearing_loads, suggest_trial
 from rbcli.core.inertia import body_mass_props
 from rbcli.errors import ParamError
 

@@ -289,7 +289,7 @@ def severity_table(doc: Doc, res: FieldBalanceResult, rows, digits: int, su: Sho
     assert sv is not None
     f, u = reading_display("velocity", su) if su is not None else READING_DISPLAY["velocity"]
     table = [[*_row_label(r.sensor, r.speed, res), num(r.before / f, digits), r.before_zone,
-              num(r.after / f, digits), r.after_zone] for r in sv.rows]
+              num(r.after / f, digits), r.after_zone] for r in sv.readings]
     after = "with the masses fitted" if sv.after_is == "fitted" else "after the correction"
     doc.table(f"{sv.standard}, group {sv.group}, {sv.foundation} support: zones of the 1× readings",
               [*_head(res), f"before [{u} rms]", "zone", f"{after} [{u} rms]", "zone"], table,
