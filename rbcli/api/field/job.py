@@ -34,12 +34,17 @@ __all__ = ["Job", "make"]
 CLASSIC = {"initial", "trial", "run", "cumulative", "trial_radius", "radius", "suggest_trial",
            "rotor_mass", "rotor", "bearing_load", "trial_fraction"}
 
-#: the settings a job file gives as the parameters do: parameter -> the job file's key
+#: the settings a job file gives as the parameters do: parameter -> the job file's key (a
+#: conflict is located there); the value is the job's attribute of that name, but for
+#: :data:`PER_ITEM`
 SETTINGS = {"cumulative": "cumulative", "weights": "sensors", "positions": "planes",
             "speed": "speeds", "phase": "conventions", "angle_sense": "conventions",
             "rotation": "conventions", "severity": "severity", "coefficients": "coefficients",
             "method": "method", "mass_step": "mass_step", "angle_step": "angle_step",
             "measure": "readings"}
+#: settings a job file gives per sensor, plane or speed: the job keeps them (a parameter
+#: applies to all)
+PER_ITEM = ("weights", "positions", "speed")
 
 
 @dataclass(frozen=True)
@@ -270,12 +275,9 @@ def _planes(job: Any, p: int) -> tuple[tuple, tuple, tuple, tuple]:
 def _settings(o: Options, job: Any) -> Options:
     """The parameters ``o`` with the settings of the job file ``job``; one given in both is
     refused (located at the job file's key)."""
-    theirs = dict(
-        cumulative=job.cumulative, weights=job.weights, method=job.method, mass_step=job.mass_step,
-        angle_step=job.angle_step, measure=job.measure, phase=job.phase, angle_sense=job.angle_sense,
-        rotation=job.rotation, coefficients=job.coefficients, severity=job.severity,
-        positions=next((pl.positions for pl in job.planes if pl.positions is not None), None),
-        speed=next((s.speed for s in job.speeds if s.speed is not None), None))
+    theirs = {name: getattr(job, name, None) for name in SETTINGS}
+    theirs.update(positions=next((pl.positions for pl in job.planes if pl.positions is not None), None),
+                  speed=next((s.speed for s in job.speeds if s.speed is not None), None))
     for name, key in SETTINGS.items():
         mine = getattr(o, name)
         if theirs[name] is not None and mine is not None and mine is not False:
@@ -285,9 +287,7 @@ def _settings(o: Options, job: Any) -> Options:
         raise ParamError("speed", "the job has several speeds: give each its speed in the job file")
     if job.severity is not None:
         theirs.update(zip(("severity", "group", "foundation"), job.severity))
-    for name in ("weights", "positions", "speed"):  # the job's own, per sensor, plane or speed
-        del theirs[name]
-    return o.replace(**{k: v for k, v in theirs.items() if v is not None})
+    return o.replace(**{k: v for k, v in theirs.items() if v is not None and k not in PER_ITEM})
 
 
 def _reading(t: Text, param: str) -> Reading:
