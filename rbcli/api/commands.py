@@ -9,14 +9,30 @@ command line builds ``--help`` from it.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from rbcli.api.params import SYMMETRY_TOL, Param, as_text
 from rbcli.errors import literal
 
-__all__ = ["WHIRL"]
+__all__ = ["INERTIA", "PRINCIPAL", "WHIRL"]
+
 
 # ----------------------------------------------------------------------------- inertia, principal
+
+_ABOUT = Param("about", "Point: com, origin or x,y,z (a bare number in the body's length unit, m by "
+               "default; a unit after the last number applies to all, e.g. '10,0,5 mm').", "point")
+
+#: :func:`rbcli.inertia` and ``rbcli inertia``
+INERTIA = (
+    _ABOUT,
+    Param("axis", "Moment about this direction x,y,z through the point.", "direction"),
+    Param("omega", "Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after "
+          "the last number applies to all, e.g. '0,0,300 rpm').", "vector", "angular_speed"),
+)
+
+#: :func:`rbcli.principal` and ``rbcli principal``: about the com unless told
+PRINCIPAL = (replace(_ABOUT, default="com"),)
 
 # ----------------------------------------------------------------------------- balance
 

@@ -401,14 +401,14 @@ def _parts(ctx: _Ctx) -> Section:
 def _massprops(ctx: _Ctx) -> Section:
     from rbcli.api import inertia as api
 
-    o = api.InertiaOptions.parse(ctx.body)
+    o = api.parse(ctx.body)
     return Section("mass-properties", "Mass properties", api.run(ctx.body, o), options=o)
 
 
 def _principal(ctx: _Ctx) -> Section:
     from rbcli.api import principal as api
 
-    o = api.PrincipalOptions.parse(ctx.body)
+    o = api.parse(ctx.body)
     return Section("principal-axes", "Principal axes", api.run(ctx.body, o), options=o)
 
 

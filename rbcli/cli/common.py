@@ -71,7 +71,7 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         opts = []
         for p in table:
             decls = [d for d in (p.short, p.flag or spelled(p.name)) if d]
-            kind = {"count": int, "flag": bool}.get(p.kind, str)
+            kind = p.cli_type or {"count": int, "flag": bool}.get(p.kind, str)
             info = typer.Option(p.default, *decls, help=spell(p.help, spelled),
                                 metavar=p.metavar, show_default=p.default is not None)
             opts.append(inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=info,
@@ -107,6 +107,16 @@ def said_json(data: Any) -> Any:
     """A JSON document with its warnings and remarks (:class:`rbcli.errors.Note`) spelled as
     the command line says them (the API's ``to_json()`` names parameters, ``--json`` options)."""
     return spelled_data(data, option_name)
+
+
+def with_file(data: dict, source: str) -> dict:
+    """A result's JSON with ``"file"`` after ``"name"`` (where the commands print it)."""
+    out = {}
+    for k, v in data.items():
+        out[k] = v
+        if k == "name":
+            out["file"] = source
+    return out
 
 
 def start(json_: bool, fmt: str | None, units: str | None, *, shop: bool = False,

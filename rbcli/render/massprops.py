@@ -124,13 +124,6 @@ def _matrix(doc: Doc, title: str, J, du: DisplayUnits, digits: int, products: st
     doc.note("(the tensor: off-diagonal entries are −∫xy dm; --products positive shows +∫xy dm)")
 
 
-#: the "options" table of ``inertia`` and ``principal``: (parameter, options attribute, how)
-#: rows for :func:`rbcli.render.units.echo_rows`
-INERTIA_OPTIONS = (("about", "about", "point"), ("axis", "axis", "direction"),
-                   ("omega", "omega", "angular_speed"))
-PRINCIPAL_OPTIONS = (("about", "about", "point"),)
-
-
 def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, products: str,
                 ref_label: str, *, parts: bool = True) -> None:
     """The tables of ``rbcli inertia``; ``parts=False`` leaves out the parts table (the
