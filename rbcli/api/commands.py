@@ -9,13 +9,14 @@ command line builds ``--help`` from it.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from typing import Any
 
 from rbcli.api.params import SYMMETRY_TOL, Param, as_text
 from rbcli.errors import literal
 
-__all__ = ["INERTIA", "PRINCIPAL", "WHIRL"]
+__all__ = ["INERTIA", "PRINCIPAL", "PRECESS", "WHIRL"]
 
 
 # ----------------------------------------------------------------------------- inertia, principal
@@ -39,6 +40,59 @@ PRINCIPAL = (replace(_ABOUT, default="com"),)
 # ----------------------------------------------------------------------------- field-balance
 
 # ----------------------------------------------------------------------------- precess
+
+def _finite(v: float, given: Any) -> str | None:
+    return None if math.isfinite(v) else "must be a finite number"
+
+
+#: the most rows of a time series (precess and top --csv): 10^6 rows is ~100 MB of CSV,
+#: about what a spreadsheet holds (1 048 576 rows)
+MAX_SAMPLES = 1_000_000
+
+
+def _rows(v: Any, given: Any) -> str | None:
+    try:
+        n = int(v)
+    except ValueError:
+        n = 0
+    if 2 <= n <= MAX_SAMPLES:
+        return None
+    return f"must be from 2 to {MAX_SAMPLES} rows (a whole number), got '{literal(as_text(given))}'"
+
+
+def _time_span(v: float, given: Any) -> str | None:
+    if not math.isfinite(v):
+        return "must be a finite number"
+    return None if v > 0.0 else f"must be a positive time, got '{literal(as_text(given))}'"
+
+
+#: rows of precess's time series when ``samples`` is not given
+PRECESS_SAMPLES = 1001
+
+#: :func:`rbcli.precess` and ``rbcli precess``
+PRECESS = (
+    Param("omega", "Initial angular velocity x,y,z in the body frame (a bare number is rad/s, or the "
+          "body's units' angular_speed; a unit after the last number applies to every bare number "
+          "before it, e.g. '0,0,300 rpm'). Required.", "vector", "angular_speed"),
+    Param("at", "Also give w, L and the orientation (quaternion, axis and angle) at this time (a bare "
+          "number is s; or with units, e.g. '7320 h'; negative = before t = 0).", "quantity", "time",
+          valid=_finite),
+    Param("duration", "Span of the {csv} time series, from t = 0 (a bare number is s; or with units); "
+          "also the span of {plot} (default: 3 periods of w).", "quantity", "time", valid=_time_span),
+    Param("samples", "Rows of the {csv} time series, evenly spaced from t = 0 to {duration} inclusive "
+          f"(2 to {MAX_SAMPLES}, about 100 MB of CSV). Default {PRECESS_SAMPLES}.", "count",
+          valid=_rows, echo="-", cli_type=str),
+    Param("csv", "Write the time series t, wx, wy, wz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body "
+          "to space) to this CSV file, or '-' for standard output instead of the tables. Needs "
+          "{duration}. An existing file is replaced (atomically); an input file never.", "path",
+          api=False),
+    Param("plot", "Save a figure (.png, .svg, .pdf): the body-frame components of w against time and "
+          "the polhode (the path of L/|L| on the unit sphere, principal frame) in two views. An "
+          "existing figure is replaced (atomically); an input file never.", "path", api=False),
+    Param("verify", "Check the exact motion against a numerical integration of Euler's equations and "
+          "the attitude (scipy DOP853, rtol 1e-12) over 3 periods; exit status 1 if they differ by "
+          "more than 1e-8.", "flag", echo="-", default=False),
+)
 
 # ----------------------------------------------------------------------------- top, gyrocompass
 

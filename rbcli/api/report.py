@@ -2,7 +2,7 @@
 ``rbcli report``.
 
 :class:`ReportOptions` reads the report's options once, through each command's own options
-object (:class:`rbcli.api.balance.BalanceOptions`, :class:`rbcli.api.precess.PrecessOptions`,
+object (:class:`rbcli.api.balance.BalanceOptions`, :class:`rbcli.api.params.Options`,
 :class:`rbcli.api.top.TopOptions`, :class:`rbcli.api.rollcheck.RollcheckOptions`), so a value
 means in the report what it means to the command. :func:`run` computes each section by
 calling the services and returns a :class:`ReportResult` holding each section's result (or the
@@ -33,7 +33,6 @@ from rbcli.errors import InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.balance import BalanceOptions
-    from rbcli.api.precess import PrecessOptions
     from rbcli.api.rollcheck import RollcheckOptions
     from rbcli.api.top import TopOptions
     from rbcli.api.params import Options
@@ -143,7 +142,7 @@ class ReportOptions:
         (``balance_error``)
     whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
         body cannot have one (``whirl_error``)
-    precess : PrecessOptions or None — None without ``omega``
+    precess : Options or None — None without ``omega``
     top : TopOptions or None — None without a pivot or without ``spin`` and ``theta``
         (``top_skip`` says which)
     rollcheck : RollcheckOptions or None — None without a rim radius (``rolling_skip``) or
@@ -154,7 +153,7 @@ class ReportOptions:
     given: tuple[tuple[str, str], ...]
     balance: BalanceOptions | None
     whirl: Options | None
-    precess: PrecessOptions | None
+    precess: Options | None
     top: TopOptions | None
     rollcheck: RollcheckOptions | None
     date: str
@@ -186,7 +185,7 @@ class ReportOptions:
         """
         from rbcli.api import options as op
         from rbcli.api.balance import BalanceOptions
-        from rbcli.api.precess import PrecessOptions
+        from rbcli.api import precess
         from rbcli.api.rollcheck import RollcheckOptions, round_parts
         from rbcli.api.top import TopOptions
         from rbcli.api import whirl
@@ -236,7 +235,7 @@ class ReportOptions:
         else:
             w_skip = Note("whirl: no {stiffness} given (the bearings' stiffness, with {bearings})")
         # free precession
-        p_opts = PrecessOptions.parse(body, omega=omega) if omega is not None else None
+        p_opts = precess.parse(body, omega=omega) if omega is not None else None
         # heavy top: every value given is checked, the section needs a pivot, spin and theta
         t_opts = TopOptions.parse(
             body, pivot=pivot, spin=_TOP_STAND_INS["spin"] if spin is None else spin,
