@@ -35,7 +35,6 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("api/fieldjobs.py", "parse"): (1, "int(group)"),
     ("api/load.py", "_units"): (1, "io.body.default_units: plain ValueErrors (it turns UnitError into one)"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),
-    ("api/top.py", "series"): (1, "int(samples)"),
     ("api/whirl.py", "_points"): (1, "int(points)"),
     ("api/whirl.py", "_orders"): (1, "int() of each order"),
     ("cli/report.py", "__init__"): (1, "sys.stderr.isatty()"),

@@ -16,7 +16,7 @@ from typing import Any
 from rbcli.api.params import SYMMETRY_TOL, Param, as_text
 from rbcli.errors import literal
 
-__all__ = ["INERTIA", "PRINCIPAL", "PRECESS", "WHIRL"]
+__all__ = ["INERTIA", "PRINCIPAL", "PRECESS", "TOP", "GYROCOMPASS", "WHIRL"]
 
 
 # ----------------------------------------------------------------------------- inertia, principal
@@ -95,6 +95,98 @@ PRECESS = (
 )
 
 # ----------------------------------------------------------------------------- top, gyrocompass
+
+#: rows of top's time series when ``samples`` is not given
+TOP_SAMPLES = 600
+
+
+def _positive(why: str) -> Any:
+    """The check of a positive finite number: ``<why>, got <the value as given>``."""
+    def check(v: float, given: Any) -> str | None:
+        if not math.isfinite(v):
+            return "must be a finite number"
+        return None if v > 0.0 else f"{why}, got {literal(as_text(given))}"
+    return check
+
+
+def _spin(what: str, eg: str, zero: str) -> Param:
+    """The spin of top and gyrocompass (its help and its refusal of 0 differ)."""
+    def valid(v: float, given: Any) -> str | None:
+        return _finite(v, given) or (f"must not be 0: {zero}" if v == 0.0 else None)
+
+    return Param("spin", f"Required. {what} (rad/s, or the body's units' angular_speed; or e.g. "
+                 f"'{eg}'); negative = the other way.", "quantity", "angular_speed", valid=valid)
+
+
+def _tilt(v: float, given: Any) -> str | None:
+    if not math.isfinite(v):
+        return "must be a finite number"
+    if 0.0 < v < math.pi:
+        return None
+    return (f"the start tilt must be strictly between 0 and 180 degrees, got {literal(as_text(given))} "
+            "(at 0 or 180 the axis is vertical and the precession angle is undefined; start it "
+            "slightly tilted, e.g. {theta} 0.1)")
+
+
+def _latitude(v: float, given: Any) -> str | None:
+    if not math.isfinite(v):
+        return "must be a finite number"
+    if abs(v) <= 0.5 * math.pi * (1.0 + 1e-12):
+        return None
+    return f"must be from -90 to 90 degrees, got {literal(as_text(given))}"
+
+
+_NO_SYMMETRY_ECHO = replace(SYMMETRY_TOL, echo="-")
+
+#: :func:`rbcli.top` and ``rbcli top``
+TOP = (
+    Param("pivot", "The fixed point: com, origin or x,y,z (a bare number in the body's length unit, m "
+          "by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the "
+          "body's pivot, else the origin.", "point"),
+    _spin("Spin S = w3 about the symmetry axis", "3000 rpm",
+          "a top without spin is a spherical pendulum (it cannot stand); give the spin w3, e.g. "
+          "{spin} 150 or {spin} '3000 rpm'"),
+    Param("theta", "Required. Start tilt of the axis from the upward vertical, strictly between 0 and "
+          "180 (degrees, or with units, e.g. '0.5 rad').", "quantity", "angle", valid=_tilt),
+    Param("theta_dot", "Start rate theta' (rad/s unless the body's units name an angular_speed; or "
+          "e.g. '10 deg/s'); positive = tilting further. Default: 0.", "quantity", "angular_speed",
+          valid=_finite),
+    Param("phi_dot", "Start precession rate phi' about the vertical (rad/s unless the body's units "
+          "name an angular_speed; or with units). Default: 0.", "quantity", "angular_speed",
+          valid=_finite),
+    Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", "acceleration",
+          valid=_positive("gravity must be positive (it points down, towards -z)")),
+    Param("verify", "Integrate the equations of motion numerically (no Euler angles, DOP853, rtol "
+          "1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ "
+          "by more than 1e-6 rad or the energy drifts by more than 1e-9.", "flag", echo="-",
+          default=False),
+    Param("plot", "Save a figure (.png, .svg, .pdf): the path of the axis tip, theta against phi and "
+          "seen from above, theta1 and theta2 marked, over {duration}. An existing figure is "
+          "replaced (atomically); an input file never.", "path", api=False),
+    Param("csv", "Write t, theta_deg, phi_deg, psi_deg (s, degrees) at {samples} times over "
+          "{duration} to this file ('-' = standard output, instead of the tables). An existing file "
+          "is replaced (atomically); an input file never.", "path", api=False),
+    Param("duration", "Time span of {csv} and {plot} (s, or with units). Default: 3 nutation "
+          "periods.", "quantity", "time", valid=_time_span, echo="-"),
+    Param("samples", f"Rows of {{csv}}, evenly spaced from t = 0 to {{duration}} inclusive (2 to "
+          f"{MAX_SAMPLES}).", "count", valid=_rows, echo="-", default=TOP_SAMPLES),
+    _NO_SYMMETRY_ECHO,
+)
+
+#: :func:`rbcli.gyrocompass` and ``rbcli gyrocompass``
+GYROCOMPASS = (
+    Param("ratio", "C/A, the axial moment over the moment about the vertical (a flat disk: 2), "
+          "instead of a body.", "quantity", "dimensionless", valid=_positive("C/A must be positive"),
+          echo="=C/A"),
+    Param("shaft", "The rotor's spin axis x,y,z (or x, y, z) in the body frame. Default: the body's "
+          "shaft axis, else z.", "direction"),
+    _spin("Rotor spin about its axis", "6000 rpm", "a gyrocompass needs a spinning rotor"),
+    Param("latitude", "Required. Latitude, -90 to 90 (degrees, or with units); negative = south.",
+          "quantity", "angle", valid=_latitude),
+    Param("earth_rate", "The Earth's (sidereal) rotation rate (rad/s, or with units). Default: "
+          "7.2921150e-5.", "quantity", "angular_speed", valid=_positive("must be positive")),
+    _NO_SYMMETRY_ECHO,
+)
 
 # ----------------------------------------------------------------------------- rollcheck
 

@@ -3,7 +3,7 @@
 
 :class:`ReportOptions` reads the report's options once, through each command's own options
 object (:class:`rbcli.api.balance.BalanceOptions`, :class:`rbcli.api.params.Options`,
-:class:`rbcli.api.top.TopOptions`, :class:`rbcli.api.rollcheck.RollcheckOptions`), so a value
+:class:`rbcli.api.rollcheck.RollcheckOptions`), so a value
 means in the report what it means to the command. :func:`run` computes each section by
 calling the services and returns a :class:`ReportResult` holding each section's result (or the
 one-line reason it is left out). It computes only: :mod:`rbcli.render.report` makes the
@@ -34,7 +34,6 @@ from rbcli.errors import InputError, Note, ParamError, literal
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.balance import BalanceOptions
     from rbcli.api.rollcheck import RollcheckOptions
-    from rbcli.api.top import TopOptions
     from rbcli.api.params import Options
     from rbcli.model import Body
 
@@ -57,7 +56,7 @@ KINDS = {
 }
 
 #: stand-ins for a missing spin or theta, so that the one given is still checked by
-#: TopOptions.parse (the heavy-top section is then left out, saying what is missing)
+#: top.parse (the heavy-top section is then left out, saying what is missing)
 _TOP_STAND_INS = {"spin": 1.0, "theta": 90.0}
 
 
@@ -143,7 +142,7 @@ class ReportOptions:
     whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
         body cannot have one (``whirl_error``)
     precess : Options or None — None without ``omega``
-    top : TopOptions or None — None without a pivot or without ``spin`` and ``theta``
+    top : Options or None — None without a pivot or without ``spin`` and ``theta``
         (``top_skip`` says which)
     rollcheck : RollcheckOptions or None — None without a rim radius (``rolling_skip``) or
         when the body cannot roll (``rolling_error``)
@@ -154,7 +153,7 @@ class ReportOptions:
     balance: BalanceOptions | None
     whirl: Options | None
     precess: Options | None
-    top: TopOptions | None
+    top: Options | None
     rollcheck: RollcheckOptions | None
     date: str
     balance_skip: str | None = None
@@ -187,7 +186,7 @@ class ReportOptions:
         from rbcli.api.balance import BalanceOptions
         from rbcli.api import precess
         from rbcli.api.rollcheck import RollcheckOptions, round_parts
-        from rbcli.api.top import TopOptions
+        from rbcli.api import top
         from rbcli.api import whirl
 
         kw = dict(shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
@@ -237,7 +236,7 @@ class ReportOptions:
         # free precession
         p_opts = precess.parse(body, omega=omega) if omega is not None else None
         # heavy top: every value given is checked, the section needs a pivot, spin and theta
-        t_opts = TopOptions.parse(
+        t_opts = top.parse(
             body, pivot=pivot, spin=_TOP_STAND_INS["spin"] if spin is None else spin,
             theta=_TOP_STAND_INS["theta"] if theta is None else theta, theta_dot=theta_dot,
             phi_dot=phi_dot, g=g, symmetry_tol=symmetry_tol)

@@ -11,6 +11,7 @@ from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
 from rbcli.model import Body
 from rbcli.render.fmt import num, snap
+from rbcli.render.plots import figure, style
 from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -217,8 +218,6 @@ def _verify(doc: Doc, motion: fm.FreeMotion, v: Any, du: DisplayUnits, digits: i
 def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits):
     """w(t) in the body frame (three panels) and the polhode seen along axes 3 and 1; the
     samples come from the exact motion (:func:`rbcli.core.freestate.plot_samples`)."""
-    from rbcli.render.plots import figure, style
-
     ps = fs.plot_samples(motion, duration)
     t0, t1, t, w = ps.t0, ps.t1, ps.t, ps.omega
     ft, tu = du.factor("time")

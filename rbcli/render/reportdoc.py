@@ -125,7 +125,7 @@ def _top(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
     doc = Doc()
     rt.document(doc, c.result, du, digits)
-    _options_table(doc, echo_rows(c.options, body, rt.TOP_OPTIONS))
+    _options_table(doc, echo.echo_rows(c.options, body.units))
     s = Section(c.key, c.title)  # the top's warnings are printed by the command, not in its tables
     s.add_doc(doc, drop_heading_prefix=body.name)
     path, span = c.figure
