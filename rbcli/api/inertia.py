@@ -36,7 +36,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
 __all__ = ["InertiaResult", "Reference", "parse", "run", "inertia", "part_rows", "with_parts",
-           "plausibility"]
+           "plausibility", "rim_note"]
 
 
 @dataclass(frozen=True)
@@ -112,29 +112,35 @@ def with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
     return jsonable({**out, "parts": list(parts)})
 
 
+def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any) -> Note | None:
+    """The warning of ``body`` turning at ``speed`` (rad/s, given as ``param``) about ``axis``
+    through ``through`` when its rim would be faster than sound (issue 24: a unit missing?)."""
+    w = abs(speed)
+    v = w * axis_reach(body.parts, axis, through) if 0.0 < w < math.inf else 0.0
+    if not SPEED_OF_SOUND < v < math.inf:
+        return None
+    return Note(f"{{{param}}}: the body's rim would move at {v:.4g} m/s, faster than sound "
+                f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                f"{op.Units.of(body).label('angular_speed')}: is a unit missing?")
+
+
 def plausibility(body: Body | None, ref: Reference, omega: Any = None) -> tuple[str, ...]:
     """One-line warnings for values far outside the body's scale (issue 13): a reference
-    point more than 10 body sizes away, a rotation whose rim is faster than sound."""
+    point more than 10 body sizes away, a rotation about it whose rim is faster than sound."""
     far_point = ref.param == "about" and ref.point is not None
     if body is None or not far_point and omega is None:
         return ()
-    u = op.Units.of(body)
     out = []
     if far_point:
         sc = body_scale(body.parts)
         d = sc.far(ref.point)
         if d is not None:
-            out.append(u.far("about", "the point", d, sc.size))
-    w = 0.0 if omega is None else math.sqrt(sum(x * x for x in omega))
-    if 0.0 < w < math.inf:
+            out.append(op.Units.of(body).far("about", "the point", d, sc.size))
+    if omega is not None:
         # the body turning about omega through the reference point: its farthest material
         through = ci.body_mass_props(body).com if ref.point is None else ref.point
-        v = w * axis_reach(body.parts, omega, through)
-        if SPEED_OF_SOUND < v < math.inf:
-            out.append(Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
-                            f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                            f"{u.label('angular_speed')}: is a unit missing?"))
-    return tuple(out)
+        out.append(rim_note(body, "omega", math.sqrt(sum(x * x for x in omega)), omega, through))
+    return tuple(x for x in out if x is not None)
 
 
 @dataclass(frozen=True)

@@ -24,18 +24,17 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbcli.api import check
-from rbcli.api import options as op
 from rbcli.api.check import Quantity
 from rbcli.api.commands import MAX_SAMPLES, PRECESS
 from rbcli.api.commands import PRECESS_SAMPLES as DEFAULT_SAMPLES
+from rbcli.api.inertia import rim_note
 from rbcli.api.params import Options, function, read
 from rbcli.api.result import Result, jsonable
 from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
 from rbcli.core import freeverify
 from rbcli.core.inertia import InputOverflow, body_mass_props
-from rbcli.core.scale import SPEED_OF_SOUND, axis_reach
-from rbcli.errors import InputError, Note, ParamError
+from rbcli.errors import InputError, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
     from numpy.typing import ArrayLike
@@ -61,18 +60,6 @@ def parse(body: Body | None, **kwargs: Any) -> Options:
     o = read(body, PRECESS, kwargs)
     return o.replace(samples=DEFAULT_SAMPLES if o.samples is None else int(o.samples),
                      verify=bool(o.verify))
-
-
-def _rim(body: Body, omega: tuple[float, float, float]) -> tuple[str, ...]:
-    """The warning of a rotation whose rim is faster than sound (a unit missing?); free
-    rotation is about omega through the com."""
-    w = math.sqrt(sum(x * x for x in omega))
-    v = w * axis_reach(body.parts, omega, body_mass_props(body).com) if 0.0 < w < math.inf else 0.0
-    if not SPEED_OF_SOUND < v < math.inf:
-        return ()
-    return (Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than sound "
-                 f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                 f"{op.Units.of(body).label('angular_speed')}: is a unit missing?"),)
 
 
 @dataclass(frozen=True, eq=False)
@@ -176,11 +163,13 @@ def run(body: Body, options: Options) -> PrecessResult:
         if t is not None:
             fs.check_phase(motion, t, param)
     at = o.at is not None
+    # free rotation: about omega through the com
+    rim = rim_note(body, "omega", math.sqrt(sum(x * x for x in o.omega)), o.omega, mp.com)
     return PrecessResult(
         name=body.name, motion=motion, options=o, state=fs.evaluate(motion, o.at) if at else None,
         at_json=fs.state_json(motion, o.at) if at else None,
         check=freeverify.verify(motion) if o.verify else None, notes=tuple(fs.notes(motion)),
-        warnings=tuple(body.warnings) + _rim(body, o.omega))
+        warnings=tuple(body.warnings) + ((rim,) if rim else ()))
 
 
 @function(PRECESS)

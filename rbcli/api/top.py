@@ -21,12 +21,13 @@ from rbcli.api import options as op
 from rbcli.api.check import Quantity
 from rbcli.api.commands import MAX_SAMPLES, TOP
 from rbcli.api.commands import TOP_SAMPLES as DEFAULT_SAMPLES
+from rbcli.api.inertia import rim_note
 from rbcli.api.params import Options, function, read
 from rbcli.api.result import Result, jsonable
 from rbcli.core import top as core
 from rbcli.core import topbody, topverify
 from rbcli.core.inertia import body_mass_props
-from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
+from rbcli.core.scale import body_scale
 from rbcli.core.symmetry import AxialSymmetry
 from rbcli.core.toppath import TopState
 from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, literal
@@ -74,26 +75,19 @@ def parse(body: Body | None, **kwargs: Any) -> Options:
 
 def plausibility(body: Body, point: Any, spin: float, option: str, axis: Any = None,
                  through: Any = None) -> tuple[str, ...]:
-    """One-line warnings for values far outside the body's scale (issue 13): a pivot more
-    than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
-    ``through``: the body's farthest material from that line, issue 24)."""
-    u = op.Units.of(body)
+    """Located one-line warnings for values far outside the body's scale (issue 13): a pivot
+    more than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
+    ``through``, default the com; a top's axis runs from ``through``, its pivot, to the com)."""
     sc = body_scale(body.parts)
     out = []
     if point is not None and not isinstance(point, str) and sc.far(point):
-        out.append(Note(f"{literal(body.source)}: warning: "
-                        + u.far(option, "the pivot", sc.far(point), sc.size).template))
+        out.append(op.Units.of(body).far(option, "the pivot", sc.far(point), sc.size))
     com = body_mass_props(body).com
-    if axis is None:  # a top: its symmetry axis, from the pivot to the com
+    if axis is None:
         axis = com - np.asarray(through, dtype=float)
-    if not float(np.linalg.norm(axis)) > 0.0:  # the pivot at the com: refused later
-        return tuple(out)
-    v = abs(spin) * axis_reach(body.parts, axis, com if through is None else through)
-    if SPEED_OF_SOUND < v < math.inf:
-        out.append(Note(f"{literal(body.source)}: warning: {{spin}}: the body's rim would move at "
-                        f"{v:.4g} m/s, faster than sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds "
-                        f"are in {u.label('angular_speed')}: is a unit missing?"))
-    return tuple(out)
+    if float(np.linalg.norm(axis)) > 0.0:  # (the pivot at the com: refused later)
+        out.append(rim_note(body, "spin", spin, axis, com if through is None else through))
+    return tuple(Note(f"{literal(body.source)}: warning: {n.template}") for n in out if n)
 
 
 def _pivot(body: Body, given: Any) -> tuple[tuple[float, float, float], Note]:
