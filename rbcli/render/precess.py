@@ -11,13 +11,13 @@ from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
 from rbcli.model import Body
 from rbcli.render.fmt import num, snap
+from rbcli.render.massprops import AXES, vec_rows
 from rbcli.render.plots import figure, style
 from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
-AXES = ("x", "y", "z")
 #: the CSV header of ``--csv`` (the columns of :func:`rbcli.core.freestate.series`)
 CSV_HEADER = fs.SERIES_COLUMNS
 _DAY = 86400.0
@@ -42,11 +42,6 @@ def _time(x: float | None, du: DisplayUnits, digits: int) -> tuple[str, str]:
     if unit == "s" and abs(x) >= 2 * _DAY:
         unit = f"s  (= {num(x / _DAY, digits)} d)"
     return du.show(x, "time", digits), unit
-
-
-def _vec(label: str, v, du: DisplayUnits, kind: str, digits: int) -> list[tuple[str, str, str]]:
-    u = du.unit(kind)
-    return [(f"{label} {a}", du.show(x, kind, digits), u) for a, x in zip(AXES, v)]
 
 
 def _axis_label(motion: fm.FreeMotion, i: int) -> str:
@@ -98,9 +93,9 @@ def _start(motion: fm.FreeMotion, du: DisplayUnits, digits: int) -> Rows:
     """ω, L and T at t = 0 (body frame), and the angle between L and ω."""
     w = motion.omega0
     G = motion.angular_momentum_norm
-    rows = _vec("ω", w, du, "angular_speed", digits)
+    rows = vec_rows("ω", w, du, "angular_speed", digits)
     rows.append(("|ω|", du.show(float(np.linalg.norm(w)), "angular_speed", digits), du.unit("angular_speed")))
-    rows += _vec("L = J·ω", snap(motion.angular_momentum), du, "angular_momentum", digits)
+    rows += vec_rows("L = J·ω", snap(motion.angular_momentum), du, "angular_momentum", digits)
     rows.append(("|L|", du.show(G, "angular_momentum", digits), du.unit("angular_momentum")))
     rows.append(("T = ω·J·ω/2", du.show(motion.kinetic_energy, "energy", digits), du.unit("energy")))
     if G > 0:
@@ -185,8 +180,8 @@ def _at(st: dict, du: DisplayUnits, digits: int) -> Rows:
     rows = [("t", *_time(st["t"], du, digits))]
     if st["periods"] is not None:
         rows.append(("periods of ω since t = 0", num(st["periods"], digits), ""))
-    rows += _vec("ω", st["omega"], du, "angular_speed", digits)
-    rows += _vec("L", snap(st["angular_momentum"]), du, "angular_momentum", digits)
+    rows += vec_rows("ω", st["omega"], du, "angular_speed", digits)
+    rows += vec_rows("L", snap(st["angular_momentum"]), du, "angular_momentum", digits)
     rows.append(("quaternion w, x, y, z", ", ".join(num(x, digits) for x in st["quaternion"]), ""))
     rows.append(("rotation axis (space = body at t = 0)",
                  "—" if st["rotation_axis"] is None else ", ".join(num(x, digits) for x in st["rotation_axis"]), ""))
