@@ -23,6 +23,7 @@ of the third kind), so --at T costs the same for T = 1 s or 1e9 s. The space fra
 is the body frame at t = 0.
 """
 
+
 @c.command(PRECESS, help=HELP)
 def precess(
     body: str = c.BodyArg,

@@ -35,6 +35,7 @@ T = 2 pi/w0 (undamped). C/A is the axial moment over the moment about the vertic
 body's shaft axis, else body z), both moments about its centre of mass.
 """
 
+
 def _warn(e, result) -> None:
     for w in result.warnings:
         e.warn(f"rbcli: {c.said(w)}")
