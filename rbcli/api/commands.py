@@ -257,7 +257,7 @@ PRECESS = (
 TOP_SAMPLES = 600
 
 
-def _positive(why: str) -> Any:
+def _above_zero(why: str) -> Any:
     """The check of a positive finite number: ``<why>, got <the value as given>``."""
     def check(v: float, given: Any) -> str | None:
         if not math.isfinite(v):
@@ -312,7 +312,7 @@ TOP = (
           "name an angular_speed; or with units). Default: 0.", "quantity", "angular_speed",
           valid=_finite),
     Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", "acceleration",
-          valid=_positive("gravity must be positive (it points down, towards -z)")),
+          valid=_above_zero("gravity must be positive (it points down, towards -z)")),
     Param("verify", "Integrate the equations of motion numerically (no Euler angles, DOP853, rtol "
           "1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ "
           "by more than 1e-6 rad or the energy drifts by more than 1e-9.", "flag", echo="-",
@@ -333,7 +333,7 @@ TOP = (
 #: :func:`rbcli.gyrocompass` and ``rbcli gyrocompass``
 GYROCOMPASS = (
     Param("ratio", "C/A, the axial moment over the moment about the vertical (a flat disk: 2), "
-          "instead of a body.", "quantity", "dimensionless", valid=_positive("C/A must be positive"),
+          "instead of a body.", "quantity", "dimensionless", valid=_above_zero("C/A must be positive"),
           echo="=C/A"),
     Param("shaft", "The rotor's spin axis x,y,z (or x, y, z) in the body frame. Default: the body's "
           "shaft axis, else z.", "direction"),
@@ -341,7 +341,7 @@ GYROCOMPASS = (
     Param("latitude", "Required. Latitude, -90 to 90 (degrees, or with units); negative = south.",
           "quantity", "angle", valid=_latitude),
     Param("earth_rate", "The Earth's (sidereal) rotation rate (rad/s, or with units). Default: "
-          "7.2921150e-5.", "quantity", "angular_speed", valid=_positive("must be positive")),
+          "7.2921150e-5.", "quantity", "angular_speed", valid=_above_zero("must be positive")),
     _NO_SYMMETRY_ECHO,
 )
 
