@@ -34,7 +34,7 @@ from collections.abc import Callable, Mapping, Sequence
 from types import MappingProxyType
 from typing import Any, TypeVar
 
-from rbcli.io.bodydata import PartSpec, freeze
+from rbcli.body.pydata import PartSpec, freeze
 
 __all__ = ["PartSpec", "Quantity", "Vector", "point", "rod", "ring", "disk", "plate",
            "triangle", "box", "cylinder", "sphere", "hemisphere", "cone", "ellipsoid", "torus",

@@ -21,8 +21,8 @@ FORBIDDEN = {
     # the services (the Python API): compute and return results; never print or draw
     "api": {"typer", "rich", "matplotlib", "rbcli.cli", "rbcli.render"},
     # render renders: it never reads YAML or writes a file (the cli writes through io.outfile)
-    "render": {"yaml", "typer", "rbcli.cli", "rbcli.io.yamlsafe", "rbcli.io.body",
-               "rbcli.io.outfile", "rbcli.io.writebody", "rbcli.io.meshfile"},
+    "render": {"yaml", "typer", "rbcli.cli", "rbcli.io.yamlsafe", "rbcli.body.bodyfile",
+               "rbcli.io.outfile", "rbcli.body.document", "rbcli.io.meshfile"},
     # the library's documents: compute (api), lay out (render), write (io); never the cli
     "documents": {"typer", "rbcli.cli"},
     "errors": {"numpy", "scipy", "yaml", "typer", "rich", "matplotlib", "rbcli"},
@@ -33,7 +33,7 @@ FORBIDDEN = {
 #: modules allowed an import their layer forbids (api computes, render renders); the model's
 #: Body.from_parts, replace, moved and to_yaml are the body reader's and writer's, imported
 #: when called (the model stays a leaf when it is imported)
-ALLOWED: dict[str, set[str]] = {"model.py": {"rbcli.io.bodydata", "rbcli.io.writebody"}}
+ALLOWED: dict[str, set[str]] = {"model.py": {"rbcli.body.pydata", "rbcli.body.document"}}
 
 
 def _layer(path: Path) -> str | None:

@@ -31,7 +31,7 @@ import yaml
 
 from rbcli.core import shapes as shp
 from rbcli.core.inertia import body_mass_props, combine
-from rbcli.io.body import load_text
+from rbcli.body.bodyfile import load_text
 
 ROOT = Path(__file__).resolve().parent.parent
 RTOL = 1e-14  # see the module docstring
@@ -217,7 +217,7 @@ def test_the_batch_size_does_not_change_a_number(monkeypatch, batch):
     makes the same BLAS call for each matrix of a stack). One at a time takes the paths for
     a batch of one kind (placing._units of diagonal inertias only, rotation.from_specs of
     one kind or of none); all at once the mixed ones."""
-    import rbcli.io.parts as io_parts
+    import rbcli.body.partlist as io_parts
 
     text = _body_text(200)
     whole = load_text(text, "<bench>", ROOT)
@@ -257,8 +257,8 @@ def test_included_parts_are_placed_bit_for_bit_as_before():
     ``einsum(R, Js, R)`` over all the file's parts, from arrays of its finished Parts); for
     random placements and the identity, and a part without an outline."""
     from rbcli.core import rotation as rot
-    from rbcli.io.placing import Stack
-    from rbcli.model import Part
+    from rbcli.body.placing import Stack
+    from rbcli.body.model import Part
 
     body = load_text(_body_text(300), "<gen>", ROOT)
     dot = Part("dot", "point", 1.0, False, np.array([1.0, -0.0, 2.0]), np.zeros((3, 3)))
@@ -297,7 +297,7 @@ def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
     # the generated body (every shape, every placement), and all of them, pass the check
     # the loader skips, with its own tolerance (1e-7).
     from rbcli.core.inertia import tensor_problem
-    from rbcli.io.body import _may_be_impossible
+    from rbcli.body.bodyfile import _may_be_impossible
 
     body, _ = generated
     sure = [p for p in body.parts if not p.subtract and p.shape in shp.FORMULA_SHAPES]
@@ -320,7 +320,7 @@ def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
 
 def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
     from rbcli.errors import InputError
-    from rbcli.io.body import _may_be_impossible
+    from rbcli.body.bodyfile import _may_be_impossible
 
     hole = load_text("{parts: [{shape: box, mass: 2, size: [1, 1, 1]}, "
                      "{shape: box, mass: 1, size: [0.5, 0.5, 0.5], subtract: true}]}", "<t>", ROOT)
@@ -377,7 +377,7 @@ def test_a_quantity_text_read_before_gives_the_same_value_and_only_for_its_kind(
     # again they give the same float; the same text where another kind is needed is
     # refused as before; the store is emptied when full
     from rbcli.errors import InputError
-    from rbcli.io import fields
+    from rbcli.io import yamlvalues as fields
 
     monkeypatch.setattr(fields, "_READ", {})
     text = ("{parts: [{shape: sphere, radius: '1.5 cm', density: '7850 kg/m^3'}, "

@@ -1,4 +1,4 @@
-"""rbcli.io.body._realpath: os.path.realpath of a file, its folder's real path cached
+"""rbcli.body.bodyfile._realpath: os.path.realpath of a file, its folder's real path cached
 (issue 16, a batch of files in one folder) -- the same string in every case."""
 
 from __future__ import annotations
@@ -7,7 +7,7 @@ import os
 
 import pytest
 
-from rbcli.io import body
+from rbcli.body import bodyfile as body
 
 
 @pytest.fixture

@@ -28,8 +28,8 @@ import pytest
 from conftest import sampled_params
 
 from rbcli.errors import InputError, option_name
-from rbcli.io import body as body_mod
-from rbcli.io import includes as includes_mod
+from rbcli.body import bodyfile as body_mod
+from rbcli.body import includes as includes_mod
 from rbcli.io import outfile
 
 #: what a terminal must never receive from rbcli's messages or tables

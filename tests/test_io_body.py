@@ -1,4 +1,4 @@
-"""Tests of rbcli.io.body: the body-file loader.
+"""Tests of rbcli.body.bodyfile: the body-file loader.
 
 What is checked, and against what:
 
@@ -37,7 +37,7 @@ from scipy.spatial.transform import Rotation
 from rbcli.core import shapes as shp
 from rbcli.core.inertia import combine
 from rbcli.errors import InputError
-from rbcli.io.body import load_body, load_expr, load_text
+from rbcli.body.bodyfile import load_body, load_expr, load_text
 
 RTOL = 1e-12  # a few ulp of ~10 float operations, with a wide margin (see module doc)
 

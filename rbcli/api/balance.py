@@ -33,7 +33,7 @@ from rbcli.errors import ExitStatus, InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core import balance as B
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["AddedMass", "BalanceOptions", "BalanceResult", "balance", "run",
            "FieldBalanceOptions", "FieldBalanceResult", "field_balance"]
@@ -513,7 +513,7 @@ class BalanceResult(Result):
         >>> bool(again.corrections[0].mass < 1e-3)    # less than the 1 g step, kg
         True
         """
-        from rbcli.io.bodydata import with_points
+        from rbcli.body.pydata import with_points
 
         if self.installed is None:
             raise ParamError("planes", "balanced_body() needs the correction planes: "

@@ -25,7 +25,7 @@ from rbcli.errors import InputError, Location, Note, ParamError, literal
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.gyrocompass import Gyrocompass
     from rbcli.core.symmetry import AxialSymmetry
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["GyrocompassOptions", "GyrocompassResult", "run", "gyrocompass", "EARTH_RATE"]
 

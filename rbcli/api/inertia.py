@@ -27,7 +27,7 @@ from rbcli.errors import ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.inertial import Inertial
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["InertiaOptions", "InertiaResult", "run", "inertia"]
 

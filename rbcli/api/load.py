@@ -3,7 +3,7 @@ and :func:`load_data` (a mapping already parsed, as a body file's).
 
 Each checks its arguments at the door: a wrong type is a ``TypeError`` naming the parameter,
 a bad value an :class:`rbcli.InputError` (a :class:`rbcli.ParamError` naming it); the body
-itself is checked by the one body reader (:mod:`rbcli.io.body`), with the messages the
+itself is checked by the one body reader (:mod:`rbcli.body.bodyfile`), with the messages the
 command line prints.
 """
 
@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from rbcli.errors import ParamError
-from rbcli.model import Body
+from rbcli.body.model import Body
 
 __all__ = ["load", "load_text", "load_data"]
 
@@ -55,7 +55,7 @@ def _units(units: object) -> dict[str, str] | None:
             raise TypeError(f"units: the unit of {kind!r} is a text such as 'mm', not "
                             f"{type(unit).__name__}")
         out[str(kind)] = str(unit)
-    from rbcli.io.body import default_units
+    from rbcli.body.bodyfile import default_units
 
     try:
         default_units(out)
@@ -76,7 +76,7 @@ def load(path: str | os.PathLike[str]) -> Body:
     Returns
     -------
     Body
-        The validated body in SI units (a frozen :class:`rbcli.model.Body`); its
+        The validated body in SI units (a frozen :class:`rbcli.body.model.Body`); its
         ``warnings`` are the located warnings the command line prints.
 
     Raises
@@ -94,7 +94,7 @@ def load(path: str | os.PathLike[str]) -> Body:
     >>> body.name, len(body.parts)
     ('Square lamina about a corner', 1)
     """
-    from rbcli.io.body import load_body
+    from rbcli.body.bodyfile import load_body
 
     p = _path(path, "path")
     if not p:
@@ -139,7 +139,7 @@ def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name
     >>> round(float(rbcli.inertia(box).inertia_com[2][2]), 10)   # m (a² + b²)/12, kg m²
     0.0083333333
     """
-    from rbcli.io.body import load_text as _load_text
+    from rbcli.body.bodyfile import load_text as _load_text
 
     if not isinstance(text, (str, bytes, bytearray)):
         raise TypeError(f"text: expected YAML text (str or bytes), not {type(text).__name__}")
@@ -198,7 +198,7 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
     ...
     rbcli.errors.InputError: parts[0].radius: part 'rim': radius must be greater than 0 (got -300 mm)
     """
-    from rbcli.io.bodydata import load_data as _load_data
+    from rbcli.body.pydata import load_data as _load_data
 
     if not isinstance(mapping, Mapping):
         raise TypeError(f"mapping: expected a mapping like a body file's (a dict), not "

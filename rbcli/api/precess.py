@@ -33,7 +33,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.freemotion import FreeMotion
     from rbcli.core.freeverify import VerifyResult
     from rbcli.core.freestate import FreeState
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["PrecessOptions", "PrecessResult", "run", "precess", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
 

@@ -21,7 +21,7 @@ from rbcli.api.reference import Reference, inertia_at, part_rows, plausibility, 
 from rbcli.api.result import Result
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["PrincipalOptions", "PrincipalResult", "run", "principal"]
 

@@ -21,7 +21,7 @@ from rbcli.api.result import jsonable
 from rbcli.errors import Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["Reference", "part_rows", "plausibility", "snap", "with_parts", "inertia_at",
            "shaft_axis", "shaft_point"]

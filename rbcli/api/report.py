@@ -37,7 +37,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.rollcheck import RollcheckOptions
     from rbcli.api.top import TopOptions
     from rbcli.api.whirl import WhirlOptions
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["ReportOptions", "ReportResult", "Section", "report", "run"]
 
@@ -327,7 +327,7 @@ class ReportResult(Result):
 
     def __post_init__(self) -> None:
         """Every field made immutable (:func:`rbcli.api.result.frozen`) but the body, which
-        is immutable where it is made (:mod:`rbcli.model`: read-only arrays, tuples and
+        is immutable where it is made (:mod:`rbcli.body.model`: read-only arrays, tuples and
         mappings): walking its parts again cost 9 s for 100 000 parts."""
         import dataclasses
 

@@ -29,7 +29,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.toppath import TopState
     from rbcli.core.symmetry import AxialSymmetry
     from rbcli.core.topverify import RealBodyCheck, VerifyResult
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["TopOptions", "TopResult", "run", "top", "series", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
 

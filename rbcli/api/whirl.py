@@ -33,7 +33,7 @@ from rbcli.api.whirlresult import (  # noqa: F401
 from rbcli.errors import InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["WhirlOptions", "WhirlResult", "whirl", "run", "CONVENTIONS"]
 

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from rbcli.model import Part
+from rbcli.body.model import Part
 
 
 class InputOverflow(ValueError):
@@ -132,7 +132,7 @@ def body_mass_props(body: Any) -> MassProps:
     """:func:`combine` of ``body.parts``, computed once per body.
 
     The body loader leaves the mass properties it computed (to check the body) on the
-    :class:`rbcli.model.Body`; a body made otherwise gets them on first use. The result's
+    :class:`rbcli.body.model.Body`; a body made otherwise gets them on first use. The result's
     arrays are the caller's own copies.
     """
     cached = getattr(body, "_mass_props", None)

@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from rbcli.errors import InputError, Location
-from rbcli.io import fields as fl
+from rbcli.io import yamlvalues as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 
@@ -158,7 +158,7 @@ class FieldJob:
 
 
 class _Ctx:
-    """Located errors and the file's bare units (what :mod:`rbcli.io.fields` needs)."""
+    """Located errors and the file's bare units (what :mod:`rbcli.io.yamlvalues` needs)."""
 
     def __init__(self, file: str, units: dict[str, str]) -> None:
         self.file = file

@@ -44,7 +44,7 @@ from pathlib import Path
 from typing import IO
 
 from rbcli.errors import InputError, literal
-from rbcli.model import Body
+from rbcli.body.model import Body
 
 _TMP_PREFIX = ".rbcli-"
 _TMP_SUFFIX = ".tmp"

@@ -11,7 +11,7 @@ import numpy as np
 
 from typing import TYPE_CHECKING, Any
 
-from rbcli.model import Body
+from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.units import DisplayUnits
 

@@ -1,7 +1,7 @@
 """Reading the fields of a body file: numbers with units, vectors, texts, flags, and a
 part's placement (``at``, ``axis``, ``rotate``), each checked and located.
 
-Helpers of :mod:`rbcli.io.body`: ``ctx`` is its per-file context (``error(node, message)``
+Helpers of :mod:`rbcli.body.bodyfile`: ``ctx`` is its per-file context (``error(node, message)``
 makes a located :class:`rbcli.errors.InputError`; ``factor(kind, node)`` and ``factors``
 give the file's unit of a kind). Every problem is an InputError at the node at fault.
 """
@@ -285,7 +285,7 @@ def placement_spec(ctx: Any, m: ys.MapNode) -> tuple[list[float], tuple | None]:
 
 def placement(ctx: Any, m: ys.MapNode) -> tuple[np.ndarray, np.ndarray]:
     """A part's ``at`` (m) and rotation matrix, for the parts placed one by one (the
-    primitives are placed in batches: :mod:`rbcli.io.placing`)."""
+    primitives are placed in batches: :mod:`rbcli.body.placing`)."""
     at, spec = placement_spec(ctx, m)
     return np.array(at), rot.from_specs([spec])[0]
 

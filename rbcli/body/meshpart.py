@@ -7,15 +7,15 @@ from pathlib import Path
 
 import numpy as np
 
-from rbcli.io import fields as fl
+from rbcli.io import yamlvalues as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtract
-from rbcli.io.includes import names_a_folder
-from rbcli.io.loadctx import Ctx
-from rbcli.io.placing import place
-from rbcli.io.plausible import note_density
-from rbcli.model import Outline, Part
+from rbcli.io.yamlvalues import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtract
+from rbcli.body.includes import names_a_folder
+from rbcli.body.loadctx import Ctx
+from rbcli.body.placing import place
+from rbcli.body.plausible import note_density
+from rbcli.body.model import Outline, Part
 
 MESH_KEYS = (
     "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",

@@ -1,12 +1,12 @@
 """What one load of a body file shares: the :class:`Session` (the parts budget, the files
 already parsed) and each file's :class:`Ctx` (where its messages point, its units, what it
-read). The readers of :mod:`rbcli.io.parts`, :mod:`rbcli.io.fields` and the special parts
+read). The readers of :mod:`rbcli.body.partlist`, :mod:`rbcli.io.yamlvalues` and the special parts
 take a ``ctx`` and raise ``ctx.error(node, message)``: an InputError at the node at fault.
 
 Where a node is: a :class:`rbcli.io.yamlsafe.Mark` (line and column) for a body read from
 YAML text, a :class:`DataMark` (its key path, ``parts[2].radius``, or the Python call that
 made it, ``parts[2] (cylinder 'bore')``) for a body built from Python data
-(:mod:`rbcli.io.bodydata`); :meth:`Ctx.where` makes either a :class:`rbcli.errors.Location`.
+(:mod:`rbcli.body.pydata`); :meth:`Ctx.where` makes either a :class:`rbcli.errors.Location`.
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ class Session:
     read and parsed (an included file is read and parsed once per real path, and its
     parts placed per use, so a diamond of includes costs time linear in the files).
 
-    ``load`` reads an included file's text (:func:`rbcli.io.body._load`, given here so that
+    ``load`` reads an included file's text (:func:`rbcli.body.bodyfile._load`, given here so that
     the include reader need not import the body reader that imports it)."""
 
     max_parts: int
@@ -41,7 +41,7 @@ class Session:
     used: int = 0  # parts and includes so far, every use counted
     parsed: dict = field(default_factory=dict)  # (real path, real folder) -> its loaded file
     parses: int = 0  # files parsed (the work count the tests check)
-    #: densities no matter has, as located warnings (rbcli.io.plausible): the first is said
+    #: densities no matter has, as located warnings (rbcli.body.plausible): the first is said
     densities: list = field(default_factory=list)
 
     def spend(self, ctx: Ctx, node: ys.Node | None, n: int) -> None:
@@ -88,7 +88,7 @@ def new_session(load: Callable | None = None) -> Session:
 class DataMark:
     """Where a value is in Python data: its key path from the root (``parts[2].radius``).
 
-    A node of a tree made from Python data (:mod:`rbcli.io.bodydata`) carries one where a
+    A node of a tree made from Python data (:mod:`rbcli.body.pydata`) carries one where a
     node read from YAML carries a :class:`rbcli.io.yamlsafe.Mark`. ``key`` is a mapping key
     (``str``), a list index (``int``) or a :class:`Label`: a label names the value and all
     it holds as a whole (``Body.from_parts`` labels each part by the call that made it, so

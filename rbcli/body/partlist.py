@@ -2,10 +2,10 @@
 
 Each part is checked in file order (keys, shape, parameters, mass or density, placement),
 each problem an InputError located at the node at fault. A primitive shape becomes a
-:class:`rbcli.io.placing.Pending` (placed in batches by :mod:`rbcli.io.placing`); a
-``given`` part (:mod:`rbcli.io.givenpart`) or a ``mesh`` (:mod:`rbcli.io.meshpart`) a
-finished :class:`rbcli.model.Part`; an ``include`` (:mod:`rbcli.io.includes`) a
-:class:`rbcli.io.placing.Stack` of its file's parts.
+:class:`rbcli.body.placing.Pending` (placed in batches by :mod:`rbcli.body.placing`); a
+``given`` part (:mod:`rbcli.body.givenpart`) or a ``mesh`` (:mod:`rbcli.body.meshpart`) a
+finished :class:`rbcli.body.model.Part`; an ``include`` (:mod:`rbcli.body.includes`) a
+:class:`rbcli.body.placing.Stack` of its file's parts.
 """
 
 from __future__ import annotations
@@ -17,10 +17,10 @@ import numpy as np
 
 from rbcli.core import rotation as rot
 from rbcli.core import shapes as shp
-from rbcli.io import fields as fl
+from rbcli.io import yamlvalues as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import (
+from rbcli.io.yamlvalues import (
     DENSITY_FOR,
     MASS_KEYS,
     PLACEMENT_KEYS,
@@ -28,13 +28,13 @@ from rbcli.io.fields import (
     mass_source,
     subtract,
 )
-from rbcli.io.givenpart import GIVEN_KEYS, given_part
-from rbcli.io.includes import INCLUDE_KEYS, include_part
-from rbcli.io.loadctx import Ctx
-from rbcli.io.meshpart import MESH_KEYS, mesh_part
-from rbcli.io.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
-from rbcli.io.plausible import note_density
-from rbcli.model import Part
+from rbcli.body.givenpart import GIVEN_KEYS, given_part
+from rbcli.body.includes import INCLUDE_KEYS, include_part
+from rbcli.body.loadctx import Ctx
+from rbcli.body.meshpart import MESH_KEYS, mesh_part
+from rbcli.body.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
+from rbcli.body.plausible import note_density
+from rbcli.body.model import Part
 
 COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
 SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not by core.shapes
@@ -68,7 +68,7 @@ def _part_name(ctx: Ctx, m: ys.MapNode, index: int, shape: str, names: set[str])
 
 def parts(ctx: Ctx, node: ys.Node, prefix: str = "", *, stacked: bool = False) -> list[Part] | Stack:
     """The parts of the list ``node``: as :class:`Part` s, or for an included file
-    (``stacked``) as one :class:`rbcli.io.placing.Stack` (each use moves it)."""
+    (``stacked``) as one :class:`rbcli.body.placing.Stack` (each use moves it)."""
     if not isinstance(node, ys.SeqNode):
         raise ctx.error(node, f"parts must be a list of parts, not {fl.describe(node)}")
     if not node.items:
@@ -101,7 +101,7 @@ def _is_include(node: ys.Node) -> bool:
 
 def part(ctx: Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, fl.Known], prefix: str):
     """One entry of ``parts``: a primitive as a :class:`Pending` (placed by
-    :func:`rbcli.io.placing.finish` with others), an include as a :class:`Stack` of its
+    :func:`rbcli.body.placing.finish` with others), an include as a :class:`Stack` of its
     file's parts, a mesh or given part as a finished :class:`Part`."""
     m = node if isinstance(node, ys.MapNode) else fl.mapping(ctx, node, f"part {index + 1}")
     shape_item = m.items.get("shape")

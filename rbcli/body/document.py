@@ -20,7 +20,7 @@ from pathlib import Path
 
 from rbcli.errors import InputError, Location
 from rbcli.io import outfile
-from rbcli.model import Body
+from rbcli.body.model import Body
 
 __all__ = ["to_yaml", "document", "dump", "check_output"]
 
@@ -62,7 +62,7 @@ def document(body) -> dict:
         no document.
     """
     from rbcli.io import yamlsafe as ys
-    from rbcli.io.body import origin
+    from rbcli.body.bodyfile import origin
 
     if origin(body) is None:
         raise InputError("this body has no document to write or change: it was not made by "
@@ -95,7 +95,7 @@ def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
     InputError
         A body no reader of rbcli made (:func:`document`).
     """
-    from rbcli.io.body import origin
+    from rbcli.body.bodyfile import origin
 
     if base_dir is not None and not isinstance(base_dir, (str, os.PathLike)):
         raise TypeError(f"base_dir: expected a folder (str or path-like), not {type(base_dir).__name__}")

@@ -9,9 +9,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from rbcli.core.shapes import SHAPES
-from rbcli.io.body import UNIT_KEYS
-from rbcli.io.givenpart import INERTIA_NAMES
-from rbcli.io.parts import SPECIAL_SHAPES
+from rbcli.body.bodyfile import UNIT_KEYS
+from rbcli.body.givenpart import INERTIA_NAMES
+from rbcli.body.partlist import SPECIAL_SHAPES
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
 

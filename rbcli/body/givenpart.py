@@ -14,12 +14,12 @@ from __future__ import annotations
 import numpy as np
 
 from rbcli.core.inertia import tensor_problem
-from rbcli.io import fields as fl
+from rbcli.io import yamlvalues as fl
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import PLACEMENT_KEYS, subtract
-from rbcli.io.loadctx import Ctx
-from rbcli.io.placing import place
-from rbcli.model import Outline, Part, equivalent_ellipsoid
+from rbcli.io.yamlvalues import PLACEMENT_KEYS, subtract
+from rbcli.body.loadctx import Ctx
+from rbcli.body.placing import place
+from rbcli.body.model import Outline, Part, equivalent_ellipsoid
 
 GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", "convention", *PLACEMENT_KEYS)
 #: each entry of the map form, and the names it is read by: I.. (most tools), L.. (SolidWorks's

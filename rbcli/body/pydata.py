@@ -2,11 +2,11 @@
 :func:`from_parts` (parts made by :mod:`rbcli.parts`), and the bodies made from another
 (:func:`replace_part`, :func:`with_points`).
 
-There is one validator, the body loader (:mod:`rbcli.io.body` and its readers): Python data
+There is one validator, the body loader (:mod:`rbcli.body.bodyfile` and its readers): Python data
 is first *frozen* (:func:`freeze`: plain, immutable values — str, int, float, bool, None,
 tuples, read-only mappings with text keys; numpy scalars and arrays become Python numbers
 and tuples), then made into the loader's tree (:func:`tree`), each node located by a
-:class:`rbcli.io.loadctx.DataMark` (its key path, ``parts[2].radius``) instead of a line
+:class:`rbcli.body.loadctx.DataMark` (its key path, ``parts[2].radius``) instead of a line
 and column. The loader then makes every check and says every message it says of a file.
 
 What freezing refuses: a value of a type no body file holds (a complex number, a set, an
@@ -15,7 +15,7 @@ nesting deeper than a body file may nest, an integer of more than 300 digits or 
 is not Unicode (a lone surrogate) is an :class:`rbcli.errors.InputError` located there.
 
 A body built here keeps its document as YAML text (``Body.text``, what
-:func:`rbcli.io.writebody.dump` writes of the frozen data), so that it can be written
+:func:`rbcli.body.document.dump` writes of the frozen data), so that it can be written
 (``Body.to_yaml``), changed (``Body.replace``) and reported like a body read from a file.
 """
 
@@ -31,7 +31,7 @@ from typing import Any
 
 from rbcli.errors import InputError, Location
 from rbcli.io import yamlsafe as ys
-from rbcli.io.loadctx import DataMark, Label
+from rbcli.body.loadctx import DataMark, Label
 
 __all__ = ["PartSpec", "freeze", "thaw", "tree", "load_data", "from_parts", "rebuilt", "replace_part", "move_part", "with_points", "SOURCE"]
 
@@ -313,7 +313,7 @@ def _base(base_dir: object, param: str = "base_dir") -> Path:
 def _check_budget(parts: object, where: str) -> None:
     """Refuse a list of parts over the parts budget before it is frozen (a part costs at
     least one of it), as a body file's is refused while it is parsed."""
-    from rbcli.io.loadctx import new_session
+    from rbcli.body.loadctx import new_session
 
     if isinstance(parts, Sized) and not isinstance(parts, (str, Mapping)):
         session = new_session()
@@ -325,8 +325,8 @@ def _load(data: MappingProxyType, root: str, base_dir: Path, *, name: str = "bod
           units: Mapping[str, str] | None = None, labels: Sequence[str] | None = None):
     """The body of frozen ``data`` (a body file's mapping), through the loader; ``labels``
     name each of its parts as a whole (``Body.from_parts``'s ``parts[2] (cylinder 'bore')``)."""
-    from rbcli.io.body import load_node
-    from rbcli.io.writebody import dump
+    from rbcli.body.bodyfile import load_node
+    from rbcli.body.document import dump
 
     top = DataMark(None, "", root)
     if labels is None:
@@ -412,13 +412,13 @@ def from_parts(parts: Sequence[Mapping[str, object]], *, base_dir: object = None
 def rebuilt(body, data: dict):
     """The body of ``data`` (:func:`document` of ``body``, changed), read from ``body``'s
     folder, its problems located by key path."""
-    from rbcli.io.body import origin
+    from rbcli.body.bodyfile import origin
 
     return load_data(data, base_dir=origin(body))
 
 
 def _document(body) -> dict:
-    from rbcli.io.writebody import document
+    from rbcli.body.document import document
 
     return document(body)
 
@@ -439,7 +439,7 @@ def _index(body, data: dict, which: object) -> int:
         if n == which:
             return i
         names.append(n)
-    from rbcli.io.fields import suggest
+    from rbcli.io.yamlvalues import suggest
 
     raise InputError(f"which: the body has no part named {which!r}{suggest(which, names)} "
                      f"(parts: {', '.join(names)})")

@@ -1,15 +1,15 @@
-"""Read a body file (YAML) into a validated :class:`rbcli.model.Body` in SI units.
+"""Read a body file (YAML) into a validated :class:`rbcli.body.model.Body` in SI units.
 
 Every problem is an :class:`rbcli.errors.InputError` located at ``file:line:col``.
 The walk is strict: numbers must be numbers (``true`` is not 1.0), strings with
 units must have the right dimension, unknown keys are refused with a
 "did you mean" hint, and the finished body must be physically possible.
 
-The readers: :mod:`rbcli.io.loadctx` (the load's budget, each file's context),
-:mod:`rbcli.io.parts` (the walk over ``parts:`` and each primitive part),
-:mod:`rbcli.io.givenpart`, :mod:`rbcli.io.meshpart`, :mod:`rbcli.io.includes` (the
-special parts), :mod:`rbcli.io.fields` (numbers, vectors, placements, masses) and
-:mod:`rbcli.io.placing` (parts placed in batches).
+The readers: :mod:`rbcli.body.loadctx` (the load's budget, each file's context),
+:mod:`rbcli.body.partlist` (the walk over ``parts:`` and each primitive part),
+:mod:`rbcli.body.givenpart`, :mod:`rbcli.body.meshpart`, :mod:`rbcli.body.includes` (the
+special parts), :mod:`rbcli.io.yamlvalues` (numbers, vectors, placements, masses) and
+:mod:`rbcli.body.placing` (parts placed in batches).
 """
 
 from __future__ import annotations
@@ -26,17 +26,17 @@ import numpy as np
 from rbcli.core import shapes as shp
 from rbcli.core.inertia import combine, remember_mass_props, tensor_problem
 from rbcli.errors import InputError, Location
-from rbcli.io import fields as fl
-from rbcli.io import includes as inc
-from rbcli.io import parts as pt
+from rbcli.io import yamlvalues as fl
+from rbcli.body import includes as inc
+from rbcli.body import partlist as pt
 from rbcli.io import units as un
 from rbcli.io import yamlplain
 from rbcli.io import yamlsafe as ys
-from rbcli.io.givenpart import pretty_unit
-from rbcli.io.loadctx import Ctx, Session, new_session, shared_factors
-from rbcli.io.placing import Stack, finish, parts_of, to_stack
-from rbcli.io.plausible import density_warning
-from rbcli.model import Body, Part, Shaft
+from rbcli.body.givenpart import pretty_unit
+from rbcli.body.loadctx import Ctx, Session, new_session, shared_factors
+from rbcli.body.placing import Stack, finish, parts_of, to_stack
+from rbcli.body.plausible import density_warning
+from rbcli.body.model import Body, Part, Shaft
 
 __all__ = ["load_body", "load_text", "load_expr", "load_node", "origin", "default_units",
            "FORMAT_VERSION",
@@ -101,7 +101,7 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
           units: dict[str, str] | None = None, *, session: Session | None = None,
           stacked: bool = False, root: ys.Node | None = None) -> _Loaded:
     """Read a file's text ``data`` (or the tree ``root`` already made of Python data:
-    :mod:`rbcli.io.bodydata`)."""
+    :mod:`rbcli.body.pydata`)."""
     session = session if session is not None else new_session(_load)
     if root is None:
         cap = session.list_cap(filename)
@@ -314,7 +314,7 @@ def load_text(
 
 def load_node(root: ys.Node, source: str, base_dir: Path, *, text: str,
               name_default: str = "body", units: dict[str, str] | None = None) -> Body:
-    """Load a body from a tree made of Python data (:func:`rbcli.io.bodydata.tree`, each node
+    """Load a body from a tree made of Python data (:func:`rbcli.body.pydata.tree`, each node
     located by its key path); ``text`` is its document as YAML (``Body.text``)."""
     loaded = _load(None, source, base_dir, (), units, root=root)
     return _finish(loaded, name_default, source, text, (), base_dir)

@@ -10,7 +10,7 @@ sequences are tuples. One body, one answer.
 
 A body is built in code with :meth:`Body.from_parts`, changed with :meth:`Body.replace` and
 :meth:`Body.moved`, and written with :meth:`Body.to_yaml`: those methods are the body
-reader's and writer's (:mod:`rbcli.io.bodydata`, :mod:`rbcli.io.writebody`), imported when
+reader's and writer's (:mod:`rbcli.body.pydata`, :mod:`rbcli.body.document`), imported when
 called, so that this module stays a leaf at import time (tests/test_architecture.py allows
 those two imports and no other).
 """
@@ -307,7 +307,7 @@ class Body:
         >>> round(float(rbcli.inertia(wheel).inertia_com[2][2]), 12)   # 2 R²/2 + 1 R², kg m²
         0.045
         """
-        from rbcli.io.bodydata import from_parts
+        from rbcli.body.pydata import from_parts
 
         return from_parts(parts, name=name, units=units, shaft=shaft, reference=reference,
                           pivot=pivot, rim_radius=rim_radius, description=description,
@@ -364,7 +364,7 @@ class Body:
         >>> bool((rbcli.inertia(again).inertia_com == rbcli.inertia(box).inertia_com).all())
         True
         """
-        from rbcli.io.writebody import to_yaml
+        from rbcli.body.document import to_yaml
 
         return to_yaml(self, base_dir)
 
@@ -407,7 +407,7 @@ class Body:
         >>> heavier.parts[0].mass, rotor.parts[0].mass
         (6.0, 5.0)
         """
-        from rbcli.io.bodydata import replace_part
+        from rbcli.body.pydata import replace_part
 
         return replace_part(self, which, part, keys)
 
@@ -446,6 +446,6 @@ class Body:
         >>> round(abs(rbcli.balance(off).static_unbalance), 12)   # 5 kg × 1 mm, kg m
         0.005
         """
-        from rbcli.io.bodydata import move_part
+        from rbcli.body.pydata import move_part
 
         return move_part(self, which, at, axis, rotate)

@@ -1,7 +1,7 @@
 """A ``shape: include`` part: another body file's parts, placed as a whole.
 
 An included file is read and parsed once per real path in a load (:class:`Session`'s
-``parsed``), its parts kept as a :class:`rbcli.io.placing.Stack` that each use moves, so
+``parsed``), its parts kept as a :class:`rbcli.body.placing.Stack` that each use moves, so
 a diamond of includes costs time linear in its files; cycles and nesting deeper than
 :data:`MAX_INCLUDE_DEPTH` are refused.
 """
@@ -12,11 +12,11 @@ import os
 from pathlib import Path
 
 from rbcli.errors import Location
-from rbcli.io import fields as fl
+from rbcli.io import yamlvalues as fl
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import PLACEMENT_KEYS
-from rbcli.io.loadctx import Ctx
-from rbcli.io.placing import Stack
+from rbcli.io.yamlvalues import PLACEMENT_KEYS
+from rbcli.body.loadctx import Ctx
+from rbcli.body.placing import Stack
 from rbcli.io.reader import read_regular
 
 MAX_INCLUDE_DEPTH = 16

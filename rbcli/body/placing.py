@@ -1,11 +1,11 @@
 """Placing a body file's primitive parts in batches (issue 15: 100 000-part bodies).
 
-The loader (:mod:`rbcli.io.body`) checks each part as it reads it and keeps what it
+The loader (:mod:`rbcli.body.bodyfile`) checks each part as it reads it and keeps what it
 found as a :class:`Pending`; :func:`finish` then places a batch of them at once: their
 rotations per kind (:func:`rbcli.core.rotation.from_specs`), ``com = at + R c`` and
 ``J = R (m U) Rᵀ`` as stacked matrix products — the same numbers, bit for bit, as one
 product per part (numpy makes the same BLAS call for each matrix of a stack) — and
-makes their :class:`rbcli.model.Part` s, whose arrays are rows of a few shared arrays.
+makes their :class:`rbcli.body.model.Part` s, whose arrays are rows of a few shared arrays.
 
 An included file's parts stay arrays (a :class:`Stack`): each use of the file moves all of
 them at once (:meth:`Stack.moved`) and only the top file makes Part objects, so that an
@@ -21,7 +21,7 @@ import numpy as np
 
 from rbcli.core import rotation as rot
 from rbcli.errors import Location
-from rbcli.model import EMPTY_MAPPING, Outline, Part
+from rbcli.body.model import EMPTY_MAPPING, Outline, Part
 
 #: primitives placed per batch: large enough for numpy to pay, small enough that the
 #: batch's arrays and pending parts add little to the peak memory of a large body
@@ -55,7 +55,7 @@ def place(part_com, part_I, at, R):
 
 def dims_of(params: dict) -> tuple:
     """The drawing's description of a primitive part: its parameters (m) as
-    :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
+    :class:`rbcli.body.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
     dims = tuple(params.items())
     for k, v in dims:
         if v.__class__ is not float:  # else as it is (most parameters: one length)
@@ -108,7 +108,7 @@ def _mixed_units(pending: list) -> np.ndarray:
 def _placed(pending: list) -> tuple:
     """``pending`` placed: (coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines'
     origins (n, 3) and rotations (n, 3, 3)), read-only arrays that own their data (their
-    rows are the parts' arrays: :class:`rbcli.model.Part` keeps such rows, not copies)."""
+    rows are the parts' arrays: :class:`rbcli.body.model.Part` keeps such rows, not copies)."""
     ats = _rows([p.at for p in pending])  # (n, 3), not a view (see model._frozen)
     Rs = rot.from_specs([p.spec for p in pending])
     local_coms = _rows([p.com for p in pending])
