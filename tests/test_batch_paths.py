@@ -8,7 +8,7 @@ import pytest
 
 from rbcli.api.reference import snap
 from rbcli.core import inertia as ci
-from rbcli.body.model import Part
+from rbcli.body.partmodel import Part
 
 
 def _snap_numpy(values, scale=None, rtol=1e-14):

@@ -14,7 +14,7 @@ import pytest
 
 from rbcli.errors import InputError
 from rbcli.io import meshobj
-from rbcli.body.bodyfile import load_body, load_text
+from rbcli.body.model import load_body, load_text
 from rbcli.io.meshfile import MeshFileError, read_mesh
 
 ROOT = Path(__file__).resolve().parent.parent

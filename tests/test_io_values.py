@@ -15,7 +15,8 @@ import pytest
 
 import rbcli
 from rbcli.errors import Location
-from rbcli.body.model import Body, Outline, Part, Shaft
+from rbcli.body.model import Body
+from rbcli.body.partmodel import Outline, Part, Shaft
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from rbcli.io import yamlsafe
-from rbcli.body.bodyfile import load_text
+from rbcli.body.model import load_text
 from rbcli.body.schema import SCHEMA_PATH, body_schema, schema_text
 
 ROOT = Path(__file__).resolve().parent.parent

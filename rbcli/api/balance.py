@@ -513,7 +513,7 @@ class BalanceResult(Result):
         >>> bool(again.corrections[0].mass < 1e-3)    # less than the 1 g step, kg
         True
         """
-        from rbcli.body.pydata import with_points
+        from rbcli.body.model import with_points
 
         if self.installed is None:
             raise ParamError("planes", "balanced_body() needs the correction planes: "

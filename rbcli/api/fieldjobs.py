@@ -511,7 +511,7 @@ def _suggest(s: dict, *, rotor_mass, rotor, bearing_load, trial_fraction) -> Any
                                    "rotor_mass", "the rotor's mass", "kg")
         elif rotor is not None or (jr is not None and jr.body is not None):
             from rbcli.core.inertia import body_mass_props
-            from rbcli.body.bodyfile import load_body
+            from rbcli.body.model import load_body
 
             mp = body_mass_props(load_body(str(rotor if rotor is not None else jr.body)))
             mass, com = float(mp.mass), float(mp.com[2])

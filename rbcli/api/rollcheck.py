@@ -28,7 +28,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.rollcircle import CircleMotion
     from rbcli.core.rolling import Curves, StraightRolling, Verdict
     from rbcli.core.wheel import Wheel
-    from rbcli.body.model import Body, Part
+    from rbcli.body.model import Body
+    from rbcli.body.partmodel import Part
 
 __all__ = ["OffCentreRim", "RollcheckOptions", "RollcheckResult", "rollcheck", "run", "round_parts"]
 

@@ -13,13 +13,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from rbcli.core.inertia import tensor_problem
-from rbcli.io import yamlvalues as fl
-from rbcli.io import yamlsafe as ys
-from rbcli.io.yamlvalues import PLACEMENT_KEYS, subtract
 from rbcli.body.loadctx import Ctx
+from rbcli.body.partkeys import PLACEMENT_KEYS, placement, subtract
+from rbcli.body.partmodel import Outline, Part, equivalent_ellipsoid
 from rbcli.body.placing import place
-from rbcli.body.model import Outline, Part, equivalent_ellipsoid
+from rbcli.core.inertia import tensor_problem
+from rbcli.io import yamlsafe as ys
+from rbcli.io import yamlvalues as fl
 
 GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", "convention", *PLACEMENT_KEYS)
 #: each entry of the map form, and the names it is read by: I.. (most tools), L.. (SolidWorks's
@@ -115,7 +115,7 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
             f"{ctx.where(inode)}: note: {what}: the inertia is symmetric to {share:.1g} of its "
             "largest entry (as its digits were printed); its symmetric part is used")
     J = 0.5 * (J + J.T)
-    at, R = fl.placement(ctx, m)
+    at, R = placement(ctx, m)
     known[name] = (None, "given")
     pc, PJ = place(com, J, at, R)
     return Part(

@@ -11,12 +11,12 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from rbcli.errors import Location
-from rbcli.io import yamlvalues as fl
-from rbcli.io import yamlsafe as ys
-from rbcli.io.yamlvalues import PLACEMENT_KEYS
 from rbcli.body.loadctx import Ctx
+from rbcli.body.partkeys import PLACEMENT_KEYS, placement
 from rbcli.body.placing import Stack
+from rbcli.errors import Location
+from rbcli.io import yamlsafe as ys
+from rbcli.io import yamlvalues as fl
 from rbcli.io.reader import read_regular
 
 MAX_INCLUDE_DEPTH = 16
@@ -79,6 +79,6 @@ def include_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str) -> Stack:
     ctx.warnings.extend(sub.warnings)
     ctx.inputs.append(real)
     ctx.inputs.extend(sub.ctx.inputs)
-    at, R = fl.placement(ctx, m)
+    at, R = placement(ctx, m)
     return sub.parts.moved(at, R, f"{prefix}{name}/")
 

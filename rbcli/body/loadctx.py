@@ -16,11 +16,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rbcli.errors import InputError, Location
-from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 from rbcli.io.reader import limit_from_env
+from rbcli.io.yamlvalues import FileContext
 
-__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "new_session", "shared_factors"]
+__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "Label", "new_session"]
 
 #: the default budget of a body: its parts, counting every use of an included file's parts
 #: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
@@ -62,24 +62,6 @@ class Session:
                 lambda mark: InputError(self.over_message(), Location(filename, mark.line, mark.col)))
 
 
-#: the unit factors of each set of base units, shared by the files that have them (a factor
-#: depends on the base units and the kind alone): kind -> (factor, unit)
-_FACTORS: dict[tuple, dict[str, tuple[float, str]]] = {}
-_MAX_FACTORS = 256
-
-
-def shared_factors(base_units: dict[str, str]) -> dict[str, tuple[float, str]]:
-    """The dict of :attr:`Ctx.factors` for files with ``base_units``, shared between them
-    (a batch of files in mm and kg looks each kind's unit up once)."""
-    key = tuple(sorted(base_units.items()))
-    found = _FACTORS.get(key)
-    if found is None:
-        if len(_FACTORS) >= _MAX_FACTORS:
-            _FACTORS.clear()
-        found = _FACTORS[key] = {}
-    return found
-
-
 def new_session(load: Callable | None = None) -> Session:
     """A session with the parts budget of ``RBCLI_MAX_PARTS`` (else :data:`MAX_PARTS`)."""
     return Session(limit_from_env("RBCLI_MAX_PARTS", MAX_PARTS), load)
@@ -114,14 +96,14 @@ class DataMark:
         keys: list = []
         m: DataMark | None = self
         while m is not None:
-            if m.key.__class__ is Label:
+            if isinstance(m.key, Label):
                 return str(m.key)
             if m.parent is not None:
                 keys.append(m.key)
             m = m.parent
         out = ""
         for k in reversed(keys):
-            if k.__class__ is int:
+            if isinstance(k, int):
                 out += f"[{k}]"
             elif not k.isidentifier():
                 out += f"[{k!r}]"
@@ -139,15 +121,13 @@ class Label(str):
     __slots__ = ()
 
 
-@dataclass
-class Ctx:
-    """One file being read: its name in messages, its folder, its units, what it found."""
+@dataclass(kw_only=True)
+class Ctx(FileContext):
+    """One file of a body being read: its name in messages, its folder, its units, what it
+    found."""
 
-    file: str  # as shown in messages
     base_dir: Path  # where relative paths start
     stack: tuple[str, ...] = ()  # real paths of the files being included (cycle check)
-    base_units: dict[str, str] = field(default_factory=dict)
-    factors: dict[str, tuple[float, str]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     #: real paths of the files read below this one (includes at any depth, meshes)
     inputs: list[str] = field(default_factory=list)
@@ -158,20 +138,7 @@ class Ctx:
     def where(self, node_or_mark: ys.Node | ys.Mark | DataMark | None) -> Location:
         """Where a node (or a mark) is: ``file:line:col`` in a file, or the key path of
         Python data (:class:`DataMark`)."""
-        if node_or_mark is None:
-            return Location(self.file)
         mark = node_or_mark.mark if isinstance(node_or_mark, ys.Node) else node_or_mark
-        if mark.__class__ is DataMark:
+        if isinstance(mark, DataMark):
             return Location(mark.path())
-        return Location(self.file, mark.line, mark.col)
-
-    def error(self, node_or_mark: ys.Node | ys.Mark | None, message: str) -> InputError:
-        return InputError(message, self.where(node_or_mark))
-
-    def factor(self, kind: str, node: ys.Node | None = None) -> tuple[float, str]:
-        if kind not in self.factors:
-            try:
-                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
-            except un.UnitError as exc:
-                raise self.error(node, str(exc)) from None
-        return self.factors[kind]
+        return super().where(mark)

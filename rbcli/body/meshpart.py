@@ -7,15 +7,16 @@ from pathlib import Path
 
 import numpy as np
 
-from rbcli.io import yamlvalues as fl
-from rbcli.io import units as un
-from rbcli.io import yamlsafe as ys
-from rbcli.io.yamlvalues import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtract
 from rbcli.body.includes import names_a_folder
 from rbcli.body.loadctx import Ctx
+from rbcli.body.partkeys import PLACEMENT_KEYS, check_mass, mass_source, placement, subtract
+from rbcli.body.partmodel import Outline, Part
 from rbcli.body.placing import place
 from rbcli.body.plausible import note_density
-from rbcli.body.model import Outline, Part
+from rbcli.io import units as un
+from rbcli.io import yamlsafe as ys
+from rbcli.io import yamlvalues as fl
+from rbcli.io.yamlvalues import HUGE
 
 MESH_KEYS = (
     "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",
@@ -63,7 +64,7 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
     if mass is None and "cut_from" not in m.items:  # a density typed here: one matter has?
         note_density(ctx, src, "density", density, None, True, what)
     removed = subtract(ctx, m)
-    at, R = fl.placement(ctx, m)
+    at, R = placement(ctx, m)
 
     from rbcli.core import mesh as cmesh
     from rbcli.io import meshfile

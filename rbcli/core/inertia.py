@@ -11,11 +11,12 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.body.model import Part
+if TYPE_CHECKING:  # the parts' type only: core imports nothing above it
+    from rbcli.body.partmodel import Part
 
 
 class InputOverflow(ValueError):

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from rbcli.errors import InputError, Location
+from rbcli.io.reader import read_regular
 
 FORMAT = "rbcli field-balance influence coefficients"
 VERSION = 1
@@ -91,8 +92,6 @@ def load_coefficients(path: str) -> SavedCoefficients:
         a file that cannot be read, is not JSON, or is not a coefficients file of this
         format (one line naming the file and what is wrong).
     """
-    from rbcli.io.reader import read_regular
-
     data = read_regular(path, MAX_COEFF_BYTES, "coefficients file")
     try:
         doc = json.loads(data.decode("utf-8"))

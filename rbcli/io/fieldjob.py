@@ -36,9 +36,11 @@ from pathlib import Path
 from typing import Any
 
 from rbcli.errors import InputError, Location
-from rbcli.io import yamlvalues as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io import yamlvalues as fl
+from rbcli.io.reader import read_regular
+from rbcli.io.yamlvalues import FileContext as _Ctx
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "fieldjob.schema.json"
 
@@ -157,32 +159,6 @@ class FieldJob:
     units: dict[str, str]
 
 
-class _Ctx:
-    """Located errors and the file's bare units (what :mod:`rbcli.io.yamlvalues` needs)."""
-
-    def __init__(self, file: str, units: dict[str, str]) -> None:
-        self.file = file
-        self.base_units = units
-        self.factors: dict[str, tuple[float, str]] = {}
-
-    def where(self, node_or_mark: Any) -> Location:
-        if node_or_mark is None:
-            return Location(self.file)
-        mark = node_or_mark if isinstance(node_or_mark, ys.Mark) else node_or_mark.mark
-        return Location(self.file, mark.line, mark.col)
-
-    def error(self, node_or_mark: Any, message: str) -> InputError:
-        return InputError(message, self.where(node_or_mark))
-
-    def factor(self, kind: str, node: Any = None) -> tuple[float, str]:
-        if kind not in self.factors:
-            try:
-                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
-            except un.UnitError as exc:
-                raise self.error(node, str(exc)) from None
-        return self.factors[kind]
-
-
 def load_job(path: str) -> FieldJob:
     """Read and check the job file ``path``.
 
@@ -191,8 +167,6 @@ def load_job(path: str) -> FieldJob:
     rbcli.InputError
         one located line for any problem (the file, its YAML, a key, a value).
     """
-    from rbcli.io.reader import read_regular
-
     data = read_regular(path, MAX_JOB_BYTES, "job file")
     try:
         text = data.decode("utf-8")

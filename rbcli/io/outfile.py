@@ -41,10 +41,16 @@ import stat
 from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from pathlib import Path
-from typing import IO
+from typing import IO, Protocol
 
 from rbcli.errors import InputError, literal
-from rbcli.body.model import Body
+
+
+class Body(Protocol):
+    """What outputs need of a body (:class:`rbcli.Body`): the files it was read from."""
+
+    source: str
+    inputs: tuple[str, ...]
 
 _TMP_PREFIX = ".rbcli-"
 _TMP_SUFFIX = ".tmp"
@@ -64,7 +70,7 @@ def input_files(body_or_inputs: Body | Iterable[str] | None) -> tuple[str, ...]:
     """Real paths of the input files: a body's ``inputs`` (and its source file), or paths."""
     if body_or_inputs is None:
         return ()
-    if isinstance(body_or_inputs, Body):
+    if hasattr(body_or_inputs, "inputs"):  # a body
         paths = list(body_or_inputs.inputs)
         if _is_file(body_or_inputs.source):
             paths.insert(0, body_or_inputs.source)

@@ -34,7 +34,7 @@ with atheris.instrument_imports():
     from rbcli.env import MAX_LINE, clean
     from rbcli.errors import InputError
     from rbcli.io import units
-    from rbcli.body.bodyfile import load_text
+    from rbcli.body.model import load_text
 
 SCRATCH = Path(tempfile.mkdtemp(prefix="rbcli-fuzz-"))
 (SCRATCH / "inc.yaml").write_text("{shape: box, mass: 1, size: [1, 1, 1]}\n")
