@@ -171,7 +171,7 @@ def test_the_reviewed_sites_exist():
 
 
 @pytest.mark.parametrize("text, line, col", [
-    # io/fields.py rotation: a located error from inside the rotate mapping
+    # body/partkeys.py rotation: a located error from inside the rotate mapping
     ("parts:\n  - {shape: box, mass: 1, size: [1, 1, 1], rotate: {axis: [0, 0, 0], angle: 30}}\n", 2, 59),
     # io/yamlsafe.py load: the parser's located error
     ("a: &x 1\nparts: [*x]\n", 1, 4),
