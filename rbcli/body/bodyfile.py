@@ -36,7 +36,7 @@ from rbcli.core.inertia import MassProps, combine, tensor_problem
 from rbcli.errors import InputError, Location
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
-from rbcli.io import yamlvalues as fl
+from rbcli.io import yamlvalues as yv
 from rbcli.io.reader import ReadError, read_stream
 
 __all__ = ["Built", "load_body", "load_text", "load_expr", "load_node", "default_units",
@@ -73,11 +73,11 @@ class _Loaded:
 def _units(ctx: Ctx, m: ys.MapNode) -> None:
     if "units" not in m.items:
         return
-    unode = fl.mapping(ctx, m.items["units"][1], "units")
-    fl.check_keys(ctx, unode, UNIT_KEYS, "units")
+    unode = yv.mapping(ctx, m.items["units"][1], "units")
+    yv.check_keys(ctx, unode, UNIT_KEYS, "units")
     base = {}
     for key, (_km, vnode) in unode.items.items():
-        base[key] = fl.string(ctx, vnode, f"units.{key}")
+        base[key] = yv.string(ctx, vnode, f"units.{key}")
         try:
             un.unit_for_kind({key: base[key]}, key)
         except un.UnitError as exc:
@@ -131,7 +131,7 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
     _units(ctx, root)
     if "parts" in root.items:
-        fl.check_keys(ctx, root, BODY_KEYS, "the body")
+        yv.check_keys(ctx, root, BODY_KEYS, "the body")
         parts = pt.parts(ctx, root.items["parts"][1], stacked=stacked)
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
@@ -171,7 +171,7 @@ def _body_keys(ctx: Ctx, items: dict) -> dict:
     and description, as :class:`rbcli.body.model.Body`'s fields."""
     out: dict = {}
     if "description" in items:
-        out["description"] = fl.string(ctx, items["description"][1], "description")
+        out["description"] = yv.string(ctx, items["description"][1], "description")
     if "reference" in items:
         p = pk.point(ctx, items["reference"][1], "reference")
         if isinstance(p, str):
@@ -185,14 +185,14 @@ def _body_keys(ctx: Ctx, items: dict) -> dict:
             raise ctx.error(items["pivot"][1], "pivot must be a point [x, y, z]")
         out["pivot"] = p
     if "shaft" in items:
-        snode = fl.mapping(ctx, items["shaft"][1], "shaft")
-        fl.check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
+        snode = yv.mapping(ctx, items["shaft"][1], "shaft")
+        yv.check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
         axis = pk.direction(ctx, snode.items["axis"][1], "shaft axis")
         through = snode.items.get("through")
         out["shaft"] = Shaft(axis, np.zeros(3) if through is None else
-                             fl.vector(ctx, through[1], "length", "shaft through"))
+                             yv.vector(ctx, through[1], "length", "shaft through"))
     if "rim_radius" in items:
-        out["rim_radius"] = fl.positive(ctx, items["rim_radius"][1], "length", "rim_radius")
+        out["rim_radius"] = yv.positive(ctx, items["rim_radius"][1], "length", "rim_radius")
     return out
 
 
@@ -218,7 +218,7 @@ def _mass_props(ctx: Ctx, node: ys.Node, parts: tuple[Part, ...]) -> MassProps:
 def _built(loaded: _Loaded, name_default: str, source: str, text: str,
            stack: tuple[str, ...], base_dir: Path) -> Built:
     ctx, items = loaded.ctx, loaded.root.items
-    name = fl.string(ctx, items["name"][1], "name") if "name" in items else name_default
+    name = yv.string(ctx, items["name"][1], "name") if "name" in items else name_default
     fields = _body_keys(ctx, items) if "parts" in items else {}
     parts = tuple(loaded.parts)
     mp = _mass_props(ctx, items["parts"][1] if "parts" in items else loaded.root, parts)

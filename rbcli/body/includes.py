@@ -16,7 +16,7 @@ from rbcli.body.partkeys import PLACEMENT_KEYS, placement
 from rbcli.body.placing import Stack
 from rbcli.errors import Location
 from rbcli.io import yamlsafe as ys
-from rbcli.io import yamlvalues as fl
+from rbcli.io import yamlvalues as yv
 from rbcli.io.reader import read_regular
 
 MAX_INCLUDE_DEPTH = 16
@@ -36,7 +36,7 @@ def read_body_file(path: Path, where: Location | None = None) -> bytes:
 
 
 def _resolve(ctx: Ctx, node: ys.Node, what: str) -> Path:
-    rel = fl.string(ctx, node, what)
+    rel = yv.string(ctx, node, what)
     if names_a_folder(rel):
         raise ctx.error(node, f"{what}: '{rel}' names a folder (it ends with '/'); include "
                         "takes a body file")
@@ -48,7 +48,7 @@ def _resolve(ctx: Ctx, node: ys.Node, what: str) -> Path:
 
 def include_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str) -> Stack:
     what = f"part '{name}' (include)"
-    fl.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
+    yv.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = _resolve(ctx, fnode, "file")
     where = ctx.where(fnode)

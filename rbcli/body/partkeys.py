@@ -54,7 +54,6 @@ def direction_floats(ctx: Any, node: ys.Node, what: str) -> list[float]:
     return v
 
 
-
 ROTATE_KEYS = ("axis", "angle", "euler", "seq", "quaternion", "matrix")
 ROTATE_FORMS = {
     "axis-angle": frozenset({"axis", "angle"}),

@@ -35,7 +35,7 @@ from rbcli.body.plausible import note_density
 from rbcli.core import rotation as rot
 from rbcli.core import shapes as shp
 from rbcli.io import yamlsafe as ys
-from rbcli.io import yamlvalues as fl
+from rbcli.io import yamlvalues as yv
 
 COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
 SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not by core.shapes
@@ -56,7 +56,7 @@ def part_keys(shape: str) -> tuple[str, ...]:
 def _part_name(ctx: Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
     item = m.items.get("name")
     if item is not None:
-        name = fl.string(ctx, item[1], "name")
+        name = yv.string(ctx, item[1], "name")
         if not name.strip():
             raise ctx.error(item[1], "a part name must not be empty")
     else:
@@ -71,7 +71,7 @@ def parts(ctx: Ctx, node: ys.Node, prefix: str = "", *, stacked: bool = False) -
     """The parts of the list ``node``: as :class:`Part` s, or for an included file
     (``stacked``) as one :class:`rbcli.body.placing.Stack` (each use moves it)."""
     if not isinstance(node, ys.SeqNode):
-        raise ctx.error(node, f"parts must be a list of parts, not {fl.describe(node)}")
+        raise ctx.error(node, f"parts must be a list of parts, not {yv.describe(node)}")
     if not node.items:
         raise ctx.error(node, "parts is empty; a body needs at least one part")
     out: list = []  # Pending, Part or Stack (an include's parts)
@@ -104,16 +104,16 @@ def part(ctx: Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, 
     """One entry of ``parts``: a primitive as a :class:`Pending` (placed by
     :func:`rbcli.body.placing.finish` with others), an include as a :class:`Stack` of its
     file's parts, a mesh or given part as a finished :class:`Part`."""
-    m = node if isinstance(node, ys.MapNode) else fl.mapping(ctx, node, f"part {index + 1}")
+    m = node if isinstance(node, ys.MapNode) else yv.mapping(ctx, node, f"part {index + 1}")
     shape_item = m.items.get("shape")
     if shape_item is None:
         raise ctx.error(m, f"part {index + 1} needs 'shape' (one of: {', '.join(all_shape_names())})")
     shape_node = shape_item[1]
-    shape = fl.string(ctx, shape_node, "shape")
+    shape = yv.string(ctx, shape_node, "shape")
     if shape not in shp.SHAPES and shape not in SPECIAL_SHAPES:
         raise ctx.error(
             shape_node,
-            f"unknown shape '{shape}'{fl.suggest(shape, all_shape_names())} (shapes: {', '.join(all_shape_names())})",
+            f"unknown shape '{shape}'{yv.suggest(shape, all_shape_names())} (shapes: {', '.join(all_shape_names())})",
         )
     name = _part_name(ctx, m, index, shape, names)
     what = f"part '{name}'"
@@ -157,7 +157,7 @@ def _diameters(ctx: Ctx, m: ys.MapNode, plan: _Plan, what: str, params: dict, no
         if rkey in items:
             raise ctx.error(items[dkey][0], f"{what}: give '{rkey}' or '{dkey}', not both")
         nodes[rkey] = items[dkey][1]
-        params[rkey] = 0.5 * fl.number(ctx, nodes[rkey], "length", dkey)
+        params[rkey] = 0.5 * yv.number(ctx, nodes[rkey], "length", dkey)
 
 
 def _rod_ends(ctx: Ctx, m: ys.MapNode, what: str, params: dict) -> tuple[list[float], tuple]:
@@ -170,8 +170,8 @@ def _rod_ends(ctx: Ctx, m: ys.MapNode, what: str, params: dict) -> tuple[list[fl
     for k in ("length", *PLACEMENT_KEYS):
         if k in items:
             raise ctx.error(items[k][0], f"{what}: '{k}' does not go with 'from'/'to' (the endpoints place the rod)")
-    a = fl.vector(ctx, items["from"][1], "length", "from")
-    b = fl.vector(ctx, items["to"][1], "length", "to")
+    a = yv.vector(ctx, items["from"][1], "length", "from")
+    b = yv.vector(ctx, items["to"][1], "length", "to")
     if not np.linalg.norm(b - a) > 0:
         raise ctx.error(items["to"][1], f"{what}: 'from' and 'to' are the same point")
     params["length"] = float(np.linalg.norm(b - a))
@@ -181,12 +181,12 @@ def _rod_ends(ctx: Ctx, m: ys.MapNode, what: str, params: dict) -> tuple[list[fl
 def _parameter(ctx: Ctx, node: ys.Node, key: str, kind: str, n: int) -> object:
     """A shape parameter of ``kind`` (:class:`rbcli.core.shapes.Kind`'s name) in SI."""
     if kind == "length":
-        return fl.number(ctx, node, "length", key)
+        return yv.number(ctx, node, "length", key)
     if kind == "lengths":
-        return fl.floats(ctx, node, "length", key, n=n)
+        return yv.floats(ctx, node, "length", key, n=n)
     if kind == "points":
-        return fl.rows(ctx, node, "length", key)
-    return fl.flag(ctx, node, key)
+        return yv.rows(ctx, node, "length", key)
+    return yv.flag(ctx, node, key)
 
 
 def _parameters(ctx: Ctx, m: ys.MapNode, shape: str, plan: _Plan, what: str, params: dict,
@@ -243,7 +243,7 @@ def _mass(ctx: Ctx, m: ys.MapNode, name: str, geo, known: dict, what: str) -> tu
 def _primitive(ctx: Ctx, m: ys.MapNode, shape: str, name: str, prefix: str, known: dict,
                what: str) -> Pending:
     plan = _plan(shape)
-    fl.check_keys(ctx, m, plan.keys, f"{what} ({shape})")
+    yv.check_keys(ctx, m, plan.keys, f"{what} ({shape})")
     params: dict[str, object] = {}
     nodes: dict[str, ys.Node] = {}
     _diameters(ctx, m, plan, what, params, nodes)
