@@ -30,7 +30,6 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 #: raises no InputError: it converts numbers, asks the OS, or calls code that raises plain
 #: ValueErrors only). One more handler in the function changes the count: review it.
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
-    ("api/balance.py", "_positions"): (1, "int() of the value"),
     ("api/fieldjobs.py", "parse"): (1, "int(group)"),
     ("api/load.py", "_units"): (1, "body.bodyfile.default_units: plain ValueErrors (it turns UnitError into one)"),
     ("api/precess.py", "_count"): (1, "int() of the text"),
