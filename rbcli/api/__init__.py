@@ -14,7 +14,7 @@ module             public functions (re-exported by ``rbcli``)
 ``inertia``        ``inertia``
 ``principal``      ``principal``
 ``balance``        ``balance``
-``fieldbalance``   ``field_balance``
+``field``          ``field_balance`` (a package: ``field.service`` and its parts)
 ``precess``        ``precess``
 ``top``            ``top``
 ``gyrocompass``    ``gyrocompass``

@@ -7,7 +7,7 @@ two-plane corrections (rounded or on fixed positions) with the residual they lea
 forces at speed and the ISO 21940-11 check. The result (:class:`BalanceResult`) is frozen,
 knows its JSON (``to_json()``, exactly what ``rbcli balance --json`` prints less ``file``)
 and its exit status (1 when the rotor as given fails the grade). Trial-weight balancing from
-vibration readings is :mod:`rbcli.api.fieldbalance`.
+vibration readings is :mod:`rbcli.api.field`.
 
 The physics and its sources: the physics sheet ``physics/balance.md`` (cited in
 :mod:`rbcli.core.balance`), ISO 21940-11:2016 "Mechanical vibration — Rotor balancing —

@@ -59,7 +59,8 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
     Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``, or
     this command's own word: rollcheck's ``rim_radius`` is ``--radius``, its man page's
     metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
-    options."""
+    options; a parameter of ``form`` "argument" is a positional argument, of "options" an
+    option given once per item (a list; not given: None)."""
     import inspect
 
     from rbcli.cli.app import app
@@ -74,15 +75,18 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         for p in table:
             flag = p.flag or spelled(p.name)
             decls = [d for d in (p.short, flag) if d]
-            kind = {"count": int, "flag": bool}.get(p.kind, str)
-            info = typer.Option(p.default, *decls, help=spell(p.help, spelled),
-                                metavar=p.metavar, show_default=p.default is not None)
-            words[p.name] = flag.lstrip("-").replace("-", "_")
+            kind = list[str] if p.form == "options" else {"count": int, "flag": bool}.get(p.kind, str)
+            how = dict(help=spell(p.help, spelled), metavar=p.metavar, show_default=p.default is not None)
+            info = (typer.Argument(p.default, **how) if p.form == "argument"
+                    else typer.Option(p.default, *decls, **how))
+            words[p.name] = p.name if p.form == "argument" else flag.lstrip("-").replace("-", "_")
             opts.append(inspect.Parameter(words[p.name], inspect.Parameter.KEYWORD_ONLY,
                                           default=info, annotation=kind))
+        many = {p.name for p in table if p.form == "options"}
 
         def run(**kw):
-            args = {name: kw.pop(word) for name, word in words.items()}
+            args = {name: (kw.pop(word) or None) if name in many else kw.pop(word)
+                    for name, word in words.items()}
             return fn(args=args, **kw)
 
         run.__name__, run.__qualname__, run.__module__ = fn.__name__, fn.__qualname__, fn.__module__

@@ -1,5 +1,5 @@
 """Tables of ``rbcli balance`` (the JSON is the result's own; ``field-balance``'s tables are
-:mod:`rbcli.render.fieldbalance`).
+:mod:`rbcli.render.field.tables`).
 
 Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
 correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
