@@ -1,7 +1,8 @@
 """Batch: `rbcli inertia` over 1000 small body files in one process (``rbcli inertia
 *.yaml --json`` prints JSON Lines, SPEC §2) against the naive script
-(``bench/naive_body.py``: CSafeLoader + numpy, no checks) over the same files, goal <= 1.5
-in CPU time (issue 16); and a shell loop, one process per file, over the first
+(``bench/naive_body.py``: CSafeLoader + numpy, no checks) over the same files, goal <= 2.0
+in CPU time (issue 16's 1.5, retired to 2.0 by issue 31 with the second YAML reader that
+served it); and a shell loop, one process per file, over the first
 ``--loop-files`` of them.
 
 Usage::
@@ -29,11 +30,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import DATA, med, rbcli_cmd, time_once  # noqa: E402
 
 DIR = DATA / "batch"
+#: the goal: one invocation over the files at most this many times the naive script's CPU
+GOAL = 2.0
 
 
 def body_text(rng: random.Random, i: int) -> str:
     """Body file ``i`` of the batch: 1 to 4 boxes, cylinders, spheres or point masses in mm
-    and kg, sometimes a hole cut from a box (tests/test_yamlplain_oracle.py reads these too)."""
+    and kg, sometimes a hole cut from a box."""
     lines = [f"name: batch body {i}", "units: {length: mm, mass: kg}", "parts:"]
     box = None
     for j in range(rng.randint(1, 4)):
@@ -140,14 +143,14 @@ def main() -> int:
         "naive_cpu_s": med(t["naive"]["cpu"]),
         "ratio_one_over_naive_cpu": med(t["one"]["cpu"]) / med(t["naive"]["cpu"]),
         "ratio_one_over_naive_wall": med(t["one"]["wall"]) / med(t["naive"]["wall"]),
-        "goal_one_over_naive": 1.5,
+        "goal_one_over_naive": GOAL,
         "same_output": same,
         "times": {k: v["wall"] for k, v in t.items()},
     }
     print(f"{len(files)} files, one invocation: {res['one_cpu_s']:.2f} s CPU "
           f"({res['one_per_file_ms']:.1f} ms/file wall) vs naive_body.py {res['naive_cpu_s']:.2f} s CPU: "
           f"ratio {res['ratio_one_over_naive_cpu']:.2f} CPU, {res['ratio_one_over_naive_wall']:.2f} wall "
-          f"(goal <= 1.5: {'met' if res['ratio_one_over_naive_cpu'] <= 1.5 else 'MISSED'})")
+          f"(goal <= {GOAL}: {'met' if res['ratio_one_over_naive_cpu'] <= GOAL else 'MISSED'})")
     print(f"first {nloop} files: loop {res['loop_s']:.2f} s ({res['loop_per_file_ms']:.0f} ms/file), "
           f"one invocation {res['one_loop_s']:.2f} s: loop/one = {res['ratio_loop_over_one']:.1f} "
           f"(CPU {res['cpu_ratio']:.1f}); same objects: {same}")

@@ -45,7 +45,7 @@ _API = {
     "report": "rbcli.api.report",
     "report_text": "rbcli.documents",
     "write_report": "rbcli.documents",
-    "Body": "rbcli.model",
+    "Body": "rbcli.body.model",
     "InputError": "rbcli.errors",
     "ParamError": "rbcli.errors",
     "NonFiniteResult": "rbcli.errors",
@@ -63,7 +63,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli import parts  # noqa: F401
     from rbcli.api.load import load, load_data, load_text  # noqa: F401
     from rbcli.errors import ExitStatus, InputError, NonFiniteResult, ParamError  # noqa: F401
-    from rbcli.model import Body  # noqa: F401
+    from rbcli.body.model import Body  # noqa: F401
 
 
 def __getattr__(name: str) -> Any:

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.report import ReportResult
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["FORMATS", "report_text", "write_report", "check_report_path"]
 

@@ -30,11 +30,11 @@ each constructor's keyword arguments equal to the keys the body file takes for i
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Mapping, Sequence
-from types import MappingProxyType
 from typing import Any, TypeVar
 
-from rbcli.io.bodydata import PartSpec, freeze
+from rbcli.body.partspec import PartSpec, freeze
 
 __all__ = ["PartSpec", "Quantity", "Vector", "point", "rod", "ring", "disk", "plate",
            "triangle", "box", "cylinder", "sphere", "hemisphere", "cone", "ellipsoid", "torus",
@@ -117,7 +117,7 @@ def _spec(shape: str, args: dict[str, Any]) -> PartSpec:
             continue
         k = "from" if key == "from_" else key
         data[k] = freeze(value, key)
-    return PartSpec._of(MappingProxyType(data))
+    return PartSpec(data)
 
 
 # ----------------------------------------------------------------------------- shapes
@@ -526,8 +526,6 @@ def include(*, name: str | None = None, file: Any = None, at: Vector | None = No
 
 def _fspath(args: dict[str, Any]) -> dict[str, Any]:
     """A path-like ``file`` as its text (the body file's ``file:`` is a text)."""
-    import os
-
     f = args.get("file")
     if f is not None and not isinstance(f, str) and isinstance(f, os.PathLike):
         args = {**args, "file": os.fspath(f)}

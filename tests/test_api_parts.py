@@ -22,7 +22,7 @@ import pytest
 import rbcli
 from rbcli import parts as P
 from rbcli.core.shapes import IO_SHAPES, SHAPES
-from rbcli.io.parts import part_keys
+from rbcli.body.partlist import part_keys
 
 CONSTRUCTORS = {n: getattr(P, n) for n in P.__all__ if inspect.isfunction(getattr(P, n))}
 

@@ -19,7 +19,7 @@ import rbcli
 from conftest import EXAMPLES, ROOT, sample
 from rbcli import parts as P
 from rbcli.io import yamlsafe as ys
-from rbcli.io.writebody import dump
+from rbcli.body.document import dump
 
 
 def _same_bits(a, b) -> None:

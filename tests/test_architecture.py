@@ -1,5 +1,7 @@
-"""The layers import one way (STYLE.md): core and model see only numpy/scipy/stdlib,
-render never reads YAML, and nothing but the cli package imports the cli.
+"""The layers import one way (STYLE.md): cli -> api -> body -> {io, core}; render -> core,
+body; io reads and writes files and imports neither core nor body; core imports nothing above
+it (the body's types only for annotations); render never reads YAML; nothing but the cli
+package imports the cli.
 
 Read from the source with ast, so an import hidden inside a function counts too.
 """
@@ -15,40 +17,59 @@ PKG = Path(__file__).resolve().parent.parent / "rbcli"
 
 #: third-party or rbcli modules each layer must never import
 FORBIDDEN = {
-    "core": {"yaml", "typer", "rich", "matplotlib", "pydantic", "rbcli.io", "rbcli.render", "rbcli.cli", "rbcli.api"},
-    "model": {"yaml", "typer", "rich", "matplotlib", "pydantic", "scipy", "rbcli.io", "rbcli.render", "rbcli.cli", "rbcli.core"},
-    "io": {"typer", "rich", "matplotlib", "rbcli.render", "rbcli.cli", "rbcli.api"},
+    "core": {"yaml", "typer", "rich", "matplotlib", "pydantic", "rbcli.io", "rbcli.body", "rbcli.render",
+             "rbcli.cli", "rbcli.api"},
+    # io reads and writes files: no physics, no body
+    "io": {"typer", "rich", "matplotlib", "rbcli.core", "rbcli.body", "rbcli.render", "rbcli.cli", "rbcli.api"},
+    # the body: built from YAML trees (io's), computed with core; never the services above it
+    "body": {"yaml", "typer", "rich", "matplotlib", "pydantic", "rbcli.render", "rbcli.cli", "rbcli.api"},
     # the services (the Python API): compute and return results; never print or draw
     "api": {"typer", "rich", "matplotlib", "rbcli.cli", "rbcli.render"},
-    # render renders: it never reads YAML or writes a file (the cli writes through io.outfile)
-    "render": {"yaml", "typer", "rbcli.cli", "rbcli.io.yamlsafe", "rbcli.io.body",
-               "rbcli.io.outfile", "rbcli.io.writebody", "rbcli.io.meshfile"},
+    # render renders: it never reads YAML or a body file, nor writes a file (the cli writes
+    # through io.outfile)
+    "render": {"yaml", "typer", "rbcli.cli", "rbcli.api", "rbcli.io.yamlsafe", "rbcli.io.outfile",
+               "rbcli.io.meshfile", "rbcli.body.bodyfile", "rbcli.body.pydata", "rbcli.body.document"},
     # the library's documents: compute (api), lay out (render), write (io); never the cli
     "documents": {"typer", "rbcli.cli"},
     "errors": {"numpy", "scipy", "yaml", "typer", "rich", "matplotlib", "rbcli"},
-    "env": {"numpy", "scipy", "yaml", "typer", "rich", "matplotlib", "rbcli.core", "rbcli.io", "rbcli.render", "rbcli.cli"},
+    "env": {"numpy", "scipy", "yaml", "typer", "rich", "matplotlib", "rbcli.core", "rbcli.io", "rbcli.body",
+            "rbcli.render", "rbcli.cli"},
 }
 
 
-#: modules allowed an import their layer forbids (api computes, render renders); the model's
-#: Body.from_parts, replace, moved and to_yaml are the body reader's and writer's, imported
-#: when called (the model stays a leaf when it is imported)
-ALLOWED: dict[str, set[str]] = {"model.py": {"rbcli.io.bodydata", "rbcli.io.writebody"}}
+#: forbidden imports a layer may make under ``if TYPE_CHECKING:`` only (names for annotations):
+#: core's functions take the body's parts; render reads the services' results (never calls one)
+TYPES_ONLY: dict[str, set[str]] = {"core": {"rbcli.body.partmodel"}, "render": {"rbcli.api"}}
 
 
 def _layer(path: Path) -> str | None:
     rel = path.relative_to(PKG)
-    if rel.parts[0] in ("core", "io", "render", "cli", "api"):
+    if rel.parts[0] in ("core", "io", "body", "render", "cli", "api"):
         return rel.parts[0]
-    if rel.name in ("model.py", "errors.py", "env.py", "documents.py"):
+    if rel.name == "parts.py":  # rbcli.parts: the body's public constructors
+        return "body"
+    if rel.name in ("errors.py", "env.py", "documents.py"):
         return rel.stem
     return None
 
 
-def _imports(path: Path) -> list[tuple[str, int]]:
+def _type_checking_nodes(tree: ast.AST) -> set[int]:
+    """The ids of the nodes under ``if TYPE_CHECKING:``."""
+    skip: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            skip |= {id(n) for child in node.body for n in ast.walk(child)}
+    return skip
+
+
+def _imports(path: Path, *, typing: bool = True) -> list[tuple[str, int]]:
+    """Every import of ``path`` (those under TYPE_CHECKING only when ``typing``)."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
+    skip = set() if typing else _type_checking_nodes(tree)
     out = []
     for node in ast.walk(tree):
+        if id(node) in skip:
+            continue
         if isinstance(node, ast.Import):
             out += [(a.name, node.lineno) for a in node.names]
         elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
@@ -57,23 +78,26 @@ def _imports(path: Path) -> list[tuple[str, int]]:
     return out
 
 
+def _within(name: str, prefixes) -> bool:
+    return any(name == p or name.startswith(p + ".") for p in prefixes)
+
+
 MODULES = sorted(p for p in PKG.rglob("*.py") if _layer(p))
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
 def test_layer_imports_go_one_way(path):
     layer = _layer(path)
-    allowed = ALLOWED.get(path.relative_to(PKG).as_posix(), set())
+    at_run_time = set(_imports(path, typing=False))
     bad = []
     for name, line in _imports(path):
-        if any(name == a or name.startswith(a + ".") for a in allowed):
+        if (name, line) not in at_run_time and _within(name, TYPES_ONLY.get(layer, ())):
             continue
-        for banned in FORBIDDEN.get(layer, set()):  # cli may import anything
-            if name == banned or name.startswith(banned + "."):
-                # errors may use env's clean (messages made safe): both are stdlib-only leaves
-                if layer == "errors" and name.startswith(("rbcli.errors", "rbcli.env")):
-                    continue
-                bad.append(f"line {line}: {name}")
+        # errors may use env's clean (messages made safe): both are stdlib-only leaves
+        if layer == "errors" and name.startswith(("rbcli.errors", "rbcli.env")):
+            continue
+        if _within(name, FORBIDDEN.get(layer, ())):  # cli may import anything
+            bad.append(f"line {line}: {name}")
     assert not bad, f"{path.relative_to(PKG)} ({layer}) imports what its layer must not: {bad}"
 
 
@@ -182,35 +206,6 @@ def test_the_private_name_check_sees_both_forms(tmp_path):
 # ----------------------------------------------------------------------------- issue 23's rules
 
 
-def _runtime_imports(path: Path) -> list[tuple[str, int]]:
-    """The rbcli modules ``path`` imports when it runs: every import statement except those
-    under ``if TYPE_CHECKING:`` (types for annotations only)."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    skip: set[int] = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
-            skip |= {id(n) for child in node.body for n in ast.walk(child)}
-    out = []
-    for node in ast.walk(tree):
-        if id(node) in skip:
-            continue
-        if isinstance(node, ast.Import):
-            out += [(a.name, node.lineno) for a in node.names]
-        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
-            out.append((node.module, node.lineno))
-    return out
-
-
-@pytest.mark.parametrize("path", [p for p in MODULES if _layer(p) == "render"],
-                         ids=lambda p: str(p.relative_to(PKG)))
-def test_render_never_imports_the_services_at_run_time(path):
-    """render turns results into text and figures; it reads a result's fields and may name
-    the result types for annotations (under TYPE_CHECKING), but never calls a service."""
-    bad = [f"line {line}: {n}" for n, line in _runtime_imports(path)
-           if n == "rbcli.api" or n.startswith("rbcli.api.")]
-    assert not bad, f"{path.relative_to(PKG)} imports the services at run time: {bad}"
-
-
 ALL_MODULES = sorted(PKG.rglob("*.py"))
 
 
@@ -305,3 +300,86 @@ def test_the_process_check_sees_what_it_forbids(tmp_path):
                  encoding="utf-8")
     assert sorted(b.split(": ")[1] for b in _process_changes(f)) == [
         "gc.disable()", "os.environ.setdefault()", "os.environ['X'] = ...", "warnings.catch_warnings()"]
+
+
+# ----------------------------------------------------------------------------- issue 31's rules
+
+
+def _all_imports(path: Path, names: set[str]) -> set[str]:
+    """The modules of ``names`` that ``path`` imports when it runs, at module level or inside
+    a function (not under TYPE_CHECKING): ``from rbcli.x import y`` is ``rbcli.x.y`` when that
+    is a module, else ``rbcli.x``."""
+    out = set()
+    for name, _line in _imports(path, typing=False):
+        while name and name not in names:
+            name = name.rpartition(".")[0]
+        if name:
+            out.add(name)
+    return out
+
+
+def _in_cycles(root: Path, prefixes: tuple[str, ...]) -> list[str]:
+    """The modules under ``prefixes`` of the package at ``root`` that import themselves
+    through others, counting imports inside functions."""
+    paths = {_module_name(p, root.parent): p for p in sorted(root.rglob("*.py"))}
+    graph = {m: {d for d in _all_imports(p, set(paths)) if d != m and not d.startswith(m + ".")
+                 and not m.startswith(d + ".")} for m, p in paths.items()}
+
+    def reach(start: str) -> set[str]:
+        seen, todo = set(), [start]
+        while todo:
+            for d in graph[todo.pop()]:
+                if d not in seen:
+                    seen.add(d)
+                    todo.append(d)
+        return seen
+
+    return [m for m in sorted(paths) if _within(m, prefixes) and m in reach(m)]
+
+
+#: the body's layers: no import cycle may pass through them, counting imports inside functions
+BODY_LAYERS = ("rbcli.io", "rbcli.body", "rbcli.parts", "rbcli.api.load")
+
+
+def test_no_import_cycle_through_the_body_or_io_counting_imports_in_functions():
+    """An import inside a function hides a cycle from the test above; none may run through
+    io or the body (issue 31: the model called back into io, which built the model)."""
+    bad = _in_cycles(PKG, BODY_LAYERS)
+    assert not bad, f"these modules import themselves through others: {bad}"
+
+
+def test_the_cycle_check_sees_a_cycle_hidden_in_a_function(tmp_path):
+    root = tmp_path / "rbcli"
+    for rel, text in {"__init__.py": "", "io/__init__.py": "", "body/__init__.py": "",
+                      "io/a.py": "def f():\n    from rbcli.body import b\n",
+                      "body/b.py": "from rbcli.io.a import f\n",
+                      "body/c.py": "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    import rbcli.body.d\n",
+                      "body/d.py": "import rbcli.body.c\n"}.items():
+        (root / rel).parent.mkdir(parents=True, exist_ok=True)
+        (root / rel).write_text(text, encoding="utf-8")
+    assert _in_cycles(root, BODY_LAYERS) == ["rbcli.body.b", "rbcli.io.a"]  # c <-> d: types only
+
+
+#: imports of rbcli modules inside functions in io and the body, each with its reason: the mesh
+#: reader and mass properties (~10 ms of imports) only for a body that has a mesh
+LAZY = {"body/meshpart.py": {"rbcli.core.mesh", "rbcli.io.meshfile"}}
+
+
+@pytest.mark.parametrize("path", [p for p in MODULES if _layer(p) in ("io", "body")]
+                         + [PKG / "api" / "load.py"], ids=lambda p: str(p.relative_to(PKG)))
+def test_io_and_the_body_import_rbcli_modules_at_module_level(path):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    allowed = LAZY.get(path.relative_to(PKG).as_posix(), set())
+    bad = []
+    for f in ast.walk(tree):
+        if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            for node in ast.walk(f):
+                if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("rbcli"):
+                    found = [node.module] if node.module in allowed else [f"{node.module}.{a.name}" for a in node.names]
+                elif isinstance(node, ast.Import):
+                    found = [a.name for a in node.names if a.name.startswith("rbcli")]
+                else:
+                    continue
+                bad += [f"line {node.lineno}: {n}" for n in found if n not in allowed]
+    assert not bad, f"{path.relative_to(PKG)} imports rbcli modules inside functions: {bad}"
+

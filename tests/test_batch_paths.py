@@ -8,7 +8,7 @@ import pytest
 
 from rbcli.api.inertia import snap
 from rbcli.core import inertia as ci
-from rbcli.model import Part
+from rbcli.body.partmodel import Part
 
 
 def test_snap_of_a_list_and_of_nothing():

@@ -31,7 +31,7 @@ import yaml
 
 from rbcli.core import shapes as shp
 from rbcli.core.inertia import body_mass_props, combine
-from rbcli.io.body import load_text
+from rbcli.body.model import load_text
 
 ROOT = Path(__file__).resolve().parent.parent
 RTOL = 1e-14  # see the module docstring
@@ -217,11 +217,11 @@ def test_the_batch_size_does_not_change_a_number(monkeypatch, batch):
     makes the same BLAS call for each matrix of a stack). One at a time takes the paths for
     a batch of one kind (placing._units of diagonal inertias only, rotation.from_specs of
     one kind or of none); all at once the mixed ones."""
-    import rbcli.io.parts as io_parts
+    import rbcli.body.partlist as partlist
 
     text = _body_text(200)
     whole = load_text(text, "<bench>", ROOT)
-    monkeypatch.setattr(io_parts, "BATCH", batch)
+    monkeypatch.setattr(partlist, "BATCH", batch)
     small = load_text(text, "<bench>", ROOT)
     for a, b in zip(whole.parts, small.parts, strict=True):
         assert a.name == b.name and a.mass == b.mass
@@ -251,14 +251,14 @@ def test_a_typed_rotation_matrix_is_judged_as_from_matrix_judges_it(eps):
 
 
 def test_included_parts_are_placed_bit_for_bit_as_before():
-    """An include's use moves its file's parts as one io.placing.Stack (Stack.moved): the
+    """An include's use moves its file's parts as one body.placing.Stack (Stack.moved): the
     outlines as ``at + R o.at`` and ``R o.R`` one part at a time, exactly, signs of zeros
     included; the parts as the loader placed them before Stacks (``at + coms Rᵀ`` and
     ``einsum(R, Js, R)`` over all the file's parts, from arrays of its finished Parts); for
     random placements and the identity, and a part without an outline."""
     from rbcli.core import rotation as rot
-    from rbcli.io.placing import Stack
-    from rbcli.model import Part
+    from rbcli.body.placing import Stack
+    from rbcli.body.partmodel import Part
 
     body = load_text(_body_text(300), "<gen>", ROOT)
     dot = Part("dot", "point", 1.0, False, np.array([1.0, -0.0, 2.0]), np.zeros((3, 3)))
@@ -292,12 +292,12 @@ def test_included_parts_are_placed_bit_for_bit_as_before():
 
 def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
     # The loader checks the body's inertia (tensor_problem) only when a part is subtracted
-    # or not a formula shape (body._may_be_impossible): a sum of physically possible
+    # or not a formula shape (bodyfile._may_be_impossible): a sum of physically possible
     # tensors is one. Here every run of 1 to 4 consecutive added formula-shape parts of
     # the generated body (every shape, every placement), and all of them, pass the check
     # the loader skips, with its own tolerance (1e-7).
     from rbcli.core.inertia import tensor_problem
-    from rbcli.io.body import _may_be_impossible
+    from rbcli.body.bodyfile import _may_be_impossible
 
     body, _ = generated
     sure = [p for p in body.parts if not p.subtract and p.shape in shp.FORMULA_SHAPES]
@@ -320,7 +320,7 @@ def test_a_body_of_formula_shapes_never_fails_the_physical_check(generated):
 
 def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
     from rbcli.errors import InputError
-    from rbcli.io.body import _may_be_impossible
+    from rbcli.body.bodyfile import _may_be_impossible
 
     hole = load_text("{parts: [{shape: box, mass: 2, size: [1, 1, 1]}, "
                      "{shape: box, mass: 1, size: [0.5, 0.5, 0.5], subtract: true}]}", "<t>", ROOT)
@@ -370,24 +370,3 @@ def test_the_triangle_is_computed_as_with_arrays():
         assert g.measure == 0.5 * twice_area and np.array_equal(g.com, centroid), k
         assert np.array_equal(g.unit_inertia, inertia), k
         assert np.array_equal(np.signbit(g.unit_inertia), np.signbit(inertia)), k
-
-
-def test_a_quantity_text_read_before_gives_the_same_value_and_only_for_its_kind(monkeypatch):
-    # io.fields.number keeps the texts io.fields.quantity accepted, by (text, kind): read
-    # again they give the same float; the same text where another kind is needed is
-    # refused as before; the store is emptied when full
-    from rbcli.errors import InputError
-    from rbcli.io import fields
-
-    monkeypatch.setattr(fields, "_READ", {})
-    text = ("{parts: [{shape: sphere, radius: '1.5 cm', density: '7850 kg/m^3'}, "
-            "{name: b, shape: cylinder, radius: '1.5 cm', length: 0.1, density: '7850 kg/m^3'}]}")
-    first = load_text(text, "<t>", ROOT)
-    assert fields._READ[("1.5 cm", "length")] == 0.015 and ("7850 kg/m^3", "density") in fields._READ
-    again = load_text(text, "<t>", ROOT)
-    assert [p.mass for p in again.parts] == [p.mass for p in first.parts]
-    with pytest.raises(InputError, match=r"mass: '1\.5 cm' is a length"):
-        load_text("{shape: sphere, radius: '1.5 cm', mass: '1.5 cm'}", "<t>", ROOT)
-    monkeypatch.setattr(fields, "_MAX_READ", 2)
-    load_text(text, "<t>", ROOT)
-    assert len(fields._READ) <= 2

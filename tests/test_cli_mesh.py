@@ -25,7 +25,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from rbcli.core.inertia import combine
-from rbcli.io.body import load_body
+from rbcli.body.model import load_body
 
 ROOT = Path(__file__).resolve().parent.parent
 EX = ROOT / "examples"

@@ -43,8 +43,8 @@ from rbcli.core.inertia import (
     tensor_problem,
 )
 from rbcli.core.principal import matrix_to_axis_angle, principal_axes, principal_report
-from rbcli.io.body import load_text
-from rbcli.model import Part
+from rbcli.body.model import load_text
+from rbcli.body.partmodel import Part
 
 RTOL = 1e-12  # round-off of eigh / a few parallel-axis sums, relative to the largest moment
 FAST = settings(max_examples=40, deadline=None)

@@ -640,8 +640,8 @@ def test_the_registry_is_what_the_loader_schema_and_catalogue_read() -> None:
     from rbcli.cli.app import MANUAL
     from rbcli.cli.catalog import SPECIAL
     from rbcli.core.shapes import IO_SHAPES, SHAPES
-    from rbcli.io.parts import SPECIAL_SHAPES
-    from rbcli.io.schema import body_schema
+    from rbcli.body.partlist import SPECIAL_SHAPES
+    from rbcli.body.schema import body_schema
 
     assert SPECIAL_SHAPES == tuple(IO_SHAPES) and set(SPECIAL) == set(IO_SHAPES)
     assert body_schema()["definitions"]["part"]["properties"]["shape"]["enum"] == [*SHAPES, *IO_SHAPES]

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from rbcli.io.body import load_body
+from rbcli.body.model import load_body
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))

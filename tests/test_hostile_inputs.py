@@ -28,8 +28,9 @@ import pytest
 from conftest import sampled_params
 
 from rbcli.errors import InputError, option_name
-from rbcli.io import body as body_mod
-from rbcli.io import includes as includes_mod
+from rbcli.body import includes as includes_mod
+from rbcli.body.model import load_body
+from rbcli.io import yamlsafe as ys
 from rbcli.io import outfile
 
 #: what a terminal must never receive from rbcli's messages or tables
@@ -231,17 +232,17 @@ def _diamond(folder: Path, n: int) -> Path:
 def test_an_include_diamond_is_parsed_once_per_file(tmp_path, monkeypatch):
     top = _diamond(tmp_path, 16)
     parses: list[str] = []
-    real_load = body_mod.ys.load
+    real_load = ys.load
 
     def counting(data, filename, **kw):
         parses.append(filename)
         return real_load(data, filename, **kw)
 
-    monkeypatch.setattr(body_mod.ys, "load", counting)
+    monkeypatch.setattr(ys, "load", counting)
     reads: list[str] = []
     real_read = includes_mod.read_body_file
     monkeypatch.setattr(includes_mod, "read_body_file", lambda p, where=None: reads.append(str(p)) or real_read(p, where))
-    b = body_mod.load_body(str(top))
+    b = load_body(str(top))
     assert len(parses) == 16 and len(set(parses)) == 16  # linear work: each file once
     assert len(reads) == 16
     assert len(b.parts) == 2 ** 15
@@ -273,7 +274,7 @@ def test_a_memoised_include_still_obeys_the_depth_limit(tmp_path):
         "  - {name: deep, shape: include, file: e0.yaml}\n"
     )
     with pytest.raises(InputError, match="nested more than 16 deep"):
-        body_mod.load_body(str(tmp_path / "top.yaml"))
+        load_body(str(tmp_path / "top.yaml"))
 
 
 NESTED = "(((((((mm^12)^12)^12)^12)^12)^12)^12)"

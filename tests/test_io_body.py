@@ -1,4 +1,4 @@
-"""Tests of rbcli.io.body: the body-file loader.
+"""Tests of rbcli.body.bodyfile: the body-file loader.
 
 What is checked, and against what:
 
@@ -37,7 +37,7 @@ from scipy.spatial.transform import Rotation
 from rbcli.core import shapes as shp
 from rbcli.core.inertia import combine
 from rbcli.errors import InputError
-from rbcli.io.body import load_body, load_expr, load_text
+from rbcli.body.model import load_body, load_expr, load_text
 
 RTOL = 1e-12  # a few ulp of ~10 float operations, with a wide margin (see module doc)
 
@@ -730,3 +730,15 @@ def test_bad_body_files_give_a_located_input_error(text, line, where, fragment):
     # one line, starting lower case (the CLI prints "rbcli: file:line:col: message")
     assert "\n" not in str(err) and err.message[:1] == err.message[:1].lower()
     assert str(err).startswith(f"bad.yaml:{line}:{col}: ")
+
+
+def test_a_body_s_inputs_are_the_real_paths_of_its_file(tmp_path, monkeypatch):
+    # read through a link to its folder, or a link to a folder above it: the file itself
+    a = tmp_path / "real" / "a"
+    a.mkdir(parents=True)
+    (a / "f.yaml").write_text("shape: point\nmass: 1\n")
+    (tmp_path / "link_dir").symlink_to(a)
+    (tmp_path / "up").symlink_to(tmp_path / "real")
+    monkeypatch.chdir(tmp_path)
+    for path in ("link_dir/f.yaml", "up/a/f.yaml", str(tmp_path / "link_dir" / "f.yaml")):
+        assert load_body(path).inputs == (str(a.resolve() / "f.yaml"),)

@@ -14,7 +14,7 @@ import pytest
 
 from rbcli.errors import InputError
 from rbcli.io import meshobj
-from rbcli.io.body import load_body, load_text
+from rbcli.body.model import load_body, load_text
 from rbcli.io.meshfile import MeshFileError, read_mesh
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -153,7 +153,7 @@ def test_obj_numbers_of_every_form_the_grammar_allows_are_read(tmp_path):
 
 
 def test_ten_thousand_includes_of_one_file_read_and_parse_it_once(tmp_path, monkeypatch):
-    from rbcli.io import includes
+    from rbcli.body import includes
     from rbcli.io import yamlsafe as ys
 
     (tmp_path / "small.yaml").write_text("{shape: box, mass: 1, size: [1, 1, 1]}\n")

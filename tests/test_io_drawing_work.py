@@ -21,7 +21,7 @@ def _imported(err: str) -> set[str]:
 
 
 @pytest.mark.parametrize("example, kind", [("housing.yaml", "rbcli.io.meshfile"),
-                                           ("earth.yaml", "rbcli.io.body")])
+                                           ("earth.yaml", "rbcli.body.bodyfile")])
 def test_inertia_json_imports_no_drawing_geometry(cli_proc, example, kind):
     r = cli_proc("inertia", f"examples/{example}", "--json", env={"PYTHONPROFILEIMPORTTIME": "1"})
     assert r.code == 0, r.err[-2000:]

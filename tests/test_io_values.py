@@ -15,7 +15,8 @@ import pytest
 
 import rbcli
 from rbcli.errors import Location
-from rbcli.model import Body, Outline, Part, Shaft
+from rbcli.body.model import Body
+from rbcli.body.partmodel import Outline, Part, Shaft
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -75,7 +76,7 @@ def test_loading_leaves_the_garbage_collector_alone(tmp_path, monkeypatch):
 
 def test_part_and_outline_are_plain_frozen_dataclasses():
     # no twin classes made quickly by swapping __class__: the dataclasses' own constructors
-    import rbcli.model as model
+    import rbcli.body.model as model
 
     assert not hasattr(Part, "positional") and not hasattr(Outline, "of_frozen")
     assert not hasattr(model, "_twin")

@@ -21,7 +21,7 @@ import pytest
 
 from rbcli.errors import InputError
 from rbcli.io import outfile
-from rbcli.io.body import load_body, load_expr
+from rbcli.body.model import load_body, load_expr
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -309,7 +309,7 @@ def test_a_decimated_mesh_is_drawn_by_its_outer_outline_only():
     trimesh = pytest.importorskip("trimesh")
     tor = trimesh.creation.torus(0.1, 0.03, major_sections=120, minor_sections=60)  # 14 400
     V, F = ol.decimate(np.asarray(tor.vertices), np.asarray(tor.faces), 800)
-    from rbcli.model import Outline
+    from rbcli.body.partmodel import Outline
 
     o = Outline("mesh", (("triangles", len(tor.faces)),), vertices=V, faces=F)
     s = ol.sketch(o)

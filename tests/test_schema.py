@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 
 from rbcli.io import yamlsafe
-from rbcli.io.body import load_text
-from rbcli.io.schema import SCHEMA_PATH, body_schema, schema_text
+from rbcli.body.model import load_text
+from rbcli.body.schema import SCHEMA_PATH, body_schema, schema_text
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
@@ -34,9 +34,9 @@ def validator():
 
 
 def test_installed_schema_file_is_current():
-    assert SCHEMA_PATH.exists(), f"{SCHEMA_PATH} is missing: write rbcli.io.schema.schema_text() to it"
+    assert SCHEMA_PATH.exists(), f"{SCHEMA_PATH} is missing: write rbcli.body.schema.schema_text() to it"
     assert SCHEMA_PATH.read_text(encoding="utf-8") == schema_text(), (
-        f"{SCHEMA_PATH} is stale: python -c 'from rbcli.io.schema import *; "
+        f"{SCHEMA_PATH} is stale: python -c 'from rbcli.body.schema import *; "
         "SCHEMA_PATH.write_text(schema_text())'")
     assert json.loads(schema_text())["$schema"] == "http://json-schema.org/draft-07/schema#"
 

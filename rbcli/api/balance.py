@@ -29,14 +29,14 @@ from rbcli.api.diagram import Arrow, Diagram, Panel
 from rbcli.api.params import Options, function, read
 from rbcli.api.result import Result, jsonable
 from rbcli.api.shaft import shaft_axis, shaft_point
+from rbcli.body.model import with_points
 from rbcli.core import balance as B
 from rbcli.core.inertia import body_mass_props
 from rbcli.core.scale import FAR, SPEED_OF_SOUND, axis_reach, body_scale
 from rbcli.errors import ExitStatus, InputError, NonFiniteResult, Note, ParamError
-from rbcli.io.bodydata import with_points
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["AddedMass", "BalanceResult", "balance", "parse", "run"]
 

@@ -41,7 +41,7 @@ from typing import TYPE_CHECKING, Any, TypeAlias, Union
 from rbcli.errors import NonFiniteResult, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = [
     "Quantity", "Vector", "Point", "Values", "MAX_TEXT", "MAX_TEXT_TOTAL", "MAX_ITEMS", "MAX_TIMES",
@@ -215,7 +215,7 @@ def _total(value: Any, param: str) -> Any:
 def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | None:
     """``value`` if it is an :class:`rbcli.Body` (None too when ``optional``), else a
     TypeError saying how to get one (a path is not a body: ``rbcli.load(path)`` reads it)."""
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
     if isinstance(value, Body) or (optional and value is None):
         return value

@@ -27,7 +27,7 @@ from rbcli.core.symmetry import AxialSymmetry
 from rbcli.errors import InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["GyrocompassResult", "parse", "run", "gyrocompass", "EARTH_RATE"]
 

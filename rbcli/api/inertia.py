@@ -32,7 +32,7 @@ from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 from rbcli.errors import Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["InertiaResult", "Reference", "parse", "run", "inertia", "part_rows", "with_parts",
            "plausibility", "rim_note", "snap"]

@@ -3,8 +3,8 @@ and :func:`load_data` (a mapping already parsed, as a body file's).
 
 Each checks its arguments at the door: a wrong type is a ``TypeError`` naming the parameter,
 a bad value an :class:`rbcli.InputError` (a :class:`rbcli.ParamError` naming it); the body
-itself is checked by the one body reader (:mod:`rbcli.io.body`), with the messages the
-command line prints.
+itself is checked by the one body reader (:mod:`rbcli.body`), with the messages the command
+line prints.
 """
 
 from __future__ import annotations
@@ -13,8 +13,10 @@ import os
 from collections.abc import Mapping
 from pathlib import Path
 
+from rbcli.body import model
+from rbcli.body.bodyfile import default_units
+from rbcli.body.model import Body
 from rbcli.errors import ParamError
-from rbcli.model import Body
 
 __all__ = ["load", "load_text", "load_data"]
 
@@ -55,8 +57,6 @@ def _units(units: object) -> dict[str, str] | None:
             raise TypeError(f"units: the unit of {kind!r} is a text such as 'mm', not "
                             f"{type(unit).__name__}")
         out[str(kind)] = str(unit)
-    from rbcli.io.body import default_units
-
     try:
         default_units(out)
     except ValueError as exc:
@@ -76,7 +76,7 @@ def load(path: str | os.PathLike[str]) -> Body:
     Returns
     -------
     Body
-        The validated body in SI units (a frozen :class:`rbcli.model.Body`); its
+        The validated body in SI units (a frozen :class:`rbcli.Body`); its
         ``warnings`` are the located warnings the command line prints.
 
     Raises
@@ -94,12 +94,10 @@ def load(path: str | os.PathLike[str]) -> Body:
     >>> body.name, len(body.parts)
     ('Square lamina about a corner', 1)
     """
-    from rbcli.io.body import load_body
-
     p = _path(path, "path")
     if not p:
         raise ParamError("path", "an empty path names no file")
-    return load_body(p)
+    return model.load_body(p)
 
 
 def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name: str = "body",
@@ -139,14 +137,12 @@ def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name
     >>> round(float(rbcli.inertia(box).inertia_com[2][2]), 10)   # m (a² + b²)/12, kg m²
     0.0083333333
     """
-    from rbcli.io.body import load_text as _load_text
-
     if not isinstance(text, (str, bytes, bytearray)):
         raise TypeError(f"text: expected YAML text (str or bytes), not {type(text).__name__}")
     if isinstance(text, bytearray):
         text = bytes(text)
-    return _load_text(text, "<text>", _base_dir(base_dir), name_default=_name(name),
-                      units=_units(units))
+    return model.load_text(text, "<text>", _base_dir(base_dir), name_default=_name(name),
+                           units=_units(units))
 
 
 def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None = None,
@@ -198,9 +194,7 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
     ...
     rbcli.errors.InputError: parts[0].radius: part 'rim': radius must be greater than 0 (got -300 mm)
     """
-    from rbcli.io.bodydata import load_data as _load_data
-
     if not isinstance(mapping, Mapping):
         raise TypeError(f"mapping: expected a mapping like a body file's (a dict), not "
                         f"{type(mapping).__name__}")
-    return _load_data(mapping, units=_units(units), name=_name(name), base_dir=_base_dir(base_dir))
+    return model.load_data(mapping, units=_units(units), name=_name(name), base_dir=_base_dir(base_dir))

@@ -287,7 +287,7 @@ class Units:
     Parameters
     ----------
     base : mapping, optional
-        The body's ``units`` block (:attr:`rbcli.model.Body.units`), e.g.
+        The body's ``units`` block (:attr:`rbcli.body.model.Body.units`), e.g.
         ``{"length": "mm", "mass": "g"}``.
     """
 

@@ -39,7 +39,7 @@ from rbcli.errors import InputError, ParamError
 if TYPE_CHECKING:  # pragma: no cover
     from numpy.typing import ArrayLike
 
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["PrecessResult", "parse", "run", "precess", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
 

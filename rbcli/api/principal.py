@@ -20,7 +20,7 @@ from rbcli.core.inertia import body_mass_props
 from rbcli.core.principal import principal_report
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["PrincipalResult", "parse", "run", "principal"]
 

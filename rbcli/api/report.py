@@ -32,7 +32,7 @@ from rbcli.errors import InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.params import Options
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["ReportOptions", "ReportResult", "Section", "report", "run"]
 
@@ -313,7 +313,7 @@ class ReportResult(Result):
 
     def __post_init__(self) -> None:
         """Every field made immutable (:func:`rbcli.api.result.frozen`) but the body, which
-        is immutable where it is made (:mod:`rbcli.model`: read-only arrays, tuples and
+        is immutable where it is made (:mod:`rbcli.body.model`: read-only arrays, tuples and
         mappings): walking its parts again cost 9 s for 100 000 parts."""
         import dataclasses
 

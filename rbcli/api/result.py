@@ -106,7 +106,7 @@ def frozen(value: Any, _depth: int = 0) -> Any:
     """``value`` made immutable, deeply: numpy arrays read-only (a read-only copy when the
     array is writable), dicts as read-only mappings, lists as tuples, the fields of
     dataclass instances likewise (in place: :func:`freeze_fields`). Other objects are
-    returned as they are (a :class:`rbcli.model.Body` is frozen where it is made)."""
+    returned as they are (a :class:`rbcli.body.model.Body` is frozen where it is made)."""
     t = type(value)
     if t is float or t is str or t is int or t is bool or value is None or _depth > 20:
         return value

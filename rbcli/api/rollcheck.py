@@ -32,8 +32,9 @@ from rbcli.errors import InputError, Location, Note, ParamError, literal
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.rollcircle import CircleMotion
     from rbcli.core.rolling import Curves, StraightRolling, Verdict
+    from rbcli.body.model import Body
+    from rbcli.body.partmodel import Part
     from rbcli.core.symmetry import AxialSymmetry
-    from rbcli.model import Body, Part
 
 __all__ = ["OffCentreRim", "RollcheckResult", "WheelSetup", "parse", "rollcheck", "round_parts",
            "run", "wheel_setup"]

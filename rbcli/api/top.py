@@ -35,7 +35,7 @@ from rbcli.errors import ExitStatus, InputError, Location, Note, ParamError, lit
 if TYPE_CHECKING:  # pragma: no cover
     from numpy.typing import ArrayLike
 
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["TopResult", "parse", "run", "top", "plausibility", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
 

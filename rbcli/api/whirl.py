@@ -37,7 +37,7 @@ from rbcli.core.whirl.response import EXCITED_RTOL, excitation, phase_deg
 from rbcli.errors import InputError, NonFiniteResult, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.model import Body
+    from rbcli.body.model import Body
 
 __all__ = ["WhirlResult", "whirl", "parse", "run", "CONVENTIONS"]
 

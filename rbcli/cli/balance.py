@@ -63,7 +63,7 @@ def balance(
         raise InputError("--force: only used with --apply")
     out_path = None
     if apply is not None:
-        from rbcli.io.writebody import check_output
+        from rbcli.body.document import check_output
 
         out_path = check_output(apply, b, force=force)
     plot_path = c.check_plot(plot, b, others={"--apply": out_path}) if plot is not None else None
@@ -105,7 +105,7 @@ def _apply(res, out_path, apply: str, b, args: dict) -> tuple[str, list[dict]]:
 
     from rbcli.errors import option_name
     from rbcli.io import outfile
-    from rbcli.io.writebody import check_output
+    from rbcli.body.document import check_output
 
     fr = res.installed
     if res.position_split is not None:

@@ -117,7 +117,7 @@ def shapes(
 def schema(
     path: bool = typer.Option(False, "--path", help="Print where the installed schema file is, for a yaml-language-server modeline."),
 ) -> None:
-    from rbcli.io.schema import SCHEMA_PATH, schema_text
+    from rbcli.body.schema import SCHEMA_PATH, schema_text
 
     e = c.env()
     if path:

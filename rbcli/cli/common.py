@@ -170,7 +170,7 @@ def load(source: str, expr: str | None, e: Any):
     """Load one body and show its warnings on standard error."""
     import gc
 
-    from rbcli.io.body import load_body, load_expr
+    from rbcli.body.model import load_body, load_expr
 
     # The command line's own choice, not the library's (gc is process-wide): no cyclic
     # collection while the body is read (the loader's tree is acyclic; a full collection

@@ -11,11 +11,12 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.model import Part
+if TYPE_CHECKING:  # the parts' type only: core imports nothing above it
+    from rbcli.body.partmodel import Part
 
 
 class InputOverflow(ValueError):
@@ -132,7 +133,7 @@ def body_mass_props(body: Any) -> MassProps:
     """:func:`combine` of ``body.parts``, computed once per body.
 
     The body loader leaves the mass properties it computed (to check the body) on the
-    :class:`rbcli.model.Body`; a body made otherwise gets them on first use. The result's
+    :class:`rbcli.body.model.Body`; a body made otherwise gets them on first use. The result's
     arrays are the caller's own copies.
     """
     cached = getattr(body, "_mass_props", None)

@@ -52,7 +52,7 @@ RIM_OFFSET_LIMIT = 0.01
 def rim_candidates(parts: Any, axle: Any, through: Any, tol: float = 1e-6) -> list[Any]:
     """The parts that can make a rim for this axle: round (:data:`ROUND_SHAPES`), not
     subtracted, coaxial with the axle (any orientation for a sphere) and centred on the
-    axle line (to 1e-6 of their radius). ``parts`` are :class:`rbcli.model.Part`; ``axle``
+    axle line (to 1e-6 of their radius). ``parts`` are :class:`rbcli.body.partmodel.Part`; ``axle``
     a unit vector and ``through`` a point of the axle line (m), body frame. ``tol`` (the
     ``--symmetry-tol`` of a nearly symmetric wheel, a fraction) loosens both tests: a part
     tilted from the axle by an angle whose sine is at most ``tol``, or centred off it by

@@ -86,7 +86,7 @@ def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[fl
 
     Parameters
     ----------
-    parts : sequence of :class:`rbcli.model.Part` — holes (``subtract``) are left out: they
+    parts : sequence of :class:`rbcli.body.partmodel.Part` — holes (``subtract``) are left out: they
         lie inside the material
     axis : (3,) array_like — the line's direction, body frame (need not be unit)
     through : (3,) array_like — m, a point of the line, body frame

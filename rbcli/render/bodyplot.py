@@ -2,7 +2,7 @@
 parts, its holes, its centre of mass and principal axes, in a 3-D view and three
 orthographic views (top, front, side) of the body frame.
 
-Each part is drawn from its :class:`rbcli.model.Outline` through
+Each part is drawn from its :class:`rbcli.body.partmodel.Outline` through
 :mod:`rbcli.render.outline` (which does the geometry: surfaces, silhouettes, creases):
 
 - solid parts: light-grey shadows ("0.88") with black outlines (silhouettes and borders),

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.model import Body
+from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.units import DisplayUnits
 

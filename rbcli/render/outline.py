@@ -1,7 +1,7 @@
 """Outlines of the parts for drawings: each shape as surface triangles in the body frame,
 and its shadow (filled triangles and outline segments) on a coordinate plane.
 
-Geometry only, no physics: a part's :class:`rbcli.model.Outline` (shape, dimensions,
+Geometry only, no physics: a part's :class:`rbcli.body.partmodel.Outline` (shape, dimensions,
 placement) becomes a :class:`Sketch` — vertices on the shape's true surface, triangles
 between them, and the lines drawn whatever the view (a rod, a ring, a triangle's edges).
 :func:`shadow` projects a sketch orthographically on the (i, j) plane of the body frame:
@@ -24,7 +24,7 @@ Meshes are drawn from a decimated copy (:func:`decimate`: vertex clustering, Ros
 Borrel, "Multi-resolution 3D approximations for rendering complex scenes", 1993) of at
 most :data:`MESH_MAX_TRIANGLES` triangles, made here when a figure is drawn (the body
 keeps its file's mesh); a part given by its mass properties is drawn as its equivalent
-uniform ellipsoid (:func:`rbcli.model.equivalent_ellipsoid`, which the loader keeps on its
+uniform ellipsoid (:func:`rbcli.body.partmodel.equivalent_ellipsoid`, which the loader keeps on its
 outline: the plausibility warnings measure it too).
 """
 
@@ -35,7 +35,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from rbcli.model import equivalent_ellipsoid  # the given parts' shape (re-exported here)
+from rbcli.body.partmodel import equivalent_ellipsoid  # the given parts' shape (re-exported here)
 
 __all__ = [
     "CREASE_DEG", "MESH_MAX_TRIANGLES", "SEGMENTS", "Shadow", "Sketch", "decimate",
@@ -308,7 +308,7 @@ def _local(kind: str, dims: dict, vertices, faces, n: int) -> Sketch:
 
 
 def sketch(outline, n: int = SEGMENTS, max_triangles: int | None = None) -> Sketch:
-    """The sketch of a part's :class:`rbcli.model.Outline`, in the body frame (m), with
+    """The sketch of a part's :class:`rbcli.body.partmodel.Outline`, in the body frame (m), with
     ``n`` points around a full circle; a mesh decimated to :data:`MESH_MAX_TRIANGLES`, then
     to ``max_triangles`` if given and fewer."""
     V, F = outline.vertices, outline.faces

@@ -9,7 +9,7 @@ import numpy as np
 
 from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
-from rbcli.model import Body
+from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.massprops import AXES, vec_rows
 from rbcli.render.plots import figure, style

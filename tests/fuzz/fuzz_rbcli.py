@@ -10,7 +10,7 @@ and speed"): whatever the bytes, the reader ends in a result or in rbcli's own I
 
 Targets
 -------
-0. a body file (YAML), through :func:`rbcli.io.body.load_text` (includes resolve in a
+0. a body file (YAML), through :func:`rbcli.body.bodyfile.load_text` (includes resolve in a
    scratch folder holding one small body, ``inc.yaml``);
 1. a quantity with units, :func:`rbcli.io.units.parse_quantity`, and a unit,
    :func:`rbcli.io.units.parse_unit` (nested powers must be refused at once);
@@ -34,7 +34,7 @@ with atheris.instrument_imports():
     from rbcli.env import MAX_LINE, clean
     from rbcli.errors import InputError
     from rbcli.io import units
-    from rbcli.io.body import load_text
+    from rbcli.body.model import load_text
 
 SCRATCH = Path(tempfile.mkdtemp(prefix="rbcli-fuzz-"))
 (SCRATCH / "inc.yaml").write_text("{shape: box, mass: 1, size: [1, 1, 1]}\n")

@@ -37,11 +37,12 @@ from pathlib import Path
 from typing import Any
 
 from rbcli.errors import InputError, Location
-from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io import yamlvalues as fl
 from rbcli.io.field import CHOICES, plane_names
 from rbcli.io.reader import read_regular
+from rbcli.io.yamlvalues import FileContext as _Ctx
 
 SCHEMA_PATH = Path(__file__).resolve().parents[2] / "data" / "fieldjob.schema.json"
 
@@ -147,32 +148,6 @@ class FieldJob:
     coefficients: str | None
     keys: dict[str, Location]
     units: dict[str, str]
-
-
-class _Ctx:
-    """Located errors and the file's bare units (what :mod:`rbcli.io.fields` needs)."""
-
-    def __init__(self, file: str, units: dict[str, str]) -> None:
-        self.file = file
-        self.base_units = units
-        self.factors: dict[str, tuple[float, str]] = {}
-
-    def where(self, node_or_mark: Any) -> Location:
-        if node_or_mark is None:
-            return Location(self.file)
-        mark = node_or_mark if isinstance(node_or_mark, ys.Mark) else node_or_mark.mark
-        return Location(self.file, mark.line, mark.col)
-
-    def error(self, node_or_mark: Any, message: str) -> InputError:
-        return InputError(message, self.where(node_or_mark))
-
-    def factor(self, kind: str, node: Any = None) -> tuple[float, str]:
-        if kind not in self.factors:
-            try:
-                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
-            except un.UnitError as exc:
-                raise self.error(node, str(exc)) from None
-        return self.factors[kind]
 
 
 def load_job(path: str) -> FieldJob:

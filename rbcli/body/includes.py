@@ -1,7 +1,7 @@
 """A ``shape: include`` part: another body file's parts, placed as a whole.
 
 An included file is read and parsed once per real path in a load (:class:`Session`'s
-``parsed``), its parts kept as a :class:`rbcli.io.placing.Stack` that each use moves, so
+``parsed``), its parts kept as a :class:`rbcli.body.placing.Stack` that each use moves, so
 a diamond of includes costs time linear in its files; cycles and nesting deeper than
 :data:`MAX_INCLUDE_DEPTH` are refused.
 """
@@ -11,12 +11,12 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from rbcli.body.loadctx import Ctx
+from rbcli.body.partkeys import PLACEMENT_KEYS, placement
+from rbcli.body.placing import Stack
 from rbcli.errors import Location
-from rbcli.io import fields as fl
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import PLACEMENT_KEYS
-from rbcli.io.loadctx import Ctx
-from rbcli.io.placing import Stack
+from rbcli.io import yamlvalues as yv
 from rbcli.io.reader import read_regular
 
 MAX_INCLUDE_DEPTH = 16
@@ -36,7 +36,7 @@ def read_body_file(path: Path, where: Location | None = None) -> bytes:
 
 
 def _resolve(ctx: Ctx, node: ys.Node, what: str) -> Path:
-    rel = fl.string(ctx, node, what)
+    rel = yv.string(ctx, node, what)
     if names_a_folder(rel):
         raise ctx.error(node, f"{what}: '{rel}' names a folder (it ends with '/'); include "
                         "takes a body file")
@@ -48,7 +48,7 @@ def _resolve(ctx: Ctx, node: ys.Node, what: str) -> Path:
 
 def include_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str) -> Stack:
     what = f"part '{name}' (include)"
-    fl.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
+    yv.check_keys(ctx, m, INCLUDE_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = _resolve(ctx, fnode, "file")
     where = ctx.where(fnode)
@@ -79,6 +79,6 @@ def include_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str) -> Stack:
     ctx.warnings.extend(sub.warnings)
     ctx.inputs.append(real)
     ctx.inputs.extend(sub.ctx.inputs)
-    at, R = fl.placement(ctx, m)
+    at, R = placement(ctx, m)
     return sub.parts.moved(at, R, f"{prefix}{name}/")
 

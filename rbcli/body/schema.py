@@ -6,12 +6,13 @@ it is typed. ``rbcli schema`` prints it; the installed copy is ``rbcli/data/body
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
+from rbcli.body.bodyfile import UNIT_KEYS
+from rbcli.body.givenpart import INERTIA_NAMES
+from rbcli.body.partlist import SPECIAL_SHAPES
 from rbcli.core.shapes import SHAPES
-from rbcli.io.body import UNIT_KEYS
-from rbcli.io.givenpart import INERTIA_NAMES
-from rbcli.io.parts import SPECIAL_SHAPES
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
 
@@ -197,6 +198,4 @@ def body_schema() -> dict:
 
 
 def schema_text() -> str:
-    import json
-
     return json.dumps(body_schema(), indent=2, ensure_ascii=False) + "\n"

@@ -7,15 +7,16 @@ from pathlib import Path
 
 import numpy as np
 
-from rbcli.io import fields as fl
+from rbcli.body.includes import names_a_folder
+from rbcli.body.loadctx import Ctx
+from rbcli.body.partkeys import PLACEMENT_KEYS, check_mass, mass_source, placement, subtract
+from rbcli.body.partmodel import Outline, Part
+from rbcli.body.placing import place
+from rbcli.body.plausible import note_density
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import HUGE, PLACEMENT_KEYS, check_mass, mass_source, subtract
-from rbcli.io.includes import names_a_folder
-from rbcli.io.loadctx import Ctx
-from rbcli.io.placing import place
-from rbcli.io.plausible import note_density
-from rbcli.model import Outline, Part
+from rbcli.io import yamlvalues as yv
+from rbcli.io.yamlvalues import HUGE
 
 MESH_KEYS = (
     "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",
@@ -31,15 +32,15 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
     bodies without meshes do not pay for them at start-up.
     """
     what = f"part '{name}' (mesh)"
-    fl.check_keys(ctx, m, MESH_KEYS, what, required=("file",))
+    yv.check_keys(ctx, m, MESH_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = mesh_path(ctx, fnode)
     scale = 1.0
     if "scale" in m.items:
-        scale = fl.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
+        scale = yv.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
     if "units" in m.items:
         unode = m.items["units"][1]
-        text = fl.string(ctx, unode, "units")
+        text = yv.string(ctx, unode, "units")
         try:
             factor, dim = un.parse_unit(text)
         except un.UnitError as exc:
@@ -51,19 +52,19 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
             )
     else:
         factor = ctx.factor("length", m)[0]
-    allow_open = fl.flag(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
+    allow_open = yv.flag(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
     weld = None  # None: the file's own default (meshfile.default_weld)
     if "weld" in m.items:
         wnode = m.items["weld"][1]
         if isinstance(wnode, ys.ScalarNode) and wnode.value == "exact":
             weld = 0.0
         else:
-            weld = fl.positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
+            weld = yv.positive(ctx, wnode, "length", f"{what}: weld (a length, or exact)", allow_zero=True)
     mass, density, src = mass_source(ctx, m, "volume", known, what)
     if mass is None and "cut_from" not in m.items:  # a density typed here: one matter has?
         note_density(ctx, src, "density", density, None, True, what)
     removed = subtract(ctx, m)
-    at, R = fl.placement(ctx, m)
+    at, R = placement(ctx, m)
 
     from rbcli.core import mesh as cmesh
     from rbcli.io import meshfile
@@ -118,7 +119,7 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
 
 def mesh_path(ctx: Ctx, fnode: ys.Node) -> Path:
     """The mesh file, relative to the body file's folder; as written when that is the cwd."""
-    rel = fl.string(ctx, fnode, "file")
+    rel = yv.string(ctx, fnode, "file")
     if not rel.strip():
         raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
     if "\0" in rel:

@@ -13,13 +13,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from rbcli.body.loadctx import Ctx
+from rbcli.body.partkeys import PLACEMENT_KEYS, placement, subtract
+from rbcli.body.partmodel import Outline, Part, equivalent_ellipsoid
+from rbcli.body.placing import place
 from rbcli.core.inertia import tensor_problem
-from rbcli.io import fields as fl
 from rbcli.io import yamlsafe as ys
-from rbcli.io.fields import PLACEMENT_KEYS, subtract
-from rbcli.io.loadctx import Ctx
-from rbcli.io.placing import place
-from rbcli.model import Outline, Part, equivalent_ellipsoid
+from rbcli.io import yamlvalues as yv
 
 GIVEN_KEYS = ("name", "shape", "subtract", "mass", "com", "inertia", "convention", *PLACEMENT_KEYS)
 #: each entry of the map form, and the names it is read by: I.. (most tools), L.. (SolidWorks's
@@ -38,7 +38,7 @@ SYMMETRY_RTOL = 1e-9
 def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
     """The map form's six entries (SI; absent products 0), each read under whichever of its
     names was given; a diagonal entry missing, or any entry given twice, is an error."""
-    fl.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia")
+    yv.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia")
     items = inode.items
     g = {}
     for entry, names in INERTIA_NAMES.items():
@@ -51,15 +51,15 @@ def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
                 raise ctx.error(inode, f"inertia needs '{entry}'")
             g[entry] = 0.0
         else:
-            g[entry] = fl.number(ctx, items[given[0]][1], "inertia", given[0])
+            g[entry] = yv.number(ctx, items[given[0]][1], "inertia", given[0])
     return g
 
 
 def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> Part:
     what = f"part '{name}' (given)"
-    fl.check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
-    mass = fl.positive(ctx, m.items["mass"][1], "mass", f"{what}: mass")
-    com = fl.vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
+    yv.check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
+    mass = yv.positive(ctx, m.items["mass"][1], "mass", f"{what}: mass")
+    com = yv.vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
     inode = m.items["inertia"][1]
     if isinstance(inode, ys.MapNode):
         g = _entries(ctx, inode)
@@ -67,7 +67,7 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
         sign = -1.0
         if "convention" in inode.items:
             conv_node = inode.items["convention"][1]
-            conv = fl.string(ctx, conv_node, "convention")
+            conv = yv.string(ctx, conv_node, "convention")
             if conv not in ("tensor", "positive"):
                 raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
             sign = 1.0 if conv == "tensor" else -1.0
@@ -88,11 +88,11 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
             raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
                             "convention inside 'inertia'; remove the part's 'convention'")
     else:
-        J = fl.matrix(ctx, inode, "inertia", "inertia")
+        J = yv.matrix(ctx, inode, "inertia", "inertia")
         off = J[~np.eye(3, dtype=bool)]
         if "convention" in m.items:
             conv_node = m.items["convention"][1]
-            conv = fl.string(ctx, conv_node, "convention")
+            conv = yv.string(ctx, conv_node, "convention")
             if conv not in ("tensor", "positive"):
                 raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
             if conv == "positive":
@@ -115,7 +115,7 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
             f"{ctx.where(inode)}: note: {what}: the inertia is symmetric to {share:.1g} of its "
             "largest entry (as its digits were printed); its symmetric part is used")
     J = 0.5 * (J + J.T)
-    at, R = fl.placement(ctx, m)
+    at, R = placement(ctx, m)
     known[name] = (None, "given")
     pc, PJ = place(com, J, at, R)
     return Part(

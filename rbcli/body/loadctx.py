@@ -1,12 +1,12 @@
 """What one load of a body file shares: the :class:`Session` (the parts budget, the files
 already parsed) and each file's :class:`Ctx` (where its messages point, its units, what it
-read). The readers of :mod:`rbcli.io.parts`, :mod:`rbcli.io.fields` and the special parts
+read). The readers of :mod:`rbcli.body.partlist`, :mod:`rbcli.io.yamlvalues` and the special parts
 take a ``ctx`` and raise ``ctx.error(node, message)``: an InputError at the node at fault.
 
 Where a node is: a :class:`rbcli.io.yamlsafe.Mark` (line and column) for a body read from
 YAML text, a :class:`DataMark` (its key path, ``parts[2].radius``, or the Python call that
 made it, ``parts[2] (cylinder 'bore')``) for a body built from Python data
-(:mod:`rbcli.io.bodydata`); :meth:`Ctx.where` makes either a :class:`rbcli.errors.Location`.
+(:mod:`rbcli.body.pydata`); :meth:`Ctx.where` makes either a :class:`rbcli.errors.Location`.
 """
 
 from __future__ import annotations
@@ -16,11 +16,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rbcli.errors import InputError, Location
-from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 from rbcli.io.reader import limit_from_env
+from rbcli.io.yamlvalues import FileContext
 
-__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "new_session", "shared_factors"]
+__all__ = ["MAX_PARTS", "Session", "Ctx", "DataMark", "Label", "new_session"]
 
 #: the default budget of a body: its parts, counting every use of an included file's parts
 #: and each include once; RBCLI_MAX_PARTS raises it (README, "Budgets")
@@ -33,7 +33,7 @@ class Session:
     read and parsed (an included file is read and parsed once per real path, and its
     parts placed per use, so a diamond of includes costs time linear in the files).
 
-    ``load`` reads an included file's text (:func:`rbcli.io.body._load`, given here so that
+    ``load`` reads an included file's text (:func:`rbcli.body.bodyfile._load`, given here so that
     the include reader need not import the body reader that imports it)."""
 
     max_parts: int
@@ -41,7 +41,7 @@ class Session:
     used: int = 0  # parts and includes so far, every use counted
     parsed: dict = field(default_factory=dict)  # (real path, real folder) -> its loaded file
     parses: int = 0  # files parsed (the work count the tests check)
-    #: densities no matter has, as located warnings (rbcli.io.plausible): the first is said
+    #: densities no matter has, as located warnings (rbcli.body.plausible): the first is said
     densities: list = field(default_factory=list)
 
     def spend(self, ctx: Ctx, node: ys.Node | None, n: int) -> None:
@@ -62,24 +62,6 @@ class Session:
                 lambda mark: InputError(self.over_message(), Location(filename, mark.line, mark.col)))
 
 
-#: the unit factors of each set of base units, shared by the files that have them (a factor
-#: depends on the base units and the kind alone): kind -> (factor, unit)
-_FACTORS: dict[tuple, dict[str, tuple[float, str]]] = {}
-_MAX_FACTORS = 256
-
-
-def shared_factors(base_units: dict[str, str]) -> dict[str, tuple[float, str]]:
-    """The dict of :attr:`Ctx.factors` for files with ``base_units``, shared between them
-    (a batch of files in mm and kg looks each kind's unit up once)."""
-    key = tuple(sorted(base_units.items()))
-    found = _FACTORS.get(key)
-    if found is None:
-        if len(_FACTORS) >= _MAX_FACTORS:
-            _FACTORS.clear()
-        found = _FACTORS[key] = {}
-    return found
-
-
 def new_session(load: Callable | None = None) -> Session:
     """A session with the parts budget of ``RBCLI_MAX_PARTS`` (else :data:`MAX_PARTS`)."""
     return Session(limit_from_env("RBCLI_MAX_PARTS", MAX_PARTS), load)
@@ -88,7 +70,7 @@ def new_session(load: Callable | None = None) -> Session:
 class DataMark:
     """Where a value is in Python data: its key path from the root (``parts[2].radius``).
 
-    A node of a tree made from Python data (:mod:`rbcli.io.bodydata`) carries one where a
+    A node of a tree made from Python data (:mod:`rbcli.body.pydata`) carries one where a
     node read from YAML carries a :class:`rbcli.io.yamlsafe.Mark`. ``key`` is a mapping key
     (``str``), a list index (``int``) or a :class:`Label`: a label names the value and all
     it holds as a whole (``Body.from_parts`` labels each part by the call that made it, so
@@ -114,14 +96,14 @@ class DataMark:
         keys: list = []
         m: DataMark | None = self
         while m is not None:
-            if m.key.__class__ is Label:
+            if isinstance(m.key, Label):
                 return str(m.key)
             if m.parent is not None:
                 keys.append(m.key)
             m = m.parent
         out = ""
         for k in reversed(keys):
-            if k.__class__ is int:
+            if isinstance(k, int):
                 out += f"[{k}]"
             elif not k.isidentifier():
                 out += f"[{k!r}]"
@@ -139,15 +121,13 @@ class Label(str):
     __slots__ = ()
 
 
-@dataclass
-class Ctx:
-    """One file being read: its name in messages, its folder, its units, what it found."""
+@dataclass(kw_only=True)
+class Ctx(FileContext):
+    """One file of a body being read: its name in messages, its folder, its units, what it
+    found."""
 
-    file: str  # as shown in messages
     base_dir: Path  # where relative paths start
     stack: tuple[str, ...] = ()  # real paths of the files being included (cycle check)
-    base_units: dict[str, str] = field(default_factory=dict)
-    factors: dict[str, tuple[float, str]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     #: real paths of the files read below this one (includes at any depth, meshes)
     inputs: list[str] = field(default_factory=list)
@@ -158,20 +138,7 @@ class Ctx:
     def where(self, node_or_mark: ys.Node | ys.Mark | DataMark | None) -> Location:
         """Where a node (or a mark) is: ``file:line:col`` in a file, or the key path of
         Python data (:class:`DataMark`)."""
-        if node_or_mark is None:
-            return Location(self.file)
         mark = node_or_mark.mark if isinstance(node_or_mark, ys.Node) else node_or_mark
-        if mark.__class__ is DataMark:
+        if isinstance(mark, DataMark):
             return Location(mark.path())
-        return Location(self.file, mark.line, mark.col)
-
-    def error(self, node_or_mark: ys.Node | ys.Mark | None, message: str) -> InputError:
-        return InputError(message, self.where(node_or_mark))
-
-    def factor(self, kind: str, node: ys.Node | None = None) -> tuple[float, str]:
-        if kind not in self.factors:
-            try:
-                self.factors[kind] = un.unit_for_kind(self.base_units, kind)
-            except un.UnitError as exc:
-                raise self.error(node, str(exc)) from None
-        return self.factors[kind]
+        return super().where(mark)

@@ -1,18 +1,15 @@
-"""The body model: what a body file means, in SI, after validation.
+"""The body model: :class:`Body`, and every way to make one — a body file
+(:func:`load_body`, :func:`load_text`, :func:`load_expr`), Python data (:func:`load_data`),
+parts (:meth:`Body.from_parts`), another body (:meth:`Body.replace`, :meth:`Body.moved`,
+:func:`with_points`) — and to write one (:meth:`Body.to_yaml`).
 
-A leaf module (stdlib + numpy only) shared by io (which builds it) and core and
-render (which read it). Every vector is in the body frame.
+A body is a value, deeply immutable whatever path built it: its parts are
+:mod:`rbcli.body.partmodel`'s read-only values, ``units`` is a read-only mapping of its own,
+the sequences are tuples. One body, one answer.
 
-Bodies are values, deeply immutable whatever path built them (the loader, ``Part(...)`` in
-code, ``dataclasses.replace``): every array is read-only (a writable one passed in is
-copied), ``Part.extra`` and ``Body.units`` are read-only mappings of their own, the
-sequences are tuples. One body, one answer.
-
-A body is built in code with :meth:`Body.from_parts`, changed with :meth:`Body.replace` and
-:meth:`Body.moved`, and written with :meth:`Body.to_yaml`: those methods are the body
-reader's and writer's (:mod:`rbcli.io.bodydata`, :mod:`rbcli.io.writebody`), imported when
-called, so that this module stays a leaf at import time (tests/test_architecture.py allows
-those two imports and no other).
+The builders below return a body's components (:class:`rbcli.body.bodyfile.Built`); this
+module alone makes the :class:`Body` of them, so that its imports go one way: model ->
+pydata -> bodyfile -> the part readers -> partmodel.
 """
 
 from __future__ import annotations
@@ -20,168 +17,18 @@ from __future__ import annotations
 import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
-from rbcli.errors import Location
+from rbcli.body import bodyfile, document, pydata
+from rbcli.body.bodyfile import Built
+from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only
+from rbcli.core.inertia import remember_mass_props
 
-_FLOAT = np.dtype(float)
-#: the empty read-only mapping (most parts' ``extra``, an SI body's ``units``): one shared object
-EMPTY_MAPPING: MappingProxyType = MappingProxyType({})
-
-
-def _frozen(a, dtype=_FLOAT) -> np.ndarray:
-    """``a`` as a read-only array: itself when it is one already (its data cannot change:
-    no writable array shares it), else a private read-only copy."""
-    if a.__class__ is np.ndarray and (a.dtype is dtype or a.dtype == dtype) and not a.flags.writeable:
-        base, up = a, a.base
-        while up.__class__ is np.ndarray:  # to the array that owns the data
-            base, up = up, up.base
-        if not base.flags.writeable:
-            return a
-    a = np.array(a, dtype=dtype)  # a private copy
-    a.setflags(write=False)
-    return a
-
-
-def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
-    """Semi-axes (m) and axes (columns) of the uniform ellipsoid with a part's ``mass`` (kg)
-    and ``inertia`` about its com (kg m², 3×3): ``a² = 5 (I₂ + I₃ − I₁) / (2 m)``, etc.
-
-    The shape a part given only by its mass properties is drawn as and measured by (the
-    plausibility warnings' distance from a spin axis). A rank-deficient tensor gives zero
-    semi-axes (a flat or needle ellipsoid).
-    """
-    w, v = np.linalg.eigh(0.5 * (np.asarray(inertia, dtype=float) + np.asarray(inertia, dtype=float).T))
-    s = np.clip(np.array([w[1] + w[2] - w[0], w[0] + w[2] - w[1], w[0] + w[1] - w[2]]), 0.0, None)
-    if np.linalg.det(v) < 0:
-        v[:, 2] = -v[:, 2]
-    return np.sqrt(2.5 * s / float(mass)), v
-
-
-def _freeze_fields(obj: object, names: tuple[str, ...], optional: bool = False) -> None:
-    """Make the array fields ``names`` of the frozen dataclass ``obj`` read-only
-    (:func:`_frozen`); None stays None when ``optional``."""
-    for name in names:
-        a = getattr(obj, name)
-        if a is None and optional:
-            continue
-        f = _frozen(a)
-        if f is not a:
-            object.__setattr__(obj, name, f)
-
-
-def _mapping(m) -> MappingProxyType:
-    """A read-only mapping of its own with the items of ``m`` (EMPTY_MAPPING when empty)."""
-    if m is EMPTY_MAPPING:
-        return m
-    return MappingProxyType(dict(m)) if m else EMPTY_MAPPING
-
-
-@dataclass(frozen=True, slots=True)
-class Outline:
-    """What a drawing of a part needs: its shape, its local dimensions and its placement.
-
-    Built by the body loader beside the part; read by :mod:`rbcli.render.outline`, which
-    turns it into surface triangles and outlines for the body figure when one is drawn.
-    Nothing here is used by any calculation.
-
-    Attributes
-    ----------
-    kind : str — a primitive shape name (SPEC §1), ``"given"`` (the part's equivalent
-        uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or ``"mesh"``
-    dims : tuple[tuple[str, object], ...] — the shape's parameters as
-        :func:`rbcli.core.shapes.geometry` took them (lengths in m, ``size`` and
-        ``semi_axes`` as tuples, ``vertices`` as three 3-tuples, ``shell`` a bool); for a
-        mesh ``(("triangles", n),)``, the file's count. ``dict(outline.dims)`` reads them.
-    at : (3,) ndarray — m, the local origin in the body frame
-    R : (3, 3) ndarray — the local-to-body rotation (its columns are the local axes)
-    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame: the file's
-        mesh (a figure draws a decimated copy)
-    faces : (k, 3) int ndarray | None — a mesh's triangles (indices into ``vertices``)
-
-    The arrays are read-only.
-    """
-
-    kind: str
-    dims: tuple = ()
-    at: np.ndarray = field(default_factory=lambda: _frozen(np.zeros(3)))
-    R: np.ndarray = field(default_factory=lambda: _frozen(np.eye(3)))
-    vertices: np.ndarray | None = None
-    faces: np.ndarray | None = None
-
-    def __post_init__(self) -> None:
-        at, R = _frozen(self.at), _frozen(self.R)
-        if at is not self.at:
-            object.__setattr__(self, "at", at)
-        if R is not self.R:
-            object.__setattr__(self, "R", R)
-        if self.vertices is not None:
-            object.__setattr__(self, "vertices", _frozen(self.vertices))
-            object.__setattr__(self, "faces", _frozen(self.faces, np.dtype(np.int64)))
-
-
-@dataclass(frozen=True, slots=True)
-class Part:
-    """One part of a body, placed in the body frame.
-
-    Attributes
-    ----------
-    name : str — the part's name (``sub/part`` for parts of an included file)
-    shape : str — the shape name of SPEC §1
-    mass : float — kg, always positive; ``subtract`` says whether it is removed
-    subtract : bool — True for a hole or pocket (its mass is taken away)
-    com : (3,) ndarray — m, the part's centre of mass
-    inertia_com : (3, 3) ndarray — kg m^2, about the part's com, body axes, tensor convention
-    measure : float | None — the part's volume (m^3), area (m^2) or length (m)
-    measure_kind : str — "volume", "area", "length", "point" or "given"
-    radius : float | None — m, the outer radius of a round part (disk, ring, cylinder, ...)
-    axis : (3,) ndarray — the part's local z axis in the body frame
-    extra : Mapping[str, object] — shape-specific facts worth reporting (e.g. a mesh's
-        volume and area), read-only
-    where : Location | None — where the part is defined
-    outline : Outline | None — the part's shape and placement for drawings (None when the
-        loader did not record one: it is then drawn as a dot at its com)
-
-    The arrays are read-only (writable ones passed in are copied).
-    """
-
-    name: str
-    shape: str
-    mass: float
-    subtract: bool
-    com: np.ndarray
-    inertia_com: np.ndarray
-    measure: float | None = None
-    measure_kind: str = "point"
-    radius: float | None = None
-    axis: np.ndarray = field(default_factory=lambda: _frozen(np.array([0.0, 0.0, 1.0])))
-    extra: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
-    where: Location | None = None
-    outline: Outline | None = None
-
-    def __post_init__(self) -> None:
-        _freeze_fields(self, ("com", "inertia_com", "axis"))
-        if self.extra is not EMPTY_MAPPING:
-            object.__setattr__(self, "extra", _mapping(self.extra))
-
-    @property
-    def signed_mass(self) -> float:
-        """kg, negative for a subtracted part."""
-        return -self.mass if self.subtract else self.mass
-
-
-@dataclass(frozen=True)
-class Shaft:
-    """A shaft line: unit ``axis`` through the point ``through`` (m); read-only arrays."""
-
-    axis: np.ndarray
-    through: np.ndarray
-
-    def __post_init__(self) -> None:
-        _freeze_fields(self, ("axis", "through"))
+__all__ = ["Body", "load_body", "load_text", "load_expr", "load_data", "with_points"]
 
 
 @dataclass(frozen=True)
@@ -229,12 +76,10 @@ class Body:
     units: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
 
     def __post_init__(self) -> None:
-        _freeze_fields(self, ("reference", "pivot"), optional=True)
+        freeze_arrays(self, ("reference", "pivot"))
         for name in ("parts", "warnings", "inputs"):
-            value = getattr(self, name)
-            if value.__class__ is not tuple:
-                object.__setattr__(self, name, tuple(value))
-        object.__setattr__(self, "units", _mapping(self.units))
+            object.__setattr__(self, name, tuple(getattr(self, name)))
+        object.__setattr__(self, "units", read_only(self.units))
 
     # ------------------------------------------------------------------ built in code
 
@@ -307,11 +152,9 @@ class Body:
         >>> round(float(rbcli.inertia(wheel).inertia_com[2][2]), 12)   # 2 R²/2 + 1 R², kg m²
         0.045
         """
-        from rbcli.io.bodydata import from_parts
-
-        return from_parts(parts, name=name, units=units, shaft=shaft, reference=reference,
-                          pivot=pivot, rim_radius=rim_radius, description=description,
-                          base_dir=base_dir)
+        return _made(pydata.from_parts(
+            parts, name=name, units=units, shaft=shaft, reference=reference, pivot=pivot,
+            rim_radius=rim_radius, description=description, base_dir=base_dir))
 
     def to_yaml(self, *, base_dir: str | os.PathLike[str] | None = None) -> str:
         """The body as a body file (YAML text) that reads back to the same body.
@@ -364,9 +207,7 @@ class Body:
         >>> bool((rbcli.inertia(again).inertia_com == rbcli.inertia(box).inertia_com).all())
         True
         """
-        from rbcli.io.writebody import to_yaml
-
-        return to_yaml(self, base_dir)
+        return document.to_yaml(self, base_dir)
 
     def replace(self, which: str | int, part: Mapping[str, Any] | None = None, /,
                 **keys: Any) -> Body:
@@ -407,9 +248,7 @@ class Body:
         >>> heavier.parts[0].mass, rotor.parts[0].mass
         (6.0, 5.0)
         """
-        from rbcli.io.bodydata import replace_part
-
-        return replace_part(self, which, part, keys)
+        return _made(pydata.replace_part(self, which, part, keys))
 
     def moved(self, which: str | int, *, at: Sequence[Any] | None = None,
               axis: Sequence[Any] | None = None, rotate: Mapping[str, Any] | None = None) -> Body:
@@ -446,6 +285,43 @@ class Body:
         >>> round(abs(rbcli.balance(off).static_unbalance), 12)   # 5 kg × 1 mm, kg m
         0.005
         """
-        from rbcli.io.bodydata import move_part
+        return _made(pydata.move_part(self, which, at, axis, rotate))
 
-        return move_part(self, which, at, axis, rotate)
+
+def _made(built: Built) -> Body:
+    """The :class:`Body` of ``built``, with what is kept beside its fields: its combined
+    mass properties (:func:`rbcli.core.inertia.body_mass_props` reads them) and the folder
+    of its document (:func:`rbcli.body.document.origin`)."""
+    body = Body(**built.fields)
+    remember_mass_props(body, built.mass_props)
+    document.remember_origin(body, built.origin)
+    return body
+
+
+def load_body(source: str, *, stdin: object = None) -> Body:
+    """A body file (a path, or ``-`` for standard input): :func:`rbcli.body.bodyfile.load_body`."""
+    return _made(bodyfile.load_body(source, stdin=stdin))
+
+
+def load_expr(expr: str) -> Body:
+    """A body written inline (``-e/--expr``): :func:`rbcli.body.bodyfile.load_expr`."""
+    return _made(bodyfile.load_expr(expr))
+
+
+def load_text(data: bytes | str, filename: str, base_dir: Path, *, name_default: str = "body",
+              stack: tuple[str, ...] = (), units: dict[str, str] | None = None) -> Body:
+    """A body of text already read: :func:`rbcli.body.bodyfile.load_text`."""
+    return _made(bodyfile.load_text(data, filename, base_dir, name_default=name_default,
+                                    stack=stack, units=units))
+
+
+def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None = None,
+              name: str = "body", base_dir: object = None) -> Body:
+    """A body of Python data: :func:`rbcli.body.pydata.load_data`."""
+    return _made(pydata.load_data(mapping, units=units, name=name, base_dir=base_dir))
+
+
+def with_points(body: Body, points: Sequence[tuple[str, float, Sequence[float]]]) -> Body:
+    """``body`` with point masses added (``rbcli balance --apply``):
+    :func:`rbcli.body.pydata.with_points`."""
+    return _made(pydata.with_points(body, points))

@@ -89,7 +89,8 @@ def note_density(ctx, node, kind: str, value: float, measure: float | None, soli
     if problem is None:
         return
     raw = getattr(node, "raw", "")
-    bare = getattr(node, "value", None).__class__ in (int, float)
+    value = getattr(node, "value", None)
+    bare = isinstance(value, (int, float)) and not isinstance(value, bool)
     tail = ""
     if bare:
         factor, unit = ctx.factor(kind, node)

@@ -1,11 +1,11 @@
 """Placing a body file's primitive parts in batches (issue 15: 100 000-part bodies).
 
-The loader (:mod:`rbcli.io.body`) checks each part as it reads it and keeps what it
+The loader (:mod:`rbcli.body.bodyfile`) checks each part as it reads it and keeps what it
 found as a :class:`Pending`; :func:`finish` then places a batch of them at once: their
 rotations per kind (:func:`rbcli.core.rotation.from_specs`), ``com = at + R c`` and
 ``J = R (m U) Rᵀ`` as stacked matrix products — the same numbers, bit for bit, as one
 product per part (numpy makes the same BLAS call for each matrix of a stack) — and
-makes their :class:`rbcli.model.Part` s, whose arrays are rows of a few shared arrays.
+makes their :class:`rbcli.body.partmodel.Part` s, whose arrays are rows of a few shared arrays.
 
 An included file's parts stay arrays (a :class:`Stack`): each use of the file moves all of
 them at once (:meth:`Stack.moved`) and only the top file makes Part objects, so that an
@@ -15,13 +15,12 @@ included part costs about what the same part written inline does (issue 16).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from itertools import chain
 
 import numpy as np
 
+from rbcli.body.partmodel import EMPTY_MAPPING, Outline, Part
 from rbcli.core import rotation as rot
 from rbcli.errors import Location
-from rbcli.model import EMPTY_MAPPING, Outline, Part
 
 #: primitives placed per batch: large enough for numpy to pay, small enough that the
 #: batch's arrays and pending parts add little to the peak memory of a large body
@@ -55,15 +54,9 @@ def place(part_com, part_I, at, R):
 
 def dims_of(params: dict) -> tuple:
     """The drawing's description of a primitive part: its parameters (m) as
-    :class:`rbcli.model.Outline` keeps them (vectors as tuples, lengths as floats)."""
-    dims = tuple(params.items())
-    for k, v in dims:
-        if v.__class__ is not float:  # else as it is (most parameters: one length)
-            break
-    else:
-        return dims
+    :class:`rbcli.body.partmodel.Outline` keeps them (vectors as tuples, lengths as floats)."""
     out = []
-    for k, v in dims:
+    for k, v in params.items():
         if isinstance(v, list):  # size, semi_axes (n,), vertices (3, 3)
             v = tuple(tuple(r) for r in v) if isinstance(v[0], list) else tuple(v)
         elif not isinstance(v, bool):
@@ -72,46 +65,20 @@ def dims_of(params: dict) -> tuple:
     return tuple(out)
 
 
-def _rows(vectors: list) -> np.ndarray:
-    """The (n, 3) array of ``n`` 3-vectors (lists, tuples or arrays of floats): what
-    ``np.array(vectors, dtype=float)`` makes, without numpy reading nested sequences
-    (~3 x faster); an array that owns its data."""
-    a = np.fromiter(chain.from_iterable(vectors), dtype=float, count=3 * len(vectors))
-    a.shape = (len(vectors), 3)
-    return a
-
-
 def _units(pending: list) -> np.ndarray:
-    """The (n, 3, 3) unit inertias of ``pending`` (:func:`_mixed_units`'s numbers)."""
-    units = [p.unit_inertia for p in pending]
-    if all(u.__class__ is tuple for u in units):  # all diagonal (the common case): one copy
-        U = np.zeros((len(units), 9))
-        U[:, ::4] = _rows(units)  # the diagonal of each row's 3x3
-        return U.reshape(-1, 3, 3)
-    return _mixed_units(pending)
-
-
-def _mixed_units(pending: list) -> np.ndarray:
-    """The (n, 3, 3) unit inertias of ``pending``: diagonal 3-tuples and (3, 3) arrays."""
-    n = len(pending)
-    U = np.zeros((n, 3, 3))
-    diag = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is tuple]
-    if diag:
-        d = np.array([pending[i].unit_inertia for i in diag], dtype=float).reshape(-1, 3)
-        for j in range(3):
-            U[diag, j, j] = d[:, j]
-    full = [i for i, p in enumerate(pending) if p.unit_inertia.__class__ is not tuple]
-    U[full] = [pending[i].unit_inertia for i in full]
-    return U
+    """The (n, 3, 3) unit inertias of ``pending``: each a diagonal (a 3-tuple) or a (3, 3)
+    array."""
+    return np.array([np.diag(p.unit_inertia) if isinstance(p.unit_inertia, tuple) else p.unit_inertia
+                     for p in pending], dtype=float)
 
 
 def _placed(pending: list) -> tuple:
     """``pending`` placed: (coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines'
     origins (n, 3) and rotations (n, 3, 3)), read-only arrays that own their data (their
-    rows are the parts' arrays: :class:`rbcli.model.Part` keeps such rows, not copies)."""
-    ats = _rows([p.at for p in pending])  # (n, 3), not a view (see model._frozen)
+    rows are the parts' arrays: :class:`rbcli.body.partmodel.Part` keeps such rows, not copies)."""
+    ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), owns its data
     Rs = rot.from_specs([p.spec for p in pending])
-    local_coms = _rows([p.com for p in pending])
+    local_coms = np.array([p.com for p in pending], dtype=float)
     U = _units(pending)
     masses = np.array([p.mass for p in pending], dtype=float)
     coms = ats + (Rs @ local_coms[:, :, None])[:, :, 0]
@@ -133,7 +100,7 @@ def finish(items: list, start: int = 0) -> list:
     products, which give the same numbers as one product per part. The parts' arrays are
     rows of a few shared arrays (the outlines' read-only ones).
     """
-    pending = [p for p in items[start:] if p.__class__ is Pending]
+    pending = [p for p in items[start:] if isinstance(p, Pending)]
     if not pending:
         return items
     dims = [p.dims for p in pending]
@@ -142,7 +109,7 @@ def finish(items: list, start: int = 0) -> list:
     i = 0
     for k in range(start, len(items)):
         p = items[k]
-        if p.__class__ is not Pending:
+        if not isinstance(p, Pending):
             continue
         items[k] = Part(
             p.name, p.shape, p.mass, p.subtract, coms[i], Js[i], p.measure, p.measure_kind,
@@ -183,18 +150,18 @@ class Stack:
     def of(cls, items: list) -> Stack:
         """Pending primitives, finished parts and stacks, in their order, as one stack (the
         primitives placed together)."""
-        pending = [p for p in items if p.__class__ is Pending]
+        pending = [p for p in items if isinstance(p, Pending)]
         placed = _placed(pending) if pending else ()
         pieces: list[Stack] = []
         start = j = 0  # pending[start:j]: the run of primitives not yet in pieces
         for item in items:
-            if item.__class__ is Pending:
+            if isinstance(item, Pending):
                 j += 1
                 continue
             if j > start:
                 pieces.append(cls._run(pending[start:j], [x[start:j] for x in placed]))
                 start = j
-            pieces.append(item if item.__class__ is Stack else cls._of_part(item))
+            pieces.append(item if isinstance(item, Stack) else cls._of_part(item))
         if j > start:
             pieces.append(cls._run(pending[start:j], [x[start:j] for x in placed]))
         if len(pieces) == 1:
@@ -233,7 +200,7 @@ class Stack:
         out = []
         for name, r, com, J, axis, at, R in zip(self.names, self.rows, self.com, self.inertia,
                                                 self.axis, self.at, self.R):
-            if r.__class__ is Pending:
+            if isinstance(r, Pending):
                 o = Outline(r.shape, r.dims, at, R)
                 extra = EMPTY_MAPPING
             else:
@@ -256,11 +223,9 @@ def to_stack(items: list, start: int = 0) -> list:
 def parts_of(items: list) -> list[Part]:
     """Finished parts and stacks (an include's parts, :meth:`Stack.parts`) as one list of
     :class:`Part` s, in order."""
-    if not any(p.__class__ is Stack for p in items):
-        return items
     out = []
     for p in items:
-        if p.__class__ is Stack:
+        if isinstance(p, Stack):
             out.extend(p.parts())
         else:
             out.append(p)

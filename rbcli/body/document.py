@@ -1,6 +1,6 @@
-"""Write a body as a body file: :func:`to_yaml` (``Body.to_yaml``, and ``rbcli balance
---apply``, which writes ``BalanceResult.balanced_body()``), and :func:`dump`, the YAML of
-plain data that rbcli's YAML 1.2 reader reads back identically.
+"""A body's document — the body file it was read from, or the data it was built from — to
+write it (:func:`to_yaml`: ``Body.to_yaml``, and ``rbcli balance --apply``, which writes
+``BalanceResult.balanced_body()``) or change it (``Body.replace``: :func:`document`).
 
 A body rbcli made keeps its document (``Body.text``: the file as read, or the YAML of the
 data it was built from): it is written again as data — its comments and layout are not
@@ -15,14 +15,18 @@ read back has the same mass, centre of mass and inertia tensor, bit for bit.
 from __future__ import annotations
 
 import os
-import re
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rbcli.errors import InputError, Location
 from rbcli.io import outfile
-from rbcli.model import Body
+from rbcli.io import yamlsafe as ys
+from rbcli.io.yamldump import dump
 
-__all__ = ["to_yaml", "document", "dump", "check_output"]
+if TYPE_CHECKING:
+    from rbcli.body.model import Body
+
+__all__ = ["to_yaml", "document", "check_output", "origin", "remember_origin"]
 
 _FILE_SHAPES = ("include", "mesh")
 
@@ -40,6 +44,19 @@ def check_output(out: str, body: Body, *, force: bool, option: str = "--apply") 
         directory, or an existing file without ``force``.
     """
     return outfile.check(out, body, option, force=force)
+
+
+def remember_origin(body: Body, folder: str) -> None:
+    """Keep on ``body`` the folder (absolute) relative ``include`` and mesh paths of its
+    document start from: not a field, so that a ``dataclasses.replace`` of it, whose parts
+    need not be its document's, has none."""
+    object.__setattr__(body, "_origin", folder)
+
+
+def origin(body: Body) -> str | None:
+    """The folder :func:`remember_origin` kept on ``body`` (a body a reader of rbcli made:
+    its document is ``body.text``); else None."""
+    return getattr(body, "_origin", None)
 
 
 def _rebase(path: str, old_dir: str, new_dir: Path) -> str:
@@ -61,9 +78,6 @@ def document(body) -> dict:
         A body no reader of rbcli made (``Body(...)`` or ``dataclasses.replace``): it has
         no document.
     """
-    from rbcli.io import yamlsafe as ys
-    from rbcli.io.body import origin
-
     if origin(body) is None:
         raise InputError("this body has no document to write or change: it was not made by "
                          "rbcli.load, load_text, load_data, Body.from_parts, Body.replace or "
@@ -95,8 +109,6 @@ def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
     InputError
         A body no reader of rbcli made (:func:`document`).
     """
-    from rbcli.io.body import origin
-
     if base_dir is not None and not isinstance(base_dir, (str, os.PathLike)):
         raise TypeError(f"base_dir: expected a folder (str or path-like), not {type(base_dir).__name__}")
     data = document(body)
@@ -107,48 +119,3 @@ def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
                 and isinstance(part.get("file"), str):
             part["file"] = _rebase(part["file"], old_dir, new_dir)  # type: ignore[arg-type]
     return dump(data)
-
-
-#: plain scalars that the YAML 1.2 core schema reads as something other than a string
-_NOT_STR = re.compile(
-    r"~|null|Null|NULL|true|True|TRUE|false|False|FALSE"
-    r"|[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"
-    r"|[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?"
-    r"|[-+]?(\.inf|\.Inf|\.INF)|\.nan|\.NaN|\.NAN"
-    r"|<<"  # a merge key, which body files refuse plain
-)
-
-
-def dump(data: object) -> str:
-    """YAML text of plain data that rbcli's YAML 1.2 loader reads back identically.
-
-    PyYAML quotes strings by the YAML 1.1 rules, so it would leave ``1e3`` (a string that
-    YAML 1.2 reads as a number) bare; every string that could be read as something else
-    (it starts like a number, null or boolean) is double-quoted here. libyaml's emitter
-    (``CSafeDumper``) writes what PyYAML's own does, about three times as fast.
-    """
-    import yaml
-
-    return yaml.dump(data, Dumper=_dumper(), sort_keys=False, allow_unicode=True,
-                     default_flow_style=None, width=100)
-
-
-_DUMPER: list = []
-
-
-def _dumper() -> type:
-    """The dumper class :func:`dump` uses (made once)."""
-    if not _DUMPER:
-        import yaml
-
-        class _Dumper(getattr(yaml, "CSafeDumper", yaml.SafeDumper)):  # type: ignore[misc]
-            def ignore_aliases(self, data: object) -> bool:
-                return True  # a value used twice is written twice (body files refuse aliases)
-
-        def _str(dumper: yaml.SafeDumper, value: str) -> yaml.Node:
-            style = '"' if (not value or _NOT_STR.fullmatch(value)) else None
-            return dumper.represent_scalar("tag:yaml.org,2002:str", value, style=style)
-
-        _Dumper.add_representer(str, _str)
-        _DUMPER.append(_Dumper)
-    return _DUMPER[0]

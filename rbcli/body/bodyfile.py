@@ -1,46 +1,46 @@
-"""Read a body file (YAML) into a validated :class:`rbcli.model.Body` in SI units.
+"""Read a body file (YAML, or a tree made of Python data) into a validated body in SI
+units: its components (:class:`Built`), which :mod:`rbcli.body.model` makes a ``Body``.
 
 Every problem is an :class:`rbcli.errors.InputError` located at ``file:line:col``.
 The walk is strict: numbers must be numbers (``true`` is not 1.0), strings with
 units must have the right dimension, unknown keys are refused with a
 "did you mean" hint, and the finished body must be physically possible.
 
-The readers: :mod:`rbcli.io.loadctx` (the load's budget, each file's context),
-:mod:`rbcli.io.parts` (the walk over ``parts:`` and each primitive part),
-:mod:`rbcli.io.givenpart`, :mod:`rbcli.io.meshpart`, :mod:`rbcli.io.includes` (the
-special parts), :mod:`rbcli.io.fields` (numbers, vectors, placements, masses) and
-:mod:`rbcli.io.placing` (parts placed in batches).
+The readers: :mod:`rbcli.body.loadctx` (the load's budget, each file's context),
+:mod:`rbcli.body.partlist` (the walk over ``parts:`` and each primitive part),
+:mod:`rbcli.body.givenpart`, :mod:`rbcli.body.meshpart`, :mod:`rbcli.body.includes` (the
+special parts), :mod:`rbcli.io.yamlvalues` (numbers, vectors, texts),
+:mod:`rbcli.body.partkeys` (placements, masses) and :mod:`rbcli.body.placing` (parts placed
+in batches).
 """
 
 from __future__ import annotations
 
-import math
 import os
-import stat
 import sys
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from rbcli.body import includes as inc
+from rbcli.body import partkeys as pk
+from rbcli.body import partlist as pt
+from rbcli.body.givenpart import pretty_unit
+from rbcli.body.loadctx import Ctx, Session, new_session
+from rbcli.body.partmodel import Part, Shaft
+from rbcli.body.placing import Stack, finish, parts_of, to_stack
+from rbcli.body.plausible import density_warning
 from rbcli.core import shapes as shp
-from rbcli.core.inertia import combine, remember_mass_props, tensor_problem
+from rbcli.core.inertia import MassProps, combine, tensor_problem
 from rbcli.errors import InputError, Location
-from rbcli.io import fields as fl
-from rbcli.io import includes as inc
-from rbcli.io import parts as pt
 from rbcli.io import units as un
-from rbcli.io import yamlplain
 from rbcli.io import yamlsafe as ys
-from rbcli.io.givenpart import pretty_unit
-from rbcli.io.loadctx import Ctx, Session, new_session, shared_factors
-from rbcli.io.placing import Stack, finish, parts_of, to_stack
-from rbcli.io.plausible import density_warning
-from rbcli.model import Body, Part, Shaft
+from rbcli.io import yamlvalues as yv
+from rbcli.io.reader import ReadError, read_stream
 
-__all__ = ["load_body", "load_text", "load_expr", "load_node", "origin", "default_units",
-           "FORMAT_VERSION",
-           "BODY_KEYS", "UNIT_KEYS"]
+__all__ = ["Built", "load_body", "load_text", "load_expr", "load_node", "default_units",
+           "FORMAT_VERSION", "BODY_KEYS", "UNIT_KEYS"]
 
 FORMAT_VERSION = 1
 BODY_KEYS = (
@@ -48,6 +48,17 @@ BODY_KEYS = (
     "rim_radius",
 )
 UNIT_KEYS = ("length", "mass", "time", "angle", "angular_speed")
+
+
+@dataclass(frozen=True)
+class Built:
+    """A body as the loader made it: the fields of its :class:`rbcli.body.model.Body`, its
+    combined mass properties and the folder (absolute) its document's relative ``include``
+    and mesh paths start from."""
+
+    fields: dict
+    mass_props: MassProps
+    origin: str
 
 
 @dataclass
@@ -62,11 +73,11 @@ class _Loaded:
 def _units(ctx: Ctx, m: ys.MapNode) -> None:
     if "units" not in m.items:
         return
-    unode = fl.mapping(ctx, m.items["units"][1], "units")
-    fl.check_keys(ctx, unode, UNIT_KEYS, "units")
+    unode = yv.mapping(ctx, m.items["units"][1], "units")
+    yv.check_keys(ctx, unode, UNIT_KEYS, "units")
     base = {}
     for key, (_km, vnode) in unode.items.items():
-        base[key] = fl.string(ctx, vnode, f"units.{key}")
+        base[key] = yv.string(ctx, vnode, f"units.{key}")
         try:
             un.unit_for_kind({key: base[key]}, key)
         except un.UnitError as exc:
@@ -101,13 +112,10 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
           units: dict[str, str] | None = None, *, session: Session | None = None,
           stacked: bool = False, root: ys.Node | None = None) -> _Loaded:
     """Read a file's text ``data`` (or the tree ``root`` already made of Python data:
-    :mod:`rbcli.io.bodydata`)."""
+    :mod:`rbcli.body.pydata`)."""
     session = session if session is not None else new_session(_load)
     if root is None:
-        cap = session.list_cap(filename)
-        root = yamlplain.tree(data, cap)  # the plainest files; None: libyaml's loader reads it
-        if root is None:
-            root = ys.load(data, filename, list_cap=cap)
+        root = ys.load(data, filename, list_cap=session.list_cap(filename))
     ctx = Ctx(file=filename, base_dir=base_dir, stack=stack, session=session)
     spent = session.used
     if units:  # the caller's default units (rbcli.load_text(..., units=...)); the file's win
@@ -122,9 +130,8 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
         if not (isinstance(vnode, ys.ScalarNode) and vnode.value == FORMAT_VERSION and not isinstance(vnode.value, bool)):
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
     _units(ctx, root)
-    ctx.factors = shared_factors(ctx.base_units)
     if "parts" in root.items:
-        fl.check_keys(ctx, root, BODY_KEYS, "the body")
+        yv.check_keys(ctx, root, BODY_KEYS, "the body")
         parts = pt.parts(ctx, root.items["parts"][1], stacked=stacked)
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
@@ -144,11 +151,7 @@ def _may_be_impossible(parts: tuple) -> bool:
     physically possible tensors (each shape's own, each parallel-axis term a point mass's)
     is physically possible, and :func:`rbcli.core.inertia.tensor_problem`'s tolerance
     (1e-7 of the largest entry) is far above the sum's rounding (~1e-16 of it)."""
-    sure = shp.FORMULA_SHAPES
-    for p in parts:
-        if p.subtract or p.shape not in sure:
-            return True
-    return False
+    return any(p.subtract or p.shape not in shp.FORMULA_SHAPES for p in parts)
 
 
 def _check_possible(ctx: Ctx, node: ys.Node, J: np.ndarray, factor: float, unit: str) -> None:
@@ -163,49 +166,44 @@ def _check_possible(ctx: Ctx, node: ys.Node, J: np.ndarray, factor: float, unit:
         )
 
 
-def _body_defaults(
-    loaded: _Loaded, name_default: str, source: str, text: str, inputs: tuple[str, ...] = ()
-) -> Body:
-    ctx, root = loaded.ctx, loaded.root
-    items = root.items
-    name = name_default
-    if "name" in items:
-        name = fl.string(ctx, items["name"][1], "name")
-    description = fl.string(ctx, items["description"][1], "description") if "description" in items and "parts" in items else ""
-    reference = None
-    ref_com = False
-    pivot = None
-    shaft = None
-    rim = None
-    if "parts" in items:
-        if "reference" in items:
-            p = fl.point(ctx, items["reference"][1], "reference")
-            if isinstance(p, str):
-                ref_com = p == "com"
-                reference = None if ref_com else np.zeros(3)
-            else:
-                reference = p
-        if "pivot" in items:
-            p = fl.point(ctx, items["pivot"][1], "pivot")
-            if isinstance(p, str):
-                raise ctx.error(items["pivot"][1], "pivot must be a point [x, y, z]")
-            pivot = p
-        if "shaft" in items:
-            snode = fl.mapping(ctx, items["shaft"][1], "shaft")
-            fl.check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
-            axis = fl.direction(ctx, snode.items["axis"][1], "shaft axis")
-            through = fl.vector(ctx, snode.items["through"][1], "length", "shaft through") if "through" in snode.items else np.zeros(3)
-            shaft = Shaft(axis, through)
-        if "rim_radius" in items:
-            rim = fl.positive(ctx, items["rim_radius"][1], "length", "rim_radius")
-    parts = tuple(loaded.parts)
-    node = items["parts"][1] if "parts" in items else root
+def _body_keys(ctx: Ctx, items: dict) -> dict:
+    """The body's own keys (a file with ``parts:``): reference, pivot, shaft, rim radius
+    and description, as :class:`rbcli.body.model.Body`'s fields."""
+    out: dict = {}
+    if "description" in items:
+        out["description"] = yv.string(ctx, items["description"][1], "description")
+    if "reference" in items:
+        p = pk.point(ctx, items["reference"][1], "reference")
+        if isinstance(p, str):
+            out["reference_is_com"] = p == "com"
+            out["reference"] = None if p == "com" else np.zeros(3)
+        else:
+            out["reference"] = p
+    if "pivot" in items:
+        p = pk.point(ctx, items["pivot"][1], "pivot")
+        if isinstance(p, str):
+            raise ctx.error(items["pivot"][1], "pivot must be a point [x, y, z]")
+        out["pivot"] = p
+    if "shaft" in items:
+        snode = yv.mapping(ctx, items["shaft"][1], "shaft")
+        yv.check_keys(ctx, snode, ("axis", "through"), "shaft", required=("axis",))
+        axis = pk.direction(ctx, snode.items["axis"][1], "shaft axis")
+        through = snode.items.get("through")
+        out["shaft"] = Shaft(axis, np.zeros(3) if through is None else
+                             yv.vector(ctx, through[1], "length", "shaft through"))
+    if "rim_radius" in items:
+        out["rim_radius"] = yv.positive(ctx, items["rim_radius"][1], "length", "rim_radius")
+    return out
+
+
+def _mass_props(ctx: Ctx, node: ys.Node, parts: tuple[Part, ...]) -> MassProps:
+    """The body's combined mass properties, checked finite and physically possible."""
     try:
         with np.errstate(over="ignore", invalid="ignore"):
             mp = combine(parts)
     except ValueError as exc:
         raise ctx.error(node, str(exc)) from None
-    if not all(map(math.isfinite, (*mp.com.tolist(), *mp.inertia_com.ravel().tolist()))):
+    if not (np.isfinite(mp.com).all() and np.isfinite(mp.inertia_com).all()):
         raise ctx.error(
             node,
             "the body's mass properties overflow (a mass times a squared distance exceeds "
@@ -214,18 +212,27 @@ def _body_defaults(
     factor, unit = ctx.factor("inertia", node)  # its unit errors, whether or not it is used
     if _may_be_impossible(parts):
         _check_possible(ctx, node, mp.inertia_com, factor, unit)
-    body = Body(
-        name=name, source=source, text=text, parts=parts, reference=reference,
-        reference_is_com=ref_com, shaft=shaft, pivot=pivot, rim_radius=rim,
-        description=description, warnings=(*loaded.warnings, *density_warning(ctx.session)),
-        inputs=inputs,
-        units=dict(loaded.ctx.base_units),
-    )
-    remember_mass_props(body, mp)  # commands take it from there (body_mass_props)
-    return body
+    return mp
 
 
-def load_body(source: str, *, stdin: object = None) -> Body:
+def _built(loaded: _Loaded, name_default: str, source: str, text: str,
+           stack: tuple[str, ...], base_dir: Path) -> Built:
+    ctx, items = loaded.ctx, loaded.root.items
+    name = yv.string(ctx, items["name"][1], "name") if "name" in items else name_default
+    fields = _body_keys(ctx, items) if "parts" in items else {}
+    parts = tuple(loaded.parts)
+    mp = _mass_props(ctx, items["parts"][1] if "parts" in items else loaded.root, parts)
+    fields.update(
+        name=name, source=source, text=text, parts=parts,
+        warnings=(*loaded.warnings, *density_warning(ctx.session)),
+        inputs=tuple(dict.fromkeys((*stack, *ctx.inputs))), units=dict(ctx.base_units))
+    # the included files' results are freed now (session -> parsed -> their ctx -> session
+    # is a reference cycle, which only the collector would free, scanning all of it)
+    ctx.session.parsed.clear()
+    return Built(fields, mp, os.path.abspath(base_dir))
+
+
+def load_body(source: str, *, stdin: object = None) -> Built:
     """Load a body from a path, or ``-`` for standard input.
 
     Raises
@@ -234,57 +241,17 @@ def load_body(source: str, *, stdin: object = None) -> Body:
         For anything wrong with the file or its contents, located at file:line:col.
     """
     if source == "-":
-        from rbcli.io.reader import read_stream
-
         stream = stdin if stdin is not None else getattr(sys.stdin, "buffer", sys.stdin)
         data = read_stream(stream, ys.max_bytes(), "body file", env="RBCLI_MAX_BODY_BYTES")  # type: ignore[arg-type]
         return load_text(data, "<stdin>", Path.cwd(), name_default="body")
     if inc.names_a_folder(source):
-        from rbcli.io.reader import ReadError
-
         raise ReadError(source, "names a folder (it ends with '/'), not a body file")
     path = Path(source)
     data = inc.read_body_file(path)
-    return load_text(data, source, path.parent, name_default=path.stem, stack=(_realpath(str(path)),))
+    return load_text(data, source, path.parent, name_default=path.stem, stack=(os.path.realpath(path),))
 
 
-#: :func:`_realpath`'s folders: (the cwd for a relative one, the folder as written) ->
-#: (its real path, its (st_dev, st_ino)); cleared when it reaches _REAL_DIRS_MAX
-_REAL_DIRS: dict[tuple[str, str], tuple[str, tuple[int, int]]] = {}
-_REAL_DIRS_MAX = 256
-
-
-def _realpath(path: str) -> str:
-    """``os.path.realpath(path)`` of a file just read, with its folder's real path taken
-    once for a batch of files in one folder (issue 16: ~6 lstat and a Python loop a file).
-
-    The folder's cached real path is used while ``os.stat`` of the folder as written is
-    still the same directory (device and inode); the last component is resolved by
-    ``os.path.realpath`` whenever it is a symbolic link, ``.`` or ``..`` (or gone). (A
-    folder moved and a link put in its place while a batch runs would keep its old real
-    path; a folder re-linked to another directory would not.)
-    """
-    head, tail = os.path.split(path)
-    if os.name != "posix" or tail in ("", ".", ".."):
-        return os.path.realpath(path)
-    folder = head or "."
-    try:
-        key = (folder if os.path.isabs(folder) else os.getcwd(), folder)
-        st = os.stat(folder)
-        if stat.S_ISLNK(os.lstat(path).st_mode):
-            return os.path.realpath(path)
-    except (OSError, ValueError):  # gone, or a name the system refuses: realpath's answer
-        return os.path.realpath(path)
-    ident = (st.st_dev, st.st_ino)
-    known = _REAL_DIRS.get(key)
-    if known is None or known[1] != ident:
-        if len(_REAL_DIRS) >= _REAL_DIRS_MAX:
-            _REAL_DIRS.clear()
-        known = _REAL_DIRS[key] = (os.path.realpath(folder), ident)
-    return os.path.join(known[0], tail)
-
-
-def load_expr(expr: str) -> Body:
+def load_expr(expr: str) -> Built:
     """Load a body written inline (``-e/--expr``), e.g. ``{shape: box, mass: 2, size: [1, 2, 3]}``."""
     return load_text(expr, "<expr>", Path.cwd(), name_default="expr")
 
@@ -297,7 +264,7 @@ def load_text(
     name_default: str = "body",
     stack: tuple[str, ...] = (),
     units: dict[str, str] | None = None,
-) -> Body:
+) -> Built:
     """Load a body from text already read; ``base_dir`` anchors relative paths.
 
     ``stack`` holds the real path of the file the text was read from (if any): it is the
@@ -309,31 +276,13 @@ def load_text(
     else:
         text = data
     loaded = _load(data, filename, base_dir, stack, units)
-    return _finish(loaded, name_default, filename, text, stack, base_dir)
+    return _built(loaded, name_default, filename, text, stack, base_dir)
 
 
 def load_node(root: ys.Node, source: str, base_dir: Path, *, text: str,
-              name_default: str = "body", units: dict[str, str] | None = None) -> Body:
-    """Load a body from a tree made of Python data (:func:`rbcli.io.bodydata.tree`, each node
+              name_default: str = "body", units: dict[str, str] | None = None) -> Built:
+    """Load a body from a tree made of Python data (:func:`rbcli.body.pydata.tree`, each node
     located by its key path); ``text`` is its document as YAML (``Body.text``)."""
     loaded = _load(None, source, base_dir, (), units, root=root)
-    return _finish(loaded, name_default, source, text, (), base_dir)
+    return _built(loaded, name_default, source, text, (), base_dir)
 
-
-def _finish(loaded: _Loaded, name_default: str, source: str, text: str,
-            stack: tuple[str, ...], base_dir: Path) -> Body:
-    inputs = tuple(dict.fromkeys((*stack, *loaded.ctx.inputs)))
-    body = _body_defaults(loaded, name_default, source, text, inputs)
-    # the included files' results are freed now (session -> parsed -> their ctx -> session
-    # is a reference cycle, which only the collector would free, scanning all of it)
-    loaded.ctx.session.parsed.clear()
-    object.__setattr__(body, "_origin", os.path.abspath(base_dir))
-    return body
-
-
-def origin(body: Body) -> str | None:
-    """The folder (absolute) relative ``include`` and mesh paths of ``body.text`` start from,
-    for a body a reader of rbcli made (its document is ``body.text``); else None (a
-    ``Body(...)`` or a ``dataclasses.replace`` of one: its text, if any, need not say what
-    its parts are)."""
-    return body.__dict__.get("_origin") if hasattr(body, "__dict__") else None
