@@ -96,10 +96,11 @@ class Node:
     ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
     ``"bool"``, ``"null"``.
 
-    A node keeps where it starts as given: a :class:`Mark`, or the loader's 0-based
-    ``line << 32 | column`` (an int, which the garbage collector does not track: a large
-    body's tree holds millions of nodes, and most marks are never read — they locate
-    errors). ``.mark`` is always the 1-based :class:`Mark`.
+    A node keeps where it starts as given: a :class:`Mark` (or a
+    :class:`rbcli.io.loadctx.DataMark` in a tree made from Python data), or the loader's
+    0-based ``line << 32 | column`` (an int, which the garbage collector does not track: a
+    large body's tree holds millions of nodes, and most marks are never read — they locate
+    errors), which ``.mark`` gives as the 1-based :class:`Mark`.
     """
 
     __slots__ = ("_mark",)
@@ -111,7 +112,7 @@ class Node:
     def mark(self) -> Mark:
         """Where the node starts (1-based line and column)."""
         m = self._mark
-        return m if isinstance(m, Mark) else Mark((m >> 32) + 1, (m & 0xFFFFFFFF) + 1)
+        return Mark((m >> 32) + 1, (m & 0xFFFFFFFF) + 1) if isinstance(m, int) else m
 
     @property
     def tag(self) -> str:  # pragma: no cover - every subclass overrides it
