@@ -73,7 +73,6 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("io/reader.py", "limit_from_env"): (1, "int() of the variable"),
     ("io/unitparse.py", "check_exponent"): (1, "int()"),
     ("io/yamlsafe.py", "_int"): (1, "int()"),
-    ("io/yamlsafe.py", "_parse"): (1, "int(), float() of a scalar"),
     ("io/yamlplain.py", "_scalar"): (1, "float(), int() of the text"),
     ("render/text.py", "_columns"): (1, "int() of COLUMNS"),
 }
