@@ -333,45 +333,6 @@ def test_the_physical_check_runs_for_holes_meshes_and_given_parts():
                   "{shape: point, mass: 1, at: [0, 0, 5], subtract: true}]}", "<t>", ROOT)
 
 
-def _triangle_with_arrays(v):
-    """The triangle's geometry as core.shapes computed it with arrays (before its float
-    version): centroid, twice the area, the edges' lengths and the unit inertia."""
-    v = np.array(v, dtype=float)
-    centroid = v.mean(axis=0)
-    d = v - centroid
-    x = np.array([np.cross(v[1] - v[0], v[2] - v[0]), v[0] - v[1], v[1] - v[2], v[0] - v[2]])
-    norms = np.sqrt(np.vecdot(x, x))
-    c = d.T @ d / 12.0
-    c = 0.5 * (c + c.T)
-    return centroid, norms[0], norms[1:].max(), np.trace(c) * np.eye(3) - c
-
-
-def test_the_triangle_is_computed_as_with_arrays():
-    # core.shapes._triangle works in floats, with numpy only for the dot products and dᵀd
-    # (BLAS): bit for bit the array version, signs of zeros included, or the same refusal
-    rng = np.random.default_rng(11)
-    for k in range(3000):
-        scale = math.exp(rng.uniform(-20, 20))
-        v = rng.normal(size=(3, 3)) * scale
-        if k % 3 == 0:
-            v[:, 2] = 0.0
-        if k % 5 == 0:
-            v[:, 0] = -0.0
-        if k % 7 == 0:  # nearly collinear
-            v[2] = v[0] + (v[1] - v[0]) * rng.uniform() + rng.normal(size=3) * scale * 10 ** rng.uniform(-16, -8)
-        if k % 11 == 0:
-            v = np.round(v, 1)
-        centroid, twice_area, longest, inertia = _triangle_with_arrays(v)
-        if not twice_area > 1e-12 * longest * longest:
-            with pytest.raises(shp.ShapeError, match="collinear"):
-                shp.local_geometry("triangle", {"vertices": v.tolist()})
-            continue
-        g = shp.local_geometry("triangle", {"vertices": v.tolist()})
-        assert g.measure == 0.5 * twice_area and np.array_equal(g.com, centroid), k
-        assert np.array_equal(g.unit_inertia, inertia), k
-        assert np.array_equal(np.signbit(g.unit_inertia), np.signbit(inertia)), k
-
-
 def test_a_quantity_text_read_before_gives_the_same_value_and_only_for_its_kind(monkeypatch):
     # io.fields.number keeps the texts io.fields.quantity accepted, by (text, kind): read
     # again they give the same float; the same text where another kind is needed is
