@@ -14,6 +14,8 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+from rbcli.io import units as un
+
 __all__ = ["bare_unit", "factor", "label"]
 
 #: how messages and tables name the SI unit of a kind
@@ -29,8 +31,6 @@ def bare_unit(units: Mapping[str, str] | None, kind: str) -> str | None:
     if kind == "angular_speed":
         return (units or {}).get("angular_speed")
     if kind in ("length", "mass") and units and kind in units:
-        from rbcli.io import units as un
-
         f, text = un.unit_for_kind({kind: units[kind]}, kind)
         return text if f != 1.0 else None
     return None  # speeds, accelerations, times, ...: SI (a body file has no bare g or speed)
@@ -47,6 +47,4 @@ def factor(units: Mapping[str, str] | None, kind: str) -> float:
     unit = bare_unit(units, kind)
     if unit is None:
         return 1.0
-    from rbcli.io import units as un
-
     return un.parse_unit(unit)[0]

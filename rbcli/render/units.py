@@ -18,6 +18,7 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from rbcli.errors import ParamError, literal, option_name
+from rbcli.io import bare
 from rbcli.io import units as un
 from rbcli.render.fmt import num
 
@@ -177,16 +178,12 @@ class BodyUnits:
         return cls(getattr(body, "units", None) if body is not None else None)
 
     def label(self, kind: str) -> str:
-        from rbcli.io.bare import label
-
-        return label(self.base, kind)
+        return bare.label(self.base, kind)
 
     def show(self, si: Any, kind: str, unit: tuple[float, str] | None = None) -> str:
         """An SI value (or a sequence) as numbers in the bare unit of ``kind`` (or in
         ``unit``, (SI per unit, name)), 6 digits."""
-        from rbcli.io.bare import factor
-
-        f = unit[0] if unit else factor(self.base, kind)
+        f = unit[0] if unit else bare.factor(self.base, kind)
         vals = si.tolist() if hasattr(si, "tolist") else si
         if isinstance(vals, (list, tuple)):
             return ", ".join(_g(float(x) / f) for x in vals)
@@ -212,8 +209,6 @@ def _typed(typed: str | None, kind: str) -> tuple[float, str] | None:
     nothing was typed or it is not a unit of ``kind`` (the value then shows in the bare unit)."""
     if not typed:
         return None
-    from rbcli.io import units as un
-
     try:
         return un.to_si(f"1 {typed}", kind), un.canonical_unit(typed)
     except un.UnitError:
