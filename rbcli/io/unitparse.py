@@ -275,7 +275,3 @@ def parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool]
         return number, Fraction(1), 0, Dim(), False
     q, p, d = parse_unit_exact(rest, whole=text)
     return number, q, p, d, True
-
-
-#: parsed quantity texts are cached (issue 16): a body file repeats its few unit strings
-#: ("7850 kg/m^3") thousands of times, and the exact parse costs 10-20 µs each

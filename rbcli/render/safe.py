@@ -72,6 +72,4 @@ def json_escape(encoded: str) -> str:
 
     They can stand only inside strings (JSON's own syntax is ASCII), so this is safe on the
     whole document."""
-    if encoded.isascii() and "\x7f" not in encoded:  # none of them (DEL is the one in ASCII)
-        return encoded
     return re.sub(_JSON_UNSAFE, _json_u, encoded)

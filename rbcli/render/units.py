@@ -39,7 +39,7 @@ class DisplayUnits:
     (A plain class, not a dataclass: it sits on every command's start-up path.)
     """
 
-    __slots__ = ("length", "mass", "time", "si", "_cache")
+    __slots__ = ("length", "mass", "time", "si")
 
     def __init__(self, length: tuple[float, str] = (1.0, "m"), mass: tuple[float, str] = (1.0, "kg"),
                  time: tuple[float, str] = (1.0, "s"), si: bool = True) -> None:
@@ -47,7 +47,6 @@ class DisplayUnits:
         self.mass = mass
         self.time = time
         self.si = si
-        self._cache: dict = {}
 
     def __repr__(self) -> str:
         return f"DisplayUnits(length={self.length!r}, mass={self.mass!r}, time={self.time!r}, si={self.si!r})"
@@ -78,33 +77,27 @@ class DisplayUnits:
 
     def factor(self, kind: str) -> tuple[float, str]:
         """(multiplier from SI to the display unit, the unit's label) for a kind."""
-        if kind in self._cache:
-            return self._cache[kind]
-        if kind in ("angle_deg",):
-            res = (1.0, "°")
-        elif kind == "angular_speed":
-            res = (1.0, "rad/s")
-        elif kind == "dimensionless":
-            res = (1.0, "")
-        else:
-            dim = un.KINDS[kind]
-            if self.si and kind in NAMED:
-                res = (1.0, NAMED[kind])
-            else:
-                f = 1.0
-                top, bottom = [], []
-                for (factor, name), e in ((self.mass, dim.M), (self.length, dim.L), (self.time, dim.T)):
-                    if e == 0:
-                        continue
-                    f /= factor**e
-                    label = name + (str(abs(e)).translate(SUPERSCRIPT) if abs(e) != 1 else "")
-                    (top if e > 0 else bottom).append(label)
-                label = "·".join(top) or "1"
-                if bottom:
-                    label += "/" + "/".join(bottom) if len(bottom) == 1 else "/(" + "·".join(bottom) + ")"
-                res = (f, label)
-        self._cache[kind] = res
-        return res
+        if kind == "angle_deg":
+            return (1.0, "°")
+        if kind == "angular_speed":
+            return (1.0, "rad/s")
+        if kind == "dimensionless":
+            return (1.0, "")
+        if self.si and kind in NAMED:
+            return (1.0, NAMED[kind])
+        dim = un.KINDS[kind]
+        f = 1.0
+        top, bottom = [], []
+        for (factor, name), e in ((self.mass, dim.M), (self.length, dim.L), (self.time, dim.T)):
+            if e == 0:
+                continue
+            f /= factor**e
+            label = name + (str(abs(e)).translate(SUPERSCRIPT) if abs(e) != 1 else "")
+            (top if e > 0 else bottom).append(label)
+        label = "·".join(top) or "1"
+        if bottom:
+            label += "/" + "/".join(bottom) if len(bottom) == 1 else "/(" + "·".join(bottom) + ")"
+        return (f, label)
 
     def show(self, x: float | None, kind: str, digits: int) -> str:
         if x is None:

@@ -37,6 +37,8 @@ parameter at fault.
 
 from __future__ import annotations
 
+import cmath
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -214,8 +216,6 @@ def solve(alpha: object, v0: object, method: str | None = None, weights: object 
 def _dot(a: list[complex], b: list[complex]) -> complex:
     """sum a_k b_k, each part summed exactly rounded (math.fsum): the same bits on every
     machine, BLAS kernel and memory alignment (a golden output is exact to the last digit)."""
-    import math
-
     prods = [x * y for x, y in zip(a, b)]
     return complex(math.fsum(z.real for z in prods), math.fsum(z.imag for z in prods))
 
@@ -259,9 +259,6 @@ def householder_qr(A: np.ndarray, b: np.ndarray) -> tuple[list[list[complex]], l
     ``A[k:, k:] -= 2 u (u^H A[k:, k:])`` and the same for b (Golub and Van Loan, *Matrix
     Computations*, §5.2). Python complex arithmetic, sums exactly rounded (:func:`_dot`).
     """
-    import cmath
-    import math
-
     n, p = A.shape
     M = [[complex(A[i, j]) for j in range(p)] for i in range(n)]
     y = [complex(v) for v in b]
