@@ -63,7 +63,7 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("io/fields.py", "rotation"): (2, "core.rotation's euler_intrinsic, from_matrix: plain ValueErrors"),
     ("io/meshfile.py", "read_mesh"): (1, "max_mesh_bytes: plain ValueErrors"),
     ("io/meshbase.py", "numbers"): (1, "numpy.fromstring"),
-    ("io/meshobj.py", "_read_obj_lines"): (2, "numpy.array of the vertices, float()"),
+    ("io/meshobj.py", "_vertex_array"): (2, "numpy.array of the vertices, float()"),
     ("io/meshstl.py", "_read_stl_ascii"): (2, "numpy.array of the coordinates, float()"),
     ("io/outfile.py", "_probe"): (1, "os.lstat"),
     ("io/outfile.py", "_kind"): (1, "os.lstat"),
