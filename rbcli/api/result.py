@@ -109,7 +109,7 @@ def frozen(value: Any, _depth: int = 0) -> Any:
     array is writable), dicts as read-only mappings, lists as tuples, the fields of
     dataclass instances likewise (in place: :func:`freeze_fields`). Other objects are
     returned as they are (a :class:`rbcli.model.Body` is frozen where it is made)."""
-    if _depth > 20:
+    if value is None or isinstance(value, (str, int, float)) or _depth > 20:
         return value
     if isinstance(value, np.ndarray):
         if value.flags.writeable:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import FrozenInstanceError
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import yaml
 from yaml.reader import ReaderError
@@ -156,7 +156,7 @@ class ScalarNode(Node):
     def __init__(
         self, mark: Mark | int, value: str | int | float | bool | None, raw: str, quoted: bool
     ) -> None:
-        super().__init__(mark)
+        object.__setattr__(self, "_mark", mark)
         object.__setattr__(self, "value", value)
         object.__setattr__(self, "raw", raw)
         object.__setattr__(self, "quoted", quoted)
@@ -191,7 +191,7 @@ class MapNode(Node):
     items: dict[str, tuple[Mark, Node]]
 
     def __init__(self, mark: Mark | int, items: dict[str, tuple[Mark, Node]]) -> None:
-        super().__init__(mark)
+        object.__setattr__(self, "_mark", mark)
         object.__setattr__(self, "items", items)
 
     def _fields(self) -> tuple:
@@ -213,7 +213,7 @@ class SeqNode(Node):
     items: list[Node]
 
     def __init__(self, mark: Mark | int, items: list[Node]) -> None:
-        super().__init__(mark)
+        object.__setattr__(self, "_mark", mark)
         object.__setattr__(self, "items", items)
 
     def _fields(self) -> tuple:
@@ -258,11 +258,11 @@ def _mark_of_prefix(prefix: str) -> Mark:
     return Mark(line, len(prefix) - last_end + 1)
 
 
-def _yaml_mark(mark: object | None) -> Mark:
-    """A yaml Mark (0-based line/column) as a 1-based :class:`Mark`."""
+def _yaml_mark(mark: Any) -> Mark:
+    """A yaml Mark (0-based line/column; PyYAML's or libyaml's) or None as a 1-based :class:`Mark`."""
     if mark is None:
         return Mark(1, 1)
-    return Mark(int(getattr(mark, "line", 0)) + 1, int(getattr(mark, "column", 0)) + 1)
+    return Mark(mark.line + 1, mark.column + 1)
 
 
 def _error(message: str, filename: str, mark: Mark) -> InputError:
@@ -531,7 +531,8 @@ class _Tree:
         return _error(message, self.filename, _yaml_mark(event.start_mark))
 
     def scalar(self, event: yaml.ScalarEvent) -> None:
-        _check_node_event(event, self.filename)
+        if event.anchor is not None or event.tag is not None:
+            _check_node_event(event, self.filename)  # raises
         raw = event.value
         if self.in_map and self.key is None:
             self.take_key(raw, bool(event.style), _yaml_mark(event.start_mark))
@@ -562,7 +563,8 @@ class _Tree:
         self.items.append(node)  # type: ignore[union-attr]
 
     def open(self, event: yaml.CollectionStartEvent) -> None:
-        _check_node_event(event, self.filename)
+        if event.anchor is not None or event.tag is not None:
+            _check_node_event(event, self.filename)  # raises
         is_map = isinstance(event, yaml.MappingStartEvent)
         if self.in_map and self.key is None:
             what = "a mapping" if is_map else "a list"
