@@ -36,7 +36,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.precess import PrecessOptions
     from rbcli.api.rollcheck import RollcheckOptions
     from rbcli.api.top import TopOptions
-    from rbcli.api.whirl import WhirlOptions
+    from rbcli.api.params import Options
     from rbcli.model import Body
 
 __all__ = ["ReportOptions", "ReportResult", "Section", "report", "run"]
@@ -141,7 +141,7 @@ class ReportOptions:
     balance : BalanceOptions or None — None when the body has no shaft and no balance
         option is given (``balance_skip`` says so), or the body cannot have one
         (``balance_error``)
-    whirl : WhirlOptions or None — None without ``stiffness`` (``whirl_skip``), or when the
+    whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
         body cannot have one (``whirl_error``)
     precess : PrecessOptions or None — None without ``omega``
     top : TopOptions or None — None without a pivot or without ``spin`` and ``theta``
@@ -153,7 +153,7 @@ class ReportOptions:
 
     given: tuple[tuple[str, str], ...]
     balance: BalanceOptions | None
-    whirl: WhirlOptions | None
+    whirl: Options | None
     precess: PrecessOptions | None
     top: TopOptions | None
     rollcheck: RollcheckOptions | None
@@ -189,7 +189,7 @@ class ReportOptions:
         from rbcli.api.precess import PrecessOptions
         from rbcli.api.rollcheck import RollcheckOptions, round_parts
         from rbcli.api.top import TopOptions
-        from rbcli.api.whirl import WhirlOptions
+        from rbcli.api import whirl
 
         kw = dict(shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
                   grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega,
@@ -228,7 +228,7 @@ class ReportOptions:
         # the rotor on its bearings: with a bearing stiffness
         w_opts = w_err = w_skip = None
         if stiffness is not None:
-            w_opts, w_err = _section_parse(lambda: WhirlOptions.parse(
+            w_opts, w_err = _section_parse(lambda: whirl.parse(
                 body, bearings=bearings, stiffness=stiffness, damping=damping, speed=rotor_speed,
                 shaft=shaft, through=through, symmetry_tol=symmetry_tol))
         elif damping is not None:

@@ -327,8 +327,8 @@ class WhirlResult(Result):
     keys (plus ``name``), arrays read-only.
 
     Hidden from the JSON (for the tables): ``units`` (the body's units block: what bare
-    numbers meant), ``source`` (the body's file), ``points``, ``isotropic``, ``given`` (the
-    parameters the caller gave: the options table echoes them).
+    numbers meant), ``source`` (the body's file), ``isotropic``, ``options`` (the parameters
+    as read, :class:`rbcli.api.params.Options`: the options table echoes those given).
     """
 
     name: str
@@ -355,10 +355,8 @@ class WhirlResult(Result):
     warnings: tuple[str, ...]
     units: dict = _hidden(default_factory=dict)
     source: str = _hidden(default="")
-    points: int = _hidden(default=0)
     isotropic: bool = _hidden(default=True)
-    given: tuple[str, ...] = _hidden(default=())
-    typed: tuple[tuple[str, str], ...] = _hidden(default=())
+    options: Any = _hidden(default=None)
 
     @property
     def return_code(self) -> int:

@@ -11,7 +11,7 @@ from typing import Any
 
 import typer
 
-from rbcli.errors import ExitStatus, InputError, option_name, spelled_data
+from rbcli.errors import ExitStatus, InputError, option_name, spell, spelled_data
 
 BODY_HELP = "Body file(s) (YAML); '-' reads standard input."
 EXPR_HELP = "Inline YAML body, e.g. -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'."
@@ -44,6 +44,53 @@ UnitsOpt = typer.Option(None, "--units", help=UNITS_HELP, show_default=False)
 
 
 from rbcli.cli.app import debug  # noqa: E402,F401  (lives in app: main() needs it first)
+
+
+#: where a command's declared parameters go among its typer options (:func:`command`)
+PARAMS = object()
+
+
+def command(params: Any, *, name: str | None = None, help: str | None = None):
+    """Register the decorated function on the app as a typer command whose options are its
+    own parameters, with the options of the parameter table ``params``
+    (:class:`rbcli.api.params.Param`) where it has a parameter ``args = PARAMS``. The
+    function receives ``args``: the table's values as typed (None: not given), by parameter.
+
+    Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``),
+    its help the table's text with parameters spelled as this command's options."""
+    import inspect
+
+    from rbcli.cli.app import app
+
+    def wrap(fn):
+        cmd = name or fn.__name__.replace("_", "-")
+        spelled = lambda p: option_name(p, cmd)  # noqa: E731
+        table = [p for p in params if p.cli]
+        own = list(inspect.signature(fn, eval_str=True).parameters.values())
+        at = [q.name for q in own].index("args")
+        opts = []
+        for p in table:
+            decls = [d for d in (p.short, p.flag or spelled(p.name)) if d]
+            kind = {"count": int, "flag": bool}.get(p.kind, str)
+            info = typer.Option(p.default, *decls, help=spell(p.help, spelled),
+                                metavar=p.metavar, show_default=p.default is not None)
+            opts.append(inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=info,
+                                          annotation=kind))
+        names = [p.name for p in table]
+
+        def run(**kw):
+            args = {n: kw.pop(n) for n in names}
+            return fn(args=args, **kw)
+
+        run.__name__, run.__qualname__, run.__module__ = fn.__name__, fn.__qualname__, fn.__module__
+        run.__doc__ = fn.__doc__
+        run.__signature__ = inspect.Signature(
+            [q.replace(kind=inspect.Parameter.KEYWORD_ONLY) for q in own[:at]] + opts
+            + [q.replace(kind=inspect.Parameter.KEYWORD_ONLY) for q in own[at + 1:]])
+        app.command(name=cmd, help=help)(run)
+        return fn
+
+    return wrap
 
 
 def said(x: object) -> str:

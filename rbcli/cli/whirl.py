@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.commands import WHIRL
 from rbcli.cli import common as c
 from rbcli.cli.app import MANUAL, app
 
@@ -41,28 +42,11 @@ stiffness is N/m and damping N s/m unless a unit is given ('200 N/mm'). Whirl fr
 are in the fixed frame; forward whirl turns the same way as the spin.
 """
 
-LIST = "one value for every bearing, or one per bearing, comma-separated"
-
-
-@app.command(help=HELP)
+@c.command(WHIRL, help=HELP)
 def whirl(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    bearings: str = typer.Option(None, "--bearings", help="Bearing positions z1,z2[,...] along the shaft, two or more at distinct places (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,200 mm').", show_default=False),
-    stiffness: str = typer.Option(None, "--stiffness", help=f"Bearing stiffness (N/m, or with units, e.g. '200 N/mm'), {LIST}; the x stiffness when --stiffness-y is given, else both directions.", show_default=False),
-    stiffness_y: str = typer.Option(None, "--stiffness-y", help=f"Bearing stiffness in y (a bare number is N/m; or with units), {LIST}: anisotropic bearings.", show_default=False),
-    cross_stiffness: str = typer.Option(None, "--cross-stiffness", help=f"Cross-coupled stiffness kxy = -kyx (a bare number is N/m; or with units), {LIST}: the destabilising follower force of fluid films and seals.", show_default=False),
-    damping: str = typer.Option(None, "--damping", help=f"Bearing damping (N s/m, or with units, e.g. '2 N*s/mm'), {LIST}; the x damping when --damping-y is given. Default: none.", show_default=False),
-    damping_y: str = typer.Option(None, "--damping-y", help=f"Bearing damping in y (a bare number is N s/m; or with units), {LIST}.", show_default=False),
-    speed_range: str = typer.Option(None, "--speed-range", help="Speeds a,b of the Campbell diagram and the response, 0 <= a < b (a bare number is rad/s, or the body's units' angular_speed; or e.g. '0,6000 rpm'). Default: 0 to 1.25 times the highest critical speed or operating speed.", show_default=False),
-    points: int = typer.Option(None, "--points", help="Speeds in the range (3 to 20001). Default: 201 (the operating speeds are added).", show_default=False),
-    orders: str = typer.Option(None, "--orders", help="Orders n of the critical speeds, where a whirl frequency is n times the speed: 1, or e.g. 1,2. Default: 1.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="The operating speed, or min,max of the operating range (a bare number is rad/s, or the body's units' angular_speed; or e.g. '1480 rpm'): separation margins (API 617 / 684) and stability there.", show_default=False),
-    unbalance: str = typer.Option(None, "--unbalance", help="Unbalances amount@angle, one per plane of --unbalance-planes (kg m unless a unit is given, e.g. '50 g*mm@0,30 g*mm@90'; angles in degrees from the 0° mark in the direction of rotation). Default: the body's own static and couple unbalance.", show_default=False),
-    unbalance_planes: str = typer.Option(None, "--unbalance-planes", help="Positions z1,z2[,...] along the shaft of the --unbalance amounts (as --bearings).", show_default=False),
-    shaft: str = typer.Option(None, "--shaft", help="Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the shaft (z = 0 there): com, origin or x,y,z (a bare number in the body's length unit). Default: the body's shaft point, else the origin.", show_default=False),
-    symmetry_tol: str = c.SymmetryTolOpt,
+    args: dict = c.PARAMS,
     plot: str = typer.Option(None, "--plot", help="Write the Campbell diagram (png, svg or pdf): whirl frequencies against speed, forward solid, backward dashed, the n× lines and the critical speeds.", show_default=False),
     plot_response: str = typer.Option(None, "--plot-response", help="Write the unbalance response (png, svg or pdf): each bearing's displacement amplitude and phase against speed, peaks and half-power points marked.", show_default=False),
     json_: bool = c.JsonOpt,
@@ -71,23 +55,15 @@ def whirl(
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api import whirl as api
+    from rbcli.io import outfile
     from rbcli.render import whirl as rw
-    from rbcli.render.units import DisplayUnits
 
-    e = c.env()
-    out = c.output_format(json_, fmt)
-    du = DisplayUnits.parse(units)
+    e, out, du = c.start(json_, fmt, units)
     b = c.load_one(body, expr, e)
-    o = api.WhirlOptions.parse(
-        b, bearings=bearings, stiffness=stiffness, stiffness_y=stiffness_y,
-        cross_stiffness=cross_stiffness, damping=damping, damping_y=damping_y,
-        speed_range=speed_range, points=points, orders=orders, speed=speed, unbalance=unbalance,
-        unbalance_planes=unbalance_planes, shaft=shaft, through=through, symmetry_tol=symmetry_tol)
+    o = api.parse(b, **args)
     plot_path = c.check_plot(plot, b) if plot is not None else None
     resp_path = None
     if plot_response is not None:
-        from rbcli.io import outfile
-
         resp_path = outfile.check(plot_response, b, "--plot-response", exts=c.PLOT_FORMATS,
                                   replace_ok=True, others={"--plot": plot_path})
     res = api.run(b, o)

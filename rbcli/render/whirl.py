@@ -17,6 +17,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from rbcli.core.whirl.response import phase_deg
+from rbcli.render import echo
 from rbcli.render.fmt import num
 from rbcli.render.text import Doc
 from rbcli.render.units import RPM, BodyUnits, DisplayUnits
@@ -50,63 +52,9 @@ def _speed(x: float | None, digits: int) -> str:
 
 
 def echo_rows(res: WhirlResult) -> list[tuple[str, str, str]]:
-    """The options as understood, one row per parameter the caller gave (and the speed range,
-    marked when it is the default): (option, value, unit), lengths in the body's bare unit
-    (what a bare number meant, :class:`rbcli.render.units.BodyUnits`), speeds in rad/s and
-    rpm, stiffness N/m and damping N s/m."""
-    from rbcli.errors import option_name
-
-    bu = BodyUnits(res.units)
-    given = set(res.given)
-    typed = dict(res.typed)
-    rows = []
-    if "bearings" in given:
-        rows.append(bu.echo("bearings", [b.plane for b in res.bearings], "length", typed.get("bearings")))
-    kx = [b.stiffness[0] for b in res.bearings]
-    ky = [b.stiffness[1] for b in res.bearings]
-    if "stiffness" in given:
-        rows.append((option_name("stiffness"), _values(kx), "N/m"))
-    if "stiffness_y" in given:
-        rows.append((option_name("stiffness_y"), _values(ky), "N/m"))
-    if "cross_stiffness" in given:
-        rows.append((option_name("cross_stiffness"), _values([b.cross_stiffness[0] for b in res.bearings]),
-                     "N/m (kyx = -kxy)"))
-    if "damping" in given:
-        rows.append((option_name("damping"), _values([b.damping[0] for b in res.bearings]), "N s/m"))
-    if "damping_y" in given:
-        rows.append((option_name("damping_y"), _values([b.damping[1] for b in res.bearings]), "N s/m"))
-    a, b = res.speed_range
-    opt, val, unit = bu.echo("speed_range", [a, b], "angular_speed", typed.get("speed_range"))
-    rows.append((opt, val + ("" if "speed_range" in given else " (default)"), unit))
-    if "points" in given:
-        rows.append((option_name("points"), str(res.points), ""))
-    if "orders" in given:
-        rows.append((option_name("orders"), ", ".join(str(n) for n in res.orders), "× speed"))
-    if "speed" in given and res.speed is not None:
-        lo, hi = res.speed
-        rows.append(bu.echo("speed", lo if lo == hi else [lo, hi], "angular_speed", typed.get("speed")))
-    if "unbalance" in given:
-        rows.append((option_name("unbalance"), ", ".join(
-            f"{num(u.amount * 1e6)}@{num(u.angle_deg)}" for u in res.response.unbalance), "g·mm@deg"))
-    if "unbalance_planes" in given:
-        rows.append(bu.echo("unbalance_planes", [u.plane for u in res.response.unbalance], "length",
-                            typed.get("unbalance_planes")))
-    if "shaft" in given:
-        rows.append((option_name("shaft"), bu.show(res.shaft, "dimensionless"), "direction"))
-    if "through" in given:
-        t = res.through
-        rows.append((option_name("through"), t, "") if isinstance(t, str) else bu.echo("through", t, "length",
-                                                                                  typed.get("through")))
-    if "symmetry_tol" in given:
-        rows.append((option_name("symmetry_tol"), num(100.0 * res.symmetry_tol, 3), "%"))
-    return rows
-
-
-def _values(vals: list[float]) -> str:
-    """One value when every bearing has it ("5e+06, each"), else the list."""
-    if len(set(vals)) == 1:
-        return f"{num(vals[0])} (each bearing)"
-    return ", ".join(num(v) for v in vals)
+    """The options as understood (:func:`rbcli.render.echo.echo_rows`)."""
+    return echo.echo_rows(res.options, res.units, {"unbalance": lambda v: (", ".join(
+        f"{num(abs(u) * 1e6)}@{num(phase_deg(u))}" for _, u in v), "g·mm@deg")})
 
 
 def conventions_note(res: WhirlResult) -> str:
