@@ -27,7 +27,7 @@ from typing import Any
 
 from rbcli.api import check
 from rbcli.api import options as op
-from rbcli.errors import ParamError, spell
+from rbcli.errors import ParamError, option_name, param_name, spell
 
 __all__ = ["Param", "Options", "read", "checkers", "function", "document", "si_unit"]
 
@@ -48,6 +48,9 @@ KINDS: dict[str, str] = {
     "choice": "str",
     "text": "str",
     "texts": "str or sequence of str",
+    "nested": "str, or a sequence of str or of sequences of str",
+    "numbers": "str or sequence of float",
+    "fraction": "float or str",
     "flag": "bool",
     "path": "str or os.PathLike",
 }
@@ -67,6 +70,8 @@ class Param:
         ``quantity``, ``values`` and ``vector``
     counts : tuple of int — how many comma-separated values ``values`` takes
     choices : tuple of str — the words ``choice`` takes
+    form : str — how the command line takes it: ``"option"``, ``"options"`` (given once
+        per item: a list) or ``"argument"`` (positional)
     valid : callable, optional — ``valid(value, given)`` of the value read (SI) and the
         value as given: None when it is allowed, else why not (a message template), raised
         as a :class:`rbcli.ParamError` naming this parameter
@@ -76,7 +81,10 @@ class Param:
         marked "(default)" (the service puts the value it used in the options)
     default : the command line's default (None: not given)
     flag, short, metavar : the command line's spelling, when not the derived one
-    cli, api : whether the command line / the Python API takes it
+    cli_type : the command line's type, when not the kind's (``int`` for a count, ``bool``
+        for a flag, else ``str``): ``str`` lets the service say what is wrong with a count
+    cli, api : whether the command line / the Python API takes it (a command-line-only
+        entry keeps ``--help``'s order where it sits among the parameters)
     """
 
     name: str
@@ -85,6 +93,7 @@ class Param:
     quantity: str = ""
     counts: tuple[int, ...] = (1,)
     choices: tuple[str, ...] = ()
+    form: str = "option"
     valid: Callable[[Any, Any], str | None] | None = field(default=None, repr=False)
     echo: str = ""
     echo_default: bool = False
@@ -92,6 +101,7 @@ class Param:
     flag: str | None = None
     short: str | None = None
     metavar: str | None = None
+    cli_type: type | None = None
     cli: bool = True
     api: bool = True
     most: int = field(default=0, repr=False)
@@ -105,7 +115,7 @@ class Param:
     def checker(self) -> Callable[[Any, str], Any]:
         """The type check at the door of the API (:mod:`rbcli.api.check`)."""
         k = self.kind
-        if k in ("quantity", "degrees", "grade", "tolerance"):
+        if k in ("quantity", "degrees", "grade", "tolerance", "fraction"):
             return check.quantity
         if k == "values":
             return check.values(self.most) if self.most > 1 else check.quantity
@@ -117,6 +127,10 @@ class Param:
             return check.integers(self.most)
         if k == "texts":
             return check.texts(1, self.most)
+        if k == "nested":
+            return check.texts(2)
+        if k == "numbers":
+            return check.values(check.MAX_ITEMS)
         if k == "flag":
             return _flag
         if k == "path":
@@ -131,7 +145,7 @@ class Param:
         if self.kind in ("quantity", "values", "vector"):
             return self.quantity
         return {"degrees": "deg", "point": "point", "direction": "direction", "grade": "grade",
-                "count": "count", "tolerance": "percent"}.get(self.kind, "text")
+                "count": "count", "tolerance": "percent", "fraction": "percent"}.get(self.kind, "text")
 
 
 #: the tolerance of a nearly symmetric body, shared by top, gyrocompass, rollcheck and whirl
@@ -153,14 +167,17 @@ class Options:
     """The parameters of one call, read once: each value in SI (None: not given).
 
     ``o.speed`` is the value of parameter ``speed``; :attr:`given` names the parameters the
-    caller gave and :attr:`typed` the unit typed after a number (``"0.5 g"``: ``("mass_step",
-    "g")``), which the options table echoes. :attr:`params` is the command's table.
+    caller gave (a value equal to the command line's default is not given: the command line
+    cannot tell), :attr:`typed` the unit typed after a number (``"0.5 g"``: ``("mass_step",
+    "g")``), which the options table echoes, and :attr:`raw` each value as the caller gave it
+    (for labels that quote it). :attr:`params` is the command's table.
     """
 
     params: tuple[Param, ...]
     values: tuple[tuple[str, Any], ...]
     given: tuple[str, ...] = ()
     typed: tuple[tuple[str, str], ...] = ()
+    raw: tuple[tuple[str, Any], ...] = ()
 
     def __getattr__(self, name: str) -> Any:
         for key, value in self.__dict__.get("values", ()):
@@ -180,7 +197,11 @@ class Options:
         if unknown:
             raise AttributeError(f"no parameter {sorted(unknown)[0]!r}")
         return Options(self.params, tuple((k, values.get(k, v)) for k, v in self.values),
-                       self.given, self.typed)
+                       self.given, self.typed, self.raw)
+
+    def as_given(self, name: str) -> Any:
+        """The value of ``name`` as the caller gave it (None: not given)."""
+        return dict(self.raw).get(name)
 
 
 def checkers(params: tuple[Param, ...]) -> dict[str, Callable[[Any, str], Any]]:
@@ -216,10 +237,12 @@ def _read_one(u: op.Units, p: Param, value: Any) -> Any:
         return op.grade(value, name)
     if k == "tolerance":
         return op.symmetry_tolerance(value, name)
+    if k == "fraction":
+        return op.fraction(value, name)
     if k == "choice":
         return op.choice(value.strip().lower() if isinstance(value, str) else value, name,
                          p.choices)
-    return value  # count, ints, text, texts, flag, path: as checked (the service reads them)
+    return value  # count, ints, text, texts, nested, numbers, flag, path: as checked (the service reads them)
 
 
 def read(body: Any, params: tuple[Param, ...], given: Mapping[str, Any]) -> Options:
@@ -232,27 +255,33 @@ def read(body: Any, params: tuple[Param, ...], given: Mapping[str, Any]) -> Opti
         one line naming the parameter (``bearings: ...``).
     """
     u = op.Units.of(body)
-    values = []
+    values, named = [], []
     for p in params:
-        value = given.get(p.name)
+        raw = value = given.get(p.name)
         if value is not None or p.kind == "tolerance":  # (None: the default tolerance)
-            raw = value
             with op.naming(p.name):
                 value = _read_one(u, p, value)
             why = p.valid(value, raw) if p.valid is not None and raw is not None else None
             if why is not None:
                 raise ParamError(p.name, why)
+        if raw is not None and not (p.default is not None and value == p.default):
+            named.append(p.name)
         values.append((p.name, value))
-    return Options(params, tuple(values), tuple(p.name for p in params if given.get(p.name) is not None),
-                   tuple(u.typed.items()))
+    return Options(params, tuple(values), tuple(named), tuple(u.typed.items()),
+                   tuple((k, v) for k, v in given.items() if v is not None))
 
 
 def document(params: tuple[Param, ...]) -> str:
-    """The numpydoc entries of ``params`` (4-space indented, as in a function's docstring)."""
+    """The numpydoc entries of ``params`` (4-space indented, as in a function's docstring);
+    an entry of the command line only is named as its option (``--csv``)."""
+    cli_only = {p.name for p in params if not p.api}
     out = []
     for p in params:
         if p.api:
-            text = textwrap.fill(spell(p.help), 92, initial_indent=" " * 8, subsequent_indent=" " * 8)
+            text = spell(p.help, lambda n: option_name(n) if n in cli_only else param_name(n))
+            if p.default not in (None, False) and "Default" not in text:
+                text += f" Default: {p.default}."
+            text = textwrap.fill(text, 92, initial_indent=" " * 8, subsequent_indent=" " * 8)
             out.append(f"    {p.name} : {KINDS[p.kind]}, optional\n{text}")
     return "\n".join(out)
 
@@ -261,24 +290,29 @@ def function(params: tuple[Param, ...], *, body: str = "required") -> Callable[[
     """Make ``fn(body, **kwargs)`` a public function of ``params``: its signature and the
     parameters of its docstring (which has ``{parameters}`` where they go) from the table,
     and its arguments checked at the door (``body`` an :class:`rbcli.Body`, or None when
-    ``body="optional"``; each keyword by :attr:`Param.checker`), arithmetic errors deep
-    inside as one :class:`rbcli.NonFiniteResult` (:func:`rbcli.api.check.arithmetic`)."""
+    ``body="optional"``, none at all when ``body="none"``: ``fn`` gets None; each keyword
+    by :attr:`Param.checker`), arithmetic errors deep inside as one
+    :class:`rbcli.NonFiniteResult` (:func:`rbcli.api.check.arithmetic`)."""
     kinds = checkers(params)
     optional = body == "optional"
+    takes_body = body != "none"
 
     def wrap(fn: Callable) -> Callable:
         @functools.wraps(fn)
         def public(body: Any = None, **kwargs: Any) -> Any:
-            b = check.body(body, optional=optional)
+            if takes_body:
+                body = check.body(body, optional=optional)
+            elif body is not None:
+                raise TypeError(f"{fn.__name__}() takes no body, keyword arguments only")
             kw = check.arguments(kinds, **kwargs)
             with check.arithmetic(kw):
-                return fn(b, **kw)
+                return fn(body, **kw)
 
-        first = inspect.Parameter("body", inspect.Parameter.POSITIONAL_OR_KEYWORD,
-                                  default=None if optional else inspect.Parameter.empty)
+        first = [inspect.Parameter("body", inspect.Parameter.POSITIONAL_OR_KEYWORD,
+                                   default=None if optional else inspect.Parameter.empty)]
         public.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
-            [first] + [inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=None)
-                       for p in params if p.api],
+            first * takes_body + [inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=None)
+                                  for p in params if p.api],
             return_annotation=inspect.signature(fn).return_annotation)
         public.__doc__ = (fn.__doc__ or "").replace("    {parameters}", document(params))
         return public
@@ -302,7 +336,7 @@ def si_unit(p: Param) -> str:
         return "deg"
     if p.kind == "grade":
         return "mm/s"
-    if p.kind in ("direction", "tolerance", "count", "ints"):
+    if p.kind in ("direction", "tolerance", "fraction", "count", "ints"):
         return "1"
     return ""
 
