@@ -3,7 +3,8 @@
 Importing this module starts rbcli's process: the first thing it does is install the
 signal handlers (:mod:`rbcli.interrupts`), before typer, numpy or the command line are
 imported, so that SIGINT, SIGTERM and SIGHUP at any moment end the run with one line and
-exit status 130, 143 or 129. Standard library only.
+exit status 130, 143 or 129. Then it imports the command line; an installation so broken
+that it cannot be imported ends the process with its traceback and exit status 70.
 
 :func:`main` runs :func:`rbcli.cli.main` (which returns the exit status) and ends the
 process with that status (:func:`rbcli.interrupts.exit_process`).
@@ -17,20 +18,22 @@ def main() -> None:
     interrupts.start()
     code = 0
     try:
-        from rbcli.cli import main as run_cli
-
         if not interrupts.received():  # a signal during the imports: nothing to run
             code = run_cli()
     except KeyboardInterrupt:  # a signal before rbcli.cli.main could take it
         code = 0  # recorded: exit_process makes it 128 + the signal
     except SystemExit as exc:
         code = exc.code if isinstance(exc.code, int) else 0 if exc.code is None else 1
-    except BaseException as exc:  # noqa: BLE001 - rbcli cannot be imported: a broken install
+    except BaseException as exc:  # noqa: BLE001 - what escapes rbcli.cli.main is a bug
         interrupts.exit_process(70, exc)
     interrupts.exit_process(code)
 
 
 interrupts.install(quiet=[main.__code__])
+try:  # after the handlers: a signal during these imports waits for main (interrupts)
+    from rbcli.cli import main as run_cli  # noqa: E402
+except Exception as exc:  # noqa: BLE001 - a broken installation
+    interrupts.exit_process(70, exc)
 
 if __name__ == "__main__":
     main()

@@ -1,72 +1,21 @@
 """The process environment a command runs in: streams, terminal, colour, signals.
 
-Injectable so that tests can play a pipe or a terminal (the httpie way). Also the one
-place that makes user text safe to show (:func:`clean`) and that prepares the process's
-streams and signals for :func:`rbcli.cli.main` (:func:`prepare_streams`,
-:func:`handle_signals`, :func:`finish_stdout`).
+Injectable so that tests can play a pipe or a terminal (the httpie way). Also the place
+that prepares the process's streams and signals for :func:`rbcli.cli.main`
+(:func:`prepare_streams`, :func:`handle_signals`, :func:`finish_stdout`). User text is
+made safe to show by :func:`clean` (:mod:`rbcli.errors`'s, which error messages use too).
 """
 
 from __future__ import annotations
 
 import errno
 import os
-import re
 import sys
 from typing import IO
 
 from rbcli import interrupts
+from rbcli.errors import MAX_LINE, MAX_WORD, InputError, clean  # noqa: F401 - clean is env's to callers
 from rbcli.interrupts import Terminated  # noqa: F401 - raised for SIGTERM and SIGHUP
-
-# ----------------------------------------------------------------------------- user text
-
-#: the longest run of non-blank characters shown whole in a message or a table cell; longer
-#: ones (a 5-million-digit number) are cut with "…"
-MAX_WORD = 200
-#: the longest message line shown whole
-MAX_LINE = 2000
-
-# C0 and C1 controls (ESC, CR, NEL \x85...), DEL, line and paragraph separators, and the
-# invisible bidirectional controls that reorder what a terminal shows
-# (patterns, not compiled here: re compiles and caches each on its first use, so a run that
-# prints no message and no table does not pay for them)
-_UNSAFE = "[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]"
-_UNSAFE_KEEP_NL = "[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]"
-_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t", "\x1b": "\\e"}
-_LONG_WORD = r"\S{%d,}" % (MAX_WORD + 1)
-
-
-def _escape(m: re.Match) -> str:
-    c = m.group()
-    if c in _NAMED:
-        return _NAMED[c]
-    n = ord(c)
-    return f"\\x{n:02x}" if n < 0x100 else f"\\u{n:04x}"
-
-
-def _cut_word(m: re.Match) -> str:
-    return m.group()[:MAX_WORD] + "…"
-
-
-def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = MAX_LINE) -> str:
-    """``text`` made safe to print as (part of) one line on a terminal.
-
-    Control characters (ESC sequences, CR, NUL, NEL ``\\x85``...), the line and paragraph
-    separators ``\\u2028``/``\\u2029`` and bidirectional controls are escaped as ``\\e``,
-    ``\\r``, ``\\x85``, ``\\u2028``, so a file can neither forge a second ``rbcli:`` line nor
-    send escape sequences to the terminal; a run of more than :data:`MAX_WORD` non-blank
-    characters is cut with "…", and the whole to ``max_line`` characters. ``keep_newlines``
-    keeps ``\\n`` (notes of several lines).
-    """
-    s = text if isinstance(text, str) else str(text)
-    if max_line is not None and len(s) > 4 * max_line:  # do not scan megabytes
-        s = s[: 4 * max_line]
-    s = re.sub(_UNSAFE_KEEP_NL if keep_newlines else _UNSAFE, _escape, s)
-    if len(s) > MAX_WORD:
-        s = re.sub(_LONG_WORD, _cut_word, s)
-    if max_line is not None and len(s) > max_line:
-        s = s[:max_line] + "…"
-    return s
-
 
 # ----------------------------------------------------------------------------- ASCII terminals
 
@@ -193,13 +142,7 @@ def silence_stdout() -> None:
     silence(sys.stdout, 1)
 
 
-class OutputError(OSError):
-    """Standard output cannot be written (closed, a full disk): exit 2 with a message."""
-
-
-def _stdout_error(exc: OSError) -> "Exception":
-    from rbcli.errors import InputError
-
+def _stdout_error(exc: OSError) -> InputError:
     reason = exc.strerror or str(exc)
     if exc.errno == errno.EBADF:
         reason = "it is closed"

@@ -12,7 +12,7 @@ import enum
 import re
 from collections.abc import Callable
 from contextvars import ContextVar
-from dataclasses import FrozenInstanceError
+from dataclasses import dataclass
 
 
 class ExitStatus(enum.IntEnum):
@@ -25,44 +25,13 @@ class ExitStatus(enum.IntEnum):
     INTERRUPTED = 130  # Ctrl-C
 
 
+@dataclass(frozen=True)
 class Location:
-    """Where something is in an input file: 1-based line and column (0 = unknown).
-
-    Immutable, compared and hashed by (file, line, col), like the frozen dataclass it was
-    (written out: a frozen dataclass costs ~0.5 ms of every run's start-up to create).
-    """
-
-    __slots__ = ("file", "line", "col")
-    __match_args__ = ("file", "line", "col")
+    """Where something is in an input file: 1-based line and column (0 = unknown)."""
 
     file: str
-    line: int
-    col: int
-
-    def __init__(self, file: str, line: int = 0, col: int = 0) -> None:
-        object.__setattr__(self, "file", file)
-        object.__setattr__(self, "line", line)
-        object.__setattr__(self, "col", col)
-
-    def __setattr__(self, name: str, value: object) -> None:
-        raise FrozenInstanceError(f"cannot assign to field {name!r}")
-
-    def __delattr__(self, name: str) -> None:
-        raise FrozenInstanceError(f"cannot delete field {name!r}")
-
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is not Location:
-            return NotImplemented
-        return (self.file, self.line, self.col) == (other.file, other.line, other.col)  # type: ignore[attr-defined]
-
-    def __hash__(self) -> int:
-        return hash((self.file, self.line, self.col))
-
-    def __repr__(self) -> str:
-        return f"Location(file={self.file!r}, line={self.line!r}, col={self.col!r})"
-
-    def __reduce__(self) -> tuple:
-        return (Location, (self.file, self.line, self.col))
+    line: int = 0
+    col: int = 0
 
     def __str__(self) -> str:
         if self.line <= 0:
@@ -126,33 +95,68 @@ def spelled_data(data: object, name: Callable[[str], str]) -> object:
     ``spelled_data(r.to_json(), option_name)`` is what the command's ``--json`` prints. The
     rows under ``parts`` are passed over (no text of rbcli's in them)."""
     if isinstance(data, dict):
-        return {k: v if k == "parts" or v.__class__ is float or not isinstance(v, _SPELLED)
-                else spelled_data(v, name) for k, v in data.items()}
+        return {k: spelled_data(v, name) if k != "parts" and isinstance(v, _SPELLED) else v
+                for k, v in data.items()}
     if isinstance(data, list):
-        out = None  # a copy, once an item is spelled differently
-        for i, v in enumerate(data):
-            if v.__class__ is float or not isinstance(v, _SPELLED):  # a number, a plain text
-                continue
-            s = spelled_data(v, name)
-            if s is not v:
-                if out is None:
-                    out = list(data)
-                out[i] = s
-        return data if out is None else out
+        return [spelled_data(v, name) if isinstance(v, _SPELLED) else v for v in data]
     if isinstance(data, Note):
         return data.spelled(name)
     return data
 
 
-#: what :func:`spelled_data` looks into (a number is passed over without a call)
+#: what :func:`spelled_data` looks into
 _SPELLED = (dict, list, Note)
 
 
-def _clean(text: str) -> str:
-    """A message made safe as one line (:func:`rbcli.env.clean`; stdlib, imported when used)."""
-    from rbcli.env import clean
+# ----------------------------------------------------------------------------- user text
 
-    return clean(text)
+#: the longest run of non-blank characters shown whole in a message or a table cell; longer
+#: ones (a 5-million-digit number) are cut with "…"
+MAX_WORD = 200
+#: the longest message line shown whole
+MAX_LINE = 2000
+
+# C0 and C1 controls (ESC, CR, NEL \x85...), DEL, line and paragraph separators, and the
+# invisible bidirectional controls that reorder what a terminal shows
+# (patterns, not compiled here: re compiles and caches each on its first use, so a run that
+# prints no message and no table does not pay for them)
+_UNSAFE = "[\x00-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]"
+_UNSAFE_KEEP_NL = "[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u200e\u200f\u202a-\u202e\u2066-\u2069\ufeff]"
+_NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t", "\x1b": "\\e"}
+_LONG_WORD = r"\S{%d,}" % (MAX_WORD + 1)
+
+
+def _escape(m: re.Match) -> str:
+    c = m.group()
+    if c in _NAMED:
+        return _NAMED[c]
+    n = ord(c)
+    return f"\\x{n:02x}" if n < 0x100 else f"\\u{n:04x}"
+
+
+def _cut_word(m: re.Match) -> str:
+    return m.group()[:MAX_WORD] + "…"
+
+
+def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = MAX_LINE) -> str:
+    """``text`` made safe to print as (part of) one line on a terminal.
+
+    Control characters (ESC sequences, CR, NUL, NEL ``\\x85``...), the line and paragraph
+    separators ``\\u2028``/``\\u2029`` and bidirectional controls are escaped as ``\\e``,
+    ``\\r``, ``\\x85``, ``\\u2028``, so a file can neither forge a second ``rbcli:`` line nor
+    send escape sequences to the terminal; a run of more than :data:`MAX_WORD` non-blank
+    characters is cut with "…", and the whole to ``max_line`` characters. ``keep_newlines``
+    keeps ``\\n`` (notes of several lines).
+    """
+    s = text if isinstance(text, str) else str(text)
+    if max_line is not None and len(s) > 4 * max_line:  # do not scan megabytes
+        s = s[: 4 * max_line]
+    s = re.sub(_UNSAFE_KEEP_NL if keep_newlines else _UNSAFE, _escape, s)
+    if len(s) > MAX_WORD:
+        s = re.sub(_LONG_WORD, _cut_word, s)
+    if max_line is not None and len(s) > max_line:
+        s = s[:max_line] + "…"
+    return s
 
 
 class RbcliError(Exception):
@@ -173,9 +177,9 @@ class RbcliError(Exception):
     @property
     def message(self) -> str:
         """The message, parameters spelled as the Python API's keyword arguments, made safe to
-        show as the command line shows it (:func:`rbcli.env.clean`: control characters such as
+        show as the command line shows it (:func:`clean`: control characters such as
         ESC and newlines in a name or a value escaped, long words cut)."""
-        return _clean(spell(self.template))
+        return clean(spell(self.template))
 
     @message.setter
     def message(self, text: str) -> None:
@@ -185,7 +189,7 @@ class RbcliError(Exception):
         """``str(self)`` with parameters spelled by ``name`` (the command line passes
         :func:`option_name`)."""
         text = spell(self.template, name)
-        return _clean(f"{self.where}: {text}" if self.where else text)
+        return clean(f"{self.where}: {text}" if self.where else text)
 
     def __str__(self) -> str:
         return self.spelled()

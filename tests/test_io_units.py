@@ -671,60 +671,9 @@ def test_angular_speed_base_unit():
 
 
 @pytest.mark.sampled
-def test_exact_rationals_match_fraction():
-    """io.unittable's Rational and exact_decimal give Fraction's values (so every factor rounds the same)."""
-    from fractions import Fraction
-
-    from hypothesis import given, settings
-    from hypothesis import strategies as st
-
-    from rbcli.io import unittable as un
-
-    @settings(max_examples=sample(100, 500), deadline=None)
-    @given(st.integers(-10**30, 10**30), st.integers(1, 10**30), st.integers(-10**6, 10**6),
-           st.integers(1, 10**6), st.integers(-5, 5))
-    def check(a, b, c, d, n):
-        q, f = un.Rational(a, b), Fraction(a, b)
-        r, g = un.Rational(c, d), Fraction(c, d)
-        for x, y in ((q, f), (q * r, f * g), (q * 7, f * 7), (q / 3, f / 3)):
-            assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
-            assert float(x) == float(y)
-        if c != 0 or n >= 0:
-            assert float(r**n) == float(g**n)
-        if c != 0:
-            assert float(q / r) == float(f / g)
-
-    check()
-
-    @settings(max_examples=500, deadline=None)
-    @given(st.from_regex(r"[+-]?(?:[0-9]{1,30}\.?[0-9]{0,30}|\.[0-9]{1,30})(?:[eE][+-]?[0-9]{1,3})?",
-                         fullmatch=True))
-    def decimal(text):
-        x, y = un.exact_decimal(text), Fraction(text)
-        assert (x.numerator, x.denominator) == (y.numerator, y.denominator)
-
-    decimal()
-
-
-def test_bare_table_names_take_the_short_paths_with_the_same_result():
-    """A unit text that is one name of the table skips the parser and the name regex."""
-    from rbcli.io import unitparse as up
-    from rbcli.io import unittable as ut
-
-    for name, unit in ut.BY_NAME.items():
-        if "/" in name:
-            continue
-        fast = up.parse_unit_exact(name)
-        slow = up._UnitParser(name, name).parse()
-        assert fast == slow
-        # what _is_name assumes of every such name ('in.': a name and its abbreviation point)
-        assert ut.NAME_RE.fullmatch(name.removesuffix("."))
-
-
-@pytest.mark.sampled
 def test_plain_decimals_are_numbers_for_both_patterns():
-    """plain_decimal (the short path that skips the number patterns) only says yes where
-    both patterns match the whole text."""
+    """plain_decimal (api.options' short path that skips its number pattern) only says yes
+    where both patterns match the whole text."""
     import re
 
     from hypothesis import given, settings

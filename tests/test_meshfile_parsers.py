@@ -1,8 +1,7 @@
-"""The text readers' number parsers (rbcli.io.meshnumbers) and text grouping (meshfile).
+"""The text readers' number parser (rbcli.io.meshbase.numbers) and text grouping (meshfile).
 
-Every decimal parser the readers use (``decimals``, ``np.fromstring`` through
-``numbers``, and ``floats``, which picks between them) is checked against Python's
-``float()``, bit for bit, on random and adversarial decimal strings. The grouping of
+The decimal parser the readers use (``np.fromstring`` through ``numbers``) is checked
+against Python's ``float()``, bit for bit, on random and adversarial decimal strings. The grouping of
 equal ``vertex`` texts in an ASCII STL (``distinct_spans``) is checked to be exact, even
 when every hash collides, and the reader that uses it against the token-by-token reader
 and against welding every corner.
@@ -20,14 +19,14 @@ import pytest
 import rbcli.io.meshstl as ms
 import rbcli.io.meshweld as mw
 from rbcli.io.meshfile import read_mesh
-from rbcli.io.meshnumbers import decimals, floats, numbers
+from rbcli.io.meshbase import numbers
 from rbcli.io.meshweld import distinct_spans
 
 # ------------------------------------------------------------------ strings to parse
 
 
 def plain_decimals(rng: random.Random, n: int) -> list[bytes]:
-    """Tokens decimals reads: a sign or not, 1-15 digits, a point anywhere or none."""
+    """Plain decimals: a sign or not, 1-15 digits, a point anywhere or none."""
     out = []
     for _ in range(n):
         nd = rng.randint(1, 15)
@@ -87,61 +86,32 @@ def same_bits(a, b) -> bool:
 # ------------------------------------------------------------ parsers against float()
 
 
-def test_decimals_read_plain_decimals_as_float_does():
+def test_numbers_read_plain_decimals_as_float_does():
     rng = random.Random(5)
     for _ in range(40):
         tokens = plain_decimals(rng, 2000)
         seps = [rng.choice([b" ", b"\t", b"\n", b"\r\n", b"  ", b"\x0b", b"\x0c"]) for _ in tokens]
         text = b"".join(t + s for t, s in zip(tokens, seps))
-        got = decimals(text)
-        assert got is not None
-        assert same_bits(got, [float(t) for t in tokens])
-        assert same_bits(numbers(text), got)  # np.fromstring: the same bits
+        assert same_bits(numbers(text), [float(t) for t in tokens])
 
 
 @pytest.mark.parametrize("token", ADVERSARIAL)
-def test_every_parser_agrees_with_float_or_refuses(token):
+def test_numbers_agree_with_float_or_refuse(token):
     want = float_or_none(token)
-    for parse in (decimals, numbers, floats):
-        got = parse(token + b"\n")
-        if got is None:
-            continue  # refused: the readers fall back to the line reader (float())
-        assert got.size == 1, (parse.__name__, token)
-        if np.isfinite(got[0]):  # non-finite numbers are refused by the readers themselves
-            assert want is not None and same_bits(got, [want]), (parse.__name__, token)
+    got = numbers(token + b"\n")
+    if got is None:
+        return  # refused: the readers fall back to the line reader (float())
+    assert got.size == 1, token
+    if np.isfinite(got[0]):  # non-finite numbers are refused by the readers themselves
+        assert want is not None and same_bits(got, [want]), token
 
 
-def test_every_parser_agrees_with_float_at_halfway_points():
+def test_numbers_agree_with_float_at_halfway_points():
     rng = random.Random(11)
     tokens = halfway_strings(rng, 300) + ADVERSARIAL[:40]
     tokens = [t for t in tokens if float_or_none(t) is not None and np.isfinite(float(t))]
-    want = [float(t) for t in tokens]
-    text = b" ".join(tokens)
-    assert same_bits(numbers(text), want)
-    assert same_bits(floats(text), want)
-    for t, w in zip(tokens, want):
-        got = decimals(t)
-        assert got is None or same_bits(got, [w]), t
-
-
-def test_decimals_refuse_what_is_not_a_plain_decimal():
-    for token in (b"1e5", b"1234567890123456", b".1234567890123456", b"nan", b"inf", b"1_0",
-                  b".", b"-", b"+-1", b"1-2", b"1.2.3", b"- 1", b"1\x00", b"\x80", b"0x1"):  # fmt: skip
-        assert decimals(token) is None, token
-    assert decimals(b"  \n") is not None and decimals(b"  \n").size == 0
-
-
-def test_floats_falls_back_for_the_whole_text_and_cuts_at_lines(monkeypatch):
-    rng = random.Random(2)
-    tokens = plain_decimals(rng, 90000)  # several 256 KiB pieces
-    lines = [b" ".join(tokens[i : i + 3]) for i in range(0, len(tokens), 3)]
-    text = b"\n".join(lines) + b"\n"
-    assert len(text) > 3 << 18  # at least four pieces
-    want = [float(t) for t in tokens]
-    assert same_bits(floats(text), want)
-    mixed = text + b"1.5e3 -2.5E-3 7\n"  # the last piece is not plain: np.fromstring reads it all
-    assert same_bits(floats(mixed), want + [1500.0, -0.0025, 7.0])
-    assert floats(text + b"1 2 x\n") is None
+    assert same_bits(numbers(b" ".join(tokens)), [float(t) for t in tokens])
+    assert numbers(b"1 2 x\n") is None
 
 
 # ------------------------------------------------------------ grouping equal texts

@@ -9,11 +9,13 @@ exits with its status.
 
 from __future__ import annotations
 
+import dataclasses
 import math
-from collections.abc import Mapping
-from operator import is_
+from collections.abc import Iterable, Iterator, Mapping
 from types import MappingProxyType
 from typing import Any
+
+import numpy as np
 
 from rbcli.errors import ExitStatus, NonFiniteResult
 
@@ -107,43 +109,30 @@ def frozen(value: Any, _depth: int = 0) -> Any:
     array is writable), dicts as read-only mappings, lists as tuples, the fields of
     dataclass instances likewise (in place: :func:`freeze_fields`). Other objects are
     returned as they are (a :class:`rbcli.body.model.Body` is frozen where it is made)."""
-    t = type(value)
-    if t is float or t is str or t is int or t is bool or value is None or _depth > 20:
+    if value is None or isinstance(value, (str, int, float)) or _depth > 20:
         return value
-    if t.__name__ == "ndarray" and t.__module__ == "numpy":
+    if isinstance(value, np.ndarray):
         if value.flags.writeable:
             value = value.copy()
             value.setflags(write=False)
         return value
-    if t is dict:
+    if type(value) is dict:
         return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
-    if t is list:
-        return tuple([frozen(v, _depth + 1) for v in value])
-    if t is tuple:
-        items = tuple([frozen(v, _depth + 1) for v in value])
-        return value if all(map(is_, items, value)) else items
-    if hasattr(t, "__dataclass_fields__"):  # a dataclass instance (not a class: t is its type)
+    if type(value) in (list, tuple):
+        items = tuple(frozen(v, _depth + 1) for v in value)
+        return value if type(value) is tuple and all(a is b for a, b in zip(items, value)) else items
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
         freeze_fields(value, _depth + 1)
     return value
 
 
 def freeze_fields(obj: Any, _depth: int = 0) -> None:
     """Replace each field of the dataclass instance ``obj`` by :func:`frozen` of it."""
-    names = _FIELD_NAMES.get(obj.__class__)
-    if names is None:
-        import dataclasses
-
-        names = _FIELD_NAMES[obj.__class__] = tuple(f.name for f in dataclasses.fields(obj))
-    for name in names:
-        v = getattr(obj, name)
+    for f in dataclasses.fields(obj):
+        v = getattr(obj, f.name)
         fv = frozen(v, _depth)
         if fv is not v:
-            object.__setattr__(obj, name, fv)
-
-
-#: the field names of each dataclass :func:`freeze_fields` has seen (a class's fields are
-#: fixed when it is made)
-_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+            object.__setattr__(obj, f.name, fv)
 
 
 def jsonable(obj: Any) -> Any:
@@ -160,64 +149,32 @@ def jsonable(obj: Any) -> Any:
     TypeError
         for a value that has no JSON form.
     """
-    t = type(obj)
-    if t is float:  # the common values first, by their exact type
-        if not math.isfinite(obj):
-            raise _NonFinite(obj)
-        return 0.0 if obj == 0.0 else obj
-    if t is str or t is int or t is bool or obj is None:
+    if obj is None or isinstance(obj, (str, bool, int)):  # a Note (a str) is kept as it is
         return obj
-    if t is dict or t is list or t is tuple or t is MappingProxyType:  # (a frozen dict)
-        return _container(obj)
+    if isinstance(obj, float):  # numpy's float64 too
+        if not math.isfinite(obj):
+            raise _NonFinite(float(obj))
+        return 0.0 if obj == 0.0 else float(obj)
     if hasattr(obj, "tolist"):  # numpy arrays and scalars
-        value = obj.tolist()
-        return _container(value) if value.__class__ is list else jsonable(value)
+        return jsonable(obj.tolist())
     if hasattr(obj, "to_json"):
         return jsonable(obj.to_json())
-    from collections.abc import Mapping
-
-    if isinstance(obj, (Mapping, list, tuple)):
-        return _container(obj)
-    if isinstance(obj, (bool, str, int)):  # subclasses (a Note is a str: kept as it is)
-        return obj
-    if isinstance(obj, float):
-        return jsonable(float(obj))
+    if isinstance(obj, Mapping):
+        return dict(_items((str(k), v) for k, v in obj.items()))
+    if isinstance(obj, (list, tuple)):
+        return [v for _, v in _items(enumerate(obj))]
     raise TypeError(f"cannot write {type(obj).__name__} as JSON")
 
 
-def _container(obj: Any) -> Any:
-    """:func:`jsonable` of a mapping (keys as strings) or a list or tuple (a list), naming
-    the key or index of a number that is not finite."""
-    if obj.__class__ is list or isinstance(obj, (list, tuple)):
-        out_list = []
-        i = 0
-        isfinite = math.isfinite
+def _items(pairs: Iterable[tuple[Any, Any]]) -> Iterator[tuple[Any, Any]]:
+    """(key, :func:`jsonable` of the value) of a mapping's or a list's items, naming the key
+    or index of a number that is not finite."""
+    for key, v in pairs:
         try:
-            for i, v in enumerate(obj):
-                # jsonable(v) of a float, inline (most items are): -0.0 as 0.0
-                if v.__class__ is float and isfinite(v):
-                    out_list.append(v if v != 0.0 else 0.0)
-                elif v.__class__ is list:  # a row of a matrix
-                    out_list.append(_container(v))
-                else:
-                    out_list.append(jsonable(v))
+            yield key, jsonable(v)
         except _NonFinite as exc:
-            exc.path.insert(0, i)
+            exc.path.insert(0, key)
             raise
-        return out_list
-    out = {}
-    k = ""
-    isfinite = math.isfinite
-    try:
-        for k, v in obj.items():
-            # names and texts as they are (jsonable's first case after floats)
-            cls = v.__class__
-            out[k if k.__class__ is str else str(k)] = (
-                v if cls is str or (cls is float and isfinite(v) and v != 0.0) else jsonable(v))
-    except _NonFinite as exc:
-        exc.path.insert(0, str(k))
-        raise
-    return out
 
 
 class _NonFinite(NonFiniteResult):

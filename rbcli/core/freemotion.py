@@ -34,6 +34,16 @@ import numpy as np
 
 from rbcli.core.elliptic import ellipk, ellippi, ellippi_sc
 from rbcli.core.elliptic import jacobi_reduced as _jacobi
+from rbcli.core.freepath import (  # noqa: F401 - the cases are freemotion's vocabulary too
+    CASE_MAX,
+    CASE_MIN,
+    CASE_REST,
+    CASE_SEPARATRIX,
+    CASE_SPHERICAL,
+    CASE_STEADY,
+    ll_quat,
+)
+from rbcli.core.freestate import FreeState, evaluate
 from rbcli.core.inertia import InputOverflow
 from rbcli.core.principal import principal_axes
 from rbcli.core.rotation import quat_conjugate as _qconj
@@ -55,14 +65,6 @@ __all__ = [
     "frame_quaternions",
     "ll_quat",
 ]
-
-#: ``FreeMotion.case`` values.
-CASE_REST = "rest"  # omega = 0
-CASE_SPHERICAL = "spherical"  # I1 = I2 = I3: steady rotation about omega0
-CASE_STEADY = "steady"  # omega0 along a principal axis: omega constant
-CASE_MAX = "circulates_max"  # omega circles axis 3 (largest moment); symmetric oblate too
-CASE_MIN = "circulates_min"  # omega circles axis 1 (smallest moment); symmetric prolate too
-CASE_SEPARATRIX = "separatrix"  # G^2 = 2 T I2: homoclinic, not periodic
 
 #: Principal components of omega0 smaller than this times |omega0| are round-off of the
 #: projection on the principal axes (a few ulp) and are set to zero.
@@ -247,12 +249,10 @@ class FreeMotion:
         """True for a symmetric or spherical body (two or three equal principal moments)."""
         return self.symmetry != "asymmetric"
 
-    def at(self, t: Any) -> Any:
+    def at(self, t: Any) -> FreeState:
         """The exact state at ``t`` (s; a number or an array): a
         :class:`rbcli.core.freestate.FreeState` with ``omega``, ``angular_momentum`` (body
         frame, at t), ``quaternion`` (body -> space) and ``rotation_matrix``."""
-        from rbcli.core.freestate import evaluate
-
         return evaluate(self, t)
 
     def to_json(self) -> dict[str, Any]:
@@ -395,7 +395,53 @@ def analyse(
         raise InputOverflow("inertia", "inertia and omega must be finite")
     if not np.all(np.isfinite(w0)):
         raise InputOverflow("omega", "inertia and omega must be finite")
-    J = 0.5 * (J + J.T)
+    moments, axes, symmetry, unique = _principal(0.5 * (J + J.T), symmetric_rtol)
+    wp, wn, Mp, G, T = _momentum(moments, axes, w0)
+    coefs, kinds, rates = _linear(moments, G)
+    common: dict[str, Any] = dict(
+        inertia=axes.T @ np.diag(moments) @ axes,
+        omega0=w0.copy(),
+        moments=moments,
+        axes=axes,
+        symmetry=symmetry,
+        omega0_principal=wp,
+        angular_momentum=axes.T @ Mp,
+        angular_momentum_norm=G,
+        kinetic_energy=T,
+        linear_coefficients=coefs,
+        linear_kinds=kinds,
+        linear_rates=rates,
+    )
+    nz = [i for i in range(3) if wp[i] != 0.0]
+    if symmetry != "asymmetric":
+        return _analyse_symmetric(common, unique, nz, w0, wn)
+    if not nz:
+        return FreeMotion(
+            case=CASE_REST, description="at rest: omega = 0, nothing moves",
+            circles_axis=None, period=None, stable=None, mean_precession_rate=0.0, **common,
+        )
+    if len(nz) == 1:
+        j = nz[0]
+        stable = j != 1
+        return FreeMotion(
+            case=CASE_STEADY,
+            description=(
+                f"steady rotation about principal axis {j + 1} ({_AXIS_NAMES[j]} moment), "
+                + ("stable" if stable else "unstable: any disturbance grows into flips")
+            ),
+            circles_axis={0: 1, 2: 3}.get(j),
+            period=None,
+            stable=stable,
+            mean_precession_rate=wn,
+            **common,
+        )
+    return _analyse_asymmetric(common, wp, Mp, G, T)
+
+
+def _principal(J: np.ndarray, symmetric_rtol: float) -> tuple[np.ndarray, np.ndarray, str, int | None]:
+    """Principal moments (pairs closer than ``symmetric_rtol`` times the largest averaged),
+    axes, symmetry and the unique axis of the symmetric tensor ``J``; refused when not
+    positive definite."""
     pa = principal_axes(J)
     moments = np.array(pa.moments, dtype=float)
     axes = np.array(pa.axes, dtype=float)
@@ -420,14 +466,19 @@ def analyse(
             unique = 2 if eq01 else 0
             pair = [0, 1] if eq01 else [1, 2]
             moments[pair] = moments[pair].mean()
-    J_model = axes.T @ np.diag(moments) @ axes
+    return moments, axes, symmetry, unique
 
+
+def _momentum(moments: np.ndarray, axes: np.ndarray,
+              w0: np.ndarray) -> tuple[np.ndarray, float, np.ndarray, float, float]:
+    """omega0 in the principal frame (round-off snapped to 0), |omega0|, the angular
+    momentum M there, G = |M| and the kinetic energy T; refused when |L|^2 or T is not a
+    normal double."""
     with np.errstate(over="ignore", under="ignore", invalid="ignore"):
         wp = axes @ w0
         wn = float(np.linalg.norm(w0))
         wp = np.where(np.abs(wp) <= SNAP_RTOL * wn, 0.0, wp)
         Mp = moments * wp
-        L_body = axes.T @ Mp
         G = float(np.linalg.norm(Mp))
         T = 0.5 * float(wp @ Mp)
         G2 = G * G
@@ -446,48 +497,15 @@ def analyse(
             "omega is too small for this body: |L|^2 or the kinetic energy underflows double "
             "precision"
         )
-    coefs, kinds, rates = _linear(moments, G)
+    return wp, wn, Mp, G, T
 
-    common: dict[str, Any] = dict(
-        inertia=J_model,
-        omega0=w0.copy(),
-        moments=moments,
-        axes=axes,
-        symmetry=symmetry,
-        omega0_principal=wp,
-        angular_momentum=L_body,
-        angular_momentum_norm=G,
-        kinetic_energy=T,
-        linear_coefficients=coefs,
-        linear_kinds=kinds,
-        linear_rates=rates,
-    )
-    nz = [i for i in range(3) if wp[i] != 0.0]
 
-    if symmetry != "asymmetric":
-        return _analyse_symmetric(common, unique, nz, w0, wn)
-
-    if not nz:
-        return FreeMotion(
-            case=CASE_REST, description="at rest: omega = 0, nothing moves",
-            circles_axis=None, period=None, stable=None, mean_precession_rate=0.0, **common,
-        )
-    if len(nz) == 1:
-        j = nz[0]
-        stable = j != 1
-        return FreeMotion(
-            case=CASE_STEADY,
-            description=(
-                f"steady rotation about principal axis {j + 1} ({_AXIS_NAMES[j]} moment), "
-                + ("stable" if stable else "unstable: any disturbance grows into flips")
-            ),
-            circles_axis={0: 1, 2: 3}.get(j),
-            period=None,
-            stable=stable,
-            mean_precession_rate=wn,
-            **common,
-        )
-
+def _analyse_asymmetric(common: dict[str, Any], wp: np.ndarray, Mp: np.ndarray, G: float,
+                        T: float) -> FreeMotion:
+    """The motion of an asymmetric body that turns about no principal axis: the elliptic
+    solution (or the separatrix), its period, flips and precession."""
+    axes = common["axes"]
+    moments = common["moments"]
     I1, I2, I3 = (float(x) for x in moments)
     M1, M2, M3 = (float(x) for x in Mp)
     d1 = M2 * M2 * (I2 - I1) / I2 + M3 * M3 * (I3 - I1) / I3
@@ -599,29 +617,6 @@ def frame_quaternions(
     q_left = _qmul(_qconj(q_P), _qconj(q_zl0))
     q_right = _qmul(q_pm, q_P)
     return q_left, q_right
-
-
-def ll_quat(phi: np.ndarray, Mrel: np.ndarray, G: float) -> np.ndarray:
-    """qz(phi) qx(theta) qz(psi) with cos theta = Mc/G, psi = atan2(Ma, Mb) (Landau–Lifshitz).
-
-    Half-angles of theta use G +- Mc = rho^2/(G -+ Mc), rho^2 = Ma^2 + Mb^2, on the side that
-    cancels, so theta near 0 or pi keeps full precision.
-    """
-    Ma, Mb, Mc = Mrel[:, 0], Mrel[:, 1], Mrel[:, 2]
-    rho2 = Ma * Ma + Mb * Mb
-    big = G + np.abs(Mc)
-    small = rho2 / big
-    gp = np.where(Mc >= 0, big, small)  # G + Mc
-    gm = np.where(Mc >= 0, small, big)  # G - Mc
-    ch = np.sqrt(gp / (2 * G))
-    sh = np.sqrt(gm / (2 * G))
-    psi = np.arctan2(Ma, Mb)
-    hp = 0.5 * (phi + psi)
-    hm = 0.5 * (phi - psi)
-    # qz(phi) qx(theta) qz(psi) in closed form
-    return np.stack(
-        [ch * np.cos(hp), sh * np.cos(hm), sh * np.sin(hm), ch * np.sin(hp)], axis=-1
-    )
 
 
 def _analyse_separatrix(common: dict[str, Any], wp: np.ndarray, G: float, T: float) -> FreeMotion:

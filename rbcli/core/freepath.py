@@ -13,18 +13,30 @@ Säfström & Zanna (2008) with Leroy's corrections (Principia, ``documentation/C
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.core import freemotion as fm
 from rbcli.core.elliptic import ellippi_sc
 from rbcli.core.elliptic import jacobi_reduced as _jacobi
 from rbcli.core.rotation import quat_about_axis as _qaxis
 from rbcli.core.rotation import quat_canonical as _qcanon
 from rbcli.core.rotation import quat_multiply as _qmul
 
-__all__ = ["omega_at", "attitude_at", "precession_angle_at", "big_phase"]
+if TYPE_CHECKING:
+    from rbcli.core.freemotion import FreeMotion
+
+__all__ = ["omega_at", "attitude_at", "precession_angle_at", "big_phase", "ll_quat", "CASE_REST",
+           "CASE_SPHERICAL", "CASE_STEADY", "CASE_MAX", "CASE_MIN", "CASE_SEPARATRIX"]
+
+#: ``FreeMotion.case`` values: the kinds of motion :func:`rbcli.core.freemotion.analyse` tells
+#: apart, each evaluated in its own way here.
+CASE_REST = "rest"  # omega = 0
+CASE_SPHERICAL = "spherical"  # I1 = I2 = I3: steady rotation about omega0
+CASE_STEADY = "steady"  # omega0 along a principal axis: omega constant
+CASE_MAX = "circulates_max"  # omega circles axis 3 (largest moment); symmetric oblate too
+CASE_MIN = "circulates_min"  # omega circles axis 1 (smallest moment); symmetric prolate too
+CASE_SEPARATRIX = "separatrix"  # G^2 = 2 T I2: homoclinic, not periodic
 
 _TWO_PI = 2.0 * math.pi
 
@@ -43,7 +55,7 @@ def _times(t: Any) -> np.ndarray:
     return tt
 
 
-def _elliptic_state(motion: fm.FreeMotion, t: np.ndarray) -> dict[str, np.ndarray]:
+def _elliptic_state(motion: FreeMotion, t: np.ndarray) -> dict[str, np.ndarray]:
     """Principal-frame omega and the reduced phase data of an elliptic / separatrix motion."""
     el = motion.elliptic
     assert el is not None
@@ -69,12 +81,12 @@ def _elliptic_state(motion: fm.FreeMotion, t: np.ndarray) -> dict[str, np.ndarra
     return {"w": w, "j4": j4, "taur": taur, "j2": j2, "snu": snu, "cnu": cnu, "dnu": dn}
 
 
-def omega_at(motion: fm.FreeMotion, t: Any, *, frame: str = "body") -> np.ndarray:
+def omega_at(motion: FreeMotion, t: Any, *, frame: str = "body") -> np.ndarray:
     """Exact angular velocity at the times ``t``.
 
     Parameters
     ----------
-    motion : fm.FreeMotion — from :func:`analyse`
+    motion : FreeMotion — from :func:`analyse`
     t : float or (N,) array_like — s (any sign, any size: the phase is reduced modulo the
         period, so t = 1e9 s costs what t = 1 s does)
     frame : str — "body" (default) or "principal"
@@ -95,7 +107,7 @@ def omega_at(motion: fm.FreeMotion, t: Any, *, frame: str = "body") -> np.ndarra
     axes = motion.axes
     if motion.elliptic is not None:
         wp = _elliptic_state(motion, tt)["w"]
-    elif motion.symmetry == "symmetric" and motion.case in (fm.CASE_MAX, fm.CASE_MIN):
+    elif motion.symmetry == "symmetric" and motion.case in (CASE_MAX, CASE_MIN):
         u = int(motion.symmetry_index)  # type: ignore[arg-type]
         a, b = (u + 1) % 3, (u + 2) % 3  # cyclic: (a, b, u) right-handed
         w0 = motion.omega0_principal
@@ -110,12 +122,12 @@ def omega_at(motion: fm.FreeMotion, t: Any, *, frame: str = "body") -> np.ndarra
     return wp if frame == "principal" else wp @ axes
 
 
-def precession_angle_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
+def precession_angle_at(motion: FreeMotion, t: Any) -> np.ndarray:
     """Unwrapped precession angle phi(t) - phi(0) about L (Landau–Lifshitz angles).
 
     Parameters
     ----------
-    motion : fm.FreeMotion
+    motion : FreeMotion
     t : float or (N,) array_like — s
 
     Returns
@@ -144,7 +156,7 @@ def precession_angle_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
 
 
 def _phi_parts(
-    motion: fm.FreeMotion, t: np.ndarray, st: dict[str, np.ndarray] | None
+    motion: FreeMotion, t: np.ndarray, st: dict[str, np.ndarray] | None
 ) -> tuple[np.ndarray, np.ndarray]:
     """phi(t) - phi(0) = j4 * (Delta phi per period) + local; returns (j4, local)."""
     el = motion.elliptic
@@ -160,12 +172,12 @@ def _phi_parts(
     return st["j4"], local
 
 
-def attitude_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
+def attitude_at(motion: FreeMotion, t: Any) -> np.ndarray:
     """Exact orientation: quaternions of the body-to-space rotation R(t), R(0) = 1.
 
     Parameters
     ----------
-    motion : fm.FreeMotion
+    motion : FreeMotion
     t : float or (N,) array_like — s (cost independent of the size of t)
 
     Returns
@@ -193,14 +205,14 @@ def attitude_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
         per = el.precession_per_period
         phi = local if per is None else local + big_phase(j4, per)
         Mrel = (motion.moments * st["w"])[:, list(el._perm)]
-        q = fm.ll_quat(phi, Mrel, el._G)
+        q = ll_quat(phi, Mrel, el._G)
         q = _qmul(_qmul(el._q_left[None, :], q), el._q_right[None, :])
         return _qcanon(q)
-    if motion.case == fm.CASE_REST:
+    if motion.case == CASE_REST:
         out = np.zeros((tt.size, 4))
         out[:, 0] = 1.0
         return out
-    if motion.symmetry == "symmetric" and motion.case in (fm.CASE_MAX, fm.CASE_MIN):
+    if motion.symmetry == "symmetric" and motion.case in (CASE_MAX, CASE_MIN):
         G = motion.angular_momentum_norm
         Lhat = motion.angular_momentum / G
         e = motion.symmetry_axis
@@ -213,3 +225,26 @@ def attitude_at(motion: fm.FreeMotion, t: Any) -> np.ndarray:
     wn = float(np.linalg.norm(motion.omega0_principal))
     axis = (motion.omega0_principal @ motion.axes) / wn
     return _qcanon(_qaxis(axis, np.fmod(wn * tt, 2 * _TWO_PI)))
+
+
+def ll_quat(phi: np.ndarray, Mrel: np.ndarray, G: float) -> np.ndarray:
+    """qz(phi) qx(theta) qz(psi) with cos theta = Mc/G, psi = atan2(Ma, Mb) (Landau–Lifshitz).
+
+    Half-angles of theta use G +- Mc = rho^2/(G -+ Mc), rho^2 = Ma^2 + Mb^2, on the side that
+    cancels, so theta near 0 or pi keeps full precision.
+    """
+    Ma, Mb, Mc = Mrel[:, 0], Mrel[:, 1], Mrel[:, 2]
+    rho2 = Ma * Ma + Mb * Mb
+    big = G + np.abs(Mc)
+    small = rho2 / big
+    gp = np.where(Mc >= 0, big, small)  # G + Mc
+    gm = np.where(Mc >= 0, small, big)  # G - Mc
+    ch = np.sqrt(gp / (2 * G))
+    sh = np.sqrt(gm / (2 * G))
+    psi = np.arctan2(Ma, Mb)
+    hp = 0.5 * (phi + psi)
+    hm = 0.5 * (phi - psi)
+    # qz(phi) qx(theta) qz(psi) in closed form
+    return np.stack(
+        [ch * np.cos(hp), sh * np.cos(hm), sh * np.sin(hm), ch * np.sin(hp)], axis=-1
+    )

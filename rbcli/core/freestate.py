@@ -13,13 +13,17 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.core import freemotion as fm
 from rbcli.core import freepath
+from rbcli.core.freepath import CASE_SEPARATRIX, CASE_STEADY
 from rbcli.core.rotation import quat_to_axis_angle, quat_to_matrix
+from rbcli.errors import ParamError
+
+if TYPE_CHECKING:
+    from rbcli.core.freemotion import FreeMotion
 
 __all__ = [
     "FreeState",
@@ -82,7 +86,7 @@ class FreeState:
         return quat_to_axis_angle(self.quaternion)
 
 
-def evaluate(motion: fm.FreeMotion, t: Any) -> FreeState:
+def evaluate(motion: FreeMotion, t: Any) -> FreeState:
     """ω, L (body frame) and q (body → space) at the times ``t`` (s; a number or an array).
 
     At t = 0 the values are exactly the initial conditions (ω0 and the identity), not their
@@ -102,7 +106,7 @@ def evaluate(motion: fm.FreeMotion, t: Any) -> FreeState:
     return FreeState(tt, w, L, q)
 
 
-def fastest_rate(motion: fm.FreeMotion) -> float:
+def fastest_rate(motion: FreeMotion) -> float:
     """rad/s: the fastest rate anything turns at (|ω|, or 2π/period or λ if faster)."""
     r = float(np.linalg.norm(motion.omega0))
     if motion.period:
@@ -112,7 +116,7 @@ def fastest_rate(motion: fm.FreeMotion) -> float:
     return r
 
 
-def check_phase(motion: fm.FreeMotion, t: float, param: str) -> None:
+def check_phase(motion: FreeMotion, t: float, param: str) -> None:
     """Refuse a time so far away that a double-precision t does not fix the phase there.
 
     Raises
@@ -120,8 +124,6 @@ def check_phase(motion: fm.FreeMotion, t: float, param: str) -> None:
     rbcli.errors.ParamError
         naming ``param`` (``"at"`` or ``"duration"``) when rate × |t| > :data:`MAX_PHASE`.
     """
-    from rbcli.errors import ParamError
-
     rate = fastest_rate(motion)
     if rate * abs(t) > MAX_PHASE:
         raise ParamError(
@@ -140,7 +142,7 @@ def _snap(a: np.ndarray, rtol: float) -> np.ndarray:
     return a
 
 
-def state_json(motion: fm.FreeMotion, t: float) -> dict[str, Any]:
+def state_json(motion: FreeMotion, t: float) -> dict[str, Any]:
     """The ``--at`` object: t, ω, L (body frame at t), quaternion, axis-angle, matrix, periods."""
     st = evaluate(motion, float(t))
     axis, angle = st.axis_angle()
@@ -156,7 +158,7 @@ def state_json(motion: fm.FreeMotion, t: float) -> dict[str, Any]:
     }
 
 
-def series(motion: fm.FreeMotion, duration: float, samples: int,
+def series(motion: FreeMotion, duration: float, samples: int,
            chunk: int = CHUNK) -> Iterator[np.ndarray]:
     """Rows :data:`SERIES_COLUMNS` at ``samples`` times evenly spaced from 0 to ``duration``
     inclusive, in blocks of at most ``chunk`` rows (arrays (rows, 11)).
@@ -184,7 +186,7 @@ def _num6(x: float) -> str:
     return s[1:] if s.startswith("-") and float(s) == 0.0 else s
 
 
-def notes(motion: fm.FreeMotion, *, time: Callable[[float], str] | None = None,
+def notes(motion: FreeMotion, *, time: Callable[[float], str] | None = None,
           number: Callable[[float], str] | None = None) -> list[str]:
     """What the numbers mean, in words (the JSON ``notes`` and the table notes).
 
@@ -198,7 +200,7 @@ def notes(motion: fm.FreeMotion, *, time: Callable[[float], str] | None = None,
     time = time or (lambda x: f"{_num6(x)} s")
     out: list[str] = []
     el = motion.elliptic
-    if motion.case == fm.CASE_SEPARATRIX:
+    if motion.case == CASE_SEPARATRIX:
         out.append(
             "separatrix: G^2 = 2 T I2 exactly (to round-off), the boundary between circling the "
             "largest and the smallest axis. There is no period: ω creeps towards the intermediate "
@@ -213,7 +215,7 @@ def notes(motion: fm.FreeMotion, *, time: Callable[[float], str] | None = None,
             "tennis-racket or Dzhanibekov effect: rotation about the intermediate axis is "
             "unstable)."
         )
-    if motion.case == fm.CASE_STEADY and motion.circles_axis is None and motion.symmetry == "asymmetric":
+    if motion.case == CASE_STEADY and motion.circles_axis is None and motion.symmetry == "asymmetric":
         out.append(
             "steady rotation about the intermediate axis is unstable: a small disturbance grows as "
             f"exp(σt), σ = {number(motion.linear_rates[1])} 1/s, and turns into flips."
@@ -234,7 +236,7 @@ def notes(motion: fm.FreeMotion, *, time: Callable[[float], str] | None = None,
     return out
 
 
-def plot_span(motion: fm.FreeMotion, duration: float | None) -> tuple[float, float]:
+def plot_span(motion: FreeMotion, duration: float | None) -> tuple[float, float]:
     """(t0, t1), s: ``duration`` from 0, else 3 periods (or 3 characteristic times; on the
     separatrix a span that shows the flip, even if it was before t = 0)."""
     if duration is not None:
@@ -275,7 +277,7 @@ class PlotSamples:
     flips: np.ndarray
 
 
-def plot_samples(motion: fm.FreeMotion, duration: float | None) -> PlotSamples:
+def plot_samples(motion: FreeMotion, duration: float | None) -> PlotSamples:
     """Sample the motion for the figure: 400 points a period, 1 500 to 20 000 in all."""
     t0, t1 = plot_span(motion, duration)
     per = motion.period or (t1 - t0)

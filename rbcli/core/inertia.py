@@ -61,8 +61,6 @@ def shift_term(mass: float, d: np.ndarray) -> np.ndarray:
 
 #: parts summed per step of :func:`combine`
 _CHUNK = 4096
-#: ndarray.sum's own reduction (pairwise summation), without its Python wrapper
-_sum = np.add.reduce
 
 
 def combine(parts: Iterable[Part]) -> MassProps:
@@ -93,19 +91,15 @@ def combine(parts: Iterable[Part]) -> MassProps:
     m = np.array([-p.mass if p.subtract else p.mass for p in parts], dtype=float)
     holes = [i for i, p in enumerate(parts) if p.subtract]
     c = np.array([p.com for p in parts], dtype=float).reshape(n, 3)
-    total = float(_sum(m))
+    total = float(m.sum())
     if not total > 0.0:
         raise ValueError(
             f"the total mass is {total:.6g} kg; a body needs a positive mass "
             "(do the subtracted parts remove more than there is?)"
         )
-    # a point near the parts, so that far-away bodies keep their digits (the weights |m|
-    # are m itself when no part is a hole and no mass is -0.0: the same sums, not redone)
-    if holes or not all(x > 0.0 for x in m.tolist()):
-        w = np.abs(m)
-        origin = (w @ c) / _sum(w)
-    else:
-        origin = (m @ c) / total
+    # a point near the parts, so that far-away bodies keep their digits
+    w = np.abs(m)
+    origin = (w @ c) / w.sum()
     rel = c - origin
     com_rel = (m @ rel) / total
     d = rel - com_rel
@@ -230,14 +224,12 @@ def tensor_problem(J: np.ndarray, rtol: float = 1e-9, *, unit: str = "kg·m²",
     followed by ``unit`` (e.g. ``factor=1e-9, unit="g·mm²"`` for a file in g and mm).
     """
     J = np.asarray(J, dtype=float)
-    rows = J.tolist() if J.shape == (3, 3) else None
-    if rows is None or not all(math.isfinite(x) for row in rows for x in row):
+    if J.shape != (3, 3) or not np.all(np.isfinite(J)):
         return "it must be a 3x3 matrix of finite numbers"
-    # the largest magnitudes of J and of J - Jᵀ, in Python floats (nine numbers each)
-    scale = max(abs(x) for row in rows for x in row)
+    scale = float(np.abs(J).max())
     if scale == 0.0:
         return None
-    asym = max(abs(rows[i][j] - rows[j][i]) for i in range(3) for j in range(3))
+    asym = float(np.abs(J - J.T).max())
     if asym > rtol * scale:
         return f"it is not symmetric (|J − Jᵀ| = {asym / factor:.3g} {unit})"
     w = np.linalg.eigvalsh(0.5 * (J + J.T))

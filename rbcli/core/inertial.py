@@ -25,6 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.principal import principal_axes
+
 
 @dataclass(frozen=True)
 class Inertial:
@@ -56,8 +58,6 @@ def inertial(mass: float, com: np.ndarray, inertia_com: np.ndarray, *, principal
     the rotation nearest the body frame)."""
     J = np.asarray(inertia_com, dtype=float)
     if principal:
-        from rbcli.core.principal import principal_axes
-
         pa = principal_axes(J)
         R = pa.axes.T.copy()
         J = np.diag(pa.moments)

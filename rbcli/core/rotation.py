@@ -24,7 +24,6 @@ for every sequence scipy accepts.
 
 from __future__ import annotations
 
-import itertools
 import math
 from collections.abc import Sequence
 
@@ -58,46 +57,18 @@ __all__ = [
 ]
 
 
-def _vector(v: object, n: int, what: str) -> np.ndarray:
-    """``v`` as a finite float vector of ``n`` components, or ValueError naming ``what``."""
+def _vector(v: object, n: int, what: str, message: str | None = None) -> np.ndarray:
+    """``v`` as a finite float vector of ``n`` components, or ValueError naming ``what``
+    (``message`` instead, when given, for every fault)."""
     try:
         a = np.asarray(v, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"{what} must be a list of {n} numbers") from None
+        raise ValueError(message or f"{what} must be a list of {n} numbers") from None
     if a.shape != (n,):
-        raise ValueError(f"{what} must have {n} components, got shape {a.shape}")
+        raise ValueError(message or f"{what} must have {n} components, got shape {a.shape}")
     if not np.all(np.isfinite(a)):
-        raise ValueError(f"{what} must be finite")
+        raise ValueError(message or f"{what} must be finite")
     return a
-
-
-def _unit(v: np.ndarray) -> np.ndarray | None:
-    """``v / |v|`` computed without overflow or underflow; None for a zero vector."""
-    scale = float(np.max(np.abs(v)))
-    if scale == 0.0 or not math.isfinite(scale):
-        return None
-    w = v / scale  # largest component is now +-1: no overflow/underflow in the norm
-    return w / math.sqrt(float(w @ w))
-
-
-def _cross_matrix(n: np.ndarray) -> np.ndarray:
-    """The matrix [n]x with [n]x @ v = n x v."""
-    return np.array(
-        [
-            [0.0, -n[2], n[1]],
-            [n[2], 0.0, -n[0]],
-            [-n[1], n[0], 0.0],
-        ]
-    )
-
-
-def _rodrigues(n: np.ndarray, c: float, s: float, one_minus_c: float) -> np.ndarray:
-    """R = c I + s [n]x + (1 - c) n nᵀ for a unit axis n (Rodrigues' formula).
-
-    ``one_minus_c`` is passed separately so callers can compute it without
-    cancellation (2 sin²(θ/2), or s²/(1 + c)).
-    """
-    return c * np.eye(3) + s * _cross_matrix(n) + one_minus_c * np.outer(n, n)
 
 
 def identity() -> np.ndarray:
@@ -142,26 +113,10 @@ def axis_to_z(direction: Sequence[float] | np.ndarray) -> np.ndarray:
     ``d`` exactly along −z (where the minimal axis is undefined) it is the half turn
     about +x, ``diag(1, −1, −1)``.
     """
-    try:
-        v = np.asarray(direction, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError("axis must be a non-zero vector") from None
-    if v.shape != (3,) or not np.all(np.isfinite(v)):
+    v = _vector(direction, 3, "axis", "axis must be a non-zero vector")
+    if not v.any():
         raise ValueError("axis must be a non-zero vector")
-    d = _unit(v)
-    if d is None:
-        raise ValueError("axis must be a non-zero vector")
-    cross = np.array([-d[1], d[0], 0.0])  # e_z x d
-    n = _unit(cross)
-    if n is None:  # d is exactly +z or -z
-        if d[2] > 0:
-            return np.eye(3)
-        return np.diag([1.0, -1.0, -1.0])
-    c = float(d[2])
-    s = math.hypot(float(d[0]), float(d[1]))
-    # 1 - c without cancellation near c = 1: (1 - c)(1 + c) = s^2.
-    one_minus_c = s * s / (1.0 + c) if c > 0 else 1.0 - c
-    return _rodrigues(n, c, s, one_minus_c)
+    return axis_to_z_rows(v[None])[0]
 
 
 def axis_angle(axis: Sequence[float] | np.ndarray, angle_rad: float) -> np.ndarray:
@@ -187,14 +142,8 @@ def axis_angle(axis: Sequence[float] | np.ndarray, angle_rad: float) -> np.ndarr
     ``n = axis / |axis|``; ``1 − cos θ`` is evaluated as ``2 sin²(θ/2)`` to avoid
     cancellation at small angles. Equal to scipy's ``Rotation.from_rotvec(θ n)``.
     """
-    try:
-        a = np.asarray(axis, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError("axis must be a non-zero vector") from None
-    if a.shape != (3,) or not np.all(np.isfinite(a)):
-        raise ValueError("axis must be a non-zero vector")
-    n = _unit(a)
-    if n is None:
+    a = _vector(axis, 3, "axis", "axis must be a non-zero vector")
+    if not a.any():
         raise ValueError("axis must be a non-zero vector")
     try:
         theta = float(angle_rad)
@@ -202,18 +151,7 @@ def axis_angle(axis: Sequence[float] | np.ndarray, angle_rad: float) -> np.ndarr
         raise ValueError("angle must be a number") from None
     if not math.isfinite(theta):
         raise ValueError("angle must be finite")
-    half = math.sin(theta / 2.0)
-    return _rodrigues(n, math.cos(theta), math.sin(theta), 2.0 * half * half)
-
-
-def _elementary(axis: str, angle: float) -> np.ndarray:
-    """The right-hand rotation by ``angle`` about the coordinate axis ``axis`` (x, y or z)."""
-    c, s = math.cos(angle), math.sin(angle)
-    if axis == "x":
-        return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
-    if axis == "y":
-        return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    return axis_angle_rows(a[None], np.array([theta]))[0]
 
 
 _EULER_HELP = (
@@ -222,15 +160,9 @@ _EULER_HELP = (
 )
 
 
-_INTRINSIC: dict[str, bool] = {}  # the valid sequences seen, for euler_intrinsic
-
-
 def euler_intrinsic(seq: str) -> bool:
     """Whether the Euler sequence ``seq`` is intrinsic (``XYZ`` letters) or extrinsic
     (``xyz``); ValueError (saying what is allowed) for an invalid sequence."""
-    known = _INTRINSIC.get(seq) if seq.__class__ is str else None
-    if known is not None:
-        return known
     if not isinstance(seq, str) or not 1 <= len(seq) <= 3:
         raise ValueError(f"euler sequence {seq!r} is not valid: use {_EULER_HELP}")
     if set(seq) <= set("xyz"):
@@ -244,7 +176,6 @@ def euler_intrinsic(seq: str) -> bool:
             f"euler sequence {seq!r} is not valid: consecutive letters must differ; "
             f"use {_EULER_HELP}"
         )
-    _INTRINSIC[seq] = intrinsic
     return intrinsic
 
 
@@ -283,7 +214,7 @@ def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndar
     standard equivalence (Shuster, "A survey of attitude representations", 1993, §2).
     The sequence rules are scipy's.
     """
-    intrinsic = euler_intrinsic(seq)
+    euler_intrinsic(seq)
     try:
         a = np.asarray(angles_rad, dtype=float)
     except (TypeError, ValueError):
@@ -297,11 +228,7 @@ def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndar
         )
     if not np.all(np.isfinite(a)):
         raise ValueError("euler angles must be finite")
-    r = np.eye(3)
-    for letter, angle in zip(seq.lower(), a, strict=True):
-        e = _elementary(letter, float(angle))
-        r = r @ e if intrinsic else e @ r
-    return r
+    return euler_rows(a[None], seq)[0]
 
 
 def quaternion(q_wxyz: Sequence[float] | np.ndarray) -> np.ndarray:
@@ -327,23 +254,13 @@ def quaternion(q_wxyz: Sequence[float] | np.ndarray) -> np.ndarray:
     rotation it points to; ``q`` and ``−q`` give the same matrix. Beware that scipy's
     ``Rotation.from_quat`` is scalar-LAST (``[x, y, z, w]``) by default; this one is
     scalar-first, as in the body file. The matrix is the standard
-
-    ``R = (w² − v·v) I + 2 v vᵀ + 2 w [v]x`` with ``v = (x, y, z)``,
-
-    written out in components below.
+    ``R = (w² − v·v) I + 2 v vᵀ + 2 w [v]x`` with ``v = (x, y, z)``, written out in
+    components in :func:`quaternion_rows`.
     """
     q = _vector(q_wxyz, 4, "quaternion")
-    u = _unit(q)
-    if u is None:
+    if not q.any():
         raise ValueError("quaternion must be non-zero")
-    w, x, y, z = (float(c) for c in u)
-    return np.array(
-        [
-            [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)],
-            [2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x)],
-            [2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y)],
-        ]
-    )
+    return quaternion_rows(q[None])[0]
 
 
 def _short(x: float) -> str:
@@ -398,8 +315,7 @@ def from_matrix(m: Sequence[Sequence[float]] | np.ndarray, tol: float = 1e-6) ->
     det = float(np.linalg.det(a))
     if det <= 0:
         raise ValueError(f"rotation matrix is a reflection (det = {det:.3g}), not a rotation")
-    u, _, vt = np.linalg.svd(a)
-    r = u @ vt
+    r = nearest_rotation_rows(a[None])[0]
     if np.linalg.det(r) < 0:  # cannot happen for err <= tol < 1 and det > 0; be safe
         raise ValueError(f"rotation matrix is a reflection (det = {det:.3g}), not a rotation")
     return r
@@ -436,14 +352,10 @@ def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N8
 
 
 # ----------------------------------------------------------------------------------------
-# many rotations at once (the body loader: one call per kind for all the parts)
-#
-# Each ``*_rows`` function returns the (k, 3, 3) stack of what its one-rotation namesake
-# returns for each row, bit for bit: the same elementwise operations in the same order,
-# the dot products by ``np.vecdot`` (the same BLAS dot as ``v @ v``), products of 3x3
-# matrices by stacked ``@`` (the same BLAS call per matrix), and sin, cos, hypot from
-# :mod:`math` as the single versions take them (tests/test_rotation_rows.py checks it).
-# Inputs are float arrays already checked finite and non-zero by the caller.
+# many rotations at once: each ``*_rows`` function returns the (k, 3, 3) stack of its
+# one-rotation namesake (which calls it with one row); the body loader makes all its parts'
+# rotations of one kind in one call. Inputs are float arrays already checked finite and
+# non-zero. sin, cos and hypot are math's, per row (numpy's may differ in the last bit).
 # ----------------------------------------------------------------------------------------
 
 
@@ -453,92 +365,60 @@ _EYE.setflags(write=False)
 
 
 def unit_rows(v: np.ndarray) -> np.ndarray:
-    """Each row of ``v`` (k, n) divided by its length, as :func:`_unit` (no zero rows)."""
-    w = v / _row_max(np.abs(v), axis=1)[:, None]
+    """Each row of ``v`` (k, n) divided by its length (no zero rows): first by its largest
+    magnitude, so that the squared length neither overflows nor underflows."""
+    w = v / np.abs(v).max(axis=1)[:, None]
     return w / np.sqrt(np.vecdot(w, w))[:, None]
 
 
-_row_max = np.maximum.reduce  # ndarray.max's own reduction, without its Python wrapper
-
-
-def _unit_lists(rows: list) -> list:
-    """:func:`unit_rows` of ``k`` vectors given as lists of floats, as lists: the same
-    numbers — each row divided by its largest magnitude and by the square root of its
-    squared length in Python floats, that squared length by ``np.vecdot`` (the BLAS dot)."""
-    w = []
-    for r in rows:
-        big = max(map(abs, r))
-        w.append([x / big for x in r])
-    a = np.array(w, dtype=float)
-    sqrt = math.sqrt
-    return [[x / s for x in r] for r, s in zip(w, map(sqrt, np.vecdot(a, a).tolist()))]
-
-
-def _rodrigues_row(n: list, c: float, s: float, one_minus_c: float) -> list:
-    """:func:`_rodrigues` of one unit axis ``n`` (3 floats), entry by entry in Python floats:
-    ``c I + s [n]x`` then ``+ (1 - c) (n_i n_j)``, the same correctly rounded operations in
-    the same order as the single version's arrays (elementwise: no BLAS call to match)."""
-    x, y, z = n
-    return [c * 1.0 + s * 0.0 + one_minus_c * (x * x), c * 0.0 + s * -z + one_minus_c * (x * y),
-            c * 0.0 + s * y + one_minus_c * (x * z),
-            c * 0.0 + s * z + one_minus_c * (y * x), c * 1.0 + s * 0.0 + one_minus_c * (y * y),
-            c * 0.0 + s * -x + one_minus_c * (y * z),
-            c * 0.0 + s * -y + one_minus_c * (z * x), c * 0.0 + s * x + one_minus_c * (z * y),
-            c * 1.0 + s * 0.0 + one_minus_c * (z * z)]
-
-
-def _stack(rows: list) -> np.ndarray:
-    """The (k, 3, 3) array of ``k`` rotations given as 9 floats each (row-major)."""
-    a = np.fromiter(itertools.chain.from_iterable(rows), dtype=float, count=9 * len(rows))
-    a.shape = (len(rows), 3, 3)
-    return a
-
-
-#: :func:`axis_to_z` of a direction exactly along +z and exactly along -z, as 9 floats
-_ALONG_PLUS_Z = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
-_ALONG_MINUS_Z = [1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0]
+def _rodrigues_rows(n: np.ndarray, c: np.ndarray, s: np.ndarray, one_minus_c: np.ndarray) -> np.ndarray:
+    """R = c I + s [n]x + (1 - c) n nᵀ for each unit axis n (k, 3) (Rodrigues' formula);
+    ``one_minus_c`` is given so that callers compute it without cancellation."""
+    x, y, z = n[:, 0], n[:, 1], n[:, 2]
+    cross = np.zeros((len(n), 3, 3))  # [n]x of each row
+    cross[:, 0, 1] = -z
+    cross[:, 0, 2] = y
+    cross[:, 1, 0] = z
+    cross[:, 1, 2] = -x
+    cross[:, 2, 0] = -y
+    cross[:, 2, 1] = x
+    return (c[:, None, None] * _EYE + s[:, None, None] * cross
+            + one_minus_c[:, None, None] * (n[:, :, None] * n[:, None, :]))
 
 
 def axis_to_z_rows(directions: np.ndarray) -> np.ndarray:
-    """:func:`axis_to_z` of each row of ``directions`` (k, 3).
-
-    The unit vectors as :func:`unit_rows` makes them (the dot products of the single
-    version's ``_unit``), the rest per row in Python floats as :func:`axis_to_z` computes it:
-    ``sin θ`` by :func:`math.hypot`, ``1 − cos θ`` as ``s² / (1 + c)`` for c > 0 (which
-    keeps digits near +z), else ``1 − c``, and Rodrigues' formula (:func:`_rodrigues_row`)."""
-    return _axis_to_z(np.asarray(directions, dtype=float).reshape(-1, 3).tolist())
-
-
-def _axis_to_z(directions: list) -> np.ndarray:
-    """:func:`axis_to_z_rows` of directions given as lists of 3 floats."""
-    d = _unit_lists(directions)
-    # z × d of the rows not exactly along ±z, made unit
-    crosses = [[-y, x, 0.0] for x, y, _ in d if x != 0.0 or y != 0.0]
-    axes = iter(_unit_lists(crosses) if crosses else ())
-    hypot = math.hypot
-    out = []
-    for x, y, c in d:
-        if x == 0.0 and y == 0.0:
-            out.append(_ALONG_PLUS_Z if c > 0 else _ALONG_MINUS_Z)
-            continue
-        s = hypot(x, y)
-        out.append(_rodrigues_row(next(axes), c, s, s * s / (1.0 + c) if c > 0 else 1.0 - c))
-    return _stack(out)
+    """:func:`axis_to_z` of each row of ``directions`` (k, 3): ``sin θ = hypot(d_x, d_y)``
+    and ``1 − cos θ`` as ``s² / (1 + c)`` for c > 0 (which keeps digits near +z), else
+    ``1 − c``."""
+    d = unit_rows(np.asarray(directions, dtype=float).reshape(-1, 3))
+    x, y, c = d[:, 0], d[:, 1], d[:, 2]
+    along = (x == 0.0) & (y == 0.0)  # exactly along +z or -z: no minimal axis
+    out = np.empty((len(d), 3, 3))
+    out[along] = np.where(c[along, None, None] > 0, _EYE, np.diag([1.0, -1.0, -1.0]))
+    tilted = ~along
+    if tilted.any():
+        x, y, c = x[tilted], y[tilted], c[tilted]
+        n = unit_rows(np.stack([-y, x, np.zeros(len(x))], axis=1))  # e_z × d
+        s = np.array([math.hypot(a, b) for a, b in zip(x.tolist(), y.tolist())])
+        with np.errstate(divide="ignore", invalid="ignore"):  # the branch not taken
+            one_minus_c = np.where(c > 0, s * s / (1.0 + c), 1.0 - c)
+        out[tilted] = _rodrigues_rows(n, c, s, one_minus_c)
+    return out
 
 
 def axis_angle_rows(axes: np.ndarray, angles_rad: np.ndarray) -> np.ndarray:
-    """:func:`axis_angle` of each row of ``axes`` (k, 3) with its angle (k,)."""
-    n = unit_rows(np.asarray(axes, dtype=float).reshape(-1, 3)).tolist()
+    """:func:`axis_angle` of each row of ``axes`` (k, 3) with its angle (k,):
+    ``1 − cos θ = 2 sin²(θ/2)``."""
+    n = unit_rows(np.asarray(axes, dtype=float).reshape(-1, 3))
     theta = np.asarray(angles_rad, dtype=float).reshape(-1).tolist()
-    sin, cos = math.sin, math.cos
-    out = []
-    for axis, t in zip(n, theta):
-        half = sin(t / 2.0)
-        out.append(_rodrigues_row(axis, cos(t), sin(t), 2.0 * half * half))
-    return _stack(out)
+    half = np.array([math.sin(t / 2.0) for t in theta])
+    c = np.array([math.cos(t) for t in theta])
+    s = np.array([math.sin(t) for t in theta])
+    return _rodrigues_rows(n, c, s, 2.0 * half * half)
 
 
 def _elementary_rows(axis: str, angles: list[float]) -> np.ndarray:
+    """The right-hand rotations by ``angles`` about the coordinate axis ``axis`` (x, y, z)."""
     e = np.zeros((len(angles), 3, 3))
     c = np.array([math.cos(a) for a in angles]).reshape(-1)
     s = np.array([math.sin(a) for a in angles]).reshape(-1)
@@ -588,24 +468,15 @@ def nearest_rotation_rows(m: np.ndarray) -> np.ndarray:
 
 
 def surely_rotation(rows: list[list[float]]) -> bool:
-    """Whether :func:`from_matrix` surely accepts the 3x3 matrix ``rows`` (lists of floats)
-    with its default tolerance: orthonormal to 1e-7 (the tolerance is 1e-6; round-off here
-    is ~1e-16) with det > 0.5. When not, call :func:`from_matrix` for its exact verdict and
-    message."""
-    (a, b, c), (d, e, f), (g, h, i) = rows
-    cols = ((a, d, g), (b, e, h), (c, f, i))
-    for j in range(3):
-        for k in range(j, 3):
-            u, v = cols[j], cols[k]
-            dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-            if not abs(dot - (1.0 if j == k else 0.0)) < 1e-7:
-                return False
-    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) > 0.5
+    """Whether :func:`from_matrix` surely accepts the 3x3 matrix ``rows`` with its default
+    tolerance: orthonormal to 1e-7 (the tolerance is 1e-6; round-off here is ~1e-16) with
+    det > 0.5. When not, call :func:`from_matrix` for its exact verdict and message."""
+    a = np.array(rows, dtype=float)
+    return bool(np.abs(a.T @ a - _EYE).max() < 1e-7 and np.linalg.det(a) > 0.5)
 
 
 def from_specs(specs: list) -> np.ndarray:
-    """The (n, 3, 3) rotations of ``n`` checked specs, made per kind for all at once
-    (the ``*_rows`` functions: bit for bit the one-rotation results).
+    """The (n, 3, 3) rotations of ``n`` checked specs, made per kind for all at once.
 
     A spec is None (no rotation), ``("axis", direction)`` (:func:`axis_to_z` of the unit
     direction), ``("axis-angle", axis, angle_rad)`` (:func:`axis_angle` of the unit axis),
@@ -613,45 +484,32 @@ def from_specs(specs: list) -> np.ndarray:
     :func:`surely_rotation` accepts) or ``("R", matrix)`` (made already). Vectors are
     lists of finite floats, not all zero.
     """
-    n = len(specs)
+    out = np.empty((len(specs), 3, 3))
+    out[:] = _EYE
     groups: dict = {}
     for i, spec in enumerate(specs):
         if spec is not None:
             key = (spec[0], spec[2]) if spec[0] == "euler" else (spec[0], "")
             groups.setdefault(key, []).append(i)
-    if len(groups) == 1:
-        ((kind, seq), idx), = groups.items()
-        if len(idx) == n:  # one kind for all (a new array): no identity to fill in
-            return _kind_rows(kind, seq, specs)
-    out = np.empty((n, 3, 3))
-    out[:] = _EYE
     for (kind, seq), idx in groups.items():
         out[idx] = _kind_rows(kind, seq, [specs[i] for i in idx])
     return out
 
 
 def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
-    """The (k, 3, 3) rotations of :func:`from_specs` for ``specs`` of one kind (a new array)."""
+    """The (k, 3, 3) rotations of :func:`from_specs` for ``specs`` of one kind."""
+    vectors = np.array([s[1] for s in specs], dtype=float)
     if kind == "R":
-        return np.array([s[1] for s in specs], dtype=float)  # (k, 3, 3), its own data
+        return vectors
     if kind == "axis":
-        return _axis_to_z(_unit_lists([s[1] for s in specs]))
+        return axis_to_z_rows(unit_rows(vectors))
     if kind == "axis-angle":
-        axes = unit_rows(_floats([s[1] for s in specs], 3))
-        return axis_angle_rows(axes, np.array([s[2] for s in specs]))
+        return axis_angle_rows(unit_rows(vectors), np.array([s[2] for s in specs]))
     if kind == "euler":
-        return euler_rows(_floats([s[1] for s in specs], len(seq)), seq)
+        return euler_rows(vectors, seq)
     if kind == "quaternion":
-        return quaternion_rows(_floats([s[1] for s in specs], 4))
-    return nearest_rotation_rows(_floats([x for s in specs for x in s[1]], 3).reshape(-1, 3, 3))
-
-
-def _floats(vectors: list, n: int) -> np.ndarray:
-    """The (k, n) array of ``k`` lists of ``n`` floats (``np.array(vectors)``, the same
-    numbers, without numpy reading nested lists: ~3 x faster)."""
-    a = np.fromiter(itertools.chain.from_iterable(vectors), dtype=float, count=len(vectors) * n)
-    a.shape = (len(vectors), n)
-    return a
+        return quaternion_rows(vectors)
+    return nearest_rotation_rows(vectors)
 
 
 # ----------------------------------------------------------------------------------------

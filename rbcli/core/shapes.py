@@ -312,8 +312,6 @@ IO_SHAPES = {
 
 
 def _number(param: str, value: Any, label: str | None = None) -> float:
-    if value.__class__ is float and math.isfinite(value):  # the common case, quickly
-        return value
     label = label or param
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ShapeError(param, f"{label} must be a number, not {type(value).__name__}")
@@ -339,8 +337,6 @@ def _non_negative(param: str, value: Any) -> float:
 
 def _components(param: str, value: Any, n: int, label: str | None = None) -> list[Any]:
     """The ``n`` items of a vector parameter; ``label`` names it in the message."""
-    if value.__class__ is list and len(value) == n:  # the common case, quickly
-        return value
     label = label or param
     if isinstance(value, (str, bytes, Mapping)):
         raise ShapeError(param, f"{label} must be a list of {n} numbers")
@@ -354,12 +350,6 @@ def _components(param: str, value: Any, n: int, label: str | None = None) -> lis
 
 
 def _positive_vector(param: str, value: Any, n: int) -> list[float]:
-    if value.__class__ is list and len(value) == n:  # the common case, quickly
-        for v in value:
-            if not (v.__class__ is float and 0.0 < v < math.inf):
-                break
-        else:
-            return value
     items = _components(param, value, n)
     out = []
     for i, v in enumerate(items):
@@ -452,63 +442,25 @@ def _plate(p: dict[str, Any]) -> _Raw:
 
 
 def _triangle(p: dict[str, Any]) -> _Raw:
-    (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = _vertices(p["vertices"])
-    # in floats, in the order numpy's mean, cross and norm take them (the same numbers):
-    # mean = (v0 + v1 + v2) / 3; |x| = sqrt(x·x) with the dot product numpy's (np.vecdot)
-    cx, cy, cz = (x0 + x1 + x2) / 3.0, (y0 + y1 + y2) / 3.0, (z0 + z1 + z2) / 3.0
-    a0, a1, a2 = x1 - x0, y1 - y0, z1 - z0  # v1 − v0
-    b0, b1, b2 = x2 - x0, y2 - y0, z2 - z0  # v2 − v0
-    # d (the vertices less the centroid, for the second moment below), then the cross
-    # product (v1 − v0) × (v2 − v0) and the edges v0 − v1, v1 − v2, v0 − v2, whose lengths
-    # say whether the triangle has an area
-    rows = np.array([
-        (x0 - cx, y0 - cy, z0 - cz), (x1 - cx, y1 - cy, z1 - cz), (x2 - cx, y2 - cy, z2 - cz),
-        (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0),
-        (x0 - x1, y0 - y1, z0 - z1), (x1 - x2, y1 - y2, z1 - z2), (x0 - x2, y0 - y2, z0 - z2),
-    ])
-    d, x = rows[:3], rows[3:]
-    q_area, q01, q12, q02 = np.vecdot(x, x).tolist()
-    twice_area = math.sqrt(q_area)
-    longest = max(math.sqrt(q01), math.sqrt(q12), math.sqrt(q02))
+    rows = _components("vertices", p["vertices"], 3)
+    v = np.array([[_number("vertices", x, f"vertices[{i}][{j}]")
+                   for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]"))]
+                  for i, row in enumerate(rows)])
+    centroid = v.mean(axis=0)
+    d = v - centroid
+    # twice the area |(v1 − v0) × (v2 − v0)|, and the edges' lengths
+    x = np.array([np.cross(v[1] - v[0], v[2] - v[0]), v[0] - v[1], v[1] - v[2], v[0] - v[2]])
+    norms = np.sqrt(np.vecdot(x, x))
     # Degenerate when the area is round-off compared with the square of the size.
-    if not twice_area > 1e-12 * longest * longest:
+    longest = norms[1:].max()
+    if not norms[0] > 1e-12 * longest * longest:
         raise ShapeError("vertices", "the triangle's vertices are collinear (it has no area)")
     # Second moment per unit area about the centroid: ∫ x xᵀ dA / A = (1/12) Σ dᵢ dᵢᵀ,
     # the exact quadrature of a quadratic over a triangle (it is exact for quadratics
     # because  ∫ x xᵀ dA / A = (1/12)(Σ vᵢvᵢᵀ + (Σvᵢ)(Σvᵢ)ᵀ), and Σ dᵢ = 0).
-    # C = dᵀd / 12 made symmetric, I = tr(C) E − C: in floats, the operations numpy's
-    # would make on the arrays (Cij = (Mij/12 + Mji/12)/2, the sum the same either way;
-    # tr = (C00 + C11) + C22; off the diagonal tr·0 − Cij)
-    (m00, m01, m02), (m10, m11, m12), (m20, m21, m22) = (d.T @ d).tolist()
-    c00 = 0.5 * (m00 / 12.0 + m00 / 12.0)
-    c11 = 0.5 * (m11 / 12.0 + m11 / 12.0)
-    c22 = 0.5 * (m22 / 12.0 + m22 / 12.0)
-    c01 = 0.5 * (m01 / 12.0 + m10 / 12.0)
-    c02 = 0.5 * (m02 / 12.0 + m20 / 12.0)
-    c12 = 0.5 * (m12 / 12.0 + m21 / 12.0)
-    tr = (c00 + c11) + c22
-    zero = tr * 0.0
-    inertia = np.array([(tr - c00, zero - c01, zero - c02),
-                        (zero - c01, tr - c11, zero - c12),
-                        (zero - c02, zero - c12, tr - c22)])
-    return _Raw(0.5 * twice_area, "area", (cx, cy, cz), inertia)
-
-
-def _vertices(value: Any) -> list[list[float]]:
-    """The three vertices: a list of three lists of three finite floats (as given, when
-    they are that already)."""
-    if value.__class__ is list and len(value) == 3:  # the common case, quickly
-        for row in value:
-            if not (row.__class__ is list and len(row) == 3):
-                break
-            if not all(x.__class__ is float and math.isfinite(x) for x in row):
-                break
-        else:
-            return value
-    rows = _components("vertices", value, 3)
-    return [[_number("vertices", x, f"vertices[{i}][{j}]")
-             for j, x in enumerate(_components("vertices", row, 3, f"vertices[{i}]"))]
-            for i, row in enumerate(rows)]
+    c = d.T @ d / 12.0
+    c = 0.5 * (c + c.T)
+    return _Raw(0.5 * float(norms[0]), "area", centroid, np.trace(c) * np.eye(3) - c)
 
 
 def _box(p: dict[str, Any]) -> _Raw:
@@ -638,10 +590,6 @@ _BUILDERS: dict[str, Callable[[dict[str, Any]], ShapeGeometry]] = {
 FORMULA_SHAPES = frozenset(_BUILDERS)
 
 
-#: each shape's parameters, required then optional (filled on first use)
-_PARAMETERS: dict[str, tuple[str, ...]] = {}
-
-
 def geometry(shape: str, **params: Any) -> ShapeGeometry:
     """Measure, centre of mass and inertia per unit mass of a primitive shape.
 
@@ -725,7 +673,7 @@ def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:
     if info is None:
         known = ", ".join([*SHAPES, *IO_SHAPES])
         raise ShapeError("shape", f"unknown shape {shape!r}; the shapes are: {known}")
-    allowed = _PARAMETERS.get(shape) or _PARAMETERS.setdefault(shape, (*info.required, *info.optional))
+    allowed = (*info.required, *info.optional)
     for key in params:
         if key not in allowed:
             what = ", ".join(allowed) if allowed else "none"

@@ -36,14 +36,13 @@ quantities (1 - m, 1 - n, 1 - u) carried separately so that no digits are lost.
 
 from __future__ import annotations
 
-from __future__ import annotations
-
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from rbcli.core.checks import finite, json_float
+from rbcli.core.roots import brentq
 from rbcli.core.topbody import TopParams
 from rbcli.core.toppath import TopState, carlson_F, complete_Pi, state_at
 from rbcli.errors import ParamError
@@ -318,8 +317,6 @@ def _cubic_roots_shifted(
         x1, x2, x3 = sorted((0.0, ra, rb))
         return x1, x2, x3
 
-    from rbcli.core.roots import brentq
-
     def bracketed(a_: float, fa: float, b_: float, fb: float) -> float:
         if fa == 0.0:
             return a_
@@ -431,6 +428,39 @@ def _pole_root(e0: float, e1: float, e2: float, e3: float, d: float) -> float:
     return d
 
 
+def _checked_start(spin: float, theta0: float, theta_dot0: float, phi_dot0: float,
+                   g: float) -> tuple[float, float, float, float, float]:
+    """The start of :func:`analyse` as finite floats, refused (naming the parameter) when it
+    is not a top's: θ0 not in (0, π), g <= 0, no spin."""
+    def start(param: str, name: str, x: float) -> float:
+        try:
+            return finite(name, x)
+        except ValueError as exc:
+            raise TopInputError(param, str(exc)) from None
+
+    S = start("spin", "spin", spin)
+    th0 = start("theta", "theta0", theta0)
+    thd = start("theta_dot", "theta_dot0", theta_dot0)
+    w = start("phi_dot", "phi_dot0", phi_dot0)
+    gg = start("g", "g", g)
+    if not (0.0 < th0 < math.pi):
+        raise TopInputError(
+            "theta",
+            f"the initial tilt theta0 must be strictly between 0 and 180 degrees, not "
+            f"{math.degrees(th0):.6g} deg (at 0 or 180 the axis is vertical and the "
+            "precession angle is undefined; start it slightly tilted)"
+        )
+    if gg <= 0.0:
+        raise TopInputError("g", f"gravity g must be positive, not {gg}")
+    if S == 0.0:
+        raise TopInputError(
+            "spin",
+            "the spin is 0: a top without spin is a spherical pendulum, not a top; "
+            "give a nonzero spin"
+        )
+    return S, th0, thd, w, gg
+
+
 def analyse(
     params: TopParams,
     spin: float,
@@ -485,32 +515,7 @@ def analyse(
     axis jumps by π at each passage and that is counted in φ(t) and <φ'> (sign of b ∓ a;
     + when it is exactly zero).
     """
-    def start(param: str, name: str, x: float) -> float:
-        try:
-            return finite(name, x)
-        except ValueError as exc:
-            raise TopInputError(param, str(exc)) from None
-
-    S = start("spin", "spin", spin)
-    th0 = start("theta", "theta0", theta0)
-    thd = start("theta_dot", "theta_dot0", theta_dot0)
-    w = start("phi_dot", "phi_dot0", phi_dot0)
-    gg = start("g", "g", g)
-    if not (0.0 < th0 < math.pi):
-        raise TopInputError(
-            "theta",
-            f"the initial tilt theta0 must be strictly between 0 and 180 degrees, not "
-            f"{math.degrees(th0):.6g} deg (at 0 or 180 the axis is vertical and the "
-            "precession angle is undefined; start it slightly tilted)"
-        )
-    if gg <= 0.0:
-        raise TopInputError("g", f"gravity g must be positive, not {gg}")
-    if S == 0.0:
-        raise TopInputError(
-            "spin",
-            "the spin is 0: a top without spin is a spherical pendulum, not a top; "
-            "give a nonzero spin"
-        )
+    S, th0, thd, w, gg = _checked_start(spin, theta0, theta_dot0, phi_dot0, g)
     m_, l_, I, Is = params.mass, params.length, params.I, params.Is
     mgl = m_ * gg * l_
     slow = mgl / (Is * S)  # m g l/(Is S): the horizontal (and fast-top) precession rate
@@ -596,37 +601,48 @@ def analyse(
     Pi_m = complete_Pi(n_minus, n_minus1, m1) if cm != 0.0 else K
     jt = top_sign if top_pass else 0.0
     jb = bottom_sign if bottom_pass else 0.0
-    if math.isfinite(K):
-        T_n: float | None = 2.0 * K / lam
-        term_p = cp * Pi_p if cp != 0.0 else 0.0
-        term_m = cm * Pi_m if cm != 0.0 else 0.0
-        jump = 0.5 * math.pi * lam  # π per nutation period, in the units of term/K * K
-        mean_phi: float | None = (term_p + term_m + jump * (jt + jb)) / K
-        mean_psi: float | None = S - a - (term_p - term_m + jump * (jt - jb)) / K
-        nut_freq: float | None = 2.0 * math.pi / T_n
-        dphi: float | None = mean_phi * T_n
-        dpsi: float | None = mean_psi * T_n
-    else:  # m = 1: separatrix, no finite period
-        T_n = mean_phi = mean_psi = nut_freq = dphi = dpsi = None
+    T_n, nut_freq, mean_phi, mean_psi = _mean_rates(K, lam, cp * Pi_p if cp != 0.0 else 0.0,
+                                                    cm * Pi_m if cm != 0.0 else 0.0, jt, jb, S - a)
+    dphi = None if T_n is None else mean_phi * T_n  # type: ignore[operator]
+    dpsi = None if T_n is None else mean_psi * T_n  # type: ignore[operator]
 
-    # phase at t = 0
-    if band > 0.0:
-        r, r1 = -x1 / band, x2 / band  # sn²(τ0) and cn²(τ0)
-        am0 = math.atan2(math.sqrt(max(r, 0.0)), math.sqrt(max(r1, 0.0)))
-        F0 = float(carlson_F(np.asarray(am0), m1))
-        if thd > 0.0:  # θ increasing: u decreasing, τ0 in [-K, 0]
-            am0, F0 = -am0, -F0
-    else:
-        am0 = F0 = 0.0
+    am0, F0 = _phase(x1, x2, m1, thd)
     ell = EllipticSolution(
         m=m, m1=m1, lam=lam, tau0=F0, am0=am0, K=K, band=band, one_minus_u1=omu1,
         one_plus_u1=opu1, one_minus_u2=omu2, cp=cp, cm=cm, n_plus=n_plus, n_plus1=n_plus1, n_minus=n_minus,
         n_minus1=n_minus1, Pi_plus=Pi_p, Pi_minus=Pi_m, top_jump=jt, bottom_jump=jb,
     )  # fmt: skip
 
-    # steady precession at θ0 (sheet §2 "Steady precession")
     IsS = Is * S
-    cos0 = u0
+    rates, nut_steady, min_spin, S_c = _steady(I, Is, S, a, mgl, u0, s0)
+    xstar = B0 / a  # u' - u0, where φ' = 0
+    c1_scale = beta * s0sq + 2.0 * abs(u0) * A0 + 2.0 * abs(a * B0)
+    band_noise = np.finfo(float).eps * c1_scale / (abs(c2) + beta * omu0)
+    steady = band <= STEADY_ULPS * band_noise
+    path = _path(steady, top_pass or bottom_pass, xstar, x1, x2, (bma / a, bpa / a))
+    released = thd == 0.0 and w == 0.0
+    fast = _fast_top(a, mgl / IsS, (2.0 * I * mgl / IsS**2) * s0 if released else None,
+                     nut_freq, theta2 - theta1, mean_phi)
+
+    return TopMotion(
+        params=params, spin=S, theta0=th0, theta_dot0=thd, phi_dot0=w, g=gg,
+        a=a, b=b, alpha=alpha, beta=beta, u1=u1, u2=u2, u3=u3,
+        theta1=theta1, theta2=theta2, nutation_period=T_n, nutation_frequency=nut_freq,
+        precession_per_nutation=dphi, spin_per_nutation=dpsi,
+        mean_precession_rate=mean_phi, mean_spin_rate=mean_psi,
+        steady_precession_rates=rates, steady_nutation_frequencies=nut_steady,
+        minimum_spin_for_steady=min_spin, horizontal_precession_rate=mgl / IsS,
+        critical_spin=S_c, sleeps=abs(S) > S_c, apex_u=u0 + xstar, path=path,
+        steady=steady, fast_top=fast, elliptic=ell,
+    )  # fmt: skip
+
+
+def _steady(I: float, Is: float, S: float, a: float, mgl: float, cos0: float,
+            s0: float) -> tuple[tuple[float, ...], tuple[float, ...], float, float]:
+    """Steady precession at θ0 (sheet §2 "Steady precession"): its rates (slow, fast), the
+    frequencies of a small nutation about each, the least spin for it and the critical
+    spin of a sleeping top."""
+    IsS = Is * S
     if abs(cos0) <= HORIZONTAL_COS:
         rates: tuple[float, ...] = (mgl / IsS,)
     else:
@@ -640,56 +656,68 @@ def analyse(
         math.sqrt((a - 2.0 * r_ * cos0) ** 2 + (r_ * s0) ** 2) for r_ in rates
     )
     min_spin = math.sqrt(4.0 * I * mgl * cos0) / Is if cos0 > HORIZONTAL_COS else 0.0
-    S_c = math.sqrt(4.0 * I * mgl) / Is
+    return rates, nut_steady, min_spin, math.sqrt(4.0 * I * mgl) / Is
 
-    # the kind of path (sheet §2 "Locus of the symmetry-axis apex")
-    xstar = B0 / a  # u' - u0, where φ' = 0
-    c1_scale = beta * s0sq + 2.0 * abs(u0) * A0 + 2.0 * abs(a * B0)
-    band_noise = np.finfo(float).eps * c1_scale / (abs(c2) + beta * omu0)
-    steady = band <= STEADY_ULPS * band_noise
-    tol = CUSP_RTOL * band
+
+def _path(steady: bool, passes_pole: bool, xstar: float, x1: float, x2: float,
+          pole_apex: tuple[float, float]) -> str:
+    """The kind of path (sheet §2 "Locus of the symmetry-axis apex"): where the apex point
+    u' = b/a (``xstar`` = u' - u0) lies against the band [x1, x2]; ``pole_apex``:
+    ((b - a)/a, (b + a)/a)."""
+    tol = CUSP_RTOL * (x2 - x1)
     if steady:
-        path = "steady"  # θ stays at θ0 (JSON and tables say the same)
-    elif top_pass or bottom_pass or abs(bma / a) <= tol or abs(bpa / a) <= tol:
+        return "steady"  # θ stays at θ0 (JSON and tables say the same)
+    if passes_pole or abs(pole_apex[0]) <= tol or abs(pole_apex[1]) <= tol:
         # the apex u' = b/a at a pole: φ' = (b - au)/(1 - u²) = ±a/(1 ± u) does not vanish
         # (or only on a loop too small to see); the axis passes through the vertical
-        path = "waves"
-    elif abs(xstar - x2) <= tol or abs(xstar - x1) <= tol:
-        path = "cusps"
-    elif x1 < xstar < x2:
-        path = "loops"
-    else:
-        path = "waves"
+        return "waves"
+    if abs(xstar - x2) <= tol or abs(xstar - x1) <= tol:
+        return "cusps"
+    return "loops" if x1 < xstar < x2 else "waves"
 
-    # fast-top estimates (sheet §2 "Fast top")
-    ft_freq = abs(a)
-    ft_prec = mgl / IsS
-    released = thd == 0.0 and w == 0.0
-    ft_amp = (2.0 * I * mgl / IsS**2) * s0 if released else None
-    exact_amp = theta2 - theta1
+
+def _fast_top(a: float, precession: float, amplitude: float | None, nut_freq: float | None,
+              exact_amp: float, mean_phi: float | None) -> FastTop:
+    """The fast-top estimates (sheet §2 "Fast top") and their errors against the exact
+    motion's nutation frequency and amplitude and mean precession rate."""
 
     def rel(est: float | None, exact: float | None) -> float | None:
         if est is None or exact is None or exact == 0.0:
             return None
         return (est - exact) / exact
 
-    fast = FastTop(
-        nutation_frequency=ft_freq,
-        nutation_amplitude=ft_amp,
-        mean_precession_rate=ft_prec,
-        nutation_frequency_rel_error=rel(ft_freq, nut_freq),
-        nutation_amplitude_rel_error=rel(ft_amp, exact_amp),
-        mean_precession_rate_rel_error=rel(ft_prec, mean_phi),
+    return FastTop(
+        nutation_frequency=abs(a),
+        nutation_amplitude=amplitude,
+        mean_precession_rate=precession,
+        nutation_frequency_rel_error=rel(abs(a), nut_freq),
+        nutation_amplitude_rel_error=rel(amplitude, exact_amp),
+        mean_precession_rate_rel_error=rel(precession, mean_phi),
     )
 
-    return TopMotion(
-        params=params, spin=S, theta0=th0, theta_dot0=thd, phi_dot0=w, g=gg,
-        a=a, b=b, alpha=alpha, beta=beta, u1=u1, u2=u2, u3=u3,
-        theta1=theta1, theta2=theta2, nutation_period=T_n, nutation_frequency=nut_freq,
-        precession_per_nutation=dphi, spin_per_nutation=dpsi,
-        mean_precession_rate=mean_phi, mean_spin_rate=mean_psi,
-        steady_precession_rates=rates, steady_nutation_frequencies=nut_steady,
-        minimum_spin_for_steady=min_spin, horizontal_precession_rate=mgl / IsS,
-        critical_spin=S_c, sleeps=abs(S) > S_c, apex_u=u0 + xstar, path=path,
-        steady=steady, fast_top=fast, elliptic=ell,
-    )  # fmt: skip
+
+def _mean_rates(K: float, lam: float, term_p: float, term_m: float, jt: float, jb: float,
+                spin_less_a: float) -> tuple[float | None, float | None, float | None, float | None]:
+    """The nutation period and frequency and the mean precession and spin rates: T_n =
+    2K/λ, <φ'> = [cp Π(n+|m) + cm Π(-n-|m)]/K, <ψ'> = S - a - [cp Π(n+|m) - cm Π(-n-|m)]/K
+    (``term_p``, ``term_m``: the bracket's terms), with the jumps ``jt``, ``jb`` of a path
+    through a pole; all None on the separatrix (m = 1: K infinite, no finite period)."""
+    if not math.isfinite(K):
+        return None, None, None, None
+    T_n = 2.0 * K / lam
+    jump = 0.5 * math.pi * lam  # π per nutation period, in the units of term/K * K
+    mean_phi = (term_p + term_m + jump * (jt + jb)) / K
+    mean_psi = spin_less_a - (term_p - term_m + jump * (jt - jb)) / K
+    return T_n, 2.0 * math.pi / T_n, mean_phi, mean_psi
+
+
+def _phase(x1: float, x2: float, m1: float, theta_dot: float) -> tuple[float, float]:
+    """The phase at t = 0: the amplitude am(τ0) and τ0 = F(am | m) from sn²(τ0) = -x1/band
+    and cn²(τ0) = x2/band; τ0 in [-K, 0] while θ increases (u decreasing)."""
+    band = x2 - x1
+    if not band > 0.0:
+        return 0.0, 0.0
+    r, r1 = -x1 / band, x2 / band  # sn²(τ0) and cn²(τ0)
+    am0 = math.atan2(math.sqrt(max(r, 0.0)), math.sqrt(max(r1, 0.0)))
+    F0 = float(carlson_F(np.asarray(am0), m1))
+    return (-am0, -F0) if theta_dot > 0.0 else (am0, F0)

@@ -18,14 +18,14 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from rbcli.core.elliptic import ellipj, elliprc, elliprf, elliprj
+
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core.top import TopMotion
 
 
 def carlson_F(phi: np.ndarray, m1: float) -> np.ndarray:
     """F(φ|m) for |φ| <= π/2, from RF, with m1 = 1 - m given exactly (the top's phase at t = 0)."""
-    from rbcli.core.elliptic import elliprf
-
     s = np.sin(phi)
     c = np.cos(phi)
     return s * elliprf(c * c, c * c + m1 * s * s, 1.0)
@@ -37,8 +37,6 @@ def carlson_Pi(n: float, n1: float, phi: np.ndarray, m1: float) -> np.ndarray:
     ``n1 = 1 - n`` and ``m1 = 1 - m`` are passed separately so that 1 - m s² = c² + m1 s²
     and 1 - n s² = c² + n1 s² keep their digits.
     """
-    from rbcli.core.elliptic import elliprc, elliprf, elliprj
-
     s = np.sin(phi)
     c = np.cos(phi)
     c2 = c * c
@@ -61,8 +59,6 @@ def complete_Pi(n: float, n1: float, m1: float) -> float:
     """Π(n|m) = RF(0, 1-m, 1) + n/3 RJ(0, 1-m, 1, 1-n) (sheet §0); see carlson_Pi for n < -1."""
     if n < -1.0:
         return float(carlson_Pi(n, n1, np.asarray(0.5 * np.pi), m1))
-    from rbcli.core.elliptic import elliprf, elliprj
-
     out = float(elliprf(0.0, m1, 1.0))
     if n != 0.0:
         out += n / 3.0 * float(elliprj(0.0, m1, 1.0, n1))
@@ -97,8 +93,6 @@ def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, n
 
 def _path(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, ...]:
     """θ, φ, ψ as :func:`path_at`, and sn τ, cn τ of the reduced phase τr (for the rates)."""
-    from rbcli.core.elliptic import ellipj
-
     e = motion.elliptic
     tt = np.asarray(t, dtype=float)
     if not np.isfinite(e.K):

@@ -20,6 +20,7 @@ import numpy as np
 
 from rbcli.core.rim import fmt_length as _fmt_length
 from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis, across
+from rbcli.errors import InputError, ParamError
 
 __all__ = ["STANDARD_GRAVITY", "Wheel", "wheel_from_body", "check_geometry", "param_finite",
            "blame", "opt_float"]
@@ -46,8 +47,6 @@ def blame(params: tuple[str, ...], message: str) -> Exception:
     a :class:`rbcli.errors.ParamError` for one, an InputError naming each parameter for more
     (``{circle}, {speed}: ...``: the Python API spells them as parameters, the command line
     as options, :func:`rbcli.errors.spell`). Callers ``raise`` it."""
-    from rbcli.errors import InputError, ParamError
-
     if len(params) == 1:
         return ParamError(params[0], message)
     return InputError(", ".join("{%s}" % p for p in params) + ": " + message, param=params[0])

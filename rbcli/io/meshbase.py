@@ -1,11 +1,14 @@
-"""What the mesh readers share: :class:`MeshFileError`, the whole-file read and the
-helpers that word its messages (a line number, a long token shortened)."""
+"""What the mesh readers share: :class:`MeshFileError`, the whole-file read, the numbers of
+the text formats (:func:`numbers`) and the helpers that word its messages (a line number, a
+long token shortened)."""
 
 from __future__ import annotations
 
 import re
 
-__all__ = ["MeshFileError", "read_all", "line_of", "cut", "odd_number"]
+import numpy as np
+
+__all__ = ["MeshFileError", "read_all", "numbers", "line_of", "cut", "odd_number"]
 
 _DECIMAL_CHARS = b"0123456789.+-eE"
 _NON_FINITE = re.compile(rb"[+-]?(?:inf(?:inity)?|nan)", re.IGNORECASE)
@@ -25,8 +28,6 @@ class MeshFileError(ValueError):
         self.line = line
         self.reason = message
 
-
-
 def read_all(name: str, fh, size: int) -> bytes:
     """The whole file (``size`` bytes, already checked against the limit)."""
     data = fh.read(size + 1)
@@ -35,6 +36,20 @@ def read_all(name: str, fh, size: int) -> bytes:
     if not data:
         raise MeshFileError(name, "empty file (no triangles)")
     return data
+
+
+def numbers(text: bytes, dtype: type = np.float64) -> np.ndarray | None:
+    """Whitespace-separated numbers (ASCII STL, OBJ), or None if any token is not one (no
+    partial result): ``np.fromstring``, which gives the bits Python's ``float()`` gives.
+
+    numpy stops at the first token it cannot read (with a DeprecationWarning, a ValueError in
+    later versions): fewer numbers than tokens is that. The warning filters are left alone (a
+    library call does not switch them: another thread may be reading warnings)."""
+    try:
+        out = np.fromstring(text, dtype=dtype, sep=" ")
+    except ValueError:
+        return None
+    return out if out.size == len(text.split()) else None
 
 
 def line_of(text: bytes, offset: int) -> int:

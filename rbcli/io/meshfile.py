@@ -5,7 +5,7 @@ have exactly the same coordinates merged ("welded"), and the weld tolerance that
 the file's own precision (:func:`default_weld`): :mod:`rbcli.core.mesh` uses it, only
 when the exactly welded surface is not closed, to close gaps left by coordinate noise.
 Everything is vectorised with numpy: the text formats are read in blocks of whole lines,
-tokenised with numpy and their numbers read by :func:`rbcli.io.meshnumbers.floats` (an
+tokenised with numpy and their numbers read by :func:`rbcli.io.meshbase.numbers` (an
 ASCII STL block's repeated ``vertex`` texts only once); the per-token and per-line
 Python readers are kept to say where a file the fast path refuses is wrong, and to read
 the unusual layouts it leaves to them; the numbers are the same bits either way, which

@@ -12,11 +12,11 @@ not its numbers), and so is a face of more than :data:`MAX_FACE_CORNERS` corners
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
 import numpy as np
 
-from rbcli.io import meshnumbers
-from rbcli.io.meshbase import MeshFileError, cut, odd_number
+from rbcli.io.meshbase import MeshFileError, cut, numbers, odd_number
 from rbcli.io.meshweld import join_ranges, weld_points
 
 _CHUNK = 1 << 21  # the text is parsed in blocks of about 2 MiB (cache-sized: 30 % faster than 16)
@@ -122,7 +122,7 @@ def _obj_block(text: bytes, nv0: int) -> tuple[np.ndarray, np.ndarray] | None:
     v_at = np.flatnonzero(is_v)
     f_at = np.flatnonzero(is_f)
     vtext = _gather(text, starts[v_at] + 1, ends[v_at])
-    points = meshnumbers.floats(vtext) if v_at.size else np.empty(0)
+    points = numbers(vtext) if v_at.size else np.empty(0)
     if points is None or points.size != 3 * v_at.size or not np.isfinite(points).all():
         return None
     points = points.reshape(-1, 3)
@@ -150,7 +150,7 @@ def _obj_block(text: bytes, nv0: int) -> tuple[np.ndarray, np.ndarray] | None:
         # keep all but each item's '/...' tail ('/2' alone leaves nothing: a count mismatch)
         ftext = join_ranges(fa, np.concatenate(([0], tok_end[first_owner])), np.append(firsts, fa.size))
     del space, fa
-    idx = meshnumbers.numbers(ftext, np.int64)
+    idx = numbers(ftext, np.int64)
     if idx is None or idx.size != tok_at.size:
         return None
     del ftext, tok_at
@@ -190,83 +190,28 @@ def _read_obj_lines(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
     vert_lines: list[int] = []
     tris: list[tuple[int, int, int]] = []
     tri_lines: list[int] = []
-    huge: tuple[bytes, int] | None = None  # the first index too large for int64
-    lines = text.splitlines()
-    lineno = 0
-    while lineno < len(lines):
-        raw = lines[lineno]
-        lineno += 1
-        start = lineno
-        while raw.endswith(b"\\") and lineno < len(lines):  # a continued line
-            raw = raw[:-1] + b" " + lines[lineno]
-            lineno += 1
-        parts = raw.split(b"#", 1)[0].split()
-        if not parts:
-            continue
-        key = parts[0]
-        if key == b"v":
+    huge: list[tuple[bytes, int]] = []  # the first index too large for int64
+    for start, parts in _obj_lines(text):
+        if parts[0] == b"v":
             if len(parts) < 4:
                 raise MeshFileError(name, "vertex line needs x y z", start)
             verts.append(parts[1:4])
             vert_lines.append(start)
-        elif key == b"f":
-            if len(parts) < 4:
-                raise MeshFileError(name, "face needs at least 3 vertices", start)
-            if len(parts) - 1 > MAX_FACE_CORNERS:
-                raise MeshFileError(name, f"a face of {len(parts) - 1} corners; faces have at most "
-                                    f"{MAX_FACE_CORNERS}", start)
-            n_now = len(verts)
-            idx = []
-            for item in parts[1:]:
-                head = item.split(b"/", 1)[0]
-                if not (head.isdigit() or _INDEX.fullmatch(head)):  # not int()'s '1_0'
-                    got = cut(item.decode("ascii", "replace"))
-                    raise MeshFileError(name, f"bad face index '{got}'", start)
-                i = int(head)
-                if i < 0:
-                    i += n_now  # relative: -1 is the latest vertex so far
-                    if i < 0:
-                        raise MeshFileError(
-                            name,
-                            f"face index {cut(head.decode())} is out of range "
-                            f"({n_now} vertices defined so far)",
-                            start,
-                        )
-                elif i == 0:
-                    raise MeshFileError(name, "face index 0 (obj indices start at 1)", start)
-                else:
-                    i -= 1
-                    if i >= _BIG_INDEX:  # far out of range: keep int64 arithmetic
-                        huge = huge or (head, start)
-                        i = _BIG_INDEX
-                idx.append(i)
+        elif parts[0] == b"f":
+            idx = _face_indices(name, parts, start, len(verts), huge)
             for j in range(1, len(idx) - 1):  # fan a polygon into triangles
                 tris.append((idx[0], idx[j], idx[j + 1]))
                 tri_lines.append(start)
         # vt, vn, vp, o, g, s, usemtl, mtllib, l, p, comments...: nothing to do
     if not tris:
         raise MeshFileError(name, "obj file without faces (empty mesh)")
-    try:
-        if any(odd_number(t) for row in verts for t in row):
-            raise ValueError  # a Python-only spelling such as 1_000: say where
-        points = np.array(verts, dtype=np.float64)
-    except ValueError:
-        for row, lineno in zip(verts, vert_lines):
-            for t in row:
-                try:
-                    if odd_number(t):
-                        raise ValueError
-                    float(t)
-                except ValueError:
-                    got = cut(t.decode("ascii", "replace"))
-                    raise MeshFileError(name, f"'{got}' is not a number", lineno) from None
-        raise  # pragma: no cover
+    points = _vertex_array(name, verts, vert_lines)
     faces = np.array(tris, dtype=np.int64)
     over = faces >= len(points)
     if over.any():
         t = int(np.flatnonzero(over.any(axis=1))[0])
         bad = int(faces[t][over[t]][0])
-        shown = cut(huge[0].decode()) if bad == _BIG_INDEX and huge else str(bad + 1)
+        shown = cut(huge[0][0].decode()) if bad == _BIG_INDEX and huge else str(bad + 1)
         raise MeshFileError(
             name,
             f"face index {shown} is out of range (the file has {len(points)} vertices)",
@@ -280,3 +225,71 @@ def _read_obj_lines(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
         )
     return points, faces
 
+
+def _obj_lines(text: bytes) -> Iterator[tuple[int, list[bytes]]]:
+    """(1-based line, its words) of each OBJ line that has words: a line ending in ``\\``
+    continued onto the next, comments dropped."""
+    lines = text.splitlines()
+    lineno = 0
+    while lineno < len(lines):
+        raw = lines[lineno]
+        lineno += 1
+        start = lineno
+        while raw.endswith(b"\\") and lineno < len(lines):  # a continued line
+            raw = raw[:-1] + b" " + lines[lineno]
+            lineno += 1
+        parts = raw.split(b"#", 1)[0].split()
+        if parts:
+            yield start, parts
+
+
+def _face_indices(name: str, parts: list[bytes], start: int, n_now: int,
+                  huge: list[tuple[bytes, int]]) -> list[int]:
+    """The 0-based vertex indices of the face line ``parts`` (line ``start``, ``n_now``
+    vertices defined before it); an index too large for int64 is kept as ``_BIG_INDEX``
+    and the first such one noted in ``huge``."""
+    if len(parts) < 4:
+        raise MeshFileError(name, "face needs at least 3 vertices", start)
+    if len(parts) - 1 > MAX_FACE_CORNERS:
+        raise MeshFileError(name, f"a face of {len(parts) - 1} corners; faces have at most "
+                            f"{MAX_FACE_CORNERS}", start)
+    idx = []
+    for item in parts[1:]:
+        head = item.split(b"/", 1)[0]
+        if not (head.isdigit() or _INDEX.fullmatch(head)):  # not int()'s '1_0'
+            raise MeshFileError(name, f"bad face index '{cut(item.decode('ascii', 'replace'))}'", start)
+        i = int(head)
+        if i == 0:
+            raise MeshFileError(name, "face index 0 (obj indices start at 1)", start)
+        if i < 0:
+            i += n_now  # relative: -1 is the latest vertex so far
+            if i < 0:
+                raise MeshFileError(name, f"face index {cut(head.decode())} is out of range "
+                                    f"({n_now} vertices defined so far)", start)
+        else:
+            i -= 1
+            if i >= _BIG_INDEX:  # far out of range: keep int64 arithmetic
+                if not huge:
+                    huge.append((head, start))
+                i = _BIG_INDEX
+        idx.append(i)
+    return idx
+
+
+def _vertex_array(name: str, verts: list[list[bytes]], vert_lines: list[int]) -> np.ndarray:
+    """The vertices' coordinates (texts) as numbers; the first that is not one located."""
+    try:
+        if any(odd_number(t) for row in verts for t in row):
+            raise ValueError  # a Python-only spelling such as 1_000: say where
+        return np.array(verts, dtype=np.float64)
+    except ValueError:
+        for row, lineno in zip(verts, vert_lines):
+            for t in row:
+                try:
+                    if odd_number(t):
+                        raise ValueError
+                    float(t)
+                except ValueError:
+                    got = cut(t.decode("ascii", "replace"))
+                    raise MeshFileError(name, f"'{got}' is not a number", lineno) from None
+        raise  # pragma: no cover

@@ -1,7 +1,7 @@
 """The STL reader (binary and ASCII): a file's triangles welded into an indexed mesh.
 
 The ASCII text is read in blocks of whole facets, tokenised with numpy and its numbers read
-by :func:`rbcli.io.meshnumbers.floats`, each block's repeated ``vertex`` texts only once;
+by :func:`rbcli.io.meshbase.numbers`, each block's repeated ``vertex`` texts only once;
 the token-by-token reader (:func:`_read_stl_ascii`) is kept to say where a file the fast
 path refuses is wrong, and to read the unusual layouts it leaves to it. The numbers are
 the same bits either way, which the tests check.
@@ -14,8 +14,7 @@ import re
 
 import numpy as np
 
-from rbcli.io import meshnumbers
-from rbcli.io.meshbase import MeshFileError, line_of, odd_number, read_all
+from rbcli.io.meshbase import MeshFileError, line_of, numbers, odd_number, read_all
 from rbcli.io.meshweld import distinct_spans, join_ranges, weld_blocks, weld_points
 
 # One binary STL record: normal (ignored), three vertices, "attribute byte count".
@@ -221,7 +220,7 @@ def _facets_of(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     del starts, ends
     first, inverse = distinct_spans(a, lo, hi)
     # each distinct corner's text with the whitespace byte after it
-    values = meshnumbers.floats(join_ranges(a, lo[first], hi[first] + 1))
+    values = numbers(join_ranges(a, lo[first], hi[first] + 1))
     if values is None or values.size != 3 * first.size or not np.isfinite(values).all():
         return None
     return values.reshape(-1, 3), inverse

@@ -15,19 +15,11 @@ a digit, ``g0``, is that unit).
 
 from __future__ import annotations
 
+import difflib
 import re
+from fractions import Fraction
 
-from rbcli._startup import LazyRe
-from rbcli.io.unittable import (
-    BY_NAME,
-    NAME_RE,
-    Dim,
-    Rational,
-    UnitError,
-    exact_decimal,
-    known_units,
-    lookup,
-)
+from rbcli.io.unittable import BY_NAME, NAME_RE, Dim, UnitError, known_units, lookup
 
 # --------------------------------------------------------------------------- parsing
 
@@ -38,17 +30,17 @@ _MAX_EXPONENT = 12  # largest |n| in a written unit power
 _MAX_UNIT_POWER = 12
 _MAX_DECIMAL_EXPONENT = 400  # largest |e| in a number's exponent (floats stop at ~308)
 
-_NUMBER_RE = LazyRe(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
-_NONFINITE_RE = LazyRe(r"[+\-\u2212]?(?:inf(?:inity)?|nan)(?![A-Za-z0-9_])", re.IGNORECASE)
+_NUMBER_RE = re.compile(r"[+\-\u2212]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-\u2212]?\d+)?")
+_NONFINITE_RE = re.compile(r"[+\-\u2212]?(?:inf(?:inity)?|nan)(?![A-Za-z0-9_])", re.IGNORECASE)
 # 'r/min' is rpm, unless a power follows ('r/min^2' would be ambiguous)
-_RMIN_RE = LazyRe(
+_RMIN_RE = re.compile(
     r"(?<![A-Za-z0-9_µμ])r/min(?![A-Za-z0-9_µμ])(?!\s*(?:\^|\*\*|[⁻⁰¹²³⁴-⁹]))"
 )
 _SUPER = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
 _SUPER_CHARS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺"
 #: what may not follow an abbreviation's point for the point to be part of the name
-_NAME_ON = LazyRe(r"[A-Za-z0-9_µμ.]")
-_INT_RE = LazyRe(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
+_NAME_ON = re.compile(r"[A-Za-z0-9_µμ.]")
+_INT_RE = re.compile(r"\s*(?:\(\s*([+\-\u2212]?\d+)\s*\)|([+\-\u2212]?\d+))")
 
 
 def _suggest(name: str) -> list[str]:
@@ -56,8 +48,6 @@ def _suggest(name: str) -> list[str]:
     same_case = [u for u in known if u.lower() == name.lower()]
     if same_case:
         return same_case[:3]
-    import difflib  # only on the error path
-
     lowered: dict[str, str] = {}
     for u in known:
         lowered.setdefault(u.lower(), u)
@@ -95,7 +85,7 @@ class _UnitParser:
         self.skip_ws()
         return self.s[self.i] if self.i < len(self.s) else ""
 
-    def parse(self) -> tuple[Rational, int, Dim]:
+    def parse(self) -> tuple[Fraction, int, Dim]:
         self.skip_ws()
         if self.i >= len(self.s):
             raise UnitError(f"no unit in '{self.whole}'; write a unit such as m, kg, s, deg")
@@ -114,8 +104,8 @@ class _UnitParser:
     # only at the end, from exponents that are known to be small. So nested powers such
     # as '((mm^12)^12)^12' are refused at once instead of building huge fractions.
 
-    def expand(self, powers: dict[str, int]) -> tuple[Rational, int, Dim]:
-        q, p, d = Rational(1), 0, Dim()
+    def expand(self, powers: dict[str, int]) -> tuple[Fraction, int, Dim]:
+        q, p, d = Fraction(1), 0, Dim()
         for name, n in powers.items():
             if n:
                 unit = BY_NAME[name]
@@ -239,34 +229,22 @@ def check_text(text: object, what: str) -> str:
     return text
 
 
-def parse_unit_exact(text: str, whole: str | None = None) -> tuple[Rational, int, Dim]:
-    unit = BY_NAME.get(text)
-    if unit is not None and "/" not in text:
-        # a bare name of the table ('mm', 'kg', '°'): what the parser returns for it (one
-        # name to the power 1, no 'r/min' to rewrite), without reading it character by
-        # character (the loader's units: block is mostly such names)
-        return unit.q, unit.pi, unit.dim
+def parse_unit_exact(text: str, whole: str | None = None) -> tuple[Fraction, int, Dim]:
     return _UnitParser(text, text if whole is None else whole).parse()
 
 
 def plain_decimal(s: str) -> bool:
     """``s`` is a plain decimal number and nothing else: an optional ``+``/``-``, ASCII
-    digits with at most one ``.``, at least one digit (``"150"``, ``"-9.81"``, ``".5"``).
-
-    Every such text is a whole number for :data:`_NUMBER_RE` here and for
-    ``rbcli.api.options.NUMBER`` (which this lets a command skip compiling); any other text
-    (an exponent, a unit, ``−``, other digits) goes to those patterns as before."""
+    digits with at most one ``.``, at least one digit (``"150"``, ``"-9.81"``, ``".5"``)."""
     body = s[1:] if s[:1] in ("+", "-") else s
     digits = body.replace(".", "", 1)
     return digits.isascii() and digits.isdigit()
 
 
-def parse_quantity_exact(text: str) -> tuple[Rational, Rational, int, Dim, bool]:
+def parse_quantity_exact(text: str) -> tuple[Fraction, Fraction, int, Dim, bool]:
     """(number, unit rational, unit pi power, dim, has_unit)."""
     text = check_text(text, "a quantity")
     s = text.strip()
-    if len(s) <= 100 and plain_decimal(s):  # what the general path returns for it
-        return exact_decimal(s), Rational(1), 0, Dim(), False
     if not s:
         raise UnitError("empty quantity; write a number, with a unit where one is needed, "
                         "e.g. '30 cm'")
@@ -286,7 +264,7 @@ def parse_quantity_exact(text: str) -> tuple[Rational, Rational, int, Dim, bool]
         )
     if len(mantissa) > 100:
         raise UnitError(f"the number in '{text}' has too many digits (at most 100)")
-    number = exact_decimal(num_text)
+    number = Fraction(num_text)
     rest = s[m.end() :]
     if rest.startswith((",", "_")):
         raise UnitError(
@@ -294,10 +272,6 @@ def parse_quantity_exact(text: str) -> tuple[Rational, Rational, int, Dim, bool]
             "thousands separators"
         )
     if not rest.strip():
-        return number, Rational(1), 0, Dim(), False
+        return number, Fraction(1), 0, Dim(), False
     q, p, d = parse_unit_exact(rest, whole=text)
     return number, q, p, d, True
-
-
-#: parsed quantity texts are cached (issue 16): a body file repeats its few unit strings
-#: ("7850 kg/m^3") thousands of times, and the exact parse costs 10-20 µs each

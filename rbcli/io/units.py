@@ -14,6 +14,7 @@ its unit is rounded to a float once, at the very end, so ``"7.85 g/cm^3"`` gives
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from functools import lru_cache
 
 from rbcli.io.unitparse import check_text, parse_quantity_exact, parse_unit_exact, plain_decimal
@@ -26,7 +27,6 @@ from rbcli.io.unittable import (
     KINDS,
     NAME_RE,
     Dim,
-    Rational,
     UnitError,
     compose,
     format_unit_table,
@@ -221,20 +221,6 @@ def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     ValueError
         ``kind`` is not a known kind (a programming error).
     """
-    try:  # cached (issue 16): a batch of files repeats one `units:` block
-        items = tuple(base_units.items())
-        hash(items)
-    except TypeError:  # a value that is not a unit text: the uncached path says what is wrong
-        return _unit_for_kind(base_units, kind)
-    return _unit_for_kind_cached(items, kind)
-
-
-@lru_cache(maxsize=256)
-def _unit_for_kind_cached(items: tuple[tuple[str, str], ...], kind: str) -> tuple[float, str]:
-    return _unit_for_kind(dict(items), kind)
-
-
-def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     speed = base_units.get("angular_speed")
@@ -256,10 +242,10 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
         base_units = {k: v for k, v in base_units.items() if k != "angular_speed"}
     if kind == "angular_speed":
         return 1.0, "rad/s"
-    exact: dict[str, tuple[Rational, int]] = {}
+    exact: dict[str, tuple[Fraction, int]] = {}
     texts: dict[str, str] = {}
     for key, default in BASE_DEFAULTS.items():
-        exact[BASE_KEYS[key]] = (Rational(1), 0)
+        exact[BASE_KEYS[key]] = (Fraction(1), 0)
         texts[BASE_KEYS[key]] = default
     for key, value in base_units.items():
         if key not in BASE_KEYS:
@@ -287,7 +273,7 @@ def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
         exact[BASE_KEYS[key]] = (q, p)
         texts[BASE_KEYS[key]] = canonical_unit(text)
     dim = KINDS[kind]
-    q, p = Rational(1), 0
+    q, p = Fraction(1), 0
     for attr, _word in DIM_ORDER:
         e = getattr(dim, attr)
         if e:

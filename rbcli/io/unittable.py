@@ -7,10 +7,9 @@ is a dimension of its own, not "dimensionless": ``"12 deg"`` is an angle, ``"rpm
 taken for an angular speed (pint, which treats the radian as dimensionless, converts
 ``1 Hz`` to ``1 rad/s`` without a word).
 
-Every unit's factor to SI (m, kg, s, rad) is held exactly, as a rational number
-(:class:`Rational`, what rbcli needs of :class:`fractions.Fraction`) times an integer power of
-pi (``deg = pi/180``, ``rpm = 2 pi / 60``); :func:`to_float` rounds such a factor to a
-float once, with pi taken to 60 digits.
+Every unit's factor to SI (m, kg, s, rad) is held exactly, as a
+:class:`fractions.Fraction` times an integer power of pi (``deg = pi/180``, ``rpm = 2 pi /
+60``); :func:`to_float` rounds such a factor to a float once, with pi taken to 60 digits.
 
 Names are matched exactly first; a name that is not in the table is matched ignoring
 case only when exactly one unit matches that way and the change of case cannot turn an
@@ -23,88 +22,9 @@ nano). There is no general SI-prefix machinery, only the explicit entries of the
 
 from __future__ import annotations
 
-import math
+import re
+from fractions import Fraction
 from typing import NamedTuple
-
-from rbcli._startup import LazyRe
-
-# --------------------------------------------------------------------------- exact numbers
-
-
-class Rational:
-    """An exact rational number ``numerator/denominator`` in lowest terms, denominator > 0.
-
-    What this module needs of :class:`fractions.Fraction` (``*``, ``/``, ``**`` an int,
-    ``float()``, ``numerator``/``denominator``, ``==``), with the same values: ``float()``
-    is ``numerator / denominator``, Python's correctly rounded integer division, as
-    ``Fraction.__float__``. It exists because ``import fractions`` (which imports
-    ``decimal``) cost ~1.5 ms of every command's start-up (issue 16).
-    """
-
-    __slots__ = ("numerator", "denominator")
-
-    def __init__(self, numerator: int, denominator: int = 1) -> None:
-        if denominator == 0:
-            raise ZeroDivisionError(f"Rational({numerator}, 0)")
-        if denominator < 0:
-            numerator, denominator = -numerator, -denominator
-        g = math.gcd(numerator, denominator)
-        if g != 1:
-            numerator //= g
-            denominator //= g
-        self.numerator = numerator
-        self.denominator = denominator
-
-    def __mul__(self, other: Rational | int) -> Rational:
-        if isinstance(other, int):
-            return Rational(self.numerator * other, self.denominator)
-        return Rational(self.numerator * other.numerator, self.denominator * other.denominator)
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, other: Rational | int) -> Rational:
-        if isinstance(other, int):
-            return Rational(self.numerator, self.denominator * other)
-        return Rational(self.numerator * other.denominator, self.denominator * other.numerator)
-
-    def __pow__(self, n: int) -> Rational:
-        if n >= 0:
-            return Rational(self.numerator**n, self.denominator**n)
-        return Rational(self.denominator ** (-n), self.numerator ** (-n))
-
-    def __float__(self) -> float:
-        return self.numerator / self.denominator
-
-    def __eq__(self, other: object) -> bool:
-        if isinstance(other, int):
-            return self.denominator == 1 and self.numerator == other
-        if isinstance(other, Rational):
-            return self.numerator == other.numerator and self.denominator == other.denominator
-        return NotImplemented
-
-    def __hash__(self) -> int:
-        return hash((self.numerator, self.denominator))
-
-    def __repr__(self) -> str:
-        return f"Rational({self.numerator}, {self.denominator})"
-
-
-def exact_decimal(text: str) -> Rational:
-    """The exact value of a decimal literal (``"-7.85"``, ``".5"``, ``"1e-3"``; digits and an
-    optional sign, point and exponent, as :data:`_NUMBER_RE` matches them), as
-    ``Fraction(text)`` reads it."""
-    mantissa, _, exp = text.replace("E", "e").partition("e")
-    sign = -1 if mantissa.startswith("-") else 1
-    whole, _, frac = mantissa.lstrip("+-").partition(".")
-    n = sign * int((whole + frac) or "0")
-    e = (int(exp) if exp else 0) - len(frac)
-    return Rational(n * 10**e) if e >= 0 else Rational(n, 10 ** (-e))
-
-
-def _F(value: int | str, denominator: int = 1) -> Rational:
-    """A table constant: ``_F(1, 1000)``, ``_F("0.0254")``."""
-    return exact_decimal(value) if isinstance(value, str) else Rational(value, denominator)
-
 
 # --------------------------------------------------------------------------- dimensions
 
@@ -271,14 +191,14 @@ def noun_for_kind(kind: str) -> str:
 
 # pi to 60 decimals: enough that rounding q * pi^k to a float is the correctly rounded
 # value (the error, ~1e-60 relative, is far below half an ulp, 1.1e-16).
-_PI = _F("3.141592653589793238462643383279502884197169399375105820974944")
+_PI = Fraction("3.141592653589793238462643383279502884197169399375105820974944")
 
 class _Unit:
     """A row of the unit table (a plain class: a NamedTuple costs start-up to create)."""
 
     __slots__ = ("names", "q", "pi", "dim", "note")
 
-    def __init__(self, names: tuple[str, ...], q: Rational, pi: int, dim: Dim, note: str) -> None:
+    def __init__(self, names: tuple[str, ...], q: Fraction, pi: int, dim: Dim, note: str) -> None:
         self.names = names  # canonical name first, then aliases
         self.q = q  # rational part of the factor to SI
         self.pi = pi  # power of pi in the factor to SI
@@ -286,64 +206,64 @@ class _Unit:
         self.note = note  # what it is, for the table
 
 
-_IN = _F("0.0254")
-_LB = _F("0.45359237")
-_GN = _F("9.80665")
+_IN = Fraction("0.0254")
+_LB = Fraction("0.45359237")
+_GN = Fraction("9.80665")
 
 _UNITS: tuple[_Unit, ...] = (
     # length
-    _Unit(("m",), _F(1), 0, Dim(L=1), "metre"),
-    _Unit(("mm",), _F(1, 1000), 0, Dim(L=1), "millimetre"),
-    _Unit(("cm",), _F(1, 100), 0, Dim(L=1), "centimetre"),
-    _Unit(("dm",), _F(1, 10), 0, Dim(L=1), "decimetre"),
-    _Unit(("km",), _F(1000), 0, Dim(L=1), "kilometre"),
-    _Unit(("um", "µm", "μm"), _F(1, 10**6), 0, Dim(L=1), "micrometre"),
-    _Unit(("nm",), _F(1, 10**9), 0, Dim(L=1), "nanometre"),
+    _Unit(("m",), Fraction(1), 0, Dim(L=1), "metre"),
+    _Unit(("mm",), Fraction(1, 1000), 0, Dim(L=1), "millimetre"),
+    _Unit(("cm",), Fraction(1, 100), 0, Dim(L=1), "centimetre"),
+    _Unit(("dm",), Fraction(1, 10), 0, Dim(L=1), "decimetre"),
+    _Unit(("km",), Fraction(1000), 0, Dim(L=1), "kilometre"),
+    _Unit(("um", "µm", "μm"), Fraction(1, 10**6), 0, Dim(L=1), "micrometre"),
+    _Unit(("nm",), Fraction(1, 10**9), 0, Dim(L=1), "nanometre"),
     _Unit(("in", "inch", "inches", "in."), _IN, 0, Dim(L=1), "inch, exactly 0.0254 m"),
     _Unit(("ft", "foot", "feet"), 12 * _IN, 0, Dim(L=1), "foot, 12 in"),
     _Unit(("yd",), 36 * _IN, 0, Dim(L=1), "yard, 3 ft"),
     _Unit(("mi",), 5280 * 12 * _IN, 0, Dim(L=1), "statute mile, 5280 ft"),
     _Unit(("mil", "thou"), _IN / 1000, 0, Dim(L=1), "thousandth of an inch, 25.4 um"),
     # mass
-    _Unit(("kg",), _F(1), 0, Dim(M=1), "kilogram"),
-    _Unit(("g",), _F(1, 1000), 0, Dim(M=1), "gram"),
-    _Unit(("mg",), _F(1, 10**6), 0, Dim(M=1), "milligram"),
-    _Unit(("t", "tonne"), _F(1000), 0, Dim(M=1), "tonne (metric ton)"),
+    _Unit(("kg",), Fraction(1), 0, Dim(M=1), "kilogram"),
+    _Unit(("g",), Fraction(1, 1000), 0, Dim(M=1), "gram"),
+    _Unit(("mg",), Fraction(1, 10**6), 0, Dim(M=1), "milligram"),
+    _Unit(("t", "tonne"), Fraction(1000), 0, Dim(M=1), "tonne (metric ton)"),
     _Unit(("lb", "lbm", "lbs", "pound", "pounds"), _LB, 0, Dim(M=1),
           "avoirdupois pound, exactly 0.45359237 kg"),
     _Unit(("slug",), _LB * _GN / (12 * _IN), 0, Dim(M=1), "slug, lbf*s^2/ft"),
     _Unit(("oz",), _LB / 16, 0, Dim(M=1), "avoirdupois ounce, lb/16"),
     # volume
-    _Unit(("cc",), _F(1, 10**6), 0, Dim(L=3), "cubic centimetre, cm^3"),
+    _Unit(("cc",), Fraction(1, 10**6), 0, Dim(L=3), "cubic centimetre, cm^3"),
     # time
-    _Unit(("s",), _F(1), 0, Dim(T=1), "second"),
-    _Unit(("ms",), _F(1, 1000), 0, Dim(T=1), "millisecond"),
-    _Unit(("min",), _F(60), 0, Dim(T=1), "minute"),
-    _Unit(("h",), _F(3600), 0, Dim(T=1), "hour"),
-    _Unit(("d", "day"), _F(86400), 0, Dim(T=1), "day (86 400 s)"),
+    _Unit(("s",), Fraction(1), 0, Dim(T=1), "second"),
+    _Unit(("ms",), Fraction(1, 1000), 0, Dim(T=1), "millisecond"),
+    _Unit(("min",), Fraction(60), 0, Dim(T=1), "minute"),
+    _Unit(("h",), Fraction(3600), 0, Dim(T=1), "hour"),
+    _Unit(("d", "day"), Fraction(86400), 0, Dim(T=1), "day (86 400 s)"),
     # angle
-    _Unit(("rad",), _F(1), 0, Dim(A=1), "radian"),
-    _Unit(("mrad",), _F(1, 1000), 0, Dim(A=1), "milliradian"),
-    _Unit(("deg", "°"), _F(1, 180), 1, Dim(A=1), "degree, pi/180 rad"),
-    _Unit(("arcmin",), _F(1, 180 * 60), 1, Dim(A=1), "minute of arc, deg/60"),
-    _Unit(("arcsec",), _F(1, 180 * 3600), 1, Dim(A=1), "second of arc, deg/3600"),
-    _Unit(("rev", "turn"), _F(2), 1, Dim(A=1), "revolution, 2 pi rad"),
+    _Unit(("rad",), Fraction(1), 0, Dim(A=1), "radian"),
+    _Unit(("mrad",), Fraction(1, 1000), 0, Dim(A=1), "milliradian"),
+    _Unit(("deg", "°"), Fraction(1, 180), 1, Dim(A=1), "degree, pi/180 rad"),
+    _Unit(("arcmin",), Fraction(1, 180 * 60), 1, Dim(A=1), "minute of arc, deg/60"),
+    _Unit(("arcsec",), Fraction(1, 180 * 3600), 1, Dim(A=1), "second of arc, deg/3600"),
+    _Unit(("rev", "turn"), Fraction(2), 1, Dim(A=1), "revolution, 2 pi rad"),
     # speed
     _Unit(("mph",), 5280 * 12 * _IN / 3600, 0, Dim(L=1, T=-1), "mile per hour, 0.44704 m/s"),
     # angular speed
-    _Unit(("rpm", "r/min"), _F(2, 60), 1, Dim(A=1, T=-1), "revolution per minute, rev/min"),
+    _Unit(("rpm", "r/min"), Fraction(2, 60), 1, Dim(A=1, T=-1), "revolution per minute, rev/min"),
     # frequency (1/time: NOT an angular speed)
-    _Unit(("Hz",), _F(1), 0, Dim(T=-1), "hertz, 1/s (a frequency, not an angular speed)"),
-    _Unit(("kHz",), _F(1000), 0, Dim(T=-1), "kilohertz, 1000/s"),
+    _Unit(("Hz",), Fraction(1), 0, Dim(T=-1), "hertz, 1/s (a frequency, not an angular speed)"),
+    _Unit(("kHz",), Fraction(1000), 0, Dim(T=-1), "kilohertz, 1000/s"),
     # acceleration
     _Unit(("g0",), _GN, 0, Dim(L=1, T=-2), "standard gravity, exactly 9.80665 m/s^2"),
     # force
-    _Unit(("N",), _F(1), 0, Dim(M=1, L=1, T=-2), "newton, kg*m/s^2"),
-    _Unit(("kN",), _F(1000), 0, Dim(M=1, L=1, T=-2), "kilonewton"),
+    _Unit(("N",), Fraction(1), 0, Dim(M=1, L=1, T=-2), "newton, kg*m/s^2"),
+    _Unit(("kN",), Fraction(1000), 0, Dim(M=1, L=1, T=-2), "kilonewton"),
     _Unit(("lbf",), _LB * _GN, 0, Dim(M=1, L=1, T=-2), "pound-force, lb*g0"),
     _Unit(("kgf",), _GN, 0, Dim(M=1, L=1, T=-2), "kilogram-force, kg*g0"),
     # energy
-    _Unit(("J",), _F(1), 0, Dim(M=1, L=2, T=-2), "joule, N*m"),
+    _Unit(("J",), Fraction(1), 0, Dim(M=1, L=2, T=-2), "joule, N*m"),
 )
 
 BY_NAME: dict[str, _Unit] = {name: u for u in _UNITS for name in u.names}
@@ -352,7 +272,7 @@ BY_NAME: dict[str, _Unit] = {name: u for u in _UNITS for name in u.names}
 #: zetta/zepto, yotta/yocto, pico, nano/newton, femto, atto; joule): a name typed with
 #: such a letter in the other case is never read as the table's unit
 _CASE_SENSITIVE_FIRST = set("MmGTPEZzYyNnpfaJ")
-_POWER_SUFFIX_RE = LazyRe(r"(.*?[^\d])([1-9]\d*)")
+_POWER_SUFFIX_RE = re.compile(r"(.*?[^\d])([1-9]\d*)")
 
 
 def _folded(name: str) -> _Unit | None:
@@ -384,9 +304,9 @@ def lookup(name: str) -> tuple[_Unit, int] | None:
     return None
 
 #: a unit name: a letter, then letters, digits or underscores (or the degree sign)
-NAME_RE = LazyRe(r"[A-Za-zµμ][A-Za-z0-9_µμ]*|°")
+NAME_RE = re.compile(r"[A-Za-zµμ][A-Za-z0-9_µμ]*|°")
 
-def to_float(q: Rational, pi: int, text: str = "") -> float:
+def to_float(q: Fraction, pi: int, text: str = "") -> float:
     """Round ``q * pi**pi`` to the nearest float, once."""
     exact = q * _PI**pi if pi else q
     try:
@@ -412,7 +332,7 @@ def _si_unit_text(dim: Dim) -> str:
     return text.replace("1/s", "s^-1") if text.startswith("1/") else text
 
 
-def _exact_text(q: Rational, pi: int) -> str:
+def _exact_text(q: Fraction, pi: int) -> str:
     parts = []
     if q.numerator != 1 or pi == 0:
         parts.append(str(q.numerator))
@@ -455,8 +375,8 @@ BASE_DEFAULTS = {"length": "m", "mass": "kg", "time": "s", "angle": "deg"}
 
 
 def _is_name(text: str) -> bool:
-    """``text`` is one unit name (no parentheses needed around it); a name of the table is
-    known to be one without compiling :data:`NAME_RE` (tests/test_io_units.py checks)."""
+    """``text`` is one unit name (no parentheses needed around it): a name of the table
+    (``in.`` too) or what :data:`NAME_RE` reads as one."""
     return (text in BY_NAME and "/" not in text) or NAME_RE.fullmatch(text) is not None
 
 

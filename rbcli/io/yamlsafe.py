@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import FrozenInstanceError
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import yaml
 from yaml.reader import ReaderError
@@ -70,11 +70,8 @@ _EMPTY = "the file is empty; a body needs `parts:` or a single part"
 
 
 class Mark(NamedTuple):
-    """Where a node starts: 1-based line and column (columns count characters).
-
-    A named tuple, so that the loader makes millions of them cheaply; it equals only
-    another :class:`Mark` (never a plain tuple), as a dataclass would.
-    """
+    """Where a node starts: 1-based line and column (columns count characters). It equals
+    only another :class:`Mark` (never a plain tuple), as a dataclass would."""
 
     line: int
     col: int
@@ -83,14 +80,12 @@ class Mark(NamedTuple):
         return f"{self.line}:{self.col}"
 
     def __eq__(self, other: object) -> bool:
-        if type(other) is Mark:
-            return tuple.__eq__(self, other)
+        if isinstance(other, Mark):
+            return tuple(self) == tuple(other)
         return False if isinstance(other, tuple) else NotImplemented
 
     def __ne__(self, other: object) -> bool:
-        if type(other) is Mark:
-            return tuple.__ne__(self, other)
-        return True if isinstance(other, tuple) else NotImplemented
+        return not self == other
 
     __hash__ = tuple.__hash__
 
@@ -101,27 +96,23 @@ class Node:
     ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
     ``"bool"``, ``"null"``.
 
-    The loader stores the node's 0-based start as one integer, ``line << 32 | column``
-    (not an object the cyclic garbage collector would track: a large body's tree holds
-    millions), and ``.mark`` turns it into a :class:`Mark` when first read: most marks are
-    never read (they locate errors), and making two million of them up front was a tenth
-    of the load time of a 100 000-part body. The constructors take either form: a
-    :class:`Mark`, or that integer (as :mod:`rbcli.io.yamlplain` gives it).
+    A node keeps where it starts as given: a :class:`Mark` (or a
+    :class:`rbcli.io.loadctx.DataMark` in a tree made from Python data), or the loader's
+    0-based ``line << 32 | column`` (an int, which the garbage collector does not track: a
+    large body's tree holds millions of nodes, and most marks are never read — they locate
+    errors), which ``.mark`` gives as the 1-based :class:`Mark`.
     """
 
     __slots__ = ("_mark",)
 
     def __init__(self, mark: Mark | int) -> None:
-        _set_mark(self, mark)
+        object.__setattr__(self, "_mark", mark)
 
     @property
     def mark(self) -> Mark:
         """Where the node starts (1-based line and column)."""
         m = self._mark
-        if m.__class__ is int:  # as the loader keeps it: line << 32 | column, 0-based
-            m = _new_tuple(Mark, ((m >> 32) + 1, (m & 0xFFFFFFFF) + 1))
-            _set_mark(self, m)
-        return m
+        return Mark((m >> 32) + 1, (m & 0xFFFFFFFF) + 1) if isinstance(m, int) else m
 
     @property
     def tag(self) -> str:  # pragma: no cover - every subclass overrides it
@@ -137,9 +128,9 @@ class Node:
         raise FrozenInstanceError(f"cannot delete field {name!r}")
 
     def __eq__(self, other: object) -> bool:
-        if other.__class__ is self.__class__:
-            return self._fields() == other._fields()  # type: ignore[attr-defined]
-        return NotImplemented
+        if type(other) is not type(self):
+            return NotImplemented
+        return self._fields() == other._fields()  # type: ignore[attr-defined]
 
     def __hash__(self) -> int:
         return hash(self._fields())
@@ -165,10 +156,10 @@ class ScalarNode(Node):
     def __init__(
         self, mark: Mark | int, value: str | int | float | bool | None, raw: str, quoted: bool
     ) -> None:
-        _set_mark(self, mark)
-        _set_value(self, value)
-        _set_raw(self, raw)
-        _set_quoted(self, quoted)
+        object.__setattr__(self, "_mark", mark)
+        object.__setattr__(self, "value", value)
+        object.__setattr__(self, "raw", raw)
+        object.__setattr__(self, "quoted", quoted)
 
     def _fields(self) -> tuple:
         return (self.mark, self.value, self.raw, self.quoted)
@@ -200,8 +191,8 @@ class MapNode(Node):
     items: dict[str, tuple[Mark, Node]]
 
     def __init__(self, mark: Mark | int, items: dict[str, tuple[Mark, Node]]) -> None:
-        _set_mark(self, mark)
-        _set_map_items(self, items)
+        object.__setattr__(self, "_mark", mark)
+        object.__setattr__(self, "items", items)
 
     def _fields(self) -> tuple:
         return (self.mark, self.items)
@@ -222,8 +213,8 @@ class SeqNode(Node):
     items: list[Node]
 
     def __init__(self, mark: Mark | int, items: list[Node]) -> None:
-        _set_mark(self, mark)
-        _set_seq_items(self, items)
+        object.__setattr__(self, "_mark", mark)
+        object.__setattr__(self, "items", items)
 
     def _fields(self) -> tuple:
         return (self.mark, self.items)
@@ -234,16 +225,6 @@ class SeqNode(Node):
 
     def __repr__(self) -> str:
         return f"SeqNode({len(self.items)} items at {self.mark})"
-
-
-# The loader makes nodes by the million: it sets their slots directly (as the
-# constructors do; the frozen classes refuse ``setattr``).
-_set_mark = Node.__dict__["_mark"].__set__
-_set_value = ScalarNode.__dict__["value"].__set__
-_set_raw = ScalarNode.__dict__["raw"].__set__
-_set_quoted = ScalarNode.__dict__["quoted"].__set__
-_set_map_items = MapNode.__dict__["items"].__set__
-_set_seq_items = SeqNode.__dict__["items"].__set__
 
 
 def where(filename: str, mark: Mark) -> Location:
@@ -277,11 +258,11 @@ def _mark_of_prefix(prefix: str) -> Mark:
     return Mark(line, len(prefix) - last_end + 1)
 
 
-def _yaml_mark(mark: object | None) -> Mark:
-    """A yaml Mark (0-based line/column) as a 1-based :class:`Mark`."""
+def _yaml_mark(mark: Any) -> Mark:
+    """A yaml Mark (0-based line/column; PyYAML's or libyaml's) or None as a 1-based :class:`Mark`."""
     if mark is None:
         return Mark(1, 1)
-    return Mark(int(getattr(mark, "line", 0)) + 1, int(getattr(mark, "column", 0)) + 1)
+    return Mark(mark.line + 1, mark.column + 1)
 
 
 def _error(message: str, filename: str, mark: Mark) -> InputError:
@@ -414,10 +395,11 @@ _NAN = re.compile(r"\.nan|\.NaN|\.NAN")
 # Every non-string of the core schema starts with one of these (or is empty).
 _NUM_START = frozenset("+-.0123456789")
 _MAYBE_NOT_STR = _WORD_START | _NUM_START
-_DECIMAL_CHARS = "0123456789.eE+-"  # the characters of the core schema's decimal numbers
 
 
-def _int(digits: str, base: int, filename: str, mark: Mark) -> int:
+def _int(digits: str, base: int, filename: str, mark: object) -> int:
+    """``int(digits, base)``, refused when it has too many digits; ``mark``: where the
+    scalar starts (a :class:`Mark`, or libyaml's own)."""
     count = len(digits.lstrip("+-"))
     if count <= _MAX_DIGITS:
         try:
@@ -427,12 +409,13 @@ def _int(digits: str, base: int, filename: str, mark: Mark) -> int:
     raise _error(
         f"number too long: {count} digits; numbers may have at most {_MAX_DIGITS} digits",
         filename,
-        mark,
+        mark if isinstance(mark, Mark) else _yaml_mark(mark),
     )
 
 
-def _resolve_plain(raw: str, filename: str, mark: Mark) -> str | int | float | bool | None:
-    """The value of a plain scalar by the YAML 1.2 core schema (spec §10.3.2)."""
+def _resolve_plain(raw: str, filename: str, mark: object) -> str | int | float | bool | None:
+    """The value of a plain scalar by the YAML 1.2 core schema (spec §10.3.2); ``mark``
+    (a :class:`Mark` or libyaml's) locates a number that is too long."""
     if not raw:
         return None
     first = raw[0]
@@ -521,24 +504,89 @@ def _duplicate_key(raw: str, first: Mark, filename: str, mark: Mark) -> InputErr
     )
 
 
-_SCALAR = yaml.ScalarEvent
-_MAP_START = yaml.MappingStartEvent
-_SEQ_START = yaml.SequenceStartEvent
-_MAP_END = yaml.MappingEndEvent
-_SEQ_END = yaml.SequenceEndEvent
-_DOC_START = yaml.DocumentStartEvent
-_ALIAS = yaml.AliasEvent
+def _start(event: yaml.Event) -> int:
+    """Where ``event`` starts, as a node keeps it (see :class:`Node`)."""
+    return event.start_mark.line << 32 | event.start_mark.column
 
-# Nodes and marks are made by the million (a 100 000-part body has ~2 million). A key's
-# Mark is made with tuple.__new__ (no Python-level __new__); a node is made with
-# object.__new__ and its slots set directly, its mark being libyaml's (see Node.mark).
-_new_tuple = tuple.__new__
-_new_object = object.__new__
 
-#: plain keys found to be names (:func:`_check_plain_key` depends on the text alone), kept
-#: across files: a batch of body files repeats the same few keys; emptied past the maximum
-_GOOD_KEYS: set[str] = set()
-_GOOD_KEYS_MAX = 4096
+class _Tree:
+    """The tree being built from libyaml's events: the open collection's ``items`` (a
+    mapping's dict or a list's list; at first ``top``, which receives the document's root)
+    and whether it is a mapping's; the enclosing ones wait on ``stack``. A mapping's key
+    waits in ``key`` for its value. ``cap`` is :func:`load`'s ``list_cap``."""
+
+    def __init__(self, filename: str, cap: tuple | None) -> None:
+        self.filename = filename
+        self.top: list[Node] = []
+        self.stack: list[tuple[dict | list, bool]] = []
+        self.items: dict[str, tuple[Mark, Node]] | list[Node] = self.top
+        self.in_map = False
+        self.key: str | None = None
+        self.key_mark: Mark | None = None
+        self.documents = 0
+        self.cap_key, self.cap_items, self.cap_error = cap if cap is not None else (None, 0, None)
+        self.capped: list | None = None  # the root mapping's list under cap_key, once open
+
+    def error(self, message: str, event: yaml.Event) -> InputError:
+        return _error(message, self.filename, _yaml_mark(event.start_mark))
+
+    def scalar(self, event: yaml.ScalarEvent) -> None:
+        if event.anchor is not None or event.tag is not None:
+            _check_node_event(event, self.filename)  # raises
+        raw = event.value
+        if self.in_map and self.key is None:
+            self.take_key(raw, bool(event.style), _yaml_mark(event.start_mark))
+        elif event.style:  # quoted or block: a string
+            self.add(ScalarNode(_start(event), raw, raw, True), event)
+        else:
+            value = _resolve_plain(raw, self.filename, event.start_mark)
+            self.add(ScalarNode(_start(event), value, raw, False), event)
+
+    def take_key(self, raw: str, quoted: bool, mark: Mark) -> None:
+        if not quoted:
+            _check_plain_key(raw, self.filename, mark)
+        if raw in self.items:
+            raise _duplicate_key(raw, self.items[raw][0], self.filename, mark)  # type: ignore[call-overload]
+        self.key, self.key_mark = raw, mark
+
+    def add(self, node: Node, event: yaml.Event) -> None:
+        """Put ``node`` in the open collection (under the waiting key of a mapping)."""
+        if self.in_map:
+            self.items[self.key] = (self.key_mark, node)  # type: ignore[index, call-overload]
+            self.key = None
+            return
+        if self.items is self.capped and len(self.items) >= self.cap_items:
+            self.top.clear()  # the tree goes now, not with the traceback
+            self.stack.clear()
+            self.items = self.capped = None  # type: ignore[assignment]
+            raise self.cap_error(_yaml_mark(event.start_mark))  # type: ignore[misc]
+        self.items.append(node)  # type: ignore[union-attr]
+
+    def open(self, event: yaml.CollectionStartEvent) -> None:
+        if event.anchor is not None or event.tag is not None:
+            _check_node_event(event, self.filename)  # raises
+        is_map = isinstance(event, yaml.MappingStartEvent)
+        if self.in_map and self.key is None:
+            what = "a mapping" if is_map else "a list"
+            raise self.error(f"keys must be names, not {what}; write `name: value`", event)
+        if len(self.stack) >= MAX_DEPTH:
+            raise self.error(f"nesting is too deep: more than {MAX_DEPTH} levels of lists and "
+                             f"mappings; body files allow at most {MAX_DEPTH}", event)
+        items: dict | list = {} if is_map else []
+        if self.in_map and self.key == self.cap_key and len(self.stack) == 1 and not is_map:
+            self.capped = items  # type: ignore[assignment]
+        self.add(MapNode(_start(event), items) if is_map else SeqNode(_start(event), items), event)
+        self.stack.append((self.items, self.in_map))
+        self.items, self.in_map = items, is_map
+
+    def close(self, event: yaml.CollectionEndEvent) -> None:  # noqa: ARG002
+        self.items, self.in_map = self.stack.pop()
+
+    def document(self, event: yaml.DocumentStartEvent) -> None:
+        self.documents += 1
+        if self.documents > 1:
+            raise self.error("more than one YAML document in the file (a second one starts "
+                             "here); a body file holds exactly one document", event)
 
 
 def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
@@ -547,168 +595,24 @@ def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
     Anchors, aliases, tags, nesting deeper than MAX_DEPTH and a second document are
     refused as soon as their event arrives, so a hostile file costs milliseconds and
     no recursive composer ever sees it. Returns None for a stream with no document.
-
     A mapping or sequence node is made (with its still empty dict or list) and put in
-    its parent when its start event arrives; its items are added as they come. The
-    state of the open collection lives in locals (``items``, ``in_map``, ``key``); the
-    enclosing ones wait on ``stack``. ``cap`` is :func:`load`'s ``list_cap``.
+    its parent when its start event arrives; its items are added as they come.
     """
     loader = _LOADER(text)
-    get_event = loader.get_event
-    top: list[Node] = []  # the document's root, once made
-    stack: list[tuple[dict[str, tuple[Mark, Node]] | list[Node], bool]] = []
-    items: dict[str, tuple[Mark, Node]] | list[Node] = top  # the open collection's items
-    in_map = False  # whether ``items`` is a mapping's
-    key: str | None = None  # the key awaiting its value (None: the mapping awaits a key)
-    key_mark: Mark | None = None
-    good_keys = _GOOD_KEYS  # plain keys already found to be names
-    if len(good_keys) > _GOOD_KEYS_MAX:
-        good_keys.clear()
-    documents = 0
-    max_depth = MAX_DEPTH
-    new_tuple = _new_tuple
-    new_object = _new_object
-    set_mark = _set_mark
-    set_value = _set_value
-    set_raw = _set_raw
-    set_quoted = _set_quoted
-    not_str = _MAYBE_NOT_STR
-    dec_chars = _DECIMAL_CHARS
-    max_digits = _MAX_DIGITS
-    resolve = _resolve_plain
-    scalar_event = _SCALAR
-    map_start = _MAP_START
-    seq_start = _SEQ_START
-    map_end = _MAP_END
-    seq_end = _SEQ_END
-    mark_class = Mark
-    scalar_class = ScalarNode
-    cap_key, cap_items, cap_error = cap if cap is not None else (None, 0, None)
-    capped: list | None = None  # the root mapping's list under cap_key, once open
+    tree = _Tree(filename, cap)
+    refuse = lambda event: _check_node_event(event, filename)  # noqa: E731 - an alias: raises
+    handle = {yaml.ScalarEvent: tree.scalar, yaml.MappingStartEvent: tree.open,
+              yaml.SequenceStartEvent: tree.open, yaml.MappingEndEvent: tree.close,
+              yaml.SequenceEndEvent: tree.close, yaml.AliasEvent: refuse,
+              yaml.DocumentStartEvent: tree.document}  # the others: stream and document ends
     try:
-        while True:
-            event = get_event()
-            kind = type(event)
-            if kind is scalar_event:
-                if event.anchor is not None or event.tag is not None:
-                    _check_node_event(event, filename)  # raises
-                start = event.start_mark
-                raw = event.value
-                if in_map and key is None:  # a key
-                    mark = new_tuple(mark_class, (start.line + 1, start.column + 1))
-                    if raw not in good_keys and not event.style:  # plain (None or "")
-                        _check_plain_key(raw, filename, mark)
-                        good_keys.add(raw)
-                    if raw in items:
-                        first = items[raw][0]  # type: ignore[call-overload]
-                        raise _duplicate_key(raw, first, filename, mark)
-                    key = raw
-                    key_mark = mark
-                    continue
-                node = new_object(scalar_class)
-                set_mark(node, start.line << 32 | start.column)  # a Mark when read (Node.mark)
-                if event.style:  # quoted or block: a string
-                    set_value(node, raw)
-                    set_quoted(node, True)
-                    set_raw(node, raw)
-                elif not raw or raw[0] not in not_str:  # plain: null, or a string at once
-                    set_value(node, raw if raw else None)
-                    set_quoted(node, False)
-                    set_raw(node, raw)
-                else:  # plain, maybe not a string: the core schema
-                    # Inline for the usual numbers: a scalar made of [0-9.eE+-] only (so
-                    # no null or bool word) is a float if it has a '.', 'e' or 'E' and
-                    # float() accepts it (over these characters float() accepts exactly
-                    # the core schema's float), else an int if int() accepts it ([-+]?
-                    # [0-9]+) and it is short; all else, and any scalar that float()/int()
-                    # refuse, goes through _resolve_plain.
-                    if not raw.strip(dec_chars):
-                        try:
-                            if "." in raw or "e" in raw or "E" in raw:
-                                value = float(raw)
-                            elif len(raw) <= max_digits:
-                                value = int(raw)
-                            else:
-                                value = resolve(raw, filename, _yaml_mark(start))
-                        except ValueError:
-                            value = resolve(raw, filename, _yaml_mark(start))
-                    else:
-                        value = resolve(raw, filename, _yaml_mark(start))
-                    set_value(node, value)
-                    set_quoted(node, False)
-                    set_raw(node, raw)
-                if in_map:
-                    items[key] = (key_mark, node)  # type: ignore[index, call-overload]
-                    key = None
-                else:
-                    if items is capped and len(items) >= cap_items:
-                        top.clear()  # the tree goes now, not with the traceback
-                        stack.clear()
-                        items = capped = None  # type: ignore[assignment]
-                        raise cap_error(_yaml_mark(start))  # type: ignore[misc]
-                    items.append(node)  # type: ignore[union-attr]
-            elif kind is map_end or kind is seq_end:
-                items, in_map = stack.pop()
-            elif kind is map_start or kind is seq_start:
-                if event.anchor is not None or event.tag is not None:
-                    _check_node_event(event, filename)  # raises
-                start = event.start_mark
-                if in_map and key is None:
-                    what = "a mapping" if kind is map_start else "a list"
-                    raise _error(
-                        f"keys must be names, not {what}; write `name: value`",
-                        filename,
-                        _yaml_mark(start),
-                    )
-                if len(stack) >= max_depth:
-                    raise _error(
-                        f"nesting is too deep: more than {max_depth} levels of lists and "
-                        f"mappings; body files allow at most {max_depth}",
-                        filename,
-                        _yaml_mark(start),
-                    )
-                new_items: dict[str, tuple[Mark, Node]] | list[Node]
-                if kind is map_start:
-                    new_items = {}
-                    node = new_object(MapNode)
-                    _set_map_items(node, new_items)
-                else:
-                    new_items = []
-                    node = new_object(SeqNode)
-                    _set_seq_items(node, new_items)
-                set_mark(node, start.line << 32 | start.column)  # (Node.mark)
-                if in_map:
-                    if key == cap_key and len(stack) == 1 and kind is seq_start:
-                        capped = new_items  # type: ignore[assignment]
-                    items[key] = (key_mark, node)  # type: ignore[index, call-overload]
-                    key = None
-                else:
-                    if items is capped and len(items) >= cap_items:
-                        top.clear()  # the tree goes now, not with the traceback
-                        stack.clear()
-                        items = capped = None  # type: ignore[assignment]
-                        raise cap_error(_yaml_mark(start))  # type: ignore[misc]
-                    items.append(node)  # type: ignore[union-attr]
-                stack.append((items, in_map))
-                items = new_items
-                in_map = kind is map_start
-            elif event is None:  # after the stream's end
-                break
-            elif kind is _ALIAS:
-                _check_node_event(event, filename)  # raises
-            elif kind is _DOC_START:
-                documents += 1
-                if documents > 1:
-                    raise _error(
-                        "more than one YAML document in the file (a second one starts "
-                        "here); a body file holds exactly one document",
-                        filename,
-                        _yaml_mark(event.start_mark),
-                    )
-            # else: stream start/end, document end
+        while (event := loader.get_event()) is not None:
+            action = handle.get(type(event))
+            if action is not None:
+                action(event)
     finally:
         loader.dispose()
-    return top[-1] if top else None
+    return tree.top[-1] if tree.top else None
 
 
 # ----------------------------------------------------------------------------- load

@@ -15,16 +15,18 @@ Each part is drawn from its :class:`rbcli.body.partmodel.Outline` through
   arrows from the com, and the body's equivalent uniform ellipsoid as a dotted outline.
 
 The three flat views share one scale, so lengths can be compared between them. Grey
-scale only. matplotlib is imported only inside :func:`body_figure` (through
-:mod:`rbcli.render.plots`).
+scale only. matplotlib is imported only when a figure is drawn.
 """
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.render import outline as ol
+from rbcli.render.plots import figure
 from rbcli.render.units import DisplayUnits
 
 #: (title, index of the horizontal body axis, index of the vertical one, sign of the third
@@ -128,9 +130,7 @@ def _segments_path(segs: np.ndarray):
     element, dashes flowing along curves)."""
     from matplotlib.path import Path
 
-    from rbcli.render.outline import polylines
-
-    lines = polylines(segs)
+    lines = ol.polylines(segs)
     codes = np.concatenate([np.r_[Path.MOVETO, np.full(len(p) - 1, Path.LINETO)] for p in lines]).astype(np.uint8)
     return Path(np.concatenate(lines), codes)
 
@@ -163,9 +163,7 @@ def _add_fill(ax, rings, f, z, colour):
 def segments(n_parts: int) -> int:
     """Points around a circle in the flat views: :data:`rbcli.render.outline.SEGMENTS` for up
     to 24 parts, fewer (down to 12) for more, so a figure of many parts stays a few MB at most."""
-    from rbcli.render.outline import SEGMENTS
-
-    return SEGMENTS if n_parts <= 24 else max(12, int(SEGMENTS * (24 / n_parts) ** 0.5))
+    return ol.SEGMENTS if n_parts <= 24 else max(12, int(ol.SEGMENTS * (24 / n_parts) ** 0.5))
 
 
 def body_figure(body, com, principal, du: DisplayUnits, title: str):
@@ -185,11 +183,6 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     -------
     matplotlib.figure.Figure — 2 × 2 axes: 3-D view, top, front and side views
     """
-    from matplotlib.ticker import MaxNLocator
-
-    from rbcli.render import outline as ol
-    from rbcli.render.plots import figure
-
     f, L = du.factor("length")
     ell = np.asarray(principal.equivalent_ellipsoid, dtype=float)
     N = np.asarray(principal.axes, dtype=float)
@@ -203,16 +196,7 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
         p = parts[i]
         (holes if p.subtract else solids).append((p, ol.sketch(p.outline, n=n_seg)))
     dots = [(parts[i], np.asarray(parts[i].com, dtype=float)) for i in drawn.dotted]
-    pts = [s.vertices for _, s in solids + holes] + [s.points for _, s in solids + holes]
-    pts += [np.array([d for _, d in dots]).reshape(-1, 3), c.reshape(1, 3)]
-    allp = np.concatenate(pts)
-    size = float(np.max(allp.max(axis=0) - allp.min(axis=0)))
-    arrow = 0.6 * size if size > 0 else 1.15 * float(np.max(ell)) or 1.0
-    box = ell.max() * np.eye(3)  # the equivalent ellipsoid's bounding box, and the arrows
-    allp = np.concatenate([allp, c + arrow * 1.15 * N, c - 0.05 * arrow * N, c + box, c - box])
-    lo, hi = allp.min(axis=0), allp.max(axis=0)
-    mid = 0.5 * (lo + hi)
-    half = 0.54 * float(np.max(hi - lo)) or 1.0
+    arrow, mid, half = _frame(solids + holes, dots, c, N, ell)
 
     fig, axes = figure(title, nrows=2, ncols=2, size=(7.0, 7.6))
     spec = axes[0][0].get_subplotspec()
@@ -222,54 +206,90 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L)
 
     shown: set[str] = set()  # what the legend explains
-    for ax, (name, i, j, toward) in zip(flat, VIEWS):
-        sh = [(p, ol.shadow(s, i, j, toward)) for p, s in solids]
-        hs = [(p, ol.shadow(s, i, j, toward)) for p, s in holes]
-        _add_fill(ax, [r for _, x in sh for r in x.fill], f, 1, SOLID)
-        _add_lines(ax, np.concatenate([x.creases for _, x in sh] or [np.zeros((0, 2, 2))]), f, 2,
-                   edgecolor="0.45", linewidth=0.5)
-        _add_lines(ax, np.concatenate([x.hidden for _, x in sh] or [np.zeros((0, 2, 2))]), f, 2,
-                   edgecolor="0.3", linewidth=0.6, linestyle=(0, (3, 2)))
-        _add_lines(ax, np.concatenate([x.outline for _, x in sh] or [np.zeros((0, 2, 2))]), f, 3,
-                   edgecolor="black", linewidth=0.8)
-        if sh:
-            shown.add("solid")
-        if hs:
-            _add_fill(ax, [r for _, x in hs for r in x.fill], f, 4, "white")
-            _add_lines(ax, np.concatenate([x.outline for _, x in hs]), f, 5, edgecolor="0.15",
-                       linewidth=0.9, linestyle=(0, (4, 2)))
-            shown.add("hole")
-        # marked points: point masses (dots), a given part's centre (×), parts without outline
-        for plist, face in ((sh, "black"), (hs, "white")):
-            for p, x in plist:
-                if len(x.points):
-                    given = p.outline.kind == "given"
-                    ax.plot(x.points[:, 0] * f, x.points[:, 1] * f, linestyle="none", zorder=6,
-                            **(MARKS["given"] if given else {**MARKS["point"], "markerfacecolor": face}))
-                    shown.add("given" if given else "point" if face == "black" else "removed")
-        for removed in (False, True):  # one artist for each kind of dot, however many
-            ds = np.array([d for p, d in dots if p.subtract == removed]).reshape(-1, 3)
-            if len(ds):
-                ax.plot(ds[:, i] * f, ds[:, j] * f, linestyle="none", zorder=6,
-                        **{**MARKS["centre"], "markerfacecolor": "white" if removed else "0.4"})
-                shown.add("centre")
-        ci = np.array([c[i], c[j]])
-        e2 = ol.ellipse_shadow(ell, N, i, j) + ci
-        ax.plot(e2[:, 0] * f, e2[:, 1] * f, zorder=7, **LINES["ellipse"])
-        _arrows(ax, ci, N, arrow, i, j, f)
-        ax.plot(c[i] * f, c[j] * f, linestyle="none", zorder=9, **MARKS["com"])
-        ax.set_xlim((mid[i] - half) * f, (mid[i] + half) * f)
-        ax.set_ylim((mid[j] - half) * f, (mid[j] + half) * f)
-        ax.set_aspect("equal", adjustable="box")
-        ax.set_xlabel(f"{NAMES[i]} [{L}]")
-        ax.set_ylabel(f"{NAMES[j]} [{L}]")
-        ax.set_title(name)
-        ax.tick_params(labelsize=7)
-        ax.set_axisbelow(True)
-        for a in (ax.xaxis, ax.yaxis):
-            a.set_major_locator(MaxNLocator(5))
+    for ax, view in zip(flat, VIEWS):
+        shown |= _flat_view(ax, view, solids, holes, dots, f)
+        _frame_view(ax, view, c, N, ell, arrow, f, mid, half, L)
     _legend(fig, shown | {"com", "ellipse"}, drawn.note)
     return fig
+
+
+def _frame(sketches: list, dots: list, c: np.ndarray, N: np.ndarray,
+           ell: np.ndarray) -> tuple[float, np.ndarray, float]:
+    """The length of the principal axes' arrows, and the centre and half-width of the
+    views: all the drawn points, the arrows and the equivalent ellipsoid's box."""
+    pts = [s.vertices for _, s in sketches] + [s.points for _, s in sketches]
+    pts += [np.array([d for _, d in dots]).reshape(-1, 3), c.reshape(1, 3)]
+    allp = np.concatenate(pts)
+    size = float(np.max(allp.max(axis=0) - allp.min(axis=0)))
+    arrow = 0.6 * size if size > 0 else 1.15 * float(np.max(ell)) or 1.0
+    box = ell.max() * np.eye(3)  # the equivalent ellipsoid's bounding box, and the arrows
+    allp = np.concatenate([allp, c + arrow * 1.15 * N, c - 0.05 * arrow * N, c + box, c - box])
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    return arrow, 0.5 * (lo + hi), 0.54 * float(np.max(hi - lo)) or 1.0
+
+
+def _segments_of(shadows: list, what: str) -> np.ndarray:
+    """The (s, 2, 2) segments of one kind (``creases``, ``hidden``, ``outline``) of shadows."""
+    return np.concatenate([getattr(x, what) for _, x in shadows] or [np.zeros((0, 2, 2))])
+
+
+def _flat_view(ax, view: tuple, solids: list, holes: list, dots: list, f: float) -> set[str]:
+    """The parts in one flat view: solid shadows, holes, marked points and dots; what it
+    showed, for the legend."""
+    _, i, j, toward = view
+    shown = set()
+    sh = [(p, ol.shadow(s, i, j, toward)) for p, s in solids]
+    hs = [(p, ol.shadow(s, i, j, toward)) for p, s in holes]
+    _add_fill(ax, [r for _, x in sh for r in x.fill], f, 1, SOLID)
+    _add_lines(ax, _segments_of(sh, "creases"), f, 2, edgecolor="0.45", linewidth=0.5)
+    _add_lines(ax, _segments_of(sh, "hidden"), f, 2, edgecolor="0.3", linewidth=0.6, linestyle=(0, (3, 2)))
+    _add_lines(ax, _segments_of(sh, "outline"), f, 3, edgecolor="black", linewidth=0.8)
+    if sh:
+        shown.add("solid")
+    if hs:
+        _add_fill(ax, [r for _, x in hs for r in x.fill], f, 4, "white")
+        _add_lines(ax, _segments_of(hs, "outline"), f, 5, edgecolor="0.15", linewidth=0.9,
+                   linestyle=(0, (4, 2)))
+        shown.add("hole")
+    # marked points: point masses (dots), a given part's centre (×), parts without outline
+    for plist, face in ((sh, "black"), (hs, "white")):
+        for p, x in plist:
+            if len(x.points):
+                given = p.outline.kind == "given"
+                ax.plot(x.points[:, 0] * f, x.points[:, 1] * f, linestyle="none", zorder=6,
+                        **(MARKS["given"] if given else {**MARKS["point"], "markerfacecolor": face}))
+                shown.add("given" if given else "point" if face == "black" else "removed")
+    for removed in (False, True):  # one artist for each kind of dot, however many
+        ds = np.array([d for p, d in dots if p.subtract == removed]).reshape(-1, 3)
+        if len(ds):
+            ax.plot(ds[:, i] * f, ds[:, j] * f, linestyle="none", zorder=6,
+                    **{**MARKS["centre"], "markerfacecolor": "white" if removed else "0.4"})
+            shown.add("centre")
+    return shown
+
+
+def _frame_view(ax, view: tuple, c: np.ndarray, N: np.ndarray, ell: np.ndarray, arrow: float,
+                f: float, mid: np.ndarray, half: float, L: str) -> None:
+    """Over one flat view's parts: the equivalent ellipsoid, the principal axes and the
+    centre of mass; then its limits, labels and ticks."""
+    from matplotlib.ticker import MaxNLocator
+
+    name, i, j, _ = view
+    ci = np.array([c[i], c[j]])
+    e2 = ol.ellipse_shadow(ell, N, i, j) + ci
+    ax.plot(e2[:, 0] * f, e2[:, 1] * f, zorder=7, **LINES["ellipse"])
+    _arrows(ax, ci, N, arrow, i, j, f)
+    ax.plot(c[i] * f, c[j] * f, linestyle="none", zorder=9, **MARKS["com"])
+    ax.set_xlim((mid[i] - half) * f, (mid[i] + half) * f)
+    ax.set_ylim((mid[j] - half) * f, (mid[j] + half) * f)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlabel(f"{NAMES[i]} [{L}]")
+    ax.set_ylabel(f"{NAMES[j]} [{L}]")
+    ax.set_title(name)
+    ax.tick_params(labelsize=7)
+    ax.set_axisbelow(True)
+    for a in (ax.xaxis, ax.yaxis):
+        a.set_major_locator(MaxNLocator(5))
 
 
 #: marker styles of the flat views (and their legend)
@@ -316,8 +336,6 @@ def _legend(fig, shown: set, note: str = "") -> None:
 
 
 def _wrap(text: str, width: int = 90) -> str:
-    import textwrap
-
     return "\n".join(textwrap.wrap(text, width))
 
 
@@ -351,53 +369,9 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     """The 3-D view: shaded solid surfaces with their sharp edges, holes as dashed edges,
     point masses, the principal axes (within :data:`BUDGET_3D`: see there)."""
     from matplotlib.ticker import MaxNLocator
-    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
-    from rbcli.render import outline as ol
-
-    # coarse surfaces, only the faces turned to the camera: a few hundred polygons
-    elev, azim = np.radians(ELEV), np.radians(AZIM)
-    eye = np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
-    light = np.array([-0.4, -0.6, 0.7])
-    light /= np.linalg.norm(light)
-    parts = [p for p, _ in solids + holes]
-    for n, most in ((SEGMENTS_3D, TRIANGLES_3D), (10, 100)):  # coarser when there are many parts
-        coarse = {id(p): ol.sketch(p.outline, n=n, max_triangles=most) for p in parts}
-        if sum(len(s.faces) for s in coarse.values()) <= BUDGET_3D:
-            break
-    else:  # still too many: the heaviest parts within the budget, the others as dots
-        used, kept = 0, set()
-        for p in sorted(parts, key=lambda p: -p.mass):
-            used += len(coarse[id(p)].faces) + len(coarse[id(p)].lines)
-            if used > BUDGET_3D:
-                break
-            kept.add(id(p))
-        dots = dots + [(p, np.asarray(p.com, dtype=float)) for p in parts if id(p) not in kept]
-        solids = [(p, s) for p, s in solids if id(p) in kept]
-        holes = [(p, s) for p, s in holes if id(p) in kept]
-    solids = [(p, coarse[id(p)]) for p, _ in solids]
-    holes = [(p, coarse[id(p)]) for p, _ in holes]
-    polys, shades = [], []
-    for p, s in solids:
-        keep = ol.facing(s, eye)
-        if np.any(keep):
-            polys.append(s.vertices[s.faces[keep]] * f)
-            shades.append(0.62 + 0.33 * np.abs(ol.normals(s)[keep] @ light))
-    if polys:
-        P = np.concatenate(polys)
-        g = np.concatenate(shades)
-        ax3.add_collection3d(Poly3DCollection(P, facecolors=np.column_stack([g, g, g, np.ones_like(g)]),
-                                              edgecolors=np.column_stack([g, g, g, np.ones_like(g)]),
-                                              linewidths=0.3))
-    edges = [ol.features(s) for _, s in solids]
-    if edges:
-        E = np.concatenate(edges)
-        if len(E):
-            ax3.add_collection3d(Line3DCollection(E * f, colors="0.1", linewidths=0.6))
-    hedges = [ol.features(s) for _, s in holes]
-    if hedges and len(np.concatenate(hedges)):
-        ax3.add_collection3d(Line3DCollection(np.concatenate(hedges) * f, colors="0.2", linewidths=0.7,
-                                              linestyles=(0, (4, 2))))
+    solids, holes, dots = _coarse(solids, holes, dots)
+    _surfaces_3d(ax3, solids, holes, f)
     marks = [s.points for _, s in solids + holes if len(s.points)]
     if marks:  # point masses, given parts' centres
         M = np.concatenate(marks) * f
@@ -423,3 +397,57 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     for a in (ax3.xaxis, ax3.yaxis, ax3.zaxis):
         a.set_major_locator(MaxNLocator(4))
         a.set_pane_color((1.0, 1.0, 1.0, 0.0))
+
+
+def _coarse(solids: list, holes: list, dots: list) -> tuple[list, list, list]:
+    """The 3-D view's parts with coarse surfaces (a few hundred polygons), coarser when there
+    are many parts, and then only the heaviest within :data:`BUDGET_3D` (the others become
+    dots at their centres)."""
+    parts = [p for p, _ in solids + holes]
+    for n, most in ((SEGMENTS_3D, TRIANGLES_3D), (10, 100)):  # coarser when there are many parts
+        coarse = {id(p): ol.sketch(p.outline, n=n, max_triangles=most) for p in parts}
+        if sum(len(s.faces) for s in coarse.values()) <= BUDGET_3D:
+            break
+    else:  # still too many: the heaviest parts within the budget, the others as dots
+        used, kept = 0, set()
+        for p in sorted(parts, key=lambda p: -p.mass):
+            used += len(coarse[id(p)].faces) + len(coarse[id(p)].lines)
+            if used > BUDGET_3D:
+                break
+            kept.add(id(p))
+        dots = dots + [(p, np.asarray(p.com, dtype=float)) for p in parts if id(p) not in kept]
+        solids = [(p, s) for p, s in solids if id(p) in kept]
+        holes = [(p, s) for p, s in holes if id(p) in kept]
+    return [(p, coarse[id(p)]) for p, _ in solids], [(p, coarse[id(p)]) for p, _ in holes], dots
+
+
+def _surfaces_3d(ax3, solids: list, holes: list, f: float) -> None:
+    """The solids' faces turned to the camera, shaded by a fixed light, their sharp edges,
+    and the holes' edges dashed."""
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
+
+    elev, azim = np.radians(ELEV), np.radians(AZIM)
+    eye = np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
+    light = np.array([-0.4, -0.6, 0.7])
+    light /= np.linalg.norm(light)
+    polys, shades = [], []
+    for p, s in solids:
+        keep = ol.facing(s, eye)
+        if np.any(keep):
+            polys.append(s.vertices[s.faces[keep]] * f)
+            shades.append(0.62 + 0.33 * np.abs(ol.normals(s)[keep] @ light))
+    if polys:
+        P = np.concatenate(polys)
+        g = np.concatenate(shades)
+        ax3.add_collection3d(Poly3DCollection(P, facecolors=np.column_stack([g, g, g, np.ones_like(g)]),
+                                              edgecolors=np.column_stack([g, g, g, np.ones_like(g)]),
+                                              linewidths=0.3))
+    edges = [ol.features(s) for _, s in solids]
+    if edges:
+        E = np.concatenate(edges)
+        if len(E):
+            ax3.add_collection3d(Line3DCollection(E * f, colors="0.1", linewidths=0.6))
+    hedges = [ol.features(s) for _, s in holes]
+    if hedges and len(np.concatenate(hedges)):
+        ax3.add_collection3d(Line3DCollection(np.concatenate(hedges) * f, colors="0.2", linewidths=0.7,
+                                              linestyles=(0, (4, 2))))

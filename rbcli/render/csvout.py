@@ -19,6 +19,8 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 
 import numpy as np
 
+from rbcli.render.safe import csv_text
+
 #: rows evaluated and written at a time
 CHUNK = 100_000
 
@@ -47,8 +49,6 @@ def write(sink: Callable[[str], object], header: Sequence[str], blocks: Iterable
 
     A sink that returns ``False`` (a closed pipe) stops the writing early.
     """
-    from rbcli.render.safe import csv_text
-
     if sink(",".join(csv_text(h) for h in header) + "\n") is False:
         return 0
     n = 0

@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
+from rbcli.errors import option_name, spelled
+
 
 def num(x: float | None, digits: int = 6) -> str:
     """``x`` to ``digits`` significant figures; "—" for None; no "-0"."""
@@ -24,8 +28,6 @@ def vec(v, digits: int = 6) -> str:
 
 def snap(values, scale: float | None = None, rtol: float = 1e-14):
     """Entries below ``rtol`` times the largest magnitude (round-off) become exactly 0."""
-    import numpy as np
-
     a = np.array(values, dtype=float)
     s = float(np.max(np.abs(a))) if scale is None else scale
     a[np.abs(a) <= rtol * s] = 0.0
@@ -36,6 +38,4 @@ def snap(values, scale: float | None = None, rtol: float = 1e-14):
 def said(text: str) -> str:
     """A result's text (a :class:`rbcli.errors.Note`) as documents say it: parameters
     spelled as the command line's options (``--radius``); other text as it is."""
-    from rbcli.errors import option_name, spelled
-
     return spelled(text, option_name)

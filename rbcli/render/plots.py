@@ -14,6 +14,11 @@ well-formed XML (matplotlib copies each text into an SVG comment) whatever a nam
 
 from __future__ import annotations
 
+import io
+
+from rbcli.errors import clean
+from rbcli.render.safe import escape
+
 FORMATS = ("png", "svg", "pdf")
 #: line styles for successive curves: (colour, linestyle, marker)
 STYLES = [
@@ -63,10 +68,7 @@ def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, flo
 def label(text: str) -> str:
     """A figure's text made safe: control, bidirectional and XML-illegal characters (U+FFFE,
     U+FFFF) shown as visible escapes (:func:`rbcli.render.safe.escape`), long words cut
-    (:func:`rbcli.env.clean`)."""
-    from rbcli.env import clean
-    from rbcli.render.safe import escape
-
+    (:func:`rbcli.errors.clean`)."""
     return clean(escape(text))
 
 
@@ -95,8 +97,6 @@ def style(i: int) -> dict:
 def figure_bytes(fig, fmt: str) -> bytes:
     """The figure as a ``fmt`` file (png, svg or pdf), in memory, with deterministic metadata
     (no dates; SOURCE_DATE_EPOCH honoured). Writing it is the caller's (rbcli.io.outfile)."""
-    import io
-
     fmt = fmt.lower().lstrip(".")
     metadata = {}
     if fmt == "svg":

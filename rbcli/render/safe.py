@@ -71,7 +71,8 @@ def json_escape(encoded: str) -> str:
     """Encoded JSON text with the unsafe characters JSON leaves raw written as ``\\uXXXX``.
 
     They can stand only inside strings (JSON's own syntax is ASCII), so this is safe on the
-    whole document."""
-    if encoded.isascii() and "\x7f" not in encoded:  # none of them (DEL is the one in ASCII)
+    whole document. Plain ASCII without DEL has none of them: returned as it is, without
+    compiling the pattern (~2 ms, on every ``--json`` run)."""
+    if encoded.isascii() and "\x7f" not in encoded:
         return encoded
     return re.sub(_JSON_UNSAFE, _json_u, encoded)

@@ -3,13 +3,14 @@ by :mod:`rbcli.render.report`, as HTML or Markdown.
 
 A command's render module fills a :class:`Doc` with neutral items; how they look is
 decided only when the document is rendered. Text from the user (names, titles, cells) is
-made safe for a terminal there, once (:func:`rbcli.env.clean`). Tables for people: units in headers,
+made safe for a terminal there, once (:func:`rbcli.errors.clean`). Tables for people: units in headers,
 plain ASCII without colour when not a terminal.
 """
 
 from __future__ import annotations
 
 import io
+import os
 import re
 import shutil
 from collections.abc import Sequence
@@ -17,7 +18,7 @@ from typing import TYPE_CHECKING
 
 from dataclasses import dataclass
 
-from rbcli.env import clean
+from rbcli.errors import NonFiniteResult, clean
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.env import Env
@@ -141,8 +142,6 @@ def _rich_printer(color: bool, width: int):
 
 
 def _columns() -> int:
-    import os
-
     try:
         return max(40, int(os.environ.get("COLUMNS", "100")))
     except ValueError:
@@ -169,8 +168,6 @@ def check_finite_doc(doc: Doc) -> None:
     NonFiniteResult
         (exit 2, one line) naming the table and the row.
     """
-    from rbcli.errors import NonFiniteResult
-
     for item in doc.items:
         if not isinstance(item, Table):
             continue

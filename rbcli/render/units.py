@@ -18,6 +18,7 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from rbcli.errors import ParamError, literal, option_name
+from rbcli.io import bare
 from rbcli.io import units as un
 from rbcli.render.fmt import num
 
@@ -38,7 +39,7 @@ class DisplayUnits:
     (A plain class, not a dataclass: it sits on every command's start-up path.)
     """
 
-    __slots__ = ("length", "mass", "time", "si", "_cache")
+    __slots__ = ("length", "mass", "time", "si")
 
     def __init__(self, length: tuple[float, str] = (1.0, "m"), mass: tuple[float, str] = (1.0, "kg"),
                  time: tuple[float, str] = (1.0, "s"), si: bool = True) -> None:
@@ -46,7 +47,6 @@ class DisplayUnits:
         self.mass = mass
         self.time = time
         self.si = si
-        self._cache: dict = {}
 
     def __repr__(self) -> str:
         return f"DisplayUnits(length={self.length!r}, mass={self.mass!r}, time={self.time!r}, si={self.si!r})"
@@ -77,33 +77,27 @@ class DisplayUnits:
 
     def factor(self, kind: str) -> tuple[float, str]:
         """(multiplier from SI to the display unit, the unit's label) for a kind."""
-        if kind in self._cache:
-            return self._cache[kind]
-        if kind in ("angle_deg",):
-            res = (1.0, "°")
-        elif kind == "angular_speed":
-            res = (1.0, "rad/s")
-        elif kind == "dimensionless":
-            res = (1.0, "")
-        else:
-            dim = un.KINDS[kind]
-            if self.si and kind in NAMED:
-                res = (1.0, NAMED[kind])
-            else:
-                f = 1.0
-                top, bottom = [], []
-                for (factor, name), e in ((self.mass, dim.M), (self.length, dim.L), (self.time, dim.T)):
-                    if e == 0:
-                        continue
-                    f /= factor**e
-                    label = name + (str(abs(e)).translate(SUPERSCRIPT) if abs(e) != 1 else "")
-                    (top if e > 0 else bottom).append(label)
-                label = "·".join(top) or "1"
-                if bottom:
-                    label += "/" + "/".join(bottom) if len(bottom) == 1 else "/(" + "·".join(bottom) + ")"
-                res = (f, label)
-        self._cache[kind] = res
-        return res
+        if kind == "angle_deg":
+            return (1.0, "°")
+        if kind == "angular_speed":
+            return (1.0, "rad/s")
+        if kind == "dimensionless":
+            return (1.0, "")
+        if self.si and kind in NAMED:
+            return (1.0, NAMED[kind])
+        dim = un.KINDS[kind]
+        f = 1.0
+        top, bottom = [], []
+        for (factor, name), e in ((self.mass, dim.M), (self.length, dim.L), (self.time, dim.T)):
+            if e == 0:
+                continue
+            f /= factor**e
+            label = name + (str(abs(e)).translate(SUPERSCRIPT) if abs(e) != 1 else "")
+            (top if e > 0 else bottom).append(label)
+        label = "·".join(top) or "1"
+        if bottom:
+            label += "/" + "/".join(bottom) if len(bottom) == 1 else "/(" + "·".join(bottom) + ")"
+        return (f, label)
 
     def show(self, x: float | None, kind: str, digits: int) -> str:
         if x is None:
@@ -177,16 +171,12 @@ class BodyUnits:
         return cls(getattr(body, "units", None) if body is not None else None)
 
     def label(self, kind: str) -> str:
-        from rbcli.io.bare import label
-
-        return label(self.base, kind)
+        return bare.label(self.base, kind)
 
     def show(self, si: Any, kind: str, unit: tuple[float, str] | None = None) -> str:
         """An SI value (or a sequence) as numbers in the bare unit of ``kind`` (or in
         ``unit``, (SI per unit, name)), 6 digits."""
-        from rbcli.io.bare import factor
-
-        f = unit[0] if unit else factor(self.base, kind)
+        f = unit[0] if unit else bare.factor(self.base, kind)
         vals = si.tolist() if hasattr(si, "tolist") else si
         if isinstance(vals, (list, tuple)):
             return ", ".join(_g(float(x) / f) for x in vals)
@@ -212,8 +202,6 @@ def _typed(typed: str | None, kind: str) -> tuple[float, str] | None:
     nothing was typed or it is not a unit of ``kind`` (the value then shows in the bare unit)."""
     if not typed:
         return None
-    from rbcli.io import units as un
-
     try:
         return un.to_si(f"1 {typed}", kind), un.canonical_unit(typed)
     except un.UnitError:
