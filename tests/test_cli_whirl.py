@@ -110,5 +110,5 @@ def test_report_section_from_a_result():
     assert any(t.startswith("critical speeds") for t in titles)
     assert any(t.startswith("separation margins") for t in titles)
     figs = [i for i in s.items if isinstance(i, Figure)]
-    assert [f.name for f in figs] == ["whirl-campbell", "whirl-response"]
+    assert [f.name for f in figs] == ["whirl-campbell", "whirl-response", "whirl-map"]
     assert all(f.svg.lstrip().startswith("<?xml") for f in figs)

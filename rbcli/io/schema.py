@@ -12,6 +12,7 @@ from rbcli.core.shapes import SHAPES
 from rbcli.io.body import UNIT_KEYS
 from rbcli.io.givenpart import INERTIA_NAMES
 from rbcli.io.parts import SPECIAL_SHAPES
+from rbcli.io.bearingtable import schema as bearing_schema
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
 
@@ -166,6 +167,7 @@ def body_schema() -> dict:
             },
             "pivot": _vec(3),
             "rim_radius": {"$ref": "#/definitions/quantity"},
+            "bearings": bearing_schema(),
         },
         "required": ["parts"],
         "additionalProperties": False,
