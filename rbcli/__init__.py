@@ -36,7 +36,7 @@ _API = {
     "inertia": "rbcli.api.inertia",
     "principal": "rbcli.api.principal",
     "balance": "rbcli.api.balance",
-    "field_balance": "rbcli.api.fieldbalance",
+    "field_balance": "rbcli.api.field.service",
     "precess": "rbcli.api.precess",
     "top": "rbcli.api.top",
     "gyrocompass": "rbcli.api.gyrocompass",

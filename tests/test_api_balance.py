@@ -109,7 +109,7 @@ def test_typed_fields_and_frozen():
     a, b = r.corrections
     assert a.mass == pytest.approx(8.5e-3, rel=1e-6) and a.angle_deg == pytest.approx(208.072, abs=1e-3)
     assert b.mass == pytest.approx(12.2577e-3, rel=1e-5) and b.angle_deg == pytest.approx(258.232, abs=1e-3)
-    assert r.speed == pytest.approx(3000 * math.pi / 30) and r.bearing_positions == (0.0, 0.4)
+    assert r.options.speed == pytest.approx(3000 * math.pi / 30) and r.options.bearings == (0.0, 0.4)
     assert [b.plane for b in r.bearings] == [0.0, 0.4]  # the JSON's "bearings"
     assert r.iso_check is not None and not r.iso_check.passed and r.return_code == 1
     assert r.iso["pass"] is False and r.iso.grade == 6.3  # the JSON's "iso" ("pass" is a keyword)

@@ -14,7 +14,7 @@ import pytest
 
 import rbcli
 from conftest import as_cli, sampled_params
-from rbcli.api.rollcheck import RollcheckOptions, RollcheckResult, run
+from rbcli.api.rollcheck import RollcheckResult, parse, run, wheel_setup
 from rbcli.errors import option_name
 
 
@@ -82,18 +82,22 @@ def test_api_json_is_the_cli_json(cli, name, args, kw):
 
 def test_options_with_units_and_body_defaults():
     hoop = rbcli.load("examples/hoop.yaml")
-    o = RollcheckOptions.parse(hoop, rolling_speed="18 km/h", tyre_radius="1 mm", g="1 g0")
-    assert o.speed == pytest.approx(5.0, rel=1e-15) and o.tyre_radius == pytest.approx(1e-3)
-    assert o.g == 9.80665 and o.axle == (0.0, 0.0, 1.0) and o.through == (0.0, 0.0, 0.0)
-    assert o.radius_kind in ("rim_radius", "largest_round_part")
-    assert o.straight_asked and not o.circle_asked
-    o = RollcheckOptions.parse(hoop, lean="0.5 rad", circle=2)
-    assert o.lean == 0.5 and o.circle == 2.0 and o.circle_asked and not o.straight_asked
-    o = RollcheckOptions.parse(hoop, rim_radius="30 cm", shaft=[0, 0, 2], through="com")
-    assert o.radius == pytest.approx(0.3) and o.radius_source == "rim_radius"  # the parameter
-    assert o.radius_source.spelled(cli_option) == "--radius"  # rollcheck's option for it
-    assert o.axle == (0.0, 0.0, 1.0) and o.axle_source == "shaft, through through com"
-    assert o.axle_source.spelled(cli_option) == "--axle, through --through com"
+    o = parse(hoop, rolling_speed="18 km/h", tyre_radius="1 mm", g="1 g0")
+    assert o.rolling_speed == pytest.approx(5.0, rel=1e-15) and o.tyre_radius == pytest.approx(1e-3)
+    assert o.g == 9.80665 and o.given == ("tyre_radius", "g", "rolling_speed")
+    s = wheel_setup(hoop, o)
+    assert s.axle == (0.0, 0.0, 1.0) and s.through == (0.0, 0.0, 0.0)
+    assert s.radius_kind in ("rim_radius", "largest_round_part")
+    assert rbcli.rollcheck(hoop, rolling_speed="18 km/h").straight_asked
+    r = rbcli.rollcheck(hoop, lean="0.5 rad", circle=2)
+    assert r.options.lean == 0.5 and r.options.circle == 2.0 and not r.straight_asked
+    o = parse(hoop, rim_radius="30 cm", shaft=[0, 0, 2], through="com")
+    assert o.g == 9.80665 and o.shaft == (0.0, 0.0, 1.0) and o.through == "com"
+    s = wheel_setup(hoop, o)
+    assert s.radius == pytest.approx(0.3) and s.radius_source == "rim_radius"  # the parameter
+    assert s.radius_source.spelled(cli_option) == "--radius"  # rollcheck's option for it
+    assert s.axle == (0.0, 0.0, 1.0) and s.axle_source == "shaft, through through com"
+    assert s.axle_source.spelled(cli_option) == "--axle, through --through com"
 
 
 def test_typed_fields_penny():
@@ -101,7 +105,7 @@ def test_typed_fields_penny():
     res = rbcli.rollcheck(penny, rolling_speed="10 cm/s")
     assert isinstance(res, RollcheckResult)
     a = 9.525e-3
-    assert res.options.radius == pytest.approx(a, rel=1e-12)
+    assert res.setup.radius == pytest.approx(a, rel=1e-12)
     assert res.critical_speed == pytest.approx(math.sqrt(9.80665 * a / 3), rel=1e-12)
     assert res.critical_spin == pytest.approx(res.critical_speed / a, rel=1e-15)
     assert res.wheel.mass == pytest.approx(2.5e-3) and res.wheel.C == pytest.approx(2 * res.wheel.A)
@@ -109,7 +113,7 @@ def test_typed_fields_penny():
     assert res.circle is None and res.return_code == 1 and res.warnings == ()
     assert res.name == penny.name and res.source == "examples/penny.yaml"
     # run(body, parse(...)) is the same answer
-    same = run(penny, RollcheckOptions.parse(penny, rolling_speed=0.1))
+    same = run(penny, parse(penny, rolling_speed=0.1))
     assert same.to_json() == res.to_json()
 
 
@@ -122,7 +126,7 @@ def test_curves_for_the_figure():
     assert cv.speeds[-1] == pytest.approx(max(2.5 * vc, 1.25), rel=1e-15)
     i = int((cv.speeds > vc).argmax())
     assert cv.nu2[i - 1] <= 0.0 < cv.nu2[i]  # the sign changes at the critical speed
-    assert cv.nu2 == pytest.approx(res.straight.nu2(cv.speeds / res.options.radius), rel=1e-14)
+    assert cv.nu2 == pytest.approx(res.straight.nu2(cv.speeds / res.setup.radius), rel=1e-14)
     assert cv.circle_kappa is None
     res = rbcli.rollcheck(hoop, lean=20, circle=2)
     cv = res.curves()
@@ -189,7 +193,7 @@ def test_result_is_frozen():
 ])
 def test_cone_and_hemisphere_on_their_base_rims_are_refused(cli, text, offset, shape):
     body = rbcli.load_text(text)
-    o = RollcheckOptions.parse(body)
+    o = wheel_setup(body, parse(body))
     assert o.rim is not None and o.rim.parts[0][1] == shape
     assert o.rim.offset == pytest.approx(offset, rel=1e-12) and not o.rim.upright_equilibrium
     for kw, args in [({}, []), ({"rolling_speed": 3}, ["--speed", "3"]), ({"lean": 20, "circle": 1}, ["--lean", "20", "--circle", "1"])]:
@@ -208,16 +212,17 @@ def test_the_offset_is_the_rim_circles_not_the_parts_centre():
     # issue 14.3: a toy top's cone has its centre of mass 1.52 mm from the body's, but its
     # base rim (the widest circle) is 8.48 mm away: the refusal quotes the rim
     body = rbcli.load("examples/toy_top.yaml")
-    o = RollcheckOptions.parse(body)
+    o = parse(body)
     com_z = 0.03151898734177215  # rbcli inertia examples/toy_top.yaml
-    assert o.rim.offset == pytest.approx(0.04 - com_z, rel=1e-12)
+    assert wheel_setup(body, o).rim.offset == pytest.approx(0.04 - com_z, rel=1e-12)
     with pytest.raises(rbcli.InputError, match="is 8.48 mm from the centre of mass"):
         run(body, o)
 
 
 def test_rims_in_the_plane_of_the_com_are_unchanged():
     for name in ("penny", "hoop", "bicycle_wheel", "spoked_wheel", "thick_coin", "frisbee"):
-        o = RollcheckOptions.parse(rbcli.load(f"examples/{name}.yaml"))
+        body = rbcli.load(f"examples/{name}.yaml")
+        o = wheel_setup(body, parse(body))
         assert o.rim is not None and abs(o.rim.offset) <= 1e-12 * o.radius and o.warnings == ()
     # small offsets: a warning with the real offset, and the answer (a thin rotor on a light
     # axle: its rim circle 0.392 mm from the com, 0.523 % of its radius)
@@ -233,8 +238,22 @@ def test_rims_in_the_plane_of_the_com_are_unchanged():
     # one wheel's plane to the other's, its middle the com's plane (issue 24)
     pair = rbcli.load_text("{parts: [{shape: disk, radius: 0.1, mass: 1, at: [0, 0, 0.05]},"
                            " {shape: disk, radius: 0.1, mass: 1, at: [0, 0, -0.05]}]}")
-    o = RollcheckOptions.parse(pair)
+    o = wheel_setup(pair, parse(pair))
     assert len(o.rim.parts) == 2 and o.rim.offset == 0.0
     assert o.rim.kind == "band" and o.band == (0.05, 0.05)
     # a radius no part has: nothing to measure
-    assert RollcheckOptions.parse(rbcli.load("examples/top.yaml"), rim_radius="5 cm").rim is None
+    top = rbcli.load("examples/top.yaml")
+    assert wheel_setup(top, parse(top, rim_radius="5 cm")).rim is None
+
+
+def test_what_the_wheel_cannot_take_is_run_s_to_refuse():
+    # parse reads values; a tyre radius above the body's rim radius is known only once the
+    # body is made a wheel (wheel_setup, in run): the command refuses it (exit 2), the report
+    # leaves its rolling section out with the same reason, as for a whirl rotor run refuses
+    hoop = rbcli.load("examples/hoop.yaml")
+    o = parse(hoop, tyre_radius="10 m")
+    with pytest.raises(rbcli.InputError) as e:
+        run(hoop, o)
+    assert e.value.param == "tyre_radius" and "at most the rim radius a = 0.5 m" in e.value.message
+    skipped = rbcli.report(hoop, tyre_radius="10 m").section("rolling-stability").skipped
+    assert skipped == f"rolling stability: not computed: {e.value.message}"

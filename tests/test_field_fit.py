@@ -1,5 +1,6 @@
-"""Fitting field corrections and sizing trial masses (rbcli.core.balance.fieldfit), and the
-measures and kinds of a reading and the ISO 20816-3 zones (rbcli.core.balance.severity).
+"""Fitting field corrections (rbcli.core.field.fit) and sizing trial masses
+(rbcli.core.field.trial), and the measures and kinds of a reading and the ISO 20816-3 zones
+(rbcli.core.field.severity).
 
 Oracles: the physics notes' worked examples (T22 split, §5.1 trial mass), vector sums
 written out here, a sampled sinusoid (its peak, peak-to-peak, r.m.s. and finite-difference
@@ -15,8 +16,9 @@ import numpy as np
 import pytest
 
 from rbcli.core.balance.common import BalanceValueError
-from rbcli.core.balance.fieldfit import fit_plane, static_bearing_loads, suggest_trial
-from rbcli.core.balance.severity import (
+from rbcli.core.field.fit import fit_plane
+from rbcli.core.field.trial import static_bearing_loads, suggest_trial
+from rbcli.core.field.severity import (
     ISO_20816_3, MEASURES, convert_measure, to_velocity, zone, zone_boundaries,
 )
 

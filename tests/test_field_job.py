@@ -1,4 +1,4 @@
-"""Job files of ``rbcli field-balance JOB.yaml`` (rbcli.io.fieldjob): the format, its schema,
+"""Job files of ``rbcli field-balance JOB.yaml`` (rbcli.io.field.jobfile): the format, its schema,
 located errors, several speeds stacked into one solve, and the command line as a shorthand.
 """
 
@@ -12,7 +12,7 @@ import pytest
 
 import rbcli
 from rbcli.errors import InputError
-from rbcli.io.fieldjob import SCHEMA_PATH, job_schema, load_job, load_job_text, schema_text
+from rbcli.io.field.jobfile import SCHEMA_PATH, job_schema, load_job, load_job_text, schema_text
 
 ROOT = Path(__file__).resolve().parent.parent
 FAN = ROOT / "examples" / "jobs" / "fan.yaml"

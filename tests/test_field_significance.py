@@ -1,4 +1,4 @@
-"""Darlow's plane-significance factors (rbcli.core.balance.significance).
+"""Darlow's plane-significance factors (rbcli.core.field.significance).
 
 Oracles: the factor is |R_kk| / |u_k| of a QR factorisation of the influence matrix with
 its columns in the test's order (numpy's Householder QR: a different algorithm from the
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from rbcli.core.balance.significance import SIGNIFICANCE_LIMIT, plane_significance
+from rbcli.core.field.significance import SIGNIFICANCE_LIMIT, plane_significance
 from test_field_solve import DARLOW_ALPHA, FOILES_ALPHA, M
 
 

@@ -1,4 +1,4 @@
-"""rbcli.core.balance.fieldsolve against independent solvers and published cases.
+"""rbcli.core.field.solve against independent solvers and published cases.
 
 Oracles: numpy.linalg.lstsq (LAPACK's SVD-based gelsd; rbcli solves by a QR) for least
 squares; a linear program (scipy.optimize.linprog, HiGHS) on a polygon around each
@@ -15,9 +15,9 @@ import math
 import numpy as np
 import pytest
 
-from rbcli.core.balance import field as fld
+from rbcli.core.field import classic as fld
 from rbcli.core.balance.common import BalanceValueError
-from rbcli.core.balance.fieldsolve import influence_matrix, solve
+from rbcli.core.field.solve import influence_matrix, solve
 
 
 def P(text: str) -> complex:

@@ -30,8 +30,6 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 #: raises no InputError: it converts numbers, asks the OS, or calls code that raises plain
 #: ValueErrors only). One more handler in the function changes the count: review it.
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
-    ("api/balance.py", "_positions"): (1, "int() of the value"),
-    ("api/fieldjobs.py", "parse"): (1, "int(group)"),
     ("api/load.py", "_units"): (1, "io.body.default_units: plain ValueErrors (it turns UnitError into one)"),
     ("api/precess.py", "_count"): (1, "int() of the text"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),
@@ -40,9 +38,9 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("api/whirl.py", "_orders"): (1, "int() of each order"),
     ("cli/report.py", "__init__"): (1, "sys.stderr.isatty()"),
     ("core/balance/common.py", "finite"): (1, "float()"),
-    ("core/balance/field.py", "_complex"): (1, "complex()"),
-    ("core/balance/fieldsolve.py", "_complex_array"): (1, "numpy.asarray"),
-    ("core/balance/fieldsolve.py", "check_weights"): (1, "numpy.asarray"),
+    ("core/field/classic.py", "_complex"): (1, "complex()"),
+    ("core/field/solve.py", "_complex_array"): (1, "numpy.asarray"),
+    ("core/field/solve.py", "check_weights"): (1, "numpy.asarray"),
     ("core/checks.py", "finite"): (1, "float()"),
     ("core/inertia.py", "inertia_report"): (1, "unit_vector: plain ValueErrors"),
     ("core/rotation.py", "_vector"): (1, "numpy.asarray"),

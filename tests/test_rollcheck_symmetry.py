@@ -127,13 +127,13 @@ def test_the_bound_holds_between_the_two_transverse_moments(valve):
     δ/(4 - δ)."""
     res = rbcli.rollcheck(rbcli.load_text(valve_wheel(valve)), symmetry_tol="10 %")
     a, w = res.asymmetry, res.wheel
-    o = res.options
+    o, g = res.setup, res.options.g
     # s_c² = m g (a - r) A / (C (C + m a²)) (rbcli.core.rolling.straight) with A = I1, then I2
     # (the hoop's C = I1 + I2 exceeds 2 I1, so no Wheel can be built with I1 alone)
     m, C, r_a = w.mass, w.C, o.radius
-    v = [r_a * math.sqrt(m * o.g * (r_a - o.tyre_radius) * Ai / (C * (C + m * r_a**2)))
+    v = [r_a * math.sqrt(m * g * (r_a - o.tyre_radius) * Ai / (C * (C + m * r_a**2)))
          for Ai in a.transverse]
-    assert straight(w, o.radius, o.tyre_radius, o.g).critical_speed == res.critical_speed
+    assert straight(w, o.radius, o.tyre_radius, g).critical_speed == res.critical_speed
     assert v[0] < res.critical_speed < v[1]
     d = a.relative
     moments_bound = d / (4.0 - d)

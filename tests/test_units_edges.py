@@ -89,10 +89,10 @@ def test_the_echo_in_a_typed_unit_is_the_value_read():
     a = rbcli.balance(body, radius="180", planes="-50,50", mass_step="0.5 g")
     b = rbcli.balance(body, radius="18 cm", planes="-5,5 cm", mass_step="0.0005 kg")
     assert a.to_json() == b.to_json()
-    from rbcli.api.balance import BalanceOptions
+    from rbcli.api.balance import parse
 
-    oa = BalanceOptions.parse(body, radius="180", planes="-50,50", mass_step="0.5 g")
-    ob = BalanceOptions.parse(body, radius="18 cm", planes="-5,5 cm", mass_step="0.0005 kg")
+    oa = parse(body, radius="180", planes="-50,50", mass_step="0.5 g")
+    ob = parse(body, radius="18 cm", planes="-5,5 cm", mass_step="0.0005 kg")
     assert dict(oa.typed) == {"mass_step": "g"}
     assert dict(ob.typed) == {"radius": "cm", "planes": "cm", "mass_step": "kg"}
 

@@ -13,8 +13,8 @@ module             public functions (re-exported by ``rbcli``)
 ``load``           ``load``, ``load_text``
 ``inertia``        ``inertia``
 ``principal``      ``principal``
-``balance``        ``balance`` (``field_balance`` too)
-``fieldbalance``   ``field_balance``
+``balance``        ``balance``
+``field``          ``field_balance`` (a package: ``field.service`` and its parts)
 ``precess``        ``precess``
 ``top``            ``top``
 ``gyrocompass``    ``gyrocompass``
@@ -25,7 +25,8 @@ module             public functions (re-exported by ``rbcli``)
 
 Shared: ``options`` (how a typed value is read), ``check`` (the arguments' types and sizes,
 checked at the door of every public function), ``result`` (the ``Result`` mixin, the one
-finiteness check), ``reference`` (the point an inertia is about).
+finiteness check), ``massprops`` (what inertia and principal share), ``shaft`` (the shaft's
+line and its defaults).
 """
 
 __all__: list[str] = []  # the modules are the API; rbcli re-exports the public functions

@@ -12,12 +12,16 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+import numpy as np
+
+from rbcli.core.balance import angle_of
+
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.core import balance as B
 
 __all__ = ["frame_json", "unbalance_json", "plane_correction_json", "residual_json",
-    "corrections_json", "positions_json", "bearing_forces_json", "allocation_json",
-    "iso_state_json", "iso_json", "balance_json"]
+           "corrections_json", "positions_json", "bearing_forces_json", "allocation_json",
+           "iso_state_json", "iso_json", "balance_json"]
 
 
 def _f(x: float) -> float | None:
@@ -26,42 +30,31 @@ def _f(x: float) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def _angle(z: complex, tol: float, sense: str) -> tuple[float, bool]:
-    from rbcli.core.balance import angle_of
+def _phasor(key: str, z: complex, tol: float, sense: str, angle: str | None = None) -> dict:
+    """``{key: |z|, <angle>angle_deg, <angle>angle_defined}``; ``angle`` is ``key + "_"``
+    unless given."""
+    a, ok = angle_of(z, tol, sense)
+    angle = f"{key}_" if angle is None else angle
+    return {key: float(abs(z)), f"{angle}angle_deg": a, f"{angle}angle_defined": ok}
 
-    return angle_of(z, tol, sense)
 
-
-def _phasor_json(z: complex, tol: float = 0.0, sense: str = "with") -> dict:
-    a, ok = _angle(z, tol, sense)
-    return {"magnitude": float(abs(z)), "angle_deg": a, "angle_defined": ok}
+def _floats(v) -> list[float]:
+    return [float(x) for x in v]
 
 
 def frame_json(f: B.ShaftFrame) -> dict:
-    return {
-        "axis": [float(v) for v in f.rotation[2]],
-        "through": [float(v) for v in f.origin],
-        "x_axis": [float(v) for v in f.rotation[0]],
-        "y_axis": [float(v) for v in f.rotation[1]],
-    }
+    return {"axis": _floats(f.rotation[2]), "through": _floats(f.origin),
+            "x_axis": _floats(f.rotation[0]), "y_axis": _floats(f.rotation[1])}
 
 
 def unbalance_json(u: B.Unbalance) -> dict:
-    sa, sok = u.angle_of(u.static, u.tol_static)
-    ca, cok = u.angle_of(u.couple, u.tol_couple)
-    ma, mok = u.angle_of(u.moment, u.tol_moment)
+    s = u.angle_sense
     return {
         "mass": float(u.mass),
         "eccentricity": float(u.eccentricity),
-        "static_unbalance": float(abs(u.static)),
-        "static_unbalance_angle_deg": sa,
-        "static_unbalance_angle_defined": sok,
-        "couple_unbalance": float(abs(u.couple)),
-        "couple_unbalance_angle_deg": ca,
-        "couple_unbalance_angle_defined": cok,
-        "moment_unbalance": float(abs(u.moment)),
-        "moment_unbalance_angle_deg": ma,
-        "moment_unbalance_angle_defined": mok,
+        **_phasor("static_unbalance", u.static, u.tol_static, s),
+        **_phasor("couple_unbalance", u.couple, u.tol_couple, s),
+        **_phasor("moment_unbalance", u.moment, u.tol_moment, s),
         "tilt_deg": float(u.tilt_deg),
         "tilt_azimuth_deg": float(u.tilt_azimuth_deg),
         "tilt_azimuth_defined": bool(u.tilt_azimuth_defined),
@@ -78,7 +71,7 @@ def unbalance_json(u: B.Unbalance) -> dict:
                 "|com - through|); dynamically balanced: also couple <= rtol * trace(J_G)"
             ),
         },
-        "com_shaft": [float(v) for v in u.com_shaft],
+        "com_shaft": _floats(u.com_shaft),
         "shaft": frame_json(u.frame),
         "angle_sense": u.angle_sense,
         "warnings": list(u.warnings),
@@ -100,29 +93,13 @@ def plane_correction_json(pc: B.PlaneCorrection) -> dict:
 
 def residual_json(r: B.Residual) -> dict:
     s = r.angle_sense
-    st = _phasor_json(r.static, r.tol_static, s)
-    cp = _phasor_json(r.couple, r.tol_couple, s)
-    planes = []
-    for z, u in zip(r.planes, r.plane_unbalances):
-        pj = _phasor_json(u, r.tol_plane, s)
-        planes.append(
-            {
-                "plane": float(z),
-                "unbalance": pj["magnitude"],
-                "angle_deg": pj["angle_deg"],
-                "angle_defined": pj["angle_defined"],
-            }
-        )
     return {
         "mass": float(r.mass),
         "eccentricity": float(r.eccentricity),
-        "static_unbalance": st["magnitude"],
-        "static_unbalance_angle_deg": st["angle_deg"],
-        "static_unbalance_angle_defined": st["angle_defined"],
-        "couple_unbalance": cp["magnitude"],
-        "couple_unbalance_angle_deg": cp["angle_deg"],
-        "couple_unbalance_angle_defined": cp["angle_defined"],
-        "planes": planes,
+        **_phasor("static_unbalance", r.static, r.tol_static, s),
+        **_phasor("couple_unbalance", r.couple, r.tol_couple, s),
+        "planes": [{"plane": float(z), **_phasor("unbalance", u, r.tol_plane, s, angle="")}
+                   for z, u in zip(r.planes, r.plane_unbalances)],
     }
 
 
@@ -147,19 +124,10 @@ def corrections_json(c: B.Corrections) -> dict:
 
 
 def positions_json(p: B.PositionCorrections) -> dict:
-    rows = []
-    for pc, sp in zip(p.ideal.pair, p.splits):
-        for m, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
-            rows.append(
-                {
-                    "plane": float(pc.z) if pc.z is not None else None,
-                    "name": pc.name,
-                    "position": int(k),
-                    "angle_deg": float(a),
-                    "mass": float(m),
-                    "radius": float(pc.radius),
-                }
-            )
+    rows = [{"plane": float(pc.z) if pc.z is not None else None, "name": pc.name, "position": int(k),
+             "angle_deg": float(a), "mass": float(m), "radius": float(pc.radius)}
+            for pc, sp in zip(p.ideal.pair, p.splits)
+            for m, a, k in zip(sp.masses, sp.angles_deg, sp.positions)]
     return {
         "n_positions": int(p.n_positions),
         "pitch_deg": float(p.pitch_deg),
@@ -172,25 +140,10 @@ def positions_json(p: B.PositionCorrections) -> dict:
 
 
 def bearing_forces_json(bf: B.BearingForces) -> dict:
-    import numpy as np
-
-    rows = []
-    if bf.bearings is not None:
-        for i, (z, F, u, W) in enumerate(
-            zip(bf.bearings, bf.forces, bf.plane_unbalances, bf.static_loads)
-        ):
-            pj = _phasor_json(F, bf.tol_force, bf.angle_sense)
-            rows.append(
-                {
-                    "plane": float(z),
-                    "name": str(i + 1),
-                    "force": pj["magnitude"],
-                    "angle_deg": pj["angle_deg"],
-                    "angle_defined": pj["angle_defined"],
-                    "equivalent_unbalance": float(abs(u)),
-                    "static_load": float(W),
-                }
-            )
+    rows = [{"plane": float(z), "name": str(i + 1), **_phasor("force", F, bf.tol_force, bf.angle_sense, angle=""),
+             "equivalent_unbalance": float(abs(u)), "static_load": float(W)}
+            for i, (z, F, u, W) in enumerate(zip(bf.bearings or (), bf.forces, bf.plane_unbalances,
+                                                 bf.static_loads))]
     return {
         "speed": float(bf.speed),
         "bearing_forces": rows,
@@ -207,8 +160,8 @@ def bearing_forces_json(bf: B.BearingForces) -> dict:
 
 def allocation_json(a: B.Allocation) -> dict:
     return {
-        "allowed": [float(v) for v in a.allowed],
-        "unclamped": [float(v) for v in a.unclamped],
+        "allowed": _floats(a.allowed),
+        "unclamped": _floats(a.unclamped),
         "kind": a.kind,
         "rule": a.rule,
         "rbcli_rule": bool(a.rbcli_rule),
@@ -218,8 +171,8 @@ def allocation_json(a: B.Allocation) -> dict:
 def iso_state_json(st: B.IsoState, tol: float = 0.0, sense: str = "with") -> dict:
     return {
         "residual": [float(abs(u)) for u in st.residual],
-        "residual_angle_deg": [_angle(u, tol, sense)[0] for u in st.residual],
-        "residual_angle_defined": [_angle(u, tol, sense)[1] for u in st.residual],
+        "residual_angle_deg": [angle_of(u, tol, sense)[0] for u in st.residual],
+        "residual_angle_defined": [angle_of(u, tol, sense)[1] for u in st.residual],
         "ratio": [_f(r) for r in st.ratio],
         "achieved_grade": [_f(g) for g in st.achieved_grade],
         "static_unbalance": float(st.static_unbalance),
@@ -242,14 +195,14 @@ def iso_json(iso: B.IsoCheck) -> dict:
         "mass": float(iso.mass),
         "permissible_eccentricity": float(iso.permissible_eccentricity),
         "permissible_unbalance": float(iso.permissible_unbalance),
-        "allowed": [float(v) for v in iso.allocation.allowed],
+        "allowed": _floats(iso.allocation.allowed),
         "residual": [float(abs(u)) for u in st.residual],
         "ratio": [_f(r) for r in st.ratio],
         "achieved_grade": [_f(g) for g in st.achieved_grade],
         "static_achieved_grade": float(st.static_achieved_grade),
         "pass": bool(iso.passed),
         "judged": "as given",
-        "planes": [float(z) for z in iso.planes],
+        "planes": _floats(iso.planes),
         "planes_are": iso.planes_are,
         "allocation": allocation_json(iso.allocation),
         "before": iso_state_json(iso.before, iso.tol_plane, iso.angle_sense),

@@ -9,24 +9,222 @@ command line builds ``--help`` from it.
 
 from __future__ import annotations
 
+import dataclasses
+import math
+from collections.abc import Callable
 from typing import Any
 
+from rbcli.api.check import MAX_ITEMS
 from rbcli.api.params import SYMMETRY_TOL, Param, as_text
 from rbcli.errors import literal
+from rbcli.io.field import CHOICES
 
-__all__ = ["WHIRL"]
+__all__ = ["BALANCE", "FIELD_BALANCE", "ROLLCHECK", "WHIRL"]
+
+# ----------------------------------------------------------------------------- shared
+
+#: the shaft's direction (balance, rollcheck; ``dataclasses.replace(SHAFT, help=...)`` to word it)
+SHAFT = Param("shaft", "Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's "
+              "shaft, else z.", "direction")
+#: a point of the shaft's line
+THROUGH = Param("through", "A point of the shaft (z = 0 there): com, origin or x,y,z (a bare number "
+                "in the body's length unit, m by default; a unit after the last number applies to "
+                "all). Default: the body's shaft point, else the origin.", "point")
+#: gravity (None: standard gravity, 9.80665 m/s^2)
+G = Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", "acceleration")
+
+
+def _given(given: Any) -> str:
+    """A value as the caller gave it, inside a message."""
+    return literal(as_text(given))
+
+
+def _distinct(what: str):
+    """The check of two positions along the shaft that must differ."""
+    def valid(v: tuple[float, float], given: Any) -> str | None:
+        return None if v[0] != v[1] else f"the two {what} are both at z = {v[0]:.6g} m; they must differ"
+    return valid
 
 # ----------------------------------------------------------------------------- inertia, principal
 
 # ----------------------------------------------------------------------------- balance
 
+_BARE_LENGTH = "a bare number in the body's length unit, m by default"
+
+#: :func:`rbcli.balance` and ``rbcli balance``
+BALANCE = (
+    SHAFT,
+    THROUGH,
+    Param("mark", "Direction x,y,z (body frame) of the 0° reference mark; only its part at right "
+          "angles to the shaft counts. Default: body x projected (body y for a shaft near body x).",
+          "vector", "dimensionless", echo="direction"),
+    Param("zero_mark_deg", "Turn the 0° mark this far about the shaft, in the direction of rotation "
+          "(degrees, or with units, e.g. '0.5 rad'). Default: 0.", "degrees",
+          valid=lambda v, _: None if math.isfinite(v) else "must be a finite angle"),
+    Param("angle_sense", "Count angles with the rotation (with) or against it (against).", "choice",
+          choices=("with", "against"), default="with"),
+    Param("planes", f"Correction planes zA,zB along the shaft ({_BARE_LENGTH}; a unit after the last "
+          "number applies to both, e.g. '-100,100 mm').", "values", "length", (2,),
+          valid=_distinct("correction planes")),
+    Param("radius", f"Correction radius r, or rA,rB per plane ({_BARE_LENGTH}; or with units as for "
+          "{planes}). Default: the body's rim_radius.", "values", "length", (1, 2)),
+    Param("mass_step", "Round correction masses to multiples of this (e.g. '1 g'; a bare number is in "
+          "the body's mass unit, kg by default).", "quantity", "mass"),
+    Param("angle_step", "Round correction angles to multiples of this (degrees, or with units).",
+          "degrees", valid=lambda v, given: None if 0.0 < v <= 360.0 else
+          f"must be more than 0 and at most 360 degrees, got {_given(given)}"),
+    Param("positions", "N equally spaced fixed positions (holes, blades), position 1 on the 0° mark: "
+          "split each correction onto the two neighbouring ones.", "count",
+          valid=lambda n, _: None if n >= 3 else f"needs at least 3 equally spaced positions, got {n}"),
+    Param("speed", "Rotor speed (rad/s, or the body's units' angular_speed; or e.g. '1500 rpm'); with "
+          "{grade} the maximum service speed.", "quantity", "angular_speed"),
+    Param("bearings", f"Bearing positions z1,z2 along the shaft ({_BARE_LENGTH}; a unit after the "
+          "last number applies to both, e.g. '-50,150 mm').", "values", "length", (2,),
+          valid=_distinct("bearings")),
+    dataclasses.replace(G, help="Gravity for the static bearing loads (m/s^2, or with units). "
+                        "Default: 9.80665 m/s^2."),
+    Param("grade", "ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs {speed} "
+          "and {bearings}.", "grade"),
+    Param("tolerance_planes", "Planes the permissible unbalance is allocated to: bearings (ISO "
+          "21940-11, the default) or corrections (older practice).", "choice",
+          choices=("bearings", "corrections")),
+)
+
 # ----------------------------------------------------------------------------- field-balance
+
+
+def _positive(what: str, unit: str) -> Callable[[float, Any], str | None]:
+    return lambda x, given: (None if x > 0.0 and math.isfinite(x) else
+                             f"{what} must be a positive number, got {x:.6g} {unit}")
+
+
+def _one_of(key: str) -> Callable[[str, Any], str | None]:
+    allowed = CHOICES[key]
+    ways = " or ".join(filter(None, (", ".join(allowed[:-1]), allowed[-1])))
+    return lambda word, given: None if word in allowed else f"must be {ways}, not '{literal(word)}'"
+
+
+def _angle_step(x: float, given: Any) -> str | None:
+    return _positive("the angle step", "deg")(x, given) or (
+        "must not exceed 360 degrees" if x > 360.0 else None)
+
+
+def _positions(n: int, given: Any) -> str | None:
+    return None if 3 <= n <= 100_000 else \
+        f"must be a whole number from 3 to 100000 (holes or blades), not {literal(given)}"
+
+
+def _group(g: Any, given: Any) -> str | None:
+    return None if str(g).strip() in ("1", "2") else \
+        f"must be 1 (large machines, above 300 kW) or 2 (15 kW to 300 kW), not '{literal(g)}'"
+
+
+#: :func:`rbcli.field_balance` and ``rbcli field-balance`` (a job file's settings are the same
+#: parameters: :func:`rbcli.api.field.job.from_file`)
+FIELD_BALANCE = (
+    Param("job", "A job file (YAML): sensors, planes, speeds and runs (instead of {initial}, "
+          "{trial} and {run}).", "path", form="argument", metavar="JOB"),
+    Param("initial", "Readings without trial: amplitude@phase, one per sensor, e.g. '6.0@30', "
+          "'6 mm/s@30' or '170@112,53@78' (all bare, or all with units of one kind: µm, mm, mil; "
+          "mm/s, in/s; g, m/s²; optionally pk, pk-pk or rms after the unit).", "texts",
+          counts=(MAX_ITEMS,)),
+    Param("trial", "Trial mass@angle per plane, e.g. '10 g@0' (once per plane; a bare mass is in "
+          "grams).", "texts", counts=(MAX_ITEMS,), form="options"),
+    Param("run", "Readings with each trial on, in the order of {trial} (as many as {initial}).",
+          "nested", form="options"),
+    Param("cumulative", "Every trial was left on for the later runs.", "flag", default=False),
+    Param("trial_radius", "Radius the trials sat at (m, or with units); with {radius}, and for "
+          "{suggest_trial}.", "quantity", "length", valid=_positive("the trial radius", "m")),
+    Param("radius", "Radius the corrections go at (m, or with units); needs {trial_radius}.",
+          "quantity", "length", valid=_positive("the correction radius", "m")),
+    Param("method", "least-squares (the default with more readings than planes) or min-max (the "
+          "largest predicted reading as small as it can be).", valid=_one_of("method")),
+    Param("weights", "One weight per reading, w1,...,wN (least squares and min-max): a reading "
+          "that matters more weighs more.", "numbers"),
+    Param("mass_step", "Round correction masses to multiples of this, e.g. '0.5 g' (a bare number "
+          "is kg).", "quantity", "mass", valid=_positive("the mass step", "kg")),
+    Param("angle_step", "Round correction angles to multiples of this (degrees, or with units).",
+          "degrees", valid=_angle_step),
+    Param("positions", "N equally spaced positions (holes, blades), position 1 on the 0° mark: "
+          "split each correction onto the two neighbouring ones.", "count", valid=_positions),
+    Param("phase", "The instrument's phase: lag (grows against the rotation; most analysers) or "
+          "lead. Needs {angle_sense}.", valid=_one_of("phase")),
+    Param("angle_sense", "How the trial and correction angles are counted from the mark: with or "
+          "against the rotation.", valid=_one_of("angle_sense")),
+    Param("rotation", "How the rotor turns, seen from where the angles are read: cw or ccw (for "
+          "the dial and the sheet).", valid=_one_of("rotation")),
+    Param("measure", "The measure of readings that state none: pk, pk-pk or rms.",
+          valid=_one_of("measure")),
+    Param("severity", "Judge the readings: iso20816-3 (with {group} and {foundation}; velocity "
+          "readings, or displacement and acceleration at {speed}).", valid=_one_of("standard")),
+    Param("group", "ISO 20816-3 machine group: 1 (above 300 kW, or shaft height >= 315 mm) or 2 "
+          "(15 kW to 300 kW).", "ints", valid=_group),
+    Param("foundation", "ISO 20816-3 support: rigid or flexible.", valid=_one_of("foundation")),
+    Param("speed", "The balancing speed (a bare number is rad/s; or e.g. '1480 rpm'): for "
+          "{suggest_trial}, for {severity} with displacement or acceleration readings, and saved "
+          "with the coefficients.", "quantity", "angular_speed", valid=_positive("the speed", "rad/s")),
+    Param("coefficients", "Influence coefficients saved by {save_coefficients}: with {initial} "
+          "alone, a trim run.", "path"),
+    Param("save_coefficients", "Write the influence coefficients to this JSON file (never over an "
+          "input; an existing file only with {force}).", "path", api=False),
+    Param("suggest_trial", "Size a trial mass before the first run (with {rotor_mass}, {rotor} or "
+          "{bearing_load}, {speed} and {trial_radius}).", "flag", default=False),
+    Param("rotor_mass", "The rotor's mass, for {suggest_trial} (a bare number is kg); half its "
+          "weight on each bearing.", "quantity", "mass", valid=_positive("the rotor's mass", "kg")),
+    Param("rotor", "The rotor's body file, for {suggest_trial}: its mass.", "path"),
+    Param("bearing_load", "The static load on the bearing nearest the trial plane, for "
+          "{suggest_trial} (N, or with units).", "quantity", "force",
+          valid=_positive("the bearing load", "N")),
+    Param("trial_fraction", "The trial's centrifugal force as a fraction of that bearing load, "
+          "e.g. 0.05 or '5 %'. Default: 10 %.", "fraction"),
+    Param("full", "The extended result (method, residuals, significance...) even for a classic "
+          "one- or two-plane job (what a job sheet shows).", "flag", cli=False),
+)
 
 # ----------------------------------------------------------------------------- precess
 
 # ----------------------------------------------------------------------------- top, gyrocompass
 
 # ----------------------------------------------------------------------------- rollcheck
+
+#: :func:`rbcli.rollcheck` and ``rbcli rollcheck`` (its options ``--axle``, ``--radius`` and
+#: ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)
+ROLLCHECK = (
+    dataclasses.replace(SHAFT, help="Axle direction x,y,z (or x, y, z) in the body frame. Default: "
+                        "the body's shaft axis, else z."),
+    dataclasses.replace(THROUGH, help="A point of the axle line: com, origin or x,y,z (a bare number "
+                        "in the body's length unit, m by default; a unit after the last number "
+                        "applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the "
+                        "origin."),
+    Param("rim_radius", "Rim radius a, centre to floor when upright (a bare number in the body's "
+          "length unit, m by default; or with units). Default: the body's rim_radius, else the "
+          "largest round part (ring, disk, cylinder, torus, ...) coaxial with the axle.",
+          "quantity", "length"),
+    Param("tyre_radius", "Tube radius r of a rounded rim, 0 <= r <= a (a bare number is in the body's "
+          "length unit, else give one); 0 = knife edge, a = a sphere. Default: the rim's shape: a "
+          "torus's tube radius, a sphere's radius, a flat band for a cylinder, else 0.", "quantity",
+          "length", valid=lambda r, given: None if 0.0 <= r < math.inf else
+          f"must be 0 (knife edge) or a positive length, got {_given(given)}"),
+    dataclasses.replace(G, help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665."),
+    Param("rolling_speed", "Speed of the centre (a bare number is m/s, whatever the body's units: a "
+          "body file has no speeds; or with a unit, e.g. '20 km/h', '10 mph'); negative = "
+          "backwards.", "quantity", "speed", valid=lambda v, _: _finite(v)),
+    Param("spin", "Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 "
+          "rpm'); speed = a x spin.", "quantity", "angular_speed", valid=lambda v, _: _finite(v)),
+    Param("lean", "Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.",
+          "quantity", "angle", valid=lambda b, given: None if 0.0 <= b < 0.5 * math.pi else
+          "the inward lean from the vertical must be from 0 up to (not including) 90 degrees, got "
+          f"{_given(given)}"),
+    Param("circle", "Steady circle: radius of the circle the centre runs on (a bare number in the "
+          "body's length unit, m by default; or with units); 0 = spinning in place.", "quantity",
+          "length", valid=lambda r, given: None if 0.0 <= r < math.inf else
+          f"the circle radius must be 0 (spinning in place) or positive, got {_given(given)}"),
+    dataclasses.replace(SYMMETRY_TOL, echo="-"),
+)
+
+
+def _finite(x: float) -> str | None:
+    return None if math.isfinite(x) else "must be a finite number"
 
 # ----------------------------------------------------------------------------- report
 

@@ -3,7 +3,7 @@
 A diagram is a few panels, each a clock face of the rotor with arrows on it: a vector's
 magnitude (SI) and its angle as the command prints it. The results build them
 (:meth:`rbcli.api.balance.BalanceResult.diagram`,
-:meth:`rbcli.api.fieldbalance.FieldBalanceResult.diagram`); :mod:`rbcli.render.balanceplot`
+:meth:`rbcli.api.field.service.FieldBalanceResult.diagram`); :mod:`rbcli.render.balanceplot`
 only draws them.
 """
 

@@ -111,7 +111,7 @@ class GyrocompassOptions:
                        symmetry_tol=tol, given=given, typed=tuple(u.typed.items()))
         if body is None:
             raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
-        from rbcli.api.reference import shaft_axis
+        from rbcli.api.shaft import shaft_axis
 
         n, came = shaft_axis(body, n_axis)
         src = {"given": "{shaft}", "body": "the body's shaft", "default": "body z (default)"}[came]

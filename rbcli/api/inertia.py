@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 from rbcli.api import check
 from rbcli.api import options as o
 from rbcli.api.check import Point, Vector
-from rbcli.api.reference import Reference, part_rows, plausibility, snap, with_parts
+from rbcli.api.massprops import Reference, part_rows, plausibility, snap, with_parts
 from rbcli.api.result import Result
 from rbcli.errors import ParamError
 

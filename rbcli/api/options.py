@@ -28,7 +28,7 @@ from rbcli.errors import InputError, Note, ParamError, literal
 
 __all__ = ["Value", "UNIT_RULE", "NUMBER", "Units", "param", "naming", "is_bare", "quantity",
     "degrees", "numbers", "finite", "positive", "distinct", "grade", "vector", "point",
-    "direction", "choice", "symmetry_tolerance"]
+    "direction", "choice", "fraction", "symmetry_tolerance"]
 
 #: a number at the start of a value: what is left after it is the value's unit
 NUMBER = LazyRe(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
@@ -251,6 +251,14 @@ def choice(text: Value, option: str, allowed: Sequence[str]) -> str:
     return str(text)
 
 
+def fraction(value: Value, option: str) -> float:
+    """A fraction: a number (``0.05``) or a percentage (``"5 %"``, ``"5%"``)."""
+    text = value.strip() if isinstance(value, str) else value
+    if isinstance(text, str) and text.endswith("%"):
+        return quantity(text[:-1].strip(), "dimensionless", option) / 100.0
+    return quantity(text, "dimensionless", option)
+
+
 def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
     """The tolerance of a nearly symmetric body (``top``, ``gyrocompass``, ``rollcheck``):
     a fraction (``0.01``) or a percentage (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None
@@ -259,11 +267,7 @@ def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
 
     if value is None:
         return DEFAULT_TOLERANCE
-    text = value.strip() if isinstance(value, str) else value
-    if isinstance(text, str) and text.endswith("%"):
-        x = quantity(text[:-1].strip(), "dimensionless", option) / 100.0
-    else:
-        x = quantity(text, "dimensionless", option)
+    x = fraction(value, option)
     if not (0.0 <= x <= MAX_TOLERANCE):
         raise _error(option, f"must be from 0 to {MAX_TOLERANCE * 100:g} % (a fraction such as "
                      f"0.01 or a percentage such as '1 %'), got {literal(value)}")

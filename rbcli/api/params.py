@@ -48,6 +48,9 @@ KINDS: dict[str, str] = {
     "choice": "str",
     "text": "str",
     "texts": "str or sequence of str",
+    "nested": "str, or a sequence of str or of sequences of str",
+    "numbers": "str or sequence of float",
+    "fraction": "float or str",
     "flag": "bool",
     "path": "str or os.PathLike",
 }
@@ -67,6 +70,8 @@ class Param:
         ``quantity``, ``values`` and ``vector``
     counts : tuple of int — how many comma-separated values ``values`` takes
     choices : tuple of str — the words ``choice`` takes
+    form : str — how the command line takes it: ``"option"``, ``"options"`` (given once
+        per item: a list) or ``"argument"`` (positional)
     valid : callable, optional — ``valid(value, given)`` of the value read (SI) and the
         value as given: None when it is allowed, else why not (a message template), raised
         as a :class:`rbcli.ParamError` naming this parameter
@@ -85,6 +90,7 @@ class Param:
     quantity: str = ""
     counts: tuple[int, ...] = (1,)
     choices: tuple[str, ...] = ()
+    form: str = "option"
     valid: Callable[[Any, Any], str | None] | None = field(default=None, repr=False)
     echo: str = ""
     echo_default: bool = False
@@ -105,7 +111,7 @@ class Param:
     def checker(self) -> Callable[[Any, str], Any]:
         """The type check at the door of the API (:mod:`rbcli.api.check`)."""
         k = self.kind
-        if k in ("quantity", "degrees", "grade", "tolerance"):
+        if k in ("quantity", "degrees", "grade", "tolerance", "fraction"):
             return check.quantity
         if k == "values":
             return check.values(self.most) if self.most > 1 else check.quantity
@@ -117,6 +123,10 @@ class Param:
             return check.integers(self.most)
         if k == "texts":
             return check.texts(1, self.most)
+        if k == "nested":
+            return check.texts(2)
+        if k == "numbers":
+            return check.values(check.MAX_ITEMS)
         if k == "flag":
             return _flag
         if k == "path":
@@ -131,7 +141,7 @@ class Param:
         if self.kind in ("quantity", "values", "vector"):
             return self.quantity
         return {"degrees": "deg", "point": "point", "direction": "direction", "grade": "grade",
-                "count": "count", "tolerance": "percent"}.get(self.kind, "text")
+                "count": "count", "tolerance": "percent", "fraction": "percent"}.get(self.kind, "text")
 
 
 #: the tolerance of a nearly symmetric body, shared by top, gyrocompass, rollcheck and whirl
@@ -216,10 +226,12 @@ def _read_one(u: op.Units, p: Param, value: Any) -> Any:
         return op.grade(value, name)
     if k == "tolerance":
         return op.symmetry_tolerance(value, name)
+    if k == "fraction":
+        return op.fraction(value, name)
     if k == "choice":
         return op.choice(value.strip().lower() if isinstance(value, str) else value, name,
                          p.choices)
-    return value  # count, ints, text, texts, flag, path: as checked (the service reads them)
+    return value  # count, ints, text, texts, nested, numbers, flag, path: as checked (the service reads them)
 
 
 def read(body: Any, params: tuple[Param, ...], given: Mapping[str, Any]) -> Options:
@@ -261,24 +273,29 @@ def function(params: tuple[Param, ...], *, body: str = "required") -> Callable[[
     """Make ``fn(body, **kwargs)`` a public function of ``params``: its signature and the
     parameters of its docstring (which has ``{parameters}`` where they go) from the table,
     and its arguments checked at the door (``body`` an :class:`rbcli.Body`, or None when
-    ``body="optional"``; each keyword by :attr:`Param.checker`), arithmetic errors deep
-    inside as one :class:`rbcli.NonFiniteResult` (:func:`rbcli.api.check.arithmetic`)."""
+    ``body="optional"``, none at all when ``body="none"``: ``fn`` gets None; each keyword
+    by :attr:`Param.checker`), arithmetic errors deep inside as one
+    :class:`rbcli.NonFiniteResult` (:func:`rbcli.api.check.arithmetic`)."""
     kinds = checkers(params)
     optional = body == "optional"
+    takes_body = body != "none"
 
     def wrap(fn: Callable) -> Callable:
         @functools.wraps(fn)
         def public(body: Any = None, **kwargs: Any) -> Any:
-            b = check.body(body, optional=optional)
+            if takes_body:
+                body = check.body(body, optional=optional)
+            elif body is not None:
+                raise TypeError(f"{fn.__name__}() takes no body, keyword arguments only")
             kw = check.arguments(kinds, **kwargs)
             with check.arithmetic(kw):
-                return fn(b, **kw)
+                return fn(body, **kw)
 
-        first = inspect.Parameter("body", inspect.Parameter.POSITIONAL_OR_KEYWORD,
-                                  default=None if optional else inspect.Parameter.empty)
+        first = [inspect.Parameter("body", inspect.Parameter.POSITIONAL_OR_KEYWORD,
+                                   default=None if optional else inspect.Parameter.empty)]
         public.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
-            [first] + [inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=None)
-                       for p in params if p.api],
+            first * takes_body + [inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=None)
+                                  for p in params if p.api],
             return_annotation=inspect.signature(fn).return_annotation)
         public.__doc__ = (fn.__doc__ or "").replace("    {parameters}", document(params))
         return public
@@ -302,7 +319,7 @@ def si_unit(p: Param) -> str:
         return "deg"
     if p.kind == "grade":
         return "mm/s"
-    if p.kind in ("direction", "tolerance", "count", "ints"):
+    if p.kind in ("direction", "tolerance", "fraction", "count", "ints"):
         return "1"
     return ""
 

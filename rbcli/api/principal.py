@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from rbcli.api import check
 from rbcli.api import options as o
 from rbcli.api.check import Point
-from rbcli.api.reference import Reference, inertia_at, part_rows, plausibility, snap, with_parts
+from rbcli.api.massprops import Reference, inertia_at, part_rows, plausibility, snap, with_parts
 from rbcli.api.result import Result
 
 if TYPE_CHECKING:  # pragma: no cover

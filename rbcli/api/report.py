@@ -2,8 +2,8 @@
 ``rbcli report``.
 
 :class:`ReportOptions` reads the report's options once, through each command's own options
-object (:class:`rbcli.api.balance.BalanceOptions`, :class:`rbcli.api.precess.PrecessOptions`,
-:class:`rbcli.api.top.TopOptions`, :class:`rbcli.api.rollcheck.RollcheckOptions`), so a value
+object (:func:`rbcli.api.balance.parse`, :class:`rbcli.api.precess.PrecessOptions`,
+:class:`rbcli.api.top.TopOptions`, :func:`rbcli.api.rollcheck.parse`), so a value
 means in the report what it means to the command. :func:`run` computes each section by
 calling the services and returns a :class:`ReportResult` holding each section's result (or the
 one-line reason it is left out). It computes only: :mod:`rbcli.render.report` makes the
@@ -26,15 +26,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rbcli.api import check
+from rbcli.api import balance, check, rollcheck
 from rbcli.api.check import Point, Quantity, Values, Vector
 from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.balance import BalanceOptions
     from rbcli.api.precess import PrecessOptions
-    from rbcli.api.rollcheck import RollcheckOptions
     from rbcli.api.top import TopOptions
     from rbcli.api.params import Options
     from rbcli.model import Body
@@ -138,33 +136,29 @@ class ReportOptions:
     Attributes
     ----------
     given : tuple of (str, str) — the parameters given, as (parameter, text), for the header
-    balance : BalanceOptions or None — None when the body has no shaft and no balance
-        option is given (``balance_skip`` says so), or the body cannot have one
-        (``balance_error``)
+    balance : Options or None — None when the body has no shaft and no balance
+        option is given (``balance_skip`` says so)
     whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
         body cannot have one (``whirl_error``)
     precess : PrecessOptions or None — None without ``omega``
     top : TopOptions or None — None without a pivot or without ``spin`` and ``theta``
         (``top_skip`` says which)
-    rollcheck : RollcheckOptions or None — None without a rim radius (``rolling_skip``) or
-        when the body cannot roll (``rolling_error``)
+    rollcheck : Options or None — None without a rim radius (``rolling_skip``)
     date : str — the report's date, UTC: SOURCE_DATE_EPOCH when set, else now
     """
 
     given: tuple[tuple[str, str], ...]
-    balance: BalanceOptions | None
+    balance: Options | None
     whirl: Options | None
     precess: PrecessOptions | None
     top: TopOptions | None
-    rollcheck: RollcheckOptions | None
+    rollcheck: Options | None
     date: str
     balance_skip: str | None = None
-    balance_error: InputError | None = None
     whirl_skip: str | None = None
     whirl_error: InputError | None = None
     top_skip: str | None = None
     rolling_skip: str | None = None
-    rolling_error: InputError | None = None
 
     @classmethod
     def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
@@ -185,9 +179,7 @@ class ReportOptions:
             naming the parameter at fault (``planes: ...``).
         """
         from rbcli.api import options as op
-        from rbcli.api.balance import BalanceOptions
         from rbcli.api.precess import PrecessOptions
-        from rbcli.api.rollcheck import RollcheckOptions, round_parts
         from rbcli.api.top import TopOptions
         from rbcli.api import whirl
         from rbcli.api.whirlbearings import entries
@@ -217,13 +209,12 @@ class ReportOptions:
                if rim_radius is not None else None)
 
         # balance
-        b_opts, b_err = _section_parse(lambda: BalanceOptions.parse(
-            body, shaft=shaft, through=through, planes=planes, radius=radius, speed=rotor_speed,
-            bearings=bearings, g=g, grade=grade))
+        b_opts = balance.parse(body, shaft=shaft, through=through, planes=planes, radius=radius,
+                               speed=rotor_speed, bearings=bearings, g=g, grade=grade)
         asked = planes is not None or bearings is not None or grade is not None or rotor_speed is not None
         b_skip = None
         if shaft is None and body.shaft is None and not asked:
-            b_opts, b_err = None, None
+            b_opts = None
             b_skip = Note("balance: no shaft in the body file and no {shaft}, {planes}, {bearings} "
                           "or rotation {speed} option")
         # the rotor on its bearings: with a bearing stiffness
@@ -253,18 +244,17 @@ class ReportOptions:
         if t_skip is not None:
             t_opts = None
         # rolling stability
-        r_opts, r_err = _section_parse(lambda: RollcheckOptions.parse(
-            body, shaft=axle, through=through, rim_radius=rim, tyre_radius=tyre_radius, g=g,
-            rolling_speed=roll_speed, spin=rotor_speed, symmetry_tol=symmetry_tol))
+        r_opts = rollcheck.parse(body, shaft=axle, through=through, rim_radius=rim,
+                                 tyre_radius=tyre_radius, g=g, rolling_speed=roll_speed,
+                                 spin=rotor_speed, symmetry_tol=symmetry_tol)
         r_skip = None
-        if rim is None and body.rim_radius is None and not round_parts(body):
-            r_opts, r_err = None, None
+        if rim is None and body.rim_radius is None and not rollcheck.round_parts(body):
+            r_opts = None
             r_skip = Note("rolling stability: no rim radius: none in the body file (rim_radius), "
                           "no {rim_radius} option and no round part")
         return cls(given=given, balance=b_opts, whirl=w_opts, precess=p_opts, top=t_opts,
-                   rollcheck=r_opts, date=date, balance_skip=b_skip, balance_error=b_err,
-                   whirl_skip=w_skip, whirl_error=w_err, top_skip=t_skip, rolling_skip=r_skip,
-                   rolling_error=r_err)
+                   rollcheck=r_opts, date=date, balance_skip=b_skip, whirl_skip=w_skip,
+                   whirl_error=w_err, top_skip=t_skip, rolling_skip=r_skip)
 
 
 # ----------------------------------------------------------------------------- the result
@@ -428,12 +418,8 @@ def _balance(ctx: _Ctx) -> Section:
     o = ctx.opts
     if o.balance_skip is not None:
         return _skip(key, title, o.balance_skip)
-    if o.balance_error is not None:
-        return _skip(key, title, _not_computed("balance", o.balance_error))
-    from rbcli.api import balance as api
-
     try:
-        res = api.run(ctx.body, o.balance)
+        res = balance.run(ctx.body, o.balance)
     except InputError as exc:
         return _skip(key, title, _not_computed("balance", exc))
     if res.iso_check is not None and not res.iso_check.passed:
@@ -494,13 +480,9 @@ def _rollcheck(ctx: _Ctx) -> Section:
     o = ctx.opts
     if o.rolling_skip is not None:
         return _skip(key, title, o.rolling_skip)
-    from rbcli.api import rollcheck as ar
-
-    if o.rolling_error is not None:
-        return _skip(key, title, _not_computed("rolling stability", o.rolling_error))
     try:
-        res = ar.run(ctx.body, o.rollcheck)
-    except ar.OffCentreRim as exc:  # a cone or a top on its base rim: not a wheel
+        res = rollcheck.run(ctx.body, o.rollcheck)
+    except rollcheck.OffCentreRim as exc:  # a cone or a top on its base rim: not a wheel
         return _skip(key, title, Note(f"rolling stability: left out: {literal(exc.reason)}"))
     except InputError as exc:
         return _skip(key, title, _not_computed("rolling stability", exc))

@@ -21,7 +21,7 @@ import numpy as np
 from rbcli.api import options as op
 from rbcli.api.commands import DEFAULT_POINTS, MAX_ORDER, MAX_POINTS, WHIRL
 from rbcli.api.params import Options, as_text, function, read
-from rbcli.api.reference import shaft_axis, shaft_point
+from rbcli.api.shaft import shaft_axis, shaft_point
 from rbcli.api.whirlbearings import OPTIONS, bearings, entries, per_bearing
 from rbcli.api.whirlresult import (
     API_RULE, CONVENTIONS, AtSpeed, BearingData, BearingTableData, Campbell, CriticalMap,

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.commands import BALANCE
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
 
 HELP = """Rotor balance about a shaft: unbalance, two-plane corrections, bearing forces, ISO 21940-11.
 
@@ -36,25 +37,11 @@ it ('-100,100 mm' is both in mm). Tables show g, mm,
 g·mm and N unless --units is given.
 """
 
-@app.command(help=HELP)
+@c.command(BALANCE, help=HELP)
 def balance(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    shaft: str = typer.Option(None, "--shaft", help="Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the shaft (z = 0 there): com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all). Default: the body's shaft point, else the origin.", show_default=False),
-    mark: str = typer.Option(None, "--mark", help="Direction x,y,z (body frame) of the 0° reference mark; only its part at right angles to the shaft counts. Default: body x projected (body y for a shaft near body x).", show_default=False),
-    zero_mark_deg: str = typer.Option(None, "--zero-mark-deg", help="Turn the 0° mark this far about the shaft, in the direction of rotation (degrees, or with units, e.g. '0.5 rad'). Default: 0.", show_default=False),
-    angle_sense: str = typer.Option("with", "--angle-sense", help="Count angles with the rotation (with) or against it (against)."),
-    planes: str = typer.Option(None, "--planes", help="Correction planes zA,zB along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-100,100 mm').", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Correction radius r, or rA,rB per plane (a bare number in the body's length unit, m by default; or with units as for --planes). Default: the body's rim_radius.", show_default=False),
-    mass_step: str = typer.Option(None, "--mass-step", help="Round correction masses to multiples of this (e.g. '1 g'; a bare number is in the body's mass unit, kg by default).", show_default=False),
-    angle_step: str = typer.Option(None, "--angle-step", help="Round correction angles to multiples of this (degrees, or with units).", show_default=False),
-    positions: int = typer.Option(None, "--positions", help="N equally spaced fixed positions (holes, blades), position 1 on the 0° mark: split each correction onto the two neighbouring ones.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="Rotor speed (rad/s, or the body's units' angular_speed; or e.g. '1500 rpm'); with --grade the maximum service speed.", show_default=False),
-    bearings: str = typer.Option(None, "--bearings", help="Bearing positions z1,z2 along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
-    g: str = typer.Option(None, "--g", help="Gravity for the static bearing loads (m/s^2, or with units). Default: 9.80665 m/s^2.", show_default=False),
-    grade: str = typer.Option(None, "--grade", help="ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs --speed and --bearings.", show_default=False),
-    tolerance_planes: str = typer.Option(None, "--tolerance-planes", help="Planes the permissible unbalance is allocated to: bearings (ISO 21940-11, the default) or corrections (older practice).", show_default=False),
+    args: dict = c.PARAMS,
     apply: str = typer.Option(None, "--apply", help="Write the body with the correction masses added as point parts to this YAML file.", show_default=False),
     force: bool = typer.Option(False, "--force", help="Let --apply replace an existing file (never an input: the body file, a file it includes or a mesh it reads)."),
     plot: str = typer.Option(None, "--plot", help="Write the polar balancing diagram (png, svg or pdf): per correction plane the unbalance as given, the masses to add and the residual, on the rotor's clock face (without --planes: U and P_G).", show_default=False),
@@ -69,11 +56,7 @@ def balance(
 
     e, out, su = c.start(json_, fmt, units, shop=True)
     b = c.load_one(body, expr, e)
-    o = api.BalanceOptions.parse(
-        b, shaft=shaft, through=through, mark=mark, zero_mark_deg=zero_mark_deg,
-        angle_sense=angle_sense, planes=planes, radius=radius, mass_step=mass_step,
-        angle_step=angle_step, positions=positions, speed=speed, bearings=bearings, g=g,
-        grade=grade, tolerance_planes=tolerance_planes)
+    o = api.parse(b, **args)
     if apply is not None and o.planes is None:
         raise InputError("--apply: needs the correction planes, --planes zA,zB")
     if force and apply is None:
@@ -89,21 +72,12 @@ def balance(
         from rbcli.render import balanceplot
 
         c.save_plot(balanceplot.plot(res.diagram(), su), plot_path)
-    applied = None
-    if out_path is not None:
-        given = [("--shaft", shaft), ("--through", through), ("--mark", mark),
-                 ("--zero-mark-deg", zero_mark_deg),
-                 ("--angle-sense", "against" if angle_sense == "against" else None),
-                 ("--planes", planes), ("--radius", radius), ("--bearings", bearings),
-                 ("--speed", speed), ("--grade", grade)]
-        applied = _apply(res, out_path, apply, b, given)
+    applied = _apply(res, out_path, apply, b, args) if out_path is not None else None
     for w in res.warnings:
         e.warn(f"rbcli: warning: {c.said(w)}")
-    from rbcli.render.units import echo_rows
-
     c.emit(e, out, lambda: _json(res, applied),
            lambda doc: rb.document(doc, res, su, digits, applied=applied),
-           given=echo_rows(o, b, rb.OPTIONS))
+           given=lambda: rb.echo_rows(res))
     c.finish(res.return_code)
 
 
@@ -118,12 +92,18 @@ def _json(res, applied) -> dict:
     return d
 
 
-def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
+#: the options the header of ``--apply`` repeats, to check the body written
+_CHECK = ("shaft", "through", "mark", "zero_mark_deg", "angle_sense", "planes", "radius",
+          "bearings", "speed", "grade")
+
+
+def _apply(res, out_path, apply: str, b, args: dict) -> tuple[str, list[dict]]:
     """Write ``--apply OUT``: ``res.balanced_body().to_yaml()`` (the body with the correction
     masses as point parts) under a header, never over an input nor, without ``--force``,
     over an existing file. Returns (the path written, the parts added as JSON rows)."""
     import shlex
 
+    from rbcli.errors import option_name
     from rbcli.io import outfile
     from rbcli.io.writebody import check_output
 
@@ -132,7 +112,8 @@ def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
         state = "correction masses at the positions" + (" (rounded)" if fr.rounded else "")
     else:
         state = "rounded correction masses" if fr.rounded else "correction masses"
-    check = " ".join(f"{o}={shlex.quote(str(v))}" for o, v in given if v is not None)
+    check = " ".join(f"{option_name(p)}={shlex.quote(str(args[p]))}" for p in _CHECK
+                     if p in res.options.given)
     header = [
         f"Written by rbcli balance --apply from {b.source} ({b.name}):",
         f"the body with the two-plane {state} added as point parts",
@@ -144,8 +125,7 @@ def _apply(res, out_path, apply: str, b, given) -> tuple[str, list[dict]]:
     text += res.balanced_body().to_yaml(base_dir=out_path.parent)
     path = check_output(str(out_path), b, force=True)  # checked again as it is written
     outfile.write_atomic(path, text, "--apply", replace=True)
-    rows = [{"name": f"balance {a.plane}" + (f" (position {a.position})" if a.position is not None else ""),
-             "mass": float(a.mass), "at": [float(x) for x in a.at]} for a in res.added]
+    rows = [{"name": a.name, "mass": float(a.mass), "at": [float(x) for x in a.at]} for a in res.added]
     return str(out_path), rows
 
 

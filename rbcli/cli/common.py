@@ -56,8 +56,11 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
     (:class:`rbcli.api.params.Param`) where it has a parameter ``args = PARAMS``. The
     function receives ``args``: the table's values as typed (None: not given), by parameter.
 
-    Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``),
-    its help the table's text with parameters spelled as this command's options."""
+    Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``, or
+    this command's own word: rollcheck's ``rim_radius`` is ``--radius``, its man page's
+    metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
+    options; a parameter of ``form`` "argument" is a positional argument, of "options" an
+    option given once per item (a list; not given: None)."""
     import inspect
 
     from rbcli.cli.app import app
@@ -68,18 +71,22 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         table = [p for p in params if p.cli]
         own = list(inspect.signature(fn, eval_str=True).parameters.values())
         at = [q.name for q in own].index("args")
-        opts = []
+        opts, words = [], {}
         for p in table:
-            decls = [d for d in (p.short, p.flag or spelled(p.name)) if d]
-            kind = {"count": int, "flag": bool}.get(p.kind, str)
-            info = typer.Option(p.default, *decls, help=spell(p.help, spelled),
-                                metavar=p.metavar, show_default=p.default is not None)
-            opts.append(inspect.Parameter(p.name, inspect.Parameter.KEYWORD_ONLY, default=info,
-                                          annotation=kind))
-        names = [p.name for p in table]
+            flag = p.flag or spelled(p.name)
+            decls = [d for d in (p.short, flag) if d]
+            kind = list[str] if p.form == "options" else {"count": int, "flag": bool}.get(p.kind, str)
+            how = dict(help=spell(p.help, spelled), metavar=p.metavar, show_default=p.default is not None)
+            info = (typer.Argument(p.default, **how) if p.form == "argument"
+                    else typer.Option(p.default, *decls, **how))
+            words[p.name] = p.name if p.form == "argument" else flag.lstrip("-").replace("-", "_")
+            opts.append(inspect.Parameter(words[p.name], inspect.Parameter.KEYWORD_ONLY,
+                                          default=info, annotation=kind))
+        many = {p.name for p in table if p.form == "options"}
 
         def run(**kw):
-            args = {n: kw.pop(n) for n in names}
+            args = {name: (kw.pop(word) or None) if name in many else kw.pop(word)
+                    for name, word in words.items()}
             return fn(args=args, **kw)
 
         run.__name__, run.__qualname__, run.__module__ = fn.__name__, fn.__qualname__, fn.__module__

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.commands import FIELD_BALANCE
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
 
 HELP = """Field (trial-weight) balancing from vibration readings: the influence-coefficient method.
 
@@ -50,36 +51,10 @@ FILE.html or FILE.md writes the job sheet.
 """
 
 
-@app.command("field-balance", help=HELP)
+@c.command(FIELD_BALANCE, name="field-balance", help=HELP)
 def field_balance(
     ctx: typer.Context,
-    job: str = typer.Argument(None, metavar="JOB", help="A job file (YAML): sensors, planes, speeds and runs (instead of --initial, --trial and --run).", show_default=False),
-    initial: str = typer.Option(None, "--initial", help="Readings without trial: amplitude@phase, one per sensor, e.g. '6.0@30', '6 mm/s@30' or '170@112,53@78' (all bare, or all with units of one kind: µm, mm, mil; mm/s, in/s; g, m/s²; optionally pk, pk-pk or rms after the unit).", show_default=False),
-    trial: list[str] = typer.Option(None, "--trial", help="Trial mass@angle per plane, e.g. '10 g@0' (once per plane; a bare mass is in grams).", show_default=False),
-    run_: list[str] = typer.Option(None, "--run", help="Readings with each trial on, in the order of --trial (as many as --initial).", show_default=False),
-    cumulative: bool = typer.Option(False, "--cumulative", help="Every trial was left on for the later runs."),
-    trial_radius: str = typer.Option(None, "--trial-radius", help="Radius the trials sat at (m, or with units); with --radius, and for --suggest-trial.", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Radius the corrections go at (m, or with units); needs --trial-radius.", show_default=False),
-    method: str = typer.Option(None, "--method", help="least-squares (the default with more readings than planes) or min-max (the largest predicted reading as small as it can be).", show_default=False),
-    weights: str = typer.Option(None, "--weights", help="One weight per reading, w1,...,wN (least squares and min-max): a reading that matters more weighs more.", show_default=False),
-    mass_step: str = typer.Option(None, "--mass-step", help="Round correction masses to multiples of this, e.g. '0.5 g' (a bare number is kg).", show_default=False),
-    angle_step: str = typer.Option(None, "--angle-step", help="Round correction angles to multiples of this (degrees, or with units).", show_default=False),
-    positions: int = typer.Option(None, "--positions", help="N equally spaced positions (holes, blades), position 1 on the 0° mark: split each correction onto the two neighbouring ones.", show_default=False),
-    phase: str = typer.Option(None, "--phase", help="The instrument's phase: lag (grows against the rotation; most analysers) or lead. Needs --angle-sense.", show_default=False),
-    angle_sense: str = typer.Option(None, "--angle-sense", help="How the trial and correction angles are counted from the mark: with or against the rotation.", show_default=False),
-    rotation: str = typer.Option(None, "--rotation", help="How the rotor turns, seen from where the angles are read: cw or ccw (for the dial and the sheet).", show_default=False),
-    measure: str = typer.Option(None, "--measure", help="The measure of readings that state none: pk, pk-pk or rms.", show_default=False),
-    severity: str = typer.Option(None, "--severity", help="Judge the readings: iso20816-3 (with --group and --foundation; velocity readings, or displacement and acceleration at --speed).", show_default=False),
-    group: str = typer.Option(None, "--group", help="ISO 20816-3 machine group: 1 (above 300 kW, or shaft height >= 315 mm) or 2 (15 kW to 300 kW).", show_default=False),
-    foundation: str = typer.Option(None, "--foundation", help="ISO 20816-3 support: rigid or flexible.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="The balancing speed (a bare number is rad/s; or e.g. '1480 rpm'): for --suggest-trial, for --severity with displacement or acceleration readings, and saved with the coefficients.", show_default=False),
-    coefficients: str = typer.Option(None, "--coefficients", help="Influence coefficients saved by --save-coefficients: with --initial alone, a trim run.", show_default=False),
-    save_coefficients: str = typer.Option(None, "--save-coefficients", help="Write the influence coefficients to this JSON file (never over an input; an existing file only with --force).", show_default=False),
-    suggest_trial: bool = typer.Option(False, "--suggest-trial", help="Size a trial mass before the first run (with --rotor-mass, --rotor or --bearing-load, --speed and --trial-radius)."),
-    rotor_mass: str = typer.Option(None, "--rotor-mass", help="The rotor's mass, for --suggest-trial (a bare number is kg); half its weight on each bearing.", show_default=False),
-    rotor: str = typer.Option(None, "--rotor", help="The rotor's body file, for --suggest-trial: its mass.", show_default=False),
-    bearing_load: str = typer.Option(None, "--bearing-load", help="The static load on the bearing nearest the trial plane, for --suggest-trial (N, or with units).", show_default=False),
-    trial_fraction: str = typer.Option(None, "--trial-fraction", help="The trial's centrifugal force as a fraction of that bearing load, e.g. 0.05 or '5 %'. Default: 10 %.", show_default=False),
+    args: dict = c.PARAMS,
     plot: str = typer.Option(None, "--plot", help="Write the polar diagram of the balancing sheet (png, svg or pdf): per reading O, O+T and the trial's effect; per plane the trial and the correction mass.", show_default=False),
     report: str = typer.Option(None, "--report", help="Write the job sheet: FILE.html (self-contained) or FILE.md (figures in FILE_files/).", show_default=False),
     force: bool = typer.Option(False, "--force", help="Let --report and --save-coefficients replace an existing file (never an input)."),
@@ -93,69 +68,50 @@ def field_balance(
 
     e = c.env()
     if job_schema:
-        from rbcli.io.fieldjob import schema_text
+        from rbcli.io.field.jobfile import schema_text
 
         e.write(schema_text())
         return
-    if initial is None and job is None and not suggest_trial:
+    if args["initial"] is None and args["job"] is None and not args["suggest_trial"]:
         from typer._click.exceptions import MissingParameter
 
         param = next(p for p in ctx.command.params if p.name == "initial")
         raise MissingParameter(ctx=ctx, param=param)
-    from rbcli.api import fieldbalance as api
-    from rbcli.render import fieldbalance as rf
+    from rbcli.api.field import service as api
+    from rbcli.io import outfile
+    from rbcli.render.field import tables as rf
     from rbcli.render.units import ShopUnits
 
     out = c.output_format(json_, fmt)
     su = ShopUnits(units)
+    save_coefficients = args.pop("save_coefficients")
     if force and save_coefficients is None and report is None:
         raise InputError("--force: only used with --report or --save-coefficients")
-    o = api.FieldBalanceOptions.parse(
-        None, initial=initial, trial=trial or None, run=run_ or None, cumulative=cumulative,
-        trial_radius=trial_radius, radius=radius, job=job, method=method, weights=weights,
-        mass_step=mass_step, angle_step=angle_step, positions=positions, phase=phase,
-        angle_sense=angle_sense, rotation=rotation, measure=measure, severity=severity, group=group,
-        foundation=foundation, coefficients=coefficients, suggest_trial=suggest_trial,
-        rotor_mass=rotor_mass, rotor=rotor, bearing_load=bearing_load, trial_fraction=trial_fraction,
-        speed=speed, full=report is not None)
+    job = api.parse(None, **args, full=report is not None)
     # the outputs, checked before anything is computed: never an input the job reads
-    inputs = list(o.inputs)
+    inputs = list(job.inputs)
     plot_path = c.check_plot(plot, inputs) if plot is not None else None
     coeff_path = report_path = None
     if save_coefficients is not None:
-        from rbcli.io import outfile
-
         coeff_path = outfile.check(save_coefficients, inputs, "--save-coefficients", force=force,
                                    exts=("json",), others={"--plot": plot_path})
     if report is not None:
-        from rbcli.io import outfile
-
         report_path = outfile.check(report, inputs, "--report", force=force, exts=("html", "md"),
                                     others={"--plot": plot_path, "--save-coefficients": coeff_path})
         if report_path.suffix.lower() == ".md":
             outfile.check_folder(outfile.files_dir(report_path), inputs, "--report", force=force)
-    res = api.run(None, o)
-    if (save_coefficients is not None or plot is not None or report is not None) and not res.corrections:
+    res = api.run(None, job)
+    if not res.corrections and (coeff_path, plot_path, report_path) != (None, None, None):
         raise InputError("--suggest-trial without readings has no coefficients, diagram or sheet to "
                          "write; run the job first")
-    fig_svg = None
-    if plot_path is not None or report_path is not None:
-        from rbcli.render import balanceplot
-
-        fig = balanceplot.plot(res.diagram(), su, rf.reading_display(res.reading_kind, su))
-        if plot_path is not None:
-            c.save_plot(fig, plot_path)
-        if report_path is not None:
-            from rbcli.render.plots import figure_bytes
-
-            fig_svg = figure_bytes(fig, "svg").decode("utf-8")
+    fig_svg = _figure(res, su, plot_path, report_path)
     if coeff_path is not None:
-        from rbcli.io.outfile import write_document
         from rbcli.render.jsonout import dumps
 
-        write_document(coeff_path, dumps(res.coefficients_document()), "--save-coefficients", replace=force)
+        outfile.write_document(coeff_path, dumps(res.coefficients_document()), "--save-coefficients",
+                               replace=force)
     if report_path is not None:
-        _write_sheet(res, su, digits, report_path, fig_svg, job, force, ctx)
+        _write_sheet(res, su, digits, report_path, fig_svg, args["job"], force)
     for w in res.warnings:
         e.warn(f"rbcli: warning: {c.said(w)}")
 
@@ -170,7 +126,21 @@ def field_balance(
     c.emit(e, out, data, lambda doc: rf.field_document(doc, res, su, digits))
 
 
-def _write_sheet(res, su, digits, path, fig_svg, job, force, ctx) -> None:
+def _figure(res, su, plot_path, report_path) -> str | None:
+    """Draw the polar diagram to ``plot_path``; its SVG text for the sheet when there is one."""
+    if plot_path is None and report_path is None:
+        return None
+    from rbcli.render import balanceplot
+    from rbcli.render.field.tables import reading_display
+    from rbcli.render.plots import figure_bytes
+
+    fig = balanceplot.plot(res.diagram(), su, reading_display(res.reading_kind, su))
+    if plot_path is not None:
+        c.save_plot(fig, plot_path)
+    return None if report_path is None else figure_bytes(fig, "svg").decode("utf-8")
+
+
+def _write_sheet(res, su, digits, path, fig_svg, job, force) -> None:
     """Write the job sheet (HTML, or Markdown with its figure beside it)."""
     import shlex
     import sys
@@ -178,7 +148,7 @@ def _write_sheet(res, su, digits, path, fig_svg, job, force, ctx) -> None:
     from rbcli import __version__
     from rbcli.io import outfile
     from rbcli.render import report as rr
-    from rbcli.render.fieldsheet import job_sheet
+    from rbcli.render.field.sheet import job_sheet
 
     if job is not None:
         from rbcli.io.reader import read_regular

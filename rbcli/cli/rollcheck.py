@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.commands import ROLLCHECK
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
 
 HELP = """Stability of a wheel, disk or hoop rolling on a rough floor: the critical speed.
 
@@ -29,45 +30,25 @@ steady circular rolling (turn rate, spin, speed, stable or not). Exit status 1 w
 the motion asked about is unstable.
 """
 
-RADIUS_HELP = (
-    "Rim radius a, centre to floor when upright (a bare number in the body's length unit, m by default; or with units). Default: the body's "
-    "rim_radius, else the largest round part (ring, disk, cylinder, torus, ...) coaxial "
-    "with the axle."
-)
-
-
-@app.command(help=HELP)
+@c.command(ROLLCHECK, help=HELP)
 def rollcheck(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    axle: str = typer.Option(None, "--axle", help="Axle direction x,y,z (or x, y, z) in the body frame. Default: the body's shaft axis, else z.", show_default=False),
-    through: str = typer.Option(None, "--through", help="A point of the axle line: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the origin.", show_default=False),
-    radius: str = typer.Option(None, "--radius", help=RADIUS_HELP, show_default=False),
-    tyre_radius: str = typer.Option(None, "--tyre-radius", help="Tube radius r of a rounded rim, 0 <= r <= a (a bare number is in the body's length unit, else give one); 0 = knife edge, a = a sphere. Default: the rim's shape: a torus's tube radius, a sphere's radius, a flat band for a cylinder, else 0.", show_default=False),
-    g: str = typer.Option(None, "--g", help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="Speed of the centre (a bare number is m/s, whatever the body's units: a body file has no speeds; or with a unit, e.g. '20 km/h', '10 mph'); negative = backwards.", show_default=False),
-    spin: str = typer.Option(None, "--spin", help="Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 rpm'); speed = a x spin.", show_default=False),
-    lean: str = typer.Option(None, "--lean", help="Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.", show_default=False),
-    circle: str = typer.Option(None, "--circle", help="Steady circle: radius of the circle the centre runs on (a bare number in the body's length unit, m by default; or with units); 0 = spinning in place.", show_default=False),
-    symmetry_tol: str = c.SymmetryTolOpt,
+    args: dict = c.PARAMS,
     plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): lean frequency squared and growth rate against speed; with a circle, also the stable region in the (lean, circle radius) plane. An existing figure is replaced (atomically); an input file never.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    from rbcli.api.rollcheck import RollcheckOptions, run
+    from rbcli.api import rollcheck as api
     from rbcli.render import rollcheck as rr
-    from rbcli.render.units import echo_rows
 
     e, out, du = c.start(json_, fmt, units)
     b = c.load_one(body, expr, e)
-    # the API's names for the command line's --axle, --radius and --speed (one name per idea)
-    opts = RollcheckOptions.parse(b, shaft=axle, through=through, rim_radius=radius,
-                                  tyre_radius=tyre_radius, g=g, rolling_speed=speed, spin=spin,
-                                  lean=lean, circle=circle, symmetry_tol=symmetry_tol)
+    o = api.parse(b, **args)
     plot_path = c.check_plot(plot, b) if plot is not None else None
-    res = run(b, opts)
+    res = api.run(b, o)
     if plot_path is not None:
         c.save_plot(rr.plot(res, res.curves()), plot_path)
 
@@ -77,7 +58,7 @@ def rollcheck(
             doc.note(f"plot written to {plot_path}")
 
     c.emit(e, out, lambda: {**res.to_json(), "file": res.source}, tables,
-           given=echo_rows(opts, b, rr.OPTIONS))
+           given=lambda: rr.echo_rows(res))
     for w in res.warnings:  # after the output: a result that cannot be printed says only that
         e.warn(f"rbcli: {res.source}: warning: {c.said(w)}")
     c.finish(res.return_code)

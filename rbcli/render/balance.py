@@ -1,5 +1,5 @@
 """Tables of ``rbcli balance`` (the JSON is the result's own; ``field-balance``'s tables are
-:mod:`rbcli.render.fieldbalance`).
+:mod:`rbcli.render.field.tables`).
 
 Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
 correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
@@ -14,26 +14,19 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from rbcli.render import echo
 from rbcli.render.fmt import num, said
-from rbcli.render.units import RPM, ShopUnits
 from rbcli.render.text import Doc
+from rbcli.render.units import RPM, ShopUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.balance import BalanceResult
     from rbcli.core import balance as B
 
 
-
-#: the "options" table of ``balance`` (:func:`rbcli.render.units.echo_rows`)
-OPTIONS = (
-    ("shaft", "shaft", "direction"), ("through", "through", "point"), ("mark", "mark", "direction"),
-    ("zero_mark_deg", "zero_mark_deg", "deg"), ("angle_sense", "angle_sense", "text"),
-    ("planes", "planes", "length"), ("radius", "radius", "length"), ("mass_step", "mass_step", "mass"),
-    ("angle_step", "angle_step", "deg"), ("positions", "positions", "count"),
-    ("speed", "speed", "angular_speed"), ("bearings", "bearings", "length"),
-    ("g", "g", "acceleration"), ("grade", "grade", "grade"),
-    ("tolerance_planes", "tolerance_planes", "text"),
-)
+def echo_rows(r: BalanceResult) -> list[tuple[str, str, str]]:
+    """The options as understood (:func:`rbcli.render.echo.echo_rows`)."""
+    return echo.echo_rows(r.options, r.body.units)
 
 
 def angle(value: float, defined: bool, digits: int) -> str:
@@ -93,7 +86,7 @@ def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,
     _unbalance(doc, r, su, digits)
     if r.installed is not None:
         _corrections(doc, r, su, digits)
-    if r.bearing_positions is not None or r.speed is not None:
+    if r.options.bearings is not None or r.options.speed is not None:
         _bearings(doc, r, su, digits)
     if r.iso_check is not None:
         _iso(doc, r, su, digits)
@@ -228,8 +221,8 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
     f = r.forces
     assert f is not None
     L = su.unit("length")
-    if r.bearing_positions is not None:
-        has_speed = r.speed is not None
+    if r.options.bearings is not None:
+        has_speed = r.options.speed is not None
         cols = ["bearing", f"z [{L}]"]
         if has_speed:
             cols += ["rotating force [N]", "angle [°]", f"equivalent unbalance [{su.unit('unbalance')}]"]
@@ -237,7 +230,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
                 cols += ["after correction [N]"]
         cols += ["static load [N]"]
         rows = []
-        for i, z in enumerate(r.bearing_positions):
+        for i, z in enumerate(r.options.bearings):
             row = [str(i + 1), su.show(z, "length", digits)]
             if has_speed:
                 F = f.forces[i]
@@ -249,7 +242,7 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
             row += [num(f.static_loads[i], digits)]
             rows.append(row)
         title = (
-            f"bearings at {num(r.speed * RPM, digits)} rpm ({num(r.speed, digits)} rad/s)"
+            f"bearings at {num(r.options.speed * RPM, digits)} rpm ({num(r.options.speed, digits)} rad/s)"
             if has_speed
             else "bearings (give --speed for the rotating forces)"
         )
@@ -266,10 +259,10 @@ def _bearings(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None:
             "negative means the bearing holds the rotor down"
         )
         doc.note("; ".join(notes))
-    if r.speed is not None:
+    if r.options.speed is not None:
         ta, tok = r.torque_direction
         rows = [
-            ("speed", f"{num(r.speed * RPM, digits)} rpm = {num(r.speed, digits)}", "rad/s"),
+            ("speed", f"{num(r.options.speed * RPM, digits)} rpm = {num(r.options.speed, digits)}", "rad/s"),
             ("total rotating force Ω² U", num(abs(f.centrifugal_force), digits), "N"),
             ("|L| about the com (L = J_G ω)", num(r.angular_momentum_magnitude, digits), "kg·m²/s"),
             ("torque ω × L (about the com)", num(r.torque_magnitude, digits), "N·m"),

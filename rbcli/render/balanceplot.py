@@ -14,6 +14,7 @@ import math
 from typing import Any
 
 from rbcli.render.fmt import num
+from rbcli.render.plots import figure
 
 #: how each role is drawn: (colour, line style, legend order)
 ROLE_STYLE = {
@@ -48,8 +49,6 @@ def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
     matplotlib.figure.Figure
     """
     from matplotlib.lines import Line2D
-
-    from rbcli.render.plots import figure
 
     n = len(diagram.panels)
     cols = n if n <= 4 else 4  # a field job's many readings: rows of four dials

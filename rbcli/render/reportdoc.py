@@ -89,7 +89,7 @@ def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
     su = ShopUnits(None if du.si else ",".join(u for _, u in (du.length, du.mass, du.time)))
     doc = Doc()
     rb.document(doc, res, su, digits)
-    _options_table(doc, echo_rows(bo, body, rb.OPTIONS))
+    _options_table(doc, rb.echo_rows(res))
     s = _section(c, doc, body)
     if not (bo.planes or bo.speed or bo.bearings):
         s.items.append(Note("(corrections, bearing forces and the ISO grade need --planes, --speed "
@@ -138,7 +138,7 @@ def _rollcheck(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section
 
     doc = Doc()
     rr.document(doc, c.result, du, digits)
-    _options_table(doc, echo_rows(c.options, body, rr.OPTIONS))
+    _options_table(doc, rr.echo_rows(c.result))
     s = _section(c, doc, body)
     _figure(s, "rollcheck", rr.plot(c.result, c.figure),
             "Lean frequency squared and growth rate against speed (as rbcli rollcheck --plot).")

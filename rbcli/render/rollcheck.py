@@ -10,23 +10,21 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from rbcli.render import echo
 from rbcli.render.fmt import num, said
-from rbcli.render.units import DisplayUnits
+from rbcli.render.plots import figure, style
 from rbcli.render.text import Doc
 from rbcli.render.top import asymmetry_note
+from rbcli.render.units import RPM, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.rollcheck import RollcheckResult
     from rbcli.core.rolling import Curves
 
-from rbcli.render.units import RPM  # noqa: E402
 
-#: the "options" table of ``rollcheck`` (:func:`rbcli.render.units.echo_rows`)
-OPTIONS = (("shaft", "shaft_as_given", "direction"), ("through", "through_as_given", "point"),
-           ("rim_radius", "radius", "length"), ("tyre_radius", "tyre_radius", "length"),
-           ("g", "g", "acceleration"), ("rolling_speed", "speed", "speed"),
-           ("spin", "spin", "angular_speed"), ("lean", "lean", "angle"),
-           ("circle", "circle", "length"))
+def echo_rows(res: RollcheckResult) -> list[tuple[str, str, str]]:
+    """The options as understood (:func:`rbcli.render.echo.echo_rows`)."""
+    return echo.echo_rows(res.options, res.units)
 
 
 # ----------------------------------------------------------------------------- tables
@@ -62,8 +60,8 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
     if st.band is not None:
         rows[2:2] = [("band width (along the axle)", du.show(st.band[0] + st.band[1], "length", digits), L)]
     doc.kv("wheel", rows)
-    doc.note(f"rim radius from {said(o.radius_source)}{_tyre_source(res)}; axle along "
-             f"[{', '.join(num(x, digits) for x in w.axle)}] ({said(o.axle_source)}).")
+    doc.note(f"rim radius from {said(res.setup.radius_source)}{_tyre_source(res)}; axle along "
+             f"[{', '.join(num(x, digits) for x in w.axle)}] ({said(res.setup.axle_source)}).")
     if res.asymmetry is not None:
         asymmetry_note(doc, res.asymmetry, o.symmetry_tol, res.asymmetry_effect, du, digits, "wheel", "I")
     doc.note("model: " + res.model + ".")
@@ -85,8 +83,8 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
     doc.note(_threshold_note(st, digits))
     v = res.verdict
     if v is not None:
-        given = "--speed" if o.speed is not None else "--spin"
-        speed_arg = (_speed_text(v.speed, du, digits) if o.speed is not None
+        given = "--speed" if o.rolling_speed is not None else "--spin"
+        speed_arg = (_speed_text(v.speed, du, digits) if o.rolling_speed is not None
                      else f"{du.show(v.spin, 'angular_speed', digits)} rad/s")
         rows = [
             ("speed v" + (" (backwards)" if v.backwards else ""), du.show(v.speed, "speed", digits), du.unit("speed")),
@@ -104,7 +102,7 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
             if v.growth_rate:
                 rows.append(("e-folding time", num(1.0 / v.growth_rate, digits), "s"))
         doc.kv(f"straight rolling at {given} {speed_arg}", rows)
-        if o.straight_asked:
+        if res.straight_asked:
             doc.note(_straight_verdict(res, du, digits))
         else:
             doc.note("(straight rolling at this speed, for comparison; the steady circle below is "
@@ -145,7 +143,7 @@ def _speed_text(v: float, du: DisplayUnits, digits: int) -> str:
 
 
 def _tyre_source(res: RollcheckResult) -> str:
-    o, st = res.options, res.straight
+    o, st = res.setup, res.straight
     if o.tyre_radius_kind == "tyre_radius":  # given (a Note: "{tyre_radius}")
         return f"; tyre radius from {said(o.tyre_radius_kind)}"
     if o.rim is None:
@@ -200,7 +198,7 @@ def _straight_verdict(res: RollcheckResult, du: DisplayUnits, digits: int) -> st
 
 def _circle_how(res: RollcheckResult) -> str:
     o = res.options
-    sp = "--speed" if o.speed is not None else "--spin"
+    sp = "--speed" if o.rolling_speed is not None else "--spin"
     if o.lean is not None and o.circle is not None:
         return "from --lean and --circle"
     if o.circle is not None:
@@ -215,8 +213,6 @@ def plot(res: RollcheckResult, cv: Curves):
     """nu^2 and the lean frequency / growth rate against speed (critical speed marked);
     with a circle, the stable region in the (lean, circle radius) plane instead of the
     second panel. ``cv`` is ``res.curves()``. Returns the matplotlib Figure."""
-    from rbcli.render.plots import figure, style
-
     vc = cv.critical_speed
     speeds, nu2 = cv.speeds, cv.nu2
     vmax = float(speeds[-1])

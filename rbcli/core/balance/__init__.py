@@ -1,5 +1,5 @@
-"""Rigid-rotor balancing about a shaft: unbalance, corrections, bearing loads, ISO 21940-11,
-field balancing.
+"""Rigid-rotor balancing about a shaft: unbalance, corrections, bearing loads, ISO 21940-11
+(field balancing from vibration readings is :mod:`rbcli.core.field`).
 
 Everything here follows the physics sheet ``physics/balance.md`` (cited as "sheet §n"),
 one module per job:
@@ -10,7 +10,6 @@ one module per job:
 ``corrections``    two-plane corrections, rounding, fixed positions, the residual (sheet §2.5)
 ``bearings``       bearing forces at speed, static loads, the torque ω × L (sheet §2.6)
 ``iso``            ISO 21940-11 permissible unbalance, allocation and verdict (sheet §1)
-``field``          field balancing by influence coefficients (sheet §5)
 =================  ==========================================================================
 
 Every public name is re-exported here (``from rbcli.core import balance as B;
@@ -60,9 +59,6 @@ from rbcli.core.balance.corrections import (
     correction_points, corrections, mass_at_radius, round_corrections, split_between,
     split_corrections, split_to_positions,
 )
-from rbcli.core.balance.field import (
-    FieldSinglePlane, FieldTwoPlane, field_single_plane, field_two_plane,
-)
 from rbcli.core.balance.frame import (
     ShaftFrame, Unbalance, add_point_masses, plane_unbalances, shaft_frame, unbalance,
 )
@@ -76,12 +72,11 @@ __all__ = [
     "ISO_GRADE_MAX", "ISO_GRADE_MIN", "ISO_OUTBOARD_FLOOR", "LARGE_CORRECTION_FRACTION",
     "NARROW_PLANE_FRACTION", "SMALL_RESPONSE_AMPLITUDE", "SMALL_RESPONSE_PHASE_DEG",
     "STANDARD_GRAVITY", "TILT_GAP_RTOL",
-    "Allocation", "BalanceValueError", "BearingForces", "Corrections", "FieldSinglePlane",
-    "FieldTwoPlane", "IsoCheck", "IsoState", "PlaneCorrection", "PositionCorrections",
+    "Allocation", "BalanceValueError", "BearingForces", "Corrections", "IsoCheck", "IsoState", "PlaneCorrection", "PositionCorrections",
     "Residual", "ShaftFrame", "Split", "Unbalance",
     "achieved_grade", "add_point_masses", "allocate_permissible", "angle_of",
     "apply_corrections", "bearing_forces", "correction_points", "corrections",
-    "field_single_plane", "field_two_plane", "iso_check", "mass_at_radius", "permissible_unbalance",
+    "iso_check", "mass_at_radius", "permissible_unbalance",
     "phasor", "plane_unbalances", "round_corrections", "shaft_frame", "split_between",
     "split_corrections", "split_to_positions", "unbalance", "wrap_deg",
 ]

@@ -12,14 +12,21 @@ JSON adds ``method``, ``residuals`` and the keys below.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, fields, is_dataclass
 from typing import Any
 
+from rbcli import __version__
+from rbcli.api.diagram import Arrow, Diagram, Panel
 from rbcli.api.result import Result
+from rbcli.core.field.fit import FittedMass
+from rbcli.core.field.solve import deg
+from rbcli.io.field import plane_names
+from rbcli.io.field.coefficients import FORMAT, VERSION
 
-__all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedMass", "FittedPlane",
-    "Fitted", "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "deg",
-    "CONVENTION", "SI_UNITS"]
+__all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedPlane", "Fitted",
+    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text",
+    "row_names", "CONVENTION", "SI_UNITS"]
 
 #: the angle convention of field balancing, in words (as it always was)
 CONVENTION = ("angles and phases in degrees, counted in the same sense as the trial angles and the "
@@ -29,14 +36,19 @@ CONVENTION = ("angles and phases in degrees, counted in the same sense as the tr
 SI_UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
 
 
-def deg(z: complex) -> float:
-    """arg z in degrees in [0, 360) (within 1e-9° below 360 is 0; never -0.0)."""
-    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
-    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
+class Plain:
+    """A record whose JSON is its fields, in order (records in it likewise, tuples as lists)."""
+
+    def to_json(self) -> dict[str, Any]:
+        return {f.name: _plain(getattr(self, f.name)) for f in fields(self)}  # type: ignore[arg-type]
 
 
-def _mag_deg(z: complex) -> tuple[float, float]:
-    return abs(z), (deg(z) if z != 0 else 0.0)
+def _plain(v: Any) -> Any:
+    if isinstance(v, tuple):
+        return [_plain(x) for x in v]
+    if hasattr(v, "to_json"):
+        return v.to_json()
+    return {f.name: _plain(getattr(v, f.name)) for f in fields(v)} if is_dataclass(v) else v
 
 
 @dataclass(frozen=True)
@@ -83,7 +95,7 @@ class FieldCorrection:
 
 
 @dataclass(frozen=True)
-class FieldResidual:
+class FieldResidual(Plain):
     """A predicted reading after the correction (JSON ``residuals[k]``).
 
     Attributes
@@ -100,41 +112,29 @@ class FieldResidual:
     angle_deg: float
     initial: float
 
-    def to_json(self) -> dict[str, Any]:
-        return {"sensor": self.sensor, "speed": self.speed, "amplitude": self.amplitude,
-                "angle_deg": self.angle_deg, "initial": self.initial}
+
+def row_names(sensors: Sequence[str], speeds: Sequence[tuple[str, Any]], n: int) -> list[tuple[str, str]]:
+    """(sensor, speed) of each of ``n`` readings: reading k is sensor ``k % len(sensors)`` at
+    speed ``k // len(sensors)`` (sensors numbered from 1, speeds unnamed, when not given)."""
+    ns = max(len(sensors), 1)
+    return [(sensors[k % ns] if sensors else str(k + 1), speeds[k // ns][0] if speeds else "")
+            for k in range(n)]
 
 
 @dataclass(frozen=True)
-class FittedMass:
-    """A mass to fit (JSON ``fitted.planes[j].masses[i]``): mass kg, angle_deg, position
-    (1-based, or None)."""
-
-    mass: float
-    angle_deg: float
-    position: int | None
-
-    def to_json(self) -> dict[str, Any]:
-        return {"mass": self.mass, "angle_deg": self.angle_deg, "position": self.position}
-
-
-@dataclass(frozen=True)
-class FittedPlane:
-    """The masses fitted in one plane and their net correction (mass, angle_deg)."""
+class FittedPlane(Plain):
+    """The masses fitted in one plane (:class:`rbcli.core.field.fit.FittedMass`: mass kg,
+    angle_deg, position 1-based or None) and their net correction (mass, angle_deg)."""
 
     name: str
-    masses: tuple[FittedMass, ...]
+    positions: int | None
     mass: float
     angle_deg: float
-    positions: int | None
-
-    def to_json(self) -> dict[str, Any]:
-        return {"name": self.name, "positions": self.positions, "mass": self.mass,
-                "angle_deg": self.angle_deg, "masses": [m.to_json() for m in self.masses]}
+    masses: tuple[FittedMass, ...]
 
 
 @dataclass(frozen=True)
-class Fitted:
+class Fitted(Plain):
     """The corrections as fitted — rounded and/or split — and the readings they leave.
 
     Attributes
@@ -150,14 +150,9 @@ class Fitted:
     planes: tuple[FittedPlane, ...]
     residuals: tuple[FieldResidual, ...]
 
-    def to_json(self) -> dict[str, Any]:
-        return {"mass_step": self.mass_step, "angle_step_deg": self.angle_step_deg,
-                "planes": [p.to_json() for p in self.planes],
-                "residuals": [r.to_json() for r in self.residuals]}
-
 
 @dataclass(frozen=True)
-class SeverityRow:
+class SeverityRow(Plain):
     """One reading judged (mm/s r.m.s. values in m/s, SI): before and predicted after."""
 
     sensor: str
@@ -167,13 +162,9 @@ class SeverityRow:
     after: float
     after_zone: str
 
-    def to_json(self) -> dict[str, Any]:
-        return {"sensor": self.sensor, "speed": self.speed, "before": self.before,
-                "before_zone": self.before_zone, "after": self.after, "after_zone": self.after_zone}
-
 
 @dataclass(frozen=True)
-class Severity:
+class Severity(Plain):
     """ISO 20816-3 zones of the readings (JSON ``severity``).
 
     Attributes
@@ -183,7 +174,7 @@ class Severity:
     foundation : str — "rigid" or "flexible"
     boundaries : (float, float, float) — A/B, B/C, C/D, m/s r.m.s.
     after_is : str — "fitted" (the rounded or split masses) or "computed"
-    rows : tuple of SeverityRow
+    readings : tuple of SeverityRow
     """
 
     standard: str
@@ -191,16 +182,11 @@ class Severity:
     foundation: str
     boundaries: tuple[float, float, float]
     after_is: str
-    rows: tuple[SeverityRow, ...]
-
-    def to_json(self) -> dict[str, Any]:
-        return {"standard": self.standard, "group": self.group, "foundation": self.foundation,
-                "boundaries": list(self.boundaries), "after_is": self.after_is,
-                "readings": [r.to_json() for r in self.rows]}
+    readings: tuple[SeverityRow, ...]
 
 
 @dataclass(frozen=True)
-class SuggestedTrial:
+class SuggestedTrial(Plain):
     """A trial mass sized before the run (JSON ``suggested_trial``).
 
     Attributes
@@ -229,17 +215,9 @@ class SuggestedTrial:
     expected_change: tuple[float, ...] | None
     expected_change_ratio: tuple[float, ...] | None
 
-    def to_json(self) -> dict[str, Any]:
-        return {"plane": self.plane, "mass": self.mass, "radius": self.radius, "speed": self.speed,
-                "bearing_load": self.bearing_load, "bearing_load_from": self.bearing_load_from,
-                "fraction": self.fraction, "force": self.force,
-                "expected_change": None if self.expected_change is None else list(self.expected_change),
-                "expected_change_ratio": (None if self.expected_change_ratio is None
-                                          else list(self.expected_change_ratio))}
-
 
 @dataclass(frozen=True)
-class Conventions:
+class Conventions(Plain):
     """How angles and readings were counted (JSON ``conventions``).
 
     Attributes
@@ -260,10 +238,6 @@ class Conventions:
     rotation: str | None
     converted: bool
     text: str
-
-    def to_json(self) -> dict[str, Any]:
-        return {"phase": self.phase, "angle_sense": self.angle_sense, "rotation": self.rotation,
-                "converted": self.converted, "text": self.text}
 
 
 def convention_text(phase: str | None, angle_sense: str | None, rotation: str | None, converted: bool) -> str:
@@ -385,11 +359,14 @@ class FieldBalanceResult(Result):
         "m/s" or "m/s^2"; None for bare readings (a relative scale)."""
         return None if self.reading_kind is None else SI_UNITS[self.reading_kind]
 
+    @property
+    def angle_convention(self) -> str:
+        """The conventions in words (JSON ``angle_convention``)."""
+        return CONVENTION if self.conventions is None else self.conventions.text
+
     def row_names(self) -> list[tuple[str, str]]:
         """(sensor, speed) of each reading, in order."""
-        n = max(len(self.sensors), 1)
-        return [(self.sensors[k % n] if self.sensors else str(k + 1),
-                 self.run_speeds[k // n][0] if self.run_speeds else "") for k in range(len(self.initial))]
+        return row_names(self.sensors, self.run_speeds, len(self.initial))
 
     # ------------------------------------------------------------------ the polar diagram
 
@@ -398,8 +375,6 @@ class FieldBalanceResult(Result):
         :class:`rbcli.api.diagram.Diagram`: per reading the reading O without trial, each
         run O+T and the change T made (from O's tip to O+T's); then per plane the trial
         mass and the correction to add (trial removed). Angles as given and printed."""
-        from rbcli.api.diagram import Arrow, Diagram, Panel
-
         panels = []
         n = self.planes
         names = self.plane_names or tuple("AB"[:n])
@@ -453,75 +428,72 @@ class FieldBalanceResult(Result):
 
     def to_json(self) -> dict[str, Any]:
         """The document ``rbcli field-balance --json`` prints."""
+        conventions = None if self.conventions is None else self.conventions.to_json()
         if not self.corrections:  # a trial suggestion only
-            return {
-                "suggested_trial": [s.to_json() for s in self.suggested_trial],
-                "conventions": None if self.conventions is None else self.conventions.to_json(),
-                "angle_convention": CONVENTION if self.conventions is None else self.conventions.text,
-                "warnings": list(self.warnings),
-            }
+            return {"suggested_trial": [s.to_json() for s in self.suggested_trial],
+                    "conventions": conventions, "angle_convention": self.angle_convention,
+                    "warnings": list(self.warnings)}
+        ext = self.extended
         out: dict[str, Any] = {"planes": self.planes}
-        if self.extended:
-            out["method"] = self.method
-            out["sensors"] = list(self.sensors)
-            out["speeds"] = [{"name": n, "speed": w} for n, w in self.run_speeds]
-        out["corrections"] = [c.to_json() for c in self.corrections]
-        out["influence"] = [[{"magnitude": abs(a), "angle_deg": deg(a)} for a in row] for row in self.alpha]
-        out["trials"] = [{"mass": abs(t), "angle_deg": deg(t)} for t in self.trial_masses]
-        out["trial_radius"] = None if self.radii is None else float(self.radii[0])
-        readings: dict[str, Any] = {"kind": self.reading_kind or "relative", "unit": self.reading_unit}
-        if self.extended:
-            readings["measure"] = self.measure
-            readings["converted"] = [{"from": a, "to": b, "count": n} for a, b, n in self.measures_converted]
-            readings["g"] = "standard gravity 9.80665 m/s^2 (an acceleration)" if self.gravity else None
-        out["readings"] = readings
-        if self.extended:
-            out["residuals"] = [r.to_json() for r in self.residuals]
-            amps = [r.amplitude for r in self.residuals]
-            out["residual_max"] = max(amps)
-            out["residual_rms"] = math.sqrt(sum(a * a for a in amps) / len(amps))
-            if self.weights is not None:
-                out["weights"] = list(self.weights)
-        if self.planes == 2 or (self.extended and self.cond is not None):
+        if ext:
+            out.update(method=self.method, sensors=list(self.sensors),
+                       speeds=[{"name": n, "speed": w} for n, w in self.run_speeds])
+        out.update(
+            corrections=[c.to_json() for c in self.corrections],
+            influence=[[{"magnitude": abs(a), "angle_deg": deg(a)} for a in row] for row in self.alpha],
+            trials=[{"mass": abs(t), "angle_deg": deg(t)} for t in self.trial_masses],
+            trial_radius=None if self.radii is None else float(self.radii[0]),
+            readings=self._readings_json())
+        if ext:
+            out.update(self._residuals_json())
+        if self.planes == 2 or (ext and self.cond is not None):
             out["cond"] = float(self.cond)
             if self.det is not None:
                 out["det_magnitude"] = float(abs(self.det))
             out["ill_conditioned"] = bool(self.ill_conditioned)
+        if ext:
+            out.update(significance=[{"plane": n, "factor": f, "flagged": f <= self.significance_limit}
+                                     for n, f in zip(self.plane_names, self.significance_factors)],
+                       significance_limit=self.significance_limit)
+        out.update(small_response=[bool(s) for s in self.small_response],
+                   predicted_residual=[float(abs(v)) for v in self.residual_values],
+                   cumulative=bool(self.cumulative))
+        if ext:
+            out.update(fitted=None if self.fitted is None else self.fitted.to_json(),
+                       severity=None if self.severity is None else self.severity.to_json(),
+                       suggested_trial=[s.to_json() for s in self.suggested_trial],
+                       coefficients_from=self.coefficients_from, conventions=conventions, job=self.job,
+                       name=self.name, notes=list(self.notes))
+        out.update(angle_convention=self.angle_convention, warnings=list(self.warnings))
+        return out
+
+    def _readings_json(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"kind": self.reading_kind or "relative", "unit": self.reading_unit}
         if self.extended:
-            out["significance"] = [
-                {"plane": n, "factor": f, "flagged": f <= self.significance_limit}
-                for n, f in zip(self.plane_names, self.significance_factors)]
-            out["significance_limit"] = self.significance_limit
-        out["small_response"] = [bool(s) for s in self.small_response]
-        out["predicted_residual"] = [float(abs(v)) for v in self.residual_values]
-        out["cumulative"] = bool(self.cumulative)
-        if self.extended:
-            out["fitted"] = None if self.fitted is None else self.fitted.to_json()
-            out["severity"] = None if self.severity is None else self.severity.to_json()
-            out["suggested_trial"] = [s.to_json() for s in self.suggested_trial]
-            out["coefficients_from"] = self.coefficients_from
-            out["conventions"] = None if self.conventions is None else self.conventions.to_json()
-            out["job"] = self.job
-            out["name"] = self.name
-            out["notes"] = list(self.notes)
-        out["angle_convention"] = CONVENTION if self.conventions is None else self.conventions.text
-        out["warnings"] = list(self.warnings)
+            out.update(measure=self.measure, converted=[{"from": a, "to": b, "count": n}
+                                                        for a, b, n in self.measures_converted],
+                       g="standard gravity 9.80665 m/s^2 (an acceleration)" if self.gravity else None)
+        return out
+
+    def _residuals_json(self) -> dict[str, Any]:
+        amps = [r.amplitude for r in self.residuals]
+        out: dict[str, Any] = {"residuals": [r.to_json() for r in self.residuals], "residual_max": max(amps),
+                               "residual_rms": math.sqrt(sum(a * a for a in amps) / len(amps))}
+        if self.weights is not None:
+            out["weights"] = list(self.weights)
         return out
 
     # ------------------------------------------------------------------ stored coefficients
 
     def coefficients_document(self) -> dict[str, Any]:
         """The influence coefficients as the file ``--save-coefficients`` writes (see
-        :mod:`rbcli.io.fieldcoeffs` for the format): exact (re, im) per reading and plane,
+        :mod:`rbcli.io.field.coefficients` for the format): exact (re, im) per reading and plane,
         with their units, speeds, sensor and plane names and conventions."""
-        from rbcli import __version__
-        from rbcli.io.fieldcoeffs import FORMAT, VERSION
-
         rows = self.row_names()
         speeds = list(self.run_speeds) or [("", None)]
         sensors = list(self.sensors) or [str(k + 1) for k in range(len(self.initial))]
         radii = self.plane_radii or (self.radii,) * self.planes
-        names = self.plane_names or tuple("ABCDEFGHIJKLMNOPQRSTUVWXYZ"[:self.planes])
+        names = self.plane_names or plane_names(self.planes)
         conv = self.conventions
         return {
             "format": FORMAT,
@@ -546,7 +518,7 @@ class FieldBalanceResult(Result):
                 "phase": None if conv is None else conv.phase,
                 "angle_sense": None if conv is None else conv.angle_sense,
                 "rotation": None if conv is None else conv.rotation,
-                "text": CONVENTION if conv is None else conv.text,
+                "text": self.angle_convention,
             },
             "sensors": sensors,
             "speeds": [{"name": n, "speed": w} for n, w in speeds],

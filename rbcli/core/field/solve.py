@@ -11,8 +11,8 @@ converts them first). The linear model of a rotor on linear supports is
 correction ``W`` (kg at the trial radius, to ADD) from :func:`solve`:
 
 * ``exact`` — N = P: ``alpha W = -V0`` (``W = -V0/alpha`` for one plane, as
-  :func:`rbcli.core.balance.field.field_single_plane` computes it, else LAPACK's LU solve,
-  as :func:`rbcli.core.balance.field.field_two_plane`: the same arithmetic, so the same
+  :func:`rbcli.core.field.classic.field_single_plane` computes it, else LAPACK's LU solve,
+  as :func:`rbcli.core.field.classic.field_two_plane`: the same arithmetic, so the same
   bits).
 * ``least-squares`` — N > P: minimise ``sum_k (w_k |r_k|)^2`` over the residuals
   ``r = V0 + alpha W`` with weights ``w_k`` (Goodman 1964, "A least-squares method for
@@ -37,6 +37,8 @@ parameter at fault.
 
 from __future__ import annotations
 
+import cmath
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -211,20 +213,25 @@ def solve(alpha: object, v0: object, method: str | None = None, weights: object 
     return FieldSolution(_ro(W), _ro(r), "least-squares", cond, None, float(np.linalg.norm(w * r)))
 
 
-def _dot(a: list[complex], b: list[complex]) -> complex:
+def deg(z: complex) -> float:
+    """arg z in degrees in [0, 360) (within 1e-9° below 360 is 0; never -0.0): the angle of
+    a reading or a mass."""
+    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
+    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
+
+
+def dot(a: list[complex], b: list[complex]) -> complex:
     """sum a_k b_k, each part summed exactly rounded (math.fsum): the same bits on every
     machine, BLAS kernel and memory alignment (a golden output is exact to the last digit)."""
-    import math
-
     prods = [x * y for x, y in zip(a, b)]
     return complex(math.fsum(z.real for z in prods), math.fsum(z.imag for z in prods))
 
 
 def matvec(alpha: np.ndarray, w: object) -> np.ndarray:
-    """``alpha @ w`` with :func:`_dot`'s exactly rounded sums."""
+    """``alpha @ w`` with :func:`dot`'s exactly rounded sums."""
     A = np.asarray(alpha, dtype=complex)
     x = [complex(v) for v in np.asarray(w, dtype=complex)]
-    return np.array([_dot([complex(a) for a in row], x) for row in A], dtype=complex)
+    return np.array([dot([complex(a) for a in row], x) for row in A], dtype=complex)
 
 
 def least_squares(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> np.ndarray:
@@ -248,7 +255,7 @@ def least_squares(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> np.
     p = len(R)
     W = [0j] * p
     for k in range(p - 1, -1, -1):
-        W[k] = (c[k] - _dot(R[k][k + 1:], W[k + 1:])) / R[k][k]
+        W[k] = (c[k] - dot(R[k][k + 1:], W[k + 1:])) / R[k][k]
     return np.array(W, dtype=complex)
 
 
@@ -257,11 +264,8 @@ def householder_qr(A: np.ndarray, b: np.ndarray) -> tuple[list[list[complex]], l
 
     Column k: ``x = A[k:, k]``, ``a = -e^{i arg x_0} |x|``, ``u = (x - a e_1)/|x - a e_1|``;
     ``A[k:, k:] -= 2 u (u^H A[k:, k:])`` and the same for b (Golub and Van Loan, *Matrix
-    Computations*, §5.2). Python complex arithmetic, sums exactly rounded (:func:`_dot`).
+    Computations*, §5.2). Python complex arithmetic, sums exactly rounded (:func:`dot`).
     """
-    import cmath
-    import math
-
     n, p = A.shape
     M = [[complex(A[i, j]) for j in range(p)] for i in range(n)]
     y = [complex(v) for v in b]
@@ -276,10 +280,10 @@ def householder_qr(A: np.ndarray, b: np.ndarray) -> tuple[list[list[complex]], l
         u = [z / un for z in u]
         uc = [z.conjugate() for z in u]
         for j in range(k, p):
-            f = 2.0 * _dot(uc, [M[i][j] for i in range(k, n)])
+            f = 2.0 * dot(uc, [M[i][j] for i in range(k, n)])
             for i in range(k, n):
                 M[i][j] -= f * u[i - k]
-        f = 2.0 * _dot(uc, y[k:])
+        f = 2.0 * dot(uc, y[k:])
         for i in range(k, n):
             y[i] -= f * u[i - k]
     R = [[M[i][j] if j >= i else 0j for j in range(p)] for i in range(p)]

@@ -1,5 +1,5 @@
-"""Field corrections as they are fitted: weights from the drawer, holes and blades, and the
-trial mass to start with (sheet §2.5, §5.1).
+"""Field corrections as they are fitted: weights from the drawer, holes and blades (sheet
+§2.5).
 
 A computed correction ``W = m e^{i angle}`` is rarely fitted as computed: masses come in
 steps (clip-on weights, washers), angles are marked to a few degrees, and on a fan the
@@ -8,16 +8,6 @@ mass goes onto blades or bolt holes. :func:`fit_plane` gives what is fitted — 
 or split onto the two neighbouring of n equally spaced positions with
 :func:`rbcli.core.balance.corrections.split_to_positions` (sheet §2.5, T22) — and the net
 correction those masses make, from which the caller predicts the residual readings.
-
-:func:`suggest_trial` sizes a trial mass before the first run: its centrifugal force
-``m r omega^2`` is a set fraction (default 10 %) of the static load on the bearing
-nearest the trial plane, ``m_T = f F_bearing / (r omega^2)``. The rule is the one rbcli's
-formula sheet records (physics/balance.md §5.1: "the trial's centrifugal force is about
-10 % of the rotor weight (or bearing load), m_T = 0.1 M g/(r omega^2)"; 100 kg, r = 200 mm,
-1500 rpm give 19.9 g), the common shop rule a fraction of 5-10 % of the bearing load;
-ACOEM's "Balancing How To #2 - Selecting a Proper Trial Weight" states what the trial must
-achieve (a change of 30 % in amplitude or 30 degrees in phase) and that the mass follows
-from the rotor's weight and speed.
 """
 
 from __future__ import annotations
@@ -28,13 +18,6 @@ from dataclasses import dataclass
 
 from rbcli.core.balance.common import BalanceValueError, finite, positive, wrap_deg
 from rbcli.core.balance.corrections import split_to_positions
-
-#: the default fraction of the nearest bearing's static load a trial's force should be
-TRIAL_FRACTION = 0.10
-#: fractions a user may ask for (a trial that loads a bearing by more than a third of its
-#: static load is a risk, not a measurement)
-TRIAL_FRACTION_RANGE = (0.01, 0.30)
-
 
 @dataclass(frozen=True)
 class FittedMass:
@@ -140,67 +123,3 @@ def fit_plane(
     phi = math.radians(a) if abs(C) > 0.0 else 0.0
     net = complex(cmath.rect(m, phi)) if (mass_step is not None or angle_step_deg is not None) else C
     return FittedPlane((FittedMass(m, a),), net, mass_step is not None or angle_step_deg is not None)
-
-
-# ----------------------------------------------------------------------------------------
-# the trial mass
-# ----------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class TrialSuggestion:
-    """A trial mass sized before the first run.
-
-    Attributes
-    ----------
-    mass : float — kg, at ``radius``
-    radius : float — m
-    speed : float — rad/s
-    bearing_load : float — N, the static load on the bearing nearest the plane
-    fraction : float — the trial's centrifugal force / ``bearing_load``
-    force : float — N, ``mass radius speed^2`` = fraction x bearing_load
-    """
-
-    mass: float
-    radius: float
-    speed: float
-    bearing_load: float
-    fraction: float
-    force: float
-
-
-def static_bearing_loads(mass: float, g: float, z_com: float, bearings: tuple[float, float]) -> tuple[float, float]:
-    """The gravity loads (N) on two bearings at ``bearings`` (shaft horizontal) of a rotor of
-    ``mass`` kg with its com at ``z_com``: the lever rule, as
-    :func:`rbcli.core.balance.bearings.bearing_forces` (negative: a hold-down)."""
-    z1, z2 = bearings
-    if z1 == z2:
-        raise BalanceValueError("bearings", "the two bearings must be at different positions along the shaft")
-    Mg = mass * g
-    return Mg * (z2 - z_com) / (z2 - z1), Mg * (z_com - z1) / (z2 - z1)
-
-
-def suggest_trial(bearing_load: float, radius: float, speed: float, fraction: float = TRIAL_FRACTION) -> TrialSuggestion:
-    """The trial mass whose centrifugal force at ``speed`` is ``fraction`` of
-    ``bearing_load``: ``m_T = fraction F / (r omega^2)`` (see the module notes).
-
-    Parameters
-    ----------
-    bearing_load : float — N, > 0: the static load on the bearing nearest the trial plane
-    radius : float — m, > 0: where the trial sits
-    speed : float — rad/s, > 0: the balancing speed
-    fraction : float — in [0.01, 0.30]
-
-    Returns
-    -------
-    TrialSuggestion
-    """
-    F = positive(bearing_load, "bearing load", "bearing_load")
-    r = positive(radius, "trial radius", "trial_radius")
-    w = positive(speed, "speed", "speed")
-    f = finite(fraction, "fraction", "trial_fraction")
-    lo, hi = TRIAL_FRACTION_RANGE
-    if not lo <= f <= hi:
-        raise BalanceValueError("trial_fraction", f"the fraction must be from {lo:g} to {hi:g} (1 % to 30 %), got {f:g}")
-    m = f * F / (r * w * w)
-    return TrialSuggestion(mass=m, radius=r, speed=w, bearing_load=F, fraction=f, force=m * r * w * w)

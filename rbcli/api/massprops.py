@@ -1,30 +1,31 @@
-"""What the services share: the point an inertia is taken about (:class:`Reference`), the
-parts' rows of the JSON, the snapping of round-off to zero, the plausibility warnings of a
-point far outside the body (``inertia``, ``principal``), and the shaft's line with its
-defaults (:func:`shaft_axis`, :func:`shaft_point`: ``balance``, ``whirl``, ``rollcheck``,
-``gyrocompass``).
+"""What ``inertia`` and ``principal`` share: the point an inertia is taken about
+(:class:`Reference`, :func:`inertia_at`), the warnings of a point far outside the body
+(:func:`plausibility`), the parts' rows of the JSON (:func:`part_rows`, :func:`with_parts`)
+and round-off snapped to zero (:func:`snap`).
 
 Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
 off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
-
-numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 from rbcli.api import options as o
 from rbcli.api.check import Point
 from rbcli.api.result import jsonable
+from rbcli.core.inertia import InputOverflow, body_mass_props, checked_inertia_about
+from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 from rbcli.errors import Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
-__all__ = ["Reference", "part_rows", "plausibility", "snap", "with_parts", "inertia_at",
-           "shaft_axis", "shaft_point"]
+__all__ = ["Reference", "part_rows", "plausibility", "snap", "with_parts", "inertia_at"]
 
 
 @dataclass(frozen=True)
@@ -86,8 +87,6 @@ class Reference:
 
     def resolve(self, mp: Any) -> Any:
         """The point as a (3,) ndarray, m, given the body's mass properties ``mp``."""
-        import numpy as np
-
         return mp.com.copy() if self.point is None else np.array(self.point, dtype=float)
 
 
@@ -96,24 +95,13 @@ def _items(v: Any) -> list:
 
 
 def snap(values: Any, scale: float | None = None, rtol: float = 1e-14) -> Any:
-    """``values`` as a float ndarray with entries below ``rtol`` times the largest magnitude
-    (or ``scale``) set to exactly 0 (round-off, e.g. a product of inertia of 1e-18 next to
-    moments of 1): what JSON and tables show."""
-    import numpy as np
-
-    a = np.asarray(values, dtype=float)
-    flat = a.ravel().tolist()
-    if flat and (scale is not None or all(map(float.__eq__, flat, flat))):  # no NaN: numpy's max is NaN
-        # the same comparisons on the same floats, in Python: faster for a 3x3 (a batch)
-        limit = rtol * (max(map(abs, flat)) if scale is None else scale)
-        out = np.array([0.0 if abs(x) <= limit or x == 0.0 else x for x in flat])
-        out.shape = a.shape
-        return out
-    a = a.copy()  # the caller's values stay as they are
+    """``values`` as a float ndarray (a copy) with entries below ``rtol`` times the largest
+    magnitude (or ``scale``) set to exactly 0 (round-off, e.g. a product of inertia of 1e-18
+    next to moments of 1): what JSON and tables show. No negative zeros."""
+    a = np.array(values, dtype=float)
     mag = np.abs(a)
-    s = float(mag.max()) if scale is None else scale
-    a[mag <= rtol * s] = 0.0
-    a[a == 0.0] = 0.0  # no negative zeros
+    a[mag <= rtol * (float(mag.max()) if scale is None else scale)] = 0.0
+    a[a == 0.0] = 0.0
     return a
 
 
@@ -142,8 +130,6 @@ def with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
 
 def inertia_at(mp: Any, ref: Reference) -> tuple[Any, Any]:
     """(point, inertia tensor about it): core's overflow blamed on the right parameter."""
-    from rbcli.core.inertia import InputOverflow, checked_inertia_about
-
     point = ref.resolve(mp)
     try:
         return point, checked_inertia_about(mp, point)
@@ -156,10 +142,6 @@ def plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> tu
     point more than 10 body sizes away, a rotation whose rim is faster than sound."""
     if body is None:
         return ()
-    import math
-
-    from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
-
     far_point = ref.param == "about" and ref.point is not None
     if not far_point and omega is None:
         return ()
@@ -171,8 +153,6 @@ def plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> tu
             out.append(u.far("about", "the point", d, sc.size))
     w = 0.0 if omega is None else math.sqrt(sum(x * x for x in omega))
     if 0.0 < w < math.inf:
-        from rbcli.core.inertia import body_mass_props
-
         # the body turning about omega through the reference point: its farthest material
         through = body_mass_props(body).com if ref.point is None else ref.point
         v = w * axis_reach(body.parts, omega, through)
@@ -181,26 +161,3 @@ def plausibility(body: Any, u: o.Units, ref: Reference, omega: Any = None) -> tu
                             f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
                             f"{u.label('angular_speed')}: is a unit missing?"))
     return tuple(out)
-
-
-def shaft_axis(body: Any, given: Any) -> tuple[tuple[float, float, float], str]:
-    """The shaft's direction: the one ``given``, else the body's ``shaft``, else body z; with
-    where it came from, ``"given"``, ``"body"`` or ``"default"`` (each command words it)."""
-    if given is not None:
-        return tuple(float(x) for x in given), "given"  # type: ignore[return-value]
-    if body is not None and body.shaft is not None:
-        return tuple(float(x) for x in body.shaft.axis), "body"  # type: ignore[return-value]
-    return (0.0, 0.0, 1.0), "default"
-
-
-def shaft_point(body: Any, given: Any) -> tuple[Any, str]:
-    """A point of the shaft's line: the one ``given`` (``"com"``, ``"origin"`` or x, y, z),
-    else the body's ``shaft.through``, else the origin; with where it came from, as
-    :func:`shaft_axis` says it."""
-    if isinstance(given, str):
-        return given, "given"
-    if given is not None:
-        return tuple(float(x) for x in given), "given"
-    if body is not None and body.shaft is not None:
-        return tuple(float(x) for x in body.shaft.through), "body"
-    return (0.0, 0.0, 0.0), "default"

@@ -3,7 +3,7 @@ located at ``file:line:col``.
 
 A job names its sensors, planes (radius, positions), speeds and runs; the readings and
 trial masses stay located texts (``"6.2 mm/s@112"``, ``"50 g@0"``) that
-:mod:`rbcli.api.fieldbalance` reads as the command line reads ``--initial`` and
+:mod:`rbcli.api.field.service` reads as the command line reads ``--initial`` and
 ``--trial``, so a bad reading is reported at its place in the file. The format::
 
     rbcli: 1
@@ -29,6 +29,7 @@ written as plain lists. The JSON Schema is :func:`job_schema` (installed as
 
 from __future__ import annotations
 
+import json
 import math
 import os
 from dataclasses import dataclass
@@ -39,8 +40,10 @@ from rbcli.errors import InputError, Location
 from rbcli.io import fields as fl
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
+from rbcli.io.field import CHOICES, plane_names
+from rbcli.io.reader import read_regular
 
-SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "fieldjob.schema.json"
+SCHEMA_PATH = Path(__file__).resolve().parents[2] / "data" / "fieldjob.schema.json"
 
 #: a job file is refused above this size (bytes): a job holds a few hundred readings
 MAX_JOB_BYTES = 4 * 1024 * 1024
@@ -57,16 +60,6 @@ TRIAL_KEYS = ("plane", "mass", "readings")
 SEVERITY_KEYS = ("standard", "group", "foundation")
 ROTOR_KEYS = ("mass", "body", "bearings", "com", "bearing_load", "g", "trial_fraction")
 
-#: the words a job file (and the command line) accepts, per key
-CHOICES = {
-    "method": ("least-squares", "min-max", "exact"),
-    "phase": ("lag", "lead"),
-    "angle_sense": ("with", "against"),
-    "rotation": ("cw", "ccw"),
-    "measure": ("pk", "pk-pk", "rms"),
-    "standard": ("iso20816-3",),
-    "foundation": ("rigid", "flexible"),
-}
 
 
 @dataclass(frozen=True)
@@ -134,7 +127,6 @@ class FieldJob:
     """
 
     source: str
-    text: str
     name: str | None
     sensors: tuple[str, ...]
     weights: tuple[float, ...] | None
@@ -191,8 +183,6 @@ def load_job(path: str) -> FieldJob:
     rbcli.InputError
         one located line for any problem (the file, its YAML, a key, a value).
     """
-    from rbcli.io.reader import read_regular
-
     data = read_regular(path, MAX_JOB_BYTES, "job file")
     try:
         text = data.decode("utf-8")
@@ -207,31 +197,12 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     if not text.strip():
         raise InputError("the job file is empty; a job names its sensors, planes and runs "
                          "(see rbcli-field-balance(1))", Location(source, 1, 1))
-    root = ys.load(text, source)
     ctx = _Ctx(source, {})
-    m = fl.mapping(ctx, root, "a field-balancing job")
+    m = fl.mapping(ctx, ys.load(text, source), "a field-balancing job")
     fl.check_keys(ctx, m, TOP_KEYS, "the job")
     items = m.items
-    keys = {k: ctx.where(mark) for k, (mark, _) in items.items()}
-    if "rbcli" in items:
-        v = items["rbcli"][1]
-        if not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
-            raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
-    if "job" in items:
-        v = items["job"][1]
-        if fl.string(ctx, v, "job") != "field-balance":
-            raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, not {fl.describe(v)}")
-    units = {"mass": "g"}  # a bare trial mass is in grams, as on the command line
-    if "units" in items:
-        um = fl.mapping(ctx, items["units"][1], "units")
-        fl.check_keys(ctx, um, UNIT_KEYS, "units")
-        for k, (_, node) in um.items.items():
-            units[k] = fl.string(ctx, node, f"units: {k}")
-            try:
-                un.unit_for_kind({k: units[k]}, k)
-            except un.UnitError as exc:
-                raise ctx.error(node, f"units: {k}: {exc}") from None
-    ctx.base_units = units
+    _header(ctx, items)
+    ctx.base_units = _units(ctx, items)
     name = fl.string(ctx, items["name"][1], "name") if "name" in items else None
     if "description" in items:
         fl.string(ctx, items["description"][1], "description")
@@ -247,8 +218,53 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     speeds = _speeds(ctx, items)
     coefficients = None
     if "coefficients" in items:
-        node = items["coefficients"][1]
-        coefficients = _relative(source, fl.string(ctx, node, "coefficients"))
+        coefficients = _relative(source, fl.string(ctx, items["coefficients"][1], "coefficients"))
+    initial, trials = _all_runs(ctx, m, planes, speeds, coefficients)
+    n = _check_counts(ctx, initial, trials, sensors)
+    if sensors and len(sensors) != n:
+        raise ctx.error(items["sensors"][1], f"sensors names {len(sensors)} sensors but the runs have "
+                                             f"{n} readings per speed")
+    return FieldJob(
+        source=source, name=name, sensors=sensors or tuple(str(i + 1) for i in range(n)),
+        weights=weights, planes=planes, speeds=speeds, initial=initial, trials=trials,
+        measure=measure, phase=conv.get("phase"), angle_sense=conv.get("angle_sense"),
+        rotation=conv.get("rotation"), severity=_severity(ctx, items), rotor=_rotor(ctx, items, source),
+        coefficients=coefficients, keys={k: ctx.where(mark) for k, (mark, _) in items.items()},
+        units=dict(ctx.base_units), **_settings(ctx, items))
+
+
+def _header(ctx: _Ctx, items: dict) -> None:
+    """``rbcli: 1`` and ``job: field-balance``, when given."""
+    if "rbcli" in items:
+        v = items["rbcli"][1]
+        if not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
+            raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
+    if "job" in items:
+        v = items["job"][1]
+        if fl.string(ctx, v, "job") != "field-balance":
+            raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, "
+                               f"not {fl.describe(v)}")
+
+
+def _units(ctx: _Ctx, items: dict) -> dict[str, str]:
+    """What bare numbers are in (a bare trial mass in grams, as on the command line)."""
+    units = {"mass": "g"}
+    if "units" in items:
+        um = fl.mapping(ctx, items["units"][1], "units")
+        fl.check_keys(ctx, um, UNIT_KEYS, "units")
+        for k, (_, node) in um.items.items():
+            units[k] = fl.string(ctx, node, f"units: {k}")
+            try:
+                un.unit_for_kind({k: units[k]}, k)
+            except un.UnitError as exc:
+                raise ctx.error(node, f"units: {k}: {exc}") from None
+    return units
+
+
+def _all_runs(ctx: _Ctx, m: ys.MapNode, planes: tuple[JobPlane, ...], speeds: tuple[JobSpeed, ...],
+              coefficients: str | None) -> tuple[tuple[tuple[Text, ...], ...] | None, tuple[JobTrial, ...]]:
+    """The initial readings and the trial runs (none for a trim run)."""
+    items = m.items
     initial = None
     if "initial" in items:
         initial = _runs(ctx, items["initial"][1], speeds, "initial")
@@ -261,30 +277,22 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     if coefficients is None and not trials:
         raise ctx.error(m, "the job needs 'trials' (one trial run per plane), or 'coefficients' "
                            "(a file of saved influence coefficients) for a trim run")
-    n = _check_counts(ctx, initial, trials, sensors)
-    if sensors and len(sensors) != n:
-        raise ctx.error(items["sensors"][1], f"sensors names {len(sensors)} sensors but the runs have "
-                                             f"{n} readings per speed")
-    if not sensors:
-        sensors = tuple(str(i + 1) for i in range(n))
-    cumulative = fl.flag(ctx, items["cumulative"][1], "cumulative") if "cumulative" in items else None
-    method = _choice(ctx, items["method"][1], "method", "method") if "method" in items else None
-    mass_step = fl.positive(ctx, items["mass_step"][1], "mass", "mass_step") if "mass_step" in items else None
+    return initial, trials
+
+
+def _settings(ctx: _Ctx, items: dict) -> dict[str, Any]:
+    """cumulative, method, mass_step (kg) and angle_step (degrees), None when not given."""
+    it = {k: items[k][1] for k in ("cumulative", "method", "mass_step", "angle_step") if k in items}
     angle_step = None
-    if "angle_step" in items:
-        node = items["angle_step"][1]
-        angle_step = math.degrees(fl.positive(ctx, node, "angle", "angle_step"))
+    if "angle_step" in it:
+        angle_step = math.degrees(fl.positive(ctx, it["angle_step"], "angle", "angle_step"))
         if not angle_step <= 360.0 * (1 + 1e-12):
-            raise ctx.error(node, "angle_step must not exceed 360 degrees")
-    severity = _severity(ctx, items)
-    rotor = _rotor(ctx, items, source)
-    return FieldJob(
-        source=source, text=text, name=name, sensors=sensors, weights=weights, planes=planes,
-        speeds=speeds, initial=initial, trials=trials, cumulative=cumulative, method=method,
-        mass_step=mass_step, angle_step=angle_step, measure=measure, phase=conv.get("phase"),
-        angle_sense=conv.get("angle_sense"), rotation=conv.get("rotation"), severity=severity,
-        rotor=rotor, coefficients=coefficients, keys=keys, units=dict(units),
-    )
+            raise ctx.error(it["angle_step"], "angle_step must not exceed 360 degrees")
+    return dict(
+        cumulative=fl.flag(ctx, it["cumulative"], "cumulative") if "cumulative" in it else None,
+        method=_choice(ctx, it["method"], "method", "method") if "method" in it else None,
+        mass_step=fl.positive(ctx, it["mass_step"], "mass", "mass_step") if "mass_step" in it else None,
+        angle_step=angle_step)
 
 
 def _relative(source: str, path: str) -> str:
@@ -453,7 +461,7 @@ def _trials(ctx: _Ctx, items: dict, planes: tuple[JobPlane, ...], speeds: tuple[
         elif names:
             raise ctx.error(tm, "a trial run needs 'plane': the plane its trial mass sat in")
         else:
-            plane = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[i] if i < 26 else str(i + 1)
+            plane = plane_names(i + 1)[i]
         if plane in by_plane:
             raise ctx.error(it.get("plane", (tm.mark, tm))[1], f"plane {plane} has two trial runs; give one per plane")
         mnode = it["mass"][1]
@@ -592,6 +600,5 @@ def job_schema() -> dict:
 
 
 def schema_text() -> str:
-    import json
-
+    """The JSON Schema, as ``--job-schema`` prints it and ``rbcli/data`` holds it."""
     return json.dumps(job_schema(), indent=2, ensure_ascii=False) + "\n"

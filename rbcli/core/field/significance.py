@@ -33,6 +33,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.field.solve import dot
+
 #: a plane whose significance factor is at or below this is flagged (hsbalance's
 #: ``ill_condition`` threshold for Darlow's test)
 SIGNIFICANCE_LIMIT = 0.2
@@ -55,11 +57,6 @@ class Significance:
     order: np.ndarray
     flagged: tuple[int, ...]
     limit: float
-
-
-def _dot(a: list[complex], b: list[complex]) -> complex:
-    prods = [x * y for x, y in zip(a, b)]
-    return complex(math.fsum(z.real for z in prods), math.fsum(z.imag for z in prods))
 
 
 def _norm(a: list[complex]) -> float:
@@ -96,7 +93,7 @@ def plane_significance(alpha: object, limit: float = SIGNIFICANCE_LIMIT) -> Sign
         v = list(u)
         for _ in range(2):  # Gram-Schmidt twice ("twice is enough"): orthogonal to round-off
             for e in basis:
-                c = _dot([z.conjugate() for z in e], v)
+                c = dot([z.conjugate() for z in e], v)
                 v = [vi - c * ei for vi, ei in zip(v, e)]
         nv = _norm(v)
         factors[j] = min(nv / nu, 1.0) if basis else 1.0  # the first plane: nothing before it

@@ -1,7 +1,7 @@
 """Field (trial-weight) balancing by influence coefficients, one or two planes (sheet §5).
 
 The one- and two-plane solves of ``rbcli field-balance`` as it always was (their outputs
-are golden); any number of planes and readings is :mod:`rbcli.core.balance.fieldsolve`,
+are golden); any number of planes and readings is :mod:`rbcli.core.field.solve`,
 which does the same arithmetic for these two cases.
 """
 

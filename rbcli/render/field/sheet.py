@@ -4,7 +4,7 @@ corrections as computed and as fitted, the predicted readings and the severity v
 
 Built from the blocks of :mod:`rbcli.render.report` (:class:`~rbcli.render.report.Report`,
 sections, figures, :func:`~rbcli.render.report.html` and
-:func:`~rbcli.render.report.markdown`) and the tables of :mod:`rbcli.render.fieldbalance`;
+:func:`~rbcli.render.report.markdown`) and the tables of :mod:`rbcli.render.field.tables`;
 it never writes a file (the command line does, through :mod:`rbcli.io.outfile`).
 """
 
@@ -12,13 +12,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rbcli.render import fieldbalance as fb
+from rbcli.render.field import tables as fb
 from rbcli.render.units import ShopUnits
 from rbcli.render.report import Figure, Report, Section
-from rbcli.render.text import Doc
+from rbcli.render.text import Doc, Note
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.fieldresult import FieldBalanceResult
+    from rbcli.api.field.result import FieldBalanceResult
 
 
 def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list[tuple[str, str]],
@@ -99,12 +99,8 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
     if res.warnings:
         s = Section("warnings", "Warnings")
         for w in res.warnings:
-            s.items.append(_note(w))
+            s.items.append(Note(w))
         sections.append(s)
     return Report(title, meta, sections, input_name, input_text, generator="rbcli field-balance")
 
 
-def _note(text: str):
-    from rbcli.render.text import Note
-
-    return Note(text)

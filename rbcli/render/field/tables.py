@@ -11,12 +11,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rbcli.render.units import ShopUnits
+from rbcli.core.field.solve import deg
 from rbcli.render.fmt import num
 from rbcli.render.text import Doc
+from rbcli.render.units import ShopUnits
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.fieldresult import FieldBalanceResult
+    from rbcli.api.field.result import FieldBalanceResult
 
 #: how the tables show readings of each kind: (SI per display unit, display unit)
 READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
@@ -121,13 +122,6 @@ def _head(res: FieldBalanceResult) -> list[str]:
     return ["sensor", "speed"] if _speed_column(res) else ["sensor"]
 
 
-def _ang(z: complex) -> float:
-    import math
-
-    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
-    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
-
-
 def _reported(z: complex, res: FieldBalanceResult) -> complex:
     """A reading in the instrument's phase convention (the result keeps them in the angles'
     sense)."""
@@ -208,10 +202,10 @@ def readings_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, row
     table = []
     for k, (s, v) in enumerate(rows):
         z = _reported(res.initial[k], res)
-        cells = [*_row_label(s, v, res), num(abs(z) / scale, digits), num(_ang(z), digits)]
+        cells = [*_row_label(s, v, res), num(abs(z) / scale, digits), num(deg(z), digits)]
         for run in res.runs:
             y = _reported(run[k], res)
-            cells += [num(abs(y) / scale, digits), num(_ang(y), digits)]
+            cells += [num(abs(y) / scale, digits), num(deg(y), digits)]
         table.append(cells)
     doc.table("readings", cols, table, right=tuple(range(len(_head(res)), len(cols))))
 
@@ -226,7 +220,7 @@ def influence_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
     for k, (s, v) in enumerate(rows):
         cells = [*_row_label(s, v, res)]
         for a in res.alpha[k]:
-            cells += [num(abs(a) * su.mass[0] / scale, digits), num(_ang(a), digits)]
+            cells += [num(abs(a) * su.mass[0] / scale, digits), num(deg(a), digits)]
         table.append(cells)
     doc.table("influence coefficients (at each plane's trial radius; phases in the angles' sense)",
               cols, table, right=tuple(range(len(_head(res)), len(cols))))
@@ -246,7 +240,7 @@ def corrections_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
                  num(c.angle_deg, digits)]
         if trial_on:
             z = c.correction_trial_on
-            cells += [su.show(abs(z), "mass", digits), num(_ang(z) if z != 0 else 0.0, digits)]
+            cells += [su.show(abs(z), "mass", digits), num(deg(z) if z != 0 else 0.0, digits)]
         table.append(cells)
     doc.table("corrections to add (as computed)", cols, table, right=tuple(range(1, len(cols))))
 
@@ -295,7 +289,7 @@ def severity_table(doc: Doc, res: FieldBalanceResult, rows, digits: int, su: Sho
     assert sv is not None
     f, u = reading_display("velocity", su) if su is not None else READING_DISPLAY["velocity"]
     table = [[*_row_label(r.sensor, r.speed, res), num(r.before / f, digits), r.before_zone,
-              num(r.after / f, digits), r.after_zone] for r in sv.rows]
+              num(r.after / f, digits), r.after_zone] for r in sv.readings]
     after = "with the masses fitted" if sv.after_is == "fitted" else "after the correction"
     doc.table(f"{sv.standard}, group {sv.group}, {sv.foundation} support: zones of the 1× readings",
               [*_head(res), f"before [{u} rms]", "zone", f"{after} [{u} rms]", "zone"], table,

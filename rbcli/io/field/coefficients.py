@@ -29,6 +29,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from rbcli.errors import InputError, Location
+from rbcli.io.field import CHOICES
+from rbcli.io.reader import read_regular
 
 FORMAT = "rbcli field-balance influence coefficients"
 VERSION = 1
@@ -91,8 +93,6 @@ def load_coefficients(path: str) -> SavedCoefficients:
         a file that cannot be read, is not JSON, or is not a coefficients file of this
         format (one line naming the file and what is wrong).
     """
-    from rbcli.io.reader import read_regular
-
     data = read_regular(path, MAX_COEFF_BYTES, "coefficients file")
     try:
         doc = json.loads(data.decode("utf-8"))
@@ -114,57 +114,61 @@ def parse_coefficients(doc: Any, source: str = "<coefficients>") -> SavedCoeffic
     inf = _get(doc, "influence", source, "the file")
     kind = _opt_str(_get(inf, "reading_kind", source, "influence"), ("displacement", "velocity", "acceleration"),
                     source, "influence.reading_kind")
-    measure = _opt_str(inf.get("measure"), ("pk", "pk-pk", "rms"), source, "influence.measure")
+    measure = _opt_str(inf.get("measure"), CHOICES["measure"], source, "influence.measure")
     conv = _get(doc, "conventions", source, "the file")
-    phase = _opt_str(conv.get("phase"), ("lag", "lead"), source, "conventions.phase")
-    sense = _opt_str(conv.get("angle_sense"), ("with", "against"), source, "conventions.angle_sense")
-    rotation = _opt_str(conv.get("rotation"), ("cw", "ccw"), source, "conventions.rotation")
+    words = {k: _opt_str(conv.get(k), CHOICES[k], source, f"conventions.{k}")
+             for k in ("phase", "angle_sense", "rotation")}
     sensors = _get(doc, "sensors", source, "the file")
     if not isinstance(sensors, list) or not sensors or not all(isinstance(s, str) for s in sensors):
         raise _err(source, "sensors must be a list of names")
-    speeds_raw = _get(doc, "speeds", source, "the file")
-    if not isinstance(speeds_raw, list) or not speeds_raw:
-        raise _err(source, "speeds must be a list of {name, speed}")
-    speeds = []
-    for s in speeds_raw:
-        name = _get(s, "name", source, "a speed")
-        sp = _get(s, "speed", source, "a speed")
+    speeds = _named(doc, ("speeds", "speed"), ("a speed", "a speed"), source)
+    planes = _named(doc, ("planes", "trial_radius"), ("a plane", "a trial radius"), source)
+    rows = _rows(_get(doc, "rows", source, "the file"), sensors, speeds, source)
+    return SavedCoefficients(
+        source=source, reading_kind=kind, measure=measure, sensors=tuple(sensors), speeds=speeds,
+        planes=planes, rows=rows, coefficients=_coefficients(
+            _get(doc, "coefficients", source, "the file"), len(rows), len(planes), source), **words)
+
+
+def _named(doc: dict, keys: tuple[str, str], words: tuple[str, str],
+           source: str) -> tuple[tuple[str, float | None], ...]:
+    """``speeds`` [{name, speed}] or ``planes`` [{name, trial_radius}] (``keys``): (name,
+    positive number or None); ``words`` say an item and its number in messages."""
+    key, value = keys
+    item, number = words
+    items = _get(doc, key, source, "the file")
+    if not isinstance(items, list) or not items:
+        raise _err(source, f"{key} must be a list of {{name, {value}}}")
+    out = []
+    for it in items:
+        name, x = _get(it, "name", source, item), _get(it, value, source, item)
         if not isinstance(name, str):
-            raise _err(source, "a speed's name must be a text")
-        speeds.append((name, None if sp is None else _number(sp, source, "a speed", positive=True)))
-    planes_raw = _get(doc, "planes", source, "the file")
-    if not isinstance(planes_raw, list) or not planes_raw:
-        raise _err(source, "planes must be a list of {name, trial_radius}")
-    planes = []
-    for p in planes_raw:
-        name = _get(p, "name", source, "a plane")
-        r = _get(p, "trial_radius", source, "a plane")
-        if not isinstance(name, str):
-            raise _err(source, "a plane's name must be a text")
-        planes.append((name, None if r is None else _number(r, source, "a trial radius", positive=True)))
-    rows_raw = _get(doc, "rows", source, "the file")
-    if not isinstance(rows_raw, list) or len(rows_raw) != len(sensors) * len(speeds):
+            raise _err(source, f"{item}'s name must be a text")
+        out.append((name, None if x is None else _number(x, source, number, positive=True)))
+    return tuple(out)
+
+
+def _rows(rows: Any, sensors: list[str], speeds: tuple, source: str) -> tuple[tuple[str, str], ...]:
+    """(sensor, speed) of each reading: every sensor at every speed."""
+    if not isinstance(rows, list) or len(rows) != len(sensors) * len(speeds):
         raise _err(source, f"rows must list {len(sensors) * len(speeds)} readings (every sensor at every speed)")
-    rows = []
-    for r in rows_raw:
+    out = []
+    for r in rows:
         s, v = _get(r, "sensor", source, "a row"), _get(r, "speed", source, "a row")
         if s not in sensors or v not in [x[0] for x in speeds]:
             raise _err(source, f"a row names sensor {s!r} at speed {v!r}, not among the file's sensors and speeds")
-        rows.append((s, v))
-    coeffs_raw = _get(doc, "coefficients", source, "the file")
-    if not isinstance(coeffs_raw, list) or len(coeffs_raw) != len(rows):
-        raise _err(source, f"coefficients must have {len(rows)} rows, one per reading")
-    coeffs = []
-    for row in coeffs_raw:
-        if not isinstance(row, list) or len(row) != len(planes):
-            raise _err(source, f"each row of coefficients must have {len(planes)} entries, one per plane")
-        out = []
-        for c in row:
-            out.append(complex(_number(_get(c, "re", source, "a coefficient"), source, "re"),
-                               _number(_get(c, "im", source, "a coefficient"), source, "im")))
-        coeffs.append(tuple(out))
-    return SavedCoefficients(
-        source=source, reading_kind=kind, measure=measure, phase=phase, angle_sense=sense,
-        rotation=rotation, sensors=tuple(sensors), speeds=tuple(speeds), planes=tuple(planes),
-        rows=tuple(rows), coefficients=tuple(coeffs),
-    )
+        out.append((s, v))
+    return tuple(out)
+
+
+def _coefficients(rows: Any, n: int, p: int, source: str) -> tuple[tuple[complex, ...], ...]:
+    """The ``n`` x ``p`` coefficients, from their exact ``re`` and ``im``."""
+    if not isinstance(rows, list) or len(rows) != n:
+        raise _err(source, f"coefficients must have {n} rows, one per reading")
+    out = []
+    for row in rows:
+        if not isinstance(row, list) or len(row) != p:
+            raise _err(source, f"each row of coefficients must have {p} entries, one per plane")
+        out.append(tuple(complex(_number(_get(c, "re", source, "a coefficient"), source, "re"),
+                                 _number(_get(c, "im", source, "a coefficient"), source, "im")) for c in row))
+    return tuple(out)

@@ -14,20 +14,22 @@ goes in through :func:`rbcli.errors.literal`.
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
 from dataclasses import dataclass
+from fractions import Fraction
 
 from rbcli.api import options as op
-from rbcli.errors import InputError, Location, ParamError, literal
+from rbcli.core.field.severity import convert_measure
+from rbcli.errors import InputError, Location, ParamError, literal, spell
+from rbcli.io import units as un
 
-__all__ = ["Reading", "reading", "trial", "readings", "one_kind", "at", "Measures",
-    "common_measure", "READING_KINDS", "READING_UNITS", "SI_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
+__all__ = ["Reading", "reading", "trial_mass", "readings", "one_kind", "at", "Measures",
+    "common_measure", "READING_KINDS", "READING_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
 
 #: what a reading's unit may measure -> its kind; readings are converted to SI
 READING_KINDS = {"displacement": (1, 0), "velocity": (1, -1), "acceleration": (1, -2)}
-#: the SI unit of each kind, as JSON reports it
-SI_UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
 #: the units a reading may carry, for messages and help
 READING_UNITS = "displacement µm, mm, mil; velocity mm/s, in/s; acceleration g, m/s²"
 #: how a reading may say its measure -> the measure
@@ -77,10 +79,6 @@ def _split_measure(amp: str) -> tuple[str, str | None]:
 def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bool]:
     """A reading's amplitude: (value, kind, read g as gravity) - SI for a unit of
     vibration, the number for a bare one (kind None)."""
-    from fractions import Fraction
-
-    from rbcli.io import units as un
-
     num = op.NUMBER.match(text)
     lit = literal(whole)
     if not num:
@@ -116,8 +114,6 @@ def reading(text: str, param: str, where: Location | None = None) -> Reading:
     rbcli.ParamError
         naming ``param``.
     """
-    import cmath
-
     m = _READING.fullmatch(text)
     lit = literal(text)
     if not m:
@@ -130,7 +126,7 @@ def reading(text: str, param: str, where: Location | None = None) -> Reading:
     return Reading(complex(cmath.rect(amp, math.radians(ang))), kind, measure, gravity, param, text, where)
 
 
-def trial(text: str, param: str = "trial", bare: str = "g") -> complex:
+def trial_mass(text: str, param: str = "trial", bare: str = "g") -> complex:
     """``'10 g@0'`` or ``'10@0'`` (a bare mass in ``bare``, grams by default) -> kg e^{i angle}.
 
     Raises
@@ -138,8 +134,6 @@ def trial(text: str, param: str = "trial", bare: str = "g") -> complex:
     rbcli.ParamError
         naming ``param``.
     """
-    import cmath
-
     m = _READING.fullmatch(text)
     lit = literal(text)
     if not m:
@@ -193,8 +187,6 @@ JOB_WORDS = {"initial": "initial", "run": "a trial run", "measure": "readings: m
 def at(where: Location | None, exc: InputError) -> InputError:
     """``exc`` about a value of a job file: its reason, located at ``where`` (parameters
     spelled as the job file's words); ``exc`` itself when ``where`` is None."""
-    from rbcli.errors import spell
-
     if where is None:
         return exc
     words = lambda p: JOB_WORDS.get(p, p)  # noqa: E731
@@ -239,8 +231,6 @@ def common_measure(rs: list[Reading], default: str | None, want: str | None) -> 
         a reading with a measure and one without, and no default: which measure the other
         is in is a guess (``measure``).
     """
-    from rbcli.core.balance.severity import convert_measure
-
     stated = [r for r in rs if r.measure is not None]
     bare = [r for r in rs if r.measure is None]
     if stated and bare and default is None:

@@ -1,0 +1,232 @@
+"""The result of a field-balancing job (:func:`result`: the work of
+:func:`rbcli.api.field.service.run`).
+
+A one- or two-plane job given the classic way is solved by :mod:`rbcli.core.field.classic`
+and reported as it always was. Every other job is extended: square one- and two-plane jobs
+are still solved by the classic solves (the same bits), the rest by
+:mod:`rbcli.core.field.solve`; then come the corrections at their radii, the masses as
+fitted (:func:`rbcli.core.field.fit.fit_plane`) and the readings they leave, Darlow's
+significance (:mod:`rbcli.core.field.significance`), the ISO 20816-3 zones
+(:mod:`rbcli.core.field.severity`) and a trial mass to start with (:mod:`rbcli.api.field.trial`).
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from rbcli.api.field import trial
+from rbcli.api.field.result import (
+    SI_UNITS, Conventions, FieldBalanceResult, FieldCorrection, FieldResidual, Fitted, FittedPlane,
+    Severity, SeverityRow, convention_text, row_names,
+)
+from rbcli.core.balance.common import FIELD_COND_WARN
+from rbcli.core.field.classic import field_single_plane, field_two_plane, small_response
+from rbcli.core.field.fit import fit_plane
+from rbcli.core.field.severity import to_velocity, zone, zone_boundaries
+from rbcli.core.field.significance import SIGNIFICANCE_LIMIT, plane_significance
+from rbcli.core.field.solve import FieldSolution, deg, influence_matrix, matvec, solve
+
+if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.api.field.job import Job
+
+__all__ = ["result", "significance_warning"]
+
+Rows = list[tuple[str, str]]
+
+
+def result(job: Job) -> FieldBalanceResult:
+    """The result of ``job`` (see the module's docstring)."""
+    if not job.extended:
+        return _classic(job)
+    if not job.initial:  # a trial mass sized, nothing measured yet
+        return FieldBalanceResult(
+            planes=job.planes, initial=(), runs=(), corrections=(), alpha=(), trial_masses=(),
+            radii=job.radii, cond=None, det=None, ill_conditioned=False, small_response=(),
+            residual_values=(), cumulative=bool(job.options.cumulative), method=None,
+            suggested_trial=trial.suggestions(job, None, None),
+            significance_limit=SIGNIFICANCE_LIMIT, **_described(job))
+    return _extended(job)
+
+
+def significance_warning(plane: str, factor: float) -> str:
+    """The warning for a plane Darlow's test flags."""
+    return (f"plane {plane} is ill-conditioned by Darlow's test: its significance factor {factor:.3g} is "
+            f"at or below {SIGNIFICANCE_LIMIT:g} (it moves the readings in little that the other planes "
+            "do not), so its correction is unreliable; consider balancing without it")
+
+
+# ----------------------------------------------------------------------------- classic
+
+
+def _classic(job: Job) -> FieldBalanceResult:
+    """The one- or two-plane job as rbcli always solved and reported it."""
+    s = 1.0 if job.radii is None else job.radii[0] / job.radii[1]
+    rc = None if job.radii is None else job.radii[1]
+    common = dict(initial=job.initial, runs=job.runs, trial_masses=job.trials, radii=job.radii,
+                  reading_kind=job.reading_kind)
+    if job.planes == 1:
+        f = field_single_plane(job.initial[0], job.runs[0][0], job.trials[0])
+        return FieldBalanceResult(
+            planes=1, corrections=(FieldCorrection("A", f.correction * s, f.correction_trial_on * s, rc),),
+            alpha=((f.influence,),), cond=None, det=None, ill_conditioned=False,
+            small_response=(bool(f.small_response),), residual_values=(f.predicted_residual,),
+            cumulative=False, warnings=f.warnings, **common)
+    f2 = field_two_plane(job.initial, job.runs[0], job.runs[1], job.trials[0], job.trials[1],
+                         cumulative=bool(job.options.cumulative))
+    sig = plane_significance(f2.influence)  # Darlow's test: a warning when it flags a plane
+    return FieldBalanceResult(
+        planes=2, corrections=tuple(FieldCorrection(name, complex(w) * s, complex(w_on) * s, rc) for
+                                    name, w, w_on in zip("AB", f2.corrections, f2.corrections_trials_on)),
+        alpha=tuple(tuple(complex(a) for a in row) for row in f2.influence), cond=float(f2.cond),
+        det=complex(f2.det), ill_conditioned=bool(f2.ill_conditioned),
+        small_response=tuple(bool(x) for x in f2.small_response),
+        residual_values=tuple(complex(v) for v in f2.predicted_residual), cumulative=bool(f2.cumulative),
+        warnings=tuple(f2.warnings) + tuple(significance_warning("AB"[j], float(sig.factors[j]))
+                                            for j in sig.flagged),
+        significance_factors=tuple(float(x) for x in sig.factors), **common)
+
+
+# ----------------------------------------------------------------------------- extended
+
+
+def _described(job: Job) -> dict[str, Any]:
+    """What an extended result says of its job: names, units, conventions, sources."""
+    o = job.options
+    conv = None
+    if o.phase is not None or o.angle_sense is not None or o.rotation is not None:
+        conv = Conventions(o.phase, o.angle_sense, o.rotation, job.flipped,
+                           convention_text(o.phase, o.angle_sense, o.rotation, job.flipped))
+    return dict(reading_kind=job.reading_kind, sensors=job.sensors, run_speeds=job.speeds,
+                plane_names=job.plane_names, plane_radii=job.plane_radii, weights=job.weights,
+                measure=job.measure, measures_converted=job.measures_converted, gravity=job.gravity,
+                conventions=conv, coefficients_from=o.coefficients, job=o.job, name=job.name,
+                notes=job.notes)
+
+
+def _extended(job: Job) -> FieldBalanceResult:
+    V0 = np.array(job.initial, dtype=complex)
+    alpha, sol, small = _solve(job, V0)
+    resid = np.asarray(sol.residuals)
+    scales = [1.0 if r is None else r[0] / r[1] for r in job.plane_radii]
+    corrections = tuple(_correction(job, j, complex(sol.corrections[j]), scales[j])
+                        for j in range(job.planes))
+    rows = row_names(job.sensors, job.speeds, len(job.initial))
+    sig = plane_significance(alpha)
+    fitted = _fitted(job, corrections, scales, alpha, V0, rows)
+    after = [r.amplitude for r in fitted.residuals] if fitted else [abs(complex(r)) for r in resid]
+    return FieldBalanceResult(
+        planes=job.planes, initial=job.initial, runs=job.runs, corrections=corrections,
+        alpha=tuple(tuple(complex(a) for a in row) for row in alpha), trial_masses=job.trials,
+        radii=job.radii, cond=float(sol.cond), det=sol.det, ill_conditioned=bool(sol.cond > FIELD_COND_WARN),
+        small_response=small, residual_values=tuple(complex(r) for r in resid),
+        cumulative=bool(job.options.cumulative), method=sol.method,
+        residuals=tuple(_residual(rows[k], resid[k], V0[k], job.flipped) for k in range(len(rows))),
+        significance_factors=tuple(float(x) for x in sig.factors), significance_limit=SIGNIFICANCE_LIMIT,
+        fitted=fitted, severity=None if job.severity is None else _severity(
+            job, V0, after, rows, "fitted" if fitted else "computed"),
+        suggested_trial=trial.suggestions(job, alpha, V0),
+        warnings=_warnings(job, sol, sig, small, V0, rows), **_described(job))
+
+
+def _solve(job: Job, V0: np.ndarray) -> tuple[np.ndarray, FieldSolution, tuple[bool, ...]]:
+    """The influence matrix, the solution and, per trial run, whether it changed the
+    readings too little."""
+    n, p = V0.size, job.planes
+    runs, cumulative = job.runs, bool(job.options.cumulative)
+    if job.alpha is None and n == p and p in (1, 2):
+        # the classic solves: the same arithmetic, the same bits as the classic output
+        if p == 1:
+            f1 = field_single_plane(job.initial[0], runs[0][0], job.trials[0])
+            alpha, W, small = np.array([[f1.influence]]), np.array([f1.correction]), (bool(f1.small_response),)
+        else:
+            f2 = field_two_plane(job.initial, runs[0], runs[1], job.trials[0], job.trials[1],
+                                 cumulative=cumulative)
+            alpha, W = np.array(f2.influence), np.array(f2.corrections)
+            small = tuple(bool(x) for x in f2.small_response)
+        sol = solve(alpha, V0)  # for cond and det; W is the classic one
+        return alpha, FieldSolution(W, V0 + alpha @ W, "exact", sol.cond, sol.det, 0.0), small
+    if job.alpha is not None:
+        alpha, small = np.array(job.alpha, dtype=complex), ()
+    else:
+        alpha = influence_matrix(V0, np.array(runs, dtype=complex), np.array(job.trials, dtype=complex),
+                                 cumulative=cumulative)
+        small = tuple(all(small_response(complex((runs[j - 1] if cumulative and j else job.initial)[k]),
+                                         complex(runs[j][k])) for k in range(n)) for j in range(p))
+    return alpha, solve(alpha, V0, job.options.method, job.weights), small
+
+
+def _correction(job: Job, j: int, w: complex, scale: float) -> FieldCorrection:
+    """Plane ``j``'s correction ``w`` (kg at the trial radius) at its correction radius,
+    and with its trial left on."""
+    on = w * scale
+    if job.trials:
+        t = job.trials[j]
+        # the correction is the trial itself, to round-off: nothing to add
+        on = 0j if abs(w - t) <= 1e-12 * max(abs(w), abs(t)) else (w - t) * scale
+    rr = job.plane_radii[j]
+    return FieldCorrection(job.plane_names[j], w * scale, on, None if rr is None else rr[1])
+
+
+def _residual(row: tuple[str, str], r: complex, v0: complex, flipped: bool) -> FieldResidual:
+    z = complex(r).conjugate() if flipped else complex(r)
+    return FieldResidual(row[0], row[1], abs(z), deg(z) if z != 0 else 0.0, abs(complex(v0)))
+
+
+def _warnings(job: Job, sol: FieldSolution, sig: Any, small: tuple[bool, ...], V0: np.ndarray,
+              rows: Rows) -> tuple[str, ...]:
+    """Ill-conditioning, planes Darlow's test flags, trials too small, readings made larger."""
+    out = []
+    if sol.cond > FIELD_COND_WARN:
+        out.append(f"the influence matrix is ill-conditioned (cond = {sol.cond:.3g} > "
+                   f"{FIELD_COND_WARN:g}): the planes are not well separated")
+    if job.planes > 1:
+        out += [significance_warning(job.plane_names[j], float(sig.factors[j])) for j in sig.flagged]
+    out += [f"trial {job.plane_names[j]} changed no reading by 25 % in amplitude or 25 deg in phase: "
+            "use a larger trial mass" for j, sm in enumerate(small) if sm]
+    unit = SI_UNITS[job.reading_kind] if job.reading_kind else "relative"
+    if V0.size > job.planes:
+        for k, r in enumerate(sol.residuals):
+            if abs(r) > abs(V0[k]) * (1.0 + 1e-9):
+                sensor, speed = rows[k]
+                out.append(f"the correction raises reading {sensor}{' at ' + speed if speed else ''} from "
+                           f"{abs(V0[k]):.4g} to {abs(r):.4g} ({unit}): {sol.method} trades it against "
+                           "the others")
+    return tuple(out)
+
+
+def _fitted(job: Job, corrections: tuple[FieldCorrection, ...], scales: list[float], alpha: np.ndarray,
+            V0: np.ndarray, rows: Rows) -> Fitted | None:
+    """The corrections rounded or split as asked, and the readings they leave."""
+    o = job.options
+    positions = job.positions + (None,) * (len(corrections) - len(job.positions))
+    if o.mass_step is None and o.angle_step is None and not any(positions):
+        return None
+    planes = []
+    for c, npos in zip(corrections, positions):
+        fp = fit_plane(c.correction, mass_step=o.mass_step, angle_step_deg=None if npos else o.angle_step,
+                       positions=npos)
+        planes.append(FittedPlane(c.name, npos, abs(fp.net), deg(fp.net) if fp.net != 0 else 0.0, fp.masses))
+    # the masses fitted at the correction radius, as trial-radius masses: net / scale
+    nets = [complex(pl.mass * cmath.rect(1.0, math.radians(pl.angle_deg))) / scale
+            for pl, scale in zip(planes, scales)]
+    r = V0 + matvec(alpha, nets)
+    return Fitted(o.mass_step, o.angle_step, tuple(planes),
+                  tuple(_residual(rows[k], r[k], V0[k], job.flipped) for k in range(len(rows))))
+
+
+def _severity(job: Job, V0: np.ndarray, after: list[float], rows: Rows, after_is: str) -> Severity:
+    """ISO 20816-3 zones of each reading before and after (r.m.s. velocity)."""
+    _, group, foundation = job.severity
+    kind, ns = job.reading_kind, len(job.sensors)
+    out = []
+    for k, (sensor, speed) in enumerate(rows):
+        b, a = abs(complex(V0[k])), after[k]
+        if kind != "velocity":
+            w = job.speeds[k // ns][1]
+            b, a = to_velocity(b, kind, w), to_velocity(a, kind, w)
+        out.append(SeverityRow(sensor, speed, b, zone(b, group, foundation), a, zone(a, group, foundation)))
+    return Severity("ISO 20816-3", group, foundation, zone_boundaries(group, foundation), after_is, tuple(out))

@@ -1,0 +1,114 @@
+"""Field (trial-weight) balancing: the service behind ``rbcli field-balance``.
+
+The influence-coefficient method (physics sheet ``physics/balance.md`` §5; the two-plane
+example is Brüel & Kjær application note 17-227, "Static and dynamic balancing of rigid
+rotors"): P correction planes, N >= P readings per run (sensors at one or more speeds),
+one trial run per plane. :func:`field_balance` reads its parameters once
+(:data:`rbcli.api.commands.FIELD_BALANCE`, :func:`parse`: the job, from the parameters or a
+job file, :mod:`rbcli.api.field.job`) and returns a frozen
+:class:`~rbcli.api.field.result.FieldBalanceResult` (:func:`run`,
+:mod:`rbcli.api.field.compute`) whose ``to_json()`` is what ``rbcli field-balance --json``
+prints. No body is needed.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rbcli.api.commands import FIELD_BALANCE
+from rbcli.api.field import compute
+from rbcli.api.field.job import Job, make
+from rbcli.api.field.result import FieldBalanceResult
+from rbcli.api.params import function, read
+from rbcli.api.result import jsonable
+from rbcli.core.balance.common import BalanceValueError
+from rbcli.errors import NonFiniteResult, ParamError, literal
+
+__all__ = ["FieldBalanceResult", "field_balance", "parse", "run"]
+
+#: the core's parameter names -> the parameters of :func:`field_balance`
+_CORE_PARAMS = {"v0": "initial", "v1": "run", "va": "run", "vb": "run", "trial": "trial",
+                "trial_a": "trial", "trial_b": "trial", "runs": "run", "trials": "trial",
+                "weights": "weights", "method": "method", "mass_step": "mass_step",
+                "angle_step": "angle_step", "positions": "positions", "bearing_load": "bearing_load",
+                "trial_radius": "trial_radius", "speed": "speed", "trial_fraction": "trial_fraction"}
+
+
+def parse(body: None = None, **kwargs: Any) -> Job:
+    """The keyword arguments of :func:`field_balance` (see there) read and checked: the job
+    (:class:`rbcli.api.field.job.Job`).
+
+    Raises
+    ------
+    rbcli.InputError
+        with the message the command line prints (``trial: ...``), located in the job file
+        for a job file's value.
+    """
+    return make(read(body, FIELD_BALANCE, kwargs))
+
+
+def run(body: None, job: Job) -> FieldBalanceResult:
+    """Field balancing of ``job`` (``body`` is None: the command needs none).
+
+    Raises
+    ------
+    rbcli.InputError
+        readings that give no influence coefficient or a singular matrix (``run: ...``);
+        :class:`rbcli.NonFiniteResult` when the result overflows.
+    """
+    try:
+        with np.errstate(all="ignore"):
+            try:
+                res = compute.result(job)
+            except BalanceValueError as exc:
+                raise ParamError(_CORE_PARAMS.get(exc.param, "run"), literal(exc)) from None
+            except np.linalg.LinAlgError as exc:
+                raise ParamError("run", literal(exc)) from None
+            jsonable(res.to_json())  # the one finiteness check: refuses inf and NaN
+    except (OverflowError, ZeroDivisionError, NonFiniteResult):
+        raise NonFiniteResult(
+            "{initial}, {trial}, {run}: the result overflows (a number beyond 1e308); "
+            "the readings or trial masses are too large or too small"
+        ) from None
+    return res
+
+
+@function(FIELD_BALANCE, body="none")
+def field_balance(body: None = None, **kwargs: Any) -> FieldBalanceResult:
+    """Field (trial-weight) balancing from vibration readings: influence coefficients.
+
+    Readings are ``"amplitude@phase"`` strings (phases in degrees from the keyphasor):
+    either all bare numbers (``"6.0@30"``: one relative scale, the corrections do not depend
+    on it) or all with units of one kind, converted exactly: displacement (``"40 um@30"``,
+    µm, mm, mil), velocity (``"6 mm/s@30"``, mm/s, in/s) or acceleration (``"0.5 g@30"``,
+    g = standard gravity, m/s²); a measure may follow the unit (``"6 mm/s rms@30"``: pk,
+    pk-pk or rms). Trial masses are ``"mass@angle"`` (``"10 g@0"``; a bare mass is in grams,
+    as balancing sheets write it). A number given for a quantity is SI (m, kg, rad/s, N).
+
+    Parameters
+    ----------
+    {parameters}
+
+    Returns
+    -------
+    FieldBalanceResult
+        ``corrections[i].mass`` kg, ``angle_deg`` in the sense of the trial angles.
+
+    Raises
+    ------
+    TypeError
+        An argument of the wrong type, naming the parameter and the type expected
+        (:mod:`rbcli.api.check`).
+    rbcli.InputError
+        naming the parameter and ``param``.
+
+    Examples
+    --------
+    >>> import rbcli
+    >>> r = rbcli.field_balance(initial="6.0@30", trial="10 g@0", run="4.0@110")
+    >>> round(r.corrections[0].mass * 1e3, 2)   # g
+    9.08
+    """
+    return run(None, parse(None, **kwargs))
