@@ -427,16 +427,14 @@ def _margins(speed, peaks, damped: bool, forcing, warnings) -> Margins | None:
 
 
 def _campbell(cb, ranks) -> Campbell:
-    names = lambda table, codes: tuple(tuple(table[c] for c in row) for row in codes.T.tolist())  # noqa: E731
     branch = np.empty_like(ranks)
     np.put_along_axis(branch, ranks, np.arange(4)[None, :], 1)  # branch[j, rank] = k
-    logdec = -2.0 * np.pi * cb.eigenvalues.real / np.where(cb.frequency > 0.0, cb.frequency, 1.0) + 0.0
+    f = cb.frequency.T
+    logdec = np.where(f > 0.0, -2.0 * np.pi * cb.eigenvalues.real.T / np.where(f > 0.0, f, 1.0) + 0.0, None)
     return Campbell(
-        speeds=readonly(cb.speeds), frequencies=readonly(cb.frequency.T),
-        whirl=names(WHIRLS, cb.whirl), damping_ratio=readonly(cb.damping_ratio.T + 0.0),
-        log_decrement=tuple(tuple(None if f == 0.0 else x for x, f in zip(lr, fr))
-                            for lr, fr in zip(logdec.T.tolist(), cb.frequency.T.tolist())),
-        kind=names(KINDS, cb.kind), branch=tuple(tuple(r) for r in (branch.T + 1).tolist()))
+        speeds=readonly(cb.speeds), frequencies=readonly(f), whirl=np.array(WHIRLS)[cb.whirl.T],
+        damping_ratio=readonly(cb.damping_ratio.T + 0.0), log_decrement=logdec,
+        kind=np.array(KINDS)[cb.kind.T], branch=branch.T + 1)  # (the result freezes them)
 
 
 def _map(rotor, o: Options, rng) -> CriticalMap:

@@ -167,11 +167,11 @@ class Campbell(_Json):
 
     speeds: Any
     frequencies: Any
-    whirl: tuple[tuple[str, ...], ...]
+    whirl: Any
     damping_ratio: Any
-    log_decrement: tuple[tuple[float | None, ...], ...]
-    kind: tuple[tuple[str, ...], ...]
-    branch: tuple[tuple[int, ...], ...]
+    log_decrement: Any
+    kind: Any
+    branch: Any
 
 
 @dataclass(frozen=True)

@@ -216,6 +216,6 @@ MANUAL["whirl"] = {
         ("rbcli whirl examples/fan_rotor.yaml --bearings 0,500mm --stiffness '5 N/um' --damping '1 N*s/mm' --speed '1480 rpm' --speed-range '0,3000 rpm' --orders 1,2 --plot campbell.png --plot-response response.png",
          "The README's fan on rolling bearings in a light pedestal: forward conical critical speed 1958.84 rpm, driven by the rotor's own unbalance, its response peak (AF 24.3) 32.4 % above 1480 rpm where the API rule asks 26 %: PASS; and the two figures."),
         ("rbcli whirl examples/journal_rotor.yaml --speed '8500 rpm' --plot-map map.png",
-         "A rotor on two plain journal bearings whose coefficients the body file tables against speed (examples/journal_bearing.csv, from Someya's Journal-Bearing Databook): the forward cylindrical whirl starts growing at 7999.58 rpm (oil whip, at 0.66 of the speed), so 8500 rpm is UNSTABLE: exit status 1; and the critical speed map."),
+         "A rotor on two plain journal bearings whose coefficients the body file tables against speed (examples/journal_bearing.csv, from Someya's Journal-Bearing Databook): the forward cylindrical whirl starts growing at 7999.63 rpm (oil whip, at 0.66 of the speed), so 8500 rpm is UNSTABLE: exit status 1; and the critical speed map."),
     ],
 }

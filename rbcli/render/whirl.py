@@ -344,20 +344,33 @@ def _by_branch(cb, values: np.ndarray) -> np.ndarray:
     return out
 
 
-def _critical_marks(res: WhirlResult, lo: float, hi: float) -> list[tuple[float, int, bool, int]]:
-    """(speed, order, driven, how many) of the critical speeds in [lo, hi] rad/s, those that
-    coincide (to 1e-6 of the speed, one order) as one mark, driven when any of them is."""
+def _critical_marks(res: WhirlResult, lo: float, hi: float) -> list[tuple[float, int, str, int]]:
+    """(speed, order, how, count) of the critical speeds in [lo, hi] rad/s: at the damped
+    crossing, else the undamped speed ("undamped": no damped crossing); how "driven" when
+    the unbalance drives one; those that coincide (to 1e-6 of the speed, one order) one mark."""
     marks: list[list] = []
     for c in sorted(res.critical_speeds, key=lambda c: (c.order, c.damped_speed or c.speed)):
         s = c.damped_speed if c.damped_speed is not None else c.speed
         if not lo <= s <= hi:
             continue
+        how = "driven" if c.excited else "undamped" if c.damped_speed is None and not _exact_only(res) else "not driven"
         if marks and marks[-1][1] == c.order and abs(marks[-1][0] - s) <= 1e-6 * s:
-            marks[-1][2] = marks[-1][2] or bool(c.excited)
+            marks[-1][2] = "driven" if "driven" in (how, marks[-1][2]) else marks[-1][2]
             marks[-1][3] += 1
         else:
-            marks.append([s, c.order, bool(c.excited), 1])
+            marks.append([s, c.order, how, 1])
     return [tuple(m) for m in marks]
+
+
+def _exact_only(res: WhirlResult) -> bool:
+    """Undamped and conservative: the critical speeds are the crossings themselves."""
+    return all(_conservative(b) for b in res.bearings)
+
+
+#: how a critical speed is marked: (marker, face colour, legend, z-order: driven on top)
+MARKS = {"driven": ("o", "black", "critical speed (driven by the unbalance)", 6),
+         "not driven": ("o", "white", "critical speed (not driven)", 5),
+         "undamped": ("s", "white", "undamped critical speed (no damped crossing)", 5)}
 
 
 def campbell_figure(res: WhirlResult):
@@ -392,14 +405,17 @@ def campbell_figure(res: WhirlResult):
         ax.plot([0.0, top], [0.0, n * top], color="0.6", linewidth=0.9, linestyle=(0, (1, 2)))
         xt = min(top, ymax / n) * 0.92
         ax.annotate(f"{n}×", (xt, n * xt), textcoords="offset points", xytext=(4, -10), fontsize=8, color="0.4")
-    for s, n, driven, count in sorted(_critical_marks(res, sp[0] / RPM, top / RPM), key=lambda m: m[2]):
-        ax.plot([s * RPM], [n * s * RPM], marker="o", markersize=6, linestyle="none", zorder=6 if driven else 5,
-                markerfacecolor="black" if driven else "white", markeredgecolor="black",
-                label=None if (driven, "crit") in seen else
-                "critical speed (driven by the unbalance)" if driven else "critical speed (not driven)")
-        seen.add((driven, "crit"))
+    marks = _critical_marks(res, sp[0] / RPM, top / RPM)
+    for k, (s, n, how, count) in enumerate(marks):
+        marker, face, name, z = MARKS[how]
+        ax.plot([s * RPM], [n * s * RPM], marker=marker, markersize=6, linestyle="none", zorder=z,
+                markerfacecolor=face, markeredgecolor="black", label=None if how in seen else name)
+        seen.add(how)
+        near = k > 0 and abs(s - marks[k - 1][0]) < 0.06 * top / RPM and k % 2  # a close neighbour: below
         ax.annotate(f"{s * RPM:.4g}" + (f" (×{count})" if count > 1 else ""), (s * RPM, n * s * RPM),
-                    textcoords="offset points", xytext=(-8, 6), ha="right", fontsize=7, zorder=7)
+                    textcoords="offset points", xytext=(8, -12) if near else (-8, 6),
+                    ha="left" if near else "right", fontsize=7, zorder=7)
+    ymax = max([ymax] + [n * s * RPM for s, n, _, _ in marks])
     if res.speed is not None:
         lo, hi = res.speed
         if lo == hi:
@@ -428,22 +444,26 @@ def map_figure(res: WhirlResult):
     k = np.asarray(cm.stiffness)
     fig, axes = figure(f"whirl: {res.name} — undamped critical speed map", size=(7.5, 5.0))
     ax = axes[0][0]
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
     for b in range(len(cm.whirl)):
-        name, colour, ls = WHIRL_STYLE[cm.whirl[b]]
-        ax.plot(k, np.asarray(cm.speeds[b]) * RPM, color=colour, linestyle=ls, linewidth=1.4,
-                label=f"{cm.whirl[b]} {cm.mode[b]}")
+        ax.plot(k, np.asarray(cm.speeds[b]) * RPM, linewidth=1.2, markevery=8, markersize=4,
+                label=f"{cm.whirl[b]} {cm.mode[b]}", **style(b))
     for i, c in enumerate(cm.bearings):
         sp = np.asarray(c["speeds"]) * RPM
-        kw = style(i + 1)
-        kw.pop("linestyle", None)
-        ax.plot(c["kxx"], sp, linewidth=2.2, alpha=0.7, label=f"bearing {i + 1} kxx", **kw)
+        colour = ("tab:blue", "tab:orange", "tab:green", "tab:red")[i % 4]
+        ax.plot(c["kxx"], sp, color=colour, linewidth=2.6, alpha=0.55, label=f"bearing {i + 1} kxx")
         if c["kyy"] != c["kxx"]:
-            ax.plot(c["kyy"], sp, linewidth=2.2, alpha=0.7, linestyle="--", label=f"bearing {i + 1} kyy", **kw)
+            ax.plot(c["kyy"], sp, color=colour, linewidth=2.6, alpha=0.55, linestyle="--",
+                    label=f"bearing {i + 1} kyy")
     if res.speed is not None:
         for x in sorted(set(res.speed)):
             ax.axhline(x * RPM, color="0.3", linewidth=0.9, linestyle="-.")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    for axis in (ax.xaxis, ax.yaxis):  # plain text, not mathtext
+        axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+        axis.set_minor_formatter(NullFormatter())
     ax.set_xlim(float(k[0]), float(k[-1]))
     ax.set_xlabel("bearing stiffness [N/m]")
     ax.set_ylabel("critical speed [rpm]")

@@ -40,7 +40,7 @@ __all__ = ["CriticalSpeed", "Missing", "critical_speeds", "damped_crossing", "cr
 #: a generalized eigenvalue nu = 1/Omega^2 is real when |Im nu| <= this times |nu|
 REAL_RTOL = 1e-9
 #: speeds of the grid on which crossings are bracketed (the root solve is exact)
-SEARCH_POINTS = 241
+SEARCH_POINTS = 121
 
 
 @dataclass(frozen=True, eq=False)
@@ -144,7 +144,7 @@ def _solved(rotor: Rotor, orders: tuple[int, ...], span: tuple[float, float]):
     out, missing = [], []
     for n in orders:
         roots = branch_roots(cb, ranks, cb.frequency - n * cb.speeds[:, None],
-                             lambda md, x, n=n: md.frequency - n * x)
+                             lambda lam, x, n=n: abs(lam.imag) - n * x)
         for x, _, md, _ in roots:
             out.append(CriticalSpeed(x, n, md.shape, md.vector, md.eigenvalue))
         for k in sorted(set(range(4)) - {b for _, b, _, _ in roots}):
@@ -196,7 +196,7 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
         return W0, mode(W0)
 
     def g(x: float) -> float:
-        return mode(x).frequency - n * x
+        return abs(followed(rotor, [x], crit.vector, whirl=crit.whirl, classify=False)[0][0].imag) - n * x
 
     g0 = g(W0)
     if g0 == 0.0:
@@ -208,7 +208,7 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
     while h <= 3.0 * W0:
         trials += [x for x in (W0 - h, W0 + h) if 0.25 * W0 <= x <= 4.0 * W0 and lo <= x <= hi and x > 0.0]
         h *= 1.5
-    lam, _, _ = followed(rotor, trials, crit.vector, whirl=crit.whirl)
+    lam, _, _ = followed(rotor, trials, crit.vector, whirl=crit.whirl, classify=False)
     for x, gx in zip(trials, np.abs(lam.imag) - n * np.array(trials)):
         if gx == 0.0:
             return x, mode(x)

@@ -226,20 +226,22 @@ def modes_at(rotor: Rotor, speed: float) -> list[Mode]:
     return campbell(rotor, [speed]).modes(0)
 
 
-def followed(rotor: Rotor, speeds, *refs: np.ndarray, whirl: str | None = None):
+def followed(rotor: Rotor, speeds, *refs: np.ndarray, whirl: str | None = None, classify: bool = True):
     """At each of ``speeds``, the mode whose shape is nearest the reference shapes ``refs``
     (Mode vectors: the largest summed MAC; of the same whirl when given and one exists):
-    (eigenvalues (N,), weighted shapes (N, 4), the :func:`shapes` arrays (N,))."""
+    (eigenvalues (N,), weighted shapes (N, 4), the :func:`shapes` arrays (N,), or None
+    without ``classify``)."""
     lam, parts, osc = _solve(rotor, np.asarray(speeds, dtype=float).reshape(-1))
     w = weighted(rotor, parts)
     score = sum(np.abs(w.conj() @ r) ** 2 for r in refs)  # unit shapes: the MAC itself
-    s = shapes(rotor, parts, osc)
+    s = shapes(rotor, parts, osc) if classify or whirl is not None else None
     if whirl is not None:
         same = s["whirl"] == WHIRLS.index(whirl)
         score = np.where(same | ~np.any(same, axis=1, keepdims=True), score, -1.0)
     k = np.argmax(score, axis=1)[:, None]
     pick = lambda a: np.take_along_axis(a, k, 1)[:, 0]  # noqa: E731
-    return pick(lam), np.take_along_axis(w, k[..., None], 1)[:, 0], {n: pick(a) for n, a in s.items()}
+    return pick(lam), np.take_along_axis(w, k[..., None], 1)[:, 0], \
+        None if not classify else {n: pick(a) for n, a in s.items()}
 
 
 def follow(rotor: Rotor, speed: float, *refs: np.ndarray, whirl: str | None = None) -> Mode:
@@ -305,7 +307,7 @@ def track(cb: Campbell, depth: int = 12) -> np.ndarray:
 def branch_roots(cb: Campbell, ranks: np.ndarray, values: np.ndarray, fn) -> list[tuple[float, int, Mode, float]]:
     """Where a followed quantity of a mode changes sign between two speeds of ``cb``:
     ``values`` (N, 4) its value at each speed (by frequency index; 0 where it is to be read
-    as neither sign), ``fn(mode, speed)`` the same of one Mode. Each root is solved by
+    as neither sign), ``fn(eigenvalue, speed)`` the same of one mode. Each root is solved by
     Brent's method (to ~1e-12 of the speed) on the mode followed by its shape from both
     ends of its bracket (two speeds with values of opposite signs, zeros between them).
 
@@ -327,7 +329,7 @@ def branch_roots(cb: Campbell, ranks: np.ndarray, values: np.ndarray, fn) -> lis
 
             def g(x: float, refs=refs, seen=seen) -> float:
                 if x not in seen:
-                    seen[x] = fn(follow(cb.rotor, x, *refs), x)
+                    seen[x] = fn(complex(followed(cb.rotor, [x], *refs, classify=False)[0][0]), x)
                 return seen[x]
 
             if g(lo) * g(hi) < 0.0:

@@ -67,7 +67,7 @@ def stability(cb: Campbell, ranks: np.ndarray) -> Stability:
     re = cb.eigenvalues.real
     banded = np.where(np.abs(re) <= GROWTH_RTOL * np.abs(cb.eigenvalues), 0.0, re)
     out = []
-    for x, k, md, after in branch_roots(cb, ranks, banded, lambda m, x: m.eigenvalue.real):
+    for x, k, md, after in branch_roots(cb, ranks, banded, lambda lam, x: lam.real):
         out.append(Threshold(x, k, "onset" if after > 0.0 else "recovery", md))
     start = tuple(k for k in range(4) if banded[0, ranks[0, k]] > 0.0)
     return Stability(tuple(out), start, (float(cb.speeds[0]), float(cb.speeds[-1])))
