@@ -9,10 +9,11 @@ ending in ``_deg``; margins in % under keys ending in ``_percent``.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass
 from typing import Any
 
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus
 
 __all__ = ["CONVENTIONS", "WhirlResult", "RotorData", "BearingData", "BearingTableData", "Mode",
@@ -83,7 +84,7 @@ def _hidden(**default: Any) -> Any:
     return dataclasses.field(metadata={"json": False}, **default)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class RotorData(_Json):
     """The rigid rotor taken from the body (JSON ``rotor``).
 
@@ -108,7 +109,7 @@ class RotorData(_Json):
     couple_unbalance_angle_deg: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BearingTableData(_Json):
     """A bearing's coefficients against speed: speeds (S, rad/s); kxx, kxy, kyx, kyy (S,
     N/m); cxx, cxy, cyx, cyy (S, N s/m); source (the file it came from)."""
@@ -125,7 +126,7 @@ class BearingTableData(_Json):
     source: str
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class BearingData(_Json):
     """One bearing: plane (m along the shaft), stiffness [kxx, kyy] N/m, cross_stiffness
     [kxy, kyx] N/m, damping [cxx, cyy] N s/m (at modes_speed when they change with the
@@ -140,7 +141,7 @@ class BearingData(_Json):
     table: BearingTableData | None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Mode(_Json):
     """A whirl mode at one speed: frequency (rad/s, fixed frame), whirl, kind
     (cylindrical, conical, mixed), node (m along the shaft, null for none), damping_ratio,
@@ -158,7 +159,7 @@ class Mode(_Json):
     bearing_forward_share: tuple[float, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Campbell(_Json):
     """The Campbell diagram: speeds (N, rad/s); per mode (numbered by frequency at each
     speed, lowest first) frequencies (4 x N, rad/s), whirl, kind, damping_ratio,
@@ -174,7 +175,7 @@ class Campbell(_Json):
     branch: Any
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class CriticalSpeed(_Json):
     """A critical speed: speed (rad/s, undamped, exact), order (the n× line), mode (its
     kind), whirl, node (m or null); damped_speed (rad/s, where the damped whirl frequency
@@ -195,7 +196,7 @@ class CriticalSpeed(_Json):
     forward_share: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class NoCrossing(_Json):
     """A branch that never meets its n× line: order, whirl, mode, reason
     ("gyroscopic": n It < Ip; "coincident": n It = Ip, met only at infinite speed;
@@ -230,7 +231,7 @@ class NoCrossing(_Json):
         return {"explanation": self.explanation}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ThresholdRow(_Json):
     """A mode's growth rate crossing zero (Re lambda = 0, a root solve): speed (rad/s),
     change ("onset": it starts growing as the speed rises; "recovery": it stops), mode
@@ -245,7 +246,7 @@ class ThresholdRow(_Json):
     frequency: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Stability(_Json):
     """stable_in_range: no mode grows anywhere in the speed range; onset_speeds: speeds
     (rad/s) in the range where a mode starts or stops growing; least_damping_ratio and
@@ -265,7 +266,7 @@ class Stability(_Json):
     thresholds: tuple[ThresholdRow, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class UnbalanceRow(_Json):
     """An unbalance driving the response: plane (m along the shaft), amount (kg m),
     angle_deg (rotor frame)."""
@@ -275,7 +276,7 @@ class UnbalanceRow(_Json):
     angle_deg: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ResponseBearing(_Json):
     """One bearing's response over the speeds: plane; displacement and displacement_minor
     (m, the orbit's semi-axes), displacement_phase_deg (high spot, rotor frame); force (N,
@@ -289,7 +290,7 @@ class ResponseBearing(_Json):
     force_phase_deg: Any
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class PeakRow(_Json):
     """A response peak: bearing (1-based) and its plane, speed (rad/s), amplitude (m),
     amplification_factor (by basis; null when not defined or undamped), half_power
@@ -311,7 +312,7 @@ class PeakRow(_Json):
     basis: str
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class AtSpeed(_Json):
     """A bearing at the (maximum) operating speed: displacement (m) and its phase, force (N)
     and its phase; rigid_force: the force on rigid bearings at that speed (balance's, two
@@ -325,7 +326,7 @@ class AtSpeed(_Json):
     rigid_force: float | None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ResponseData(_Json):
     """The unbalance response: source ("body": its own static and couple unbalance, or
     "planes": the unbalances given), unbalance (the rows given; empty for the body),
@@ -340,7 +341,7 @@ class ResponseData(_Json):
     at_speed: tuple[AtSpeed, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class MarginCheck(_Json):
     """A critical speed (a response peak) judged by the API rule: bearing (1-based, null
     for an undamped critical speed) and plane, speed (rad/s), mode, amplification_factor,
@@ -363,7 +364,7 @@ class MarginCheck(_Json):
     passed: bool
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Margins(_Json):
     """The separation margins: rule (the standard's clause), operating_speed [min, max]
     rad/s, checks, passed (every check passed; null when nothing could be judged)."""
@@ -374,7 +375,7 @@ class Margins(_Json):
     passed: bool | None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class CriticalMap(_Json):
     """The undamped critical speed map: stiffness (K, N/m: every bearing isotropic, this
     stiffness, no damping); speeds (B x K, rad/s), whirl and mode (B) of each branch;
@@ -397,7 +398,7 @@ API_RULE = ("API 617 (8th ed.) 6.8.2.4-6.8.2.5 / API 684 (2nd ed.) SP6.8.2.1, SP
             "SM >= min(26, 10 + 17 (1 - 1/(AF - 1.5))) %")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class WhirlResult(Result):
     """The rotor on its bearings (see :func:`rbcli.whirl`); attribute names are the JSON
     keys (plus ``name``), arrays read-only.
@@ -446,9 +447,12 @@ class WhirlResult(Result):
         return int(ExitStatus.OK)
 
     def to_json(self) -> dict[str, Any]:
-        """The document ``rbcli whirl --json`` prints, less ``file``."""
-        from rbcli.api.result import jsonable
+        """The document ``rbcli whirl --json`` prints, less ``file`` (built and checked once:
+        its lists are shared by every call, its top level is a new dict each time)."""
+        return dict(self._document)
 
+    @functools.cached_property
+    def _document(self) -> dict[str, Any]:
         d = to_json(self)
         d["warnings"] = list(self.warnings)  # Notes: --json spells their options
         return jsonable(d)

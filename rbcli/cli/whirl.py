@@ -62,7 +62,6 @@ def whirl(
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api import whirl as api
-    from rbcli.io import outfile
     from rbcli.render import whirl as rw
 
     e, out, du = c.start(json_, fmt, units)
@@ -72,6 +71,8 @@ def whirl(
     paths = {"--plot": plot_path}
     for opt, name in (("--plot-response", plot_response), ("--plot-map", plot_map)):
         if name is not None:
+            from rbcli.io import outfile  # (only to write figures: it loads secrets, ~3 ms)
+
             paths[opt] = outfile.check(name, b, opt, exts=c.PLOT_FORMATS, replace_ok=True,
                                        others={k: v for k, v in paths.items() if v is not None})
     res = api.run(b, o)

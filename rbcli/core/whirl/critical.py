@@ -68,7 +68,7 @@ class CriticalSpeed:
         return self.shape.whirl
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Missing:
     """A branch that never meets the n× line, and why.
 

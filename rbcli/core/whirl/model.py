@@ -53,7 +53,7 @@ __all__ = ["Bearing", "BearingTable", "Rotor", "ModeShape", "shapes", "shape_of"
            "weighted", "cabs", "COEFFICIENTS", "WHIRLS", "KINDS", "damping_ratio", "log_decrement"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Bearing:
     """One linear bearing (spring and damper) at a station of the shaft.
 
@@ -145,7 +145,7 @@ def _is_isotropic(v: np.ndarray) -> bool:
     return bool(np.all((kxx == kyy) & (kxy == -kyx) & (cxx == cyy) & (cxy == -cyx)))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Rotor:
     """A rigid rotor on its bearings.
 
@@ -278,7 +278,7 @@ class Rotor:
 # ---------------------------------------------------------------------- mode shapes
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ModeShape:
     """What a mode looks like along the shaft.
 

@@ -60,7 +60,7 @@ SQRT_HALF = 1.0 / math.sqrt(2.0)
 _GOLD = (math.sqrt(5.0) - 1.0) / 2.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Forcing:
     """The unbalance that drives the response.
 
@@ -262,7 +262,7 @@ EXCITED_RTOL = 1e-8
 # ---------------------------------------------------------------------- peaks
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Peak:
     """A resonance peak of one bearing's response.
 
@@ -391,7 +391,7 @@ def required_margin(af: float | None, position: str) -> float:
     return min(16.0, base) if position == "below" else min(26.0, 10.0 + base)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Margin:
     """One critical speed judged against the operating speed range.
 
