@@ -94,16 +94,6 @@ class Missing:
     hi: float = math.inf
 
 
-def _real_of(U: np.ndarray, forward: bool) -> np.ndarray:
-    """Real-coordinate amplitudes (x, y, theta_x, theta_y) of a directional shape [R, PHI]
-    whirling forward (r = R e^{iwt}, phi = PHI e^{iwt}) or backward (e^{-iwt})."""
-    R, P = complex(U[0]), complex(U[1])
-    if forward:
-        return np.array([R, -1j * R, 1j * P, P], dtype=complex)
-    Rc, Pc = R.conjugate(), P.conjugate()
-    return np.array([Rc, 1j * Rc, -1j * Pc, Pc], dtype=complex)
-
-
 def _roots(K: np.ndarray, B: np.ndarray) -> list[tuple[float, np.ndarray]]:
     """Positive real Omega^2 roots of K Q = Omega^2 B Q as (Omega, Q)."""
     nu, V = np.linalg.eig(np.linalg.solve(K.astype(complex), B.astype(complex)))

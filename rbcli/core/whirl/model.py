@@ -87,16 +87,6 @@ class Bearing:
     def at(self, speed: float) -> Bearing:
         return self
 
-    @property
-    def K(self) -> np.ndarray:
-        """(2, 2) ndarray — N/m."""
-        return np.array([[self.kxx, self.kxy], [self.kyx, self.kyy]], dtype=float)
-
-    @property
-    def C(self) -> np.ndarray:
-        """(2, 2) ndarray — N s/m."""
-        return np.array([[self.cxx, self.cxy], [self.cyx, self.cyy]], dtype=float)
-
 
 @dataclass(frozen=True, eq=False)
 class BearingTable:

@@ -41,7 +41,7 @@ from rbcli.core.whirl.model import (
 )
 
 __all__ = ["Mode", "Campbell", "campbell", "modes_at", "track", "branch_roots", "follow",
-           "followed", "mac", "GROWTH_RTOL"]
+           "followed", "GROWTH_RTOL"]
 
 #: a mode grows when Re lambda exceeds this fraction of its |lambda| (well above the
 #: eigen-solve's round-off, ~1e-15 of the largest root; a growth this slow doubles in some
@@ -82,12 +82,6 @@ class Mode:
     @property
     def whirl(self) -> str:
         return self.shape.whirl
-
-
-def mac(u: np.ndarray, v: np.ndarray) -> float:
-    """The modal assurance criterion |u^H v|^2 / (|u|^2 |v|^2), 0..1."""
-    nu, nv = float(np.vdot(u, u).real), float(np.vdot(v, v).real)
-    return 0.0 if nu == 0.0 or nv == 0.0 else abs(np.vdot(u, v)) ** 2 / (nu * nv)
 
 
 def _isotropic(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
