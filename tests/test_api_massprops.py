@@ -91,8 +91,10 @@ def test_body_reference_defaults_and_their_labels():
     plain = rbcli.load_text("{shape: point, mass: 2, at: [0, 0, 1]}")
     assert rbcli.inertia(plain).reference_label == "the origin"
     assert rbcli.principal(plain).reference_label == "the com"  # principal: the com by default
-    opts = api.InertiaOptions.parse(at, about="1,0,0 mm", axis="z", omega="0,0,60 rpm")
-    assert opts.reference.point == pytest.approx((0.001, 0.0, 0.0)) and opts.reference.param == "about"
+    opts = api.parse(at, about="1,0,0 mm", axis="z", omega="0,0,60 rpm")
+    ref = api.Reference.of(at, opts)
+    assert ref.point == pytest.approx((0.001, 0.0, 0.0)) and ref.param == "about"
+    assert ref.label == "[1,0,0 mm]" and opts.given == ("about", "axis", "omega")
     assert opts.axis == (0.0, 0.0, 1.0) and opts.omega == pytest.approx((0.0, 0.0, 2 * np.pi))
 
 

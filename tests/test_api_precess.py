@@ -12,7 +12,7 @@ import pytest
 import rbcli
 from conftest import as_cli, sampled_params
 from rbcli.errors import option_name
-from rbcli.api.precess import PrecessOptions, PrecessResult
+from rbcli.api.precess import PrecessResult
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted(p.stem for p in (ROOT / "examples").glob("*.yaml"))
@@ -60,14 +60,15 @@ def test_typed_fields_and_sampling():
     body = rbcli.load(ROOT / "examples/book.yaml")
     res = rbcli.precess(body, omega=[0.01, 1, 0.01], at=1e9, duration=60.0, samples=7)
     assert isinstance(res, PrecessResult)
-    assert res.options == PrecessOptions(omega=(0.01, 1.0, 0.01), at=1e9, duration=60.0, samples=7,
-                                         given=("omega", "at", "duration", "samples"))
+    o = res.options
+    assert (o.omega, o.at, o.duration, o.samples, o.verify) == ((0.01, 1.0, 0.01), 1e9, 60.0, 7, False)
+    assert o.given == ("omega", "at", "duration", "samples")
     # what the table echoes: the values as understood, angular speeds also in rpm
-    from rbcli.render.precess import OPTIONS
-    from rbcli.render.units import echo_rows
+    from rbcli.render.echo import echo_rows
 
-    assert echo_rows(res.options, body, OPTIONS)[0] == (
-        "--omega", "0.01, 1, 0.01 (0.095493, 9.5493, 0.095493 rpm)", "rad/s")
+    assert echo_rows(res.options, body.units) == [
+        ("--omega", "0.01, 1, 0.01 (0.095493, 9.5493, 0.095493 rpm)", "rad/s"),
+        ("--at", "1e+09", "s"), ("--duration", "60", "s")]
     m = res.motion
     assert m.case == "circulates_max" and m.flip_interval == pytest.approx(19.5529, rel=1e-5)
     assert isinstance(m.period, float)

@@ -111,30 +111,33 @@ def test_top_errors_carry_the_cli_message(cli, args, kw, param):
 
 
 def test_missing_spin_or_theta_in_the_options_say_what_the_cli_says(cli):
-    from rbcli.api.top import TopOptions
+    from rbcli.api.top import parse
 
     body = rbcli.load("examples/top.yaml")
     for args, kw in ((["--theta", "30"], dict(theta=30)), (["--spin", "150"], dict(spin=150))):
         msg = cli_error(cli, "top", "examples/top.yaml", *args)
         with pytest.raises(InputError) as exc:
-            TopOptions.parse(body, **kw)
+            parse(body, **kw)
         assert exc.value.spelled(option_name) == msg
 
 
-def test_options_resolve_the_pivot_and_say_where_it_came_from():
-    from rbcli.api.top import TopOptions
+def test_options_read_the_values_and_the_result_says_where_the_pivot_came_from():
+    from rbcli.api.top import parse
 
     top = rbcli.load("examples/top.yaml")
-    o = TopOptions.parse(top, spin="3000 rpm", theta=30)
-    assert o.pivot_source == "the body's pivot" and not o.pivot_given
+    o = parse(top, spin="3000 rpm", theta=30)
+    assert o.pivot is None and o.given == ("spin", "theta")
     assert o.spin == pytest.approx(100 * math.pi, rel=1e-15)
     assert o.theta == pytest.approx(math.radians(30), rel=1e-15)
-    assert (o.theta_dot, o.phi_dot, o.g) == (0.0, 0.0, 9.80665) and o.released
-    o = TopOptions.parse(top, spin=150, theta=30, pivot="0,0,-20 mm")
-    assert o.pivot == pytest.approx((0.0, 0.0, -0.02)) and o.pivot_source == "pivot" and o.pivot_given
+    assert (o.theta_dot, o.phi_dot, o.g, o.samples) == (0.0, 0.0, 9.80665, 600)
+    assert rbcli.top(top, spin="3000 rpm", theta=30).pivot_source == "the body's pivot"
+    r = rbcli.top(top, spin=150, theta=30, pivot="0,0,-20 mm")
+    assert r.options.pivot == pytest.approx((0.0, 0.0, -0.02)) and r.pivot_source == "pivot"
+    assert r.params.pivot == pytest.approx((0.0, 0.0, -0.02))
     disk = rbcli.load_text("{shape: disk, radius: 0.1, mass: 1, at: [0, 0, 0.05]}")
-    o = TopOptions.parse(disk, spin=150, theta=30)
-    assert o.pivot == (0.0, 0.0, 0.0) and o.pivot_source == "the origin, as no pivot was given"
+    r = rbcli.top(disk, spin=150, theta=30)
+    assert r.params.pivot == pytest.approx((0.0, 0.0, 0.0))
+    assert r.pivot_source == "the origin, as no pivot was given"
 
 
 def test_the_result_samples_the_motion():
@@ -206,7 +209,7 @@ def test_gyrocompass_typed_fields():
     assert r.C == pytest.approx(0.005, rel=1e-14) and r.A == pytest.approx(0.0025, rel=1e-14)
     assert r.swing.C_over_A == pytest.approx(2.0, rel=1e-14)
     assert r.swing.period == pytest.approx(22.3040, abs=5e-5) and r.swing.settles_to == "north"
-    assert r.options.axis_source == "body z (default)" and r.options.axis == (0.0, 0.0, 1.0)
+    assert r.axis_source == "body z (default)" and r.axis == (0.0, 0.0, 1.0)
 
 
 GYRO_ERRORS = [

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from rbcli.api.massprops import snap
+from rbcli.api.inertia import snap
 from rbcli.core import inertia as ci
 from rbcli.model import Part
 

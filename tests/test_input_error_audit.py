@@ -30,10 +30,9 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 #: raises no InputError: it converts numbers, asks the OS, or calls code that raises plain
 #: ValueErrors only). One more handler in the function changes the count: review it.
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
+    ("api/commands.py", "_rows"): (1, "int() of the value"),
     ("api/load.py", "_units"): (1, "io.body.default_units: plain ValueErrors (it turns UnitError into one)"),
-    ("api/precess.py", "_count"): (1, "int() of the text"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),
-    ("api/top.py", "series"): (1, "int(samples)"),
     ("api/whirl.py", "_points"): (1, "int(points)"),
     ("api/whirl.py", "_orders"): (1, "int() of each order"),
     ("cli/report.py", "__init__"): (1, "sys.stderr.isatty()"),

@@ -9,9 +9,9 @@ command line builds ``--help`` from it.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 from rbcli.api.check import MAX_ITEMS
@@ -19,11 +19,12 @@ from rbcli.api.params import SYMMETRY_TOL, Param, as_text
 from rbcli.errors import literal
 from rbcli.io.field import CHOICES
 
-__all__ = ["BALANCE", "FIELD_BALANCE", "ROLLCHECK", "WHIRL"]
+__all__ = ["INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS", "TOP", "GYROCOMPASS",
+           "ROLLCHECK", "WHIRL"]
 
 # ----------------------------------------------------------------------------- shared
 
-#: the shaft's direction (balance, rollcheck; ``dataclasses.replace(SHAFT, help=...)`` to word it)
+#: the shaft's direction (balance, rollcheck; ``replace(SHAFT, help=...)`` to word it)
 SHAFT = Param("shaft", "Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's "
               "shaft, else z.", "direction")
 #: a point of the shaft's line
@@ -46,6 +47,20 @@ def _distinct(what: str):
     return valid
 
 # ----------------------------------------------------------------------------- inertia, principal
+
+_ABOUT = Param("about", "Point: com, origin or x,y,z (a bare number in the body's length unit, m by "
+               "default; a unit after the last number applies to all, e.g. '10,0,5 mm').", "point")
+
+#: :func:`rbcli.inertia` and ``rbcli inertia``
+INERTIA = (
+    _ABOUT,
+    Param("axis", "Moment about this direction x,y,z through the point.", "direction"),
+    Param("omega", "Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after "
+          "the last number applies to all, e.g. '0,0,300 rpm').", "vector", "angular_speed"),
+)
+
+#: :func:`rbcli.principal` and ``rbcli principal``: about the com unless told
+PRINCIPAL = (replace(_ABOUT, default="com"),)
 
 # ----------------------------------------------------------------------------- balance
 
@@ -81,7 +96,7 @@ BALANCE = (
     Param("bearings", f"Bearing positions z1,z2 along the shaft ({_BARE_LENGTH}; a unit after the "
           "last number applies to both, e.g. '-50,150 mm').", "values", "length", (2,),
           valid=_distinct("bearings")),
-    dataclasses.replace(G, help="Gravity for the static bearing loads (m/s^2, or with units). "
+    replace(G, help="Gravity for the static bearing loads (m/s^2, or with units). "
                         "Default: 9.80665 m/s^2."),
     Param("grade", "ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs {speed} "
           "and {bearings}.", "grade"),
@@ -183,16 +198,161 @@ FIELD_BALANCE = (
 
 # ----------------------------------------------------------------------------- precess
 
+def _finite(v: float, given: Any) -> str | None:
+    return None if math.isfinite(v) else "must be a finite number"
+
+
+#: the most rows of a time series (precess and top --csv): 10^6 rows is ~100 MB of CSV,
+#: about what a spreadsheet holds (1 048 576 rows)
+MAX_SAMPLES = 1_000_000
+
+
+def _rows(v: Any, given: Any) -> str | None:
+    try:
+        n = int(v)
+    except ValueError:
+        n = 0
+    if 2 <= n <= MAX_SAMPLES:
+        return None
+    return f"must be from 2 to {MAX_SAMPLES} rows (a whole number), got '{literal(as_text(given))}'"
+
+
+def _time_span(v: float, given: Any) -> str | None:
+    if not math.isfinite(v):
+        return "must be a finite number"
+    return None if v > 0.0 else f"must be a positive time, got '{literal(as_text(given))}'"
+
+
+#: rows of precess's time series when ``samples`` is not given
+PRECESS_SAMPLES = 1001
+
+#: :func:`rbcli.precess` and ``rbcli precess``
+PRECESS = (
+    Param("omega", "Initial angular velocity x,y,z in the body frame (a bare number is rad/s, or the "
+          "body's units' angular_speed; a unit after the last number applies to every bare number "
+          "before it, e.g. '0,0,300 rpm'). Required.", "vector", "angular_speed"),
+    Param("at", "Also give w, L and the orientation (quaternion, axis and angle) at this time (a bare "
+          "number is s; or with units, e.g. '7320 h'; negative = before t = 0).", "quantity", "time",
+          valid=_finite),
+    Param("duration", "Span of the {csv} time series, from t = 0 (a bare number is s; or with units); "
+          "also the span of {plot} (default: 3 periods of w).", "quantity", "time", valid=_time_span),
+    Param("samples", "Rows of the {csv} time series, evenly spaced from t = 0 to {duration} inclusive "
+          f"(2 to {MAX_SAMPLES}, about 100 MB of CSV). Default {PRECESS_SAMPLES}.", "count",
+          valid=_rows, echo="-", cli_type=str),
+    Param("csv", "Write the time series t, wx, wy, wz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body "
+          "to space) to this CSV file, or '-' for standard output instead of the tables. Needs "
+          "{duration}. An existing file is replaced (atomically); an input file never.", "path",
+          api=False),
+    Param("plot", "Save a figure (.png, .svg, .pdf): the body-frame components of w against time and "
+          "the polhode (the path of L/|L| on the unit sphere, principal frame) in two views. An "
+          "existing figure is replaced (atomically); an input file never.", "path", api=False),
+    Param("verify", "Check the exact motion against a numerical integration of Euler's equations and "
+          "the attitude (scipy DOP853, rtol 1e-12) over 3 periods; exit status 1 if they differ by "
+          "more than 1e-8.", "flag", echo="-", default=False),
+)
+
 # ----------------------------------------------------------------------------- top, gyrocompass
+
+#: rows of top's time series when ``samples`` is not given
+TOP_SAMPLES = 600
+
+
+def _positive(why: str) -> Any:
+    """The check of a positive finite number: ``<why>, got <the value as given>``."""
+    def check(v: float, given: Any) -> str | None:
+        if not math.isfinite(v):
+            return "must be a finite number"
+        return None if v > 0.0 else f"{why}, got {literal(as_text(given))}"
+    return check
+
+
+def _spin(what: str, eg: str, zero: str) -> Param:
+    """The spin of top and gyrocompass (its help and its refusal of 0 differ)."""
+    def valid(v: float, given: Any) -> str | None:
+        return _finite(v, given) or (f"must not be 0: {zero}" if v == 0.0 else None)
+
+    return Param("spin", f"Required. {what} (rad/s, or the body's units' angular_speed; or e.g. "
+                 f"'{eg}'); negative = the other way.", "quantity", "angular_speed", valid=valid)
+
+
+def _tilt(v: float, given: Any) -> str | None:
+    if not math.isfinite(v):
+        return "must be a finite number"
+    if 0.0 < v < math.pi:
+        return None
+    return (f"the start tilt must be strictly between 0 and 180 degrees, got {literal(as_text(given))} "
+            "(at 0 or 180 the axis is vertical and the precession angle is undefined; start it "
+            "slightly tilted, e.g. {theta} 0.1)")
+
+
+def _latitude(v: float, given: Any) -> str | None:
+    if not math.isfinite(v):
+        return "must be a finite number"
+    if abs(v) <= 0.5 * math.pi * (1.0 + 1e-12):
+        return None
+    return f"must be from -90 to 90 degrees, got {literal(as_text(given))}"
+
+
+_NO_SYMMETRY_ECHO = replace(SYMMETRY_TOL, echo="-")
+
+#: :func:`rbcli.top` and ``rbcli top``
+TOP = (
+    Param("pivot", "The fixed point: com, origin or x,y,z (a bare number in the body's length unit, m "
+          "by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the "
+          "body's pivot, else the origin.", "point"),
+    _spin("Spin S = w3 about the symmetry axis", "3000 rpm",
+          "a top without spin is a spherical pendulum (it cannot stand); give the spin w3, e.g. "
+          "{spin} 150 or {spin} '3000 rpm'"),
+    Param("theta", "Required. Start tilt of the axis from the upward vertical, strictly between 0 and "
+          "180 (degrees, or with units, e.g. '0.5 rad').", "quantity", "angle", valid=_tilt),
+    Param("theta_dot", "Start rate theta' (rad/s unless the body's units name an angular_speed; or "
+          "e.g. '10 deg/s'); positive = tilting further. Default: 0.", "quantity", "angular_speed",
+          valid=_finite),
+    Param("phi_dot", "Start precession rate phi' about the vertical (rad/s unless the body's units "
+          "name an angular_speed; or with units). Default: 0.", "quantity", "angular_speed",
+          valid=_finite),
+    Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", "acceleration",
+          valid=_positive("gravity must be positive (it points down, towards -z)")),
+    Param("verify", "Integrate the equations of motion numerically (no Euler angles, DOP853, rtol "
+          "1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ "
+          "by more than 1e-6 rad or the energy drifts by more than 1e-9.", "flag", echo="-",
+          default=False),
+    Param("plot", "Save a figure (.png, .svg, .pdf): the path of the axis tip, theta against phi and "
+          "seen from above, theta1 and theta2 marked, over {duration}. An existing figure is "
+          "replaced (atomically); an input file never.", "path", api=False),
+    Param("csv", "Write t, theta_deg, phi_deg, psi_deg (s, degrees) at {samples} times over "
+          "{duration} to this file ('-' = standard output, instead of the tables). An existing file "
+          "is replaced (atomically); an input file never.", "path", api=False),
+    Param("duration", "Time span of {csv} and {plot} (s, or with units). Default: 3 nutation "
+          "periods.", "quantity", "time", valid=_time_span, echo="-"),
+    Param("samples", f"Rows of {{csv}}, evenly spaced from t = 0 to {{duration}} inclusive (2 to "
+          f"{MAX_SAMPLES}).", "count", valid=_rows, echo="-", default=TOP_SAMPLES),
+    _NO_SYMMETRY_ECHO,
+)
+
+#: :func:`rbcli.gyrocompass` and ``rbcli gyrocompass``
+GYROCOMPASS = (
+    Param("ratio", "C/A, the axial moment over the moment about the vertical (a flat disk: 2), "
+          "instead of a body.", "quantity", "dimensionless", valid=_positive("C/A must be positive"),
+          echo="=C/A"),
+    Param("shaft", "The rotor's spin axis x,y,z (or x, y, z) in the body frame. Default: the body's "
+          "shaft axis, else z.", "direction"),
+    _spin("Rotor spin about its axis", "6000 rpm", "a gyrocompass needs a spinning rotor"),
+    Param("latitude", "Required. Latitude, -90 to 90 (degrees, or with units); negative = south.",
+          "quantity", "angle", valid=_latitude),
+    Param("earth_rate", "The Earth's (sidereal) rotation rate (rad/s, or with units). Default: "
+          "7.2921150e-5.", "quantity", "angular_speed", valid=_positive("must be positive")),
+    _NO_SYMMETRY_ECHO,
+)
 
 # ----------------------------------------------------------------------------- rollcheck
 
 #: :func:`rbcli.rollcheck` and ``rbcli rollcheck`` (its options ``--axle``, ``--radius`` and
 #: ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)
 ROLLCHECK = (
-    dataclasses.replace(SHAFT, help="Axle direction x,y,z (or x, y, z) in the body frame. Default: "
+    replace(SHAFT, help="Axle direction x,y,z (or x, y, z) in the body frame. Default: "
                         "the body's shaft axis, else z."),
-    dataclasses.replace(THROUGH, help="A point of the axle line: com, origin or x,y,z (a bare number "
+    replace(THROUGH, help="A point of the axle line: com, origin or x,y,z (a bare number "
                         "in the body's length unit, m by default; a unit after the last number "
                         "applies to all, e.g. '0,0,5 mm'). Default: the body's shaft point, else the "
                         "origin."),
@@ -205,12 +365,12 @@ ROLLCHECK = (
           "torus's tube radius, a sphere's radius, a flat band for a cylinder, else 0.", "quantity",
           "length", valid=lambda r, given: None if 0.0 <= r < math.inf else
           f"must be 0 (knife edge) or a positive length, got {_given(given)}"),
-    dataclasses.replace(G, help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665."),
+    replace(G, help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665."),
     Param("rolling_speed", "Speed of the centre (a bare number is m/s, whatever the body's units: a "
           "body file has no speeds; or with a unit, e.g. '20 km/h', '10 mph'); negative = "
-          "backwards.", "quantity", "speed", valid=lambda v, _: _finite(v)),
+          "backwards.", "quantity", "speed", valid=_finite),
     Param("spin", "Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 "
-          "rpm'); speed = a x spin.", "quantity", "angular_speed", valid=lambda v, _: _finite(v)),
+          "rpm'); speed = a x spin.", "quantity", "angular_speed", valid=_finite),
     Param("lean", "Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.",
           "quantity", "angle", valid=lambda b, given: None if 0.0 <= b < 0.5 * math.pi else
           "the inward lean from the vertical must be from 0 up to (not including) 90 degrees, got "
@@ -219,12 +379,8 @@ ROLLCHECK = (
           "body's length unit, m by default; or with units); 0 = spinning in place.", "quantity",
           "length", valid=lambda r, given: None if 0.0 <= r < math.inf else
           f"the circle radius must be 0 (spinning in place) or positive, got {_given(given)}"),
-    dataclasses.replace(SYMMETRY_TOL, echo="-"),
+    _NO_SYMMETRY_ECHO,
 )
-
-
-def _finite(x: float) -> str | None:
-    return None if math.isfinite(x) else "must be a finite number"
 
 # ----------------------------------------------------------------------------- report
 

@@ -10,119 +10,56 @@ The physics is :mod:`rbcli.core.gyrocompass`; values are read by :mod:`rbcli.api
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rbcli.api import check
-from rbcli.api import options as op
-from rbcli.api.check import Quantity, Vector
-from rbcli.api.options import symmetry_tolerance
+import numpy as np
+
+from rbcli.api.commands import GYROCOMPASS
+from rbcli.api.params import Options, function, read
+from rbcli.api.shaft import shaft_axis
 from rbcli.api.result import Result, jsonable
 from rbcli.api.top import plausibility
+from rbcli.core import gyrocompass as core
+from rbcli.core.gyrocompass import EARTH_RATE
+from rbcli.core.inertia import body_mass_props
+from rbcli.core.symmetry import AxialSymmetry
 from rbcli.errors import InputError, Location, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.core.gyrocompass import Gyrocompass
-    from rbcli.core.symmetry import AxialSymmetry
     from rbcli.model import Body
 
-__all__ = ["GyrocompassOptions", "GyrocompassResult", "run", "gyrocompass", "EARTH_RATE"]
+__all__ = ["GyrocompassResult", "parse", "run", "gyrocompass", "EARTH_RATE"]
 
-#: the checker of each keyword argument of :func:`gyrocompass` (:mod:`rbcli.api.check`)
-KINDS = {"ratio": check.quantity, "shaft": check.vector, "spin": check.quantity,
-         "latitude": check.quantity, "earth_rate": check.quantity, "symmetry_tol": check.quantity}
+#: what a missing required parameter is, for its message
+_REQUIRED = {"spin": "the rotor's spin about its axis, e.g. {spin} '6000 rpm'",
+             "latitude": "the latitude in degrees, -90 to 90 (negative = south), e.g. {latitude} 52"}
 
-#: the Earth's sidereal rotation rate, rad/s (the default of ``earth_rate``)
-EARTH_RATE = 7.2921150e-5
+#: where the spin axis came from, as the JSON's axis_source says it
+_SOURCES = {"given": "{shaft}", "body": "the body's shaft", "default": "body z (default)"}
 
 
-@dataclass(frozen=True)
-class GyrocompassOptions:
-    """The gyrocompass's inputs, parsed and checked (SI).
+def parse(body: Body | None = None, **kwargs: Any) -> Options:
+    """The keyword arguments of :func:`gyrocompass` read for ``body`` (None: with ``ratio``):
+    :class:`rbcli.api.params.Options` in SI (``latitude`` rad), ``earth_rate`` the sidereal
+    rate when not given.
 
-    Attributes
-    ----------
-    ratio : float | None — C/A given directly (no body)
-    axis : tuple[float, float, float] | None — the spin axis in the body frame (with a body)
-    axis_source : Note | None — ``{shaft}`` (the parameter, spelled by the caller), ``"the body's shaft"`` or ``"body z (default)"``
-    spin : float — rad/s, ≠ 0
-    latitude : float — rad, in [-π/2, π/2]
-    earth_rate : float — rad/s, > 0
-    symmetry_tol : float — how far from symmetric about its spin axis the body may be
-    axis_as_given : tuple[float, float, float] | None — ``axis`` as given (largest component ±1)
-    given : tuple of str — the parameters the caller gave
-    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
-        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
-    warnings : tuple of str — a rim speed far outside the body's scale
+    Raises
+    ------
+    rbcli.InputError
+        one line naming the parameter; both or neither of ``body`` and ``ratio``.
     """
-
-    ratio: float | None
-    axis: tuple[float, float, float] | None
-    axis_source: str | None
-    spin: float
-    latitude: float
-    earth_rate: float
-    symmetry_tol: float = 0.01
-    axis_as_given: tuple[float, float, float] | None = None
-    given: tuple[str, ...] = ()
-    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
-    typed: tuple[tuple[str, str], ...] = ()
-    warnings: tuple[str, ...] = ()
-
-    @classmethod
-    def parse(cls, body: Body | None = None, *, ratio: Quantity | None = None,
-              shaft: Vector | None = None, spin: Quantity | None = None,
-              latitude: Quantity | None = None, earth_rate: Quantity | None = None,
-              symmetry_tol: Quantity | None = None) -> GyrocompassOptions:
-        """Read and check the values (see :func:`gyrocompass`)."""
-        if spin is None:
-            raise InputError("{spin}: required: the rotor's spin about its axis, e.g. {spin} '6000 rpm'",
-                             param="spin")
-        if latitude is None:
-            raise InputError("{latitude}: required: the latitude in degrees, -90 to 90 (negative = south), "
-                             "e.g. {latitude} 52", param="latitude")
-        u = op.Units.of(body)
-        S = op.finite(u.quantity(spin, "angular_speed", "spin"), "spin")
-        if S == 0.0:
-            raise ParamError("spin", "must not be 0: a gyrocompass needs a spinning rotor")
-        lat = op.finite(op.quantity(latitude, "angle", "latitude", bare="deg"), "latitude")
-        if abs(lat) > 0.5 * math.pi * (1.0 + 1e-12):
-            raise ParamError("latitude", f"must be from -90 to 90 degrees, got {latitude}")
-        W = EARTH_RATE if earth_rate is None else op.finite(
-            u.quantity(earth_rate, "angular_speed", "earth_rate"), "earth_rate")
-        if not W > 0.0:
-            raise ParamError("earth_rate", f"must be positive, got {earth_rate}")
-        n_axis = op.direction(shaft, "shaft") if shaft is not None else None
-        tol = symmetry_tolerance(symmetry_tol)
-        given = tuple(p for p, v in (("ratio", ratio), ("shaft", shaft), ("spin", spin),
-                                     ("latitude", latitude), ("earth_rate", earth_rate),
-                                     ("symmetry_tol", symmetry_tol)) if v is not None)
-        r = None
-        if ratio is not None:
-            r = op.finite(op.quantity(ratio, "dimensionless", "ratio"), "ratio")
-            if not r > 0.0:
-                raise ParamError("ratio", f"C/A must be positive, got {ratio}")
-            if body is not None:
-                raise ParamError("ratio", "give either {ratio} or a body (BODY or -e), not both")
-            if n_axis is not None:
-                raise ParamError("shaft", "the spin axis belongs to a body; with {ratio} there is no body")
-            return cls(ratio=r, axis=None, axis_source=None, spin=S, latitude=lat, earth_rate=W,
-                       symmetry_tol=tol, given=given, typed=tuple(u.typed.items()))
-        if body is None:
-            raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
-        from rbcli.api.shaft import shaft_axis
-
-        n, came = shaft_axis(body, n_axis)
-        src = {"given": "{shaft}", "body": "the body's shaft", "default": "body z (default)"}[came]
-        import numpy as np
-
-        v = np.asarray(n, dtype=float)
-        unit = tuple(float(x) for x in v / np.linalg.norm(v))
-        return cls(ratio=None, axis=unit, axis_source=Note(src), spin=S, latitude=lat,  # type: ignore[arg-type]
-                   earth_rate=W, symmetry_tol=tol, axis_as_given=None if n_axis is None else tuple(n_axis),
-                   given=given, typed=tuple(u.typed.items()),
-                   warnings=plausibility(body, u, None, S, "spin", axis=unit))
+    for name, what in _REQUIRED.items():
+        if kwargs.get(name) is None:
+            raise ParamError(name, f"required: {what}")
+    o = read(body, GYROCOMPASS, kwargs)
+    if o.ratio is not None and body is not None:
+        raise ParamError("ratio", "give either {ratio} or a body (BODY or -e), not both")
+    if o.ratio is not None and o.shaft is not None:
+        raise ParamError("shaft", "the spin axis belongs to a body; with {ratio} there is no body")
+    if o.ratio is None and body is None:
+        raise InputError("no rotor given: name a BODY file, use -e '{...}', or give {ratio} C/A")
+    return o.replace(earth_rate=EARTH_RATE if o.earth_rate is None else o.earth_rate)
 
 
 @dataclass(frozen=True)
@@ -134,19 +71,25 @@ class GyrocompassResult(Result):
     swing : Gyrocompass — C/A, spin (rad/s), latitude (rad), Earth rate (rad/s), directive
         (1/s²), omega0 and its estimate (rad/s), period (s) and where it settles (None
         with no directive torque)
+    options : rbcli.api.params.Options — the inputs as understood (SI, :func:`parse`)
     body : Body | None — the rotor's body (None with ``ratio``)
+    axis : tuple of 3 float | None — with a body: the unit spin axis, body frame
+    axis_source : Note | None — where it came from: ``{shaft}`` (the parameter, spelled by
+        the caller), ``"the body's shaft"`` or ``"body z (default)"``
     C, A : float | None — kg m², with a body: the moments about and across the spin axis,
         about the com
     mass : float | None — kg, with a body
-    options : GyrocompassOptions — the inputs as understood (SI)
     asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric about its
         spin axis: how far it departs (A is then the mean of its two moments across)
-    warnings : tuple[str, ...] — located one-line warnings: a nearly symmetric rotor
+    warnings : tuple[str, ...] — located one-line warnings: a rim faster than sound, a nearly
+        symmetric rotor
     """
 
-    swing: Gyrocompass
-    options: GyrocompassOptions
+    swing: core.Gyrocompass
+    options: Options
     body: Body | None = field(default=None, repr=False)
+    axis: tuple[float, float, float] | None = None
+    axis_source: str | None = None
     C: float | None = None
     A: float | None = None
     mass: float | None = None
@@ -175,57 +118,55 @@ class GyrocompassResult(Result):
             out["Is"] = self.C
             out["I"] = self.A
             out["mass"] = self.mass
-            out["axis"] = list(self.options.axis or ())
-            out["axis_source"] = self.options.axis_source
+            out["axis"] = list(self.axis or ())
+            out["axis_source"] = self.axis_source
             if self.asymmetry is not None:
                 out["asymmetry"] = self.asymmetry.to_json(self.options.symmetry_tol)
             out["name"] = self.body.name
         return jsonable(out)
 
 
-def run(body: Body | None, options: GyrocompassOptions) -> GyrocompassResult:
-    """The gyrocompass for parsed options."""
-    from rbcli.core import gyrocompass as core
-
+def run(body: Body | None, options: Options) -> GyrocompassResult:
+    """The gyrocompass for ``options`` (:func:`parse`): of the rotor ``body``, or of
+    ``options.ratio`` (``body`` None)."""
     o = options
-    C = A = mass = rotor = None
-    if o.ratio is not None:
-        r = o.ratio
-    else:
-        assert body is not None and o.axis is not None
-        from rbcli.core.inertia import body_mass_props
-
-        mp = body_mass_props(body)
-        try:
-            rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, o.axis, sym_rtol=o.symmetry_tol)
-        except InputError:  # already names its parameter (an InputError is a ValueError)
-            raise
-        except ValueError as exc:
-            # core's message names its parameters as {param} templates (no user text in it)
-            raise InputError(f"{exc}; spin axis from {o.axis_source.template}",
-                             Location(body.source)) from None
-        C, A, mass = rotor.C, rotor.A, rotor.mass
-        r = C / A
+    if body is None:
+        swing = _swing(o.ratio, o, "{ratio}")
+        return GyrocompassResult(swing=swing, options=o)
+    n, came = shaft_axis(body, o.shaft)
+    axis = tuple(float(x) for x in np.asarray(n) / np.linalg.norm(n))
+    source = Note(_SOURCES[came])
+    warnings = plausibility(body, None, o.spin, "spin", axis=axis)
+    mp = body_mass_props(body)
     try:
-        swing = core.gyrocompass(r, o.spin, o.latitude, o.earth_rate)
+        rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, axis, sym_rtol=o.symmetry_tol)
     except InputError:  # already names its parameter (an InputError is a ValueError)
         raise
-    except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
-        who = ["{ratio}" if body is None else literal(body.source), "{spin}", "{earth_rate}"]
-        raise InputError(f"{', '.join(who)}: {exc}", param="spin") from None
-    warnings = o.warnings
-    if body is not None and rotor.asymmetry is not None:
+    except ValueError as exc:
+        # core's message names its parameters as {param} templates (no user text in it)
+        raise InputError(f"{exc}; spin axis from {source.template}", Location(body.source)) from None
+    swing = _swing(rotor.C / rotor.A, o, literal(body.source))
+    if rotor.asymmetry is not None:
         warnings += (Note(f"{literal(body.source)}: warning: the rotor is not exactly symmetric about "
                           f"its spin axis: {rotor.asymmetry.percent()}; the answer is for the "
                           f"symmetrised rotor ({{symmetry_tol}} {o.symmetry_tol * 100:g} %)"),)
-    return GyrocompassResult(swing=swing, options=o, body=body, C=C, A=A, mass=mass,
-                             asymmetry=None if body is None else rotor.asymmetry, warnings=warnings)
+    return GyrocompassResult(swing=swing, options=o, body=body, axis=axis, axis_source=source,
+                             C=rotor.C, A=rotor.A, mass=rotor.mass, asymmetry=rotor.asymmetry,
+                             warnings=warnings)
 
 
-def gyrocompass(body: Body | None = None, *, ratio: Quantity | None = None,
-                shaft: Vector | None = None, spin: Quantity, latitude: Quantity,
-                earth_rate: Quantity | None = None,
-                symmetry_tol: Quantity | None = None) -> GyrocompassResult:
+def _swing(ratio: float, o: Options, who: str) -> core.Gyrocompass:
+    """The swing for C/A ``ratio``; what overflows names ``who`` (the ratio or the body)."""
+    try:
+        return core.gyrocompass(ratio, o.spin, o.latitude, o.earth_rate)
+    except InputError:  # already names its parameter (an InputError is a ValueError)
+        raise
+    except (ValueError, ArithmeticError) as exc:  # the values were checked: what is left overflows
+        raise InputError(f"{who}, {{spin}}, {{earth_rate}}: {exc}", param="spin") from None
+
+
+@function(GYROCOMPASS, body="optional")
+def gyrocompass(body: Body | None = None, **kwargs: Any) -> GyrocompassResult:
     """A gyrocompass: the period of its swing about north and where it settles.
 
     A rotor spinning at ``spin`` about its axis, the axis held horizontal and free to turn
@@ -237,21 +178,7 @@ def gyrocompass(body: Body | None = None, *, ratio: Quantity | None = None,
     body : Body, optional
         A rotor symmetric about its spin axis (C and A about its centre of mass); or give
         ``ratio`` instead.
-    ratio : float or str, optional
-        C/A, the axial moment over the moment about the vertical (a flat disk: 2).
-    shaft : str or sequence of 3, optional
-        The rotor's spin axis in the body frame (``"x"``, ``[0, 0, 1]``; the command line's
-        ``--axis``). Default: the body's shaft axis, else z.
-    spin : float or str
-        The rotor's spin: rad/s or ``"6000 rpm"``; negative the other way. Not 0.
-    latitude : float or str
-        Degrees (a number) or with a unit, -90 to 90; negative is south.
-    earth_rate : float or str, optional
-        Ω_E, rad/s or with a unit. Default 7.2921150e-5 (sidereal).
-    symmetry_tol : float or str, optional
-        How far from symmetric about its spin axis the body may be: a fraction or a
-        percentage (``"1 %"``), at most 10 %. Default 1 %. Within it, A is the mean of the
-        two moments across, with a warning and ``asymmetry`` in the JSON.
+    {parameters}
 
     Returns
     -------
@@ -273,8 +200,4 @@ def gyrocompass(body: Body | None = None, *, ratio: Quantity | None = None,
     >>> round(rbcli.gyrocompass(ratio=2, spin="6000 rpm", latitude=30).swing.period, 3)
     22.304
     """
-    body = check.body(body, optional=True)
-    kw = check.arguments(KINDS, ratio=ratio, shaft=shaft, spin=spin, latitude=latitude,
-                         earth_rate=earth_rate, symmetry_tol=symmetry_tol)
-    with check.arithmetic(kw):
-        return run(body, GyrocompassOptions.parse(body, **kw))
+    return run(body, parse(body, **kwargs))

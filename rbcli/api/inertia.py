@@ -1,4 +1,6 @@
-"""Mass, centre of mass and the inertia tensor about a point: :func:`inertia` (``rbcli inertia``).
+"""Mass, centre of mass and the inertia tensor about a point: :func:`inertia` (``rbcli inertia``),
+and what :mod:`rbcli.api.principal` shares with it: the point an inertia is taken about
+(:class:`Reference`), the warnings of a point far outside the body, the parts' rows of the JSON.
 
 ::
 
@@ -9,77 +11,146 @@
 
 Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
 off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
-
-numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from rbcli.api import check
-from rbcli.api import options as o
-from rbcli.api.check import Point, Vector
-from rbcli.api.massprops import Reference, part_rows, plausibility, snap, with_parts
-from rbcli.api.result import Result
-from rbcli.errors import ParamError
+from rbcli.api import options as op
+from rbcli.api.commands import INERTIA
+from rbcli.api.params import Options, function, read
+from rbcli.api.result import Result, jsonable
+from rbcli.core import inertia as ci
+from rbcli.core.inertial import Inertial, inertial
+from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
+from rbcli.errors import Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.core.inertial import Inertial
     from rbcli.model import Body
 
-__all__ = ["InertiaOptions", "InertiaResult", "run", "inertia"]
-
-#: the checker of each keyword argument of :func:`inertia` (:mod:`rbcli.api.check`)
-KINDS = {"about": check.vector, "axis": check.vector, "omega": check.vector}
+__all__ = ["InertiaResult", "Reference", "parse", "run", "inertia", "part_rows", "with_parts",
+           "plausibility", "rim_note", "snap"]
 
 
 @dataclass(frozen=True)
-class InertiaOptions:
-    """What :func:`inertia` was asked, parsed and checked once.
+class Reference:
+    """The point an inertia is taken about, as the user gave it (resolved once).
 
     Attributes
     ----------
-    reference : Reference — the point the tensor is about
-    axis : tuple of 3 floats, or None — a direction (largest component ±1), body frame
-    omega : tuple of 3 floats, or None — rad/s, body frame
-    given : tuple of str — the parameters the caller gave
-    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
-        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
-    warnings : tuple of str — a point or a rim speed far outside the body's scale
+    point : tuple of 3 floats, or None — m, body frame; None means the body's centre of mass
+        (known only once the parts are combined)
+    label : str — how tables name it: ``"the com"``, ``"the origin"``, ``"the body's
+        reference point"`` or ``"[x,y,z]"`` (the text as given)
+    param : str — the parameter at fault if the point is impossible to compute with:
+        ``"about"`` (given) or ``"body_reference"`` (the body's default)
     """
 
-    reference: Reference
-    axis: tuple[float, float, float] | None = None
-    omega: tuple[float, float, float] | None = None
-    given: tuple[str, ...] = ()
-    warnings: tuple[str, ...] = ()
-    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
-    typed: tuple[tuple[str, str], ...] = ()
-
-    @property
-    def about(self) -> str | tuple[float, float, float] | None:
-        """The point as given: ``"com"``, ``"origin"`` or x, y, z (m); None when not given."""
-        return self.reference.as_given
+    point: tuple[float, float, float] | None
+    label: str
+    param: str
 
     @classmethod
-    def parse(cls, body: Body | None, *, about: Point | None = None, axis: Vector | None = None,
-              omega: Vector | None = None) -> InertiaOptions:
-        """Read the keyword arguments of :func:`inertia` (SI numbers, sequences, or strings
-        as typed on the command line).
+    def of(cls, body: Body | None, o: Options, *, default: str = "body") -> Reference:
+        """``o.about`` (read: ``"com"``, ``"origin"`` or x, y, z m), else the default:
+        ``"body"`` = the body's ``reference`` (``com``, a point), else the origin; ``"com"``
+        = the com. ``body`` None (values checked before a body is read): the origin."""
+        about, given = o.about, o.as_given("about")
+        if about == "com":
+            return cls(None, "the com", "about")
+        if about == "origin":
+            return cls((0.0, 0.0, 0.0), "the origin", "about")
+        if about is not None:
+            text = given if isinstance(given, str) else ", ".join(str(x) for x in given)
+            if isinstance(given, str) and op.is_bare(given) and body is not None:
+                text = f"{given} {op.Units.of(body).label('length')}"  # a bare point: say its unit
+            return cls(tuple(about), f"[{text}]", "about")
+        if default == "com" or (body is not None and body.reference_is_com):
+            return cls(None, "the com", "body_reference")
+        if body is not None and body.reference is not None:
+            return cls(tuple(float(x) for x in body.reference), "the body's reference point",
+                       "body_reference")
+        return cls((0.0, 0.0, 0.0), "the origin", "body_reference")
 
-        Raises
-        ------
-        rbcli.InputError
-            with the command line's message (``--axis: ...``).
-        """
-        u = o.Units.of(body)
-        ref = Reference.parse(body, about)
-        n = tuple(o.direction(axis, "axis")) if axis is not None else None
-        w = tuple(u.vector(omega, "angular_speed", "omega")) if omega is not None else None
-        given = tuple(p for p, v in (("about", about), ("axis", axis), ("omega", omega)) if v is not None)
-        return cls(ref, n, w, given, plausibility(body, u, ref, w), tuple(u.typed.items()))  # type: ignore[arg-type]
+    def resolve(self, mp: ci.MassProps) -> np.ndarray:
+        """The point as a (3,) ndarray, m, given the body's mass properties ``mp``."""
+        return mp.com.copy() if self.point is None else np.array(self.point, dtype=float)
+
+    def inertia(self, mp: ci.MassProps) -> tuple[np.ndarray, np.ndarray]:
+        """(point, inertia tensor about it): core's overflow blamed on the right parameter."""
+        point = self.resolve(mp)
+        try:
+            return point, ci.checked_inertia_about(mp, point)
+        except ci.InputOverflow as exc:
+            raise ParamError(self.param, str(exc)) from None
+
+
+def snap(values: Any, scale: float | None = None, rtol: float = 1e-14) -> np.ndarray:
+    """``values`` as a float ndarray (a copy) with entries below ``rtol`` times the largest
+    magnitude (or ``scale``) set to exactly 0 (round-off, e.g. a product of inertia of 1e-18
+    next to moments of 1): what JSON and tables show. No negative zeros."""
+    a = np.array(values, dtype=float)
+    mag = np.abs(a)
+    a[mag <= rtol * (float(mag.max()) if scale is None else scale)] = 0.0
+    a[a == 0.0] = 0.0
+    return a
+
+
+def part_rows(body: Any) -> tuple[dict, ...]:
+    """Each part's contribution, as in JSON: name, shape, mass (kg; negative for a subtracted
+    part), com (m), ``subtract: true`` for a hole, and for a mesh part its volume (m³), area
+    (m²) and triangles."""
+    rows = []
+    for p in body.parts:
+        row: dict = {"name": p.name, "shape": p.shape, "mass": -p.mass if p.subtract else p.mass,
+                     "com": p.com}
+        if p.subtract:
+            row["subtract"] = True
+        row.update((k, p.extra[k]) for k in ("volume", "area", "triangles") if k in p.extra)
+        rows.append(row)
+    return tuple(rows)
+
+
+def with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
+    """``out`` and the parts' rows as JSON (checked finite by :func:`jsonable`)."""
+    return jsonable({**out, "parts": list(parts)})
+
+
+def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any) -> Note | None:
+    """The warning of ``body`` turning at ``speed`` (rad/s, given as ``param``) about ``axis``
+    through ``through`` when its rim would be faster than sound (issue 24: a unit missing?)."""
+    w = abs(speed)
+    v = w * axis_reach(body.parts, axis, through) if 0.0 < w < math.inf else 0.0
+    if not SPEED_OF_SOUND < v < math.inf:
+        return None
+    return Note(f"{{{param}}}: the body's rim would move at {v:.4g} m/s, faster than sound "
+                f"({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
+                f"{op.Units.of(body).label('angular_speed')}: is a unit missing?")
+
+
+def plausibility(body: Body | None, ref: Reference, omega: Any = None) -> tuple[str, ...]:
+    """One-line warnings for values far outside the body's scale (issue 13): a reference
+    point more than 10 body sizes away, a rotation about it whose rim is faster than sound."""
+    far_point = ref.param == "about" and ref.point is not None
+    if body is None or not far_point and omega is None:
+        return ()
+    out = []
+    if far_point:
+        sc = body_scale(body.parts)
+        d = sc.far(ref.point)
+        if d is not None:
+            out.append(op.Units.of(body).far("about", "the point", d, sc.size))
+    if omega is not None:
+        # the body turning about omega through the reference point: its farthest material
+        through = ci.body_mass_props(body).com if ref.point is None else ref.point
+        out.append(rim_note(body, "omega", math.sqrt(sum(x * x for x in omega)), omega, through))
+    return tuple(x for x in out if x is not None)
 
 
 @dataclass(frozen=True)
@@ -102,7 +173,7 @@ class InertiaResult(Result):
     kinetic_energy : float or None — J, ``ω·J·ω/2``
     angle_L_omega_deg : float or None — degrees between L and ω
     parts : tuple of dict — each part's contribution (see :func:`part_rows`)
-    warnings : tuple of str — none for this command
+    warnings : tuple of str — a point or a rim speed far outside the body's scale
 
     Methods: ``to_json()`` (the command's JSON less ``"file"``) and ``inertial(principal)``
     (the numbers of a URDF/SDF/MJCF ``<inertial>`` element).
@@ -126,21 +197,13 @@ class InertiaResult(Result):
 
     def to_json(self) -> dict[str, Any]:
         """What ``rbcli inertia BODY --json`` prints, less ``"file"`` (SI)."""
-        out: dict[str, Any] = {
-            "mass": self.mass,
-            "com": self.com,
-            "reference": self.reference,
-            "inertia": snap(self.inertia),
-            "inertia_com": snap(self.inertia_com),
-        }
+        out: dict[str, Any] = {"mass": self.mass, "com": self.com, "reference": self.reference,
+                               "inertia": snap(self.inertia), "inertia_com": snap(self.inertia_com)}
         if self.axis is not None:
-            out["axis"] = self.axis
-            out["axis_moment"] = self.axis_moment
+            out.update(axis=self.axis, axis_moment=self.axis_moment)
         if self.omega is not None:
-            out["omega"] = self.omega
-            out["angular_momentum"] = self.angular_momentum
-            out["kinetic_energy"] = self.kinetic_energy
-            out["angle_L_omega_deg"] = self.angle_L_omega_deg
+            out.update(omega=self.omega, angular_momentum=self.angular_momentum,
+                       kinetic_energy=self.kinetic_energy, angle_L_omega_deg=self.angle_L_omega_deg)
         out["name"] = self.name
         return with_parts(out, self.parts)
 
@@ -163,61 +226,51 @@ class InertiaResult(Result):
             ``rbcli.render.robot.render("urdf", name, source, inertial)`` writes the XML
             that ``rbcli inertia --format urdf`` prints.
         """
-        from rbcli.core.inertial import inertial
-
         principal = check.flag(principal, "principal")
         J = self.inertia_com if principal else snap(self.inertia_com)
         return inertial(self.mass, self.com, J, principal=principal)
 
 
-def run(body: Body, options: InertiaOptions) -> InertiaResult:
-    """:func:`inertia` with options already parsed."""
-    import numpy as np
+def parse(body: Body | None, **kwargs: Any) -> Options:
+    """The keyword arguments of :func:`inertia` read for ``body`` (None: SI, before a body
+    is read): :class:`rbcli.api.params.Options`."""
+    return read(body, INERTIA, kwargs)
 
-    from rbcli.core import inertia as ci
 
+def run(body: Body, options: Options) -> InertiaResult:
+    """:func:`inertia` with options already read (:func:`parse`)."""
+    o = options
+    ref = Reference.of(body, o)
     mp = ci.body_mass_props(body)
-    point = options.reference.resolve(mp)
     try:
-        res = ci.inertia_report(
-            mp, point,
-            axis=np.array(options.axis) if options.axis is not None else None,
-            omega=np.array(options.omega) if options.omega is not None else None)
+        res = ci.inertia_report(mp, ref.resolve(mp), axis=None if o.axis is None else np.array(o.axis),
+                                omega=None if o.omega is None else np.array(o.omega))
     except ci.InputOverflow as exc:
-        raise ParamError(options.reference.param if exc.param == "reference" else exc.param,
-                         str(exc)) from None
-    rows = part_rows(body)
+        raise ParamError(ref.param if exc.param == "reference" else exc.param, str(exc)) from None
     for a in (res.com, res.reference, res.inertia, res.inertia_com, res.axis, res.omega,
               res.angular_momentum):  # made for this result alone: read-only, not copied again
         if a is not None:
             a.setflags(write=False)
     return InertiaResult(
         name=body.name, mass=res.mass, com=res.com, reference=res.reference,
-        reference_label=options.reference.label, inertia=res.inertia, inertia_com=res.inertia_com,
+        reference_label=ref.label, inertia=res.inertia, inertia_com=res.inertia_com,
         axis=res.axis, axis_moment=res.axis_moment, omega=res.omega,
         angular_momentum=res.angular_momentum, kinetic_energy=res.kinetic_energy,
-        angle_L_omega_deg=res.angle_L_omega_deg, parts=rows, warnings=options.warnings)
+        angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body),
+        warnings=plausibility(body, ref, o.omega))
 
 
-def inertia(body: Body, *, about: Point | None = None, axis: Vector | None = None,
-            omega: Vector | None = None) -> InertiaResult:
-    """Mass, centre of mass and the inertia tensor about a point; optionally the moment about
+@function(INERTIA)
+def inertia(body: Body, **kwargs: Any) -> InertiaResult:
+    """Mass, centre of mass and the inertia tensor about a point (``about``; default: the
+    body's ``reference``, ``com`` or a point, else the origin); optionally the moment about
     an axis through it and the angular momentum and kinetic energy of a rotation.
 
     Parameters
     ----------
     body : rbcli.Body
         From :func:`rbcli.load` or :func:`rbcli.load_text`.
-    about : str or sequence of 3, optional
-        The point: ``"com"``, ``"origin"``, or x, y, z in m (``[0.5, 0.5, 0]``, or a string
-        with a unit: ``"10,0,5 mm"``). Default: the body's ``reference`` (``com`` or a
-        point), else the origin.
-    axis : str or sequence of 3, optional
-        A direction x, y, z (any length) or ``"x"``, ``"y"``, ``"z"``: gives
-        ``axis_moment = n·J·n`` about the axis through the point.
-    omega : str or sequence of 3, optional
-        Angular velocity, rad/s (or ``"0,0,300 rpm"``): gives ``L = J ω``,
-        ``T = ω·J·ω/2`` and the angle between L and ω (rotation about the point).
+    {parameters}
 
     Returns
     -------
@@ -236,7 +289,8 @@ def inertia(body: Body, *, about: Point | None = None, axis: Vector | None = Non
     Notes
     -----
     Parallel axes (Huygens–Steiner): ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G``;
-    ``L`` and ``T`` about a fixed point P: Goldstein, *Classical Mechanics*, §5.3–5.4.
+    ``L = J ω``, ``T = ω·J·ω/2`` and the angle between them, the rotation about P:
+    Goldstein, *Classical Mechanics*, §5.3–5.4.
 
     Examples
     --------
@@ -248,7 +302,4 @@ def inertia(body: Body, *, about: Point | None = None, axis: Vector | None = Non
     >>> r.mass, r.com.tolist()
     (1.0, [0.5, 0.5, 0.0])
     """
-    body = check.body(body)
-    kw = check.arguments(KINDS, about=about, axis=axis, omega=omega)
-    with check.arithmetic(kw):
-        return run(body, InertiaOptions.parse(body, **kw))
+    return run(body, parse(body, **kwargs))

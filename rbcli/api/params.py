@@ -27,7 +27,7 @@ from typing import Any
 
 from rbcli.api import check
 from rbcli.api import options as op
-from rbcli.errors import ParamError, spell
+from rbcli.errors import ParamError, option_name, param_name, spell
 
 __all__ = ["Param", "Options", "read", "checkers", "function", "document", "si_unit"]
 
@@ -81,7 +81,10 @@ class Param:
         marked "(default)" (the service puts the value it used in the options)
     default : the command line's default (None: not given)
     flag, short, metavar : the command line's spelling, when not the derived one
-    cli, api : whether the command line / the Python API takes it
+    cli_type : the command line's type, when not the kind's (``int`` for a count, ``bool``
+        for a flag, else ``str``): ``str`` lets the service say what is wrong with a count
+    cli, api : whether the command line / the Python API takes it (a command-line-only
+        entry keeps ``--help``'s order where it sits among the parameters)
     """
 
     name: str
@@ -98,6 +101,7 @@ class Param:
     flag: str | None = None
     short: str | None = None
     metavar: str | None = None
+    cli_type: type | None = None
     cli: bool = True
     api: bool = True
     most: int = field(default=0, repr=False)
@@ -163,14 +167,17 @@ class Options:
     """The parameters of one call, read once: each value in SI (None: not given).
 
     ``o.speed`` is the value of parameter ``speed``; :attr:`given` names the parameters the
-    caller gave and :attr:`typed` the unit typed after a number (``"0.5 g"``: ``("mass_step",
-    "g")``), which the options table echoes. :attr:`params` is the command's table.
+    caller gave (a value equal to the command line's default is not given: the command line
+    cannot tell), :attr:`typed` the unit typed after a number (``"0.5 g"``: ``("mass_step",
+    "g")``), which the options table echoes, and :attr:`raw` each value as the caller gave it
+    (for labels that quote it). :attr:`params` is the command's table.
     """
 
     params: tuple[Param, ...]
     values: tuple[tuple[str, Any], ...]
     given: tuple[str, ...] = ()
     typed: tuple[tuple[str, str], ...] = ()
+    raw: tuple[tuple[str, Any], ...] = ()
 
     def __getattr__(self, name: str) -> Any:
         for key, value in self.__dict__.get("values", ()):
@@ -190,7 +197,11 @@ class Options:
         if unknown:
             raise AttributeError(f"no parameter {sorted(unknown)[0]!r}")
         return Options(self.params, tuple((k, values.get(k, v)) for k, v in self.values),
-                       self.given, self.typed)
+                       self.given, self.typed, self.raw)
+
+    def as_given(self, name: str) -> Any:
+        """The value of ``name`` as the caller gave it (None: not given)."""
+        return dict(self.raw).get(name)
 
 
 def checkers(params: tuple[Param, ...]) -> dict[str, Callable[[Any, str], Any]]:
@@ -244,27 +255,33 @@ def read(body: Any, params: tuple[Param, ...], given: Mapping[str, Any]) -> Opti
         one line naming the parameter (``bearings: ...``).
     """
     u = op.Units.of(body)
-    values = []
+    values, named = [], []
     for p in params:
-        value = given.get(p.name)
+        raw = value = given.get(p.name)
         if value is not None or p.kind == "tolerance":  # (None: the default tolerance)
-            raw = value
             with op.naming(p.name):
                 value = _read_one(u, p, value)
             why = p.valid(value, raw) if p.valid is not None and raw is not None else None
             if why is not None:
                 raise ParamError(p.name, why)
+        if raw is not None and not (p.default is not None and value == p.default):
+            named.append(p.name)
         values.append((p.name, value))
-    return Options(params, tuple(values), tuple(p.name for p in params if given.get(p.name) is not None),
-                   tuple(u.typed.items()))
+    return Options(params, tuple(values), tuple(named), tuple(u.typed.items()),
+                   tuple((k, v) for k, v in given.items() if v is not None))
 
 
 def document(params: tuple[Param, ...]) -> str:
-    """The numpydoc entries of ``params`` (4-space indented, as in a function's docstring)."""
+    """The numpydoc entries of ``params`` (4-space indented, as in a function's docstring);
+    an entry of the command line only is named as its option (``--csv``)."""
+    cli_only = {p.name for p in params if not p.api}
     out = []
     for p in params:
         if p.api:
-            text = textwrap.fill(spell(p.help), 92, initial_indent=" " * 8, subsequent_indent=" " * 8)
+            text = spell(p.help, lambda n: option_name(n) if n in cli_only else param_name(n))
+            if p.default not in (None, False) and "Default" not in text:
+                text += f" Default: {p.default}."
+            text = textwrap.fill(text, 92, initial_indent=" " * 8, subsequent_indent=" " * 8)
             out.append(f"    {p.name} : {KINDS[p.kind]}, optional\n{text}")
     return "\n".join(out)
 

@@ -16,34 +16,32 @@ elliptic integral of the third kind): :attr:`PrecessResult.motion` is a
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from rbcli.api import check
-from rbcli.api import options as o
-from rbcli.api.check import Quantity, Vector
+from rbcli.api.check import Quantity
+from rbcli.api.commands import MAX_SAMPLES, PRECESS
+from rbcli.api.commands import PRECESS_SAMPLES as DEFAULT_SAMPLES
+from rbcli.api.inertia import rim_note
+from rbcli.api.params import Options, function, read
 from rbcli.api.result import Result, jsonable
-from rbcli.errors import InputError, Note, ParamError
+from rbcli.core import freemotion as fm
+from rbcli.core import freestate as fs
+from rbcli.core import freeverify
+from rbcli.core.inertia import InputOverflow, body_mass_props
+from rbcli.errors import InputError, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
-    import numpy as np
     from numpy.typing import ArrayLike
 
-    from rbcli.core.freemotion import FreeMotion
-    from rbcli.core.freeverify import VerifyResult
-    from rbcli.core.freestate import FreeState
     from rbcli.model import Body
 
-__all__ = ["PrecessOptions", "PrecessResult", "run", "precess", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
-
-#: rows of a time series when ``samples`` is not given, and the most allowed
-DEFAULT_SAMPLES = 1001
-MAX_SAMPLES = 1_000_000  # 1 048 576 rows is what a spreadsheet holds; 10^6 rows is ~100 MB of CSV
-
-#: the checker of each keyword argument of :func:`precess` (:mod:`rbcli.api.check`)
-KINDS = {"omega": check.vector, "at": check.quantity, "duration": check.quantity,
-         "samples": check.count, "verify": check.flag}
+__all__ = ["PrecessResult", "parse", "run", "precess", "DEFAULT_SAMPLES", "MAX_SAMPLES"]
 
 #: SPEC §3 keys, first in the JSON object
 SPEC_KEYS = (
@@ -52,88 +50,16 @@ SPEC_KEYS = (
 )
 
 
-def _count(value: Any) -> int:
-    """A whole number of rows, 2 .. MAX_SAMPLES (``--samples``)."""
-    if isinstance(value, int) and not isinstance(value, bool):
-        n = value
-    else:
-        text = value if isinstance(value, str) else str(value)
-        try:
-            n = int(text.strip())
-        except ValueError:
-            raise ParamError("samples", f"expected a whole number of rows from 2 to {MAX_SAMPLES}, "
-                                        f"got '{text}'") from None
-    if not 2 <= n <= MAX_SAMPLES:
-        raise ParamError("samples", f"expected a whole number of rows from 2 to {MAX_SAMPLES}, got {n}")
-    return n
-
-
-def _span(duration: Any) -> float:
-    """A positive finite time span in s (``duration``)."""
-    span = o.finite(o.quantity(duration, "time", "duration"), "duration")
-    if not span > 0.0:
-        raise ParamError("duration", f"must be a positive time, got '{duration}'")
-    return span
-
-
-@dataclass(frozen=True)
-class PrecessOptions:
-    """The checked options of :func:`precess` (SI).
-
-    Attributes
-    ----------
-    omega : tuple of 3 float — rad/s, initial angular velocity, body frame
-    at : float or None — s, a time at which to give the state (any sign)
-    duration : float or None — s, > 0: the span of the time series (from t = 0)
-    samples : int or None — rows of the time series (2 .. 10 000 000); None: 1001
-    verify : bool — compare with a numerical integration (DOP853) over 3 periods
-    given : tuple of str — the parameters the caller gave
-    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
-        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
-    warnings : tuple of str — a rotation whose rim is faster than sound
-    """
-
-    omega: tuple[float, float, float]
-    at: float | None = None
-    duration: float | None = None
-    samples: int | None = None
-    verify: bool = False
-    given: tuple[str, ...] = ()
-    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
-    typed: tuple[tuple[str, str], ...] = ()
-    warnings: tuple[str, ...] = ()
-
-    @classmethod
-    def parse(cls, body: Body | None = None, *, omega: Vector | None = None,
-              at: Quantity | None = None, duration: Quantity | None = None,
-              samples: int | str | None = None, verify: bool = False) -> PrecessOptions:
-        """Read the values as :func:`precess` takes them (numbers SI, or quantity strings)."""
-        if omega is None:
-            raise ParamError("omega", "the initial angular velocity is required: x,y,z in the "
-                                      "body frame, e.g. {omega} 0,0,10 (rad/s) or {omega} '0,0,300 rpm'")
-        u = o.Units.of(body)
-        w = u.vector(omega, "angular_speed", "omega")
-        t_at = o.finite(o.quantity(at, "time", "at"), "at") if at is not None else None
-        span = _span(duration) if duration is not None else None
-        n_rows = _count(samples) if samples is not None else None
-        given = tuple(p for p, v in (("omega", omega), ("at", at), ("duration", duration),
-                                     ("samples", samples), ("verify", verify or None)) if v is not None)
-        warns: tuple[str, ...] = ()
-        if body is not None:
-            import math
-
-            from rbcli.core.inertia import body_mass_props
-            from rbcli.core.scale import SPEED_OF_SOUND, axis_reach
-
-            wn = math.sqrt(sum(x * x for x in w))  # free rotation: about omega through the com
-            v = wn * axis_reach(body.parts, w, body_mass_props(body).com) if 0.0 < wn < math.inf else 0.0
-            if SPEED_OF_SOUND < v < math.inf:
-                warns = (Note(f"{{omega}}: the body's rim would move at {v:.4g} m/s, faster than "
-                              f"sound ({SPEED_OF_SOUND:g} m/s); bare angular speeds are in "
-                              f"{u.label('angular_speed')}: is a unit missing?"),)
-        return cls(omega=(float(w[0]), float(w[1]), float(w[2])), at=t_at, duration=span,
-                   samples=n_rows, verify=bool(verify), given=given,
-                   typed=tuple(u.typed.items()), warnings=warns)
+def parse(body: Body | None, **kwargs: Any) -> Options:
+    """The keyword arguments of :func:`precess` read for ``body`` (None: SI, before a body is
+    read): :class:`rbcli.api.params.Options`, ``samples`` a whole number (the default when
+    not given), ``verify`` a bool."""
+    if kwargs.get("omega") is None:
+        raise ParamError("omega", "the initial angular velocity is required: x,y,z in the "
+                                  "body frame, e.g. {omega} 0,0,10 (rad/s) or {omega} '0,0,300 rpm'")
+    o = read(body, PRECESS, kwargs)
+    return o.replace(samples=DEFAULT_SAMPLES if o.samples is None else int(o.samples),
+                     verify=bool(o.verify))
 
 
 @dataclass(frozen=True, eq=False)
@@ -146,26 +72,26 @@ class PrecessResult(Result):
     motion : FreeMotion — the exact motion: its case, period (s), flip_interval (s),
         precession rates (rad/s), cones (rad), the elliptic constants...; ``motion.at(t)``
         samples it
-    options : PrecessOptions — the options it was computed with
+    options : rbcli.api.params.Options — the options it was computed with (:func:`parse`)
     state : FreeState or None — the state at ``options.at`` (ω rad/s and L kg m²/s in the
         body frame at that time, the quaternion body → space)
     at_json : dict or None — the same as the JSON ``at`` object (adds the axis-angle, the
         matrix and the number of periods)
     check : VerifyResult or None — with ``verify``: the comparison with DOP853
     notes : tuple of str — what the numbers mean, in words (SI, 6 digits)
-    warnings : tuple of str — the body's located warnings
+    warnings : tuple of str — the body's located warnings, then a rim faster than sound
     """
 
     name: str
-    motion: FreeMotion
-    options: PrecessOptions
-    state: FreeState | None = None
+    motion: fm.FreeMotion
+    options: Options
+    state: fs.FreeState | None = None
     at_json: dict | None = None
-    check: VerifyResult | None = None
+    check: freeverify.VerifyResult | None = None
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
 
-    def at(self, t: Quantity | ArrayLike) -> FreeState:
+    def at(self, t: Quantity | ArrayLike) -> fs.FreeState:
         """The exact state at ``t`` (s: a number, a quantity string such as ``"7320 h"``, or a
         1-D sequence of at most :data:`rbcli.api.check.MAX_TIMES` numbers): ω, L (body frame),
         quaternion and rotation matrix (body → space; space = body frame at t = 0).
@@ -177,39 +103,30 @@ class PrecessResult(Result):
         rbcli.InputError
             a time that is not finite, too many times, a time too far away to have a phase.
         """
-        import numpy as np
-
-        from rbcli.core.freestate import check_phase
-
         t = check.times(t, "t", ndim=1)
-        check_phase(self.motion, float(np.max(np.abs(t), initial=0.0)), "t")
+        fs.check_phase(self.motion, float(np.max(np.abs(t), initial=0.0)), "t")
         return self.motion.at(t)
 
     def series_blocks(self, duration: Quantity | None = None,
                       samples: int | None = None) -> Iterator[np.ndarray]:
         """The time series in blocks of at most 100 000 rows; see :meth:`series`."""
-        from rbcli.core.freestate import series
-
-        duration, samples = check.quantity(duration, "duration"), check.count(samples, "samples")
-        span = self.options.duration if duration is None else _span(duration)
+        given = {"duration": check.quantity(duration, "duration"),
+                 "samples": check.count(samples, "samples")}
+        o = read(None, PRECESS, given)
+        span = self.options.duration if duration is None else o.duration
         if span is None:
             raise ParamError("duration", "needs a span for the time series (from t = 0)")
-        n = _count(samples) if samples is not None else (self.options.samples or DEFAULT_SAMPLES)
-        return series(self.motion, span, n)
+        return fs.series(self.motion, span, self.options.samples if samples is None else samples)
 
     def series(self, duration: Quantity | None = None, samples: int | None = None) -> np.ndarray:
         """Rows t, ωx, ωy, ωz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body → space) at
         ``samples`` times from 0 to ``duration`` s inclusive (defaults: the options';
         1001 rows); the quaternion's sign is continuous along the series. (N, 11) array."""
-        import numpy as np
-
         return np.vstack(list(self.series_blocks(duration, samples)))
 
     def to_json(self) -> dict[str, Any]:
         """Exactly the object ``rbcli precess ... --json`` prints, less ``file`` (and the
         ``csv``/``plot`` entries, which describe files the command line wrote)."""
-        import numpy as np
-
         core = self.motion.to_json()
         axes = np.array(core["principal_axes"], dtype=float)
         axes[np.abs(axes) <= 1e-15] = 0.0
@@ -231,42 +148,32 @@ class PrecessResult(Result):
         return 1 if self.check is not None and not self.check.ok else 0
 
 
-def run(body: Body, options: PrecessOptions) -> PrecessResult:
-    """Analyse the torque-free motion of ``body`` (about its centre of mass)."""
-    import numpy as np
-
-    from rbcli.core import freemotion as fm
-    from rbcli.core import freestate as fs
-    from rbcli.core.inertia import InputOverflow, body_mass_props
-
+def run(body: Body, options: Options) -> PrecessResult:
+    """Analyse the torque-free motion of ``body`` (about its centre of mass) for ``options``
+    (:func:`parse`)."""
+    o = options
     mp = body_mass_props(body)
     try:
-        motion = fm.analyse(mp.inertia_com, np.array(options.omega, dtype=float))
+        motion = fm.analyse(mp.inertia_com, np.array(o.omega, dtype=float))
     except InputOverflow as exc:
         if exc.param == "omega":
             raise ParamError("omega", str(exc)) from None
         raise InputError(f"{body.source}: {exc}", param="body") from None
-    for t, param in ((options.at, "at"), (options.duration, "duration")):
+    for t, param in ((o.at, "at"), (o.duration, "duration")):
         if t is not None:
             fs.check_phase(motion, t, param)
-    state = at_json = None
-    if options.at is not None:
-        state = fs.evaluate(motion, options.at)
-        at_json = fs.state_json(motion, options.at)
-    check = None
-    if options.verify:
-        from rbcli.core import freeverify
-
-        check = freeverify.verify(motion)
+    at = o.at is not None
+    # free rotation: about omega through the com
+    rim = rim_note(body, "omega", math.sqrt(sum(x * x for x in o.omega)), o.omega, mp.com)
     return PrecessResult(
-        name=body.name, motion=motion, options=options, state=state, at_json=at_json,
-        check=check, notes=tuple(fs.notes(motion)), warnings=tuple(getattr(body, "warnings", ()) or ()) + options.warnings,
-    )
+        name=body.name, motion=motion, options=o, state=fs.evaluate(motion, o.at) if at else None,
+        at_json=fs.state_json(motion, o.at) if at else None,
+        check=freeverify.verify(motion) if o.verify else None, notes=tuple(fs.notes(motion)),
+        warnings=tuple(body.warnings) + ((rim,) if rim else ()))
 
 
-def precess(body: Body, *, omega: Vector, at: Quantity | None = None,
-            duration: Quantity | None = None, samples: int | None = None,
-            verify: bool = False) -> PrecessResult:
+@function(PRECESS)
+def precess(body: Body, **kwargs: Any) -> PrecessResult:
     """The exact torque-free motion of a rigid body from an initial angular velocity.
 
     The body turns freely about its centre of mass (no torque, no gravity); the space frame
@@ -276,19 +183,7 @@ def precess(body: Body, *, omega: Vector, at: Quantity | None = None,
     ----------
     body : Body
         From :func:`rbcli.load` or :func:`rbcli.load_text`.
-    omega : sequence of 3 numbers (rad/s) or str
-        Initial angular velocity x, y, z in the body frame; a string as on the command line
-        (``"0,0,300 rpm"``: a unit after the last number applies to every bare number).
-    at : float (s) or str, optional
-        Also give the state at this time (``"7320 h"``; negative = before t = 0).
-    duration : float (s) or str, optional
-        Span of :meth:`PrecessResult.series` (from t = 0), > 0.
-    samples : int, optional
-        Rows of :meth:`PrecessResult.series` (2 .. 10 000 000; default 1001).
-    verify : bool
-        Compare the exact motion with a numerical integration of Euler's equations and the
-        attitude (scipy DOP853, rtol 1e-12) over 3 periods; ``return_code`` is 1 when they
-        differ by more than 1e-8.
+    {parameters}
 
     Returns
     -------
@@ -314,8 +209,4 @@ def precess(body: Body, *, omega: Vector, at: Quantity | None = None,
     >>> round(float(book.at(1.0).omega[1]), 6)           # rad/s, body frame, at t = 1 s
     1.000049
     """
-    body = check.body(body)
-    kw = check.arguments(KINDS, omega=omega, at=at, duration=duration, samples=samples,
-                         verify=verify)
-    with check.arithmetic(kw):
-        return run(body, PrecessOptions.parse(body, **kw))
+    return run(body, parse(body, **kwargs))

@@ -5,8 +5,6 @@
     import rbcli
     p = rbcli.principal(rbcli.load("examples/square_lamina.yaml"))
     p.moments, p.axes        # ascending, rows = unit axes in the body frame
-
-numpy and :mod:`rbcli.core` load on first use, not when this module is imported.
 """
 
 from __future__ import annotations
@@ -14,50 +12,17 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rbcli.api import check
-from rbcli.api import options as o
-from rbcli.api.check import Point
-from rbcli.api.massprops import Reference, inertia_at, part_rows, plausibility, snap, with_parts
+from rbcli.api.commands import PRINCIPAL
+from rbcli.api.inertia import Reference, part_rows, plausibility, snap, with_parts
+from rbcli.api.params import Options, function, read
 from rbcli.api.result import Result
+from rbcli.core.inertia import body_mass_props
+from rbcli.core.principal import principal_report
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.model import Body
 
-__all__ = ["PrincipalOptions", "PrincipalResult", "run", "principal"]
-
-
-@dataclass(frozen=True)
-class PrincipalOptions:
-    """What :func:`principal` was asked, parsed once.
-
-    Attributes
-    ----------
-    reference : Reference — the point the moments are about (default the com)
-    given : tuple of str — ``("about",)`` when a point other than the com was given
-    typed : tuple of (str, str) — (parameter, unit) for each value typed with a unit
-        (``"0.5 g"``: ``("mass_step", "g")``), the unit the options table shows it in
-    warnings : tuple of str — a point far outside the body's scale
-    """
-
-    reference: Reference
-    given: tuple[str, ...] = ()
-    warnings: tuple[str, ...] = ()
-    #: parameter -> the unit the caller typed after its number (the options table echoes in it)
-    typed: tuple[tuple[str, str], ...] = ()
-
-    @property
-    def about(self) -> str | tuple[float, float, float] | None:
-        """The point as given (see :attr:`InertiaOptions.about`)."""
-        return self.reference.as_given
-
-    @classmethod
-    def parse(cls, body: Body | None, *, about: Point | None = "com") -> PrincipalOptions:
-        """Read ``about`` (``"com"``, ``"origin"``, x, y, z: a bare number in the body's
-        length unit; None = the com)."""
-        ref = Reference.parse(body, about, default="com")
-        u = o.Units.of(body)
-        given = ("about",) if ref.point is not None and ref.param == "about" else ()  # com: the default
-        return cls(ref, given, plausibility(body, u, ref), tuple(u.typed.items()))
+__all__ = ["PrincipalResult", "parse", "run", "principal"]
 
 
 @dataclass(frozen=True)
@@ -92,7 +57,7 @@ class PrincipalResult(Result):
         same mass and principal moments
     equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same uniform ellipsoid
     parts : tuple of dict — each part's contribution (see :func:`part_rows`)
-    warnings : tuple of str — none for this command
+    warnings : tuple of str — a point far outside the body's scale
     """
 
     name: str
@@ -138,36 +103,39 @@ class PrincipalResult(Result):
         }, self.parts)
 
 
-def run(body: Body, options: PrincipalOptions) -> PrincipalResult:
-    """:func:`principal` with options already parsed."""
-    from rbcli.core.inertia import body_mass_props
-    from rbcli.core.principal import principal_report
+def parse(body: Body | None, **kwargs: Any) -> Options:
+    """The keyword arguments of :func:`principal` read for ``body`` (None: SI, before a body
+    is read): :class:`rbcli.api.params.Options`."""
+    return read(body, PRINCIPAL, kwargs)
 
+
+def run(body: Body, options: Options) -> PrincipalResult:
+    """:func:`principal` with options already read (:func:`parse`)."""
+    ref = Reference.of(body, options, default="com")
     mp = body_mass_props(body)
-    point, J = inertia_at(mp, options.reference)
+    point, J = ref.inertia(mp)
     pr = principal_report(mp.mass, J, point)
     pa = pr.axes_info
-    rows = part_rows(body)
     return PrincipalResult(
-        name=body.name, mass=pr.mass, reference=pr.reference,
-        reference_label=options.reference.label, moments=pa.moments, axes=pa.axes,
-        symmetry=pa.symmetry, unique_axis=pa.unique_axis, free_axes=tuple(pa.free_axes),
-        stable=pr.stable, direction_angles_deg=pr.direction_angles_deg,
-        rotation_axis=pr.rotation_axis, rotation_angle_deg=pr.rotation_angle_deg,
-        equivalent_box=pr.equivalent_box, equivalent_ellipsoid=pr.equivalent_ellipsoid,
-        stability=pr.stability, tilt_deg=pr.tilt_deg, tilt_axis=tuple("xyz"[j] for j in pr.tilt_axis),
-        parts=rows, warnings=options.warnings)
+        name=body.name, mass=pr.mass, reference=pr.reference, reference_label=ref.label,
+        moments=pa.moments, axes=pa.axes, symmetry=pa.symmetry, unique_axis=pa.unique_axis,
+        free_axes=tuple(pa.free_axes), stable=pr.stable,
+        direction_angles_deg=pr.direction_angles_deg, rotation_axis=pr.rotation_axis,
+        rotation_angle_deg=pr.rotation_angle_deg, equivalent_box=pr.equivalent_box,
+        equivalent_ellipsoid=pr.equivalent_ellipsoid, stability=pr.stability,
+        tilt_deg=pr.tilt_deg, tilt_axis=tuple("xyz"[j] for j in pr.tilt_axis),
+        parts=part_rows(body), warnings=plausibility(body, ref))
 
 
-def principal(body: Body, *, about: Point | None = "com") -> PrincipalResult:
-    """Principal moments and axes, symmetry, stability of free rotation and the equivalent
-    uniform box and ellipsoid.
+@function(PRINCIPAL)
+def principal(body: Body, **kwargs: Any) -> PrincipalResult:
+    """Principal moments and axes about a point (``about``, default the com), symmetry,
+    stability of free rotation and the equivalent uniform box and ellipsoid.
 
     Parameters
     ----------
     body : rbcli.Body
-    about : str or sequence of 3
-        ``"com"`` (default), ``"origin"``, or x, y, z in m (or ``"10,0,5 mm"``).
+    {parameters}
 
     Returns
     -------
@@ -201,7 +169,4 @@ def principal(body: Body, *, about: Point | None = "com") -> PrincipalResult:
     >>> p.symmetry
     'asymmetric'
     """
-    body = check.body(body)
-    kw = {"about": check.vector(about, "about")}
-    with check.arithmetic(kw):
-        return run(body, PrincipalOptions.parse(body, **kw))
+    return run(body, parse(body, **kwargs))

@@ -2,8 +2,7 @@
 ``rbcli report``.
 
 :class:`ReportOptions` reads the report's options once, through each command's own options
-object (:func:`rbcli.api.balance.parse`, :class:`rbcli.api.precess.PrecessOptions`,
-:class:`rbcli.api.top.TopOptions`, :func:`rbcli.api.rollcheck.parse`), so a value
+object (each command's ``parse``: :class:`rbcli.api.params.Options`), so a value
 means in the report what it means to the command. :func:`run` computes each section by
 calling the services and returns a :class:`ReportResult` holding each section's result (or the
 one-line reason it is left out). It computes only: :mod:`rbcli.render.report` makes the
@@ -32,8 +31,6 @@ from rbcli.api.result import Result
 from rbcli.errors import InputError, Note, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.precess import PrecessOptions
-    from rbcli.api.top import TopOptions
     from rbcli.api.params import Options
     from rbcli.model import Body
 
@@ -56,7 +53,7 @@ KINDS = {
 }
 
 #: stand-ins for a missing spin or theta, so that the one given is still checked by
-#: TopOptions.parse (the heavy-top section is then left out, saying what is missing)
+#: top.parse (the heavy-top section is then left out, saying what is missing)
 _TOP_STAND_INS = {"spin": 1.0, "theta": 90.0}
 
 
@@ -140,8 +137,8 @@ class ReportOptions:
         option is given (``balance_skip`` says so)
     whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
         body cannot have one (``whirl_error``)
-    precess : PrecessOptions or None — None without ``omega``
-    top : TopOptions or None — None without a pivot or without ``spin`` and ``theta``
+    precess : Options or None — None without ``omega``
+    top : Options or None — None without a pivot or without ``spin`` and ``theta``
         (``top_skip`` says which)
     rollcheck : Options or None — None without a rim radius (``rolling_skip``)
     date : str — the report's date, UTC: SOURCE_DATE_EPOCH when set, else now
@@ -150,8 +147,8 @@ class ReportOptions:
     given: tuple[tuple[str, str], ...]
     balance: Options | None
     whirl: Options | None
-    precess: PrecessOptions | None
-    top: TopOptions | None
+    precess: Options | None
+    top: Options | None
     rollcheck: Options | None
     date: str
     balance_skip: str | None = None
@@ -179,8 +176,7 @@ class ReportOptions:
             naming the parameter at fault (``planes: ...``).
         """
         from rbcli.api import options as op
-        from rbcli.api.precess import PrecessOptions
-        from rbcli.api.top import TopOptions
+        from rbcli.api import precess, top
         from rbcli.api import whirl
         from rbcli.api.whirlbearings import entries
 
@@ -228,9 +224,9 @@ class ReportOptions:
         else:
             w_skip = Note("whirl: no {stiffness} given (the bearings' stiffness, with {bearings})")
         # free precession
-        p_opts = PrecessOptions.parse(body, omega=omega) if omega is not None else None
+        p_opts = precess.parse(body, omega=omega) if omega is not None else None
         # heavy top: every value given is checked, the section needs a pivot, spin and theta
-        t_opts = TopOptions.parse(
+        t_opts = top.parse(
             body, pivot=pivot, spin=_TOP_STAND_INS["spin"] if spin is None else spin,
             theta=_TOP_STAND_INS["theta"] if theta is None else theta, theta_dot=theta_dot,
             phi_dot=phi_dot, g=g, symmetry_tol=symmetry_tol)
@@ -392,14 +388,14 @@ def _parts(ctx: _Ctx) -> Section:
 def _massprops(ctx: _Ctx) -> Section:
     from rbcli.api import inertia as api
 
-    o = api.InertiaOptions.parse(ctx.body)
+    o = api.parse(ctx.body)
     return Section("mass-properties", "Mass properties", api.run(ctx.body, o), options=o)
 
 
 def _principal(ctx: _Ctx) -> Section:
     from rbcli.api import principal as api
 
-    o = api.PrincipalOptions.parse(ctx.body)
+    o = api.parse(ctx.body)
     return Section("principal-axes", "Principal axes", api.run(ctx.body, o), options=o)
 
 

@@ -75,7 +75,8 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         for p in table:
             flag = p.flag or spelled(p.name)
             decls = [d for d in (p.short, flag) if d]
-            kind = list[str] if p.form == "options" else {"count": int, "flag": bool}.get(p.kind, str)
+            kind = list[str] if p.form == "options" else \
+                p.cli_type or {"count": int, "flag": bool}.get(p.kind, str)
             how = dict(help=spell(p.help, spelled), metavar=p.metavar, show_default=p.default is not None)
             info = (typer.Argument(p.default, **how) if p.form == "argument"
                     else typer.Option(p.default, *decls, **how))
@@ -114,6 +115,16 @@ def said_json(data: Any) -> Any:
     """A JSON document with its warnings and remarks (:class:`rbcli.errors.Note`) spelled as
     the command line says them (the API's ``to_json()`` names parameters, ``--json`` options)."""
     return spelled_data(data, option_name)
+
+
+def with_file(data: dict, source: str) -> dict:
+    """A result's JSON with ``"file"`` after ``"name"`` (where the commands print it)."""
+    out = {}
+    for k, v in data.items():
+        out[k] = v
+        if k == "name":
+            out["file"] = source
+    return out
 
 
 def start(json_: bool, fmt: str | None, units: str | None, *, shop: bool = False,

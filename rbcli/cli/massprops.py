@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.commands import INERTIA, PRINCIPAL
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
+from rbcli.errors import InputError, option_name
 
 INERTIA_HELP = """Mass, centre of mass and the inertia tensor about a point.
 
@@ -36,30 +38,11 @@ INERTIA_FORMAT_HELP = (
     "precision; the frame is stated in a comment).")
 
 
-def _echo(opts, body, spec):
-    """The options table's rows (rbcli.render.units.echo_rows), for a table only."""
-    from rbcli.render.units import echo_rows
-
-    return echo_rows(opts, body, spec)
-
-
-def with_file(data: dict, source: str) -> dict:
-    """A result's JSON with ``"file"`` after ``"name"``, as the command prints it."""
-    out = {}
-    for k, v in data.items():
-        out[k] = v
-        if k == "name":
-            out["file"] = source
-    return out
-
-
-@app.command(help=INERTIA_HELP)
+@c.command(INERTIA, help=INERTIA_HELP)
 def inertia(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
-    about: str = typer.Option(None, "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm').", show_default=False),
-    axis: str = typer.Option(None, "--axis", help="Moment about this direction x,y,z through the point.", show_default=False),
-    omega: str = typer.Option(None, "--omega", help="Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
+    args: dict = c.PARAMS,
     products: str = typer.Option("tensor", "--products", help="Show off-diagonals as the tensor (tensor) or as positive products (positive), in the tables; --format urdf, sdf and mjcf fix the tensor's sign (positive is refused there)."),
     json_: bool = c.JsonOpt,
     fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
@@ -67,8 +50,11 @@ def inertia(
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
+    from rbcli.api import inertia as api
     from rbcli.api.options import choice
-    from rbcli.errors import InputError
+    from rbcli.render import echo, robot
+    from rbcli.render import massprops as r
+    from rbcli.render.units import DisplayUnits
 
     choice(products, "--products", ("tensor", "positive"))
     out = c.output_format(json_, fmt, ROBOT_FORMATS)
@@ -76,24 +62,38 @@ def inertia(
         if products.strip().lower() == "positive":
             raise InputError(f"--products positive does not apply to --format {out}: the element "
                              "holds the tensor's entries (ixy = -sum m x y), as the format requires")
-        given = [o for o, v in (("--about", about), ("--axis", axis), ("--omega", omega), ("--units", units)) if v is not None]
+        given = [option_name(k) for k, v in args.items() if v is not None] + ["--units"] * (units is not None)
         if given:
             raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
                              "always about the centre of mass, in SI units")
     elif principal_:
         raise InputError(f"--principal applies to --format urdf, sdf or mjcf, not to {out}")
     e = c.env()
-    from rbcli.render.units import DisplayUnits
-
     du = DisplayUnits.parse(units)
-    from rbcli.api import inertia as api
+    api.parse(None, **args)  # bad values: one line, before any body
 
-    api.InertiaOptions.parse(None, about=about, axis=axis, omega=omega)  # bad values: one line, before any body
-    _run(bodies, expr, e, lambda body, many, first: _inertia_one(
-        body, about, axis, omega, out, principal_, du, digits, products, e, many, first))
+    def one(body, many: bool, first: bool) -> None:
+        opts = api.parse(body, **args)
+        res = api.run(body, opts)
+        _warn(e, body, res)
+        if out in ROBOT_FORMATS:
+            res.to_json()  # the one finiteness check of the numbers
+            e.write(robot.render(out, body.name, body.source, res.inertial(principal_)))
+            return
+        c.emit(e, out, lambda: c.with_file(res.to_json(), body.source),
+               lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label),
+               lines=many, file=body.source if many else None,
+               given=lambda: echo.echo_rows(opts, body.units), plain=True, header=first)
+
+    _each(bodies, expr, e, one)
 
 
-def _run(bodies, expr, e, one) -> None:
+def _warn(e, body, res) -> None:
+    for w in res.warnings:
+        e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
+
+
+def _each(bodies, expr, e, one) -> None:
     """Run ``one(body, many, first)`` per body; go on past bad files, exit 2 at the end if any
     failed.
 
@@ -105,92 +105,59 @@ def _run(bodies, expr, e, one) -> None:
     many = len(srcs) > 1
     failed = False
     done = 0
-    from rbcli.errors import InputError
-
     for src, body in c.each_body(srcs, expr, e):
         if e.pipe_closed:  # the reader has gone (| head -1): nobody reads the rest
             break
-        if isinstance(body, InputError):
-            if len(srcs) == 1:
-                raise body
-            e.warn(f"rbcli: {c.said(body)}")
-            failed = True
-            continue
         try:
+            if isinstance(body, InputError):
+                raise body
             one(body, many, done == 0)
             done += 1
         except InputError as exc:
             if len(srcs) == 1:
                 raise
-            e.warn(f"rbcli: {src}: {c.said(exc)}")
+            e.warn(f"rbcli: {c.said(exc)}" if exc is body else f"rbcli: {src}: {c.said(exc)}")
             failed = True
     if failed:
         c.finish(2)
 
 
-def _inertia_one(body, about, axis, omega, out, principal_, du, digits, products, e, many: bool,
-                 first: bool = True) -> None:
-    from rbcli.api import inertia as api
-    from rbcli.render import massprops as r
-
-    opts = api.InertiaOptions.parse(body, about=about, axis=axis, omega=omega)
-    res = api.run(body, opts)
-    for w in res.warnings:
-        e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
-    if out in ROBOT_FORMATS:
-        from rbcli.render import robot
-
-        res.to_json()  # the one finiteness check of the numbers
-        e.write(robot.render(out, body.name, body.source, res.inertial(principal_)))
-        return
-    c.emit(e, out, lambda: with_file(res.to_json(), body.source),
-           lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label), lines=many,
-           file=body.source if many else None, given=lambda: _echo(opts, body, r.INERTIA_OPTIONS),
-           plain=True, header=first)
-
-
-@app.command(help=PRINCIPAL_HELP)
+@c.command(PRINCIPAL, help=PRINCIPAL_HELP)
 def principal(
     bodies: list[str] = c.BodiesArg,
     expr: str = c.ExprOpt,
-    about: str = typer.Option("com", "--about", help="Point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '10,0,5 mm')."),
+    args: dict = c.PARAMS,
     plot: str = typer.Option(None, "--plot", help="Draw the body as built (its parts, holes dashed), the com and the principal axes about the com, in a 3-D view and three views along the body axes, to this file (.png, .svg or .pdf). One body only.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
-    e, out, du = c.start(json_, fmt, units)
     from rbcli.api import principal as api
+    from rbcli.render import echo
+    from rbcli.render import massprops as r
+    from rbcli.render.bodyplot import body_figure
 
-    api.PrincipalOptions.parse(None, about=about)  # a bad --about: one line, before any body
+    e, out, du = c.start(json_, fmt, units)
+    api.parse(None, **args)  # a bad --about: one line, before any body
     if plot is not None:
         c.sources(bodies, expr, single=True)  # one figure, one body
-    _run(bodies, expr, e, lambda body, many, first: _principal_one(
-        body, about, out, du, digits, e, many, plot, first))
 
+    def one(body, many: bool, first: bool) -> None:
+        plot_path = c.check_plot(plot, body) if plot is not None else None
+        opts = api.parse(body, **args)
+        res = api.run(body, opts)
+        _warn(e, body, res)
+        if plot_path is not None:
+            at_com = res if opts.about == "com" else api.principal(body, about="com")
+            c.save_plot(body_figure(body, at_com.reference, at_com, du, f"principal: {body.name} — "
+                                    "the body as built, centre of mass and principal axes"), plot_path)
+        c.emit(e, out, lambda: c.with_file(res.to_json(), body.source),
+               lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label),
+               lines=many, file=body.source if many else None,
+               given=lambda: echo.echo_rows(opts, body.units), plain=True, header=first)
 
-def _principal_one(body, about, out, du, digits, e, many: bool, plot: str | None = None,
-                   first: bool = True) -> None:
-    from rbcli.api import principal as api
-    from rbcli.render import massprops as r
-
-    plot_path = c.check_plot(plot, body) if plot is not None else None
-    opts = api.PrincipalOptions.parse(body, about=about)
-    res = api.run(body, opts)
-    for w in res.warnings:
-        e.warn(f"rbcli: {body.source}: warning: {c.said(w)}")
-    if plot_path is not None:
-        from rbcli.render.bodyplot import body_figure
-
-        at_com = res if about.strip() == "com" else api.principal(body, about="com")
-        fig = body_figure(body, at_com.reference, at_com, du,
-                          f"principal: {body.name} — the body as built, centre of mass and principal axes")
-        c.save_plot(fig, plot_path)
-    c.emit(e, out, lambda: with_file(res.to_json(), body.source),
-           lambda doc: r.principal_doc(doc, body, res, du, digits, res.reference_label), lines=many,
-           file=body.source if many else None, given=lambda: _echo(opts, body, r.PRINCIPAL_OPTIONS),
-           plain=True, header=first)
+    _each(bodies, expr, e, one)
 
 
 MANUAL["inertia"] = {

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import typer
-
-from rbcli.api.precess import DEFAULT_SAMPLES
+from rbcli.api.commands import PRECESS
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
+from rbcli.errors import InputError
 
 HELP = """Torque-free motion from an initial angular velocity: L, T, precession, period, flips.
 
@@ -24,63 +23,26 @@ of the third kind), so --at T costs the same for T = 1 s or 1e9 s. The space fra
 is the body frame at t = 0.
 """
 
-OMEGA_HELP = (
-    "Initial angular velocity x,y,z in the body frame (a bare number is rad/s, or the body's "
-    "units' angular_speed; a unit after the last number applies to every bare number before "
-    "it, e.g. '0,0,300 rpm'). Required."
-)
-AT_HELP = (
-    "Also give w, L and the orientation (quaternion, axis and angle) at this time (a bare "
-    "number is s; or with units, e.g. '7320 h'; negative = before t = 0)."
-)
-DURATION_HELP = (
-    "Span of the --csv time series, from t = 0 (a bare number is s; or with units); also the span of "
-    "--plot (default: 3 periods of w)."
-)
-SAMPLES_HELP = "Rows of the --csv time series, evenly spaced from t = 0 to --duration inclusive (2 to 1000000, about 100 MB of CSV)."
-CSV_HELP = (
-    "Write the time series t, wx, wy, wz, Lx, Ly, Lz (body frame), qw, qx, qy, qz (body to "
-    "space) to this CSV file, or '-' for standard output instead of the tables. Needs "
-    "--duration. An existing file is replaced (atomically); an input file never."
-)
-PLOT_HELP = (
-    "Save a figure (.png, .svg, .pdf): the body-frame components of w against time and the "
-    "polhode (the path of L/|L| on the unit sphere, principal frame) in two views. An "
-    "existing figure is replaced (atomically); an input file never."
-)
-VERIFY_HELP = (
-    "Check the exact motion against a numerical integration of Euler's equations and the "
-    "attitude (scipy DOP853, rtol 1e-12) over 3 periods; exit status 1 if they differ by "
-    "more than 1e-8."
-)
 
-
-
-@app.command(help=HELP)
+@c.command(PRECESS, help=HELP)
 def precess(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    omega: str = typer.Option(None, "--omega", help=OMEGA_HELP, show_default=False),
-    at: str = typer.Option(None, "--at", help=AT_HELP, show_default=False),
-    duration: str = typer.Option(None, "--duration", help=DURATION_HELP, show_default=False),
-    samples: str = typer.Option(None, "--samples", help=SAMPLES_HELP + f" Default {DEFAULT_SAMPLES}.", show_default=False),
-    csv: str = typer.Option(None, "--csv", help=CSV_HELP, show_default=False),
-    plot: str = typer.Option(None, "--plot", help=PLOT_HELP, show_default=False),
-    verify: bool = typer.Option(False, "--verify", help=VERIFY_HELP),
+    args: dict = c.PARAMS,
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api import precess as api
-    from rbcli.errors import InputError
+    from rbcli.render import echo
+    from rbcli.render import precess as rp
 
     e, out, du = c.start(json_, fmt, units)
-
+    csv, plot = args.pop("csv"), args.pop("plot")
     # --- option values, checked before the body is read (bad usage is bad usage)
-    opts = api.PrecessOptions.parse(None, omega=omega, at=at, duration=duration, samples=samples,
-                                    verify=verify)
-    if samples is not None and csv is None:
+    opts = api.parse(None, **args)
+    if args["samples"] is not None and csv is None:
         raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE and --duration T")
     if csv is not None:
         if opts.duration is None:
@@ -92,29 +54,20 @@ def precess(
 
     # --- the body, and the output paths checked before any computing
     b = c.load_one(body, expr, e)
-    # bare numbers follow the body's units: read the values again, now for this body
-    opts = api.PrecessOptions.parse(b, omega=omega, at=at, duration=duration, samples=samples,
-                                    verify=verify)
+    opts = api.parse(b, **args)  # bare numbers follow the body's units: read again, for this body
     plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
-
-    from rbcli.render import precess as rp
-
     result = api.run(b, opts)
-    for w in opts.warnings:
+    for w in result.warnings[len(b.warnings):]:  # (the body's own were shown as it was read)
         e.warn(f"rbcli: {b.source}: warning: {c.said(w)}")
     csv_info = None
     if csv is not None:
-        csv_info = {"file": csv, "samples": opts.samples or api.DEFAULT_SAMPLES, "duration": opts.duration}
+        csv_info = {"file": csv, "samples": opts.samples, "duration": opts.duration}
         c.write_csv(e, csv_path, rp.CSV_HEADER, result.series_blocks())  # csv_path None: stdout
     if plot_path is not None:
         c.save_plot(rp.plot(b, result.motion, opts.duration, du), plot_path)
 
     def data() -> dict:
-        out = {}
-        for k, v in result.to_json().items():
-            out[k] = v
-            if k == "name":
-                out["file"] = b.source
+        out = c.with_file(result.to_json(), b.source)
         if csv_info is not None:
             out["csv"] = csv_info
         if plot_path is not None:
@@ -122,11 +75,9 @@ def precess(
         return out
 
     if csv != "-":  # with --csv - the time series is the output
-        from rbcli.render.units import echo_rows
-
         c.emit(e, out, data, lambda doc: rp.document(
             doc, b, result, du, digits, csv=csv_info, plot=str(plot_path) if plot_path else None),
-               given=echo_rows(opts, b, rp.OPTIONS))
+               given=echo.echo_rows(opts, b.units))
     c.finish(result.return_code)
 
 

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import typer
-
+from rbcli.api.commands import GYROCOMPASS, TOP
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
+from rbcli.errors import InputError
 
 HELP = """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
@@ -35,76 +35,52 @@ T = 2 pi/w0 (undamped). C/A is the axial moment over the moment about the vertic
 body's shaft axis, else body z), both moments about its centre of mass.
 """
 
-#: the body options and the spin, shared by top and gyrocompass (the spin's help differs)
-_SPIN = "Required. {what} (rad/s, or the body's units' angular_speed; or e.g. '{eg}'); negative = the other way."
-
-
-def _spin_opt(what: str, eg: str):
-    return typer.Option(None, "--spin", help=_SPIN.format(what=what, eg=eg), show_default=False)
-
-
-
 
 def _warn(e, result) -> None:
     for w in result.warnings:
         e.warn(f"rbcli: {c.said(w)}")
 
 
-@app.command(help=HELP)
+@c.command(TOP, help=HELP)
 def top(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    pivot: str = typer.Option(None, "--pivot", help="The fixed point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot, else the origin.", show_default=False),
-    spin: str = _spin_opt("Spin S = w3 about the symmetry axis", "3000 rpm"),
-    theta: str = typer.Option(None, "--theta", help="Required. Start tilt of the axis from the upward vertical, strictly between 0 and 180 (degrees, or with units, e.g. '0.5 rad').", show_default=False),
-    theta_dot: str = typer.Option(None, "--theta-dot", help="Start rate theta' (rad/s unless the body's units name an angular_speed; or e.g. '10 deg/s'); positive = tilting further. Default: 0.", show_default=False),
-    phi_dot: str = typer.Option(None, "--phi-dot", help="Start precession rate phi' about the vertical (rad/s unless the body's units name an angular_speed; or with units). Default: 0.", show_default=False),
-    g: str = typer.Option(None, "--g", help="Gravity (m/s^2, or with units). Default: 9.80665.", show_default=False),
-    verify: bool = typer.Option(False, "--verify", help="Integrate the equations of motion numerically (no Euler angles, DOP853, rtol 1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ by more than 1e-6 rad or the energy drifts by more than 1e-9."),
-    plot: str = typer.Option(None, "--plot", help="Save a figure (.png, .svg, .pdf): the path of the axis tip, theta against phi and seen from above, theta1 and theta2 marked, over --duration. An existing figure is replaced (atomically); an input file never.", show_default=False),
-    csv: str = typer.Option(None, "--csv", help="Write t, theta_deg, phi_deg, psi_deg (s, degrees) at --samples times over --duration to this file ('-' = standard output, instead of the tables). An existing file is replaced (atomically); an input file never.", show_default=False),
-    duration: str = typer.Option(None, "--duration", help="Time span of --csv and --plot (s, or with units). Default: 3 nutation periods.", show_default=False),
-    samples: int = typer.Option(600, "--samples", help="Rows of --csv, evenly spaced from t = 0 to --duration inclusive (2 to 1000000)."),
-    symmetry_tol: str = c.SymmetryTolOpt,
+    args: dict = c.PARAMS,
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api import top as api
-    from rbcli.errors import InputError
-    from rbcli.render.units import echo_rows
+    from rbcli.api.params import read
+    from rbcli.render import echo
+    from rbcli.render import top as rt
+    from rbcli.render.csvout import times
 
     e, out, du = c.start(json_, fmt, units)
-    api.series(duration, samples)  # bad values: one line, before the body is read
+    csv, plot = args.pop("csv"), args.pop("plot")
+    read(None, TOP, {k: args[k] for k in ("duration", "samples")})  # bad values: before the body
     if csv == "-" and out != "table":
         raise InputError(f"--csv -: the CSV would go to standard output together with --{'json' if json_ else 'format ' + out}; write it to a file")
 
     b = c.load_one(body, expr, e)
-    opts = api.TopOptions.parse(b, pivot=pivot, spin=spin, theta=theta, theta_dot=theta_dot,
-                                phi_dot=phi_dot, g=g, verify=verify, symmetry_tol=symmetry_tol,
-                                duration=duration, samples=samples)
+    opts = api.parse(b, **args)
     plot_path, csv_path = c.output_paths(b, plot=plot, csv=csv)
     r = api.run(b, opts)
     _warn(e, r)
-
-    from rbcli.render import top as rt
-
     span = None
     if plot_path is not None or csv is not None:
         span = opts.duration if opts.duration is not None else r.default_duration()
     if plot_path is not None:
         c.save_plot(rt.plot(r, r.sample(span), span), plot_path)
     if csv is not None:
-        from rbcli.render.csvout import times
-
         c.write_csv(e, csv_path, rt.CSV_HEADER, (rt.csv_block(r.at(t)) for t in times(span, opts.samples)))
         if csv_path is None:  # '-': standard output, instead of the tables
             c.finish(r.return_code)
             return
 
     def data() -> dict:
-        out = _with_file(r.to_json(), b.source)
+        out = c.with_file(r.to_json(), b.source)
         if plot_path is not None:
             out["plot"] = str(plot_path)
         if csv is not None:
@@ -114,52 +90,35 @@ def top(
     c.emit(e, out, data, lambda doc: rt.document(
         doc, r, du, digits, plot=str(plot_path) if plot_path is not None else None, csv=csv,
         rows=opts.samples if csv is not None else None, duration=span),
-           given=echo_rows(opts, b, rt.TOP_OPTIONS))
+           given=echo.echo_rows(opts, b.units))
     c.finish(r.return_code)
-
-
-def _with_file(data: dict, source: str) -> dict:
-    """The result's JSON with the body's ``file`` after its ``name`` (where the command line
-    has always printed it)."""
-    out: dict = {}
-    for k, v in data.items():
-        out[k] = v
-        if k == "name":
-            out["file"] = source
-    return out
 
 
 # ----------------------------------------------------------------------------- gyrocompass
 
 
-@app.command(help=GYRO_HELP)
+@c.command(GYROCOMPASS, help=GYRO_HELP)
 def gyrocompass(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
-    ratio: str = typer.Option(None, "--ratio", help="C/A, the axial moment over the moment about the vertical (a flat disk: 2), instead of a body.", show_default=False),
-    axis: str = typer.Option(None, "--axis", help="The rotor's spin axis x,y,z (or x, y, z) in the body frame. Default: the body's shaft axis, else z.", show_default=False),
-    spin: str = _spin_opt("Rotor spin about its axis", "6000 rpm"),
-    latitude: str = typer.Option(None, "--latitude", help="Required. Latitude, -90 to 90 (degrees, or with units); negative = south.", show_default=False),
-    earth_rate: str = typer.Option(None, "--earth-rate", help="The Earth's (sidereal) rotation rate (rad/s, or with units). Default: 7.2921150e-5.", show_default=False),
-    symmetry_tol: str = c.SymmetryTolOpt,
+    args: dict = c.PARAMS,
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
     from rbcli.api import gyrocompass as api
+    from rbcli.render import echo
     from rbcli.render import top as rt
-    from rbcli.render.units import echo_rows
 
     e, out, du = c.start(json_, fmt, units)
     b = c.load_one(body, expr, e) if body is not None or expr is not None else None
-    opts = api.GyrocompassOptions.parse(b, ratio=ratio, shaft=axis, spin=spin, latitude=latitude,
-                                        earth_rate=earth_rate, symmetry_tol=symmetry_tol)
+    opts = api.parse(b, **args)
     r = api.run(b, opts)
     _warn(e, r)
-    c.emit(e, out, lambda: _with_file(r.to_json(), b.source) if b is not None else r.to_json(),
+    c.emit(e, out, lambda: c.with_file(r.to_json(), b.source) if b is not None else r.to_json(),
            lambda doc: rt.gyro_document(doc, r, du, digits),
-           given=echo_rows(opts, b, rt.GYRO_OPTIONS))
+           given=echo.echo_rows(opts, b.units if b is not None else None))
 
 
 # ----------------------------------------------------------------------------- manual

@@ -7,9 +7,9 @@ same attributes.
 
 from __future__ import annotations
 
-import numpy as np
-
 from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 from rbcli.model import Body
 from rbcli.render.fmt import num, snap
@@ -86,20 +86,16 @@ def mesh_table(doc: Doc, body: Body, du: DisplayUnits, digits: int) -> None:
     shown = meshes if keep is None else [meshes[i] for i in keep]
     rows = [(p.name + (" (hole)" if p.subtract else ""), *_mesh_cells(p, du, digits)) for p in shown]
     if keep is not None:
-        rest = np.ones(len(meshes), dtype=bool)
-        rest[keep] = False
-        others = [p for p, r in zip(meshes, rest) if r]
-        rows.append((more_parts(len(others)),
-                     du.show(sum(p.extra["volume"] for p in others), "volume", digits),
-                     du.show(sum(p.extra["area"] for p in others), "area", digits),
-                     str(sum(int(p.extra["triangles"]) for p in others))))
+        others = [p for p, r in zip(meshes, rest_of(len(meshes), keep)) if r]
+        rows.append((more_parts(len(others)), *_mesh_sums(others, du, digits)))
     doc.table("mesh parts", ("part", *mesh_columns(du)), rows, right=(1, 2, 3))
     if keep is not None:
         doc.note(f"(the {len(keep)} largest of {len(meshes)} mesh parts by volume, in file order; "
                  "the last row sums the others; --json lists every part)")
 
 
-def _vec_rows(label: str, v, du: DisplayUnits, kind: str, digits: int) -> list[tuple[str, str, str]]:
+def vec_rows(label: str, v, du: DisplayUnits, kind: str, digits: int) -> list[tuple[str, str, str]]:
+    """The rows ``label x``, ``label y``, ``label z`` of a vector ``v`` (SI) of ``kind``."""
     u = du.unit(kind)
     return [(f"{label} {a}", du.show(x, kind, digits), u) for a, x in zip(AXES, v)]
 
@@ -124,21 +120,14 @@ def _matrix(doc: Doc, title: str, J, du: DisplayUnits, digits: int, products: st
     doc.note("(the tensor: off-diagonal entries are −∫xy dm; --products positive shows +∫xy dm)")
 
 
-#: the "options" table of ``inertia`` and ``principal``: (parameter, options attribute, how)
-#: rows for :func:`rbcli.render.units.echo_rows`
-INERTIA_OPTIONS = (("about", "about", "point"), ("axis", "axis", "direction"),
-                   ("omega", "omega", "angular_speed"))
-PRINCIPAL_OPTIONS = (("about", "about", "point"),)
-
-
 def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, products: str,
                 ref_label: str, *, parts: bool = True) -> None:
     """The tables of ``rbcli inertia``; ``parts=False`` leaves out the parts table (the
     report has its own, with each part's contribution)."""
     doc.heading(f"{body.name}  ({body.source})")
     rows = [("mass", du.show(r.mass, "mass", digits), du.unit("mass"))]
-    rows += _vec_rows("com", r.com, du, "length", digits)
-    rows += _vec_rows("reference", r.reference, du, "length", digits)
+    rows += vec_rows("com", r.com, du, "length", digits)
+    rows += vec_rows("reference", r.reference, du, "length", digits)
     doc.kv("mass properties", rows)
     if parts and (len(body.parts) > 1 or body.parts[0].extra):
         _parts_table(doc, body, du, digits)
@@ -154,8 +143,8 @@ def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, pro
             ],
         )
     if r.omega is not None:
-        rows = _vec_rows("ω", r.omega, du, "angular_speed", digits)
-        rows += _vec_rows("L = J·ω", r.angular_momentum, du, "angular_momentum", digits)
+        rows = vec_rows("ω", r.omega, du, "angular_speed", digits)
+        rows += vec_rows("L = J·ω", r.angular_momentum, du, "angular_momentum", digits)
         rows.append(("|L|", du.show(float(np.linalg.norm(r.angular_momentum)), "angular_momentum", digits), du.unit("angular_momentum")))
         rows.append(("T = ω·J·ω/2", du.show(r.kinetic_energy, "energy", digits), du.unit("energy")))
         rows.append(("angle between L and ω", num(r.angle_L_omega_deg, digits), "°"))
@@ -218,11 +207,15 @@ def _rest_row(parts, masses, keep, du: DisplayUnits, digits: int, meshes: bool) 
            "" if c is None else ", ".join(du.show(x, "length", digits) for x in c)]
     if meshes:
         others = [p for p, r in zip(parts, rest) if r and "volume" in p.extra]
-        row += ["", "", ""] if not others else [
-            du.show(sum(p.extra["volume"] for p in others), "volume", digits),
-            du.show(sum(p.extra["area"] for p in others), "area", digits),
-            str(sum(int(p.extra["triangles"]) for p in others))]
+        row += _mesh_sums(others, du, digits) if others else ["", "", ""]
     return tuple(row)
+
+
+def _mesh_sums(meshes: list, du: DisplayUnits, digits: int) -> list[str]:
+    """The volume, area and triangles of mesh parts summed (the row of those not shown)."""
+    return [du.show(sum(p.extra["volume"] for p in meshes), "volume", digits),
+            du.show(sum(p.extra["area"] for p in meshes), "area", digits),
+            str(sum(int(p.extra["triangles"]) for p in meshes))]
 
 
 def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, ref_label: str,

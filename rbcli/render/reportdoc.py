@@ -15,6 +15,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from rbcli.errors import NonFiniteResult
+from rbcli.render import echo
 from rbcli.render.fmt import said
 from rbcli.render.report import Figure, Report, Section
 from rbcli.render.text import Doc, Heading, Note, check_finite_doc
@@ -112,7 +113,7 @@ def _precess(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
     doc = Doc()
     rp.document(doc, body, c.result, du, digits)
-    _options_table(doc, echo_rows(c.options, body, rp.OPTIONS))
+    _options_table(doc, echo.echo_rows(c.options, body.units))
     s = _section(c, doc, body)
     _figure(s, "precess", rp.plot(body, c.result.motion, None, du),
             "The angular velocity in the body frame against time and the polhode (as rbcli precess --plot).")
@@ -124,7 +125,7 @@ def _top(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
     doc = Doc()
     rt.document(doc, c.result, du, digits)
-    _options_table(doc, echo_rows(c.options, body, rt.TOP_OPTIONS))
+    _options_table(doc, echo.echo_rows(c.options, body.units))
     s = Section(c.key, c.title)  # the top's warnings are printed by the command, not in its tables
     s.add_doc(doc, drop_heading_prefix=body.name)
     path, span = c.figure

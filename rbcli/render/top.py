@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from rbcli.render.fmt import num, said
-from rbcli.render.units import DisplayUnits
+from rbcli.render.plots import figure, style
+from rbcli.render.units import RPM, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
@@ -21,7 +22,6 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.top import TopResult
     from rbcli.core.toppath import TopState
 
-from rbcli.render.units import RPM  # noqa: E402
 EPS = float(np.finfo(float).eps)
 
 PATHS = {
@@ -34,15 +34,6 @@ PATHS = {
 
 
 # ----------------------------------------------------------------------------- tables
-
-
-#: the "options" tables of ``top`` and ``gyrocompass`` (:func:`rbcli.render.units.echo_rows`)
-TOP_OPTIONS = (("pivot", "pivot_as_given", "point"), ("spin", "spin", "angular_speed"),
-               ("theta", "theta", "angle"), ("theta_dot", "theta_dot", "angular_speed"),
-               ("phi_dot", "phi_dot", "angular_speed"), ("g", "g", "acceleration"))
-GYRO_OPTIONS = (("ratio", "ratio", "=C/A"), ("shaft", "axis_as_given", "direction"),
-                ("spin", "spin", "angular_speed"), ("latitude", "latitude", "angle"),
-                ("earth_rate", "earth_rate", "angular_speed"))
 
 
 def _deg(x: float | None, digits: int) -> str:
@@ -75,7 +66,7 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
     doc.kv("top", rows)
     piv = ", ".join(du.show(x, "length", d) for x in (p.pivot or (0.0, 0.0, 0.0)))
     ax = ", ".join(num(x, d) for x in (p.axis or (0.0, 0.0, 1.0)))
-    doc.note(f"pivot [{piv}] {L} ({said(result.options.pivot_source)}); symmetry axis, pivot to com, along [{ax}] "
+    doc.note(f"pivot [{piv}] {L} ({said(result.pivot_source)}); symmetry axis, pivot to com, along [{ax}] "
              "(body frame).")
     if result.asymmetry is not None:
         asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
@@ -89,7 +80,8 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
         ("θ0'", num(motion.theta_dot0, d), "rad/s"),
         ("φ0'", num(motion.phi_dot0, d), "rad/s"),
     ]
-    doc.kv("start" + (" (released from rest)" if result.options.released else ""), start)
+    released = motion.theta_dot0 == 0.0 and motion.phi_dot0 == 0.0
+    doc.kv("start" + (" (released from rest)" if released else ""), start)
 
     th0 = _deg(motion.theta0, d)
     rates = motion.steady_precession_rates
@@ -181,41 +173,48 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
     ])
 
     if check is not None:
-        ok = check.passed
-        doc.kv(
-            f"--verify: numerical integration (DOP853, rtol {check.rtol:g}, "
-            f"{num(check.t_end, 4)} s, {check.samples} samples)",
-            [
-                ("largest difference of the axis (chord)", f"{check.max_axis_error:.2e}", "rad"),
-                ("largest difference of θ", f"{check.max_theta_error * 180 / math.pi:.2e}", "°"),
-                ("largest difference of φ", f"{check.max_phi_error * 180 / math.pi:.2e}", "°"),
-                ("largest difference of ψ", f"{check.max_psi_error * 180 / math.pi:.2e}", "°"),
-                ("energy drift", f"{check.energy_drift:.2e}", "relative"),
-                ("drift of p_φ = L·z", f"{check.p_phi_drift:.2e}", "relative"),
-                ("drift of p_ψ = L·e3", f"{check.p_psi_drift:.2e}", "relative"),
-                ("θ range integrated", f"{_deg(check.theta_min, d)} to {_deg(check.theta_max, d)}", "°"),
-                ("mean precession integrated", num(check.mean_precession_rate, d), "rad/s"),
-                ("verdict", "PASS" if ok else "FAIL", ""),
-            ],
-        )
-        rb = result.real_body
-        if rb is not None:
-            doc.kv("--verify: the real (unsymmetrised) body against the symmetrised closed form", [
-                ("largest difference of the axis (chord)", f"{rb.max_axis_error:.2e}", "rad"),
-                ("largest difference of θ", f"{rb.max_theta_error * 180 / math.pi:.2e}", "°"),
-                ("largest difference of φ", f"{rb.max_phi_error * 180 / math.pi:.2e}", "°"),
-                ("energy drift of that integration", f"{rb.energy_drift:.2e}", "relative"),
-            ])
-            doc.note("the effect of the asymmetry on the motion over the same span (quaternion and "
-                     "ω in body axes with the full inertia tensor about the pivot, DOP853); it "
-                     "does not enter the verdict.")
-        doc.note(f"the check passes when the axis agrees within {check.axis_tolerance:g} rad and "
-                 f"the energy drifts by at most {check.energy_tolerance:g} (relative to T0 + m g l); "
-                 "integrated in space axes (axis, a body vector and L), no Euler angles.")
+        _verify(doc, result, d)
     if plot is not None:
         doc.note(f"plot written to {plot}")
     if csv is not None:
         doc.note(f"CSV written to {csv} ({rows} rows over {num(duration, d)} s)")
+
+
+def _verify(doc: Doc, result: TopResult, d: int) -> None:
+    """The tables of ``--verify``: the closed form against the integration (and the real
+    body's, for a nearly symmetric one)."""
+    check = result.verify
+    ok = check.passed
+    doc.kv(
+        f"--verify: numerical integration (DOP853, rtol {check.rtol:g}, "
+        f"{num(check.t_end, 4)} s, {check.samples} samples)",
+        [
+            ("largest difference of the axis (chord)", f"{check.max_axis_error:.2e}", "rad"),
+            ("largest difference of θ", f"{check.max_theta_error * 180 / math.pi:.2e}", "°"),
+            ("largest difference of φ", f"{check.max_phi_error * 180 / math.pi:.2e}", "°"),
+            ("largest difference of ψ", f"{check.max_psi_error * 180 / math.pi:.2e}", "°"),
+            ("energy drift", f"{check.energy_drift:.2e}", "relative"),
+            ("drift of p_φ = L·z", f"{check.p_phi_drift:.2e}", "relative"),
+            ("drift of p_ψ = L·e3", f"{check.p_psi_drift:.2e}", "relative"),
+            ("θ range integrated", f"{_deg(check.theta_min, d)} to {_deg(check.theta_max, d)}", "°"),
+            ("mean precession integrated", num(check.mean_precession_rate, d), "rad/s"),
+            ("verdict", "PASS" if ok else "FAIL", ""),
+        ],
+    )
+    rb = result.real_body
+    if rb is not None:
+        doc.kv("--verify: the real (unsymmetrised) body against the symmetrised closed form", [
+            ("largest difference of the axis (chord)", f"{rb.max_axis_error:.2e}", "rad"),
+            ("largest difference of θ", f"{rb.max_theta_error * 180 / math.pi:.2e}", "°"),
+            ("largest difference of φ", f"{rb.max_phi_error * 180 / math.pi:.2e}", "°"),
+            ("energy drift of that integration", f"{rb.energy_drift:.2e}", "relative"),
+        ])
+        doc.note("the effect of the asymmetry on the motion over the same span (quaternion and "
+                 "ω in body axes with the full inertia tensor about the pivot, DOP853); it "
+                 "does not enter the verdict.")
+    doc.note(f"the check passes when the axis agrees within {check.axis_tolerance:g} rad and "
+             f"the energy drifts by at most {check.energy_tolerance:g} (relative to T0 + m g l); "
+             "integrated in space axes (axis, a body vector and L), no Euler angles.")
 
 
 def asymmetry_note(doc: Doc, sym, tol: float, effect: float, du: DisplayUnits, d: int, what: str,
@@ -259,8 +258,6 @@ def plot(result: TopResult, state: TopState, duration: float):
     """The path of the axis tip: θ against φ (up is up) and the view from above, θ1 and
     θ2 marked; ``state`` is the motion sampled over ``duration`` seconds from the start
     (:meth:`rbcli.api.top.TopResult.sample`)."""
-    from rbcli.render.plots import figure, style
-
     motion = result.motion
     theta, phi = state.theta, state.phi
     th_d, ph_d = np.degrees(theta), np.degrees(phi)
@@ -316,7 +313,7 @@ def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits:
             ("A, across the spin axis", du.show(result.A, "inertia", d), J),
             ("C/A", num(res.C_over_A, d), ""),
         ])
-        doc.note(f"spin axis [{', '.join(num(x, d) for x in result.options.axis)}] ({said(result.options.axis_source)}).")
+        doc.note(f"spin axis [{', '.join(num(x, d) for x in result.axis)}] ({said(result.axis_source)}).")
         if result.asymmetry is not None:
             asymmetry_note(doc, result.asymmetry, result.options.symmetry_tol, result.asymmetry_effect,
                             du, d, "rotor", "A")
