@@ -301,9 +301,13 @@ def _check_scale(rotor, o: Options) -> None:
 def _criticals(rotor, crits, forcing, rng) -> list[CriticalSpeed]:
     """The undamped critical speeds, their damped crossings, whether the unbalance drives
     them."""
-    rows = []
-    for c in crits:
-        dc = W.damped_crossing(rotor, c)
+    rows, crossings = [], [W.damped_crossing(rotor, c) for c in crits]
+    for i, c in enumerate(crits):  # two modes followed to one crossing: the nearer keeps it
+        dc = crossings[i]
+        if dc is not None and any(d is not None and o.order == c.order and d[0] == dc[0]
+                                  and abs(o.speed - d[0]) < abs(c.speed - dc[0])
+                                  for o, d in zip(crits, crossings)):
+            dc = None
         rows.append(CriticalSpeed(
             speed=c.speed, order=c.order, mode=c.shape.kind, whirl=c.whirl, node=c.shape.node,
             damped_speed=None if dc is None else float(dc[0]),

@@ -57,7 +57,6 @@ class BearingEntry:
     values : dict — the constant coefficients given (SI), keys among kxx ... cyy
     speeds : tuple of float — rad/s, the table's speeds (ascending); empty without one
     rows : tuple of tuples of 8 floats — the table's coefficients (SI, COLUMNS[1:] order)
-    columns : tuple of str — the coefficients the table gives
     where : Location — the entry in the body file
     table : str — where the table came from (the CSV file, or the body file)
     """
@@ -67,7 +66,6 @@ class BearingEntry:
     values: dict
     speeds: tuple
     rows: tuple
-    columns: tuple
     where: Location
     table: str = ""
 
@@ -167,7 +165,7 @@ def _yaml_table(ctx: _Ctx, node: ys.SeqNode, what: str, override: dict) -> tuple
         rows.append([ctx.number(v, _kind_of(c), f"{what}[{i}].{c}", override)
                      for c, v in zip(COLUMNS, r.items)])
         places.append((r, 0))
-    return (*_finish(ctx, what, rows, places), COLUMNS[1:])
+    return _finish(ctx, what, rows, places)
 
 
 def _kind_of(column: str) -> str:
@@ -236,8 +234,7 @@ def _csv_table(ctx: _Ctx, node: ys.ScalarNode, what: str, override: dict) -> tup
         places.append((None, n))
     if head is None:
         raise InputError(f"{path}: an empty table (a header row and two rows or more)", Location(path))
-    speeds, table = _finish(sub, path, rows, places)
-    return speeds, table, tuple(name for _, name, _ in head if name != "speed"), path
+    return (*_finish(sub, path, rows, places), path)
 
 
 def _entry(ctx: _Ctx, i: int, node: ys.Node) -> BearingEntry:
@@ -265,15 +262,15 @@ def _entry(ctx: _Ctx, i: int, node: ys.Node) -> BearingEntry:
     for c in COLUMNS[1:]:
         if c in get:
             values[c] = ctx.number(get[c], _kind_of(c), f"{what}.{c}", override)
-    speeds, rows, columns, source = (), (), (), ""
+    speeds, rows, source = (), (), ""
     if "table" in get:
         t = get["table"]
         if values:
             raise ctx.error(t, f"{what}: give the coefficients as numbers or as a table, not both")
         if isinstance(t, ys.ScalarNode) and isinstance(t.value, str) and not isinstance(t.value, bool):
-            speeds, rows, columns, source = _csv_table(ctx, t, f"{what}.table", override)
+            speeds, rows, source = _csv_table(ctx, t, f"{what}.table", override)
         elif isinstance(t, ys.SeqNode):
-            speeds, rows, columns = _yaml_table(ctx, t, f"{what}.table", override)
+            speeds, rows = _yaml_table(ctx, t, f"{what}.table", override)
             source = ctx.file
         else:
             raise ctx.error(t, f"{what}.table is a CSV file name or a list of rows [{', '.join(COLUMNS)}]")
@@ -282,7 +279,7 @@ def _entry(ctx: _Ctx, i: int, node: ys.Node) -> BearingEntry:
                                     "c" if k in ("cxx", "cyy") and "c" in get else k])
     return BearingEntry(name.value if name is not None else f"bearing {i + 1}",
                         ctx.number(get["at"], "length", f"{what}.at", {}), values, speeds, rows,
-                        columns, ys.where(ctx.file, m.mark), source)
+                        ys.where(ctx.file, m.mark), source)
 
 
 def section(text: str, file: str, units: dict, base_dir: str | os.PathLike[str]) -> tuple[BearingEntry, ...] | None:

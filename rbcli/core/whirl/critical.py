@@ -168,8 +168,9 @@ def critical_speeds(rotor: Rotor, orders: tuple[int, ...] = (1,)) -> tuple[list[
 
 def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | None:
     """Where the damped whirl frequency of ``crit``'s mode equals ``order`` times the
-    speed, and the mode there; None when no such speed lies within [crit/4, 4 crit]
-    (a heavily damped mode) or the bearing tables' speeds.
+    speed, and the mode there (followed by its shape, and on isotropic bearings by its
+    whirl); None when no such speed lies within [crit/4, 4 crit] (a heavily damped mode) or
+    the bearing tables' speeds.
 
     Without damping and cross-coupling it is ``crit.speed`` itself (exact). Otherwise the
     root of ``g(Omega) = |Im lambda(Omega)| - n Omega`` is bracketed by stepping out from
@@ -179,14 +180,16 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
     n, W0 = crit.order, crit.speed
     lo, hi = rotor.speed_span()
 
+    whirl = crit.whirl if rotor.isotropic else None  # elliptic orbits: a label, not an identity
+
     def mode(x: float) -> Mode:
-        return follow(rotor, x, crit.vector, whirl=crit.whirl)
+        return follow(rotor, x, crit.vector, whirl=whirl)
 
     if rotor.conservative:  # the undamped crossing itself
         return W0, mode(W0)
 
     def g(x: float) -> float:
-        return abs(followed(rotor, [x], crit.vector, whirl=crit.whirl, classify=False)[0][0].imag) - n * x
+        return abs(followed(rotor, [x], crit.vector, whirl=whirl, classify=False)[0][0].imag) - n * x
 
     g0 = g(W0)
     if g0 == 0.0:
@@ -198,7 +201,7 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
     while h <= 3.0 * W0:
         trials += [x for x in (W0 - h, W0 + h) if 0.25 * W0 <= x <= 4.0 * W0 and lo <= x <= hi and x > 0.0]
         h *= 1.5
-    lam, _, _ = followed(rotor, trials, crit.vector, whirl=crit.whirl, classify=False)
+    lam, _, _ = followed(rotor, trials, crit.vector, whirl=whirl, classify=False)
     for x, gx in zip(trials, np.abs(lam.imag) - n * np.array(trials)):
         if gx == 0.0:
             return x, mode(x)
