@@ -433,7 +433,8 @@ _SPEED = "a bare number is rad/s, or the body's units' angular_speed"
 WHIRL = (
     Param("bearings", "Bearing positions z1,z2[,...] along the shaft, two or more at distinct "
           "places (a bare number in the body's length unit, m by default; a unit after the last "
-          "number applies to all, e.g. '0,200 mm').", "values", "length", _UP_TO),
+          "number applies to all, e.g. '0,200 mm'). Default: the body file's bearings: section "
+          "(whose coefficients the options below override).", "values", "length", _UP_TO),
     Param("stiffness", f"Bearing stiffness (N/m, or with units, e.g. '200 N/mm'), {_LIST}; the x "
           "stiffness when {stiffness_y} is given, else both directions.", "values", "stiffness",
           _UP_TO, echo="each:N/m"),

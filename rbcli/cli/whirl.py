@@ -16,8 +16,8 @@ mass: Ip about the shaft, It across it) on two or more linear bearings along the
 (--shaft through --through, as for balance), each a 2x2 stiffness and damping: kxx, kxy,
 kyx, kyy and cxx, cxy, cyx, cyy, constant or tabled against speed (an oil film, a seal).
 The body file's bearings: section gives them (positions, coefficients or tables, names:
-see the man page), so that 'rbcli whirl rotor.yaml' needs no options; --bearings z1,z2
-[,...], --stiffness, --stiffness-y, the cross-coupled terms and --damping override it.
+see the man page), so that 'rbcli whirl rotor.yaml' needs no options; --bearings
+z1,z2[,...], --stiffness, --stiffness-y, the cross-coupled terms and --damping override it.
 Four degrees of freedom: the translations and tilts of the shaft axis at the centre of
 mass, coupled by the gyroscopic moment Ip Omega. Gravity is left out of the linear modes.
 
