@@ -41,13 +41,6 @@ WHIRL_STYLE = {
 }
 
 
-def _speed(x: float | None, digits: int) -> str:
-    """A speed as 'rpm (rad/s)'."""
-    if x is None:
-        return "—"
-    return f"{num(x * RPM, digits)} rpm ({num(x, digits)} rad/s)"
-
-
 # ----------------------------------------------------------------------------- tables
 
 
