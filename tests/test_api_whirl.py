@@ -262,3 +262,64 @@ def test_every_json_key_is_an_attribute_with_its_value():
         assert jsonable(getattr(r, key)) == value, key
     assert r.critical_speeds[0].speed == d["critical_speeds"][0]["speed"]
     assert r.margins.checks[0].required_margin_percent == d["margins"]["checks"][0]["required_margin_percent"]
+
+
+def test_amplification_factor_by_half_power_where_it_exists_else_by_the_damping_ratio():
+    """API 684: AF = Nc/(N2 - N1) where the response falls to 1/sqrt(2) of the peak on both
+    sides before rising into another peak; where the bands overlap, AF = 1/(2 zeta) of the
+    nearest driven critical speed's mode at its damped crossing (the basis said). Heavily
+    damped (zeta ~ 0.22): AF < 2.5, critically damped, no margin needed."""
+    body = rbcli.load_text(CYL)
+    res = rbcli.whirl(body, bearings="-0.2,0.2", stiffness=1e6, damping=800, unbalance="50 g*mm@0",
+                      unbalance_planes="0.15", speed="3000 rpm", speed_range="0,700")
+    by_ratio = [p for p in res.response.peaks if p.basis == "damping ratio"]
+    assert by_ratio and all(p.half_power is None for p in by_ratio)
+    for p in by_ratio:
+        crit = min((c for c in res.critical_speeds if c.order == 1 and c.excited),
+                   key=lambda c: abs(c.damped_speed - p.speed))
+        assert p.amplification_factor == pytest.approx(0.5 / crit.damping_ratio, rel=1e-12)
+        assert p.mode == crit.mode
+    checks = {(m.bearing, m.speed): m for m in res.margins.checks}
+    for p in res.response.peaks:
+        m = checks[(p.bearing, p.speed)]
+        assert m.basis == p.basis and m.amplification_factor == p.amplification_factor
+    heavy = rbcli.whirl(body, bearings="-0.2,0.2", stiffness=1e6, damping=2200, unbalance="50 g*mm@0",
+                        unbalance_planes="0.3", speed="3000 rpm", speed_range="0,700")
+    assert all(c.damping_ratio > 0.2 for c in heavy.critical_speeds)
+    assert heavy.margins.checks and all(m.amplification_factor < 2.5 and m.required_margin_percent == 0.0
+                                        and m.passed for m in heavy.margins.checks)
+
+
+def test_bearings_from_the_body_file_and_options_over_them(cli):
+    """examples/journal_rotor.yaml needs no options (its bearings: section and tables); the
+    API is the command; an option overrides the coefficients it names at every speed and
+    keeps the others; another number of --bearings drops the section."""
+    path = EXAMPLES / "journal_rotor.yaml"
+    r = cli("whirl", str(path), "--points", "21", "--json")
+    res = rbcli.whirl(rbcli.load(path), points=21)
+    assert as_cli(res.to_json()) == {k: v for k, v in r.json().items() if k != "file"}
+    assert [b.name for b in res.bearings] == ["drive end", "non-drive end"]
+    t = res.bearings[0].table
+    assert t is not None and t.source.endswith("journal_bearing.csv") and len(t.speeds) == 12
+    over = rbcli.whirl(rbcli.load(path), points=21, cross_stiffness=0, damping_xy="0")
+    for b, ob in zip(res.bearings, over.bearings):
+        assert list(ob.table.kxy) == [0.0] * 12 and list(ob.table.kyx) == [0.0] * 12
+        assert list(ob.table.cxy) == [0.0] * 12
+        assert list(ob.table.kxx) == list(b.table.kxx) and list(ob.table.cyx) == list(b.table.cyx)
+    plain = rbcli.whirl(rbcli.load(path), bearings="100,500,900 mm", stiffness=2e7, points=21)
+    assert all(b.table is None and b.name.startswith("bearing ") for b in plain.bearings)
+    with pytest.raises(InputError, match="needs the bearing stiffness"):
+        rbcli.whirl(rbcli.load(path), bearings="100,500,900 mm", points=21)
+    data = rbcli.load_data({"parts": [{"shape": "cylinder", "radius": 0.1, "length": 0.6, "mass": 50}],
+                            "bearings": [{"at": -0.2, "k": 1e6}, {"at": 0.2, "k": 1e6}]})
+    assert [round(c.speed, 3) for c in rbcli.whirl(data).critical_speeds] == [200.0, 200.0, 206.559, 241.209]
+
+
+def test_thresholds_and_critical_speeds_do_not_move_with_points():
+    """Roots, not grid points: the onset of oil whip and the critical speeds are the same for
+    21 and 401 speeds (to the root solve's 1e-12 of the speed)."""
+    body = rbcli.load(EXAMPLES / "journal_rotor.yaml")
+    a, b = rbcli.whirl(body, points=21), rbcli.whirl(body, points=401)
+    assert a.stability.threshold_speed == pytest.approx(b.stability.threshold_speed, rel=1e-11)
+    assert [t.change for t in a.stability.thresholds] == [t.change for t in b.stability.thresholds] == ["onset"]
+    assert [c.speed for c in a.critical_speeds] == pytest.approx([c.speed for c in b.critical_speeds], rel=1e-11)

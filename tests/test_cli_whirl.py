@@ -110,5 +110,33 @@ def test_report_section_from_a_result():
     assert any(t.startswith("critical speeds") for t in titles)
     assert any(t.startswith("separation margins") for t in titles)
     figs = [i for i in s.items if isinstance(i, Figure)]
-    assert [f.name for f in figs] == ["whirl-campbell", "whirl-response"]
+    assert [f.name for f in figs] == ["whirl-campbell", "whirl-response", "whirl-map"]
     assert all(f.svg.lstrip().startswith("<?xml") for f in figs)
+
+
+def test_figures_say_what_the_table_says(tmp_path, cli):
+    """Driven critical speeds drawn on top of undriven ones; coincident critical speeds one
+    mark and one label; legends below the axes (never over the data); --plot-map writes the
+    map (log-log, plain tick labels)."""
+    from rbcli.render import whirl as rw
+
+    # the sheet's cylinder with an unbalance: forward and backward cylindrical at 200 rad/s
+    body = rbcli.load_text("{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}")
+    res = rbcli.whirl(body, bearings="-0.2,0.2", stiffness=1e6, damping=100,
+                      unbalance="5 g*mm@0,5 g*mm@0", unbalance_planes="-0.3,0.3")
+    fig = rw.campbell_figure(res)
+    ax = fig.axes[0]
+    marks = [ln for ln in ax.lines if ln.get_marker() in ("o", "s")]
+    driven = [ln for ln in marks if ln.get_markerfacecolor() in ("black", (0, 0, 0, 1))]
+    assert driven and all(d.get_zorder() > m.get_zorder() for d in driven for m in marks if m not in driven)
+    labels = [t.get_text() for t in ax.texts if t.get_text()[:1].isdigit()]
+    assert len(labels) == len(set(labels)) and any("(×2)" in t for t in labels)  # 200 twice: one label
+    assert ax.get_legend() is None and fig.legends  # the legend is the figure's, outside the axes
+    assert rw.response_figure(res).axes[0].get_legend() is None
+    r = cli("whirl", str(EXAMPLES / "journal_rotor.yaml"), "--points", "21", "--plot-map", str(tmp_path / "m.svg"))
+    assert r.code == 0 and (tmp_path / "m.svg").stat().st_size > 1000
+    m = rw.map_figure(rbcli.whirl(rbcli.load(EXAMPLES / "journal_rotor.yaml"), points=21)).axes[0]
+    assert m.get_xscale() == m.get_yscale() == "log"
+    m.figure.canvas.draw()  # tick labels are plain numbers (the house's text escapes mathtext's $)
+    ticks = [t.get_text() for t in m.get_xticklabels() + m.get_yticklabels() if t.get_text()]
+    assert ticks and not any("$" in t for t in ticks)

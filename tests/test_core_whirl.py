@@ -26,6 +26,7 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from rbcli.core import whirl as W
+from rbcli.core.whirl.stability import stability
 from rbcli.core.whirl.response import amplitude, amplitude_slope
 
 # Eigenvalues of a 4x4 / 8x8 companion matrix carry round-off of order eps * |A| relative to
@@ -279,13 +280,16 @@ def test_onset_speed_of_instability_is_a_root():
     rotor = W.Rotor(m, It, Ip, 0.0, (W.Bearing(-a, k, k, q, -q, c, c), W.Bearing(a, k, k, q, -q, c, c)))
     w = q / c
     W_th = (It * w * w - 2 * a * a * k) / (Ip * w)
-    cb = W.campbell(rotor, np.linspace(0.0, 1000.0, 51))
-    onsets = W.onset_speeds(rotor, cb)
-    assert len(onsets) == 1
-    assert onsets[0][0] == pytest.approx(W_th, rel=RTOL)  # Brent on Re(lambda): ~1e-14
-    assert onsets[0][2].whirl == "forward" and onsets[0][2].shape.kind == "conical"
-    growing = [any(md.growing for md in ms) for ms in cb.modes]
-    assert growing[0] and not growing[-1]
+    for n in (51, 7, 400):  # the threshold does not move with the grid
+        cb = W.campbell(rotor, np.linspace(0.0, 1000.0, n))
+        st = stability(cb, W.track(cb))
+        assert len(st.thresholds) == 1
+        t = st.thresholds[0]
+        assert t.speed == pytest.approx(W_th, rel=RTOL)  # Brent on Re(lambda): ~1e-14
+        assert t.change == "recovery" and st.from_start == (t.branch,) and st.threshold == 0.0
+        assert t.mode.whirl == "forward" and t.mode.shape.kind == "conical"
+        assert st.growing(0.0, 0.9 * W_th) and st.growing(0.99 * W_th, 2 * W_th)
+        assert not st.growing(1.01 * W_th, 1000.0)
 
 
 # --------------------------------------------------------------------- response
@@ -394,12 +398,12 @@ def test_backward_modes_are_not_driven_on_isotropic_bearings():
     forcing = W.Forcing(complex(1e-3, 0), complex(0, 2e-4))
     crits, _ = W.critical_speeds(rotor)
     for c in crits:
-        e = excitation(rotor, forcing, c.speed, c.q)
+        e = excitation(rotor, forcing, c.speed, c.eigenvalue, c.whirl)
         assert (e > EXCITED_RTOL) == (c.whirl == "forward"), (c.whirl, e)
     # a pure static unbalance on a symmetric rotor does not drive the conical modes
     sym = sym_rotor(50.0, 1.625, 0.25, 1e6, 0.2)
     for c in W.critical_speeds(sym)[0]:
-        e = excitation(sym, W.Forcing(1e-3 + 0j, 0j), c.speed, c.q)
+        e = excitation(sym, W.Forcing(1e-3 + 0j, 0j), c.speed, c.eigenvalue, c.whirl)
         assert (e > EXCITED_RTOL) == (c.whirl == "forward" and c.shape.kind == "cylindrical")
 
 

@@ -419,6 +419,12 @@ def _operating_speed(v: tuple[float, ...], given: Any) -> str | None:
     return None
 
 
+def _stiffness_range(v: tuple[float, float], given: Any) -> str | None:
+    if not 0.0 < v[0] < v[1] or v[1] > 1e30:
+        return (f"give kmin,kmax with 0 < kmin < kmax <= 1e30 N/m, got '{literal(as_text(given))}'")
+    return None
+
+
 _LIST = "one value for every bearing, or one per bearing, comma-separated"
 _UP_TO = tuple(range(1, MAX_BEARINGS + 1))
 _SPEED = "a bare number is rad/s, or the body's units' angular_speed"
@@ -427,7 +433,8 @@ _SPEED = "a bare number is rad/s, or the body's units' angular_speed"
 WHIRL = (
     Param("bearings", "Bearing positions z1,z2[,...] along the shaft, two or more at distinct "
           "places (a bare number in the body's length unit, m by default; a unit after the last "
-          "number applies to all, e.g. '0,200 mm').", "values", "length", _UP_TO),
+          "number applies to all, e.g. '0,200 mm'). Default: the body file's bearings: section "
+          "(whose coefficients the options below override).", "values", "length", _UP_TO),
     Param("stiffness", f"Bearing stiffness (N/m, or with units, e.g. '200 N/mm'), {_LIST}; the x "
           "stiffness when {stiffness_y} is given, else both directions.", "values", "stiffness",
           _UP_TO, echo="each:N/m"),
@@ -436,11 +443,20 @@ WHIRL = (
     Param("cross_stiffness", f"Cross-coupled stiffness kxy = -kyx (a bare number is N/m; or with "
           f"units), {_LIST}: the destabilising follower force of fluid films and seals.", "values",
           "stiffness", _UP_TO, echo="each:N/m (kyx = -kxy)"),
+    Param("stiffness_xy", f"Cross-coupled stiffness kxy alone (N/m; or with units), {_LIST}: with "
+          "{stiffness_yx}, the full 2x2 stiffness of a fluid-film bearing.", "values", "stiffness",
+          _UP_TO, echo="each:N/m"),
+    Param("stiffness_yx", f"Cross-coupled stiffness kyx alone (N/m; or with units), {_LIST}.",
+          "values", "stiffness", _UP_TO, echo="each:N/m"),
     Param("damping", f"Bearing damping (N s/m, or with units, e.g. '2 N*s/mm'), {_LIST}; the x "
           "damping when {damping_y} is given. Default: none.", "values", "damping", _UP_TO,
           echo="each:N s/m"),
     Param("damping_y", f"Bearing damping in y (a bare number is N s/m; or with units), {_LIST}.",
           "values", "damping", _UP_TO, echo="each:N s/m"),
+    Param("damping_xy", f"Cross-coupled damping cxy (N s/m; or with units), {_LIST}.", "values",
+          "damping", _UP_TO, echo="each:N s/m"),
+    Param("damping_yx", f"Cross-coupled damping cyx (N s/m; or with units), {_LIST}.", "values",
+          "damping", _UP_TO, echo="each:N s/m"),
     Param("speed_range", f"Speeds a,b of the Campbell diagram and the response, 0 <= a < b ({_SPEED}"
           "; or e.g. '0,6000 rpm'). Default: 0 to 1.25 times the highest critical speed or "
           "operating speed.", "values", "angular_speed", (2,), valid=_range, echo_default=True),
@@ -448,6 +464,9 @@ WHIRL = (
           "operating speeds are added).", "count"),
     Param("orders", "Orders n of the critical speeds, where a whirl frequency is n times the speed: "
           "1, or e.g. 1,2. Default: 1.", "ints", counts=(10 * MAX_ORDER,), echo="list:× speed"),
+    Param("map_stiffness", "Stiffness kmin,kmax of the undamped critical speed map (N/m; or with "
+          "units), 0 < kmin < kmax. Default: whole decades from a tenth of the softest bearing to "
+          "ten times the stiffest.", "values", "stiffness", (2,), valid=_stiffness_range),
     Param("speed", f"The operating speed, or min,max of the operating range ({_SPEED}; or e.g. "
           "'1480 rpm'): separation margins (API 617 / 684) and stability there.", "values",
           "angular_speed", (1, 2), valid=_operating_speed),

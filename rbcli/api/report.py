@@ -178,6 +178,7 @@ class ReportOptions:
         from rbcli.api import options as op
         from rbcli.api import precess, top
         from rbcli.api import whirl
+        from rbcli.api.whirlbearings import entries
 
         kw = dict(shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
                   grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega,
@@ -214,7 +215,7 @@ class ReportOptions:
                           "or rotation {speed} option")
         # the rotor on its bearings: with a bearing stiffness
         w_opts = w_err = w_skip = None
-        if stiffness is not None:
+        if stiffness is not None or entries(body) is not None:  # options, or the body's bearings:
             w_opts, w_err = _section_parse(lambda: whirl.parse(
                 body, bearings=bearings, stiffness=stiffness, damping=damping, speed=rotor_speed,
                 shaft=shaft, through=through, symmetry_tol=symmetry_tol))

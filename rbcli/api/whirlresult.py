@@ -9,15 +9,17 @@ ending in ``_deg``; margins in % under keys ending in ``_percent``.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass
 from typing import Any
 
-from rbcli.api.result import Result
+from rbcli.api.result import Result, jsonable
 from rbcli.errors import ExitStatus
 
-__all__ = ["CONVENTIONS", "WhirlResult", "RotorData", "BearingData", "Mode", "Campbell",
-           "CriticalSpeed", "NoCrossing", "Stability", "UnbalanceRow", "ResponseBearing",
-           "PeakRow", "AtSpeed", "ResponseData", "MarginCheck", "Margins", "readonly", "to_json"]
+__all__ = ["CONVENTIONS", "WhirlResult", "RotorData", "BearingData", "BearingTableData", "Mode",
+           "Campbell", "CriticalSpeed", "NoCrossing", "ThresholdRow", "Stability", "UnbalanceRow",
+           "ResponseBearing", "PeakRow", "AtSpeed", "ResponseData", "MarginCheck", "Margins",
+           "CriticalMap", "readonly", "to_json"]
 
 #: the conventions every output states (JSON ``conventions``)
 CONVENTIONS: dict[str, str] = {
@@ -28,8 +30,13 @@ CONVENTIONS: dict[str, str] = {
              "oscillation (overdamped)",
     "positions": "m along the shaft, z = 0 at the shaft point (through)",
     "stiffness": "N/m; x and y are the shaft frame's axes with the rotor at angle 0 (x on the "
-                 "0 deg mark); the bearings do not turn",
-    "damping": "N s/m",
+                 "0 deg mark); the bearings do not turn; F_x = -(kxx d_x + kxy d_y), F_y = "
+                 "-(kyx d_x + kyy d_y)",
+    "damping": "N s/m, likewise on the velocities",
+    "tables": "a bearing's coefficients against speed are interpolated linearly in the speed "
+              "between rows, never extrapolated (speeds outside every table are refused)",
+    "forward_share": "the forward part of a mode's whirl by kinetic weight: 1 forward circular, "
+                     "0 backward circular, 0.5 a straight line; per bearing, of its orbit",
     "angles": "deg in the rotor frame, from the 0 deg mark in the direction of rotation (as "
               "balance); a phase is the angle of the high spot when the motion is largest",
     "amplitudes": "displacement: m, semi-major axis of the orbit; force: N, semi-major axis "
@@ -77,7 +84,7 @@ def _hidden(**default: Any) -> Any:
     return dataclasses.field(metadata={"json": False}, **default)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class RotorData(_Json):
     """The rigid rotor taken from the body (JSON ``rotor``).
 
@@ -102,22 +109,44 @@ class RotorData(_Json):
     couple_unbalance_angle_deg: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
+class BearingTableData(_Json):
+    """A bearing's coefficients against speed: speeds (S, rad/s); kxx, kxy, kyx, kyy (S,
+    N/m); cxx, cxy, cyx, cyy (S, N s/m); source (the file it came from)."""
+
+    speeds: Any
+    kxx: Any
+    kxy: Any
+    kyx: Any
+    kyy: Any
+    cxx: Any
+    cxy: Any
+    cyx: Any
+    cyy: Any
+    source: str
+
+
+@dataclass(frozen=True, eq=False)
 class BearingData(_Json):
     """One bearing: plane (m along the shaft), stiffness [kxx, kyy] N/m, cross_stiffness
-    [kxy, kyx] N/m, damping [cxx, cyy] N s/m."""
+    [kxy, kyx] N/m, damping [cxx, cyy] N s/m (at modes_speed when they change with the
+    speed), name, cross_damping [cxy, cyx] N s/m, table (null when constant)."""
 
     plane: float
     stiffness: tuple[float, float]
     cross_stiffness: tuple[float, float]
     damping: tuple[float, float]
+    name: str
+    cross_damping: tuple[float, float]
+    table: BearingTableData | None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Mode(_Json):
     """A whirl mode at one speed: frequency (rad/s, fixed frame), whirl, kind
     (cylindrical, conical, mixed), node (m along the shaft, null for none), damping_ratio,
-    log_decrement (null when not oscillating), stable (it does not grow)."""
+    log_decrement (null when not oscillating), stable (it does not grow), forward_share
+    (overall) and bearing_forward_share (of each bearing's orbit)."""
 
     frequency: float
     whirl: str
@@ -126,29 +155,33 @@ class Mode(_Json):
     damping_ratio: float
     log_decrement: float | None
     stable: bool
+    forward_share: float
+    bearing_forward_share: tuple[float, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Campbell(_Json):
     """The Campbell diagram: speeds (N, rad/s); per mode (numbered by frequency at each
     speed, lowest first) frequencies (4 x N, rad/s), whirl, kind, damping_ratio,
-    log_decrement (null where a mode does not oscillate)."""
+    log_decrement (null where a mode does not oscillate); branch (4 x N): the mode, followed
+    by its shape, that each entry belongs to (1-4, numbered by frequency at the first speed)."""
 
     speeds: Any
     frequencies: Any
-    whirl: tuple[tuple[str, ...], ...]
+    whirl: Any
     damping_ratio: Any
-    log_decrement: tuple[tuple[float | None, ...], ...]
-    kind: tuple[tuple[str, ...], ...]
+    log_decrement: Any
+    kind: Any
+    branch: Any
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class CriticalSpeed(_Json):
     """A critical speed: speed (rad/s, undamped, exact), order (the n× line), mode (its
     kind), whirl, node (m or null); damped_speed (rad/s, where the damped whirl frequency
     crosses the line; null if it does not), damping_ratio and log_decrement there;
     in_range (inside the speed range); excited (the unbalance drives it: order 1 only,
-    null otherwise)."""
+    null otherwise); forward_share (of the mode there)."""
 
     speed: float
     order: int
@@ -160,13 +193,14 @@ class CriticalSpeed(_Json):
     log_decrement: float | None
     in_range: bool
     excited: bool | None
+    forward_share: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class NoCrossing(_Json):
     """A branch that never meets its n× line: order, whirl, mode, reason
     ("gyroscopic": n It < Ip; "coincident": n It = Ip, met only at infinite speed;
-    "complex": cross-coupled stiffness, no real crossing), and the moments."""
+    "range": no crossing between the speeds searched [lo, hi] rad/s), and the moments."""
 
     order: int
     whirl: str
@@ -174,16 +208,17 @@ class NoCrossing(_Json):
     reason: str
     polar_moment: float
     transverse_moment: float
+    searched: tuple[float, float] | None
 
     @property
     def explanation(self) -> str:
         """The reason in words."""
         n = self.order
         line = "1×" if n == 1 else f"{n}×"
-        if self.reason == "complex":
-            return (f"no undamped {self.whirl} critical speed of order {n} for one mode: the "
-                    "cross-coupled stiffness leaves no real crossing of the "
-                    f"{line} line (the mode is driven unstable rather than resonant)")
+        if self.reason == "range":
+            lo, hi = self.searched or (0.0, 0.0)
+            return (f"the {self.whirl} {self.mode} whirl does not meet the {line} line between "
+                    f"{lo:.6g} and {hi:.6g} rad/s (the speeds searched)")
         nIt = f"{n} It = {n * self.transverse_moment:.6g}" if n != 1 else f"It = {self.transverse_moment:.6g}"
         rel = "=" if self.reason == "coincident" else ">"
         return (f"the forward conical whirl never meets the {line} line: Ip = "
@@ -196,21 +231,42 @@ class NoCrossing(_Json):
         return {"explanation": self.explanation}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
+class ThresholdRow(_Json):
+    """A mode's growth rate crossing zero (Re lambda = 0, a root solve): speed (rad/s),
+    change ("onset": it starts growing as the speed rises; "recovery": it stops), mode
+    (1-4: the mode followed by its shape, numbered by frequency at the range's start),
+    whirl, kind and frequency (rad/s) there."""
+
+    speed: float
+    change: str
+    mode: int
+    whirl: str
+    kind: str
+    frequency: float
+
+
+@dataclass(frozen=True, eq=False)
 class Stability(_Json):
     """stable_in_range: no mode grows anywhere in the speed range; onset_speeds: speeds
     (rad/s) in the range where a mode starts or stops growing; least_damping_ratio and
     least_damping_speed: the smallest damping ratio over the range and where;
-    stable_at_speed: at the operating speed (null without one)."""
+    stable_at_speed: no mode grows at the operating speed or in the operating range (null
+    without one); threshold_speed: the threshold speed of instability (the first onset,
+    or the range's start when a mode grows there; null when none grows); unstable_from_start;
+    thresholds: each onset and recovery."""
 
     stable_in_range: bool
     onset_speeds: tuple[float, ...]
     least_damping_ratio: float
     least_damping_speed: float
     stable_at_speed: bool | None
+    threshold_speed: float | None
+    unstable_from_start: bool
+    thresholds: tuple[ThresholdRow, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class UnbalanceRow(_Json):
     """An unbalance driving the response: plane (m along the shaft), amount (kg m),
     angle_deg (rotor frame)."""
@@ -220,7 +276,7 @@ class UnbalanceRow(_Json):
     angle_deg: float
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ResponseBearing(_Json):
     """One bearing's response over the speeds: plane; displacement and displacement_minor
     (m, the orbit's semi-axes), displacement_phase_deg (high spot, rotor frame); force (N,
@@ -234,12 +290,15 @@ class ResponseBearing(_Json):
     force_phase_deg: Any
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class PeakRow(_Json):
     """A response peak: bearing (1-based) and its plane, speed (rad/s), amplitude (m),
-    amplification_factor (half-power, null when not defined or undamped), half_power
+    amplification_factor (by basis; null when not defined or undamped), half_power
     [N1, N2] rad/s (null when not defined), mode and whirl of the nearest critical speed,
-    undamped (the peak is an undamped critical speed: infinite response)."""
+    undamped (the peak is an undamped critical speed: infinite response), basis (how the
+    AF was found: "half-power", "damping ratio" (AF = 1/(2 zeta) of the nearest driven
+    critical speed's mode, where the half-power band runs into another peak), "undamped",
+    "undefined")."""
 
     bearing: int
     plane: float
@@ -250,9 +309,10 @@ class PeakRow(_Json):
     mode: str | None
     whirl: str | None
     undamped: bool
+    basis: str
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class AtSpeed(_Json):
     """A bearing at the (maximum) operating speed: displacement (m) and its phase, force (N)
     and its phase; rigid_force: the force on rigid bearings at that speed (balance's, two
@@ -266,7 +326,7 @@ class AtSpeed(_Json):
     rigid_force: float | None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ResponseData(_Json):
     """The unbalance response: source ("body": its own static and couple unbalance, or
     "planes": the unbalances given), unbalance (the rows given; empty for the body),
@@ -281,13 +341,14 @@ class ResponseData(_Json):
     at_speed: tuple[AtSpeed, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class MarginCheck(_Json):
     """A critical speed (a response peak) judged by the API rule: bearing (1-based, null
     for an undamped critical speed) and plane, speed (rad/s), mode, amplification_factor,
-    basis (how the AF was found: "half-power"; "undamped": no damping, AF infinite;
-    "undefined": the response does not fall to 1/sqrt(2) of the peak between it and the
-    next one; both of the last judged as AF infinite, the full margin), position ("below",
+    basis (how the AF was found: "half-power"; "damping ratio": AF = 1/(2 zeta), the
+    response not falling to 1/sqrt(2) of the peak before the next one; "undamped": no
+    damping, AF infinite; "undefined": neither, judged as AF infinite, the full margin),
+    position ("below",
     "above" or "within" the operating range), margin_percent, required_margin_percent,
     passed."""
 
@@ -303,7 +364,7 @@ class MarginCheck(_Json):
     passed: bool
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Margins(_Json):
     """The separation margins: rule (the standard's clause), operating_speed [min, max]
     rad/s, checks, passed (every check passed; null when nothing could be judged)."""
@@ -314,14 +375,30 @@ class Margins(_Json):
     passed: bool | None
 
 
+@dataclass(frozen=True, eq=False)
+class CriticalMap(_Json):
+    """The undamped critical speed map: stiffness (K, N/m: every bearing isotropic, this
+    stiffness, no damping); speeds (B x K, rad/s), whirl and mode (B) of each branch;
+    bearings: each bearing's direct stiffness against speed [{plane, speeds, kxx, kyy}] over
+    the speed range (its two ends for constant bearings): where a curve meets a branch is
+    the map's estimate of that critical speed."""
+
+    stiffness: Any
+    speeds: Any
+    whirl: tuple[str, ...]
+    mode: tuple[str, ...]
+    bearings: tuple[dict, ...]
+
+
 #: the rule, as every output cites it
 API_RULE = ("API 617 (8th ed.) 6.8.2.4-6.8.2.5 / API 684 (2nd ed.) SP6.8.2.1, SP6.8.2.10: "
-            "AF = Nc/(N2 - N1) at the half-power points; AF < 2.5 needs no margin; below the "
+            "AF = Nc/(N2 - N1) at the half-power points (where the band runs into another "
+            "peak, AF = 1/(2 zeta) of the mode); AF < 2.5 needs no margin; below the "
             "minimum operating speed SM >= min(16, 17 (1 - 1/(AF - 1.5))) %, above the maximum "
             "SM >= min(26, 10 + 17 (1 - 1/(AF - 1.5))) %")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class WhirlResult(Result):
     """The rotor on its bearings (see :func:`rbcli.whirl`); attribute names are the JSON
     keys (plus ``name``), arrays read-only.
@@ -352,6 +429,7 @@ class WhirlResult(Result):
     stability: Stability
     response: ResponseData
     margins: Margins | None
+    critical_speed_map: CriticalMap
     warnings: tuple[str, ...]
     units: dict = _hidden(default_factory=dict)
     source: str = _hidden(default="")
@@ -369,9 +447,12 @@ class WhirlResult(Result):
         return int(ExitStatus.OK)
 
     def to_json(self) -> dict[str, Any]:
-        """The document ``rbcli whirl --json`` prints, less ``file``."""
-        from rbcli.api.result import jsonable
+        """The document ``rbcli whirl --json`` prints, less ``file`` (built and checked once:
+        its lists are shared by every call, its top level is a new dict each time)."""
+        return dict(self._document)
 
+    @functools.cached_property
+    def _document(self) -> dict[str, Any]:
         d = to_json(self)
         d["warnings"] = list(self.warnings)  # Notes: --json spells their options
         return jsonable(d)

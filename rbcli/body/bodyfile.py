@@ -45,7 +45,7 @@ __all__ = ["Built", "load_body", "load_text", "load_expr", "load_node", "default
 FORMAT_VERSION = 1
 BODY_KEYS = (
     "rbcli", "name", "description", "units", "parts", "reference", "shaft", "pivot",
-    "rim_radius",
+    "rim_radius", "bearings",
 )
 UNIT_KEYS = ("length", "mass", "time", "angle", "angular_speed")
 

@@ -13,6 +13,7 @@ from rbcli.body.bodyfile import UNIT_KEYS
 from rbcli.body.givenpart import INERTIA_NAMES
 from rbcli.body.partlist import SPECIAL_SHAPES
 from rbcli.core.shapes import SHAPES
+from rbcli.io.bearingtable import schema as bearing_schema
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "data" / "body.schema.json"
 
@@ -167,6 +168,7 @@ def body_schema() -> dict:
             },
             "pivot": _vec(3),
             "rim_radius": {"$ref": "#/definitions/quantity"},
+            "bearings": bearing_schema(),
         },
         "required": ["parts"],
         "additionalProperties": False,

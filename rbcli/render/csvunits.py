@@ -186,7 +186,11 @@ UNITS: dict[str, dict[str, str]] = {
         "eccentricity": M, "static_unbalance": KGM,
         "shaft": ONE, "through": M, "speed_range": RADS,
         "least_damping_ratio": ONE, "least_damping_speed": RADS, "onset_speeds": RADS,
-        "symmetry_tol": ONE,
+        "symmetry_tol": ONE, "cross_damping": "N*s/m", "forward_share": ONE,
+        "bearing_forward_share": ONE, "branch": ONE, "threshold_speed": RADS,
+        "stability.thresholds[].mode": ONE, "searched": RADS,
+        **dict.fromkeys(("kxx", "kxy", "kyx", "kyy"), "N/m"),
+        **dict.fromkeys(("cxx", "cxy", "cyx", "cyy"), "N*s/m"),
     },
 }
 

@@ -27,8 +27,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.whirlresult import WhirlResult
     from rbcli.render.report import Section
 
-__all__ = ["document", "echo_rows", "campbell_figure", "response_figure", "report_section",
-           "conventions_note"]
+__all__ = ["document", "echo_rows", "campbell_figure", "response_figure", "map_figure",
+           "report_section", "conventions_note"]
 
 UM = 1e6  # m -> µm
 
@@ -39,13 +39,6 @@ WHIRL_STYLE = {
     "linear": ("straight-line orbit", "0.25", "-."),
     "none": ("not oscillating", "0.6", ":"),
 }
-
-
-def _speed(x: float | None, digits: int) -> str:
-    """A speed as 'rpm (rad/s)'."""
-    if x is None:
-        return "—"
-    return f"{num(x * RPM, digits)} rpm ({num(x, digits)} rad/s)"
 
 
 # ----------------------------------------------------------------------------- tables
@@ -71,23 +64,32 @@ def conventions_note(res: WhirlResult) -> str:
 def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo: bool = True,
              heading: bool = True) -> None:
     """The tables of a whirl analysis, into ``doc``."""
-    L = du.unit("length")
     if heading:
         doc.heading(f"{res.name}  ({res.source})" if res.source else res.name)
     if echo:
         doc.table("options (as understood)", ("option", "value", "unit"), echo_rows(res), right=(1,))
-    r = res.rotor
+    doc.kv("rotor (rigid; about its centre of mass, shaft axes)", _rotor_rows(res, du, digits))
+    _bearings(doc, res, du, digits)
+    _modes(doc, res, du, digits)
+    _criticals(doc, res, du, digits)
+    _stability(doc, res, digits)
+    _response(doc, res, du, digits)
+    _margins(doc, res, digits)
+    _map(doc, res, digits)
+    doc.note(conventions_note(res))
+
+
+def _rotor_rows(res: WhirlResult, du: DisplayUnits, digits: int) -> list[tuple[str, str, str]]:
+    r, L, J = res.rotor, du.unit("length"), du.unit("inertia")
     rows = [
         ("mass m", du.show(r.mass, "mass", digits), du.unit("mass")),
         ("centre of mass z_G (along the shaft)", du.show(r.com, "length", digits), L),
-        ("polar moment Ip (about the shaft)", du.show(r.polar_moment, "inertia", digits), du.unit("inertia")),
-        ("transverse moment It (across, about the com)", du.show(r.transverse_moment, "inertia", digits),
-         du.unit("inertia")),
+        ("polar moment Ip (about the shaft)", du.show(r.polar_moment, "inertia", digits), J),
+        ("transverse moment It (across, about the com)", du.show(r.transverse_moment, "inertia", digits), J),
     ]
     if r.asymmetry > 1e-6:
-        rows.append(("moments across: I1, I2", ", ".join(du.show(x, "inertia", digits) for x in r.transverse_moments),
-                     du.unit("inertia")))
-    rows += [
+        rows.append(("moments across: I1, I2", ", ".join(du.show(x, "inertia", digits) for x in r.transverse_moments), J))
+    return rows + [
         ("Ip / It", num(r.polar_moment / r.transverse_moment, digits),
          "disk-like" if r.polar_moment >= r.transverse_moment else "long"),
         ("tilt of the nearest principal axis", num(r.tilt_deg, digits), "°"),
@@ -96,56 +98,123 @@ def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo:
         ("couple unbalance P_G (about the com)", num(r.couple_unbalance * 1e9, digits), "g·mm²"),
         ("  its angle", num(r.couple_unbalance_angle_deg, digits) if r.couple_unbalance > 0 else "—", "°"),
     ]
-    doc.kv("rotor (rigid; about its centre of mass, shaft axes)", rows)
-    brow = []
-    cross = any(b.cross_stiffness[0] for b in res.bearings)
-    for i, b in enumerate(res.bearings):
-        row = [str(i + 1), du.show(b.plane, "length", digits), num(b.stiffness[0], digits), num(b.stiffness[1], digits)]
-        if cross:
-            row.append(num(b.cross_stiffness[0], digits))
-        row += [num(b.damping[0], digits), num(b.damping[1], digits)]
-        brow.append(row)
-    cols = ["bearing", f"z [{L}]", "kxx [N/m]", "kyy [N/m]"] + (["kxy = -kyx [N/m]"] if cross else []) + \
-        ["cxx [N s/m]", "cyy [N s/m]"]
-    doc.table("bearings (linear springs and dampers, fixed)", cols, brow, right=tuple(range(1, len(cols))))
 
-    # modes at the operating speed (or at rest)
+
+def _k(b) -> tuple[float, float, float, float]:
+    """A bearing's kxx, kxy, kyx, kyy."""
+    return (b.stiffness[0], *b.cross_stiffness, b.stiffness[1])
+
+
+def _conservative(b) -> bool:
+    """No damping and a symmetric stiffness (kxy = kyx), constant."""
+    _, kxy, kyx, _ = _k(b)
+    return b.table is None and kxy == kyx and not any(b.damping) and not any(b.cross_damping)
+
+
+def _bearings(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int) -> None:
+    """The bearings: one table of springs and dampers (a column kxy = -kyx for a follower
+    stiffness); with names, tables or full 2x2 coefficients, a stiffness and a damping table
+    (the tables' values at the modes' speed)."""
+    B, L = res.bearings, du.unit("length")
+    tabled = [(i, b) for i, b in enumerate(B) if b.table is not None]
+    ks = [_k(b) for b in B]
+    plain = all(k[1] == -k[2] for k in ks) and not tabled and not any(any(b.cross_damping) for b in B) \
+        and all(b.name == f"bearing {i + 1}" for i, b in enumerate(B))
+    if plain:
+        cross = any(k[1] for k in ks)
+        cols = ["bearing", f"z [{L}]", "kxx [N/m]", "kyy [N/m]", *(["kxy = -kyx [N/m]"] if cross else []),
+                "cxx [N s/m]", "cyy [N s/m]"]
+        rows = [[str(i + 1), du.show(b.plane, "length", digits)] + [num(v, digits) for v in (
+            k[0], k[3], *([k[1]] if cross else []), *b.damping)] for i, (b, k) in enumerate(zip(B, ks))]
+        doc.table("bearings (linear springs and dampers, fixed)", cols, rows, right=tuple(range(1, len(cols))))
+        return
+    at = f" at {num(res.modes_speed * RPM, digits)} rpm" if tabled else ""
+    doc.table(f"bearings: stiffness{at} (fixed springs)", ("bearing", "name", f"z [{L}]", "kxx [N/m]", "kxy [N/m]",
+                                                          "kyx [N/m]", "kyy [N/m]"),
+              [(str(i + 1), b.name, du.show(b.plane, "length", digits), *(num(x, digits) for x in k))
+               for i, (b, k) in enumerate(zip(B, ks))], right=(2, 3, 4, 5, 6))
+    doc.table(f"bearings: damping{at}", ("bearing", "cxx [N s/m]", "cxy [N s/m]", "cyx [N s/m]", "cyy [N s/m]"),
+              [(str(i + 1), num(b.damping[0], digits), num(b.cross_damping[0], digits),
+                num(b.cross_damping[1], digits), num(b.damping[1], digits)) for i, b in enumerate(B)],
+              right=(1, 2, 3, 4))
+    for i, b in tabled:
+        sp = b.table.speeds
+        doc.note(f"bearing {i + 1}: coefficients against speed from {b.table.source or 'the body file'}, "
+                 f"{len(sp)} speeds {num(sp[0] * RPM, digits)}-{num(sp[-1] * RPM, digits)} rpm, "
+                 "interpolated linearly in the speed; speeds beyond the table are refused.")
+
+
+def _share(m) -> str:
+    """The forward share, and each bearing's when they differ from it."""
+    text = num(m.forward_share, 3)
+    if any(abs(x - m.forward_share) > 1e-3 for x in m.bearing_forward_share):
+        text += " (" + ", ".join(num(x, 3) for x in m.bearing_forward_share) + ")"
+    return text
+
+
+def _modes(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int) -> None:
     title = "whirl modes at rest" if res.modes_speed == 0.0 else \
         f"whirl modes at {num(res.modes_speed * RPM, digits)} rpm"
     d4 = min(digits, 4)
-    mrows = []
-    for i, m in enumerate(res.modes):
-        mrows.append((str(i + 1), num(m.frequency, digits), num(m.frequency * RPM, digits), m.whirl, m.kind,
-                      "—" if m.node is None else du.show(m.node, "length", digits),
-                      num(m.damping_ratio, d4), "—" if m.log_decrement is None else num(m.log_decrement, d4),
-                      "yes" if m.stable else "NO, GROWS"))
-    doc.table(title, ("mode", "frequency [rad/s]", "[cpm]", "whirl", "kind", f"node z [{L}]",
-                      "damping ratio", "log dec", "stable"), mrows, right=(1, 2, 5, 6, 7))
+    share = any(m.forward_share not in (0.0, 1.0) for m in res.modes)  # elliptic orbits: say how much
+    rows = [(str(i + 1), num(m.frequency, digits), num(m.frequency * RPM, digits), m.whirl,
+             *((_share(m),) if share else ()), m.kind,
+             "—" if m.node is None else du.show(m.node, "length", digits), num(m.damping_ratio, d4),
+             "—" if m.log_decrement is None else num(m.log_decrement, d4), "yes" if m.stable else "NO, GROWS")
+            for i, m in enumerate(res.modes)]
+    cols = ("mode", "frequency [rad/s]", "[cpm]", "whirl", *(("forward share",) if share else ()), "kind",
+            f"node z [{du.unit('length')}]", "damping ratio", "log dec", "stable")
+    doc.table(title, cols, rows, right=(1, 2, 4, 6, 7, 8) if share else (1, 2, 5, 6, 7))
 
-    # critical speeds
-    crows = []
-    for c in res.critical_speeds:
-        crows.append((f"{c.order}×", num(c.speed * RPM, digits) + ("" if c.in_range else " *"), num(c.speed, digits),
-                      c.mode, c.whirl, "—" if c.node is None else du.show(c.node, "length", digits),
-                      "—" if c.damped_speed is None else num(c.damped_speed * RPM, digits),
-                      "—" if c.damping_ratio is None else num(c.damping_ratio, d4),
-                      "—" if c.excited is None else ("yes" if c.excited else "no")))
-    doc.table("critical speeds (undamped: an eigenproblem in the speed; damped: a root solve)",
-              ("order", "speed [rpm]", "[rad/s]", "mode", "whirl", f"node z [{L}]", "damped [rpm]",
-               "ζ", "driven"), crows, right=(1, 2, 5, 6, 7))
+
+def _exact(res: WhirlResult) -> bool:
+    """The undamped critical speeds came from the eigenproblem in the speed."""
+    return all(b.table is None for b in res.bearings)
+
+
+def _criticals(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int) -> None:
+    d4 = min(digits, 4)
+    rows = [(f"{c.order}×", num(c.speed * RPM, digits) + ("" if c.in_range else " *"), num(c.speed, digits),
+             c.mode, c.whirl, "—" if c.node is None else du.show(c.node, "length", digits),
+             "—" if c.damped_speed is None else num(c.damped_speed * RPM, digits),
+             "—" if c.damping_ratio is None else num(c.damping_ratio, d4),
+             "—" if c.excited is None else ("yes" if c.excited else "no")) for c in res.critical_speeds]
+    how = "an eigenproblem in the speed" if _exact(res) else "a root solve on the modes followed by their shapes"
+    doc.table(f"critical speeds (undamped: {how}; damped: a root solve)",
+              ("order", "speed [rpm]", "[rad/s]", "mode", "whirl", f"node z [{du.unit('length')}]",
+               "damped [rpm]", "ζ", "driven"), rows, right=(1, 2, 5, 6, 7))
     if res.critical_speeds:
         doc.note("ζ: the damping ratio at the damped critical speed; driven: the unbalance excites the "
                  "mode (order 1 only)" + ("; *: outside the speed range" if not all(
                      c.in_range for c in res.critical_speeds) else "") + ".")
-    if not res.critical_speeds:
+    else:
         doc.note("no critical speed: no whirl frequency meets an n× line.")
     for m in res.no_crossings:
         doc.note(f"no crossing: {m.explanation}.")
     doc.note(_rigid_note(res, digits))
+
+
+def _stability(doc: Doc, res: WhirlResult, digits: int) -> None:
+    st = res.stability
+    if st.thresholds:
+        doc.table("stability thresholds (Re λ = 0 by a root solve, each mode followed by its shape)",
+                  ("speed [rpm]", "[rad/s]", "change", "mode", "whirl", "kind", "frequency [rad/s]"),
+                  [(num(t.speed * RPM, digits), num(t.speed, digits), t.change, str(t.mode), t.whirl, t.kind,
+                    num(t.frequency, digits)) for t in st.thresholds], right=(0, 1, 6))
     doc.note(_stability_note(res, digits))
 
-    # response
-    resp = res.response
+
+def _af(p, digits: int) -> str:
+    """An amplification factor as the tables show it, with its basis."""
+    if p.basis == "undamped":
+        return "∞ (undamped)"
+    if p.basis == "undefined" or p.amplification_factor is None:
+        return "∞ (undefined)"
+    return num(p.amplification_factor, digits) + (" (1/2ζ)" if p.basis == "damping ratio" else "")
+
+
+def _response(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int) -> None:
+    resp, r, L = res.response, res.rotor, du.unit("length")
     if resp.source == "body":
         src = (f"unbalance response to the body's own unbalance: U = {num(r.static_unbalance * 1e6, digits)} "
                f"g·mm, P_G = {num(r.couple_unbalance * 1e9, digits)} g·mm² (as rbcli balance gives them)")
@@ -155,48 +224,61 @@ def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo:
             f"{du.show(u.plane, 'length', digits)} {L}" for u in resp.unbalance)
     doc.note(src + ".")
     if resp.peaks:
-        prow = []
-        for p in resp.peaks:
-            prow.append((str(p.bearing), num(p.speed * RPM, digits),
-                         "∞ (undamped)" if p.undamped else num(p.amplitude * UM, digits),
-                         "∞" if p.undamped else ("—" if p.amplification_factor is None else num(p.amplification_factor, digits)),
-                         "—" if p.half_power is None else
-                         f"{num(p.half_power[0] * RPM, digits)}-{num(p.half_power[1] * RPM, digits)}",
-                         p.mode or "—", p.whirl or "—"))
+        rows = [(str(p.bearing), num(p.speed * RPM, digits),
+                 "∞ (undamped)" if p.undamped else num(p.amplitude * UM, digits), _af(p, digits),
+                 "—" if p.half_power is None else
+                 f"{num(p.half_power[0] * RPM, digits)}-{num(p.half_power[1] * RPM, digits)}",
+                 p.mode or "—", p.whirl or "—") for p in resp.peaks]
         doc.table("response peaks (amplification factor AF = Nc/(N2 - N1), half-power points)",
-                  ("bearing", "Nc [rpm]", "amplitude [µm]", "AF", "N1-N2 [rpm]", "mode", "whirl"), prow,
+                  ("bearing", "Nc [rpm]", "amplitude [µm]", "AF", "N1-N2 [rpm]", "mode", "whirl"), rows,
                   right=(1, 2, 3, 4))
+        if any(p.basis == "damping ratio" for p in resp.peaks):
+            doc.note("AF (1/2ζ): the response does not fall to 1/√2 of the peak before it rises into "
+                     "the next one (the half-power bands overlap), so AF is 1/(2ζ) of the mode's "
+                     "damping ratio at its damped critical speed (API 684).")
     if resp.at_speed:
-        arow = []
-        for i, a in enumerate(resp.at_speed):
-            arow.append((str(i + 1), num(a.displacement * UM, digits), num(a.displacement_phase_deg, digits),
-                         num(a.force, digits), num(a.force_phase_deg, digits),
-                         "—" if a.rigid_force is None else num(a.rigid_force, digits)))
+        rows = [(str(i + 1), num(a.displacement * UM, digits), num(a.displacement_phase_deg, digits),
+                 num(a.force, digits), num(a.force_phase_deg, digits),
+                 "—" if a.rigid_force is None else num(a.rigid_force, digits)) for i, a in enumerate(resp.at_speed)]
         doc.table(f"at {num(res.speed[1] * RPM, digits)} rpm (the operating speed)",
                   ("bearing", "displacement [µm]", "phase [°]", "force [N]", "phase [°]", "on rigid bearings [N]"),
-                  arow, right=(1, 2, 3, 4, 5))
+                  rows, right=(1, 2, 3, 4, 5))
+
+
+def _margins(doc: Doc, res: WhirlResult, digits: int) -> None:
     mg = res.margins
-    if mg is not None:
-        lo, hi = mg.operating_speed
-        op = f"{num(lo * RPM, digits)} rpm" if lo == hi else f"{num(lo * RPM, digits)}-{num(hi * RPM, digits)} rpm"
-        mrow = []
-        for ch in mg.checks:
-            af = {"undamped": "∞ (undamped)", "undefined": "∞ (no half-power points)"}.get(
-                ch.basis, num(ch.amplification_factor, digits) if ch.amplification_factor is not None else "—")
-            mrow.append(("—" if ch.bearing is None else str(ch.bearing), num(ch.speed * RPM, digits), ch.mode or "—",
-                         af, ch.position, num(ch.margin_percent, digits), num(ch.required_margin_percent, digits),
-                         "PASS" if ch.passed else "FAIL"))
-        doc.table(f"separation margins from the operating speed {op} (API 617 / API 684 rule)",
-                  ("bearing", "critical [rpm]", "mode", "AF", "position", "margin [%]", "required [%]", "verdict"),
-                  mrow, right=(1, 3, 5, 6))
-        doc.note("rule: " + mg.rule + ". (Taken from public implementations of the standard; check a "
-                 "licensed copy before claiming conformity.)")
-        if mg.passed is None:
-            doc.note("separation margins: nothing to judge (no response peak in the speed range).")
-        else:
-            doc.note("separation margins: " + ("PASS" if mg.passed else "FAIL: a critical speed is too close "
-                                                "to the operating speed for its amplification factor") + ".")
-    doc.note(conventions_note(res))
+    if mg is None:
+        return
+    lo, hi = mg.operating_speed
+    op = f"{num(lo * RPM, digits)} rpm" if lo == hi else f"{num(lo * RPM, digits)}-{num(hi * RPM, digits)} rpm"
+    rows = [("—" if ch.bearing is None else str(ch.bearing), num(ch.speed * RPM, digits), ch.mode or "—",
+             _af(ch, digits), ch.position, num(ch.margin_percent, digits), num(ch.required_margin_percent, digits),
+             "PASS" if ch.passed else "FAIL") for ch in mg.checks]
+    doc.table(f"separation margins from the operating speed {op} (API 617 / API 684 rule)",
+              ("bearing", "critical [rpm]", "mode", "AF", "position", "margin [%]", "required [%]", "verdict"),
+              rows, right=(1, 3, 5, 6))
+    doc.note("rule: " + mg.rule + ". (Taken from public implementations of the standard; check a "
+             "licensed copy before claiming conformity.)")
+    if mg.passed is None:
+        doc.note("separation margins: nothing to judge (no response peak in the speed range).")
+    else:
+        doc.note("separation margins: " + ("PASS" if mg.passed else "FAIL: a critical speed is too close "
+                                            "to the operating speed for its amplification factor") + ".")
+
+
+def _map(doc: Doc, res: WhirlResult, digits: int) -> None:
+    """The critical speed map at each decade of stiffness."""
+    cm = res.critical_speed_map
+    k = np.asarray(cm.stiffness)
+    decades = [j for j, x in enumerate(k) if abs(math.log10(x) - round(math.log10(x))) < 1e-9]
+    rows = [(num(k[j], digits), *(num(cm.speeds[b][j] * RPM, digits) for b in range(len(cm.whirl))))
+            for j in decades or range(len(k))]
+    doc.table("undamped critical speed map (every bearing the stiffness k, isotropic; no damping)",
+              ("k [N/m]", *(f"{w} {m} [rpm]" for w, m in zip(cm.whirl, cm.mode))), rows,
+              right=tuple(range(len(cm.whirl) + 1)))
+    doc.note("map: each critical speed grows as the square root of the stiffness (a rigid rotor); "
+             "where a bearing's stiffness against speed (drawn on the map's figure) meets a branch "
+             "is that critical speed on that bearing.")
 
 
 def _rigid_note(res: WhirlResult, digits: int) -> str:
@@ -213,16 +295,17 @@ def _rigid_note(res: WhirlResult, digits: int) -> str:
 
 def _stability_note(res: WhirlResult, digits: int) -> str:
     st = res.stability
-    undamped = all(not any(b.damping) and not any(b.cross_stiffness) for b in res.bearings)
-    if undamped:
+    if all(_conservative(b) for b in res.bearings):
         return ("stability: no damping and no cross-coupling: every mode is neutrally stable "
                 "(it neither grows nor decays).")
     if st.stable_in_range and st.stable_at_speed is not False:
         return (f"stability: STABLE over the speed range (least damping ratio {num(st.least_damping_ratio, digits)} "
                 f"at {num(st.least_damping_speed * RPM, digits)} rpm).")
     parts = ["stability: UNSTABLE — a whirl mode GROWS"]
-    if st.onset_speeds:
-        parts.append(" (onset of instability at " + ", ".join(f"{num(x * RPM, digits)} rpm" for x in st.onset_speeds) + ")")
+    if st.unstable_from_start:
+        parts.append(" from the start of the speed range")
+    elif st.threshold_speed is not None:
+        parts.append(f" from the threshold speed of instability {num(st.threshold_speed * RPM, digits)} rpm")
     parts.append(f"; least damping ratio {num(st.least_damping_ratio, digits)} at "
                  f"{num(st.least_damping_speed * RPM, digits)} rpm")
     if st.stable_at_speed is False:
@@ -245,10 +328,50 @@ def _segments(x: np.ndarray, y: np.ndarray, labels: tuple[str, ...]):
     return out
 
 
+def _by_branch(cb, values: np.ndarray) -> np.ndarray:
+    """(4, N) ``values`` (by frequency at each speed) reordered by branch: row k is the mode
+    followed by its shape from mode k at the first speed."""
+    br = np.asarray(cb.branch) - 1
+    out = np.empty_like(values)
+    np.put_along_axis(out, br, values, 0)
+    return out
+
+
+def _critical_marks(res: WhirlResult, lo: float, hi: float) -> list[tuple[float, int, str, int]]:
+    """(speed, order, how, count) of the critical speeds in [lo, hi] rad/s: at the damped
+    crossing, else the undamped speed ("undamped": no damped crossing); how "driven" when
+    the unbalance drives one; those that coincide (to 1e-6 of the speed, one order) one mark."""
+    marks: list[list] = []
+    for c in sorted(res.critical_speeds, key=lambda c: (c.order, c.damped_speed or c.speed)):
+        s = c.damped_speed if c.damped_speed is not None else c.speed
+        if not lo <= s <= hi:
+            continue
+        how = "driven" if c.excited else "undamped" if c.damped_speed is None and not _exact_only(res) else "not driven"
+        if marks and marks[-1][1] == c.order and abs(marks[-1][0] - s) <= 1e-6 * s:
+            marks[-1][2] = "driven" if "driven" in (how, marks[-1][2]) else marks[-1][2]
+            marks[-1][3] += 1
+        else:
+            marks.append([s, c.order, how, 1])
+    return [tuple(m) for m in marks]
+
+
+def _exact_only(res: WhirlResult) -> bool:
+    """Undamped and conservative: the critical speeds are the crossings themselves."""
+    return all(_conservative(b) for b in res.bearings)
+
+
+#: how a critical speed is marked: (marker, face colour, legend, z-order: driven on top)
+MARKS = {"driven": ("o", "black", "critical speed (driven by the unbalance)", 6),
+         "not driven": ("o", "white", "critical speed (not driven)", 5),
+         "undamped": ("s", "white", "undamped critical speed (no damped crossing)", 5)}
+
+
 def campbell_figure(res: WhirlResult):
     """The Campbell diagram: whirl frequencies (cpm, Hz on the right) against speed (rpm),
-    forward solid, backward dashed; the n× lines; the critical speeds marked (filled: the
-    unbalance drives it); the operating speed; growing modes crossed. A matplotlib Figure."""
+    each mode followed by its shape, forward solid, backward dashed; the n× lines; the
+    critical speeds marked (filled, on top: the unbalance drives it; coincident ones one mark,
+    one label); the operating speed; growing modes crossed; the legend below the axes. A
+    matplotlib Figure."""
     from rbcli.render.plots import figure
 
     cb = res.campbell
@@ -257,14 +380,14 @@ def campbell_figure(res: WhirlResult):
     fig, axes = figure(f"whirl: {res.name} — Campbell diagram", size=(7.5, 5.0))
     ax = axes[0][0]
     seen = set()
-    for i in range(fr.shape[0]):
-        for lab, xs, ys in _segments(sp, fr[i], cb.whirl[i]):
+    whirl = _by_branch(cb, np.array(cb.whirl, dtype=object))
+    fb = _by_branch(cb, fr)
+    for i in range(fb.shape[0]):
+        for lab, xs, ys in _segments(sp, fb[i], tuple(whirl[i])):
             name, colour, ls = WHIRL_STYLE.get(lab, WHIRL_STYLE["none"])
-            ax.plot(xs, ys, color=colour, linestyle=ls, linewidth=1.5,
-                    label=name if lab not in seen else None)
+            ax.plot(xs, ys, color=colour, linestyle=ls, linewidth=1.5, label=name if lab not in seen else None)
             seen.add(lab)
-    zeta = np.asarray(cb.damping_ratio)
-    grow = zeta < -1e-9
+    grow = np.asarray(cb.damping_ratio) < -1e-9
     if grow.any():
         ii, jj = np.nonzero(grow)
         ax.plot(sp[jj], fr[ii, jj], linestyle="none", marker="x", color="black", markersize=4,
@@ -275,19 +398,17 @@ def campbell_figure(res: WhirlResult):
         ax.plot([0.0, top], [0.0, n * top], color="0.6", linewidth=0.9, linestyle=(0, (1, 2)))
         xt = min(top, ymax / n) * 0.92
         ax.annotate(f"{n}×", (xt, n * xt), textcoords="offset points", xytext=(4, -10), fontsize=8, color="0.4")
-    for k, c in enumerate(res.critical_speeds):
-        s = c.damped_speed if c.damped_speed is not None else c.speed
-        if not (sp[0] <= s * RPM <= top):
-            continue
-        filled = bool(c.excited)
-        ax.plot([s * RPM], [c.order * s * RPM], marker="o", markersize=6, linestyle="none",
-                markerfacecolor="black" if filled else "white", markeredgecolor="black",
-                label=("critical speed (driven by the unbalance)" if filled else "critical speed (not driven)")
-                if (filled, "crit") not in seen else None)
-        seen.add((filled, "crit"))
-        ax.annotate(f"{s * RPM:.4g}", (s * RPM, c.order * s * RPM), textcoords="offset points",
-                    xytext=(6, -12) if c.whirl == "backward" else (-8, 6),
-                    ha="left" if c.whirl == "backward" else "right", fontsize=7)
+    marks = _critical_marks(res, sp[0] / RPM, top / RPM)
+    for k, (s, n, how, count) in enumerate(marks):
+        marker, face, name, z = MARKS[how]
+        ax.plot([s * RPM], [n * s * RPM], marker=marker, markersize=6, linestyle="none", zorder=z,
+                markerfacecolor=face, markeredgecolor="black", label=None if how in seen else name)
+        seen.add(how)
+        near = k > 0 and abs(s - marks[k - 1][0]) < 0.06 * top / RPM and k % 2  # a close neighbour: below
+        ax.annotate(f"{s * RPM:.4g}" + (f" (×{count})" if count > 1 else ""), (s * RPM, n * s * RPM),
+                    textcoords="offset points", xytext=(8, -12) if near else (-8, 6),
+                    ha="left" if near else "right", fontsize=7, zorder=7)
+    ymax = max([ymax] + [n * s * RPM for s, n, _, _ in marks])
     if res.speed is not None:
         lo, hi = res.speed
         if lo == hi:
@@ -301,6 +422,46 @@ def campbell_figure(res: WhirlResult):
     sec = ax.secondary_yaxis("right", functions=(lambda y: y / 60.0, lambda h: h * 60.0))
     sec.set_ylabel("[Hz]")
     ax.set_title("forward: with the spin; backward: against it", fontsize=9)
+    fig.legend(loc="outside lower center", ncols=3, fontsize=7)
+    return fig
+
+
+def map_figure(res: WhirlResult):
+    """The undamped critical speed map: each branch's critical speed (rpm) against the
+    bearings' stiffness (N/m), log-log; each bearing's kxx and kyy against speed over the
+    speed range drawn on it (where they meet a branch: that critical speed); the operating
+    speed. A matplotlib Figure."""
+    from rbcli.render.plots import figure, style
+
+    cm = res.critical_speed_map
+    k = np.asarray(cm.stiffness)
+    fig, axes = figure(f"whirl: {res.name} — undamped critical speed map", size=(7.5, 5.0))
+    ax = axes[0][0]
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    for b in range(len(cm.whirl)):
+        ax.plot(k, np.asarray(cm.speeds[b]) * RPM, linewidth=1.2, markevery=8, markersize=4,
+                label=f"{cm.whirl[b]} {cm.mode[b]}", **style(b))
+    for i, c in enumerate(cm.bearings):
+        sp = np.asarray(c["speeds"]) * RPM
+        colour = ("tab:blue", "tab:orange", "tab:green", "tab:red")[i % 4]
+        ax.plot(c["kxx"], sp, color=colour, linewidth=2.6, alpha=0.55, label=f"bearing {i + 1} kxx")
+        if c["kyy"] != c["kxx"]:
+            ax.plot(c["kyy"], sp, color=colour, linewidth=2.6, alpha=0.55, linestyle="--",
+                    label=f"bearing {i + 1} kyy")
+    if res.speed is not None:
+        for x in sorted(set(res.speed)):
+            ax.axhline(x * RPM, color="0.3", linewidth=0.9, linestyle="-.")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    for axis in (ax.xaxis, ax.yaxis):  # plain text, not mathtext
+        axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+        axis.set_minor_formatter(NullFormatter())
+    ax.set_xlim(float(k[0]), float(k[-1]))
+    ax.set_xlabel("bearing stiffness [N/m]")
+    ax.set_ylabel("critical speed [rpm]")
+    ax.set_title("every bearing the stiffness on the axis, no damping; the bearings' own stiffness "
+                 "against speed drawn over it", fontsize=8)
     fig.legend(loc="outside lower center", ncols=3, fontsize=7)
     return fig
 
@@ -329,9 +490,9 @@ def response_figure(res: WhirlResult):
         if p.half_power is not None:
             lvl = p.amplitude * UM / math.sqrt(2.0)
             ax.plot([p.half_power[0] * RPM, p.half_power[1] * RPM], [lvl, lvl], color="0.4", linewidth=0.8)
-            if p.amplification_factor is not None:
-                ax.annotate(f"AF {p.amplification_factor:.3g}", (p.speed * RPM, p.amplitude * UM),
-                            textcoords="offset points", xytext=(5, 3), fontsize=7)
+        if p.amplification_factor is not None:
+            ax.annotate(f"AF {p.amplification_factor:.3g}" + (" (1/2ζ)" if p.basis == "damping ratio" else ""),
+                        (p.speed * RPM, p.amplitude * UM), textcoords="offset points", xytext=(5, 3), fontsize=7)
     if res.speed is not None:
         lo, hi = res.speed
         for a in (ax, axp):
@@ -346,7 +507,7 @@ def response_figure(res: WhirlResult):
     ax.set_ylabel("displacement, orbit semi-major axis [µm]")
     src = "the body's own unbalance" if resp.source == "body" else "the unbalances given"
     ax.set_title(f"response to {src}; half-power points marked", fontsize=9)
-    ax.legend(loc="upper left", fontsize=7)
+    fig.legend(loc="outside lower center", ncols=3, fontsize=7)
     from matplotlib.ticker import MultipleLocator
 
     axp.yaxis.set_major_locator(MultipleLocator(90.0))
@@ -399,4 +560,7 @@ def report_section(res: WhirlResult, du: DisplayUnits, digits: int, *, figures: 
         s.items.append(Figure("whirl-response", "Unbalance response at each bearing: amplitude and "
                               "phase against speed.",
                               figure_bytes(response_figure(res), "svg").decode("utf-8")))
+        s.items.append(Figure("whirl-map", "Undamped critical speed map: critical speeds against "
+                              "bearing stiffness, with the bearings' own stiffness against speed.",
+                              figure_bytes(map_figure(res), "svg").decode("utf-8")))
     return s

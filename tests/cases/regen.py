@@ -198,6 +198,19 @@ def cases() -> dict[str, list[list[str]]]:
         "--speed-range", "1000,1000 rpm")
     add("whirl", "error-not-a-range", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6",
         "--speed-range", "3000,0 rpm")
+    # whirl (issue 35): bearings in the body file, tables against speed, cross-coupling, the map
+    journal = "examples/journal_rotor.yaml"
+    add("whirl", "journal", journal)
+    add("whirl", "journal-json", journal, "--points", "21", "--json")
+    add("whirl", "journal-unstable", journal, "--speed", "8500 rpm")
+    add("whirl", "journal-options-over-table", journal, "--cross-stiffness", "0", "--speed", "3000 rpm",
+        "--points", "41")
+    add("whirl", "cross-coupled-1", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--damping",
+        "200", "--cross-stiffness", "1")
+    add("whirl", "full-2x2", "-e", cyl, "--bearings=-0.2,0.2", "--stiffness", "1e6,1.2e6", "--stiffness-y",
+        "1.5e6", "--stiffness-xy", "2e5", "--stiffness-yx=-1.5e5", "--damping", "400", "--damping-xy", "50",
+        "--damping-yx", "50", "--map-stiffness", "1e5,1e7", "--points", "41")
+    add("whirl", "error-beyond-table", journal, "--speed", "12000 rpm")
     add("shapes", "all")
     add("shapes", "cylinder", "cylinder")
     add("shapes", "mesh", "mesh")

@@ -1,27 +1,27 @@
 """Critical speeds: where a whirl frequency equals an order n of the speed.
 
-Undamped (exact, an eigenproblem in the speed, no grid). With ``q = Q e^{i n Omega t}``
-the undamped equations become ``(K - Omega^2 (n^2 M - i n G)) Q = 0``: a generalized
-eigenproblem for Omega^2, solved as the eigenvalues nu = 1/Omega^2 of ``K^-1 B``,
-``B = n^2 M - i n G`` (K is invertible for two or more bearings at distinct places with
-positive stiffness). Each real nu > 0 is a critical speed Omega = nu^(-1/2); nu <= 0 is a
-branch that never meets the n× line.
+Undamped critical speeds are those of the rotor's conservative part: its dampers removed
+and its cross-coupled stiffness kxy, kyx both their mean (the follower part, kxy = -kyx,
+which feeds energy into a whirl, removed with the damping; API 684's undamped analysis
+takes the bearings' direct stiffness). The damped critical speeds, where the whirl
+frequency of the rotor as it is meets the n× line, carry the damping and the whole
+cross-coupling; 1 N/m of cross-coupled stiffness moves them by ~1e-12 of themselves.
 
-Isotropic bearings split it by whirl direction (the physics sheet ``whirl.md``):
-
-    forward:  K_c U = Omega^2 diag(n^2 m, n^2 It - n Ip) U,
-    backward: K_c U = Omega^2 diag(n^2 m, n^2 It + n Ip) U.
-
-With K_c positive definite the number of forward crossings is the number of positive
-entries of the forward matrix (Sylvester's law of inertia): when ``n It <= Ip`` the
-forward conical branch stays above the n× line at every speed (for n = 1: a disk-like
-rotor, Ip >= It), and there is one forward crossing fewer. Symmetric bearings
-(sum k a = 0) give the sheet's closed forms ``Omega^2 = sum k / m`` (cylindrical) and
-``Omega^2 = sum k a^2 / (It -/+ Ip)`` (conical, forward / backward).
+- on constant bearings: exactly, an eigenproblem in the speed, no grid. With ``q = Q e^{i n Omega t}`` the equations
+  become ``(K - Omega^2 (n^2 M - i n G)) Q = 0``: the eigenvalues nu = 1/Omega^2 of
+  ``K^-1 B``, ``B = n^2 M - i n G``; each real nu > 0 is a critical speed. Isotropic
+  bearings split it by whirl direction (the physics sheet ``whirl.md``): forward
+  ``K_c U = Omega^2 diag(n^2 m, n^2 It - n Ip) U``, backward with ``+ n Ip``. With K_c
+  positive definite the forward crossings are as many as the positive entries of the
+  forward matrix (Sylvester's law of inertia): when ``n It <= Ip`` the forward conical
+  branch stays above the n× line at every speed (for n = 1: a disk-like rotor).
+- on bearings tabled against speed: the undamped modes are followed by their shapes over
+  the speeds the tables cover (:func:`rbcli.core.whirl.modes.track`) and each root of
+  ``|Im lambda(Omega)| - n Omega`` is solved by Brent's method.
 
 Damped: where the damped whirl frequency |Im lambda| of the mode equals n Omega, a root
 of ``|Im lambda(Omega)| - n Omega`` by Brent's method, the mode followed by its shape
-from the undamped critical speed (:func:`rbcli.core.whirl.modes.follow`).
+from the undamped critical speed.
 """
 
 from __future__ import annotations
@@ -31,13 +31,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli.core.whirl.model import ModeShape, Rotor, shape_of_complex, shape_of_real
-from rbcli.core.whirl.modes import Mode, follow
+from rbcli.core.roots import brentq
+from rbcli.core.whirl.model import Bearing, ModeShape, Rotor, real_parts, shape_of, weighted
+from rbcli.core.whirl.modes import Mode, branch_roots, campbell, follow, followed, track
 
-__all__ = ["CriticalSpeed", "Missing", "critical_speeds", "damped_crossing"]
+__all__ = ["CriticalSpeed", "Missing", "critical_speeds", "damped_crossing", "critical_map"]
 
 #: a generalized eigenvalue nu = 1/Omega^2 is real when |Im nu| <= this times |nu|
 REAL_RTOL = 1e-9
+#: speeds of the grid on which crossings are bracketed (the root solve is exact)
+SEARCH_POINTS = 121
 
 
 @dataclass(frozen=True, eq=False)
@@ -49,23 +52,23 @@ class CriticalSpeed:
     speed : float — rad/s
     order : int — n: the whirl frequency is n times the speed
     shape : ModeShape — whirl (forward/backward), kind and node of the mode there
-    vector : (4,) complex ndarray — the weighted directional shape (as Mode.vector)
-    q : (4,) complex ndarray — the mode in real coordinates: q(t) = Re(q e^{i n Omega t})
-        of (x, y, theta_x, theta_y)
+    vector : (4,) complex ndarray — the weighted shape (as Mode.vector)
+    eigenvalue : complex — 1/s, the undamped mode's lambda there (i n Omega when
+        conservative; real coordinates: Im > 0; directional: the sign is the whirl)
     """
 
     speed: float
     order: int
     shape: ModeShape
     vector: np.ndarray
-    q: np.ndarray
+    eigenvalue: complex
 
     @property
     def whirl(self) -> str:
         return self.shape.whirl
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Missing:
     """A branch that never meets the n× line, and why.
 
@@ -73,11 +76,12 @@ class Missing:
     ----------
     order : int
     whirl : str — "forward" or "backward"
-    kind : str — "conical" (the tilt branch) or "mode" (any)
-    reason : str — "gyroscopic" (n It <= Ip), "coincident" (n It = Ip exactly: at
-        infinite speed) or "complex" (cross-coupled stiffness: no real crossing)
-    It : float — kg m²
-    Ip : float — kg m²
+    kind : str — "conical" (the tilt branch) or the branch's kind
+    reason : str — "gyroscopic" (n It < Ip: the forward conical whirl outruns the line),
+        "coincident" (n It = Ip exactly: met at infinite speed) or "range" (no crossing
+        between ``lo`` and ``hi``, the speeds searched)
+    It, Ip : float — kg m²
+    lo, hi : float — rad/s, the speeds searched (reason "range")
     """
 
     order: int
@@ -86,139 +90,144 @@ class Missing:
     reason: str
     It: float
     Ip: float
+    lo: float = 0.0
+    hi: float = math.inf
 
 
-def _weighted(rotor: Rotor, r_f, phi_f, r_b, phi_b) -> np.ndarray:
-    sm, si = math.sqrt(rotor.mass), math.sqrt(rotor.It)
-    w = np.array([sm * r_f, si * phi_f, sm * r_b, si * phi_b], dtype=complex)
-    n = float(np.linalg.norm(w))
-    out = w / n if n > 0.0 else w
-    out.setflags(write=False)
-    return out
-
-
-def _real_of(U: np.ndarray, forward: bool) -> np.ndarray:
-    """Real-coordinate amplitudes (x, y, theta_x, theta_y) of a directional shape [R, PHI]
-    whirling forward (r = R e^{iwt}, phi = PHI e^{iwt}) or backward (e^{-iwt}).
-
-    Forward: x + i y = R e^{iwt} gives X = R, Y = -i R; theta_y - i theta_x = PHI e^{iwt}
-    gives TY = PHI, TX = i PHI. Backward: X = conj R, Y = i conj R, TY = conj PHI,
-    TX = -i conj PHI."""
-    R, P = complex(U[0]), complex(U[1])
-    if forward:
-        q = np.array([R, -1j * R, 1j * P, P], dtype=complex)
-    else:
-        Rc, Pc = R.conjugate(), P.conjugate()
-        q = np.array([Rc, 1j * Rc, -1j * Pc, Pc], dtype=complex)
-    q.setflags(write=False)
-    return q
-
-
-def _roots(K: np.ndarray, B: np.ndarray) -> tuple[list[tuple[float, np.ndarray]], int]:
-    """Positive real Omega^2 roots of K Q = Omega^2 B Q as (Omega, Q), and how many of the
-    eigenvalues were not real."""
+def _roots(K: np.ndarray, B: np.ndarray) -> list[tuple[float, np.ndarray]]:
+    """Positive real Omega^2 roots of K Q = Omega^2 B Q as (Omega, Q)."""
     nu, V = np.linalg.eig(np.linalg.solve(K.astype(complex), B.astype(complex)))
-    out, n_complex = [], 0
-    for k in range(len(nu)):
-        v = complex(nu[k])
-        if abs(v.imag) > REAL_RTOL * abs(v):
-            n_complex += 1
-            continue
-        if v.real > 0.0:
-            out.append((1.0 / math.sqrt(v.real), V[:, k]))
-    return out, n_complex
+    return [(1.0 / math.sqrt(v.real), V[:, k]) for k, v in enumerate(nu.tolist())
+            if abs(v.imag) <= REAL_RTOL * abs(v) and v.real > 0.0]
+
+
+def _gyroscopic(n: int, It: float, Ip: float) -> str:
+    return "coincident" if n * It == Ip else "gyroscopic"
+
+
+def _exact(rotor: Rotor, orders: tuple[int, ...]) -> tuple[list[CriticalSpeed], list[Missing]]:
+    """The eigenproblem in the speed (conservative rotor, constant bearings)."""
+    out, missing = [], []
+    m, It, Ip = rotor.mass, rotor.It, rotor.Ip
+    for n in orders:
+        if rotor.isotropic:
+            Kc = rotor.complex_matrices([0.0])[0][0]
+            for fw, tilt in ((True, n * n * It - n * Ip), (False, n * n * It + n * Ip)):
+                for Om, U in _roots(Kc, np.diag([n * n * m, tilt])):
+                    parts = np.array([U[0], U[1], 0, 0] if fw else [0, 0, U[0], U[1]], dtype=complex)
+                    out.append(CriticalSpeed(Om, n, shape_of(rotor, parts), weighted(rotor, parts),
+                                             complex(0.0, n * Om if fw else -n * Om)))
+        else:
+            for Om, Q in _roots(rotor.K(), n * n * rotor.M() - 1j * n * rotor.G()):
+                parts = real_parts(np.asarray(Q, dtype=complex))
+                out.append(CriticalSpeed(Om, n, shape_of(rotor, parts), weighted(rotor, parts),
+                                         complex(0.0, n * Om)))
+        if n * It <= Ip:
+            missing.append(Missing(n, "forward", "conical", _gyroscopic(n, It, Ip), It, Ip))
+    return out, missing
+
+
+def _solved(rotor: Rotor, orders: tuple[int, ...], span: tuple[float, float]):
+    """The crossings of the undamped modes followed by their shapes over ``span``."""
+    cb = campbell(rotor, np.linspace(span[0], span[1], SEARCH_POINTS))
+    ranks = track(cb)
+    out, missing = [], []
+    for n in orders:
+        roots = branch_roots(cb, ranks, cb.frequency - n * cb.speeds[:, None],
+                             lambda lam, x, n=n: abs(lam.imag) - n * x)
+        for x, _, md, _ in roots:
+            out.append(CriticalSpeed(x, n, md.shape, md.vector, md.eigenvalue))
+        for k in sorted(set(range(4)) - {b for _, b, _, _ in roots}):
+            md = cb.mode(-1, int(ranks[-1, k]))  # as the branch ends the search
+            if md.whirl == "forward" and md.shape.kind == "conical" and n * rotor.It <= rotor.Ip:
+                missing.append(Missing(n, "forward", "conical", _gyroscopic(n, rotor.It, rotor.Ip),
+                                       rotor.It, rotor.Ip))
+            elif md.whirl in ("forward", "backward"):
+                missing.append(Missing(n, md.whirl, md.shape.kind, "range", rotor.It, rotor.Ip, *span))
+    return out, missing
 
 
 def critical_speeds(rotor: Rotor, orders: tuple[int, ...] = (1,)) -> tuple[list[CriticalSpeed], list[Missing]]:
-    """The undamped critical speeds of ``orders`` (ascending per order), and the branches
-    that never meet their line.
+    """The undamped critical speeds of ``orders`` (see the module docstring), and the
+    branches that never meet their line.
 
     Parameters
     ----------
-    rotor : Rotor — its dampers are ignored here
+    rotor : Rotor — its conservative part is taken here
     orders : tuple of int — n >= 1
 
     Returns
     -------
     (list of CriticalSpeed sorted by speed, list of Missing)
     """
-    out: list[CriticalSpeed] = []
-    missing: list[Missing] = []
-    m, It, Ip = rotor.mass, rotor.It, rotor.Ip
-    for n in orders:
-        if rotor.isotropic:
-            _, Kc, _ = rotor.complex_matrices()
-            for whirl, tilt in (("forward", n * n * It - n * Ip), ("backward", n * n * It + n * Ip)):
-                B = np.diag([n * n * m, tilt]).astype(complex)
-                roots, n_complex = _roots(Kc, B)
-                for Om, U in roots:
-                    fw = whirl == "forward"
-                    shape = shape_of_complex(rotor, U, fw)
-                    vec = _weighted(rotor, U[0], U[1], 0, 0) if fw else _weighted(rotor, 0, 0, U[0], U[1])
-                    out.append(CriticalSpeed(Om, n, shape, vec, _real_of(U, fw)))
-                if whirl == "forward" and tilt <= 0.0:
-                    missing.append(Missing(n, "forward", "conical",
-                                           "coincident" if tilt == 0.0 else "gyroscopic", It, Ip))
-                elif n_complex:
-                    missing.append(Missing(n, whirl, "mode", "complex", It, Ip))
-        else:
-            B = n * n * rotor.M() - 1j * n * rotor.G()
-            roots, n_complex = _roots(rotor.K(), B)
-            for Om, Q in roots:
-                X, Y, TX, TY = (complex(v) for v in Q)
-                shape = shape_of_real(rotor, Q)
-                vec = _weighted(rotor, X + 1j * Y, TY - 1j * TX, X - 1j * Y, TY + 1j * TX)
-                q = np.array(Q, dtype=complex)
-                q.setflags(write=False)
-                out.append(CriticalSpeed(Om, n, shape, vec, q))
-            if n * It <= Ip:
-                missing.append(Missing(n, "forward", "conical",
-                                       "coincident" if n * It == Ip else "gyroscopic", It, Ip))
-            if n_complex:
-                missing.append(Missing(n, "forward", "mode", "complex", It, Ip))
+    r = rotor.conservative_part()
+    out, missing = _solved(r, orders, r.speed_span()) if r.varying else _exact(r, orders)
     out.sort(key=lambda c: (c.speed, c.order))
     return out, missing
 
 
 def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | None:
     """Where the damped whirl frequency of ``crit``'s mode equals ``order`` times the
-    speed, and the mode there; None when no such speed lies within [crit/4, 4 crit]
-    (a heavily damped mode).
+    speed, and the mode there (followed by its shape, and on isotropic bearings by its
+    whirl); None when no such speed lies within [crit/4, 4 crit] (a heavily damped mode) or
+    the bearing tables' speeds.
 
     Without damping and cross-coupling it is ``crit.speed`` itself (exact). Otherwise the
     root of ``g(Omega) = |Im lambda(Omega)| - n Omega`` is bracketed by stepping out from
     the undamped speed (steps growing by 1.5 from 1e-3 of it) and solved by Brent's method
     to the last bits (xtol 1e-12 of the speed).
     """
-    from rbcli.core.roots import brentq
+    n, W0 = crit.order, crit.speed
+    lo, hi = rotor.speed_span()
 
-    n = crit.order
-    W0 = crit.speed
-    plain = not rotor.damped and all(b.kxy == 0.0 and b.kyx == 0.0 for b in rotor.bearings)
+    whirl = crit.whirl if rotor.isotropic else None  # elliptic orbits: a label, not an identity
 
     def mode(x: float) -> Mode:
-        return follow(rotor, x, crit.vector, crit.whirl)
+        return follow(rotor, x, crit.vector, whirl=whirl)
 
-    if plain:
+    if rotor.conservative:  # the undamped crossing itself
         return W0, mode(W0)
 
     def g(x: float) -> float:
-        return mode(x).frequency - n * x
+        return abs(followed(rotor, [x], crit.vector, whirl=whirl, classify=False)[0][0].imag) - n * x
 
     g0 = g(W0)
     if g0 == 0.0:
         return W0, mode(W0)
+    # steps out from W0, each side in turn, growing by 1.5 from 1e-3 of it: every trial speed
+    # solved at once, the first whose sign differs from W0's brackets the root
+    trials = []
     h = 1e-3 * W0
     while h <= 3.0 * W0:
-        for x in (W0 - h, W0 + h):
-            if not (0.25 * W0 <= x <= 4.0 * W0) or x <= 0.0:
-                continue
-            gx = g(x)
-            if gx == 0.0:
-                return x, mode(x)
-            if (gx > 0.0) != (g0 > 0.0):
-                lo, hi = (x, W0) if x < W0 else (W0, x)
-                root = brentq(g, lo, hi, xtol=1e-12 * W0, rtol=4e-16)
-                return root, mode(root)
+        trials += [x for x in (W0 - h, W0 + h) if 0.25 * W0 <= x <= 4.0 * W0 and lo <= x <= hi and x > 0.0]
         h *= 1.5
+    lam, _, _ = followed(rotor, trials, crit.vector, whirl=whirl, classify=False)
+    for x, gx in zip(trials, np.abs(lam.imag) - n * np.array(trials)):
+        if gx == 0.0:
+            return x, mode(x)
+        if (gx > 0.0) != (g0 > 0.0):
+            root = brentq(g, min(x, W0), max(x, W0), xtol=1e-12 * W0, rtol=4e-16)
+            return root, mode(root)
     return None
+
+
+def critical_map(rotor: Rotor, stiffness) -> tuple[np.ndarray, list[tuple[str, str]]]:
+    """The undamped critical speed map (API 684's first look at a rotor): the order-1
+    critical speeds of the rotor on its bearing positions with every bearing an isotropic
+    spring k and no damping, for each k of ``stiffness`` (N/m, (K,)).
+
+    ``(k S - Omega^2 B) U = 0`` with ``S = sum [[1, a_i], [a_i, a_i^2]]`` and B the
+    forward or backward mass matrix of :func:`critical_speeds`, so each critical speed is
+    ``c sqrt(k)``: a straight line of slope 1/2 on log-log axes (a rigid rotor: no shaft
+    bending flattens it).
+
+    Returns
+    -------
+    ((K, B) ndarray rad/s, [(whirl, kind)] of the B branches, by speed at k = 1)
+    """
+    unit = Rotor(rotor.mass, rotor.It, rotor.Ip, rotor.z_com,
+                 tuple(Bearing(b.z, 1.0, 1.0) for b in rotor.bearings))
+    crits, _ = _exact(unit, (1,))
+    crits.sort(key=lambda c: c.speed)
+    k = np.sqrt(np.asarray(stiffness, dtype=float))
+    return np.outer(k, [c.speed for c in crits]), [(c.whirl, c.shape.kind) for c in crits]

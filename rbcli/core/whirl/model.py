@@ -1,4 +1,4 @@
-"""The rigid rotor on linear spring-damper bearings: its matrices and its mode shapes.
+"""The rigid rotor on linear bearings: its matrices and its mode shapes.
 
 Coordinates (the physics sheet ``physics/whirl.md``, written out here). The shaft frame
 is :mod:`rbcli.core.balance`'s: z along the shaft, x the 0° mark, y = z × x; the bearings
@@ -9,33 +9,27 @@ The rotor spins at Omega about +z. Its small motion is
 
 x, y: the displacement of the shaft axis at the centre of mass (m); theta_x, theta_y:
 its small rotations about x and y (rad), so that the axis at z (a = z - z_G from the com)
-is displaced by ``d_x = x + a theta_y``, ``d_y = y - a theta_x`` and its direction is
-(theta_y, -theta_x, 1). Bearing i at z_i (a_i = z_i - z_G) pushes back with
-``F_i = -K_i d_i - C_i d_i'`` (K_i, C_i the 2×2 stiffness and damping, N/m and N s/m).
+is displaced by ``d_x = x + a theta_y``, ``d_y = y - a theta_x``. Bearing i at z_i pushes
+back with ``F_i = -K_i d_i - C_i d_i'``, K_i = [[kxx, kxy], [kyx, kyy]] and C_i likewise
+(N/m, N s/m), constant or interpolated in a table against the speed (:class:`BearingTable`).
 With ``T_i = [[1, 0, 0, a_i], [0, 1, -a_i, 0]]`` (d_i = T_i q) the equations of motion are
 
     M q'' + (C + Omega G) q' + K q = f,
     M = diag(m, m, It, It),  K = sum T_i^T K_i T_i,  C = sum T_i^T C_i T_i,
     G = Ip [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1], [0, 0, -1, 0]],
 
-the last from the angular momentum about the com, L = (It theta_x' + Ip Omega theta_y,
-It theta_y' - Ip Omega theta_x, Ip Omega) to first order (Euler's equations of a
-symmetric rotor at constant spin; e.g. Friswell, Penny, Garvey and Lees, *Dynamics of
-Rotating Machines*, Cambridge 2010, §3.5; Genta, *Dynamics of Rotating Systems*, §4).
-Gravity is left out: it sets a static deflection, not the linear modes.
+the last from the angular momentum about the com to first order (Euler's equations of a
+symmetric rotor at constant spin; Friswell, Penny, Garvey and Lees, *Dynamics of Rotating
+Machines*, Cambridge 2010, §3.5; Genta, *Dynamics of Rotating Systems*, §4). Gravity is
+left out: it sets a static deflection (and, for an oil film, the coefficients), not the
+linear modes.
 
-Complex (directional) coordinates, used for isotropic bearings: ``r = x + i y`` and
-``phi = theta_y - i theta_x`` (the slope of the axis, so that the axis at a moves by
-``r + a phi``). A bearing with K_i = [[k, q], [-q, k]] and C_i = [[c, p], [-p, c]] gives
-``F = -(k - i q) d - (c - i p) d'`` and the four real equations become two complex ones,
-
-    m r'' + sum (c_i - i p_i)(r' + a_i phi') + sum (k_i - i q_i)(r + a_i phi) = f_r,
-    It phi'' - i Ip Omega phi' + sum a_i [(c_i - i p_i)(...)' + (k_i - i q_i)(...)] = f_phi,
-
-whose solutions ``e^{lambda t}`` with Im lambda > 0 whirl forwards (the same sense as the
-spin) and with Im lambda < 0 backwards. Undamped, ``lambda = i w``: the forward conical
-root of ``It w^2 - Ip Omega w - sum k a^2 = 0`` rises with the speed, the backward one
-(``-w``) falls: the sheet's closed forms.
+Complex (directional) coordinates, for isotropic bearings (kxx = kyy, kxy = -kyx, cxx =
+cyy, cxy = -cyx at every bearing and speed): ``r = x + i y``, ``phi = theta_y - i
+theta_x``, so that the axis at a moves by ``r + a phi``; a bearing then pushes with
+``-(kxx - i kxy) d - (cxx - i cxy) d'`` and the four real equations become two complex
+ones whose roots ``e^{lambda t}`` with Im lambda > 0 whirl forwards (with the spin) and
+Im lambda < 0 backwards.
 
 Pure functions on SI floats and numpy arrays; no I/O, no units.
 """
@@ -44,26 +38,30 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 #: a whirl whose forward share is within this of one half is a straight line ("linear")
 LINEAR_TOL = 1e-9
+#: the eight coefficients of a bearing, in the order bearing programs print them
+COEFFICIENTS = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
+WHIRLS = ("backward", "linear", "none", "forward")  # codes 0..3: the order ties are listed in
+KINDS = ("cylindrical", "conical", "mixed")
 
-__all__ = ["Bearing", "Rotor", "ModeShape", "mode_shape", "shape_of_real", "shape_of_complex"]
+__all__ = ["Bearing", "BearingTable", "Rotor", "ModeShape", "shapes", "shape_of", "real_parts",
+           "weighted", "cabs", "COEFFICIENTS", "WHIRLS", "KINDS", "damping_ratio", "log_decrement"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Bearing:
     """One linear bearing (spring and damper) at a station of the shaft.
 
     Attributes
     ----------
     z : float — m, position along the shaft (shaft frame)
-    kxx, kyy : float — N/m, direct stiffness in x and y (> 0)
-    kxy, kyx : float — N/m, cross-coupled stiffness: F_x = -(kxx d_x + kxy d_y),
-        F_y = -(kyx d_x + kyy d_y)
-    cxx, cyy : float — N s/m, direct damping (>= 0)
+    kxx, kyy, kxy, kyx : float — N/m: F_x = -(kxx d_x + kxy d_y), F_y = -(kyx d_x + kyy d_y)
+    cxx, cyy, cxy, cyx : float — N s/m, likewise on the velocities
     """
 
     z: float
@@ -73,25 +71,71 @@ class Bearing:
     kyx: float = 0.0
     cxx: float = 0.0
     cyy: float = 0.0
+    cxy: float = 0.0
+    cyx: float = 0.0
 
-    @property
-    def K(self) -> np.ndarray:
-        """(2, 2) ndarray — N/m, the stiffness matrix."""
-        return np.array([[self.kxx, self.kxy], [self.kyx, self.kyy]], dtype=float)
+    @cached_property
+    def values(self) -> np.ndarray:
+        """(1, 8) ndarray — the coefficients in :data:`COEFFICIENTS` order."""
+        return np.array([[getattr(self, k) for k in COEFFICIENTS]], dtype=float)
 
-    @property
-    def C(self) -> np.ndarray:
-        """(2, 2) ndarray — N s/m, the damping matrix (diagonal)."""
-        return np.array([[self.cxx, 0.0], [0.0, self.cyy]], dtype=float)
+    def coefficients(self, speeds, slope: bool = False) -> np.ndarray:
+        """(N, 8) ndarray — the coefficients at each of ``speeds`` (the same; with ``slope``
+        their derivatives in the speed: 0)."""
+        return np.repeat(0.0 * self.values if slope else self.values, np.size(speeds), axis=0)
 
-    @property
-    def isotropic(self) -> bool:
-        """The same in every direction across the shaft: kxx = kyy, kxy = -kyx, cxx = cyy
-        (exactly: a bearing given per direction with equal values is isotropic)."""
-        return self.kxx == self.kyy and self.kxy == -self.kyx and self.cxx == self.cyy
+    def at(self, speed: float) -> Bearing:
+        return self
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
+class BearingTable:
+    """A bearing whose coefficients change with the speed (an oil film, a seal): a table as
+    bearing programs print it, interpolated linearly in the speed between its rows.
+
+    Attributes
+    ----------
+    z : float — m
+    speeds : (S,) ndarray — rad/s, strictly ascending, S >= 2
+    values : (S, 8) ndarray — the coefficients at each speed, :data:`COEFFICIENTS` order
+
+    Outside ``speeds`` the end rows hold (the service refuses such speeds: a table is
+    never extrapolated silently).
+    """
+
+    z: float
+    speeds: np.ndarray
+    values: np.ndarray
+
+    def __post_init__(self) -> None:
+        for name in ("speeds", "values"):
+            a = np.array(getattr(self, name), dtype=float)
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
+
+    def coefficients(self, speeds, slope: bool = False) -> np.ndarray:
+        """(N, 8) ndarray — the coefficients at ``speeds`` (rad/s), linear between rows (with
+        ``slope``: their derivatives in the speed, the slope of the row pair; 0 outside)."""
+        x = np.atleast_1d(np.asarray(speeds, dtype=float))
+        j = np.clip(np.searchsorted(self.speeds, x, side="right") - 1, 0, len(self.speeds) - 2)
+        x0, x1 = self.speeds[j], self.speeds[j + 1]
+        if slope:
+            inside = ((x >= self.speeds[0]) & (x <= self.speeds[-1]))[:, None]
+            return np.where(inside, (self.values[j + 1] - self.values[j]) / (x1 - x0)[:, None], 0.0)
+        t = np.clip((x - x0) / (x1 - x0), 0.0, 1.0)[:, None]
+        return (1.0 - t) * self.values[j] + t * self.values[j + 1]
+
+    def at(self, speed: float) -> Bearing:
+        """The bearing with the coefficients it has at ``speed``."""
+        return Bearing(self.z, **{k: float(v) for k, v in zip(COEFFICIENTS, self.coefficients([speed])[0])})
+
+
+def _is_isotropic(v: np.ndarray) -> bool:
+    kxx, kxy, kyx, kyy, cxx, cxy, cyx, cyy = v.T
+    return bool(np.all((kxx == kyy) & (kxy == -kyx) & (cxx == cyy) & (cxy == -cyx)))
+
+
+@dataclass(frozen=True, eq=False)
 class Rotor:
     """A rigid rotor on its bearings.
 
@@ -101,29 +145,80 @@ class Rotor:
     It : float — kg m², moment across the shaft about the com (the mean of the two)
     Ip : float — kg m², polar moment about the shaft (through the com)
     z_com : float — m, the com's position along the shaft
-    bearings : tuple of Bearing — two or more, at distinct positions
+    bearings : tuple of Bearing or BearingTable — two or more, at distinct positions
     """
 
     mass: float
     It: float
     Ip: float
     z_com: float
-    bearings: tuple[Bearing, ...]
+    bearings: tuple
 
-    # ------------------------------------------------------------------ the matrices
+    @cached_property
+    def varying(self) -> bool:
+        """A bearing's coefficients change with the speed."""
+        return any(isinstance(b, BearingTable) for b in self.bearings)
 
-    @property
+    @cached_property
+    def _rows(self) -> np.ndarray:
+        return np.concatenate([b.values for b in self.bearings])
+
+    @cached_property
     def isotropic(self) -> bool:
-        """Every bearing isotropic: the complex (directional) reduction applies."""
-        return all(b.isotropic for b in self.bearings)
+        """Every bearing isotropic at every speed: the directional reduction applies."""
+        return _is_isotropic(self._rows)
 
-    @property
+    @cached_property
     def damped(self) -> bool:
-        return any(b.cxx != 0.0 or b.cyy != 0.0 for b in self.bearings)
+        return bool(np.any(self._rows[:, 4:] != 0.0))
+
+    @cached_property
+    def conservative(self) -> bool:
+        """No damping and symmetric stiffness (kxy = kyx): every root on the imaginary axis."""
+        return not self.damped and bool(np.all(self._rows[:, 1] == self._rows[:, 2]))
+
+    def speed_span(self) -> tuple[float, float]:
+        """rad/s, the speeds every table covers ((0, inf) without tables)."""
+        tables = [b.speeds for b in self.bearings if isinstance(b, BearingTable)]
+        return (max((float(s[0]) for s in tables), default=0.0),
+                min((float(s[-1]) for s in tables), default=math.inf))
+
+    def at(self, speed: float) -> Rotor:
+        """The rotor on the bearings as they are at ``speed`` (constant coefficients)."""
+        return Rotor(self.mass, self.It, self.Ip, self.z_com, tuple(b.at(speed) for b in self.bearings))
+
+    def undamped(self) -> Rotor:
+        """The same rotor with every damper removed (stiffness tables kept)."""
+        return self._with(lambda v: np.concatenate([v[:, :4], 0.0 * v[:, 4:]], axis=1))
+
+    def conservative_part(self) -> Rotor:
+        """The rotor without its dampers and without the follower (skew) part of its
+        cross-coupled stiffness: kxy and kyx both their mean (API 684's undamped analysis
+        takes the bearings' direct stiffness)."""
+        def part(v: np.ndarray) -> np.ndarray:
+            s = 0.5 * (v[:, 1] + v[:, 2])
+            return np.column_stack([v[:, 0], s, s, v[:, 3], 0.0 * v[:, 4:]])
+        return self._with(part)
+
+    def _with(self, f) -> Rotor:
+        """The rotor with every bearing's (S, 8) coefficients replaced by ``f`` of them."""
+        out = []
+        for b in self.bearings:
+            v = f(b.values)
+            out.append(BearingTable(b.z, b.speeds, v) if isinstance(b, BearingTable) else
+                       Bearing(b.z, *(float(v[0, c]) for c in (0, 3, 1, 2, 4, 7, 5, 6))))
+        return Rotor(self.mass, self.It, self.Ip, self.z_com, tuple(out))
 
     def arms(self) -> np.ndarray:
         """(n,) ndarray — m, a_i = z_i - z_G."""
         return np.array([b.z - self.z_com for b in self.bearings], dtype=float)
+
+    def span(self) -> tuple[float, float]:
+        """(z_min, z_max) — m, the outermost bearings."""
+        zs = [b.z for b in self.bearings]
+        return min(zs), max(zs)
+
+    # ------------------------------------------------------------------ the matrices
 
     def M(self) -> np.ndarray:
         """(4, 4) ndarray — the mass matrix diag(m, m, It, It)."""
@@ -136,60 +231,44 @@ class Rotor:
         g[3, 2] = -self.Ip
         return g
 
-    @staticmethod
-    def _T(a: float) -> np.ndarray:
-        return np.array([[1.0, 0.0, 0.0, a], [0.0, 1.0, -a, 0.0]])
-
-    def K(self) -> np.ndarray:
-        """(4, 4) ndarray — the stiffness matrix sum T_i^T K_i T_i."""
-        out = np.zeros((4, 4))
+    def matrices(self, speeds, slope: bool = False) -> tuple[np.ndarray, np.ndarray]:
+        """(K, C), each (N, 4, 4), at each of ``speeds``: sum T_i^T K_i T_i and likewise C
+        (with ``slope``: their derivatives in the speed)."""
+        n = np.size(speeds)
+        K, C = np.zeros((n, 4, 4)), np.zeros((n, 4, 4))
         for b, a in zip(self.bearings, self.arms()):
-            T = self._T(float(a))
-            out += T.T @ b.K @ T
-        return out
+            T = np.array([[1.0, 0.0, 0.0, a], [0.0, 1.0, -a, 0.0]])
+            v = b.coefficients(speeds, slope).reshape(n, 2, 2, 2)  # (N, K/C, row, column)
+            K += T.T @ v[:, 0] @ T
+            C += T.T @ v[:, 1] @ T
+        return K, C
 
-    def C(self) -> np.ndarray:
-        """(4, 4) ndarray — the damping matrix sum T_i^T C_i T_i."""
-        out = np.zeros((4, 4))
-        for b, a in zip(self.bearings, self.arms()):
-            T = self._T(float(a))
-            out += T.T @ b.C @ T
-        return out
+    def K(self, speed: float = 0.0) -> np.ndarray:
+        """(4, 4) ndarray — the stiffness matrix at ``speed``."""
+        return self.matrices([speed])[0][0]
 
-    def complex_matrices(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(M_c, K_c, C_c), each (2, 2) complex, of the directional coordinates [r, phi]
-        (isotropic bearings only; the gyroscopic term is ``-i Ip Omega`` on phi').
+    def C(self, speed: float = 0.0) -> np.ndarray:
+        """(4, 4) ndarray — the damping matrix at ``speed``."""
+        return self.matrices([speed])[1][0]
 
-        Raises
-        ------
-        ValueError
-            a bearing is not isotropic.
-        """
-        if not self.isotropic:
-            raise ValueError("complex_matrices: the bearings are not isotropic")
-        Kc = np.zeros((2, 2), dtype=complex)
-        Cc = np.zeros((2, 2), dtype=complex)
+    def complex_matrices(self, speeds) -> tuple[np.ndarray, np.ndarray]:
+        """(K_c, C_c), each (N, 2, 2) complex, of the directional coordinates [r, phi] at
+        ``speeds`` (isotropic bearings; the mass matrix is diag(m, It), the gyroscopic
+        term ``-i Ip Omega`` on phi')."""
+        n = np.size(speeds)
+        Kc, Cc = np.zeros((n, 2, 2), dtype=complex), np.zeros((n, 2, 2), dtype=complex)
         for b, a in zip(self.bearings, self.arms()):
             S = np.array([[1.0, a], [a, a * a]])
-            Kc += complex(b.kxx, -b.kxy) * S
-            Cc += complex(b.cxx, 0.0) * S
-        return np.diag([self.mass, self.It]).astype(complex), Kc, Cc
-
-    def undamped(self) -> "Rotor":
-        """The same rotor with every damper removed."""
-        return Rotor(self.mass, self.It, self.Ip, self.z_com,
-                     tuple(Bearing(b.z, b.kxx, b.kyy, b.kxy, b.kyx) for b in self.bearings))
-
-    def span(self) -> tuple[float, float]:
-        """(z_min, z_max) — m, the outermost bearings."""
-        zs = [b.z for b in self.bearings]
-        return min(zs), max(zs)
+            v = b.coefficients(speeds)
+            Kc += (v[:, 0] - 1j * v[:, 1])[:, None, None] * S
+            Cc += (v[:, 4] - 1j * v[:, 5])[:, None, None] * S
+        return Kc, Cc
 
 
 # ---------------------------------------------------------------------- mode shapes
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ModeShape:
     """What a mode looks like along the shaft.
 
@@ -200,37 +279,33 @@ class ModeShape:
         anisotropic bearings at rest) or "none" (a non-oscillating, overdamped motion)
     forward_share : float — the forward part of the mode's whirl, by kinetic weight
         ``(m |r_f|^2 + It |phi_f|^2) / (... forward + backward)``, 0..1 (1 for a forward
-        circular whirl, 0.5 for motion in a line)
-    kind : str — "cylindrical", "conical" or "mixed" (see :func:`mode_shape`)
+        circular whirl, 0.5 for motion in a line): its forward/backward index
+    kind : str — "cylindrical", "conical" or "mixed" (see :func:`shapes`)
     node : float | None — m, position along the shaft where the (dominant whirl
         component of the) motion is least; None for pure translation (node at infinity)
-    bearing_ratio : float — the smaller over the larger motion at the outermost bearings
-    in_phase : bool — the outermost bearings move in phase
     """
 
     whirl: str
     forward_share: float
     kind: str
     node: float | None
-    bearing_ratio: float
-    in_phase: bool
 
 
-def mode_shape(rotor: Rotor, r_f: complex, phi_f: complex, r_b: complex, phi_b: complex,
-               oscillating: bool = True) -> ModeShape:
-    """Classify a mode from its forward and backward parts.
+def shapes(rotor: Rotor, parts: np.ndarray, oscillating: np.ndarray) -> dict[str, np.ndarray]:
+    """Classify modes from their forward and backward parts.
 
     Parameters
     ----------
     rotor : Rotor
-    r_f, phi_f : complex — the forward circular part of the motion of the axis at the com
-        (m) and of its slope (rad): the axis at a moves forward by ``r_f + a phi_f``
-    r_b, phi_b : complex — the backward part, likewise
-    oscillating : bool — False for a real eigenvalue (no whirl: "none")
+    parts : (..., 4) complex ndarray — ``[r_f, phi_f, r_b, phi_b]``: the forward circular
+        part of the motion of the axis at the com (m) and of its slope (rad) (the axis at a
+        moves forward by ``r_f + a phi_f``), then the backward part
+    oscillating : (...) bool ndarray — False for a real eigenvalue (no whirl: "none")
 
     Returns
     -------
-    ModeShape
+    dict of arrays of the leading shape of ``parts``: ``share`` (forward share), ``whirl``
+    (index in :data:`WHIRLS`), ``kind`` (index in :data:`KINDS`), ``node`` (m, NaN for none)
 
     Notes
     -----
@@ -240,61 +315,62 @@ def mode_shape(rotor: Rotor, r_f: complex, phi_f: complex, r_b: complex, phi_b: 
     move by u_1 and u_2: the mode is *conical* when they move out of phase (Re(u_1
     conj(u_2)) < 0: a node between them), *cylindrical* when they move in phase with the
     smaller at least half the larger (a node farther than one bearing span outside them,
-    or none), and *mixed* in between (in phase, one bearing moving less than half the
-    other: a node just outside the bearings).
+    or none), and *mixed* in between.
     """
     m, It = rotor.mass, rotor.It
-    ef = m * abs(r_f) ** 2 + It * abs(phi_f) ** 2
-    eb = m * abs(r_b) ** 2 + It * abs(phi_b) ** 2
+    ef = m * cabs(parts[..., 0]) ** 2 + It * cabs(parts[..., 1]) ** 2
+    eb = m * cabs(parts[..., 2]) ** 2 + It * cabs(parts[..., 3]) ** 2
     total = ef + eb
-    share = ef / total if total > 0.0 else 0.5
-    if not oscillating:
-        whirl = "none"
-    elif abs(share - 0.5) <= LINEAR_TOL:
-        whirl = "linear"
-    else:
-        whirl = "forward" if ef >= eb else "backward"
-    r, phi = (r_f, phi_f) if ef >= eb else (r_b, phi_b)
+    share = np.divide(ef, total, out=np.full(ef.shape, 0.5), where=total > 0.0)
+    fwd = ef >= eb
+    whirl = np.where(~oscillating, 2, np.where(np.abs(share - 0.5) <= LINEAR_TOL, 1, np.where(fwd, 3, 0)))
+    r = np.where(fwd, parts[..., 0], parts[..., 2])
+    phi = np.where(fwd, parts[..., 1], parts[..., 3])
     z1, z2 = rotor.span()
-    S = z2 - z1
-    u1 = r + (z1 - rotor.z_com) * phi
-    u2 = r + (z2 - rotor.z_com) * phi
-    big = max(abs(u1), abs(u2))
-    ratio = min(abs(u1), abs(u2)) / big if big > 0.0 else 1.0
-    in_phase = (u1 * u2.conjugate()).real >= 0.0
-    scale = max(abs(r), abs(phi) * S)
-    if abs(phi) * S <= 1e-12 * scale or scale == 0.0:
-        node = None
-    else:
-        node = rotor.z_com - (r * phi.conjugate()).real / abs(phi) ** 2
-    if not in_phase:
-        kind = "conical"
-    elif ratio >= 0.5:
-        kind = "cylindrical"
-    else:
-        kind = "mixed"
-    return ModeShape(whirl, float(share), kind, None if node is None else float(node), float(ratio),
-                     bool(in_phase))
+    u1, u2 = r + (z1 - rotor.z_com) * phi, r + (z2 - rotor.z_com) * phi
+    big = np.maximum(cabs(u1), cabs(u2))
+    ratio = np.divide(np.minimum(cabs(u1), cabs(u2)), big, out=np.ones(big.shape), where=big > 0.0)
+    tilt = cabs(phi) * (z2 - z1)
+    scale = np.maximum(cabs(r), tilt)
+    none = (tilt <= 1e-12 * scale) | (scale == 0.0)
+    node = np.where(none, np.nan, rotor.z_com - (r * np.conj(phi)).real
+                    / np.where(none, 1.0, cabs(phi) ** 2))
+    kind = np.where((u1 * np.conj(u2)).real < 0.0, 1, np.where(ratio >= 0.5, 0, 2))
+    return {"share": share, "whirl": whirl, "kind": kind, "node": node}
 
 
-def shape_of_real(rotor: Rotor, q: np.ndarray, oscillating: bool = True) -> ModeShape:
-    """:func:`mode_shape` of a real-coordinate eigenvector ``q`` = [X, Y, TX, TY] (complex
-    amplitudes of x, y, theta_x, theta_y in ``Re(q e^{i w t})``, w > 0).
+def shape_of(rotor: Rotor, parts: np.ndarray, oscillating: bool = True) -> ModeShape:
+    """:func:`shapes` of one mode's parts (4,), as a :class:`ModeShape`."""
+    s = shapes(rotor, np.asarray(parts, dtype=complex), np.asarray(oscillating))
+    node = float(s["node"])
+    return ModeShape(WHIRLS[int(s["whirl"])], float(s["share"]), KINDS[int(s["kind"])],
+                     None if math.isnan(node) else node)
+
+
+def real_parts(q: np.ndarray) -> np.ndarray:
+    """(..., 4) complex: the forward and backward parts (:func:`shapes`) of real-coordinate
+    amplitudes q = [X, Y, TX, TY] (..., 4) in ``Re(q e^{i w t})``, w > 0.
 
     The motion x + i y = ½[(X + iY) e^{iwt} + conj(X - iY) e^{-iwt}]: forward part X + iY,
     backward X - iY; the slope phi = theta_y - i theta_x likewise: forward TY - i TX,
     backward TY + i TX (common factors ½ and conjugation do not change the shape)."""
-    X, Y, TX, TY = (complex(v) for v in q)
-    return mode_shape(rotor, X + 1j * Y, TY - 1j * TX, X - 1j * Y, TY + 1j * TX, oscillating)
+    X, Y, TX, TY = (q[..., k] for k in range(4))
+    return np.stack([X + 1j * Y, TY - 1j * TX, X - 1j * Y, TY + 1j * TX], axis=-1)
 
 
-def shape_of_complex(rotor: Rotor, u: np.ndarray, forward: bool, oscillating: bool = True) -> ModeShape:
-    """:func:`mode_shape` of a directional eigenvector u = [R, PHI] (isotropic bearings):
-    all forward (``forward``) or all backward."""
-    R, P = complex(u[0]), complex(u[1])
-    if forward:
-        return mode_shape(rotor, R, P, 0.0, 0.0, oscillating)
-    return mode_shape(rotor, 0.0, 0.0, R, P, oscillating)
+def weighted(rotor: Rotor, parts: np.ndarray) -> np.ndarray:
+    """(..., 4) complex: the unit shape weighted for comparisons between modes of one rotor
+    (MAC), ``[sqrt(m) r_f, sqrt(It) phi_f, sqrt(m) r_b, sqrt(It) phi_b]`` scaled to 1."""
+    sm, si = math.sqrt(rotor.mass), math.sqrt(rotor.It)
+    w = parts * np.array([sm, si, sm, si])
+    n = np.linalg.norm(w, axis=-1, keepdims=True)
+    return w / np.where(n > 0.0, n, 1.0)
+
+
+def cabs(z) -> np.ndarray:
+    """|z| of complex ``z`` elementwise, as Python's ``abs`` gives it (hypot)."""
+    z = np.asarray(z)
+    return np.hypot(z.real, z.imag)
 
 
 def log_decrement(lam: complex) -> float | None:

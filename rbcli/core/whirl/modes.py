@@ -1,9 +1,11 @@
-"""Whirl modes of the rigid rotor at a speed, the Campbell diagram and the onset of
-instability (:mod:`rbcli.core.whirl.model` has the equations).
+"""Whirl modes of the rigid rotor over speeds, each followed by its shape; the roots of a
+mode's frequency or growth rate along the speed (:mod:`rbcli.core.whirl.model` has the
+equations).
 
 At a speed Omega the free motion ``q = Q e^{lambda t}`` solves the quadratic eigenproblem
-``(lambda^2 M + lambda (C + Omega G) + K) Q = 0``, solved here through its companion
-(first-order) form ``A = [[0, I], [-M^-1 K, -M^-1 (C + Omega G)]]``:
+``(lambda^2 M + lambda (C + Omega G) + K) Q = 0``, solved through its companion (first-
+order) form ``A = [[0, I], [-M^-1 K, -M^-1 (C + Omega G)]]`` for every speed at once (a
+stack of matrices, one ``numpy.linalg.eig``):
 
 - isotropic bearings: the 4×4 complex companion of the directional coordinates [r, phi];
   each of its four eigenvalues is one mode, forward when Im lambda > 0, backward when
@@ -12,31 +14,44 @@ At a speed Omega the free motion ``q = Q e^{lambda t}`` solves the quadratic eig
   Im lambda > 0), each two real roots one non-oscillating (overdamped) mode.
 
 Whirl frequencies are in the fixed (bearing) frame. Damping ratio ``zeta = -Re lambda /
-|lambda|``, logarithmic decrement ``delta = -2 pi Re lambda / |Im lambda|``; a mode grows
-(is unstable) when Re lambda > 0. Without damping and without cross-coupled stiffness
-the system is gyroscopic and conservative with K positive definite, hence stable with
-every lambda on the imaginary axis (Thomson-Tait-Chetaev; e.g. Meirovitch, *Methods of
-Analytical Dynamics*, §7.9): Re lambda is set to 0 there instead of carrying the
-eigensolver's round-off (~1e-16 |lambda|).
+|lambda|``, logarithmic decrement ``delta = -2 pi Re lambda / |Im lambda|``. A
+conservative rotor (no damping, symmetric stiffness) has every lambda on the imaginary
+axis (Thomson-Tait-Chetaev; Meirovitch, *Methods of Analytical Dynamics*, §7.9): Re lambda
+is set to 0 there instead of carrying the eigensolver's round-off.
+
+At each speed the modes are numbered by frequency (``Campbell``); a mode is followed from
+one speed to the next by its shape (:func:`track`: the assignment with the largest summed
+modal assurance criterion, the step halved where it is not clear), never by its rank, so
+that two modes whose frequencies cross keep their identities (a growing mode crossing a
+decaying one is not a change of stability). Where a followed quantity changes sign
+between two speeds, its root is solved by Brent's method (:func:`branch_roots`).
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
-from itertools import permutations
 
 import numpy as np
 
+from rbcli.core.roots import brentq
 from rbcli.core.whirl.model import (
-    ModeShape, Rotor, damping_ratio, log_decrement, shape_of_complex, shape_of_real,
+    KINDS, WHIRLS, ModeShape, Rotor, cabs, damping_ratio, log_decrement, real_parts, shapes, weighted,
 )
 
-__all__ = ["Mode", "modes_at", "Campbell", "campbell", "GROWTH_RTOL", "onset_speeds", "mac"]
+__all__ = ["Mode", "Campbell", "campbell", "modes_at", "track", "branch_roots", "follow",
+           "followed", "GROWTH_RTOL"]
 
-#: a mode grows when Re lambda exceeds this fraction of |lambda| (well above the
-#: eigensolver's round-off, ~1e-15, and far below any damping ratio an engineer quotes)
-GROWTH_RTOL = 1e-9
+#: a mode grows when Re lambda exceeds this fraction of its |lambda| (well above the
+#: eigen-solve's round-off, ~1e-15 of the largest root; a growth this slow doubles in some
+#: 1e9 periods). Each root is judged against its own |lambda|: a slow mode's growth beside a
+#: fast one is still growth. Thresholds are the roots of Re lambda = 0 itself.
+GROWTH_RTOL = 1e-10
+#: a step between two speeds is clear when every mode's shape at the first has a MAC of
+#: at least this with the mode it is assigned at the second (else the step is halved)
+CLEAR_MAC = 0.8
+_PERMS = np.array(list(itertools.permutations(range(4))))
 
 
 @dataclass(frozen=True, eq=False)
@@ -50,12 +65,10 @@ class Mode:
     frequency : float — rad/s, |Im lambda|, fixed frame (0 for a non-oscillating mode)
     damping_ratio : float — -Re lambda/|lambda|
     log_decrement : float | None — -2 pi Re lambda/|Im lambda| (None when not oscillating)
-    shape : ModeShape — whirl direction, kind and node
+    shape : ModeShape — whirl direction, forward/backward index, kind and node
     vector : (4,) complex ndarray — the shape weighted for comparisons between modes of one
-        rotor (MAC), unit norm: real coordinates [sqrt(m) (X + iY), sqrt(It) (TY - iTX),
-        sqrt(m) (X - iY), sqrt(It) (TY + iTX)] (a unitary image of the mass-weighted q);
-        isotropic bearings: [sqrt(m) R, sqrt(It) PHI] in the first (forward) or last
-        (backward) two places
+        rotor (MAC), unit norm: [sqrt(m) r_f, sqrt(It) phi_f, sqrt(m) r_b, sqrt(It) phi_b]
+    growing : bool — Re lambda > GROWTH_RTOL |lambda|
     """
 
     eigenvalue: complex
@@ -64,216 +77,259 @@ class Mode:
     log_decrement: float | None
     shape: ModeShape
     vector: np.ndarray
-
-    @property
-    def growing(self) -> bool:
-        """Re lambda > GROWTH_RTOL |lambda|: the mode grows (unstable)."""
-        return self.eigenvalue.real > GROWTH_RTOL * abs(self.eigenvalue)
+    growing: bool
 
     @property
     def whirl(self) -> str:
         return self.shape.whirl
 
 
-def mac(u: np.ndarray, v: np.ndarray) -> float:
-    """The modal assurance criterion |u^H v|^2 / (|u|^2 |v|^2), 0..1."""
-    nu = float(np.vdot(u, u).real)
-    nv = float(np.vdot(v, v).real)
-    if nu == 0.0 or nv == 0.0:
-        return 0.0
-    return abs(np.vdot(u, v)) ** 2 / (nu * nv)
-
-
-def _conservative(rotor: Rotor) -> bool:
-    """No damping and no cross-coupled stiffness: every root on the imaginary axis."""
-    return not rotor.damped and all(b.kxy == 0.0 and b.kyx == 0.0 for b in rotor.bearings)
-
-
-def _unit(v: np.ndarray) -> np.ndarray:
-    n = float(np.linalg.norm(v))
-    out = v / n if n > 0.0 else v
-    out.setflags(write=False)
-    return out
-
-
-def _isotropic_modes(rotor: Rotor, speed: float) -> list[Mode]:
-    Mc, Kc, Cc = rotor.complex_matrices()
+def _isotropic(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(lambda (n, 4), parts (n, 4, 4), oscillating (n, 4)) from the directional companion."""
+    Kc, Cc = rotor.complex_matrices(sp)
+    n = len(sp)
+    Minv = np.array([1.0 / rotor.mass, 1.0 / rotor.It])[None, :, None]
     Gc = np.array([[0.0, 0.0], [0.0, -1j * rotor.Ip]])
-    Minv = np.diag(1.0 / np.diag(Mc).real)
-    A = np.zeros((4, 4), dtype=complex)
-    A[:2, 2:] = np.eye(2)
-    A[2:, :2] = -Minv @ Kc
-    A[2:, 2:] = -Minv @ (Cc + speed * Gc)
+    A = np.zeros((n, 4, 4), dtype=complex)
+    A[:, :2, 2:] = np.eye(2)
+    A[:, 2:, :2] = -Minv * Kc
+    A[:, 2:, 2:] = -Minv * (Cc + sp[:, None, None] * Gc)
     lam, V = np.linalg.eig(A)
-    snap = _conservative(rotor)
-    sm, si = math.sqrt(rotor.mass), math.sqrt(rotor.It)
-    scale = float(np.max(np.abs(lam))) if lam.size else 1.0
-    out = []
-    for k in range(4):
-        lk = complex(lam[k])
-        if snap:
-            lk = complex(0.0, lk.imag)
-        elif abs(lk.imag) <= 1e-12 * scale:
-            # an overdamped root: its imaginary part is round-off of the eigen-solve (as in
-            # _real_modes, the same bound), not a whirl
-            lk = complex(lk.real, 0.0)
-        u = V[:2, k]
-        forward = lk.imag >= 0.0
-        osc = lk.imag != 0.0
-        shape = shape_of_complex(rotor, u, forward, osc)
-        w = np.array([sm * u[0], si * u[1], 0.0, 0.0] if forward else [0.0, 0.0, sm * u[0], si * u[1]],
-                     dtype=complex)
-        out.append(Mode(lk, abs(lk.imag), damping_ratio(lk), log_decrement(lk), shape, _unit(w)))
-    return out
+    scale = np.max(np.abs(lam), axis=1, keepdims=True)
+    if rotor.conservative:
+        lam = 1j * lam.imag
+    else:  # an overdamped root: its imaginary part is the eigen-solve's round-off, not a whirl
+        lam = np.where(np.abs(lam.imag) <= 1e-12 * scale, lam.real + 0j, lam)
+    u = np.swapaxes(V[:, :2, :], 1, 2)  # (n, 4 modes, [R, PHI])
+    zero = np.zeros_like(u)
+    fwd = (lam.imag >= 0.0)[..., None]
+    return lam, np.concatenate([np.where(fwd, u, zero), np.where(fwd, zero, u)], axis=-1), lam.imag != 0.0
 
 
-def _real_modes(rotor: Rotor, speed: float) -> list[Mode]:
-    M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
-    Minv = np.diag(1.0 / np.diag(M))
-    A = np.zeros((8, 8))
-    A[:4, 4:] = np.eye(4)
-    A[4:, :4] = -Minv @ K
-    A[4:, 4:] = -Minv @ (C + speed * G)
-    lam, V = np.linalg.eig(A)
-    snap = _conservative(rotor)
-    sm, si = math.sqrt(rotor.mass), math.sqrt(rotor.It)
-    scale = float(np.max(np.abs(lam))) if lam.size else 1.0
-    out = []
-    reals = []
-    for k in range(8):
-        lk = complex(lam[k])
-        if abs(lk.imag) <= 1e-12 * scale and not snap:
-            reals.append((lk.real, V[:4, k]))
-            continue
-        if lk.imag < 0.0:
-            continue
-        if snap:
-            lk = complex(0.0, lk.imag)
-        q = V[:4, k]
-        X, Y, TX, TY = (complex(v) for v in q)
-        shape = shape_of_real(rotor, q)
-        w = np.array([sm * (X + 1j * Y), si * (TY - 1j * TX),
-                      sm * (X - 1j * Y), si * (TY + 1j * TX)], dtype=complex)
-        out.append(Mode(lk, abs(lk.imag), damping_ratio(lk), log_decrement(lk), shape, _unit(w)))
-    reals.sort(key=lambda t: t[0])
-    for i in range(0, len(reals) - 1, 2):
-        (s1, v1), (s2, _) = reals[i], reals[i + 1]
-        wn = math.sqrt(abs(s1 * s2))
-        zeta = -(s1 + s2) / (2.0 * wn) if wn > 0.0 else 1.0
-        q = np.real(v1).astype(complex)
-        X, Y, TX, TY = (complex(v) for v in q)
-        shape = shape_of_real(rotor, q, oscillating=False)
-        w = np.array([sm * (X + 1j * Y), si * (TY - 1j * TX), sm * (X - 1j * Y),
-                      si * (TY + 1j * TX)], dtype=complex)
-        lk = complex(max(s1, s2), 0.0)  # the slower root decides growth
-        out.append(Mode(lk, 0.0, float(zeta), None, shape, _unit(w)))
-    return out
+def _real(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(lambda, parts, oscillating) from the real 8×8 companion: each root with Im > 0 a
+    mode (in the eigen-solve's order), then each two real roots (by value) one
+    non-oscillating mode, whose slower root decides growth."""
+    K, C = rotor.matrices(sp)
+    n = len(sp)
+    Minv = (1.0 / np.diag(rotor.M()))[None, :, None]
+    A = np.zeros((n, 8, 8))
+    A[:, :4, 4:] = np.eye(4)
+    A[:, 4:, :4] = -Minv * K
+    A[:, 4:, 4:] = -Minv * (C + sp[:, None, None] * rotor.G())
+    lam8, V8 = np.linalg.eig(A)
+    tol = 0.0 if rotor.conservative else 1e-12 * np.max(np.abs(lam8), axis=1, keepdims=True)
+    upper = lam8.imag > tol
+    real = np.abs(lam8.imag) <= tol
+    # roots whirling first (their order kept), then the real ones by value, the rest last
+    order = np.lexsort((np.where(real, lam8.real, 0.0), np.where(upper, 0, np.where(real, 1, 2))), axis=1)
+    k = np.arange(4)[None, :]
+    n_up = upper.sum(axis=1, keepdims=True)
+    osc = k < n_up
+    first = np.minimum(np.where(osc, k, n_up + 2 * (k - n_up)), 7)  # its root, or its real pair's first
+    ia = np.take_along_axis(order, first, 1)
+    ib = np.take_along_axis(order, np.minimum(first + ~osc, 7), 1)
+    la, lb = np.take_along_axis(lam8, ia, 1), np.take_along_axis(lam8, ib, 1)
+    lam = np.where(osc, 1j * la.imag if rotor.conservative else la, np.maximum(la.real, lb.real) + 0j)
+    q = np.take_along_axis(np.swapaxes(V8[:, :4, :], 1, 2), ia[..., None], 1)
+    return lam, real_parts(np.where(osc[..., None], q, q.real + 0j)), osc
 
 
-_WHIRL_RANK = {"backward": 0, "linear": 1, "none": 2, "forward": 3}
-
-
-def _order(modes: list[Mode]) -> list[Mode]:
-    """Ascending frequency; modes whose frequencies agree to 1e-9 (a forward/backward pair
-    at rest on isotropic bearings) backward first."""
-    out = sorted(modes, key=lambda m: m.frequency)
-    for i in range(len(out) - 1):
-        a, b = out[i], out[i + 1]
-        if abs(a.frequency - b.frequency) <= 1e-9 * max(a.frequency, b.frequency) and \
-                _WHIRL_RANK[a.whirl] > _WHIRL_RANK[b.whirl]:
-            out[i], out[i + 1] = b, a
-    return out
-
-
-def modes_at(rotor: Rotor, speed: float) -> list[Mode]:
-    """The four whirl modes at ``speed`` (rad/s), by ascending frequency.
-
-    Parameters
-    ----------
-    rotor : Rotor
-    speed : float — rad/s, Omega (>= 0)
-
-    Returns
-    -------
-    list of 4 Mode
-    """
-    modes = _isotropic_modes(rotor, speed) if rotor.isotropic else _real_modes(rotor, speed)
-    return _order(modes)
+def _order(lam: np.ndarray, code: np.ndarray) -> np.ndarray:
+    """(n, 4) index: ascending frequency; modes whose frequencies agree to 1e-9 (a
+    forward/backward pair at rest on isotropic bearings) backward first."""
+    f = np.abs(lam.imag)
+    idx = np.argsort(f, axis=1, kind="stable")
+    f, c = np.take_along_axis(f, idx, 1), np.take_along_axis(code, idx, 1)
+    for i in range(3):
+        swap = (np.abs(f[:, i] - f[:, i + 1]) <= 1e-9 * np.maximum(f[:, i], f[:, i + 1])) & (c[:, i] > c[:, i + 1])
+        for a in (idx, f, c):
+            a[swap, i], a[swap, i + 1] = a[swap, i + 1], a[swap, i].copy()
+    return idx
 
 
 @dataclass(frozen=True, eq=False)
 class Campbell:
-    """Whirl modes over a range of speeds (numbered by frequency at each speed).
+    """Whirl modes over speeds, numbered by frequency at each speed (lowest first).
 
     Attributes
     ----------
     speeds : (N,) ndarray — rad/s
-    modes : tuple of N tuples of 4 Mode — ``modes[j][i]``: mode i (by frequency) at speed j
+    eigenvalues : (N, 4) complex ndarray
+    vectors : (N, 4, 4) complex ndarray — each mode's weighted unit shape (Mode.vector)
+    whirl, kind : (N, 4) int ndarrays — indices in :data:`WHIRLS` and :data:`KINDS`
+    share, node : (N, 4) ndarrays — forward share; node (m, NaN for none)
+    growing : (N, 4) bool ndarray
     """
 
     speeds: np.ndarray
-    modes: tuple[tuple[Mode, ...], ...]
+    eigenvalues: np.ndarray
+    vectors: np.ndarray
+    whirl: np.ndarray
+    kind: np.ndarray
+    share: np.ndarray
+    node: np.ndarray
+    growing: np.ndarray
+    rotor: Rotor
 
-    def array(self, what: str) -> np.ndarray:
-        """(4, N) ndarray of ``frequency`` or ``damping_ratio`` (mode i, speed j)."""
-        return np.array([[getattr(m[i], what) for m in self.modes] for i in range(4)], dtype=float)
+    @property
+    def frequency(self) -> np.ndarray:
+        return np.abs(self.eigenvalues.imag)
+
+    @property
+    def damping_ratio(self) -> np.ndarray:
+        a = cabs(self.eigenvalues)
+        return np.divide(-self.eigenvalues.real, a, out=np.zeros(a.shape), where=a > 0.0)
+
+    def mode(self, j: int, i: int) -> Mode:
+        """Mode i (by frequency) at speed j."""
+        lam = complex(self.eigenvalues[j, i])
+        node = float(self.node[j, i])
+        shape = ModeShape(WHIRLS[self.whirl[j, i]], float(self.share[j, i]), KINDS[self.kind[j, i]],
+                          None if math.isnan(node) else node)
+        return Mode(lam, abs(lam.imag), damping_ratio(lam), log_decrement(lam), shape,
+                    self.vectors[j, i], bool(self.growing[j, i]))
+
+    def modes(self, j: int) -> list[Mode]:
+        return [self.mode(j, i) for i in range(4)]
 
 
-def campbell(rotor: Rotor, speeds: np.ndarray) -> Campbell:
-    """The modes at each speed of ``speeds`` (rad/s, (N,) ascending)."""
-    sp = np.array(speeds, dtype=float)
-    sp.setflags(write=False)
-    return Campbell(sp, tuple(tuple(modes_at(rotor, float(s))) for s in sp))
+def _solve(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(lambda (N, 4), parts (N, 4, 4), oscillating (N, 4)) at the speeds ``sp``, unsorted."""
+    return (_isotropic if rotor.isotropic else _real)(rotor, sp)
 
 
-def follow(rotor: Rotor, speed: float, reference: np.ndarray, whirl: str | None = None) -> Mode:
-    """The mode at ``speed`` whose shape is nearest ``reference`` (a Mode.vector): the
-    continuation of a mode to a nearby speed (largest MAC; of the same whirl when given
-    and one exists)."""
-    ms = modes_at(rotor, speed)
-    pool = [m for m in ms if whirl is None or m.whirl == whirl] or ms
-    return max(pool, key=lambda m: mac(reference, m.vector))
+def campbell(rotor: Rotor, speeds) -> Campbell:
+    """The four modes at each of ``speeds`` (rad/s, (N,)), numbered by frequency."""
+    sp = np.array(speeds, dtype=float).reshape(-1)
+    lam, parts, osc = _solve(rotor, sp)
+    s = shapes(rotor, parts, osc)
+    w = weighted(rotor, parts)
+    idx = _order(lam, s["whirl"])
+    take = lambda a: np.take_along_axis(a, idx, 1)  # noqa: E731
+    lam = take(lam)
+    arrays = [sp, lam, np.take_along_axis(w, idx[..., None], 1), take(s["whirl"]), take(s["kind"]),
+              take(s["share"]), take(s["node"]), lam.real > GROWTH_RTOL * cabs(lam)]
+    for a in arrays:
+        a.setflags(write=False)
+    return Campbell(*arrays, rotor)
 
 
-def onset_speeds(rotor: Rotor, cb: Campbell) -> list[tuple[float, int, Mode]]:
-    """Speeds inside the Campbell range where a mode starts or stops growing: the roots of
-    Re lambda(Omega) between two grid speeds whose signs differ, solved by Brent's method
-    (:func:`rbcli.core.roots.brentq`) on the mode continued by its shape.
+def modes_at(rotor: Rotor, speed: float) -> list[Mode]:
+    """The four whirl modes at ``speed`` (rad/s), by ascending frequency."""
+    return campbell(rotor, [speed]).modes(0)
+
+
+def followed(rotor: Rotor, speeds, *refs: np.ndarray, whirl: str | None = None, classify: bool = True):
+    """At each of ``speeds``, the mode whose shape is nearest the reference shapes ``refs``
+    (Mode vectors: the largest summed MAC; of the same whirl when given and one exists):
+    (eigenvalues (N,), weighted shapes (N, 4), the :func:`shapes` arrays (N,), or None
+    without ``classify``)."""
+    lam, parts, osc = _solve(rotor, np.asarray(speeds, dtype=float).reshape(-1))
+    w = weighted(rotor, parts)
+    score = sum(np.abs(w.conj() @ r) ** 2 for r in refs)  # unit shapes: the MAC itself
+    s = shapes(rotor, parts, osc) if classify or whirl is not None else None
+    if whirl is not None:
+        same = s["whirl"] == WHIRLS.index(whirl)
+        score = np.where(same | ~np.any(same, axis=1, keepdims=True), score, -1.0)
+    k = np.argmax(score, axis=1)[:, None]
+    pick = lambda a: np.take_along_axis(a, k, 1)[:, 0]  # noqa: E731
+    return pick(lam), np.take_along_axis(w, k[..., None], 1)[:, 0], \
+        None if not classify else {n: pick(a) for n, a in s.items()}
+
+
+def follow(rotor: Rotor, speed: float, *refs: np.ndarray, whirl: str | None = None) -> Mode:
+    """The mode at ``speed`` whose shape is nearest the reference shapes ``refs``
+    (:func:`followed` at one speed)."""
+    lam, w, s = followed(rotor, [speed], *refs, whirl=whirl)
+    lk, node = complex(lam[0]), float(s["node"][0])
+    shape = ModeShape(WHIRLS[s["whirl"][0]], float(s["share"][0]), KINDS[s["kind"][0]],
+                      None if math.isnan(node) else node)
+    return Mode(lk, abs(lk.imag), damping_ratio(lk), log_decrement(lk), shape, w[0],
+                bool(lk.real > GROWTH_RTOL * abs(lk)))
+
+
+def _macs(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """(..., 4, 4): MAC of every unit shape of ``a`` (..., 4, 4) with every one of ``b``."""
+    return np.abs(np.conj(a) @ np.swapaxes(b, -1, -2)) ** 2
+
+
+def _assign(M: np.ndarray, lam_a: np.ndarray, lam_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The best assignment (…, 4) of each step's MAC matrix M (…, 4, 4), and whether it
+    is clear: each mode's MAC with its match, counting the modes equal to it in
+    eigenvalue (a degenerate pair is compared as a pair), at least CLEAR_MAC."""
+    score = M[..., np.arange(4), _PERMS].sum(axis=-1)  # (..., 24)
+    p = _PERMS[np.argmax(score, axis=-1)]
+    same = np.abs(lam_b[..., :, None] - lam_b[..., None, :]) <= 1e-9 * np.abs(lam_b[..., :, None])
+    got = np.take_along_axis(M @ same.astype(float), p[..., None], -1)[..., 0]  # (…, 4)
+    # a non-oscillating (overdamped) mode's shape is that of one of its two real roots:
+    # not a shape to follow
+    still = (lam_a.imag == 0.0) | (np.take_along_axis(lam_b, p, -1).imag == 0.0)
+    return p, np.all((got >= CLEAR_MAC) | still, axis=-1)
+
+
+def _link(rotor: Rotor, a: float, wa: np.ndarray, la: np.ndarray, b: float, wb: np.ndarray,
+          lb: np.ndarray, depth: int) -> np.ndarray:
+    """The assignment of the modes at speed a to those at b, halving the step up to
+    ``depth`` times where the shapes change too fast to be clear."""
+    p, clear = _assign(_macs(wa, wb), la, lb)
+    if clear or depth == 0:
+        return p
+    mid = campbell(rotor, [0.5 * (a + b)])
+    wm, lm = mid.vectors[0], mid.eigenvalues[0]
+    first = _link(rotor, a, wa, la, 0.5 * (a + b), wm, lm, depth - 1)
+    return _link(rotor, 0.5 * (a + b), wm, lm, b, wb, lb, depth - 1)[first]
+
+
+def track(cb: Campbell, depth: int = 12) -> np.ndarray:
+    """(N, 4) int: ``ranks[j, k]`` is the frequency index at speed j of the mode followed
+    by its shape from mode k at the first speed (see the module docstring)."""
+    n = len(cb.speeds)
+    ranks = np.zeros((n, 4), dtype=int)
+    ranks[0] = np.arange(4)
+    if n < 2:
+        return ranks
+    lam, vec, sp = cb.eigenvalues, cb.vectors, cb.speeds
+    steps, clear = _assign(_macs(vec[:-1], vec[1:]), lam[:-1], lam[1:])
+    for j in range(n - 1):
+        p = steps[j] if clear[j] else _link(cb.rotor, float(sp[j]), vec[j], lam[j], float(sp[j + 1]),
+                                            vec[j + 1], lam[j + 1], depth)
+        ranks[j + 1] = p[ranks[j]]
+    return ranks
+
+
+def branch_roots(cb: Campbell, ranks: np.ndarray, values: np.ndarray, fn) -> list[tuple[float, int, Mode, float]]:
+    """Where a followed quantity of a mode changes sign between two speeds of ``cb``:
+    ``values`` (N, 4) its value at each speed (by frequency index; 0 where it is to be read
+    as neither sign), ``fn(eigenvalue, speed)`` the same of one mode. Each root is solved by
+    Brent's method (to ~1e-12 of the speed) on the mode followed by its shape from both
+    ends of its bracket (two speeds with values of opposite signs, zeros between them).
 
     Returns
     -------
-    list of (speed rad/s, mode index at the left grid point, Mode at the root)
+    list of (speed rad/s, branch k, Mode at the root, sign after it), by speed
     """
-    from rbcli.core.roots import brentq
-
     out = []
     sp = cb.speeds
-    for j in range(len(sp) - 1):
-        for i in range(4):
-            a, b = cb.modes[j][i], cb.modes[j + 1][i]
-            if a.growing == b.growing:
+    v = np.take_along_axis(values, ranks, 1)  # by branch
+    for k in range(4):
+        nz = np.nonzero(v[:, k])[0]
+        for a, b in zip(nz[:-1], nz[1:]):
+            if v[a, k] * v[b, k] > 0.0:
                 continue
-            ref = a.vector
+            lo, hi = float(sp[a]), float(sp[b])
+            refs = (cb.vectors[a, ranks[a, k]], cb.vectors[b, ranks[b, k]])
+            seen: dict[float, float] = {}
 
-            def re(x: float, ref=ref) -> float:
-                return follow(rotor, x, ref).eigenvalue.real
+            def g(x: float, refs=refs, seen=seen) -> float:
+                if x not in seen:
+                    seen[x] = fn(complex(followed(cb.rotor, [x], *refs, classify=False)[0][0]), x)
+                return seen[x]
 
-            lo, hi = float(sp[j]), float(sp[j + 1])
-            f_lo, f_hi = re(lo), re(hi)
-            if f_lo == 0.0 or f_hi == 0.0 or (f_lo > 0.0) == (f_hi > 0.0):
-                x = lo if f_lo == 0.0 else hi
-            else:
-                x = brentq(re, lo, hi, xtol=1e-12 * max(hi, 1.0), rtol=4e-16)
-            out.append((x, i, follow(rotor, x, ref)))
-    out.sort(key=lambda t: t[0])
+            if g(lo) * g(hi) < 0.0:
+                x = brentq(g, lo, hi, xtol=1e-12 * hi, rtol=4e-16)
+            else:  # the followed mode's signs agree at both ends (or one is 0): the grid's kept
+                x = lo if abs(v[a, k]) < abs(v[b, k]) else hi
+            out.append((x, k, follow(cb.rotor, x, *refs), float(np.sign(v[b, k]))))
+    out.sort(key=lambda t: (t[0], t[1]))
     return out
-
-
-def permutation_match(prev: list[Mode], cur: list[Mode]) -> list[int]:
-    """The assignment of ``cur`` to ``prev`` (4 each) that maximises the summed MAC."""
-    best, best_p = -1.0, tuple(range(4))
-    for p in permutations(range(len(cur))):
-        s = sum(mac(prev[i].vector, cur[p[i]].vector) for i in range(len(prev)))
-        if s > best + 1e-12:
-            best, best_p = s, p
-    return list(best_p)

@@ -60,7 +60,7 @@ SQRT_HALF = 1.0 / math.sqrt(2.0)
 _GOLD = (math.sqrt(5.0) - 1.0) / 2.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Forcing:
     """The unbalance that drives the response.
 
@@ -90,9 +90,10 @@ def _amplitudes(rotor: Rotor, forcing: Forcing, speeds: np.ndarray) -> np.ndarra
     """(N, 4) complex ndarray: Q at each speed; NaN at a speed where the dynamic stiffness
     is singular (an undamped critical speed: the response is unbounded there)."""
     W = np.asarray(speeds, dtype=float)
-    M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
-    Z = (K[None, :, :] - (W**2)[:, None, None] * M[None, :, :]
-         + 1j * W[:, None, None] * (C[None, :, :] + W[:, None, None] * G[None, :, :]))
+    M, G = rotor.M(), rotor.G()
+    K, C = rotor.matrices(W)
+    Z = (K - (W**2)[:, None, None] * M[None, :, :]
+         + 1j * W[:, None, None] * (C + W[:, None, None] * G[None, :, :]))
     F = (W**2)[:, None] * forcing_vector(forcing)[None, :]
     try:
         return np.linalg.solve(Z, F[:, :, None])[:, :, 0]
@@ -149,8 +150,8 @@ def bearing_motion(rotor: Rotor, forcing: Forcing, speeds) -> tuple[np.ndarray, 
         Dx = Q[:, 0] + a * Q[:, 3]
         Dy = Q[:, 1] - a * Q[:, 2]
         D = np.stack([Dx, Dy], axis=1)
-        Kb, Cb = b.K, b.C
-        F = D @ Kb.T + 1j * W[:, None] * (D @ Cb.T)
+        v = b.coefficients(W).reshape(-1, 2, 2, 2)  # (N, K/C, row, column)
+        F = np.einsum("nij,nj->ni", v[:, 0], D) + 1j * W[:, None] * np.einsum("nij,nj->ni", v[:, 1], D)
         Ds.append(D)
         Fs.append(F)
     return np.array(Ds), np.array(Fs)
@@ -182,13 +183,18 @@ def amplitude_slope(rotor: Rotor, forcing: Forcing, bearing: int, speed: float) 
     and its derivative with the speed (m s/rad), exactly.
 
     ``Q = Z^-1 F`` with ``Z = K - W^2 M + i W (C + W G)``, ``F = W^2 f``; so
-    ``dQ = Z^-1 (2 W f - dZ Q)`` with ``dZ = -2 W M + i (C + 2 W G)``. The orbit's parts
+    ``dQ = Z^-1 (2 W f - dZ Q)`` with ``dZ = K' - 2 W M + i (C + W C' + 2 W G)`` (K', C':
+    the tables' slopes in the speed, 0 for constant bearings). The orbit's parts
     ``D_f = (D_x + i D_y)/2``, ``D_b = conj(D_x - i D_y)/2`` and ``A = |D_f| + |D_b|``, so
     ``dA = Re(conj(D_f) dD_f)/|D_f| + Re(conj(D_b) dD_b)/|D_b|``."""
     W = float(speed)
-    M, K, C, G = rotor.M(), rotor.K(), rotor.C(), rotor.G()
+    M, G = rotor.M(), rotor.G()
+    (K,), (C,) = rotor.matrices([W])
     Z = K - W * W * M + 1j * W * (C + W * G)
     dZ = -2.0 * W * M + 1j * (C + 2.0 * W * G)
+    if rotor.varying:
+        (dK,), (dC,) = rotor.matrices([W], slope=True)
+        dZ = dZ + dK + 1j * W * dC
     f = forcing_vector(forcing)
     Q = np.linalg.solve(Z, W * W * f)
     dQ = np.linalg.solve(Z, 2.0 * W * f - dZ @ Q)
@@ -213,28 +219,38 @@ def forcing_vector(forcing: Forcing) -> np.ndarray:
     return np.array([U, -1j * U, 1j * P, P], dtype=complex)
 
 
-def excitation(rotor: Rotor, forcing: Forcing, speed: float, q: np.ndarray) -> float:
-    """How much the unbalance drives the undamped mode ``q`` (real coordinates) at its
-    critical speed ``speed`` (order 1), relative: |y^H f| / (|y| |f|) with y the mode's
-    left null vector of the undamped dynamic stiffness Z = K - W^2 M + i W^2 G.
+def excitation(rotor: Rotor, forcing: Forcing, speed: float, eigenvalue: complex, whirl: str) -> float:
+    """How much the unbalance drives the undamped mode of eigenvalue ``eigenvalue`` at its
+    critical speed ``speed`` (order 1; of the rotor's conservative part, as
+    :func:`rbcli.core.whirl.critical.critical_speeds` finds them), relative: |y^H f| /
+    (|y| |f|) with y the mode's left null vector (smallest left singular vector) of the
+    dynamic stiffness Z(lambda) = lambda^2 M + lambda Omega G + K.
 
-    Without cross-coupled stiffness Z is Hermitian (K, M symmetric, i G Hermitian), so y
-    is q itself; a forward forcing then has no part along a backward mode on isotropic
-    bearings (exactly 0, to round-off). With cross-coupling y is Z's smallest left
-    singular vector. The moments are scaled by the radius of gyration sqrt(It/m) so that
-    forces and moments weigh alike. 0 when there is no unbalance."""
-    r = rotor.undamped()
-    sc = np.array([1.0, 1.0, 1.0 / math.sqrt(r.It / r.mass), 1.0 / math.sqrt(r.It / r.mass)])
-    f = forcing_vector(forcing) * sc
+    Forces and moments weigh alike (tilts scaled by the radius of gyration sqrt(It/m)). A
+    conservative Z(i Omega) is Hermitian: y is the mode itself. On isotropic bearings Z is
+    taken in the directional coordinates, where the unbalance is a forward circular forcing
+    [U, P_G]: it has no part along a backward mode (exactly 0), and a forward and a backward
+    mode at one speed (a symmetric rotor's cylindrical pair) are told apart. 0 when there is
+    no unbalance."""
+    r = rotor.at(speed).conservative_part()
+    rho = math.sqrt(r.It / r.mass)
+    if r.isotropic:
+        if whirl == "backward":
+            return 0.0
+        S = np.diag([1.0, 1.0 / rho])
+        lam = complex(eigenvalue.real, abs(eigenvalue.imag))
+        Z = lam * lam * np.diag([r.mass, r.It]) + r.complex_matrices([speed])[0][0]
+        Z[1, 1] -= 1j * lam * speed * r.Ip
+        f = np.array([forcing.static, forcing.couple]) @ S
+    else:
+        S = np.diag([1.0, 1.0, 1.0 / rho, 1.0 / rho])
+        lam = complex(eigenvalue.real, abs(eigenvalue.imag))
+        Z = lam * lam * r.M() + lam * speed * r.G() + r.K()
+        f = forcing_vector(forcing) @ S
     nf = float(np.linalg.norm(f))
     if nf == 0.0:
         return 0.0
-    if all(b.kxy == 0.0 and b.kyx == 0.0 for b in rotor.bearings):
-        y = np.asarray(q, dtype=complex) / sc
-    else:
-        Z = r.K() - speed * speed * r.M() + 1j * speed * speed * r.G()
-        u, _, _ = np.linalg.svd(Z)
-        y = u[:, -1]
+    y = np.linalg.svd(S @ Z @ S)[0][:, -1]
     return float(abs(np.vdot(y, f)) / (float(np.linalg.norm(y)) * nf))
 
 
@@ -246,7 +262,7 @@ EXCITED_RTOL = 1e-8
 # ---------------------------------------------------------------------- peaks
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Peak:
     """A resonance peak of one bearing's response.
 
@@ -375,7 +391,7 @@ def required_margin(af: float | None, position: str) -> float:
     return min(16.0, base) if position == "below" else min(26.0, 10.0 + base)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Margin:
     """One critical speed judged against the operating speed range.
 
