@@ -24,13 +24,14 @@ from pathlib import Path
 import numpy as np
 
 from rbcli.body import includes as inc
+from rbcli.body import materials
 from rbcli.body import partkeys as pk
 from rbcli.body import partlist as pt
 from rbcli.body.givenpart import pretty_unit
 from rbcli.body.loadctx import Ctx, Session, new_session
 from rbcli.body.partmodel import Part, Shaft
 from rbcli.body.placing import Stack, finish, parts_of, to_stack
-from rbcli.body.plausible import density_warning
+from rbcli.body.plausible import density_warning, note_density
 from rbcli.core import shapes as shp
 from rbcli.core.inertia import MassProps, combine, tensor_problem
 from rbcli.errors import InputError, Location
@@ -44,8 +45,8 @@ __all__ = ["Built", "load_body", "load_text", "load_expr", "load_node", "default
 
 FORMAT_VERSION = 1
 BODY_KEYS = (
-    "rbcli", "name", "description", "units", "parts", "reference", "shaft", "pivot",
-    "rim_radius", "bearings",
+    "rbcli", "name", "description", "units", "materials", "parts", "reference", "shaft",
+    "pivot", "rim_radius", "bearings",
 )
 UNIT_KEYS = ("length", "mass", "time", "angle", "angular_speed")
 
@@ -85,6 +86,17 @@ def _units(ctx: Ctx, m: ys.MapNode) -> None:
             raise ctx.error(vnode, msg if msg.startswith("units:") else f"units: {key}: {msg}") from None
         base[key] = un.canonical_unit(base[key])  # 'RPM', 'inches' are shown 'rpm', 'in'
     ctx.base_units = base
+
+
+def _materials(ctx: Ctx, m: ys.MapNode) -> None:
+    """The file's own materials, ``materials: {name: density}``: each density checked as
+    a typed one is (a density no matter has is warned)."""
+    if "materials" not in m.items:
+        return
+    for name, (_km, vnode) in yv.mapping(ctx, m.items["materials"][1], "materials").items.items():
+        value = yv.positive(ctx, vnode, "density", f"materials: {name}")
+        note_density(ctx, vnode, "density", value, None, True, f"material '{name}'")
+        ctx.materials[materials.key(name)] = value
 
 
 def default_units(units: dict[str, str]) -> dict[str, str]:
@@ -130,6 +142,7 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
         if not (isinstance(vnode, ys.ScalarNode) and vnode.value == FORMAT_VERSION and not isinstance(vnode.value, bool)):
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
     _units(ctx, root)
+    _materials(ctx, root)
     if "parts" in root.items:
         yv.check_keys(ctx, root, BODY_KEYS, "the body")
         parts = pt.parts(ctx, root.items["parts"][1], stacked=stacked)

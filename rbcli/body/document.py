@@ -28,7 +28,7 @@ if TYPE_CHECKING:
 
 __all__ = ["to_yaml", "document", "check_output", "origin", "remember_origin"]
 
-_FILE_SHAPES = ("include", "mesh")
+_FILE_SHAPES = ("include", "mesh", "step")
 
 
 def check_output(out: str, body: Body, *, force: bool, option: str = "--apply") -> Path:

@@ -121,7 +121,7 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
     return Part(
         name=prefix + name, shape="given", mass=mass, subtract=subtract(ctx, m), com=pc,
         inertia_com=PJ, measure=None, measure_kind="given", axis=R[:, 2].copy(), where=ctx.where(m),
-        outline=_given_outline(mass, pc, PJ),
+        outline=given_outline(mass, pc, PJ),
     )
 
 
@@ -130,7 +130,7 @@ def pretty_unit(text: str) -> str:
     return text.replace("*", "·").replace("^2", "²").replace("^3", "³")
 
 
-def _given_outline(mass: float, com: np.ndarray, J: np.ndarray) -> Outline:
+def given_outline(mass: float, com: np.ndarray, J: np.ndarray) -> Outline:
     """A given part's shape: its equivalent uniform ellipsoid, centred on its com (drawn by
     the figure, measured by the plausibility warnings: rbcli.core.scale)."""
     semi, axes = equivalent_ellipsoid(mass, J)

@@ -134,6 +134,8 @@ class Ctx(FileContext):
     session: Session = field(default_factory=lambda: Session(MAX_PARTS))
     #: how deep includes go below this file (0: it includes nothing)
     height: int = 0
+    #: the file's own materials (its ``materials:`` section): matching key -> kg/m³
+    materials: dict[str, float] = field(default_factory=dict)
 
     def where(self, node_or_mark: ys.Node | ys.Mark | DataMark | None) -> Location:
         """Where a node (or a mark) is: ``file:line:col`` in a file, or the key path of

@@ -20,7 +20,7 @@ from rbcli.io.yamlvalues import HUGE
 
 MESH_KEYS = (
     "name", "shape", "file", "scale", "units", "allow_open", "weld", "subtract", "cut_from",
-    "mass", "density", *PLACEMENT_KEYS,
+    "mass", "density", "material", *PLACEMENT_KEYS,
 )
 
 
@@ -35,22 +35,8 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
     yv.check_keys(ctx, m, MESH_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
     path = mesh_path(ctx, fnode)
-    scale = 1.0
-    if "scale" in m.items:
-        scale = yv.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
-    if "units" in m.items:
-        unode = m.items["units"][1]
-        text = yv.string(ctx, unode, "units")
-        try:
-            factor, dim = un.parse_unit(text)
-        except un.UnitError as exc:
-            raise ctx.error(unode, f"{what}: units: {exc}") from None
-        if dim != un.KINDS["length"]:
-            raise ctx.error(
-                unode,
-                f"{what}: units is the length unit of the mesh's coordinates (m, mm, in, ...), not '{text}'",
-            )
-    else:
+    scale, factor = scale_units(ctx, m, what)
+    if factor is None:
         factor = ctx.factor("length", m)[0]
     allow_open = yv.flag(ctx, m.items["allow_open"][1], "allow_open") if "allow_open" in m.items else False
     weld = None  # None: the file's own default (meshfile.default_weld)
@@ -117,16 +103,37 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
     )
 
 
-def mesh_path(ctx: Ctx, fnode: ys.Node) -> Path:
-    """The mesh file, relative to the body file's folder; as written when that is the cwd."""
+def scale_units(ctx: Ctx, m: ys.MapNode, what: str, of: str = "mesh") -> tuple[float, float | None]:
+    """A file part's ``scale`` (1 when not given) and its ``units``: metres per unit of the
+    file's coordinates (None when not given)."""
+    scale, factor = 1.0, None
+    if "scale" in m.items:
+        scale = yv.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
+    if "units" in m.items:
+        unode = m.items["units"][1]
+        text = yv.string(ctx, unode, "units")
+        try:
+            factor, dim = un.parse_unit(text)
+        except un.UnitError as exc:
+            raise ctx.error(unode, f"{what}: units: {exc}") from None
+        if dim != un.KINDS["length"]:
+            raise ctx.error(unode, f"{what}: units is the length unit of the {of}'s coordinates "
+                            f"(m, mm, in, ...), not '{text}'")
+    return scale, factor
+
+
+def mesh_path(ctx: Ctx, fnode: ys.Node, shape: str = "mesh",
+              kind: str = "a mesh file (.stl or .obj)") -> Path:
+    """The ``file`` of a mesh (or STEP) part, relative to the body file's folder; as written
+    when that is the cwd."""
     rel = yv.string(ctx, fnode, "file")
     if not rel.strip():
-        raise ctx.error(fnode, "file must name a mesh file (.stl or .obj), relative to the body file")
+        raise ctx.error(fnode, f"file must name {kind}, relative to the body file")
     if "\0" in rel:
         raise ctx.error(fnode, "file: a file name cannot contain a NUL character")
     if names_a_folder(rel):
-        raise ctx.error(fnode, f"file: '{rel}' names a folder (it ends with '/'); a mesh part "
-                        "reads a mesh file (.stl or .obj)")
+        raise ctx.error(fnode, f"file: '{rel}' names a folder (it ends with '/'); a {shape} part "
+                        f"reads {kind}")
     path = Path(rel)
     if path.is_absolute():
         return path

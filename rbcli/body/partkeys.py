@@ -9,6 +9,7 @@ from typing import Any
 
 import numpy as np
 
+from rbcli.body import materials
 from rbcli.core import rotation as rot
 from rbcli.errors import InputError
 from rbcli.io import yamlsafe as ys
@@ -28,7 +29,7 @@ from rbcli.io.yamlvalues import (
 
 #: the keys of a part's placement and of its mass
 PLACEMENT_KEYS = ("at", "axis", "rotate")
-MASS_KEYS = ("mass", "density", "areal_density", "linear_density")
+MASS_KEYS = ("mass", "density", "areal_density", "linear_density", "material")
 #: the density key of each kind of measure
 DENSITY_FOR = {"volume": "density", "area": "areal_density", "length": "linear_density"}
 
@@ -155,11 +156,11 @@ def mass_source(ctx: Any, m: ys.MapNode, measure_kind: str,
         raise ctx.error(
             m.items[given[1]][0] if given[1] in m.items else m,
             f"{what} gives both '{given[0]}' and '{given[1]}'; give exactly one of "
-            "mass, density, areal_density, linear_density (or cut_from for a hole)",
+            "mass, density, areal_density, linear_density, material (or cut_from for a hole)",
         )
     if not given:
         want = DENSITY_FOR.get(measure_kind)
-        alt = f" or {want}" if want else ""
+        alt = f" or {want}" + (" (or a material)" if want == "density" else "") if want else ""
         raise ctx.error(m, f"{what} needs its mass{alt}")
     key = given[0]
     kmark, node = (cut if key == "cut_from" else m.items[key])
@@ -182,6 +183,11 @@ def mass_source(ctx: Any, m: ys.MapNode, measure_kind: str,
             )
         return None, density, node
     want = DENSITY_FOR.get(measure_kind)
+    if key == "material" and want == "density":
+        try:
+            return None, materials.density(string(ctx, node, "material"), ctx.materials), node
+        except ValueError as exc:
+            raise ctx.error(node, f"{what}: {exc}") from None
     if key != want:
         hint = f"; use '{want}'" if want else "; give its mass"
         raise ctx.error(kmark, f"{what} is {_a(measure_kind)} part, so '{key}' does not apply{hint}")

@@ -32,13 +32,14 @@ from rbcli.body.partkeys import (
 from rbcli.body.partmodel import Part
 from rbcli.body.placing import BATCH, Pending, Stack, dims_of, finish, parts_of, to_stack
 from rbcli.body.plausible import note_density
+from rbcli.body.steppart import STEP_KEYS, step_part
 from rbcli.core import rotation as rot
 from rbcli.core import shapes as shp
 from rbcli.io import yamlsafe as ys
 from rbcli.io import yamlvalues as yv
 
 COMMON_PART_KEYS = ("name", "shape", "subtract", "cut_from", *PLACEMENT_KEYS, *MASS_KEYS)
-SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, given, include: built here, not by core.shapes
+SPECIAL_SHAPES = tuple(shp.IO_SHAPES)  # mesh, step, given, include: built here, not by core.shapes
 
 
 def all_shape_names() -> list[str]:
@@ -50,7 +51,7 @@ def part_keys(shape: str) -> tuple[str, ...]:
     list them (what :mod:`rbcli.parts`'s constructors take: a test keeps them in step)."""
     if shape in shp.SHAPES:
         return _plan(shape).keys
-    return {"given": GIVEN_KEYS, "mesh": MESH_KEYS, "include": INCLUDE_KEYS}[shape]
+    return {"given": GIVEN_KEYS, "mesh": MESH_KEYS, "include": INCLUDE_KEYS, "step": STEP_KEYS}[shape]
 
 
 def _part_name(ctx: Ctx, m: ys.MapNode, index: int, shape: str, names: set[str]) -> str:
@@ -123,6 +124,8 @@ def part(ctx: Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, 
         return given_part(ctx, m, name, prefix, known)
     if shape == "mesh":
         return mesh_part(ctx, m, name, prefix, known)
+    if shape == "step":
+        return step_part(ctx, m, name, prefix, known, "name" in m.items, names)
     return _primitive(ctx, m, shape, name, prefix, known, what)
 
 

@@ -302,6 +302,7 @@ SHAPES: dict[str, ShapeInfo] = {
 #: the shapes the body loader builds itself (not primitives): name -> what it is
 IO_SHAPES = {
     "mesh": "a mesh file",
+    "step": "a STEP file's solids",
     "given": "given mass properties",
     "include": "an included body file",
 }

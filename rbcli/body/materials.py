@@ -1,0 +1,70 @@
+"""Named materials: the built-in table (``rbcli/data/materials.csv``: name, aliases, density
+in kg/m³, source; read on first use) and a body file's own ``materials:`` section.
+
+A name is matched ignoring case, hyphens, underscores and spacing (``Aluminum-6061`` is
+``aluminium 6061``); a body's own names come first. The wood densities are at 12 % moisture
+content: 1.12 × the specific gravity the USDA Wood Handbook tables give × 1000 kg/m³.
+"""
+
+from __future__ import annotations
+
+import csv
+import difflib
+from collections.abc import Mapping
+from functools import cache
+from pathlib import Path
+from typing import NamedTuple
+
+__all__ = ["Material", "TABLE", "table", "key", "density"]
+
+TABLE = Path(__file__).resolve().parent.parent / "data" / "materials.csv"
+
+
+class Material(NamedTuple):
+    """A row of the table: ``density`` in kg/m³, ``source`` where it is from."""
+
+    name: str
+    aliases: tuple[str, ...]
+    density: float
+    source: str
+
+
+def key(name: str) -> str:
+    """How a material name is matched: lower case, hyphens and underscores as spaces, one
+    space between words."""
+    return " ".join(name.lower().replace("-", " ").replace("_", " ").split())
+
+
+@cache
+def table() -> tuple[Material, ...]:
+    """The built-in materials, in the table's order."""
+    with TABLE.open(encoding="utf-8", newline="") as fh:
+        return tuple(Material(r["name"], tuple(a.strip() for a in r["aliases"].split(";") if a.strip()),
+                              float(r["density"]), r["source"]) for r in csv.DictReader(fh))
+
+
+@cache
+def _index() -> dict[str, Material]:
+    return {key(n): m for m in table() for n in (m.name, *m.aliases)}
+
+
+def density(name: str, own: Mapping[str, float] | None = None) -> float:
+    """The density (kg/m³) of material ``name``: the body's ``own`` (its keys made by
+    :func:`key`) first, then the built-in table.
+
+    Raises
+    ------
+    ValueError
+        An unknown name, with the nearest known one ("did you mean").
+    """
+    k, own = key(name), own or {}
+    if k in own:
+        return own[k]
+    found = _index().get(k)
+    if found is not None:
+        return found.density
+    names = {**{n: n for n in own}, **{kk: m.name for kk, m in _index().items()}}
+    close = difflib.get_close_matches(k, list(names), n=1, cutoff=0.6)
+    hint = f"; did you mean '{names[close[0]]}'?" if close else ""
+    raise ValueError(f"unknown material '{name}'{hint} (`rbcli materials` lists the built-in "
+                     "ones; a body file's materials: section adds your own)")

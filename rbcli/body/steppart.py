@@ -1,0 +1,154 @@
+"""A ``shape: step`` part: the solids of a STEP file (:mod:`rbcli.io.stepfile`), each a part
+with its exact volume properties from the B-rep, placed by the file's assembly and then by
+the part's ``at``/``axis``/``rotate``.
+
+A file of one solid is one part, named as the part (or, unnamed, as the file names the
+solid); a file of several is a part per solid, named ``name/solid`` (unnamed: as the file
+names them, ``link:1/pin``). ``part:`` keeps the solids a name or pattern matches. Each
+solid's density is the part's ``density`` or ``material`` unless ``solids:`` gives its own
+(``{"pin*": steel, base: "7.2 g/cm^3"}``: the first pattern that matches); ``mass:`` is the
+mass of them all, shared by volume. The file's length unit is read from it; ``units:`` and
+``scale:`` override it, with a note.
+"""
+
+from __future__ import annotations
+
+import os
+from fnmatch import fnmatchcase
+
+import numpy as np
+
+from rbcli.body import materials
+from rbcli.body.givenpart import given_outline
+from rbcli.body.loadctx import Ctx
+from rbcli.body.meshpart import mesh_path, scale_units
+from rbcli.body.partkeys import MASS_KEYS, PLACEMENT_KEYS, check_mass, mass_source, placement, subtract
+from rbcli.body.partmodel import Part
+from rbcli.body.placing import Stack, place
+from rbcli.body.plausible import note_density
+from rbcli.errors import InputError, Location
+from rbcli.io import yamlsafe as ys
+from rbcli.io import yamlvalues as yv
+from rbcli.io.reader import ReadError
+from rbcli.io.stepfile import StepError, read_step
+
+STEP_KEYS = ("name", "shape", "file", "part", "units", "scale", "solids", "subtract", "cut_from",
+             "mass", "density", "material", *PLACEMENT_KEYS)
+#: what a STEP part needs and does not have: OpenCascade
+EXTRA = ("reading a STEP file needs OpenCascade: pip install 'rbcli[cad]' (the "
+         "cadquery-ocp-novtk package)")
+
+
+def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, named: bool,
+              names: set[str]) -> Part | Stack:
+    """The part(s) of a ``shape: step`` entry (see the module's docstring); ``named``: it has
+    a ``name:`` (else its solids keep the file's names, checked against ``names``)."""
+    what = f"part '{name}' (step)"
+    yv.check_keys(ctx, m, STEP_KEYS, what, required=("file",))
+    fnode = m.items["file"][1]
+    path = mesh_path(ctx, fnode, "step", "a STEP file (.step or .stp)")
+    scale, factor = scale_units(ctx, m, what, "STEP file")
+    mass = default = None
+    if any(k in m.items for k in (*MASS_KEYS, "cut_from")) or "solids" not in m.items:
+        mass, default, src = mass_source(ctx, m, "volume", known, what)
+        if "density" in m.items:
+            note_density(ctx, src, "density", default, None, True, what)
+    rules = _rules(ctx, m.items["solids"][1]) if "solids" in m.items else []
+    if mass is not None and rules:
+        raise ctx.error(m.items["solids"][0], f"{what}: mass is shared by volume, solids: gives "
+                        "densities; give one of them")
+    removed = subtract(ctx, m)
+    at, R = placement(ctx, m)
+    budget = ctx.session
+    try:
+        step = read_step(str(path), budget.max_parts - budget.used + 1)
+    except ImportError:
+        raise ctx.error(fnode, f"{what}: {EXTRA}") from None
+    except ReadError as exc:
+        raise ctx.error(fnode, f"{what}: {exc}") from None
+    except StepError as exc:
+        raise InputError(f"{what}: {exc}", Location(str(path), exc.line)) from None
+    ctx.inputs.append(os.path.realpath(path))
+    solids = _chosen(ctx, m, step.solids, what)
+    budget.spend(ctx, fnode, len(solids) - 1)
+    if factor is None and step.metres is None:
+        raise ctx.error(fnode, f"{what}: {path}: the file's length unit "
+                        f"({step.unit or 'none'}) is not one rbcli knows; give units:")
+    k = scale * (factor or step.metres)
+    if factor is not None or scale != 1.0:
+        ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: {path}: its length unit "
+                            f"{step.unit or '(none)'} is overridden: 1 unit = {k:g} m")
+    for s in solids:
+        if s.healed is not None:
+            ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {path}: solid '{s.name}' "
+                                f"was not valid; OpenCascade healed it, changing its volume by "
+                                f"{s.healed:.2g} of it (a bound on the error)")
+    for e in step.empty:
+        ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: {path}: '{e}' holds no solid")
+    dens = [_density(ctx, fnode, s.name, rules, default, what) for s in solids]
+    vols = [s.volume * k**3 for s in solids]
+    if mass is not None:  # the mass of them all, shared by volume
+        dens = [mass / sum(vols)] * len(solids)
+    known[name] = (dens[0] if len(set(dens)) == 1 else None, "volume")
+    out = []
+    for s, d, v in zip(solids, dens, vols):
+        mi = d * v
+        check_mass(ctx, fnode, what, mi, "density × volume")
+        Ri = R @ np.array(s.R)
+        com, J = place(np.array(s.centroid) * k, mi * np.array(s.inertia) * k**2 / s.volume,
+                       at + R @ (np.array(s.t) * k), Ri)
+        shown = s.name if not named else name if len(solids) == 1 else f"{name}/{s.name}"
+        if not named and shown in names:
+            raise ctx.error(fnode, f"two parts are named '{shown}'; name the step part (name:)")
+        names.add(shown)
+        extra = {"colour": s.colour} if s.colour else {}
+        out.append(Part(prefix + shown, "step", mi, removed, com, J, v, "volume", None,
+                        Ri[:, 2].copy(), extra, ctx.where(m), given_outline(mi, com, J)))
+    return out[0] if len(out) == 1 else Stack.of(out)
+
+
+def _rules(ctx: Ctx, node: ys.Node) -> list[tuple[str, ys.Node]]:
+    """``solids:``: (name or pattern, its material or density node), in file order."""
+    return [(pattern, v) for pattern, (_k, v) in yv.mapping(ctx, node, "solids").items.items()]
+
+
+def _chosen(ctx: Ctx, m: ys.MapNode, solids: tuple, what: str) -> list:
+    """The solids ``part:`` names (a name or a pattern; all without it); a ``solids:``
+    pattern that matches none is an error (a misspelt name)."""
+    names = [s.name for s in solids]
+    for key in ("part", "solids"):
+        if key not in m.items:
+            continue
+        node = m.items[key][1]
+        patterns = ([yv.string(ctx, node, "part")] if key == "part"
+                    else [p for p, _ in _rules(ctx, node)])
+        for p in patterns:
+            if not any(fnmatchcase(n, p) for n in names):
+                shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
+                raise ctx.error(node, f"{what}: {key}: '{p}' is no solid of the file"
+                                f"{yv.suggest(p, names)} (solids: {shown})")
+    if "part" in m.items:
+        p = yv.string(ctx, m.items["part"][1], "part")
+        return [s for s in solids if fnmatchcase(s.name, p)]
+    return list(solids)
+
+
+def _density(ctx: Ctx, fnode: ys.Node, solid: str, rules: list, default: float | None,
+             what: str) -> float:
+    """kg/m³ of one solid: the first ``solids:`` rule that matches it (a material, else a
+    density), else the part's own."""
+    for pattern, node in rules:
+        if not fnmatchcase(solid, pattern):
+            continue
+        text = node.value if isinstance(node, ys.ScalarNode) and isinstance(node.value, str) else None
+        if text is not None:
+            try:
+                return materials.density(text, ctx.materials)
+            except ValueError as exc:  # a density ("7.8 g/cm^3") if it starts with a digit
+                if not text.lstrip()[:1].isdigit():
+                    raise ctx.error(node, f"{what}: solids: {pattern}: {exc}") from None
+        return yv.positive(ctx, node, "density", f"solids: {pattern}")
+    if default is None:
+        raise ctx.error(fnode, f"{what}: solid '{solid}' has no density: give density or "
+                        "material (for all), or a solids: entry that matches it")
+    return default
