@@ -19,7 +19,7 @@ from rbcli.api.params import SYMMETRY_TOL, Param, as_text
 from rbcli.errors import literal
 from rbcli.io.field import CHOICES
 
-__all__ = ["INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS", "TOP", "GYROCOMPASS",
+__all__ = ["BODY", "INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS", "TOP", "GYROCOMPASS",
            "ROLLCHECK", "WHIRL"]
 
 # ----------------------------------------------------------------------------- shared
@@ -33,6 +33,18 @@ THROUGH = Param("through", "A point of the shaft (z = 0 there): com, origin or x
                 "all). Default: the body's shaft point, else the origin.", "point")
 #: gravity (None: standard gravity, 9.80665 m/s^2)
 G = Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", "acceleration")
+
+
+#: a STEP, STL or OBJ file given as the body: the command line's options of its BODY (every
+#: command that takes one), :func:`rbcli.load`'s keywords
+BODY = (
+    Param("material", "For a STEP, STL or OBJ file as BODY: the material of every solid, e.g. "
+          "steel or 'aluminium 6061' (rbcli materials lists them).", api=False),
+    Param("density", "For a STEP, STL or OBJ file as BODY: its density (kg/m^3, or with units, "
+          "e.g. '2.7 g/cm^3').", "quantity", "density", api=False),
+    Param("part", "For a STEP file as BODY: only this solid (its name in the file, or a pattern "
+          "such as 'link*').", api=False),
+)
 
 
 def _given(given: Any) -> str:
@@ -53,6 +65,7 @@ _ABOUT = Param("about", "Point: com, origin or x,y,z (a bare number in the body'
 
 #: :func:`rbcli.inertia` and ``rbcli inertia``
 INERTIA = (
+    *BODY,
     _ABOUT,
     Param("axis", "Moment about this direction x,y,z through the point.", "direction"),
     Param("omega", "Angular velocity x,y,z (rad/s, or the body's units' angular_speed; a unit after "
@@ -60,7 +73,7 @@ INERTIA = (
 )
 
 #: :func:`rbcli.principal` and ``rbcli principal``: about the com unless told
-PRINCIPAL = (replace(_ABOUT, default="com"),)
+PRINCIPAL = (*BODY, replace(_ABOUT, default="com"))
 
 # ----------------------------------------------------------------------------- balance
 
@@ -68,6 +81,7 @@ _BARE_LENGTH = "a bare number in the body's length unit, m by default"
 
 #: :func:`rbcli.balance` and ``rbcli balance``
 BALANCE = (
+    *BODY,
     SHAFT,
     THROUGH,
     Param("mark", "Direction x,y,z (body frame) of the 0° reference mark; only its part at right "
@@ -228,6 +242,7 @@ PRECESS_SAMPLES = 1001
 
 #: :func:`rbcli.precess` and ``rbcli precess``
 PRECESS = (
+    *BODY,
     Param("omega", "Initial angular velocity x,y,z in the body frame (a bare number is rad/s, or the "
           "body's units' angular_speed; a unit after the last number applies to every bare number "
           "before it, e.g. '0,0,300 rpm'). Required.", "vector", "angular_speed"),
@@ -297,6 +312,7 @@ _NO_SYMMETRY_ECHO = replace(SYMMETRY_TOL, echo="-")
 
 #: :func:`rbcli.top` and ``rbcli top``
 TOP = (
+    *BODY,
     Param("pivot", "The fixed point: com, origin or x,y,z (a bare number in the body's length unit, m "
           "by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the "
           "body's pivot, else the origin.", "point"),
@@ -332,6 +348,7 @@ TOP = (
 
 #: :func:`rbcli.gyrocompass` and ``rbcli gyrocompass``
 GYROCOMPASS = (
+    *BODY,
     Param("ratio", "C/A, the axial moment over the moment about the vertical (a flat disk: 2), "
           "instead of a body.", "quantity", "dimensionless", valid=_above_zero("C/A must be positive"),
           echo="=C/A"),
@@ -350,6 +367,7 @@ GYROCOMPASS = (
 #: :func:`rbcli.rollcheck` and ``rbcli rollcheck`` (its options ``--axle``, ``--radius`` and
 #: ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)
 ROLLCHECK = (
+    *BODY,
     replace(SHAFT, help="Axle direction x,y,z (or x, y, z) in the body frame. Default: "
                         "the body's shaft axis, else z."),
     replace(THROUGH, help="A point of the axle line: com, origin or x,y,z (a bare number "
@@ -431,6 +449,7 @@ _SPEED = "a bare number is rad/s, or the body's units' angular_speed"
 
 #: :func:`rbcli.whirl` and ``rbcli whirl``
 WHIRL = (
+    *BODY,
     Param("bearings", "Bearing positions z1,z2[,...] along the shaft, two or more at distinct "
           "places (a bare number in the body's length unit, m by default; a unit after the last "
           "number applies to all, e.g. '0,200 mm'). Default: the body file's bearings: section "

@@ -29,13 +29,13 @@ from rbcli.api.result import Result, jsonable
 from rbcli.core import inertia as ci
 from rbcli.core.inertial import Inertial, inertial
 from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
-from rbcli.errors import Note, ParamError
+from rbcli.errors import InputError, Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.body.model import Body
 
-__all__ = ["InertiaResult", "Reference", "parse", "run", "inertia", "part_rows", "with_parts",
-           "plausibility", "rim_note", "snap"]
+__all__ = ["InertiaResult", "Reference", "parse", "run", "inertia", "links", "part_rows",
+           "with_parts", "plausibility", "rim_note", "snap"]
 
 
 @dataclass(frozen=True)
@@ -229,6 +229,31 @@ class InertiaResult(Result):
         principal = check.flag(principal, "principal")
         J = self.inertia_com if principal else snap(self.inertia_com)
         return inertial(self.mass, self.com, J, principal=principal)
+
+
+def links(body: Body, principal: bool = False) -> tuple[tuple[str, Inertial], ...]:
+    """The body as the links of a robot model (``inertia --each``): its parts grouped by
+    their name up to the first ``/`` (a STEP file's top-level solid or sub-assembly, an
+    included file), in order, each group's ``<inertial>`` numbers (as
+    :meth:`InertiaResult.inertial`, in the body frame).
+
+    Raises
+    ------
+    rbcli.InputError
+        A group whose mass is not positive (its holes outweigh it).
+    """
+    groups: dict[str, list] = {}
+    for p in check.body(body).parts:
+        groups.setdefault(p.name.split("/")[0], []).append(p)
+    out = []
+    for name, parts in groups.items():
+        mp = ci.combine(parts)
+        if not mp.mass > 0:
+            raise InputError(f"link '{name}': its mass is {mp.mass:.6g} kg; a link needs a "
+                             "positive mass (its holes outweigh it)")
+        J = mp.inertia_com if principal else snap(mp.inertia_com)
+        out.append((name, inertial(mp.mass, mp.com, J, principal=principal)))
+    return tuple(out)
 
 
 def parse(body: Body | None, **kwargs: Any) -> Options:

@@ -13,9 +13,12 @@ import os
 from collections.abc import Mapping
 from pathlib import Path
 
-from rbcli.body import model
+from rbcli.api import check
+from rbcli.api import options as op
+from rbcli.body import materials, model
 from rbcli.body.bodyfile import default_units
 from rbcli.body.model import Body
+from rbcli.body.pydata import CAD_SUFFIXES
 from rbcli.errors import ParamError
 
 __all__ = ["load", "load_text", "load_data"]
@@ -64,14 +67,25 @@ def _units(units: object) -> dict[str, str] | None:
     return out
 
 
-def load(path: str | os.PathLike[str]) -> Body:
-    """Read and validate a body file.
+def load(path: str | os.PathLike[str], *, material: str | None = None,
+         density: float | str | None = None, part: str | None = None) -> Body:
+    """Read and validate a body file, or a STEP, STL or OBJ file as a body of its own.
 
     Parameters
     ----------
     path : str or path-like
-        The YAML body file; relative ``include`` and mesh paths are resolved from its
-        folder. ``"-"`` reads standard input.
+        The YAML body file (relative ``include``, mesh and STEP paths are resolved from its
+        folder; ``"-"`` reads standard input); or a ``.step``/``.stp`` file (each solid a
+        part, its exact volume properties from the B-rep: needs ``pip install
+        'rbcli[cad]'``), or a ``.stl``/``.obj`` file (a closed mesh, in mm).
+    material : str, optional
+        For a STEP, STL or OBJ file: the material of every solid (``"steel"``, ``"aluminium
+        6061"``: ``rbcli materials`` lists them).
+    density : float or str, optional
+        For a STEP, STL or OBJ file: kg/m³, or with its unit (``"2.7 g/cm^3"``).
+    part : str, optional
+        For a STEP file: the solid (its name in the file, or a pattern such as ``"link*"``)
+        to keep; default all.
 
     Returns
     -------
@@ -82,10 +96,11 @@ def load(path: str | os.PathLike[str]) -> Body:
     Raises
     ------
     TypeError
-        ``path`` is not a path.
+        ``path`` is not a path; a keyword of the wrong type.
     rbcli.InputError
         Anything wrong with the file, with ``where`` (file, line, column) and the same
-        one-line message the command line prints.
+        one-line message the command line prints; an unknown material; ``material``,
+        ``density`` or ``part`` for a body file.
 
     Examples
     --------
@@ -93,11 +108,36 @@ def load(path: str | os.PathLike[str]) -> Body:
     >>> body = rbcli.load("examples/square_lamina.yaml")
     >>> body.name, len(body.parts)
     ('Square lamina about a corner', 1)
+    >>> block = rbcli.load("examples/cad_block.obj", material="aluminium 6061")
+    >>> round(rbcli.inertia(block).mass, 6)   # 2700 kg/m³ × 80 × 40 × 20 mm³, kg
+    0.1728
     """
     p = _path(path, "path")
     if not p:
         raise ParamError("path", "an empty path names no file")
-    return model.load_body(p)
+    keys = {"material": check.text(material, "material"), "part": check.text(part, "part"),
+            "density": check.quantity(density, "density")}
+    given = [k for k, v in keys.items() if v is not None]
+    if not p.lower().endswith(CAD_SUFFIXES):
+        if given:
+            raise ParamError(given[0], "applies to a STEP, STL or OBJ file given as the body; "
+                             "a body file gives material: or density: on its parts")
+        return model.load_body(p)
+    if (material is None) == (density is None):
+        raise ParamError("material" if material is None else "density",
+                         f"{p}: a STEP, STL or OBJ file as the body needs {{material}} or "
+                         "{density} (one of them)")
+    if part is not None and not p.lower().endswith(CAD_SUFFIXES[:2]):
+        raise ParamError("part", "applies to a STEP file (its solids, by name)")
+    if material is not None:
+        try:
+            materials.density(material)
+        except ValueError as exc:
+            raise ParamError("material", str(exc)) from None
+    if density is not None:
+        keys["density"] = op.positive(op.quantity(density, "density", "density"), "density",
+                                      "the density", "kg/m^3")
+    return model.load_cad(p, **keys)
 
 
 def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name: str = "body",

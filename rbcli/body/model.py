@@ -28,7 +28,7 @@ from rbcli.body.bodyfile import Built
 from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only
 from rbcli.core.inertia import remember_mass_props
 
-__all__ = ["Body", "load_body", "load_text", "load_expr", "load_data", "with_points"]
+__all__ = ["Body", "load_body", "load_text", "load_expr", "load_data", "load_cad", "with_points"]
 
 
 @dataclass(frozen=True)
@@ -319,6 +319,11 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
               name: str = "body", base_dir: object = None) -> Body:
     """A body of Python data: :func:`rbcli.body.pydata.load_data`."""
     return _made(pydata.load_data(mapping, units=units, name=name, base_dir=base_dir))
+
+
+def load_cad(path: str, **keys: object) -> Body:
+    """A STEP, STL or OBJ file as a body: :func:`rbcli.body.pydata.cad_file`."""
+    return _made(pydata.cad_file(path, **keys))
 
 
 def with_points(body: Body, points: Sequence[tuple[str, float, Sequence[float]]]) -> Body:

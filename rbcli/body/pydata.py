@@ -30,10 +30,13 @@ from rbcli.io import yamlsafe as ys
 from rbcli.io.yamldump import dump
 from rbcli.io.yamlvalues import suggest
 
-__all__ = ["tree", "load_data", "from_parts", "replace_part", "move_part", "with_points", "SOURCE"]
+__all__ = ["tree", "load_data", "from_parts", "cad_file", "replace_part", "move_part", "with_points",
+           "SOURCE", "CAD_SUFFIXES"]
 
 #: ``Body.source`` of a body built from Python data
 SOURCE = "<data>"
+#: the files read as a body of their own (:func:`cad_file`): STEP, then STL and OBJ
+CAD_SUFFIXES = (".step", ".stp", ".stl", ".obj")
 
 
 def tree(data: object, mark: DataMark) -> ys.Node:
@@ -71,7 +74,8 @@ def _check_budget(parts: object, where: str) -> None:
 
 
 def _load(data: MappingProxyType, root: str, base_dir: Path, *, name: str = "body",
-          units: Mapping[str, str] | None = None, labels: Sequence[str] | None = None) -> Built:
+          units: Mapping[str, str] | None = None, labels: Sequence[str] | None = None,
+          source: str = SOURCE) -> Built:
     """The body of frozen ``data`` (a body file's mapping), through the loader; ``labels``
     name each of its parts as a whole (``Body.from_parts``'s ``parts[2] (cylinder 'bore')``)."""
     top = DataMark(None, "", root)
@@ -88,7 +92,7 @@ def _load(data: MappingProxyType, root: str, base_dir: Path, *, name: str = "bod
                 items[k] = (m, tree(v, m))
         node = ys.MapNode(top, items)  # type: ignore[arg-type]
     text = dump(thaw(data))
-    return load_node(node, SOURCE, base_dir, text=text, name_default=name,
+    return load_node(node, source, base_dir, text=text, name_default=name,
                      units=dict(units) if units else None)
 
 
@@ -104,6 +108,22 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
         _check_budget(mapping["parts"], "parts")
     data = freeze(mapping)
     return _load(data, "mapping", base, name=name, units=units)  # type: ignore[arg-type]
+
+
+def cad_file(path: str, **keys: object) -> Built:
+    """A STEP, STL or OBJ file read as a body of its own: one ``step`` (or ``mesh``, in mm:
+    the formats carry no unit) part of the file with ``keys`` (``material``, ``density``,
+    ``part``: None leaves one out); every problem located at the file."""
+    mesh = not path.lower().endswith(CAD_SUFFIXES[:2])
+    part = {"shape": "mesh" if mesh else "step", "file": path,
+            **({"name": Path(path).stem, "units": "mm"} if mesh else {}),
+            **{k: v for k, v in keys.items() if v is not None}}
+    built = _load(freeze({"parts": (part,)}), path, Path.cwd(), name=Path(path).stem,
+                  labels=[path], source=path)
+    if mesh:
+        built.fields["warnings"] += (f"{path}: note: STL and OBJ files carry no length unit; "
+                                     "read in mm (a body file's mesh part says otherwise: units:)",)
+    return built
 
 
 def _label(i: int, part: Mapping[str, object]) -> str:

@@ -34,6 +34,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "principal": ("massprops", "Principal moments and axes, symmetry, and which free rotations "
                                "are stable."),
     "shapes": ("catalog", "The shape catalogue: parameters, local origin, mass keys and formulas."),
+    "materials": ("catalog", "The built-in materials: density and where it is from."),
     "schema": ("catalog", "The JSON Schema (draft-07) of the body file, for editors."),
     "examples": ("catalog", "List the bundled example bodies, or print one."),
     "balance": ("balance", "Rotor balance about a shaft: unbalance, two-plane corrections, "

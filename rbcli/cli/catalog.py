@@ -1,4 +1,4 @@
-"""``rbcli shapes``, ``rbcli schema`` and ``rbcli examples``."""
+"""``rbcli shapes``, ``rbcli materials``, ``rbcli schema`` and ``rbcli examples``."""
 
 from __future__ import annotations
 
@@ -111,6 +111,40 @@ def shapes(
         "Symmetry axis = local z. Inertia formulas are about the part's centre of mass.\n"
     )
     e.write("\n".join(text))
+
+
+@app.command(help="The built-in materials: density and where it is from.")
+def materials(
+    name: str = typer.Argument(None, help="Only the materials whose name or alias matches this (a word, or a pattern such as 'alu*').", show_default=False),
+    json_: bool = c.JsonOpt,
+) -> None:
+    from fnmatch import fnmatchcase
+
+    from rbcli.body.materials import key, table
+    from rbcli.errors import InputError
+
+    rows = table()
+    if name is not None:
+        want = key(name)
+        pattern = want if any(ch in want for ch in "*?[") else f"*{want}*"
+        rows = tuple(m for m in rows if any(fnmatchcase(key(n), pattern) for n in (m.name, *m.aliases)))
+        if not rows:
+            raise InputError(f"no built-in material matches '{name}' (`rbcli materials` lists them)")
+    e = c.env()
+    if json_:
+        from rbcli.render.jsonout import dumps
+
+        e.write(dumps([m._asdict() for m in rows]))
+        return
+    from rbcli.render.text import Doc
+
+    doc = Doc(e)
+    doc.table("materials", ("material", "density [kg/m³]", "also", "source"),
+              [(m.name, f"{m.density:g}", ", ".join(m.aliases), m.source) for m in rows], right=(1,))
+    doc.note("A body file's part takes one by name (material: steel); its materials: section "
+             "adds its own ({my_alloy: \"7.93 g/cm^3\"}); a STEP, STL or OBJ file as BODY takes "
+             "--material.")
+    c.write_doc(e, doc)
 
 
 @app.command(help="The JSON Schema (draft-07) of the body file, for editors.")

@@ -11,16 +11,18 @@ from typing import Any
 
 import typer
 
+from rbcli.api.commands import BODY
 from rbcli.errors import ExitStatus, InputError, option_name, spell, spelled_data
 
-BODY_HELP = "Body file(s) (YAML); '-' reads standard input."
+BODY_HELP = ("Body file(s) (YAML), or a STEP, STL or OBJ file (with --material or --density); "
+             "'-' reads standard input.")
 EXPR_HELP = "Inline YAML body, e.g. -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'."
 JSON_HELP = "Print JSON (SI units) instead of tables."
 DIGITS_HELP = "Significant figures in tables; with --format csv, of its numbers (full precision unless given)."
 UNITS_HELP = "Units for tables, e.g. mm,g or in,lb (JSON is always SI)."
 
 BodiesArg = typer.Argument(None, metavar="BODY...", help=BODY_HELP, show_default=False)
-BodyArg = typer.Argument(None, metavar="BODY", help="Body file (YAML); '-' reads standard input.", show_default=False)
+BodyArg = typer.Argument(None, metavar="BODY", help=BODY_HELP.replace("(s)", ""), show_default=False)
 ExprOpt = typer.Option(None, "-e", "--expr", help=EXPR_HELP, show_default=False)
 JsonOpt = typer.Option(False, "--json", help=JSON_HELP)
 
@@ -167,10 +169,13 @@ def sources(bodies: list[str] | None, expr: str | None, *, single: bool = False)
 
 
 def load(source: str, expr: str | None, e: Any):
-    """Load one body and show its warnings on standard error."""
+    """Load one body and show its warnings on standard error: a body file, ``-e``, or a
+    STEP, STL or OBJ file with the command's ``--material``, ``--density`` and ``--part``
+    (:data:`rbcli.api.commands.BODY`; :func:`rbcli.api.load.load` checks them)."""
     import gc
 
-    from rbcli.body.model import load_body, load_expr
+    from rbcli.api.load import load as load_file
+    from rbcli.body.model import load_expr
 
     # The command line's own choice, not the library's (gc is process-wide): no cyclic
     # collection while the body is read (the loader's tree is acyclic; a full collection
@@ -181,7 +186,11 @@ def load(source: str, expr: str | None, e: Any):
     was = gc.isenabled()
     gc.disable()
     try:
-        body = load_expr(expr) if source == "<expr>" and expr is not None else load_body(source)
+        keys = _body_keys()
+        if source == "<expr>" and expr is not None and not any(keys.values()):
+            body = load_expr(expr)
+        else:
+            body = load_file(source, **keys)
     finally:
         if was:
             gc.enable()
@@ -189,6 +198,19 @@ def load(source: str, expr: str | None, e: Any):
     for w in body.warnings:
         e.warn(f"rbcli: {said(w)}")
     return body
+
+
+def _body_keys() -> dict[str, Any]:
+    """The BODY options of the command being run (its typer context's values)."""
+    from typer._click.globals import get_current_context
+
+    ctx = get_current_context(silent=True)
+    return {p.name: ctx.params.get(p.name) if ctx else None for p in BODY}
+
+
+#: the BODY options of a command not made from a parameter table (``report``)
+BodyOpts = {p.name: typer.Option(None, f"--{p.name}", help=spell(p.help, option_name),
+                                 show_default=False) for p in BODY}
 
 
 def load_one(body: str | None, expr: str | None, e: Any):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import typer
 
-from rbcli.api.commands import INERTIA, PRINCIPAL
+from rbcli.api.commands import BODY, INERTIA, PRINCIPAL
 from rbcli.cli import common as c
 from rbcli.cli.app import MANUAL
 from rbcli.errors import InputError, option_name
@@ -29,6 +29,7 @@ uniform box and ellipsoid.
 """
 
 
+BODY_NAMES = {p.name for p in BODY}
 #: the robot-description formats of ``inertia --format`` (rbcli.render.robot)
 ROBOT_FORMATS = ("urdf", "sdf", "mjcf")
 
@@ -47,6 +48,7 @@ def inertia(
     json_: bool = c.JsonOpt,
     fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
     principal_: bool = typer.Option(False, "--principal", help="With --format urdf|sdf|mjcf: the principal moments and the principal axes' orientation instead of the full tensor in body axes."),
+    each: bool = typer.Option(False, "--each", help="With --format urdf|sdf|mjcf: one <link> (MJCF <body>) per part, named by the part up to its first '/': a STEP file's top-level solid or sub-assembly, an included file; each <inertial> in the body frame."),
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -62,12 +64,14 @@ def inertia(
         if products.strip().lower() == "positive":
             raise InputError(f"--products positive does not apply to --format {out}: the element "
                              "holds the tensor's entries (ixy = -sum m x y), as the format requires")
-        given = [option_name(k) for k, v in args.items() if v is not None] + ["--units"] * (units is not None)
+        given = [option_name(k) for k, v in args.items() if v is not None and k not in BODY_NAMES]
+        given += ["--units"] * (units is not None)
         if given:
             raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
                              "always about the centre of mass, in SI units")
-    elif principal_:
-        raise InputError(f"--principal applies to --format urdf, sdf or mjcf, not to {out}")
+    elif principal_ or each:
+        raise InputError(f"{'--principal' if principal_ else '--each'} applies to --format urdf, "
+                         f"sdf or mjcf, not to {out}")
     e = c.env()
     du = DisplayUnits.parse(units)
     api.parse(None, **args)  # bad values: one line, before any body
@@ -78,7 +82,8 @@ def inertia(
         _warn(e, body, res)
         if out in ROBOT_FORMATS:
             res.to_json()  # the one finiteness check of the numbers
-            e.write(robot.render(out, body.name, body.source, res.inertial(principal_)))
+            e.write(robot.links(out, body.name, body.source, api.links(body, principal_)) if each
+                    else robot.render(out, body.name, body.source, res.inertial(principal_)))
             return
         c.emit(e, out, lambda: c.with_file(res.to_json(), body.source),
                lambda doc: r.inertia_doc(doc, body, res, du, digits, products, res.reference_label),

@@ -29,6 +29,9 @@ report is written first.
 def report(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
+    material: str = c.BodyOpts["material"],
+    density: str = c.BodyOpts["density"],
+    part: str = c.BodyOpts["part"],
     output: str = typer.Option(None, "-o", "--output", help="The report file: .html (self-contained) or .md (figures in FILE_files/). Required.", show_default=False),
     force: bool = typer.Option(False, "--force", help="Replace an existing report (never an input: the body file, a file it includes or a mesh it reads)."),
     shaft: str = typer.Option(None, "--shaft", help="Balance and rolling: shaft (axle) direction x,y,z (or x, y, z). Default: the body's shaft; without either there is no balance section.", show_default=False),

@@ -17,7 +17,9 @@ kg m², rad), each element preceded by a comment that states its frame:
 
 from __future__ import annotations
 
+from textwrap import indent
 from typing import Any
+from xml.sax.saxutils import quoteattr
 
 from rbcli.render.safe import escape
 
@@ -107,6 +109,17 @@ def mjcf(inertial: Any) -> str:
                 f'mass="{number(inertial.mass)}" diaginertia="{_nums([J[0, 0], J[1, 1], J[2, 2]])}"/>\n')
     full = [J[0, 0], J[1, 1], J[2, 2], J[0, 1], J[0, 2], J[1, 2]]
     return f'<inertial pos="{_nums(inertial.com)}" mass="{number(inertial.mass)}" fullinertia="{_nums(full)}"/>\n'
+
+
+def links(fmt: str, name: str, source: str, items: Any) -> str:
+    """One ``<link>`` (URDF, SDF) or ``<body>`` (MJCF) per (link name, inertial) of ``items``
+    (``rbcli.api.inertia.links``), each holding its element, after one comment."""
+    tag = "body" if fmt == "mjcf" else "link"
+    out = [comment(fmt, name, source, items[0][1])]
+    for link, inertial in items:
+        element = {"urdf": urdf, "sdf": sdf, "mjcf": mjcf}[fmt](inertial)
+        out.append(f"<{tag} name={quoteattr(escape(link))}>\n{indent(element, '  ')}</{tag}>\n")
+    return "".join(out)
 
 
 def render(fmt: str, name: str, source: str, inertial: Any) -> str:
