@@ -38,7 +38,7 @@ from rbcli.body.partspec import PartSpec, freeze
 
 __all__ = ["PartSpec", "Quantity", "Vector", "point", "rod", "ring", "disk", "plate",
            "triangle", "box", "cylinder", "sphere", "hemisphere", "cone", "ellipsoid", "torus",
-           "mesh", "given", "include"]
+           "mesh", "step", "given", "include"]
 
 #: a number (SI, or in the body's ``units``) or a quantity string (``"25 mm"``)
 Quantity = float | str
@@ -59,6 +59,9 @@ _COMMON = {
                      "shell: the mass is areal_density × area.",
     "linear_density": "linear_density : float or str, optional\n    kg/m of a rod or a ring: "
                       "the mass is linear_density × length.",
+    "material": "material : str, optional\n    A solid's material by name (``\"steel\"``, "
+                "``\"aluminium 6061\"``: ``rbcli materials``, or the body's ``materials``): its "
+                "density.",
     "at": "at : sequence of 3 float or str, optional\n    Where the part's local origin is, in "
           "the body frame (m, the body's length unit, or ``\"25 mm\"``).",
     "axis": "axis : sequence of 3, optional\n    The direction of the part's local z axis in "
@@ -135,8 +138,9 @@ rbcli.parts.point(name='weight', mass='20 g', at=['350 mm', 0, 0])
 >>> round(float(rbcli.inertia(b, about="origin").inertia[2][2]), 12)   # m r², kg m²
 0.00245
 """)
-def point(*, name: str | None = None, mass: Quantity | None = None, density: Quantity | None = None,
-          areal_density: Quantity | None = None, linear_density: Quantity | None = None,
+def point(*, name: str | None = None, mass: Quantity | None = None,
+          density: Quantity | None = None, areal_density: Quantity | None = None,
+          linear_density: Quantity | None = None, material: str | None = None,
           at: Vector | None = None, axis: Vector | None = None,
           rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
           cut_from: str | None = None) -> PartSpec:
@@ -165,7 +169,7 @@ from_, to : sequence of 3, optional
 def rod(*, name: str | None = None, length: Quantity | None = None, from_: Vector | None = None,
         to: Vector | None = None, mass: Quantity | None = None, density: Quantity | None = None,
         areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-        at: Vector | None = None, axis: Vector | None = None,
+        material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
         cut_from: str | None = None) -> PartSpec:
     return _spec("rod", locals())
@@ -188,9 +192,10 @@ diameter : float or str, optional
 def ring(*, name: str | None = None, radius: Quantity | None = None,
          diameter: Quantity | None = None, mass: Quantity | None = None,
          density: Quantity | None = None, areal_density: Quantity | None = None,
-         linear_density: Quantity | None = None, at: Vector | None = None,
-         axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-         subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+         linear_density: Quantity | None = None, material: str | None = None,
+         at: Vector | None = None, axis: Vector | None = None,
+         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+         cut_from: str | None = None) -> PartSpec:
     return _spec("ring", locals())
 
 
@@ -214,9 +219,10 @@ def disk(*, name: str | None = None, radius: Quantity | None = None,
          inner_radius: Quantity | None = None, diameter: Quantity | None = None,
          inner_diameter: Quantity | None = None, mass: Quantity | None = None,
          density: Quantity | None = None, areal_density: Quantity | None = None,
-         linear_density: Quantity | None = None, at: Vector | None = None,
-         axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-         subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+         linear_density: Quantity | None = None, material: str | None = None,
+         at: Vector | None = None, axis: Vector | None = None,
+         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+         cut_from: str | None = None) -> PartSpec:
     return _spec("disk", locals())
 
 
@@ -238,9 +244,10 @@ thickness : float or str, optional
 def plate(*, name: str | None = None, size: Vector | None = None,
           thickness: Quantity | None = None, mass: Quantity | None = None,
           density: Quantity | None = None, areal_density: Quantity | None = None,
-          linear_density: Quantity | None = None, at: Vector | None = None,
-          axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-          subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+          linear_density: Quantity | None = None, material: str | None = None,
+          at: Vector | None = None, axis: Vector | None = None,
+          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+          cut_from: str | None = None) -> PartSpec:
     return _spec("plate", locals())
 
 
@@ -259,7 +266,7 @@ vertices : sequence of 3 points, optional
 def triangle(*, name: str | None = None, vertices: Sequence[Vector] | None = None,
              mass: Quantity | None = None, density: Quantity | None = None,
              areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-             at: Vector | None = None, axis: Vector | None = None,
+             material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
              rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
              cut_from: str | None = None) -> PartSpec:
     return _spec("triangle", locals())
@@ -279,9 +286,10 @@ size : sequence of 3, optional
 """)
 def box(*, name: str | None = None, size: Vector | None = None, mass: Quantity | None = None,
         density: Quantity | None = None, areal_density: Quantity | None = None,
-        linear_density: Quantity | None = None, at: Vector | None = None,
-        axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-        subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+        linear_density: Quantity | None = None, material: str | None = None,
+        at: Vector | None = None, axis: Vector | None = None,
+        rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+        cut_from: str | None = None) -> PartSpec:
     return _spec("box", locals())
 
 
@@ -311,9 +319,10 @@ def cylinder(*, name: str | None = None, radius: Quantity | None = None,
              shell: bool | None = None, diameter: Quantity | None = None,
              inner_diameter: Quantity | None = None, mass: Quantity | None = None,
              density: Quantity | None = None, areal_density: Quantity | None = None,
-             linear_density: Quantity | None = None, at: Vector | None = None,
-             axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-             subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+             linear_density: Quantity | None = None, material: str | None = None,
+             at: Vector | None = None, axis: Vector | None = None,
+             rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+             cut_from: str | None = None) -> PartSpec:
     return _spec("cylinder", locals())
 
 
@@ -340,7 +349,7 @@ def sphere(*, name: str | None = None, radius: Quantity | None = None,
            diameter: Quantity | None = None, inner_diameter: Quantity | None = None,
            mass: Quantity | None = None, density: Quantity | None = None,
            areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-           at: Vector | None = None, axis: Vector | None = None,
+           material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
            rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
            cut_from: str | None = None) -> PartSpec:
     return _spec("sphere", locals())
@@ -364,9 +373,10 @@ diameter : float or str, optional
 def hemisphere(*, name: str | None = None, radius: Quantity | None = None,
                diameter: Quantity | None = None, mass: Quantity | None = None,
                density: Quantity | None = None, areal_density: Quantity | None = None,
-               linear_density: Quantity | None = None, at: Vector | None = None,
-               axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-               subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+               linear_density: Quantity | None = None, material: str | None = None,
+               at: Vector | None = None, axis: Vector | None = None,
+               rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+               cut_from: str | None = None) -> PartSpec:
     return _spec("hemisphere", locals())
 
 
@@ -391,7 +401,7 @@ def cone(*, name: str | None = None, radius: Quantity | None = None,
          height: Quantity | None = None, diameter: Quantity | None = None,
          mass: Quantity | None = None, density: Quantity | None = None,
          areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-         at: Vector | None = None, axis: Vector | None = None,
+         material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
          cut_from: str | None = None) -> PartSpec:
     return _spec("cone", locals())
@@ -413,7 +423,7 @@ semi_axes : sequence of 3, optional
 def ellipsoid(*, name: str | None = None, semi_axes: Vector | None = None,
               mass: Quantity | None = None, density: Quantity | None = None,
               areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-              at: Vector | None = None, axis: Vector | None = None,
+              material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
               rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
               cut_from: str | None = None) -> PartSpec:
     return _spec("ellipsoid", locals())
@@ -436,9 +446,10 @@ minor_radius : float or str, optional
 def torus(*, name: str | None = None, major_radius: Quantity | None = None,
           minor_radius: Quantity | None = None, mass: Quantity | None = None,
           density: Quantity | None = None, areal_density: Quantity | None = None,
-          linear_density: Quantity | None = None, at: Vector | None = None,
-          axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-          subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+          linear_density: Quantity | None = None, material: str | None = None,
+          at: Vector | None = None, axis: Vector | None = None,
+          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
+          cut_from: str | None = None) -> PartSpec:
     return _spec("torus", locals())
 
 
@@ -468,12 +479,45 @@ weld : float or str, optional
 0.1728
 """)
 def mesh(*, name: str | None = None, file: Any = None, scale: Quantity | None = None,
-         units: str | None = None, allow_open: bool | None = None,
-         weld: Quantity | None = None, mass: Quantity | None = None,
-         density: Quantity | None = None, at: Vector | None = None, axis: Vector | None = None,
+         units: str | None = None, allow_open: bool | None = None, weld: Quantity | None = None,
+         mass: Quantity | None = None, density: Quantity | None = None,
+         material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
          cut_from: str | None = None) -> PartSpec:
     return _spec("mesh", _fspath(locals()))
+
+
+@_documented(
+    "The solids of a STEP file (a CAD part or assembly), each a part with its exact volume "
+    "properties from the B-rep (needs ``pip install 'rbcli[cad]'``).",
+    """
+file : str or path-like, optional
+    The STEP file (.step, .stp), relative to ``base_dir`` of :meth:`rbcli.Body.from_parts`
+    (default: the current folder).
+part : str, optional
+    Only the solids this name or pattern (``"link*"``) matches; default all.
+solids : mapping, optional
+    A material or density per solid: ``{"pin*": "steel", "base": "7.2 g/cm^3"}`` (the first
+    name or pattern that matches).
+units : str, optional
+    The length unit of the file's numbers, instead of the one the file states (with a note).
+scale : float or str, optional
+    A factor for the coordinates (with a note).
+""",
+    """
+>>> import rbcli
+>>> s = rbcli.parts.step(file="examples/step_arm.step", material="aluminium 6061")
+>>> b = rbcli.Body.from_parts([s])
+>>> [p.name for p in b.parts][:2]
+['base', 'link:1/upper']
+""")
+def step(*, name: str | None = None, file: Any = None, part: str | None = None,
+         solids: Mapping[str, Any] | None = None, units: str | None = None,
+         scale: Quantity | None = None, mass: Quantity | None = None,
+         density: Quantity | None = None, material: str | None = None, at: Vector | None = None,
+         axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
+         subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
+    return _spec("step", _fspath(locals()))
 
 
 @_documented(

@@ -32,6 +32,9 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("api/commands.py", "_rows"): (1, "int() of the value"),
     ("api/load.py", "_units"): (1, "body.bodyfile.default_units: plain ValueErrors (it turns UnitError into one)"),
+    ("api/load.py", "load"): (1, "body.materials.density: plain ValueErrors"),
+    ("body/partkeys.py", "mass_source"): (1, "body.materials.density: plain ValueErrors"),
+    ("body/steppart.py", "_density"): (1, "body.materials.density: plain ValueErrors"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),
     ("api/whirl.py", "_points"): (1, "int(points)"),
     ("api/whirl.py", "_orders"): (1, "int() of each order"),

@@ -184,8 +184,9 @@ def mass_source(ctx: Any, m: ys.MapNode, measure_kind: str,
         return None, density, node
     want = DENSITY_FOR.get(measure_kind)
     if key == "material" and want == "density":
+        name = string(ctx, node, "material")
         try:
-            return None, materials.density(string(ctx, node, "material"), ctx.materials), node
+            return None, materials.density(name, ctx.materials), node
         except ValueError as exc:
             raise ctx.error(node, f"{what}: {exc}") from None
     if key != want:

@@ -49,6 +49,8 @@ COMMON = {
     "density": {"$ref": "#/definitions/quantity"},
     "areal_density": {"$ref": "#/definitions/quantity"},
     "linear_density": {"$ref": "#/definitions/quantity"},
+    "material": {"type": "string", "description": "a material by name (rbcli materials, or the "
+                 "body's materials:): its density"},
 }
 
 
@@ -117,7 +119,8 @@ def _variants(extra: dict) -> list[dict]:
     include.update(extra)
     include.update(shape={"const": "include"}, file={"type": "string"})
     variants.append(_part_variant("include", include, ["shape", "file"]))
-    mesh = {k: COMMON[k] for k in ("name", "subtract", "cut_from", "at", "axis", "rotate", "mass", "density")}
+    mesh = {k: COMMON[k] for k in ("name", "subtract", "cut_from", "at", "axis", "rotate", "mass",
+                                   "density", "material")}
     mesh.update(extra)
     mesh.update(
         shape={"const": "mesh"},
@@ -132,6 +135,15 @@ def _variants(extra: dict) -> list[dict]:
         },
     )
     variants.append(_part_variant("mesh", mesh, ["shape", "file"]))
+    step = {**{k: v for k, v in mesh.items() if k not in ("allow_open", "weld")},
+            "shape": {"const": "step"},
+            "file": {"type": "string", "description": "a STEP file (.step, .stp), relative to this file"},
+            "units": {"type": "string", "description": "the length unit of the file's numbers, "
+                      "instead of the one it states"},
+            "part": {"type": "string", "description": "only the solids this name or pattern matches"},
+            "solids": {"type": "object", "description": "a material or density per solid name or "
+                       "pattern", "additionalProperties": {"anyOf": [{"type": "string"}, {"type": "number"}]}}}
+    variants.append(_part_variant("step", step, ["shape", "file"]))
     return variants
 
 
@@ -158,6 +170,8 @@ def body_schema() -> dict:
             "name": {"type": "string"},
             "description": {"type": "string"},
             "units": {"$ref": "#/definitions/units"},
+            "materials": {"type": "object", "description": "your own materials: name: density",
+                          "additionalProperties": {"$ref": "#/definitions/quantity"}},
             "parts": {"type": "array", "items": {"$ref": "#/definitions/part"}, "minItems": 1},
             "reference": point,
             "shaft": {

@@ -36,6 +36,22 @@ SPECIAL = {
         "written. A group of vertices spanning more than the tolerance (a chain) is not merged. "
         "Files must be regular files of at most 1 GiB (RBCLI_MAX_MESH_BYTES changes the limit)",
     ),
+    "step": (
+        "the solids of a STEP file (a CAD part or assembly; needs pip install 'rbcli[cad]'): "
+        "each a part, named from the file (name/solid; unnamed: as the file names them), placed "
+        "by the assembly; the JSON adds each solid's colour",
+        "file (.step or .stp, relative to the body file); optional part (only the solids this "
+        "name or pattern such as 'link*' matches), solids ({name or pattern: material or "
+        "density} per solid), units, scale (override the file's own length unit, with a note)",
+        "mass (shared by volume), density or material (for every solid; solids: for each)",
+        "the file's origin (its assembly's frame)",
+        "exact volume, centroid and second moments of each solid's B-rep (OpenCascade's "
+        "volume integrals), in the length unit the file states. Refused with the file's line: "
+        "not STEP, truncated, over RBCLI_MAX_STEP_BYTES (128 MiB) or RBCLI_MAX_STEP_ENTITIES "
+        "(1 000 000), references that loop or nest over 1000 deep, an assembly that contains "
+        "itself or nests over 64 deep, a shell that does not close a volume, no solid, a solid "
+        "OpenCascade cannot heal (one it heals is used with a warning bounding the change)",
+    ),
     "given": (
         "measured or CAD-exported mass properties",
         "mass, com (local frame), inertia about the com: a 3x3 matrix with convention: tensor "
@@ -224,6 +240,20 @@ MANUAL["shapes"] = {
         ("rbcli shapes mesh", "The mesh part's keys and what rbcli checks in a mesh file."),
     ],
 }
+MANUAL["materials"] = {
+    "notes": [
+        "The table is rbcli/data/materials.csv: each material's name, the other names it is "
+        "known by (alloy designations, trade names), its density in kg/m^3 and the standard, "
+        "handbook or data sheet it is from; wood at 12 % moisture content. A name is matched "
+        "ignoring case, hyphens, underscores and spacing (Aluminum-6061 is aluminium 6061); an "
+        "unknown one is refused with the nearest known one.",
+    ],
+    "json": [("name, aliases, density, source", "one object per material; density in kg/m^3.")],
+    "examples": [
+        ("rbcli materials steel", "The steels, their densities and sources."),
+        ("rbcli inertia bracket.step --material 'stainless steel 316'", "A STEP file's mass properties."),
+    ],
+}
 MANUAL["schema"] = {
     "notes": [
         "Put '# yaml-language-server: $schema=PATH' as the first line of a body file, with "
@@ -241,8 +271,9 @@ MANUAL["examples"] = {
 MANUAL[""] = {
     "notes": [
         "A body file is YAML: a list of parts (point, rod, ring, disk, plate, triangle, box, "
-        "cylinder, sphere, hemisphere, cone, ellipsoid, torus, mesh, given, include), each placed "
-        "with at, axis or rotate, with a mass or a density, and subtract: true for holes. Bare "
+        "cylinder, sphere, hemisphere, cone, ellipsoid, torus, mesh, step, given, include), each "
+        "placed with at, axis or rotate, with a mass, a density or a material (rbcli-materials(1)), "
+        "and subtract: true for holes. Bare "
         "numbers are in the file's units (SI unless 'units:' says otherwise; bare angles are "
         "degrees, bare angular speeds rad/s unless units: names an angular_speed such as rpm); "
         "any number may be a string with a unit, such as '30 cm', '2.5 lb', '7850 kg/m^3', "

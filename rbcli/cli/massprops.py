@@ -190,6 +190,13 @@ MANUAL["inertia"] = {
         "diaginertia. Every comment states the off-diagonals' sign. --about, --axis, --omega, "
         "--units and --products positive do not apply to these formats (exit 2: they fix "
         "the tensor's sign). Several bodies: one element per body, one after another.",
+        "--each with --format urdf, sdf or mjcf prints one <link> (MJCF <body>) per part "
+        "instead, named by the part's name up to its first '/': for a STEP assembly, each "
+        "top-level solid or sub-assembly; for a body file, each part or included file. Every "
+        "<inertial> is in the body frame (the assembly's).",
+        "BODY may be a STEP file (.step, .stp: each solid a part, exact from its B-rep; needs "
+        "pip install 'rbcli[cad]') or an STL or OBJ mesh (in mm), with --material or --density "
+        "for every solid and, for STEP, --part to keep one solid or sub-assembly.",
     ],
     "json": [
         ("mass", "total mass, kg."),
@@ -202,7 +209,8 @@ MANUAL["inertia"] = {
          "with --omega: w [3] rad/s, L = J.w [3] kg m^2/s, T = w.J.w/2 J, and the angle between L and w in degrees."),
         ("name, file", "the body's name and where it was read from."),
         ("parts", "[{name, shape, mass, com}] each part's contribution (mass negative for a "
-                  "subtracted part; mesh parts add volume m^3, area m^2 and triangles)."),
+                  "subtracted part; mesh parts add volume m^3, area m^2 and triangles; a STEP "
+                  "file's solids their colour, #rrggbb, when the file gives one)."),
     ],
     "examples": [
         ("rbcli inertia examples/square_lamina.yaml --axis 1,1,0",
@@ -213,6 +221,8 @@ MANUAL["inertia"] = {
          "Several bodies at once: one JSON object per line."),
         ("rbcli inertia examples/bracket.yaml --format urdf",
          "The <inertial> element of a URDF link whose frame is the body frame."),
+        ("rbcli inertia examples/step_arm.step --material 'aluminium 6061' --format urdf --each",
+         "A STEP assembly: one URDF <link> with its <inertial> per top-level solid or sub-assembly."),
         ("rbcli inertia examples/two_blade_fan.yaml --format mjcf --principal",
          "MuJoCo: pos, quat (w x y z) of the principal axes and diaginertia (0.00666667, 0.0266667, 0.0333333)."),
     ],
