@@ -506,10 +506,9 @@ scale : float or str, optional
 """,
     """
 >>> import rbcli
->>> s = rbcli.parts.step(file="examples/step_arm.step", material="aluminium 6061")
->>> b = rbcli.Body.from_parts([s])
->>> [p.name for p in b.parts][:2]
-['base', 'link:1/upper']
+>>> rbcli.parts.step(name="arm", file="examples/cad/step_arm.step", material="aluminium 6061",
+...                  solids={"*pin": "steel"})
+rbcli.parts.step(name='arm', file='examples/cad/step_arm.step', solids={'*pin': 'steel'}, material='aluminium 6061')
 """)
 def step(*, name: str | None = None, file: Any = None, part: str | None = None,
          solids: Mapping[str, Any] | None = None, units: str | None = None,

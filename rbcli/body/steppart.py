@@ -66,8 +66,9 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         raise ctx.error(fnode, f"{what}: {EXTRA}") from None
     except ReadError as exc:
         raise ctx.error(fnode, f"{what}: {exc}") from None
-    except StepError as exc:
-        raise InputError(f"{what}: {exc}", Location(str(path), exc.line)) from None
+    except StepError as exc:  # at the line of the STEP file ("what" unless it is the body)
+        said = exc if ctx.file == str(path) else f"{what}: {exc}"
+        raise InputError(str(said), Location(str(path), exc.line)) from None
     ctx.inputs.append(os.path.realpath(path))
     solids = _chosen(ctx, m, step.solids, what)
     budget.spend(ctx, fnode, len(solids) - 1)

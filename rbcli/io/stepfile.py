@@ -94,7 +94,7 @@ def _line(data: bytes, pos: int) -> int:
 
 
 def _deepest(graph: dict, limit: int) -> tuple[str, bytes] | None:
-    """The first cycle (``("cycle", a node on it)``) or path of more than ``limit`` nodes
+    """The first cycle (``("cycle", a node on it)``) or path of more than ``limit`` links
     (``("deep", its top)``) in ``graph`` (node -> successors), by an iterative depth-first
     walk; None when neither."""
     depth: dict = {}  # finished nodes: the longest path from each, in nodes
@@ -112,12 +112,12 @@ def _deepest(graph: dict, limit: int) -> tuple[str, bytes] | None:
                     on_path.add(nxt)
                     stack.append([nxt, iter(graph[nxt]), 0])
                     break
-                top[2] = max(top[2], d or 0)
+                top[2] = max(top[2], d or 1)  # a node with no successors: 1
             else:
                 node, _, below = stack.pop()
                 on_path.discard(node)
                 depth[node] = below + 1
-                if below >= limit:
+                if below > limit:  # ``below`` links under it
                     return "deep", node
                 if stack:
                     stack[-1][2] = max(stack[-1][2], below + 1)
