@@ -112,7 +112,7 @@ def part_rows(body: Any) -> tuple[dict, ...]:
                      "com": p.com}
         if p.subtract:
             row["subtract"] = True
-        row.update((k, p.extra[k]) for k in ("volume", "area", "triangles", "colour") if k in p.extra)
+        row.update((k, p.extra[k]) for k in ("volume", "area", "triangles", "unit", "colour") if k in p.extra)
         rows.append(row)
     return tuple(rows)
 

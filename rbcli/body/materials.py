@@ -15,6 +15,8 @@ from functools import cache
 from pathlib import Path
 from typing import NamedTuple
 
+from rbcli.errors import literal
+
 __all__ = ["Material", "TABLE", "table", "key", "density"]
 
 TABLE = Path(__file__).resolve().parent.parent / "data" / "materials.csv"
@@ -55,7 +57,8 @@ def density(name: str, own: Mapping[str, float] | None = None) -> float:
     Raises
     ------
     ValueError
-        An unknown name, with the nearest known one ("did you mean").
+        An unknown name, with the nearest known one ("did you mean"); the message is a
+        template (:func:`rbcli.errors.spell`: the names in it escaped).
     """
     k, own = key(name), own or {}
     if k in own:
@@ -64,7 +67,7 @@ def density(name: str, own: Mapping[str, float] | None = None) -> float:
     if found is not None:
         return found.density
     names = {**{n: n for n in own}, **{kk: m.name for kk, m in _index().items()}}
-    close = difflib.get_close_matches(k, list(names), n=1, cutoff=0.6)
-    hint = f"; did you mean '{names[close[0]]}'?" if close else ""
-    raise ValueError(f"unknown material '{name}'{hint} (`rbcli materials` lists the built-in "
+    close = difflib.get_close_matches(k, list(names), n=1, cutoff=0.6) if len(k) <= 100 else []
+    hint = f"; did you mean '{literal(names[close[0]])}'?" if close else ""
+    raise ValueError(f"unknown material '{literal(name)}'{hint} (`rbcli materials` lists the built-in "
                      "ones; a body file's materials: section adds your own)")

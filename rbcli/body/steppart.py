@@ -26,7 +26,7 @@ from rbcli.body.partkeys import MASS_KEYS, PLACEMENT_KEYS, check_mass, mass_sour
 from rbcli.body.partmodel import Part
 from rbcli.body.placing import Stack, place
 from rbcli.body.plausible import note_density
-from rbcli.errors import InputError, Location
+from rbcli.errors import InputError, Location, literal
 from rbcli.io import yamlsafe as ys
 from rbcli.io import yamlvalues as yv
 from rbcli.io.reader import ReadError
@@ -67,8 +67,8 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
     except ReadError as exc:
         raise ctx.error(fnode, f"{what}: {exc}") from None
     except StepError as exc:  # at the line of the STEP file ("what" unless it is the body)
-        said = exc if ctx.file == str(path) else f"{what}: {exc}"
-        raise InputError(str(said), Location(str(path), exc.line)) from None
+        said = literal(str(exc)) if ctx.file == str(path) else f"{what}: {literal(str(exc))}"
+        raise InputError(said, Location(str(path), exc.line or 0)) from None
     ctx.inputs.append(os.path.realpath(path))
     solids = _chosen(ctx, m, step.solids, what)
     budget.spend(ctx, fnode, len(solids) - 1)
@@ -81,11 +81,11 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
                             f"{step.unit or '(none)'} is overridden: 1 unit = {k:g} m")
     for s in solids:
         if s.healed is not None:
-            ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {path}: solid '{s.name}' "
+            ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {path}: solid '{literal(s.name)}' "
                                 f"was not valid; OpenCascade healed it, changing its volume by "
                                 f"{s.healed:.2g} of it (a bound on the error)")
     for e in step.empty:
-        ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: {path}: '{e}' holds no solid")
+        ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: {path}: '{literal(e)}' holds no solid")
     dens = [_density(ctx, fnode, s.name, rules, default, what) for s in solids]
     vols = [s.volume * k**3 for s in solids]
     if mass is not None:  # the mass of them all, shared by volume
@@ -100,9 +100,9 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
                        at + R @ (np.array(s.t) * k), Ri)
         shown = s.name if not named else name if len(solids) == 1 else f"{name}/{s.name}"
         if not named and shown in names:
-            raise ctx.error(fnode, f"two parts are named '{shown}'; name the step part (name:)")
+            raise ctx.error(fnode, f"two parts are named '{literal(shown)}'; name the step part (name:)")
         names.add(shown)
-        extra = {"colour": s.colour} if s.colour else {}
+        extra = {"unit": step.unit or "", **({"colour": s.colour} if s.colour else {})}
         out.append(Part(prefix + shown, "step", mi, removed, com, J, v, "volume", None,
                         Ri[:, 2].copy(), extra, ctx.where(m), given_outline(mi, com, J)))
     return out[0] if len(out) == 1 else Stack.of(out)
@@ -110,7 +110,17 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
 
 def _rules(ctx: Ctx, node: ys.Node) -> list[tuple[str, ys.Node]]:
     """``solids:``: (name or pattern, its material or density node), in file order."""
-    return [(pattern, v) for pattern, (_k, v) in yv.mapping(ctx, node, "solids").items.items()]
+    return [(_pattern(ctx, k, p, "solids"), v)
+            for p, (k, v) in yv.mapping(ctx, node, "solids").items.items()]
+
+
+def _pattern(ctx: Ctx, node, text: str, key: str) -> str:
+    """A solid's name or pattern (``link*``), at most 200 characters (its matching stays
+    cheap)."""
+    if len(text) > 200:
+        raise ctx.error(node, f"{key}: a solid's name or pattern of at most 200 characters, "
+                        f"not {len(text)}")
+    return text
 
 
 def _chosen(ctx: Ctx, m: ys.MapNode, solids: tuple, what: str) -> list:
@@ -121,13 +131,13 @@ def _chosen(ctx: Ctx, m: ys.MapNode, solids: tuple, what: str) -> list:
         if key not in m.items:
             continue
         node = m.items[key][1]
-        patterns = ([yv.string(ctx, node, "part")] if key == "part"
-                    else [p for p, _ in _rules(ctx, node)])
+        patterns = ([_pattern(ctx, node, yv.string(ctx, node, "part"), "part")] if key == "part"
+                     else [p for p, _ in _rules(ctx, node)])
         for p in patterns:
             if not any(fnmatchcase(n, p) for n in names):
                 shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
-                raise ctx.error(node, f"{what}: {key}: '{p}' is no solid of the file"
-                                f"{yv.suggest(p, names)} (solids: {shown})")
+                raise ctx.error(node, literal(f"{what}: {key}: '{p}' is no solid of the file"
+                                              f"{yv.suggest(p, names)} (solids: {shown})"))
     if "part" in m.items:
         p = yv.string(ctx, m.items["part"][1], "part")
         return [s for s in solids if fnmatchcase(s.name, p)]
@@ -150,6 +160,6 @@ def _density(ctx: Ctx, fnode: ys.Node, solid: str, rules: list, default: float |
                     raise ctx.error(node, f"{what}: solids: {pattern}: {exc}") from None
         return yv.positive(ctx, node, "density", f"solids: {pattern}")
     if default is None:
-        raise ctx.error(fnode, f"{what}: solid '{solid}' has no density: give density or "
-                        "material (for all), or a solids: entry that matches it")
+        raise ctx.error(fnode, f"{what}: solid '{literal(solid)}' has no density: give density "
+                        "or material (for all), or a solids: entry that matches it")
     return default

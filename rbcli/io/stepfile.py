@@ -12,6 +12,7 @@ or nests more than :data:`MAX_ASSEMBLY_DEPTH` levels (README, "Budgets").
 from __future__ import annotations
 
 import io
+import itertools
 import re
 from dataclasses import dataclass
 
@@ -143,6 +144,10 @@ def scan(data: bytes, max_entities: int) -> None:
     if len(entities) > max_entities:
         raise StepError(f"more than {max_entities} entities (set RBCLI_MAX_STEP_ENTITIES to "
                         "raise the limit)", _where(data, entities[max_entities][0]))
+    seen: set[bytes] = set()
+    if len({n for n, _, _ in entities}) < len(entities):  # which one, only then
+        twice = next(n for n, _, _ in entities if n in seen or seen.add(n))
+        raise StepError(f"entity #{twice.decode()} is defined twice", _where(data, twice, 2))
     refs = {n: _REF.findall(p) for n, _, p in entities if b"#" in p}
     assembly: dict[bytes, list[bytes]] = {}
     for n, kind, _ in entities:
@@ -160,10 +165,10 @@ def scan(data: bytes, max_entities: int) -> None:
             raise StepError(message, _where(data, found[1]))
 
 
-def _where(data: bytes, number: bytes) -> int:
-    """The line where entity ``#number`` is defined."""
-    at = re.search(rb"#%s\s*=" % number, data)
-    return _line(data, at.start() if at else 0)
+def _where(data: bytes, number: bytes, nth: int = 1) -> int:
+    """The line where entity ``#number`` is defined (the ``nth`` time)."""
+    found = list(itertools.islice(re.finditer(rb"#%s\s*=" % number, data), nth))
+    return _line(data, found[-1].start() if found else 0)
 
 
 def read_step(path: str, max_solids: int) -> StepFile:
