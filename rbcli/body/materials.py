@@ -69,5 +69,6 @@ def density(name: str, own: Mapping[str, float] | None = None) -> float:
     names = {**{n: n for n in own}, **{kk: m.name for kk, m in _index().items()}}
     close = difflib.get_close_matches(k, list(names), n=1, cutoff=0.6) if len(k) <= 100 else []
     hint = f"; did you mean '{literal(names[close[0]])}'?" if close else ""
-    raise ValueError(f"unknown material '{literal(name)}'{hint} (`rbcli materials` lists the built-in "
+    shown = name if len(name) <= 60 else name[:60] + "…"
+    raise ValueError(f"unknown material '{literal(shown)}'{hint} (`rbcli materials` lists the built-in "
                      "ones; a body file's materials: section adds your own)")
