@@ -214,6 +214,12 @@ def cases() -> dict[str, list[list[str]]]:
     add("shapes", "all")
     add("shapes", "cylinder", "cylinder")
     add("shapes", "mesh", "mesh")
+    add("shapes", "step", "step")
+    add("materials", "steel", "steel")
+    add("materials", "peek-json", "PEEK", "--json")
+    add("materials", "error-none", "unobtainium")
+    add("inertia", "error-material", "-e", "{shape: box, size: [1, 1, 1], material: stell}")
+    add("inertia", "error-material-option", "examples/cube.yaml", "--material", "steel")
     add("examples", "list")
     return {cmd: [[n, *a] for n, a in d.items()] for cmd, d in out.items()}
 
