@@ -72,20 +72,7 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
     ctx.inputs.append(os.path.realpath(path))
     solids = _chosen(ctx, m, step.solids, what)
     budget.spend(ctx, fnode, len(solids) - 1)
-    if factor is None and step.metres is None:
-        raise ctx.error(fnode, f"{what}: {path}: the file's length unit "
-                        f"({step.unit or 'none'}) is not one rbcli knows; give units:")
-    k = scale * (factor or step.metres)
-    if factor is not None or scale != 1.0:
-        ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: {path}: its length unit "
-                            f"{step.unit or '(none)'} is overridden: 1 unit = {k:g} m")
-    for s in solids:
-        if s.healed is not None:
-            ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {path}: solid '{literal(s.name)}' "
-                                f"was not valid; OpenCascade healed it, changing its volume by "
-                                f"{s.healed:.2g} of it (a bound on the error)")
-    for e in step.empty:
-        ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: {path}: '{literal(e)}' holds no solid")
+    k = scale * _override(ctx, fnode, factor, scale, step, f"{what}: {path}")
     dens = [_density(ctx, fnode, s.name, rules, default, what) for s in solids]
     vols = [s.volume * k**3 for s in solids]
     if mass is not None:  # the mass of them all, shared by volume
@@ -102,10 +89,31 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         if not named and shown in names:
             raise ctx.error(fnode, f"two parts are named '{literal(shown)}'; name the step part (name:)")
         names.add(shown)
+        if s.healed is not None:
+            ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: {path}: solid "
+                                f"'{literal(s.name)}' was not valid; OpenCascade healed it, "
+                                f"changing its volume by {s.healed:.2g} of it (a bound on the error)")
         extra = {"unit": step.unit or "", **({"colour": s.colour} if s.colour else {})}
         out.append(Part(prefix + shown, "step", mi, removed, com, J, v, "volume", None,
                         Ri[:, 2].copy(), extra, ctx.where(m), given_outline(mi, com, J)))
+    ctx.warnings.extend(f"{ctx.where(fnode)}: note: {what}: {path}: '{literal(e)}' holds no solid"
+                        for e in step.empty)
     return out[0] if len(out) == 1 else Stack.of(out)
+
+
+def _override(ctx: Ctx, fnode: ys.Node, factor: float | None, scale: float, step, what: str) -> float:
+    """The factor ``units:`` puts on the file's lengths (read in m), with a note when it or
+    ``scale:`` overrides the file's own unit."""
+    if factor is None and scale == 1.0:
+        return 1.0
+    if factor is not None and step.metres is None:
+        raise ctx.error(fnode, f"{what}: units: the file's length unit ({literal(step.unit or 'none')}) "
+                        "is not one rbcli knows, so it cannot be replaced")
+    k = factor / step.metres if factor is not None else 1.0
+    ctx.warnings.append(f"{ctx.where(fnode)}: note: {what}: its length unit "
+                        f"{literal(step.unit or '(none)')} is overridden: 1 unit = "
+                        f"{scale * k * (step.metres or 1.0):g} m")
+    return k
 
 
 def _rules(ctx: Ctx, node: ys.Node) -> list[tuple[str, ys.Node]]:

@@ -15,25 +15,22 @@ import io
 import itertools
 import re
 from dataclasses import dataclass
+from types import SimpleNamespace
 
 from rbcli.io.reader import limit_from_env, read_regular
 
-__all__ = ["StepError", "Solid", "StepFile", "read_step", "scan", "SUFFIXES"]
+__all__ = ["StepError", "Solid", "StepFile", "read_step", "scan"]
 
-SUFFIXES = (".step", ".stp")
 MAX_STEP_BYTES = 128 << 20  # RBCLI_MAX_STEP_BYTES
 MAX_ENTITIES = 1_000_000  # RBCLI_MAX_STEP_ENTITIES: ~3 s and ~650 MB in OpenCascade
 MAX_ASSEMBLY_DEPTH = 64
 #: entity references nested deeper than this (a B-rep needs ~12) are refused: OpenCascade
 #: follows them recursively
 MAX_REF_DEPTH = 1000
-#: the file's length unit as OpenCascade names it -> as rbcli writes it
-UNIT_NAMES = {"millimetre": "mm", "millimeter": "mm", "metre": "m", "meter": "m",
-              "centimetre": "cm", "centimeter": "cm", "micrometre": "um", "micrometer": "um",
-              "kilometre": "km", "kilometer": "km", "inch": "in", "foot": "ft", "mil": "mil",
-              "yard": "yd", "mile": "mi"}
-_METRES = {"mm": 1e-3, "m": 1.0, "cm": 1e-2, "um": 1e-6, "km": 1e3, "in": 0.0254,
-           "ft": 0.3048, "mil": 2.54e-5, "yd": 0.9144, "mi": 1609.344}
+#: a file's length unit as OpenCascade names it (lower case) -> as rbcli writes it, in m
+UNITS = {"millimetre": ("mm", 1e-3), "metre": ("m", 1.0), "centimetre": ("cm", 1e-2),
+         "micrometre": ("um", 1e-6), "kilometre": ("km", 1e3), "inch": ("in", 0.0254),
+         "foot": ("ft", 0.3048)}
 _COMMENT = re.compile(rb"/\*.*?\*/", re.S)
 _STRING = re.compile(rb"'[^']*'")  # ('' inside a string: two strings side by side)
 #: an entity instance (strings emptied): its number, its type (empty: complex), parameters
@@ -52,17 +49,18 @@ class StepError(ValueError):
 
 @dataclass(frozen=True)
 class Solid:
-    """One solid placed in the file's assembly, in the file's length unit.
+    """One solid placed in the file's assembly (lengths in m: OpenCascade converts the
+    file's unit).
 
     Attributes
     ----------
     name : str — unique: the instance names from the top (``link:1/pin``)
-    volume : float — its volume, unit³
-    centroid : (3,) tuple — its centre of volume in its own part's frame, unit
+    volume : float — m³
+    centroid : (3,) tuple — its centre of volume in its own part's frame, m
     inertia : (3, 3) tuple — its second moments of volume about the centroid, own axes,
-        tensor convention (off-diagonals −∫xy dV), unit⁵: the inertia at unit density
-    R, t : (3, 3), (3,) tuples — where the assembly puts the part: x -> R x + t (R a rotation
-        or a reflection)
+        tensor convention (off-diagonals −∫xy dV), m⁵: the inertia at unit density
+    R, t : (3, 3), (3,) tuples — where the assembly puts the part: x -> R x + t (m; R a
+        rotation or a reflection)
     colour : str | None — ``#rrggbb`` (sRGB) of the solid, its part or its first face
     healed : float | None — where OpenCascade had to heal the solid (ShapeFix), the relative
         change of its volume: a bound on what healing changed
@@ -80,9 +78,9 @@ class Solid:
 
 @dataclass(frozen=True)
 class StepFile:
-    """What :func:`read_step` found: ``solids``; ``unit`` the file's length unit (``mm``)
-    and ``metres`` its size (None: the file names none rbcli knows); ``empty`` the names of
-    assembly nodes and parts that hold no solid."""
+    """What :func:`read_step` found: ``solids``; ``unit`` the file's length unit (``mm``;
+    several joined by commas) and ``metres`` its size (None: not one rbcli knows); ``empty``
+    the names of assembly nodes and parts that hold no solid."""
 
     solids: tuple[Solid, ...]
     unit: str | None
@@ -188,64 +186,61 @@ def read_step(path: str, max_solids: int) -> StepFile:
     data = read_regular(path, limit_from_env("RBCLI_MAX_STEP_BYTES", MAX_STEP_BYTES),
                         "STEP file", env="RBCLI_MAX_STEP_BYTES")
     scan(data, limit_from_env("RBCLI_MAX_STEP_ENTITIES", MAX_ENTITIES))
-    from OCP.Message import Message  # the cad extra; ~0.5 s, on this path only
+    from OCP import (BRep, BRepBuilderAPI, BRepCheck, BRepGProp, GProp, IFSelect, Message,
+                     Quantity, ShapeFix, STEPCAFControl, TCollection, TDataStd, TDF, TDocStd,
+                     TopAbs, TopExp, TopLoc, TopoDS, XCAFDoc, collections)  # ~0.5 s: here only
 
-    messenger = Message.DefaultMessenger_s()
+    ocp = SimpleNamespace(**{k: v for m in (BRep, BRepBuilderAPI, BRepCheck, BRepGProp, GProp,
+                                            IFSelect, Quantity, ShapeFix, STEPCAFControl,
+                                            TCollection, TDataStd, TDF, TDocStd, TopAbs, TopExp,
+                                            TopLoc, TopoDS, XCAFDoc, collections)
+                             for k, v in vars(m).items() if not k.startswith("_")})
+    messenger = Message.Message.DefaultMessenger_s()
     printers = list(messenger.Printers())  # OpenCascade prints to stdout: silenced meanwhile
     for p in printers:
         messenger.RemovePrinter(p)
     try:
-        return _Reader(max_solids).read(data)
+        return _Reader(ocp, max_solids).read(data)
     finally:
         for p in printers:
             messenger.AddPrinter(p)
 
 
 class _Reader:
-    """One read: the XDE document, the walk over its assembly tree, the solids' properties
-    (once per distinct part, whatever its uses)."""
+    """One read (``o``: OpenCascade's names): the XDE document, the walk over its assembly
+    tree, each part's solids' properties computed once, whatever its uses."""
 
-    def __init__(self, max_solids: int) -> None:
-        self.max_solids = max_solids
+    def __init__(self, o: SimpleNamespace, max_solids: int) -> None:
+        self.o, self.max_solids = o, max_solids
         self.solids: list[Solid] = []
         self.empty: list[str] = []
         self.props: dict = {}  # a part's label entry -> its solids' properties
 
     def read(self, data: bytes) -> StepFile:
-        from OCP.collections import Sequence_TCollection_AsciiString as Names
-        from OCP.collections import Sequence_TDF_Label as Labels
-        from OCP.IFSelect import IFSelect_RetDone
-        from OCP.STEPCAFControl import STEPCAFControl_Reader
-        from OCP.TCollection import TCollection_ExtendedString
-        from OCP.TDocStd import TDocStd_Document
-        from OCP.TopLoc import TopLoc_Location
-        from OCP.XCAFDoc import XCAFDoc_DocumentTool
-
-        reader = STEPCAFControl_Reader()
+        o = self.o
+        reader = o.STEPCAFControl_Reader()
         reader.SetNameMode(True)
         reader.SetColorMode(True)
-        if reader.ReadStream("step", io.BytesIO(data)) != IFSelect_RetDone:
+        if reader.ReadStream("step", io.BytesIO(data)) != o.IFSelect_RetDone:
             raise StepError("OpenCascade cannot read the file (a syntax error?)")
-        names = Names(), Names(), Names()
+        names = [o.Sequence_TCollection_AsciiString() for _ in range(3)]
         reader.Reader().FileUnits(*names)
-        units = list(dict.fromkeys(UNIT_NAMES.get(n.ToCString().lower(), n.ToCString())
+        found = list(dict.fromkeys(UNITS.get(n.ToCString().lower(), (n.ToCString(), None))
                                    for n in names[0]))
-        unit = units[0] if len(units) == 1 else (", ".join(units) or None)
-        doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
-        metres = _METRES.get(unit) if unit else None
-        XCAFDoc_DocumentTool.SetLengthUnit_s(doc, metres or 1e-3)  # numbers as the file has them
+        unit, metres = found[0] if len(found) == 1 else (", ".join(u for u, _ in found), None)
+        doc = o.TDocStd_Document(o.TCollection_ExtendedString("XmlOcaf"))
+        o.XCAFDoc_DocumentTool.SetLengthUnit_s(doc, 1.0)  # numbers in m, whatever the file's
         if not reader.Transfer(doc):
             raise StepError("OpenCascade cannot make shapes of the file's entities")
-        self.shapes = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
-        self.colours = XCAFDoc_DocumentTool.ColorTool_s(doc.Main())
-        free = Labels()
+        self.shapes = o.XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
+        self.colours = o.XCAFDoc_DocumentTool.ColorTool_s(doc.Main())
+        free = o.Sequence_TDF_Label()
         self.shapes.GetFreeShapes(free)
         tops = list(free)
         if len(tops) == 1 and self.shapes.IsAssembly_s(tops[0]):  # one assembly: its parts
-            tops = self._components(tops[0])
+            self._walk(self._components(tops[0]), "")
         else:
-            tops = [(lab, lab, TopLoc_Location()) for lab in tops]
-        self._walk(tops, "")
+            self._walk([(lab, lab, o.TopLoc_Location()) for lab in tops], "")
         if not self.solids:
             raise StepError("the file holds no solid" + (f" ({', '.join(self.empty[:3])}: no "
                             "volume)" if self.empty else ""))
@@ -253,22 +248,18 @@ class _Reader:
 
     def _components(self, label) -> list:
         """(instance label, part label, placement) of each component of an assembly."""
-        from OCP.collections import Sequence_TDF_Label as Labels
-        from OCP.TDF import TDF_Label
-
-        comps = Labels()
+        comps, out = self.o.Sequence_TDF_Label(), []
         self.shapes.GetComponents_s(label, comps)
-        out = []
         for c in comps:
-            ref = TDF_Label()
+            ref = self.o.TDF_Label()
             self.shapes.GetReferredShape_s(c, ref)
             out.append((c, ref, self.shapes.GetLocation_s(c)))
         return out
 
-    def _walk(self, items: list, prefix: str, depth: int = 0, loc=None) -> None:
+    def _walk(self, items: list, prefix: str, loc=None) -> None:
         """The solids of ``items`` (instance, part, placement), named ``prefix`` + unique
         instance names, depth first (the depth is bounded by :func:`scan`)."""
-        names = [_name(inst) or _name(ref) or "solid" for inst, ref, _ in items]
+        names = [self._name(inst) or self._name(ref) or "solid" for inst, ref, _ in items]
         seen: dict[str, int] = {}
         for (inst, ref, place), name in zip(items, names):
             if names.count(name) > 1:
@@ -276,130 +267,92 @@ class _Reader:
                 name = f"{name}:{seen[name]}"
             here = place if loc is None else loc.Multiplied(place)
             if self.shapes.IsAssembly_s(ref):
-                self._walk(self._components(ref), f"{prefix}{name}/", depth + 1, here)
-            else:
-                self._part(inst, ref, prefix + name, here)
+                self._walk(self._components(ref), f"{prefix}{name}/", here)
+                continue
+            solids = self._properties(ref, prefix + name)
+            if not solids:
+                self.empty.append(prefix + name)
+            trsf = here.Transformation()
+            if abs(abs(trsf.ScaleFactor()) - 1.0) > 1e-12:
+                raise StepError(f"'{prefix}{name}' is scaled by {trsf.ScaleFactor():g}; rbcli "
+                                "reads rigid placements only")
+            R = tuple(tuple(trsf.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
+            t = tuple(trsf.Value(i, 4) for i in (1, 2, 3))
+            colour = self._colour(inst) or self._colour(ref)
+            for i, (vol, com, J, healed, col) in enumerate(solids):
+                if len(self.solids) >= self.max_solids:
+                    raise StepError(f"the assembly places more than {self.max_solids} solids "
+                                    "(every use of a part counts); set RBCLI_MAX_PARTS to raise "
+                                    "the limit")
+                shown = f"{prefix}{name}[{i + 1}]" if len(solids) > 1 else prefix + name
+                self.solids.append(Solid(shown, vol, com, J, R, t, colour or col, healed))
 
-    def _part(self, inst, ref, name: str, loc) -> None:
-        solids = self._properties(ref, name)
-        if not solids:
-            self.empty.append(name)
-        R, t = _placement(loc)
-        colour = _colour(inst) or _colour(ref)
-        for i, (vol, com, J, healed, col) in enumerate(solids):
-            if len(self.solids) >= self.max_solids:
-                raise StepError(f"the assembly places more than {self.max_solids} solids (every "
-                                "use of a part counts); set RBCLI_MAX_PARTS to raise the limit")
-            shown = f"{name}[{i + 1}]" if len(solids) > 1 else name
-            self.solids.append(Solid(shown, vol, com, J, R, t, colour or col, healed))
+    def _name(self, label) -> str:
+        n = self.o.TDataStd_Name()
+        if not label.FindAttribute(self.o.TDataStd_Name.GetID_s(), n):
+            return ""
+        text = n.Get().ToExtString().strip()
+        return "" if text.startswith("=>[") else text  # OpenCascade's name of an unnamed one
+
+    def _colour(self, label, shape: bool = False) -> str | None:
+        """``#rrggbb`` of a label (or a shape), or None."""
+        o, c = self.o, self.o.Quantity_Color()
+        for kind in (o.XCAFDoc_ColorType.XCAFDoc_ColorGen, o.XCAFDoc_ColorType.XCAFDoc_ColorSurf):
+            if (self.colours.GetColor if shape else o.XCAFDoc_ColorTool.GetColor_s)(label, kind, c):
+                return "#" + "".join(f"{round(255 * v):02x}" for v in c.Values(o.Quantity_TOC_sRGB))
+        return None
 
     def _properties(self, label, name: str) -> list:
         """(volume, centroid, inertia, healed, colour) of each solid of a part (its closed
         shells made solids), computed once per part."""
-        from OCP.TDF import TDF_Tool
-        from OCP.TCollection import TCollection_AsciiString
-
-        entry = TCollection_AsciiString()
-        TDF_Tool.Entry_s(label, entry)
+        entry = self.o.TCollection_AsciiString()
+        self.o.TDF_Tool.Entry_s(label, entry)
         key = entry.ToCString()
         if key not in self.props:
-            self.props[key] = [(*_solid(s, name), _face_colour(self.colours, s))
-                               for s in _solids(self.shapes.GetShape_s(label), name)]
+            self.props[key] = [self._solid(s, name) for s in self._solids(label, name)]
         return self.props[key]
 
+    def _solids(self, label, name: str) -> list:
+        """The solids of a part's shape; its closed shells made solids; an open one refused."""
+        o, shape, out = self.o, self.shapes.GetShape_s(label), []
+        ex = o.TopExp_Explorer(shape, o.TopAbs_SOLID)
+        while ex.More():
+            out.append(ex.Current())
+            ex.Next()
+        ex = o.TopExp_Explorer(shape, o.TopAbs_SHELL, o.TopAbs_SOLID)  # shells in no solid
+        while ex.More():
+            shell = o.TopoDS.Shell(ex.Current())
+            if not o.BRep_Tool.IsClosed_s(shell):
+                raise StepError(f"part '{name}': a shell that does not close a volume (a "
+                                "surface model); export the part as a solid")
+            out.append(o.BRepBuilderAPI_MakeSolid(shell).Solid())
+            ex.Next()
+        return out
 
-def _name(label) -> str:
-    from OCP.TDataStd import TDataStd_Name
+    def _solid(self, solid, name: str) -> tuple:
+        """(volume, centroid, inertia, healed, colour) of one solid: OpenCascade's exact volume
+        integrals over its B-rep; an invalid solid healed by ShapeFix if it can be; its colour,
+        or its first face's."""
+        o = self.o
 
-    n = TDataStd_Name()
-    if not label.FindAttribute(TDataStd_Name.GetID_s(), n):
-        return ""
-    text = n.Get().ToExtString().strip()
-    return "" if text.startswith("=>[") else text  # OpenCascade's name of an unnamed instance
+        def props(s):
+            p = o.GProp_GProps()
+            o.BRepGProp.VolumeProperties_s(s, p)
+            return p
 
-
-def _colour(label, tool=None) -> str | None:
-    """``#rrggbb`` of a label (or, with its colour ``tool``, of a shape), or None."""
-    from OCP.Quantity import Quantity_Color, Quantity_TOC_sRGB
-    from OCP.XCAFDoc import XCAFDoc_ColorTool, XCAFDoc_ColorType
-
-    c = Quantity_Color()
-    for kind in (XCAFDoc_ColorType.XCAFDoc_ColorGen, XCAFDoc_ColorType.XCAFDoc_ColorSurf):
-        if (tool.GetColor(label, kind, c) if tool else XCAFDoc_ColorTool.GetColor_s(label, kind, c)):
-            return "#" + "".join(f"{round(255 * v):02x}" for v in c.Values(Quantity_TOC_sRGB))
-    return None
-
-
-def _face_colour(tool, solid) -> str | None:
-    """The colour of the solid, else of its first face that has one."""
-    from OCP.TopAbs import TopAbs_FACE
-    from OCP.TopExp import TopExp_Explorer
-
-    found = _colour(solid, tool)
-    ex = TopExp_Explorer(solid, TopAbs_FACE)
-    while found is None and ex.More():
-        found = _colour(ex.Current(), tool)
-        ex.Next()
-    return found
-
-
-def _placement(loc) -> tuple:
-    trsf = loc.Transformation()
-    if abs(abs(trsf.ScaleFactor()) - 1.0) > 1e-12:
-        raise StepError(f"an instance is scaled by {trsf.ScaleFactor():g}; rbcli reads rigid "
-                        "placements only")
-    R = tuple(tuple(trsf.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
-    return R, tuple(trsf.Value(i, 4) for i in (1, 2, 3))
-
-
-def _solids(shape, name: str) -> list:
-    """The solids of a part's shape; its closed shells made solids; an open shell refused."""
-    from OCP.BRep import BRep_Tool
-    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeSolid
-    from OCP.TopAbs import TopAbs_SHELL, TopAbs_SOLID
-    from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
-
-    out = []
-    ex = TopExp_Explorer(shape, TopAbs_SOLID)
-    while ex.More():
-        out.append(ex.Current())
-        ex.Next()
-    ex = TopExp_Explorer(shape, TopAbs_SHELL, TopAbs_SOLID)  # shells outside any solid
-    while ex.More():
-        shell = TopoDS.Shell(ex.Current())
-        if not BRep_Tool.IsClosed_s(shell):
-            raise StepError(f"part '{name}': a shell that does not close a volume (a surface "
-                            "model); export the part as a solid")
-        out.append(BRepBuilderAPI_MakeSolid(shell).Solid())
-        ex.Next()
-    return out
-
-
-def _solid(solid, name: str) -> tuple:
-    """(volume, centroid, inertia, healed) of one solid: OpenCascade's exact volume
-    integrals over its B-rep; an invalid solid healed by ShapeFix if it can be."""
-    from OCP.BRepCheck import BRepCheck_Analyzer
-    from OCP.BRepGProp import BRepGProp
-    from OCP.GProp import GProp_GProps
-    from OCP.ShapeFix import ShapeFix_Shape
-
-    def props(s):
-        p = GProp_GProps()
-        BRepGProp.VolumeProperties_s(s, p)
-        return p
-
-    p, healed = props(solid), None
-    if not BRepCheck_Analyzer(solid).IsValid() or not p.Mass() > 0:
-        fix = ShapeFix_Shape(solid)
-        fix.Perform()
-        fixed = fix.Shape()
-        q = props(fixed)
-        if not (BRepCheck_Analyzer(fixed).IsValid() and q.Mass() > 0):
-            raise StepError(f"solid '{name}' is not a valid solid (open, self-intersecting or "
-                            "inside out) and OpenCascade cannot heal it")
-        healed = abs(q.Mass() - abs(p.Mass())) / q.Mass()
-        p = q
-    c, m = p.CentreOfMass(), p.MatrixOfInertia()
-    J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
-    return p.Mass(), (c.X(), c.Y(), c.Z()), J, healed
+        p, healed = props(solid), None
+        if not o.BRepCheck_Analyzer(solid).IsValid() or not p.Mass() > 0:
+            fix = o.ShapeFix_Shape(solid)
+            fix.Perform()
+            q = props(fix.Shape())
+            if not (o.BRepCheck_Analyzer(fix.Shape()).IsValid() and q.Mass() > 0):
+                raise StepError(f"solid '{name}' is not a valid solid (open, self-intersecting "
+                                "or inside out) and OpenCascade cannot heal it")
+            healed, p = abs(q.Mass() - abs(p.Mass())) / q.Mass(), q
+        colour, faces = self._colour(solid, True), o.TopExp_Explorer(solid, o.TopAbs_FACE)
+        while colour is None and faces.More():
+            colour = self._colour(faces.Current(), True)
+            faces.Next()
+        c, m = p.CentreOfMass(), p.MatrixOfInertia()
+        J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
+        return p.Mass(), (c.X(), c.Y(), c.Z()), J, healed, colour
