@@ -30,6 +30,7 @@ each constructor's keyword arguments equal to the keys the body file takes for i
 
 from __future__ import annotations
 
+import inspect
 import os
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
@@ -95,9 +96,7 @@ def _documented(summary: str, params: str, example: str) -> Callable[[_F], _F]:
     ``example``."""
 
     def deco(fn: _F) -> _F:
-        code = fn.__code__
-        names = code.co_varnames[code.co_argcount:code.co_argcount + code.co_kwonlyargcount]
-        shared = "\n".join(_COMMON[n] for n in names if n in _COMMON)
+        shared = "\n".join(_COMMON[n] for n in inspect.signature(fn).parameters if n in _COMMON)
         shape = fn.__name__
         fn.__doc__ = (f"{summary.strip()}\n\nParameters\n----------\n{params.strip()}\n{shared}\n\n"
                       f"{_RETURNS.format(shape=shape)}\n\nSee Also\n--------\n"
@@ -106,6 +105,36 @@ def _documented(summary: str, params: str, example: str) -> Callable[[_F], _F]:
         return fn
 
     return deco
+
+
+#: the keys every primitive takes after its own parameters (a test keeps them the body's)
+_TAIL = ("mass", "density", "areal_density", "linear_density", "material", "at", "axis", "rotate",
+         "subtract", "cut_from")
+#: the type of a keyword that is not a quantity (float or str)
+_TYPES = {"name": str, "cut_from": str, "material": str, "subtract": bool, "shell": bool,
+          "rotate": Mapping[str, Any], "at": Vector, "axis": Vector, "from_": Vector, "to": Vector,
+          "size": Vector, "semi_axes": Vector, "vertices": Sequence[Vector]}
+
+
+def _primitive(shape: str, own: tuple[str, ...], summary: str, params: str,
+               example: str) -> Callable[..., PartSpec]:
+    """The constructor of the primitive ``shape`` with its ``own`` parameters: keyword
+    arguments name, ``own``, then :data:`_TAIL` (the body file's keys; ``from`` is ``from_``),
+    each None by default."""
+    names = ("name", *own, *_TAIL)
+
+    def make(**kwargs: Any) -> PartSpec:
+        for k in kwargs:
+            if k not in names:
+                raise TypeError(f"{shape}() got an unexpected keyword argument {k!r}")
+        return _spec(shape, {k: kwargs.get(k) for k in names})
+
+    make.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+        [inspect.Parameter(n, inspect.Parameter.KEYWORD_ONLY, default=None,
+                           annotation=_TYPES.get(n, Quantity) | None) for n in names],
+        return_annotation=PartSpec)
+    make.__name__ = make.__qualname__ = shape
+    return _documented(summary, params, example)(make)
 
 
 def _spec(shape: str, args: dict[str, Any]) -> PartSpec:
@@ -126,7 +155,8 @@ def _spec(shape: str, args: dict[str, Any]) -> PartSpec:
 # ----------------------------------------------------------------------------- shapes
 
 
-@_documented(
+point = _primitive(
+    "point", (),
     "A point mass.",
     "",
     """
@@ -138,16 +168,10 @@ rbcli.parts.point(name='weight', mass='20 g', at=['350 mm', 0, 0])
 >>> round(float(rbcli.inertia(b, about="origin").inertia[2][2]), 12)   # m r², kg m²
 0.00245
 """)
-def point(*, name: str | None = None, mass: Quantity | None = None,
-          density: Quantity | None = None, areal_density: Quantity | None = None,
-          linear_density: Quantity | None = None, material: str | None = None,
-          at: Vector | None = None, axis: Vector | None = None,
-          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-          cut_from: str | None = None) -> PartSpec:
-    return _spec("point", locals())
 
 
-@_documented(
+rod = _primitive(
+    "rod", ('length', 'from_', 'to'),
     "A thin rod along its local z axis, centred on its local origin (or from one point to "
     "another).",
     """
@@ -166,16 +190,10 @@ from_, to : sequence of 3, optional
 >>> round(float(rbcli.inertia(b).inertia_com[0][0]), 12)   # L = 2 m
 1.0
 """)
-def rod(*, name: str | None = None, length: Quantity | None = None, from_: Vector | None = None,
-        to: Vector | None = None, mass: Quantity | None = None, density: Quantity | None = None,
-        areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-        material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
-        rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-        cut_from: str | None = None) -> PartSpec:
-    return _spec("rod", locals())
 
 
-@_documented(
+ring = _primitive(
+    "ring", ('radius', 'diameter'),
     "A thin hoop in its local xy plane, centred on its local origin.",
     """
 radius : float or str, optional
@@ -189,17 +207,10 @@ diameter : float or str, optional
 >>> round(float(rbcli.inertia(b).inertia_com[2][2]), 12)   # m R², kg m²
 0.5
 """)
-def ring(*, name: str | None = None, radius: Quantity | None = None,
-         diameter: Quantity | None = None, mass: Quantity | None = None,
-         density: Quantity | None = None, areal_density: Quantity | None = None,
-         linear_density: Quantity | None = None, material: str | None = None,
-         at: Vector | None = None, axis: Vector | None = None,
-         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-         cut_from: str | None = None) -> PartSpec:
-    return _spec("ring", locals())
 
 
-@_documented(
+disk = _primitive(
+    "disk", ('radius', 'inner_radius', 'diameter', 'inner_diameter'),
     "A thin disk or annulus in its local xy plane, centred on its local origin.",
     """
 radius : float or str, optional
@@ -215,18 +226,10 @@ diameter, inner_diameter : float or str, optional
 >>> round(float(rbcli.inertia(b).inertia_com[2][2]), 12)   # m R²/2, kg m²
 0.54
 """)
-def disk(*, name: str | None = None, radius: Quantity | None = None,
-         inner_radius: Quantity | None = None, diameter: Quantity | None = None,
-         inner_diameter: Quantity | None = None, mass: Quantity | None = None,
-         density: Quantity | None = None, areal_density: Quantity | None = None,
-         linear_density: Quantity | None = None, material: str | None = None,
-         at: Vector | None = None, axis: Vector | None = None,
-         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-         cut_from: str | None = None) -> PartSpec:
-    return _spec("disk", locals())
 
 
-@_documented(
+plate = _primitive(
+    "plate", ('size', 'thickness'),
     "A thin rectangle a × b in its local x, y (with a thickness, a box), centred on its "
     "local origin.",
     """
@@ -241,17 +244,10 @@ thickness : float or str, optional
 >>> round(float(rbcli.inertia(b).inertia_com[2][2]), 12)   # m (a² + b²)/12, kg m²
 0.025
 """)
-def plate(*, name: str | None = None, size: Vector | None = None,
-          thickness: Quantity | None = None, mass: Quantity | None = None,
-          density: Quantity | None = None, areal_density: Quantity | None = None,
-          linear_density: Quantity | None = None, material: str | None = None,
-          at: Vector | None = None, axis: Vector | None = None,
-          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-          cut_from: str | None = None) -> PartSpec:
-    return _spec("plate", locals())
 
 
-@_documented(
+triangle = _primitive(
+    "triangle", ('vertices',),
     "A thin triangular lamina given by its three corners (in its local frame).",
     """
 vertices : sequence of 3 points, optional
@@ -263,16 +259,10 @@ vertices : sequence of 3 points, optional
 >>> [round(x, 12) for x in rbcli.inertia(rbcli.Body.from_parts([t])).com.tolist()]
 [0.333333333333, 0.333333333333, 0.0]
 """)
-def triangle(*, name: str | None = None, vertices: Sequence[Vector] | None = None,
-             mass: Quantity | None = None, density: Quantity | None = None,
-             areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-             material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
-             rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-             cut_from: str | None = None) -> PartSpec:
-    return _spec("triangle", locals())
 
 
-@_documented(
+box = _primitive(
+    "box", ('size',),
     "A solid cuboid a × b × c along its local x, y, z, centred on its local origin.",
     """
 size : sequence of 3, optional
@@ -284,16 +274,10 @@ size : sequence of 3, optional
 >>> round(float(rbcli.inertia(b).inertia_com[2][2]), 12)   # m (a² + b²)/12, kg m²
 0.008333333333
 """)
-def box(*, name: str | None = None, size: Vector | None = None, mass: Quantity | None = None,
-        density: Quantity | None = None, areal_density: Quantity | None = None,
-        linear_density: Quantity | None = None, material: str | None = None,
-        at: Vector | None = None, axis: Vector | None = None,
-        rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-        cut_from: str | None = None) -> PartSpec:
-    return _spec("box", locals())
 
 
-@_documented(
+cylinder = _primitive(
+    "cylinder", ('radius', 'length', 'inner_radius', 'shell', 'diameter', 'inner_diameter'),
     "A solid cylinder or tube along its local z axis (``shell=True``: a thin wall), centred "
     "on its local origin.",
     """
@@ -314,19 +298,10 @@ diameter, inner_diameter : float or str, optional
 >>> round(rbcli.inertia(rbcli.Body.from_parts([c])).mass, 6)   # ρ π R² L, kg
 24.661502
 """)
-def cylinder(*, name: str | None = None, radius: Quantity | None = None,
-             length: Quantity | None = None, inner_radius: Quantity | None = None,
-             shell: bool | None = None, diameter: Quantity | None = None,
-             inner_diameter: Quantity | None = None, mass: Quantity | None = None,
-             density: Quantity | None = None, areal_density: Quantity | None = None,
-             linear_density: Quantity | None = None, material: str | None = None,
-             at: Vector | None = None, axis: Vector | None = None,
-             rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-             cut_from: str | None = None) -> PartSpec:
-    return _spec("cylinder", locals())
 
 
-@_documented(
+sphere = _primitive(
+    "sphere", ('radius', 'inner_radius', 'shell', 'diameter', 'inner_diameter'),
     "A solid or hollow sphere (``shell=True``: a thin shell), centred on its local origin.",
     """
 radius : float or str, optional
@@ -344,18 +319,10 @@ diameter, inner_diameter : float or str, optional
 >>> round(float(rbcli.inertia(b).inertia_com[2][2]), 12)   # 2 m R²/5, kg m²
 0.02
 """)
-def sphere(*, name: str | None = None, radius: Quantity | None = None,
-           inner_radius: Quantity | None = None, shell: bool | None = None,
-           diameter: Quantity | None = None, inner_diameter: Quantity | None = None,
-           mass: Quantity | None = None, density: Quantity | None = None,
-           areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-           material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
-           rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-           cut_from: str | None = None) -> PartSpec:
-    return _spec("sphere", locals())
 
 
-@_documented(
+hemisphere = _primitive(
+    "hemisphere", ('radius', 'diameter'),
     "A solid hemisphere, its dome towards local +z, its local origin at the centre of its "
     "flat face.",
     """
@@ -370,17 +337,10 @@ diameter : float or str, optional
 >>> round(float(rbcli.inertia(b).com[2]), 12)   # 3R/8 above the flat face, m
 0.0375
 """)
-def hemisphere(*, name: str | None = None, radius: Quantity | None = None,
-               diameter: Quantity | None = None, mass: Quantity | None = None,
-               density: Quantity | None = None, areal_density: Quantity | None = None,
-               linear_density: Quantity | None = None, material: str | None = None,
-               at: Vector | None = None, axis: Vector | None = None,
-               rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-               cut_from: str | None = None) -> PartSpec:
-    return _spec("hemisphere", locals())
 
 
-@_documented(
+cone = _primitive(
+    "cone", ('radius', 'height', 'diameter'),
     "A solid right circular cone, its apex towards local +z, its local origin at the centre "
     "of its base.",
     """
@@ -397,17 +357,10 @@ diameter : float or str, optional
 >>> round(float(rbcli.inertia(b).com[2]), 12)   # h/4 above the base, m
 0.1
 """)
-def cone(*, name: str | None = None, radius: Quantity | None = None,
-         height: Quantity | None = None, diameter: Quantity | None = None,
-         mass: Quantity | None = None, density: Quantity | None = None,
-         areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-         material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
-         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-         cut_from: str | None = None) -> PartSpec:
-    return _spec("cone", locals())
 
 
-@_documented(
+ellipsoid = _primitive(
+    "ellipsoid", ('semi_axes',),
     "A solid ellipsoid with semi-axes a, b, c along its local x, y, z, centred on its local "
     "origin.",
     """
@@ -420,16 +373,10 @@ semi_axes : sequence of 3, optional
 >>> round(float(rbcli.inertia(rbcli.Body.from_parts([e])).inertia_com[2][2]), 12)   # m (a² + b²)/5
 0.05
 """)
-def ellipsoid(*, name: str | None = None, semi_axes: Vector | None = None,
-              mass: Quantity | None = None, density: Quantity | None = None,
-              areal_density: Quantity | None = None, linear_density: Quantity | None = None,
-              material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
-              rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-              cut_from: str | None = None) -> PartSpec:
-    return _spec("ellipsoid", locals())
 
 
-@_documented(
+torus = _primitive(
+    "torus", ('major_radius', 'minor_radius'),
     "A solid torus (a tyre, an O-ring) about its local z axis, centred on its local origin.",
     """
 major_radius : float or str, optional
@@ -443,14 +390,6 @@ minor_radius : float or str, optional
 >>> round(float(rbcli.inertia(rbcli.Body.from_parts([t])).inertia_com[2][2]), 12)   # m (R² + 3r²/4)
 0.18375
 """)
-def torus(*, name: str | None = None, major_radius: Quantity | None = None,
-          minor_radius: Quantity | None = None, mass: Quantity | None = None,
-          density: Quantity | None = None, areal_density: Quantity | None = None,
-          linear_density: Quantity | None = None, material: str | None = None,
-          at: Vector | None = None, axis: Vector | None = None,
-          rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-          cut_from: str | None = None) -> PartSpec:
-    return _spec("torus", locals())
 
 
 # ----------------------------------------------------------------------------- the special parts
