@@ -113,20 +113,26 @@ _TAIL = ("mass", "density", "areal_density", "linear_density", "material", "at",
 #: the type of a keyword that is not a quantity (float or str)
 _TYPES = {"name": str, "cut_from": str, "material": str, "subtract": bool, "shell": bool,
           "rotate": Mapping[str, Any], "at": Vector, "axis": Vector, "from_": Vector, "to": Vector,
-          "size": Vector, "semi_axes": Vector, "vertices": Sequence[Vector]}
+          "size": Vector, "semi_axes": Vector, "vertices": Sequence[Vector], "file": Any,
+          "units": str, "allow_open": bool, "part": str, "solids": Mapping[str, Any], "com": Vector,
+          "inertia": Any, "convention": str}
+_PLACED = ("at", "axis", "rotate")
+_SOLID = ("mass", "density", "material", *_PLACED, "subtract", "cut_from")
 
 
-def _primitive(shape: str, own: tuple[str, ...], summary: str, params: str,
-               example: str) -> Callable[..., PartSpec]:
-    """The constructor of the primitive ``shape`` with its ``own`` parameters: keyword
-    arguments name, ``own``, then :data:`_TAIL` (the body file's keys; ``from`` is ``from_``),
-    each None by default."""
-    names = ("name", *own, *_TAIL)
+def _constructor(shape: str, own: tuple[str, ...], summary: str, params: str, example: str,
+               tail: tuple[str, ...] = _TAIL) -> Callable[..., PartSpec]:
+    """The constructor of ``shape``: keyword arguments name, its ``own`` keys, then ``tail``
+    (the body file's keys: a path-like ``file`` is its text; ``from`` is ``from_``), each None
+    by default."""
+    names = ("name", *own, *tail)
 
     def make(**kwargs: Any) -> PartSpec:
         for k in kwargs:
             if k not in names:
                 raise TypeError(f"{shape}() got an unexpected keyword argument {k!r}")
+        if isinstance(kwargs.get("file"), os.PathLike):
+            kwargs["file"] = os.fspath(kwargs["file"])
         return _spec(shape, {k: kwargs.get(k) for k in names})
 
     make.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
@@ -155,7 +161,7 @@ def _spec(shape: str, args: dict[str, Any]) -> PartSpec:
 # ----------------------------------------------------------------------------- shapes
 
 
-point = _primitive(
+point = _constructor(
     "point", (),
     "A point mass.",
     "",
@@ -170,7 +176,7 @@ rbcli.parts.point(name='weight', mass='20 g', at=['350 mm', 0, 0])
 """)
 
 
-rod = _primitive(
+rod = _constructor(
     "rod", ('length', 'from_', 'to'),
     "A thin rod along its local z axis, centred on its local origin (or from one point to "
     "another).",
@@ -192,7 +198,7 @@ from_, to : sequence of 3, optional
 """)
 
 
-ring = _primitive(
+ring = _constructor(
     "ring", ('radius', 'diameter'),
     "A thin hoop in its local xy plane, centred on its local origin.",
     """
@@ -209,7 +215,7 @@ diameter : float or str, optional
 """)
 
 
-disk = _primitive(
+disk = _constructor(
     "disk", ('radius', 'inner_radius', 'diameter', 'inner_diameter'),
     "A thin disk or annulus in its local xy plane, centred on its local origin.",
     """
@@ -228,7 +234,7 @@ diameter, inner_diameter : float or str, optional
 """)
 
 
-plate = _primitive(
+plate = _constructor(
     "plate", ('size', 'thickness'),
     "A thin rectangle a × b in its local x, y (with a thickness, a box), centred on its "
     "local origin.",
@@ -246,7 +252,7 @@ thickness : float or str, optional
 """)
 
 
-triangle = _primitive(
+triangle = _constructor(
     "triangle", ('vertices',),
     "A thin triangular lamina given by its three corners (in its local frame).",
     """
@@ -261,7 +267,7 @@ vertices : sequence of 3 points, optional
 """)
 
 
-box = _primitive(
+box = _constructor(
     "box", ('size',),
     "A solid cuboid a × b × c along its local x, y, z, centred on its local origin.",
     """
@@ -276,7 +282,7 @@ size : sequence of 3, optional
 """)
 
 
-cylinder = _primitive(
+cylinder = _constructor(
     "cylinder", ('radius', 'length', 'inner_radius', 'shell', 'diameter', 'inner_diameter'),
     "A solid cylinder or tube along its local z axis (``shell=True``: a thin wall), centred "
     "on its local origin.",
@@ -300,7 +306,7 @@ diameter, inner_diameter : float or str, optional
 """)
 
 
-sphere = _primitive(
+sphere = _constructor(
     "sphere", ('radius', 'inner_radius', 'shell', 'diameter', 'inner_diameter'),
     "A solid or hollow sphere (``shell=True``: a thin shell), centred on its local origin.",
     """
@@ -321,7 +327,7 @@ diameter, inner_diameter : float or str, optional
 """)
 
 
-hemisphere = _primitive(
+hemisphere = _constructor(
     "hemisphere", ('radius', 'diameter'),
     "A solid hemisphere, its dome towards local +z, its local origin at the centre of its "
     "flat face.",
@@ -339,7 +345,7 @@ diameter : float or str, optional
 """)
 
 
-cone = _primitive(
+cone = _constructor(
     "cone", ('radius', 'height', 'diameter'),
     "A solid right circular cone, its apex towards local +z, its local origin at the centre "
     "of its base.",
@@ -359,7 +365,7 @@ diameter : float or str, optional
 """)
 
 
-ellipsoid = _primitive(
+ellipsoid = _constructor(
     "ellipsoid", ('semi_axes',),
     "A solid ellipsoid with semi-axes a, b, c along its local x, y, z, centred on its local "
     "origin.",
@@ -375,7 +381,7 @@ semi_axes : sequence of 3, optional
 """)
 
 
-torus = _primitive(
+torus = _constructor(
     "torus", ('major_radius', 'minor_radius'),
     "A solid torus (a tyre, an O-ring) about its local z axis, centred on its local origin.",
     """
@@ -395,7 +401,8 @@ minor_radius : float or str, optional
 # ----------------------------------------------------------------------------- the special parts
 
 
-@_documented(
+mesh = _constructor(
+    "mesh", ("file", "scale", "units", "allow_open", "weld"),
     "A closed triangle mesh read from an STL or OBJ file (a CAD export), of uniform density.",
     """
 file : str or path-like, optional
@@ -416,17 +423,11 @@ weld : float or str, optional
 >>> b = rbcli.Body.from_parts([m])
 >>> round(rbcli.inertia(b).mass, 6)   # 2700 kg/m³ × 80 × 40 × 20 mm³, kg
 0.1728
-""")
-def mesh(*, name: str | None = None, file: Any = None, scale: Quantity | None = None,
-         units: str | None = None, allow_open: bool | None = None, weld: Quantity | None = None,
-         mass: Quantity | None = None, density: Quantity | None = None,
-         material: str | None = None, at: Vector | None = None, axis: Vector | None = None,
-         rotate: Mapping[str, Any] | None = None, subtract: bool | None = None,
-         cut_from: str | None = None) -> PartSpec:
-    return _spec("mesh", _fspath(locals()))
+""", _SOLID)
 
 
-@_documented(
+step = _constructor(
+    "step", ("file", "part", "solids", "units", "scale"),
     "The solids of a STEP file (a CAD part or assembly), each a part with its exact volume "
     "properties from the B-rep (needs ``pip install 'rbcli[cad]'``).",
     """
@@ -448,17 +449,11 @@ scale : float or str, optional
 >>> rbcli.parts.step(name="arm", file="examples/cad/step_arm.step", material="aluminium 6061",
 ...                  solids={"*pin": "steel"})
 rbcli.parts.step(name='arm', file='examples/cad/step_arm.step', solids={'*pin': 'steel'}, material='aluminium 6061')
-""")
-def step(*, name: str | None = None, file: Any = None, part: str | None = None,
-         solids: Mapping[str, Any] | None = None, units: str | None = None,
-         scale: Quantity | None = None, mass: Quantity | None = None,
-         density: Quantity | None = None, material: str | None = None, at: Vector | None = None,
-         axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-         subtract: bool | None = None, cut_from: str | None = None) -> PartSpec:
-    return _spec("step", _fspath(locals()))
+""", _SOLID)
 
 
-@_documented(
+given = _constructor(
+    "given", ("mass", "com", "inertia", "convention"),
     "A part given by its mass properties (a CAD report, a data sheet): mass, centre of mass "
     "and inertia about it.",
     """
@@ -476,15 +471,11 @@ convention : str, optional
 >>> g = rbcli.parts.given(mass=2, inertia=[[0.01, 0, 0], [0, 0.02, 0], [0, 0, 0.025]])
 >>> round(float(rbcli.inertia(rbcli.Body.from_parts([g])).inertia_com[2][2]), 12)
 0.025
-""")
-def given(*, name: str | None = None, mass: Quantity | None = None, com: Vector | None = None,
-          inertia: Any = None, convention: str | None = None, at: Vector | None = None,
-          axis: Vector | None = None, rotate: Mapping[str, Any] | None = None,
-          subtract: bool | None = None) -> PartSpec:
-    return _spec("given", locals())
+""", (*_PLACED, "subtract"))
 
 
-@_documented(
+include = _constructor(
+    "include", ("file",),
     "Another body file's parts, placed as a whole (an assembly of sub-assemblies).",
     """
 file : str or path-like, optional
@@ -500,15 +491,5 @@ file : str or path-like, optional
 >>> one = rbcli.load("examples/car_wheel.yaml")
 >>> rbcli.inertia(wheels).mass == 2 * rbcli.inertia(one).mass
 True
-""")
-def include(*, name: str | None = None, file: Any = None, at: Vector | None = None,
-            axis: Vector | None = None, rotate: Mapping[str, Any] | None = None) -> PartSpec:
-    return _spec("include", _fspath(locals()))
+""", _PLACED)
 
-
-def _fspath(args: dict[str, Any]) -> dict[str, Any]:
-    """A path-like ``file`` as its text (the body file's ``file:`` is a text)."""
-    f = args.get("file")
-    if f is not None and not isinstance(f, str) and isinstance(f, os.PathLike):
-        args = {**args, "file": os.fspath(f)}
-    return args
