@@ -74,33 +74,27 @@ def load(path: str | os.PathLike[str], *, material: str | None = None,
     Parameters
     ----------
     path : str or path-like
-        The YAML body file (relative ``include``, mesh and STEP paths are resolved from its
-        folder; ``"-"`` reads standard input); or a ``.step``/``.stp`` file (each solid a
-        part, its exact volume properties from the B-rep: needs ``pip install
-        'rbcli[cad]'``), or a ``.stl``/``.obj`` file (a closed mesh, in mm).
-    material : str, optional
-        For a STEP, STL or OBJ file: the material of every solid (``"steel"``, ``"aluminium
-        6061"``: ``rbcli materials`` lists them).
-    density : float or str, optional
-        For a STEP, STL or OBJ file: kg/m³, or with its unit (``"2.7 g/cm^3"``).
+        A YAML body file (relative ``include``, mesh and STEP paths start from its folder;
+        ``"-"`` reads standard input); or a ``.step``/``.stp`` file (each solid a part, exact
+        from its B-rep: ``pip install 'rbcli[cad]'``) or a ``.stl``/``.obj`` file (in mm).
+    material, density : str; float or str, optional
+        For a STEP, STL or OBJ file, one of them: every solid's material (``"aluminium
+        6061"``: ``rbcli materials``), or density (kg/m³, or ``"2.7 g/cm^3"``).
     part : str, optional
-        For a STEP file: the solid (its name in the file, or a pattern such as ``"link*"``)
-        to keep; default all.
+        For a STEP file: only the solids this name or pattern (``"link*"``) matches.
 
     Returns
     -------
     Body
-        The validated body in SI units (a frozen :class:`rbcli.Body`); its
-        ``warnings`` are the located warnings the command line prints.
+        The validated body in SI units; its ``warnings`` are what the command line prints.
 
     Raises
     ------
     TypeError
-        ``path`` is not a path; a keyword of the wrong type.
+        An argument of the wrong type.
     rbcli.InputError
-        Anything wrong with the file, with ``where`` (file, line, column) and the same
-        one-line message the command line prints; an unknown material; ``material``,
-        ``density`` or ``part`` for a body file.
+        Anything wrong with the file, located (file, line, column), with the command line's
+        message; an unknown material; ``material``, ``density`` or ``part`` for a body file.
 
     Examples
     --------

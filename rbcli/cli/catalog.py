@@ -88,6 +88,7 @@ def shapes(
 ) -> None:
     from rbcli.core.shapes import SHAPES
     from rbcli.errors import InputError
+    from rbcli.io.yamlvalues import suggest
 
     rows = []
     for info in SHAPES.values():
@@ -102,12 +103,8 @@ def shapes(
     if name is not None:
         rows = [r for r in rows if r[0] == name]
         if not rows:
-            import difflib
-
             names = [*SHAPES, *SPECIAL]
-            close = difflib.get_close_matches(name, names, n=1)
-            hint = f"; did you mean '{close[0]}'?" if close else ""
-            raise InputError(f"unknown shape '{name}'{hint} (shapes: {', '.join(names)})")
+            raise InputError(f"unknown shape '{name}'{suggest(name, names)} (shapes: {', '.join(names)})")
     e = c.env()
     if json_:
         from rbcli.render.jsonout import dumps
@@ -137,30 +134,16 @@ def materials(
     from fnmatch import fnmatchcase
 
     from rbcli.body.materials import key, table
-    from rbcli.errors import InputError
+    from rbcli.errors import InputError, literal
 
-    rows = table()
-    if name is not None:
-        want = key(name)
-        pattern = want if any(ch in want for ch in "*?[") else f"*{want}*"
-        rows = tuple(m for m in rows if any(fnmatchcase(key(n), pattern) for n in (m.name, *m.aliases)))
-        if not rows:
-            raise InputError(f"no built-in material matches '{name}' (`rbcli materials` lists them)")
-    e = c.env()
-    if json_:
-        from rbcli.render.jsonout import dumps
-
-        e.write(dumps([m._asdict() for m in rows]))
-        return
-    from rbcli.render.text import Doc
-
-    doc = Doc(e)
-    doc.table("materials", ("material", "density [kg/m³]", "also", "source"),
-              [(m.name, f"{m.density:g}", ", ".join(m.aliases), m.source) for m in rows], right=(1,))
-    doc.note("A body file's part takes one by name (material: steel); its materials: section "
-             "adds its own ({my_alloy: \"7.93 g/cm^3\"}); a STEP, STL or OBJ file as BODY takes "
-             "--material.")
-    c.write_doc(e, doc)
+    want = key(name or "*")
+    pattern = want if any(ch in want for ch in "*?[") else f"*{want}*"
+    rows = [m for m in table() if any(fnmatchcase(key(n), pattern) for n in (m.name, *m.aliases))]
+    if not rows:
+        raise InputError(f"no built-in material matches '{literal(name)}' (`rbcli materials` lists them)")
+    c.emit(c.env(), json_, lambda: [m._asdict() for m in rows], lambda doc: doc.table(
+        "materials", ("material", "density [kg/m³]", "also", "source"),
+        [(m.name, f"{m.density:g}", ", ".join(m.aliases), m.source) for m in rows], right=(1,)))
 
 
 @app.command(help="The JSON Schema (draft-07) of the body file, for editors.")
@@ -198,11 +181,10 @@ def examples(
     stem = name[:-5] if name.endswith(".yaml") else name
     match = [p for p in files if p.stem == stem]
     if not match:
-        import difflib
+        from rbcli.io.yamlvalues import suggest
 
-        close = difflib.get_close_matches(stem, [p.stem for p in files], n=1)
-        hint = f"; did you mean '{close[0]}'?" if close else ""
-        raise InputError(f"no bundled example '{name}'{hint} (see `rbcli examples`)")
+        raise InputError(f"no bundled example '{name}'{suggest(stem, [p.stem for p in files])} "
+                         "(see `rbcli examples`)")
     e.write(f"{match[0]}\n" if path else match[0].read_text(encoding="utf-8"))
 
 
