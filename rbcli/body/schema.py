@@ -11,7 +11,7 @@ from pathlib import Path
 
 from rbcli.body.bodyfile import UNIT_KEYS
 from rbcli.body.givenpart import INERTIA_NAMES
-from rbcli.body.partlist import SPECIAL_SHAPES
+from rbcli.body.partlist import SPECIAL_SHAPES, part_keys
 from rbcli.core.shapes import SHAPES
 from rbcli.io.bearingtable import schema as bearing_schema
 
@@ -54,6 +54,38 @@ COMMON = {
 }
 
 
+_INERTIA_MAP = {
+    "type": "object",
+    "properties": {**{k: {"$ref": "#/definitions/quantity"} for names in INERTIA_NAMES.values()
+                      for k in names}, "convention": {"enum": ["tensor", "positive"]}},
+    # each diagonal entry under one of its names; no entry under two
+    "allOf": [*({"anyOf": [{"required": [n]} for n in INERTIA_NAMES[d]]} for d in ("Ixx", "Iyy", "Izz")),
+              *({"not": {"required": [a, b]}} for names in INERTIA_NAMES.values()
+                for i, a in enumerate(names) for b in names[i + 1:])],
+    "additionalProperties": False,
+}
+#: the keys of the special parts (mesh, step, given, include) beside :data:`COMMON`
+SPECIAL_KEYS = {
+    "file": {"type": "string", "description": "relative to this file: a mesh (STL, binary or "
+             "ASCII, or OBJ), a STEP file (.step, .stp) or a body file (include)"},
+    "scale": {"type": "number", "exclusiveMinimum": 0},
+    "units": {"type": "string", "description": "the length unit of the file's coordinates"},
+    "allow_open": {"type": "boolean"},
+    "weld": {"description": "merge vertices closer than this length to close gaps (default: "
+             "from the file's precision), or exact",
+             "anyOf": [{"$ref": "#/definitions/quantity"}, {"const": "exact"}]},
+    "part": {"type": "string", "description": "only the solids this name or pattern matches"},
+    "solids": {"type": "object", "description": "a material or density per solid name or pattern",
+               "additionalProperties": {"anyOf": [{"type": "string"}, {"type": "number"}]}},
+    "com": _vec(3),
+    "inertia": {"anyOf": [{"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3},
+                          _INERTIA_MAP]},
+    "convention": {"enum": ["tensor", "positive"], "description": "how a 3x3 inertia's "
+                   "off-diagonal entries read: the tensor's (−∫xy dm) or products of inertia "
+                   "(+∫xy dm); required when they are non-zero"},
+}
+
+
 def _part_variant(shape: str, props: dict, required: list[str]) -> dict:
     return {
         "if": {"properties": {"shape": {"const": shape}}, "required": ["shape"]},
@@ -83,67 +115,10 @@ def _variants(extra: dict) -> list[dict]:
             else:
                 variant["then"].setdefault("allOf", []).append({"not": {"required": [dkey, rkey]}})
         variants.append(variant)
-    given = {k: COMMON[k] for k in ("name", "subtract", "at", "axis", "rotate", "mass")}
-    given.update(extra)
-    given.update(
-        shape={"const": "given"},
-        com=_vec(3),
-        inertia={
-            "anyOf": [
-                {"type": "array", "items": _vec(3), "minItems": 3, "maxItems": 3},
-                {
-                    "type": "object",
-                    "properties": {
-                        **{k: {"$ref": "#/definitions/quantity"} for names in INERTIA_NAMES.values()
-                           for k in names},
-                        "convention": {"enum": ["tensor", "positive"]},
-                    },
-                    # each diagonal entry under one of its names; no entry under two
-                    "allOf": [
-                        *({"anyOf": [{"required": [n]} for n in INERTIA_NAMES[d]]} for d in ("Ixx", "Iyy", "Izz")),
-                        *({"not": {"required": [a, b]}} for names in INERTIA_NAMES.values()
-                          for i, a in enumerate(names) for b in names[i + 1:]),
-                    ],
-                    "additionalProperties": False,
-                },
-            ]
-        },
-        convention={
-            "enum": ["tensor", "positive"],
-            "description": "how a 3x3 inertia's off-diagonal entries read: the tensor's (−∫xy dm) "
-            "or products of inertia (+∫xy dm); required when they are non-zero",
-        },
-    )
-    variants.append(_part_variant("given", given, ["shape", "mass", "inertia"]))
-    include = {k: COMMON[k] for k in ("name", "at", "axis", "rotate")}
-    include.update(extra)
-    include.update(shape={"const": "include"}, file={"type": "string"})
-    variants.append(_part_variant("include", include, ["shape", "file"]))
-    mesh = {k: COMMON[k] for k in ("name", "subtract", "cut_from", "at", "axis", "rotate", "mass",
-                                   "density", "material")}
-    mesh.update(extra)
-    mesh.update(
-        shape={"const": "mesh"},
-        file={"type": "string", "description": "STL (binary or ASCII) or OBJ, relative to this file"},
-        scale={"type": "number", "exclusiveMinimum": 0},
-        units={"type": "string", "description": "length unit of the mesh coordinates"},
-        allow_open={"type": "boolean"},
-        weld={
-            "description": "merge vertices closer than this length to close gaps (default: from the "
-            "file's precision), or exact",
-            "anyOf": [{"$ref": "#/definitions/quantity"}, {"const": "exact"}],
-        },
-    )
-    variants.append(_part_variant("mesh", mesh, ["shape", "file"]))
-    step = {**{k: v for k, v in mesh.items() if k not in ("allow_open", "weld")},
-            "shape": {"const": "step"},
-            "file": {"type": "string", "description": "a STEP file (.step, .stp), relative to this file"},
-            "units": {"type": "string", "description": "the length unit of the file's numbers, "
-                      "instead of the one it states"},
-            "part": {"type": "string", "description": "only the solids this name or pattern matches"},
-            "solids": {"type": "object", "description": "a material or density per solid name or "
-                       "pattern", "additionalProperties": {"anyOf": [{"type": "string"}, {"type": "number"}]}}}
-    variants.append(_part_variant("step", step, ["shape", "file"]))
+    for shape in SPECIAL_SHAPES:  # their keys: the loader's, each as SPECIAL_KEYS says
+        props = {k: {**COMMON, **SPECIAL_KEYS}[k] for k in part_keys(shape) if k != "shape"}
+        variants.append(_part_variant(shape, {**props, **extra, "shape": {"const": shape}},
+                                      ["shape", *(("mass", "inertia") if shape == "given" else ("file",))]))
     return variants
 
 

@@ -196,30 +196,14 @@ def _title(p: Path) -> str:
 
 
 MANUAL["shapes"] = {
-    "notes": [
-        "A mesh part (shape: mesh) reads a closed triangle mesh from file: (binary or ASCII STL, "
-        "or OBJ, relative to the body file), scaled by scale and by units (the length unit of its "
-        "coordinates, e.g. mm; default the body file's length unit), with mass or density and the "
-        "usual placement; its local origin is the mesh's own coordinate origin. Its volume, "
-        "centroid and second moments are those of the polyhedron, exact to rounding, integrated "
-        "about the mesh's bounding-box centre. A file that cannot be read (missing, truncated, "
-        "malformed, NaN coordinates) or a mesh that does not bound a solid (not closed, with the "
-        "number of boundary edges; non-manifold edges; mixed orientation; no volume) is an error "
-        "naming the file, exit status 2; allow_open: true accepts boundary edges with a warning. "
-        "Before that check, the copies of a vertex that CAD exports write with different last "
-        "digits are welded: if identical vertices leave the mesh open, the ends of its boundary "
-        "edges closer than the weld tolerance (weld: a length, or exact; default 4 float32 "
-        "ulps of the largest coordinate for binary STL, 1e-9 of the bounding-box diagonal for "
-        "ASCII STL and OBJ) are merged, with one warning giving the largest gap closed; the "
-        "volume and inertia still come from the triangles as written. A mesh file must be a "
-        "regular file no larger than RBCLI_MAX_MESH_BYTES (default 1 GiB; e.g. 4G). "
-        "A mesh that faces inward everywhere is turned outward with a warning on standard error. "
-        "inertia and principal show each mesh part's volume, surface area and triangle count, and "
-        "put them in --json under parts[i].volume, .area and .triangles.",
-    ],
+    "notes": [f"A {k} part (shape: {k}), {summary}: parameters {params}; mass: {mass}; local "
+              f"origin: {origin}; inertia: {formulas}." for k, (summary, params, mass, origin,
+                                                             formulas) in SPECIAL.items()
+              if k in ("mesh", "step")],
     "examples": [
         ("rbcli shapes cylinder", "The cylinder's parameters, local origin and formulas."),
         ("rbcli shapes mesh", "The mesh part's keys and what rbcli checks in a mesh file."),
+        ("rbcli shapes step", "The STEP part's keys and what rbcli checks in a STEP file."),
     ],
 }
 MANUAL["materials"] = {
