@@ -53,8 +53,7 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         mass, default, src = mass_source(ctx, m, "volume", known, what)
         if "density" in m.items:
             note_density(ctx, src, "density", default, None, True, what)
-    rules = _rules(ctx, m.items["solids"][1]) if "solids" in m.items else []
-    if mass is not None and rules:
+    if mass is not None and "solids" in m.items:
         raise ctx.error(m.items["solids"][0], f"{what}: mass is shared by volume, solids: gives "
                         "densities; give one of them")
     removed = subtract(ctx, m)
@@ -70,7 +69,8 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         said = literal(str(exc)) if ctx.file == str(path) else f"{what}: {literal(str(exc))}"
         raise InputError(said, Location(str(path), exc.line or 0)) from None
     ctx.inputs.append(os.path.realpath(path))
-    solids = _chosen(ctx, m, step.solids, what)
+    part, rules = _patterns(ctx, m, [s.name for s in step.solids], what)
+    solids = [s for s in step.solids if part is None or fnmatchcase(s.name, part)]
     budget.spend(ctx, fnode, len(solids) - 1)
     k = scale * _override(ctx, fnode, factor, scale, step, f"{what}: {path}")
     dens = [_density(ctx, fnode, s.name, rules, default, what) for s in solids]
@@ -116,40 +116,20 @@ def _override(ctx: Ctx, fnode: ys.Node, factor: float | None, scale: float, step
     return k
 
 
-def _rules(ctx: Ctx, node: ys.Node) -> list[tuple[str, ys.Node]]:
-    """``solids:``: (name or pattern, its material or density node), in file order."""
-    return [(_pattern(ctx, k, p, "solids"), v)
-            for p, (k, v) in yv.mapping(ctx, node, "solids").items.items()]
-
-
-def _pattern(ctx: Ctx, node, text: str, key: str) -> str:
-    """A solid's name or pattern (``link*``), at most 200 characters (its matching stays
-    cheap)."""
-    if len(text) > 200:
-        raise ctx.error(node, f"{key}: a solid's name or pattern of at most 200 characters, "
-                        f"not {len(text)}")
-    return text
-
-
-def _chosen(ctx: Ctx, m: ys.MapNode, solids: tuple, what: str) -> list:
-    """The solids ``part:`` names (a name or a pattern; all without it); a ``solids:``
-    pattern that matches none is an error (a misspelt name)."""
-    names = [s.name for s in solids]
-    for key in ("part", "solids"):
-        if key not in m.items:
-            continue
-        node = m.items[key][1]
-        patterns = ([_pattern(ctx, node, yv.string(ctx, node, "part"), "part")] if key == "part"
-                     else [p for p, _ in _rules(ctx, node)])
-        for p in patterns:
-            if not any(fnmatchcase(n, p) for n in names):
-                shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
-                raise ctx.error(node, literal(f"{what}: {key}: '{p}' is no solid of the file"
-                                              f"{yv.suggest(p, names)} (solids: {shown})"))
-    if "part" in m.items:
-        p = yv.string(ctx, m.items["part"][1], "part")
-        return [s for s in solids if fnmatchcase(s.name, p)]
-    return list(solids)
+def _patterns(ctx: Ctx, m: ys.MapNode, names: list[str], what: str) -> tuple[str | None, list]:
+    """``part:`` (None: all) and ``solids:`` as (pattern, its material or density node); each
+    name or pattern must match a solid of the file (a misspelt one is an error) and be at
+    most 200 characters (matching stays cheap)."""
+    part = yv.string(ctx, m.items["part"][1], "part") if "part" in m.items else None
+    rules = ([(p, v) for p, (_k, v) in yv.mapping(ctx, m.items["solids"][1], "solids").items.items()]
+             if "solids" in m.items else [])
+    for key, p in [("part", part)] * (part is not None) + [("solids", p) for p, _ in rules]:
+        if len(p) > 200 or not any(fnmatchcase(n, p) for n in names):
+            near = yv.suggest(p, names) if len(p) <= 200 else ""
+            shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
+            raise ctx.error(m.items[key][1], literal(f"{what}: {key}: '{p[:60]}' is no solid of "
+                                                     f"the file{near} (solids: {shown})"))
+    return part, rules
 
 
 def _density(ctx: Ctx, fnode: ys.Node, solid: str, rules: list, default: float | None,

@@ -40,8 +40,7 @@ _REF = re.compile(rb"#(\d+)")
 
 
 class StepError(ValueError):
-    """A STEP file that is not read: ``message`` (lower case, no file name) and the 1-based
-    ``line`` at fault, or None."""
+    """A STEP file that is not read: the message (no file name) and the ``line`` at fault."""
 
     def __init__(self, message: str, line: int | None = None) -> None:
         super().__init__(message)
@@ -50,22 +49,13 @@ class StepError(ValueError):
 
 @dataclass(frozen=True)
 class Solid:
-    """One solid placed in the file's assembly (lengths in m: OpenCascade converts the
-    file's unit).
-
-    Attributes
-    ----------
-    name : str — unique: the instance names from the top (``link:1/pin``)
-    volume : float — m³
-    centroid : (3,) tuple — its centre of volume in its own part's frame, m
-    inertia : (3, 3) tuple — its second moments of volume about the centroid, own axes,
-        tensor convention (off-diagonals −∫xy dV), m⁵: the inertia at unit density
-    R, t : (3, 3), (3,) tuples — where the assembly puts the part: x -> R x + t (m; R a
-        rotation or a reflection)
-    colour : str | None — ``#rrggbb`` (sRGB) of the solid, its part or its first face
-    healed : float | None — where OpenCascade had to heal the solid (ShapeFix), the relative
-        change of its volume: a bound on what healing changed
-    """
+    """One solid placed in the file's assembly, in m (OpenCascade converts the file's unit):
+    ``name`` unique, the instance names from the top (``link:1/pin``); ``volume`` m³;
+    ``centroid`` (3,) m and ``inertia`` (3, 3) m⁵ (second moments of volume about it, tensor
+    convention: the inertia at unit density), in its part's own frame; ``R``, ``t``: where the
+    assembly puts the part, x -> R x + t; ``colour`` ``#rrggbb`` (sRGB) of the solid, its part
+    or its first face; ``healed``: where OpenCascade healed it (ShapeFix), the relative change
+    of its volume (a bound on what healing changed)."""
 
     name: str
     volume: float
@@ -125,13 +115,8 @@ def _deepest(graph: dict, limit: int) -> tuple[str, bytes] | None:
 
 
 def scan(data: bytes, max_entities: int) -> None:
-    """Check STEP text before OpenCascade reads it (see the module's docstring).
-
-    Raises
-    ------
-    StepError
-        What is wrong and its line.
-    """
+    """Check STEP text before OpenCascade reads it (the module's docstring); a
+    :class:`StepError` says what is wrong and where."""
     text = _STRING.sub(b"''", _COMMENT.sub(b"", data))
     if not text.lstrip().startswith(b"ISO-10303-21;"):
         raise StepError("not a STEP file: it does not start with 'ISO-10303-21;'", 1)
@@ -171,19 +156,11 @@ def _where(data: bytes, number: bytes, nth: int = 1) -> int:
 
 
 def read_step(path: str, max_solids: int) -> StepFile:
-    """The solids of the STEP file ``path`` (see :class:`Solid`), at most ``max_solids``
-    placed (every use of a part counts).
-
-    Raises
-    ------
-    rbcli.io.reader.ReadError
-        Not a regular file, or larger than ``RBCLI_MAX_STEP_BYTES`` (default 128 MiB).
-    StepError
-        :func:`scan`'s refusals; a file OpenCascade cannot read or that holds no solid; a
-        solid that is not valid and that OpenCascade cannot heal; more than ``max_solids``.
-    ImportError
-        OpenCascade is not installed.
-    """
+    """The solids of the STEP file ``path`` (:class:`Solid`), at most ``max_solids`` placed
+    (every use of a part counts). Raises :class:`rbcli.io.reader.ReadError` (not a regular
+    file; over ``RBCLI_MAX_STEP_BYTES``), :class:`StepError` (:func:`scan`'s refusals; what
+    OpenCascade cannot read; no solid; an invalid solid it cannot heal; more than
+    ``max_solids``) or ``ImportError`` (no OpenCascade)."""
     data = read_regular(path, limit_from_env("RBCLI_MAX_STEP_BYTES", MAX_STEP_BYTES),
                         "STEP file", env="RBCLI_MAX_STEP_BYTES")
     scan(data, limit_from_env("RBCLI_MAX_STEP_ENTITIES", MAX_ENTITIES))
