@@ -234,14 +234,8 @@ class InertiaResult(Result):
 def links(body: Body, principal: bool = False) -> tuple[tuple[str, Inertial], ...]:
     """The body as the links of a robot model (``inertia --each``): its parts grouped by
     their name up to the first ``/`` (a STEP file's top-level solid or sub-assembly, an
-    included file), in order, each group's ``<inertial>`` numbers (as
-    :meth:`InertiaResult.inertial`, in the body frame).
-
-    Raises
-    ------
-    rbcli.InputError
-        A group whose mass is not positive (its holes outweigh it).
-    """
+    included file), each group's ``<inertial>`` (:meth:`InertiaResult.inertial`, body frame);
+    an InputError for a group whose holes outweigh it."""
     groups: dict[str, list] = {}
     for p in check.body(body).parts:
         groups.setdefault(p.name.split("/")[0], []).append(p)

@@ -19,7 +19,7 @@ from rbcli.body import materials, model
 from rbcli.body.bodyfile import default_units
 from rbcli.body.model import Body
 from rbcli.body.pydata import CAD_SUFFIXES
-from rbcli.errors import ParamError
+from rbcli.errors import ParamError, literal
 
 __all__ = ["load", "load_text", "load_data"]
 
@@ -111,15 +111,15 @@ def load(path: str | os.PathLike[str], *, material: str | None = None,
         raise ParamError("path", "an empty path names no file")
     keys = {"material": check.text(material, "material"), "part": check.text(part, "part"),
             "density": check.quantity(density, "density")}
-    given = [k for k, v in keys.items() if v is not None]
     if not p.lower().endswith(CAD_SUFFIXES):
+        given = [k for k, v in keys.items() if v is not None]
         if given:
-            raise ParamError(given[0], "applies to a STEP, STL or OBJ file given as the body; "
-                             "a body file gives material: or density: on its parts")
+            raise ParamError(given[0], "applies to a STEP, STL or OBJ file given as the body; a "
+                             "body file gives material: or density: on its parts")
         return model.load_body(p)
     if (material is None) == (density is None):
         raise ParamError("material" if material is None else "density",
-                         f"{p}: a STEP, STL or OBJ file as the body needs {{material}} or "
+                         f"{literal(p)}: a STEP, STL or OBJ file as the body needs {{material}} or "
                          "{density} (one of them)")
     if part is not None and not p.lower().endswith(CAD_SUFFIXES[:2]):
         raise ParamError("part", "applies to a STEP file (its solids, by name)")

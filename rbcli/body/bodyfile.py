@@ -89,8 +89,7 @@ def _units(ctx: Ctx, m: ys.MapNode) -> None:
 
 
 def _materials(ctx: Ctx, m: ys.MapNode) -> None:
-    """The file's own materials, ``materials: {name: density}``: each density checked as
-    a typed one is (a density no matter has is warned)."""
+    """The file's own ``materials: {name: density}``, each checked as a typed density."""
     if "materials" not in m.items:
         return
     for name, (_km, vnode) in yv.mapping(ctx, m.items["materials"][1], "materials").items.items():

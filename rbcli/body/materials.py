@@ -1,9 +1,7 @@
 """Named materials: the built-in table (``rbcli/data/materials.csv``: name, aliases, density
-in kg/m³, source; read on first use) and a body file's own ``materials:`` section.
-
-A name is matched ignoring case, hyphens, underscores and spacing (``Aluminum-6061`` is
-``aluminium 6061``); a body's own names come first. The wood densities are at 12 % moisture
-content: 1.12 × the specific gravity the USDA Wood Handbook tables give × 1000 kg/m³.
+in kg/m³, source; read on first use) and a body file's own ``materials:`` (first). A name is
+matched ignoring case, hyphens, underscores and spacing (``Aluminum-6061``). Wood is at 12 %
+moisture: 1.12 × the USDA Wood Handbook's specific gravity × 1000 kg/m³.
 """
 
 from __future__ import annotations
@@ -32,8 +30,7 @@ class Material(NamedTuple):
 
 
 def key(name: str) -> str:
-    """How a material name is matched: lower case, hyphens and underscores as spaces, one
-    space between words."""
+    """How a name is matched: lower case, hyphens and underscores as spaces, single spaces."""
     return " ".join(name.lower().replace("-", " ").replace("_", " ").split())
 
 

@@ -111,9 +111,8 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
 
 
 def cad_file(path: str, **keys: object) -> Built:
-    """A STEP, STL or OBJ file read as a body of its own: one ``step`` (or ``mesh``, in mm:
-    the formats carry no unit) part of the file with ``keys`` (``material``, ``density``,
-    ``part``: None leaves one out); every problem located at the file."""
+    """A STEP, STL or OBJ file as a body: one ``step`` (or ``mesh``, in mm: no unit in those
+    formats) part of it with ``keys`` (None leaves one out), its problems located at the file."""
     mesh = not path.lower().endswith(CAD_SUFFIXES[:2])
     part = {"shape": "mesh" if mesh else "step", "file": path,
             **({"name": Path(path).stem, "units": "mm"} if mesh else {}),

@@ -1,14 +1,9 @@
-"""A ``shape: step`` part: the solids of a STEP file (:mod:`rbcli.io.stepfile`), each a part
-with its exact volume properties from the B-rep, placed by the file's assembly and then by
-the part's ``at``/``axis``/``rotate``.
-
-A file of one solid is one part, named as the part (or, unnamed, as the file names the
-solid); a file of several is a part per solid, named ``name/solid`` (unnamed: as the file
-names them, ``link:1/pin``). ``part:`` keeps the solids a name or pattern matches. Each
-solid's density is the part's ``density`` or ``material`` unless ``solids:`` gives its own
-(``{"pin*": steel, base: "7.2 g/cm^3"}``: the first pattern that matches); ``mass:`` is the
-mass of them all, shared by volume. The file's length unit is read from it; ``units:`` and
-``scale:`` override it, with a note.
+"""A ``shape: step`` part: each solid of a STEP file (:mod:`rbcli.io.stepfile`) a part, exact
+from its B-rep, placed by the file's assembly and then by ``at``/``axis``/``rotate``; named as
+the part (one solid) or ``name/solid`` (unnamed: as the file names them, ``link:1/pin``).
+``part:`` keeps the solids a name or pattern matches; ``solids:`` gives each its material or
+density (the first pattern that matches), else the part's; ``mass:`` is shared by volume.
+``units:`` and ``scale:`` override the file's length unit, with a note.
 """
 
 from __future__ import annotations
@@ -34,9 +29,6 @@ from rbcli.io.stepfile import StepError, read_step
 
 STEP_KEYS = ("name", "shape", "file", "part", "units", "scale", "solids", "subtract", "cut_from",
              "mass", "density", "material", *PLACEMENT_KEYS)
-#: what a STEP part needs and does not have: OpenCascade
-EXTRA = ("reading a STEP file needs OpenCascade: pip install 'rbcli[cad]' (the "
-         "cadquery-ocp-novtk package)")
 
 
 def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, named: bool,
@@ -62,7 +54,8 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
     try:
         step = read_step(str(path), budget.max_parts - budget.used + 1)
     except ImportError:
-        raise ctx.error(fnode, f"{what}: {EXTRA}") from None
+        raise ctx.error(fnode, f"{what}: reading a STEP file needs OpenCascade: pip install "
+                        "'rbcli[cad]' (the cadquery-ocp-novtk package)") from None
     except ReadError as exc:
         raise ctx.error(fnode, f"{what}: {exc}") from None
     except StepError as exc:  # at the line of the STEP file ("what" unless it is the body)
@@ -102,8 +95,7 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
 
 
 def _override(ctx: Ctx, fnode: ys.Node, factor: float | None, scale: float, step, what: str) -> float:
-    """The factor ``units:`` puts on the file's lengths (read in m), with a note when it or
-    ``scale:`` overrides the file's own unit."""
+    """The factor ``units:`` puts on the file's lengths (in m); a note if it or ``scale:`` does."""
     if factor is None and scale == 1.0:
         return 1.0
     if factor is not None and step.metres is None:

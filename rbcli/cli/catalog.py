@@ -37,20 +37,19 @@ SPECIAL = {
         "Files must be regular files of at most 1 GiB (RBCLI_MAX_MESH_BYTES changes the limit)",
     ),
     "step": (
-        "the solids of a STEP file (a CAD part or assembly; needs pip install 'rbcli[cad]'): "
-        "each a part, named from the file (name/solid; unnamed: as the file names them), placed "
-        "by the assembly; the JSON adds each solid's colour",
-        "file (.step or .stp, relative to the body file); optional part (only the solids this "
-        "name or pattern such as 'link*' matches), solids ({name or pattern: material or "
-        "density} per solid), units, scale (override the file's own length unit, with a note)",
+        "the solids of a STEP file (a CAD part or assembly; pip install 'rbcli[cad]'), each a "
+        "part named from the file (name/solid; unnamed: the file's names), placed by its "
+        "assembly; the JSON adds each solid's length unit and colour",
+        "file (.step or .stp, relative to the body file); optional part (the solids a name or "
+        "pattern such as 'link*' matches), solids ({name or pattern: material or density}), "
+        "units, scale (override the file's length unit, with a note)",
         "mass (shared by volume), density or material (for every solid; solids: for each)",
         "the file's origin (its assembly's frame)",
-        "exact volume, centroid and second moments of each solid's B-rep (OpenCascade's "
-        "volume integrals), in the length unit the file states. Refused with the file's line: "
-        "not STEP, truncated, over RBCLI_MAX_STEP_BYTES (128 MiB) or RBCLI_MAX_STEP_ENTITIES "
-        "(1 000 000), references that loop or nest over 1000 deep, an assembly that contains "
-        "itself or nests over 64 deep, a shell that does not close a volume, no solid, a solid "
-        "OpenCascade cannot heal (one it heals is used with a warning bounding the change)",
+        "exact from each solid's B-rep (OpenCascade's volume integrals). Refused with the file's "
+        "line: not STEP, truncated, over RBCLI_MAX_STEP_BYTES (128 MiB) or "
+        "RBCLI_MAX_STEP_ENTITIES (1 000 000), references that loop or nest over 1000 deep, an "
+        "assembly that contains itself or nests over 64 deep, a shell that does not close, no "
+        "solid, a solid OpenCascade cannot heal (one it heals: used, with a warning bounding it)",
     ),
     "given": (
         "measured or CAD-exported mass properties",
@@ -208,11 +207,10 @@ MANUAL["shapes"] = {
 }
 MANUAL["materials"] = {
     "notes": [
-        "The table is rbcli/data/materials.csv: each material's name, the other names it is "
-        "known by (alloy designations, trade names), its density in kg/m^3 and the standard, "
-        "handbook or data sheet it is from; wood at 12 % moisture content. A name is matched "
-        "ignoring case, hyphens, underscores and spacing (Aluminum-6061 is aluminium 6061); an "
-        "unknown one is refused with the nearest known one.",
+        "The table is rbcli/data/materials.csv: each material's names (designations, trade "
+        "names), density (kg/m^3) and source (a standard, handbook or data sheet); wood at 12 % "
+        "moisture. Names match ignoring case, hyphens, underscores and spacing (Aluminum-6061 "
+        "is aluminium 6061); an unknown one is refused with the nearest.",
     ],
     "json": [("name, aliases, density, source", "one object per material; density in kg/m^3.")],
     "examples": [

@@ -169,9 +169,8 @@ def sources(bodies: list[str] | None, expr: str | None, *, single: bool = False)
 
 
 def load(source: str, expr: str | None, e: Any):
-    """Load one body and show its warnings on standard error: a body file, ``-e``, or a
-    STEP, STL or OBJ file with the command's ``--material``, ``--density`` and ``--part``
-    (:data:`rbcli.api.commands.BODY`; :func:`rbcli.api.load.load` checks them)."""
+    """Load one body (a body file, ``-e``, or a STEP, STL or OBJ file with the command's
+    :data:`rbcli.api.commands.BODY` options) and show its warnings on standard error."""
     import gc
 
     from rbcli.api.load import load as load_file

@@ -29,7 +29,6 @@ uniform box and ellipsoid.
 """
 
 
-BODY_NAMES = {p.name for p in BODY}
 #: the robot-description formats of ``inertia --format`` (rbcli.render.robot)
 ROBOT_FORMATS = ("urdf", "sdf", "mjcf")
 
@@ -64,7 +63,8 @@ def inertia(
         if products.strip().lower() == "positive":
             raise InputError(f"--products positive does not apply to --format {out}: the element "
                              "holds the tensor's entries (ixy = -sum m x y), as the format requires")
-        given = [option_name(k) for k, v in args.items() if v is not None and k not in BODY_NAMES]
+        own = {p.name for p in BODY}  # the body's options go with every format
+        given = [option_name(k) for k, v in args.items() if v is not None and k not in own]
         given += ["--units"] * (units is not None)
         if given:
             raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
@@ -194,9 +194,6 @@ MANUAL["inertia"] = {
         "instead, named by the part's name up to its first '/': for a STEP assembly, each "
         "top-level solid or sub-assembly; for a body file, each part or included file. Every "
         "<inertial> is in the body frame (the assembly's).",
-        "BODY may be a STEP file (.step, .stp: each solid a part, exact from its B-rep; needs "
-        "pip install 'rbcli[cad]') or an STL or OBJ mesh (in mm), with --material or --density "
-        "for every solid and, for STEP, --part to keep one solid or sub-assembly.",
     ],
     "json": [
         ("mass", "total mass, kg."),
@@ -221,7 +218,7 @@ MANUAL["inertia"] = {
          "Several bodies at once: one JSON object per line."),
         ("rbcli inertia examples/bracket.yaml --format urdf",
          "The <inertial> element of a URDF link whose frame is the body frame."),
-        ("rbcli inertia examples/step_arm.step --material 'aluminium 6061' --format urdf --each",
+        ("rbcli inertia examples/cad/step_arm.step --material 'aluminium 6061' --format urdf --each",
          "A STEP assembly: one URDF <link> with its <inertial> per top-level solid or sub-assembly."),
         ("rbcli inertia examples/two_blade_fan.yaml --format mjcf --principal",
          "MuJoCo: pos, quat (w x y z) of the principal axes and diaginertia (0.00666667, 0.0266667, 0.0333333)."),

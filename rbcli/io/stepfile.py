@@ -1,12 +1,9 @@
-"""A STEP file (ISO 10303-21, AP203/AP214/AP242) read with OpenCascade: each solid's exact
-volume properties from its B-rep, its name, colour and placement in the assembly, and the
-file's length unit. Plain data; the body (:mod:`rbcli.body.steppart`) makes parts of it.
-
-OpenCascade (the ``cad`` extra, ``cadquery-ocp-novtk``) is imported inside :func:`read_step`
-only. Before it sees the file, :func:`scan` checks what would make it crash, hang or misread
-silently, each refused with the line at fault: not a STEP file, truncated, more entities than
-the budget, entity references that loop or nest too deep, an assembly that contains itself
-or nests more than :data:`MAX_ASSEMBLY_DEPTH` levels (README, "Budgets").
+"""A STEP file (ISO 10303-21) read with OpenCascade (the ``cad`` extra, imported by
+:func:`read_step` only): each solid's exact volume properties from its B-rep, its name, colour
+and placement, the file's length unit; plain data (:mod:`rbcli.body.steppart` makes parts).
+:func:`scan` first refuses, with the line at fault, what would make OpenCascade crash, hang
+or misread silently: not STEP, truncated, over the entity budget, references that loop or
+nest too deep, an assembly that contains itself or nests too deep (README, "Budgets").
 """
 
 from __future__ import annotations
@@ -246,10 +243,7 @@ class _Reader:
             solids = self._properties(ref, prefix + name)
             if not solids:
                 self.empty.append(prefix + name)
-            trsf = here.Transformation()
-            if abs(abs(trsf.ScaleFactor()) - 1.0) > 1e-12:
-                raise StepError(f"'{prefix}{name}' is scaled by {trsf.ScaleFactor():g}; rbcli "
-                                "reads rigid placements only")
+            trsf = here.Transformation()  # rigid: OpenCascade's locations hold no scale
             R = tuple(tuple(trsf.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
             t = tuple(trsf.Value(i, 4) for i in (1, 2, 3))
             colour = self._colour(inst) or self._colour(ref)

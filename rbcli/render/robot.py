@@ -112,8 +112,7 @@ def mjcf(inertial: Any) -> str:
 
 
 def links(fmt: str, name: str, source: str, items: Any) -> str:
-    """One ``<link>`` (URDF, SDF) or ``<body>`` (MJCF) per (link name, inertial) of ``items``
-    (``rbcli.api.inertia.links``), each holding its element, after one comment."""
+    """One comment, then a ``<link>`` (MJCF ``<body>``) per (name, inertial) of ``items``."""
     tag = "body" if fmt == "mjcf" else "link"
     out = [comment(fmt, name, source, items[0][1])]
     for link, inertial in items:
