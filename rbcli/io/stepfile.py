@@ -247,13 +247,14 @@ class _Reader:
             R = tuple(tuple(trsf.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
             t = tuple(trsf.Value(i, 4) for i in (1, 2, 3))
             colour = self._colour(inst) or self._colour(ref)
-            for i, (vol, com, J, healed, col) in enumerate(solids):
+            for i, (vol, com, J, healed, solid) in enumerate(solids):
                 if len(self.solids) >= self.max_solids:
                     raise StepError(f"the assembly places more than {self.max_solids} solids "
                                     "(every use of a part counts); set RBCLI_MAX_PARTS to raise "
                                     "the limit")
                 shown = f"{prefix}{name}[{i + 1}]" if len(solids) > 1 else prefix + name
-                self.solids.append(Solid(shown, vol, com, J, R, t, colour or col, healed))
+                self.solids.append(Solid(shown, vol, com, J, R, t,
+                                         colour or self._face_colour(solid), healed))
 
     def _name(self, label) -> str:
         n = self.o.TDataStd_Name()
@@ -271,7 +272,7 @@ class _Reader:
         return None
 
     def _properties(self, label, name: str) -> list:
-        """(volume, centroid, inertia, healed, colour) of each solid of a part (its closed
+        """(volume, centroid, inertia, healed, the solid) of each solid of a part (its closed
         shells made solids), computed once per part."""
         entry = self.o.TCollection_AsciiString()
         self.o.TDF_Tool.Entry_s(label, entry)
@@ -289,18 +290,26 @@ class _Reader:
             ex.Next()
         ex = o.TopExp_Explorer(shape, o.TopAbs_SHELL, o.TopAbs_SOLID)  # shells in no solid
         while ex.More():
-            shell = o.TopoDS.Shell(ex.Current())
-            if not o.BRep_Tool.IsClosed_s(shell):
+            if not self._closed(ex.Current()):
                 raise StepError(f"part '{name}': a shell that does not close a volume (a "
                                 "surface model); export the part as a solid")
-            out.append(o.BRepBuilderAPI_MakeSolid(shell).Solid())
+            out.append(o.BRepBuilderAPI_MakeSolid(o.TopoDS.Shell(ex.Current())).Solid())
             ex.Next()
         return out
 
+    def _closed(self, shape) -> bool:
+        """Whether every shell of ``shape`` closes (each edge between two of its faces)."""
+        ex = self.o.TopExp_Explorer(shape, self.o.TopAbs_SHELL)
+        while ex.More():
+            if not self.o.BRep_Tool.IsClosed_s(self.o.TopoDS.Shell(ex.Current())):
+                return False
+            ex.Next()
+        return True
+
     def _solid(self, solid, name: str) -> tuple:
-        """(volume, centroid, inertia, healed, colour) of one solid: OpenCascade's exact volume
-        integrals over its B-rep; an invalid solid healed by ShapeFix if it can be; its colour,
-        or its first face's."""
+        """(volume, centroid, inertia, healed, the solid): OpenCascade's exact volume integrals
+        over its B-rep; a solid not closed or inside out healed by ShapeFix if it can be
+        (OpenCascade's check of it, then)."""
         o = self.o
 
         def props(s):
@@ -309,18 +318,23 @@ class _Reader:
             return p
 
         p, healed = props(solid), None
-        if not o.BRepCheck_Analyzer(solid).IsValid() or not p.Mass() > 0:
+        if not (self._closed(solid) and p.Mass() > 0):
             fix = o.ShapeFix_Shape(solid)
             fix.Perform()
             q = props(fix.Shape())
-            if not (o.BRepCheck_Analyzer(fix.Shape()).IsValid() and q.Mass() > 0):
+            if not (self._closed(fix.Shape()) and o.BRepCheck_Analyzer(fix.Shape()).IsValid()
+                    and q.Mass() > 0):
                 raise StepError(f"solid '{name}' is not a valid solid (open, self-intersecting "
                                 "or inside out) and OpenCascade cannot heal it")
             healed, p = abs(q.Mass() - abs(p.Mass())) / q.Mass(), q
-        colour, faces = self._colour(solid, True), o.TopExp_Explorer(solid, o.TopAbs_FACE)
+        c, m = p.CentreOfMass(), p.MatrixOfInertia()
+        J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
+        return p.Mass(), (c.X(), c.Y(), c.Z()), J, healed, solid
+
+    def _face_colour(self, solid) -> str | None:
+        """The colour of a solid that its part has none of: its own, else its first face's."""
+        colour, faces = self._colour(solid, True), self.o.TopExp_Explorer(solid, self.o.TopAbs_FACE)
         while colour is None and faces.More():
             colour = self._colour(faces.Current(), True)
             faces.Next()
-        c, m = p.CentreOfMass(), p.MatrixOfInertia()
-        J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
-        return p.Mass(), (c.X(), c.Y(), c.Z()), J, healed, colour
+        return colour
