@@ -129,6 +129,11 @@ def test_a_step_part_is_placed_subtracted_and_given_materials_like_any_part(tmp_
     # the part's rotation turns the assembly's z onto -y, then it is lifted 1 m
     assert base.com == pytest.approx([0, -0.01, 1.0], abs=1e-12)
     assert body.parts[-1].mass == pytest.approx(7850 * 4 / 3 * math.pi * 1e-6)  # the tool, at steel
+    twice = tmp_path / "twice.yaml"  # a body file with a step part, included twice
+    twice.write_text(f"parts:\n  - {{name: a, shape: include, file: {ROOT}/examples/cad/step_arm.yaml}}\n"
+                     f"  - {{name: b, shape: include, file: {ROOT}/examples/cad/step_arm.yaml, at: [1, 0, 0]}}\n")
+    one, two = (rbcli.inertia(rbcli.load(str(f))) for f in (ROOT / "examples/cad/step_arm.yaml", twice))
+    assert two.mass == 2 * one.mass and rbcli.load(str(twice)).parts[7].name == "b/arm/base"
 
 
 def test_the_unit_is_the_files_and_units_overrides_it_with_a_note(tmp_path):
