@@ -129,6 +129,7 @@ def shapes(
 def materials(
     name: str = typer.Argument(None, help="Only the materials whose name or alias matches this (a word, or a pattern such as 'alu*').", show_default=False),
     json_: bool = c.JsonOpt,
+    fmt: str = c.FormatOpt,
 ) -> None:
     from fnmatch import fnmatchcase
 
@@ -140,9 +141,10 @@ def materials(
     rows = [m for m in table() if any(fnmatchcase(key(n), pattern) for n in (m.name, *m.aliases))]
     if not rows:
         raise InputError(f"no built-in material matches '{literal(name)}' (`rbcli materials` lists them)")
-    c.emit(c.env(), json_, lambda: [m._asdict() for m in rows], lambda doc: doc.table(
-        "materials", ("material", "density [kg/m³]", "also", "source"),
-        [(m.name, f"{m.density:g}", ", ".join(m.aliases), m.source) for m in rows], right=(1,)))
+    c.emit(c.env(), c.output_format(json_, fmt), lambda: [m._asdict() for m in rows],
+           lambda doc: doc.table("materials", ("material", "density [kg/m³]", "also", "source"),
+                                 [(m.name, f"{m.density:g}", ", ".join(m.aliases), m.source)
+                                  for m in rows], right=(1,)))
 
 
 @app.command(help="The JSON Schema (draft-07) of the body file, for editors.")

@@ -171,6 +171,7 @@ UNITS: dict[str, dict[str, str]] = {
         "knife_edge_critical_speed": MS,
         **_ASYMMETRY,
     },
+    "materials": {"density": "kg/m^3"},
     "whirl": {
         "bearings[].plane": M, "stiffness": "N/m", "cross_stiffness": "N/m",
         "damping": "N*s/m",
