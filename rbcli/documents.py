@@ -13,8 +13,18 @@ from collections.abc import Callable
 from os import PathLike
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
+from rbcli.api.commands import REPORT
+from rbcli.api.options import choice
+from rbcli.api.params import checkers
+from rbcli.api.report import ReportResult, parse, run
+from rbcli.errors import ParamError, literal
+from rbcli.io import outfile
+from rbcli.render import report as R
+from rbcli.render.reportdoc import document
+from rbcli.render.units import DisplayUnits
+
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.report import ReportResult
     from rbcli.body.model import Body
 
 __all__ = ["FORMATS", "report_text", "write_report", "check_report_path"]
@@ -24,15 +34,10 @@ FORMATS = (".html", ".md")
 
 
 def _format(format: str | None) -> str | None:  # noqa: A002 - the command line's word
-    from rbcli.api.options import choice
-
     return None if format is None else "." + choice(format, "format", ("html", "md"))
 
 
 def _layout(digits: int, units: str | None) -> tuple[int, Any]:
-    from rbcli.errors import ParamError
-    from rbcli.render.units import DisplayUnits
-
     if not 1 <= digits <= 17:
         raise ParamError("digits", f"must be a whole number from 1 to 17, got {digits!r}")
     return digits, DisplayUnits.parse(units)
@@ -41,17 +46,15 @@ def _layout(digits: int, units: str | None) -> tuple[int, Any]:
 def _door(body: Any, format: Any, digits: Any, units: Any,  # noqa: A002
           options: dict[str, Any]) -> tuple[Any, str | None, int, str | None, dict[str, Any]]:
     """The arguments of :func:`report_text` and :func:`write_report` checked at the door
-    (:mod:`rbcli.api.check`): TypeErrors naming the parameter before anything is read."""
-    from rbcli.api import check
-    from rbcli.api.report import KINDS
-
+    (:mod:`rbcli.api.check`, the report's parameters by its table): TypeErrors naming the
+    parameter before anything is read."""
     body = check.body(body)
     format = check.text(format, "format")  # noqa: A001
     digits = check.count(digits, "digits")
     if digits is None:
         raise TypeError("digits: expected an int, got NoneType")
     units = check.text(units, "units")
-    return body, format, digits, units, check.arguments(KINDS, **options)
+    return body, format, digits, units, check.arguments(checkers(REPORT), **options)
 
 
 def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A002
@@ -91,19 +94,13 @@ def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A
     >>> html.startswith("<!DOCTYPE html>")
     True
     """
-    from rbcli.api.report import ReportOptions, run
-    from rbcli.render import report as R
-    from rbcli.render.reportdoc import document
-
     body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
     if format is None:
         raise TypeError("format: expected a str, got NoneType")
     fmt = _format(format)
     digits, du = _layout(digits, units)
-    from rbcli.api import check
-
     with check.arithmetic(options):
-        doc = document(run(body, ReportOptions.parse(body, **options)), du, digits)
+        doc = document(run(body, parse(body, **options)), du, digits)
     return R.html(doc) if fmt == ".html" else R.markdown(doc, "report_files")[0]
 
 
@@ -118,8 +115,6 @@ def check_report_path(path: str | PathLike, body: Body, *, force: bool = False) 
     rbcli.InputError
         naming ``path`` (the command line's ``-o``).
     """
-    from rbcli.io import outfile
-
     p = outfile.check(path, body, "path", force=force, exts=FORMATS)
     ext = p.suffix.lower()
     files = outfile.files_dir(p)
@@ -172,14 +167,6 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     >>> r.return_code, out.exists()
     (0, True)
     """
-    from rbcli.api.report import ReportOptions, run
-    from rbcli.errors import ParamError
-    from rbcli.io.outfile import write_document
-    from rbcli.render import report as R
-    from rbcli.render.reportdoc import document
-
-    from rbcli.api import check
-
     body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
     path = check.path(path, "path")
     if path is None:
@@ -190,17 +177,15 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     digits, du = _layout(digits, units)
     ext, p, files = check_report_path(path, body, force=force)
     if fmt is not None and fmt != ext:
-        from rbcli.errors import literal
-
         raise ParamError("format", f"'{literal(format)}' does not match the file '{literal(path)}' ({ext})")
     with check.arithmetic(options):
-        result = run(body, ReportOptions.parse(body, **options), progress)
+        result = run(body, parse(body, **options), progress)
         doc = document(result, du, digits, progress)
     if progress is not None:
         progress("writing", 1, 1)
     if ext == ".html":
-        write_document(p, R.html(doc), "path", replace=force)
+        outfile.write_document(p, R.html(doc), "path", replace=force)
     else:
         text, figures = R.markdown(doc, files.name)
-        write_document(p, text, "path", replace=force, folder=files, files=figures)
+        outfile.write_document(p, text, "path", replace=force, folder=files, files=figures)
     return result

@@ -38,6 +38,8 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
+from rbcli.api import options as op
+from rbcli.env import clean
 from rbcli.errors import NonFiniteResult, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -74,8 +76,6 @@ _NUMBER = "a number or a quantity string"
 def _type(value: object) -> str:
     """How a message names the type of ``value`` (never its text; a class's name made safe
     to show, as the command line shows names: :func:`rbcli.env.clean`)."""
-    from rbcli.env import clean
-
     t = type(value)
     name = t.__name__ if t.__module__ in ("builtins", None) else f"{t.__module__}.{t.__qualname__}"
     return clean(name, max_line=120)
@@ -215,7 +215,7 @@ def _total(value: Any, param: str) -> Any:
 def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | None:
     """``value`` if it is an :class:`rbcli.Body` (None too when ``optional``), else a
     TypeError saying how to get one (a path is not a body: ``rbcli.load(path)`` reads it)."""
-    from rbcli.body.model import Body
+    from rbcli.body.model import Body  # (numpy: this module is on the command line's import path)
 
     if isinstance(value, Body) or (optional and value is None):
         return value
@@ -375,8 +375,6 @@ def times(value: Any, param: str = "t", *, most: int = MAX_TIMES, ndim: int | No
             or _shape(value) == ():
         x = _scalar(value, param, "a time: a number (s), a quantity string or an array of numbers")
         if isinstance(x, str):
-            from rbcli.api import options as op
-
             return op.quantity(x, "time", param)
         if not math.isfinite(x):
             raise ParamError(param, f"a time must be a finite number (s), got {x}")

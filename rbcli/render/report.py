@@ -24,10 +24,12 @@ from __future__ import annotations
 import html as _html
 import re
 from dataclasses import dataclass, field
+from urllib.parse import quote
 
 import numpy as np
 
 from rbcli.render.fmt import num
+from rbcli.render.massprops import kept_parts, more_parts, rest_centre, rest_of
 from rbcli.render.safe import escape
 from rbcli.render.units import DisplayUnits
 from rbcli.render.text import Doc, Heading, Note, Table
@@ -98,8 +100,6 @@ def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int
     one row that sums the others (their mass, share, centre of mass and contributions), so
     that the rows still add up to the total; a mesh part's note only for the parts shown.
     """
-    from rbcli.render.massprops import kept_parts, more_parts, rest_centre, rest_of
-
     m_unit, L, I_unit = du.unit("mass"), du.unit("length"), du.unit("inertia")
     fI, _ = du.factor("inertia")
     parts = body.parts
@@ -381,8 +381,6 @@ def markdown(report: Report, files_dir: str) -> tuple[str, dict[str, str]]:
 
     Figures are linked as ``files_dir/<section>-<name>.svg`` (a relative link, URL-quoted).
     """
-    from urllib.parse import quote
-
     files: dict[str, str] = {}
     out = [f"# {md_para(report.title)}", ""]
     out += ["| | |", "|---|---|"]

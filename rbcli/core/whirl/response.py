@@ -51,6 +51,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.roots import brentq
 from rbcli.core.whirl.model import Rotor
 
 __all__ = ["Forcing", "Response", "response", "Peak", "peaks", "required_margin", "Margin",
@@ -307,8 +308,6 @@ def _peak(rotor: Rotor, forcing: Forcing, i: int, lo: float, hi: float) -> float
     """The speed of the amplitude's maximum in [lo, hi]: the root of its exact slope by
     Brent's method when the slope changes sign there (to ~1e-15 of the speed), else
     golden-section search on the amplitude (to ~1e-8: the maximum is flat)."""
-    from rbcli.core.roots import brentq
-
     slope = lambda x: amplitude_slope(rotor, forcing, i, x)[1]  # noqa: E731
     s_lo, s_hi = slope(lo), slope(hi)
     if s_lo > 0.0 > s_hi:
@@ -320,8 +319,6 @@ def _half_power(f, Nc: float, level: float, grid: np.ndarray, amps: np.ndarray, 
                 direction: int, limit: float) -> float | None:
     """The speed beside the peak (grid index j) where f = level, going down (direction -1)
     or up (+1); None when the curve turns up again first."""
-    from rbcli.core.roots import brentq
-
     g = lambda x: f(x) - level  # noqa: E731
     prev_x, prev_a = Nc, f(Nc)
     k = j + direction
