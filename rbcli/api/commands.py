@@ -20,7 +20,7 @@ from rbcli.errors import literal
 from rbcli.io.field import CHOICES
 
 __all__ = ["INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS", "TOP", "GYROCOMPASS",
-           "ROLLCHECK", "WHIRL", "REPORT"]
+           "ROLLCHECK", "WHIRL", "REPORT", "TABLES"]
 
 # ----------------------------------------------------------------------------- shared
 
@@ -534,3 +534,8 @@ REPORT = (
     replace(G, help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units). "
             "Default: 9.80665 m/s^2."),
 )
+
+#: each command's table, by the command's name
+TABLES = {"inertia": INERTIA, "principal": PRINCIPAL, "balance": BALANCE, "field-balance": FIELD_BALANCE,
+          "precess": PRECESS, "top": TOP, "gyrocompass": GYROCOMPASS, "rollcheck": ROLLCHECK,
+          "whirl": WHIRL, "report": REPORT}

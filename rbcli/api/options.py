@@ -29,7 +29,7 @@ from rbcli.io import bare as _bare_units
 from rbcli.io import units as un
 
 __all__ = ["Value", "UNIT_RULE", "NUMBER", "Units", "param", "naming", "is_bare", "quantity",
-    "degrees", "numbers", "finite", "positive", "distinct", "grade", "vector", "point",
+    "degrees", "numbers", "finite", "positive", "grade", "vector", "point",
     "direction", "choice", "fraction", "symmetry_tolerance"]
 
 #: a number at the start of a value: what is left after it is the value's unit
@@ -175,13 +175,6 @@ def positive(x: float, option: str, what: str, unit: str = "") -> float:
     if not (x > 0.0 and math.isfinite(x)):
         raise _error(option, f"{what} must be a positive number, got {x:.6g}{' ' + unit if unit else ''}")
     return x
-
-
-def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
-    """Two positions along a shaft that must differ (``--planes``, ``--bearings``)."""
-    if vals[0] == vals[1]:
-        raise _error(option, f"the two {what} are both at z = {vals[0]:.6g} m; they must differ")
-    return vals[0], vals[1]
 
 
 #: an ISO 21940-11 balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s'

@@ -323,7 +323,7 @@ def function(params: tuple[Param, ...], *, body: str = "required") -> Callable[[
 #: the SI unit of each quantity kind, as the CSV writes it (pint reads it)
 SI_UNITS = {"length": "m", "mass": "kg", "time": "s", "angular_speed": "rad/s", "speed": "m/s",
             "acceleration": "m/s^2", "stiffness": "N/m", "damping": "N*s/m", "angle": "deg",
-            "unbalance": "kg*m", "dimensionless": "1"}
+            "unbalance": "kg*m", "dimensionless": "1", "force": "N"}
 
 
 def si_unit(p: Param) -> str:
@@ -336,7 +336,7 @@ def si_unit(p: Param) -> str:
         return "deg"
     if p.kind == "grade":
         return "mm/s"
-    if p.kind in ("direction", "tolerance", "fraction", "count", "ints"):
+    if p.kind in ("direction", "tolerance", "fraction", "count", "ints", "numbers"):
         return "1"
     return ""
 

@@ -259,28 +259,14 @@ def each_body(srcs: list[str], expr: str | None, e: Any) -> Iterator[tuple[str, 
             yield src, exc
 
 
-# ----------------------------------------------------------------------------- option values
-
-# The readers are rbcli.api.options' (one rule for the command line and the Python API).
-from rbcli.api.options import (  # noqa: E402,F401
-    NUMBER, UNIT_RULE, degrees, direction, distinct, finite, grade, numbers, point,
-    positive, quantity, vector,
-)
-
-
 # ----------------------------------------------------------------------------- output
 
 
-def check_finite_doc(doc: Any) -> None:
-    """Refuse a table that would show inf or NaN as a number
-    (:func:`rbcli.render.text.check_finite_doc`)."""
-    from rbcli.render.text import check_finite_doc as check
-
-    check(doc)
-
-
 def write_doc(e: Any, doc: Any) -> None:
-    """Render a document of tables to standard output, after :func:`check_finite_doc`."""
+    """Render a document of tables to standard output, refusing inf and NaN
+    (:func:`rbcli.render.text.check_finite_doc`)."""
+    from rbcli.render.text import check_finite_doc
+
     check_finite_doc(doc)
     e.write(doc.render())
 
@@ -306,7 +292,7 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     Lines); that JSON as one CSV table (:mod:`rbcli.render.tablecsv`: a ``file`` column when
     ``file`` is given, the header row only with ``header``); or the tables ``doc_fn(doc)``
     puts in a Doc, as text. All refuse inf and NaN (one line, exit 2):
-    :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
+    :func:`rbcli.api.result.jsonable` and :func:`rbcli.render.text.check_finite_doc`. Only the one that is
     printed is built. ``given`` (option, value, unit) rows are the options as understood
     (an XOptions' ``given``), or a function that makes them (called only for a table): the
     text output shows them first (after the title), in a table titled "options" (JSON and
@@ -325,10 +311,13 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
 
             e.write(dumps(data, lines=lines))
         else:
+            from rbcli.api.commands import TABLES
+            from rbcli.api.params import si_unit
             from rbcli.render import tablecsv
 
             command, digits = _invocation()
-            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header))
+            units = {p.name: si_unit(p) for p in TABLES.get(command, ())}
+            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header, params=units))
         return
     from rbcli.render.text import Doc
 

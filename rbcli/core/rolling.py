@@ -36,9 +36,6 @@ MODEL_NOTE = (
     "centre G, C + m a^2 about the contact point; neutral stability (undamped)"
 )
 
-#: what a rim is (:attr:`StraightRolling.rim`): a knife edge, a torus, a sphere, a flat band
-RIMS = ("edge", "torus", "sphere", "band")
-
 
 # --------------------------------------------------------------------------- straight
 

@@ -50,11 +50,6 @@ class BodyScale:
         smallest size used is 1e-300 m, and nothing is then 'far' only by comparison)."""
         return max(float(np.max(self.high - self.low)), 1e-300)
 
-    @property
-    def half_diagonal(self) -> float:
-        """m, half the diagonal of the box: no point of the body is farther from its centre."""
-        return 0.5 * float(np.linalg.norm(self.high - self.low))
-
     def far(self, point: Sequence[float]) -> float | None:
         """The distance (m) of ``point`` from the box's centre when it is more than
         :data:`FAR` sizes, else None."""

@@ -58,10 +58,6 @@ class Dim(NamedTuple):
             return NotImplemented
         return Dim(*(a * n for a in self))
 
-    @property
-    def is_dimensionless(self) -> bool:
-        return not any(self)
-
     def describe(self) -> str:
         """E.g. ``"length"``, ``"mass/length^3"``, ``"angle/time"``, ``"1/time"``."""
         num: list[str] = []

@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import csv
 import io
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from typing import Any
 
 from rbcli.render.csvunits import unit
@@ -88,13 +88,15 @@ def values(data: Any, path: str = "", defined: Any = True) -> Iterator[tuple[str
         yield path, data, defined is not False
 
 
-def rows(data: dict, command: str, digits: int | None = None) -> Iterator[list[str]]:
-    """The CSV rows (quantity, value, text, unit) of a command's JSON ``data``."""
+def rows(data: dict, command: str, digits: int | None = None,
+         params: Mapping[str, str] | None = None) -> Iterator[list[str]]:
+    """The CSV rows (quantity, value, text, unit) of a command's JSON ``data`` (``params``:
+    the SI unit of each of the command's parameters, :func:`rbcli.render.csvunits.lookup`)."""
     for path, v, ok in values(data):
         if isinstance(v, bool):
             yield [path, "", "true" if v else "false", ""]
         elif isinstance(v, (int, float)):
-            yield [path, number(v, digits) if ok else "", "", unit(command, path, data)]
+            yield [path, number(v, digits) if ok else "", "", unit(command, path, data, params)]
         elif isinstance(v, str):
             yield [path, "", csv_text(v), ""]
         else:  # None, [] or {}: not defined
@@ -102,7 +104,7 @@ def rows(data: dict, command: str, digits: int | None = None) -> Iterator[list[s
 
 
 def render(data: dict, command: str, *, digits: int | None = None, file: str | None = None,
-           header: bool = True) -> str:
+           header: bool = True, params: Mapping[str, str] | None = None) -> str:
     """The CSV text of one result's JSON (see the module docstring for the layout).
 
     ``file``: add the leading ``file`` column (several bodies); ``header``: write the header
@@ -112,5 +114,5 @@ def render(data: dict, command: str, *, digits: int | None = None, file: str | N
     lead = [] if file is None else [csv_text(file)]
     if header:
         w.writerow((["file"] if file is not None else []) + list(COLUMNS))
-    w.writerows(lead + r for r in rows(data, command, digits))
+    w.writerows(lead + r for r in rows(data, command, digits, params))
     return buf.getvalue()

@@ -42,11 +42,6 @@ class ShaftFrame:
         """(3,) unit shaft direction e_z, body frame."""
         return self.rotation[2]
 
-    def to_shaft(self, points: object) -> np.ndarray:
-        """Body-frame point(s) (..., 3) -> shaft-frame coordinates (..., 3), m."""
-        p = np.asarray(points, dtype=float)
-        return (p - self.origin) @ self.rotation.T
-
     def to_body(self, points: object) -> np.ndarray:
         """Shaft-frame coordinates (..., 3) -> body-frame point(s) (..., 3), m."""
         s = np.asarray(points, dtype=float)
@@ -246,9 +241,6 @@ class Unbalance:
         s = max(float(J[0, 0] + J[1, 1] - J[2, 2]), 0.0)
         return math.sqrt(6.0 * s / self.mass)
 
-    def moment_about(self, z0: float) -> complex:
-        """kg m^2 — moment unbalance about z = z0: ``P(z0) = P - z0 U`` (sheet §7.2)."""
-        return self.moment - float(z0) * self.static
 
 def _tilt(J_body: np.ndarray, frame: ShaftFrame) -> tuple[float, complex, float, float]:
     """Tilt (rad) of the nearest principal axis, its shaft-frame lean (complex), gap, max |moment|.
