@@ -63,7 +63,8 @@ class Param:
     Attributes
     ----------
     name : str — the Python keyword (``"mass_step"``); the option is ``--`` + it with
-        dashes unless ``flag`` says otherwise (or :data:`rbcli.errors.COMMAND_OPTIONS`)
+        dashes, or the command's own word (:data:`rbcli.errors.COMMAND_OPTIONS`, which also
+        spells the command's messages)
     help : str — what it means and what a bare number is in; ``{param}`` names another
     kind : str — how a value is read: a key of :data:`KINDS`
     quantity : str — the quantity kind of its numbers (:data:`rbcli.io.units.KINDS`), for
@@ -80,7 +81,7 @@ class Param:
     echo_default : bool — the options table shows its value when it is not given too,
         marked "(default)" (the service puts the value it used in the options)
     default : the command line's default (None: not given)
-    flag, short, metavar : the command line's spelling, when not the derived one
+    metavar : the command line's metavar, when not the derived one
     cli_type : the command line's type, when not the kind's (``int`` for a count, ``bool``
         for a flag, else ``str``): ``str`` lets the service say what is wrong with a count
     cli, api : whether the command line / the Python API takes it (a command-line-only
@@ -98,8 +99,6 @@ class Param:
     echo: str = ""
     echo_default: bool = False
     default: Any = None
-    flag: str | None = None
-    short: str | None = None
     metavar: str | None = None
     cli_type: type | None = None
     cli: bool = True

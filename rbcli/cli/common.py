@@ -56,9 +56,9 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
     (:class:`rbcli.api.params.Param`) where it has a parameter ``args = PARAMS``. The
     function receives ``args``: the table's values as typed (None: not given), by parameter.
 
-    Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``, or
-    this command's own word: rollcheck's ``rim_radius`` is ``--radius``, its man page's
-    metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
+    Each table option's flag is ``--`` + its name with dashes, or this command's own word
+    (:data:`rbcli.errors.COMMAND_OPTIONS`: rollcheck's ``rim_radius`` is ``--radius``, its man
+    page's metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
     options; a parameter of ``form`` "argument" is a positional argument, of "options" an
     option given once per item (a list; not given: None)."""
     import inspect
@@ -73,13 +73,12 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         at = [q.name for q in own].index("args")
         opts, words = [], {}
         for p in table:
-            flag = p.flag or spelled(p.name)
-            decls = [d for d in (p.short, flag) if d]
+            flag = spelled(p.name)
             kind = list[str] if p.form == "options" else \
                 p.cli_type or {"count": int, "flag": bool}.get(p.kind, str)
             how = dict(help=spell(p.help, spelled), metavar=p.metavar, show_default=p.default is not None)
             info = (typer.Argument(p.default, **how) if p.form == "argument"
-                    else typer.Option(p.default, *decls, **how))
+                    else typer.Option(p.default, flag, **how))
             words[p.name] = p.name if p.form == "argument" else flag.lstrip("-").replace("-", "_")
             opts.append(inspect.Parameter(words[p.name], inspect.Parameter.KEYWORD_ONLY,
                                           default=info, annotation=kind))
