@@ -14,10 +14,10 @@ used as given, so ``K``, ``sn``, ``cn``, ``dn`` keep full relative precision dow
 Functions
 ---------
 Carlson symmetric forms (real arguments), by Carlson's duplication theorem:
-    :func:`elliprf` R_F, :func:`elliprj` R_J (p > 0), :func:`elliprd` R_D, :func:`elliprc`
+    :func:`elliprf` R_F, :func:`elliprj` R_J (p > 0), :func:`elliprc`
     R_C (also its Cauchy principal value for y < 0).
 Legendre forms:
-    :func:`ellipk` K(m), :func:`ellipf` F(φ|m) (any real φ), :func:`ellippi` Π(n|m) (n < 1),
+    :func:`ellipk` K(m), :func:`ellippi` Π(n|m) (n < 1),
     :func:`ellippi_sc` Π(n; φ|m) for |φ| <= π/2 from sin φ, cos φ.
 Jacobi functions:
     :func:`ellipj` sn, cn, dn, am (u any real), :func:`jacobi_reduced` (the same with the
@@ -46,9 +46,7 @@ __all__ = [
     "elliprc",
     "elliprf",
     "elliprj",
-    "elliprd",
     "ellipk",
-    "ellipf",
     "ellippi",
     "ellippi_sc",
     "ellipj",
@@ -234,11 +232,6 @@ def elliprj(x: Any, y: Any, z: Any, p: Any) -> Any:
     return _out(np.asarray(out))
 
 
-def elliprd(x: Any, y: Any, z: Any) -> Any:
-    """Carlson's R_D(x, y, z) = R_J(x, y, z, z) (z > 0)."""
-    return elliprj(x, y, z, z)
-
-
 # ----------------------------------------------------------------------------------------
 # Legendre forms
 # ----------------------------------------------------------------------------------------
@@ -269,26 +262,6 @@ def ellipk(m: float, mc: float | None = None) -> float:
     if mc == 0.0:
         return math.inf
     return float(elliprf(0.0, mc, 1.0))
-
-
-def ellipf(phi: Any, m: float, mc: float | None = None) -> Any:
-    """Incomplete elliptic integral of the first kind F(φ|m), φ any real (radians).
-
-    ``F(φ + jπ|m) = F(φ|m) + 2 j K(m)`` reduces φ to |φ| <= π/2, where
-    ``F = sin φ R_F(cos²φ, cos²φ + (1 − m) sin²φ, 1)`` (DLMF 19.25.5, with 1 − m sin²φ
-    written as a sum of non-negative terms). At m = 1 (mc = 0) and |φ| >= π/2 the integral
-    diverges (``inf``).
-    """
-    m, mc = _params(m, mc)
-    ph = _arr(phi)
-    j = np.rint(ph / math.pi)
-    r = ph - math.pi * j
-    s, c = np.sin(r), np.cos(r)
-    c2 = c * c
-    out = s * _arr(elliprf(c2, c2 + mc * s * s, 1.0))
-    if np.any(j != 0.0):
-        out = out + 2.0 * j * ellipk(m, mc)
-    return _out(np.asarray(out))
 
 
 def ellippi_sc(n: float, s: Any, c: Any, m: float, mc: float | None = None,

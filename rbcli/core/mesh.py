@@ -5,9 +5,8 @@ corners in counter-clockwise order seen from outside give its outward normal
 (right-hand rule). The solid it bounds is taken to be uniform; the caller turns
 volume and per-unit-mass inertia into mass and inertia.
 
-:func:`check_mesh` checks that the surface bounds a solid (closed, manifold,
-consistently oriented, non-zero volume) and :func:`mass_properties` integrates
-over that solid exactly (to rounding), about a point near the mesh so that a part
+:func:`mass_properties` checks that the surface bounds a solid (closed, manifold,
+consistently oriented, non-zero volume) and integrates over it exactly (to rounding), about a point near the mesh so that a part
 far from the origin keeps its digits.
 """
 
@@ -18,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = [
-    "MeshError", "MeshProps", "check_mesh", "mass_properties", "weld_gaps", "VOLUME_RTOL",
+    "MeshError", "MeshProps", "mass_properties", "weld_gaps", "VOLUME_RTOL",
     "WELD_MAX",
 ]
 
@@ -99,62 +98,6 @@ class MeshProps:
         }
 
 
-def check_mesh(
-    vertices: np.ndarray,
-    faces: np.ndarray,
-    *,
-    allow_open: bool = False,
-    weld: float = 0.0,
-    unit: str = "",
-) -> list[str]:
-    """Check that a triangle mesh bounds a solid; return warnings, raise on fatal problems.
-
-    Parameters
-    ----------
-    vertices : (V, 3) array_like — coordinates (any length unit)
-    faces : (F, 3) array_like of int — 0-based vertex indices
-    allow_open : bool
-        Accept boundary edges (holes) with a warning instead of an error. The volume of
-        an open mesh is then that of the surface closed by cones to the reference point
-        (the bounding-box centre): only meaningful for small holes.
-    weld : float
-        Weld tolerance (same unit as the vertices; 0: exact only). When the mesh as given
-        is not closed, the ends of its boundary edges whose coordinates all differ by at
-        most ``weld`` are merged and the edges checked again; see :func:`weld_gaps`.
-        It decides closedness and orientation only: the integrals use each triangle's
-        own coordinates.
-    unit : str
-        The vertices' length unit, for the messages only (e.g. ``"m"``).
-
-    Returns
-    -------
-    list of str
-        Warnings: triangles dropped because they repeat a vertex, zero-area triangles,
-        an inward-facing mesh (it is taken as turned outwards), an open mesh that
-        ``allow_open`` let through.
-
-    Raises
-    ------
-    MeshError
-        Wrong array shapes, no faces, NaN or infinite coordinates, face indices out of
-        range; every triangle degenerate; edges shared by more than two triangles
-        (non-manifold); edges traversed in the same direction by both their triangles
-        (inconsistent orientation); boundary edges (not closed) unless ``allow_open``;
-        zero volume (``|V| <= VOLUME_RTOL * L^3``, L the largest bounding-box side).
-
-    Notes
-    -----
-    Edge checks are sorts of int64 edge keys ``i * V + j``. For a closed, consistently
-    oriented, edge-manifold mesh every directed edge ``(i, j)`` appears once and its
-    reverse ``(j, i)`` appears once; so the sorted keys of the edges with ``i < j``
-    equal the sorted keys of the reversed edges with ``i > j``, with no repeats. That
-    one comparison (two sorts of 1.5 F keys) accepts a good mesh; only a failing mesh is
-    analysed further (one sort of the 3 F undirected keys, counting uses per edge).
-    """
-    props = _analyse(vertices, faces, allow_open=allow_open, inertia=False, weld=weld, unit=unit)
-    return list(props.warnings)
-
-
 def mass_properties(
     vertices: np.ndarray,
     faces: np.ndarray,
@@ -170,15 +113,24 @@ def mass_properties(
     vertices : (V, 3) array_like — coordinates (any length unit)
     faces : (F, 3) array_like of int — 0-based vertex indices, counter-clockwise seen
         from outside (a mesh that is inward-facing everywhere is accepted and flipped)
-    allow_open, weld, unit — see :func:`check_mesh`
+    allow_open : bool — accept boundary edges (holes) with a warning; the volume is then
+        that of the surface closed by cones to the bounding-box centre
+    weld : float — when the mesh is not closed, merge the ends of its boundary edges whose
+        coordinates all differ by at most this (:func:`weld_gaps`; for closedness and
+        orientation only)
+    unit : str — the vertices' length unit, for messages
 
     Returns
     -------
-    MeshProps
+    MeshProps — with ``warnings``: repeated-vertex and zero-area triangles dropped, an
+        inward-facing mesh turned outwards, an open mesh let through
 
     Raises
     ------
-    MeshError — see :func:`check_mesh` (the same checks are made)
+    MeshError
+        Wrong shapes, no faces, non-finite coordinates, indices out of range; every
+        triangle degenerate; non-manifold or inconsistently oriented edges; boundary edges
+        unless ``allow_open``; zero volume (``|V| <= VOLUME_RTOL * L^3``).
 
     Notes
     -----
@@ -201,7 +153,7 @@ def mass_properties(
     ``(tr(C) E - C) / V``. The sums run in blocks of 65536 triangles with BLAS
     products (3 × m)(m × 3), so temporaries stay small.
     """
-    return _analyse(vertices, faces, allow_open=allow_open, inertia=True, weld=weld, unit=unit)
+    return _analyse(vertices, faces, allow_open=allow_open, weld=weld, unit=unit)
 
 
 def weld_gaps(
@@ -374,9 +326,7 @@ def _plural(n: int, one: str, many: str) -> str:
     return f"{n} {one if n == 1 else many}"
 
 
-def _integrals(
-    v: np.ndarray, faces: np.ndarray, inertia: bool
-) -> tuple[float, float, np.ndarray, np.ndarray, int]:
+def _integrals(v: np.ndarray, faces: np.ndarray) -> tuple[float, float, np.ndarray, np.ndarray, int]:
     """(volume, area, first moment (3,), second moments (3, 3), n zero-area) about 0."""
     vt = np.ascontiguousarray(v.T)  # (3, V): gathers give contiguous rows
     vol6 = 0.0
@@ -404,12 +354,11 @@ def _integrals(
         area2 += float(np.sqrt(nn).sum())
         d = np.einsum("ij,ij->j", a, n)
         vol6 += float(d.sum())
-        if inertia:
-            s = a + b
-            s += c
-            first += s @ d
-            for p in (a, b, c, s):
-                second += (p * d) @ p.T
+        s = a + b
+        s += c
+        first += s @ d
+        for p in (a, b, c, s):
+            second += (p * d) @ p.T
     volume = vol6 / 6.0
     return volume, area2 / 2.0, first / 24.0, (second + second.T) / 240.0, zero
 
@@ -460,7 +409,6 @@ def _analyse(
     faces: np.ndarray,
     *,
     allow_open: bool,
-    inertia: bool,
     weld: float = 0.0,
     unit: str = "",
 ):
@@ -491,7 +439,7 @@ def _analyse(
     origin = (lo + hi) / 2.0
     size = float((hi - lo).max())
 
-    volume, area, first, second, n_zero = _integrals(v - origin, f, inertia)
+    volume, area, first, second, n_zero = _integrals(v - origin, f)
     if area == 0.0 or n_zero == len(f):
         raise MeshError(f"all {len(f)} triangles are degenerate (zero area): no surface")
     if n_zero:
@@ -562,12 +510,9 @@ def _analyse(
     # geometry: a mirror-symmetric mesh gets its exact centre, as a primitive does.
     g[np.abs(g) <= _SNAP * size] = 0.0
     centroid = origin + g
-    if inertia:
-        c = second - volume * np.outer(g, g)
-        unit = (np.trace(c) * np.eye(3) - c) / volume
-        unit = (unit + unit.T) / 2.0
-    else:
-        unit = np.full((3, 3), np.nan)
+    c = second - volume * np.outer(g, g)
+    unit = (np.trace(c) * np.eye(3) - c) / volume
+    unit = (unit + unit.T) / 2.0
     return MeshProps(
         volume=float(volume),
         area=float(area),

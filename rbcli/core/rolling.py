@@ -353,26 +353,6 @@ def at_speed(
     )
 
 
-def margin_curve(wheel: Wheel, a: float, r: float, g: float, speeds: Any) -> np.ndarray:
-    """Squared lean-oscillation frequency nu^2 (rad^2/s^2) against speed, for plots.
-
-    Parameters
-    ----------
-    wheel : Wheel
-    a, r : float — m, rim and tyre radius
-    g : float — m/s^2
-    speeds : (N,) array_like — m/s (sign ignored)
-
-    Returns
-    -------
-    (N,) ndarray — nu^2 at each speed; > 0 stable (oscillation at sqrt(nu^2)),
-    < 0 unstable (growth at sqrt(-nu^2)). Zero at +-v_c. Sheet §3.2.
-    """
-    st = straight(wheel, a, r, g)
-    v = np.asarray(speeds, dtype=float)
-    return np.asarray(st.nu2(v / a), dtype=float).reshape(v.shape)
-
-
 def nu2_curve(st: StraightRolling, speeds: Any) -> np.ndarray:
     """:meth:`StraightRolling.nu2` at the speeds (m/s, sign ignored): any rim, for plots."""
     v = np.asarray(speeds, dtype=float)
@@ -500,7 +480,7 @@ class Curves:
 
 
 def curves(check: RollCheck, n_speeds: int = 501, n_leans: int = 200, n_radii: int = 220) -> Curves:
-    """The figure's arrays for a :class:`RollCheck`: nu^2 against speed (:func:`margin_curve`)
+    """The figure's arrays for a :class:`RollCheck`: nu^2 against speed
     and, when a circle was asked for, kappa and the speed of the centre on a (lean, circle
     radius) grid (:func:`stability_map`, sheet §3.3)."""
     st = check.straight

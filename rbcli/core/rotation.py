@@ -45,7 +45,6 @@ __all__ = [
     "nearest_rotation_rows",
     "surely_rotation",
     "from_specs",
-    "rotate_tensor",
     "quat_multiply",
     "quat_conjugate",
     "quat_about_axis",
@@ -319,36 +318,6 @@ def from_matrix(m: Sequence[Sequence[float]] | np.ndarray, tol: float = 1e-6) ->
     if np.linalg.det(r) < 0:  # cannot happen for err <= tol < 1 and det > 0; be safe
         raise ValueError(f"rotation matrix is a reflection (det = {det:.3g}), not a rotation")
     return r
-
-
-def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N803
-    """A tensor given in a part's local axes, expressed in the body axes: ``R I Rᵀ``.
-
-    Parameters
-    ----------
-    R : (3, 3) ndarray — local-to-body rotation (see the module convention)
-    I : (3, 3) ndarray — e.g. an inertia tensor about some point, local axes, kg·m²
-
-    Returns
-    -------
-    (3, 3) ndarray
-        ``R @ I @ R.T``, the same tensor in body axes (about the same point). If ``I``
-        is exactly symmetric the result is made exactly symmetric too (the average with
-        its transpose, a change of round-off size only).
-
-    Raises
-    ------
-    ValueError
-        For arrays that are not 3x3.
-    """
-    r = np.asarray(R, dtype=float)
-    t = np.asarray(I, dtype=float)
-    if r.shape != (3, 3) or t.shape != (3, 3):
-        raise ValueError(f"rotate_tensor needs two 3x3 arrays, got {r.shape} and {t.shape}")
-    out = r @ t @ r.T
-    if np.array_equal(t, t.T):
-        out = 0.5 * (out + out.T)
-    return out
 
 
 # ----------------------------------------------------------------------------------------
