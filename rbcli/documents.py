@@ -59,41 +59,20 @@ def _door(body: Any, format: Any, digits: Any, units: Any,  # noqa: A002
 
 def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A002
                 units: str | None = None, **options: Any) -> str:
-    """The report of ``body`` as one document's text.
+    """The report of ``body`` as one document's text: the bytes ``rbcli report`` writes for
+    the same options (set ``SOURCE_DATE_EPOCH`` for a fixed date).
 
-    Parameters
-    ----------
-    body : rbcli.Body
-    format : {"html", "md"}
-        One self-contained HTML5 file (inline CSS and SVG figures), or Markdown whose
-        figures are linked as ``report_files/NAME.svg`` (:func:`write_report` writes them).
-    digits : int
-        Significant figures in the tables, 1 to 17.
-    units : str, optional
-        Units of the tables, e.g. ``"mm,g"`` (default SI).
-    **options
-        The options of :func:`rbcli.report` (``spin``, ``theta``, ``planes``, ...).
-
-    Returns
-    -------
-    str
-        The document (the bytes ``rbcli report`` writes for the same options; set
-        ``SOURCE_DATE_EPOCH`` for a fixed date).
-
-    Raises
-    ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected.
-    rbcli.InputError
-        naming the parameter, for a value a command refuses.
+    ``format`` "html" is one self-contained file, "md" Markdown whose figures are linked as
+    ``report_files/NAME.svg``; ``digits`` the tables' significant figures (1 to 17); ``units``
+    theirs (``"mm,g"``, default SI); ``**options`` the parameters of :func:`rbcli.report`.
+    A TypeError or an :class:`rbcli.InputError` names the parameter at fault.
 
     Examples
     --------
     >>> import rbcli
     >>> html = rbcli.report_text(rbcli.load("examples/top.yaml"), spin=150, theta=30)
     >>> html.startswith("<!DOCTYPE html>")
-    True
-    """
+    True"""
     body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
     if format is None:
         raise TypeError("format: expected a str, got NoneType")
@@ -128,36 +107,14 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
                  units: str | None = None,
                  progress: Callable[[str, int, int], None] | None = None,
                  **options: Any) -> ReportResult:
-    """Write the report of ``body`` to ``path`` and return what it found.
+    """Write the report of ``body`` to ``path`` (``.html``, or ``.md`` with its figures in
+    ``FILE_files/``) and return what it found (:class:`rbcli.api.report.ReportResult`,
+    ``return_code`` 1 when a check asked for failed; the report is written all the same).
 
-    ``.html`` is one self-contained file; ``.md`` writes its figures to ``FILE_files/``
-    beside it. All or nothing; an existing report (and figures folder) is replaced only
-    with ``force``; an input file (the body, a file it includes, a mesh it reads) never.
-
-    Parameters
-    ----------
-    body : rbcli.Body
-    path : str or path-like — ``.html`` or ``.md``
-    force : bool — replace an existing report
-    format : {"html", "md"}, optional — must agree with the extension when given
-    digits, units : as :func:`report_text`
-    progress : callable, optional — ``progress(what, i, n)`` before each step
-    **options : the options of :func:`rbcli.report`
-
-    Returns
-    -------
-    ReportResult
-        ``return_code`` is 1 when a check asked for failed (``failed`` says which), as the
-        command's exit status; the report is written all the same.
-
-    Raises
-    ------
-    rbcli.InputError
-        naming the parameter, for a value a command refuses or a path that may not be
-        written.
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected (``force``
-        that is not ``True`` or ``False``: never read as true).
+    All or nothing; an existing report only with ``force``; an input file never. ``format``
+    must agree with the extension; ``digits``, ``units``, ``**options`` as :func:`report_text`;
+    ``progress(what, i, n)`` is called before each step. A TypeError or an
+    :class:`rbcli.InputError` names the parameter at fault (``force`` must be a bool).
 
     Examples
     --------
@@ -165,8 +122,7 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "top.html"
     >>> r = rbcli.write_report(rbcli.load("examples/top.yaml"), out, spin=150, theta=30)
     >>> r.return_code, out.exists()
-    (0, True)
-    """
+    (0, True)"""
     body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
     path = check.path(path, "path")
     if path is None:

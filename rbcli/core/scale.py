@@ -81,44 +81,22 @@ def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[fl
 
     Parameters
     ----------
-    parts : sequence of :class:`rbcli.body.partmodel.Part` — holes (``subtract``) are left out: they
-        lie inside the material
-    axis : (3,) array_like — the line's direction, body frame (need not be unit)
+    parts : sequence of :class:`rbcli.body.partmodel.Part` — holes are left out
+    axis : (3,) array_like — the line's direction, body frame (any length)
     through : (3,) array_like — m, a point of the line, body frame
 
     Returns
     -------
-    float — m; a point of the body farthest from the line moves at |omega| times this when
-    the body turns about it.
+    float — m; the fastest point moves at |omega| times this.
 
     Notes
     -----
-    The distance from a line is a convex function of the point, so over a part it is
-    largest at an extreme point of the part's convex hull, which lies on the part. Each part
-    is read from its placement (``part.outline``: kind, dimensions, local origin ``at`` and
-    axes ``R``; local frames as ``rbcli shapes`` states them) and measured exactly:
-
-    - point, rod, box, plate, triangle: the largest distance of their corners;
-    - ring, disk, cylinder (its two end circles), cone (base circle and apex), torus (its
-      centre circle plus the tube radius: a torus is that circle swept by a ball): a circle
-      c + r (cos t u1 + sin t u2) projected on the plane across the line is an ellipse
-      y(t) = p + L (cos t, sin t); |y(t)|² is a trigonometric polynomial of degree 2, whose
-      stationary points are the roots of a quartic in z = exp(i t) (all evaluated);
-    - sphere: the centre's distance plus the radius; hemisphere: that when the direction
-      away from the line points into the dome, else the rim circle;
-    - ellipsoid: its projection is the ellipse p + U S (cos t, sin t) (M = E R diag(a, b, c)
-      = U S Vᵀ), measured as a circle's; a ``given`` part (measured mass properties) as its
-      equivalent uniform ellipsoid (the outline's semi-axes): an estimate, its real extent
-      being unknown;
-    - mesh: the largest distance of the outline's vertices (the drawing's copy, decimated
-      by vertex clustering: its vertices are means of the file's, so this is within one
-      clustering cell below the file's own);
-    - a part without an outline: its centre of mass plus the ball of :func:`body_scale`
-      (an estimate).
-
-    Parts whose bounding ball (centre ``at``, radius the shape's local circumradius) cannot
-    beat the largest reach found so far are skipped, farthest balls first.
-    """
+    The distance from a line is convex, so it is largest at an extreme point of each part,
+    measured exactly from its outline: corners of polyhedra; for circles (ring, disk, the ends
+    of a cylinder, a cone's base, a torus's centre circle plus its tube) the roots of a quartic
+    in exp(i t); a sphere's centre plus radius (a hemisphere: or its rim); an ellipsoid's
+    projected ellipse (a ``given`` part's equivalent ellipsoid: an estimate); a mesh's outline
+    vertices (within one clustering cell); else the com plus the ball of :func:`body_scale`."""
     n = np.asarray(axis, dtype=float).reshape(3)
     n = n / np.linalg.norm(n)
     P = np.asarray(through, dtype=float).reshape(3)

@@ -60,10 +60,9 @@ def shaft_frame(
     ----------
     axis : (3,) array_like — shaft direction, body frame, any non-zero length
     through : (3,) array_like — m, a point of the shaft, body frame; z = 0 there
-    reference : (3,) array_like, optional — direction of the reference mark (body frame);
-        only its part at right angles to the shaft is used. Default: the rule below.
-    zero_mark_deg : float — deg; the reference mark is turned this far about +e_z from
-        the direction the rule (or ``reference``) gives
+    reference : (3,) array_like, optional — direction of the 0° mark (its part across the
+        shaft); default: the rule below
+    zero_mark_deg : float — deg, the mark turned this far about +e_z
 
     Returns
     -------
@@ -76,16 +75,9 @@ def shaft_frame(
 
     Notes
     -----
-    Rule (deterministic, continuous near every body axis):
-    ``e_z = axis/|axis|``; ``e_x`` = body x projected at right angles to e_z and
-    normalised, unless ``|e_z . x| > 0.9`` (the shaft within 25.8 deg of body x), when body
-    y projected is used instead; ``e_y = e_z x e_x``. The projection used always has length
-    >= 0.436, so e_x is well conditioned, and the switch lies away from the body axes and
-    the 45-degree diagonals. Consequences: shaft along +z -> the body frame exactly;
-    shaft along x -> e_x = body y, e_y = body z; shaft along y -> e_x = body x,
-    e_y = -body z. Sheet §2.1 asks for the mark to be explicit for a general shaft: pass
-    ``reference`` to fix it.
-    """
+    ``e_z = axis/|axis|``; ``e_x`` = body x projected across e_z, unless ``|e_z . x| > 0.9``,
+    then body y projected (length >= 0.436: well conditioned, the switch away from the axes
+    and diagonals); ``e_y = e_z x e_x``. A shaft along +z gives the body frame."""
     a = vec3(axis, "shaft axis", "axis")
     n = float(np.linalg.norm(a))
     if not n > 0.0:
@@ -124,34 +116,21 @@ class Unbalance:
 
     Attributes
     ----------
-    mass : float — kg
-    com : (3,) ndarray — m, body frame (input, kept so corrections can be applied)
-    inertia_com : (3, 3) ndarray — kg m^2, tensor about the com, body frame (input)
+    mass, com, inertia_com — kg, m, kg m^2: the input (body frame, tensor about the com)
     frame : ShaftFrame
-    angle_sense : str — "with" or "against" (how ``*_deg`` angles are reported)
-    com_shaft : (3,) ndarray — m, (x_G, y_G, z_G) of the com in the shaft frame
-    inertia_shaft : (3, 3) ndarray — kg m^2, tensor about the com in shaft axes
-    static : complex — kg m, U = M (x_G + i y_G)
-    moment : complex — kg m^2, P about z = 0
-    couple : complex — kg m^2, P_G = P - z_G U, about the com
-    eccentricity : float — m, distance of the com from the shaft, |U|/M
-    tilt_deg : float — deg, angle between the shaft and the nearest principal axis (about the com)
-    tilt_azimuth_deg : float — deg, direction (shaft frame, reported sense) the +z end of
-        that principal axis leans toward; 0.0 when undefined
-    tilt_azimuth_defined : bool
-    tilt_well_defined : bool — False when the rotor is (nearly) isotropic about the com:
-        the moment of the nearest principal axis is within TILT_GAP_RTOL of another, its
-        principal axes are ill-defined and tilt_deg says nothing useful
-    principal_gap : float — kg m^2, distance of the nearest axis's principal moment from
-        the other principal moments (0.0 when all are equal)
+    angle_sense : str — "with" or "against" (the ``*_deg`` angles)
+    com_shaft, inertia_shaft — (x_G, y_G, z_G) (m) and the tensor about the com, shaft axes
+    static, moment, couple : complex — U (kg m), P about z = 0 and P_G about the com (kg m^2)
+    eccentricity : float — m, |U|/M
+    tilt_deg, tilt_azimuth_deg : float — deg, from the shaft to the nearest principal axis, and
+        where its +z end leans (shaft frame; 0.0 when undefined: ``tilt_azimuth_defined``)
+    tilt_well_defined : bool — False when that axis's moment is within TILT_GAP_RTOL of another
+    principal_gap : float — kg m^2, its moment's distance from the others
     length_scale : float — m, max(sqrt(trace J_G / M), |com - through|)
-    tol_eccentricity : float — m, BALANCE_RTOL * length_scale (rtol as given)
-    tol_couple : float — kg m^2, rtol * trace(J_G)
-    statically_balanced : bool — eccentricity <= tol_eccentricity
-    dynamically_balanced : bool — statically balanced and |P_G| <= tol_couple
+    tol_eccentricity, tol_couple — BALANCE_RTOL * length_scale (m), rtol * trace(J_G) (kg m^2)
+    statically_balanced, dynamically_balanced : bool — e <= tol; and |P_G| <= tol_couple
     rtol : float
-    warnings : tuple[str, ...]
-    """
+    warnings : tuple of str"""
 
     mass: float
     com: np.ndarray
@@ -301,10 +280,8 @@ def unbalance(
     ----------
     mass : float — kg, > 0
     com : (3,) array_like — m, centre of mass, body frame
-    inertia_com : (3, 3) array_like — kg m^2, inertia TENSOR about the com, body frame
-        (off-diagonals -∫xy dm)
-    axis : (3,) array_like — shaft direction, body frame (default body z)
-    through : (3,) array_like — m, a point of the shaft, body frame (default origin); z = 0
+    inertia_com : (3, 3) array_like — kg m^2, TENSOR about the com, body frame
+    axis, through : (3,) array_like — the shaft (default body z) and its point z = 0 (m)
     reference, zero_mark_deg : see :func:`shaft_frame`
     angle_sense : {"with", "against"} — report angles with or against rotation
     rtol : float — relative tolerance of the ideal balanced verdicts (default 1e-9)
@@ -320,23 +297,12 @@ def unbalance(
 
     Notes
     -----
-    Sheet §2.3 with the parallel-axis theorem: in shaft axes, with (x_G, y_G, z_G) the com
-    and J the tensor about the com, ``D_xz,G = -J[0, 2]``, ``D_yz,G = -J[1, 2]``,
-
-    ``U = M (x_G + i y_G)``, ``P_G = D_xz,G + i D_yz,G``, ``P = P_G + z_G U`` (about z = 0).
-
-    Tilt (sheet §2.4): eigenvectors of J_G; the one with the largest |e_z| component
-    (a degenerate eigenspace is handled as a whole: the tilt is the angle from the shaft to
-    the eigenspace). ``tilt = atan2(|e_perp|, e_z)``; its azimuth is arg(e_x + i e_y) with e
-    oriented so that e_z > 0.
-
-    Verdicts (one rule, here): with ``l = max(sqrt(trace J_G / M), |com - through|)`` —
-    a size of the rotor that also bounds the round-off of the shaft-frame coordinates —
-    statically balanced iff ``e <= rtol * l``; dynamically balanced iff also
-    ``|P_G| <= rtol * trace(J_G)`` (= rtol M l_g^2). These are ideal (geometric) verdicts:
-    "balanced to the accuracy of the arithmetic and the input". Tolerances for real
-    rotors come from an ISO grade (:func:`iso_check`).
-    """
+    Sheet §2.3, in shaft axes: ``D_xz,G = -J[0, 2]``, ``D_yz,G = -J[1, 2]``,
+    ``U = M (x_G + i y_G)``, ``P_G = D_xz,G + i D_yz,G``, ``P = P_G + z_G U``. Tilt (§2.4): the
+    eigenvector (or eigenspace) of J_G nearest the shaft, ``tilt = atan2(|e_perp|, e_z)``.
+    Verdicts, ideal (to the arithmetic and the input): statically balanced iff
+    ``e <= rtol * l``, dynamically iff also ``|P_G| <= rtol * trace(J_G)``, with
+    ``l = max(sqrt(trace J_G / M), |com - through|)``; real tolerances: :func:`iso_check`."""
     M = positive(mass, "mass")
     c = vec3(com, "com")
     J = np.asarray(inertia_com, dtype=float)

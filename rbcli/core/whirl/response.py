@@ -1,47 +1,24 @@
 """Unbalance response of the rigid rotor, its peaks, amplification factors and the
 API separation margins.
 
-Forcing. A static unbalance U = M (x_G + i y_G) (kg m) and a couple unbalance about the
-com P_G = D_xz + i D_yz (kg m², D = -J_xz of the tensor in shaft axes), both fixed in the
-rotor (angles from the 0° mark in the direction of rotation, as ``rbcli balance`` gives
-them), turning at Omega: the centre of mass runs U/M off the shaft axis and the rotor's
-angular momentum has a turning part Omega (J_xz, J_yz), so (physics sheet ``whirl.md``)
+Forcing (physics sheet ``whirl.md``): a static unbalance U (kg m) and a couple unbalance
+P_G = D_xz + i D_yz (kg m², about the com), fixed in the rotor and turning at Omega, force
+(x, y, theta_x, theta_y) with complex amplitudes ``Omega^2 (U, -i U, i P_G, P_G)``; plane
+unbalances U_k at z_k add up to U = sum U_k and P_G = sum (z_k - z_G) U_k.
 
-    m r'' + ... = Omega^2 U e^{i Omega t},    It phi'' - ... = Omega^2 P_G e^{i Omega t}
+Steady state: ``(K - Omega^2 M + i Omega (C + Omega G)) Q = F``. At bearing i the axis
+moves by ``D = T_i Q`` and pushes it with ``F_i = (K_i + i Omega C_i) D``; the orbit's
+forward and backward parts are ``D_f = (D_x + i D_y)/2``, ``D_b = conj(D_x - i D_y)/2``,
+its amplitude the semi-major axis ``|D_f| + |D_b|``, its phase arg D_f (the high spot,
+from the 0° mark with the rotation). Stiff bearings tend to balance's rigid forces
+``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``, ``F_2 = Omega^2 (P - z_1 U)/(z_2 - z_1)``.
 
-in the directional coordinates; in the real ones, with ``q = Re(Q e^{i Omega t})``,
-the complex amplitudes of the forces and moments on (x, y, theta_x, theta_y) are
-``Omega^2 (U, -i U, i P_G, P_G)``. Correction-plane unbalances U_k at z_k (kg m) are a
-static unbalance sum U_k and a couple sum (z_k - z_G) U_k.
-
-Steady state: ``(K - Omega^2 M + i Omega (C + Omega G)) Q = F`` at each speed. At bearing
-i the axis moves by ``D = T_i Q`` (complex amplitudes of d_x, d_y) and the rotor pushes
-the bearing with ``F_i = (K_i + i Omega C_i) D``. An orbit ``Re(D e^{i Omega t})`` is an
-ellipse with forward part ``D_f = (D_x + i D_y)/2`` and backward part
-``D_b = conj(D_x - i D_y)/2``; its semi-major axis ``|D_f| + |D_b|`` is the amplitude
-reported, and the phase is arg D_f, the angle of the high spot in the rotor frame (from
-the 0° mark, in the direction of rotation, as balance's angles): the displacement is
-largest when it points there. Isotropic bearings: a circle, D_b = 0.
-
-Rigid-support limit: as every stiffness grows without bound the bearing forces tend to
-balance's rigid-bearing forces ``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``, ``F_2 =
-Omega^2 (P - z_1 U)/(z_2 - z_1)`` (P about z = 0) for two bearings.
-
-Peaks and amplification factor (API 684, 2nd ed. 2005, SP6.8.2.1; API 617, 8th ed. 2014,
-§6.8.2.4): at each local maximum Nc of a bearing's amplitude, ``AF = Nc / (N2 - N1)``
-with N1 < Nc < N2 the speeds where the amplitude is the peak's 1/sqrt(2) (the half-power
-points). The peak is the root of the amplitude's exact slope (:func:`amplitude_slope`)
-and N1, N2 the roots of amplitude - peak/sqrt 2, each by Brent's method to ~1e-12 of the
-speed or better.
-
-Separation margin (API 617 8th ed. §6.8.2.5 / API 684 SP6.8.2.10, as implemented in
-ROSS, ``ross/api_report.py`` of github.com/petrobras/ross): AF < 2.5 needs no margin;
-otherwise a critical speed below the minimum operating speed N_min needs
-``SM = min(16, 17 (1 - 1/(AF - 1.5)))`` % of N_min, one above the maximum continuous
-speed N_max ``SM = min(26, 10 + 17 (1 - 1/(AF - 1.5)))`` % of N_max. The actual margin is
-``(N_min - Nc)/N_min`` or ``(Nc - N_max)/N_max``. (Check the clause against a licensed
-copy of the standard before claiming conformity.)
-"""
+Amplification factor (API 684, 2nd ed., SP6.8.2.1; API 617, 8th ed., §6.8.2.4):
+``AF = Nc / (N2 - N1)`` with N1, N2 the half-power points, all roots by Brent's method.
+Separation margin (API 617 §6.8.2.5 / API 684 SP6.8.2.10, as ROSS's ``api_report.py``): none
+for AF < 2.5; else ``min(16, 17 (1 - 1/(AF - 1.5)))`` % below N_min and
+``min(26, 10 + 17 (1 - 1/(AF - 1.5)))`` % above N_max (check against a licensed copy
+before claiming conformity)."""
 
 from __future__ import annotations
 
