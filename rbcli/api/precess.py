@@ -174,31 +174,25 @@ def run(body: Body, options: Options) -> PrecessResult:
 
 @function(PRECESS)
 def precess(body: Body, **kwargs: Any) -> PrecessResult:
-    """The exact torque-free motion of a rigid body from an initial angular velocity.
-
-    The body turns freely about its centre of mass (no torque, no gravity); the space frame
-    is the body frame at t = 0.
+    """The exact torque-free motion of a rigid body from an initial angular velocity (no
+    torque, no gravity; the space frame is the body frame at t = 0).
 
     Parameters
     ----------
     body : Body
-        From :func:`rbcli.load` or :func:`rbcli.load_text`.
     {parameters}
 
     Returns
     -------
     PrecessResult
-        ``to_json()`` is the command's JSON; ``motion`` every constant; ``at(t)`` the state
-        at any times.
+        ``to_json()`` the command's JSON; ``motion`` every constant; ``at(t)`` the state.
 
     Raises
     ------
     TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
+        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
     rbcli.InputError
-        A bad value (the message names the parameter), an inertia that is not positive
-        definite, a time too far away to have a phase.
+        A bad value, naming the parameter; an inertia not positive definite; a time too far.
 
     Examples
     --------
@@ -207,6 +201,5 @@ def precess(body: Body, **kwargs: Any) -> PrecessResult:
     >>> book.case, round(book.flip_interval, 4)         # spun near the intermediate axis: it flips
     ('circulates_max', 19.5529)
     >>> round(float(book.at(1.0).omega[1]), 6)           # rad/s, body frame, at t = 1 s
-    1.000049
-    """
+    1.000049"""
     return run(body, parse(body, **kwargs))

@@ -1,39 +1,16 @@
 """Elliptic integrals and Jacobi elliptic functions in plain numpy, from (m, 1 − m).
 
-One module for every elliptic function rbcli uses (the free motion of ``precess``, the heavy
-top). Nothing here imports scipy: ``scipy.special`` costs ~0.3 s of CPU at import
-(numpy.f2py, numpy.testing, unittest, numpy.ma), more than a whole ``precess`` one-liner.
+Every elliptic function rbcli uses (free motion, the heavy top), without scipy
+(``scipy.special`` costs ~0.3 s of CPU at import). A function of the parameter takes ``m``
+and, optionally, ``mc = 1 − m`` from the caller's cancellation-free formula: near the
+separatrix ``1 − m`` rounded from ``m`` has lost its digits (``scipy.special.ellipj``
+returns ``cn(2K) = −2`` for ``1 − m = 1e-10``); here K, sn, cn, dn keep full relative
+precision down to ``mc`` ~ 1e-300.
 
-Every function that depends on the parameter takes ``m`` AND, optionally, its complement
-``mc = 1 − m`` computed by the caller from a cancellation-free formula. Near the separatrix
-(``mc`` → 0) ``1 − m`` rounded from ``m`` has lost all its digits (``scipy.special.ellipj``
-takes only ``m`` and returns ``cn(2K) = −2`` for ``1 − m = 1e-10``); here the complement is
-used as given, so ``K``, ``sn``, ``cn``, ``dn`` keep full relative precision down to
-``mc`` ~ 1e-300.
-
-Functions
----------
-Carlson symmetric forms (real arguments), by Carlson's duplication theorem:
-    :func:`elliprf` R_F, :func:`elliprj` R_J (p > 0), :func:`elliprc`
-    R_C (also its Cauchy principal value for y < 0).
-Legendre forms:
-    :func:`ellipk` K(m), :func:`ellippi` Π(n|m) (n < 1),
-    :func:`ellippi_sc` Π(n; φ|m) for |φ| <= π/2 from sin φ, cos φ.
-Jacobi functions:
-    :func:`ellipj` sn, cn, dn, am (u any real), :func:`jacobi_reduced` (the same with the
-    half-period reduction exposed, for callers that also need Π(n; am u)).
-
-Sources
--------
-* B. C. Carlson, "Numerical computation of real or complex elliptic integrals", Numerical
-  Algorithms 10 (1995) 13–26, https://arxiv.org/abs/math/9409227 — the duplication
-  algorithms and the series for R_F, R_C, R_J.
-* NIST DLMF §19.2, §19.7, §19.20, §19.25, https://dlmf.nist.gov/19 — Legendre forms in
-  Carlson form (19.25.5, 19.25.14), the Cauchy principal value of R_C (19.2.20), the
-  transformation for n < −1 (19.7.9), R_C in elementary functions (19.2.17–19).
-* Abramowitz & Stegun §16.4 (descending Landen / AGM), §16.8 (quarter-period shift),
-  §16.14–16.15 (ascending Landen and the m → 1 expansions), https://personal.math.ubc.ca/~cbm/aands/
-"""
+Sources: B. C. Carlson, "Numerical computation of real or complex elliptic integrals",
+Numer. Algorithms 10 (1995) 13–26 (duplication, the series of R_F, R_C, R_J); DLMF §19.2,
+§19.7, §19.20, §19.25 (Legendre forms in Carlson form, principal values, n < −1); Abramowitz
+& Stegun §16.4 (AGM), §16.8 (quarter-period shift), §16.14–16.15 (m → 1)."""
 
 from __future__ import annotations
 

@@ -188,11 +188,10 @@ def circle(
     ----------
     wheel : Wheel — A and C about the centre G
     a : float — m, rim radius
-    lean_rad : float — rad, beta, inward lean from the vertical, 0 <= beta < pi/2
-    R_G : float — m, radius of the centre's circle, >= 0 (0 = spinning in place, Euler's
-        disk)
+    lean_rad : float — rad, inward lean from the vertical, 0 <= beta < pi/2
+    R_G : float — m, radius of the centre's circle, >= 0 (0: spinning in place)
     g : float — m/s^2
-    r : float — m, tyre radius; only 0 (knife edge) is accepted, else ValueError
+    r : float — m, tyre radius; only 0 (knife edge)
 
     Returns
     -------
@@ -200,24 +199,14 @@ def circle(
 
     Notes
     -----
-    Sheet §3.3 (knife edge):
-    m g a sin(beta) = A Omega^2 sin(beta) cos(beta) + (C + m a^2) Omega omega_3 cos(beta),
-    with v = a omega_3 = Omega R_G, i.e.
-    Omega^2 = m g a^2 tan(beta) / (A a sin(beta) + (C + m a^2) R_G);
-    R_P = R_G + a sin(beta). Stability (neutral, undamped) iff
+    Sheet §3.3 (knife edge), with v = a omega_3 = Omega R_G:
+    Omega^2 = m g a^2 tan(beta) / (A a sin(beta) + (C + m a^2) R_G), R_P = R_G + a sin(beta);
+    stable (neutrally) iff
     kappa = A Omega^2 cos 2beta - (C + m a^2) Omega omega_3 sin beta - m g a cos beta
             + (2 A Omega sin beta + (C + m a^2) omega_3)(2 A Omega sin beta + C omega_3)/A
             + m a^2 Omega^2 cos^2 beta > 0,
-    the lean then oscillating at sqrt(kappa / (A + m a^2)). A, C about G; C + m a^2 and
-    A + m a^2 about the contact point. Limits: R_G = 0 gives
-    Omega^2 = m g a / (A cos beta) and kappa = (3 A sin^2 beta + m a^2 cos^2 beta) Omega^2;
-    beta = 0, Omega = 0 gives sheet §3.2.
-
-    beta = 0 exactly gives Omega = 0, omega_3 = 0, v = 0: the wheel standing upright at
-    rest (kappa = -m g a, unstable). Straight rolling at speed v is the limit R_G -> oo
-    (use :func:`at_speed`). At R_G = 0 and beta = 0 any turn rate is steady; Omega = 0 is
-    reported (the R_G = 0 family tends to Omega^2 = m g a / A as beta -> 0+).
-    """
+    the lean oscillating at sqrt(kappa / (A + m a^2)). beta = 0 is the wheel upright at rest
+    (kappa = -m g a); straight rolling is the limit R_G -> oo (:func:`at_speed`)."""
     _knife_edge_only(r)
     a, _, g = check_geometry(a, 0.0, g)
     return _make_circle(wheel, a, g, _check_lean(lean_rad), _check_RG(R_G))
