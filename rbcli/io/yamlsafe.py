@@ -619,39 +619,14 @@ def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
 
 
 def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> Node:
-    """Parse a body file safely.
+    """Parse a body file safely: the root :class:`Node` (every node with its 1-based
+    :class:`Mark`), or an InputError located at ``filename:line:col``.
 
-    Parameters
-    ----------
-    text : str or bytes
-        The file's contents (bytes are decoded as UTF-8; a leading BOM is dropped).
-    filename : str
-        Used only in error locations.
-    list_cap : (key, n, make_error), optional
-        A budget checked while the tree is built: the list under the root mapping's
-        ``key`` holds at most ``n`` items; the start of the next one raises
-        ``make_error(mark)`` (an InputError at its :class:`Mark`) at once, before the rest
-        of the file is read (a body's part cap: a file far over it costs no more than the
-        cap's worth of parsing).
-
-    Returns
-    -------
-    Node
-        The root node; every node carries its 1-based :class:`Mark`.
-
-    Raises
-    ------
-    InputError
-        For every problem, located at ``filename:line:col`` (1-based).
-
-    Notes
-    -----
-    Steps: size limit, UTF-8 decoding, then one pass over libyaml's event stream
-    (libyaml's ``CParser``, which is iterative) that refuses anchors, aliases,
-    tags, deep nesting and extra documents as their events arrive and builds the
-    tree, resolving plain scalars by the YAML 1.2 core schema. PyYAML's composer
-    (recursive in C, and resolving by YAML 1.1) is never used.
-    """
+    ``text`` is str or bytes (UTF-8, a leading BOM dropped); ``filename`` is for locations only.
+    ``list_cap`` ``(key, n, make_error)``: the list under the root's ``key`` holds at most ``n``
+    items, the next one raising ``make_error(mark)`` before the rest of the file is read.
+    One pass over libyaml's (iterative) event stream refuses what the module docstring lists
+    as its events arrive and builds the tree; PyYAML's recursive composer is never used."""
     text = _decode(text, filename)
     try:
         root = _parse(text, filename, list_cap)

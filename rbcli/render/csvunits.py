@@ -1,33 +1,18 @@
 """The SI unit of every number in each command's JSON: the ``unit`` column of ``--format csv``.
 
-The JSON of a command is the contract (SPEC §3: SI units, angles in degrees under keys
-ending in ``_deg``); its man page states each key's unit in prose (the JSON section, from
-``MANUAL[command]["json"]`` in ``rbcli/cli/*.py``). This module is the same statement as
-data, so that the CSV (:mod:`rbcli.render.tablecsv`) can put a unit beside each number.
+The man page states each JSON key's unit in prose; this is the same statement as data. A
+unit is ASCII as pint reads it (``kg*m^2``, ``N*s/m``); ``1`` for a dimensionless number.
+Two depend on the data (field-balance): ``{reading}``, the readings' SI unit (or
+``reading`` for bare readings), and ``{planes}``, the number of planes.
 
-A unit is written in ASCII as pint and most unit libraries read it (``kg*m^2``, ``N*s/m``,
-``rad/s``); ``1`` is the unit of a dimensionless number (a ratio, a count, a component of a
-unit vector or of a rotation matrix). Two units depend on the data:
+A key is looked up by its ``path`` (list indices dropped: ``corrections[].mass``):
 
-- ``{reading}`` (field-balance): the SI unit of the vibration readings, the JSON's
-  ``readings.unit`` (``m``, ``m/s`` or ``m/s^2``), or ``reading`` when they were given as bare
-  numbers (the instrument's own unit, whatever it was);
-- ``{planes}`` (field-balance): the number of correction planes (the power in the unit of the
-  influence matrix's determinant).
-
-A key is looked up in this order, ``path`` being its JSON path with list indices dropped
-(``corrections[1].mass`` -> ``corrections[].mass``):
-
-1. ``path``, then the key's own name (the last name in the path), in the command's table;
-2. a parameter's name: its SI unit (:func:`rbcli.api.params.si_unit`, from the command's
-   table of parameters, which the command line passes);
-3. ``path``, then the name, in :data:`COMMON` — so ``mass`` is kg wherever it sits;
+1. ``path``, then the key's own name, in the command's table;
+2. a parameter's name: its SI unit (:func:`rbcli.api.params.si_unit`, passed by the cli);
+3. ``path``, then the name, in :data:`COMMON` (``mass`` is kg wherever it sits);
 4. the name's ending (:data:`SUFFIXES`: ``_deg`` is degrees).
 
-A number found nowhere gets an empty unit; ``tests/test_csv_table.py`` runs every command
-on its documented cases and fails on such a number, so a key added to a JSON without its
-unit here does not go unnoticed.
-"""
+``tests/test_csv_table.py`` fails on a number found nowhere."""
 
 from __future__ import annotations
 
