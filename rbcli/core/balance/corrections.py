@@ -100,24 +100,15 @@ class Corrections:
     Attributes
     ----------
     source : Unbalance — the rotor corrected
-    planes : (float, float) — m, z_A, z_B
-    radii : (float, float) — m, r_A, r_B
+    planes, radii : (float, float) — m, z_A, z_B and r_A, r_B
     a, b : PlaneCorrection — masses to add in planes A and B
-    static : PlaneCorrection — single-plane (static) correction C = -U at radius r_A; it
-        leaves the moment P + z C uncorrected
-    narrow_planes : bool — |z_B - z_A| < NARROW_PLANE_FRACTION * narrow_reference
-    narrow_ratio : float | None — |z_B - z_A| / narrow_reference (None if the reference is 0)
-    narrow_reference : float — m, the bearing span if bearings were given, else the rotor's
-        equivalent axial length (Unbalance.axial_length)
-    narrow_reference_kind : str — "bearing span" or "rotor axial length"
-    bearings : (float, float) | None — m, the bearings given for the narrow-plane rule
-    residual : Residual — the rotor with a and b added (zero to round-off unless rounded)
-    rounded : bool
-    mass_step : float | None — kg
-    angle_step_deg : float | None — deg
-    ideal : Corrections | None — the unrounded corrections (when rounded)
-    warnings : tuple[str, ...]
-    """
+    static : PlaneCorrection — the single-plane correction C = -U at r_A
+    narrow_planes, narrow_ratio, narrow_reference, narrow_reference_kind — the narrow-plane rule:
+        |z_B - z_A| against NARROW_PLANE_FRACTION of the bearing span or the rotor's length
+    bearings : (float, float) or None — m, as given for that rule
+    residual : Residual — the rotor with a and b added
+    rounded, mass_step, angle_step_deg, ideal — the rounding (kg, deg) and the unrounded
+    warnings : tuple of str"""
 
     source: Unbalance
     planes: tuple[float, float]
@@ -246,33 +237,16 @@ def corrections(
 ) -> Corrections:
     """Two-plane correction masses and angles to ADD, and the single-plane static correction.
 
-    Parameters
-    ----------
-    unb : Unbalance
-    planes : (z_A, z_B) — m, correction planes along the shaft, z_A != z_B
-    radii : float or (r_A, r_B) — m, > 0, radius at which each mass is fixed
-    bearings : (z_1, z_2), optional — m; only used for the narrow-plane rule
-
-    Returns
-    -------
-    Corrections
-
-    Raises
-    ------
-    ValueError
-        z_A == z_B; a radius <= 0; non-finite numbers.
+    ``unb`` the Unbalance; ``planes`` (z_A, z_B) m, distinct; ``radii`` r or (r_A, r_B) m, > 0;
+    ``bearings`` (z_1, z_2) m for the narrow-plane rule only. ValueError for equal planes, a
+    radius <= 0, non-finite numbers.
 
     Notes
     -----
-    Sheet §2.5: cancel force and moment, ``U + C_A + C_B = 0``, ``P + z_A C_A + z_B C_B = 0``:
-
-    ``C_A = (P - z_B U)/(z_B - z_A)``, ``C_B = (z_A U - P)/(z_B - z_A)``,
-    ``m = |C|/r`` at ``arg C`` (remove at +180 deg). Static correction ``C = -U`` at r_A.
-
-    Narrow planes (sheet §7.9): warned when ``|z_B - z_A| < 0.2 L`` with L the bearing span
-    when bearings are given, else the rotor's equivalent axial length
-    ``sqrt(6 (J_xx + J_yy - J_zz)/M)`` (never narrow for a rotor of zero axial extent).
-    """
+    Sheet §2.5: ``U + C_A + C_B = 0``, ``P + z_A C_A + z_B C_B = 0``, so
+    ``C_A = (P - z_B U)/(z_B - z_A)``, ``C_B = (z_A U - P)/(z_B - z_A)``, ``m = |C|/r`` at
+    ``arg C``. Narrow planes (§7.9): ``|z_B - z_A| < 0.2 L``, L the bearing span or
+    ``sqrt(6 (J_xx + J_yy - J_zz)/M)``."""
     zA, zB = pair(planes, "planes")
     if zA == zB:
         raise BalanceValueError("planes", "the two correction planes must be at different positions (z_A == z_B)")
@@ -468,24 +442,9 @@ def _plain_wrap(a: float) -> float:
 def split_to_positions(
     mass: float, angle_deg: float, n_positions: int, offset_deg: float = 0.0
 ) -> Split:
-    """Split a mass onto the two neighbouring of n equally spaced positions (blades, holes).
-
-    Parameters
-    ----------
-    mass : float — any unit, >= 0
-    angle_deg : float — deg, where the mass should go
-    n_positions : int — >= 3, positions at ``offset_deg + k * 360/n``, k = 0..n-1
-    offset_deg : float — deg, angle of position 0
-
-    Returns
-    -------
-    Split — masses (both >= 0) at positions k and k+1 (mod n) with angle between them.
-
-    Notes
-    -----
-    Sheet §2.5, T22: 18 g @ 100 deg onto 8 positions (every 45 deg) -> 14.6009 g @ 90 deg,
-    4.4204 g @ 135 deg.
-    """
+    """Split a mass onto the two neighbouring of n equally spaced positions at
+    ``offset_deg + k * 360/n``: a Split, both masses >= 0 (sheet §2.5, T22: 18 g @ 100 deg onto 8
+    positions -> 14.6009 g @ 90 deg, 4.4204 g @ 135 deg)."""
     m = finite(mass, "mass")
     if m < 0.0:
         raise BalanceValueError("mass", "mass to split must not be negative")
@@ -569,27 +528,12 @@ def split_corrections(
     mass_step: float | None = None,
     offset_deg: float = 0.0,
 ) -> PositionCorrections:
-    """Split each plane's correction onto the two neighbouring of n fixed positions.
+    """Split each plane's correction onto the two neighbouring of ``n_positions`` fixed positions
+    (position 1 at ``offset_deg``), each mass rounded to ``mass_step`` when given.
 
-    Parameters
-    ----------
-    corr : Corrections — ideal (or rounded: its ideal corrections are split)
-    n_positions : int — >= 3, equally spaced positions per plane (holes, blades)
-    mass_step : float, optional — kg, > 0; each split mass rounded half-up to a multiple
-    offset_deg : float — deg, reported angle of position 1 (default 0: on the reference mark)
-
-    Returns
-    -------
-    PositionCorrections
-
-    Notes
-    -----
-    Sheet §2.5 ("fixed positions"): ``m1 = |C| sin(a2 - phi)/sin(a2 - a1)``,
-    ``m2 = |C| sin(phi - a1)/sin(a2 - a1)`` (:func:`split_to_positions`), in the reported
-    angle sense (the set of positions is the same in either sense). The two masses sum to C
-    exactly; after rounding, each plane's net correction is their vector sum and the residual
-    (sheet §1.5 step 4) is that of the rotor with all the masses added.
-    """
+    Sheet §2.5: ``m1 = |C| sin(a2 - phi)/sin(a2 - a1)``, ``m2 = |C| sin(phi - a1)/sin(a2 - a1)``;
+    after rounding each plane's net correction is their vector sum and the residual that of
+    the rotor with all the masses added."""
     if mass_step is not None:
         mass_step = positive(mass_step, "mass step", "mass_step")
     ideal = corr.ideal if corr.ideal is not None else corr
