@@ -62,31 +62,20 @@ class Param:
 
     Attributes
     ----------
-    name : str — the Python keyword (``"mass_step"``); the option is ``--`` + it with
-        dashes, or the command's own word (:data:`rbcli.errors.COMMAND_OPTIONS`, which also
-        spells the command's messages)
+    name : str — the Python keyword; the option is ``--`` + it with dashes, or the command's
+        own word (:data:`rbcli.errors.COMMAND_OPTIONS`)
     help : str — what it means and what a bare number is in; ``{param}`` names another
-    kind : str — how a value is read: a key of :data:`KINDS`
-    quantity : str — the quantity kind of its numbers (:data:`rbcli.io.units.KINDS`), for
-        ``quantity``, ``values`` and ``vector``
+    kind : str — how a value is read (:data:`KINDS`)
+    quantity : str — the quantity kind of its numbers (:data:`rbcli.io.units.KINDS`)
     counts : tuple of int — how many comma-separated values ``values`` takes
     choices : tuple of str — the words ``choice`` takes
-    form : str — how the command line takes it: ``"option"``, ``"options"`` (given once
-        per item: a list) or ``"argument"`` (positional)
-    valid : callable, optional — ``valid(value, given)`` of the value read (SI) and the
-        value as given: None when it is allowed, else why not (a message template), raised
-        as a :class:`rbcli.ParamError` naming this parameter
-    echo : str — how the options table shows it (default: from ``kind`` and ``quantity``,
-        :func:`rbcli.render.echo.echo_rows`); ``"-"`` never
-    echo_default : bool — the options table shows its value when it is not given too,
-        marked "(default)" (the service puts the value it used in the options)
-    default : the command line's default (None: not given)
-    metavar : the command line's metavar, when not the derived one
-    cli_type : the command line's type, when not the kind's (``int`` for a count, ``bool``
-        for a flag, else ``str``): ``str`` lets the service say what is wrong with a count
-    cli, api : whether the command line / the Python API takes it (a command-line-only
-        entry keeps ``--help``'s order where it sits among the parameters)
-    """
+    form : str — ``"option"``, ``"options"`` (given once per item) or ``"argument"``
+    valid : callable, optional — ``valid(value, given)``: None when allowed, else why not (a
+        message template, raised as a ParamError naming this parameter)
+    echo : str — how the options table shows it (default from ``kind``); ``"-"`` never
+    echo_default : bool — shown when not given too, marked "(default)"
+    default, metavar, cli_type — the command line's default, metavar and type
+    cli, api : bool — whether the command line / the Python API takes it"""
 
     name: str
     help: str

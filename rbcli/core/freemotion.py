@@ -1,28 +1,15 @@
 """Exact torque-free motion of a rigid body (Euler–Poinsot) — the physics of ``rbcli precess``.
 
-Inputs are the inertia tensor about the centre of mass in the BODY frame (tensor convention,
-off-diagonals ``-sum m x y``) and the initial angular velocity in the body frame.
-:func:`analyse` classifies the motion and returns a :class:`FreeMotion` with every number
-``precess`` reports; :mod:`rbcli.core.freepath` evaluates the exact motion at any array of
-times (cost independent of ``t``: no numerical integration);
-:func:`rbcli.core.freeverify.verify` checks the closed forms against
-``scipy.integrate.solve_ivp``.
+Input: the inertia tensor about the com (body frame, tensor convention) and the initial
+angular velocity (body frame). :func:`analyse` classifies the motion (:class:`FreeMotion`);
+:mod:`rbcli.core.freepath` evaluates it at any times (no integration);
+:func:`rbcli.core.freeverify.verify` checks it against ``solve_ivp``.
 
-Conventions
------------
-* Principal frame: :func:`rbcli.core.principal.principal_axes` — moments ascending
-  ``I1 <= I2 <= I3``, ``axes`` rows are the unit axes in the body frame, ``axes`` is a proper
-  rotation taking body to principal coordinates (``w_p = axes @ w_b``). "Axis 1" is the
-  smallest moment, "axis 3" the largest (the labels of SPEC's ``circles_axis``).
-* Attitude: ``R(t)`` maps body coordinates at time ``t`` to space coordinates, and the space
-  frame IS the body frame at ``t = 0`` (``R(0) = 1``). Quaternions are ``[w, x, y, z]``
-  (scalar first, Hamilton, ``R(q) v = q v q*``), canonicalised to ``w >= 0``.
-* Angles in radians inside this module; ``to_json`` gives degrees under keys ending ``_deg``.
-
-Sources: physics sheet ``/work/shared/physics/dynamics.md`` §1 (formulas, signs, pitfalls
-§4b) — Landau & Lifshitz §37; Celledoni, Fassò, Säfström & Zanna (2008) with Leroy's
-corrections (Principia, ``documentation/Celledoni.tex``).
-"""
+Conventions: principal moments ascending (axis 1 the smallest), ``axes`` rows the unit
+axes in the body frame (``w_p = axes @ w_b``); ``R(t)`` maps body to space coordinates and
+``R(0) = 1``; quaternions ``[w, x, y, z]``, ``w >= 0``; radians (``to_json``: ``_deg``
+keys). Sources: physics sheet ``dynamics.md`` §1; Landau & Lifshitz §37; Celledoni, Fassò,
+Säfström & Zanna (2008) with Leroy's corrections."""
 
 from __future__ import annotations
 
@@ -91,24 +78,15 @@ class EllipticSolution:
 
     Attributes
     ----------
-    kind : str — "3" (omega circles axis 3: w = (A1 cn, s A2 sn, s A3 dn)), "1" (circles
-        axis 1: w = (s A1 dn, s A2 sn, A3 cn)) or "separatrix"
-        (w = (s1 A1 sech, s1 s3 Omega0 tanh, s3 A3 sech))
-    m, mc : float — elliptic parameter m = k^2 and 1 - m, each from its own Delta form
-        (separatrix: 1 and 0)
-    lam : float — 1/s, the rate lambda in tau = lambda t + tau0
-    K : float | None — complete integral K(m) (None for the separatrix)
-    tau0 : float — phase at t = 0
-    signs : tuple[float, float] — (s, s) for "3"/"1" (s = sign of the dn component), (s1, s3)
-        for the separatrix
-    amplitudes : (3,) ndarray — rad/s, (A1, A2, A3); separatrix: (A1, Omega0, A3)
-    pole : int — principal index (2 or 0) of the Landau–Lifshitz pole axis (the dn axis;
-        axis 3 for the separatrix)
-    n : float — characteristic of Pi (-r^2 for the separatrix)
-    coeff : float — rad, the coefficient of Pi (or of atan for the separatrix) in phi(t)
-    pi_complete : float | None — Pi(n | m)
-    precession_per_period : float | None — rad, Delta phi over one period of omega
-    """
+    kind : str — "3" (w = (A1 cn, s A2 sn, s A3 dn)), "1" (w = (s A1 dn, s A2 sn, A3 cn)) or
+        "separatrix" (w = (s1 A1 sech, s1 s3 Omega0 tanh, s3 A3 sech))
+    m, mc : float — m = k^2 and 1 - m, each from its own Delta form
+    lam, tau0 : float — tau = lambda t + tau0 (1/s, -)
+    K : float or None — K(m) (None on the separatrix)
+    signs, amplitudes — (s, s) or (s1, s3); (A1, A2, A3) rad/s (separatrix: A2 = Omega0)
+    pole : int — principal index of the Landau–Lifshitz pole (the dn axis)
+    n, coeff, pi_complete — Pi's characteristic, its coefficient in phi(t) (rad), Pi(n | m)
+    precession_per_period : float or None — rad, Delta phi over one period"""
 
     kind: str
     m: float

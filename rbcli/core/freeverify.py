@@ -102,29 +102,15 @@ def verify(
 ) -> VerifyResult:
     """Compare the exact motion with a DOP853 integration of Euler's equations and attitude.
 
-    Parameters
-    ----------
-    motion : FreeMotion
-    periods : float — span in periods of omega (or, when not periodic, in characteristic
-        times: 2 pi/lambda on the separatrix, 2 pi/|omega| for steady motion, 1 s at rest)
-    rtol : float — relative tolerance of ``solve_ivp(method="DOP853")``; atol = rtol/100
-        times the scale of each state component
-    samples_per_period : int — comparison times per period
-    tol : float — threshold for ``ok``
-
-    Returns
-    -------
-    VerifyResult
+    ``periods`` of omega (or characteristic times when not periodic), ``solve_ivp`` at ``rtol``
+    (atol rtol/100 of each component's scale), ``samples_per_period`` comparison times, ``tol``
+    the threshold of ``ok``: a VerifyResult.
 
     Notes
     -----
-    Integrates, in the BODY frame and with the full tensor (independent of the principal
-    decomposition): ``J w' = (J w) x w`` and ``R' = R [w]x``, R(0) = 1 (sheet §1, Euler's
-    equations; invariants 2T, G^2, L = R M). Near the separatrix the integrator's own error
-    is amplified by about 1/k' per passage (sheet §1.2, table footnote), so a large
-    omega_error there is the integrator's, not the closed form's (the exact drifts stay at
-    round-off).
-    """
+    Body frame, full tensor (independent of the principal decomposition): ``J w' = (J w) x w``,
+    ``R' = R [w]x``, R(0) = 1 (sheet §1). Near the separatrix the integrator's own error grows
+    by about 1/k' per passage, so a large omega_error there is the integrator's."""
     from scipy.integrate import solve_ivp
 
     J = motion.inertia

@@ -1,28 +1,14 @@
 """Critical speeds: where a whirl frequency equals an order n of the speed.
 
-Undamped critical speeds are those of the rotor's conservative part: its dampers removed
-and its cross-coupled stiffness kxy, kyx both their mean (the follower part, kxy = -kyx,
-which feeds energy into a whirl, removed with the damping; API 684's undamped analysis
-takes the bearings' direct stiffness). The damped critical speeds, where the whirl
-frequency of the rotor as it is meets the n× line, carry the damping and the whole
-cross-coupling; 1 N/m of cross-coupled stiffness moves them by ~1e-12 of themselves.
-
-- on constant bearings: exactly, an eigenproblem in the speed, no grid. With ``q = Q e^{i n Omega t}`` the equations
-  become ``(K - Omega^2 (n^2 M - i n G)) Q = 0``: the eigenvalues nu = 1/Omega^2 of
-  ``K^-1 B``, ``B = n^2 M - i n G``; each real nu > 0 is a critical speed. Isotropic
-  bearings split it by whirl direction (the physics sheet ``whirl.md``): forward
-  ``K_c U = Omega^2 diag(n^2 m, n^2 It - n Ip) U``, backward with ``+ n Ip``. With K_c
-  positive definite the forward crossings are as many as the positive entries of the
-  forward matrix (Sylvester's law of inertia): when ``n It <= Ip`` the forward conical
-  branch stays above the n× line at every speed (for n = 1: a disk-like rotor).
-- on bearings tabled against speed: the undamped modes are followed by their shapes over
-  the speeds the tables cover (:func:`rbcli.core.whirl.modes.track`) and each root of
-  ``|Im lambda(Omega)| - n Omega`` is solved by Brent's method.
-
-Damped: where the damped whirl frequency |Im lambda| of the mode equals n Omega, a root
-of ``|Im lambda(Omega)| - n Omega`` by Brent's method, the mode followed by its shape
-from the undamped critical speed.
-"""
+Undamped critical speeds are those of the conservative rotor (no dampers, kxy and kyx both
+their mean: API 684's undamped analysis). On constant bearings exactly, an eigenproblem in
+the speed: ``(K - Omega^2 (n^2 M - i n G)) Q = 0``, nu = 1/Omega^2 the eigenvalues of
+``K^-1 (n^2 M - i n G)``; isotropic bearings split it by whirl direction (forward
+``K_c U = Omega^2 diag(n^2 m, n^2 It - n Ip) U``, backward ``+ n Ip``), and when
+``n It <= Ip`` the forward conical branch never meets the n× line (Sylvester's law of
+inertia). On tabled bearings, and for the damped critical speeds (the rotor as it is), the
+roots of ``|Im lambda(Omega)| - n Omega`` along a mode followed by its shape, by Brent's
+method."""
 
 from __future__ import annotations
 

@@ -1,31 +1,15 @@
 """Whirl modes of the rigid rotor over speeds, each followed by its shape; the roots of a
-mode's frequency or growth rate along the speed (:mod:`rbcli.core.whirl.model` has the
-equations).
+mode's frequency or growth rate along the speed.
 
-At a speed Omega the free motion ``q = Q e^{lambda t}`` solves the quadratic eigenproblem
-``(lambda^2 M + lambda (C + Omega G) + K) Q = 0``, solved through its companion (first-
-order) form ``A = [[0, I], [-M^-1 K, -M^-1 (C + Omega G)]]`` for every speed at once (a
-stack of matrices, one ``numpy.linalg.eig``):
-
-- isotropic bearings: the 4×4 complex companion of the directional coordinates [r, phi];
-  each of its four eigenvalues is one mode, forward when Im lambda > 0, backward when
-  Im lambda < 0 (frequency |Im lambda|);
-- otherwise: the 8×8 real companion of q; each complex pair is one mode (the root with
-  Im lambda > 0), each two real roots one non-oscillating (overdamped) mode.
-
-Whirl frequencies are in the fixed (bearing) frame. Damping ratio ``zeta = -Re lambda /
-|lambda|``, logarithmic decrement ``delta = -2 pi Re lambda / |Im lambda|``. A
-conservative rotor (no damping, symmetric stiffness) has every lambda on the imaginary
-axis (Thomson-Tait-Chetaev; Meirovitch, *Methods of Analytical Dynamics*, §7.9): Re lambda
-is set to 0 there instead of carrying the eigensolver's round-off.
-
-At each speed the modes are numbered by frequency (``Campbell``); a mode is followed from
-one speed to the next by its shape (:func:`track`: the assignment with the largest summed
-modal assurance criterion, the step halved where it is not clear), never by its rank, so
-that two modes whose frequencies cross keep their identities (a growing mode crossing a
-decaying one is not a change of stability). Where a followed quantity changes sign
-between two speeds, its root is solved by Brent's method (:func:`branch_roots`).
-"""
+``(lambda^2 M + lambda (C + Omega G) + K) Q = 0`` is solved through its companion form for
+every speed at once (one ``numpy.linalg.eig`` of a stack): for isotropic bearings the 4×4
+complex companion of [r, phi] (each eigenvalue a mode, forward when Im lambda > 0), else
+the 8×8 real companion of q (each complex pair a mode, two real roots an overdamped one).
+Frequencies are in the fixed frame; ``zeta = -Re lambda / |lambda|``, ``delta = -2 pi Re
+lambda / |Im lambda|``; a conservative rotor's Re lambda is set to 0 (Meirovitch, *Methods
+of Analytical Dynamics*, §7.9). A mode is followed from speed to speed by its shape
+(:func:`track`, the largest summed modal assurance criterion), never by its rank, and a
+followed quantity's sign changes are roots by Brent's method (:func:`branch_roots`)."""
 
 from __future__ import annotations
 
