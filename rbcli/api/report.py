@@ -2,20 +2,13 @@
 ``rbcli report``.
 
 :func:`parse` reads the report's parameters (:data:`rbcli.api.commands.REPORT`) through each
-command's own ``parse``, so a value means in the report what it means to the command;
-:func:`run` computes each section by calling the services and returns a
-:class:`ReportResult` (each section's result, or the one-line reason it is left out). The
-document: :mod:`rbcli.render.report`, :func:`rbcli.report_text`, :func:`rbcli.write_report`.
-
-Which section is there: parts, mass properties and principal axes always; balance when the
-body has a shaft or a balance parameter is given; whirl with ``stiffness`` or the body's
-bearings; free precession with ``omega``; the heavy top with a pivot (the body's or
-``pivot``), ``spin`` and ``theta``; rolling stability with a rim radius (the body's,
-``rim_radius`` or a round part). A section that does not apply, or that this body cannot
-have (an error located in the body file, a value too large to compute with), is one line
-saying why; a value its command refuses is an :class:`rbcli.InputError`, as on the command
-line.
-"""
+command's own ``parse``, so a value means what it means to the command; :func:`run`
+computes each section (its result, or the one-line reason it is left out). Parts, mass
+properties and principal axes are always there; balance with a shaft or a balance
+parameter; whirl with ``stiffness`` or the body's bearings; free precession with
+``omega``; the heavy top with a pivot, ``spin`` and ``theta``; rolling with a rim radius or
+a round part. A value its command refuses is an :class:`rbcli.InputError`, as on the
+command line."""
 
 from __future__ import annotations
 
@@ -224,20 +217,10 @@ def parse(body: Body, **kwargs: Any) -> ReportOptions:
 
 @dataclass(frozen=True)
 class Section:
-    """One section of the report: its result, or the one-line reason it is left out.
-
-    Attributes
-    ----------
-    key : str — the anchor (``"balance"``)
-    title : str — ``"Balance"``
-    result : Any — the command's result (``BalanceResult``, ...; for ``"parts"`` the
-        body's mass properties), None when skipped
-    skipped : str or None — why the section is not there, in one line
-    options : Any — the command's options (its "options" table), or None
-    figure : Any — what the section's figure draws, computed: the balance diagram, the top's
-        sampled path ``(states, duration)``, the rolling curves, the parts' contributions
-    warnings : tuple of str — the section's warnings
-    """
+    """One section of the report: ``key`` (the anchor), ``title``, ``result`` (the command's
+    result; for "parts" the body's mass properties) or ``skipped`` (why not, one line),
+    ``options`` (the command's, for its "options" table), ``figure`` (what its figure draws,
+    computed) and ``warnings``."""
 
     key: str
     title: str
@@ -255,21 +238,9 @@ class Section:
 
 @dataclass(frozen=True)
 class ReportResult(Result):
-    """The report of a body: each section's result and the checks that failed.
-
-    Attributes
-    ----------
-    name : str — the body's name
-    body : Body — the body
-    options : ReportOptions — the options, as read
-    sections : tuple of Section — in the report's order
-    failed : tuple of str — the checks asked for that failed, in words (the grade, rolling at
-        the speed); the report is complete all the same
-    warnings : tuple of str — the sections' warnings (the report shows them in its sections)
-
-    ``to_json()`` lists the sections; ``return_code`` is 1 when a check failed. The
-    document: :func:`rbcli.report_text`, :func:`rbcli.write_report`.
-    """
+    """The report of a body: ``name``, ``body``, ``options`` (:class:`ReportOptions`),
+    ``sections``, ``failed`` (the checks asked for that failed, in words: ``return_code`` 1)
+    and ``warnings``. ``to_json()`` lists the sections."""
 
     name: str
     body: Body
@@ -494,30 +465,23 @@ def run(body: Body, options: ReportOptions,
 
 @function(REPORT)
 def report(body: Body, **kwargs: Any) -> ReportResult:
-    """Every answer that applies to the body, computed for one report.
-
-    The sections ``rbcli report BODY -o FILE`` writes: a parts table, mass properties,
-    principal axes, and, where the body file or the parameters give what they need,
-    balance, whirl, free precession, the heavy top and rolling stability (each left-out
-    section says why in one line). :func:`rbcli.report_text` gives the document's text and
-    :func:`rbcli.write_report` writes it (the same bytes as the command line).
+    """Every answer that applies to the body, computed for one report: the sections
+    ``rbcli report`` writes (:func:`rbcli.report_text`, :func:`rbcli.write_report`).
 
     Parameters
     ----------
-    body : rbcli.Body — from :func:`rbcli.load`
+    body : rbcli.Body
     {parameters}
 
     Returns
     -------
     ReportResult
-        ``sections`` (each with its result or the reason it is left out), ``failed`` (the
-        checks asked for that failed) and ``return_code`` (1 when one did).
+        ``sections`` (each with its result or why it is left out), ``failed``, ``return_code``.
 
     Raises
     ------
     TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
+        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
     rbcli.InputError
         naming the parameter, for a value a command refuses.
 
@@ -526,6 +490,5 @@ def report(body: Body, **kwargs: Any) -> ReportResult:
     >>> import rbcli
     >>> r = rbcli.report(rbcli.load("examples/top.yaml"), spin=150, theta=30)
     >>> [s.key for s in r.sections if s.skipped is None]
-    ['parts', 'mass-properties', 'principal-axes', 'heavy-top']
-    """
+    ['parts', 'mass-properties', 'principal-axes', 'heavy-top']"""
     return run(body, parse(body, **kwargs))

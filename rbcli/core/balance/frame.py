@@ -54,30 +54,14 @@ def shaft_frame(
     reference: object | None = None,
     zero_mark_deg: float = 0.0,
 ) -> ShaftFrame:
-    """The rotor-fixed shaft frame (e_x, e_y, e_z) of a shaft.
+    """The rotor-fixed shaft frame (e_x, e_y, e_z) of a shaft along ``axis`` through ``through``
+    (z = 0 there), with the 0° mark along ``reference`` (its part across the shaft; default the
+    rule below) turned by ``zero_mark_deg`` about +e_z. ValueError for a zero or non-finite
+    axis, or a reference along the shaft.
 
-    Parameters
-    ----------
-    axis : (3,) array_like — shaft direction, body frame, any non-zero length
-    through : (3,) array_like — m, a point of the shaft, body frame; z = 0 there
-    reference : (3,) array_like, optional — direction of the 0° mark (its part across the
-        shaft); default: the rule below
-    zero_mark_deg : float — deg, the mark turned this far about +e_z
-
-    Returns
-    -------
-    ShaftFrame
-
-    Raises
-    ------
-    ValueError
-        zero or non-finite axis; ``reference`` parallel to the shaft.
-
-    Notes
-    -----
-    ``e_z = axis/|axis|``; ``e_x`` = body x projected across e_z, unless ``|e_z . x| > 0.9``,
-    then body y projected (length >= 0.436: well conditioned, the switch away from the axes
-    and diagonals); ``e_y = e_z x e_x``. A shaft along +z gives the body frame."""
+    ``e_x`` is body x projected across e_z, or body y when ``|e_z . x| > 0.9`` (projection
+    >= 0.436, the switch away from the axes and diagonals); ``e_y = e_z x e_x``. A shaft along
+    +z gives the body frame."""
     a = vec3(axis, "shaft axis", "axis")
     n = float(np.linalg.norm(a))
     if not n > 0.0:
@@ -375,24 +359,9 @@ def unbalance(
 def plane_unbalances(
     static: complex, moment: complex, z1: float, z2: float
 ) -> tuple[complex, complex]:
-    """Equivalent unbalances in two planes (what a balancing machine shows), kg m.
-
-    Parameters
-    ----------
-    static : complex — kg m, U
-    moment : complex — kg m^2, P about z = 0
-    z1, z2 : float — m, plane positions, z1 != z2
-
-    Returns
-    -------
-    (U_1, U_2) : complex — kg m, with U_1 + U_2 = U and z1 U_1 + z2 U_2 = P
-
-    Notes
-    -----
-    Sheet §2.5: ``U_1 = (z2 U - P)/(z2 - z1)``, ``U_2 = (P - z1 U)/(z2 - z1)``. The same
-    numbers are the bearing forces divided by Omega^2 (sheet §2.6) and the ISO tolerance
-    quantity (sheet §1.5).
-    """
+    """Equivalent unbalances (U_1, U_2) in planes z1 != z2 (kg m; what a balancing machine
+    shows) of U (kg m) and P about z = 0 (kg m^2): U_1 + U_2 = U, z1 U_1 + z2 U_2 = P (sheet §2.5;
+    also the bearing forces over Omega^2, §2.6, and the ISO quantity, §1.5)."""
     z1 = finite(z1, "plane position", "planes")
     z2 = finite(z2, "plane position", "planes")
     if z1 == z2:
@@ -402,22 +371,9 @@ def plane_unbalances(
 
 
 def add_point_masses(unb: Unbalance, points: Sequence[tuple[float, object]]) -> Unbalance:
-    """Unbalance of the rotor with point masses added.
-
-    Parameters
-    ----------
-    unb : Unbalance
-    points : sequence of (mass kg, (3,) position m, body frame)
-
-    Returns
-    -------
-    Unbalance — same shaft, reference mark, angle sense and rtol.
-
-    Notes
-    -----
-    Mass, com and the tensor about the new com by the parallel-axis theorem (sheet §2.2,
-    a point mass has J = 0 about itself).
-    """
+    """Unbalance of the rotor with point masses (kg, position m in the body frame) added: the
+    same shaft, mark, angle sense and rtol; mass, com and tensor by the parallel-axis theorem
+    (sheet §2.2)."""
     M = unb.mass
     c = np.array(unb.com)
     pts = [(float(m), vec3(p, "point position", "points")) for m, p in points]
