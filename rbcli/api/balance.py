@@ -1,18 +1,11 @@
 """Rotor balance about a shaft: the service behind ``rbcli balance``.
 
-:func:`balance` reads its parameters once (:data:`rbcli.api.commands.BALANCE`, :func:`parse`:
-SI numbers or quantity strings, the body's rim radius for a correction radius not given) and
-runs the physics of :mod:`rbcli.core.balance` (:func:`run`): the unbalance about the shaft,
-two-plane corrections (rounded or on fixed positions) with the residual they leave, bearing
-forces at speed and the ISO 21940-11 check. The result (:class:`BalanceResult`) is frozen,
-knows its JSON (``to_json()``, exactly what ``rbcli balance --json`` prints less ``file``)
-and its exit status (1 when the rotor as given fails the grade). Trial-weight balancing from
-vibration readings is :mod:`rbcli.api.field`.
-
-The physics and its sources: the physics sheet ``physics/balance.md`` (cited in
-:mod:`rbcli.core.balance`), ISO 21940-11:2016 "Mechanical vibration — Rotor balancing —
-Part 11: Procedures and tolerances for rotors with rigid behaviour".
-"""
+:func:`parse` reads the parameters (:data:`rbcli.api.commands.BALANCE`), :func:`run` the
+physics of :mod:`rbcli.core.balance` (physics sheet ``balance.md``; ISO 21940-11:2016): the
+unbalance about the shaft, two-plane corrections (rounded or on fixed positions) and their
+residual, bearing forces and the ISO check, in a :class:`BalanceResult` (its JSON is
+``rbcli balance --json`` less ``file``; exit status 1 when the rotor fails the grade).
+Trial-weight balancing is :mod:`rbcli.api.field`."""
 
 from __future__ import annotations
 
@@ -67,16 +60,10 @@ def _num(x: float) -> str:
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
-    """The keyword arguments of :func:`balance` (see there) read for ``body`` and checked:
-    :class:`rbcli.api.params.Options` in SI, ``radius`` r or (rA, rB) (the body's
-    ``rim_radius`` when not given), the defaults of ``g``, ``angle_sense``,
-    ``tolerance_planes`` and ``zero_mark_deg`` filled in.
-
-    Raises
-    ------
-    rbcli.InputError
-        one line naming the parameter (``planes: ...``).
-    """
+    """The keyword arguments of :func:`balance` read for ``body``: Options in SI, ``radius``
+    (rA, rB) (the body's ``rim_radius`` when not given), the defaults of ``g``,
+    ``angle_sense``, ``tolerance_planes`` and ``zero_mark_deg`` filled in; an InputError naming
+    the parameter."""
     if kwargs.get("angle_sense") == "with":  # the default (the command line always passes it)
         kwargs = {**kwargs, "angle_sense": None}
     o = read(body, BALANCE, kwargs)

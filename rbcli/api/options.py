@@ -1,20 +1,11 @@
 """How option values are read: the one place a number typed by a user gets its meaning.
 
-Every keyword argument of the Python API and every option of the command line goes
-through these functions, so ``rbcli.balance(body, radius="100 mm")`` and
-``rbcli balance BODY --radius '100 mm'`` read the value the same way. A value may be
-
-- a Python number (already SI: m, kg, s, rad/s; angles in degrees),
-- a sequence of numbers or strings (a vector: ``[0, 0, 300]``),
-- a string as typed on the command line: ``"30 cm"``, ``"1,1,1 mm"``, ``"3000 rpm"``.
-
-Strings follow one rule for lists (:data:`UNIT_RULE`): a unit after the last number
-applies to every bare number before it. Each reader takes the Python parameter it reads
-(``"radius"``); errors are :class:`rbcli.errors.ParamError` naming it (``radius: ...`` in
-the API, ``--radius: ...`` on the command line, see :func:`rbcli.errors.spell`).
-
-Standard library only at module level; :mod:`rbcli.io.units` is imported on first use.
-"""
+The Python API and the command line read every value here, so ``radius="100 mm"`` and
+``--radius '100 mm'`` mean the same. A value is a Python number (SI; angles in degrees), a
+sequence, or a string as typed (``"30 cm"``, ``"1,1,1 mm"``); in a list a unit after the
+last number applies to every bare number before it (:data:`UNIT_RULE`). Errors are
+:class:`rbcli.errors.ParamError` naming the parameter (``radius: ...``; the command line
+spells ``--radius: ...``)."""
 
 from __future__ import annotations
 

@@ -1,13 +1,7 @@
-"""When does a rolling wheel, coin or hoop stay up? The service behind ``rbcli rollcheck``.
-
-:func:`rollcheck` reads its parameters once (:data:`rbcli.api.commands.ROLLCHECK`,
-:func:`parse`), makes the body a rolling wheel (:func:`wheel_setup`: the axle line, the rim
-radius and what the rim is, each with where it came from; mass, the moment I across the
-axle and Is about it, both about the centre of mass) and answers: the critical speed of
-straight upright rolling; with a speed, the verdict at that speed; with two of lean, circle
-and speed, the steady circle. The physics is :mod:`rbcli.core.rolling` (physics sheet
-``dynamics.md`` §3, in the repository's documentation).
-"""
+"""When does a rolling wheel, coin or hoop stay up? The service behind ``rbcli rollcheck``:
+the body made a rolling wheel (:func:`wheel_setup`: axle, rim radius and rim, each with
+where it came from), the straight-rolling threshold, the verdict at a speed and the steady
+circle (:mod:`rbcli.core.rolling`, physics sheet ``dynamics.md`` §3)."""
 
 from __future__ import annotations
 
@@ -50,16 +44,9 @@ def round_parts(body: Body) -> list[Part]:
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
-    """The keyword arguments of :func:`rollcheck` (see there) read for ``body`` and checked:
-    :class:`rbcli.api.params.Options` in SI (``g`` standard gravity unless given). What the
-    body's wheel cannot take is :func:`run`'s to refuse (:func:`wheel_setup`).
-
-    Raises
-    ------
-    rbcli.InputError
-        A value that is not what its parameter takes (naming it), or a steady circle without
-        two of lean, circle and speed.
-    """
+    """The keyword arguments of :func:`rollcheck` read for ``body`` (Options in SI, ``g``
+    standard gravity unless given); an InputError naming the parameter, or for a steady circle
+    without two of lean, circle and speed."""
     o = read(body, ROLLCHECK, kwargs)
     u = op.Units.of(body)
     for name, kind, what in (("rim_radius", "length", "the rim radius"), ("g", "acceleration", "gravity")):
@@ -112,16 +99,10 @@ class WheelSetup:
 
 
 def wheel_setup(body: Body, o: Options) -> WheelSetup:
-    """The wheel ``body`` makes with the parameters ``o`` (:func:`parse`): the axle, else the
-    body's shaft, else body z; the rim radius, else the body's ``rim_radius``, else the
-    largest round part coaxial with the axle; the rim's shape (:func:`rbcli.core.rim.rim_of`).
-
-    Raises
-    ------
-    rbcli.InputError
-        a tyre radius larger than the rim radius, a steady circle on a rim that is not a
-        knife edge (naming the parameter); a body with no rim radius (located).
-    """
+    """The wheel ``body`` makes with ``o``: the axle (else the body's shaft, else z), the rim
+    radius (else the body's, else the largest coaxial round part) and the rim
+    (:func:`rbcli.core.rim.rim_of`). An InputError for a tyre radius above the rim radius, a
+    steady circle on a rim that is not a knife edge, or no rim radius (located)."""
     mp = body_mass_props(body)
     axis, axis_from = shaft_axis(body, o.shaft)
     n = np.asarray(axis, dtype=float)
@@ -416,17 +397,10 @@ def _renamed(exc: InputError) -> InputError:
 
 
 def run(body: Body, options: Options) -> RollcheckResult:
-    """The rolling check of ``body`` with the parameters ``options`` (:func:`parse`).
-
-    Raises
-    ------
-    rbcli.InputError
-        The body is not of revolution about the axle or its centre of mass is off it, or its
-        rim circle is more than :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` of the radius
-        off the plane of the centre of mass (a cone or hemisphere on its base rim: upright
-        rolling is no equilibrium) — located at the body; or the parameters ask for a circle
-        that does not exist (naming them).
-    """
+    """The rolling check of ``body`` with ``options`` (:func:`parse`). An InputError located at
+    the body when it is not of revolution about the axle, or its rim is more than
+    :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` off the com's plane (no upright equilibrium); or
+    naming the parameters of a circle that does not exist."""
     o = options
     s = wheel_setup(body, o)
     wheel = _wheel(body, body_mass_props(body), s.axle, s.through, s.radius, o.symmetry_tol)
