@@ -1,15 +1,9 @@
 """How big a body is: the yardstick of the plausibility warnings (issue 13).
 
-A number typed in the wrong unit (``--radius 180`` meant in mm, read in m) is usually
-off by a factor of 25 to 1000, so a value far outside the body's own size is worth a
-warning. The size used is the body's bounding box built from its parts: each part
-counts as a ball around its centre of mass whose radius is the part's outer radius (a
-round part) or the half-diagonal of its equivalent uniform box, ``sqrt(1.5 tr(J) / m)``
-(a box of sides a, b, c has ``tr(J) = m (a² + b² + c²) / 6``; its half-diagonal is
-``sqrt(a² + b² + c²) / 2``). Holes are left out (they lie inside the material).
-
-Only numpy.
-"""
+A number typed in the wrong unit is off by 25 to 1000, so a value far outside the body's
+size is worth a warning. The size is the bounding box of the parts, each a ball about its
+com of its outer radius (a round part) or its equivalent box's half-diagonal
+``sqrt(1.5 tr(J) / m)``; holes are left out."""
 
 from __future__ import annotations
 
@@ -77,26 +71,13 @@ def body_scale(parts: Sequence[Any]) -> BodyScale:
 
 
 def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[float]) -> float:
-    """The largest distance (m) of the body's material from a spin axis line.
+    """The largest distance (m) of the body's material (holes left out) from the line along
+    ``axis`` through ``through`` (body frame): the fastest point moves at |omega| times it.
 
-    Parameters
-    ----------
-    parts : sequence of :class:`rbcli.body.partmodel.Part` — holes are left out
-    axis : (3,) array_like — the line's direction, body frame (any length)
-    through : (3,) array_like — m, a point of the line, body frame
-
-    Returns
-    -------
-    float — m; the fastest point moves at |omega| times this.
-
-    Notes
-    -----
-    The distance from a line is convex, so it is largest at an extreme point of each part,
-    measured exactly from its outline: corners of polyhedra; for circles (ring, disk, the ends
-    of a cylinder, a cone's base, a torus's centre circle plus its tube) the roots of a quartic
-    in exp(i t); a sphere's centre plus radius (a hemisphere: or its rim); an ellipsoid's
-    projected ellipse (a ``given`` part's equivalent ellipsoid: an estimate); a mesh's outline
-    vertices (within one clustering cell); else the com plus the ball of :func:`body_scale`."""
+    The distance is convex, so it is largest at an extreme point of each part's outline:
+    corners; circles (a quartic in exp(i t)); a sphere's centre plus radius; an ellipsoid's
+    projected ellipse (a ``given`` part's equivalent one); a mesh outline's vertices; else the
+    com plus the ball of :func:`body_scale`."""
     n = np.asarray(axis, dtype=float).reshape(3)
     n = n / np.linalg.norm(n)
     P = np.asarray(through, dtype=float).reshape(3)

@@ -43,25 +43,10 @@ def inertia_about(mass: float, com, inertia_com, point) -> np.ndarray:
 
 @dataclass(frozen=True)
 class AxialSymmetry:
-    """How symmetric a body is about an axis through a point (see the module docstring).
-
-    Attributes
-    ----------
-    axis : tuple[float, float, float] — the unit axis n, body frame
-    point : tuple[float, float, float] — m, the point the moments are about, body frame
-    inertia : tuple[tuple[float, ...], ...] — kg m², the full tensor J about the point
-    axial : float — kg m², C = n·J·n
-    transverse : tuple[float, float] — kg m², I1 <= I2, the moments across the axis
-    mean : float — kg m², (I1 + I2)/2, the symmetrised body's moment across
-    transverse_axes : tuple[tuple[float, float, float], tuple[float, float, float]] — the
-        unit directions (across n) of I1 and I2, body frame
-    relative : float — (I2 - I1)/mean
-    coupling : float — kg m², the products of inertia coupling n to the plane across it
-    coupling_relative : float — coupling/mean
-    com_offset : float — m, the centre of mass's distance from the axis line
-    com_offset_relative : float — com_offset/size
-    size : float — m, the length scale of com_offset_relative
-    """
+    """How symmetric a body is about an axis through a point (the module docstring's
+    quantities): ``axis`` n, ``point`` (m), ``inertia`` J about it, ``axial`` C, ``transverse``
+    (I1, I2), ``mean``, ``transverse_axes``, ``relative``, ``coupling``, ``coupling_relative``,
+    ``com_offset`` (m), ``com_offset_relative`` and its ``size`` (m)."""
 
     axis: tuple[float, float, float]
     point: tuple[float, float, float]

@@ -50,18 +50,10 @@ class TopInputError(ParamError, ValueError):
 
 @dataclass(frozen=True)
 class FastTop:
-    """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top").
-
-    Attributes
-    ----------
-    nutation_frequency : float — rad/s, |a| = Is|S|/I
-    nutation_amplitude : float | None — rad, θ2 - θ1 ≈ (2 I m g l/(Is S)²) sin θ0; only
-        for release from rest (θ0' = φ0' = 0), else None
-    mean_precession_rate : float — rad/s, m g l/(Is S) = β/(2a)
-    nutation_frequency_rel_error, nutation_amplitude_rel_error,
-    mean_precession_rate_rel_error : float | None — (estimate - exact)/exact; None where
-        the exact value is zero or undefined
-    """
+    """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top"):
+    ``nutation_frequency`` |a| (rad/s), ``nutation_amplitude`` (2 I m g l/(Is S)²) sin θ0 (rad,
+    released from rest only), ``mean_precession_rate`` β/(2a) (rad/s), and each one's
+    ``..._rel_error`` (estimate - exact)/exact (None where the exact value is 0 or undefined)."""
 
     nutation_frequency: float
     nutation_amplitude: float | None
@@ -84,24 +76,12 @@ class FastTop:
 
 @dataclass(frozen=True)
 class EllipticSolution:
-    """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t).
-
-    Attributes
-    ----------
-    m, m1 : float — elliptic parameter (u2-u1)/(u3-u1) and its complement 1 - m
-    lam : float — 1/s, λ = ½ sqrt(β (u3 - u1))
-    tau0 : float — the phase at t = 0, in [-K, K] (τ = 0 is the greatest tilt, u = u1)
-    am0 : float — rad, am(τ0 | m)
-    K : float — K(m)
-    band : float — u2 - u1
-    one_minus_u1, one_plus_u1, one_minus_u2 : float — 1 - u1, 1 + u1, 1 - u2
-    cp, cm : float — 1/s, (b - a)/(2(1 - u1)) and (b + a)/(2(1 + u1))
-    n_plus, n_plus1 : float — n+ = (u2-u1)/(1-u1) and 1 - n+
-    n_minus, n_minus1 : float — the characteristic -(u2-u1)/(1+u1) and 1 minus it
-    Pi_plus, Pi_minus : float — Π(n+|m), Π(n-|m) (with n- the negative characteristic)
-    top_jump, bottom_jump : float — ±1 when the axis passes exactly through the upward
-        (u2 = 1) or downward (u1 = -1) vertical, where φ jumps by ±π at each passage; else 0
-    """
+    """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t): ``m``, ``m1``
+    ((u2-u1)/(u3-u1), 1 - m), ``lam`` (1/s, ½ sqrt(β (u3 - u1))), ``tau0`` (in [-K, K]; τ = 0
+    at the greatest tilt), ``am0``, ``K``, ``band`` (u2 - u1), ``one_minus_u1``,
+    ``one_plus_u1``, ``one_minus_u2``, ``cp``, ``cm`` (1/s), ``n_plus``, ``n_minus`` and their
+    complements, ``Pi_plus``, ``Pi_minus`` (Π(n±|m)), and ``top_jump``, ``bottom_jump`` (±1
+    when the axis passes exactly through a pole: φ jumps by ±π there)."""
 
     m: float
     m1: float

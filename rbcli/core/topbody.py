@@ -47,23 +47,10 @@ def _num(x: float) -> str:
 
 @dataclass(frozen=True)
 class TopParams:
-    """Mass properties of a symmetric top about its pivot.
-
-    Attributes
-    ----------
-    mass : float — kg
-    length : float — m, distance l from the pivot to the centre of mass
-    I : float — kg m^2, moment about the pivot across the symmetry axis (I_cm + m l²)
-    Is : float — kg m^2, moment about the symmetry axis
-    axis : tuple[float, float, float] | None — unit symmetry axis e3 in the body frame,
-        pointing from the pivot to the com (None when built from numbers)
-    pivot : tuple[float, float, float] | None — m, body frame
-    com : tuple[float, float, float] | None — m, body frame
-    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
-        above rounding, within the tolerance): how far it departs, and its real inertia
-        tensor about the pivot; I is then the mean of the two moments across (None for a
-        body symmetric to rounding)
-    """
+    """Mass properties of a symmetric top about its pivot: ``mass`` (kg), ``length`` l from the
+    pivot to the com (m), ``I`` across the axis (I_cm + m l²) and ``Is`` about it (kg m^2);
+    with a body, ``axis`` e3 (pivot to com), ``pivot``, ``com`` (body frame) and ``asymmetry``
+    (a nearly symmetric body's departures and real tensor; I is then the mean across)."""
 
     mass: float
     length: float

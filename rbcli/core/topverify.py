@@ -103,18 +103,9 @@ def _what(motion: TopMotion, T: float) -> str:
 
 def integrate(rhs, y0: np.ndarray, T: float, ts: np.ndarray, *, rtol: float, atol: float,
               max_steps: int | None = None, what: str = "") -> tuple[np.ndarray, int]:
-    """DOP853 from t = 0 to ``T`` with at most ``max_steps`` steps: the state at the times
-    ``ts`` (increasing, within [0, T]; shape ``(len(ts), len(y0))``) and the number of
-    right-hand-side evaluations.
-
-    The same steps and dense output as ``scipy.integrate.solve_ivp(..., method="DOP853",
-    t_eval=ts)``, with a bound on the work.
-
-    Raises
-    ------
-    TooLong
-        more than ``max_steps`` steps would be needed; ``what`` describes the span.
-    """
+    """DOP853 from t = 0 to ``T`` (the steps and dense output of ``solve_ivp(...,
+    method="DOP853", t_eval=ts)``) with at most ``max_steps`` steps: the states at ``ts``
+    (len(ts), len(y0)) and the right-hand-side evaluations. :class:`TooLong` beyond it."""
     from scipy.integrate import DOP853
 
     limit = MAX_STEPS if max_steps is None else int(max_steps)
@@ -252,21 +243,10 @@ def verify(
 
 @dataclass(frozen=True)
 class RealBodyCheck:
-    """A nearly symmetric body integrated as it is, against the symmetrised closed form.
-
-    The closed form answers for the body with its two moments across the axis replaced by
-    their mean; this integrates the real body (its full inertia tensor about the pivot) from
-    the same start and measures how far its motion is from that answer.
-
-    Attributes
-    ----------
-    t_end : float — s, the span integrated (that of :func:`verify`)
-    samples : int — comparison times
-    max_axis_error : float — rad (chord), max |e3_closed - e3_real|
-    max_theta_error, max_phi_error : float — rad, largest differences of θ and φ
-    energy_drift : float — max |E - E0|/(T0 + m g l) of the integration (its accuracy)
-    nfev : int — right-hand-side evaluations
-    """
+    """The real (unsymmetrised) body integrated from the same start, against the symmetrised
+    closed form: ``t_end`` (s), ``samples``, ``max_axis_error`` (rad, chord),
+    ``max_theta_error``, ``max_phi_error`` (rad), ``energy_drift`` (the integration's
+    accuracy) and ``nfev``."""
 
     t_end: float
     samples: int

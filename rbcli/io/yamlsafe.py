@@ -1,24 +1,13 @@
 """The safe YAML loader that every body file goes through.
 
-``load`` turns the text of a body file into a small tree of :class:`Node` objects,
-each carrying the 1-based line and column where it starts, so that later layers can
-report ``file:line:col: message`` for any value. It refuses, with a located
-:class:`~rbcli.errors.InputError` and never any other exception:
-
-- files over :data:`MAX_BYTES`, text that is not UTF-8, control characters;
-- nesting deeper than :data:`MAX_DEPTH` (checked on libyaml's iterative event
-  stream; the tree is built from those events, so PyYAML's recursive composer,
-  which crashes at ~30 000 levels, is never used);
-- anchors and aliases (the "billion laughs" file), explicit tags (``!!python/...``),
-  more than one document, an empty document;
-- keys that are not names, duplicate keys, merge keys (``<<``);
-- integers with more than 300 digits.
-
-Plain (unquoted) scalars are resolved by the YAML 1.2 *core* schema, not by
-PyYAML's YAML 1.1 resolver: ``1e3`` is the float 1000.0, ``no``/``off``/``yes`` are
-strings, ``1:30`` is a string, ``017`` is the integer 17. Quoted and block scalars
-are always strings.
-"""
+:func:`load` turns a body file into a tree of :class:`Node` objects, each with its 1-based
+line and column (for ``file:line:col: message``). It refuses with a located
+:class:`~rbcli.errors.InputError`, never another exception: files over :data:`MAX_BYTES`,
+text not UTF-8, control characters; nesting deeper than :data:`MAX_DEPTH` (on libyaml's
+iterative event stream: PyYAML's recursive composer, which crashes at ~30 000 levels, is
+never used); anchors, aliases, explicit tags, several or empty documents; keys that are not
+names, duplicate and merge keys; integers over 300 digits. Plain scalars follow the YAML
+1.2 *core* schema (``1e3`` a float, ``no`` and ``1:30`` strings, ``017`` the integer 17)."""
 
 from __future__ import annotations
 

@@ -14,23 +14,9 @@ from rbcli.core.balance.frame import Unbalance, plane_unbalances
 
 
 def permissible_unbalance(grade: float, speed: float, mass: float) -> tuple[float, float]:
-    """ISO 21940-11 permissible specific and total residual unbalance.
-
-    Parameters
-    ----------
-    grade : float — G in mm/s (the number in "G 6.3"), 0.4 <= G <= 4000
-    speed : float — rad/s, maximum service speed Omega, > 0
-    mass : float — kg, rotor mass
-
-    Returns
-    -------
-    (e_per, U_per) : (float, float) — m and kg m
-
-    Notes
-    -----
-    Sheet §1.2: ``e_per = G / Omega`` with G in m/s (G[mm/s] * 1e-3), ``U_per = e_per M``.
-    Shop form: U_per[g mm] = 9549.2966 G M[kg] / n[rpm].
-    """
+    """ISO 21940-11 permissible residual unbalance (e_per m, U_per kg m) of grade G (mm/s,
+    0.4 to 4000) at speed Omega (rad/s) for mass M (kg): ``e_per = G / Omega`` (G in m/s),
+    ``U_per = e_per M`` (sheet §1.2; shop form U_per[g mm] = 9549.2966 G M[kg] / n[rpm])."""
     G = finite(grade, "grade")
     if not ISO_GRADE_MIN <= G <= ISO_GRADE_MAX:
         raise BalanceValueError(
@@ -45,18 +31,8 @@ def permissible_unbalance(grade: float, speed: float, mass: float) -> tuple[floa
 
 
 def achieved_grade(residual_unbalance: float, mass: float, speed: float) -> float:
-    """Achieved balance grade of a residual unbalance, mm/s.
-
-    Parameters
-    ----------
-    residual_unbalance : float — kg m
-    mass : float — kg
-    speed : float — rad/s
-
-    Notes
-    -----
-    Sheet §1.2: ``G = |U| / M * Omega`` (m/s), times 1e3 for mm/s.
-    """
+    """Achieved balance grade (mm/s) of a residual unbalance (kg m) for mass (kg) at speed
+    (rad/s): ``G = |U| / M * Omega`` (sheet §1.2)."""
     U = abs(finite(residual_unbalance, "unbalance", "residual_unbalance"))
     return U / positive(mass, "mass") * abs(finite(speed, "speed")) * 1e3
 

@@ -56,19 +56,10 @@ class CriticalSpeed:
 
 @dataclass(frozen=True, eq=False)
 class Missing:
-    """A branch that never meets the n× line, and why.
-
-    Attributes
-    ----------
-    order : int
-    whirl : str — "forward" or "backward"
-    kind : str — "conical" (the tilt branch) or the branch's kind
-    reason : str — "gyroscopic" (n It < Ip: the forward conical whirl outruns the line),
-        "coincident" (n It = Ip exactly: met at infinite speed) or "range" (no crossing
-        between ``lo`` and ``hi``, the speeds searched)
-    It, Ip : float — kg m²
-    lo, hi : float — rad/s, the speeds searched (reason "range")
-    """
+    """A branch that never meets the n× line, and why: ``order``, ``whirl`` ("forward",
+    "backward"), ``kind``, ``reason`` ("gyroscopic": n It < Ip, the forward conical whirl
+    outruns the line; "coincident": n It = Ip; "range": no crossing between ``lo`` and ``hi``,
+    rad/s), ``It``, ``Ip`` (kg m²)."""
 
     order: int
     whirl: str
@@ -134,18 +125,8 @@ def _solved(rotor: Rotor, orders: tuple[int, ...], span: tuple[float, float]):
 
 
 def critical_speeds(rotor: Rotor, orders: tuple[int, ...] = (1,)) -> tuple[list[CriticalSpeed], list[Missing]]:
-    """The undamped critical speeds of ``orders`` (see the module docstring), and the
-    branches that never meet their line.
-
-    Parameters
-    ----------
-    rotor : Rotor — its conservative part is taken here
-    orders : tuple of int — n >= 1
-
-    Returns
-    -------
-    (list of CriticalSpeed sorted by speed, list of Missing)
-    """
+    """The undamped critical speeds of ``orders`` (n >= 1) of the rotor's conservative part,
+    sorted by speed, and the branches that never meet their line (``Missing``)."""
     r = rotor.conservative_part()
     out, missing = _solved(r, orders, r.speed_span()) if r.varying else _exact(r, orders)
     out.sort(key=lambda c: (c.speed, c.order))
@@ -198,19 +179,10 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
 
 
 def critical_map(rotor: Rotor, stiffness) -> tuple[np.ndarray, list[tuple[str, str]]]:
-    """The undamped critical speed map (API 684's first look at a rotor): the order-1
-    critical speeds of the rotor on its bearing positions with every bearing an isotropic
-    spring k and no damping, for each k of ``stiffness`` (N/m, (K,)).
-
-    ``(k S - Omega^2 B) U = 0`` with ``S = sum [[1, a_i], [a_i, a_i^2]]`` and B the
-    forward or backward mass matrix of :func:`critical_speeds`, so each critical speed is
-    ``c sqrt(k)``: a straight line of slope 1/2 on log-log axes (a rigid rotor: no shaft
-    bending flattens it).
-
-    Returns
-    -------
-    ((K, B) ndarray rad/s, [(whirl, kind)] of the B branches, by speed at k = 1)
-    """
+    """The undamped critical speed map (API 684): the order-1 critical speeds with every bearing
+    an isotropic spring k, for each k of ``stiffness`` (N/m, (K,)): ``(k S - Omega^2 B) U = 0``,
+    ``S = sum [[1, a_i], [a_i, a_i^2]]``, so each is ``c sqrt(k)``. Returns ((K, B) rad/s, the
+    B branches' (whirl, kind) by speed at k = 1)."""
     unit = Rotor(rotor.mass, rotor.It, rotor.Ip, rotor.z_com,
                  tuple(Bearing(b.z, 1.0, 1.0) for b in rotor.bearings))
     crits, _ = _exact(unit, (1,))

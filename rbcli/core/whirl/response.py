@@ -198,18 +198,11 @@ def forcing_vector(forcing: Forcing) -> np.ndarray:
 
 
 def excitation(rotor: Rotor, forcing: Forcing, speed: float, eigenvalue: complex, whirl: str) -> float:
-    """How much the unbalance drives the undamped mode of eigenvalue ``eigenvalue`` at its
-    critical speed ``speed`` (order 1; of the rotor's conservative part, as
-    :func:`rbcli.core.whirl.critical.critical_speeds` finds them), relative: |y^H f| /
-    (|y| |f|) with y the mode's left null vector (smallest left singular vector) of the
-    dynamic stiffness Z(lambda) = lambda^2 M + lambda Omega G + K.
-
-    Forces and moments weigh alike (tilts scaled by the radius of gyration sqrt(It/m)). A
-    conservative Z(i Omega) is Hermitian: y is the mode itself. On isotropic bearings Z is
-    taken in the directional coordinates, where the unbalance is a forward circular forcing
-    [U, P_G]: it has no part along a backward mode (exactly 0), and a forward and a backward
-    mode at one speed (a symmetric rotor's cylindrical pair) are told apart. 0 when there is
-    no unbalance."""
+    """How much the unbalance drives the undamped order-1 mode of ``eigenvalue`` at its critical
+    ``speed``, relative: |y^H f| / (|y| |f|), y the left null vector of
+    Z(lambda) = lambda^2 M + lambda Omega G + K (tilts scaled by sqrt(It/m)). On isotropic
+    bearings Z is taken in directional coordinates, where the unbalance is forward forcing:
+    0 along a backward mode. 0 without unbalance."""
     r = rotor.at(speed).conservative_part()
     rho = math.sqrt(r.It / r.mass)
     if r.isotropic:
@@ -242,18 +235,9 @@ EXCITED_RTOL = 1e-8
 
 @dataclass(frozen=True, eq=False)
 class Peak:
-    """A resonance peak of one bearing's response.
-
-    Attributes
-    ----------
-    bearing : int — index of the bearing
-    speed : float — rad/s, Nc (the peak)
-    amplitude : float — m, the peak's semi-major axis
-    half_power : (float, float) | None — rad/s, (N1, N2) where the amplitude is the
-        peak's 1/sqrt(2); None when the curve does not fall that far on both sides before
-        rising into another peak (AF not defined)
-    amplification_factor : float | None — Nc/(N2 - N1)
-    """
+    """A resonance peak of one bearing's response: ``bearing`` (index), ``speed`` Nc (rad/s),
+    ``amplitude`` (m, semi-major axis), ``half_power`` (N1, N2) rad/s (None when the curve does
+    not fall to 1/sqrt(2) on both sides) and ``amplification_factor`` Nc/(N2 - N1) or None."""
 
     bearing: int
     speed: float
