@@ -24,23 +24,10 @@ _TWO_PI = 2.0 * math.pi
 
 @dataclass(frozen=True, eq=False)
 class VerifyResult:
-    """Exact solution against a numerical integration (:func:`verify`).
-
-    Attributes
-    ----------
-    t_end : float — s, span integrated (from 0)
-    samples : int — number of comparison times
-    rtol : float — DOP853 relative tolerance used
-    nfev : int — right-hand-side evaluations of the integrator
-    omega_error : float — max_t |w_exact - w_num| / |w_exact(t)| (0 at rest)
-    attitude_error : float — rad, max_t angle of R_exact^T R_num
-    numeric_energy_drift, numeric_momentum_drift, numeric_L_drift : float — along the
-        numerical solution: max |T - T0|/T0, max ||L| - |L0||/|L0|, max |R M - L0|/|L0|
-    exact_energy_drift, exact_momentum_drift, exact_L_drift : float — the same along the exact
-        solution (round-off only)
-    tol : float — threshold of ``ok``
-    ok : bool — omega_error, attitude_error and the three exact drifts all <= tol
-    """
+    """Exact solution against a numerical integration (:func:`verify`): ``t_end`` (s),
+    ``samples``, ``rtol``, ``nfev``; ``omega_error`` (max relative), ``attitude_error`` (rad);
+    the drifts of T, |L| and L in space along the numerical (``numeric_*``) and the exact
+    (``exact_*``: round-off only) solutions; ``tol`` and ``ok`` (all of the exact's within it)."""
 
     t_end: float
     samples: int

@@ -25,22 +25,10 @@ EARTH_RATE = 7.2921150e-5
 
 @dataclass(frozen=True)
 class Gyrocompass:
-    """Small oscillation of a gyrocompass about the meridian (see the module docstring).
-
-    Attributes
-    ----------
-    C_over_A : float — axial moment over the moment about the vertical (flat disk: 2)
-    spin : float — rad/s, rotor spin about its axis
-    latitude : float — rad
-    earth_rate : float — rad/s, Ω_E
-    directive : float — 1/s², C S Ω_E cos λ / A (the gyroscopic restoring coefficient)
-    omega0 : float | None — rad/s, sqrt(|directive| - Ω_E² cos² λ); None when there is
-        no restoring torque (at a pole, or a spin too slow to beat the Ω_E² term)
-    omega0_approx : float | None — rad/s, sqrt(|directive|), the usual approximation
-    period : float | None — s, 2π/omega0
-    settles_to : str | None — where the rotor's +axis settles: "north" for S > 0 (the
-        spin vector points north, along the Earth's rotation), "south" for S < 0
-    """
+    """Small oscillation of a gyrocompass about the meridian: ``C_over_A``, ``spin`` (rad/s),
+    ``latitude`` (rad), ``earth_rate`` Ω_E (rad/s), ``directive`` C S Ω_E cos λ / A (1/s²),
+    ``omega0`` sqrt(|directive| - Ω_E² cos² λ) and ``omega0_approx`` sqrt(|directive|) (rad/s;
+    None without a restoring torque), ``period`` (s) and ``settles_to`` ("north" for S > 0)."""
 
     C_over_A: float
     spin: float

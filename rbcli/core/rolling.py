@@ -140,21 +140,12 @@ def _edge_terms(wheel: Wheel, a: float, c: float, g: float) -> tuple[float, floa
 
 
 def edge_nu2(wheel: Wheel, a: float, c: float, g: float, spin: Any) -> Any:
-    """Squared lean frequency (rad^2/s^2) of straight rolling balanced on an edge circle.
-
-    A body of revolution rolling on a sharp edge, a circle of radius a whose plane is c
-    (>= 0) along the axle from the centre of mass G, leaning atan(c/a) onto it so that G is
-    straight above the contact point (l = sqrt(a^2 + c^2) up): that is straight rolling at
-    any spin s, and linearising about it (derived here from the vector equations of sheet
-    §3.1 with the contact-to-G vector a u - c n) gives
-    lambda^4 (lambda^2 + nu^2) = 0 with nu^2 = k2 s^2 + k0,
-    k2 = C (C + m a^2)(C + m l^2) / [Delta (A + m l^2)],
-    k0 = -m g l / (A + m l^2),
-    Delta = (C + m a^2)(A + m c^2) - m^2 a^2 c^2.
-    A + m l^2 is the moment about the fore-aft axis through the contact point; at c = 0 it
-    is the knife edge of sheet §3.2. Checked against the eigenvalues and integrations of the
-    vector equations (tests/test_rollcheck_rims.py).
-    """
+    """Squared lean frequency (rad^2/s^2) of straight rolling balanced on an edge circle of
+    radius a, c (>= 0) along the axle from G, leaning atan(c/a) so that G is above the contact
+    (l = sqrt(a^2 + c^2)). Linearising the vector equations of sheet §3.1 (contact-to-G
+    a u - c n): nu^2 = k2 s^2 + k0, k2 = C (C + m a^2)(C + m l^2) / [Delta (A + m l^2)],
+    k0 = -m g l / (A + m l^2), Delta = (C + m a^2)(A + m c^2) - m^2 a^2 c^2; c = 0 is §3.2's
+    knife edge (tests/test_rollcheck_rims.py)."""
     k2, k0 = _edge_terms(wheel, a, c, g)
     s = np.asarray(spin, dtype=float)
     out = k2 * s * s + k0
@@ -232,23 +223,10 @@ class Verdict:
 def at_speed(
     straight: StraightRolling, v: float | None = None, spin: float | None = None
 ) -> Verdict:
-    """Verdict on straight upright rolling at speed v (m/s) or spin (rad/s).
-
-    Parameters
-    ----------
-    straight : StraightRolling
-    v : float or None — m/s, speed of the centre
-    spin : float or None — rad/s, spin about the axle (omega_3); v = a * spin
-
-    Give one of them, or both when they agree (v = a spin to a relative 1e-9).
-    A negative value means rolling backwards: the verdict uses |spin|.
-
-    Notes
-    -----
-    nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] / [A (A + m a^2)] (sheet §3.2), with A, C about
-    the centre G and C + m a^2, A + m a^2 about the contact point. nu^2 > 0: the lean
-    oscillates at nu (neutral stability, undamped); nu^2 < 0: it grows at sqrt(-nu^2).
-    """
+    """Verdict on straight upright rolling at speed ``v`` (m/s) or ``spin`` (rad/s; v = a spin:
+    one, or both when they agree to 1e-9; negative is backwards, |spin| is used).
+    nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] / [A (A + m a^2)] (sheet §3.2): > 0 the lean
+    oscillates at nu, < 0 it grows at sqrt(-nu^2)."""
     a = straight.radius
     if v is None and spin is None:
         raise ValueError("give a speed or a spin")
@@ -335,19 +313,10 @@ def rollcheck(
     circle_radius: float | None = None,
     band: tuple[float, float] | None = None,
 ) -> RollCheck:
-    """Assemble a :class:`RollCheck`.
-
-    - always: :func:`straight` (or :func:`band_rolling` for a ``band`` (c1, c2), m: then
-      ``r`` must be 0);
-    - ``speed`` and/or ``spin``: :func:`at_speed` (straight rolling at that speed);
-    - ``lean_rad`` and ``circle_radius``: :func:`circle`;
-    - ``circle_radius`` and a speed, no lean: :func:`lean_for`;
-    - ``lean_rad`` and a speed, no circle radius: :func:`radius_for`;
-    - ``lean_rad`` or ``circle_radius`` alone: :class:`rbcli.errors.ParamError`.
-    A circle with a rounded rim (r > 0) raises a ParamError (knife edge only), as does a
-    circle on a band (naming ``lean`` or ``circle``). Errors of the circle name the
-    parameters given (``lean``, ``circle``, ``speed``, ``spin``).
-    """
+    """Assemble a :class:`RollCheck`: :func:`straight` (or :func:`band_rolling` for a ``band``,
+    r = 0); with a speed or spin :func:`at_speed`; with lean and circle :func:`circle`, circle
+    and speed :func:`lean_for`, lean and speed :func:`radius_for`. A lean or circle alone, or
+    a circle on a rounded rim or a band, is a ParamError naming the parameters given."""
     st = straight(wheel, a, r, g) if band is None else band_rolling(wheel, a, band[0], band[1], g)
     if band is not None and (lean_rad is not None or circle_radius is not None):
         raise blame(("lean",) if lean_rad is not None else ("circle",),
@@ -384,22 +353,10 @@ def rollcheck(
 
 @dataclass(frozen=True)
 class Curves:
-    """The arrays of the ``rollcheck`` figure (:func:`curves`), ready to draw.
-
-    Attributes
-    ----------
-    speeds : (N,) ndarray — m/s, speed of the centre from 0 to ``max(2.5 v_c, 1.25 |v|)``
-    nu2 : (N,) ndarray — rad^2/s^2, squared lean frequency of straight rolling at each speed
-    lean_frequency : (N,) ndarray — rad/s, sqrt(nu2) where nu2 > 0, else 0
-    growth_rate : (N,) ndarray — 1/s, sqrt(-nu2) where nu2 < 0, else 0
-    critical_speed : float — m/s, v_c
-    circle_radii : (M,) ndarray or None — m, R_G from 0 to ``max(10 a, 2 R_G asked)``
-        (only with a circle)
-    circle_leans_deg : (K,) ndarray or None — degrees, 0.25 to 85
-    circle_kappa : (K, M) ndarray or None — N m, lean stiffness of each steady circle
-        (> 0 stable)
-    circle_speed : (K, M) ndarray or None — m/s, speed of the centre Omega R_G on each
-    """
+    """The arrays of the ``rollcheck`` figure (:func:`curves`): ``speeds`` (m/s, 0 to
+    ``max(2.5 v_c, 1.25 |v|)``), ``nu2``, ``lean_frequency``, ``growth_rate`` at each,
+    ``critical_speed``; with a circle ``circle_radii`` (m), ``circle_leans_deg`` (0.25 to 85),
+    ``circle_kappa`` (N m) and ``circle_speed`` (m/s) on that grid."""
 
     speeds: np.ndarray
     nu2: np.ndarray

@@ -59,19 +59,9 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class ShapeGeometry:
-    """What a primitive shape contributes, per unit of mass, in its local frame.
-
-    Attributes
-    ----------
-    measure : float — what a density multiplies: m³ (volume), m² (area), m (length),
-        or 1.0 (point)
-    measure_kind : str — ``"volume"``, ``"area"``, ``"length"`` or ``"point"``
-    com : (3,) ndarray — centre of mass in the local frame, m
-    unit_inertia : (3, 3) ndarray — inertia tensor about the com, local axes, per unit
-        mass, m² (tensor convention: off-diagonals ``−∫x y dm / m``); symmetric
-
-    The arrays are read-only.
-    """
+    """What a primitive shape contributes in its local frame (read-only): ``measure`` (m³, m²,
+    m or 1) and its ``measure_kind``, ``com`` (m) and ``unit_inertia`` (m², about the com per
+    unit mass, tensor convention)."""
 
     measure: float
     measure_kind: str
@@ -105,20 +95,10 @@ DIAMETERS = {"diameter": "radius", "inner_diameter": "inner_radius"}
 
 @dataclass(frozen=True)
 class RimRule:
-    """How a round shape touches a level floor when it rolls on its outer rim (``rollcheck``).
-
-    Attributes
-    ----------
-    kind : str — ``"edge"`` (a circle: a knife edge), ``"torus"`` (a circle swept by a ball:
-        a rounded tyre), ``"sphere"`` or ``"band"`` (a flat band: a cylinder on its side)
-    plane_from_com : callable ``(outer radius m, measure) -> m`` — where the rim circle (a
-        band's middle) lies along the local z axis from the part's centre of mass
-    tube_radius : callable ``(params) -> m`` — the rim's tube (tyre) radius r: 0 for an
-        edge or a band, the tube's for a torus, the radius for a sphere
-    width : callable ``(params) -> m`` — a band's width along local z (0 for the others)
-
-    ``params`` are the shape's checked parameters in SI (a part's ``outline.dims``).
-    """
+    """How a round shape touches a level floor when it rolls on its outer rim: ``kind``
+    (``"edge"``, ``"torus"``, ``"sphere"``, ``"band"``), ``plane_from_com(outer radius,
+    measure)`` (m, the rim's plane along local z from the com), ``tube_radius(params)`` and
+    ``width(params)`` (m; ``params`` the checked SI parameters)."""
 
     kind: str
     plane_from_com: Callable[[float, float | None], float]
@@ -602,19 +582,8 @@ def builder(shape: str) -> Callable[[dict[str, Any]], _Raw]:
 
 
 def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:
-    """:func:`geometry` without its arrays, for the body loader (one call a part).
-
-    Returns
-    -------
-    (measure, measure_kind, com, unit_inertia)
-        As :class:`ShapeGeometry`, but ``com`` may be a 3-tuple and ``unit_inertia`` the
-        3-tuple of the diagonal of a diagonal tensor (else a (3, 3) array).
-
-    Raises
-    ------
-    ShapeError
-        As :func:`geometry`.
-    """
+    """:func:`geometry` without its arrays, for the body loader: (measure, measure_kind, com,
+    unit_inertia), ``com`` possibly a 3-tuple and ``unit_inertia`` a diagonal's 3-tuple."""
     if shape in IO_SHAPES:
         raise ShapeError(
             "shape",

@@ -69,25 +69,9 @@ def canonical_unit(text: str) -> str:
 
 
 def parse_unit(text: str) -> tuple[float, Dim]:
-    """Read a unit expression: its factor to SI and its dimension.
-
-    Parameters
-    ----------
-    text : str
-        E.g. ``"g/cm^3"``, ``"kg*m^2"``, ``"rev/min"``.
-
-    Returns
-    -------
-    factor : float
-        What one of this unit is in SI (m, kg, s, rad), computed exactly and rounded
-        once: ``parse_unit("g/cm^3") == (1000.0, Dim(M=1, L=-3))``.
-    dim : Dim
-
-    Raises
-    ------
-    UnitError
-        Unknown names (with a "did you mean"), bad syntax, powers beyond +-12.
-    """
+    """Read a unit expression (``"g/cm^3"``, ``"kg*m^2"``, ``"rev/min"``): (its factor to SI,
+    exact and rounded once, its Dim); ``parse_unit("g/cm^3") == (1000.0, Dim(M=1, L=-3))``.
+    UnitError for unknown names (with a "did you mean"), bad syntax, powers beyond +-12."""
     text = check_text(text, "a unit")
     q, p, d = parse_unit_exact(text)
     return to_float(q, p, text.strip()), d

@@ -23,20 +23,10 @@ from rbcli.core.balance.frame import Unbalance, add_point_masses, plane_unbalanc
 
 @dataclass(frozen=True, eq=False)
 class PlaneCorrection:
-    """One correction mass to ADD (remove it at ``remove_angle_deg``).
-
-    Attributes
-    ----------
-    name : str — "A", "B" or "static"
-    z : float | None — m, plane position along the shaft (None for the static correction,
-        which may go in any plane)
-    radius : float — m
-    unbalance : complex — kg m, the correction C (shaft frame, 'with rotation' sense)
-    mass : float — kg, |C| / radius
-    angle_deg : float — deg, reported sense, [0, 360); 0.0 when undefined
-    angle_defined : bool — False when the correction is zero (to tolerance)
-    remove_angle_deg : float — deg, angle_deg + 180 (mod 360)
-    """
+    """One correction mass to ADD (or remove at ``remove_angle_deg``): ``name`` ("A", "B",
+    "static"), ``z`` (m; None for the static one), ``radius`` (m), ``unbalance`` C (kg m),
+    ``mass`` |C|/radius (kg), ``angle_deg`` (reported sense; ``angle_defined`` False when
+    zero)."""
 
     name: str
     z: float | None
@@ -65,21 +55,10 @@ def _plane_correction(
 
 @dataclass(frozen=True, eq=False)
 class Residual:
-    """Unbalance of the rotor with corrections added (sheet §1.5 step 4).
-
-    Attributes
-    ----------
-    mass : float — kg, rotor plus correction masses
-    static : complex — kg m, U + sum C
-    moment : complex — kg m^2, P + sum z C, about z = 0
-    couple : complex — kg m^2, about the com of the corrected rotor
-    planes : (float, float) — m, the correction planes
-    plane_unbalances : (complex, complex) — kg m, equivalent residual unbalances in the
-        correction planes (sheet §2.5)
-    eccentricity : float — m, |static| / mass
-    tol_static, tol_couple, tol_plane : float — tolerances used for the angle flags
-    angle_sense : str
-    """
+    """Unbalance of the rotor with corrections added (sheet §1.5 step 4): ``mass`` (kg),
+    ``static`` U + sum C (kg m), ``moment`` about z = 0 and ``couple`` about the new com
+    (kg m^2), ``planes``, ``plane_unbalances`` (kg m, §2.5), ``eccentricity`` (m), the
+    tolerances of the angle flags and ``angle_sense``."""
 
     mass: float
     static: complex
@@ -318,23 +297,10 @@ def round_corrections(
     *,
     bearings: object | None = None,
 ) -> Corrections:
-    """Round correction masses and angles, and recompute the residual.
-
-    Parameters
-    ----------
-    corr : Corrections — ideal (or already rounded: the ideal ones are rounded again)
-    mass_step : float, optional — kg, > 0; masses go to the nearest multiple
-    angle_step_deg : float, optional — deg, in (0, 360]; reported angles go to the nearest
-        multiple (in the reported sense, so "against" shops get their own multiples)
-    bearings : (z_1, z_2), optional — for the narrow-plane rule, as in :func:`corrections`;
-        default: the bearings the ideal corrections were computed with
-
-    Returns
-    -------
-    Corrections — ``rounded=True``, ``ideal`` = the unrounded corrections, and
-    ``residual`` = the unbalance of the rotor with the ROUNDED masses added (sheet §1.5
-    step 4): ``U_res = U + C_A' + C_B'``, ``P_res = P + z_A C_A' + z_B C_B'``.
-    """
+    """Round correction masses (to ``mass_step`` kg) and reported angles (to ``angle_step_deg``,
+    in the reported sense) of ``corr`` (its ideal ones), and recompute the residual with the
+    ROUNDED masses (sheet §1.5 step 4: ``U_res = U + C_A' + C_B'``, ``P_res = P + z_A C_A' +
+    z_B C_B'``); ``bearings`` as :func:`corrections`."""
     if mass_step is not None:
         mass_step = positive(mass_step, "mass step", "mass_step")
     if angle_step_deg is not None:
@@ -482,22 +448,10 @@ def split_to_positions(
 
 @dataclass(frozen=True, eq=False)
 class PositionCorrections:
-    """Two-plane corrections split onto n equally spaced positions (holes, blades).
-
-    Attributes
-    ----------
-    ideal : Corrections — the unrounded two-plane corrections that were split
-    n_positions : int
-    pitch_deg : float — deg, 360 / n
-    offset_deg : float — deg, reported angle of position 1 (default 0: on the mark)
-    splits : (Split, Split) — planes A and B: masses (kg, rounded if ``mass_step``) at
-        reported angles; ``positions`` are 1-based position numbers (position k sits at
-        offset + (k - 1) pitch in the reported sense)
-    mass_step : float | None — kg
-    corrections : Corrections — each plane's net correction (the vector sum of its two
-        masses) with the residual of the rotor with all four masses added (their real
-        masses in the com shift); ``rounded`` iff ``mass_step`` was given
-    """
+    """Two-plane corrections split onto n equally spaced positions: ``ideal``, ``n_positions``,
+    ``pitch_deg``, ``offset_deg`` (position 1's angle), ``splits`` (per plane, the masses at
+    1-based ``positions``), ``mass_step`` and ``corrections`` (each plane's net and the
+    residual with all four masses)."""
 
     ideal: Corrections
     n_positions: int

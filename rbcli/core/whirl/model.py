@@ -252,20 +252,10 @@ class Rotor:
 
 @dataclass(frozen=True, eq=False)
 class ModeShape:
-    """What a mode looks like along the shaft.
-
-    Attributes
-    ----------
-    whirl : str — "forward" (the same sense as the spin), "backward", "linear" (a
-        straight-line orbit, forward and backward parts equal to :data:`LINEAR_TOL`: e.g.
-        anisotropic bearings at rest) or "none" (a non-oscillating, overdamped motion)
-    forward_share : float — the forward part of the mode's whirl, by kinetic weight
-        ``(m |r_f|^2 + It |phi_f|^2) / (... forward + backward)``, 0..1 (1 for a forward
-        circular whirl, 0.5 for motion in a line): its forward/backward index
-    kind : str — "cylindrical", "conical" or "mixed" (see :func:`shapes`)
-    node : float | None — m, position along the shaft where the (dominant whirl
-        component of the) motion is least; None for pure translation (node at infinity)
-    """
+    """What a mode looks like along the shaft: ``whirl`` ("forward", "backward", "linear" or
+    "none"), ``forward_share`` (the forward part by kinetic weight, 0..1), ``kind``
+    ("cylindrical", "conical", "mixed": :func:`shapes`) and ``node`` (m; None for pure
+    translation)."""
 
     whirl: str
     forward_share: float

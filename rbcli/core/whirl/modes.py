@@ -40,20 +40,10 @@ _PERMS = np.array(list(itertools.permutations(range(4))))
 
 @dataclass(frozen=True, eq=False)
 class Mode:
-    """One whirl mode at one speed.
-
-    Attributes
-    ----------
-    eigenvalue : complex — 1/s, lambda (the root with Im lambda >= 0 for real-coordinate
-        modes; the directional root, sign of Im = whirl, for isotropic bearings)
-    frequency : float — rad/s, |Im lambda|, fixed frame (0 for a non-oscillating mode)
-    damping_ratio : float — -Re lambda/|lambda|
-    log_decrement : float | None — -2 pi Re lambda/|Im lambda| (None when not oscillating)
-    shape : ModeShape — whirl direction, forward/backward index, kind and node
-    vector : (4,) complex ndarray — the shape weighted for comparisons between modes of one
-        rotor (MAC), unit norm: [sqrt(m) r_f, sqrt(It) phi_f, sqrt(m) r_b, sqrt(It) phi_b]
-    growing : bool — Re lambda > GROWTH_RTOL |lambda|
-    """
+    """One whirl mode at one speed: ``eigenvalue`` lambda (1/s), ``frequency`` |Im lambda|
+    (rad/s, fixed frame), ``damping_ratio``, ``log_decrement``, ``shape`` (:class:`ModeShape`),
+    ``vector`` (unit, mass-weighted [r_f, phi_f, r_b, phi_b] for the MAC) and ``growing``
+    (Re lambda > GROWTH_RTOL |lambda|)."""
 
     eigenvalue: complex
     frequency: float
