@@ -488,10 +488,8 @@ def balance(body: Body, **kwargs: Any) -> BalanceResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad or missing value, naming the parameter.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter.
 
     Examples
     --------

@@ -176,11 +176,9 @@ def gyrocompass(body: Body | None = None, **kwargs: Any) -> GyrocompassResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        Naming the parameter: a value out of range, both or neither of ``body`` and
-        ``ratio``, a body not symmetric about its spin axis.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter: both or
+        neither of ``body`` and ``ratio``, a body not symmetric about its spin axis.
 
     Examples
     --------

@@ -1,17 +1,7 @@
-"""Mass, centre of mass and the inertia tensor about a point: :func:`inertia` (``rbcli inertia``),
-and what :mod:`rbcli.api.principal` shares with it: the point an inertia is taken about
-(:class:`Reference`), the warnings of a point far outside the body, the parts' rows of the JSON.
-
-::
-
-    import rbcli
-    body = rbcli.load("examples/square_lamina.yaml")
-    r = rbcli.inertia(body, about="origin", axis=[1, 1, 0])
-    r.axis_moment            # kg m^2, about the diagonal through the corner
-
-Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
-off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
-"""
+"""Mass, centre of mass and the inertia tensor about a point: :func:`inertia`
+(``rbcli inertia``), and what :mod:`rbcli.api.principal` shares with it: the point an
+inertia is about (:class:`Reference`), the warnings of a far point, the parts' JSON rows.
+The tensor is ``J = ∫ (r·r E − r rᵀ) dm`` (``Jxy = −∫ x y dm``)."""
 
 from __future__ import annotations
 
@@ -253,10 +243,9 @@ def inertia(body: Body, **kwargs: Any) -> InertiaResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad value, naming the parameter; a point so far away that the inertia overflows.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a point so
+        far away that the inertia overflows.
 
     Notes
     -----

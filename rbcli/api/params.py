@@ -1,20 +1,13 @@
 """Each command's parameters, declared once.
 
-A command's parameters are a tuple of :class:`Param` (``PARAMS`` in
-``rbcli/api/<command>.py``): its name, how a value is read (``kind``, and the quantity it
-measures), its help text, and, for the command line, its flag and default. Made from it:
-
-- the public function's signature, its argument checks (:mod:`rbcli.api.check`) and the
-  *Parameters* section of its docstring (:func:`function`);
-- the values read into SI once, by the unit rule of :mod:`rbcli.api.options`, kept with
-  what the caller gave and typed (:func:`read` -> :class:`Options`);
-- the command's typer options, its ``--help`` and man page (:func:`rbcli.cli.common.command`);
-- the options echo (:func:`rbcli.render.echo.echo_rows`) and the CSV unit of each value
-  echoed in the JSON (:func:`si_unit`).
-
-A help text serves both sides: ``{param}`` names a parameter, spelled ``stiffness_y`` in a
-docstring and ``--stiffness-y`` in ``--help`` (:func:`rbcli.errors.spell`).
-"""
+A command's parameters are a tuple of :class:`Param` (its table in
+:mod:`rbcli.api.commands`): name, how a value is read (``kind``, ``quantity``), help, and
+the command line's form and default. Made from it: the public function's signature, door
+checks and *Parameters* (:func:`function`); the values read into SI once (:func:`read` ->
+:class:`Options`); the typer options, ``--help`` and man page
+(:func:`rbcli.cli.common.command`); the options echo (:func:`rbcli.render.echo.echo_rows`)
+and the CSV unit of each echoed value (:func:`si_unit`). In a help text ``{param}`` names a
+parameter: ``stiffness_y`` in a docstring, ``--stiffness-y`` in ``--help``."""
 
 from __future__ import annotations
 

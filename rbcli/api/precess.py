@@ -161,10 +161,9 @@ def precess(body: Body, **kwargs: Any) -> PrecessResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad value, naming the parameter; an inertia not positive definite; a time too far.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; an inertia
+        not positive definite; a time too far.
 
     Examples
     --------

@@ -132,10 +132,9 @@ def principal(body: Body, **kwargs: Any) -> PrincipalResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad ``about``, or a point so far away that the inertia overflows.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a point so
+        far away that the inertia overflows.
 
     Notes
     -----

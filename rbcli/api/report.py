@@ -480,10 +480,8 @@ def report(body: Body, **kwargs: Any) -> ReportResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        naming the parameter, for a value a command refuses.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value a command refuses, naming the parameter.
 
     Examples
     --------

@@ -444,10 +444,9 @@ def rollcheck(body: Body, **kwargs: Any) -> RollcheckResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        Naming the parameter, or located in the body's file for a body that cannot roll.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; located in
+        the body's file for a body that cannot roll.
 
     Examples
     --------

@@ -301,10 +301,9 @@ def top(body: Body, **kwargs: Any) -> TopResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        Naming the parameter: a value out of range, a body that is not a top about this pivot.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a body that
+        is not a top about this pivot.
 
     Examples
     --------

@@ -579,10 +579,9 @@ def whirl(body: Body, **kwargs: Any) -> WhirlResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad or missing value (``bearings: ...``), or a rotor the model does not fit.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a rotor the
+        model does not fit.
 
     Examples
     --------
