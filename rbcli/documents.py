@@ -1,11 +1,7 @@
-"""Documents from Python: the report's text, or the report written to a file.
-
-The library's counterpart of what ``rbcli report`` does: compute with :mod:`rbcli.api`
-(:func:`rbcli.report`), lay out with :mod:`rbcli.render` (:mod:`rbcli.render.reportdoc`,
-HTML or Markdown) and write with :mod:`rbcli.io.outfile` (never over an input, never
-through a link, all or nothing, an existing file only with ``force``). The command line
-uses these same functions, so a document made here has the bytes the command writes.
-"""
+"""Documents from Python: the report's text, or the report written to a file, computed by
+:mod:`rbcli.api`, laid out by :mod:`rbcli.render.reportdoc` and written by
+:mod:`rbcli.io.outfile` (never over an input, all or nothing). The command line uses these
+same functions: the same bytes."""
 
 from __future__ import annotations
 

@@ -1,12 +1,6 @@
-"""The gyrocompass as a service: :func:`gyrocompass` (``rbcli gyrocompass``).
-
-A rotor spinning about its axis, the axis held horizontal and free to turn about the
-vertical, on the rotating Earth swings about north: ``rbcli.gyrocompass(ratio=2, spin="6000
-rpm", latitude=30)`` is ``rbcli gyrocompass --ratio 2 --spin '6000 rpm' --latitude 30``.
-The physics is :mod:`rbcli.core.gyrocompass`; values are read by :mod:`rbcli.api.options`
-(SI numbers, or strings as typed on the command line); errors are
-:class:`rbcli.errors.InputError` naming the parameter.
-"""
+"""The gyrocompass as a service: :func:`gyrocompass` (``rbcli gyrocompass``): a rotor whose
+axis is held horizontal on the rotating Earth swings about north
+(:mod:`rbcli.core.gyrocompass`)."""
 
 from __future__ import annotations
 

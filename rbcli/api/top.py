@@ -1,12 +1,6 @@
-"""The heavy top as a service: :func:`top` (``rbcli top``).
-
-``rbcli.top(body, spin=..., theta=...)`` is ``rbcli top BODY --spin ... --theta ...``:
-the exact closed-form motion of a symmetric top on a fixed pivot (Goldstein, Poole and
-Safko, *Classical Mechanics*, 3rd ed., §5.7), optionally checked against a numerical
-integration (``verify=True``). The gyrocompass is :mod:`rbcli.api.gyrocompass`. Values
-are read by :mod:`rbcli.api.options` (SI numbers, or strings as typed on the command
-line); errors are :class:`rbcli.errors.InputError` with the command line's message.
-"""
+"""The heavy top as a service: :func:`top` (``rbcli top``): the exact closed-form motion
+of a symmetric top on a fixed pivot (Goldstein, Poole and Safko §5.7), optionally checked
+against a numerical integration (``verify=True``)."""
 
 from __future__ import annotations
 

@@ -1,15 +1,10 @@
 """The rotor on its bearings: the service behind ``rbcli whirl``.
 
-:func:`whirl` reads its parameters once (:data:`rbcli.api.commands.WHIRL`, :func:`parse`: SI numbers or
-quantity strings, the bare-number rule of :mod:`rbcli.api.options`), builds the rigid rotor from
-the body (mass, com, the moments about the com in shaft axes, its unbalance: what
-:mod:`rbcli.core.balance` computes) on linear spring-damper bearings, and runs the physics
-of :mod:`rbcli.core.whirl`: the Campbell diagram over a speed range, the critical speeds
-(undamped: an eigenproblem in the speed; damped: a root solve), the stability, the
-unbalance response with its peaks and amplification factors, and at an operating speed
-the API 617 / 684 separation margins. The result (:class:`WhirlResult`) is frozen; its
-attribute names are its JSON keys and its arrays are read-only.
-"""
+:func:`parse` reads the parameters (:data:`rbcli.api.commands.WHIRL`); :func:`run` builds
+the rigid rotor from the body (mass, com, moments in shaft axes, its unbalance) on linear
+bearings and runs :mod:`rbcli.core.whirl`: the Campbell diagram, critical speeds,
+stability, the unbalance response and, at an operating speed, the API 617 / 684
+separation margins, in a frozen :class:`WhirlResult` whose attributes are its JSON keys."""
 
 from __future__ import annotations
 
