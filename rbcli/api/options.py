@@ -260,18 +260,9 @@ def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
 
 
 class Units:
-    """The bare-number rule for one body (:mod:`rbcli.io.bare`), as the readers apply it.
-
-    A Python number passed to the API is always SI (it never went through a file), except
-    an angle (degrees); a string without a unit is in the body's bare unit of its kind.
-    Commands without a body use SI.
-
-    Parameters
-    ----------
-    base : mapping, optional
-        The body's ``units`` block (:attr:`rbcli.body.model.Body.units`), e.g.
-        ``{"length": "mm", "mass": "g"}``.
-    """
+    """The bare-number rule for one body (:mod:`rbcli.io.bare`) as the readers apply it: a Python
+    number is SI (an angle degrees), a string without a unit is in the body's bare unit of its
+    kind (``base``: its ``units`` block; SI without a body)."""
 
     __slots__ = ("base", "_cache", "typed")
 

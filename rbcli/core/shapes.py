@@ -567,17 +567,9 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
 
 
 def builder(shape: str) -> Callable[[dict[str, Any]], _Raw]:
-    """:func:`local_geometry` of the primitive ``shape`` for parameters already checked as it
-    checks them (none unknown, the required ones present and not None): the body loader's,
-    one call a part.
-
-    Raises
-    ------
-    KeyError
-        ``shape`` is not a primitive shape.
-    ShapeError
-        (from the function returned) as :func:`geometry` for impossible values.
-    """
+    """:func:`local_geometry` of the primitive ``shape`` for parameters already checked: the
+    body loader's, one call a part. KeyError for a shape that is not a primitive; ShapeError
+    as :func:`geometry`."""
     return _BUILDERS[shape]
 
 

@@ -1,15 +1,7 @@
-"""Units: read ``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"`` into SI floats.
-
-Standard library only (this module sits on every command's start-up path).
-
-Model
------
-The unit table (dimensions, kinds, exact factors) is :mod:`rbcli.io.unittable`; the
-grammar of units and quantities :mod:`rbcli.io.unitparse`; this module the conversions
-the rest of rbcli calls. Every factor is exact and the product of a quantity's number and
-its unit is rounded to a float once, at the very end, so ``"7.85 g/cm^3"`` gives exactly
-7850.0, ``"1 in"`` exactly 0.0254 and ``"12 deg"`` the float nearest to 12 pi / 180.
-"""
+"""Units: read ``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"`` into SI floats (standard
+library only). The table is :mod:`rbcli.io.unittable`, the grammar :mod:`rbcli.io.unitparse`;
+factors are exact and a quantity is rounded to a float once, so ``"7.85 g/cm^3"`` is exactly
+7850.0 and ``"1 in"`` exactly 0.0254."""
 
 from __future__ import annotations
 

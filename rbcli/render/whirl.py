@@ -1,14 +1,7 @@
 """Tables, figures and the report section of ``rbcli whirl`` (the JSON is the result's
-own ``to_json()``).
-
-Everything here is formatting: every number comes finished from
-:class:`rbcli.api.whirlresult.WhirlResult`, and every display row (the echo of the
-options as understood included) is built here from it. Tables show speeds and critical
-speeds in rpm and rad/s, whirl frequencies in rad/s and cpm (cycles per minute: on the
-Campbell diagram the 1× line is the diagonal), positions in the display length unit (m
-unless ``--units``), displacements in µm, forces in N, stiffness in N/m and damping in
-N s/m.
-"""
+``to_json()``): formatting only, from :class:`rbcli.api.whirlresult.WhirlResult`. Speeds
+in rpm and rad/s, whirl frequencies in rad/s and cpm, positions in the display length
+unit, displacements in µm, forces in N."""
 
 from __future__ import annotations
 

@@ -31,17 +31,8 @@ SEARCH_POINTS = 121
 
 @dataclass(frozen=True, eq=False)
 class CriticalSpeed:
-    """An undamped critical speed.
-
-    Attributes
-    ----------
-    speed : float — rad/s
-    order : int — n: the whirl frequency is n times the speed
-    shape : ModeShape — whirl (forward/backward), kind and node of the mode there
-    vector : (4,) complex ndarray — the weighted shape (as Mode.vector)
-    eigenvalue : complex — 1/s, the undamped mode's lambda there (i n Omega when
-        conservative; real coordinates: Im > 0; directional: the sign is the whirl)
-    """
+    """An undamped critical speed: ``speed`` (rad/s), ``order`` n, ``shape`` (ModeShape),
+    ``vector`` (as Mode.vector) and ``eigenvalue`` (the undamped lambda there, 1/s)."""
 
     speed: float
     order: int

@@ -72,18 +72,10 @@ class Bearing:
 
 @dataclass(frozen=True, eq=False)
 class BearingTable:
-    """A bearing whose coefficients change with the speed (an oil film, a seal): a table as
-    bearing programs print it, interpolated linearly in the speed between its rows.
-
-    Attributes
-    ----------
-    z : float — m
-    speeds : (S,) ndarray — rad/s, strictly ascending, S >= 2
-    values : (S, 8) ndarray — the coefficients at each speed, :data:`COEFFICIENTS` order
-
-    Outside ``speeds`` the end rows hold (the service refuses such speeds: a table is
-    never extrapolated silently).
-    """
+    """A bearing whose coefficients change with speed (an oil film, a seal), interpolated
+    linearly between rows: ``z`` (m), ``speeds`` (S,) rad/s ascending (S >= 2), ``values``
+    (S, 8) in :data:`COEFFICIENTS` order; the end rows hold outside (the service refuses such
+    speeds)."""
 
     z: float
     speeds: np.ndarray

@@ -124,17 +124,9 @@ def _order(lam: np.ndarray, code: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True, eq=False)
 class Campbell:
-    """Whirl modes over speeds, numbered by frequency at each speed (lowest first).
-
-    Attributes
-    ----------
-    speeds : (N,) ndarray — rad/s
-    eigenvalues : (N, 4) complex ndarray
-    vectors : (N, 4, 4) complex ndarray — each mode's weighted unit shape (Mode.vector)
-    whirl, kind : (N, 4) int ndarrays — indices in :data:`WHIRLS` and :data:`KINDS`
-    share, node : (N, 4) ndarrays — forward share; node (m, NaN for none)
-    growing : (N, 4) bool ndarray
-    """
+    """Whirl modes over speeds, numbered by frequency at each: ``speeds`` (N,) rad/s,
+    ``eigenvalues`` (N, 4), ``vectors`` (N, 4, 4) (Mode.vector), ``whirl``, ``kind`` (indices
+    in :data:`WHIRLS`, :data:`KINDS`), ``share``, ``node`` (m, NaN for none), ``growing``."""
 
     speeds: np.ndarray
     eigenvalues: np.ndarray

@@ -98,17 +98,9 @@ def _orbit(Dx: np.ndarray, Dy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
 
 @dataclass(frozen=True, eq=False)
 class Response:
-    """Unbalance response at each speed, per bearing.
-
-    Attributes
-    ----------
-    speeds : (N,) ndarray — rad/s
-    displacement : (n_b, N) ndarray — m, semi-major axis of each bearing's orbit
-    displacement_minor : (n_b, N) ndarray — m, semi-minor axis
-    displacement_phase_deg : (n_b, N) ndarray — deg, high spot in the rotor frame
-    force : (n_b, N) ndarray — N, semi-major axis of the force the rotor exerts on it
-    force_phase_deg : (n_b, N) ndarray — deg, its direction when largest, rotor frame
-    """
+    """Unbalance response at each speed, per bearing: ``speeds`` (N,) rad/s; ``displacement``
+    and ``displacement_minor`` (n_b, N) m (the orbit's semi-axes), ``displacement_phase_deg``
+    (the high spot, rotor frame); ``force`` (N) and ``force_phase_deg``."""
 
     speeds: np.ndarray
     displacement: np.ndarray
@@ -351,17 +343,9 @@ def required_margin(af: float | None, position: str) -> float:
 
 @dataclass(frozen=True, eq=False)
 class Margin:
-    """One critical speed judged against the operating speed range.
-
-    Attributes
-    ----------
-    speed : float — rad/s, the critical (peak) speed Nc
-    amplification_factor : float | None — None when undamped (infinite)
-    position : str — "below", "above" or "within" the operating range
-    margin_percent : float — % of N_min (below) or N_max (above); 0 within
-    required_percent : float — % (within: the API rule allows none when AF >= 2.5)
-    passed : bool
-    """
+    """One critical speed judged against the operating range: ``speed`` Nc (rad/s),
+    ``amplification_factor`` (None: undamped), ``position`` ("below", "above", "within"),
+    ``margin_percent`` and ``required_percent`` (%), ``passed``."""
 
     speed: float
     amplification_factor: float | None
