@@ -212,19 +212,10 @@ def _wheel(body: Body, mp: Any, axle: Any, through: Any, radius: Any, tol: float
 
 @dataclass(frozen=True)
 class RollcheckResult(Result):
-    """The answer of :func:`rollcheck`.
-
-    Attributes
-    ----------
-    name, source : str — the body's name and file
-    units : dict — the body's units block (the options table echoes in it)
-    options : rbcli.api.params.Options — the parameters as read (:func:`parse`)
-    setup : WheelSetup — the axle and the rim as used
-    wheel : rbcli.core.wheel.Wheel — mass, A and C about the com (symmetrised when nearly so)
-    straight : rbcli.core.rolling.StraightRolling — the straight-rolling threshold
-    verdict : rbcli.core.rolling.Verdict or None — at the speed or spin given
-    circle : rbcli.core.rollcircle.CircleMotion or None — the steady circle asked for
-    warnings : tuple of str — located one-line warnings"""
+    """The answer of :func:`rollcheck`: ``name``, ``source``, ``units`` (the body's, for the
+    echo), ``options`` (:func:`parse`), ``setup`` (:class:`WheelSetup`), ``wheel``
+    (:class:`rbcli.core.wheel.Wheel`), ``straight`` (the threshold), ``verdict`` (at the speed
+    given), ``circle`` (the steady circle asked for) and ``warnings``."""
 
     name: str
     source: str

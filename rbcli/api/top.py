@@ -102,19 +102,10 @@ def _pivot(body: Body, given: Any) -> tuple[tuple[float, float, float], Note]:
 
 @dataclass(frozen=True)
 class TopResult(Result):
-    """The heavy top's motion from the given start, and the numerical check if asked for.
-
-    Attributes
-    ----------
-    body : Body
-    options : rbcli.api.params.Options — the inputs as read (:func:`parse`)
-    pivot_source : Note — ``{pivot}``, ``{pivot} com``, ``"the body's pivot"``, ...
-    motion : TopMotion — the exact motion (:class:`rbcli.core.top.TopMotion`)
-    verify : VerifyResult or None — with ``verify``: the differences from a DOP853 integration,
-        the invariants' drift and the verdict (``verify.passed``)
-    real_body : RealBodyCheck or None — with ``verify`` for a nearly symmetric body: how far
-        the real body's integrated motion gets from the closed form (not in the verdict)
-    warnings : tuple of str — located one-line warnings"""
+    """The heavy top's motion from the given start: ``body``, ``options`` (:func:`parse`),
+    ``pivot_source`` (``{pivot}``, ``"the body's pivot"``...), ``motion``
+    (:class:`rbcli.core.top.TopMotion`), with ``verify`` the DOP853 comparison ``verify`` and,
+    for a nearly symmetric body, ``real_body`` (not in the verdict), and ``warnings``."""
 
     body: Body = field(repr=False)
     options: Options

@@ -1,14 +1,8 @@
 """Validation and exact mass properties of closed triangle meshes (pure numpy).
 
-A mesh is ``vertices`` (V, 3) and ``faces`` (F, 3) vertex indices; a triangle's
-corners in counter-clockwise order seen from outside give its outward normal
-(right-hand rule). The solid it bounds is taken to be uniform; the caller turns
-volume and per-unit-mass inertia into mass and inertia.
-
-:func:`mass_properties` checks that the surface bounds a solid (closed, manifold,
-consistently oriented, non-zero volume) and integrates over it exactly (to rounding), about a point near the mesh so that a part
-far from the origin keeps its digits.
-"""
+A mesh is ``vertices`` (V, 3) and ``faces`` (F, 3), counter-clockwise seen from outside;
+the solid is uniform. :func:`mass_properties` checks that the surface bounds a solid and
+integrates over it exactly, about a point near the mesh (digits kept far from the origin)."""
 
 from __future__ import annotations
 

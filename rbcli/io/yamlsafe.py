@@ -80,17 +80,10 @@ class Mark(NamedTuple):
 
 
 class Node:
-    """Base of the loaded tree. Every node has ``.mark`` and ``.tag``; nodes are frozen.
-
-    ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
-    ``"bool"``, ``"null"``.
-
-    A node keeps where it starts as given: a :class:`Mark` (or a
-    :class:`rbcli.io.loadctx.DataMark` in a tree made from Python data), or the loader's
-    0-based ``line << 32 | column`` (an int, which the garbage collector does not track: a
-    large body's tree holds millions of nodes, and most marks are never read — they locate
-    errors), which ``.mark`` gives as the 1-based :class:`Mark`.
-    """
+    """Base of the loaded tree (frozen): ``.tag`` (``"map"``, ``"seq"``, ``"str"``, ``"int"``,
+    ``"float"``, ``"bool"``, ``"null"``) and ``.mark``, the 1-based :class:`Mark` of where it
+    starts, kept as given or as the loader's 0-based ``line << 32 | column`` int (untracked by
+    the garbage collector: a large body's tree holds millions of nodes)."""
 
     __slots__ = ("_mark",)
 
