@@ -1,11 +1,6 @@
-"""What every service result shares: plain JSON data, one finiteness check, an exit status.
-
-A result is a frozen dataclass (:class:`Result` is the mixin) that knows its JSON form
-(``to_json()``: exactly the object ``rbcli <command> --json`` prints, less ``file``) and
-its own exit status (``return_code``: 0, or 1 when a check the user asked for failed; the
-model is black's ``Report.return_code``). The command line only renders a result and
-exits with its status.
-"""
+"""What every service result shares: a frozen dataclass (the :class:`Result` mixin) that
+knows its JSON (``to_json()``: ``rbcli <command> --json`` less ``file``), passed through the
+one finiteness check, and its exit status (``return_code``, as black's ``Report``)."""
 
 from __future__ import annotations
 
