@@ -142,15 +142,18 @@ def _whirl_options(body: Body, kw: dict[str, Any], speed: Any) -> tuple[Any, Any
             through=kw.get("through"), symmetry_tol=kw.get("symmetry_tol")))
         return opts, err, None
     if kw.get("damping") is not None:
-        raise ParamError("damping", "needs {stiffness}, the bearings' stiffness (the whirl section)")
-    return None, None, Note("whirl: no {stiffness} given (the bearings' stiffness, with {bearings})")
+        raise ParamError("damping", "needs {stiffness}, the bearings' stiffness (the whirl "
+                         "section)")
+    return None, None, Note("whirl: no {stiffness} given (the bearings' stiffness, with "
+                            "{bearings})")
 
 
 def _top_options(body: Body, kw: dict[str, Any]) -> tuple[Any, Any]:
     """(top's options, why it is left out): every value given is checked, the section needs
     a pivot, spin and theta."""
     spin, theta = kw.get("spin"), kw.get("theta")
-    opts = top.parse(body, pivot=kw.get("pivot"), spin=_TOP_STAND_INS["spin"] if spin is None else spin,
+    opts = top.parse(body, pivot=kw.get("pivot"),
+                     spin=_TOP_STAND_INS["spin"] if spin is None else spin,
                      theta=_TOP_STAND_INS["theta"] if theta is None else theta,
                      theta_dot=kw.get("theta_dot"), phi_dot=kw.get("phi_dot"), g=kw.get("g"),
                      symmetry_tol=kw.get("symmetry_tol"))
@@ -193,7 +196,8 @@ def parse(body: Body, **kwargs: Any) -> ReportOptions:
                            planes=kw.get("planes"), radius=kw.get("radius"), speed=rotor_speed,
                            bearings=kw.get("bearings"), g=kw.get("g"), grade=kw.get("grade"))
     b_skip = None
-    if body.shaft is None and not ({"shaft", "planes", "bearings", "grade"} & set(kw) or rotor_speed is not None):
+    asked = {"shaft", "planes", "bearings", "grade"} & set(kw) or rotor_speed is not None
+    if body.shaft is None and not asked:
         b_opts, b_skip = None, Note("balance: no shaft in the body file and no {shaft}, {planes}, "
                                     "{bearings} or rotation {speed} option")
     w_opts, w_err, w_skip = _whirl_options(body, kw, rotor_speed)

@@ -291,12 +291,10 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     Lines); that JSON as one CSV table (:mod:`rbcli.render.tablecsv`: a ``file`` column when
     ``file`` is given, the header row only with ``header``); or the tables ``doc_fn(doc)``
     puts in a Doc, as text. All refuse inf and NaN (one line, exit 2):
-    :func:`rbcli.api.result.jsonable` and :func:`rbcli.render.text.check_finite_doc`. Only the one that is
-    printed is built. ``given`` (option, value, unit) rows are the options as understood
-    (an XOptions' ``given``), or a function that makes them (called only for a table): the
-    text output shows them first (after the title), in a table titled "options" (JSON and
-    CSV stay as they are). ``plain``: ``data_fn()`` returns
-    jsonable's result already (a result's ``to_json()``), not converted again."""
+    :func:`rbcli.api.result.jsonable` and :func:`rbcli.render.text.check_finite_doc`. Only the
+    one printed is built. ``given``: the (option, value, unit) rows of the options as
+    understood (:func:`rbcli.render.echo.echo_rows`), or a function making them, shown first
+    in a table "options" (tables only). ``plain``: ``data_fn()`` is already jsonable's."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
     if fmt in ("json", "csv"):
         data = data_fn()
@@ -316,7 +314,8 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
 
             command, digits = _invocation()
             units = {p.name: si_unit(p) for p in TABLES.get(command, ())}
-            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header, params=units))
+            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header,
+                                    params=units))
         return
     from rbcli.render.text import Doc
 

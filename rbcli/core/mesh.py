@@ -272,7 +272,8 @@ def _plural(n: int, one: str, many: str) -> str:
     return f"{n} {one if n == 1 else many}"
 
 
-def _integrals(v: np.ndarray, faces: np.ndarray) -> tuple[float, float, np.ndarray, np.ndarray, int]:
+def _integrals(v: np.ndarray, faces: np.ndarray
+               ) -> tuple[float, float, np.ndarray, np.ndarray, int]:
     """(volume, area, first moment (3,), second moments (3, 3), n zero-area) about 0."""
     vt = np.ascontiguousarray(v.T)  # (3, V): gathers give contiguous rows
     vol6 = 0.0

@@ -114,7 +114,8 @@ class TopMotion:
     params : TopParams — mass (kg), length l (m), I and Is (kg m², about the pivot)
     spin : float — rad/s, S = ω3
     theta0, theta_dot0, phi_dot0, g — the start (rad, rad/s) and gravity (m/s²)
-    a, b, alpha, beta : float — Goldstein's a = Is S/I, b = p_φ/I (1/s), α = 2E'/I, β = 2mgl/I (1/s²)
+    a, b, alpha, beta : float — Goldstein's a = Is S/I, b = p_φ/I (1/s), α = 2E'/I,
+        β = 2mgl/I (1/s²)
     u1, u2, u3 : float — roots of f(u) (u = cos θ); theta1, theta2 : rad, least and greatest tilt
     nutation_period, nutation_frequency : float or None — T_n = 2 K(m)/λ (s), 2π/T_n (rad/s)
     precession_per_nutation, spin_per_nutation : float or None — rad, Δφ and Δψ per T_n

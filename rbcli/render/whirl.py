@@ -16,7 +16,7 @@ from rbcli.render.fmt import num, said
 from rbcli.render.plots import figure, figure_bytes, style
 from rbcli.render.report import Figure, Section
 from rbcli.render.text import Doc, Note
-from rbcli.render.units import RPM, BodyUnits, DisplayUnits
+from rbcli.render.units import RPM, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.whirlresult import WhirlResult
