@@ -3,9 +3,8 @@
 Physics sheet ``dynamics.md`` §3: a rigid body of revolution (mass m, com G on its axle)
 rolls without slipping on a floor, touching it along a circle of radius a (a *knife-edge*
 rim) or a toroidal rim of tube radius r (0 <= r < a). No damping: "stable" means
-neutral stability (undamped): a small lean oscillates, it does not decay. A and C (across
-and about the axle) are about the centre G; C + m a^2 and A + m a^2 are about the contact
-point (sheet §3.2, §4b.8).
+neutral stability (undamped): a small lean oscillates, it does not decay. A and C are
+about the centre G; C + m a^2 and A + m a^2 about the contact point (sheet §3.2, §4b.8).
 Angles in radians; SI throughout."""
 
 from __future__ import annotations
