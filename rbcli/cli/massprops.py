@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import typer
 
-from rbcli.api.commands import BODY, INERTIA, PRINCIPAL
+from rbcli.api.commands import INERTIA, PRINCIPAL
 from rbcli.cli import common as c
 from rbcli.cli.app import MANUAL
 from rbcli.errors import InputError, option_name
@@ -63,8 +63,7 @@ def inertia(
         if products.strip().lower() == "positive":
             raise InputError(f"--products positive does not apply to --format {out}: the element "
                              "holds the tensor's entries (ixy = -sum m x y), as the format requires")
-        own = {p.name for p in BODY}  # the body's options go with every format
-        given = [option_name(k) for k, v in args.items() if v is not None and k not in own]
+        given = [option_name(k) for k, v in c.without_body(args).items() if v is not None]
         given += ["--units"] * (units is not None)
         if given:
             raise InputError(f"{given[0]} does not apply to --format {out}: the <inertial> element is "
