@@ -1,9 +1,7 @@
-"""A STEP file (ISO 10303-21) read with OpenCascade (the ``cad`` extra, imported by
-:func:`read_step` only): each solid's exact volume properties from its B-rep, its name, colour
-and placement, the file's length unit; plain data (:mod:`rbcli.body.steppart` makes parts).
-:func:`scan` first refuses, with the line at fault, what would make OpenCascade crash, hang
-or misread silently: not STEP, truncated, over the entity budget, references that loop or
-nest too deep, an assembly that contains itself or nests too deep (README, "Budgets").
+"""A STEP file read with OpenCascade (the ``cad`` extra, imported by :func:`read_step` only):
+each solid's volume properties from its B-rep, name, colour and placement, and the file's
+length unit. :func:`scan` first refuses, with the line at fault, what would make OpenCascade
+crash, hang or drop solids silently (README, "Budgets").
 """
 
 from __future__ import annotations
@@ -22,16 +20,14 @@ __all__ = ["StepError", "Solid", "StepFile", "read_step", "scan"]
 MAX_STEP_BYTES = 128 << 20  # RBCLI_MAX_STEP_BYTES
 MAX_ENTITIES = 1_000_000  # RBCLI_MAX_STEP_ENTITIES: ~3 s and ~650 MB in OpenCascade
 MAX_ASSEMBLY_DEPTH = 64
-#: entity references nested deeper than this (a B-rep needs ~12) are refused: OpenCascade
-#: follows them recursively
-MAX_REF_DEPTH = 1000
-#: a file's length unit as OpenCascade names it (lower case) -> as rbcli writes it, in m
+MAX_REF_DEPTH = 1000  # a B-rep nests ~12; OpenCascade follows references recursively
+#: a length unit as OpenCascade names it (lower case): as rbcli writes it, in m
 UNITS = {"millimetre": ("mm", 1e-3), "metre": ("m", 1.0), "centimetre": ("cm", 1e-2),
          "micrometre": ("um", 1e-6), "kilometre": ("km", 1e3), "inch": ("in", 0.0254),
          "foot": ("ft", 0.3048)}
 _COMMENT = re.compile(rb"/\*.*?\*/", re.S)
-_STRING = re.compile(rb"'[^']*'")  # ('' inside a string: two strings side by side)
-#: an entity instance (strings emptied): its number, its type (empty: complex), parameters
+_STRING = re.compile(rb"'[^']*'")  # ('' in a string: two strings side by side)
+#: an entity (strings emptied): number, type (empty: complex), parameters
 _ENTITY = re.compile(rb"#(\d+)\s*=\s*([A-Z_0-9]*)([^;]*);")
 _REF = re.compile(rb"#(\d+)")
 
@@ -46,13 +42,10 @@ class StepError(ValueError):
 
 @dataclass(frozen=True)
 class Solid:
-    """One solid placed in the file's assembly, in m (OpenCascade converts the file's unit):
-    ``name`` unique, the instance names from the top (``link:1/pin``); ``volume`` m³;
-    ``centroid`` (3,) m and ``inertia`` (3, 3) m⁵ (second moments of volume about it, tensor
-    convention: the inertia at unit density), in its part's own frame; ``R``, ``t``: where the
-    assembly puts the part, x -> R x + t; ``colour`` ``#rrggbb`` (sRGB) of the solid, its part
-    or its first face; ``healed``: where OpenCascade healed it (ShapeFix), the relative change
-    of its volume (a bound on what healing changed)."""
+    """A solid placed by the assembly, in m: ``name`` its instance path (``link:1/pin``);
+    ``volume`` m³, ``centroid`` m and ``inertia`` m⁵ (about it, the tensor at unit density) in
+    its part's frame; the part placed x -> R x + t; ``colour`` ``#rrggbb``; ``healed``: the
+    relative change of its volume when ShapeFix healed it."""
 
     name: str
     volume: float
@@ -66,9 +59,8 @@ class Solid:
 
 @dataclass(frozen=True)
 class StepFile:
-    """What :func:`read_step` found: ``solids``; ``unit`` the file's length unit (``mm``;
-    several joined by commas) and ``metres`` its size (None: not one rbcli knows); ``empty``
-    the names of assembly nodes and parts that hold no solid."""
+    """The solids, the file's length ``unit`` (``mm``) and its size in ``metres`` (None: not
+    one rbcli knows), and the assembly nodes and parts that hold no solid (``empty``)."""
 
     solids: tuple[Solid, ...]
     unit: str | None
@@ -82,8 +74,7 @@ def _line(data: bytes, pos: int) -> int:
 
 def _deepest(graph: dict, limit: int) -> tuple[str, bytes] | None:
     """The first cycle (``("cycle", a node on it)``) or path of more than ``limit`` links
-    (``("deep", its top)``) in ``graph`` (node -> successors), by an iterative depth-first
-    walk; None when neither."""
+    (``("deep", its top)``) in ``graph`` (node -> successors): an iterative depth-first walk."""
     depth: dict = {}  # finished nodes: the longest path from each, in nodes
     for root in graph:
         if root in depth:
@@ -112,15 +103,14 @@ def _deepest(graph: dict, limit: int) -> tuple[str, bytes] | None:
 
 
 def scan(data: bytes, max_entities: int) -> None:
-    """Check STEP text before OpenCascade reads it (the module's docstring); a
-    :class:`StepError` says what is wrong and where."""
+    """Check STEP text before OpenCascade reads it; a :class:`StepError` says what and where."""
     text = _STRING.sub(b"''", _COMMENT.sub(b"", data))
     if not text.lstrip().startswith(b"ISO-10303-21;"):
         raise StepError("not a STEP file: it does not start with 'ISO-10303-21;'", 1)
     start, end = text.find(b"\nDATA;"), text.rfind(b"END-ISO-10303-21;")
     if start < 0 or end < start:
-        raise StepError("the file is truncated or malformed: no DATA section ending in "
-                        "'ENDSEC; END-ISO-10303-21;'", _line(data, len(data)))
+        raise StepError("truncated or malformed: no DATA section before 'END-ISO-10303-21;'",
+                        _line(data, len(data)))
     entities = _ENTITY.findall(text, start, end)
     if len(entities) > max_entities:
         raise StepError(f"more than {max_entities} entities (set RBCLI_MAX_STEP_ENTITIES to "
@@ -153,21 +143,18 @@ def _where(data: bytes, number: bytes, nth: int = 1) -> int:
 
 
 def read_step(path: str, max_solids: int) -> StepFile:
-    """The solids of the STEP file ``path`` (:class:`Solid`), at most ``max_solids`` placed
-    (every use of a part counts). Raises :class:`rbcli.io.reader.ReadError` (not a regular
-    file; over ``RBCLI_MAX_STEP_BYTES``), :class:`StepError` (:func:`scan`'s refusals; what
-    OpenCascade cannot read; no solid; an invalid solid it cannot heal; more than
-    ``max_solids``) or ``ImportError`` (no OpenCascade)."""
+    """The solids of the STEP file ``path``, at most ``max_solids`` placed (each use counts);
+    a :class:`rbcli.io.reader.ReadError`, :class:`StepError` or ``ImportError``."""
     data = read_regular(path, limit_from_env("RBCLI_MAX_STEP_BYTES", MAX_STEP_BYTES),
                         "STEP file", env="RBCLI_MAX_STEP_BYTES")
     scan(data, limit_from_env("RBCLI_MAX_STEP_ENTITIES", MAX_ENTITIES))
-    ocp = SimpleNamespace()  # OpenCascade's names (the cad extra: ~0.5 s, on this path only)
+    ocp = SimpleNamespace()  # OpenCascade's names (~0.5 s, on this path only)
     for m in ("BRep", "BRepBuilderAPI", "BRepCheck", "BRepGProp", "GProp", "IFSelect", "Message",
               "Quantity", "ShapeFix", "STEPCAFControl", "TCollection", "TDataStd", "TDF", "TDocStd",
               "TopAbs", "TopExp", "TopLoc", "TopoDS", "XCAFDoc", "collections"):
         vars(ocp).update(vars(importlib.import_module(f"OCP.{m}")))
     messenger = ocp.Message.DefaultMessenger_s()
-    printers = list(messenger.Printers())  # OpenCascade prints to stdout: silenced meanwhile
+    printers = list(messenger.Printers())  # it prints to stdout: silenced meanwhile
     for p in printers:
         messenger.RemovePrinter(p)
     try:
@@ -178,8 +165,8 @@ def read_step(path: str, max_solids: int) -> StepFile:
 
 
 class _Reader:
-    """One read (``o``: OpenCascade's names): the XDE document, the walk over its assembly
-    tree, each part's solids' properties computed once, whatever its uses."""
+    """One read (``o``: OpenCascade's names): the assembly tree walked, each part's
+    properties computed once."""
 
     def __init__(self, o: SimpleNamespace, max_solids: int) -> None:
         self.o, self.max_solids = o, max_solids
@@ -193,22 +180,22 @@ class _Reader:
         reader.SetNameMode(True)
         reader.SetColorMode(True)
         if reader.ReadStream("step", io.BytesIO(data)) != o.IFSelect_RetDone:
-            raise StepError("OpenCascade cannot read the file (a syntax error?)")
+            raise StepError("OpenCascade cannot read it (a syntax error?)")
         names = [o.Sequence_TCollection_AsciiString() for _ in range(3)]
         reader.Reader().FileUnits(*names)
         found = list(dict.fromkeys(UNITS.get(n.ToCString().lower(), (n.ToCString(), None))
                                    for n in names[0]))
         unit, metres = found[0] if len(found) == 1 else (", ".join(u for u, _ in found), None)
         doc = o.TDocStd_Document(o.TCollection_ExtendedString("XmlOcaf"))
-        o.XCAFDoc_DocumentTool.SetLengthUnit_s(doc, 1.0)  # numbers in m, whatever the file's
+        o.XCAFDoc_DocumentTool.SetLengthUnit_s(doc, 1.0)  # lengths in m
         if not reader.Transfer(doc):
-            raise StepError("OpenCascade cannot make shapes of the file's entities")
+            raise StepError("OpenCascade makes no shape of it")
         self.shapes = o.XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
         self.colours = o.XCAFDoc_DocumentTool.ColorTool_s(doc.Main())
         free = o.Sequence_TDF_Label()
         self.shapes.GetFreeShapes(free)
         tops = list(free)
-        if len(tops) == 1 and self.shapes.IsAssembly_s(tops[0]):  # one assembly: its parts
+        if len(tops) == 1 and self.shapes.IsAssembly_s(tops[0]):  # its parts, unprefixed
             self._walk(self._components(tops[0]), "")
         else:
             self._walk([(lab, lab, o.TopLoc_Location()) for lab in tops], "")
@@ -218,7 +205,7 @@ class _Reader:
         return StepFile(tuple(self.solids), unit, metres, tuple(self.empty))
 
     def _components(self, label) -> list:
-        """(instance label, part label, placement) of each component of an assembly."""
+        """(instance, part, placement) of each component of an assembly."""
         comps, out = self.o.Sequence_TDF_Label(), []
         self.shapes.GetComponents_s(label, comps)
         for c in comps:
@@ -229,7 +216,7 @@ class _Reader:
 
     def _walk(self, items: list, prefix: str, loc=None) -> None:
         """The solids of ``items`` (instance, part, placement), named ``prefix`` + unique
-        instance names, depth first (the depth is bounded by :func:`scan`)."""
+        instance names (:func:`scan` bounds the depth)."""
         names = [self._name(inst) or self._name(ref) or "solid" for inst, ref, _ in items]
         seen: dict[str, int] = {}
         for (inst, ref, place), name in zip(items, names):
@@ -249,9 +236,8 @@ class _Reader:
             colour = self._colour(inst) or self._colour(ref)
             for i, (vol, com, J, healed, solid) in enumerate(solids):
                 if len(self.solids) >= self.max_solids:
-                    raise StepError(f"the assembly places more than {self.max_solids} solids "
-                                    "(every use of a part counts); set RBCLI_MAX_PARTS to raise "
-                                    "the limit")
+                    raise StepError(f"more than {self.max_solids} solids (each use counts); "
+                                    "set RBCLI_MAX_PARTS to raise the limit")
                 shown = f"{prefix}{name}[{i + 1}]" if len(solids) > 1 else prefix + name
                 self.solids.append(Solid(shown, vol, com, J, R, t,
                                          colour or self._face_colour(solid), healed))
@@ -261,7 +247,7 @@ class _Reader:
         if not label.FindAttribute(self.o.TDataStd_Name.GetID_s(), n):
             return ""
         text = n.Get().ToExtString().strip()
-        return "" if text.startswith("=>[") else text  # OpenCascade's name of an unnamed one
+        return "" if text.startswith("=>[") else text  # what OpenCascade calls an unnamed one
 
     def _colour(self, label, shape: bool = False) -> str | None:
         """``#rrggbb`` of a label (or a shape), or None."""
@@ -272,8 +258,7 @@ class _Reader:
         return None
 
     def _properties(self, label, name: str) -> list:
-        """(volume, centroid, inertia, healed, the solid) of each solid of a part (its closed
-        shells made solids), computed once per part."""
+        """:meth:`_solid` of each solid of a part, once a part."""
         entry = self.o.TCollection_AsciiString()
         self.o.TDF_Tool.Entry_s(label, entry)
         key = entry.ToCString()
@@ -282,7 +267,7 @@ class _Reader:
         return self.props[key]
 
     def _solids(self, label, name: str) -> list:
-        """The solids of a part's shape; its closed shells made solids; an open one refused."""
+        """A part's solids, and its shells made solids (an open one refused)."""
         o, shape, out = self.o, self.shapes.GetShape_s(label), []
         ex = o.TopExp_Explorer(shape, o.TopAbs_SOLID)
         while ex.More():
@@ -291,14 +276,14 @@ class _Reader:
         ex = o.TopExp_Explorer(shape, o.TopAbs_SHELL, o.TopAbs_SOLID)  # shells in no solid
         while ex.More():
             if not self._closed(ex.Current()):
-                raise StepError(f"part '{name}': a shell that does not close a volume (a "
-                                "surface model); export the part as a solid")
+                raise StepError(f"part '{name}': a shell that does not close a volume (a surface "
+                                "model); export it as a solid")
             out.append(o.BRepBuilderAPI_MakeSolid(o.TopoDS.Shell(ex.Current())).Solid())
             ex.Next()
         return out
 
     def _closed(self, shape) -> bool:
-        """Whether every shell of ``shape`` closes (each edge between two of its faces)."""
+        """Whether each shell of ``shape`` closes (every edge between two of its faces)."""
         ex = self.o.TopExp_Explorer(shape, self.o.TopAbs_SHELL)
         while ex.More():
             if not self.o.BRep_Tool.IsClosed_s(self.o.TopoDS.Shell(ex.Current())):
@@ -307,9 +292,8 @@ class _Reader:
         return True
 
     def _solid(self, solid, name: str) -> tuple:
-        """(volume, centroid, inertia, healed, the solid): OpenCascade's exact volume integrals
-        over its B-rep; a solid not closed or inside out healed by ShapeFix if it can be
-        (OpenCascade's check of it, then)."""
+        """(volume, centroid, inertia, healed, the solid): the volume integrals over its B-rep;
+        one not closed or inside out healed by ShapeFix if it can be."""
         o = self.o
 
         def props(s):
@@ -324,15 +308,15 @@ class _Reader:
             q = props(fix.Shape())
             if not (self._closed(fix.Shape()) and o.BRepCheck_Analyzer(fix.Shape()).IsValid()
                     and q.Mass() > 0):
-                raise StepError(f"solid '{name}' is not a valid solid (open, self-intersecting "
-                                "or inside out) and OpenCascade cannot heal it")
+                raise StepError(f"solid '{name}' is open or inside out, and OpenCascade cannot "
+                                "heal it")
             healed, p = abs(q.Mass() - abs(p.Mass())) / q.Mass(), q
         c, m = p.CentreOfMass(), p.MatrixOfInertia()
         J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
         return p.Mass(), (c.X(), c.Y(), c.Z()), J, healed, solid
 
     def _face_colour(self, solid) -> str | None:
-        """The colour of a solid that its part has none of: its own, else its first face's."""
+        """A solid's colour, else its first face's."""
         colour, faces = self._colour(solid, True), self.o.TopExp_Explorer(solid, self.o.TopAbs_FACE)
         while colour is None and faces.More():
             colour = self._colour(faces.Current(), True)
