@@ -1,11 +1,8 @@
 """Parts of a body, built in code: one constructor per shape of the body file.
 
-Each constructor takes the keys the body file takes for that shape, by the same names
-(``name=``, the sizes, ``mass=`` or a density, ``at=``, ``axis=`` or ``rotate=``,
-``subtract=``, ``cut_from=``; the rod's ``from`` is ``from_=``), and returns a
-:class:`PartSpec`: a small frozen value holding the body file's mapping for that part.
-:meth:`rbcli.Body.from_parts` builds a body of them with every check a body file gets, and
-the same messages, located at the call (``parts[2] (cylinder 'bore'): ...``)::
+Each takes the body file's keys for its shape (the rod's ``from`` is ``from_=``) and returns
+a :class:`PartSpec`, the part's mapping, frozen; :meth:`rbcli.Body.from_parts` checks them as
+a file's, located at the call (``parts[2] (cylinder 'bore'): ...``)::
 
     import rbcli
     from rbcli import parts
@@ -16,16 +13,10 @@ the same messages, located at the call (``parts[2] (cylinder 'bore'): ...``)::
         parts.disk(name="disk", radius="100 mm", mass=5, at=[0, 0, "200 mm"]),
     ], name="rotor", shaft={"axis": [0, 0, 1]})
 
-Values are read exactly as the body file's: a number is SI, or in the body's ``units``
-(``Body.from_parts(..., units={"length": "mm"})``); a string is a quantity with its unit
-(``"25 mm"``, ``"7850 kg/m^3"``, ``"30 deg"``); vectors are sequences (lists, tuples, numpy
-arrays) of either. ``None`` (the default) leaves a key out. A value of a type no body file
-holds (a complex number, a set) is a ``TypeError`` at once; every other check waits for the
-body, where it can say which part is wrong and why.
-
-The shapes, their parameters and formulas are those of ``rbcli shapes`` (the registry
-:data:`rbcli.core.shapes.SHAPES`, plus ``mesh``, ``given`` and ``include``); a test keeps
-each constructor's keyword arguments equal to the keys the body file takes for its shape.
+Values are read as the file's: a number SI or in the body's ``units``, a string a quantity
+(``"25 mm"``), vectors sequences of either; ``None`` leaves a key out. A value of a type no
+body file holds is a ``TypeError`` at once. The shapes are ``rbcli shapes``'s; a test keeps
+each constructor's keywords the file's keys.
 """
 
 from __future__ import annotations
@@ -50,44 +41,32 @@ _F = TypeVar("_F", bound=Callable[..., PartSpec])
 
 #: what the keys every shape shares mean (the body file's keys: README, "The body file")
 _COMMON = {
-    "name": "name : str, optional\n    The part's name (default: its shape and number, "
-            "``disk2``); the names of a body's parts differ.",
-    "mass": "mass : float or str, optional\n    kg (or the body's mass unit), or ``\"2.5 kg\"``. "
-            "Give the mass or one density (or ``cut_from``).",
-    "density": "density : float or str, optional\n    kg/m³ (``\"7850 kg/m^3\"``) of a solid: "
-               "the mass is density × volume.",
-    "areal_density": "areal_density : float or str, optional\n    kg/m² of a lamina or a thin "
-                     "shell: the mass is areal_density × area.",
-    "linear_density": "linear_density : float or str, optional\n    kg/m of a rod or a ring: "
-                      "the mass is linear_density × length.",
-    "material": "material : str, optional\n    A solid's material by name (``\"steel\"``, "
-                "``\"aluminium 6061\"``: ``rbcli materials``, or the body's ``materials``): its "
-                "density.",
-    "at": "at : sequence of 3 float or str, optional\n    Where the part's local origin is, in "
-          "the body frame (m, the body's length unit, or ``\"25 mm\"``).",
-    "axis": "axis : sequence of 3, optional\n    The direction of the part's local z axis in "
-            "the body frame (any length); not with ``rotate``.",
-    "rotate": "rotate : mapping, optional\n    The part's rotation: ``{\"axis\": [x, y, z], "
-              "\"angle\": \"30 deg\"}``, ``{\"euler\": [a, b, c], \"seq\": \"ZYX\"}`` "
-              "(intrinsic), ``{\"quaternion\": [w, x, y, z]}`` or ``{\"matrix\": [[...], "
-              "[...], [...]]}``; not with ``axis``.",
-    "subtract": "subtract : bool, optional\n    True for a hole or a pocket: its mass is "
-                "taken away.",
-    "cut_from": "cut_from : str, optional\n    A hole's material: the name of an earlier part "
-                "whose density it takes (with ``subtract=True``).",
+    "name": "name : str, optional\n    Default: its shape and number (``disk2``); unique.",
+    "mass": "mass : float or str, optional\n    kg (or the body's unit), or ``\"2.5 kg\"``.",
+    "density": "density : float or str, optional\n    kg/m³ of a solid (``\"7850 kg/m^3\"``).",
+    "areal_density": "areal_density : float or str, optional\n    kg/m² of a lamina or shell.",
+    "linear_density": "linear_density : float or str, optional\n    kg/m of a rod or ring.",
+    "material": "material : str, optional\n    A solid's material (``\"steel\"``: ``rbcli "
+                "materials``, or the body's ``materials``).",
+    "at": "at : sequence of 3 float or str, optional\n    Where its local origin is (m, the "
+          "body's unit, or ``\"25 mm\"``).",
+    "axis": "axis : sequence of 3, optional\n    Its local z axis; not with ``rotate``.",
+    "rotate": "rotate : mapping, optional\n    ``{\"axis\": [x, y, z], \"angle\": \"30 deg\"}``, "
+              "``{\"euler\": [a, b, c], \"seq\": \"ZYX\"}``, ``{\"quaternion\": [w, x, y, "
+              "z]}`` or ``{\"matrix\": [...]}``; not with ``axis``.",
+    "subtract": "subtract : bool, optional\n    True for a hole or a pocket (mass taken away).",
+    "cut_from": "cut_from : str, optional\n    A hole's: an earlier part whose density it takes.",
 }
 
 _RETURNS = """Returns
 -------
 PartSpec
-    The part as the body file writes it (``shape: {shape}`` and the keys given), checked
-    when a body is built from it (:meth:`rbcli.Body.from_parts`).
+    The part as the body file writes it (``shape: {shape}`` and the keys given).
 
 Raises
 ------
 TypeError
-    A value of a type no body file holds (a complex number, a set, an object), named by
-    its keyword."""
+    A value of a type no body file holds, named by its keyword."""
 
 
 def _documented(summary: str, params: str, example: str) -> Callable[[_F], _F]:

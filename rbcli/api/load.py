@@ -1,10 +1,6 @@
-"""Reading a body for the Python API: :func:`load` (a path), :func:`load_text` (YAML text)
-and :func:`load_data` (a mapping already parsed, as a body file's).
-
-Each checks its arguments at the door: a wrong type is a ``TypeError`` naming the parameter,
-a bad value an :class:`rbcli.InputError` (a :class:`rbcli.ParamError` naming it); the body
-itself is checked by the one body reader (:mod:`rbcli.body`), with the messages the command
-line prints.
+"""Reading a body for the Python API: :func:`load` (a path), :func:`load_text` (YAML text),
+:func:`load_data` (a mapping). Arguments are checked at the door (a ``TypeError`` or a
+:class:`rbcli.ParamError` naming the parameter); the body by the one body reader.
 """
 
 from __future__ import annotations
@@ -181,12 +177,9 @@ def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name
 
 def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None = None,
               name: str = "body", base_dir: str | os.PathLike[str] | None = None) -> Body:
-    """Read and validate a body given as Python data: the mapping a body file holds, as
-    ``yaml.safe_load`` or ``json.load`` of one would give it.
-
-    The data is checked as a body file is, with the same messages; a problem is located by
-    its key path (``parts[2].radius: ...``) instead of a line and column. Numbers may be
-    numpy scalars, vectors numpy arrays.
+    """Read and validate a body given as Python data (a body file's mapping, as
+    ``json.load`` would give it; numpy values too), checked as a file is, each problem
+    located by its key path (``parts[2].radius: ...``).
 
     Parameters
     ----------

@@ -1,17 +1,8 @@
-"""Read a body file (YAML, or a tree made of Python data) into a validated body in SI
-units: its components (:class:`Built`), which :mod:`rbcli.body.model` makes a ``Body``.
-
-Every problem is an :class:`rbcli.errors.InputError` located at ``file:line:col``.
-The walk is strict: numbers must be numbers (``true`` is not 1.0), strings with
-units must have the right dimension, unknown keys are refused with a
-"did you mean" hint, and the finished body must be physically possible.
-
-The readers: :mod:`rbcli.body.loadctx` (the load's budget, each file's context),
-:mod:`rbcli.body.partlist` (the walk over ``parts:`` and each primitive part),
-:mod:`rbcli.body.givenpart`, :mod:`rbcli.body.meshpart`, :mod:`rbcli.body.includes` (the
-special parts), :mod:`rbcli.io.yamlvalues` (numbers, vectors, texts),
-:mod:`rbcli.body.partkeys` (placements, masses) and :mod:`rbcli.body.placing` (parts placed
-in batches).
+"""Read a body file (YAML, or a tree of Python data) into a validated body in SI: its
+components (:class:`Built`), which :mod:`rbcli.body.model` makes a ``Body``. Strict (``true``
+is not 1.0; units of the right dimension; unknown keys refused with a "did you mean"; the body
+physically possible), every problem an InputError at ``file:line:col``. The parts:
+:mod:`rbcli.body.partlist` and the special parts' modules, through :mod:`rbcli.io.yamlvalues`.
 """
 
 from __future__ import annotations
@@ -158,11 +149,9 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
 
 
 def _may_be_impossible(parts: tuple) -> bool:
-    """Whether the sum of ``parts`` may not be a physically possible inertia: only when one
-    is subtracted or is not a formula shape (a mesh, given mass properties). A sum of
-    physically possible tensors (each shape's own, each parallel-axis term a point mass's)
-    is physically possible, and :func:`rbcli.core.inertia.tensor_problem`'s tolerance
-    (1e-7 of the largest entry) is far above the sum's rounding (~1e-16 of it)."""
+    """Whether the sum of ``parts`` may not be physically possible: only with a hole or a part
+    that is no formula shape (a sum of possible tensors is possible, its rounding ~1e-16 far
+    below the check's 1e-7)."""
     return any(p.subtract or p.shape not in shp.FORMULA_SHAPES for p in parts)
 
 
@@ -277,12 +266,8 @@ def load_text(
     stack: tuple[str, ...] = (),
     units: dict[str, str] | None = None,
 ) -> Built:
-    """Load a body from text already read; ``base_dir`` anchors relative paths.
-
-    ``stack`` holds the real path of the file the text was read from (if any): it is the
-    first of the body's ``inputs``, followed by every file the text includes or meshes it
-    reads, at any depth, each once.
-    """
+    """Load a body from text already read; ``base_dir`` anchors relative paths; ``stack``
+    the real path it was read from (if any): the first of the body's ``inputs``."""
     if isinstance(data, bytes):
         text = data.decode("utf-8", errors="replace")
     else:

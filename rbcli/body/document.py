@@ -1,15 +1,8 @@
-"""A body's document — the body file it was read from, or the data it was built from — to
-write it (:func:`to_yaml`: ``Body.to_yaml``, and ``rbcli balance --apply``, which writes
-``BalanceResult.balanced_body()``) or change it (``Body.replace``: :func:`document`).
-
-A body rbcli made keeps its document (``Body.text``: the file as read, or the YAML of the
-data it was built from): it is written again as data — its comments and layout are not
-kept (PyYAML keeps none) —, a one-part shorthand as a ``parts:`` list, with the body's
-``name`` (a file's name is its stem when it says none) and the ``units`` its bare numbers
-follow, and relative ``file:`` paths of ``include`` and ``mesh`` parts rewritten so they
-still resolve from the folder the text will be read from. Every number is written as it
-was read (a float as Python's ``repr``, which reads back to the same float), so the body
-read back has the same mass, centre of mass and inertia tensor, bit for bit.
+"""A body's document (``Body.text``: the file as read, or the YAML of its data), to write it
+(:func:`to_yaml`: ``Body.to_yaml``, ``rbcli balance --apply``) or change it (:func:`document`:
+``Body.replace``): as data (no comments or layout), a shorthand as a ``parts:`` list, with the
+body's ``name`` and ``units``, relative ``file:`` paths rewritten for the folder it will be
+read from, every number as read (a float's ``repr``): it reads back bit for bit.
 """
 
 from __future__ import annotations
@@ -32,17 +25,8 @@ _FILE_SHAPES = ("include", "mesh", "step")
 
 
 def check_output(out: str, body: Body, *, force: bool, option: str = "--apply") -> Path:
-    """The output path, checked: not an input file, folder exists, not existing without force.
-
-    The inputs are every file the body was read from (``Body.inputs``: the body file, its
-    includes at any depth, its meshes); see :func:`rbcli.io.outfile.check`.
-
-    Raises
-    ------
-    InputError
-        (exit 2) for an input file (whatever ``force`` says), a missing folder, a
-        directory, or an existing file without ``force``.
-    """
+    """The output path, checked (:func:`rbcli.io.outfile.check`): none of ``Body.inputs``,
+    its folder there, an existing file only with ``force``; else an InputError."""
     return outfile.check(out, body, option, force=force)
 
 

@@ -1,12 +1,7 @@
-"""A ``shape: given`` part: mass, centre of mass and inertia copied from elsewhere (a CAD
-report, a data sheet), checked to be a physically possible inertia.
-
-The inertia is a 3x3 matrix or a map of its entries, named as CAD reports name them:
-``Ixx ... Izx`` (most tools), ``Lxx ... Lzx`` (SolidWorks), a product's letters in either
-order (``Izx`` or ``Ixz``); an entry given under two names is an error. The sign of the
-products differs between tools, so ``convention`` (tensor or positive) is needed as soon
-as a product is non-zero. A matrix copied from a report is symmetric only to the digits
-printed: within 1e-9 of its largest entry its symmetric part is used, with a note.
+"""A ``shape: given`` part: mass, centre of mass and inertia from a CAD report or a data
+sheet, checked physically possible: a 3x3 matrix or its entries as reports name them
+(``Ixx``, SolidWorks's ``Lxx``, ``Izx`` or ``Ixz``), ``convention`` (tensor or positive)
+needed once a product is non-zero; a matrix symmetric to 1e-9 is symmetrised, with a note.
 """
 
 from __future__ import annotations

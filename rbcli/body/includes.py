@@ -1,9 +1,6 @@
-"""A ``shape: include`` part: another body file's parts, placed as a whole.
-
-An included file is read and parsed once per real path in a load (:class:`Session`'s
-``parsed``), its parts kept as a :class:`rbcli.body.placing.Stack` that each use moves, so
-a diamond of includes costs time linear in its files; cycles and nesting deeper than
-:data:`MAX_INCLUDE_DEPTH` are refused.
+"""A ``shape: include`` part: another body file's parts, placed as a whole; each file parsed
+once a load, its :class:`rbcli.body.placing.Stack` moved per use (a diamond of includes costs
+time linear in its files); cycles and nesting over :data:`MAX_INCLUDE_DEPTH` refused.
 """
 
 from __future__ import annotations

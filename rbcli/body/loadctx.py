@@ -1,12 +1,8 @@
-"""What one load of a body file shares: the :class:`Session` (the parts budget, the files
-already parsed) and each file's :class:`Ctx` (where its messages point, its units, what it
-read). The readers of :mod:`rbcli.body.partlist`, :mod:`rbcli.io.yamlvalues` and the special parts
-take a ``ctx`` and raise ``ctx.error(node, message)``: an InputError at the node at fault.
-
-Where a node is: a :class:`rbcli.io.yamlsafe.Mark` (line and column) for a body read from
-YAML text, a :class:`DataMark` (its key path, ``parts[2].radius``, or the Python call that
-made it, ``parts[2] (cylinder 'bore')``) for a body built from Python data
-(:mod:`rbcli.body.pydata`); :meth:`Ctx.where` makes either a :class:`rbcli.errors.Location`.
+"""What one load shares (:class:`Session`: the parts budget, the files parsed) and each file's
+:class:`Ctx` (where its messages point, its units, what it read); the readers raise
+``ctx.error(node, message)``. A node is located by a :class:`rbcli.io.yamlsafe.Mark` (YAML
+text) or a :class:`DataMark` (Python data: ``parts[2].radius``, or the call that made it,
+``parts[2] (cylinder 'bore')``).
 """
 
 from __future__ import annotations
@@ -29,12 +25,9 @@ MAX_PARTS = 200_000
 
 @dataclass
 class Session:
-    """What one load shares across its files: the parts budget and the files already
-    read and parsed (an included file is read and parsed once per real path, and its
-    parts placed per use, so a diamond of includes costs time linear in the files).
-
-    ``load`` reads an included file's text (:func:`rbcli.body.bodyfile._load`, given here so that
-    the include reader need not import the body reader that imports it)."""
+    """What one load shares across its files: the parts budget and the files parsed (once a
+    real path); ``load`` reads an included file's text (:func:`rbcli.body.bodyfile._load`,
+    given so that the include reader need not import it)."""
 
     max_parts: int
     load: Callable | None = None
@@ -68,16 +61,9 @@ def new_session(load: Callable | None = None) -> Session:
 
 
 class DataMark:
-    """Where a value is in Python data: its key path from the root (``parts[2].radius``).
-
-    A node of a tree made from Python data (:mod:`rbcli.body.pydata`) carries one where a
-    node read from YAML carries a :class:`rbcli.io.yamlsafe.Mark`. ``key`` is a mapping key
-    (``str``), a list index (``int``) or a :class:`Label`: a label names the value and all
-    it holds as a whole (``Body.from_parts`` labels each part by the call that made it, so
-    every problem in a part is located ``parts[2] (cylinder 'bore')``). The root's path is
-    ``root`` (the parameter that holds the data, e.g. ``mapping``). ``line`` and ``col`` are
-    0: there is no text.
-    """
+    """Where a value is in Python data: its key path (``parts[2].radius``). ``key`` is a
+    mapping key, a list index or a :class:`Label` (it names the value and all it holds:
+    ``parts[2] (cylinder 'bore')``); the root's path is ``root`` (``mapping``); no line."""
 
     __slots__ = ("parent", "key", "root")
     line = 0

@@ -1,7 +1,6 @@
-"""Named materials: the built-in table (``rbcli/data/materials.csv``: name, aliases, density
-in kg/m³, source; read on first use) and a body file's own ``materials:`` (first). A name is
-matched ignoring case, hyphens, underscores and spacing (``Aluminum-6061``). Wood is at 12 %
-moisture: 1.12 × the USDA Wood Handbook's specific gravity × 1000 kg/m³.
+"""Named materials: ``rbcli/data/materials.csv`` (name, aliases, kg/m³, source; read on
+first use; wood at 12 % moisture: 1.12 × the USDA Wood Handbook's specific gravity × 1000),
+after a body file's own ``materials:``.
 """
 
 from __future__ import annotations
@@ -48,15 +47,8 @@ def _index() -> dict[str, Material]:
 
 
 def density(name: str, own: Mapping[str, float] | None = None) -> float:
-    """The density (kg/m³) of material ``name``: the body's ``own`` (its keys made by
-    :func:`key`) first, then the built-in table.
-
-    Raises
-    ------
-    ValueError
-        An unknown name, with the nearest known one ("did you mean"); the message is a
-        template (:func:`rbcli.errors.spell`: the names in it escaped).
-    """
+    """The density (kg/m³) of material ``name``: the body's ``own`` (keys by :func:`key`)
+    first, then the table; a ValueError (a message template) with the nearest name."""
     k, own = key(name), own or {}
     if k in own:
         return own[k]

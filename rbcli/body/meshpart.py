@@ -25,12 +25,8 @@ MESH_KEYS = (
 
 
 def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> Part:
-    """A ``shape: mesh`` part: a closed triangle mesh read from an STL or OBJ file.
-
-    Everything in the YAML is checked first (keys, scale, units, mass, placement), then
-    the file is read and checked. The mesh modules are imported here only, so that
-    bodies without meshes do not pay for them at start-up.
-    """
+    """A ``shape: mesh`` part: the YAML checked, then the file read (the mesh modules
+    imported here only: bodies without meshes do not pay for them)."""
     what = f"part '{name}' (mesh)"
     yv.check_keys(ctx, m, MESH_KEYS, what, required=("file",))
     fnode = m.items["file"][1]

@@ -289,9 +289,8 @@ class Body:
 
 
 def _made(built: Built) -> Body:
-    """The :class:`Body` of ``built``, with what is kept beside its fields: its combined
-    mass properties (:func:`rbcli.core.inertia.body_mass_props` reads them) and the folder
-    of its document (:func:`rbcli.body.document.origin`)."""
+    """The :class:`Body` of ``built``, its mass properties and its document's folder kept
+    beside it (:func:`rbcli.core.inertia.body_mass_props`, :func:`rbcli.body.document.origin`)."""
     body = Body(**built.fields)
     remember_mass_props(body, built.mass_props)
     document.remember_origin(body, built.origin)

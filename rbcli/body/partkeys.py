@@ -1,6 +1,5 @@
-"""The keys every part of a body file shares: its placement (``at``, ``axis``, ``rotate``),
-its mass (``mass``, a density, or ``cut_from`` for a hole) and ``subtract``; and the body's
-points and directions. Each read through :mod:`rbcli.io.yamlvalues`, checked and located.
+"""The keys every part shares (placement, mass or density or material, ``cut_from``,
+``subtract``) and the body's points and directions, read through :mod:`rbcli.io.yamlvalues`.
 """
 
 from __future__ import annotations

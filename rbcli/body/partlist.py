@@ -1,11 +1,7 @@
-"""The ``parts:`` list of a body file: the walk over it and the checks of each part.
-
-Each part is checked in file order (keys, shape, parameters, mass or density, placement),
-each problem an InputError located at the node at fault. A primitive shape becomes a
-:class:`rbcli.body.placing.Pending` (placed in batches by :mod:`rbcli.body.placing`); a
-``given`` part (:mod:`rbcli.body.givenpart`) or a ``mesh`` (:mod:`rbcli.body.meshpart`) a
-finished :class:`rbcli.body.partmodel.Part`; an ``include`` (:mod:`rbcli.body.includes`) a
-:class:`rbcli.body.placing.Stack` of its file's parts.
+"""The ``parts:`` list of a body file: each part checked in file order, each problem located
+at the node at fault. A primitive becomes a :class:`rbcli.body.placing.Pending` (placed in
+batches), a given or mesh part a :class:`rbcli.body.partmodel.Part`, an include or a STEP
+file's solids a :class:`rbcli.body.placing.Stack`.
 """
 
 from __future__ import annotations

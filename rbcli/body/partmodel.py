@@ -67,25 +67,17 @@ def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True, slots=True)
 class Outline:
-    """What a drawing of a part needs: its shape, its local dimensions and its placement.
-
-    Built by the body loader beside the part; read by :mod:`rbcli.render.outline`, which
-    turns it into surface triangles and outlines for the body figure when one is drawn.
-    Nothing here is used by any calculation.
+    """What a drawing of a part needs (:mod:`rbcli.render.outline`; no calculation uses it).
 
     Attributes
     ----------
-    kind : str — a primitive shape name (SPEC §1), ``"given"`` (the part's equivalent
-        uniform ellipsoid: ``semi_axes`` along the columns of ``R``) or ``"mesh"``
-    dims : tuple[tuple[str, object], ...] — the shape's parameters as
-        :func:`rbcli.core.shapes.geometry` took them (lengths in m, ``size`` and
-        ``semi_axes`` as tuples, ``vertices`` as three 3-tuples, ``shell`` a bool); for a
-        mesh ``(("triangles", n),)``, the file's count. ``dict(outline.dims)`` reads them.
+    kind : str — a primitive shape name, ``"given"`` (the equivalent uniform ellipsoid:
+        ``semi_axes`` along the columns of ``R``; a STEP solid too) or ``"mesh"``
+    dims : tuple[tuple[str, object], ...] — the shape's parameters (m; ``dict(dims)``); a
+        mesh's ``(("triangles", n),)``
     at : (3,) ndarray — m, the local origin in the body frame
-    R : (3, 3) ndarray — the local-to-body rotation (its columns are the local axes)
-    vertices : (n, 3) ndarray | None — m, a mesh's vertices in its local frame: the file's
-        mesh (a figure draws a decimated copy)
-    faces : (k, 3) int ndarray | None — a mesh's triangles (indices into ``vertices``)
+    R : (3, 3) ndarray — the local-to-body rotation (columns: the local axes)
+    vertices, faces : (n, 3), (k, 3) int ndarrays | None — a mesh's, in its local frame (m)
 
     The arrays are read-only.
     """
@@ -109,21 +101,20 @@ class Part:
 
     Attributes
     ----------
-    name : str — the part's name (``sub/part`` for parts of an included file)
+    name : str — ``sub/part`` for parts of an included file
     shape : str — the shape name of SPEC §1
-    mass : float — kg, always positive; ``subtract`` says whether it is removed
+    mass : float — kg, positive
     subtract : bool — True for a hole or pocket (its mass is taken away)
-    com : (3,) ndarray — m, the part's centre of mass
-    inertia_com : (3, 3) ndarray — kg m^2, about the part's com, body axes, tensor convention
-    measure : float | None — the part's volume (m^3), area (m^2) or length (m)
+    com : (3,) ndarray — m
+    inertia_com : (3, 3) ndarray — kg m^2, about the com, body axes, tensor convention
+    measure : float | None — its volume (m^3), area (m^2) or length (m)
     measure_kind : str — "volume", "area", "length", "point" or "given"
-    radius : float | None — m, the outer radius of a round part (disk, ring, cylinder, ...)
-    axis : (3,) ndarray — the part's local z axis in the body frame
-    extra : Mapping[str, object] — shape-specific facts worth reporting (e.g. a mesh's
-        volume and area), read-only
+    radius : float | None — m, the outer radius of a round part
+    axis : (3,) ndarray — its local z axis in the body frame
+    extra : Mapping[str, object] — facts worth reporting (a mesh's volume and area, a STEP
+        solid's unit and colour), read-only
     where : Location | None — where the part is defined
-    outline : Outline | None — the part's shape and placement for drawings (None when the
-        loader did not record one: it is then drawn as a dot at its com)
+    outline : Outline | None — for drawings (None: drawn as a dot at its com)
 
     The arrays are read-only (writable ones passed in are copied).
     """

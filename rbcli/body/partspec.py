@@ -1,14 +1,7 @@
-"""A part as the body file writes it (:class:`PartSpec`, what :mod:`rbcli.parts` makes),
-and Python data made plain and immutable (:func:`freeze`), as a body file could hold it.
-
-Freezing makes plain, immutable values: str, int, float, bool, None, tuples, read-only
-mappings with text keys; numpy scalars and arrays become Python numbers and tuples. It
-refuses a value of a type no body file holds (a complex number, a set, an object) or a
-mapping key that is not a text with a ``TypeError`` naming where it is; a cycle, nesting
-deeper than a body file may nest, an integer of more than 300 digits or a text that is not
-Unicode (a lone surrogate) with an :class:`rbcli.errors.InputError` located there.
-
-Light on purpose: ``import rbcli.parts`` loads this module and no numpy.
+"""A part as the body file writes it (:class:`PartSpec`, what :mod:`rbcli.parts` makes) and
+Python data made plain and immutable (:func:`freeze`: numpy values as Python's; a type no
+body file holds is a ``TypeError``, a cycle, too deep nesting, an integer of more than 300
+digits or a lone surrogate an InputError, located). No numpy: ``rbcli.parts`` loads it.
 """
 
 from __future__ import annotations
@@ -147,14 +140,9 @@ def thaw(v: object) -> object:
 
 
 class PartSpec(Mapping):
-    """One part of a body as the body file writes it: a read-only mapping of its keys
-    (``shape``, ``name``, sizes, mass, placement), made by the constructors of
-    :mod:`rbcli.parts`.
-
-    A small frozen value: its values are plain and immutable (numbers, texts, tuples,
-    read-only mappings), so it can be kept, compared, hashed and reused in many bodies. What
-    it says is checked when a body is built from it (:meth:`rbcli.Body.from_parts`), with
-    the messages a body file gets.
+    """One part as the body file writes it: a read-only mapping of its keys, made by
+    :mod:`rbcli.parts`; frozen (kept, compared, hashed, reused), checked when a body is built
+    of it (:meth:`rbcli.Body.from_parts`).
 
     Attributes
     ----------

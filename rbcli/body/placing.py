@@ -1,15 +1,8 @@
-"""Placing a body file's primitive parts in batches (issue 15: 100 000-part bodies).
-
-The loader (:mod:`rbcli.body.bodyfile`) checks each part as it reads it and keeps what it
-found as a :class:`Pending`; :func:`finish` then places a batch of them at once: their
-rotations per kind (:func:`rbcli.core.rotation.from_specs`), ``com = at + R c`` and
-``J = R (m U) Rᵀ`` as stacked matrix products — the same numbers, bit for bit, as one
-product per part (numpy makes the same BLAS call for each matrix of a stack) — and
-makes their :class:`rbcli.body.partmodel.Part` s, whose arrays are rows of a few shared arrays.
-
-An included file's parts stay arrays (a :class:`Stack`): each use of the file moves all of
-them at once (:meth:`Stack.moved`) and only the top file makes Part objects, so that an
-included part costs about what the same part written inline does (issue 16).
+"""Placing primitive parts in batches (issue 15: 100 000-part bodies): the loader keeps each
+checked part as a :class:`Pending`; :func:`finish` places a batch at once (``com = at + R c``,
+``J = R (m U) Rᵀ`` as stacked products: the same numbers, bit for bit, as one by one) and makes
+their :class:`rbcli.body.partmodel.Part` s. An included file's parts stay arrays (a
+:class:`Stack`) that each use moves at once (issue 16).
 """
 
 from __future__ import annotations
@@ -73,9 +66,8 @@ def _units(pending: list) -> np.ndarray:
 
 
 def _placed(pending: list) -> tuple:
-    """``pending`` placed: (coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines'
-    origins (n, 3) and rotations (n, 3, 3)), read-only arrays that own their data (their
-    rows are the parts' arrays: :class:`rbcli.body.partmodel.Part` keeps such rows, not copies)."""
+    """``pending`` placed: coms (n, 3), inertias (n, 3, 3), axes (n, 3), the outlines' origins
+    (n, 3) and rotations (n, 3, 3): read-only arrays owning their data (the parts keep rows)."""
     ats = np.array([p.at for p in pending], dtype=float)  # (n, 3), owns its data
     Rs = rot.from_specs([p.spec for p in pending])
     local_coms = np.array([p.com for p in pending], dtype=float)
@@ -93,13 +85,7 @@ def _placed(pending: list) -> tuple:
 
 def finish(items: list, start: int = 0) -> list:
     """``items`` with every :class:`Pending` of ``items[start:]`` replaced by its placed
-    :class:`Part` (in place; a :class:`Stack` stays as it is).
-
-    The primitives are placed together: their rotations per kind
-    (:func:`rbcli.core.rotation.from_specs`), ``com = at + R c`` and ``J = R (m U) Rᵀ`` as stacked matrix
-    products, which give the same numbers as one product per part. The parts' arrays are
-    rows of a few shared arrays (the outlines' read-only ones).
-    """
+    :class:`Part`, in place (stacked products; the parts' arrays rows of a few shared ones)."""
     pending = [p for p in items[start:] if isinstance(p, Pending)]
     if not pending:
         return items
@@ -120,21 +106,15 @@ def finish(items: list, start: int = 0) -> list:
 
 
 class Stack:
-    """Placed parts kept as arrays, not yet :class:`Part` s: an included file's parts.
-
-    Each use of an included file moves all its parts at once (:meth:`moved`, stacked
-    products) and only the top file makes Part objects (:meth:`parts`), once a part: an
-    included file's parts are not made and then made again per use.
+    """Placed parts kept as arrays (an included file's): each use moves them at once
+    (:meth:`moved`); only the top file makes :class:`Part` s (:meth:`parts`).
 
     Attributes
     ----------
-    names : list of str — the parts' names (``sub/part`` once moved by an include)
-    rows : list — per part what placing does not change: its :class:`Pending` (a primitive)
-        or its :class:`Part` (a mesh or given part: its ``extra`` and outline's kind, dims
-        and mesh are kept)
+    names : list of str — ``sub/part`` once moved by an include
+    rows : list — per part what placing keeps: its :class:`Pending` or :class:`Part`
     com, inertia, axis : (n, 3), (n, 3, 3), (n, 3) arrays — as :class:`Part` has them
-    at, R : (n, 3), (n, 3, 3) read-only arrays — the outlines' placements (a part without
-        an outline has the identity there, unused)
+    at, R : (n, 3), (n, 3, 3) read-only arrays — the outlines' placements
     """
 
     __slots__ = ("names", "rows", "com", "inertia", "axis", "at", "R")
@@ -182,10 +162,8 @@ class Stack:
         return cls([p.name], [p], p.com[None], p.inertia_com[None], p.axis[None], at[None], R[None])
 
     def moved(self, at: np.ndarray, R: np.ndarray, prefix: str) -> Stack:
-        """The parts moved by ``x -> at + R x`` (an include's placement), their names
-        prefixed: ``com = at + c Rᵀ`` and ``J = R J Rᵀ`` for all at once, the outlines'
-        ``at + R a`` and ``R Q`` stacked (each the same numbers, bit for bit, as one part at
-        a time: tests/test_body_fast.py)."""
+        """The parts moved by ``x -> at + R x`` (an include's placement), names prefixed, all
+        at once (bit for bit one part's numbers: tests/test_body_fast.py)."""
         com = at + self.com @ R.T
         inertia = np.einsum("ij,njk,lk->nil", R, self.inertia, R)
         axis = self.axis @ R.T

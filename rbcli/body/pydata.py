@@ -1,17 +1,8 @@
-"""Bodies from Python data: :func:`load_data` (a mapping like a body file's),
-:func:`from_parts` (parts made by :mod:`rbcli.parts`), and the bodies made from another
-(:func:`replace_part`, :func:`move_part`, :func:`with_points`); each returns the body's
-components (:class:`rbcli.body.bodyfile.Built`), which :mod:`rbcli.body.model` makes a Body.
-
-There is one validator, the body loader (:mod:`rbcli.body.bodyfile` and its readers): Python
-data is first frozen (:func:`rbcli.body.partspec.freeze`), then made into the loader's tree
-(:func:`tree`), each node located by a :class:`rbcli.body.loadctx.DataMark` (its key path,
-``parts[2].radius``) instead of a line and column. The loader then makes every check and
-says every message it says of a file.
-
-A body built here keeps its document as YAML text (``Body.text``, what
-:func:`rbcli.io.yamldump.dump` writes of the frozen data), so that it can be written
-(``Body.to_yaml``), changed (``Body.replace``) and reported like a body read from a file.
+"""Bodies from Python data (:func:`load_data`, :func:`from_parts`), from another body
+(:func:`replace_part`, :func:`move_part`, :func:`with_points`) and from a CAD file
+(:func:`cad_file`), as :class:`rbcli.body.bodyfile.Built`: the data frozen, made the loader's
+tree (:func:`tree`, located by :class:`rbcli.body.loadctx.DataMark`), checked by the one
+loader; ``Body.text`` is its YAML, so it is written, changed and reported like a file.
 """
 
 from __future__ import annotations
@@ -238,10 +229,9 @@ def move_part(body, which: object, at: object = None, axis: object = None,
 
 
 def with_points(body, points: Sequence[tuple[str, float, Sequence[float]]]) -> Built:
-    """``body`` with point masses added: ``(name, mass kg, at (3,) m)`` each, written as
-    ``point`` parts with numbers in explicit units (``"43.631 g"``, ``"200 mm"``: 15
-    significant figures, whatever the body's ``units``); a name already used gets `` (2)``,
-    `` (3)``... (what ``rbcli balance --apply`` writes)."""
+    """``body`` with point masses ``(name, mass kg, at (3,) m)`` added as ``point`` parts in
+    explicit units (``"43.631 g"``: 15 figures), a name used again numbered `` (2)``
+    (``rbcli balance --apply``)."""
     data = document(body)
     parts = data["parts"]
     names = {p["name"] for p in parts if isinstance(p, dict) and isinstance(p.get("name"), str)}

@@ -1,7 +1,5 @@
-"""The JSON Schema (draft-07) of the body file, generated from the same tables the
-loader validates with, so that editors' YAML language servers can check a file as
-it is typed. ``rbcli schema`` prints it; the installed copy is ``rbcli/data/body.schema.json``
-(a test keeps it equal to :func:`body_schema`).
+"""The JSON Schema (draft-07) of the body file, from the loader's own tables, for editors:
+``rbcli schema`` prints it; ``rbcli/data/body.schema.json`` is it (a test keeps it so).
 """
 
 from __future__ import annotations

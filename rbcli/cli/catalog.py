@@ -12,29 +12,24 @@ from rbcli.cli.app import MANUAL, app
 SPECIAL = {
     "mesh": (
         "a uniform solid bounded by a closed triangle mesh from a file: STL (binary or ASCII) "
-        "or OBJ (polygons are fanned into triangles); the table and JSON add its volume, "
-        "surface area and triangle count",
-        "file (relative to the body file); optional scale (a plain factor), units (the length "
-        "unit of the mesh's coordinates, e.g. mm; default: the body file's length unit), "
-        "weld (a length, or exact: how far apart the copies of a vertex may be; default from "
-        "the file's precision), allow_open (true: accept boundary edges, with a warning)",
+        "or OBJ (polygons fanned into triangles); the table and JSON add its volume, area and "
+        "triangle count",
+        "file (relative to the body file); optional scale (a plain factor), units (of the "
+        "mesh's coordinates, e.g. mm; default: the body file's length unit), weld (a length, or "
+        "exact: how far apart the copies of a vertex may be; default from the file's "
+        "precision), allow_open (true: accept boundary edges, with a warning)",
         "mass or density (a hole in a mesh, or a mesh hole, may use cut_from)",
         "the mesh's own coordinate origin (file coordinates x scale x units), not its centroid",
-        "exact volume, centroid and second moments of the polyhedron (divergence theorem over "
-        "the triangles, integrated about the mesh's bounding-box centre so a part far from the "
-        "origin keeps its digits). Checked, each an error naming the file: unreadable, truncated "
-        "or malformed file; NaN or infinite coordinates; not closed (says how many boundary "
-        "edges) unless allow_open; non-manifold edges (shared by three or more triangles); mixed "
-        "orientation; no volume (flat or degenerate). A mesh facing inward everywhere is turned "
-        "outward with a warning. Binary STL stores float32 coordinates (about 7 digits). "
-        "Welding: vertices with identical coordinates are merged; if the mesh is then open, "
-        "the ends of its boundary edges whose coordinates differ by at most the weld tolerance "
-        "are merged too (CAD noise such as 0 next to -3.79e-33), with a warning giving the "
-        "largest gap closed. Default tolerance: 4 float32 ulps of the largest coordinate for "
-        "binary STL, 1e-9 of the bounding-box diagonal for ASCII STL and OBJ; at most 1e-3 of "
-        "the mesh's size. Welding decides closedness only: the integrals use the triangles as "
-        "written. A group of vertices spanning more than the tolerance (a chain) is not merged. "
-        "Files must be regular files of at most 1 GiB (RBCLI_MAX_MESH_BYTES changes the limit)",
+        "exact volume, centroid and second moments of the polyhedron (divergence theorem, about "
+        "the bounding-box centre: a part far from the origin keeps its digits). Refused, naming "
+        "the file: unreadable, truncated or malformed; NaN or infinite coordinates; not closed "
+        "(how many boundary edges) unless allow_open; non-manifold edges; mixed orientation; "
+        "no volume. Inward everywhere: turned outward, with a warning. Vertices with equal "
+        "coordinates are merged; if the mesh is then open, boundary vertices closer than the "
+        "weld tolerance too (CAD noise such as 0 next to -3.79e-33), with a warning giving the "
+        "largest gap (default: 4 float32 ulps of the largest coordinate for binary STL, 1e-9 of "
+        "the bounding-box diagonal for ASCII STL and OBJ; at most 1e-3 of the mesh's size); "
+        "welding decides closedness only. At most 1 GiB (RBCLI_MAX_MESH_BYTES)",
     ),
     "step": (
         "the solids of a STEP file (a CAD part or assembly; pip install 'rbcli[cad]'), each a "
@@ -209,10 +204,8 @@ MANUAL["shapes"] = {
 }
 MANUAL["materials"] = {
     "notes": [
-        "The table is rbcli/data/materials.csv: each material's names (designations, trade "
-        "names), density (kg/m^3) and source (a standard, handbook or data sheet); wood at 12 % "
-        "moisture. Names match ignoring case, hyphens, underscores and spacing (Aluminum-6061 "
-        "is aluminium 6061); an unknown one is refused with the nearest.",
+        "The table: rbcli/data/materials.csv (names, density in kg/m^3, source; wood at 12 % "
+        "moisture). Names match ignoring case, hyphens and spacing (Aluminum-6061).",
     ],
     "json": [("name, aliases, density, source", "one object per material; density in kg/m^3.")],
     "examples": [

@@ -47,7 +47,7 @@ def inertia(
     json_: bool = c.JsonOpt,
     fmt: str = typer.Option(None, "--format", metavar="table|json|csv|urdf|sdf|mjcf", help=INERTIA_FORMAT_HELP, show_default=False),
     principal_: bool = typer.Option(False, "--principal", help="With --format urdf|sdf|mjcf: the principal moments and the principal axes' orientation instead of the full tensor in body axes."),
-    each: bool = typer.Option(False, "--each", help="With --format urdf|sdf|mjcf: one <link> (MJCF <body>) per part, named by the part up to its first '/': a STEP file's top-level solid or sub-assembly, an included file; each <inertial> in the body frame."),
+    each: bool = typer.Option(False, "--each", help="With --format urdf|sdf|mjcf: one <link> per part up to its first '/' (a STEP file's top-level solid or sub-assembly)."),
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -189,10 +189,9 @@ MANUAL["inertia"] = {
         "diaginertia. Every comment states the off-diagonals' sign. --about, --axis, --omega, "
         "--units and --products positive do not apply to these formats (exit 2: they fix "
         "the tensor's sign). Several bodies: one element per body, one after another.",
-        "--each with --format urdf, sdf or mjcf prints one <link> (MJCF <body>) per part "
-        "instead, named by the part's name up to its first '/': for a STEP assembly, each "
-        "top-level solid or sub-assembly; for a body file, each part or included file. Every "
-        "<inertial> is in the body frame (the assembly's).",
+        "--each with --format urdf, sdf or mjcf prints one <link> (MJCF <body>) per part, "
+        "named up to its first '/' (a STEP assembly's top-level solids and sub-assemblies, a "
+        "body file's parts and included files), each <inertial> in the body frame.",
     ],
     "json": [
         ("mass", "total mass, kg."),
