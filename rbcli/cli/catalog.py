@@ -24,7 +24,7 @@ SPECIAL = {
         "the bounding-box centre: a part far from the origin keeps its digits). Refused, naming "
         "the file: unreadable, truncated or malformed; NaN or infinite coordinates; not closed "
         "(how many boundary edges) unless allow_open; non-manifold edges; mixed orientation; "
-        "no volume. Inward everywhere: turned outward, with a warning. Vertices with equal "
+        "no volume. A mesh facing inward is turned outward, with a warning. Vertices with equal "
         "coordinates are merged; if the mesh is then open, boundary vertices closer than the "
         "weld tolerance too (CAD noise such as 0 next to -3.79e-33), with a warning giving the "
         "largest gap (default: 4 float32 ulps of the largest coordinate for binary STL, 1e-9 of "
@@ -98,7 +98,8 @@ def shapes(
         rows = [r for r in rows if r[0] == name]
         if not rows:
             names = [*SHAPES, *SPECIAL]
-            raise InputError(f"unknown shape '{name}'{suggest(name, names)} (shapes: {', '.join(names)})")
+            raise InputError(f"unknown shape '{name}'{suggest(name, names)} (shapes: "
+                             f"{', '.join(names)})")
     e = c.env()
     if json_:
         from rbcli.render.jsonout import dumps
