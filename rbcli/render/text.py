@@ -10,6 +10,7 @@ plain ASCII without colour when not a terminal.
 from __future__ import annotations
 
 import io
+import math
 import os
 import re
 import shutil
@@ -81,61 +82,78 @@ class Doc:
         self.table(title, ("quantity", "value", "unit"), rows, right=(1,))
 
     def render(self) -> str:
-        """The document for a terminal or a pipe (rich's tables): plain ASCII tables without
-        colour when not a terminal, with colour on one."""
+        """The document as text (rich): colour on a terminal, plain ASCII otherwise.
+
+        No number, unit or word is ever broken across lines: on a terminal a table's cells
+        wrap at spaces to fit its width (a table that cannot fit so is printed wider); when
+        not a terminal a table is as wide as its rows. Notes wrap at spaces at the terminal's
+        width (not a terminal: ``COLUMNS``, else 100), a word longer than that on a line of
+        its own."""
         env = self.env
-        color = bool(env and env.color)
-        width = env.width if env and env.width else None
-        if width is None:
-            width = shutil.get_terminal_size((100, 24)).columns if env and env.stdout_isatty else _columns()
-        rich_print = _rich_printer(color, width)
+        tty = bool(env and env.stdout_isatty)
+        width = (env.width if env and env.width else None) or \
+            (shutil.get_terminal_size((100, 24)).columns if tty else _columns())
+        rich_print = _rich_printer(bool(env and env.color), width, tty)
         return "".join(rich_print(item) for item in self.items)
 
 
-def _rich_printer(color: bool, width: int):
+def _fit(hi: list[int], lo: list[int], room: float) -> list[int]:
+    """Column widths: each column's widest cell, the widest shrunk one character at a time
+    (never below its longest word) until the row fits ``room``."""
+    w = list(hi)
+    while sum(w) > room:
+        i = max(range(len(w)), key=lambda j: (w[j] > lo[j], w[j]))
+        if w[i] <= lo[i]:
+            break
+        w[i] -= 1
+    return w
+
+
+def _rich_printer(color: bool, width: int, tty: bool):
     """A function that renders one document item with rich (imported here, when needed)."""
     from rich import box
+    from rich.cells import cell_len
     from rich.console import Console
     from rich.table import Table as RichTable
     from rich.text import Text
 
     buf = io.StringIO()
-    console = Console(
-        file=buf,
-        force_terminal=color,
-        no_color=not color,
-        color_system="standard" if color else None,
-        width=width,
-        highlight=False,
-        emoji=False,
-        markup=False,
-        legacy_windows=False,
-    )
+    console = Console(file=buf, force_terminal=color, no_color=not color, color_system="standard" if color else None,
+                      width=1 << 20, highlight=False, emoji=False, markup=False, legacy_windows=False)
+
+    def longest(texts) -> int:
+        return max((cell_len(w) for t in texts for w in t.split()), default=0)
 
     def render(item) -> str:
         buf.seek(0)
         buf.truncate()
         # every piece of text is made safe once, here: control characters and line
-        # separators escaped, runs over 200 characters cut (rbcli.env.clean)
-        if isinstance(item, Heading):
-            console.print(Text(clean(item.text, keep_newlines=True, max_line=None), style="bold" if color else ""))
-        elif isinstance(item, Note):
-            console.print(Text(clean(item.text, keep_newlines=True, max_line=None)))
-        else:
-            t = RichTable(
-                title=clean(item.title) or None,
-                title_justify="left",
-                box=box.SIMPLE_HEAD if color else box.ASCII2,
-                show_edge=False,
-                pad_edge=False,
-                title_style="bold" if color else None,
-                header_style="bold" if color else None,
-            )
-            for i, c in enumerate(item.columns):
-                t.add_column(clean(c), justify="right" if i in item.right else "left", overflow="fold")
-            for r in item.rows:
-                t.add_row(*(clean(x) for x in r))
-            console.print(t)
+        # separators escaped, runs over 200 characters cut (rbcli.errors.clean)
+        if isinstance(item, (Heading, Note)):
+            text = clean(item.text, keep_newlines=True, max_line=None)
+            style = "bold" if color and isinstance(item, Heading) else ""
+            console.print(Text(text, style=style), width=max(width, longest([text])))
+            return buf.getvalue()
+        cols = [clean(c) for c in item.columns]
+        rows = [[clean(x) for x in r] for r in item.rows]
+        cells = [[c, *(r[i] for r in rows if i < len(r))] for i, c in enumerate(cols)]
+        hi = [max(cell_len(line) for x in col for line in x.split("\n")) for col in cells]
+        widths = _fit(hi, [longest(col) for col in cells], width - 3 * (len(cols) - 1) if tty else math.inf)
+        title = clean(item.title)
+        room = sum(widths) + 3 * (len(cols) - 1)
+        # a title with a word wider than its table, or wider than a terminal its table overflows: apart
+        apart = longest([title]) > room or (tty and room > width and cell_len(title) > width)
+        if apart:
+            console.print(Text(title, style="bold" if color else ""), width=max(width if tty else 100, longest([title])))
+        t = RichTable(title=None if apart else title or None, title_justify="left",
+                      box=box.SIMPLE_HEAD if color else box.ASCII2, show_edge=False, pad_edge=False,
+                      title_style="bold" if color else None, header_style="bold" if color else None)
+        for i, c in enumerate(cols):
+            t.add_column(c, justify="right" if i in item.right else "left",
+                         width=None if widths == hi else widths[i])
+        for r in rows:
+            t.add_row(*r)
+        console.print(t)
         return buf.getvalue()
 
     return render
