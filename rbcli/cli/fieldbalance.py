@@ -134,7 +134,7 @@ def _figure(res, su, plot_path, report_path) -> str | None:
     from rbcli.render.field.tables import reading_display
     from rbcli.render.plots import figure_bytes
 
-    fig = balanceplot.plot(res.diagram(), su, reading_display(res.reading_kind, su))
+    fig = balanceplot.plot(res.diagram(), su, reading_display(res.reading_kind, su, res.measure))
     if plot_path is not None:
         c.save_plot(fig, plot_path)
     return None if report_path is None else figure_bytes(fig, "svg").decode("utf-8")

@@ -11,9 +11,10 @@ angles. Grey-scale safe: roles differ by line style as well as shade.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
-from rbcli.render.fmt import num
+from rbcli.render.fmt import ROUNDOFF, num
 from rbcli.render.plots import figure
 
 #: how each role is drawn: (colour, line style, legend order)
@@ -71,7 +72,11 @@ def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
         ax.tick_params(axis="y", labelsize=7)
         handles = []
         seen: dict[str, int] = {}
+        tiny = ROUNDOFF * max([a.magnitude for a in panel.arrows] + [0.0])  # round-off: no length, no angle
         for a in panel.arrows:
+            if a.mass == 0.0 and a.role in ("correction", "residual"):
+                continue  # no weight of nothing at a position
+            a = replace(a, defined=a.defined and a.magnitude > tiny)
             colour, ls = ROLE_STYLE.get(a.role, ("black", "-"))
             repeat = seen[a.role] = seen.get(a.role, -1) + 1
             if repeat:  # a second run or correction in one panel: another dash pattern

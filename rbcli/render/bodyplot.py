@@ -183,7 +183,7 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     -------
     matplotlib.figure.Figure — 2 × 2 axes: 3-D view, top, front and side views
     """
-    f, L = du.factor("length")
+    f, L = du.of(body).factor("length")
     ell = np.asarray(principal.equivalent_ellipsoid, dtype=float)
     N = np.asarray(principal.axes, dtype=float)
     c = np.asarray(com, dtype=float)

@@ -124,6 +124,7 @@ def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, pro
                 ref_label: str, *, parts: bool = True) -> None:
     """The tables of ``rbcli inertia``; ``parts=False`` leaves out the parts table (the
     report has its own, with each part's contribution)."""
+    du = du.of(body)
     doc.heading(f"{body.name}  ({body.source})")
     rows = [("mass", du.show(r.mass, "mass", digits), du.unit("mass"))]
     rows += vec_rows("com", r.com, du, "length", digits)
@@ -222,6 +223,7 @@ def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, r
                   *, parts: bool = True) -> None:
     """The tables of ``rbcli principal``; ``parts=False`` leaves out the mesh parts table
     (the report has its own parts table, with the mesh facts)."""
+    du = du.of(body)
     doc.heading(f"{body.name}  ({body.source})")
     f, unit = du.factor("inertia")
     rows = []
@@ -232,7 +234,7 @@ def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, r
                 str(i + 1),
                 num(r.moments[i] * f, digits),
                 ", ".join(num(x, digits) for x in snap(r.axes[i], scale=1.0, rtol=1e-15)),
-                ", ".join(num(x, 4) for x in angles[i]),
+                ", ".join(num(x, 4, 360.0) for x in angles[i]),
                 r.stability[i],
             )
         )

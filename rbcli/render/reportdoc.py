@@ -19,7 +19,7 @@ from rbcli.render import echo
 from rbcli.render.fmt import said
 from rbcli.render.report import Figure, Report, Section
 from rbcli.render.text import Doc, Heading, Note, check_finite_doc
-from rbcli.render.units import DisplayUnits, ShopUnits, echo_rows
+from rbcli.render.units import DisplayUnits, ShopUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.report import ReportResult
@@ -87,7 +87,7 @@ def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
     from rbcli.render import balanceplot
 
     res, bo = c.result, c.options
-    su = ShopUnits(None if du.si else ",".join(u for _, u in (du.length, du.mass, du.time)))
+    su = ShopUnits(",".join(u for _, u in (du.length, du.mass, du.time)) if du.chosen else None, body)
     doc = Doc()
     rb.document(doc, res, su, digits)
     _options_table(doc, rb.echo_rows(res))
@@ -190,8 +190,8 @@ def document(result: ReportResult, units: DisplayUnits | None = None, digits: in
     before each section is drawn."""
     from rbcli import __version__
 
-    du = units or DisplayUnits()
     body = result.body
+    du = (units or DisplayUnits()).of(body)
     sections = []
     for i, c in enumerate(result.sections):
         if progress is not None:

@@ -64,6 +64,7 @@ def conventions_note(res: WhirlResult) -> str:
 def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo: bool = True,
              heading: bool = True) -> None:
     """The tables of a whirl analysis, into ``doc``."""
+    du = du.of(res.units, (res.rotor.mass, max(abs(b.plane) for b in res.bearings)))
     if heading:
         doc.heading(f"{res.name}  ({res.source})" if res.source else res.name)
     if echo:
