@@ -192,7 +192,9 @@ MANUAL["field-balance"] = {
         "Warnings: cond(alpha) > 50 (planes not well separated); Darlow's plane-significance "
         "factor at or below 0.2 (the part of a plane's influence column not explained by the "
         "larger columns before it, relative to the column: Darlow, ASME 82-GT-269, 1982, and "
-        "Balancing of High-Speed Machinery, 1989, ch. 6, as hsbalance's ill_condition flags it); "
+        "Balancing of High-Speed Machinery, 1989, ch. 6: the Gram-Schmidt factor, 0 to 1; "
+        "hsbalance 0.5.5's ill_condition, whose 0.2 threshold this is, projects on the previous "
+        "column only, above 1 from three planes on); "
         "a trial run that changed no reading by 25 % in amplitude or 25° in phase; a reading "
         "that the least-squares or min-max correction makes larger.",
         "Angles: the correction angles come out in the sense of the trial angles. The phases "
