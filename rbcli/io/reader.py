@@ -15,7 +15,9 @@ Every file rbcli reads (a body, a file it includes, a mesh) goes through
 
 Errors are :class:`ReadError` (an :class:`rbcli.errors.InputError`, exit 2) carrying the
 bare ``reason`` (``"no such file"``, ``"is a FIFO (named pipe), not a regular file"``...),
-so each caller words its own message around it.
+so each caller words its own message around it. A missing file is also a
+:class:`FileNotFoundError`, one not allowed a :class:`PermissionError`, a directory an
+:class:`IsADirectoryError` (``errno``, ``filename`` set), as Python's ``open`` raises them.
 """
 
 from __future__ import annotations
@@ -44,6 +46,29 @@ class ReadError(InputError):
         self.reason = reason
         text = f"no such file: {path}" if reason == "no such file" else f"{path}: {reason}"
         super().__init__(text, where)
+
+
+class MissingFile(ReadError, FileNotFoundError):
+    """A file that is not there: an InputError and a FileNotFoundError."""
+
+
+class DeniedFile(ReadError, PermissionError):
+    """A file rbcli may not read: an InputError and a PermissionError."""
+
+
+class FolderFile(ReadError, IsADirectoryError):
+    """A directory named as a file: an InputError and an IsADirectoryError."""
+
+
+_ERRNO = {errno.ENOENT: MissingFile, errno.EACCES: DeniedFile, errno.EPERM: DeniedFile, errno.EISDIR: FolderFile}
+
+
+def _error(name: str, reason: str, where: Location | None, code: int | None = None) -> ReadError:
+    """The ReadError of ``reason``; with the OSError subclass of ``code`` (an errno)."""
+    exc = _ERRNO.get(code, ReadError)(name, reason, where)  # type: ignore[arg-type]
+    if code in _ERRNO:
+        exc.errno, exc.strerror, exc.filename = code, os.strerror(code), name  # type: ignore[attr-defined]
+    return exc
 
 
 def size_text(n: int) -> str:
@@ -133,12 +158,12 @@ def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
         st = os.stat(name)  # refuse a FIFO or device before opening it at all
         reason = _kind(st.st_mode)
         if reason:
-            raise ReadError(name, reason, where)
+            raise _error(name, reason, where, errno.EISDIR if stat.S_ISDIR(st.st_mode) else None)
         fd = os.open(name, flags)
     except ReadError:
         raise
     except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
+        raise _error(name, _os_reason(exc), where, exc.errno) from None
     except ValueError as exc:  # e.g. a name the OS cannot take
         raise ReadError(name, f"cannot read the file: {exc}", where) from None
     try:
@@ -162,7 +187,7 @@ def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
     except ReadError:
         raise
     except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
+        raise _error(name, _os_reason(exc), where, exc.errno) from None
     finally:
         os.close(fd)
 
