@@ -11,11 +11,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.body.model import Body
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
 AXES = ("x", "y", "z")

@@ -9,13 +9,13 @@ import numpy as np
 
 from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
-from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.massprops import AXES, vec_rows
 from rbcli.render.plots import figure, style
 from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.body.model import Body
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
 #: the CSV header of ``--csv`` (the columns of :func:`rbcli.core.freestate.series`)
