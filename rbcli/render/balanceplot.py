@@ -50,6 +50,7 @@ def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
     matplotlib.figure.Figure
     """
     from matplotlib.lines import Line2D
+    from matplotlib.ticker import MaxNLocator
 
     n = len(diagram.panels)
     cols = n if n <= 4 else 4  # a field job's many readings: rows of four dials
@@ -69,6 +70,7 @@ def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
         rmax = big * 1.12 if big > 0 else 1.0
         ax.set_ylim(0.0, rmax)
         ax.set_rlabel_position(22.5)
+        ax.yaxis.set_major_locator(MaxNLocator(3))  # few radial labels: they share one ray
         ax.tick_params(axis="y", labelsize=7)
         handles = []
         seen: dict[str, int] = {}

@@ -184,6 +184,8 @@ def body_figure(body, com, principal, du: DisplayUnits, title: str):
     matplotlib.figure.Figure — 2 × 2 axes: 3-D view, top, front and side views
     """
     f, L = du.of(body).factor("length")
+    if L == "m" and np.max(np.abs(np.asarray(com))) + max(principal.equivalent_ellipsoid) > 1e4:
+        f, L = 1e-3, "km"  # a planet in km: tick labels without a 1e6 multiplier
     ell = np.asarray(principal.equivalent_ellipsoid, dtype=float)
     N = np.asarray(principal.axes, dtype=float)
     c = np.asarray(com, dtype=float)
@@ -387,11 +389,11 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     ax3.set_xlim((mid[0] - half) * f, (mid[0] + half) * f)
     ax3.set_ylim((mid[1] - half) * f, (mid[1] + half) * f)
     ax3.set_zlim((mid[2] - half) * f, (mid[2] + half) * f)
-    ax3.set_box_aspect((1, 1, 1), zoom=0.82)
+    ax3.set_box_aspect((1, 1, 1), zoom=0.76)  # its labels inside its cell (the layout sees a 3-D cell's box only)
     ax3.view_init(elev=ELEV, azim=AZIM)
-    ax3.set_xlabel(f"x [{L}]")
-    ax3.set_ylabel(f"y [{L}]")
-    ax3.set_zlabel(f"z [{L}]")
+    ax3.set_xlabel(f"x [{L}]", labelpad=8)  # clear of the tick labels
+    ax3.set_ylabel(f"y [{L}]", labelpad=8)
+    ax3.set_zlabel(f"z [{L}]", labelpad=2)
     ax3.set_title("3-D view")
     ax3.tick_params(labelsize=7)
     for a in (ax3.xaxis, ax3.yaxis, ax3.zaxis):

@@ -15,6 +15,7 @@ well-formed XML (matplotlib copies each text into an SVG comment) whatever a nam
 from __future__ import annotations
 
 import io
+import textwrap
 
 from rbcli.errors import clean
 from rbcli.render.safe import escape
@@ -46,7 +47,10 @@ RC = {
     # labels are text, never mathtext or TeX: a body named '$\\frac{$' is shown as written
     "text.parse_math": False,
     "text.usetex": False,
+    "axes.formatter.useoffset": False,  # ticks read as numbers, never "1e-5+3.14159e1"
 }
+#: characters of a suptitle per inch of figure width (~11 pt): longer titles wrap at spaces
+TITLE_CHARS_PER_INCH = 11
 
 
 def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (7.0, 4.2)):
@@ -61,7 +65,7 @@ def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, flo
 
     fig = Figure(figsize=size, layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False)
-    fig.suptitle(label(title))
+    fig.suptitle("\n".join(textwrap.wrap(label(title), int(size[0] * TITLE_CHARS_PER_INCH), break_long_words=False)))
     return fig, axes
 
 
@@ -80,7 +84,7 @@ def sanitise(fig) -> None:
     for t in fig.findobj(Text):
         s = t.get_text()
         if s:
-            safe = label(s)
+            safe = "\n".join(label(line) for line in s.split("\n"))  # the figure's own line breaks kept
             if safe != s:
                 t.set_text(safe)
 
