@@ -43,7 +43,8 @@ class Result:
     def __repr__(self) -> str:
         """One line: the class and the first numbers and words of the JSON."""
         data = self.to_json()
-        shown = [f"{k}={v!r}" for k, v in data.items() if isinstance(v, (str, int, float)) and k != "warnings"][:4]
+        shown = [f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v!r}" for k, v in data.items()
+                 if isinstance(v, (str, int, float)) and k != "warnings"][:4]
         return f"<{type(self).__name__} {' '.join(shown)}{' …' if len(data) > len(shown) else ''}>"
 
     def _repr_html_(self) -> str:
