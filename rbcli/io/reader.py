@@ -48,16 +48,13 @@ class ReadError(InputError):
         super().__init__(text, where)
 
 
-class MissingFile(ReadError, FileNotFoundError):
-    """A file that is not there: an InputError and a FileNotFoundError."""
+class MissingFile(ReadError, FileNotFoundError): ...  # noqa: E701 - each an InputError and an OSError
 
 
-class DeniedFile(ReadError, PermissionError):
-    """A file rbcli may not read: an InputError and a PermissionError."""
+class DeniedFile(ReadError, PermissionError): ...  # noqa: E701
 
 
-class FolderFile(ReadError, IsADirectoryError):
-    """A directory named as a file: an InputError and an IsADirectoryError."""
+class FolderFile(ReadError, IsADirectoryError): ...  # noqa: E701
 
 
 _ERRNO = {errno.ENOENT: MissingFile, errno.EACCES: DeniedFile, errno.EPERM: DeniedFile, errno.EISDIR: FolderFile}
@@ -133,23 +130,13 @@ _READ_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY
 
 def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
                  where: Location | None = None, env: str | None = None) -> bytes:
-    """The bytes of the regular file ``path``, at most ``limit`` of them.
+    """The bytes of the regular file ``path`` (a link followed), at most ``limit``; ``what``
+    names it in messages (``"mesh file"``), ``where`` locates the reference to it (an
+    include's ``file:``), ``env`` is the variable that raises ``limit``.
 
-    Parameters
-    ----------
-    path : the file (followed if it is a symbolic link: reading through a link is safe)
-    limit : the largest size accepted, in bytes
-    what : the noun for messages, e.g. ``"body file"``, ``"mesh file"``
-    where : the location of the reference to the file (an include's ``file:``), if any
-    env : the environment variable that raises ``limit``, named in the message
-
-    Raises
-    ------
-    ReadError
-        (exit 2) a missing or unreadable file, a name with a NUL character, a directory,
-        a FIFO, a device or a socket (refused before reading, without blocking), or a file
-        over ``limit`` bytes (checked before reading, and again while reading).
-    """
+    ReadError (exit 2): a missing or unreadable file, a NUL in the name, a directory, FIFO,
+    device or socket (refused before reading, without blocking), more than ``limit`` bytes
+    (checked before and while reading)."""
     name = os.fspath(path)
     if "\x00" in name:
         raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)

@@ -70,25 +70,9 @@ def canonical_unit(text: str) -> str:
 
 
 def parse_unit(text: str) -> tuple[float, Dim]:
-    """Read a unit expression: its factor to SI and its dimension.
-
-    Parameters
-    ----------
-    text : str
-        E.g. ``"g/cm^3"``, ``"kg*m^2"``, ``"rev/min"``.
-
-    Returns
-    -------
-    factor : float
-        What one of this unit is in SI (m, kg, s, rad), computed exactly and rounded
-        once: ``parse_unit("g/cm^3") == (1000.0, Dim(M=1, L=-3))``.
-    dim : Dim
-
-    Raises
-    ------
-    UnitError
-        Unknown names (with a "did you mean"), bad syntax, powers beyond +-12.
-    """
+    """(factor to SI, dimension) of a unit expression (``"g/cm^3"`` -> ``(1000.0, Dim(M=1,
+    L=-3))``), the factor exact and rounded once. UnitError: unknown names (with a "did you
+    mean"), bad syntax, powers beyond +-12."""
     text = check_text(text, "a unit")
     q, p, d = parse_unit_exact(text)
     return to_float(q, p, text.strip()), d
@@ -96,28 +80,9 @@ def parse_unit(text: str) -> tuple[float, Dim]:
 
 @lru_cache(maxsize=4096)
 def parse_quantity(text: str) -> tuple[float, Dim]:
-    """Read a quantity: its value in SI units and its dimension.
-
-    Parameters
-    ----------
-    text : str
-        A number, optional white space, an optional unit expression: ``"30 cm"``,
-        ``"7850 kg/m^3"``, ``"1200 rpm"``, ``"12 deg"``, ``"4e-4 kg*m^2"``, ``"-3.5 mm"``.
-        A bare number (``"2.5"``) is dimensionless.
-
-    Returns
-    -------
-    value : float
-        In m, kg, s, rad and their products (``"30 cm"`` -> 0.3), rounded once from the
-        exact product of the number and the unit's factor.
-    dim : Dim
-
-    Raises
-    ------
-    UnitError
-        Anything that is not such a quantity, including ``inf``, ``nan`` and numbers
-        whose SI value overflows a float.
-    """
+    """(value in SI, dimension) of a number and an optional unit (``"30 cm"`` -> 0.3,
+    ``"7850 kg/m^3"``, ``"1200 rpm"``; a bare number is dimensionless), rounded once from
+    the exact product. UnitError: anything else, ``inf``, ``nan``, an SI value beyond a float."""
     number, q, p, d, _ = parse_quantity_exact(text)
     return to_float(number * q, p, text.strip()), d
 
@@ -128,31 +93,11 @@ def _format_float(x: float) -> str:
 
 @lru_cache(maxsize=4096)  # see parse_quantity
 def to_si(text: str, kind: str) -> float:
-    """Read a quantity that must be of a given kind; return its value in SI.
-
-    Parameters
-    ----------
-    text : str
-        A quantity with a unit (``"30 cm"``). A bare number is allowed only for
-        ``kind="dimensionless"``; bare numbers in body files go through
-        :func:`unit_for_kind` instead.
-    kind : str
-        A key of :data:`KINDS`.
-
-    Returns
-    -------
-    float
-        The value in SI units of that kind (an angle in rad, an angular speed in rad/s).
-
-    Raises
-    ------
-    UnitError
-        Unreadable text, a missing unit, or a unit of the wrong dimension; the message
-        names both dimensions and suggests units of the right one. A frequency (Hz)
-        given for an angular speed gets its own hint: it is never taken as rad/s.
-    ValueError
-        ``kind`` is not a known kind (a programming error).
-    """
+    """The SI value of ``text``, a quantity with a unit of ``kind`` (a key of :data:`KINDS`;
+    a bare number only for ``"dimensionless"``: a body's bare numbers go through
+    :func:`bare_to_si`). UnitError: unreadable, no unit, or a unit of another dimension
+    (both named, units of the right one suggested; a frequency given for an angular speed
+    has its own hint: never taken as rad/s). ValueError: an unknown ``kind``."""
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     want = KINDS[kind]
@@ -206,41 +151,14 @@ def bare_to_si(x: float, unit: str) -> float:
 
 
 def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
-    """What a bare number of a given kind means in a body file.
+    """(SI per bare number, its unit text: ``"g/mm^3"``, ``""`` dimensionless) of ``kind`` in a
+    body file whose ``units:`` block is ``base_units`` (length, mass, time, angle,
+    angular_speed; defaults m, kg, s, deg, rad/s).
 
-    Parameters
-    ----------
-    base_units : dict
-        The file's ``units:`` block: keys among ``length``, ``mass``, ``time``,
-        ``angle``, ``angular_speed``, values unit texts; missing keys default to m, kg,
-        s, deg and rad/s.
-    kind : str
-        A key of :data:`KINDS`.
-
-    Returns
-    -------
-    factor : float
-        Multiply a bare number by this to get SI.
-    unit : str
-        The unit the bare number is in, e.g. ``"g/mm^3"``; ``""`` for dimensionless.
-
-    Notes
-    -----
-    The kind's dimension is built from the base units (density with
-    ``{length: mm, mass: g}`` is g/mm^3, factor 1e6; force is mass*length/time^2 in
-    those units); an angle is in the angle unit (default deg). Angular speeds are the
-    exception: a bare angular speed is in the file's ``angular_speed`` unit when it names
-    one (``angular_speed: rpm``), else rad/s (SPEC §1: "bare angles are degrees, bare
-    angular speeds rad/s"), whatever the angle and time units.
-
-    Raises
-    ------
-    UnitError
-        An unknown key, an unknown unit, or a unit of the wrong dimension
-        (``{length: kg}``).
-    ValueError
-        ``kind`` is not a known kind (a programming error).
-    """
+    The kind's dimension is built from the base units (density with ``{length: mm, mass:
+    g}`` is g/mm^3, 1e6); angular speeds excepted: the file's ``angular_speed`` unit, else
+    rad/s (SPEC §1), whatever the angle and time units. UnitError: an unknown key or unit, a
+    unit of the wrong dimension (``{length: kg}``); ValueError: an unknown ``kind``."""
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     speed = base_units.get("angular_speed")

@@ -3,19 +3,11 @@ parts, its holes, its centre of mass and principal axes, in a 3-D view and three
 orthographic views (top, front, side) of the body frame.
 
 Each part is drawn from its :class:`rbcli.body.partmodel.Outline` through
-:mod:`rbcli.render.outline` (which does the geometry: surfaces, silhouettes, creases):
-
-- solid parts: light-grey shadows ("0.88") with black outlines (silhouettes and borders),
-  thin grey near-side creases and dashed inner surfaces (a tube's bore); rods, rings and
-  a triangle's edges as black lines; point masses as black dots; a part given by its
-  mass properties as its equivalent uniform ellipsoid with its centre marked ×;
-- subtracted parts (holes, pockets), drawn after every solid: white with a dashed
-  outline;
-- over them the centre of mass (+), the principal axes 1, 2, 3 (ascending moments) as
-  arrows from the com, and the body's equivalent uniform ellipsoid as a dotted outline.
-
-The three flat views share one scale, so lengths can be compared between them. Grey
-scale only. matplotlib is imported only when a figure is drawn.
+:mod:`rbcli.render.outline` (the geometry): solids grey with black outlines, thin creases
+and dashed inner surfaces; holes white, dashed, after every solid; point masses as dots; a
+given part as its equivalent ellipsoid, its centre ×; over them the com (+), the principal
+axes 1, 2, 3 as arrows and the body's equivalent ellipsoid dotted. The flat views share
+one scale. Grey scale only.
 """
 
 from __future__ import annotations

@@ -9,7 +9,7 @@ result by its class's name.
 
 from __future__ import annotations
 
-import html as _html
+import html as _markup
 from types import SimpleNamespace
 from typing import Any
 
@@ -53,6 +53,15 @@ _BUILD = {
 }
 
 
+def _html(item: Any) -> str:
+    e, right = _markup.escape, lambda i: ' style="text-align:right"' if i in item.right else ""  # noqa: E731
+    if not isinstance(item, Table):
+        return f"<h4>{e(item.text)}</h4>" if isinstance(item, Heading) else f"<p>{e(item.text)}</p>"
+    rows = [[f"<th{right(i)}>{e(c)}</th>" for i, c in enumerate(item.columns)]]
+    rows += [[f"<td{right(i)}>{e(x)}</td>" for i, x in enumerate(row)] for row in item.rows]
+    return f"<table><caption>{e(item.title)}</caption>" + "".join(f"<tr>{''.join(r)}</tr>" for r in rows) + "</table>"
+
+
 def html(obj: Any) -> str:
     """``obj``'s tables (and figure) as an HTML fragment; a result of no command: its JSON's
     top-level numbers and words."""
@@ -60,18 +69,5 @@ def html(obj: Any) -> str:
     build = _BUILD.get(type(obj).__name__)
     fig = build(doc, obj) if build else doc.kv(type(obj).__name__, [
         (k, str(v), "") for k, v in obj.to_json().items() if isinstance(v, (int, float, str))])
-    out = []
-    for item in doc.items:
-        if isinstance(item, (Heading, Note)):
-            tag = "h4" if isinstance(item, Heading) else "p"
-            out.append(f"<{tag}>{_html.escape(item.text)}</{tag}>")
-        elif isinstance(item, Table):
-            right = lambda i: ' style="text-align:right"' if i in item.right else ""  # noqa: E731
-            out.append(f"<table><caption>{_html.escape(item.title)}</caption><tr>"
-                       + "".join(f"<th{right(i)}>{_html.escape(c)}</th>" for i, c in enumerate(item.columns)) + "</tr>"
-                       + "".join("<tr>" + "".join(f"<td{right(i)}>{_html.escape(x)}</td>" for i, x in enumerate(row))
-                                 + "</tr>" for row in item.rows) + "</table>")
-    if fig is not None:
-        svg = figure_bytes(fig, "svg").decode("utf-8")
-        out.append(svg[svg.index("<svg"):])
-    return "\n".join(out)
+    svg = figure_bytes(fig, "svg").decode("utf-8") if fig is not None else "<svg"
+    return "\n".join([_html(item) for item in doc.items] + [svg[svg.index("<svg"):]] * (fig is not None))

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import io
 import math
-import os
 import re
 import shutil
 from collections.abc import Sequence
@@ -56,9 +55,6 @@ class Doc:
         self.env = env
         self.items: list = [] if items is None else items
 
-    def __repr__(self) -> str:
-        return f"Doc(env={self.env!r}, items={self.items!r})"
-
     def heading(self, text: str) -> None:
         self.items.append(Heading(text))
 
@@ -92,7 +88,7 @@ class Doc:
         env = self.env
         tty = bool(env and env.stdout_isatty)
         width = (env.width if env and env.width else None) or \
-            (shutil.get_terminal_size((100, 24)).columns if tty else _columns())
+            max(40, shutil.get_terminal_size((100, 24)).columns)  # not a terminal: COLUMNS, else 100
         rich_print = _rich_printer(bool(env and env.color), width, tty)
         return "".join(rich_print(item) for item in self.items)
 
@@ -159,13 +155,6 @@ def _rich_printer(color: bool, width: int, tty: bool):
     return render
 
 
-def _columns() -> int:
-    try:
-        return max(40, int(os.environ.get("COLUMNS", "100")))
-    except ValueError:
-        return 100
-
-
 # ----------------------------------------------------------------------------- checks
 
 
@@ -175,17 +164,9 @@ _CELL_SPLIT = re.compile(r"[\s\[\](),;=]+")
 
 
 def check_finite_doc(doc: Doc) -> None:
-    """Refuse a table that would show inf or NaN as a number.
-
-    Looks at the numeric (right-aligned) columns of every table: a whole word there that
-    reads inf or nan is what ``num()`` prints for a result that overflowed. Names, notes
-    and left-aligned text are not looked at (a part may be called "nan").
-
-    Raises
-    ------
-    NonFiniteResult
-        (exit 2, one line) naming the table and the row.
-    """
+    """Refuse (NonFiniteResult, exit 2, naming the table and the row) a table whose numeric
+    (right-aligned) columns hold a word inf or nan: what ``num()`` prints for an overflow.
+    Names, notes and left-aligned text are not looked at (a part may be called "nan")."""
     for item in doc.items:
         if not isinstance(item, Table):
             continue
