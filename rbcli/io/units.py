@@ -1,15 +1,7 @@
-"""Units: read ``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"`` into SI floats.
-
-Standard library only (this module sits on every command's start-up path).
-
-Model
------
-The unit table (dimensions, kinds, exact factors) is :mod:`rbcli.io.unittable`; the
-grammar of units and quantities :mod:`rbcli.io.unitparse`; this module the conversions
-the rest of rbcli calls. Every factor is exact and the product of a quantity's number and
-its unit is rounded to a float once, at the very end, so ``"7.85 g/cm^3"`` gives exactly
-7850.0, ``"1 in"`` exactly 0.0254 and ``"12 deg"`` the float nearest to 12 pi / 180.
-"""
+"""Units: read ``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"`` into SI floats (standard
+library only). The table is :mod:`rbcli.io.unittable`, the grammar :mod:`rbcli.io.unitparse`;
+factors are exact and a quantity is rounded to a float once, so ``"7.85 g/cm^3"`` is exactly
+7850.0 and ``"1 in"`` exactly 0.0254."""
 
 from __future__ import annotations
 
@@ -70,9 +62,9 @@ def canonical_unit(text: str) -> str:
 
 
 def parse_unit(text: str) -> tuple[float, Dim]:
-    """(factor to SI, dimension) of a unit expression (``"g/cm^3"`` -> ``(1000.0, Dim(M=1,
-    L=-3))``), the factor exact and rounded once. UnitError: unknown names (with a "did you
-    mean"), bad syntax, powers beyond +-12."""
+    """Read a unit expression (``"g/cm^3"``, ``"kg*m^2"``, ``"rev/min"``): (its factor to SI,
+    exact and rounded once, its Dim); ``parse_unit("g/cm^3") == (1000.0, Dim(M=1, L=-3))``.
+    UnitError for unknown names (with a "did you mean"), bad syntax, powers beyond +-12."""
     text = check_text(text, "a unit")
     q, p, d = parse_unit_exact(text)
     return to_float(q, p, text.strip()), d
@@ -80,9 +72,9 @@ def parse_unit(text: str) -> tuple[float, Dim]:
 
 @lru_cache(maxsize=4096)
 def parse_quantity(text: str) -> tuple[float, Dim]:
-    """(value in SI, dimension) of a number and an optional unit (``"30 cm"`` -> 0.3,
-    ``"7850 kg/m^3"``, ``"1200 rpm"``; a bare number is dimensionless), rounded once from
-    the exact product. UnitError: anything else, ``inf``, ``nan``, an SI value beyond a float."""
+    """Read a quantity (``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"``; a bare number is
+    dimensionless): (its value in SI, rounded once from the exact product, its Dim).
+    UnitError for anything else, ``inf``, ``nan`` and values that overflow."""
     number, q, p, d, _ = parse_quantity_exact(text)
     return to_float(number * q, p, text.strip()), d
 
@@ -93,11 +85,12 @@ def _format_float(x: float) -> str:
 
 @lru_cache(maxsize=4096)  # see parse_quantity
 def to_si(text: str, kind: str) -> float:
-    """The SI value of ``text``, a quantity with a unit of ``kind`` (a key of :data:`KINDS`;
-    a bare number only for ``"dimensionless"``: a body's bare numbers go through
-    :func:`bare_to_si`). UnitError: unreadable, no unit, or a unit of another dimension
-    (both named, units of the right one suggested; a frequency given for an angular speed
-    has its own hint: never taken as rad/s). ValueError: an unknown ``kind``."""
+    """Read a quantity of kind ``kind`` (a key of :data:`KINDS`) in SI (an angle in rad).
+
+    A bare number only for ``"dimensionless"`` (a body file's bare numbers:
+    :func:`unit_for_kind`). UnitError for unreadable text, a missing unit or one of the wrong
+    dimension (naming both and suggesting units; a frequency in Hz is never taken as rad/s);
+    ValueError for an unknown kind."""
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     want = KINDS[kind]
@@ -151,14 +144,14 @@ def bare_to_si(x: float, unit: str) -> float:
 
 
 def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
-    """(SI per bare number, its unit text: ``"g/mm^3"``, ``""`` dimensionless) of ``kind`` in a
-    body file whose ``units:`` block is ``base_units`` (length, mass, time, angle,
-    angular_speed; defaults m, kg, s, deg, rad/s).
+    """What a bare number of ``kind`` means in a body file with ``units:`` block ``base_units``
+    (length, mass, time, angle, angular_speed; default m, kg, s, deg, rad/s): (the factor to
+    SI, the unit's text, ``""`` for dimensionless).
 
-    The kind's dimension is built from the base units (density with ``{length: mm, mass:
-    g}`` is g/mm^3, 1e6); angular speeds excepted: the file's ``angular_speed`` unit, else
-    rad/s (SPEC §1), whatever the angle and time units. UnitError: an unknown key or unit, a
-    unit of the wrong dimension (``{length: kg}``); ValueError: an unknown ``kind``."""
+    The kind's dimension is built from the base units (density with ``{length: mm, mass: g}`` is
+    g/mm^3); a bare angular speed is in ``angular_speed`` when given, else rad/s, whatever the
+    angle and time units (SPEC §1). UnitError for an unknown key or unit, or one of the wrong
+    dimension; ValueError for an unknown kind."""
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     speed = base_units.get("angular_speed")
