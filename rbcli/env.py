@@ -112,15 +112,16 @@ def prepare_streams() -> None:
                 pass
 
 
-def write_error(text: str) -> bool:
-    """Write a message line to standard error; False (and nothing raised) when it cannot
-    take it (closed, full, a closed pipe): an exit status never depends on stderr."""
+def write_error(text: str, stream: IO[str] | None = None) -> bool:
+    """Write a message line, made safe (:func:`clean`), to ``stream`` (standard error); False
+    (nothing raised) when it cannot take it (closed, full): no exit status depends on it."""
+    stream = sys.stderr if stream is None else stream
     try:
-        sys.stderr.write(clean(text.rstrip("\n")) + "\n")
-        sys.stderr.flush()
+        stream.write(clean(text.rstrip("\n")) + "\n")
+        stream.flush()
         return True
     except Exception:  # noqa: BLE001 - closed, full, broken: nothing else to tell
-        silence(sys.stderr, 2)
+        silence(stream, 2)
         return False
 
 
@@ -278,11 +279,6 @@ class Env:
         self.debug = debug
         self.pipe_closed = pipe_closed
 
-    def __repr__(self) -> str:
-        return (f"Env(stdout={self.stdout!r}, stderr={self.stderr!r}, stdout_isatty={self.stdout_isatty!r}, "
-                f"color={self.color!r}, width={self.width!r}, debug={self.debug!r}, "
-                f"pipe_closed={self.pipe_closed!r})")
-
     @classmethod
     def from_process(cls) -> "Env":
         try:
@@ -308,10 +304,5 @@ class Env:
             raise _stdout_error(exc) from None
 
     def warn(self, text: str) -> None:
-        """One warning line on standard error, made safe (:func:`clean`); nothing is raised
-        when standard error cannot take it."""
-        try:
-            self.stderr.write(clean(text.rstrip("\n")) + "\n")
-            self.stderr.flush()
-        except Exception:  # noqa: BLE001 - closed, full or broken stderr
-            silence(self.stderr, 2)
+        """One warning line on this run's standard error (:func:`write_error`)."""
+        write_error(text, self.stderr)

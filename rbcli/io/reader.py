@@ -1,23 +1,14 @@
 """The one input reader: regular files and standard input, type and size checked first.
 
-Every file rbcli reads (a body, a file it includes, a mesh) goes through
-:func:`read_regular`; standard input (BODY ``-``) through :func:`read_stream`.
+Every file rbcli reads (a body, an include, a mesh) goes through :func:`read_regular`,
+standard input (BODY ``-``) through :func:`read_stream`. Only a regular file is read: a
+FIFO, a device or a directory is refused before a byte is read, without blocking (opened
+``O_NONBLOCK``, its type taken from the open descriptor); the size is checked before and
+while reading, standard input's as it comes (``- < /dev/zero`` stops at the limit).
 
-- Only a regular file is read. A FIFO, a device (``/dev/zero``, ``/dev/urandom``), a
-  socket or a directory is refused with a message, before a byte is read, and without
-  blocking: the file is opened with ``O_NONBLOCK``, so opening a FIFO with no writer does
-  not hang, and its type is taken from the open descriptor (``fstat``), so what is
-  checked is what is read.
-- The size is checked before reading (``st_size``), and the read stops at the limit
-  anyway (a file that grows while it is read).
-- Standard input is read in chunks and refused as soon as it passes the same limit, so
-  ``rbcli inertia - < /dev/zero`` stops at the limit instead of filling memory.
-
-Errors are :class:`ReadError` (an :class:`rbcli.errors.InputError`, exit 2) carrying the
-bare ``reason`` (``"no such file"``, ``"is a FIFO (named pipe), not a regular file"``...),
-so each caller words its own message around it. A missing file is also a
-:class:`FileNotFoundError`, one not allowed a :class:`PermissionError`, a directory an
-:class:`IsADirectoryError` (``errno``, ``filename`` set), as Python's ``open`` raises them.
+Errors are :class:`ReadError` (an InputError, exit 2) with the bare ``reason`` (``"no such
+file"``...) for callers to word; a missing file is also a FileNotFoundError, a forbidden
+one a PermissionError, a directory an IsADirectoryError (``errno``, ``filename`` set).
 """
 
 from __future__ import annotations

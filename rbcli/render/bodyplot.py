@@ -58,19 +58,10 @@ FIGURE_MAX_DOTS = 2000
 
 @dataclass(frozen=True)
 class Drawn:
-    """Which parts the body figure draws (indices into ``body.parts``, in file order).
-
-    Attributes
-    ----------
-    outlined : tuple of int — drawn by their outline (the heaviest, within
-        :data:`FIGURE_MAX_PARTS`, that have an outline)
-    dotted : tuple of int — drawn as a dot at their centre: those among the heaviest
-        without an outline, and the next heaviest (within :data:`FIGURE_MAX_DOTS`)
-    left_out : int — parts not drawn at all (the lightest)
-    left_out_mass : float — kg, their mass (holes counted by their mass too)
-    total : int — parts of the body
-    mass : float — kg, the mass of every part (holes counted by their mass too)
-    """
+    """Which parts the body figure draws (indices into ``body.parts``, in file order):
+    ``outlined`` the heaviest with an outline (:data:`FIGURE_MAX_PARTS`), ``dotted`` those
+    without and the next heaviest (:data:`FIGURE_MAX_DOTS`); ``left_out`` the lightest, of
+    ``left_out_mass`` kg; ``total`` parts of ``mass`` kg (holes by their mass too)."""
 
     outlined: tuple[int, ...]
     dotted: tuple[int, ...]
@@ -159,22 +150,9 @@ def segments(n_parts: int) -> int:
 
 
 def body_figure(body, com, principal, du: DisplayUnits, title: str):
-    """The figure (matplotlib Figure) of the body's parts, com and principal axes.
-
-    Parameters
-    ----------
-    body : Body — its parts, each drawn from its ``outline`` (a part without one as a dot
-        at its com)
-    com : (3,) ndarray — m, the centre of mass
-    principal : PrincipalResult — about the com (``axes`` as rows, ``equivalent_ellipsoid``
-        semi-axes in m)
-    du : DisplayUnits — the length unit of the axes
-    title : str — the figure title (with the body name)
-
-    Returns
-    -------
-    matplotlib.figure.Figure — 2 × 2 axes: 3-D view, top, front and side views
-    """
+    """The Figure (3-D view, top, front and side views) of ``body``'s parts (a part without
+    ``outline`` as a dot), its ``com`` ((3,) m) and ``principal`` axes about the com (a
+    PrincipalResult), lengths in ``du``'s unit of the body."""
     f, L = du.of(body).factor("length")
     if L == "m" and np.max(np.abs(np.asarray(com))) + max(principal.equivalent_ellipsoid) > 1e4:
         f, L = 1e-3, "km"  # a planet in km: tick labels without a 1e6 multiplier

@@ -30,16 +30,9 @@ PARTS_TABLE_ROWS = 100
 
 
 def kept_parts(*scores, limit: int = PARTS_TABLE_ROWS) -> np.ndarray | None:
-    """Which parts a summarised table shows: None when all ``n`` fit in ``limit`` rows,
-    else the indices (ascending, so in file order) of the ``limit`` parts of largest
-    score.
-
-    Parameters
-    ----------
-    *scores : (n,) arrays — the first decides, each later one breaks the ties left by the
-        ones before it; remaining ties go to the earlier part
-    limit : int — the most rows
-    """
+    """Which parts a summarised table shows: None when all fit in ``limit`` rows, else the
+    indices (in file order) of the ``limit`` of largest score (``scores``: (n,) arrays, each
+    breaking the ties of those before it; then the earlier part)."""
     n = len(scores[0])
     if n <= limit:
         return None

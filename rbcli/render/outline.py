@@ -6,26 +6,17 @@ placement) becomes a :class:`Sketch` — vertices on the shape's true surface, t
 between them, and the lines drawn whatever the view (a rod, a ring, a triangle's edges).
 :func:`shadow` projects a sketch orthographically on the (i, j) plane of the body frame:
 
-- the *fill* is the union of the triangles not seen edge-on (the shape's shadow, holes
-  of a tube or torus included, for any surface, closed or not), given compactly as the
-  polygons bounding it (:func:`fill_loops`), or the convex hull for a convex shape;
-- the *outline* is every edge between a triangle facing the viewer and one facing away
-  or seen edge-on (the silhouette, the contour generator of a tessellated surface), every
-  edge of an open surface's border, and the always-drawn lines (a surface seen wholly
-  edge-on, like a flat ellipsoid from its side, is drawn by all its edges);
-- the *creases* are sharp edges (dihedral angle over :data:`CREASE_DEG`) on the viewer's
-  side that are not outline: a box's near edges, a cylinder's end circles;
-- *hidden* outline segments are those that come only from inner surfaces (a tube's bore,
-  a hollow sphere's cavity), for dashed drawing.
+- the *fill*: the union of the triangles not seen edge-on (holes of a tube included), as
+  the polygons bounding it (:func:`fill_loops`), or the convex hull of a convex shape;
+- the *outline*: every edge between a triangle facing the viewer and one facing away or
+  edge-on (the silhouette), an open surface's border, and the always-drawn lines;
+- the *creases*: sharp edges (over :data:`CREASE_DEG`) on the viewer's side, not outline;
+- *hidden* outline segments: those only of inner surfaces (a bore, a cavity), dashed.
 
-Circles are sampled with :data:`SEGMENTS` points; every vertex lies on the exact surface,
-so outlines are inscribed polygons (the shape's boundary to within ``R (1 − cos(π/n))``).
-Meshes are drawn from a decimated copy (:func:`decimate`: vertex clustering, Rossignac &
-Borrel, "Multi-resolution 3D approximations for rendering complex scenes", 1993) of at
-most :data:`MESH_MAX_TRIANGLES` triangles, made here when a figure is drawn (the body
-keeps its file's mesh); a part given by its mass properties is drawn as its equivalent
-uniform ellipsoid (:func:`rbcli.body.partmodel.equivalent_ellipsoid`, which the loader keeps on its
-outline: the plausibility warnings measure it too).
+Circles have :data:`SEGMENTS` points, every vertex on the exact surface (outlines within
+``R (1 − cos(π/n))``). Meshes are drawn from a copy decimated by vertex clustering
+(:func:`decimate`; Rossignac & Borrel 1993) to :data:`MESH_MAX_TRIANGLES`; a given part as
+its equivalent uniform ellipsoid (:func:`rbcli.body.partmodel.equivalent_ellipsoid`).
 """
 
 from __future__ import annotations
@@ -516,16 +507,8 @@ def fill_loops(faces, points2) -> list[np.ndarray]:
     boundaries), so a nonzero fill paints exactly the union, uncovered holes left empty;
     a patch of many triangles becomes one polygon along its border.
 
-    Parameters
-    ----------
-    faces : (m, 3) int array — indices into ``points2``; triangles sharing a vertex must
-        share its index for their common edges to cancel
-    points2 : (n, 2) array — projected vertices
-
-    Returns
-    -------
-    list of (k, 2) ndarray — closed (first point repeated)
-    """
+    ``faces``: (m, 3) indices into ``points2`` ((n, 2) projected vertices; a shared vertex
+    has one index, so that common edges cancel). Returns closed (k, 2) loops."""
     P = np.asarray(points2, dtype=float)
     F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if not len(F):

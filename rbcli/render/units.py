@@ -161,11 +161,6 @@ class ShopUnits:
         return "—" if x is None else num(float(x) / self._kinds[kind][0], digits)
 
 
-def _g(x: float) -> str:
-    text = f"{x:.6g}"
-    return "0" if text == "-0" else text
-
-
 class BodyUnits:
     """A body's bare units (:mod:`rbcli.io.bare`): how the "options" table shows a value
     given for it — the number as understood, in the unit a bare number would have meant."""
@@ -174,10 +169,6 @@ class BodyUnits:
 
     def __init__(self, base: Mapping[str, str] | None = None) -> None:
         self.base = dict(base or {})
-
-    @classmethod
-    def of(cls, body: Any) -> "BodyUnits":
-        return cls(getattr(body, "units", None) if body is not None else None)
 
     def label(self, kind: str) -> str:
         return bare.label(self.base, kind)
@@ -188,8 +179,8 @@ class BodyUnits:
         f = unit[0] if unit else bare.factor(self.base, kind)
         vals = si.tolist() if hasattr(si, "tolist") else si
         if isinstance(vals, (list, tuple)):
-            return ", ".join(_g(float(x) / f) for x in vals)
-        return _g(float(vals) / f)
+            return ", ".join(num(float(x) / f) for x in vals)
+        return num(float(vals) / f)
 
     def echo(self, param: str, si: Any, kind: str, typed: str | None = None) -> tuple[str, str, str]:
         """One row (option, value, unit) of the "options" table: the value in the unit the
@@ -202,7 +193,7 @@ class BodyUnits:
             vals = [float(x) for x in vals] if isinstance(vals, (list, tuple)) else [float(vals)]
             other = "rad/s" if unit == "rpm" else "rpm"
             per = 1.0 if other == "rad/s" else 1.0 / RPM
-            value += f" ({', '.join(_g(v / per) for v in vals)} {other})"
+            value += f" ({', '.join(num(v / per) for v in vals)} {other})"
         return option_name(param), value, unit
 
 
