@@ -196,16 +196,10 @@ def restore_signals(old: dict) -> None:
 
 
 def prepare_blas() -> None:
-    """One BLAS thread for the command line, unless the user chose (``OPENBLAS_NUM_THREADS``).
-
-    numpy's OpenBLAS starts a worker thread per core at ``import numpy``; each busy-waits
-    ~0.1 s before sleeping, and on a 2-core machine that wait cost every run ~50 ms of
-    start-up (CPU and wall: ``rbcli inertia`` on a small body 0.20 -> 0.15 s CPU). rbcli
-    gains nothing from BLAS threads: its products are 3 x 3, and a mesh's moment sums
-    (3 x n) run on one thread anyway (OpenBLAS splits them over 3 outputs); the numbers are
-    bit for bit the same (tests/test_env.py, bench/mesh_vs_trimesh.py). Only before numpy
-    is imported, so a program that uses rbcli as a library keeps its own setting.
-    """
+    """One BLAS thread for the command line unless the user chose (``OPENBLAS_NUM_THREADS``),
+    before numpy is imported (a library user keeps theirs): each worker thread busy-waits
+    ~0.1 s after ``import numpy`` (~50 ms a run on 2 cores), and rbcli's 3 x 3 and 3 x n
+    products gain nothing; the numbers are the same bytes (tests/test_same_bytes.py)."""
     if "numpy" not in sys.modules:
         os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 

@@ -172,14 +172,8 @@ def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
 
 def read_stream(stream: BinaryIO | None, limit: int, what: str = "file", *,
                 name: str = "standard input", env: str | None = None) -> bytes:
-    """All of a byte stream (standard input), read in chunks, at most ``limit`` bytes.
-
-    Raises
-    ------
-    ReadError
-        (exit 2) a closed stream (``<&-``), a stream that cannot be read, or more than
-        ``limit`` bytes (found while reading: never more than ``limit`` + 64 KiB is held).
-    """
+    """All of a byte stream (standard input), in chunks, at most ``limit`` bytes; ReadError
+    (exit 2): closed (``<&-``), unreadable, or over ``limit`` (never more than 64 KiB over held)."""
     if stream is None:
         raise ReadError(name, "is closed; give a BODY file instead of '-', or pipe a body in")
     chunks = []

@@ -1,10 +1,8 @@
 """Tables of ``rbcli balance`` (the JSON is the result's own; ``field-balance``'s tables are
 :mod:`rbcli.render.field.tables`).
 
-Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
-correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
-forces in N, speeds in rpm (and rad/s). With ``--units`` (e.g. ``in,oz``) lengths and masses
-follow it (unbalance in oz·in, the rotor mass in oz); forces stay in N. JSON is always SI.
+In :class:`rbcli.render.units.ShopUnits` (g·mm, g·mm², g, mm, µm, the rotor in kg; or the
+body's or ``--units``' in, oz...); forces in N, speeds in rpm and rad/s. JSON is SI.
 """
 
 from __future__ import annotations

@@ -1,11 +1,9 @@
 """Polar balancing diagrams: the rotor's clock face with the vectors of a balancing job.
 
-Draws a :class:`rbcli.api.diagram.Diagram` (finished numbers: magnitudes in SI and angles
-as the command prints them) and returns the matplotlib Figure; the command line writes it.
-Each panel is a polar plot with 0° (the mark) on the right. Angles counted with the
-rotation go counterclockwise, angles counted against it (``--angle-sense against``)
-clockwise, so every vector sits where it is on the rotor and the dial reads the printed
-angles. Grey-scale safe: roles differ by line style as well as shade.
+A :class:`rbcli.api.diagram.Diagram` (magnitudes in SI, angles as printed) as a Figure of
+polar panels, 0° (the mark) on the right, angles with the rotation counterclockwise (against
+it, ``--angle-sense against``, clockwise): each vector where it is on the rotor. Roles
+differ by line style as well as shade.
 """
 
 from __future__ import annotations
@@ -41,14 +39,8 @@ def _units(panel: Any, su: Any, reading: tuple[float, str]) -> tuple[float, str]
 
 
 def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
-    """The figure of ``diagram`` (one polar panel each), tables' display units ``su``
-    (:class:`rbcli.render.balance.ShopUnits`) and ``reading`` = (SI per display unit,
-    unit) for readings (a relative scale: (1, "")).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-    """
+    """The Figure of ``diagram`` (a polar panel each) in the tables' units ``su``
+    (:class:`rbcli.render.units.ShopUnits`), readings in ``reading`` = (SI per unit, unit)."""
     from matplotlib.lines import Line2D
     from matplotlib.ticker import MaxNLocator
 

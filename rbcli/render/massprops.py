@@ -1,9 +1,5 @@
-"""Tables for ``inertia`` and ``principal`` (the JSON is the results' ``to_json()``).
-
-The functions take a result of :mod:`rbcli.api.inertia` or :mod:`rbcli.api.principal`
-(``InertiaResult``, ``PrincipalResult``); the report also passes :mod:`rbcli.core` results, which have the
-same attributes.
-"""
+"""Tables for ``inertia`` and ``principal``: of an ``InertiaResult`` or ``PrincipalResult``
+(or the :mod:`rbcli.core` results with the same attributes the report passes)."""
 
 from __future__ import annotations
 

@@ -1,10 +1,6 @@
-"""A body or a result in a notebook: the command's tables as HTML (units in the headers) and
-its figure inline as SVG, for ``_repr_html_``.
-
-:meth:`rbcli.api.result.Result._repr_html_` and :meth:`rbcli.body.model.Body._repr_html_`
-import this one module inside the method (the one import of render from api and the body:
-tests/test_architecture.py lists it); it imports no api module at run time and knows a
-result by its class's name.
+"""A body or a result in a notebook (``_repr_html_``, which imports this module inside the
+method: tests/test_architecture.py lists it): its command's tables as HTML, units in the
+headers, and its figure as SVG. No api import at run time: a result is known by its name.
 """
 
 from __future__ import annotations

@@ -1,15 +1,9 @@
 """The one look of every rbcli figure, and its bytes in memory (the cli writes them).
 
-matplotlib is imported only inside these functions (it costs ~400 ms), through its
-Figure API without pyplot, so nothing is ever drawn on screen. Figures are readable
-in print and in grey scale: black and dark greys with distinct line styles and
-markers rather than colour alone. SVG and PDF are written without dates (and honour
-SOURCE_DATE_EPOCH), so the same input gives the same bytes.
-
-Every text of a figure (titles, axis labels, legends, annotations: names of bodies, parts,
-planes and sensors among them) is made safe before it is drawn (:func:`label`): control,
-bidirectional and XML-illegal characters shown as visible escapes, so that an SVG stays
-well-formed XML (matplotlib copies each text into an SVG comment) whatever a name holds.
+matplotlib (~400 ms) is imported only inside these functions, its Figure API without
+pyplot. Grey scale with distinct line styles; SVG and PDF without dates (the same input,
+the same bytes). Every text is made safe before it is drawn (:func:`label`: control,
+bidirectional and XML-illegal characters as visible escapes, so an SVG stays valid XML).
 """
 
 from __future__ import annotations

@@ -2,9 +2,7 @@
 by :mod:`rbcli.render.report`, as HTML or Markdown.
 
 A command's render module fills a :class:`Doc` with neutral items; how they look is
-decided only when the document is rendered. Text from the user (names, titles, cells) is
-made safe for a terminal there, once (:func:`rbcli.errors.clean`). Tables for people: units in headers,
-plain ASCII without colour when not a terminal.
+decided when it is rendered, where text from the user is made safe once (:func:`clean`).
 """
 
 from __future__ import annotations
@@ -78,13 +76,9 @@ class Doc:
         self.table(title, ("quantity", "value", "unit"), rows, right=(1,))
 
     def render(self) -> str:
-        """The document as text (rich): colour on a terminal, plain ASCII otherwise.
-
-        No number, unit or word is ever broken across lines: on a terminal a table's cells
-        wrap at spaces to fit its width (a table that cannot fit so is printed wider); when
-        not a terminal a table is as wide as its rows. Notes wrap at spaces at the terminal's
-        width (not a terminal: ``COLUMNS``, else 100), a word longer than that on a line of
-        its own."""
+        """The document as text (rich; colour on a terminal). No word is ever split: on a
+        terminal cells wrap at spaces to its width (a table that cannot fit, wider); not on
+        one, a table is as wide as its rows; notes wrap at spaces (``COLUMNS``, else 100)."""
         env = self.env
         tty = bool(env and env.stdout_isatty)
         width = (env.width if env and env.width else None) or \

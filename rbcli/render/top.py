@@ -1,9 +1,5 @@
-"""Tables, the figure and the CSV rows of ``rbcli top``; tables of ``rbcli gyrocompass``.
-
-Render only formats and draws what :mod:`rbcli.api.top` computed (its TopResult and
-GyrocompassResult, and the sampled motion, a :class:`rbcli.core.toppath.TopState`); the JSON is
-the result's own ``to_json()``.
-"""
+"""Tables, the figure and the CSV rows of ``rbcli top`` (a TopResult and its sampled
+:class:`rbcli.core.toppath.TopState`); tables of ``rbcli gyrocompass``."""
 
 from __future__ import annotations
 

@@ -1,6 +1,5 @@
-"""Units in tables: the one place that turns SI numbers into the units people read.
-
-JSON is always SI; tables show
+"""Units in tables: the one place that turns SI numbers into the units people read (JSON
+is SI):
 
 - :class:`DisplayUnits` — the body file's ``units``, or ``--units mm,g`` (each base dimension
   one unit; any kind's unit composed from them, inertia in g·mm² for ``mm,g``), round-off as 0;
