@@ -95,13 +95,11 @@ def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) ->
         value, dim = un.parse_quantity(s)
     except un.UnitError as exc:
         raise _error(option, literal(exc)) from None
-    if dim == un.Dim() and _bare(s):
-        if bare is None:
-            return value
-        factor, _ = un.parse_unit(bare)
-        return value * factor
-    try:
-        return un.to_si(s, kind)
+    plain = dim == un.Dim() and _bare(s)
+    if plain and bare is None:
+        return value
+    try:  # a bare number in ``bare`` as if typed with it: one route, one rounding
+        return un.to_si(f"{s} {bare}" if plain else s, kind)
     except un.UnitError as exc:
         raise _error(option, literal(exc)) from None
 

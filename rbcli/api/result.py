@@ -28,8 +28,26 @@ class Result:
     #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
     warnings: tuple[str, ...] = ()
 
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        cls.__repr__ = Result.__repr__  # type: ignore[method-assign]  # set before @dataclass, which keeps it
+
     def __post_init__(self) -> None:
         freeze_fields(self)
+
+    def __repr__(self) -> str:
+        """One line: the class and the first numbers and words of the JSON."""
+        data = self.to_json()
+        shown = [f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v!r}" for k, v in data.items()
+                 if isinstance(v, (str, int, float)) and k != "warnings"][:4]
+        return f"<{type(self).__name__} {' '.join(shown)}{' …' if len(data) > len(shown) else ''}>"
+
+    def _repr_html_(self) -> str:
+        """The command's tables as HTML (units in the headers) and its figure as SVG, for
+        notebooks. The one import of render from api (tests/test_architecture.py)."""
+        from rbcli.render import notebook
+
+        return notebook.html(self)
 
     def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
         raise NotImplementedError

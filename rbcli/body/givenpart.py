@@ -1,7 +1,8 @@
 """A ``shape: given`` part: mass, centre of mass and inertia from a CAD report or a data
 sheet, checked physically possible: a 3x3 matrix or its entries as reports name them
-(``Ixx``, SolidWorks's ``Lxx``, ``Izx`` or ``Ixz``), ``convention`` (tensor or positive)
-needed once a product is non-zero; a matrix symmetric to 1e-9 is symmetrised, with a note.
+(``Ixx``, SolidWorks's ``Lxx``, ``Izx`` or ``Ixz``: both when they agree), ``convention``
+(tensor or positive) needed once a product is non-zero; a matrix symmetric to 1e-9 is
+symmetrised, with a note.
 """
 
 from __future__ import annotations
@@ -32,21 +33,26 @@ SYMMETRY_RTOL = 1e-9
 
 def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
     """The map form's six entries (SI; absent products 0), each read under whichever of its
-    names was given; a diagonal entry missing, or any entry given twice, is an error."""
+    names was given; a product given in both orders (a full 3x3 report: ``Lxy`` and ``Lyx``)
+    is their mean when they agree within :data:`SYMMETRY_RTOL` of the largest entry; a
+    diagonal entry missing, or any other entry given twice, is an error."""
     yv.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia")
     items = inode.items
-    g = {}
+    g, pairs = {}, []
     for entry, names in INERTIA_NAMES.items():
         given = [k for k in items if k in names]  # in file order
-        if len(given) > 1:
+        if len(given) > 2 or len(given) == 2 and given[1] != given[0][0] + given[0][:0:-1]:
             raise ctx.error(items[given[1]][0], f"inertia gives {entry} twice, as '{given[0]}' and "
                             f"'{given[1]}'; give each entry once")
-        if not given:
-            if entry in ("Ixx", "Iyy", "Izz"):
-                raise ctx.error(inode, f"inertia needs '{entry}'")
-            g[entry] = 0.0
-        else:
-            g[entry] = yv.number(ctx, items[given[0]][1], "inertia", given[0])
+        if not given and entry in ("Ixx", "Iyy", "Izz"):
+            raise ctx.error(inode, f"inertia needs '{entry}'")
+        vals = [yv.number(ctx, items[k][1], "inertia", k) for k in given]
+        g[entry] = sum(vals) / len(vals) if vals else 0.0
+        pairs += [(given, vals)] if len(vals) == 2 else []
+    for (a, b), (x, y) in pairs:
+        if abs(x - y) > SYMMETRY_RTOL * max(abs(v) for v in g.values()):
+            raise ctx.error(items[b][0], f"inertia's '{a}' and '{b}' differ ({items[a][1].raw} and "
+                            f"{items[b][1].raw}): a tensor is symmetric; give each product once")
     return g
 
 

@@ -81,6 +81,16 @@ class Body:
             object.__setattr__(self, name, tuple(getattr(self, name)))
         object.__setattr__(self, "units", read_only(self.units))
 
+    def __repr__(self) -> str:
+        return f"<Body {self.name!r} from {self.source}: {len(self.parts)} parts>"
+
+    def _repr_html_(self) -> str:
+        """Its mass, com and parts as an HTML table, for notebooks (the render import: see
+        :meth:`rbcli.api.result.Result._repr_html_`)."""
+        from rbcli.render import notebook
+
+        return notebook.html(self)
+
     # ------------------------------------------------------------------ built in code
 
     @classmethod
