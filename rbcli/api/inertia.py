@@ -197,10 +197,8 @@ class InertiaResult(Result):
 
 
 def links(body: Body, principal: bool = False) -> tuple[tuple[str, Inertial], ...]:
-    """The body as the links of a robot model (``inertia --each``): its parts grouped by
-    their name up to the first ``/`` (a STEP file's top-level solid or sub-assembly, an
-    included file), each group's ``<inertial>`` (:meth:`InertiaResult.inertial`, body frame);
-    an InputError for a group whose holes outweigh it."""
+    """The ``<inertial>`` of each link (``inertia --each``): the parts grouped by their name
+    up to its first ``/``, in the body frame; an InputError if holes outweigh one."""
     groups: dict[str, list] = {}
     for p in check.body(body).parts:
         groups.setdefault(p.name.split("/")[0], []).append(p)
@@ -208,8 +206,7 @@ def links(body: Body, principal: bool = False) -> tuple[tuple[str, Inertial], ..
     for name, parts in groups.items():
         mp = ci.combine(parts)
         if not mp.mass > 0:
-            raise InputError(f"link '{name}': its mass is {mp.mass:.6g} kg; a link needs a "
-                             "positive mass (its holes outweigh it)")
+            raise InputError(f"link '{name}': its mass is {mp.mass:.6g} kg (holes outweigh it)")
         J = mp.inertia_com if principal else snap(mp.inertia_com)
         out.append((name, inertial(mp.mass, mp.com, J, principal=principal)))
     return tuple(out)

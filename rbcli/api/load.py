@@ -70,27 +70,25 @@ def load(path: str | os.PathLike[str], *, material: str | None = None,
     Parameters
     ----------
     path : str or path-like
-        A YAML body file (relative ``include``, mesh and STEP paths start from its folder;
-        ``"-"`` reads standard input); or a ``.step``/``.stp`` file (each solid a part, exact
-        from its B-rep: ``pip install 'rbcli[cad]'``) or a ``.stl``/``.obj`` file (in mm).
+        A YAML body file (``"-"``: standard input), or a ``.step``/``.stp`` file (each solid a
+        part, exact: ``pip install 'rbcli[cad]'``) or a ``.stl``/``.obj`` file (in mm).
     material, density : str; float or str, optional
-        For a STEP, STL or OBJ file, one of them: every solid's material (``"aluminium
-        6061"``: ``rbcli materials``), or density (kg/m³, or ``"2.7 g/cm^3"``).
+        For a STEP, STL or OBJ file, one: every solid's material (``rbcli materials``) or
+        density (kg/m³, or ``"2.7 g/cm^3"``).
     part : str, optional
-        For a STEP file: only the solids this name or pattern (``"link*"``) matches.
+        For a STEP file: the solids this name or pattern (``"link*"``) matches.
 
     Returns
     -------
     Body
-        The validated body in SI units; its ``warnings`` are what the command line prints.
+        Validated, SI; its ``warnings`` are what the command line prints.
 
     Raises
     ------
     TypeError
         An argument of the wrong type.
     rbcli.InputError
-        Anything wrong with the file, located (file, line, column), with the command line's
-        message; an unknown material; ``material``, ``density`` or ``part`` for a body file.
+        Anything wrong with the file, located, with the command line's message.
 
     Examples
     --------
@@ -110,15 +108,13 @@ def load(path: str | os.PathLike[str], *, material: str | None = None,
     if not p.lower().endswith(CAD_SUFFIXES):
         given = [k for k, v in keys.items() if v is not None]
         if given:
-            raise ParamError(given[0], "applies to a STEP, STL or OBJ file given as the body; a "
-                             "body file gives material: or density: on its parts")
+            raise ParamError(given[0], "applies to a STEP, STL or OBJ file, not a body file")
         return model.load_body(p)
     if (material is None) == (density is None):
         raise ParamError("material" if material is None else "density",
-                         f"{literal(p)}: a STEP, STL or OBJ file as the body needs {{material}} or "
-                         "{density} (one of them)")
+                         f"{literal(p)}: give {{material}} or {{density}}, one of them")
     if part is not None and not p.lower().endswith(CAD_SUFFIXES[:2]):
-        raise ParamError("part", "applies to a STEP file (its solids, by name)")
+        raise ParamError("part", "applies to a STEP file")
     if material is not None:
         try:
             materials.density(material)
@@ -140,13 +136,11 @@ def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name
     text : str or bytes
         The YAML.
     units : mapping, optional
-        What bare numbers mean when the text has no ``units:`` of its own, e.g.
-        ``{"length": "mm", "mass": "g"}`` (kinds: length, mass, time, angle,
-        angular_speed). Default SI.
+        What bare numbers mean when the text has no ``units:``, e.g. ``{"length": "mm"}``.
     name : str
         The body's name when the text gives none.
     base_dir : path-like, optional
-        Where relative ``include`` and mesh paths start (default: the current folder).
+        Where relative ``include``, mesh and STEP paths start (default: the current folder).
 
     Returns
     -------
@@ -155,10 +149,9 @@ def load_text(text: str | bytes, *, units: Mapping[str, str] | None = None, name
     Raises
     ------
     TypeError
-        An argument of the wrong type (``units=5``, ``units=["mm"]``), named.
+        An argument of the wrong type, named.
     rbcli.InputError
-        A bad unit (``units: length: ...``); anything wrong with the body, as :func:`load`,
-        located in ``<text>``.
+        A bad unit; anything wrong with the body, as :func:`load`, located in ``<text>``.
 
     Examples
     --------
@@ -184,29 +177,21 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
     Parameters
     ----------
     mapping : mapping
-        ``{"name": ..., "units": ..., "parts": [{"shape": "disk", ...}, ...]}``, or a
-        one-part mapping ``{"shape": "box", "mass": 2, "size": [0.1, 0.2, 0.3]}``.
-    units : mapping, optional
-        What bare numbers mean when the mapping has no ``units`` of its own (as
-        :func:`load_text`).
-    name : str
-        The body's name when the mapping gives none.
-    base_dir : path-like, optional
-        Where relative ``include`` and mesh paths start (default: the current folder).
+        ``{"name": ..., "parts": [{"shape": "disk", ...}, ...]}``, or one part's mapping.
+    units, name, base_dir : optional
+        As :func:`load_text`.
 
     Returns
     -------
     Body
-        The validated body (``source`` ``"<data>"``, ``text`` the mapping as YAML).
+        Validated (``source`` ``"<data>"``, ``text`` the mapping as YAML).
 
     Raises
     ------
     TypeError
-        An argument, or a value in the mapping, of a type no body file holds (a complex
-        number, a set, a key that is not a text), named by its key path.
+        A value of a type no body file holds, named by its key path.
     rbcli.InputError
-        Anything a body file could get wrong, located by key path; a cycle in the data,
-        nesting deeper than 64 levels, an integer of more than 300 digits.
+        Anything a body file could get wrong, located by key path; a cycle in the data.
 
     Examples
     --------

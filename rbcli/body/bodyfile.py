@@ -44,9 +44,8 @@ UNIT_KEYS = ("length", "mass", "time", "angle", "angular_speed")
 
 @dataclass(frozen=True)
 class Built:
-    """A body as the loader made it: the fields of its :class:`rbcli.body.model.Body`, its
-    combined mass properties and the folder (absolute) its document's relative ``include``
-    and mesh paths start from."""
+    """A body as the loader made it: its Body's fields, its mass properties and the folder
+    its document's relative paths start from."""
 
     fields: dict
     mass_props: MassProps
@@ -90,13 +89,8 @@ def _materials(ctx: Ctx, m: ys.MapNode) -> None:
 
 
 def default_units(units: dict[str, str]) -> dict[str, str]:
-    """A caller's default ``units`` (``{"length": "mm"}``) checked, as canonical names.
-
-    Raises
-    ------
-    ValueError
-        An unknown kind or a unit of the wrong dimension (the message says which).
-    """
+    """A caller's default ``units`` (``{"length": "mm"}``) checked, as canonical names; a
+    ValueError says which kind or unit is wrong."""
     out = {}
     for key, unit in units.items():
         if key not in UNIT_KEYS:

@@ -31,9 +31,8 @@ def check_output(out: str, body: Body, *, force: bool, option: str = "--apply") 
 
 
 def remember_origin(body: Body, folder: str) -> None:
-    """Keep on ``body`` the folder (absolute) relative ``include`` and mesh paths of its
-    document start from: not a field, so that a ``dataclasses.replace`` of it, whose parts
-    need not be its document's, has none."""
+    """Keep on ``body`` the folder its document's relative paths start from (not a field: a
+    ``dataclasses.replace`` of it has none)."""
     object.__setattr__(body, "_origin", folder)
 
 
@@ -52,16 +51,8 @@ def _rebase(path: str, old_dir: str, new_dir: Path) -> str:
 
 
 def document(body) -> dict:
-    """``body``'s document as plain data (dicts and lists), ready to change and write: a
-    one-part shorthand made a ``parts:`` list, ``name`` and the ``units`` bare numbers
-    follow always written.
-
-    Raises
-    ------
-    InputError
-        A body no reader of rbcli made (``Body(...)`` or ``dataclasses.replace``): it has
-        no document.
-    """
+    """``body``'s document as plain data (dicts and lists; a shorthand a ``parts:`` list;
+    ``name`` and ``units`` written); an InputError for a body no reader made."""
     if origin(body) is None:
         raise InputError("this body has no document to write or change: it was not made by "
                          "rbcli.load, load_text, load_data, Body.from_parts, Body.replace or "
@@ -85,14 +76,8 @@ def document(body) -> dict:
 
 
 def to_yaml(body: Body, base_dir: str | os.PathLike[str] | None = None) -> str:
-    """``body``'s document as YAML text (see the module's notes), its relative file paths
-    rewritten to resolve from ``base_dir`` (default: the current folder).
-
-    Raises
-    ------
-    InputError
-        A body no reader of rbcli made (:func:`document`).
-    """
+    """``body``'s document as YAML text, its relative paths resolving from ``base_dir``
+    (default: the current folder); an InputError for a body no reader made."""
     if base_dir is not None and not isinstance(base_dir, (str, os.PathLike)):
         raise TypeError(f"base_dir: expected a folder (str or path-like), not {type(base_dir).__name__}")
     data = document(body)

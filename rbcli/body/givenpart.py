@@ -32,10 +32,9 @@ SYMMETRY_RTOL = 1e-9
 
 
 def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
-    """The map form's six entries (SI; absent products 0), each read under whichever of its
-    names was given; a product given in both orders (a full 3x3 report: ``Lxy`` and ``Lyx``)
-    is their mean when they agree within :data:`SYMMETRY_RTOL` of the largest entry; a
-    diagonal entry missing, or any other entry given twice, is an error."""
+    """The map form's six entries (SI; absent products 0) under whichever name was given;
+    a product in both orders (``Lxy``, ``Lyx``) their mean if they agree within
+    :data:`SYMMETRY_RTOL`; a diagonal entry missing or another given twice is an error."""
     yv.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia")
     items = inode.items
     g, pairs = {}, []

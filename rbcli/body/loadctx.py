@@ -48,9 +48,8 @@ class Session:
                 "limit")
 
     def list_cap(self, filename: str) -> tuple:
-        """:func:`rbcli.io.yamlsafe.load`'s ``list_cap`` for a file read now: its ``parts``
-        list may hold what is left of the budget (each item costs at least one part), so a
-        file far over the cap is refused while its tree is built, at the first part beyond."""
+        """:func:`rbcli.io.yamlsafe.load`'s ``list_cap``: a ``parts`` list may hold what is
+        left of the budget (refused while its tree is built, at the first part beyond)."""
         return ("parts", self.max_parts - self.used,
                 lambda mark: InputError(self.over_message(), Location(filename, mark.line, mark.col)))
 

@@ -47,8 +47,8 @@ def _index() -> dict[str, Material]:
 
 
 def density(name: str, own: Mapping[str, float] | None = None) -> float:
-    """The density (kg/m³) of material ``name``: the body's ``own`` (keys by :func:`key`)
-    first, then the table; a ValueError (a message template) with the nearest name."""
+    """kg/m³ of material ``name``: the body's ``own`` (keys by :func:`key`), else the table's;
+    else a ValueError (a message template) with the nearest name."""
     k, own = key(name), own or {}
     if k in own:
         return own[k]
@@ -59,5 +59,4 @@ def density(name: str, own: Mapping[str, float] | None = None) -> float:
     close = difflib.get_close_matches(k, list(names), n=1, cutoff=0.6) if len(k) <= 100 else []
     hint = f"; did you mean '{literal(names[close[0]])}'?" if close else ""
     shown = name if len(name) <= 60 else name[:60] + "…"
-    raise ValueError(f"unknown material '{literal(shown)}'{hint} (`rbcli materials` lists the built-in "
-                     "ones; a body file's materials: section adds your own)")
+    raise ValueError(f"unknown material '{literal(shown)}'{hint} (see rbcli materials)")

@@ -143,9 +143,8 @@ def _a(word: str) -> str:
 
 def mass_source(ctx: Any, m: ys.MapNode, measure_kind: str,
                 known: dict[str, tuple[float | None, str]], what: str):
-    """Return (mass or None, density or None, the node to blame). ``known`` holds what a
-    later hole may take from an earlier part (``cut_from``), by its name: (its density, or
-    None; its measure kind)."""
+    """(mass or None, density or None, the node to blame); ``known``: each earlier part's
+    (density or None, measure kind), for a hole's ``cut_from``."""
     items = m.items
     given = list(filter(items.__contains__, MASS_KEYS))  # in MASS_KEYS's order
     cut = items.get("cut_from")

@@ -98,9 +98,8 @@ def _is_include(node: ys.Node) -> bool:
 
 
 def part(ctx: Ctx, node: ys.Node, index: int, names: set[str], known: dict[str, tuple], prefix: str):
-    """One entry of ``parts``: a primitive as a :class:`Pending` (placed by
-    :func:`rbcli.body.placing.finish` with others), an include as a :class:`Stack` of its
-    file's parts, a mesh or given part as a finished :class:`Part`."""
+    """One entry of ``parts``: a :class:`Pending` (a primitive), a :class:`Stack` (an include,
+    a STEP file's solids) or a :class:`Part`."""
     m = node if isinstance(node, ys.MapNode) else yv.mapping(ctx, node, f"part {index + 1}")
     shape_item = m.items.get("shape")
     if shape_item is None:

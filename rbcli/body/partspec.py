@@ -24,20 +24,8 @@ _KINDS = "numbers, texts, booleans, None, lists and mappings with text keys"
 
 
 def freeze(value: object, where: str = "") -> object:
-    """``value`` as immutable plain data a body file could hold (see the module's notes).
-
-    Parameters
-    ----------
-    value : object — a mapping, a list, a number, ...
-    where : str — its key path or parameter name, for messages (``parts[2].at``)
-
-    Raises
-    ------
-    TypeError
-        A value of a type no body file holds, or a mapping key that is not a text.
-    rbcli.InputError
-        A cycle, nesting too deep, an integer too long, a lone surrogate.
-    """
+    """``value`` as immutable plain data a body file could hold (the module's notes);
+    ``where`` its key path for messages (``parts[2].at``)."""
     return _freeze(value, where, 0, set())
 
 

@@ -106,8 +106,8 @@ def finish(items: list, start: int = 0) -> list:
 
 
 class Stack:
-    """Placed parts kept as arrays (an included file's): each use moves them at once
-    (:meth:`moved`); only the top file makes :class:`Part` s (:meth:`parts`).
+    """Placed parts kept as arrays (an included file's, a STEP file's): each use moves them
+    at once; only the top file makes :class:`Part` s.
 
     Attributes
     ----------

@@ -67,9 +67,8 @@ def finding(kind: str, value: float, measure: float | None, solid: bool) -> str 
 
 
 def _meant(kind: str, raw: str, factor: float, measure: float | None, solid: bool) -> str:
-    """The reading of a bare number ``raw`` the user probably meant: the same number in
-    the SI unit (when the body's bare unit is not SI), else in g/cm³ (a density), the first
-    that matter has; '' when neither is."""
+    """The reading of a bare ``raw`` probably meant: in the SI unit (the body's is not), else
+    in g/cm³ (a density), the first that matter has; '' for neither."""
     candidates = ([_SI[kind]] if factor != 1.0 else []) + (["g/cm^3"] if kind == "density" else [])
     for unit in candidates:
         try:

@@ -1,8 +1,5 @@
-"""A ``shape: step`` part: each solid of a STEP file (:mod:`rbcli.io.stepfile`) a part, placed
-by the assembly, then ``at``/``rotate``; named as the part (one solid), ``name/solid``, or
-(unnamed) as the file names it. ``part:`` keeps the solids a pattern matches; ``solids:``
-gives each a material or density; ``mass:`` is shared by volume; ``units:``, ``scale:``
-override the file's unit.
+"""A ``shape: step`` part: each solid of a STEP file (:mod:`rbcli.io.stepfile`) a part (named
+``name/solid``, or unnamed as the file names it), placed by the assembly, then the part.
 """
 
 from __future__ import annotations
@@ -33,8 +30,7 @@ STEP_KEYS = ("name", "shape", "file", "part", "units", "scale", "solids", "subtr
 
 def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, named: bool,
               names: set[str]) -> Part | Stack:
-    """The part(s) of a ``shape: step`` entry; unless ``named``, its solids keep the file's
-    names (checked against ``names``)."""
+    """The part(s) of a step entry; unless ``named``, named as the file names its solids."""
     what = f"part '{name}' (step)"
     yv.check_keys(ctx, m, STEP_KEYS, what, required=("file",))
     fnode = m.items["file"][1]
@@ -45,7 +41,7 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         if "density" in m.items:
             note_density(ctx, src, "density", default, None, True, what)
     if mass is not None and "solids" in m.items:
-        raise ctx.error(m.items["solids"][0], f"{what}: give mass (shared by volume) or solids:")
+        raise ctx.error(m.items["solids"][0], f"{what}: give mass or solids:")
     removed = subtract(ctx, m)
     at, R = placement(ctx, m)
     try:
@@ -55,7 +51,7 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
                         "'rbcli[cad]'") from None
     except ReadError as exc:
         raise ctx.error(fnode, f"{what}: {exc}") from None
-    except StepError as exc:  # at its line in the STEP file
+    except StepError as exc:
         said = literal(str(exc)) if ctx.file == str(path) else f"{what}: {literal(str(exc))}"
         raise InputError(said, Location(str(path), exc.line or 0)) from None
     ctx.inputs.append(os.path.realpath(path))
@@ -78,9 +74,6 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         if not named and shown in names:
             raise ctx.error(fnode, f"two parts are named '{literal(shown)}'; name this part")
         names.add(shown)
-        if s.healed is not None:
-            ctx.warnings.append(f"{ctx.where(fnode)}: warning: {what}: '{literal(s.name)}' healed "
-                                f"by OpenCascade, its volume changed by {s.healed:.2g} of it")
         extra = {"unit": step.unit or "", **({"colour": s.colour} if s.colour else {})}
         out.append(Part(prefix + shown, "step", d * v, removed, com, J, v, "volume", None,
                         Ri[:, 2].copy(), extra, ctx.where(m), given_outline(d * v, com, J)))
@@ -90,13 +83,12 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
 
 
 def _factor(ctx: Ctx, m: ys.MapNode, step, what: str) -> float:
-    """The factor ``units:`` and ``scale:`` put on the file's lengths (read in m), noted."""
+    """The factor ``units:`` and ``scale:`` put on the file's lengths (m), noted."""
     scale, units = scale_units(ctx, m, what, "STEP file")
     if units is None and scale == 1.0:
         return 1.0
     if units is not None and step.metres is None:
-        raise ctx.error(m, f"{what}: units: its own unit ({literal(step.unit or 'none')}) is not "
-                        "one rbcli knows to replace")
+        raise ctx.error(m, f"{what}: units: its unit ({literal(step.unit or 'none')}) is unknown")
     k = scale * (units / step.metres if units is not None else 1.0)
     ctx.warnings.append(f"{ctx.where(m)}: note: {what}: its unit {literal(step.unit or '(none)')} "
                         f"overridden: 1 unit = {k * (step.metres or 1.0):g} m")
@@ -104,8 +96,8 @@ def _factor(ctx: Ctx, m: ys.MapNode, step, what: str) -> float:
 
 
 def _patterns(ctx: Ctx, m: ys.MapNode, names: list[str], what: str) -> tuple[str | None, list]:
-    """``part:`` (None: all) and ``solids:`` as (pattern, its node); each name or pattern of
-    at most 200 characters (matching stays cheap) that matches a solid."""
+    """``part:`` (None: all) and ``solids:`` (pattern, node); each pattern at most 200
+    characters (matching stays cheap) and matching a solid."""
     part = yv.string(ctx, m.items["part"][1], "part") if "part" in m.items else None
     given = yv.mapping(ctx, m.items["solids"][1], "solids").items if "solids" in m.items else {}
     rules = [(p, v) for p, (_k, v) in given.items()]
@@ -120,7 +112,7 @@ def _patterns(ctx: Ctx, m: ys.MapNode, names: list[str], what: str) -> tuple[str
 
 def _density(ctx: Ctx, fnode: ys.Node, solid: str, rules: list, default: float | None,
              what: str) -> float:
-    """kg/m³ of a solid: its first ``solids:`` rule's material or density, else the part's."""
+    """kg/m³ of a solid: its first ``solids:`` rule's, else the part's."""
     for pattern, node in rules:
         if not fnmatchcase(solid, pattern):
             continue
@@ -133,6 +125,5 @@ def _density(ctx: Ctx, fnode: ys.Node, solid: str, rules: list, default: float |
                     raise ctx.error(node, f"{what}: solids: {pattern}: {exc}") from None
         return yv.positive(ctx, node, "density", f"solids: {pattern}")
     if default is None:
-        raise ctx.error(fnode, f"{what}: solid '{literal(solid)}' has no density (density, "
-                        "material or solids:)")
+        raise ctx.error(fnode, f"{what}: solid '{literal(solid)}' has no density")
     return default

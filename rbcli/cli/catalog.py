@@ -32,19 +32,16 @@ SPECIAL = {
         "welding decides closedness only. At most 1 GiB (RBCLI_MAX_MESH_BYTES)",
     ),
     "step": (
-        "the solids of a STEP file (a CAD part or assembly; pip install 'rbcli[cad]'), each a "
-        "part named from the file (name/solid; unnamed: the file's names), placed by its "
-        "assembly; the JSON adds each solid's length unit and colour",
-        "file (.step or .stp, relative to the body file); optional part (the solids a name or "
-        "pattern such as 'link*' matches), solids ({name or pattern: material or density}), "
-        "units, scale (override the file's length unit, with a note)",
-        "mass (shared by volume), density or material (for every solid; solids: for each)",
-        "the file's origin (its assembly's frame)",
-        "exact from each solid's B-rep (OpenCascade's volume integrals). Refused with the file's "
-        "line: not STEP, truncated, over RBCLI_MAX_STEP_BYTES (128 MiB) or "
-        "RBCLI_MAX_STEP_ENTITIES (1 000 000), references that loop or nest over 1000 deep, an "
-        "assembly that contains itself or nests over 64 deep, a shell that does not close, no "
-        "solid, a solid OpenCascade cannot heal (one it heals: used, with a warning bounding it)",
+        "each solid of a STEP file a part (pip install 'rbcli[cad]'), named from the file "
+        "(name/solid), placed by its assembly; the JSON adds its unit and colour",
+        "file (.step, .stp); optional part (a name or pattern such as 'link*'), solids ({name "
+        "or pattern: material or density}), units, scale (override the file's unit, noted)",
+        "mass (shared by volume), density or material; solids: for each",
+        "the file's origin",
+        "exact from each solid's B-rep (OpenCascade). Refused at the file's line: not STEP, "
+        "truncated, over RBCLI_MAX_STEP_BYTES (128 MiB) or RBCLI_MAX_STEP_ENTITIES (1 000 000), "
+        "references looping or nested over 1000 deep, an assembly containing itself or nested "
+        "over 64 deep, an open shell or solid, no solid",
     ),
     "given": (
         "measured or CAD-exported mass properties",
@@ -123,20 +120,16 @@ def shapes(
 
 @app.command(help="The built-in materials: density and where it is from.")
 def materials(
-    name: str = typer.Argument(None, help="Only the materials whose name or alias matches this (a word, or a pattern such as 'alu*').", show_default=False),
+    name: str = typer.Argument(None, help="Only those whose name or alias holds this word.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
 ) -> None:
-    from fnmatch import fnmatchcase
-
     from rbcli.body.materials import key, table
     from rbcli.errors import InputError, literal
 
-    want = key(name or "*")
-    pattern = want if any(ch in want for ch in "*?[") else f"*{want}*"
-    rows = [m for m in table() if any(fnmatchcase(key(n), pattern) for n in (m.name, *m.aliases))]
+    rows = [m for m in table() if any(key(name or "") in key(n) for n in (m.name, *m.aliases))]
     if not rows:
-        raise InputError(f"no built-in material matches '{literal(name)}' (`rbcli materials` lists them)")
+        raise InputError(f"no built-in material matches '{literal(name)}'")
     c.emit(c.env(), c.output_format(json_, fmt), lambda: [m._asdict() for m in rows],
            lambda doc: doc.table("materials", ("material", "density [kg/m³]", "also", "source"),
                                  [(m.name, f"{m.density:g}", ", ".join(m.aliases), m.source)

@@ -14,8 +14,7 @@ import typer
 from rbcli.api.commands import BODY
 from rbcli.errors import ExitStatus, InputError, option_name, spell, spelled_data
 
-BODY_HELP = ("Body file(s) (YAML), or a STEP, STL or OBJ file (with --material or --density); "
-             "'-' reads standard input.")
+BODY_HELP = "Body file(s) (YAML; or STEP, STL, OBJ with --material); '-' reads standard input."
 EXPR_HELP = "Inline YAML body, e.g. -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'."
 JSON_HELP = "Print JSON (SI units) instead of tables."
 DIGITS_HELP = "Significant figures in tables; with --format csv, of its numbers (full precision unless given)."
@@ -199,7 +198,7 @@ def load(source: str, expr: str | None, e: Any):
 
 
 def _body_keys() -> dict[str, Any]:
-    """The BODY options of the command being run (its typer context's values)."""
+    """The BODY options of the command run (its typer context's)."""
     from typer._click.globals import get_current_context
 
     ctx = get_current_context(silent=True)
@@ -207,7 +206,7 @@ def _body_keys() -> dict[str, Any]:
 
 
 def without_body(args: dict[str, Any]) -> dict[str, Any]:
-    """A command's table values less its BODY options (the body's loading took them)."""
+    """A command's table values less its BODY options."""
     return {k: v for k, v in args.items() if k not in {p.name for p in BODY}}
 
 

@@ -190,9 +190,8 @@ MANUAL["inertia"] = {
         "diaginertia. Every comment states the off-diagonals' sign. --about, --axis, --omega, "
         "--units and --products positive do not apply to these formats (exit 2: they fix "
         "the tensor's sign). Several bodies: one element per body, one after another.",
-        "--each with --format urdf, sdf or mjcf prints one <link> (MJCF <body>) per part, "
-        "named up to its first '/' (a STEP assembly's top-level solids and sub-assemblies, a "
-        "body file's parts and included files), each <inertial> in the body frame.",
+        "--each (urdf, sdf, mjcf): one <link> (MJCF <body>) per part up to its first '/' (a "
+        "STEP file's top-level solid or sub-assembly), each in the body frame.",
     ],
     "json": [
         ("mass", "total mass, kg."),
@@ -205,8 +204,8 @@ MANUAL["inertia"] = {
          "with --omega: w [3] rad/s, L = J.w [3] kg m^2/s, T = w.J.w/2 J, and the angle between L and w in degrees."),
         ("name, file", "the body's name and where it was read from."),
         ("parts", "[{name, shape, mass, com}] each part's contribution (mass negative for a "
-                  "subtracted part; mesh parts add volume m^3, area m^2 and triangles; a STEP "
-                  "file's solids their colour, #rrggbb, when the file gives one)."),
+                  "subtracted part; mesh parts add volume m^3, area m^2 and triangles; STEP "
+                  "solids their unit and colour)."),
     ],
     "examples": [
         ("rbcli inertia examples/square_lamina.yaml --axis 1,1,0",
@@ -218,7 +217,7 @@ MANUAL["inertia"] = {
         ("rbcli inertia examples/bracket.yaml --format urdf",
          "The <inertial> element of a URDF link whose frame is the body frame."),
         ("rbcli inertia examples/cad/step_arm.step --material 'aluminium 6061' --format urdf --each",
-         "A STEP assembly: one URDF <link> with its <inertial> per top-level solid or sub-assembly."),
+         "A STEP assembly: a URDF <link> per top-level solid or sub-assembly."),
         ("rbcli inertia examples/two_blade_fan.yaml --format mjcf --principal",
          "MuJoCo: pos, quat (w x y z) of the principal axes and diaginertia (0.00666667, 0.0266667, 0.0333333)."),
     ],

@@ -18,7 +18,7 @@ from rbcli.io.reader import limit_from_env, read_regular
 __all__ = ["StepError", "Solid", "StepFile", "read_step", "scan"]
 
 MAX_STEP_BYTES = 128 << 20  # RBCLI_MAX_STEP_BYTES
-MAX_ENTITIES = 1_000_000  # RBCLI_MAX_STEP_ENTITIES: ~3 s and ~650 MB in OpenCascade
+MAX_ENTITIES = 1_000_000  # RBCLI_MAX_STEP_ENTITIES: ~3 s, ~650 MB
 MAX_ASSEMBLY_DEPTH = 64
 MAX_REF_DEPTH = 1000  # a B-rep nests ~12; OpenCascade follows references recursively
 #: a length unit as OpenCascade names it (lower case): as rbcli writes it, in m
@@ -44,8 +44,7 @@ class StepError(ValueError):
 class Solid:
     """A solid placed by the assembly, in m: ``name`` its instance path (``link:1/pin``);
     ``volume`` m³, ``centroid`` m and ``inertia`` m⁵ (about it, the tensor at unit density) in
-    its part's frame; the part placed x -> R x + t; ``colour`` ``#rrggbb``; ``healed``: the
-    relative change of its volume when ShapeFix healed it."""
+    its part's frame; the part placed x -> R x + t; ``colour`` ``#rrggbb``."""
 
     name: str
     volume: float
@@ -54,7 +53,6 @@ class Solid:
     R: tuple
     t: tuple
     colour: str | None = None
-    healed: float | None = None
 
 
 @dataclass(frozen=True)
@@ -128,12 +126,9 @@ def scan(data: bytes, max_entities: int) -> None:
                                (assembly, MAX_ASSEMBLY_DEPTH, "assemblies")):
         found = _deepest(graph, limit)
         if found:
-            kind, n = found[0], found[1].decode()
-            message = (f"entity #{n} refers to itself through other entities" if graph is refs
-                       else f"the assembly of product definition #{n} contains itself")
-            if kind == "deep":
-                message = f"{what} are nested more than {limit} deep (at #{n})"
-            raise StepError(message, _where(data, found[1]))
+            n = found[1].decode()
+            raise StepError(f"{what} are nested more than {limit} deep (at #{n})" if found[0] ==
+                            "deep" else f"#{n} contains itself ({what} loop)", _where(data, found[1]))
 
 
 def _where(data: bytes, number: bytes, nth: int = 1) -> int:
@@ -149,9 +144,9 @@ def read_step(path: str, max_solids: int) -> StepFile:
                         "STEP file", env="RBCLI_MAX_STEP_BYTES")
     scan(data, limit_from_env("RBCLI_MAX_STEP_ENTITIES", MAX_ENTITIES))
     ocp = SimpleNamespace()  # OpenCascade's names (~0.5 s, on this path only)
-    for m in ("BRep", "BRepBuilderAPI", "BRepCheck", "BRepGProp", "GProp", "IFSelect", "Message",
-              "Quantity", "ShapeFix", "STEPCAFControl", "TCollection", "TDataStd", "TDF", "TDocStd",
-              "TopAbs", "TopExp", "TopLoc", "TopoDS", "XCAFDoc", "collections"):
+    for m in ("BRep", "BRepBuilderAPI", "BRepGProp", "GProp", "IFSelect", "Message", "Quantity",
+              "STEPCAFControl", "TCollection", "TDataStd", "TDF", "TDocStd", "TopAbs", "TopExp",
+              "TopLoc", "TopoDS", "XCAFDoc", "collections"):
         vars(ocp).update(vars(importlib.import_module(f"OCP.{m}")))
     messenger = ocp.Message.DefaultMessenger_s()
     printers = list(messenger.Printers())  # it prints to stdout: silenced meanwhile
@@ -165,8 +160,8 @@ def read_step(path: str, max_solids: int) -> StepFile:
 
 
 class _Reader:
-    """One read (``o``: OpenCascade's names): the assembly tree walked, each part's
-    properties computed once."""
+    """One read (``o``: OpenCascade's names): the assembly walked, each part's solids
+    integrated once."""
 
     def __init__(self, o: SimpleNamespace, max_solids: int) -> None:
         self.o, self.max_solids = o, max_solids
@@ -200,8 +195,7 @@ class _Reader:
         else:
             self._walk([(lab, lab, o.TopLoc_Location()) for lab in tops], "")
         if not self.solids:
-            raise StepError("the file holds no solid" + (f" ({', '.join(self.empty[:3])}: no "
-                            "volume)" if self.empty else ""))
+            raise StepError("the file holds no solid")
         return StepFile(tuple(self.solids), unit, metres, tuple(self.empty))
 
     def _components(self, label) -> list:
@@ -227,20 +221,20 @@ class _Reader:
             if self.shapes.IsAssembly_s(ref):
                 self._walk(self._components(ref), f"{prefix}{name}/", here)
                 continue
-            solids = self._properties(ref, prefix + name)
+            solids = self._integrals(ref, prefix + name)
             if not solids:
                 self.empty.append(prefix + name)
             trsf = here.Transformation()  # rigid: OpenCascade's locations hold no scale
             R = tuple(tuple(trsf.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
             t = tuple(trsf.Value(i, 4) for i in (1, 2, 3))
             colour = self._colour(inst) or self._colour(ref)
-            for i, (vol, com, J, healed, solid) in enumerate(solids):
+            for i, (vol, com, J, solid) in enumerate(solids):
                 if len(self.solids) >= self.max_solids:
                     raise StepError(f"more than {self.max_solids} solids (each use counts); "
                                     "set RBCLI_MAX_PARTS to raise the limit")
                 shown = f"{prefix}{name}[{i + 1}]" if len(solids) > 1 else prefix + name
                 self.solids.append(Solid(shown, vol, com, J, R, t,
-                                         colour or self._face_colour(solid), healed))
+                                         colour or self._face_colour(solid)))
 
     def _name(self, label) -> str:
         n = self.o.TDataStd_Name()
@@ -257,68 +251,44 @@ class _Reader:
                 return "#" + "".join(f"{round(255 * v):02x}" for v in c.Values(o.Quantity_TOC_sRGB))
         return None
 
-    def _properties(self, label, name: str) -> list:
-        """:meth:`_solid` of each solid of a part, once a part."""
-        entry = self.o.TCollection_AsciiString()
-        self.o.TDF_Tool.Entry_s(label, entry)
-        key = entry.ToCString()
-        if key not in self.props:
-            self.props[key] = [self._solid(s, name) for s in self._solids(label, name)]
-        return self.props[key]
+    def _face_colour(self, solid) -> str | None:
+        """A solid's colour, else its first face's."""
+        return next((c for f in [solid, *self._shapes(solid, self.o.TopAbs_FACE)]
+                     if (c := self._colour(f, True))), None)
 
-    def _solids(self, label, name: str) -> list:
-        """A part's solids, and its shells made solids (an open one refused)."""
-        o, shape, out = self.o, self.shapes.GetShape_s(label), []
-        ex = o.TopExp_Explorer(shape, o.TopAbs_SOLID)
+    def _shapes(self, shape, kind, avoid=None) -> list:
+        """The sub-shapes of ``shape`` of ``kind`` (those not inside an ``avoid``)."""
+        o, out = self.o, []
+        ex = o.TopExp_Explorer(shape, kind, *([avoid] if avoid is not None else []))
         while ex.More():
             out.append(ex.Current())
             ex.Next()
-        ex = o.TopExp_Explorer(shape, o.TopAbs_SHELL, o.TopAbs_SOLID)  # shells in no solid
-        while ex.More():
-            if not self._closed(ex.Current()):
+        return out
+
+    def _integrals(self, label, name: str) -> list:
+        """(volume, centroid, inertia, solid) of each solid of a part (its shells made solids),
+        once a part: the volume integrals over its B-rep; an open shell or solid refused."""
+        entry = self.o.TCollection_AsciiString()
+        self.o.TDF_Tool.Entry_s(label, entry)
+        if entry.ToCString() in self.props:
+            return self.props[entry.ToCString()]
+        o, shape, out = self.o, self.shapes.GetShape_s(label), []
+        shells = self._shapes(shape, o.TopAbs_SHELL, o.TopAbs_SOLID)  # in no solid
+        for solid in self._shapes(shape, o.TopAbs_SOLID) + shells:
+            p = o.GProp_GProps()
+            if solid.ShapeType() == o.TopAbs_SHELL and self._closed(solid):
+                solid = o.BRepBuilderAPI_MakeSolid(o.TopoDS.Shell(solid)).Solid()
+            o.BRepGProp.VolumeProperties_s(solid, p)
+            if not (self._closed(solid) and p.Mass() > 0):
                 raise StepError(f"part '{name}': a shell that does not close a volume (a surface "
-                                "model); export it as a solid")
-            out.append(o.BRepBuilderAPI_MakeSolid(o.TopoDS.Shell(ex.Current())).Solid())
-            ex.Next()
+                                "model, or inside out); export it as a solid")
+            c, m = p.CentreOfMass(), p.MatrixOfInertia()
+            J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
+            out.append((p.Mass(), (c.X(), c.Y(), c.Z()), J, solid))
+        self.props[entry.ToCString()] = out
         return out
 
     def _closed(self, shape) -> bool:
         """Whether each shell of ``shape`` closes (every edge between two of its faces)."""
-        ex = self.o.TopExp_Explorer(shape, self.o.TopAbs_SHELL)
-        while ex.More():
-            if not self.o.BRep_Tool.IsClosed_s(self.o.TopoDS.Shell(ex.Current())):
-                return False
-            ex.Next()
-        return True
-
-    def _solid(self, solid, name: str) -> tuple:
-        """(volume, centroid, inertia, healed, the solid): the volume integrals over its B-rep;
-        one not closed or inside out healed by ShapeFix if it can be."""
-        o = self.o
-
-        def props(s):
-            p = o.GProp_GProps()
-            o.BRepGProp.VolumeProperties_s(s, p)
-            return p
-
-        p, healed = props(solid), None
-        if not (self._closed(solid) and p.Mass() > 0):
-            fix = o.ShapeFix_Shape(solid)
-            fix.Perform()
-            q = props(fix.Shape())
-            if not (self._closed(fix.Shape()) and o.BRepCheck_Analyzer(fix.Shape()).IsValid()
-                    and q.Mass() > 0):
-                raise StepError(f"solid '{name}' is open or inside out, and OpenCascade cannot "
-                                "heal it")
-            healed, p = abs(q.Mass() - abs(p.Mass())) / q.Mass(), q
-        c, m = p.CentreOfMass(), p.MatrixOfInertia()
-        J = tuple(tuple(m.Value(i, j) for j in (1, 2, 3)) for i in (1, 2, 3))
-        return p.Mass(), (c.X(), c.Y(), c.Z()), J, healed, solid
-
-    def _face_colour(self, solid) -> str | None:
-        """A solid's colour, else its first face's."""
-        colour, faces = self._colour(solid, True), self.o.TopExp_Explorer(solid, self.o.TopAbs_FACE)
-        while colour is None and faces.More():
-            colour = self._colour(faces.Current(), True)
-            faces.Next()
-        return colour
+        return all(self.o.BRep_Tool.IsClosed_s(self.o.TopoDS.Shell(s))
+                   for s in self._shapes(shape, self.o.TopAbs_SHELL))
