@@ -194,6 +194,11 @@ class RbcliError(Exception):
     def __str__(self) -> str:
         return self.spelled()
 
+    def __reduce__(self):
+        """Pickled as its arguments and attributes, without calling ``__init__`` again (a
+        :class:`ParamError`'s takes other arguments): errors cross processes."""
+        return type(self).__new__, (type(self), *self.args), self.__dict__
+
 
 class InputError(RbcliError, ValueError):
     """Bad input: a body file, an option value, a mesh file. Exit 2.

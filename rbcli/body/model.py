@@ -18,14 +18,13 @@ import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from rbcli.body import bodyfile, document, pydata
 from rbcli.body.bodyfile import Built
-from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only
+from rbcli.body.partmodel import EMPTY_MAPPING, Part, ReadOnly, Shaft, freeze_arrays, read_only, rebuilt
 from rbcli.core.inertia import remember_mass_props
 
 __all__ = ["Body", "load_body", "load_text", "load_expr", "load_data", "with_points"]
@@ -73,13 +72,15 @@ class Body:
     description: str = ""
     warnings: tuple[str, ...] = ()
     inputs: tuple[str, ...] = ()
-    units: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
+    units: ReadOnly = field(default_factory=lambda: EMPTY_MAPPING)
 
     def __post_init__(self) -> None:
         freeze_arrays(self, ("reference", "pivot"))
         for name in ("parts", "warnings", "inputs"):
             object.__setattr__(self, name, tuple(getattr(self, name)))
         object.__setattr__(self, "units", read_only(self.units))
+
+    __reduce__ = rebuilt
 
     # ------------------------------------------------------------------ built in code
 

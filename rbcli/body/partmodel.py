@@ -10,15 +10,44 @@ holds them is made by :mod:`rbcli.body.model`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from types import MappingProxyType
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
 from rbcli.errors import Location
 
+
+class ReadOnly(Mapping):
+    """A read-only mapping of its own (a ``MappingProxyType`` that pickles: bodies and
+    results cross processes)."""
+
+    __slots__ = ("_data",)
+
+    def __init__(self, data=()) -> None:
+        object.__setattr__(self, "_data", dict(data))
+
+    def __getitem__(self, key):
+        return self._data[key]
+
+    def __iter__(self):
+        return iter(self._data)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    def __setattr__(self, name, value) -> None:
+        raise AttributeError(f"a {type(self).__name__} is read-only")
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self._data!r})"
+
+    def __reduce__(self):
+        return type(self), (self._data,)
+
+
 #: the empty read-only mapping (most parts' ``extra``, an SI body's ``units``)
-EMPTY_MAPPING: MappingProxyType = MappingProxyType({})
+EMPTY_MAPPING = ReadOnly()
 
 
 def frozen(a, dtype=float) -> np.ndarray:
@@ -44,9 +73,18 @@ def freeze_arrays(obj: object, names: tuple[str, ...]) -> None:
             object.__setattr__(obj, name, frozen(a))
 
 
-def read_only(m) -> MappingProxyType:
+def rebuilt(obj: object) -> tuple:
+    """``__reduce__`` of a body's values: pickled as their fields and unpickled through
+    ``__init__``, so their arrays are read-only again (pickle makes them writable); what
+    else the object holds (a body's mass properties) comes along."""
+    names = [f.name for f in fields(obj)]
+    state = {k: v for k, v in getattr(obj, "__dict__", {}).items() if k not in names}
+    return type(obj), tuple(getattr(obj, n) for n in names), state or None
+
+
+def read_only(m) -> ReadOnly:
     """A read-only mapping of its own with the items of ``m``."""
-    return MappingProxyType(dict(m)) if m else EMPTY_MAPPING
+    return ReadOnly(m) if m else EMPTY_MAPPING
 
 
 def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
@@ -102,6 +140,8 @@ class Outline:
         if self.faces is not None:
             object.__setattr__(self, "faces", frozen(self.faces, np.int64))
 
+    __reduce__ = rebuilt
+
 
 @dataclass(frozen=True, slots=True)
 class Part:
@@ -138,7 +178,7 @@ class Part:
     measure_kind: str = "point"
     radius: float | None = None
     axis: np.ndarray = field(default_factory=lambda: frozen(np.array([0.0, 0.0, 1.0])))
-    extra: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
+    extra: ReadOnly = field(default_factory=lambda: EMPTY_MAPPING)
     where: Location | None = None
     outline: Outline | None = None
 
@@ -146,6 +186,8 @@ class Part:
         freeze_arrays(self, ("com", "inertia_com", "axis"))
         if self.extra is not EMPTY_MAPPING:
             object.__setattr__(self, "extra", read_only(self.extra))
+
+    __reduce__ = rebuilt
 
     @property
     def signed_mass(self) -> float:
@@ -162,3 +204,5 @@ class Shaft:
 
     def __post_init__(self) -> None:
         freeze_arrays(self, ("axis", "through"))
+
+    __reduce__ = rebuilt
