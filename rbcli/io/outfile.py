@@ -38,7 +38,7 @@ import errno
 import os
 import stat
 from collections.abc import Iterable, Iterator, Mapping
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import IO, Protocol
 
@@ -213,13 +213,14 @@ def _reason(exc: BaseException) -> str:
     return (getattr(exc, "strerror", None) or str(exc)).lower() if isinstance(exc, OSError) else str(exc)
 
 
-def _mode_for(st: os.stat_result | None) -> int:
-    """Permission bits for the new file: the old file's, else 0o666 less the umask."""
+def _mode_for(st: os.stat_result | None, new: int = 0o666) -> int:
+    """Permission bits for a new file (or folder: ``new=0o777``): the old file's, else
+    ``new`` less the umask."""
     if st is not None:
         return st.st_mode & 0o7777
     mask = os.umask(0)
     os.umask(mask)
-    return 0o666 & ~mask
+    return new & ~mask
 
 
 # ----------------------------------------------------------------------------- signals
@@ -229,7 +230,7 @@ class _held_signals:
     """SIGINT, SIGTERM and SIGHUP held off for a few steps (creating a temporary file,
     renaming outputs into place, cleaning up), so that an interrupt can split neither a
     write that must be all or nothing nor its cleanup; a signal that arrives meanwhile is
-    delivered when the block ends.
+    delivered when the outermost block ends.
 
     Held at the Python level (the handlers are swapped for one that only records the
     signal): blocking with ``pthread_sigmask`` would not do, since the kernel may hand the
@@ -238,41 +239,43 @@ class _held_signals:
     there).
     """
 
-    _depth = 0
+    _depth = 0  # the main thread's blocks open
+    _pending: list[int] = []
 
     def __enter__(self):
         import signal
         import threading
 
-        self.old: dict = {}
-        self.pending: list[int] = []
-        if _held_signals._depth or threading.current_thread() is not threading.main_thread():
-            _held_signals._depth += 1
+        self.main = threading.current_thread() is threading.main_thread()
+        if not self.main:
             return self
         _held_signals._depth += 1
-        for name in ("SIGINT", "SIGTERM", "SIGHUP"):
-            signum = getattr(signal, name, None)
-            if signum is None:
-                continue
-            try:
-                self.old[signum] = signal.signal(signum, self._record)
-            except (ValueError, OSError, TypeError):
-                pass
+        if _held_signals._depth == 1:
+            self.old = {}
+            for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+                signum = getattr(signal, name, None)
+                with suppress(ValueError, OSError, TypeError):
+                    if signum is not None:
+                        self.old[signum] = signal.signal(signum, self._record)
         return self
 
-    def _record(self, signum, frame):  # noqa: ARG002
-        self.pending.append(signum)
+    @staticmethod
+    def _record(signum, frame):  # noqa: ARG004
+        _held_signals._pending.append(signum)
 
     def __exit__(self, *exc):
         import signal
 
+        if not self.main:
+            return False
         _held_signals._depth -= 1
+        if _held_signals._depth:
+            return False
         for signum, handler in self.old.items():
-            try:
+            with suppress(ValueError, OSError, TypeError):
                 signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
-            except (ValueError, OSError, TypeError):
-                pass
-        for signum in dict.fromkeys(self.pending):  # now, to the handlers that were there
+        pending, _held_signals._pending = _held_signals._pending, []
+        for signum in dict.fromkeys(pending):  # now, to the handlers that were there
             signal.raise_signal(signum)
         return False
 
@@ -502,11 +505,10 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
     """Write a document and (when ``files``) its folder of figures, all or nothing.
 
     The figures are written into a new temporary folder beside ``path``, the document into
-    a temporary file; then, with SIGINT and SIGTERM held off, an existing ``folder`` is
-    moved aside (``replace`` only: see :func:`check_folder`), the new folder renamed into
-    place (no-clobber), the document renamed into place (replacing a regular file when
-    ``replace``, else no-clobber), and the old folder removed. A failure at any step undoes
-    the earlier ones; nothing temporary is left.
+    a temporary file; then both are put in place by :func:`_swap`, with SIGINT, SIGTERM and
+    SIGHUP held off: the old document and folder stay whole until the new ones are whole,
+    and then both are replaced, or neither (a signal that arrived meanwhile is raised once
+    they are). Nothing temporary is left.
 
     Raises
     ------
@@ -521,8 +523,7 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
     folder = os.fspath(folder if folder is not None else files_dir(text))
     parent = os.path.dirname(text) or "."
     _kind(text, option)
-    stage = doc_tmp = aside = None
-    placed = False
+    stage = doc_tmp = old = None
     try:
         with _held_signals():
             stage = _tmp_name(parent)
@@ -539,46 +540,56 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data.encode("utf-8") if isinstance(data, str) else data)
         with _held_signals():
-            os.chmod(stage, 0o777 & ~_umask())
-            if os.path.lexists(folder):
-                if not replace:
-                    raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it")
-                if os.path.islink(folder) or not os.path.isdir(folder):
-                    raise InputError(f"{option}: '{folder}' (for the figures) is not a folder")
-                aside = _tmp_name(parent, ".old")
-                os.rename(folder, aside)
-            try:
-                rename_noreplace(stage, folder)
-            except FileExistsError:
-                raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it") from None
-            stage, placed = None, True
-            _commit(doc_tmp, text, option, replace)
-            doc_tmp = None
-            if aside is not None:
-                import shutil
-
-                shutil.rmtree(aside, ignore_errors=True)  # unlinks links; never follows them
-                aside = None
+            old = _swap(stage, doc_tmp, folder, text, option, replace)
+            stage = doc_tmp = None  # in place: a signal raised as the block ends undoes nothing
+            _step("clean")
+            _remove(old)
     except BaseException as exc:
         with _held_signals():
-            import shutil
-
-            if placed:  # the new folder is in place but the document is not: take it back
-                shutil.rmtree(folder, ignore_errors=True)
-            if aside is not None:
-                try:
-                    os.rename(aside, folder)
-                except OSError:
-                    pass
-            if stage is not None:
-                shutil.rmtree(stage, ignore_errors=True)
-            _remove(doc_tmp)
+            for name in (stage, doc_tmp, old):
+                _remove(name)
         if isinstance(exc, OSError):
             raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
         raise
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
+def _step(name: str) -> None:
+    """A step of :func:`_swap` (``aside``, ``place``, ``commit``) or of the cleanup after it
+    (``clean``): nothing; tests put an interruption or a failure there."""
+
+
+def _swap(stage: str, doc_tmp: str, folder: str, path: str, option: str, replace: bool) -> str | None:
+    """Put the finished folder ``stage`` and document ``doc_tmp`` in place of ``folder`` and
+    ``path``, all or nothing (call it with the signals held): the old folder is moved aside,
+    the new one renamed into place (no-clobber), the document committed (:func:`_commit`);
+    a failure at any step undoes the earlier ones, leaving ``stage`` and ``doc_tmp`` as they
+    were. Returns the old folder's temporary name (to remove), or None."""
+    os.chmod(stage, _mode_for(None, 0o777))
+    aside = None
+    placed = False
+    try:
+        if os.path.lexists(folder):
+            if not replace:
+                raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it")
+            if os.path.islink(folder) or not os.path.isdir(folder):
+                raise InputError(f"{option}: '{literal(folder)}' (for the figures) is not a folder")
+            _step("aside")
+            aside = _tmp_name(os.path.dirname(path) or ".", ".old")
+            os.rename(folder, aside)
+        _step("place")
+        try:
+            rename_noreplace(stage, folder)
+        except FileExistsError:
+            raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it") from None
+        placed = True
+        _step("commit")
+        _commit(doc_tmp, path, option, replace)
+    except BaseException:
+        if placed:
+            with suppress(OSError):
+                os.rename(folder, stage)  # the new folder back where it was made
+        if aside is not None:
+            with suppress(OSError):
+                os.rename(aside, folder)  # the old one back
+        raise
+    return aside
