@@ -447,3 +447,47 @@ def test_eight_threads_get_the_answers_of_one_hostile_or_not(tmp_path):
         t.join(timeout=600)
     assert not errors, errors
     assert len(results) == 8 and all(got == expected for got in results.values())
+
+
+# ----------------------------------------------------------------------------- hand-made bodies
+
+
+def _handmade() -> dict[str, tuple[rbcli.Body, str]]:
+    """Bodies made in code that hold what no loaded body holds (issue 34 item 3), and what
+    the refusal must say."""
+    import dataclasses
+
+    b = body("top.yaml")
+    p = b.parts[0]
+
+    def with_part(**kw):
+        return dataclasses.replace(b, parts=(dataclasses.replace(p, **kw), *b.parts[1:]))
+
+    return {
+        "no-parts": (dataclasses.replace(b, parts=()), "no parts"),
+        "nan-mass": (with_part(mass=math.nan), "part 1: its mass is nan"),
+        "negative-mass": (with_part(mass=-1.0), "part 1: its mass is -1.0"),
+        "text-mass": (with_part(mass="1"), "part 1: its mass is '1'"),
+        "2x2-tensor": (with_part(inertia_com=np.eye(2)), "part 1: its inertia_com is not a finite (3, 3)"),
+        "nan-com": (with_part(com=np.array([math.nan, 0, 0])), "part 1: its com is not a finite (3,)"),
+        "None-part": (dataclasses.replace(b, parts=(None,)), "part 1 is NoneType, not a Part"),
+        "nan-reference": (dataclasses.replace(b, reference=np.array([0, math.nan, 0])), "reference"),
+        "2-pivot": (dataclasses.replace(b, pivot=np.zeros(2)), "pivot"),
+        "text-shaft": (dataclasses.replace(b, shaft="z"), "shaft"),
+        "nan-rim": (dataclasses.replace(b, rim_radius=math.nan), "rim_radius is nan"),
+    }
+
+
+@pytest.mark.parametrize("case", list(_handmade()))
+def test_a_hand_made_body_is_refused_at_the_door_saying_what_is_wrong(case):
+    bad, says = _handmade()[case]
+    for name, (src, kw, _) in CALLS.items():
+        if src is None:
+            continue
+        args = [bad] + ([EXAMPLES / "never-written.md"] if name == "write_report" else [])
+        with pytest.raises((TypeError, rbcli.InputError)) as info:
+            getattr(rbcli, name)(*args, **kw)
+        text = str(info.value)
+        assert text.startswith("body: ") and says in text, (name, text)
+        assert isinstance(info.value, TypeError) == (case == "None-part"), (name, text)
+    assert not (EXAMPLES / "never-written.md").exists()

@@ -217,7 +217,9 @@ def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | N
     TypeError saying how to get one (a path is not a body: ``rbcli.load(path)`` reads it)."""
     from rbcli.body.model import Body
 
-    if isinstance(value, Body) or (optional and value is None):
+    if isinstance(value, Body):
+        return _whole(value, param)
+    if optional and value is None:
         return value
     hint = ""
     if isinstance(value, (str, os.PathLike)):
@@ -226,6 +228,45 @@ def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | N
         hint = " (a mapping is not a body: rbcli.load_text builds one from text)"
     raise TypeError(f"{param}: expected an rbcli.Body{' or None' if optional else ''} (from "
                     f"rbcli.load or rbcli.load_text), got {_type(value)}{hint}")
+
+
+def _whole(b: Body, param: str) -> Body:
+    """``b`` if it holds what a loaded body holds, else a TypeError or an InputError saying
+    what it does not (a body made in code, e.g. ``dataclasses.replace(body, parts=())``, may
+    hold anything). Its parts are looked at once: a loaded body's were, when it was read."""
+    import numpy as np
+
+    from rbcli.body.partmodel import Part, Shaft
+    from rbcli.core.inertia import body_mass_props, remembered
+
+    for key in ("reference", "pivot", "shaft"):
+        v = getattr(b, key)
+        if v is not None and not all(isinstance(a, np.ndarray) and a.shape == (3,) and np.isfinite(a).all()
+                                     for a in ((v.axis, v.through) if isinstance(v, Shaft) else (v,))):
+            raise ParamError(param, f"the body's {key} is not a finite (3,) vector")
+    r = b.rim_radius
+    if r is not None and not (isinstance(r, numbers.Real) and 0.0 < r < math.inf):
+        raise ParamError(param, f"the body's rim_radius is {literal(repr(r))}, not a positive length (m)")
+    if remembered(b):
+        return b
+    parts = b.parts
+    if not isinstance(parts, tuple) or not parts:
+        raise ParamError(param, "the body has no parts; a body needs at least one")
+    for i, p in enumerate(parts, 1):
+        if type(p) is not Part:
+            raise TypeError(f"{param}: part {i} is {_type(p)}, not a Part (rbcli.parts and "
+                            "Body.from_parts make parts)")
+        if not (isinstance(p.mass, numbers.Real) and not _is_bool(p.mass) and 0.0 < p.mass < math.inf):
+            raise ParamError(param, f"part {i}: its mass is {literal(repr(p.mass))}, not a positive number (kg)")
+        for key, shape in (("com", (3,)), ("axis", (3,)), ("inertia_com", (3, 3))):
+            a = getattr(p, key)
+            if a.shape != shape or not np.isfinite(a).all():
+                raise ParamError(param, f"part {i}: its {key} is not a finite {shape} array")
+    try:
+        body_mass_props(b)  # (now remembered)
+    except ValueError as exc:  # the parts' total
+        raise ParamError(param, literal(exc)) from None
+    return b
 
 
 def flag(value: Any, param: str) -> bool:
