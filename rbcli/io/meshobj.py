@@ -258,7 +258,9 @@ def _face_indices(name: str, parts: list[bytes], start: int, n_now: int,
         head = item.split(b"/", 1)[0]
         if not (head.isdigit() or _INDEX.fullmatch(head)):  # not int()'s '1_0'
             raise MeshFileError(name, f"bad face index '{cut(item.decode('ascii', 'replace'))}'", start)
-        i = int(head)
+        sign, digits = (b"-", head[1:]) if head[:1] == b"-" else (b"", head)
+        digits = digits.lstrip(b"0") or b"0"  # 20 digits or more: out of range (int() refuses 4300)
+        i = int(sign + (digits if len(digits) < 20 else b"9" * 20))
         if i == 0:
             raise MeshFileError(name, "face index 0 (obj indices start at 1)", start)
         if i < 0:
