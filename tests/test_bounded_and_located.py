@@ -116,3 +116,53 @@ def test_at_gives_read_only_arrays():
         for name, a in arrays.items():
             with pytest.raises(ValueError, match="read-only"):
                 a[0] = 0.0
+
+
+# ----------------------------------------------------------------------------- messages
+
+
+@pytest.mark.parametrize("products", ["Ixy: 0.1", "Ixy: 0"])
+def test_a_convention_beside_an_inertia_mapping_is_told_to_move_in(products):
+    # it used to be told to add the convention it had (with products), or to remove it
+    text = (f"parts:\n  - shape: given\n    mass: 1\n    convention: positive\n"
+            f"    inertia: {{Ixx: 1, Iyy: 1, Izz: 1, {products}}}\n")
+    with pytest.raises(InputError) as exc:
+        load_text(text, "g.yaml", ROOT)
+    assert str(exc.value) == ("g.yaml:4:5: part 'given1' (given): the Ixx... form states its convention "
+                              "inside 'inertia'; move 'convention' into the inertia mapping")
+    moved = text.replace("    convention: positive\n", "").replace("Izz: 1,", "Izz: 1, convention: positive,")
+    load_text(moved, "g.yaml", ROOT)  # the check can fail: moved in, it is read
+
+
+def test_the_readme_says_what_rollcheck_help_says_of_the_tyre_radius(cli):
+    readme = (ROOT / "README.md").read_text()
+    assert "0 <= r <= a" in cli("rollcheck", "--help").out.replace("\n", " ")
+    assert "(0 ≤ r ≤ a)" in readme and "tyre radius ≥ rim radius" not in readme
+    penny = rbcli.load(EXAMPLES / "penny.yaml")
+    a = 0.009525  # the penny's rim radius: r = a is taken (a sphere), beyond it refused
+    assert rbcli.rollcheck(penny, rolling_speed=0.1, tyre_radius=a).to_json()["tyre_radius"] == a
+    with pytest.raises(InputError, match="tyre_radius: the tyre radius .* must be at most the rim radius"):
+        rbcli.rollcheck(penny, rolling_speed=0.1, tyre_radius=1.01 * a)
+
+
+def test_the_readme_budgets_list_every_limit_and_the_variable_that_raises_it():
+    from rbcli.api import check, commands
+    from rbcli.body import includes, loadctx
+    from rbcli.io import bearingtable, meshfile
+    from rbcli.io.field import coefficients, jobfile
+
+    readme = (ROOT / "README.md").read_text()
+    budgets = readme[readme.index("- **Budgets**"):readme.index("An included file is read")]
+    source = "".join(p.read_text() for p in (ROOT / "rbcli").rglob("*.py"))
+    variables = set(re.findall(r'"(RBCLI_MAX_\w+)"', source))  # every variable that raises a limit
+    assert len(variables) >= 3 and all(f"`{v}=" in budgets for v in variables), variables
+
+    def n(x: int) -> str:  # as the table writes it
+        return f"{x >> 20} MiB" if x % (1 << 20) == 0 else f"{x:,}".replace(",", " ")
+
+    limits = [loadctx.MAX_PARTS, yamlsafe.MAX_BYTES, includes.MAX_INCLUDE_DEPTH,
+              yamlsafe.MAX_DEPTH, meshobj.MAX_FACE_CORNERS, jobfile.MAX_JOB_BYTES, coefficients.MAX_COEFF_BYTES,
+              bearingtable.MAX_ROWS, bearingtable.MAX_CSV, commands.MAX_SAMPLES, commands.MAX_POINTS,
+              commands.MAX_BEARINGS, commands.MAX_ORDER, check.MAX_TEXT, check.MAX_TEXT_TOTAL, check.MAX_ITEMS]
+    missing = [x for x in limits if n(x) not in budgets]
+    assert not missing and f"{meshfile.MAX_MESH_BYTES >> 30} GiB" in budgets, missing

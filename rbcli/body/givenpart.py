@@ -62,6 +62,9 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
     com = yv.vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
     inode = m.items["inertia"][1]
     if isinstance(inode, ys.MapNode):
+        if "convention" in m.items:  # (before the products ask for one: it is there, misplaced)
+            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
+                            "convention inside 'inertia'; move 'convention' into the inertia mapping")
         g = _entries(ctx, inode)
         has_products = any(g[k] != 0.0 for k in ("Ixy", "Iyz", "Izx"))
         sign = -1.0
@@ -84,9 +87,6 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
                 [sign * g["Izx"], sign * g["Iyz"], g["Izz"]],
             ]
         )
-        if "convention" in m.items:
-            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
-                            "convention inside 'inertia'; remove the part's 'convention'")
     else:
         J = yv.matrix(ctx, inode, "inertia", "inertia")
         off = J[~np.eye(3, dtype=bool)]
