@@ -1,33 +1,20 @@
-"""Output files: one check and one atomic writer for every file rbcli writes.
+"""Output files: one check and one atomic writer for every file rbcli writes (README
+"Output, exit status and speed"; SPEC §3).
 
-The policy (README "Output, exit status and speed"; SPEC §3 "no input file is ever
-overwritten"):
-
-- No output ever replaces an input: the body file, any file it includes at any depth,
-  any mesh it reads (``Body.inputs``), compared by real path and, for a file that
-  exists, by identity (a hard link or a second mount of the same file) — with or
-  without ``--force``.
-- Documents and bodies (``report -o``, ``balance --apply``) replace an existing file
-  only with ``--force``; figures and data (``--plot``, ``--csv``) replace an existing
-  file, as plotting tools do (``replace_ok=True``).
-- Only a regular file or a new name is ever written. A symbolic link at the target is
-  never followed (nor replaced: it is refused), a device node, a FIFO, a socket or a
-  folder is refused with a message — as root too (``--csv /dev/null`` never replaces
-  /dev/null).
-- Every output is written atomically: to a temporary file in the same folder (created
-  with ``O_EXCL | O_NOFOLLOW``), then renamed over the target, so a failed or interrupted
-  run leaves the old file (or none) and no temporary file behind. Without replacing
-  (documents and bodies without ``--force``) the rename is a no-clobber one
-  (``renameat2(RENAME_NOREPLACE)``, else ``link(2)``): the existence check and the write
-  are one step, so of 20 parallel ``report -o new.html`` exactly one succeeds.
-- A document with a folder of figures (``report -o r.md``: ``r_files/``) is written all
-  or nothing: the figures go into a temporary folder, and the folder and the document
-  are renamed into place together, with SIGINT and SIGTERM held off for those few
-  renames. An existing ``r_files/`` is treated like the ``-o`` file: replaced as a whole
-  (never written into, so a link planted inside it leads nowhere) and only with
-  ``--force``.
-- Interrupted (Ctrl-C, SIGTERM: :mod:`rbcli.cli` turns both into an exception) or
-  failed, a write removes what it made: no ``.rbcli-XXXX.tmp`` file or folder is left.
+- No output ever replaces an input (``Body.inputs``: the body file, its includes, its
+  meshes), by real path or file identity (hard links, mounts), with or without ``--force``.
+- Documents and bodies replace an existing file only with ``--force``; figures and data
+  (``--plot``, ``--csv``) replace it (``replace_ok=True``).
+- Only a regular file or a new name is written: a symbolic link, a device, a FIFO, a
+  socket or a folder is refused, as root too.
+- Every output goes to a temporary file in its folder (``O_EXCL | O_NOFOLLOW``) renamed over
+  the target; without replacing, the rename is no-clobber (``renameat2(RENAME_NOREPLACE)``,
+  else ``link(2)``): of 20 parallel ``report -o new.html`` exactly one writes.
+- A document with a folder of figures (``r.md``: ``r_files/``) is written all or nothing:
+  the old pair stays whole until the new pair is whole, then both are swapped with SIGINT,
+  SIGTERM and SIGHUP held off (:func:`write_document`). An existing ``r_files/`` is replaced
+  whole, never written into, and only with ``--force``.
+- Interrupted or failed, a write leaves no ``.rbcli-XXXX.tmp`` file or folder.
 
 Errors are :class:`rbcli.errors.InputError` (exit 2), one line starting with the option.
 """

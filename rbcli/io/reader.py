@@ -1,7 +1,8 @@
 """The one input reader: regular files and standard input, type and size checked first.
 
 Every file rbcli reads (a body, a file it includes, a mesh) goes through
-:func:`read_regular`; standard input (BODY ``-``) through :func:`read_stream`.
+:func:`read_regular` (a mesh through :func:`open_regular`, to read it in blocks); standard
+input (BODY ``-``) through :func:`read_stream`.
 
 - Only a regular file is read. A FIFO, a device (``/dev/zero``, ``/dev/urandom``), a
   socket or a directory is refused with a message, before a byte is read, and without
@@ -27,7 +28,7 @@ from typing import BinaryIO
 
 from rbcli.errors import InputError, Location
 
-__all__ = ["ReadError", "read_regular", "read_stream", "size_text", "limit_from_env"]
+__all__ = ["ReadError", "open_regular", "read_regular", "read_stream", "size_text", "limit_from_env"]
 
 _CHUNK = 1 << 16
 
@@ -106,6 +107,38 @@ def _os_reason(exc: OSError) -> str:
 _READ_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
+def open_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
+                 where: Location | None = None, env: str | None = None) -> tuple[int, int]:
+    """(a descriptor, the size) of the regular file ``path``, checked and opened as
+    :func:`read_regular` says, for a reader that reads it its own way (a mesh, in blocks)."""
+    name = os.fspath(path)
+    if "\x00" in name:
+        raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
+    try:
+        st = os.stat(name)  # refuse a FIFO or device before opening it at all
+        reason = _kind(st.st_mode)
+        if reason:
+            raise ReadError(name, reason, where)
+        fd = os.open(name, _READ_FLAGS)
+    except ReadError:
+        raise
+    except OSError as exc:
+        raise ReadError(name, _os_reason(exc), where) from None
+    except ValueError as exc:  # e.g. a name the OS cannot take
+        raise ReadError(name, f"cannot read the file: {exc}", where) from None
+    try:
+        st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
+        reason = _kind(st.st_mode) or (_too_big(st.st_size, limit, what, env) if st.st_size > limit else None)
+        if reason:
+            raise ReadError(name, reason, where)
+    except BaseException as exc:
+        os.close(fd)
+        if isinstance(exc, OSError):
+            raise ReadError(name, _os_reason(exc), where) from None
+        raise
+    return fd, st.st_size
+
+
 def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
                  where: Location | None = None, env: str | None = None) -> bytes:
     """The bytes of the regular file ``path``, at most ``limit`` of them.
@@ -125,44 +158,21 @@ def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
         a FIFO, a device or a socket (refused before reading, without blocking), or a file
         over ``limit`` bytes (checked before reading, and again while reading).
     """
-    name = os.fspath(path)
-    if "\x00" in name:
-        raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
-    flags = _READ_FLAGS
+    fd, size = open_regular(path, limit, what, where=where, env=env)
     try:
-        st = os.stat(name)  # refuse a FIFO or device before opening it at all
-        reason = _kind(st.st_mode)
-        if reason:
-            raise ReadError(name, reason, where)
-        fd = os.open(name, flags)
-    except ReadError:
-        raise
-    except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
-    except ValueError as exc:  # e.g. a name the OS cannot take
-        raise ReadError(name, f"cannot read the file: {exc}", where) from None
-    try:
-        st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
-        reason = _kind(st.st_mode)
-        if reason:
-            raise ReadError(name, reason, where)
-        if st.st_size > limit:
-            raise ReadError(name, _too_big(st.st_size, limit, what, env), where)
         chunks = []
         total = 0
         while True:
-            chunk = os.read(fd, min(max(st.st_size - total, _CHUNK), limit + 1 - total) or 1)
+            chunk = os.read(fd, min(max(size - total, _CHUNK), limit + 1 - total) or 1)
             if not chunk:
                 break
             chunks.append(chunk)
             total += len(chunk)
             if total > limit:
-                raise ReadError(name, _too_big(None, limit, what, env), where)
+                raise ReadError(os.fspath(path), _too_big(None, limit, what, env), where)
         return b"".join(chunks)
-    except ReadError:
-        raise
     except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
+        raise ReadError(os.fspath(path), _os_reason(exc), where) from None
     finally:
         os.close(fd)
 

@@ -104,6 +104,7 @@ class Node:
     """
 
     __slots__ = ("_mark",)
+    __match_args__: tuple[str, ...] = ("mark",)
 
     def __init__(self, mark: Mark | int) -> None:
         object.__setattr__(self, "_mark", mark)
@@ -119,7 +120,7 @@ class Node:
         raise NotImplementedError
 
     def _fields(self) -> tuple:  # what equality and the hash compare
-        return (self.mark,)
+        return tuple(getattr(self, name) for name in self.__match_args__)
 
     def __setattr__(self, name: str, value: object) -> None:
         raise FrozenInstanceError(f"cannot assign to field {name!r}")
@@ -161,9 +162,6 @@ class ScalarNode(Node):
         object.__setattr__(self, "raw", raw)
         object.__setattr__(self, "quoted", quoted)
 
-    def _fields(self) -> tuple:
-        return (self.mark, self.value, self.raw, self.quoted)
-
     @property
     def tag(self) -> str:
         v = self.value
@@ -182,20 +180,23 @@ class ScalarNode(Node):
         return f"ScalarNode({self.tag}{q} {self.value!r} at {self.mark})"
 
 
-class MapNode(Node):
-    """A mapping, ``MapNode(mark, items)``: ``items`` maps each key to (the key's
-    :class:`Mark`, the value node), in source order."""
+class _Items(Node):
+    """A collection: its ``items``, filled as the parser goes."""
 
     __slots__ = ("items",)
-    __match_args__ = ("mark", "items")
-    items: dict[str, tuple[Mark, Node]]
 
-    def __init__(self, mark: Mark | int, items: dict[str, tuple[Mark, Node]]) -> None:
+    def __init__(self, mark: Mark | int, items: dict | list) -> None:
         object.__setattr__(self, "_mark", mark)
         object.__setattr__(self, "items", items)
 
-    def _fields(self) -> tuple:
-        return (self.mark, self.items)
+
+class MapNode(_Items):
+    """A mapping, ``MapNode(mark, items)``: ``items`` maps each key to (the key's
+    :class:`Mark`, the value node), in source order."""
+
+    __slots__ = ()
+    __match_args__ = ("mark", "items")
+    items: dict[str, tuple[Mark, Node]]
 
     @property
     def tag(self) -> str:
@@ -205,19 +206,12 @@ class MapNode(Node):
         return f"MapNode(keys={list(self.items)!r} at {self.mark})"
 
 
-class SeqNode(Node):
+class SeqNode(_Items):
     """A sequence of nodes: ``SeqNode(mark, items)``."""
 
-    __slots__ = ("items",)
+    __slots__ = ()
     __match_args__ = ("mark", "items")
     items: list[Node]
-
-    def __init__(self, mark: Mark | int, items: list[Node]) -> None:
-        object.__setattr__(self, "_mark", mark)
-        object.__setattr__(self, "items", items)
-
-    def _fields(self) -> tuple:
-        return (self.mark, self.items)
 
     @property
     def tag(self) -> str:
