@@ -56,12 +56,19 @@ def _not_negative(what: str, r: float, given: Any) -> str | None:
     return None if 0.0 <= r < math.inf else f"{what}, got {_given(given)}"
 
 
-def _balance_angle_step(v: float, given: Any) -> str | None:
-    return None if 0.0 < v <= 360.0 else f"must be more than 0 and at most 360 degrees, got {_given(given)}"
+def _positive(what: str, unit: str, x: float, given: Any) -> str | None:
+    return None if x > 0.0 and math.isfinite(x) else f"{what} must be a positive number, got {x:.6g} {unit}"
 
 
-def _three_or_more(n: int, given: Any) -> str | None:
-    return None if n >= 3 else f"needs at least 3 equally spaced positions, got {n}"
+def _angle_step(x: float, given: Any) -> str | None:
+    return _positive("the angle step", "deg", x, given) or (
+        "must not exceed 360 degrees" if x > 360.0 else None)
+
+
+def _positions(n: int, given: Any) -> str | None:
+    return None if 3 <= n <= 100_000 else \
+        f"must be a whole number from 3 to 100000 (holes or blades), not {literal(given)}"
+
 
 # ----------------------------------------------------------------------------- inertia, principal
 
@@ -103,10 +110,10 @@ BALANCE = (
     Param("mass_step", "Round correction masses to multiples of this (e.g. '1 g'; a bare number is in "
           "the body's mass unit, kg by default).", "quantity", "mass"),
     Param("angle_step", "Round correction angles to multiples of this (degrees, or with units).",
-          "degrees", valid=_balance_angle_step),
+          "degrees", valid=_angle_step),
     Param("positions", "N equally spaced fixed positions (holes, blades), position 1 on the 0° mark: "
           "split each correction onto the two neighbouring ones.", "count",
-          valid=_three_or_more),
+          valid=_positions),
     Param("speed", "Rotor speed (rad/s, or the body's units' angular_speed; or e.g. '1500 rpm'); with "
           "{grade} the maximum service speed.", "quantity", "angular_speed"),
     Param("bearings", f"Bearing positions z1,z2 along the shaft ({_BARE_LENGTH}; a unit after the "
@@ -124,24 +131,10 @@ BALANCE = (
 # ----------------------------------------------------------------------------- field-balance
 
 
-def _positive(what: str, unit: str, x: float, given: Any) -> str | None:
-    return None if x > 0.0 and math.isfinite(x) else f"{what} must be a positive number, got {x:.6g} {unit}"
-
-
 def _one_of(key: str, word: str, given: Any) -> str | None:
     allowed = CHOICES[key]
     ways = " or ".join(filter(None, (", ".join(allowed[:-1]), allowed[-1])))
     return None if word in allowed else f"must be {ways}, not '{literal(word)}'"
-
-
-def _angle_step(x: float, given: Any) -> str | None:
-    return _positive("the angle step", "deg", x, given) or (
-        "must not exceed 360 degrees" if x > 360.0 else None)
-
-
-def _positions(n: int, given: Any) -> str | None:
-    return None if 3 <= n <= 100_000 else \
-        f"must be a whole number from 3 to 100000 (holes or blades), not {literal(given)}"
 
 
 def _group(g: Any, given: Any) -> str | None:

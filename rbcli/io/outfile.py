@@ -168,6 +168,15 @@ def _shown_name(text: str, limit: int = 80) -> str:
     return text if len(text) <= limit else f"{text[:limit // 2]}… ({len(text)} characters)"
 
 
+#: what rbcli never writes, and why
+_NOT_WRITTEN = (
+    (stat.S_ISLNK, "a symbolic link; rbcli never writes through a link (give its target or a new name)"),
+    (stat.S_ISDIR, "a folder; give a file name"),
+    (lambda m: stat.S_ISCHR(m) or stat.S_ISBLK(m), "a device, not a regular file; rbcli writes only regular files"),
+    (stat.S_ISFIFO, "a FIFO (named pipe), not a regular file; rbcli writes only regular files"),
+)
+
+
 def _kind(path: str | Path, option: str) -> os.stat_result | None:
     """The ``lstat`` of an existing output that may be replaced (a regular file), None for a
     new name; anything else is refused."""
@@ -178,19 +187,10 @@ def _kind(path: str | Path, option: str) -> os.stat_result | None:
         return None
     except (OSError, ValueError) as exc:
         raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
-    mode = st.st_mode
-    if stat.S_ISREG(mode):
+    if stat.S_ISREG(st.st_mode):
         return st
-    if stat.S_ISLNK(mode):
-        what = "a symbolic link; rbcli never writes through a link (give its target or a new name)"
-    elif stat.S_ISDIR(mode):
-        what = "a folder; give a file name"
-    elif stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        what = "a device, not a regular file; rbcli writes only regular files"
-    elif stat.S_ISFIFO(mode):
-        what = "a FIFO (named pipe), not a regular file; rbcli writes only regular files"
-    else:
-        what = "not a regular file; rbcli writes only regular files"
+    what = next((w for test, w in _NOT_WRITTEN if test(st.st_mode)),
+                "not a regular file; rbcli writes only regular files")
     raise InputError(f"{option}: '{literal(text)}' is {what}")
 
 

@@ -618,24 +618,22 @@ def _count_first(text: str, cap: tuple) -> None:
     file with anchors, tags or what libyaml refuses is left to the tree's pass, which says so."""
     key, most, make_error = cap
     loader = _LOADER(text)
-    depth, root_map, want_key, last, capped, n = 0, False, True, None, False, 0
+    depth, want_key, last, capped, n = 0, True, None, False, 0
     try:
         while (event := loader.get_event()) is not None:
             if isinstance(event, yaml.CollectionEndEvent):
                 depth -= 1
                 capped = capped and depth > 1
-            elif isinstance(event, (yaml.NodeEvent)):
-                if isinstance(event, yaml.AliasEvent) or event.anchor is not None or event.tag is not None:
-                    return
-                if depth == 1 and root_map:
+            elif isinstance(event, yaml.NodeEvent):
+                if event.anchor is not None or getattr(event, "tag", None) is not None:
+                    return  # (an alias has an anchor)
+                if depth == 1:  # the root's keys and values
                     last = event.value if want_key and isinstance(event, yaml.ScalarEvent) else last
                     capped = not want_key and last == key and isinstance(event, yaml.SequenceStartEvent)
                     want_key = not want_key
                 elif depth == 2 and capped and (n := n + 1) > most:
                     raise make_error(_yaml_mark(event.start_mark))
-                if isinstance(event, yaml.CollectionStartEvent):
-                    root_map = root_map or (depth == 0 and isinstance(event, yaml.MappingStartEvent))
-                    depth += 1
+                depth += isinstance(event, yaml.CollectionStartEvent)
     except yaml.YAMLError:
         return
     finally:
