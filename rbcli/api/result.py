@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from rbcli.body.partmodel import ReadOnly
+from rbcli.body.partspec import ReadOnly
 from rbcli.errors import ExitStatus, NonFiniteResult
 
 __all__ = ["Result", "Record", "record", "frozen", "freeze_fields", "jsonable"]

@@ -55,6 +55,15 @@ def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
     return g
 
 
+def _convention(ctx: Ctx, m: ys.MapNode) -> str:
+    """The ``convention`` of mapping ``m``: 'tensor' or 'positive'."""
+    node = m.items["convention"][1]
+    conv = yv.string(ctx, node, "convention")
+    if conv not in ("tensor", "positive"):
+        raise ctx.error(node, f"convention must be 'tensor' or 'positive', not '{conv}'")
+    return conv
+
+
 def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> Part:
     what = f"part '{name}' (given)"
     yv.check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
@@ -69,11 +78,7 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
         has_products = any(g[k] != 0.0 for k in ("Ixy", "Iyz", "Izx"))
         sign = -1.0
         if "convention" in inode.items:
-            conv_node = inode.items["convention"][1]
-            conv = yv.string(ctx, conv_node, "convention")
-            if conv not in ("tensor", "positive"):
-                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
-            sign = 1.0 if conv == "tensor" else -1.0
+            sign = 1.0 if _convention(ctx, inode) == "tensor" else -1.0
         elif has_products:
             raise ctx.error(
                 inode,
@@ -91,11 +96,7 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
         J = yv.matrix(ctx, inode, "inertia", "inertia")
         off = J[~np.eye(3, dtype=bool)]
         if "convention" in m.items:
-            conv_node = m.items["convention"][1]
-            conv = yv.string(ctx, conv_node, "convention")
-            if conv not in ("tensor", "positive"):
-                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
-            if conv == "positive":
+            if _convention(ctx, m) == "positive":
                 J = np.where(np.eye(3, dtype=bool), J, -J)
         elif np.any(off != 0.0):
             raise ctx.error(

@@ -24,7 +24,8 @@ import numpy as np
 
 from rbcli.body import bodyfile, document, pydata
 from rbcli.body.bodyfile import Built
-from rbcli.body.partmodel import EMPTY_MAPPING, Part, ReadOnly, Shaft, freeze_arrays, read_only, rebuilt
+from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only, rebuilt
+from rbcli.body.partspec import ReadOnly
 from rbcli.core.inertia import remember_mass_props
 
 __all__ = ["Body", "load_body", "load_text", "load_expr", "load_data", "with_points"]

@@ -10,40 +10,12 @@ holds them is made by :mod:`rbcli.body.model`.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from rbcli.body.partspec import ReadOnly
 from rbcli.errors import Location
-
-
-class ReadOnly(Mapping):
-    """A read-only mapping of its own (a ``MappingProxyType`` that pickles: bodies and
-    results cross processes)."""
-
-    __slots__ = ("_data",)
-
-    def __init__(self, data=()) -> None:
-        object.__setattr__(self, "_data", dict(data))
-
-    def __getitem__(self, key):
-        return self._data[key]
-
-    def __iter__(self):
-        return iter(self._data)
-
-    def __len__(self) -> int:
-        return len(self._data)
-
-    def __setattr__(self, name, value) -> None:
-        raise AttributeError(f"a {type(self).__name__} is read-only")
-
-    def __repr__(self) -> str:
-        return f"{type(self).__name__}({self._data!r})"
-
-    def __reduce__(self):
-        return type(self), (self._data,)
 
 
 #: the empty read-only mapping (most parts' ``extra``, an SI body's ``units``)

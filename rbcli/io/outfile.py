@@ -213,7 +213,13 @@ def _mode_for(st: os.stat_result | None, new: int = 0o666) -> int:
 # ----------------------------------------------------------------------------- signals
 
 
-class _held_signals:
+#: the main thread's open :func:`_held_signals` blocks, and the signals they held off
+_depth = 0
+_pending: list[int] = []
+
+
+@contextmanager
+def _held_signals() -> Iterator[None]:
     """SIGINT, SIGTERM and SIGHUP held off for a few steps (creating a temporary file,
     renaming outputs into place, cleaning up), so that an interrupt can split neither a
     write that must be all or nothing nor its cleanup; a signal that arrives meanwhile is
@@ -225,46 +231,29 @@ class _held_signals:
     raise at its next step. Outside the main thread this does nothing (no handler runs
     there).
     """
+    import signal
+    import threading
 
-    _depth = 0  # the main thread's blocks open
-    _pending: list[int] = []
-
-    def __enter__(self):
-        import signal
-        import threading
-
-        self.main = threading.current_thread() is threading.main_thread()
-        if not self.main:
-            return self
-        _held_signals._depth += 1
-        if _held_signals._depth == 1:
-            self.old = {}
-            for name in ("SIGINT", "SIGTERM", "SIGHUP"):
-                signum = getattr(signal, name, None)
-                with suppress(ValueError, OSError, TypeError):
-                    if signum is not None:
-                        self.old[signum] = signal.signal(signum, self._record)
-        return self
-
-    @staticmethod
-    def _record(signum, frame):  # noqa: ARG004
-        _held_signals._pending.append(signum)
-
-    def __exit__(self, *exc):
-        import signal
-
-        if not self.main:
-            return False
-        _held_signals._depth -= 1
-        if _held_signals._depth:
-            return False
-        for signum, handler in self.old.items():
+    global _depth, _pending
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = {}
+    _depth += 1
+    for name in ("SIGINT", "SIGTERM", "SIGHUP") if _depth == 1 else ():
+        with suppress(ValueError, OSError, TypeError, AttributeError):
+            old[getattr(signal, name)] = signal.signal(getattr(signal, name), lambda n, _: _pending.append(n))
+    try:
+        yield
+    finally:
+        _depth -= 1
+        for signum, handler in old.items():
             with suppress(ValueError, OSError, TypeError):
                 signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
-        pending, _held_signals._pending = _held_signals._pending, []
-        for signum in dict.fromkeys(pending):  # now, to the handlers that were there
-            signal.raise_signal(signum)
-        return False
+        if not _depth:
+            held, _pending = _pending, []
+            for signum in dict.fromkeys(held):  # now, to the handlers that were there
+                signal.raise_signal(signum)
 
 
 # ----------------------------------------------------------------------------- renames
