@@ -194,9 +194,7 @@ class RbcliError(Exception):
     def __str__(self) -> str:
         return self.spelled()
 
-    def __reduce__(self):
-        """Pickled as its arguments and attributes, without calling ``__init__`` again (a
-        :class:`ParamError`'s takes other arguments): errors cross processes."""
+    def __reduce__(self):  # errors cross processes: no __init__ again (ParamError's takes others)
         return type(self).__new__, (type(self), *self.args), self.__dict__
 
 

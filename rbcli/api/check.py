@@ -239,10 +239,12 @@ def _whole(b: Body, param: str) -> Body:
     from rbcli.body.partmodel import Part, Shaft
     from rbcli.core.inertia import body_mass_props, remembered
 
+    def finite(a: Any, shape: tuple = (3,)) -> bool:
+        return isinstance(a, np.ndarray) and a.shape == shape and bool(np.isfinite(a).all())
+
     for key in ("reference", "pivot", "shaft"):
         v = getattr(b, key)
-        if v is not None and not all(isinstance(a, np.ndarray) and a.shape == (3,) and np.isfinite(a).all()
-                                     for a in ((v.axis, v.through) if isinstance(v, Shaft) else (v,))):
+        if v is not None and not all(map(finite, (v.axis, v.through) if isinstance(v, Shaft) else (v,))):
             raise ParamError(param, f"the body's {key} is not a finite (3,) vector")
     r = b.rim_radius
     if r is not None and not (isinstance(r, numbers.Real) and 0.0 < r < math.inf):
@@ -259,8 +261,7 @@ def _whole(b: Body, param: str) -> Body:
         if not (isinstance(p.mass, numbers.Real) and not _is_bool(p.mass) and 0.0 < p.mass < math.inf):
             raise ParamError(param, f"part {i}: its mass is {literal(repr(p.mass))}, not a positive number (kg)")
         for key, shape in (("com", (3,)), ("axis", (3,)), ("inertia_com", (3, 3))):
-            a = getattr(p, key)
-            if a.shape != shape or not np.isfinite(a).all():
+            if not finite(getattr(p, key), shape):
                 raise ParamError(param, f"part {i}: its {key} is not a finite {shape} array")
     try:
         body_mass_props(b)  # (now remembered)

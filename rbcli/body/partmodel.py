@@ -46,9 +46,8 @@ def freeze_arrays(obj: object, names: tuple[str, ...]) -> None:
 
 
 def rebuilt(obj: object) -> tuple:
-    """``__reduce__`` of a body's values: pickled as their fields and unpickled through
-    ``__init__``, so their arrays are read-only again (pickle makes them writable); what
-    else the object holds (a body's mass properties) comes along."""
+    """``__reduce__`` of a body's values: their fields, unpickled through ``__init__`` (arrays
+    read-only again: pickle makes them writable), and the rest (a body's mass properties)."""
     names = [f.name for f in fields(obj)]
     state = {k: v for k, v in getattr(obj, "__dict__", {}).items() if k not in names}
     return type(obj), tuple(getattr(obj, n) for n in names), state or None

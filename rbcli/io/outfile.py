@@ -381,9 +381,7 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
     """
     option = _opt(option)
     text = os.fspath(path)
-    if "\x00" in text:
-        raise InputError(f"{option}: the file name contains a NUL character")
-    _kind(text, option)  # refuse a link, device, FIFO or folder before writing anything
+    _kind(text, option)  # refuse a NUL, a link, device, FIFO or folder before writing anything
     folder = os.path.dirname(text) or "."
     tmp = None
     try:
@@ -480,11 +478,9 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
                    files: Mapping[str, str | bytes] | None = None) -> None:
     """Write a document and (when ``files``) its folder of figures, all or nothing.
 
-    The figures are written into a new temporary folder beside ``path``, the document into
-    a temporary file; then both are put in place by :func:`_swap`, with SIGINT, SIGTERM and
-    SIGHUP held off: the old document and folder stay whole until the new ones are whole,
-    and then both are replaced, or neither (a signal that arrived meanwhile is raised once
-    they are). Nothing temporary is left.
+    The figures go into a new temporary folder beside ``path``, the document into a temporary
+    file; the old pair stays whole until the new pair is, then :func:`_swap` replaces both or
+    neither, signals held off (one that arrives is raised after). Nothing temporary is left.
 
     Raises
     ------
@@ -530,16 +526,13 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
 
 
 def _step(name: str) -> None:
-    """A step of :func:`_swap` (``aside``, ``place``, ``commit``) or of the cleanup after it
-    (``clean``): nothing; tests put an interruption or a failure there."""
+    """A step of :func:`_swap` or the cleanup after it: nothing (tests interrupt there)."""
 
 
 def _swap(stage: str, doc_tmp: str, folder: str, path: str, option: str, replace: bool) -> str | None:
-    """Put the finished folder ``stage`` and document ``doc_tmp`` in place of ``folder`` and
-    ``path``, all or nothing (call it with the signals held): the old folder is moved aside,
-    the new one renamed into place (no-clobber), the document committed (:func:`_commit`);
-    a failure at any step undoes the earlier ones, leaving ``stage`` and ``doc_tmp`` as they
-    were. Returns the old folder's temporary name (to remove), or None."""
+    """Put the finished ``stage`` and ``doc_tmp`` in place of ``folder`` and ``path``, all or
+    nothing (signals held): the old folder moved aside, the new one in, the document committed;
+    a failure undoes the steps before it. Returns the old folder's temporary name, or None."""
     os.chmod(stage, _mode_for(None, 0o777))
     aside = None
     placed = False

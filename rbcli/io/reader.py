@@ -114,29 +114,23 @@ def open_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
     name = os.fspath(path)
     if "\x00" in name:
         raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
+    fd = None
     try:
         st = os.stat(name)  # refuse a FIFO or device before opening it at all
-        reason = _kind(st.st_mode)
-        if reason:
-            raise ReadError(name, reason, where)
-        fd = os.open(name, _READ_FLAGS)
-    except ReadError:
-        raise
-    except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
-    except ValueError as exc:  # e.g. a name the OS cannot take
-        raise ReadError(name, f"cannot read the file: {exc}", where) from None
-    try:
-        st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
+        if not _kind(st.st_mode):
+            fd = os.open(name, _READ_FLAGS)
+            st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
         reason = _kind(st.st_mode) or (_too_big(st.st_size, limit, what, env) if st.st_size > limit else None)
         if reason:
             raise ReadError(name, reason, where)
+        return fd, st.st_size
     except BaseException as exc:
-        os.close(fd)
-        if isinstance(exc, OSError):
-            raise ReadError(name, _os_reason(exc), where) from None
+        if fd is not None:
+            os.close(fd)
+        if isinstance(exc, (OSError, ValueError)) and not isinstance(exc, ReadError):  # (a name the OS refuses)
+            reason = _os_reason(exc) if isinstance(exc, OSError) else f"cannot read the file: {exc}"
+            raise ReadError(name, reason, where) from None
         raise
-    return fd, st.st_size
 
 
 def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,

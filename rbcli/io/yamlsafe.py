@@ -30,7 +30,7 @@ import yaml
 from yaml.reader import ReaderError
 
 from rbcli.errors import InputError, Location
-from rbcli.io.reader import limit_from_env
+from rbcli.io.reader import limit_from_env, size_text
 
 __all__ = [
     "MAX_BYTES",
@@ -310,14 +310,6 @@ def _reader_error(exc: ReaderError, text: str, filename: str) -> InputError:
     return _error(message, filename, _mark_of_prefix(prefix))
 
 
-def _size_text(n: int) -> str:
-    if n % (1024 * 1024) == 0:
-        return f"{n // (1024 * 1024)} MiB"
-    if n % 1024 == 0:
-        return f"{n // 1024} KiB"
-    return f"{n} bytes"
-
-
 # ---------------------------------------------------------------------- decoding
 
 
@@ -333,7 +325,7 @@ def _decode(text: str | bytes, filename: str) -> str:
         data = bytes(text)
         if len(data) > MAX_BYTES:
             raise _error(
-                f"file is {len(data)} bytes; body files are limited to {_size_text(MAX_BYTES)}",
+                f"file is {len(data)} bytes; body files are limited to {size_text(MAX_BYTES)}",
                 filename,
                 Mark(1, 1),
             )
@@ -353,7 +345,7 @@ def _decode(text: str | bytes, filename: str) -> str:
     size = len(text.encode("utf-8", "surrogatepass"))
     if size > MAX_BYTES:
         raise _error(
-            f"file is {size} bytes; body files are limited to {_size_text(MAX_BYTES)}",
+            f"file is {size} bytes; body files are limited to {size_text(MAX_BYTES)}",
             filename,
             Mark(1, 1),
         )
@@ -612,10 +604,9 @@ def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
 
 
 def _count_first(text: str, cap: tuple) -> None:
-    """``cap``'s list counted by a pass over the events alone, before any node is made, for
-    a file that may exceed it (each item of a list takes a '-' or a ','): its error at the
-    first item beyond, with no tree in memory (a 400 000-part file: ~100 MiB, not ~450). A
-    file with anchors, tags or what libyaml refuses is left to the tree's pass, which says so."""
+    """``cap``'s list counted over the events alone, no node made (each list item takes a '-'
+    or a ',': called when a file may exceed it): its error at the first item beyond, with no
+    tree in memory (400 000 parts: ~100 MiB, not ~450). Anchors, tags, YAML errors: the tree's."""
     key, most, make_error = cap
     loader = _LOADER(text)
     depth, want_key, last, capped, n = 0, True, None, False, 0
