@@ -30,7 +30,7 @@ GUARDS = {"InputError", "RbcliError", "ParamError", "ReadError"}
 #: raises no InputError: it converts numbers, asks the OS, or calls code that raises plain
 #: ValueErrors only). One more handler in the function changes the count: review it.
 REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
-    ("api/check.py", "_whole"): (1, "core.inertia.combine: a plain ValueError (the parts' total mass)"),
+    ("body/model.py", "checked"): (1, "core.inertia.combine: a plain ValueError (the parts' total mass)"),
     ("api/commands.py", "_rows"): (1, "int() of the value"),
     ("api/load.py", "_units"): (1, "body.bodyfile.default_units: plain ValueErrors (it turns UnitError into one)"),
     ("api/report.py", "_date"): (1, "int(), datetime of SOURCE_DATE_EPOCH"),

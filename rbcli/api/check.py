@@ -38,7 +38,7 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
-from rbcli.errors import NonFiniteResult, ParamError, literal
+from rbcli.errors import NonFiniteResult, ParamError, clean, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.body.model import Body
@@ -74,8 +74,6 @@ _NUMBER = "a number or a quantity string"
 def _type(value: object) -> str:
     """How a message names the type of ``value`` (never its text; a class's name made safe
     to show, as the command line shows names: :func:`rbcli.env.clean`)."""
-    from rbcli.env import clean
-
     t = type(value)
     name = t.__name__ if t.__module__ in ("builtins", None) else f"{t.__module__}.{t.__qualname__}"
     return clean(name, max_line=120)
@@ -218,7 +216,7 @@ def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | N
     from rbcli.body.model import Body
 
     if isinstance(value, Body):
-        return _whole(value, param)
+        return value.checked(param)
     if optional and value is None:
         return value
     hint = ""
@@ -228,46 +226,6 @@ def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | N
         hint = " (a mapping is not a body: rbcli.load_text builds one from text)"
     raise TypeError(f"{param}: expected an rbcli.Body{' or None' if optional else ''} (from "
                     f"rbcli.load or rbcli.load_text), got {_type(value)}{hint}")
-
-
-def _whole(b: Body, param: str) -> Body:
-    """``b`` if it holds what a loaded body holds, else a TypeError or an InputError saying
-    what it does not (a body made in code, e.g. ``dataclasses.replace(body, parts=())``, may
-    hold anything). Its parts are looked at once: a loaded body's were, when it was read."""
-    import numpy as np
-
-    from rbcli.body.partmodel import Part, Shaft
-    from rbcli.core.inertia import body_mass_props, remembered
-
-    def finite(a: Any, shape: tuple = (3,)) -> bool:
-        return isinstance(a, np.ndarray) and a.shape == shape and bool(np.isfinite(a).all())
-
-    for key in ("reference", "pivot", "shaft"):
-        v = getattr(b, key)
-        if v is not None and not all(map(finite, (v.axis, v.through) if isinstance(v, Shaft) else (v,))):
-            raise ParamError(param, f"the body's {key} is not a finite (3,) vector")
-    r = b.rim_radius
-    if r is not None and not (isinstance(r, numbers.Real) and 0.0 < r < math.inf):
-        raise ParamError(param, f"the body's rim_radius is {literal(repr(r))}, not a positive length (m)")
-    if remembered(b):
-        return b
-    parts = b.parts
-    if not isinstance(parts, tuple) or not parts:
-        raise ParamError(param, "the body has no parts; a body needs at least one")
-    for i, p in enumerate(parts, 1):
-        if type(p) is not Part:
-            raise TypeError(f"{param}: part {i} is {_type(p)}, not a Part (rbcli.parts and "
-                            "Body.from_parts make parts)")
-        if not (isinstance(p.mass, numbers.Real) and not _is_bool(p.mass) and 0.0 < p.mass < math.inf):
-            raise ParamError(param, f"part {i}: its mass is {literal(repr(p.mass))}, not a positive number (kg)")
-        for key, shape in (("com", (3,)), ("axis", (3,)), ("inertia_com", (3, 3))):
-            if not finite(getattr(p, key), shape):
-                raise ParamError(param, f"part {i}: its {key} is not a finite {shape} array")
-    try:
-        body_mass_props(b)  # (now remembered)
-    except ValueError as exc:  # the parts' total
-        raise ParamError(param, literal(exc)) from None
-    return b
 
 
 def flag(value: Any, param: str) -> bool:
