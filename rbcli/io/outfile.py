@@ -240,20 +240,20 @@ def _held_signals() -> Iterator[None]:
         return
     old = {}
     _depth += 1
-    for name in ("SIGINT", "SIGTERM", "SIGHUP") if _depth == 1 else ():
-        with suppress(ValueError, OSError, TypeError, AttributeError):
-            old[getattr(signal, name)] = signal.signal(getattr(signal, name), lambda n, _: _pending.append(n))
-    try:
+    try:  # (from here: whatever happens, the count and the handlers are put back)
+        if _depth == 1:
+            _pending = []  # (what an interrupted block's end left: a later signal ended it)
+            for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+                with suppress(ValueError, OSError, TypeError, AttributeError):
+                    old[getattr(signal, name)] = signal.signal(getattr(signal, name), lambda n, _: _pending.append(n))
         yield
     finally:
         _depth -= 1
         for signum, handler in old.items():
             with suppress(ValueError, OSError, TypeError):
                 signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
-        if not _depth:
-            held, _pending = _pending, []
-            for signum in dict.fromkeys(held):  # now, to the handlers that were there
-                signal.raise_signal(signum)
+        for signum in dict.fromkeys(_pending if old else ()):  # now, to the handlers that were there
+            signal.raise_signal(signum)
 
 
 # ----------------------------------------------------------------------------- renames
