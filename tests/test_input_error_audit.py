@@ -67,7 +67,6 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("io/reader.py", "limit_from_env"): (1, "int() of the variable"),
     ("io/unitparse.py", "check_exponent"): (1, "int()"),
     ("io/yamlsafe.py", "_int"): (1, "int()"),
-    ("render/text.py", "_columns"): (1, "int() of COLUMNS"),
 }
 
 

@@ -1,11 +1,6 @@
-"""What every service result shares: plain JSON data, one finiteness check, an exit status.
-
-A result is a frozen dataclass (:class:`Result` is the mixin) that knows its JSON form
-(``to_json()``: exactly the object ``rbcli <command> --json`` prints, less ``file``) and
-its own exit status (``return_code``: 0, or 1 when a check the user asked for failed; the
-model is black's ``Report.return_code``). The command line only renders a result and
-exits with its status.
-"""
+"""What every service result shares: a frozen dataclass (the :class:`Result` mixin) that
+knows its JSON (``to_json()``: ``rbcli <command> --json`` less ``file``), passed through the
+one finiteness check, and its exit status (``return_code``, as black's ``Report``)."""
 
 from __future__ import annotations
 
@@ -33,6 +28,10 @@ class Result:
     #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
     warnings: tuple[str, ...] = ()
 
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        cls.__repr__ = Result.__repr__  # type: ignore[method-assign]  # set before @dataclass, which keeps it
+
     def __post_init__(self) -> None:
         freeze_fields(self)
 
@@ -40,6 +39,20 @@ class Result:
         """Unpickled: the fields frozen again (pickle makes arrays writable)."""
         self.__dict__.update(state)
         freeze_fields(self)
+
+    def __repr__(self) -> str:
+        """One line: the class and the first numbers and words of the JSON."""
+        data = self.to_json()
+        shown = [f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v!r}" for k, v in data.items()
+                 if isinstance(v, (str, int, float)) and k != "warnings"][:4]
+        return f"<{type(self).__name__} {' '.join(shown)}{' …' if len(data) > len(shown) else ''}>"
+
+    def _repr_html_(self) -> str:
+        """The command's tables as HTML (units in the headers) and its figure as SVG, for
+        notebooks. The one import of render from api (tests/test_architecture.py)."""
+        from rbcli.render import notebook
+
+        return notebook.html(self)
 
     def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
         raise NotImplementedError
@@ -128,19 +141,9 @@ def freeze_fields(obj: Any, _depth: int = 0) -> None:
 
 
 def jsonable(obj: Any) -> Any:
-    """Plain JSON data from results: numpy arrays to lists, tuples to lists, -0.0 to 0.0.
-
-    This is the one finiteness check of a result's numbers: every JSON document and every
-    result of the Python API passes through it.
-
-    Raises
-    ------
-    NonFiniteResult
-        for an inf or NaN anywhere (an InputError, exit 2: the inputs were too large or too
-        small to compute with), naming the key it was found under.
-    TypeError
-        for a value that has no JSON form.
-    """
+    """Plain JSON data from results (arrays and tuples to lists, -0.0 to 0.0): the one
+    finiteness check of every JSON document and API result. NonFiniteResult (exit 2) naming the
+    key of an inf or NaN; TypeError for a value with no JSON form."""
     if obj is None or isinstance(obj, (str, bool, int)):  # a Note (a str) is kept as it is
         return obj
     if isinstance(obj, float):  # numpy's float64 too

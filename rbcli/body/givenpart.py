@@ -3,7 +3,7 @@ report, a data sheet), checked to be a physically possible inertia.
 
 The inertia is a 3x3 matrix or a map of its entries, named as CAD reports name them:
 ``Ixx ... Izx`` (most tools), ``Lxx ... Lzx`` (SolidWorks), a product's letters in either
-order (``Izx`` or ``Ixz``); an entry given under two names is an error. The sign of the
+order (``Izx`` or ``Ixz``; both, as a full 3x3 report lists them, when they agree). The sign of the
 products differs between tools, so ``convention`` (tensor or positive) is needed as soon
 as a product is non-zero. A matrix copied from a report is symmetric only to the digits
 printed: within 1e-9 of its largest entry its symmetric part is used, with a note.
@@ -37,21 +37,26 @@ SYMMETRY_RTOL = 1e-9
 
 def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
     """The map form's six entries (SI; absent products 0), each read under whichever of its
-    names was given; a diagonal entry missing, or any entry given twice, is an error."""
+    names was given; a product given in both orders (a full 3x3 report: ``Lxy`` and ``Lyx``)
+    is their mean when they agree within :data:`SYMMETRY_RTOL` of the largest entry; a
+    diagonal entry missing, or any other entry given twice, is an error."""
     yv.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia")
     items = inode.items
-    g = {}
+    g, pairs = {}, []
     for entry, names in INERTIA_NAMES.items():
         given = [k for k in items if k in names]  # in file order
-        if len(given) > 1:
+        if len(given) > 2 or len(given) == 2 and given[1] != given[0][0] + given[0][:0:-1]:
             raise ctx.error(items[given[1]][0], f"inertia gives {entry} twice, as '{given[0]}' and "
                             f"'{given[1]}'; give each entry once")
-        if not given:
-            if entry in ("Ixx", "Iyy", "Izz"):
-                raise ctx.error(inode, f"inertia needs '{entry}'")
-            g[entry] = 0.0
-        else:
-            g[entry] = yv.number(ctx, items[given[0]][1], "inertia", given[0])
+        if not given and entry in ("Ixx", "Iyy", "Izz"):
+            raise ctx.error(inode, f"inertia needs '{entry}'")
+        vals = [yv.number(ctx, items[k][1], "inertia", k) for k in given]
+        g[entry] = sum(vals) / len(vals) if vals else 0.0
+        pairs += [(given, vals)] if len(vals) == 2 else []
+    for (a, b), (x, y) in pairs:
+        if abs(x - y) > SYMMETRY_RTOL * max(abs(v) for v in g.values()):
+            raise ctx.error(items[b][0], f"inertia's '{a}' and '{b}' differ ({items[a][1].raw} and "
+                            f"{items[b][1].raw}): a tensor is symmetric; give each product once")
     return g
 
 

@@ -86,6 +86,16 @@ class Body:
 
     __reduce__ = rebuilt
 
+    def __repr__(self) -> str:
+        return f"<Body {self.name!r} from {self.source}: {len(self.parts)} parts>"
+
+    def _repr_html_(self) -> str:
+        """Its mass, com and parts as an HTML table, for notebooks (the render import: see
+        :meth:`rbcli.api.result.Result._repr_html_`)."""
+        from rbcli.render import notebook
+
+        return notebook.html(self)
+
     # ------------------------------------------------------------------ built in code
 
     @classmethod

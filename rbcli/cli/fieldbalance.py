@@ -134,7 +134,7 @@ def _figure(res, su, plot_path, report_path) -> str | None:
     from rbcli.render.field.tables import reading_display
     from rbcli.render.plots import figure_bytes
 
-    fig = balanceplot.plot(res.diagram(), su, reading_display(res.reading_kind, su))
+    fig = balanceplot.plot(res.diagram(), su, reading_display(res.reading_kind, su, res.measure))
     if plot_path is not None:
         c.save_plot(fig, plot_path)
     return None if report_path is None else figure_bytes(fig, "svg").decode("utf-8")
@@ -192,7 +192,9 @@ MANUAL["field-balance"] = {
         "Warnings: cond(alpha) > 50 (planes not well separated); Darlow's plane-significance "
         "factor at or below 0.2 (the part of a plane's influence column not explained by the "
         "larger columns before it, relative to the column: Darlow, ASME 82-GT-269, 1982, and "
-        "Balancing of High-Speed Machinery, 1989, ch. 6, as hsbalance's ill_condition flags it); "
+        "Balancing of High-Speed Machinery, 1989, ch. 6: the Gram-Schmidt factor, 0 to 1; "
+        "hsbalance 0.5.5's ill_condition, whose 0.2 threshold this is, projects on the previous "
+        "column only, above 1 from three planes on); "
         "a trial run that changed no reading by 25 % in amplitude or 25° in phase; a reading "
         "that the least-squares or min-max correction makes larger.",
         "Angles: the correction angles come out in the sense of the trial angles. The phases "

@@ -1,14 +1,7 @@
 """Tables, figures and the report section of ``rbcli whirl`` (the JSON is the result's
-own ``to_json()``).
-
-Everything here is formatting: every number comes finished from
-:class:`rbcli.api.whirlresult.WhirlResult`, and every display row (the echo of the
-options as understood included) is built here from it. Tables show speeds and critical
-speeds in rpm and rad/s, whirl frequencies in rad/s and cpm (cycles per minute: on the
-Campbell diagram the 1× line is the diagonal), positions in the display length unit (m
-unless ``--units``), displacements in µm, forces in N, stiffness in N/m and damping in
-N s/m.
-"""
+``to_json()``): formatting only, from :class:`rbcli.api.whirlresult.WhirlResult`. Speeds
+in rpm and rad/s, whirl frequencies in rad/s and cpm, positions in the display length
+unit, displacements in µm, forces in N."""
 
 from __future__ import annotations
 
@@ -19,13 +12,14 @@ import numpy as np
 
 from rbcli.core.whirl.response import phase_deg
 from rbcli.render import echo
-from rbcli.render.fmt import num
-from rbcli.render.text import Doc
-from rbcli.render.units import RPM, BodyUnits, DisplayUnits
+from rbcli.render.fmt import num, said
+from rbcli.render.plots import figure, figure_bytes, style
+from rbcli.render.report import Figure, Section
+from rbcli.render.text import Doc, Note
+from rbcli.render.units import RPM, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.whirlresult import WhirlResult
-    from rbcli.render.report import Section
 
 __all__ = ["document", "echo_rows", "campbell_figure", "response_figure", "map_figure",
            "report_section", "conventions_note"]
@@ -64,6 +58,7 @@ def conventions_note(res: WhirlResult) -> str:
 def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo: bool = True,
              heading: bool = True) -> None:
     """The tables of a whirl analysis, into ``doc``."""
+    du = du.of(res.units, (res.rotor.mass, max(abs(b.plane) for b in res.bearings)))
     if heading:
         doc.heading(f"{res.name}  ({res.source})" if res.source else res.name)
     if echo:
@@ -372,8 +367,6 @@ def campbell_figure(res: WhirlResult):
     critical speeds marked (filled, on top: the unbalance drives it; coincident ones one mark,
     one label); the operating speed; growing modes crossed; the legend below the axes. A
     matplotlib Figure."""
-    from rbcli.render.plots import figure
-
     cb = res.campbell
     sp = np.asarray(cb.speeds) * RPM
     fr = np.asarray(cb.frequencies) * RPM
@@ -431,8 +424,6 @@ def map_figure(res: WhirlResult):
     bearings' stiffness (N/m), log-log; each bearing's kxx and kyy against speed over the
     speed range drawn on it (where they meet a branch: that critical speed); the operating
     speed. A matplotlib Figure."""
-    from rbcli.render.plots import figure, style
-
     cm = res.critical_speed_map
     k = np.asarray(cm.stiffness)
     fig, axes = figure(f"whirl: {res.name} — undamped critical speed map", size=(7.5, 5.0))
@@ -470,8 +461,6 @@ def response_figure(res: WhirlResult):
     """The unbalance response: per bearing the displacement amplitude (µm; log scale
     without damping) and its phase (high spot, rotor frame) against speed (rpm), peaks
     and half-power points marked, the operating speed. A matplotlib Figure."""
-    from rbcli.render.plots import figure, style
-
     resp = res.response
     sp = np.asarray(resp.speeds) * RPM
     fig, axes = figure(f"whirl: {res.name} — unbalance response", nrows=2, ncols=1, size=(7.5, 6.0))
@@ -482,6 +471,7 @@ def response_figure(res: WhirlResult):
         kw = style(i)
         ax.plot(sp, amp, label=f"bearing {i + 1} (z = {b.plane:.4g} m)", **kw)
         axp.plot(sp, _continuous_phase(np.asarray(b.displacement_phase_deg), amp), **kw)
+    said: list[tuple[float, str]] = []  # AF labels placed: a twin peak's goes below, the same one once
     for p in resp.peaks:
         if p.undamped:
             ax.axvline(p.speed * RPM, color="0.5", linewidth=0.7, linestyle=":")
@@ -490,9 +480,12 @@ def response_figure(res: WhirlResult):
         if p.half_power is not None:
             lvl = p.amplitude * UM / math.sqrt(2.0)
             ax.plot([p.half_power[0] * RPM, p.half_power[1] * RPM], [lvl, lvl], color="0.4", linewidth=0.8)
-        if p.amplification_factor is not None:
-            ax.annotate(f"AF {p.amplification_factor:.3g}" + (" (1/2ζ)" if p.basis == "damping ratio" else ""),
-                        (p.speed * RPM, p.amplitude * UM), textcoords="offset points", xytext=(5, 3), fontsize=7)
+        text = f"AF {p.amplification_factor:.3g}" + (" (1/2ζ)" if p.basis == "damping ratio" else "")
+        near = [t for s, t in said if abs(s - p.speed) < 0.05 * (sp[-1] - sp[0]) / RPM]
+        if p.amplification_factor is not None and text not in near:
+            ax.annotate(text, (p.speed * RPM, p.amplitude * UM), textcoords="offset points",
+                        xytext=(5, 3 - 12 * len(near)), fontsize=7)
+            said.append((p.speed, text))
     if res.speed is not None:
         lo, hi = res.speed
         for a in (ax, axp):
@@ -504,7 +497,7 @@ def response_figure(res: WhirlResult):
         ax.set_yscale("log")
     ax.set_xlim(float(sp[0]), float(sp[-1]))
     axp.set_xlim(float(sp[0]), float(sp[-1]))
-    ax.set_ylabel("displacement, orbit semi-major axis [µm]")
+    ax.set_ylabel("displacement [µm]\n(orbit semi-major axis)")
     src = "the body's own unbalance" if resp.source == "body" else "the unbalances given"
     ax.set_title(f"response to {src}; half-power points marked", fontsize=9)
     fig.legend(loc="outside lower center", ncols=3, fontsize=7)
@@ -512,7 +505,7 @@ def response_figure(res: WhirlResult):
 
     axp.yaxis.set_major_locator(MultipleLocator(90.0))
     axp.set_xlabel("rotor speed [rpm]")
-    axp.set_ylabel("phase of the high spot [°] (rotor frame)")
+    axp.set_ylabel("high-spot phase [°]\n(rotor frame)")
     return fig
 
 
@@ -542,10 +535,6 @@ def report_section(res: WhirlResult, du: DisplayUnits, digits: int, *, figures: 
     ``rbcli.render.reportdoc`` would build it from a computed section ``c`` (``c.result`` a
     :class:`rbcli.api.whirlresult.WhirlResult`) as
     ``report_section(c.result, du, digits, key=c.key, title=c.title)``."""
-    from rbcli.render.fmt import said
-    from rbcli.render.plots import figure_bytes
-    from rbcli.render.report import Figure, Section
-    from rbcli.render.text import Note
 
     doc = Doc()
     document(doc, res, du, digits, heading=False)

@@ -34,7 +34,7 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
     figure_svg : the polar diagram as SVG text (rbcli.render.plots.figure_bytes of
         rbcli.render.balanceplot.plot), or None
     """
-    scale, ru = fb.reading_display(res.reading_kind, su)
+    scale, ru = fb.reading_display(res.reading_kind, su, res.measure)
     rows = res.row_names()
     title = f"Field balancing job sheet{': ' + res.name if res.name else ''}"
     sections = []
