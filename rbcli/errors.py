@@ -195,7 +195,19 @@ class RbcliError(Exception):
         return self.spelled()
 
     def __reduce__(self):  # errors cross processes: no __init__ again (ParamError's takes others)
-        return type(self).__new__, (type(self), *self.args), self.__dict__
+        state = dict(self.__dict__)
+        if isinstance(self, OSError):  # (rbcli.io.reader's MissingFile...)
+            state.update(errno=self.errno, strerror=self.strerror, filename=self.filename)
+        return _remade, (type(self), self.args, state)
+
+
+def _remade(cls: type, args: tuple, state: dict) -> BaseException:
+    """An unpickled error: made by its layout's ``__new__`` (an OSError's for an OSError too),
+    its attributes put back."""
+    exc = (OSError if issubclass(cls, OSError) else Exception).__new__(cls, *args)
+    exc.args = args  # (an OSError subclass with an __init__ of its own leaves them to it)
+    exc.__setstate__(state)
+    return exc
 
 
 class InputError(RbcliError, ValueError):

@@ -117,7 +117,7 @@ def _errors() -> list[BaseException]:
     """One instance of every rbcli error class (the hierarchy, walked)."""
     from rbcli.api.result import jsonable
     from rbcli.interrupts import Terminated
-    from rbcli.io.reader import ReadError
+    from rbcli.io.reader import ReadError, read_regular
 
     try:
         jsonable({"a": [1.0, float("nan")]})
@@ -139,10 +139,14 @@ def _errors() -> list[BaseException]:
             yield from walk(sub)
 
     for cls in set(walk(RbcliError)) - seen:  # any other: made as a ParamError is
-        e = cls.__new__(cls, "{x}: why")
+        e = (OSError if issubclass(cls, OSError) else Exception).__new__(cls, "{x}: why")
         RbcliError.__init__(e, "{x}: why", Location("f", 1, 2))
         e.param = "x"
         made.append(e)
+    try:  # an error that is an OSError too, with its errno and file name
+        read_regular("/no/such/file.yaml", 100)
+    except ReadError as exc:
+        made.append(exc)
     return made
 
 
@@ -151,7 +155,7 @@ def test_every_error_pickles_with_its_message_location_and_parameter(error):
     back = roundtrip(error)
     assert type(back) is type(error)
     assert str(back) == str(error) and back.args == error.args
-    for attr in ("message", "where", "param", "template", "reason", "path", "signum"):
+    for attr in ("message", "where", "param", "template", "reason", "path", "signum", "errno", "filename"):
         if hasattr(error, attr):
             assert getattr(back, attr) == getattr(error, attr), attr
     if isinstance(error, RbcliError):
