@@ -202,8 +202,7 @@ class RbcliError(Exception):
 
 
 def _remade(cls: type, args: tuple, state: dict) -> BaseException:
-    """An unpickled error: made by its layout's ``__new__`` (an OSError's for an OSError too),
-    its attributes put back."""
+    """An unpickled error: made by its layout's ``__new__``, its attributes put back."""
     exc = (OSError if issubclass(cls, OSError) else Exception).__new__(cls, *args)
     exc.args = args  # (an OSError subclass with an __init__ of its own leaves them to it)
     exc.__setstate__(state)

@@ -30,8 +30,7 @@ _KINDS = "numbers, texts, booleans, None, lists and mappings with text keys"
 
 
 class ReadOnly(Mapping):
-    """A read-only mapping of its own (a ``MappingProxyType`` that pickles: bodies and
-    results cross processes)."""
+    """A read-only mapping of its own that pickles (``MappingProxyType`` does not)."""
 
     __slots__ = ("_data",)
 

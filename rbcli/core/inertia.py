@@ -124,8 +124,7 @@ def body_mass_props(body: Any) -> MassProps:
 
 
 def remembered(body: Any) -> bool:
-    """Whether ``body`` holds the mass properties of its parts (the loader's, which checked
-    them, or those of an earlier :func:`body_mass_props`)."""
+    """Whether ``body`` holds its parts' mass properties (the loader's, or an earlier call's)."""
     cached = getattr(body, "_mass_props", None)
     return cached is not None and cached[0] is body.parts
 

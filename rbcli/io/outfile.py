@@ -119,9 +119,7 @@ def check(
     """
     option = _opt(option)
     text = os.fspath(path)
-    if "\x00" in text:
-        raise InputError(f"{option}: the file name contains a NUL character")
-    _probe(text, option)
+    _probe(text, option)  # (a NUL in the name too)
     p = Path(text)
     if not text or text.endswith(("/", os.sep)) or p.is_dir():
         raise InputError(f"{option}: '{literal(text)}' is a folder; give a file name")
@@ -220,17 +218,12 @@ _pending: list[int] = []
 
 @contextmanager
 def _held_signals() -> Iterator[None]:
-    """SIGINT, SIGTERM and SIGHUP held off for a few steps (creating a temporary file,
-    renaming outputs into place, cleaning up), so that an interrupt can split neither a
-    write that must be all or nothing nor its cleanup; a signal that arrives meanwhile is
-    delivered when the outermost block ends.
-
-    Held at the Python level (the handlers are swapped for one that only records the
-    signal): blocking with ``pthread_sigmask`` would not do, since the kernel may hand the
-    signal to another thread (a BLAS worker), whose C handler still makes the main thread
-    raise at its next step. Outside the main thread this does nothing (no handler runs
-    there).
-    """
+    """SIGINT, SIGTERM and SIGHUP held off for a few steps (a temporary file made, outputs
+    renamed into place, a cleanup), so that no interrupt splits them; one that arrives is
+    delivered when the outermost block ends. Held by swapping the handlers for one that
+    records (``pthread_sigmask`` would not do: the kernel may hand the signal to a BLAS
+    thread, whose C handler still makes the main thread raise); outside the main thread,
+    nothing (no handler runs there)."""
     import signal
     import threading
 
