@@ -133,6 +133,9 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
         raise _error(option, f"expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
                          f"got '{literal(text)}'")
     last = quantity(parts[-1], kind, option, bare=bare)  # its own errors first
+    for p in parts[:-1]:
+        if not _bare(p):  # ('inf', '1e999', 'x mm': said as such, not as a unit left unclear)
+            quantity(p, kind, option, bare=bare)
     m = NUMBER.match(parts[-1])
     unit = parts[-1][m.end():].strip() if m else ""
     if unit:

@@ -55,6 +55,15 @@ def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
     return g
 
 
+def _convention(ctx: Ctx, m: ys.MapNode) -> str:
+    """The ``convention`` of mapping ``m``: 'tensor' or 'positive'."""
+    node = m.items["convention"][1]
+    conv = yv.string(ctx, node, "convention")
+    if conv not in ("tensor", "positive"):
+        raise ctx.error(node, f"convention must be 'tensor' or 'positive', not '{conv}'")
+    return conv
+
+
 def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> Part:
     what = f"part '{name}' (given)"
     yv.check_keys(ctx, m, GIVEN_KEYS, what, required=("mass", "inertia"))
@@ -62,15 +71,14 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
     com = yv.vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
     inode = m.items["inertia"][1]
     if isinstance(inode, ys.MapNode):
+        if "convention" in m.items:  # (before the products ask for one: it is there, misplaced)
+            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
+                            "convention inside 'inertia'; move 'convention' into the inertia mapping")
         g = _entries(ctx, inode)
         has_products = any(g[k] != 0.0 for k in ("Ixy", "Iyz", "Izx"))
         sign = -1.0
         if "convention" in inode.items:
-            conv_node = inode.items["convention"][1]
-            conv = yv.string(ctx, conv_node, "convention")
-            if conv not in ("tensor", "positive"):
-                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
-            sign = 1.0 if conv == "tensor" else -1.0
+            sign = 1.0 if _convention(ctx, inode) == "tensor" else -1.0
         elif has_products:
             raise ctx.error(
                 inode,
@@ -84,18 +92,11 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
                 [sign * g["Izx"], sign * g["Iyz"], g["Izz"]],
             ]
         )
-        if "convention" in m.items:
-            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
-                            "convention inside 'inertia'; remove the part's 'convention'")
     else:
         J = yv.matrix(ctx, inode, "inertia", "inertia")
         off = J[~np.eye(3, dtype=bool)]
         if "convention" in m.items:
-            conv_node = m.items["convention"][1]
-            conv = yv.string(ctx, conv_node, "convention")
-            if conv not in ("tensor", "positive"):
-                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
-            if conv == "positive":
+            if _convention(ctx, m) == "positive":
                 J = np.where(np.eye(3, dtype=bool), J, -J)
         elif np.any(off != 0.0):
             raise ctx.error(

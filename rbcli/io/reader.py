@@ -1,10 +1,10 @@
 """The one input reader: regular files and standard input, type and size checked first.
 
-Every file rbcli reads (a body, an include, a mesh) goes through :func:`read_regular`,
-standard input (BODY ``-``) through :func:`read_stream`. Only a regular file is read: a
-FIFO, a device or a directory is refused before a byte is read, without blocking (opened
-``O_NONBLOCK``, its type taken from the open descriptor); the size is checked before and
-while reading, standard input's as it comes (``- < /dev/zero`` stops at the limit).
+Every file rbcli reads (a body, an include) goes through :func:`read_regular` (a mesh
+through :func:`open_regular`, to read it in blocks), standard input (BODY ``-``) through
+:func:`read_stream`. Only a regular file is read: a FIFO, a device or a directory is refused
+before a byte is read, without blocking (opened ``O_NONBLOCK``, its type taken from the open
+descriptor); the size is checked before and while reading, standard input's as it comes.
 
 Errors are :class:`ReadError` (an InputError, exit 2) with the bare ``reason`` (``"no such
 file"``...) for callers to word; a missing file is also a FileNotFoundError, a forbidden
@@ -20,7 +20,7 @@ from typing import BinaryIO
 
 from rbcli.errors import InputError, Location
 
-__all__ = ["ReadError", "read_regular", "read_stream", "size_text", "limit_from_env"]
+__all__ = ["ReadError", "open_regular", "read_regular", "read_stream", "size_text", "limit_from_env"]
 
 _CHUNK = 1 << 16
 
@@ -119,6 +119,33 @@ def _os_reason(exc: OSError) -> str:
 _READ_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
+def open_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
+                 where: Location | None = None, env: str | None = None) -> tuple[int, int]:
+    """(a descriptor, the size) of the regular file ``path``, checked and opened as
+    :func:`read_regular` says, for a reader that reads it its own way (a mesh, in blocks)."""
+    name = os.fspath(path)
+    if "\x00" in name:
+        raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
+    fd = None
+    try:
+        st = os.stat(name)  # refuse a FIFO or device before opening it at all
+        if not _kind(st.st_mode):
+            fd = os.open(name, _READ_FLAGS)
+            st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
+        reason = _kind(st.st_mode) or (_too_big(st.st_size, limit, what, env) if st.st_size > limit else None)
+        if reason:
+            raise _error(name, reason, where, errno.EISDIR if stat.S_ISDIR(st.st_mode) else None)
+        return fd, st.st_size
+    except BaseException as exc:
+        if fd is not None:
+            os.close(fd)
+        if isinstance(exc, OSError) and not isinstance(exc, ReadError):
+            raise _error(name, _os_reason(exc), where, exc.errno) from None
+        if isinstance(exc, ValueError) and not isinstance(exc, ReadError):  # a name the OS cannot take
+            raise ReadError(name, f"cannot read the file: {exc}", where) from None
+        raise
+
+
 def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
                  where: Location | None = None, env: str | None = None) -> bytes:
     """The bytes of the regular file ``path`` (a link followed), at most ``limit``; ``what``
@@ -128,44 +155,21 @@ def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *
     ReadError (exit 2): a missing or unreadable file, a NUL in the name, a directory, FIFO,
     device or socket (refused before reading, without blocking), more than ``limit`` bytes
     (checked before and while reading)."""
-    name = os.fspath(path)
-    if "\x00" in name:
-        raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
-    flags = _READ_FLAGS
+    fd, size = open_regular(path, limit, what, where=where, env=env)
     try:
-        st = os.stat(name)  # refuse a FIFO or device before opening it at all
-        reason = _kind(st.st_mode)
-        if reason:
-            raise _error(name, reason, where, errno.EISDIR if stat.S_ISDIR(st.st_mode) else None)
-        fd = os.open(name, flags)
-    except ReadError:
-        raise
-    except OSError as exc:
-        raise _error(name, _os_reason(exc), where, exc.errno) from None
-    except ValueError as exc:  # e.g. a name the OS cannot take
-        raise ReadError(name, f"cannot read the file: {exc}", where) from None
-    try:
-        st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
-        reason = _kind(st.st_mode)
-        if reason:
-            raise ReadError(name, reason, where)
-        if st.st_size > limit:
-            raise ReadError(name, _too_big(st.st_size, limit, what, env), where)
         chunks = []
         total = 0
         while True:
-            chunk = os.read(fd, min(max(st.st_size - total, _CHUNK), limit + 1 - total) or 1)
+            chunk = os.read(fd, min(max(size - total, _CHUNK), limit + 1 - total) or 1)
             if not chunk:
                 break
             chunks.append(chunk)
             total += len(chunk)
             if total > limit:
-                raise ReadError(name, _too_big(None, limit, what, env), where)
+                raise ReadError(os.fspath(path), _too_big(None, limit, what, env), where)
         return b"".join(chunks)
-    except ReadError:
-        raise
     except OSError as exc:
-        raise _error(name, _os_reason(exc), where, exc.errno) from None
+        raise _error(os.fspath(path), _os_reason(exc), where, exc.errno) from None
     finally:
         os.close(fd)
 
