@@ -411,17 +411,13 @@ step = _constructor(
     "properties from the B-rep (needs ``pip install 'rbcli[cad]'``).",
     """
 file : str or path-like, optional
-    The STEP file (.step, .stp), relative to ``base_dir`` of :meth:`rbcli.Body.from_parts`
-    (default: the current folder).
+    The STEP file, relative to ``base_dir`` of :meth:`rbcli.Body.from_parts`.
 part : str, optional
-    Only the solids this name or pattern (``"link*"``) matches; default all.
+    Only the solids this name or pattern (``"link*"``) matches.
 solids : mapping, optional
-    A material or density per solid: ``{"pin*": "steel", "base": "7.2 g/cm^3"}`` (the first
-    name or pattern that matches).
-units : str, optional
-    The length unit of the file's numbers, instead of the one the file states (with a note).
-scale : float or str, optional
-    A factor for the coordinates (with a note).
+    A material or density per solid name or pattern: ``{"pin*": "steel"}``.
+units, scale : str; float or str, optional
+    Override the file's length unit (with a note).
 """,
     """
 >>> import rbcli

@@ -239,7 +239,7 @@ def test_options_a_step_body_needs_and_those_it_refuses(cli):
     r = cli("inertia", "examples/cube.yaml", "--material", "steel")
     assert r.code == 2 and r.err.startswith("rbcli: --material: applies to a STEP, STL or OBJ file")
     r = cli("inertia", str(ARM), "--material", "steel", "--part", "lnk*")
-    assert r.code == 2 and "part: 'lnk*' is no solid of the file" in r.err
+    assert r.code == 2 and "part: no solid 'lnk*'" in r.err
     assert "--part: applies to a STEP file" in cli("inertia", "examples/housing.stl", "--density",
                                                    "1000", "--part", "x").err
 

@@ -37,12 +37,10 @@ G = Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", 
 #: a STEP, STL or OBJ file given as the body: the command line's options of its BODY (every
 #: command that takes one), :func:`rbcli.load`'s keywords
 BODY = (
-    Param("material", "A STEP, STL or OBJ BODY's material, e.g. steel (rbcli materials).",
-          api=False),
-    Param("density", "A STEP, STL or OBJ BODY's density (kg/m^3, or e.g. '2.7 g/cm^3').",
-          "quantity", "density", api=False),
-    Param("part", "A STEP BODY's solid to keep: its name, or a pattern such as 'link*'.",
-          api=False),
+    Param("material", "A STEP, STL or OBJ BODY's material (rbcli materials).", api=False),
+    Param("density", "A STEP, STL or OBJ BODY's density (kg/m^3, or '2.7 g/cm^3').", "quantity",
+          "density", api=False),
+    Param("part", "A STEP BODY's solid to keep: a name or pattern ('link*').", api=False),
 )
 
 

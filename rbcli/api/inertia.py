@@ -197,8 +197,7 @@ class InertiaResult(Result):
 
 
 def links(body: Body, principal: bool = False) -> tuple[tuple[str, Inertial], ...]:
-    """The ``<inertial>`` of each link (``inertia --each``): the parts grouped by their name
-    up to its first ``/``, in the body frame; an InputError if holes outweigh one."""
+    """The ``<inertial>`` of each link (``--each``): the parts by name up to its first ``/``."""
     groups: dict[str, list] = {}
     for p in check.body(body).parts:
         groups.setdefault(p.name.split("/")[0], []).append(p)

@@ -25,9 +25,8 @@ MAX_PARTS = 200_000
 
 @dataclass
 class Session:
-    """What one load shares across its files: the parts budget and the files parsed (once a
-    real path); ``load`` reads an included file's text (:func:`rbcli.body.bodyfile._load`,
-    given so that the include reader need not import it)."""
+    """What a load's files share: the parts budget, the files parsed; ``load`` reads an
+    included file (:func:`rbcli.body.bodyfile._load`: the include reader need not import it)."""
 
     max_parts: int
     load: Callable | None = None

@@ -100,8 +100,7 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
 
 
 def scale_units(ctx: Ctx, m: ys.MapNode, what: str, of: str = "mesh") -> tuple[float, float | None]:
-    """A file part's ``scale`` (1 when not given) and its ``units``: metres per unit of the
-    file's coordinates (None when not given)."""
+    """A file part's ``scale`` (1 if not given) and ``units`` (m per unit, or None)."""
     scale, factor = 1.0, None
     if "scale" in m.items:
         scale = yv.positive(ctx, m.items["scale"][1], "dimensionless", f"{what}: scale")
@@ -120,8 +119,7 @@ def scale_units(ctx: Ctx, m: ys.MapNode, what: str, of: str = "mesh") -> tuple[f
 
 def mesh_path(ctx: Ctx, fnode: ys.Node, shape: str = "mesh",
               kind: str = "a mesh file (.stl or .obj)") -> Path:
-    """The ``file`` of a mesh (or STEP) part, relative to the body file's folder; as written
-    when that is the cwd."""
+    """A mesh or STEP part's ``file``, relative to the body file's folder."""
     rel = yv.string(ctx, fnode, "file")
     if not rel.strip():
         raise ctx.error(fnode, f"file must name {kind}, relative to the body file")

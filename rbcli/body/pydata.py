@@ -102,8 +102,7 @@ def load_data(mapping: Mapping[str, object], *, units: Mapping[str, str] | None 
 
 
 def cad_file(path: str, **keys: object) -> Built:
-    """A STEP, STL or OBJ file as a body: one ``step`` (or ``mesh``, in mm: no unit in those
-    formats) part of it with ``keys`` (None leaves one out), its problems located at the file."""
+    """A STEP, STL or OBJ file (in mm: no unit in those) as a body of one part of it."""
     mesh = not path.lower().endswith(CAD_SUFFIXES[:2])
     part = {"shape": "mesh" if mesh else "step", "file": path,
             **({"name": Path(path).stem, "units": "mm"} if mesh else {}),
@@ -111,8 +110,7 @@ def cad_file(path: str, **keys: object) -> Built:
     built = _load(freeze({"parts": (part,)}), path, Path.cwd(), name=Path(path).stem,
                   labels=[path], source=path)
     if mesh:
-        built.fields["warnings"] += (f"{path}: note: STL and OBJ files carry no length unit; "
-                                     "read in mm (a body file's mesh part says otherwise: units:)",)
+        built.fields["warnings"] += (f"{path}: note: read in mm (STL and OBJ carry no unit)",)
     return built
 
 
@@ -130,9 +128,8 @@ BODY_ARGS = ("name", "description", "units", "reference", "shaft", "pivot", "rim
 
 def from_parts(parts: Sequence[Mapping[str, object]], *, base_dir: object = None,
                **body: object) -> Built:
-    """The body of ``parts`` (:class:`PartSpec` s or mappings) with the body keys ``body``
-    (``name``, ``units``, ``shaft``, ...; None: not given); each problem in a part located
-    by the call, ``parts[2] (cylinder 'bore')``."""
+    """The body of ``parts`` (specs or mappings) with the body keys ``body`` (None: not
+    given), a part's problems located by the call: ``parts[2] (cylinder 'bore')``."""
     if isinstance(parts, (str, bytes, Mapping)) or not isinstance(parts, Iterable):
         raise TypeError(f"parts: expected a list of parts (rbcli.parts.*), not {type(parts).__name__}")
     _check_budget(parts, "parts")

@@ -105,8 +105,8 @@ def _patterns(ctx: Ctx, m: ys.MapNode, names: list[str], what: str) -> tuple[str
         if len(p) > 200 or not any(fnmatchcase(n, p) for n in names):
             near = yv.suggest(p, names) if len(p) <= 200 else ""
             shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
-            raise ctx.error(m.items[key][1], literal(f"{what}: {key}: '{p[:60]}' is no solid of "
-                                                     f"the file{near} (solids: {shown})"))
+            raise ctx.error(m.items[key][1], literal(f"{what}: {key}: no solid '{p[:60]}'{near} "
+                                                     f"(solids: {shown})"))
     return part, rules
 
 

@@ -32,16 +32,14 @@ SPECIAL = {
         "welding decides closedness only. At most 1 GiB (RBCLI_MAX_MESH_BYTES)",
     ),
     "step": (
-        "each solid of a STEP file a part (pip install 'rbcli[cad]'), named from the file "
-        "(name/solid), placed by its assembly; the JSON adds its unit and colour",
-        "file (.step, .stp); optional part (a name or pattern such as 'link*'), solids ({name "
-        "or pattern: material or density}), units, scale (override the file's unit, noted)",
-        "mass (shared by volume), density or material; solids: for each",
+        "each solid of a STEP file a part (pip install 'rbcli[cad]'), named from the file, "
+        "placed by its assembly; the JSON adds its unit and colour",
+        "file (.step, .stp); optional part (a name or pattern: 'link*'), solids ({pattern: "
+        "material or density}), units, scale (override the file's unit)",
+        "mass (shared by volume), density or material",
         "the file's origin",
-        "exact from each solid's B-rep (OpenCascade). Refused at the file's line: not STEP, "
-        "truncated, over RBCLI_MAX_STEP_BYTES (128 MiB) or RBCLI_MAX_STEP_ENTITIES (1 000 000), "
-        "references looping or nested over 1000 deep, an assembly containing itself or nested "
-        "over 64 deep, an open shell or solid, no solid",
+        "exact from each solid's B-rep (OpenCascade); hostile or open files refused at their "
+        "line (README, Budgets)",
     ),
     "given": (
         "measured or CAD-exported mass properties",
@@ -120,7 +118,7 @@ def shapes(
 
 @app.command(help="The built-in materials: density and where it is from.")
 def materials(
-    name: str = typer.Argument(None, help="Only those whose name or alias holds this word.", show_default=False),
+    name: str = typer.Argument(None, help="Only names holding this.", show_default=False),
     json_: bool = c.JsonOpt,
     fmt: str = c.FormatOpt,
 ) -> None:
@@ -197,15 +195,9 @@ MANUAL["shapes"] = {
     ],
 }
 MANUAL["materials"] = {
-    "notes": [
-        "The table: rbcli/data/materials.csv (names, density in kg/m^3, source; wood at 12 % "
-        "moisture). Names match ignoring case, hyphens and spacing (Aluminum-6061).",
-    ],
+    "notes": ["The table: rbcli/data/materials.csv; names match ignoring case and hyphens."],
     "json": [("name, aliases, density, source", "one object per material; density in kg/m^3.")],
-    "examples": [
-        ("rbcli materials steel", "The steels, their densities and sources."),
-        ("rbcli inertia bracket.step --material 'stainless steel 316'", "A STEP file's mass properties."),
-    ],
+    "examples": [("rbcli materials steel", "The steels, their densities and sources.")],
 }
 MANUAL["schema"] = {
     "notes": [

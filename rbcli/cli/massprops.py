@@ -216,8 +216,6 @@ MANUAL["inertia"] = {
          "Several bodies at once: one JSON object per line."),
         ("rbcli inertia examples/bracket.yaml --format urdf",
          "The <inertial> element of a URDF link whose frame is the body frame."),
-        ("rbcli inertia examples/cad/step_arm.step --material 'aluminium 6061' --format urdf --each",
-         "A STEP assembly: a URDF <link> per top-level solid or sub-assembly."),
         ("rbcli inertia examples/two_blade_fan.yaml --format mjcf --principal",
          "MuJoCo: pos, quat (w x y z) of the principal axes and diaginertia (0.00666667, 0.0266667, 0.0333333)."),
     ],

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import importlib
 import io
-import itertools
 import re
 from dataclasses import dataclass
 from types import SimpleNamespace
@@ -20,11 +19,9 @@ __all__ = ["StepError", "Solid", "StepFile", "read_step", "scan"]
 MAX_STEP_BYTES = 128 << 20  # RBCLI_MAX_STEP_BYTES
 MAX_ENTITIES = 1_000_000  # RBCLI_MAX_STEP_ENTITIES: ~3 s, ~650 MB
 MAX_ASSEMBLY_DEPTH = 64
-MAX_REF_DEPTH = 1000  # a B-rep nests ~12; OpenCascade follows references recursively
 #: a length unit as OpenCascade names it (lower case): as rbcli writes it, in m
 UNITS = {"millimetre": ("mm", 1e-3), "metre": ("m", 1.0), "centimetre": ("cm", 1e-2),
-         "micrometre": ("um", 1e-6), "kilometre": ("km", 1e3), "inch": ("in", 0.0254),
-         "foot": ("ft", 0.3048)}
+         "inch": ("in", 0.0254), "foot": ("ft", 0.3048)}
 _COMMENT = re.compile(rb"/\*.*?\*/", re.S)
 _STRING = re.compile(rb"'[^']*'")  # ('' in a string: two strings side by side)
 #: an entity (strings emptied): number, type (empty: complex), parameters
@@ -42,9 +39,8 @@ class StepError(ValueError):
 
 @dataclass(frozen=True)
 class Solid:
-    """A solid placed by the assembly, in m: ``name`` its instance path (``link:1/pin``);
-    ``volume`` m³, ``centroid`` m and ``inertia`` m⁵ (about it, the tensor at unit density) in
-    its part's frame; the part placed x -> R x + t; ``colour`` ``#rrggbb``."""
+    """A solid (m): its instance path (``link:1/pin``); volume, centroid and inertia (the
+    tensor at unit density) in its part's frame, placed x -> R x + t; colour ``#rrggbb``."""
 
     name: str
     volume: float
@@ -57,8 +53,8 @@ class Solid:
 
 @dataclass(frozen=True)
 class StepFile:
-    """The solids, the file's length ``unit`` (``mm``) and its size in ``metres`` (None: not
-    one rbcli knows), and the assembly nodes and parts that hold no solid (``empty``)."""
+    """The solids, the file's ``unit`` and its ``metres`` (None: unknown), the nodes with no
+    solid."""
 
     solids: tuple[Solid, ...]
     unit: str | None
@@ -71,8 +67,8 @@ def _line(data: bytes, pos: int) -> int:
 
 
 def _deepest(graph: dict, limit: int) -> tuple[str, bytes] | None:
-    """The first cycle (``("cycle", a node on it)``) or path of more than ``limit`` links
-    (``("deep", its top)``) in ``graph`` (node -> successors): an iterative depth-first walk."""
+    """``("cycle", a node on it)``, ``("deep", the top of a path of over limit links)`` or
+    None, of ``graph`` (node -> successors), depth first."""
     depth: dict = {}  # finished nodes: the longest path from each, in nodes
     for root in graph:
         if root in depth:
@@ -116,13 +112,13 @@ def scan(data: bytes, max_entities: int) -> None:
     seen: set[bytes] = set()
     if len({n for n, _, _ in entities}) < len(entities):  # which one, only then
         twice = next(n for n, _, _ in entities if n in seen or seen.add(n))
-        raise StepError(f"entity #{twice.decode()} is defined twice", _where(data, twice, 2))
+        raise StepError(f"#{twice.decode()} is defined twice", _where(data, twice))
     refs = {n: _REF.findall(p) for n, _, p in entities if b"#" in p}
     assembly: dict[bytes, list[bytes]] = {}
     for n, kind, _ in entities:
         if kind == b"NEXT_ASSEMBLY_USAGE_OCCURRENCE" and len(refs.get(n, ())) >= 2:
             assembly.setdefault(refs[n][0], []).append(refs[n][1])  # relating -> related
-    for graph, limit, what in ((refs, MAX_REF_DEPTH, "entity references"),
+    for graph, limit, what in ((refs, len(refs), "references"),
                                (assembly, MAX_ASSEMBLY_DEPTH, "assemblies")):
         found = _deepest(graph, limit)
         if found:
@@ -131,10 +127,10 @@ def scan(data: bytes, max_entities: int) -> None:
                             "deep" else f"#{n} contains itself ({what} loop)", _where(data, found[1]))
 
 
-def _where(data: bytes, number: bytes, nth: int = 1) -> int:
-    """The line where entity ``#number`` is defined (the ``nth`` time)."""
-    found = list(itertools.islice(re.finditer(rb"#%s\s*=" % number, data), nth))
-    return _line(data, found[-1].start() if found else 0)
+def _where(data: bytes, number: bytes) -> int:
+    """The line where entity ``#number`` is defined."""
+    found = re.search(rb"#%s\s*=" % number, data)
+    return _line(data, found.start() if found else 0)
 
 
 def read_step(path: str, max_solids: int) -> StepFile:

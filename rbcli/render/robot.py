@@ -112,7 +112,7 @@ def mjcf(inertial: Any) -> str:
 
 
 def links(fmt: str, name: str, source: str, items: Any) -> str:
-    """One comment, then a ``<link>`` (MJCF ``<body>``) per (name, inertial) of ``items``."""
+    """A comment, then a ``<link>`` (``<body>``) per (name, inertial)."""
     tag = "body" if fmt == "mjcf" else "link"
     out = [comment(fmt, name, source, items[0][1])]
     for link, inertial in items:
