@@ -340,9 +340,16 @@ def test_polar_diagram_of_a_multi_sensor_job(cli, tmp_path):
     import xml.etree.ElementTree as ET
 
     assert ET.parse(path).getroot().tag.endswith("svg")
-    d = rbcli.field_balance(job=FAN).diagram()
-    assert [p.quantity for p in d.panels] == ["reading"] * 8 + ["mass"] * 2
-    assert d.angle_sense == "with"  # angles against a clockwise rotation run counterclockwise
+    from rbcli.render.field.plot import _sense, plot
+    from rbcli.render.units import ShopUnits
+
+    res = rbcli.field_balance(job=FAN)
+    fig = plot(res, ShopUnits(None), (1e-3, "mm/s"))
+    titles = [ax.get_title() for ax in fig.axes]
+    assert titles[:2] == ["reading NDE-H at low [mm/s]", "reading NDE-V at low [mm/s]"] and len(titles) == 10
+    assert titles[8:] == ["plane A: masses [g]", "plane B: masses [g]"]
+    assert all(ax.get_legend() is not None for ax in fig.axes)  # a legend per dial
+    assert _sense(res) == 1  # angles against a clockwise rotation run counterclockwise
 
 
 # ------------------------------------------------------------------ errors

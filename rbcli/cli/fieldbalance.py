@@ -130,11 +130,11 @@ def _figure(res, su, plot_path, report_path) -> str | None:
     """Draw the polar diagram to ``plot_path``; its SVG text for the sheet when there is one."""
     if plot_path is None and report_path is None:
         return None
-    from rbcli.render import balanceplot
+    from rbcli.render.field.plot import plot
     from rbcli.render.field.tables import reading_display
     from rbcli.render.plots import figure_bytes
 
-    fig = balanceplot.plot(res.diagram(), su, reading_display(res.reading_kind, su))
+    fig = plot(res, su, reading_display(res.reading_kind, su))
     if plot_path is not None:
         c.save_plot(fig, plot_path)
     return None if report_path is None else figure_bytes(fig, "svg").decode("utf-8")

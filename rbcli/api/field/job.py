@@ -18,14 +18,14 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from rbcli.api import options as op
-from rbcli.api.field import coefficients, trial
+from rbcli.api.field import coefficients, shop, trial
 from rbcli.api.field.readings import (
     Reading, at, common_measure, one_kind, reading, readings, trial_mass,
 )
 from rbcli.api.params import Options
 from rbcli.errors import InputError, Location, ParamError, literal
 from rbcli.io.field import plane_names
-from rbcli.io.field.jobfile import JobRotor, Text, load_job
+from rbcli.io.field.jobfile import FieldJob, JobRotor, Text, load_job
 
 __all__ = ["Job", "make"]
 
@@ -41,10 +41,11 @@ SETTINGS = {"cumulative": "cumulative", "weights": "sensors", "positions": "plan
             "speed": "speeds", "phase": "conventions", "angle_sense": "conventions",
             "rotation": "conventions", "severity": "severity", "coefficients": "coefficients",
             "method": "method", "mass_step": "mass_step", "angle_step": "angle_step",
-            "measure": "readings"}
+            "measure": "readings", "max_mass": "planes", "limit": "sensors", "drawer": "drawer",
+            "max_weights": "max_weights", "robust": "robust"}
 #: settings a job file gives per sensor, plane or speed: the job keeps them (a parameter
 #: applies to all)
-PER_ITEM = ("weights", "positions", "speed")
+PER_ITEM = ("weights", "positions", "speed", "max_mass", "limit", "drawer")
 
 
 @dataclass(frozen=True)
@@ -80,6 +81,9 @@ class Job:
     flipped : bool — the phases were mirrored into the angles' sense
     suggest : TrialRequest | None — what sizes a trial mass (``suggest_trial``)
     notes : tuple of str — what was converted on the way
+    source : FieldJob | None — the job file as read
+    max_mass : per plane (kg, "mass") or (kg m, "unbalance") or None; limits : per reading
+        the largest predicted amplitude (inf: none), or None; drawer : :class:`shop.Drawer`
     classic : bool — given with the classic parameters only (:data:`CLASSIC`)
     extended : bool — anything beyond the classic one- or two-plane job (the output then
         has ``method``, ``residuals``...)
@@ -109,6 +113,10 @@ class Job:
     notes: tuple[str, ...] = ()
     classic: bool = False
     extended: bool = True
+    source: FieldJob | None = None
+    max_mass: tuple[tuple[float, str] | None, ...] = ()
+    limits: tuple[float, ...] | None = None
+    drawer: shop.Drawer | None = None
 
     @property
     def planes(self) -> int:
@@ -146,7 +154,7 @@ def make(o: Options) -> Job:
     job = from_file(o) if o.job is not None else from_options(o)
     if job.options.coefficients is not None:
         job = coefficients.apply(job)
-    return _finish(job)
+    return shop.read(_finish(job))
 
 
 # ----------------------------------------------------------------------------- two sources
@@ -257,7 +265,7 @@ def from_file(o: Options) -> Job:
     return _measured(Job(
         o, job.sensors, speeds if o.speed is None else ((speeds[0][0], o.speed),), names, radii,
         positions if o.positions is None else (o.positions,) * p, at, trials, name=job.name,
-        rotor=job.rotor, weights=weights), initial, runs)
+        rotor=job.rotor, weights=weights, source=job), initial, runs)
 
 
 def _planes(job: Any, p: int) -> tuple[tuple, tuple, tuple, tuple]:
@@ -277,7 +285,9 @@ def _settings(o: Options, job: Any) -> Options:
     refused (located at the job file's key)."""
     theirs = {name: getattr(job, name, None) for name in SETTINGS}
     theirs.update(positions=next((pl.positions for pl in job.planes if pl.positions is not None), None),
-                  speed=next((s.speed for s in job.speeds if s.speed is not None), None))
+                  speed=next((s.speed for s in job.speeds if s.speed is not None), None),
+                  max_mass=next((pl.max_mass for pl in job.planes if pl.max_mass is not None), None),
+                  limit=next((x for x in job.limits + tuple(s.limit for s in job.speeds) if x), None))
     for name, key in SETTINGS.items():
         mine = getattr(o, name)
         if theirs[name] is not None and mine is not None and mine is not False:

@@ -17,7 +17,6 @@ from dataclasses import dataclass, fields, is_dataclass
 from typing import Any
 
 from rbcli import __version__
-from rbcli.api.diagram import Arrow, Diagram, Panel
 from rbcli.api.result import Result
 from rbcli.core.field.fit import FittedMass
 from rbcli.core.field.solve import deg
@@ -25,7 +24,8 @@ from rbcli.io.field import plane_names
 from rbcli.io.field.coefficients import FORMAT, VERSION
 
 __all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedPlane", "Fitted",
-    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text",
+    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "DrawerPlane",
+    "DrawerFit", "LimitRow", "Limits", "Robust",
     "row_names", "CONVENTION", "SI_UNITS"]
 
 #: the angle convention of field balancing, in words (as it always was)
@@ -44,6 +44,8 @@ class Plain:
 
 
 def _plain(v: Any) -> Any:
+    if isinstance(v, float) and not math.isfinite(v):
+        return None  # an unlimited mass
     if isinstance(v, tuple):
         return [_plain(x) for x in v]
     if hasattr(v, "to_json"):
@@ -134,6 +136,35 @@ class FittedPlane(Plain):
 
 
 @dataclass(frozen=True)
+class DrawerPlane(Plain):
+    """A plane's holes as the drawer search took them: angles (deg, hole 1 first), radius
+    (m; None: the trial radius), numbering ("with" or "against" the angles), how many
+    weights a hole and the plane take, its most mass (kg; inf: any), its drawer (index)."""
+
+    name: str
+    holes_deg: tuple[float, ...]
+    radius: float | None
+    numbering: str
+    per_hole: int
+    max_weights: int
+    max_mass: float | None
+    drawer: int
+
+
+@dataclass(frozen=True)
+class DrawerFit(Plain):
+    """The weights chosen from the drawer (:mod:`rbcli.core.field.drawer`): the method's
+    objective and the largest reading over its limit (<= 1: every limit met), how many
+    choices the search evaluated, the drawers ([{mass kg, count or None}]) and the planes."""
+
+    objective: float
+    violation: float
+    examined: int
+    drawers: tuple[tuple[dict, ...], ...]
+    planes: tuple[DrawerPlane, ...]
+
+
+@dataclass(frozen=True)
 class Fitted(Plain):
     """The corrections as fitted — rounded and/or split — and the readings they leave.
 
@@ -149,6 +180,49 @@ class Fitted(Plain):
     angle_step_deg: float | None
     planes: tuple[FittedPlane, ...]
     residuals: tuple[FieldResidual, ...]
+    drawer: DrawerFit | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        d = super().to_json()
+        return d if self.drawer is not None else {k: v for k, v in d.items() if k != "drawer"}
+
+
+@dataclass(frozen=True)
+class LimitRow(Plain):
+    """One limit: ``kind`` "mass" (kg, at the correction radius), "unbalance" (kg m) or
+    "reading" (the readings' unit); the plane's or the reading's names; the limit, what the
+    correction gives, whether it binds, and the objective without it (None: not binding)."""
+
+    kind: str
+    plane: str | None
+    sensor: str | None
+    speed: str | None
+    limit: float
+    value: float
+    active: bool
+    objective_without: float | None
+
+
+@dataclass(frozen=True)
+class Limits(Plain):
+    """The limits given (JSON ``limits``): met (``feasible``) or the least violation ``s``
+    (every reading within s times its limit), the method's objective with them, each limit."""
+
+    feasible: bool
+    violation: float
+    objective: float
+    rows: tuple[LimitRow, ...]
+
+
+@dataclass(frozen=True)
+class Robust(Plain):
+    """A robust fit (JSON ``robust``): Huber's weight of each reading and the readings it
+    discounted ("sensor" or "sensor at speed"); ``threshold`` in Rayleigh scales."""
+
+    method: str
+    threshold: float
+    weights: tuple[float, ...]
+    discounted: tuple[str, ...]
 
 
 @dataclass(frozen=True)
@@ -348,6 +422,8 @@ class FieldBalanceResult(Result):
     job: str | None = None
     name: str | None = None
     notes: tuple[str, ...] = ()
+    limits: Limits | None = None
+    robust: Robust | None = None
 
     @property
     def extended(self) -> bool:
@@ -367,62 +443,6 @@ class FieldBalanceResult(Result):
     def row_names(self) -> list[tuple[str, str]]:
         """(sensor, speed) of each reading, in order."""
         return row_names(self.sensors, self.run_speeds, len(self.initial))
-
-    # ------------------------------------------------------------------ the polar diagram
-
-    def diagram(self):
-        """The polar diagram of a balancing sheet (what ``--plot`` draws), an
-        :class:`rbcli.api.diagram.Diagram`: per reading the reading O without trial, each
-        run O+T and the change T made (from O's tip to O+T's); then per plane the trial
-        mass and the correction to add (trial removed). Angles as given and printed."""
-        panels = []
-        n = self.planes
-        names = self.plane_names or tuple("AB"[:n])
-        rows = self.row_names()
-        for i in range(len(self.initial)):
-            o = self.initial[i]
-            arrows = [Arrow("initial", "O, no trial", abs(o), deg(o))]
-            for j, run in enumerate(self.runs):
-                name = names[j] if n > 1 else ""
-                v = run[i]
-                arrows.append(Arrow("run", f"O+T{name}, trial {name or ''} on".replace("  ", " "),
-                                    abs(v), deg(v)))
-                ref = self.runs[j - 1][i] if (j >= 1 and self.cumulative) else o
-                d = v - ref
-                arrows.append(Arrow("effect", f"T{name}: the trial's effect", abs(d), deg(d),
-                                    d != 0, tail=(abs(ref), deg(ref))))
-            if self.extended and self.residuals:
-                r = self.residual_values[i]
-                arrows.append(Arrow("residual", "predicted after the correction", abs(r), deg(r), abs(r) > 0))
-            if self.extended:
-                sensor, speed = rows[i]
-                title = f"readings {sensor}" + (f" at {speed}" if speed else "")
-            else:
-                title = "readings" if len(self.initial) == 1 else f"sensor {i + 1} readings"
-            panels.append(Panel(title, "reading", tuple(arrows)))
-        for j, c in enumerate(self.corrections):
-            arrows_m = []
-            if j < len(self.trial_masses):
-                t = self.trial_masses[j]
-                arrows_m.append(Arrow("trial", "trial mass", abs(t), deg(t), t != 0, mass=abs(t)))
-            arrows_m.append(Arrow("correction", "add (trial removed)", c.mass, c.angle_deg, c.correction != 0,
-                                  mass=c.mass))
-            if self.fitted is not None:
-                for fm in self.fitted.planes[j].masses:
-                    label = "fit" + (f" at position {fm.position}" if fm.position else "")
-                    arrows_m.append(Arrow("residual", label, fm.mass, fm.angle_deg, fm.mass > 0, mass=fm.mass))
-            panels.append(Panel(f"plane {c.name}: masses", "mass", tuple(arrows_m)))
-        sense = "with"
-        note = "angles as given: the trial angles and the phases in the same sense"
-        if self.conventions is not None and self.conventions.rotation is not None:
-            # the dial as the rotor is seen from where the angles are read: angles counted
-            # with a counterclockwise rotation run counterclockwise
-            ccw = (self.conventions.rotation == "ccw") == (self.conventions.angle_sense != "against")
-            sense = "with" if ccw else "against"
-            note = self.conventions.text
-        elif self.conventions is not None:
-            note = self.conventions.text
-        return Diagram("field balancing", tuple(panels), sense, note, self.reading_kind)
 
     # ------------------------------------------------------------------ JSON
 
@@ -464,6 +484,8 @@ class FieldBalanceResult(Result):
                        suggested_trial=[s.to_json() for s in self.suggested_trial],
                        coefficients_from=self.coefficients_from, conventions=conventions, job=self.job,
                        name=self.name, notes=list(self.notes))
+            if self.limits is not None or self.robust is not None:
+                out.update(limits=_plain(self.limits), robust=_plain(self.robust))
         out.update(angle_convention=self.angle_convention, warnings=list(self.warnings))
         return out
 

@@ -1,8 +1,8 @@
 """Field (trial-weight) balancing by influence coefficients (physics sheet ``balance.md`` §5).
 
 ================  ========================================================================
-``classic``       the one- and two-plane solves, as rbcli always did them
-``solve``         the influence matrix; exact, least-squares and min-max corrections
+``solve``         the influence matrix; exact, least-squares and min-max corrections, limits
+``cone``          least squares and min-max under limits (second-order cones)
 ``fit``           corrections as fitted (rounded, or split onto positions)
 ``trial``         the trial mass to start with
 ``significance``  Darlow's plane-significance factors

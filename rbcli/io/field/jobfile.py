@@ -51,12 +51,14 @@ MAX_JOB_BYTES = 4 * 1024 * 1024
 
 TOP_KEYS = ("rbcli", "job", "name", "description", "units", "conventions", "readings", "sensors",
             "planes", "speeds", "initial", "trials", "cumulative", "method", "mass_step",
-            "angle_step", "severity", "rotor", "coefficients")
+            "angle_step", "severity", "rotor", "coefficients", "drawer", "max_weights", "robust")
 UNIT_KEYS = ("length", "mass", "angular_speed")
 CONVENTION_KEYS = ("phase", "angle_sense", "rotation")
-PLANE_KEYS = ("name", "radius", "correction_radius", "positions", "at")
-SPEED_KEYS = ("name", "speed")
-SENSOR_KEYS = ("name", "weight")
+PLANE_KEYS = ("name", "radius", "correction_radius", "positions", "at", "holes", "max_mass", "max_weights",
+              "drawer")
+HOLE_KEYS = ("count", "zero", "angles", "radius", "numbering", "per_hole")
+SPEED_KEYS = ("name", "speed", "limit")
+SENSOR_KEYS = ("name", "weight", "limit")
 TRIAL_KEYS = ("plane", "mass", "readings")
 SEVERITY_KEYS = ("standard", "group", "foundation")
 ROTOR_KEYS = ("mass", "body", "bearings", "com", "bearing_load", "g", "trial_fraction")
@@ -72,8 +74,21 @@ class Text:
 
 
 @dataclass(frozen=True)
+class JobHoles:
+    """A plane's holes: angles (degrees, hole 1 first, in the numbering's order), their
+    radius (m or None: the correction radius), how many weights one takes."""
+
+    angles: tuple[float, ...]
+    radius: float | None
+    numbering: str
+    per_hole: int
+    where: Location
+
+
+@dataclass(frozen=True)
 class JobPlane:
-    """name; radius, correction_radius, at: m or None; positions: int or None."""
+    """name; radius, correction_radius, at: m or None; positions: int or None; holes;
+    max_mass: (kg, "mass") or (kg m, "unbalance"); max_weights; drawer: texts 'mass:count'."""
 
     name: str
     radius: float | None
@@ -81,15 +96,20 @@ class JobPlane:
     positions: int | None
     at: float | None
     where: Location
+    holes: JobHoles | None = None
+    max_mass: tuple[float, str] | None = None
+    max_weights: int | None = None
+    drawer: tuple[Text, ...] | None = None
 
 
 @dataclass(frozen=True)
 class JobSpeed:
-    """name; speed: rad/s or None (not given)."""
+    """name; speed: rad/s or None (not given); limit: the largest reading at it."""
 
     name: str
     speed: float | None
     where: Location
+    limit: Text | None = None
 
 
 @dataclass(frozen=True)
@@ -131,6 +151,7 @@ class FieldJob:
     name: str | None
     sensors: tuple[str, ...]
     weights: tuple[float, ...] | None
+    limits: tuple[Text | None, ...]
     planes: tuple[JobPlane, ...]
     speeds: tuple[JobSpeed, ...]
     initial: tuple[tuple[Text, ...], ...] | None
@@ -148,6 +169,9 @@ class FieldJob:
     coefficients: str | None
     keys: dict[str, Location]
     units: dict[str, str]
+    drawer: tuple[Text, ...] | None = None
+    max_weights: int | None = None
+    robust: str | None = None
 
 
 def load_job(path: str) -> FieldJob:
@@ -188,7 +212,7 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
         fl.check_keys(ctx, rm, ("measure",), "readings")
         if "measure" in rm.items:
             measure = _choice(ctx, rm.items["measure"][1], "measure", "readings: measure")
-    sensors, weights = _sensors(ctx, items)
+    sensors, weights, limits = _sensors(ctx, items)
     planes = _planes(ctx, items)
     speeds = _speeds(ctx, items)
     coefficients = None
@@ -201,11 +225,15 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
                                              f"{n} readings per speed")
     return FieldJob(
         source=source, name=name, sensors=sensors or tuple(str(i + 1) for i in range(n)),
-        weights=weights, planes=planes, speeds=speeds, initial=initial, trials=trials,
+        weights=weights, limits=limits or (None,) * n, planes=planes, speeds=speeds, initial=initial, trials=trials,
         measure=measure, phase=conv.get("phase"), angle_sense=conv.get("angle_sense"),
         rotation=conv.get("rotation"), severity=_severity(ctx, items), rotor=_rotor(ctx, items, source),
         coefficients=coefficients, keys={k: ctx.where(mark) for k, (mark, _) in items.items()},
-        units=dict(ctx.base_units), **_settings(ctx, items))
+        units=dict(ctx.base_units), drawer=_texts(ctx, items["drawer"][1], "drawer", "mass:count, e.g. "
+                                                  "'5 g:4'") if "drawer" in items else None,
+        max_weights=_count(ctx, items["max_weights"][1], "max_weights", 1, 4) if "max_weights" in items else None,
+        robust=_choice(ctx, items["robust"][1], "robust", "robust") if "robust" in items else None,
+        **_settings(ctx, items))
 
 
 def _header(ctx: _Ctx, items: dict) -> None:
@@ -306,29 +334,37 @@ def _name(ctx: _Ctx, node: ys.Node, what: str, seen: set[str]) -> str:
     return name
 
 
-def _sensors(ctx: _Ctx, items: dict) -> tuple[tuple[str, ...], tuple[float, ...] | None]:
+def _sensors(ctx: _Ctx, items: dict) -> tuple[tuple[str, ...], tuple[float, ...] | None, tuple]:
+    """The sensors' names, weights (None: none given) and limits (a Text or None each)."""
     if "sensors" not in items:
-        return (), None
+        return (), None, ()
     node = items["sensors"][1]
     if not isinstance(node, ys.SeqNode) or not node.items:
         raise ctx.error(node, f"sensors must be a list of sensor names, not {fl.describe(node)}")
-    names: list[str] = []
-    weights: list[float] = []
-    any_weight = False
-    seen: set[str] = set()
+    names, weights, limits, seen = [], [], [], set()
     for item in node.items:
+        it = item.items if isinstance(item, ys.MapNode) else {}
         if isinstance(item, ys.MapNode):
             fl.check_keys(ctx, item, SENSOR_KEYS, "a sensor", required=("name",))
-            names.append(_name(ctx, item.items["name"][1], "sensor name", seen))
-            if "weight" in item.items:
-                any_weight = True
-                weights.append(fl.positive(ctx, item.items["weight"][1], "dimensionless", "weight"))
-            else:
-                weights.append(1.0)
-        else:
-            names.append(_name(ctx, item, "sensor name", seen))
-            weights.append(1.0)
-    return tuple(names), (tuple(weights) if any_weight else None)
+        names.append(_name(ctx, it["name"][1] if it else item, "sensor name", seen))
+        weights.append(fl.positive(ctx, it["weight"][1], "dimensionless", "weight") if "weight" in it else None)
+        limits.append(_text(ctx, it["limit"][1], f"sensor {names[-1]}: limit") if "limit" in it else None)
+    return (tuple(names), None if weights == [None] * len(weights) else tuple(w or 1.0 for w in weights),
+            tuple(limits))
+
+
+def _text(ctx: _Ctx, node: ys.Node, what: str, eg: str = "'2.8 mm/s'") -> Text:
+    """A value kept as written (a reading, a limit, a mass) and where it is."""
+    if not isinstance(node, ys.ScalarNode) or node.value is None or isinstance(node.value, bool):
+        raise ctx.error(node, f"{what} must be a value such as {eg}, not {fl.describe(node)}")
+    return Text(node.raw if not isinstance(node.value, str) else node.value, ctx.where(node))
+
+
+def _count(ctx: _Ctx, node: ys.Node, what: str, low: int, high: int) -> int:
+    if not (isinstance(node, ys.ScalarNode) and isinstance(node.value, int) and not isinstance(node.value, bool)
+            and low <= node.value <= high):
+        raise ctx.error(node, f"{what} must be a whole number from {low} to {high}, not {fl.describe(node)}")
+    return int(node.value)
 
 
 def _planes(ctx: _Ctx, items: dict) -> tuple[JobPlane, ...]:
@@ -351,17 +387,57 @@ def _planes(ctx: _Ctx, items: dict) -> tuple[JobPlane, ...]:
             if radius is None:
                 raise ctx.error(it["correction_radius"][0], f"plane {name}: correction_radius needs the "
                                                             "trial radius, 'radius'")
-        positions = None
-        if "positions" in it:
-            pn = it["positions"][1]
-            if not (isinstance(pn, ys.ScalarNode) and isinstance(pn.value, int)
-                    and not isinstance(pn.value, bool) and 3 <= pn.value <= 100_000):
-                raise ctx.error(pn, f"plane {name}: positions must be a whole number from 3 to "
-                                    f"100000 (holes or blades), not {fl.describe(pn)}")
-            positions = int(pn.value)
+        if "positions" in it and "holes" in it:
+            raise ctx.error(it["holes"][0], f"plane {name}: give its holes or its positions, not both")
+        positions = _count(ctx, it["positions"][1], f"plane {name}: positions", 3,
+                           100_000) if "positions" in it else None
         at = fl.number(ctx, it["at"][1], "length", f"plane {name}: at") if "at" in it else None
-        out.append(JobPlane(name, radius, rc, positions, at, ctx.where(item)))
+        out.append(JobPlane(
+            name, radius, rc, positions, at, ctx.where(item),
+            _holes(ctx, it["holes"][1], f"plane {name}: holes") if "holes" in it else None,
+            _mass_or_unbalance(ctx, it["max_mass"][1], f"plane {name}: max_mass") if "max_mass" in it else None,
+            _count(ctx, it["max_weights"][1], f"plane {name}: max_weights", 1, 4) if "max_weights" in it else None,
+            _texts(ctx, it["drawer"][1], f"plane {name}: drawer", "mass:count, e.g. '5 g:4'")
+            if "drawer" in it else None))
     return tuple(out)
+
+
+def _holes(ctx: _Ctx, node: ys.Node, what: str) -> JobHoles:
+    """``{count, zero}`` or ``{angles}``, with radius, numbering and per_hole."""
+    hm = fl.mapping(ctx, node, what)
+    fl.check_keys(ctx, hm, HOLE_KEYS, what)
+    it = hm.items
+    if ("count" in it) == ("angles" in it):
+        raise ctx.error(hm, f"{what} needs 'count' (equally spaced from 'zero') or 'angles' (a list), one of them")
+    numbering = _choice(ctx, it["numbering"][1], "numbering", f"{what}: numbering") if "numbering" in it else "with"
+    sign = 1.0 if numbering == "with" else -1.0
+    if "count" in it:
+        n = _count(ctx, it["count"][1], f"{what}: count", 1, 3600)
+        zero = math.degrees(fl.number(ctx, it["zero"][1], "angle", f"{what}: zero")) if "zero" in it else 0.0
+        angles = tuple((zero + sign * 360.0 * k / n) % 360.0 for k in range(n))
+    else:
+        an = it["angles"][1]
+        if not isinstance(an, ys.SeqNode) or not 1 <= len(an.items) <= 3600:
+            raise ctx.error(an, f"{what}: angles must be a list of 1 to 3600 angles, not {fl.describe(an)}")
+        angles = tuple(math.degrees(fl.number(ctx, a, "angle", f"{what}: angles")) % 360.0 for a in an.items)
+    return JobHoles(angles, fl.positive(ctx, it["radius"][1], "length", f"{what}: radius") if "radius" in it else None,
+                    numbering, _count(ctx, it["per_hole"][1], f"{what}: per_hole", 1, 4) if "per_hole" in it else 1,
+                    ctx.where(node))
+
+
+def _mass_or_unbalance(ctx: _Ctx, node: ys.Node, what: str) -> tuple[float, str]:
+    """A positive mass (kg; bare: the file's mass unit) or mass x radius (kg m)."""
+    if isinstance(node, ys.ScalarNode) and isinstance(node.value, str):
+        try:
+            value, dim = un.parse_quantity(node.value)
+        except un.UnitError as exc:
+            raise ctx.error(node, f"{what}: {exc}") from None
+        kind = "mass" if dim == un.Dim(M=1) else "unbalance" if dim == un.Dim(M=1, L=1) else None
+        if kind is None or not 0.0 < value < math.inf:
+            raise ctx.error(node, f"{what} must be a positive mass ('50 g') or mass x radius ('5000 g*mm'), "
+                                  f"not {fl.describe(node)}")
+        return value, kind
+    return fl.positive(ctx, node, "mass", what), "mass"
 
 
 def _speeds(ctx: _Ctx, items: dict) -> tuple[JobSpeed, ...]:
@@ -373,28 +449,25 @@ def _speeds(ctx: _Ctx, items: dict) -> tuple[JobSpeed, ...]:
     out = []
     seen: set[str] = set()
     for i, item in enumerate(node.items):
+        limit = None
         if isinstance(item, ys.MapNode):
             fl.check_keys(ctx, item, SPEED_KEYS, "a speed", required=("name",))
             name = _name(ctx, item.items["name"][1], "speed name", seen)
             w = (fl.positive(ctx, item.items["speed"][1], "angular_speed", f"speed {name}")
                  if "speed" in item.items else None)
+            if "limit" in item.items:
+                limit = _text(ctx, item.items["limit"][1], f"speed {name}: limit")
         else:  # a bare speed: named by its text
             w = fl.positive(ctx, item, "angular_speed", "speed")
             name = _name(ctx, item, "speed name", seen) if isinstance(item, ys.ScalarNode) else str(i + 1)
-        out.append(JobSpeed(name, w, ctx.where(item)))
+        out.append(JobSpeed(name, w, ctx.where(item), limit))
     return tuple(out)
 
 
-def _texts(ctx: _Ctx, node: ys.Node, what: str) -> tuple[Text, ...]:
+def _texts(ctx: _Ctx, node: ys.Node, what: str, form: str = "readings amplitude@phase, one per sensor") -> tuple[Text, ...]:
     if not isinstance(node, ys.SeqNode) or not node.items:
-        raise ctx.error(node, f"{what} must be a list of readings amplitude@phase, one per sensor, "
-                              f"not {fl.describe(node)}")
-    out = []
-    for item in node.items:
-        if not isinstance(item, ys.ScalarNode) or item.value is None or isinstance(item.value, bool):
-            raise ctx.error(item, f"{what}: a reading is amplitude@phase, e.g. '6.2 mm/s@112', not {fl.describe(item)}")
-        out.append(Text(item.raw if not isinstance(item.value, str) else item.value, ctx.where(item)))
-    return tuple(out)
+        raise ctx.error(node, f"{what} must be a list of {form}, not {fl.describe(node)}")
+    return tuple(_text(ctx, item, what, "'6.2 mm/s@112'" if "@" in form else "'5 g:4'") for item in node.items)
 
 
 def _runs(ctx: _Ctx, node: ys.Node, speeds: tuple[JobSpeed, ...], what: str) -> tuple[tuple[Text, ...], ...]:

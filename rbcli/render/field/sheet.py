@@ -46,14 +46,16 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
            "(they must agree)")
     fb.readings_note(d, res, ru)
     fb.readings_table(d, res, scale, ru, rows, digits)
+    fb.trials_table(d, res, su, digits)
     s.add_doc(d)
     sections.append(s)
 
     if figure_svg is not None:
         s = Section("polar", "Polar diagram")
-        s.items.append(Figure("polar", "per reading the reading without trial (O), with each trial (O+T), "
-                              "the trial's effect and the predicted reading; per plane the trial mass, "
-                              "the correction and the masses to fit", figure_svg))
+        s.items.append(Figure("polar", "per reading the reading without trial (O), with each trial (O+T, "
+                              "in the run's colour), the trial's effect and the predicted reading; per "
+                              "plane the trial mass, the correction and the masses to fit (a drawer's "
+                              "holes numbered on the rim)", figure_svg))
         sections.append(s)
 
     s = Section("coefficients", "Influence coefficients")
@@ -69,6 +71,8 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
     d = Doc()
     d.note(f"method: {res.method}; a correction is a mass to add")
     fb.corrections_table(d, res, su, digits)
+    fb.limits_table(d, res, su, scale, ru, digits)
+    fb.robust_note(d, res)
     if res.fitted is not None:
         fb.fitted_table(d, res, su, digits)
     s.add_doc(d)

@@ -154,8 +154,11 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
                   [[n or "—", "—" if w is None else num(w * 30.0 / 3.141592653589793, digits),
                     "—" if w is None else num(w, digits)] for n, w in res.run_speeds], right=(1, 2))
     readings_table(doc, res, scale, ru, rows, digits)
+    trials_table(doc, res, su, digits)
     influence_table(doc, res, scale, ru, rows, su, digits)
     corrections_table(doc, res, su, digits)
+    limits_table(doc, res, su, scale, ru, digits)
+    robust_note(doc, res)
     if res.fitted is not None:
         fitted_table(doc, res, su, digits)
     residuals_table(doc, res, scale, ru, rows, digits)
@@ -245,10 +248,56 @@ def corrections_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     doc.table("corrections to add (as computed)", cols, table, right=tuple(range(1, len(cols))))
 
 
+def trials_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The trial mass of each run, at its plane's trial radius."""
+    if not res.trial_masses:
+        return
+    radii = res.plane_radii or (res.radii,) * res.planes
+    doc.table("trial masses", ["plane", f"mass [{su.unit('mass')}]", "angle [°]", f"radius [{su.unit('length')}]"],
+              [[n, su.show(abs(t), "mass", digits), num(deg(t), digits), "—" if r is None else
+                su.show(r[0], "length", digits)] for n, t, r in zip(res.plane_names, res.trial_masses, radii)],
+              right=(1, 2, 3))
+
+
+def limits_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, scale: float, ru: str, digits: int) -> None:
+    """Each limit, what the correction gives against it, whether it binds and its cost."""
+    lim = res.limits
+    if lim is None:
+        return
+    u = f" [{ru}]" if ru else ""
+    shown = {"mass": ("mass", su.factor("mass"), su.unit("mass")),
+             "unbalance": ("unbalance", su.factor("unbalance"), su.unit("unbalance")), "reading": ("", scale, ru)}
+    table = []
+    for r in lim.rows:
+        _, f, unit = shown[r.kind]
+        what = f"plane {r.plane}" if r.plane is not None else f"{r.sensor}{' at ' + r.speed if r.speed else ''}"
+        table.append([r.kind, what, f"{num(r.limit / f, digits)} {unit}".strip(), f"{num(r.value / f, digits)} {unit}".strip(),
+                      "yes" if r.active else "no", "—" if r.objective_without is None else
+                      num(r.objective_without / scale, digits)])
+    how = "met" if lim.feasible else (f"cannot all be met: the correction exceeds them least, each reading within "
+                                      f"{num(lim.violation, 4)} times its limit")
+    doc.table(f"limits ({how})", ["limit", "on", "at most", "the correction", "binds", f"objective without it{u}"],
+              table, right=(2, 3, 5))
+    doc.note(f"objective with the limits: {num(lim.objective / scale, digits)}{' ' + ru if ru else ''} ("
+             + ("the largest weighted predicted reading" if res.method == "min-max" else
+                "the root sum of squares of the weighted predicted readings") + ")")
+
+
+def robust_note(doc: Doc, res: FieldBalanceResult) -> None:
+    rb = res.robust
+    if rb is not None:
+        doc.note("robust fit (Huber): " + (f"discounted {', '.join(rb.discounted)}" if rb.discounted else
+                                           "no reading discounted")
+                 + f"; a reading beyond {num(rb.threshold, 4)} times the Rayleigh scale of the residuals "
+                 "(median/√ln 4) weighs less, in proportion")
+
+
 def fitted_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
     f = res.fitted
     assert f is not None
     m = su.unit("mass")
+    if f.drawer is not None:
+        return drawer_table(doc, res, su, digits)
     how = []
     if f.mass_step is not None:
         how.append(f"masses to {su.show(f.mass_step, 'mass', digits)} {m}")
@@ -265,12 +314,40 @@ def fitted_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) 
               right=(1, 2, 3))
 
 
+def drawer_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The weights chosen from the drawer, and how each plane's holes were taken."""
+    f = res.fitted
+    d = f.drawer
+    m, L = su.unit("mass"), su.unit("length")
+    table = [[p.name, str(fm.position), num(fm.angle_deg, digits), su.show(fm.mass, "mass", digits)]
+             for p in f.planes for fm in p.masses]
+    judged = "least squares" if res.method != "min-max" else "min-max"
+    doc.table(f"weights from the drawer (the best choice by {judged} on the predicted readings)",
+              ["plane", "hole", "angle [°]", f"mass [{m}]"], table, right=(1, 2, 3))
+    for pl in d.planes:
+        h = pl.holes_deg
+        doc.note(f"plane {pl.name}: {len(h)} hole{'s' if len(h) != 1 else ''}"
+                 + (f" at {su.show(pl.radius, 'length', digits)} {L}" if pl.radius is not None else
+                    " at the trial radius") + f", hole 1 at {num(h[0], digits)}°"
+                 + (f", numbered {pl.numbering} the angles" if len(h) > 1 else "")
+                 + f"; at most {pl.per_hole} weight{'s' if pl.per_hole > 1 else ''} a hole and {pl.max_weights} "
+                 f"in the plane" + ("" if pl.max_mass is None else f", {su.show(pl.max_mass, 'mass', digits)} {m} in all"))
+    sizes = "; ".join(", ".join(f"{su.show(x['mass'], 'mass', digits)} {m}"
+                                + ("" if x["count"] is None else f" × {x['count']}") for x in dr) for dr in d.drawers)
+    doc.note(f"drawer: {sizes}; {d.examined} choice{'s' if d.examined != 1 else ''} evaluated (an exact search)"
+             + ("" if d.violation <= 1.0 else f"; no choice meets the limits: this one exceeds them least "
+                                              f"({num(d.violation, 4)} times a limit)"))
+
+
 def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
     u = f" [{ru}]" if ru else ""
     cols = [*_head(res), f"initial{u}", f"predicted{u}", "phase [°]", "change [%]"]
     fitted = res.fitted.residuals if res.fitted is not None else None
     if fitted is not None:
         cols += [f"with the masses fitted{u}", "phase [°]"]
+    limits = {(r.sensor, r.speed): r.limit for r in res.limits.rows if r.kind == "reading"} if res.limits else {}
+    if limits:
+        cols.append(f"limit{u}")
     table = []
     for k, (s, v) in enumerate(rows):
         r = res.residuals[k]
@@ -279,6 +356,8 @@ def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
                  num(r.angle_deg, digits), change]
         if fitted is not None:
             cells += [num(fitted[k].amplitude / scale, digits), num(fitted[k].angle_deg, digits)]
+        if limits:
+            cells.append("—" if (s, v) not in limits else num(limits[s, v] / scale, digits))
         table.append(cells)
     doc.table("readings predicted after the correction (the linear model)", cols, table,
               right=tuple(range(len(_head(res)), len(cols))))
