@@ -114,7 +114,7 @@ def test_a_trim_run_from_saved_coefficients_reproduces_the_job(cli, tmp_path, fi
     coeffs = tmp_path / "coeffs.json"
     a = run_json(cli, *first, "--save-coefficients", str(coeffs))
     doc = json.loads(coeffs.read_text())
-    assert doc["format"] == "rbcli field-balance influence coefficients" and doc["version"] == 1
+    assert doc["format"] == "rbcli field-balance influence coefficients" and doc["version"] == 2
     if trim == [FAN]:
         # the same job's initial readings, on the command line, in the file's row order
         import yaml

@@ -14,14 +14,16 @@ with is sized from the rotor (:mod:`rbcli.api.field.trial`).
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, replace
 from typing import Any
 
 from rbcli.api import options as op
 from rbcli.api.field import coefficients, shop, trial
 from rbcli.api.field.readings import (
-    Reading, at, common_measure, one_kind, reading, readings, trial_mass,
+    Reading, at, budget, common_measure, one_kind, reading, readings, trial_mass,
 )
+from rbcli.api.load import load
 from rbcli.api.params import Options
 from rbcli.errors import InputError, Location, ParamError, literal
 from rbcli.io.field import plane_names
@@ -146,15 +148,34 @@ def make(o: Options) -> Job:
         with the message the command line prints (``--trial: ...``), located in the job
         file for a job file's value.
     """
-    if (o.group is not None or o.foundation is not None) and o.severity is None:
-        raise ParamError("severity", "{group} and {foundation} go with {severity} iso20816-3")
-    if o.severity is not None and (o.group is None or o.foundation is None):
-        raise ParamError("severity", "needs the machine {group} (1 or 2) and its {foundation} "
-                                     "(rigid or flexible)")
-    job = from_file(o) if o.job is not None else from_options(o)
-    if job.options.coefficients is not None:
-        job = coefficients.apply(job)
-    return shop.read(_finish(job))
+    jf = load_job(str(o.job)) if o.job is not None else None
+    try:
+        o2 = o if jf is None else _settings(o, jf)
+        if (o2.group is not None or o2.foundation is not None) and o2.severity is None:
+            raise ParamError("severity", "{group} and {foundation} go with {severity} iso20816-3")
+        if o2.severity is not None and (o2.group is None or o2.foundation is None):
+            raise ParamError("severity", "needs the machine {group} (1 or 2) and its {foundation} "
+                                         "(rigid or flexible)")
+        job = from_file(o, jf) if jf is not None else from_options(o)
+        if job.options.coefficients is not None:
+            job = coefficients.apply(job)
+        return shop.read(_finish(job))
+    except ParamError as exc:
+        raise located(exc, o.given, jf) from None
+
+
+#: where in a job file a parameter's value comes from (the key a message about it points at)
+WHERE = {**SETTINGS, "initial": "initial", "run": "trials", "trial": "trials", "group": "severity",
+         "foundation": "severity", "rotor_mass": "rotor", "bearing_load": "rotor", "trial_fraction": "rotor",
+         "trial_radius": "planes", "radius": "planes"}
+
+
+def located(exc: ParamError, given: tuple[str, ...], jf: FieldJob | None) -> InputError:
+    """An error about a parameter a job file gave, located at its key there (in the job
+    file's words); one about a parameter the caller gave, as it is."""
+    if jf is None or exc.param in given:
+        return exc
+    return at(jf.keys.get(WHERE.get(exc.param, ""), Location(jf.source)), exc)
 
 
 # ----------------------------------------------------------------------------- two sources
@@ -164,6 +185,7 @@ def from_options(o: Options) -> Job:
     """The job the parameters describe (one speed)."""
     trials_t, runs_t = _texts(o.trial), _texts(o.run)
     _check_options(o, trials_t, runs_t)
+    budget(0 if o.initial is None else ",".join(_texts(o.initial)).count(",") + 1, len(trials_t), None)
     initial = [] if o.initial is None else readings(",".join(_texts(o.initial)), "initial", None)
     n, p = len(initial), len(trials_t)
     _check_counts(o, n, p, len(runs_t))
@@ -236,8 +258,8 @@ def _weights(weights: Any, n: int) -> tuple[float, ...] | None:
     return tuple(vals)
 
 
-def from_file(o: Options) -> Job:
-    """The job a job file describes, with the parameters' settings that it leaves open."""
+def from_file(o: Options, job: FieldJob) -> Job:
+    """The job the job file ``job`` describes, with the parameters' settings it leaves open."""
     for param in ("initial", "trial", "run"):
         if getattr(o, param) is not None:
             raise ParamError(param, "the job file holds the readings; give the {job} file or the "
@@ -245,11 +267,20 @@ def from_file(o: Options) -> Job:
     for param in ("trial_radius", "radius"):
         if getattr(o, param) is not None:
             raise ParamError(param, "give the radii in the job file's planes (radius, correction_radius)")
-    job = load_job(str(o.job))
     o = _settings(o, job)
+    if job.rotor is not None and job.rotor.body is not None:
+        if os.path.realpath(job.rotor.body) == os.path.realpath(job.source):
+            raise InputError("rotor: body is the job file itself; give the rotor's body file", job.rotor.where)
+        try:
+            load(job.rotor.body)  # checked now, not only when a trial mass is sized
+        except InputError as exc:
+            if exc.where is not None and exc.where.line > 0:
+                raise  # located in the body file
+            raise InputError(f"rotor: body: {literal(exc.message)}", job.rotor.where) from None
     if o.coefficients is not None and job.trials:
         raise ParamError("coefficients", "a trim run takes the initial readings alone; the job file has "
                                          "trial runs")
+    budget(sum(len(x) for x in job.initial or ()), len(job.trials) or len(job.planes), Location(job.source))
     initial = [_reading(t, "initial") for per_speed in job.initial or () for t in per_speed]
     runs = [[_reading(t, "run") for per_speed in tr.readings for t in per_speed] for tr in job.trials]
     trials = tuple(_trial(tr.mass, job.units.get("mass", "g")) for tr in job.trials)

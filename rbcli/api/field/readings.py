@@ -24,9 +24,10 @@ from rbcli.api import options as op
 from rbcli.core.field.severity import convert_measure
 from rbcli.errors import InputError, Location, ParamError, literal, spell
 from rbcli.io import units as un
+from rbcli.io.reader import limit_from_env
 
 __all__ = ["Reading", "reading", "trial_mass", "readings", "one_kind", "at", "Measures",
-    "common_measure", "READING_KINDS", "READING_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
+    "common_measure", "budget", "READING_KINDS", "READING_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
 
 #: what a reading's unit may measure -> its kind; readings are converted to SI
 READING_KINDS = {"displacement": (1, 0), "velocity": (1, -1), "acceleration": (1, -2)}
@@ -121,9 +122,16 @@ def reading(text: str, param: str, where: Location | None = None) -> Reading:
     amp_text, measure = _split_measure(m["num"])
     amp, kind, gravity = _amplitude(amp_text, param, text)
     ang = math.degrees(op.quantity(m["ang"], "angle", param, bare="deg"))
-    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
-        raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
+    _check(amp, ang, param, lit, "amplitude")
     return Reading(complex(cmath.rect(amp, math.radians(ang))), kind, measure, gravity, param, text, where)
+
+
+def _check(amp: float, ang: float, param: str, lit: str, what: str) -> None:
+    """An amplitude 0 or from 1e-100 to 1e100 (SI; bare readings alike) and a finite angle:
+    nothing a balancing job measures lies beyond, and the solve stays within floats."""
+    if not (math.isfinite(ang) and (amp == 0.0 or 1e-100 <= amp <= 1e100)):
+        raise ParamError(param, f"'{lit}': the {what} must be {'0 or ' * (what == 'amplitude')}from 1e-100 to "
+                                "1e100 (SI) and the angle finite")
 
 
 def trial_mass(text: str, param: str = "trial", bare: str = "g") -> complex:
@@ -142,8 +150,7 @@ def trial_mass(text: str, param: str = "trial", bare: str = "g") -> complex:
     with op.naming(param):
         amp = op.quantity(m["num"], "mass", option, bare=bare)
         ang = math.degrees(op.quantity(m["ang"], "angle", option, bare="deg"))
-    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
-        raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
+    _check(amp, ang, param, lit, "mass")
     value = complex(cmath.rect(amp, math.radians(ang)))
     if value == 0:
         raise ParamError(param, "the trial mass must not be zero")
@@ -200,6 +207,20 @@ def at(where: Location | None, exc: InputError) -> InputError:
 def _located(r: Reading, exc: ParamError) -> InputError:
     """A job file's reading: the reason at its place; a command line's: the ParamError."""
     return at(r.where, exc)
+
+
+#: the most influence coefficients (readings per run x planes) a job may have unless
+#: RBCLI_MAX_FIELD_COEFFICIENTS says otherwise: the solve grows as readings x planes²
+MAX_COEFFICIENTS = 20_000
+
+
+def budget(n: int, p: int, where: Location | None) -> None:
+    """Refuse a job beyond :data:`MAX_COEFFICIENTS` (README, "Budgets"), before reading it."""
+    limit = limit_from_env("RBCLI_MAX_FIELD_COEFFICIENTS", MAX_COEFFICIENTS)
+    if n * p > limit:
+        raise InputError(f"the job has {n} readings per run x {p} planes = {n * p} influence coefficients, "
+                         f"above the limit of {limit}; set RBCLI_MAX_FIELD_COEFFICIENTS to raise it (the "
+                         "solve's time grows as readings x planes²)", where)
 
 
 @dataclass(frozen=True)

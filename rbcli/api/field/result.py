@@ -21,7 +21,7 @@ from rbcli.api.result import Result
 from rbcli.core.field.fit import FittedMass
 from rbcli.core.field.solve import deg
 from rbcli.io.field import plane_names
-from rbcli.io.field.coefficients import FORMAT, VERSION
+from rbcli.io.field.coefficients import FORMAT, VERSION, fingerprint
 
 __all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedPlane", "Fitted",
     "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "DrawerPlane",
@@ -517,9 +517,10 @@ class FieldBalanceResult(Result):
         radii = self.plane_radii or (self.radii,) * self.planes
         names = self.plane_names or plane_names(self.planes)
         conv = self.conventions
-        return {
+        doc = {
             "format": FORMAT,
             "version": VERSION,
+            "fingerprint": "",
             "written_by": f"rbcli {__version__} field-balance",
             "job": self.name,
             "description": (
@@ -550,3 +551,4 @@ class FieldBalanceResult(Result):
             "coefficients": [[{"re": a.real, "im": a.imag, "magnitude": abs(a), "angle_deg": deg(a)}
                               for a in row] for row in self.alpha],
         }
+        return {**doc, "fingerprint": fingerprint(doc)}

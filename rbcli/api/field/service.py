@@ -19,7 +19,7 @@ import numpy as np
 
 from rbcli.api.commands import FIELD_BALANCE
 from rbcli.api.field import compute
-from rbcli.api.field.job import Job, make
+from rbcli.api.field.job import Job, located, make
 from rbcli.api.field.result import FieldBalanceResult
 from rbcli.api.params import function, read
 from rbcli.api.result import jsonable
@@ -68,10 +68,11 @@ def run(body: None, job: Job) -> FieldBalanceResult:
                 raise ParamError("run", literal(exc)) from None
             jsonable(res.to_json())  # the one finiteness check: refuses inf and NaN
     except (OverflowError, ZeroDivisionError, NonFiniteResult):
-        raise NonFiniteResult(
-            "{initial}, {trial}, {run}: the result overflows (a number beyond 1e308); "
-            "the readings or trial masses are too large or too small"
-        ) from None
+        why = "the result overflows (a number beyond 1e308): the readings or trial masses are too large or too small"
+        raise (located(ParamError("run", why), (), job.source) if job.source is not None else
+               NonFiniteResult("{initial}, {trial}, {run}: " + why)) from None
+    except ParamError as exc:
+        raise located(exc, job.options.given, job.source) from None
     return res
 
 

@@ -106,8 +106,8 @@ def _drawer(job: Job, pl: list, sizes: list) -> Drawer:
         if holes is None:
             n = job.positions[j]
             if not n:
-                raise ParamError("drawer", f"plane {literal(name)} has no holes: give its positions ({{positions}}) "
-                                           "or, in a job file, its holes")
+                raise ParamError("drawer", f"plane {literal(name)} has no holes: give {{positions}} (N equally "
+                                           "spaced) or, in a job file, the plane's holes")
         ang = holes.angles if holes is not None else tuple(360.0 * i / n for i in range(n))
         rr = job.plane_radii[j]
         r = holes.radius if holes is not None and holes.radius is not None else None if rr is None else rr[1]

@@ -7,7 +7,8 @@ drawer's holes are drawn on the rim, numbered, with the weights chosen in them. 
 right; angles counted with the rotation run counterclockwise as the rotor is seen (the job's
 ``rotation`` and ``angle_sense`` say which). Each dial has its own legend; colours differ by
 run and line styles by role, so a grey print still reads. A large job draws the
-:data:`MAX_DIALS` largest readings and the first :data:`MAX_PLANES` planes, and says so.
+:data:`MAX_DIALS` largest readings, each with the :data:`MAX_RUNS` runs that changed it most,
+and the first :data:`MAX_PLANES` planes, and says so.
 """
 
 from __future__ import annotations
@@ -24,8 +25,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.result import FieldBalanceResult
     from rbcli.render.units import ShopUnits
 
-#: the most reading dials and plane dials one figure draws
-MAX_DIALS, MAX_PLANES = 24, 12
+#: the most reading dials and plane dials one figure draws, and runs one dial shows
+MAX_DIALS, MAX_PLANES, MAX_RUNS = 12, 6, 6
 #: a run's colour (Okabe and Ito's palette, distinct for colour-blind readers)
 RUN_COLOURS = ("#E69F00", "#0072B2", "#009E73", "#CC79A7", "#D55E00", "#56B4E9", "#F0E442")
 
@@ -86,12 +87,13 @@ def plot(res: FieldBalanceResult, su: ShopUnits, reading: tuple[float, str]):
     for i, k in enumerate(keep):
         o = res.initial[k] / scale
         items = [(f"O: {_text(o, ru)}", o, "black", "-", 0j)]
-        for j, run in enumerate(res.runs):
-            ref = (res.runs[j - 1][k] if j and res.cumulative else res.initial[k]) / scale
+        refs = [(res.runs[j - 1][k] if j and res.cumulative else res.initial[k]) / scale for j in range(len(res.runs))]
+        runs = sorted(sorted(range(len(res.runs)), key=lambda j: -abs(res.runs[j][k] / scale - refs[j]))[:MAX_RUNS])
+        for j in runs:
+            run, ref = res.runs[j][k] / scale, refs[j]
             colour = RUN_COLOURS[j % len(RUN_COLOURS)]
-            items += [(f"O+T{names[j]}: {_text(run[k] / scale, ru)}", run[k] / scale, colour, "-", 0j),
-                      (f"T{names[j]} (its change): {_text(run[k] / scale - ref, ru)}", run[k] / scale - ref,
-                       colour, ":", ref)]
+            items += [(f"O+T{names[j]}: {_text(run, ru)}", run, colour, "-", 0j),
+                      (f"T{names[j]} (its change): {_text(run - ref, ru)}", run - ref, colour, ":", ref)]
         if res.residual_values:
             r = res.residual_values[k] / scale
             items.append((f"predicted: {_text(r, ru)}", r, "0.5", "--", 0j))
@@ -103,8 +105,9 @@ def plot(res: FieldBalanceResult, su: ShopUnits, reading: tuple[float, str]):
         ax = fig.add_subplot(axes.shape[0], cols, len(keep) + i + 1, projection="polar")
         _plane(ax, res, j, names[j], sense, ms, mu)
     notes = [res.angle_convention]
-    if len(keep) < n or len(shown) < p:
-        notes.append(f"{len(keep)} of {n} readings (the largest) and {len(shown)} of {p} planes drawn")
+    if len(keep) < n or len(shown) < p or len(res.runs) > MAX_RUNS:
+        notes.append(f"{len(keep)} of {n} readings (the largest) and {len(shown)} of {p} planes drawn, each "
+                     f"reading with the {min(MAX_RUNS, len(res.runs))} runs that changed it most")
     fig.supxlabel("; ".join(notes), fontsize=7, color="0.3", wrap=True)
     return fig
 

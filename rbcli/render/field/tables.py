@@ -19,6 +19,9 @@ from rbcli.render.units import ShopUnits
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.result import FieldBalanceResult
 
+#: the most planes a wide table (readings, influence coefficients) shows: the JSON has the rest
+MAX_PLANE_COLUMNS = 12
+
 #: how the tables show readings of each kind: (SI per display unit, display unit)
 READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
 #: the same in US practice (``--units in,...``): mil, in/s, g
@@ -198,15 +201,23 @@ def readings_note(doc: Doc, res: FieldBalanceResult, ru: str) -> None:
     doc.note("; ".join(parts))
 
 
+def _wide(doc: Doc, n: int, what: str) -> int:
+    """How many planes a wide table shows (a note says what is left out)."""
+    if n > MAX_PLANE_COLUMNS:
+        doc.note(f"{what}: the first {MAX_PLANE_COLUMNS} of {n} planes (the JSON has them all)")
+    return min(n, MAX_PLANE_COLUMNS)
+
+
 def readings_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
     cols = [*_head(res), f"initial{' [' + ru + ']' if ru else ''}", "phase [°]"]
-    for j, _ in enumerate(res.runs):
+    runs = res.runs[:_wide(doc, len(res.runs), "readings")]
+    for j, _ in enumerate(runs):
         cols += [f"trial {res.plane_names[j]} on", "phase [°]"]
     table = []
     for k, (s, v) in enumerate(rows):
         z = _reported(res.initial[k], res)
         cells = [*_row_label(s, v, res), num(abs(z) / scale, digits), num(deg(z), digits)]
-        for run in res.runs:
+        for run in runs:
             y = _reported(run[k], res)
             cells += [num(abs(y) / scale, digits), num(deg(y), digits)]
         table.append(cells)
@@ -217,12 +228,13 @@ def influence_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
                      digits: int) -> None:
     m = su.unit("mass")
     cols = _head(res)
-    for name in res.plane_names:
+    p = _wide(doc, len(res.plane_names), "influence coefficients")
+    for name in res.plane_names[:p]:
         cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
     table = []
     for k, (s, v) in enumerate(rows):
         cells = [*_row_label(s, v, res)]
-        for a in res.alpha[k]:
+        for a in res.alpha[k][:p]:
             cells += [num(abs(a) * su.mass[0] / scale, digits), num(deg(a), digits)]
         table.append(cells)
     doc.table("influence coefficients (at each plane's trial radius; phases in the angles' sense)",
