@@ -1,15 +1,11 @@
 """A field-balancing job, read once: what :func:`rbcli.api.field.service.parse` returns.
 
-A job comes either from the parameters (the command line's shorthand for a one-speed job:
-``initial``, ``trial``, ``run``; sensors numbered 1..N, planes lettered A, B, ...) or from
-a job file (:func:`rbcli.io.field.jobfile.load_job`), never both. A job file's settings are
-the parameters of :data:`rbcli.api.commands.FIELD_BALANCE` (method, weights, rounding,
-conventions, measure, severity, coefficients, speed): a setting comes from the file or from
-the parameters, and one given in both is refused. Every reading is read by
-:mod:`rbcli.api.field.readings`; then all of them are of one kind, in one measure, with
-their phases in the sense of the trial angles; stored coefficients are checked against the
-job and converted the same way (:mod:`rbcli.api.field.coefficients`); a trial mass to start
-with is sized from the rotor (:mod:`rbcli.api.field.trial`).
+A job comes from the parameters (the command line's shorthand for a one-speed job:
+``initial``, ``trial``, ``run``; sensors 1..N, planes A, B, ...) or from a job file, whose
+settings are the parameters' (one given in both is refused). Then every reading is of one
+kind, in one measure, its phase in the sense of the trial angles; stored coefficients are
+brought in (:mod:`.coefficients`), the shop's limits and drawer read (:mod:`.shop`), a trial
+mass sized (:mod:`.trial`).
 """
 
 from __future__ import annotations
@@ -21,13 +17,13 @@ from typing import Any
 from rbcli.api import options as op
 from rbcli.api.field import coefficients, shop, trial
 from rbcli.api.field.readings import (
-    Reading, at, budget, common_measure, one_kind, reading, readings, trial_mass,
+    Reading, at, budget, common_measure, one_kind, read_at, reading, readings, trial_mass,
 )
 from rbcli.api.load import load
 from rbcli.api.params import Options
 from rbcli.errors import InputError, Location, ParamError, literal
 from rbcli.io.field import plane_names
-from rbcli.io.field.jobfile import FieldJob, JobRotor, Text, load_job
+from rbcli.io.field.jobfile import FieldJob, JobRotor, load_job
 
 __all__ = ["Job", "make"]
 
@@ -52,44 +48,15 @@ PER_ITEM = ("weights", "positions", "speed", "max_mass", "limit", "drawer")
 
 @dataclass(frozen=True)
 class Job:
-    """A field-balancing job, read and checked.
-
-    Attributes
-    ----------
-    options : Options — the parameters (:data:`rbcli.api.commands.FIELD_BALANCE`), a job
-        file's settings among them; ``phase``, ``angle_sense`` and ``rotation`` those the
-        solve uses (a coefficients file's when the job says none)
-    name : str | None — the job file's name
-    sensors, speeds : the readings' sensors (names) and speeds ((name, rad/s or None)); a
-        reading k is sensor ``k % len(sensors)`` at speed ``k // len(sensors)``
-    plane_names : tuple of str
-    plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius), m
-    positions : tuple of (int | None) — per plane, the positions a correction is split onto
-    plane_at : tuple of (float | None) — per plane, its place along the shaft (m)
-    rotor : JobRotor | None — the job file's rotor (what sizes a trial mass)
-    radii : (float, float) | None — m, the command line's (trial radius, correction radius)
-    initial : tuple of complex — the readings without trial, N of them (reading unit, in
-        :attr:`measure`, phases in the sense of the trial angles)
-    runs : tuple of tuple of complex — the readings of each trial run
-    trials : tuple of complex — trial mass (kg) e^{i angle}, one per plane
-    reading_kind : str | None — "displacement", "velocity" or "acceleration" (readings in m,
-        m/s or m/s²), None for bare readings (a relative scale)
-    measure : str | None — the measure every amplitude is in (None: unsaid)
-    measures_converted : tuple of (str, str, int) — (from, to, how many readings)
-    gravity : bool — a reading's ``g`` was read as standard gravity
-    weights : tuple of float | None — one per reading
-    alpha : tuple of tuple of complex | None — stored influence coefficients (a trim run),
-        per kg, in this job's measure and angle sense
-    flipped : bool — the phases were mirrored into the angles' sense
-    suggest : TrialRequest | None — what sizes a trial mass (``suggest_trial``)
-    notes : tuple of str — what was converted on the way
-    source : FieldJob | None — the job file as read
-    max_mass : per plane (kg, "mass") or (kg m, "unbalance") or None; limits : per reading
-        the largest predicted amplitude (inf: none), or None; drawer : :class:`shop.Drawer`
-    classic : bool — given with the classic parameters only (:data:`CLASSIC`)
-    extended : bool — anything beyond the classic one- or two-plane job (the output then
-        has ``method``, ``residuals``...)
-    """
+    """A field-balancing job, read and checked: the parameters (a job file's settings among
+    them; the conventions the solve uses), the readings' sensors and speeds ((name, rad/s or
+    None): reading k is sensor ``k % len(sensors)`` at speed ``k // len(sensors)``), per plane
+    its name, (trial, correction) radius (m), positions and place (m); trial masses (kg
+    e^{i angle}); readings (SI of ``reading_kind``, or bare; in ``measure``, phases in the
+    angles' sense, ``flipped`` if mirrored there); stored coefficients (per kg, a trim run);
+    ``classic``: given with :data:`CLASSIC` only; ``extended``: reported with ``method`` and
+    the rest; ``source``: the job file as read; the shop's ``max_mass`` (per plane (kg,
+    "mass") or (kg m, "unbalance")), ``limits`` (per reading) and ``drawer``."""
 
     options: Options
     sensors: tuple[str, ...]
@@ -269,21 +236,15 @@ def from_file(o: Options, job: FieldJob) -> Job:
             raise ParamError(param, "give the radii in the job file's planes (radius, correction_radius)")
     o = _settings(o, job)
     if job.rotor is not None and job.rotor.body is not None:
-        if os.path.realpath(job.rotor.body) == os.path.realpath(job.source):
-            raise InputError("rotor: body is the job file itself; give the rotor's body file", job.rotor.where)
-        try:
-            load(job.rotor.body)  # checked now, not only when a trial mass is sized
-        except InputError as exc:
-            if exc.where is not None and exc.where.line > 0:
-                raise  # located in the body file
-            raise InputError(f"rotor: body: {literal(exc.message)}", job.rotor.where) from None
+        _rotor_body(job.rotor, job.source)
     if o.coefficients is not None and job.trials:
         raise ParamError("coefficients", "a trim run takes the initial readings alone; the job file has "
                                          "trial runs")
     budget(sum(len(x) for x in job.initial or ()), len(job.trials) or len(job.planes), Location(job.source))
-    initial = [_reading(t, "initial") for per_speed in job.initial or () for t in per_speed]
-    runs = [[_reading(t, "run") for per_speed in tr.readings for t in per_speed] for tr in job.trials]
-    trials = tuple(_trial(tr.mass, job.units.get("mass", "g")) for tr in job.trials)
+    initial = [read_at(t, lambda x: reading(x, "initial", t.where)) for s in job.initial or () for t in s]
+    runs = [[read_at(t, lambda x: reading(x, "run", t.where)) for s in tr.readings for t in s] for tr in job.trials]
+    trials = tuple(read_at(tr.mass, lambda x: trial_mass(x, "trial", job.units.get("mass", "g")))
+                   for tr in job.trials)
     p = len(job.planes) if job.planes else len(job.trials)
     n = len(initial)
     if o.coefficients is None and n < p:
@@ -331,18 +292,16 @@ def _settings(o: Options, job: Any) -> Options:
     return o.replace(**{k: v for k, v in theirs.items() if v is not None and k not in PER_ITEM})
 
 
-def _reading(t: Text, param: str) -> Reading:
+def _rotor_body(rotor: JobRotor, source: str) -> None:
+    """The job's rotor body file, loaded when the job is read (not only to size a trial)."""
+    if os.path.realpath(rotor.body) == os.path.realpath(source):
+        raise InputError("rotor: body is the job file itself; give the rotor's body file", rotor.where)
     try:
-        return reading(t.text, param, t.where)
+        load(rotor.body)
     except InputError as exc:
-        raise at(t.where, exc) from None
-
-
-def _trial(t: Text, bare: str) -> complex:
-    try:
-        return trial_mass(t.text, "trial", bare=bare)
-    except InputError as exc:
-        raise at(t.where, exc) from None
+        if exc.where is not None and exc.where.line > 0:
+            raise  # located in the body file
+        raise InputError(f"rotor: body: {literal(exc.message)}", rotor.where) from None
 
 
 # ----------------------------------------------------------------------------- one job

@@ -1,12 +1,9 @@
-"""The result of ``rbcli field-balance`` (:func:`rbcli.field_balance`): values, their JSON,
-the polar diagram's numbers and the coefficients file's document.
+"""The result of ``rbcli field-balance`` (:func:`rbcli.field_balance`): values, their JSON
+(the keys: rbcli-field-balance(1)) and the coefficients file's document.
 
-One- and two-plane jobs given with the options rbcli always had (``initial``, ``trial``,
-``run``, ``cumulative``, ``radius``, ``trial_radius``) are solved and written as they
-always were, byte for byte (:attr:`FieldBalanceResult.method` is None). Anything else — more
-readings than planes, more planes, a job file, stored coefficients, a method, weights,
-rounding, conventions, measures, severity, a trial suggestion — is an extended result: its
-JSON adds ``method``, ``residuals`` and the keys below.
+One- and two-plane jobs given with the options rbcli always had are written as they always
+were, byte for byte (:attr:`FieldBalanceResult.method` None); anything else is an extended
+result, whose JSON adds ``method``, ``residuals`` and the rest.
 """
 
 from __future__ import annotations
@@ -55,40 +52,19 @@ def _plain(v: Any) -> Any:
 
 @dataclass(frozen=True)
 class FieldCorrection:
-    """One plane's correction.
-
-    Attributes
-    ----------
-    name : str — the plane's name ("A", "B", ... or the job file's)
-    correction : complex — kg e^{i angle}, to add with the trial removed (at the correction
-        radius when radii are given), angles in the sense of the trial angles
-    correction_trial_on : complex — kg, to add with that plane's trial left on
-    radius : float | None — m, the radius the correction goes at (None: the trial's, unsaid)
-    """
+    """One plane's correction: ``correction`` kg e^{i angle} to add with the trial removed (at
+    ``radius``, m, when given; angles in the trial angles' sense), ``correction_trial_on``
+    with that plane's trial left on."""
 
     name: str
     correction: complex
     correction_trial_on: complex
     radius: float | None = None
 
-    @property
-    def mass(self) -> float:
-        """kg"""
-        return abs(self.correction)
-
-    @property
-    def angle_deg(self) -> float:
-        """deg, [0, 360), the sense of the trial angles"""
-        return deg(self.correction) if self.correction != 0 else 0.0
-
-    @property
-    def mass_trial_on(self) -> float:
-        """kg, with that plane's trial left on"""
-        return abs(self.correction_trial_on)
-
-    @property
-    def angle_trial_on_deg(self) -> float:
-        return deg(self.correction_trial_on) if self.correction_trial_on != 0 else 0.0
+    mass = property(lambda self: abs(self.correction), doc="kg")
+    angle_deg = property(lambda self: deg(self.correction), doc="deg, [0, 360)")
+    mass_trial_on = property(lambda self: abs(self.correction_trial_on), doc="kg")
+    angle_trial_on_deg = property(lambda self: deg(self.correction_trial_on), doc="deg, [0, 360)")
 
     def to_json(self) -> dict[str, Any]:
         return {"name": self.name, "mass": self.mass, "angle_deg": self.angle_deg,
@@ -98,15 +74,8 @@ class FieldCorrection:
 
 @dataclass(frozen=True)
 class FieldResidual(Plain):
-    """A predicted reading after the correction (JSON ``residuals[k]``).
-
-    Attributes
-    ----------
-    sensor, speed : str — the reading's sensor and speed names
-    amplitude : float — in the readings' unit and measure (SI, or bare for bare readings)
-    angle_deg : float — deg, [0, 360), in the readings' own phase convention
-    initial : float — the reading's amplitude before, same unit
-    """
+    """A predicted reading (the readings' unit and measure; its angle in the instrument's
+    phase convention) and the reading before."""
 
     sensor: str
     speed: str
@@ -166,15 +135,8 @@ class DrawerFit(Plain):
 
 @dataclass(frozen=True)
 class Fitted(Plain):
-    """The corrections as fitted — rounded and/or split — and the readings they leave.
-
-    Attributes
-    ----------
-    mass_step : float | None — kg
-    angle_step_deg : float | None — deg
-    planes : tuple of FittedPlane
-    residuals : tuple of FieldResidual — the readings predicted with these masses
-    """
+    """The corrections as fitted — rounded, split or from a drawer (kg, deg) — and the
+    readings they leave."""
 
     mass_step: float | None
     angle_step_deg: float | None
@@ -239,17 +201,8 @@ class SeverityRow(Plain):
 
 @dataclass(frozen=True)
 class Severity(Plain):
-    """ISO 20816-3 zones of the readings (JSON ``severity``).
-
-    Attributes
-    ----------
-    standard : str — "ISO 20816-3"
-    group : int — 1 or 2
-    foundation : str — "rigid" or "flexible"
-    boundaries : (float, float, float) — A/B, B/C, C/D, m/s r.m.s.
-    after_is : str — "fitted" (the rounded or split masses) or "computed"
-    readings : tuple of SeverityRow
-    """
+    """ISO 20816-3 zones of the readings: group, foundation, the A/B, B/C, C/D boundaries (m/s
+    r.m.s.), whether "after" is of the masses "fitted" or "computed"."""
 
     standard: str
     group: int
@@ -261,22 +214,9 @@ class Severity(Plain):
 
 @dataclass(frozen=True)
 class SuggestedTrial(Plain):
-    """A trial mass sized before the run (JSON ``suggested_trial``).
-
-    Attributes
-    ----------
-    plane : str
-    mass : float — kg at ``radius``
-    radius : float — m
-    speed : float — rad/s
-    bearing_load : float — N, the static load of the bearing nearest the plane
-    bearing_load_from : str — how it was found, in words
-    fraction : float — the trial's force / bearing_load
-    force : float — N
-    expected_change : tuple of float | None — per reading, the change the trial should make
-        (its influence coefficients times the trial), reading unit; None without coefficients
-    expected_change_ratio : tuple of float | None — that change over the initial reading
-    """
+    """A trial mass sized before the run: kg at ``radius`` (m) and ``speed`` (rad/s), a
+    ``fraction`` of the static ``bearing_load`` (N) as its ``force`` (N); with coefficients, the
+    change it should make to each reading (reading unit) and that over the reading."""
 
     plane: str
     mass: float
@@ -292,20 +232,9 @@ class SuggestedTrial(Plain):
 
 @dataclass(frozen=True)
 class Conventions(Plain):
-    """How angles and readings were counted (JSON ``conventions``).
-
-    Attributes
-    ----------
-    phase : str | None — the instrument's phase: "lag" (grows against the rotation) or
-        "lead"; None: not said (the phases are taken in the sense of the trial angles)
-    angle_sense : str | None — the trial and correction angles are counted "with" or
-        "against" the rotation; None: not said
-    rotation : str | None — the rotor turns "cw" or "ccw" (seen from where the angles are
-        read); None: not said
-    converted : bool — the phases were mirrored into the angles' sense (lag with angles
-        counted with the rotation, or lead against it)
-    text : str — all of it in words
-    """
+    """How angles and readings were counted: the instrument's ``phase`` ("lag", "lead"),
+    ``angle_sense`` ("with", "against" the rotation), ``rotation`` ("cw", "ccw"; None: unsaid
+    each), whether the phases were mirrored into the angles' sense, all of it in words."""
 
     phase: str | None
     angle_sense: str | None
@@ -339,52 +268,12 @@ def convention_text(phase: str | None, angle_sense: str | None, rotation: str | 
 
 @dataclass(frozen=True)
 class FieldBalanceResult(Result):
-    """What ``rbcli field-balance`` reports.
+    """What ``rbcli field-balance`` reports (JSON keys: rbcli-field-balance(1)).
 
-    Attributes
-    ----------
-    planes : int — the number of correction planes P
-    initial : tuple of complex — the readings without trial, N of them (SI, or the relative
-        scale), in the angles' sense (after any conversion)
-    runs : tuple of tuple of complex — the readings of each trial run (none for a trim run
-        from stored coefficients)
-    corrections : tuple of FieldCorrection — per plane (kg)
-    alpha : tuple of tuple of complex — the influence coefficients: reading (SI, or the
-        relative scale) per kg at the trial radius; row = reading, column = plane (JSON
-        ``influence``: their magnitudes and angles)
-    trial_masses : tuple of complex — kg e^{i angle} (JSON ``trials``)
-    radii : (float, float) | None — m, (trial radius, correction radius) (the command line's)
-    cond : float | None — 2-norm condition number of the influence matrix
-    det : complex | None — its determinant (square)
-    ill_conditioned : bool — cond > 50
-    small_response : tuple of bool — per trial run
-    residual_values : tuple of complex — per reading, after the correction (reading unit; JSON
-        ``predicted_residual``: their magnitudes)
-    cumulative : bool
-    reading_kind : str | None — "displacement", "velocity", "acceleration", or None (bare)
-    warnings : tuple of str
-    method : str | None — "exact", "least-squares" or "min-max"; None: a one- or two-plane
-        job given the classic way, reported as it always was
-    sensors, run_speeds : the readings' sensors (names) and speeds ((name, rad/s or None);
-        JSON ``speeds``); a reading k is sensor ``k % len(sensors)`` at speed
-        ``k // len(sensors)``
-    plane_names : tuple of str
-    plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius) m
-    residuals : tuple of FieldResidual — the predicted readings, in the instrument's phase
-        convention (extended results)
-    weights : tuple of float | None
-    significance_factors : tuple of float — Darlow's factor per plane (JSON ``significance``)
-    significance_limit : float
-    measure : str | None — "pk", "pk-pk" or "rms": what every amplitude is in
-    measures_converted : tuple of (str, str, int)
-    gravity : bool — a reading's "g" was read as standard gravity
-    conventions : Conventions | None
-    fitted : Fitted | None
-    severity : Severity | None
-    suggested_trial : tuple of SuggestedTrial
-    coefficients_from : str | None — the file the coefficients were read from (trim run)
-    job : str | None — the job file; name: its name
-    notes : tuple of str — what was converted on the way (coefficients' measure or sense)
+    Readings (``initial``, ``runs``, ``residual_values``) are complex, SI of ``reading_kind``
+    (or bare), in the angles' sense; ``alpha[k][j]`` is reading k per kg at plane j's trial
+    radius; masses kg, radii m; reading k is sensor ``k % len(sensors)`` at speed
+    ``k // len(sensors)``. ``method`` None: a classic one- or two-plane job.
     """
 
     planes: int

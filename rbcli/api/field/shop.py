@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbcli.api import options as op
-from rbcli.api.field.readings import at, reading
+from rbcli.api.field.readings import read_at, reading
 from rbcli.core.field.drawer import MOST_WEIGHTS, Plane
 from rbcli.core.field.severity import convert_measure
 from rbcli.errors import InputError, ParamError, literal
@@ -51,14 +51,6 @@ def _texts(v: Any) -> list[Any]:
     return [x for t in v for x in ([t] if not isinstance(t, str) else _texts(t))]
 
 
-def _located(item: Any, param: str, fn: Any) -> Any:
-    """``fn(text)`` of a parameter's item, or of a job file's Text (errors located there)."""
-    try:
-        return fn(getattr(item, "text", item))
-    except InputError as exc:
-        raise at(getattr(item, "where", None), exc) from None
-
-
 def read(job: Job) -> Job:
     """``job`` with its mass limits, reading limits and drawer read (SI).
 
@@ -89,7 +81,7 @@ def read(job: Job) -> Job:
         raise ParamError("drawer", "a drawer and rounding ({mass_step}, {angle_step}) do not go together: "
                                    "the drawer's weights are what is fitted")
     bare = src.units.get("mass", "g") if src is not None else "g"
-    sizes = [tuple(_located(t, "drawer", lambda s: _size(s, bare)) for t in d) for d in drawers]
+    sizes = [tuple(read_at(t, lambda s: _size(s, bare)) for t in d) for d in drawers]
     for d in sizes:
         if len({m for m, _ in d}) != len(d):
             raise ParamError("drawer", "a drawer lists a mass twice; give each size once, with its count")
@@ -181,7 +173,7 @@ def _limits(job: Job, given: Any) -> tuple[float, ...] | None:
             for t in (src.limits[k % ns] if k % ns < len(src.limits) else None,
                       src.speeds[k // ns].limit if k // ns < len(src.speeds) else None):
                 if t is not None:
-                    out[k] = min(out[k], _located(t, "limit", lambda s: _amplitude(job, s, "limit")))
+                    out[k] = min(out[k], read_at(t, lambda s: _amplitude(job, s, "limit")))
     return tuple(out) if any(math.isfinite(x) for x in out) else None
 
 

@@ -334,7 +334,7 @@ def deg(z: complex) -> float:
     """arg z in degrees in [0, 360) (within 1e-9° below 360 is 0; never -0.0): the angle of
     a reading or a mass."""
     a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
-    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
+    return 0.0 if a >= 360.0 - 1e-9 or z == 0 else a + 0.0
 
 
 def dot(a: list[complex], b: list[complex]) -> complex:

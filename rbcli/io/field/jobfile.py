@@ -23,8 +23,8 @@ trial masses stay located texts (``"6.2 mm/s@112"``, ``"50 g@0"``) that
       - {plane: B, mass: "50 g@0", readings: {run: [...]}}
 
 With one speed, ``speeds`` may be left out and ``initial`` and each trial's ``readings``
-written as plain lists. The JSON Schema is :func:`job_schema` (installed as
-``rbcli/data/fieldjob.schema.json``).
+written as plain lists. Its keys are declared in its JSON Schema,
+``rbcli/data/fieldjob.schema.json`` (:func:`schema_text`).
 """
 
 from __future__ import annotations
@@ -49,20 +49,14 @@ SCHEMA_PATH = Path(__file__).resolve().parents[2] / "data" / "fieldjob.schema.js
 #: a job file is refused above this size (bytes): a job holds a few hundred readings
 MAX_JOB_BYTES = 4 * 1024 * 1024
 
-TOP_KEYS = ("rbcli", "job", "name", "description", "units", "conventions", "readings", "sensors",
-            "planes", "speeds", "initial", "trials", "cumulative", "method", "mass_step",
-            "angle_step", "severity", "rotor", "coefficients", "drawer", "max_weights", "robust")
-UNIT_KEYS = ("length", "mass", "angular_speed")
-CONVENTION_KEYS = ("phase", "angle_sense", "rotation")
-PLANE_KEYS = ("name", "radius", "correction_radius", "positions", "at", "holes", "max_mass", "max_weights",
-              "drawer")
-HOLE_KEYS = ("count", "zero", "angles", "radius", "numbering", "per_hole")
-SPEED_KEYS = ("name", "speed", "limit")
-SENSOR_KEYS = ("name", "weight", "limit")
-TRIAL_KEYS = ("plane", "mass", "readings")
-SEVERITY_KEYS = ("standard", "group", "foundation")
-ROTOR_KEYS = ("mass", "body", "bearings", "com", "bearing_load", "g", "trial_fraction")
-
+#: the job file's keys, declared once in its JSON Schema (:func:`schema_text`)
+_P = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))["properties"]
+TOP_KEYS = tuple(_P)
+UNIT_KEYS, CONVENTION_KEYS, SEVERITY_KEYS, ROTOR_KEYS = (tuple(_P[k]["properties"]) for k in
+                                                         ("units", "conventions", "severity", "rotor"))
+PLANE_KEYS, TRIAL_KEYS = (tuple(_P[k]["items"]["properties"]) for k in ("planes", "trials"))
+SENSOR_KEYS, SPEED_KEYS = (tuple(_P[k]["items"]["anyOf"][1]["properties"]) for k in ("sensors", "speeds"))
+HOLE_KEYS = tuple(_P["planes"]["items"]["properties"]["holes"]["properties"])
 
 
 @dataclass(frozen=True)
@@ -575,78 +569,7 @@ def _rotor(ctx: _Ctx, items: dict, source: str) -> JobRotor | None:
     return JobRotor(mass, body, bearings, com, load, g, frac, ctx.where(rm))
 
 
-# ----------------------------------------------------------------------------- schema
-
-
-def job_schema() -> dict:
-    """The JSON Schema (draft-07) of a job file, for editors (yaml-language-server)."""
-    quantity = {"description": "a number in the file's units, or a string with a unit such as '250 mm'",
-                "anyOf": [{"type": "number"}, {"type": "string", "pattern": "^\\s*[-+]?[0-9.]"}]}
-    reading = {"type": "string", "pattern": "@",
-               "description": "amplitude@phase: '6.2 mm/s@112', '40 um pk-pk@30', '0.5 g rms@10' or bare '6.2@112'"}
-    readings = {"type": "array", "items": reading, "minItems": 1,
-                "description": "one reading per sensor, in the sensors' order"}
-    per_speed = {"anyOf": [readings, {"type": "object", "additionalProperties": readings,
-                                      "description": "speed name -> readings"}]}
-    name = {"anyOf": [{"type": "string", "minLength": 1}, {"type": "number"}]}
-
-    def enum(key: str) -> dict:
-        return {"enum": list(CHOICES[key])}
-
-    return {
-        "$schema": "http://json-schema.org/draft-07/schema#",
-        "$id": "https://rbcli.invalid/fieldjob.schema.json",
-        "title": "rbcli field-balance job file",
-        "description": "Sensors, planes, speeds and runs of a field-balancing job (rbcli field-balance JOB.yaml).",
-        "type": "object",
-        "properties": {
-            "rbcli": {"const": 1},
-            "job": {"const": "field-balance"},
-            "name": {"type": "string"},
-            "description": {"type": "string"},
-            "units": {"type": "object", "properties": {k: {"type": "string"} for k in UNIT_KEYS},
-                      "additionalProperties": False,
-                      "description": "what bare lengths, masses and speeds mean (default m, g, rad/s)"},
-            "conventions": {"type": "object", "properties": {k: enum(k) for k in CONVENTION_KEYS},
-                            "additionalProperties": False},
-            "readings": {"type": "object", "properties": {"measure": enum("measure")},
-                         "additionalProperties": False},
-            "sensors": {"type": "array", "minItems": 1, "items": {"anyOf": [
-                name, {"type": "object", "properties": {"name": name, "weight": quantity},
-                       "required": ["name"], "additionalProperties": False}]}},
-            "planes": {"type": "array", "minItems": 1, "items": {
-                "type": "object",
-                "properties": {"name": name, "radius": quantity, "correction_radius": quantity,
-                               "positions": {"type": "integer", "minimum": 3}, "at": quantity},
-                "required": ["name"], "additionalProperties": False}},
-            "speeds": {"type": "array", "minItems": 1, "items": {"anyOf": [
-                quantity, {"type": "object", "properties": {"name": name, "speed": quantity},
-                           "required": ["name"], "additionalProperties": False}]}},
-            "initial": per_speed,
-            "trials": {"type": "array", "minItems": 1, "items": {
-                "type": "object",
-                "properties": {"plane": name, "mass": {"type": "string", "pattern": "@"}, "readings": per_speed},
-                "required": ["mass", "readings"], "additionalProperties": False}},
-            "cumulative": {"type": "boolean"},
-            "method": enum("method"),
-            "mass_step": quantity,
-            "angle_step": quantity,
-            "severity": {"type": "object",
-                         "properties": {"standard": enum("standard"), "group": {"enum": [1, 2]},
-                                        "foundation": enum("foundation")},
-                         "required": ["group", "foundation"], "additionalProperties": False},
-            "rotor": {"type": "object",
-                      "properties": {"mass": quantity, "body": {"type": "string"},
-                                     "bearings": {"type": "array", "items": quantity, "minItems": 2, "maxItems": 2},
-                                     "com": quantity, "bearing_load": quantity, "g": quantity,
-                                     "trial_fraction": quantity},
-                      "additionalProperties": False},
-            "coefficients": {"type": "string", "description": "a file written by --save-coefficients (trim run)"},
-        },
-        "additionalProperties": False,
-    }
-
-
 def schema_text() -> str:
-    """The JSON Schema, as ``--job-schema`` prints it and ``rbcli/data`` holds it."""
-    return json.dumps(job_schema(), indent=2, ensure_ascii=False) + "\n"
+    """The JSON Schema of a job file (``rbcli/data/fieldjob.schema.json``, the declaration of
+    its keys), as ``--job-schema`` prints it."""
+    return SCHEMA_PATH.read_text(encoding="utf-8")
