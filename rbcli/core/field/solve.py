@@ -106,38 +106,28 @@ def classic(v0: list[complex], runs: list[list[complex]], trials: list[complex],
 
 @dataclass(frozen=True, eq=False)
 class FieldSolution:
-    """A correction and what it leaves.
-
-    Attributes
-    ----------
-    corrections : (P,) complex ndarray — mass e^{i angle} to add per plane (the unit and
-        radius of the trial masses), read-only
-    residuals : (N,) complex ndarray — ``V0 + alpha W``, the predicted readings, read-only
-    method : str — "exact", "least-squares" or "min-max"
-    cond : float — 2-norm condition number of alpha
-    det : complex | None — |det alpha| when square (None when it overflows)
-    objective : float — ``max_k w_k |r_k|`` (min-max), ``sqrt(sum (w_k |r_k|)^2)`` (least
-        squares) or 0 (exact)
-    active : tuple of (str, int) — the limits the correction meets with equality: ("mass",
-        plane) or ("reading", row)
-    without : tuple of float — the objective with each active limit left out
-    feasible : bool — False: the limits cannot all be met; the correction is the
-        least-violating one (``violation`` times each reading limit)
-    violation : float — max |r_k| / L_k over the readings with a limit (0: none)
-    robust : (N,) float ndarray | None — Huber's weight of each reading (1: not discounted)
-    """
+    """A correction and what it leaves: ``corrections`` (P,) mass e^{i angle} to add (the
+    trial masses' unit and radius) and ``residuals`` (N,) ``V0 + alpha W``, read-only; the
+    method ("exact", "least-squares", "min-max"); cond and |det| (square; None when it
+    overflows) of alpha; the objective (``max_k w_k |r_k|``, ``sqrt(sum (w_k |r_k|)^2)`` or 0);
+    the limits met with equality (("mass", plane) or ("reading", row)) and the objective
+    without each; ``violation`` max |r_k|/L_k (above 1: the least-violating correction);
+    ``robust`` Huber's weight of each reading."""
 
     corrections: np.ndarray
     residuals: np.ndarray
     method: str
     cond: float
-    det: complex | None
+    det: float | None
     objective: float
     active: tuple[tuple[str, int], ...] = ()
     without: tuple[float, ...] = ()
-    feasible: bool = True
     violation: float = 0.0
     robust: np.ndarray | None = None
+
+    @property
+    def feasible(self) -> bool:
+        return self.violation <= 1.0 + 1e-9
 
 
 def _ro(a: np.ndarray, dtype: type = complex) -> np.ndarray:
@@ -146,26 +136,17 @@ def _ro(a: np.ndarray, dtype: type = complex) -> np.ndarray:
     return a
 
 
-def check_weights(weights: object | None, n: int) -> np.ndarray:
-    """(n,) positive finite weights (all 1 for None)."""
-    if weights is None:
-        return np.ones(n)
+def _positive(v: object | None, n: int, name: str, none: float) -> np.ndarray:
+    """(n,) positive numbers (``weights``; a limit may be inf: none), ``none`` each for None."""
     try:
-        w = np.asarray(weights, dtype=float)
+        x = np.full(n, none) if v is None else np.asarray(v, dtype=float)
     except (TypeError, ValueError):
-        raise BalanceValueError("weights", "weights must be numbers") from None
-    if w.shape != (n,):
-        raise BalanceValueError("weights", f"give one weight per reading ({n}), not {w.size}")
-    if not np.all(np.isfinite(w)) or not np.all(w > 0):
-        raise BalanceValueError("weights", "weights must be positive finite numbers")
-    return w
-
-
-def _limits(v: object | None, n: int, name: str) -> np.ndarray:
-    """(n,) positive limits, inf where none."""
-    x = np.full(n, np.inf) if v is None else np.asarray(v, dtype=float)
-    if x.shape != (n,) or np.any(np.isnan(x)) or np.any(x <= 0.0):
-        raise BalanceValueError(name, f"{name} must be {n} positive numbers (inf: no limit)")
+        raise BalanceValueError(name, f"{name} must be numbers") from None
+    if x.shape != (n,):
+        raise BalanceValueError(name, f"give one {name} value per {'plane' if name == 'max_mass' else 'reading'} "
+                                      f"({n}), not {x.size}")
+    if not np.all(x > 0) or not np.all(x < np.inf if name == "weights" else x == x):
+        raise BalanceValueError(name, f"{name} must be positive finite numbers")
     return x
 
 
@@ -178,74 +159,59 @@ def solve(alpha: object, v0: object, method: str | None = None, weights: object 
     ----------
     alpha : (N, P) complex — influence coefficients, N >= P
     v0 : (N,) complex — readings to cancel
-    method : str, optional — "exact" (N = P only), "least-squares" or "min-max"; default:
-        exact when N = P, else least squares (with N = P every method is exact unless a limit
-        binds)
-    weights : (N,) float, optional — w_k > 0 per reading
-    max_mass : (P,) float, optional — the largest ``|W_j|`` (inf: none)
-    limits : (N,) float, optional — the largest predicted ``|r_k|`` (inf: none)
-    robust : bool — least squares with Huber's weights (see the module notes)
-    costs : bool — solve again without each active limit (:attr:`FieldSolution.without`)
+    method : "exact" (N = P), "least-squares" or "min-max"; default exact when N = P, else
+        least squares (with N = P every method is exact unless a limit binds)
+    weights : (N,) float w_k > 0; max_mass : (P,) largest |W_j|; limits : (N,) largest
+        predicted |r_k| (inf: none); robust : Huber's weights (least squares)
+    costs : solve again without each active limit (:attr:`FieldSolution.without`)
 
     Raises
     ------
     BalanceValueError
-        fewer readings than planes (``v0``); an unknown method (``method``); columns that
-        do not separate the planes (``runs``).
+        naming the parameter at fault: ``runs`` for columns that do not separate the planes.
     """
-    A = _complex_array(alpha, "alpha", 2)
-    V0 = _complex_array(v0, "v0", 1)
+    A, V0 = _complex_array(alpha, "alpha", 2), _complex_array(v0, "v0", 1)
     n, p = A.shape
-    if V0.shape != (n,):
-        raise BalanceValueError("v0", f"v0 must hold {n} readings, got {V0.shape[0]}")
-    if p < 1:
-        raise BalanceValueError("alpha", "at least one plane is needed")
-    if n < p:
-        raise BalanceValueError("v0", f"{p} planes need at least {p} readings per run, got {n}")
-    if method is not None and method not in METHODS:
-        raise BalanceValueError("method", f"method must be one of {', '.join(METHODS)}, not {method!r}")
-    if method == "exact" and n != p:
-        raise BalanceValueError("method", f"an exact solve needs as many readings as planes ({p}), got {n}")
-    w = check_weights(weights, n)
-    U, L = _limits(max_mass, p, "max_mass"), _limits(limits, n, "limits")
+    if V0.shape != (n,) or not 1 <= p <= n:
+        raise BalanceValueError("v0", f"{p} planes need at least {p} readings per run, got {V0.size}")
+    if method not in (None, *METHODS) or method == "exact" and n != p:
+        raise BalanceValueError("method", f"an exact solve needs as many readings as planes ({p}), got {n}"
+                                if method == "exact" else f"method must be one of {', '.join(METHODS)}")
+    if robust and (method == "min-max" or n <= p + 1):
+        raise BalanceValueError("robust", "a robust fit is a least-squares fit with more readings than planes + 1")
+    w = _positive(weights, n, "weights", 1.0)
+    U, L = _positive(max_mass, p, "max_mass", np.inf), _positive(limits, n, "limits", np.inf)
     R, _ = householder_qr(A, np.zeros(n, dtype=complex))
     sv = singular_values(np.array(R))
     if not sv[0] > 0.0 or sv[-1] <= SINGULAR_RTOL * sv[0]:
         raise BalanceValueError("runs", "the influence matrix is singular: the trial runs do not separate the planes")
-    cond = float(sv[0] / sv[-1])
     det = (abs(complex(A[0, 0])) if p == 1 else abs(complex(np.linalg.det(A))) if p == 2 else
            math.prod(abs(R[k][k]) for k in range(p))) if n == p else None
-    det = det if det is None or math.isfinite(det) else None  # |det| overflows for large jobs
-    if robust and (method == "min-max" or n <= p + 1):
-        raise BalanceValueError("robust", "a robust fit is a least-squares fit with more readings than planes + 1")
-    h = huber(A, V0, w) if robust else None
-    wr = w if h is None else w * h
+    common = dict(cond=float(sv[0] / sv[-1]), det=det if det is None or math.isfinite(det) else None,
+                  robust=huber(A, V0, w) if robust else None)
+    wr = w if common["robust"] is None else w * common["robust"]
     if n == p:  # Python's complex division and LAPACK's 2 x 2 solve: the classic solves' bits
         W = np.array([-complex(V0[0]) / complex(A[0, 0])]) if p == 1 else \
             np.linalg.solve(A, -V0) if p == 2 else lu_solve(A, -V0)
-        name = "exact"
-    elif method == "min-max":
-        W, name = cone_solve(A, V0, w, "min-max", None, None), "min-max"
     else:
-        W, name = least_squares(A, V0, wr), "least-squares"
+        W = cone_solve(A, V0, w, "min-max", None, None) if method == "min-max" else least_squares(A, V0, wr)
+    name = "exact" if n == p else method or "least-squares"
     r = V0 + (A @ W if n == p <= 2 else matvec(A, W))
     if np.all(np.abs(W) <= U) and np.all(np.abs(r) <= L):
-        return FieldSolution(_ro(W), _ro(r), name, cond, det, _measure(name, wr, r), robust=h,
-                             violation=_violation(r, L))
+        return FieldSolution(_ro(W), _ro(r), name, objective=_measure(name, wr, r), violation=_violation(r, L),
+                             **common)
     name = "min-max" if method == "min-max" else "least-squares"
     W = cone_solve(A, V0, wr, name, U, L)
     r = V0 + matvec(A, W)
-    v = _violation(r, L)
     act = tuple([("mass", j) for j in range(p) if abs(W[j]) >= U[j] * (1 - 1e-9)]
                 + [("reading", k) for k in range(n) if abs(r[k]) >= L[k] * (1 - 1e-9)])
-    without = ()
-    if costs and v <= 1.0 + 1e-9:
-        without = tuple(solve(A, V0, method, weights, max_mass=np.where(np.arange(p) == i, np.inf, U) if
-                              kind == "mass" else U, limits=np.where(np.arange(n) == i, np.inf, L) if
-                              kind == "reading" else L, robust=robust, costs=False).objective
-                        for kind, i in act)
-    return FieldSolution(_ro(W), _ro(r), name, cond, det, _measure(name, wr, r), act, without,
-                         v <= 1.0 + 1e-9, v, robust=h)
+    v = _violation(r, L)
+    without = tuple(solve(A, V0, method, weights, robust=robust, costs=False,
+                          max_mass=np.where(np.arange(p) == i, np.inf, U) if kind == "mass" else U,
+                          limits=np.where(np.arange(n) == i, np.inf, L) if kind == "reading" else L).objective
+                    for kind, i in act) if costs and v <= 1.0 + 1e-9 else ()
+    return FieldSolution(_ro(W), _ro(r), name, objective=_measure(name, wr, r), active=act, without=without,
+                         violation=v, **common)
 
 
 def _violation(r: np.ndarray, L: np.ndarray) -> float:

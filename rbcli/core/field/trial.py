@@ -1,14 +1,9 @@
 """The trial mass to start with (sheet §5.1).
 
-:func:`suggest_trial` sizes a trial mass before the first run: its centrifugal force
-``m r omega^2`` is a set fraction (default 10 %) of the static load on the bearing
-nearest the trial plane, ``m_T = f F_bearing / (r omega^2)``. The rule is the one rbcli's
-formula sheet records (physics/balance.md §5.1: "the trial's centrifugal force is about
-10 % of the rotor weight (or bearing load), m_T = 0.1 M g/(r omega^2)"; 100 kg, r = 200 mm,
-1500 rpm give 19.9 g), the common shop rule a fraction of 5-10 % of the bearing load;
-ACOEM's "Balancing How To #2 - Selecting a Proper Trial Weight" states what the trial must
-achieve (a change of 30 % in amplitude or 30 degrees in phase) and that the mass follows
-from the rotor's weight and speed.
+:func:`suggest_trial`: a trial whose centrifugal force ``m r omega^2`` is a fraction f
+(default 10 %) of the static load on the bearing nearest its plane, ``m_T = f F / (r
+omega^2)`` (physics/balance.md §5.1; the shop rule is 5-10 %; ACOEM's "Balancing How To #2"
+asks the trial to change a reading by 30 % or 30 degrees).
 """
 
 from __future__ import annotations
