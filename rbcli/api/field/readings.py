@@ -23,7 +23,7 @@ from rbcli.errors import InputError, Location, ParamError, literal, spell
 from rbcli.io import units as un
 from rbcli.io.reader import limit_from_env
 
-__all__ = ["Reading", "reading", "trial_mass", "readings", "one_kind", "at", "read_at", "Measures",
+__all__ = ["Reading", "reading", "split_measure", "amplitude", "trial_mass", "readings", "one_kind", "at", "read_at", "Measures",
     "common_measure", "budget", "READING_KINDS", "READING_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
 
 #: what a reading's unit may measure -> its kind; readings are converted to SI
@@ -52,7 +52,7 @@ class Reading:
     where: Location | None = None
 
 
-def _split_measure(amp: str) -> tuple[str, str | None]:
+def split_measure(amp: str) -> tuple[str, str | None]:
     """``"6 mm/s rms"`` -> ``("6 mm/s", "rms")``; no measure word -> ``(amp, None)``."""
     parts = amp.rsplit(None, 1)
     if len(parts) == 2 and parts[1].lower() in MEASURE_WORDS:
@@ -64,7 +64,7 @@ def _split_measure(amp: str) -> tuple[str, str | None]:
     return amp, None
 
 
-def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bool]:
+def amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bool]:
     """A reading's amplitude: (value, kind, read g as gravity) - SI for a unit of
     vibration, the number for a bare one (kind None)."""
     num = op.NUMBER.match(text)
@@ -99,8 +99,8 @@ def reading(text: str, param: str, where: Location | None = None) -> Reading:
     lit = literal(text)
     if not m:
         raise ParamError(param, f"'{lit}' is not amplitude@phase, e.g. '6.0@30' or '6 mm/s@30'")
-    amp_text, measure = _split_measure(m["num"])
-    amp, kind, gravity = _amplitude(amp_text, param, text)
+    amp_text, measure = split_measure(m["num"])
+    amp, kind, gravity = amplitude(amp_text, param, text)
     ang = math.degrees(op.quantity(m["ang"], "angle", param, bare="deg"))
     _check(amp, ang, param, lit, "amplitude")
     return Reading(complex(cmath.rect(amp, math.radians(ang))), kind, measure, gravity, param, text, where)

@@ -9,7 +9,7 @@ result, whose JSON adds ``method``, ``residuals`` and the rest.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields, is_dataclass
 from typing import Any
 
@@ -45,6 +45,8 @@ def _plain(v: Any) -> Any:
         return None  # an unlimited mass
     if isinstance(v, tuple):
         return [_plain(x) for x in v]
+    if isinstance(v, Mapping):
+        return {k: _plain(x) for k, x in v.items()}
     if hasattr(v, "to_json"):
         return v.to_json()
     return {f.name: _plain(getattr(v, f.name)) for f in fields(v)} if is_dataclass(v) else v

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbcli.api import options as op
-from rbcli.api.field.readings import read_at, reading
+from rbcli.api.field.readings import amplitude, read_at, split_measure
 from rbcli.core.field.drawer import MOST_WEIGHTS, Plane
 from rbcli.core.field.severity import convert_measure
 from rbcli.errors import InputError, ParamError, literal
@@ -132,8 +132,8 @@ def _size(text: str, bare: str) -> tuple[float, int | None]:
     """``'5 g:4'`` -> (kg, 4); ``'5 g'`` -> (kg, None: any number)."""
     mass, _, count = text.partition(":")
     m = op.quantity(mass, "mass", "drawer", bare=bare)
-    if not 0.0 < m < math.inf:
-        raise ParamError("drawer", f"'{literal(text)}': a weight's mass must be positive")
+    if not 1e-9 <= m <= 1e3:
+        raise ParamError("drawer", f"'{literal(text)}': a weight's mass must be positive, from 1 µg to 1 t")
     if count and not (count.strip().isdigit() and 1 <= int(count) <= 100_000):
         raise ParamError("drawer", f"'{literal(text)}': the count after ':' must be a whole number from 1 to "
                                    "100000")
@@ -179,16 +179,16 @@ def _limits(job: Job, given: Any) -> tuple[float, ...] | None:
 
 def _amplitude(job: Job, text: str, param: str) -> float:
     """A limit in the readings' unit and measure (the readings' measure when it says none)."""
-    r = reading(f"{text}@0", param)
-    if r.kind != job.reading_kind:
-        raise ParamError(param, f"'{literal(text)}' is {r.kind or 'a bare number'}; the readings are "
+    amp, measure = split_measure(text.strip())
+    value, kind, _ = amplitude(amp, param, text)
+    if kind != job.reading_kind:
+        raise ParamError(param, f"'{literal(text)}' is {kind or 'a bare number'}; the readings are "
                                 f"{job.reading_kind or 'bare numbers'}: give the limit as they are")
-    if r.measure is not None and job.measure is None:
-        raise ParamError(param, f"'{literal(text)}' says {r.measure}; the readings say no measure")
-    if not abs(r.value) > 0.0:
-        raise ParamError(param, f"'{literal(text)}': a limit must be positive")
-    f = 1.0 if r.measure is None else convert_measure(1.0, r.measure, job.measure)
-    return abs(r.value) * f
+    if measure is not None and job.measure is None:
+        raise ParamError(param, f"'{literal(text)}' says {measure}; the readings say no measure")
+    if not 1e-100 <= value <= 1e100:
+        raise ParamError(param, f"'{literal(text)}': a limit must be a positive amplitude, from 1e-100 to 1e100 (SI)")
+    return value * (1.0 if measure is None else convert_measure(1.0, measure, job.measure))
 
 
 def counts(d: tuple[tuple[float, int | None], ...]) -> tuple[np.ndarray, np.ndarray]:

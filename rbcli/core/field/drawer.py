@@ -133,7 +133,10 @@ def best_weights(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, method: str, 
     from scipy.spatial import cKDTree
 
     n, p = alpha.shape
-    L = np.full(n, np.inf) if limits is None else np.asarray(limits, dtype=float)
+    w0 = w
+    s = float(np.max(np.abs(alpha)))  # readings and limits scaled alike: the same choice, no overflow
+    alpha, v0, w = alpha / s, v0 / s, w / np.max(w)
+    L = np.full(n, np.inf) if limits is None else np.asarray(limits, dtype=float) / s
     wq = w / math.sqrt(n) if method == "min-max" else w
     if method == "min-max" and start is not None:  # μ: the min-max multipliers, a little of 1/N
         r = v0 + np.einsum("kj,j->k", alpha, start)
@@ -152,8 +155,10 @@ def best_weights(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, method: str, 
     mm = [drawers[pl.drawer][0] * pl.factor for pl in planes]
     reach = [abs(Wq[j]) + sum(sorted(mm[j])[-planes[j].most:]) for j in range(p)]
     everything = float(np.sum(np.abs(R) ** 2)) * sum(x * x for x in reach)
-    delta = float(sum(np.sum(np.abs(R[:, j]) ** 2) * min(mm[j]) ** 2 for j in range(p))) / 1024.0
-    while True:
+    a0 = w * np.abs(v0)  # no weights at all: every better choice is within its bound
+    empty = (float(np.sum(a0 ** 2)) if method == "least-squares" else float(np.max(a0)) ** 2) - F0
+    delta = min(float(sum(np.sum(np.abs(R[:, j]) ** 2) * min(mm[j]) ** 2 for j in range(p))) / 1024.0, empty)
+    for _ in range(200):
         cands = []
         for j, pl in enumerate(planes):
             masses, counts = drawers[pl.drawer]
@@ -169,8 +174,10 @@ def best_weights(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, method: str, 
             weights = tuple(tuple((int(u) // drawers[planes[j].drawer][0].size,
                                    int(u) % drawers[planes[j].drawer][0].size) for u in cands[j][0][m] if u >= 0)
                             for j, m in enumerate(picks))
-            return Choice(weights, W, g, max(viol, 0.0), examined)
+            return Choice(weights, W, g * s * float(np.max(w0)), max(viol, 0.0), examined)
         delta = max(4.0 * delta, found[4] if found is not None and found[3] <= 1.0 else 0.0)
+    raise BalanceValueError("drawer", "no choice of the drawer's weights was found in reach of the correction; "
+                                      "check the drawer's masses against the trial masses")
 
 
 def _search(alpha, v0, w, method, L, R, Wq, F0, delta, cands, cap):

@@ -90,7 +90,7 @@ def _opt_str(v: Any, allowed: tuple[str, ...], source: str, what: str) -> str | 
 
 
 def _number(v: Any, source: str, what: str, *, positive: bool = False) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not abs(v) < 1e308:
         raise _err(source, f"{what} must be a finite number, not {v!r}")
     if positive and not v > 0:
         raise _err(source, f"{what} must be positive, not {v!r}")
