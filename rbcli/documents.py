@@ -1,11 +1,7 @@
-"""Documents from Python: the report's text, or the report written to a file.
-
-The library's counterpart of what ``rbcli report`` does: compute with :mod:`rbcli.api`
-(:func:`rbcli.report`), lay out with :mod:`rbcli.render` (:mod:`rbcli.render.reportdoc`,
-HTML or Markdown) and write with :mod:`rbcli.io.outfile` (never over an input, never
-through a link, all or nothing, an existing file only with ``force``). The command line
-uses these same functions, so a document made here has the bytes the command writes.
-"""
+"""Documents from Python: the report's text, or the report written to a file, computed by
+:mod:`rbcli.api`, laid out by :mod:`rbcli.render.reportdoc` and written by
+:mod:`rbcli.io.outfile` (never over an input, all or nothing). The command line uses these
+same functions: the same bytes."""
 
 from __future__ import annotations
 
@@ -13,8 +9,18 @@ from collections.abc import Callable
 from os import PathLike
 from typing import TYPE_CHECKING, Any
 
+from rbcli.api import check
+from rbcli.api.commands import REPORT
+from rbcli.api.options import choice
+from rbcli.api.params import checkers
+from rbcli.api.report import ReportResult, parse, run
+from rbcli.errors import ParamError, literal
+from rbcli.io import outfile
+from rbcli.render import report as R
+from rbcli.render.reportdoc import document
+from rbcli.render.units import DisplayUnits
+
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.report import ReportResult
     from rbcli.body.model import Body
 
 __all__ = ["FORMATS", "report_text", "write_report", "check_report_path"]
@@ -24,15 +30,10 @@ FORMATS = (".html", ".md")
 
 
 def _format(format: str | None) -> str | None:  # noqa: A002 - the command line's word
-    from rbcli.api.options import choice
-
     return None if format is None else "." + choice(format, "format", ("html", "md"))
 
 
 def _layout(digits: int, units: str | None) -> tuple[int, Any]:
-    from rbcli.errors import ParamError
-    from rbcli.render.units import DisplayUnits
-
     if not 1 <= digits <= 17:
         raise ParamError("digits", f"must be a whole number from 1 to 17, got {digits!r}")
     return digits, DisplayUnits.parse(units)
@@ -41,69 +42,40 @@ def _layout(digits: int, units: str | None) -> tuple[int, Any]:
 def _door(body: Any, format: Any, digits: Any, units: Any,  # noqa: A002
           options: dict[str, Any]) -> tuple[Any, str | None, int, str | None, dict[str, Any]]:
     """The arguments of :func:`report_text` and :func:`write_report` checked at the door
-    (:mod:`rbcli.api.check`): TypeErrors naming the parameter before anything is read."""
-    from rbcli.api import check
-    from rbcli.api.report import KINDS
-
+    (:mod:`rbcli.api.check`, the report's parameters by its table): TypeErrors naming the
+    parameter before anything is read."""
     body = check.body(body)
     format = check.text(format, "format")  # noqa: A001
     digits = check.count(digits, "digits")
     if digits is None:
         raise TypeError("digits: expected an int, got NoneType")
     units = check.text(units, "units")
-    return body, format, digits, units, check.arguments(KINDS, **options)
+    return body, format, digits, units, check.arguments(checkers(REPORT), **options)
 
 
 def report_text(body: Body, *, format: str = "html", digits: int = 6,  # noqa: A002
                 units: str | None = None, **options: Any) -> str:
-    """The report of ``body`` as one document's text.
+    """The report of ``body`` as one document's text: the bytes ``rbcli report`` writes for
+    the same options (set ``SOURCE_DATE_EPOCH`` for a fixed date).
 
-    Parameters
-    ----------
-    body : rbcli.Body
-    format : {"html", "md"}
-        One self-contained HTML5 file (inline CSS and SVG figures), or Markdown whose
-        figures are linked as ``report_files/NAME.svg`` (:func:`write_report` writes them).
-    digits : int
-        Significant figures in the tables, 1 to 17.
-    units : str, optional
-        Units of the tables, e.g. ``"mm,g"`` (default SI).
-    **options
-        The options of :func:`rbcli.report` (``spin``, ``theta``, ``planes``, ...).
-
-    Returns
-    -------
-    str
-        The document (the bytes ``rbcli report`` writes for the same options; set
-        ``SOURCE_DATE_EPOCH`` for a fixed date).
-
-    Raises
-    ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected.
-    rbcli.InputError
-        naming the parameter, for a value a command refuses.
+    ``format`` "html" is one self-contained file, "md" Markdown whose figures are linked as
+    ``report_files/NAME.svg``; ``digits`` the tables' significant figures (1 to 17); ``units``
+    theirs (``"mm,g"``, default SI); ``**options`` the parameters of :func:`rbcli.report`.
+    A TypeError or an :class:`rbcli.InputError` names the parameter at fault.
 
     Examples
     --------
     >>> import rbcli
     >>> html = rbcli.report_text(rbcli.load("examples/top.yaml"), spin=150, theta=30)
     >>> html.startswith("<!DOCTYPE html>")
-    True
-    """
-    from rbcli.api.report import ReportOptions, run
-    from rbcli.render import report as R
-    from rbcli.render.reportdoc import document
-
+    True"""
     body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
     if format is None:
         raise TypeError("format: expected a str, got NoneType")
     fmt = _format(format)
     digits, du = _layout(digits, units)
-    from rbcli.api import check
-
     with check.arithmetic(options):
-        doc = document(run(body, ReportOptions.parse(body, **options)), du, digits)
+        doc = document(run(body, parse(body, **options)), du, digits)
     return R.html(doc) if fmt == ".html" else R.markdown(doc, "report_files")[0]
 
 
@@ -118,8 +90,6 @@ def check_report_path(path: str | PathLike, body: Body, *, force: bool = False) 
     rbcli.InputError
         naming ``path`` (the command line's ``-o``).
     """
-    from rbcli.io import outfile
-
     p = outfile.check(path, body, "path", force=force, exts=FORMATS)
     ext = p.suffix.lower()
     files = outfile.files_dir(p)
@@ -133,36 +103,14 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
                  units: str | None = None,
                  progress: Callable[[str, int, int], None] | None = None,
                  **options: Any) -> ReportResult:
-    """Write the report of ``body`` to ``path`` and return what it found.
+    """Write the report of ``body`` to ``path`` (``.html``, or ``.md`` with its figures in
+    ``FILE_files/``) and return what it found (:class:`rbcli.api.report.ReportResult`,
+    ``return_code`` 1 when a check asked for failed; the report is written all the same).
 
-    ``.html`` is one self-contained file; ``.md`` writes its figures to ``FILE_files/``
-    beside it. All or nothing; an existing report (and figures folder) is replaced only
-    with ``force``; an input file (the body, a file it includes, a mesh it reads) never.
-
-    Parameters
-    ----------
-    body : rbcli.Body
-    path : str or path-like — ``.html`` or ``.md``
-    force : bool — replace an existing report
-    format : {"html", "md"}, optional — must agree with the extension when given
-    digits, units : as :func:`report_text`
-    progress : callable, optional — ``progress(what, i, n)`` before each step
-    **options : the options of :func:`rbcli.report`
-
-    Returns
-    -------
-    ReportResult
-        ``return_code`` is 1 when a check asked for failed (``failed`` says which), as the
-        command's exit status; the report is written all the same.
-
-    Raises
-    ------
-    rbcli.InputError
-        naming the parameter, for a value a command refuses or a path that may not be
-        written.
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected (``force``
-        that is not ``True`` or ``False``: never read as true).
+    All or nothing; an existing report only with ``force``; an input file never. ``format``
+    must agree with the extension; ``digits``, ``units``, ``**options`` as :func:`report_text`;
+    ``progress(what, i, n)`` is called before each step. A TypeError or an
+    :class:`rbcli.InputError` names the parameter at fault (``force`` must be a bool).
 
     Examples
     --------
@@ -170,16 +118,7 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "top.html"
     >>> r = rbcli.write_report(rbcli.load("examples/top.yaml"), out, spin=150, theta=30)
     >>> r.return_code, out.exists()
-    (0, True)
-    """
-    from rbcli.api.report import ReportOptions, run
-    from rbcli.errors import ParamError
-    from rbcli.io.outfile import write_document
-    from rbcli.render import report as R
-    from rbcli.render.reportdoc import document
-
-    from rbcli.api import check
-
+    (0, True)"""
     body, format, digits, units, options = _door(body, format, digits, units, options)  # noqa: A001
     path = check.path(path, "path")
     if path is None:
@@ -190,17 +129,15 @@ def write_report(body: Body, path: str | PathLike, *, force: bool = False,
     digits, du = _layout(digits, units)
     ext, p, files = check_report_path(path, body, force=force)
     if fmt is not None and fmt != ext:
-        from rbcli.errors import literal
-
         raise ParamError("format", f"'{literal(format)}' does not match the file '{literal(path)}' ({ext})")
     with check.arithmetic(options):
-        result = run(body, ReportOptions.parse(body, **options), progress)
+        result = run(body, parse(body, **options), progress)
         doc = document(result, du, digits, progress)
     if progress is not None:
         progress("writing", 1, 1)
     if ext == ".html":
-        write_document(p, R.html(doc), "path", replace=force)
+        outfile.write_document(p, R.html(doc), "path", replace=force)
     else:
         text, figures = R.markdown(doc, files.name)
-        write_document(p, text, "path", replace=force, folder=files, files=figures)
+        outfile.write_document(p, text, "path", replace=force, folder=files, files=figures)
     return result

@@ -17,7 +17,7 @@ import pytest
 import rbcli
 from conftest import sampled_params
 from rbcli.errors import option_name
-from rbcli.api.report import ReportOptions, ReportResult, run
+from rbcli.api.report import ReportResult, parse, run
 
 ROOT = Path(__file__).resolve().parent.parent
 EPOCH = "1700000000"
@@ -102,7 +102,7 @@ def test_written_through_the_api_as_by_the_cli(cli, tmp_path, name):
 def test_the_result_says_which_sections_and_checks():
     body = _body("two_disk_rotor")
     _, kw = CASES["two_disk_rotor"]
-    res = run(body, ReportOptions.parse(body, **kw))
+    res = run(body, parse(body, **kw))
     j = res.to_json()
     assert [s["key"] for s in j["sections"]] == [
         "parts", "mass-properties", "principal-axes", "balance", "whirl", "free-precession",
@@ -112,7 +112,7 @@ def test_the_result_says_which_sections_and_checks():
     assert res.failed == ("balance: the rotor as given fails ISO 21940-11 G6.3",) and res.return_code == 1
     assert [s.key for s in res.sections] == [s["key"] for s in j["sections"]]
     # SI numbers are taken as the commands take them
-    res2 = run(body, ReportOptions.parse(body, planes=[0.0, 0.4], radius=0.1, speed="3000 rpm",
+    res2 = run(body, parse(body, planes=[0.0, 0.4], radius=0.1, speed="3000 rpm",
                                          bearings=[0, 0.4], grade=6.3))
     assert res2.return_code == 1
 

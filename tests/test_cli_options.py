@@ -25,7 +25,9 @@ import pytest
 
 import rbcli
 from rbcli.errors import option_name
+from rbcli.render.text import check_finite_doc
 from rbcli.cli import app
+from rbcli.api import options as op
 from rbcli.cli import common as c
 from rbcli.errors import InputError, NonFiniteResult
 
@@ -72,7 +74,7 @@ ULP = 1e-15
 ])
 def test_unit_rule(text, kind, bare, want):
     n = len(want)
-    got = c.numbers(text, kind, "--opt", counts=(n,), bare=bare)
+    got = op.numbers(text, kind, "--opt", counts=(n,), bare=bare)
     si_unit = {"length": "m", "angular_speed": "rad/s", "angle": "rad"}[kind]
     for g, w in zip(got, want):
         assert g == pytest.approx(si(w, si_unit), rel=4 * ULP, abs=0.0)
@@ -91,21 +93,21 @@ def test_unit_rule(text, kind, bare, want):
 ])
 def test_unit_rule_refuses(text, says):
     with pytest.raises(InputError) as info:
-        c.numbers(text, "length", "opt", counts=(3,))
+        op.numbers(text, "length", "opt", counts=(3,))
     assert str(info.value).startswith("opt: ") and says in str(info.value)
     assert info.value.spelled(option_name).startswith("--opt: ")
 
 
 def test_scalar_quantity_unchanged_and_degrees_exact():
-    assert c.quantity("2.5", "length", "--x") == 2.5  # bare: SI
-    assert c.quantity("30", "angle", "--x", bare="deg") == pytest.approx(math.pi / 6, rel=ULP)
-    assert c.quantity("1500 rpm", "angular_speed", "--x") == pytest.approx(si("1500 rpm", "rad/s"), rel=ULP)
-    assert c.degrees("30", "--x") == 30.0  # a bare number of degrees is kept exactly
-    assert c.degrees("0.5 rad", "--x") == pytest.approx(math.degrees(0.5), rel=ULP)
-    assert c.point("com", "--p") == "com" and c.point("origin", "--p") == "origin"
-    assert c.point("0,0,5 cm", "--p") == [0.0, 0.0, pytest.approx(0.05, rel=ULP)]
+    assert op.quantity("2.5", "length", "--x") == 2.5  # bare: SI
+    assert op.quantity("30", "angle", "--x", bare="deg") == pytest.approx(math.pi / 6, rel=ULP)
+    assert op.quantity("1500 rpm", "angular_speed", "--x") == pytest.approx(si("1500 rpm", "rad/s"), rel=ULP)
+    assert op.degrees("30", "--x") == 30.0  # a bare number of degrees is kept exactly
+    assert op.degrees("0.5 rad", "--x") == pytest.approx(math.degrees(0.5), rel=ULP)
+    assert op.point("com", "--p") == "com" and op.point("origin", "--p") == "origin"
+    assert op.point("0,0,5 cm", "--p") == [0.0, 0.0, pytest.approx(0.05, rel=ULP)]
     with pytest.raises(InputError, match="^x: "):
-        c.quantity("3 kg", "length", "x")
+        op.quantity("3 kg", "length", "x")
 
 
 # ----------------------------------------------------------------------------- through the CLI
@@ -339,15 +341,15 @@ def test_tables_refuse_inf_and_nan_in_number_columns_only():
     ok = Doc()
     ok.table("parts", ["name", "mass [kg]"], [["nan", "1"], ["inf", "2"]], right=(1,))  # names
     ok.note("a note may say inf")
-    c.check_finite_doc(ok)
+    check_finite_doc(ok)
     for cell in ("inf", "-inf", "nan", "1500 rpm = inf", "[1, nan, 0]"):
         bad = Doc()
         bad.kv("dynamics", [("speed", cell, "rad/s")])
         with pytest.raises(NonFiniteResult, match="'speed' in the table 'dynamics' is not a finite number"):
-            c.check_finite_doc(bad)
+            check_finite_doc(bad)
     fine = Doc()
     fine.kv("numbers", [("tiny", "1e-300", "m"), ("info", "0.5", "")])
-    c.check_finite_doc(fine)
+    check_finite_doc(fine)
 
 
 # ----------------------------------------------------------------------------- typer coercion (F13)

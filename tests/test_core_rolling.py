@@ -30,7 +30,6 @@ from rbcli.core.rolling import (
     StraightRolling,
     Verdict,
     at_speed,
-    margin_curve,
     rollcheck,
     straight,
 )
@@ -316,21 +315,6 @@ def test_a_tyre_radius_equal_to_the_rim_radius_is_a_sphere():
 def test_bad_radius_or_gravity_refused(a, g):
     with pytest.raises(InputError):
         straight(Wheel(1.0, 0.09, 0.13), a, 0.0, g)
-
-
-def test_margin_curve_matches_verdicts():
-    a, r, g = 0.35, 0.015, 9.80665
-    w = Wheel(1.9, 0.1, 0.19)
-    speeds = np.linspace(-3.0, 3.0, 41)
-    nu2 = margin_curve(w, a, r, g, speeds)
-    st_ = straight(w, a, r, g)
-    assert nu2.shape == speeds.shape
-    for v, n2 in zip(speeds, nu2):
-        assert n2 == pytest.approx(at_speed(st_, v=v).nu2, rel=1e-14, abs=1e-14)  # same flops
-    # zero exactly at +-v_c (to round-off of the squares)
-    z = margin_curve(w, a, r, g, [st_.critical_speed, -st_.critical_speed])
-    scale = w.C * st_.C_contact * st_.critical_spin**2 / (w.A * st_.A_contact)
-    assert np.all(np.abs(z) < 1e-14 * scale)
 
 
 # --------------------------------------------------------------------------- nonlinear threshold

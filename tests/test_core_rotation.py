@@ -312,37 +312,6 @@ def test_from_matrix_rejects_wrong_shape_or_non_finite(m) -> None:
         rot.from_matrix(m)
 
 
-# -------------------------------------------------------------------------- rotate_tensor
-
-
-@settings(max_examples=50, deadline=None)
-@given(q=st.lists(components, min_size=4, max_size=4).filter(lambda q: np.linalg.norm(q) > 1e-3),
-       diag=st.lists(st.floats(0.1, 10.0), min_size=3, max_size=3))
-def test_rotate_tensor_is_similarity_and_symmetric(q, diag) -> None:
-    r = rot.quaternion(q)
-    t = np.diag(diag)
-    t[0, 1] = t[1, 0] = 0.05
-    out = rot.rotate_tensor(r, t)
-    assert np.array_equal(out, out.T)  # symmetric input -> exactly symmetric output
-    np.testing.assert_allclose(out, np.einsum("ij,jk,lk->il", r, t, r), rtol=0, atol=1e-12)
-    # 1e-12: entries up to 10, two 3x3 products -> ~10 * 10 * 1.1e-16 each
-    # the principal moments are invariant (eigenvalues of a similar matrix)
-    np.testing.assert_allclose(np.linalg.eigvalsh(out), np.linalg.eigvalsh(t), rtol=0, atol=1e-12)
-    # 1e-12: eigvalsh backward error ~ n * eps * |T| ~ 3 * 1.1e-16 * 10
-
-
-def test_rotate_tensor_moves_axes() -> None:
-    # a rod along local z (Izz = 0) pointed along body x has Ixx = 0 in the body frame
-    t = np.diag([1.0, 1.0, 0.0])
-    out = rot.rotate_tensor(rot.axis_to_z([1, 0, 0]), t)
-    np.testing.assert_allclose(out, np.diag([0.0, 1.0, 1.0]), rtol=0, atol=1e-15)  # exact trig
-
-
-def test_rotate_tensor_rejects_wrong_shapes() -> None:
-    with pytest.raises(ValueError, match="3x3"):
-        rot.rotate_tensor(np.eye(3), np.eye(2))
-
-
 # ----------------------------------------------------------------------------- quaternion kit
 
 

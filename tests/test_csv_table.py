@@ -246,12 +246,19 @@ def test_units_named_for_every_number():
     """The unit table knows every numeric key of every command's golden JSON (else the CSV's
     unit column would be empty): checked by check_against_json above for each case; here the
     documented names of a few, against the man pages' JSON sections."""
-    from rbcli.render.csvunits import lookup
+    from rbcli.api.commands import TABLES
+    from rbcli.api.params import si_unit
+    from rbcli.render import csvunits
+
+    def lookup(command, path):  # as the command line looks it up: with its parameters' units
+        return csvunits.lookup(command, path, {p.name: si_unit(p) for p in TABLES[command]})
 
     assert lookup("inertia", "inertia[1][2]") == "kg*m^2"
     assert lookup("balance", "corrections[0].unbalance") == "kg*m"
     assert lookup("balance", "iso.achieved_grade[1]") == "mm/s"  # ISO 21940-11's G, mm/s
     assert lookup("rollcheck", "speed") == "m/s" and lookup("whirl", "speed[0]") == "rad/s"
+    assert lookup("whirl", "cross_stiffness[1]") == "N/m"  # from the parameter's table
+    assert csvunits.lookup("whirl", "cross_stiffness[1]") is None  # (not in csvunits)
     assert lookup("top", "theta1_deg") == "deg"
     assert lookup("precess", "at.rotation_matrix[2][1]") == "1"
 

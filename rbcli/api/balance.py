@@ -1,18 +1,11 @@
 """Rotor balance about a shaft: the service behind ``rbcli balance``.
 
-:func:`balance` reads its parameters once (:data:`rbcli.api.commands.BALANCE`, :func:`parse`:
-SI numbers or quantity strings, the body's rim radius for a correction radius not given) and
-runs the physics of :mod:`rbcli.core.balance` (:func:`run`): the unbalance about the shaft,
-two-plane corrections (rounded or on fixed positions) with the residual they leave, bearing
-forces at speed and the ISO 21940-11 check. The result (:class:`BalanceResult`) is frozen,
-knows its JSON (``to_json()``, exactly what ``rbcli balance --json`` prints less ``file``)
-and its exit status (1 when the rotor as given fails the grade). Trial-weight balancing from
-vibration readings is :mod:`rbcli.api.field`.
-
-The physics and its sources: the physics sheet ``physics/balance.md`` (cited in
-:mod:`rbcli.core.balance`), ISO 21940-11:2016 "Mechanical vibration — Rotor balancing —
-Part 11: Procedures and tolerances for rotors with rigid behaviour".
-"""
+:func:`parse` reads the parameters (:data:`rbcli.api.commands.BALANCE`), :func:`run` the
+physics of :mod:`rbcli.core.balance` (physics sheet ``balance.md``; ISO 21940-11:2016): the
+unbalance about the shaft, two-plane corrections (rounded or on fixed positions) and their
+residual, bearing forces and the ISO check, in a :class:`BalanceResult` (its JSON is
+``rbcli balance --json`` less ``file``; exit status 1 when the rotor fails the grade).
+Trial-weight balancing is :mod:`rbcli.api.field`."""
 
 from __future__ import annotations
 
@@ -67,16 +60,10 @@ def _num(x: float) -> str:
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
-    """The keyword arguments of :func:`balance` (see there) read for ``body`` and checked:
-    :class:`rbcli.api.params.Options` in SI, ``radius`` r or (rA, rB) (the body's
-    ``rim_radius`` when not given), the defaults of ``g``, ``angle_sense``,
-    ``tolerance_planes`` and ``zero_mark_deg`` filled in.
-
-    Raises
-    ------
-    rbcli.InputError
-        one line naming the parameter (``planes: ...``).
-    """
+    """The keyword arguments of :func:`balance` read for ``body``: Options in SI, ``radius``
+    (rA, rB) (the body's ``rim_radius`` when not given), the defaults of ``g``,
+    ``angle_sense``, ``tolerance_planes`` and ``zero_mark_deg`` filled in; an InputError naming
+    the parameter."""
     if kwargs.get("angle_sense") == "with":  # the default (the command line always passes it)
         kwargs = {**kwargs, "angle_sense": None}
     o = read(body, BALANCE, kwargs)
@@ -157,29 +144,19 @@ class BalanceResult(Result):
 
     Attributes
     ----------
-    body : Body — the rotor
-    options : rbcli.api.params.Options — the parameters as read (:func:`parse`)
-    unbalance : rbcli.core.balance.Unbalance — about the shaft: ``mass`` (kg), ``static``
-        U (kg m, complex), ``couple`` P_G (kg m², about the com), ``moment`` P (about z = 0),
-        ``eccentricity`` (m), ``tilt_deg``, ``statically_balanced``, ``dynamically_balanced``,
-        ``frame`` (the shaft frame)
-    shaft_source, through_source, mark_source : str — where the shaft, its point and the 0°
-        mark came from
-    angle_convention : str — the angle convention, in words
-    ideal : rbcli.core.balance.Corrections | None — with ``planes``: the exact two-plane
-        corrections (masses kg, radii m, angles deg)
-    installed : rbcli.core.balance.Corrections | None — what to fit: rounded when asked, the
-        net of the masses at the positions with ``positions``; its ``residual`` is the rotor
-        with exactly those masses added
-    position_split : rbcli.core.balance.PositionCorrections | None — the masses on the positions
-    radius_source : Note | None — ``{radius}`` or "the body's rim_radius"
-    corrected_unbalance : rbcli.core.balance.Unbalance | None — the rotor with ``added`` fitted
+    body : Body; options : rbcli.api.params.Options — the parameters as read (:func:`parse`)
+    unbalance : rbcli.core.balance.Unbalance — about the shaft
+    shaft_source, through_source, mark_source, angle_convention : str — in words
+    ideal : Corrections or None — with ``planes``: the exact two-plane corrections
+    installed : Corrections or None — what to fit (rounded, or the net at the ``positions``);
+        its ``residual`` is the rotor with exactly those masses
+    position_split : PositionCorrections or None — the masses on the positions
+    radius_source : Note or None — ``{radius}`` or "the body's rim_radius"
+    corrected_unbalance : Unbalance or None — the rotor with ``added`` fitted
     added : tuple of AddedMass — the masses to fit as body points (kg, m)
-    forces : rbcli.core.balance.BearingForces | None — at ``speed`` (N), static loads (N)
-    forces_after : rbcli.core.balance.BearingForces | None — the same after the corrections
-    iso_check : rbcli.core.balance.IsoCheck | None — the ISO 21940-11 check (``passed``)
-    warnings : tuple of str — one-line warnings (the command prints them on standard error)
-    """
+    forces, forces_after : BearingForces or None — at ``speed``, before and after (N)
+    iso_check : IsoCheck or None — the ISO 21940-11 check
+    warnings : tuple of str"""
 
     body: Body
     options: Options
@@ -268,24 +245,10 @@ class BalanceResult(Result):
     def balanced_body(self) -> Body:
         """The rotor with the correction masses fitted: what ``rbcli balance --apply`` writes.
 
-        The masses to fit (:attr:`added`: the corrections rounded with ``mass_step`` and
-        ``angle_step``, or split onto the ``positions``) become ``point`` parts named
-        ``balance A`` and ``balance B`` (``balance A (position 3)`` with ``positions``; a
-        name already used gets `` (2)``), their numbers written in explicit units (grams and
-        millimetres, 15 significant figures) whatever the body's ``units``. The new body is
-        checked as any body is; ``.to_yaml()`` writes it.
-
-        Returns
-        -------
-        Body
-            The balanced rotor (``source`` ``"<data>"``); balancing it again leaves the
-            residual of ``installed.residual``, to the 15 figures written.
-
-        Raises
-        ------
-        rbcli.InputError
-            Without the correction planes (``planes``) there is nothing to fit; or the
-            rotor is not one rbcli read or built (see :meth:`rbcli.Body.to_yaml`).
+        The masses of :attr:`added` become ``point`` parts ``balance A`` and ``balance B``
+        (``balance A (position 3)`` with ``positions``; a name already used gets `` (2)``), in
+        grams and millimetres to 15 figures. An InputError without ``planes`` (nothing to fit) or
+        for a rotor rbcli did not read or build (:meth:`rbcli.Body.to_yaml`).
 
         Examples
         --------
@@ -297,8 +260,7 @@ class BalanceResult(Result):
         ['balance A', 'balance B']
         >>> again = rbcli.balance(fitted, planes="0,400 mm", radius="100 mm")
         >>> bool(again.corrections[0].mass < 1e-3)    # less than the 1 g step, kg
-        True
-        """
+        True"""
         if self.installed is None:
             raise ParamError("planes", "balanced_body() needs the correction planes: "
                              "balance(..., {planes}=\"zA,zB\")")
@@ -511,13 +473,12 @@ def _convention(angle_sense: str) -> Note:
 def balance(body: Body, **kwargs: Any) -> BalanceResult:
     """Unbalance of a rotor about its shaft, corrections, bearing forces and ISO 21940-11.
 
-    Every value may be an SI number (a sequence for lists) or a string as typed on the
-    command line (``"0,400 mm"``, ``"3000 rpm"``, ``"5 g"``): the rules of ``rbcli balance``.
+    Values are SI numbers or strings as typed on the command line (``"0,400 mm"``,
+    ``"3000 rpm"``, ``"5 g"``), read by the rules of ``rbcli balance``.
 
     Parameters
     ----------
     body : Body
-        The rotor (:func:`rbcli.load`).
     {parameters}
 
     Returns
@@ -527,11 +488,8 @@ def balance(body: Body, **kwargs: Any) -> BalanceResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad or missing value, naming the parameter and ``param``.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter.
 
     Examples
     --------
@@ -539,6 +497,5 @@ def balance(body: Body, **kwargs: Any) -> BalanceResult:
     >>> r = rbcli.balance(rbcli.load("examples/two_disk_rotor.yaml"), planes="0,400 mm",
     ...                   radius="100 mm")
     >>> round(r.corrections[0].mass * 1e3, 4)   # g, plane A
-    8.5
-    """
+    8.5"""
     return run(body, parse(body, **kwargs))

@@ -217,18 +217,9 @@ def balance_json(
     forces: B.BearingForces | None = None,
     iso: B.IsoCheck | None = None,
 ) -> dict:
-    """The SPEC §3 part of ``rbcli balance --json``, SI units, no NaN.
-
-    Keys: everything of :func:`unbalance_json` (``mass``, ``eccentricity``,
-    ``static_unbalance``, ``static_unbalance_angle_deg``, ``couple_unbalance``, ``tilt_deg``,
-    ``statically_balanced``, ``dynamically_balanced``, ...); with corrections:
-    ``corrections`` [{``plane`` (z, m), ``name``, ``mass``, ``radius``, ``angle_deg``, ...}],
-    ``static_correction``, ``correction_details``; with forces: ``bearing_forces``
-    [{``plane``, ``name``, ``force``, ``angle_deg``, ``static_load``, ...}] (only when
-    bearings were given) and ``dynamics`` (speed, angular momentum, torque); with iso:
-    ``iso`` {``grade``, ``permissible_unbalance``, ``allowed`` [2], ``residual`` [2],
-    ``pass``, ...} (the rotor as given; ``iso.after`` predicts the corrected rotor).
-    """
+    """The SPEC §3 part of ``rbcli balance --json`` (SI, no NaN): :func:`unbalance_json`'s
+    keys, and ``corrections``, ``static_correction``, ``correction_details``,
+    ``bearing_forces``, ``dynamics`` and ``iso`` when asked for (the man page lists them)."""
     d = unbalance_json(unb)
     if corrections is not None:
         cj = corrections_json(corrections)

@@ -1,33 +1,16 @@
 """The arguments of the public API, checked at the door (issue 27 item 1).
 
-Every public function (``rbcli.inertia``, ``rbcli.balance``, ...) and every method of a
-result that takes arguments passes its arguments through these checkers *before anything
-else*, so that whatever a caller passes, only two errors come out:
+Every public function and result method passes its arguments through these checkers first,
+so only two errors come out: a :class:`TypeError` naming the parameter and the type
+expected, and an :class:`rbcli.InputError` naming it for a value of the right type that
+cannot be used (too large for a float, far longer than the parameter takes — refused by its
+length before it is read —, NaN where a time is asked for).
 
-- a :class:`TypeError` naming the parameter and the type expected, for a value of the wrong
-  type (``body=None``, ``body="rotor.yaml"``, ``force="false"``, ``samples=2.5``,
-  ``spin={"x": 1}``), as numpy and scipy do;
-- an :class:`rbcli.InputError` (a ``ValueError``) naming the parameter, for a value of the
-  right type that cannot be used: a number too large for a float (``10**400``), a sequence
-  or string far longer than any the parameter takes (refused by its length, before it is
-  read, so ``about=np.zeros(10**7)`` costs nothing and says so in one short line), NaN or
-  inf where a time is asked for.
-
-A checker returns the value in plain Python types (a ``str``, a ``float``, a ``tuple`` of
-them, an ``int``, a ``bool``): numpy scalars and 0-d arrays become floats, 1-D arrays tuples,
-so the readers of :mod:`rbcli.api.options` never see a numpy subclass, a cyclic list or an
-object whose ``__float__`` raises. What a *value* means (units, ranges, the body's defaults)
-is for those readers and the services, with the command line's messages.
-
-A user's object is asked as little as possible: a number is any :class:`numbers.Real` but
-``bool`` (its ``__float__`` asked once, any exception it raises a TypeError); a sequence is a
-``list``, a ``tuple``, a 1-D array or another :class:`collections.abc.Sequence` (its
-``len()`` asked first, refused beyond the parameter's size, never walked deeper than the
-parameter's own nesting, so a list that contains itself is a TypeError, not a recursion).
-
-The aliases :data:`Quantity`, :data:`Vector`, :data:`Point` and :data:`Values` are the types of
-the public signatures. Standard library only at module level.
-"""
+A checker returns plain Python types (numpy scalars become floats, 1-D arrays tuples), so
+the readers of :mod:`rbcli.api.options` never see a numpy subclass, a cyclic list or a
+failing ``__float__``; a user's object is asked as little as possible (``len()`` first,
+never walked deeper than the parameter's nesting). :data:`Quantity`, :data:`Vector`,
+:data:`Point` and :data:`Values` are the types of the public signatures."""
 
 from __future__ import annotations
 
@@ -38,6 +21,8 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
+from rbcli.api import options as op
+from rbcli.env import clean
 from rbcli.errors import NonFiniteResult, ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -74,8 +59,6 @@ _NUMBER = "a number or a quantity string"
 def _type(value: object) -> str:
     """How a message names the type of ``value`` (never its text; a class's name made safe
     to show, as the command line shows names: :func:`rbcli.env.clean`)."""
-    from rbcli.env import clean
-
     t = type(value)
     name = t.__name__ if t.__module__ in ("builtins", None) else f"{t.__module__}.{t.__qualname__}"
     return clean(name, max_line=120)
@@ -215,7 +198,7 @@ def _total(value: Any, param: str) -> Any:
 def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | None:
     """``value`` if it is an :class:`rbcli.Body` (None too when ``optional``), else a
     TypeError saying how to get one (a path is not a body: ``rbcli.load(path)`` reads it)."""
-    from rbcli.body.model import Body
+    from rbcli.body.model import Body  # (numpy: this module is on the command line's import path)
 
     if isinstance(value, Body) or (optional and value is None):
         return value
@@ -375,8 +358,6 @@ def times(value: Any, param: str = "t", *, most: int = MAX_TIMES, ndim: int | No
             or _shape(value) == ():
         x = _scalar(value, param, "a time: a number (s), a quantity string or an array of numbers")
         if isinstance(x, str):
-            from rbcli.api import options as op
-
             return op.quantity(x, "time", param)
         if not math.isfinite(x):
             raise ParamError(param, f"a time must be a finite number (s), got {x}")

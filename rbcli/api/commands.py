@@ -1,10 +1,9 @@
 """The parameters of every command, each declared once (:class:`rbcli.api.params.Param`).
 
-A command's table gives its public function's signature, argument checks and docstring
-parameters, its typer options and ``--help``, how each value is read, and the options echo
+A command's table makes its public function's signature, checks and docstring, its typer
+options and ``--help``, how each value is read, the options echo and the CSV units
 (:mod:`rbcli.api.params`). Adding an option: its declaration here, the physics that uses it
-(its service in ``rbcli/api/<command>.py``), and a test. This module is light (no numpy): the
-command line builds ``--help`` from it.
+(``rbcli/api/<command>.py``), a test. Light (no numpy): the command line builds ``--help``.
 """
 
 from __future__ import annotations
@@ -20,7 +19,7 @@ from rbcli.errors import literal
 from rbcli.io.field import CHOICES
 
 __all__ = ["INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS", "TOP", "GYROCOMPASS",
-           "ROLLCHECK", "WHIRL"]
+           "ROLLCHECK", "WHIRL", "REPORT", "TABLES"]
 
 # ----------------------------------------------------------------------------- shared
 
@@ -395,8 +394,6 @@ ROLLCHECK = (
     _NO_SYMMETRY_ECHO,
 )
 
-# ----------------------------------------------------------------------------- report
-
 # ----------------------------------------------------------------------------- whirl
 
 #: the default number of speeds of the Campbell diagram and the response
@@ -497,3 +494,62 @@ WHIRL = (
 )
 
 
+
+# ----------------------------------------------------------------------------- report
+
+
+def _worded(table: tuple[Param, ...], name: str, help: str, **changes: Any) -> Param:
+    """Parameter ``name`` of a command's ``table``, worded for the report."""
+    return replace(next(p for p in table if p.name == name), help=help, **changes)
+
+
+#: :func:`rbcli.report` and ``rbcli report``: other commands' parameters, each section's
+#: read by its command (:func:`rbcli.api.report.parse`)
+REPORT = (
+    replace(SHAFT, help="Balance and rolling: shaft (axle) direction x,y,z (or x, y, z). Default: "
+            "the body's shaft; without either there is no balance section."),
+    replace(THROUGH, help="Balance and rolling: a point of the shaft: com, origin or x,y,z "
+            f"({_BARE_LENGTH}; a unit after the last number applies to all, e.g. '0,0,50 mm'). "
+            "Default: the body's shaft point, else the origin."),
+    _worded(BALANCE, "planes", f"Balance: correction planes zA,zB along the shaft ({_BARE_LENGTH}; "
+            "a unit after the last number applies to both, e.g. '-100,100 mm')."),
+    _worded(BALANCE, "radius", f"Balance: correction radius r, or rA,rB ({_BARE_LENGTH}; or with "
+            "units as for {planes}). Default: the body's rim_radius."),
+    _worded(BALANCE, "bearings", "Balance: bearing positions z1,z2 along the shaft "
+            f"({_BARE_LENGTH}; a unit after the last number applies to both, e.g. '-50,150 mm')."),
+    _worded(BALANCE, "grade", "Balance: ISO 21940-11 grade, e.g. G6.3; needs an angular {speed} "
+            "and {bearings}."),
+    _worded(BALANCE, "speed", "With a unit: an angular speed ('3000 rpm', rad/s) is the balance "
+            "rotor speed, the whirl operating speed and the rolling spin; a speed ('20 km/h', "
+            "m/s) is the rolling speed."),
+    _worded(WHIRL, "stiffness", "Whirl: the bearings' stiffness (N/m, or with units, e.g. '200 "
+            "N/mm'), one value for every bearing or one per {bearings} position; the report then "
+            "has a whirl section (critical speeds, Campbell diagram, unbalance response).",
+            counts=(1, 2)),
+    _worded(WHIRL, "damping", "Whirl: the bearings' damping (N s/m, or with units), one value or "
+            "one per bearing. Default: none.", counts=(1, 2)),
+    _worded(PRECESS, "omega", "Free precession: initial angular velocity x,y,z, body frame (rad/s;"
+            " a unit after the last number applies to all, e.g. '0,0,300 rpm')."),
+    _worded(TOP, "pivot", f"Heavy top: the fixed point: com, origin or x,y,z ({_BARE_LENGTH}; a "
+            "unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's "
+            "pivot; without either there is no top section."),
+    _worded(TOP, "spin", "Heavy top: spin about the symmetry axis (a bare number is rad/s, or the "
+            "body's units' angular_speed; or e.g. '3000 rpm')."),
+    _worded(TOP, "theta", "Heavy top: start tilt of the axis from the upward vertical (degrees, or"
+            " with units)."),
+    _worded(TOP, "theta_dot", "Heavy top: start rate theta' (rad/s, or with units). Default: 0."),
+    _worded(TOP, "phi_dot", "Heavy top: start precession rate phi' (rad/s, or with units). "
+            "Default: 0."),
+    _worded(ROLLCHECK, "rim_radius", f"Rolling: rim radius ({_BARE_LENGTH}; or with units). "
+            "Default: the body's rim_radius, else the largest round part coaxial with the axle."),
+    _worded(ROLLCHECK, "tyre_radius", f"Rolling: tube radius of a rounded rim ({_BARE_LENGTH}; or "
+            "with units). Default: 0, a knife edge."),
+    SYMMETRY_TOL,
+    replace(G, help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units)."
+            " Default: 9.80665 m/s^2."),
+)
+
+#: each command's table, by the command's name
+TABLES = {"inertia": INERTIA, "principal": PRINCIPAL, "balance": BALANCE, "precess": PRECESS,
+          "field-balance": FIELD_BALANCE, "top": TOP, "gyrocompass": GYROCOMPASS,
+          "rollcheck": ROLLCHECK, "whirl": WHIRL, "report": REPORT}

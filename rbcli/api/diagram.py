@@ -16,23 +16,11 @@ __all__ = ["Arrow", "Panel", "Diagram"]
 
 @dataclass(frozen=True)
 class Arrow:
-    """One vector of a diagram.
-
-    Attributes
-    ----------
-    role : str — what it is, which sets how it is drawn: "initial" (the unbalance or
-        reading as given), "correction" (a mass to add), "residual" (what is left),
-        "trial" (a trial mass), "run" (a reading with a trial on), "effect" (the change a
-        trial made: from the tip of the initial reading to the tip of the run's)
-    label : str — e.g. "A: correction"
-    magnitude : float — SI (kg m for an unbalance, kg m² for a couple, kg for a mass, the
-        reading's unit for a reading)
-    angle_deg : float — deg, as the command prints it ([0, 360))
-    defined : bool — False for a quantity zero to its tolerance (no direction; not drawn)
-    mass : float | None — kg, the mass a correction or trial arrow stands for
-    tail : (float, float) | None — (magnitude, angle_deg) the arrow starts at; None: the
-        centre
-    """
+    """One vector of a diagram: ``role`` ("initial", "correction", "residual", "trial", "run",
+    "effect": how it is drawn), ``label``, ``magnitude`` (SI, or the reading's unit),
+    ``angle_deg`` (as printed, [0, 360)), ``defined`` (False: zero, not drawn), ``mass`` (kg,
+    for a correction or trial) and ``tail`` ((magnitude, angle_deg) it starts at; None: the
+    centre)."""
 
     role: str
     label: str
@@ -61,18 +49,9 @@ class Panel:
 
 @dataclass(frozen=True)
 class Diagram:
-    """A polar balancing diagram.
-
-    Attributes
-    ----------
-    title : str
-    panels : tuple of Panel
-    angle_sense : str — "with" (angles counted in the direction of rotation, drawn
-        counterclockwise: the rotor seen with its rotation counterclockwise) or "against"
-        (drawn clockwise, so every vector still sits where it is on the rotor)
-    note : str — the convention in words, for the figure's foot
-    reading_kind : str | None — the readings' kind (field balancing), None: relative
-    """
+    """A polar balancing diagram: ``title``, ``panels``, ``angle_sense`` ("with": drawn
+    counterclockwise; "against": clockwise, so each vector sits where it is on the rotor),
+    ``note`` (the convention, for the foot) and ``reading_kind`` (None: relative)."""
 
     title: str
     panels: tuple[Panel, ...]

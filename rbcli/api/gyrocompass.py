@@ -1,12 +1,6 @@
-"""The gyrocompass as a service: :func:`gyrocompass` (``rbcli gyrocompass``).
-
-A rotor spinning about its axis, the axis held horizontal and free to turn about the
-vertical, on the rotating Earth swings about north: ``rbcli.gyrocompass(ratio=2, spin="6000
-rpm", latitude=30)`` is ``rbcli gyrocompass --ratio 2 --spin '6000 rpm' --latitude 30``.
-The physics is :mod:`rbcli.core.gyrocompass`; values are read by :mod:`rbcli.api.options`
-(SI numbers, or strings as typed on the command line); errors are
-:class:`rbcli.errors.InputError` naming the parameter.
-"""
+"""The gyrocompass as a service: :func:`gyrocompass` (``rbcli gyrocompass``): a rotor whose
+axis is held horizontal on the rotating Earth swings about north
+(:mod:`rbcli.core.gyrocompass`)."""
 
 from __future__ import annotations
 
@@ -68,22 +62,14 @@ class GyrocompassResult(Result):
 
     Attributes
     ----------
-    swing : Gyrocompass — C/A, spin (rad/s), latitude (rad), Earth rate (rad/s), directive
-        (1/s²), omega0 and its estimate (rad/s), period (s) and where it settles (None
-        with no directive torque)
-    options : rbcli.api.params.Options — the inputs as understood (SI, :func:`parse`)
-    body : Body | None — the rotor's body (None with ``ratio``)
-    axis : tuple of 3 float | None — with a body: the unit spin axis, body frame
-    axis_source : Note | None — where it came from: ``{shaft}`` (the parameter, spelled by
-        the caller), ``"the body's shaft"`` or ``"body z (default)"``
-    C, A : float | None — kg m², with a body: the moments about and across the spin axis,
-        about the com
-    mass : float | None — kg, with a body
-    asymmetry : AxialSymmetry | None — for a rotor accepted as nearly symmetric about its
-        spin axis: how far it departs (A is then the mean of its two moments across)
-    warnings : tuple[str, ...] — located one-line warnings: a rim faster than sound, a nearly
-        symmetric rotor
-    """
+    swing : Gyrocompass — C/A, spin, latitude, Earth rate, directive, omega0 and its estimate,
+        period and where it settles (:class:`rbcli.core.gyrocompass.Gyrocompass`)
+    options : rbcli.api.params.Options — the inputs as read (:func:`parse`)
+    body : Body or None — the rotor's body (None with ``ratio``)
+    axis, axis_source — with a body: the unit spin axis (body frame) and where it came from
+    C, A, mass — with a body: kg m² about and across the spin axis (about the com), kg
+    asymmetry : AxialSymmetry or None — how far a nearly symmetric rotor departs
+    warnings : tuple of str — located one-line warnings"""
 
     swing: core.Gyrocompass
     options: Options
@@ -169,35 +155,28 @@ def _swing(ratio: float, o: Options, who: str) -> core.Gyrocompass:
 def gyrocompass(body: Body | None = None, **kwargs: Any) -> GyrocompassResult:
     """A gyrocompass: the period of its swing about north and where it settles.
 
-    A rotor spinning at ``spin`` about its axis, the axis held horizontal and free to turn
-    about the vertical, at ``latitude`` on the rotating Earth: ω0² = (C/A) S Ω_E cos λ -
-    Ω_E² cos² λ, period T = 2π/ω0 (undamped).
+    A rotor spinning at ``spin``, its axis horizontal and free to turn about the vertical, at
+    ``latitude``: ω0² = (C/A) S Ω_E cos λ - Ω_E² cos² λ, T = 2π/ω0 (undamped).
 
     Parameters
     ----------
-    body : Body, optional
-        A rotor symmetric about its spin axis (C and A about its centre of mass); or give
-        ``ratio`` instead.
+    body : Body, optional — a rotor symmetric about its spin axis; or ``ratio`` instead
     {parameters}
 
     Returns
     -------
     GyrocompassResult
-        ``result.swing.period`` (s), ``result.swing.settles_to``, ``result.to_json()``.
+        ``swing.period`` (s), ``swing.settles_to``, ``to_json()``.
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        Naming the parameter: a value out of range, both or neither of ``body``
-        and ``ratio``, a body not symmetric about its spin axis.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter: both or
+        neither of ``body`` and ``ratio``, a body not symmetric about its spin axis.
 
     Examples
     --------
     >>> import rbcli
     >>> round(rbcli.gyrocompass(ratio=2, spin="6000 rpm", latitude=30).swing.period, 3)
-    22.304
-    """
+    22.304"""
     return run(body, parse(body, **kwargs))

@@ -1,17 +1,7 @@
-"""Mass, centre of mass and the inertia tensor about a point: :func:`inertia` (``rbcli inertia``),
-and what :mod:`rbcli.api.principal` shares with it: the point an inertia is taken about
-(:class:`Reference`), the warnings of a point far outside the body, the parts' rows of the JSON.
-
-::
-
-    import rbcli
-    body = rbcli.load("examples/square_lamina.yaml")
-    r = rbcli.inertia(body, about="origin", axis=[1, 1, 0])
-    r.axis_moment            # kg m^2, about the diagonal through the corner
-
-Sign convention: the inertia tensor is the tensor, ``J = ∫ (r·r E − r rᵀ) dm``; its
-off-diagonal entries are the negated products of inertia (``Jxy = −∫ x y dm``).
-"""
+"""Mass, centre of mass and the inertia tensor about a point: :func:`inertia`
+(``rbcli inertia``), and what :mod:`rbcli.api.principal` shares with it: the point an
+inertia is about (:class:`Reference`), the warnings of a far point, the parts' JSON rows.
+The tensor is ``J = ∫ (r·r E − r rᵀ) dm`` (``Jxy = −∫ x y dm``)."""
 
 from __future__ import annotations
 
@@ -159,25 +149,14 @@ class InertiaResult(Result):
 
     Attributes
     ----------
-    name : str — the body's name
-    mass : float — kg
-    com : (3,) ndarray — m, body frame
-    reference : (3,) ndarray — m, the point ``inertia`` is about
-    reference_label : str — how tables name that point (``"the com"``, ...)
-    inertia : (3, 3) ndarray — kg m², about ``reference``, body axes, tensor convention
-    inertia_com : (3, 3) ndarray — kg m², about the com
-    axis : (3,) ndarray or None — the unit axis asked for (through ``reference``)
-    axis_moment : float or None — kg m², ``n·J·n``
-    omega : (3,) ndarray or None — rad/s
-    angular_momentum : (3,) ndarray or None — kg m²/s, ``L = J ω`` about ``reference``
-    kinetic_energy : float or None — J, ``ω·J·ω/2``
-    angle_L_omega_deg : float or None — degrees between L and ω
-    parts : tuple of dict — each part's contribution (see :func:`part_rows`)
-    warnings : tuple of str — a point or a rim speed far outside the body's scale
-
-    Methods: ``to_json()`` (the command's JSON less ``"file"``) and ``inertial(principal)``
-    (the numbers of a URDF/SDF/MJCF ``<inertial>`` element).
-    """
+    name : str; mass : float — kg; com : (3,) ndarray — m
+    reference : (3,) ndarray — m, the point ``inertia`` is about; reference_label : str
+    inertia, inertia_com : (3, 3) ndarray — kg m², about ``reference`` and the com (tensor)
+    axis, axis_moment — the unit axis asked for and ``n·J·n`` (kg m²), or None
+    omega, angular_momentum, kinetic_energy, angle_L_omega_deg — rad/s, ``L = J ω`` (kg m²/s),
+        ``ω·J·ω/2`` (J) and the angle between L and ω (degrees), or None
+    parts : tuple of dict — each part's contribution (:func:`part_rows`)
+    warnings : tuple of str — a point or a rim speed far outside the body's scale"""
 
     name: str
     mass: float
@@ -208,24 +187,10 @@ class InertiaResult(Result):
         return with_parts(out, self.parts)
 
     def inertial(self, principal: bool = False) -> Inertial:
-        """The numbers of the body's ``<inertial>`` element for URDF, SDF or MJCF.
-
-        Parameters
-        ----------
-        principal : bool
-            False: the tensor about the com in body axes (exactly ``inertia_com`` of
-            ``to_json()``); True: the principal moments about the com (ascending, as
-            :func:`principal` gives them) and the principal axes' orientation.
-
-        Returns
-        -------
-        rbcli.core.inertial.Inertial
-            ``mass`` (kg), ``com`` (m), ``inertia`` (kg m², in the inertial frame),
-            ``rotation`` (columns: the inertial frame's axes in the body frame),
-            ``quat_wxyz`` and ``rpy`` (rad, fixed-axis roll-pitch-yaw) of that rotation.
-            ``rbcli.render.robot.render("urdf", name, source, inertial)`` writes the XML
-            that ``rbcli inertia --format urdf`` prints.
-        """
+        """The numbers of the body's ``<inertial>`` element for URDF, SDF or MJCF: about the com
+        in body axes, or with ``principal`` the principal moments and their axes'
+        orientation (:class:`rbcli.core.inertial.Inertial`; ``rbcli.render.robot.render``
+        writes the XML ``rbcli inertia --format urdf`` prints)."""
         principal = check.flag(principal, "principal")
         J = self.inertia_com if principal else snap(self.inertia_com)
         return inertial(self.mass, self.com, J, principal=principal)
@@ -263,13 +228,12 @@ def run(body: Body, options: Options) -> InertiaResult:
 @function(INERTIA)
 def inertia(body: Body, **kwargs: Any) -> InertiaResult:
     """Mass, centre of mass and the inertia tensor about a point (``about``; default: the
-    body's ``reference``, ``com`` or a point, else the origin); optionally the moment about
-    an axis through it and the angular momentum and kinetic energy of a rotation.
+    body's ``reference``, else the origin); optionally the moment about an axis through it
+    and the angular momentum and kinetic energy of a rotation.
 
     Parameters
     ----------
     body : rbcli.Body
-        From :func:`rbcli.load` or :func:`rbcli.load_text`.
     {parameters}
 
     Returns
@@ -279,18 +243,14 @@ def inertia(body: Body, **kwargs: Any) -> InertiaResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad value, naming the parameter (``about: ...``); a point so far
-        away that the inertia overflows (a :class:`rbcli.ParamError`).
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a point so
+        far away that the inertia overflows.
 
     Notes
     -----
-    Parallel axes (Huygens–Steiner): ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G``;
-    ``L = J ω``, ``T = ω·J·ω/2`` and the angle between them, the rotation about P:
-    Goldstein, *Classical Mechanics*, §5.3–5.4.
+    Parallel axes: ``J_P = J_G + m (d·d E − d dᵀ)``, ``d = P − G``; ``L = J ω``,
+    ``T = ω·J·ω/2`` (Goldstein, *Classical Mechanics*, §5.3–5.4).
 
     Examples
     --------
@@ -300,6 +260,5 @@ def inertia(body: Body, **kwargs: Any) -> InertiaResult:
     >>> round(r.axis_moment, 12)                              # m a²/12 about the diagonal
     0.083333333333
     >>> r.mass, r.com.tolist()
-    (1.0, [0.5, 0.5, 0.0])
-    """
+    (1.0, [0.5, 0.5, 0.0])"""
     return run(body, parse(body, **kwargs))

@@ -1,37 +1,30 @@
 """How option values are read: the one place a number typed by a user gets its meaning.
 
-Every keyword argument of the Python API and every option of the command line goes
-through these functions, so ``rbcli.balance(body, radius="100 mm")`` and
-``rbcli balance BODY --radius '100 mm'`` read the value the same way. A value may be
-
-- a Python number (already SI: m, kg, s, rad/s; angles in degrees),
-- a sequence of numbers or strings (a vector: ``[0, 0, 300]``),
-- a string as typed on the command line: ``"30 cm"``, ``"1,1,1 mm"``, ``"3000 rpm"``.
-
-Strings follow one rule for lists (:data:`UNIT_RULE`): a unit after the last number
-applies to every bare number before it. Each reader takes the Python parameter it reads
-(``"radius"``); errors are :class:`rbcli.errors.ParamError` naming it (``radius: ...`` in
-the API, ``--radius: ...`` on the command line, see :func:`rbcli.errors.spell`).
-
-Standard library only at module level; :mod:`rbcli.io.units` is imported on first use.
-"""
+The Python API and the command line read every value here, so ``radius="100 mm"`` and
+``--radius '100 mm'`` mean the same. A value is a Python number (SI; angles in degrees), a
+sequence, or a string as typed (``"30 cm"``, ``"1,1,1 mm"``); in a list a unit after the
+last number applies to every bare number before it (:data:`UNIT_RULE`). Errors are
+:class:`rbcli.errors.ParamError` naming the parameter (``radius: ...``; the command line
+spells ``--radius: ...``)."""
 
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
-from rbcli._startup import LazyRe
 from rbcli.errors import InputError, Note, ParamError, literal
+from rbcli.io import bare as _bare_units
+from rbcli.io import units as un
 
 __all__ = ["Value", "UNIT_RULE", "NUMBER", "Units", "param", "naming", "is_bare", "quantity",
-    "degrees", "numbers", "finite", "positive", "distinct", "grade", "vector", "point",
+    "degrees", "numbers", "finite", "positive", "grade", "vector", "point",
     "direction", "choice", "fraction", "symmetry_tolerance"]
 
 #: a number at the start of a value: what is left after it is the value's unit
-NUMBER = LazyRe(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+NUMBER = re.compile(r"\s*[-+\u2212]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
 
 #: how the unit rule reads, for help texts
 UNIT_RULE = "a unit after the last number applies to every bare number before it"
@@ -85,9 +78,7 @@ def _text(v: Value, option: str) -> str:
 
 def _bare(s: str) -> bool:
     """A number with no unit after it."""
-    from rbcli.io.units import plain_decimal  # (most values: no pattern to compile)
-
-    return plain_decimal(s) or NUMBER.fullmatch(s) is not None
+    return un.plain_decimal(s) or NUMBER.fullmatch(s) is not None
 
 
 def is_bare(text: str) -> bool:
@@ -97,8 +88,6 @@ def is_bare(text: str) -> bool:
 
 def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) -> float:
     """A scalar quantity in SI. A bare number is in ``bare`` (default: SI)."""
-    from rbcli.io import units as un
-
     if _is_number(text) and bare is None:
         return finite(float(text), option)
     s = _text(text, option).strip()
@@ -179,21 +168,14 @@ def positive(x: float, option: str, what: str, unit: str = "") -> float:
     return x
 
 
-def distinct(vals: list[float], option: str, what: str) -> tuple[float, float]:
-    """Two positions along a shaft that must differ (``--planes``, ``--bearings``)."""
-    if vals[0] == vals[1]:
-        raise _error(option, f"the two {what} are both at z = {vals[0]:.6g} m; they must differ")
-    return vals[0], vals[1]
-
-
 #: an ISO 21940-11 balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s'
-_GRADE = LazyRe(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
+_GRADE = re.compile(r"[Gg]?\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(mm/s)?")
 
 
 def grade(text: Value, option: str = "grade") -> float:
     """A balance quality grade: 'G6.3', 'g 2.5', '6.3' or '6.3 mm/s' -> 6.3 (mm/s), within the
     grades ISO 21940-11 defines (G0.4 to G4000)."""
-    from rbcli.core.balance import ISO_GRADE_MAX, ISO_GRADE_MIN
+    from rbcli.core.balance import ISO_GRADE_MAX, ISO_GRADE_MIN  # (numpy: off the start-up path)
 
     text = _text(text, option)
     m = _GRADE.fullmatch(text.strip())
@@ -263,7 +245,7 @@ def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
     """The tolerance of a nearly symmetric body (``top``, ``gyrocompass``, ``rollcheck``):
     a fraction (``0.01``) or a percentage (``"1 %"``, ``"0.5%"``), from 0 to 10 %; None
     gives the default, 1 % (:data:`rbcli.core.symmetry.DEFAULT_TOLERANCE`)."""
-    from rbcli.core.symmetry import DEFAULT_TOLERANCE, MAX_TOLERANCE
+    from rbcli.core.symmetry import DEFAULT_TOLERANCE, MAX_TOLERANCE  # (numpy, as above)
 
     if value is None:
         return DEFAULT_TOLERANCE
@@ -278,18 +260,9 @@ def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
 
 
 class Units:
-    """The bare-number rule for one body (:mod:`rbcli.io.bare`), as the readers apply it.
-
-    A Python number passed to the API is always SI (it never went through a file), except
-    an angle (degrees); a string without a unit is in the body's bare unit of its kind.
-    Commands without a body use SI.
-
-    Parameters
-    ----------
-    base : mapping, optional
-        The body's ``units`` block (:attr:`rbcli.body.model.Body.units`), e.g.
-        ``{"length": "mm", "mass": "g"}``.
-    """
+    """The bare-number rule for one body (:mod:`rbcli.io.bare`) as the readers apply it: a Python
+    number is SI (an angle degrees), a string without a unit is in the body's bare unit of its
+    kind (``base``: its ``units`` block; SI without a body)."""
 
     __slots__ = ("base", "_cache", "typed")
 
@@ -313,22 +286,16 @@ class Units:
     def bare(self, kind: str) -> str | None:
         """The unit a bare number of ``kind`` is in (None: SI)."""
         if kind not in self._cache:
-            from rbcli.io.bare import bare_unit
-
-            self._cache[kind] = bare_unit(self.base, kind)
+            self._cache[kind] = _bare_units.bare_unit(self.base, kind)
         return self._cache[kind]
 
     def label(self, kind: str) -> str:
         """How messages name the bare unit of ``kind`` (``"mm"``, ``"m"``, ``"SI"``...)."""
-        from rbcli.io.bare import SI_LABELS
-
-        return self.bare(kind) or SI_LABELS.get(kind, "SI")
+        return self.bare(kind) or _bare_units.SI_LABELS.get(kind, "SI")
 
     def factor(self, kind: str) -> float:
         """SI per bare unit of ``kind`` (1.0 for SI; an angle's is pi/180)."""
-        from rbcli.io.bare import factor
-
-        return factor(self.base, kind)
+        return _bare_units.factor(self.base, kind)
 
     def show(self, si: Any, kind: str) -> str:
         """An SI value (or a sequence) in the bare unit of ``kind``, 6 digits, for messages."""

@@ -1,20 +1,13 @@
 """Each command's parameters, declared once.
 
-A command's parameters are a tuple of :class:`Param` (``PARAMS`` in
-``rbcli/api/<command>.py``): its name, how a value is read (``kind``, and the quantity it
-measures), its help text, and, for the command line, its flag and default. Made from it:
-
-- the public function's signature, its argument checks (:mod:`rbcli.api.check`) and the
-  *Parameters* section of its docstring (:func:`function`);
-- the values read into SI once, by the unit rule of :mod:`rbcli.api.options`, kept with
-  what the caller gave and typed (:func:`read` -> :class:`Options`);
-- the command's typer options, its ``--help`` and man page (:func:`rbcli.cli.common.command`);
-- the options echo (:func:`rbcli.render.echo.echo_rows`) and the CSV unit of each value
-  echoed in the JSON (:func:`si_unit`).
-
-A help text serves both sides: ``{param}`` names a parameter, spelled ``stiffness_y`` in a
-docstring and ``--stiffness-y`` in ``--help`` (:func:`rbcli.errors.spell`).
-"""
+A command's parameters are a tuple of :class:`Param` (its table in
+:mod:`rbcli.api.commands`): name, how a value is read (``kind``, ``quantity``), help, and
+the command line's form and default. Made from it: the public function's signature, door
+checks and *Parameters* (:func:`function`); the values read into SI once (:func:`read` ->
+:class:`Options`); the typer options, ``--help`` and man page
+(:func:`rbcli.cli.common.command`); the options echo (:func:`rbcli.render.echo.echo_rows`)
+and the CSV unit of each echoed value (:func:`si_unit`). In a help text ``{param}`` names a
+parameter: ``stiffness_y`` in a docstring, ``--stiffness-y`` in ``--help``."""
 
 from __future__ import annotations
 
@@ -62,30 +55,20 @@ class Param:
 
     Attributes
     ----------
-    name : str — the Python keyword (``"mass_step"``); the option is ``--`` + it with
-        dashes unless ``flag`` says otherwise (or :data:`rbcli.errors.COMMAND_OPTIONS`)
+    name : str — the Python keyword; the option is ``--`` + it with dashes, or the command's
+        own word (:data:`rbcli.errors.COMMAND_OPTIONS`)
     help : str — what it means and what a bare number is in; ``{param}`` names another
-    kind : str — how a value is read: a key of :data:`KINDS`
-    quantity : str — the quantity kind of its numbers (:data:`rbcli.io.units.KINDS`), for
-        ``quantity``, ``values`` and ``vector``
+    kind : str — how a value is read (:data:`KINDS`)
+    quantity : str — the quantity kind of its numbers (:data:`rbcli.io.units.KINDS`)
     counts : tuple of int — how many comma-separated values ``values`` takes
     choices : tuple of str — the words ``choice`` takes
-    form : str — how the command line takes it: ``"option"``, ``"options"`` (given once
-        per item: a list) or ``"argument"`` (positional)
-    valid : callable, optional — ``valid(value, given)`` of the value read (SI) and the
-        value as given: None when it is allowed, else why not (a message template), raised
-        as a :class:`rbcli.ParamError` naming this parameter
-    echo : str — how the options table shows it (default: from ``kind`` and ``quantity``,
-        :func:`rbcli.render.echo.echo_rows`); ``"-"`` never
-    echo_default : bool — the options table shows its value when it is not given too,
-        marked "(default)" (the service puts the value it used in the options)
-    default : the command line's default (None: not given)
-    flag, short, metavar : the command line's spelling, when not the derived one
-    cli_type : the command line's type, when not the kind's (``int`` for a count, ``bool``
-        for a flag, else ``str``): ``str`` lets the service say what is wrong with a count
-    cli, api : whether the command line / the Python API takes it (a command-line-only
-        entry keeps ``--help``'s order where it sits among the parameters)
-    """
+    form : str — ``"option"``, ``"options"`` (given once per item) or ``"argument"``
+    valid : callable, optional — ``valid(value, given)``: None when allowed, else why not (a
+        message template, raised as a ParamError naming this parameter)
+    echo : str — how the options table shows it (default from ``kind``); ``"-"`` never
+    echo_default : bool — shown when not given too, marked "(default)"
+    default, metavar, cli_type — the command line's default, metavar and type
+    cli, api : bool — whether the command line / the Python API takes it"""
 
     name: str
     help: str
@@ -98,8 +81,6 @@ class Param:
     echo: str = ""
     echo_default: bool = False
     default: Any = None
-    flag: str | None = None
-    short: str | None = None
     metavar: str | None = None
     cli_type: type | None = None
     cli: bool = True
@@ -323,7 +304,7 @@ def function(params: tuple[Param, ...], *, body: str = "required") -> Callable[[
 #: the SI unit of each quantity kind, as the CSV writes it (pint reads it)
 SI_UNITS = {"length": "m", "mass": "kg", "time": "s", "angular_speed": "rad/s", "speed": "m/s",
             "acceleration": "m/s^2", "stiffness": "N/m", "damping": "N*s/m", "angle": "deg",
-            "unbalance": "kg*m", "dimensionless": "1"}
+            "unbalance": "kg*m", "dimensionless": "1", "force": "N"}
 
 
 def si_unit(p: Param) -> str:
@@ -336,7 +317,7 @@ def si_unit(p: Param) -> str:
         return "deg"
     if p.kind == "grade":
         return "mm/s"
-    if p.kind in ("direction", "tolerance", "fraction", "count", "ints"):
+    if p.kind in ("direction", "tolerance", "fraction", "count", "ints", "numbers"):
         return "1"
     return ""
 

@@ -1,18 +1,11 @@
-"""``precess``: the exact torque-free motion of a rigid body, as a service.
+"""``precess``: the exact torque-free motion of a rigid body, as a service
+(:class:`rbcli.core.freemotion.FreeMotion` in :attr:`PrecessResult.motion`, sampled at any
+times by ``result.at(t)``).
 
 >>> import rbcli
->>> body = rbcli.load("examples/book.yaml")
->>> r = rbcli.precess(body, omega=[0.01, 1, 0.01])
->>> round(r.motion.flip_interval, 4)
-19.5529
->>> r.at(1e9).omega.shape                      # the state 10^9 s later, at the cost of t = 1 s
-(3,)
-
-The motion is the exact solution (Jacobi elliptic functions; the attitude through the
-elliptic integral of the third kind): :attr:`PrecessResult.motion` is a
-:class:`rbcli.core.freemotion.FreeMotion` with every constant, and ``result.at(t)`` (or
-``result.motion.at(t)``) samples it at any times.
-"""
+>>> r = rbcli.precess(rbcli.load("examples/book.yaml"), omega=[0.01, 1, 0.01])
+>>> r.at(1e9).omega.shape                      # 10^9 s later, at the cost of t = 1 s
+(3,)"""
 
 from __future__ import annotations
 
@@ -64,23 +57,10 @@ def parse(body: Body | None, **kwargs: Any) -> Options:
 
 @dataclass(frozen=True, eq=False)
 class PrecessResult(Result):
-    """The torque-free motion of a body and what was asked of it.
-
-    Attributes
-    ----------
-    name : str — the body's name
-    motion : FreeMotion — the exact motion: its case, period (s), flip_interval (s),
-        precession rates (rad/s), cones (rad), the elliptic constants...; ``motion.at(t)``
-        samples it
-    options : rbcli.api.params.Options — the options it was computed with (:func:`parse`)
-    state : FreeState or None — the state at ``options.at`` (ω rad/s and L kg m²/s in the
-        body frame at that time, the quaternion body → space)
-    at_json : dict or None — the same as the JSON ``at`` object (adds the axis-angle, the
-        matrix and the number of periods)
-    check : VerifyResult or None — with ``verify``: the comparison with DOP853
-    notes : tuple of str — what the numbers mean, in words (SI, 6 digits)
-    warnings : tuple of str — the body's located warnings, then a rim faster than sound
-    """
+    """The torque-free motion of a body and what was asked of it: ``name``, ``motion``
+    (:class:`rbcli.core.freemotion.FreeMotion`), ``options`` (:func:`parse`), ``state`` and
+    ``at_json`` (the state at ``options.at``, as the JSON's ``at``), ``check`` (with
+    ``verify``: the comparison with DOP853), ``notes`` and ``warnings``."""
 
     name: str
     motion: fm.FreeMotion
@@ -92,17 +72,9 @@ class PrecessResult(Result):
     warnings: tuple[str, ...] = ()
 
     def at(self, t: Quantity | ArrayLike) -> fs.FreeState:
-        """The exact state at ``t`` (s: a number, a quantity string such as ``"7320 h"``, or a
-        1-D sequence of at most :data:`rbcli.api.check.MAX_TIMES` numbers): ω, L (body frame),
-        quaternion and rotation matrix (body → space; space = body frame at t = 0).
-
-        Raises
-        ------
-        TypeError
-            ``t`` that is not a number, a string or numbers.
-        rbcli.InputError
-            a time that is not finite, too many times, a time too far away to have a phase.
-        """
+        """The exact state at ``t`` (s: a number, a quantity string or at most
+        :data:`rbcli.api.check.MAX_TIMES` numbers): ω, L (body frame), quaternion and rotation
+        matrix (body → space). TypeError or InputError naming ``t``."""
         t = check.times(t, "t", ndim=1)
         fs.check_phase(self.motion, float(np.max(np.abs(t), initial=0.0)), "t")
         return self.motion.at(t)
@@ -174,31 +146,24 @@ def run(body: Body, options: Options) -> PrecessResult:
 
 @function(PRECESS)
 def precess(body: Body, **kwargs: Any) -> PrecessResult:
-    """The exact torque-free motion of a rigid body from an initial angular velocity.
-
-    The body turns freely about its centre of mass (no torque, no gravity); the space frame
-    is the body frame at t = 0.
+    """The exact torque-free motion of a rigid body from an initial angular velocity (no
+    torque, no gravity; the space frame is the body frame at t = 0).
 
     Parameters
     ----------
     body : Body
-        From :func:`rbcli.load` or :func:`rbcli.load_text`.
     {parameters}
 
     Returns
     -------
     PrecessResult
-        ``to_json()`` is the command's JSON; ``motion`` every constant; ``at(t)`` the state
-        at any times.
+        ``to_json()`` the command's JSON; ``motion`` every constant; ``at(t)`` the state.
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad value (the message names the parameter), an inertia that is not positive
-        definite, a time too far away to have a phase.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; an inertia
+        not positive definite; a time too far.
 
     Examples
     --------
@@ -207,6 +172,5 @@ def precess(body: Body, **kwargs: Any) -> PrecessResult:
     >>> book.case, round(book.flip_interval, 4)         # spun near the intermediate axis: it flips
     ('circulates_max', 19.5529)
     >>> round(float(book.at(1.0).omega[1]), 6)           # rad/s, body frame, at t = 1 s
-    1.000049
-    """
+    1.000049"""
     return run(body, parse(body, **kwargs))

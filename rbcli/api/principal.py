@@ -31,34 +31,22 @@ class PrincipalResult(Result):
 
     Attributes
     ----------
-    name : str — the body's name
-    mass : float — kg
-    reference : (3,) ndarray — m, the point the moments are about
-    reference_label : str — how tables name it
+    name : str; mass : float — kg
+    reference : (3,) ndarray — m, the point; reference_label : str — how tables name it
     moments : (3,) ndarray — kg m², ascending
-    axes : (3, 3) ndarray — row i is the unit axis of ``moments[i]`` (body frame); a proper
-        rotation matrix taking body to principal coordinates
+    axes : (3, 3) ndarray — row i the unit axis of ``moments[i]`` (a proper rotation)
     symmetry : str — ``"asymmetric"``, ``"symmetric"`` or ``"spherical"``
-    unique_axis : int or None — for ``"symmetric"``, the index (0 or 2) of the moment that
-        differs
-    free_axes : tuple of int — 0-based indices of the axes free to choose (equal moments)
-    stable : tuple of 3 bool — is free rotation about each axis stable (false for a neutral
-        axis: see ``stability``)
-    stability : tuple of 3 str — ``"stable"``, ``"unstable"`` or ``"neutral"`` per axis (neutral:
-        an axis of the equal pair of a symmetric body, about which the spin axis wanders)
+    unique_axis : int or None — for ``"symmetric"``, the index of the moment that differs
+    free_axes : tuple of int — the axes free to choose (equal moments)
+    stable, stability : tuple of 3 — free rotation about each axis: stable (bool), and
+        ``"stable"``, ``"unstable"`` or ``"neutral"`` (an axis of a symmetric body's equal pair)
     direction_angles_deg : (3, 3) ndarray — degrees, principal axis i from body axis j
-    tilt_deg : (3,) ndarray — degrees, each principal axis from its nearest body axis line
-    tilt_axis : tuple of 3 str — that body axis, ``"x"``, ``"y"`` or ``"z"``
-    rotation_axis : (3,) ndarray — unit axis of the rotation taking the body axes to the
-        principal axes 1, 2, 3 in ascending order of the moments
-    rotation_angle_deg : float — its angle, degrees (~90° when the ascending order permutes
-        the body axes, however small the tilts)
-    equivalent_box : (3,) ndarray — m, sides along axes 1, 2, 3 of the uniform box with the
-        same mass and principal moments
-    equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same uniform ellipsoid
-    parts : tuple of dict — each part's contribution (see :func:`part_rows`)
-    warnings : tuple of str — a point far outside the body's scale
-    """
+    tilt_deg, tilt_axis — degrees, each axis from its nearest body axis line (``"x"``...)
+    rotation_axis, rotation_angle_deg — the rotation taking the body axes to axes 1, 2, 3
+    equivalent_box, equivalent_ellipsoid : (3,) ndarray — m, the uniform box's sides and
+        ellipsoid's semi-axes with the same mass and moments
+    parts : tuple of dict — each part's contribution (:func:`part_rows`)
+    warnings : tuple of str — a point far outside the body's scale"""
 
     name: str
     mass: float
@@ -140,25 +128,18 @@ def principal(body: Body, **kwargs: Any) -> PrincipalResult:
     Returns
     -------
     PrincipalResult
-        Moments ascending; ``axes`` rows are the unit axes, a right-handed set;
         ``to_json()`` is what ``rbcli principal BODY --json`` prints, less ``"file"``.
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad ``about`` (``about: ...``), or a point so far away that the inertia
-        overflows.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a point so
+        far away that the inertia overflows.
 
     Notes
     -----
     Free rotation about the axes of the largest and smallest moment is stable, about the
-    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37); about an axis of the
-    equal pair of a symmetric body neutral (``stability``; ``stable`` false). ``tilt_deg``
-    is each axis's angle from its nearest body axis (``tilt_axis``): the headline of a
-    body whose principal axes are near its body axes.
+    intermediate one unstable (Landau & Lifshitz, *Mechanics*, §37).
 
     Examples
     --------
@@ -167,6 +148,5 @@ def principal(body: Body, **kwargs: Any) -> PrincipalResult:
     >>> [round(float(m), 6) for m in p.moments]                # m a²/12, 7 m a²/12, 2 m a²/3
     [0.083333, 0.583333, 0.666667]
     >>> p.symmetry
-    'asymmetric'
-    """
+    'asymmetric'"""
     return run(body, parse(body, **kwargs))

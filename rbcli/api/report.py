@@ -1,56 +1,42 @@
 """Every answer that applies to a body, computed for one document: the service behind
 ``rbcli report``.
 
-:class:`ReportOptions` reads the report's options once, through each command's own options
-object (each command's ``parse``: :class:`rbcli.api.params.Options`), so a value
-means in the report what it means to the command. :func:`run` computes each section by
-calling the services and returns a :class:`ReportResult` holding each section's result (or the
-one-line reason it is left out). It computes only: :mod:`rbcli.render.report` makes the
-document, :func:`rbcli.report_text` and :func:`rbcli.write_report` (:mod:`rbcli.documents`)
-give its text or write it.
-
-Which section is there: parts, mass properties and principal axes always; balance when the
-body has a shaft or a balance option is given; free precession with ``omega``; the heavy
-top when there is a pivot (the body's or ``pivot``) and ``spin`` and ``theta``; rolling
-stability when there is a rim radius (the body's, ``rim_radius`` or a round part). A
-section that does not apply, or that this body cannot have (an error located in the body
-file, or a value too large to compute with), is one line saying why; a value the user gave
-that its command refuses is an :class:`rbcli.InputError`, as on the command line.
-"""
+:func:`parse` reads the report's parameters (:data:`rbcli.api.commands.REPORT`) through each
+command's own ``parse``, so a value means what it means to the command; :func:`run`
+computes each section (its result, or the one-line reason it is left out). Parts, mass
+properties and principal axes are always there; balance with a shaft or a balance
+parameter; whirl with ``stiffness`` or the body's bearings; free precession with
+``omega``; the heavy top with a pivot, ``spin`` and ``theta``; rolling with a rim radius or
+a round part. A value its command refuses is an :class:`rbcli.InputError`, as on the
+command line."""
 
 from __future__ import annotations
 
+import dataclasses
+import datetime as dt
 import math
+import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rbcli.api import balance, check, rollcheck
-from rbcli.api.check import Point, Quantity, Values, Vector
-from rbcli.api.result import Result
-from rbcli.errors import InputError, Note, ParamError, literal
+from rbcli.api import balance, check, precess, rollcheck, top, whirl
+from rbcli.api import inertia as api_inertia
+from rbcli.api import options as op
+from rbcli.api import principal as api_principal
+from rbcli.api.commands import REPORT
+from rbcli.api.params import Options, function
+from rbcli.api.result import Result, frozen, jsonable
+from rbcli.api.whirlbearings import entries
+from rbcli.core.inertia import body_mass_props, part_contributions
+from rbcli.env import clean
+from rbcli.errors import InputError, NonFiniteResult, Note, ParamError, literal
+from rbcli.io import units as un
 
 if TYPE_CHECKING:  # pragma: no cover
-    from rbcli.api.params import Options
     from rbcli.body.model import Body
 
-__all__ = ["ReportOptions", "ReportResult", "Section", "report", "run"]
-
-#: the report's options in the order the header lists them (Python name -> option)
-_OPTIONS = ("shaft", "through", "planes", "radius", "bearings", "grade", "speed", "stiffness",
-            "damping", "omega", "pivot", "spin", "theta", "theta_dot", "phi_dot", "rim_radius",
-            "tyre_radius", "g", "symmetry_tol")
-
-#: the checker of each keyword argument of :func:`report` (:mod:`rbcli.api.check`)
-KINDS = {
-    "shaft": check.vector, "through": check.vector, "planes": check.values(2),
-    "radius": check.values(2), "bearings": check.values(2), "grade": check.quantity,
-    "speed": check.quantity, "stiffness": check.values(2), "damping": check.values(2),
-    "omega": check.vector, "pivot": check.vector, "spin": check.quantity,
-    "theta": check.quantity, "theta_dot": check.quantity, "phi_dot": check.quantity,
-    "rim_radius": check.quantity, "tyre_radius": check.quantity, "g": check.quantity,
-    "symmetry_tol": check.quantity,
-}
+__all__ = ["ReportOptions", "ReportResult", "Section", "parse", "report", "run"]
 
 #: stand-ins for a missing spin or theta, so that the one given is still checked by
 #: top.parse (the heavy-top section is then left out, saying what is missing)
@@ -62,8 +48,6 @@ _TOP_STAND_INS = {"spin": 1.0, "theta": 90.0}
 
 def _text(v: Any) -> str:
     """A value as the header's options line shows it (strings as typed, numbers exactly)."""
-    if isinstance(v, str):
-        return v
     if isinstance(v, (int, float)) and not isinstance(v, bool):
         return repr(float(v))
     if hasattr(v, "tolist"):
@@ -87,8 +71,6 @@ def _section_parse(parse: Callable[[], Any]) -> tuple[Any, InputError | None]:
 
 def _speed(text: Any) -> tuple[Any, Any]:
     """The report's speed takes its meaning from its unit: (angular speed, speed), one of them None."""
-    from rbcli.io import units as un
-
     s = _text(text)
     try:
         w = un.to_si(s, "angular_speed")
@@ -110,9 +92,6 @@ def _speed(text: Any) -> tuple[Any, Any]:
 
 def _date() -> str:
     """The report's date: SOURCE_DATE_EPOCH when set (reproducible builds), else now; UTC."""
-    import datetime as dt
-    import os
-
     raw = os.environ.get("SOURCE_DATE_EPOCH")
     if raw is None or raw == "":
         t = dt.datetime.now(dt.timezone.utc)
@@ -128,19 +107,14 @@ def _date() -> str:
 
 @dataclass(frozen=True)
 class ReportOptions:
-    """The report's options, read once through each command's options object.
+    """The report's parameters (:func:`parse`), each section's read by its command.
 
     Attributes
     ----------
     given : tuple of (str, str) — the parameters given, as (parameter, text), for the header
-    balance : Options or None — None when the body has no shaft and no balance
-        option is given (``balance_skip`` says so)
-    whirl : Options or None — None without ``stiffness`` (``whirl_skip``), or when the
-        body cannot have one (``whirl_error``)
-    precess : Options or None — None without ``omega``
-    top : Options or None — None without a pivot or without ``spin`` and ``theta``
-        (``top_skip`` says which)
-    rollcheck : Options or None — None without a rim radius (``rolling_skip``)
+    balance, whirl, precess, top, rollcheck : Options or None — each section's options; None
+        when it is left out (its ``..._skip`` says why; ``whirl_error``: the body cannot
+        have one)
     date : str — the report's date, UTC: SOURCE_DATE_EPOCH when set, else now
     """
 
@@ -157,100 +131,89 @@ class ReportOptions:
     top_skip: str | None = None
     rolling_skip: str | None = None
 
-    @classmethod
-    def parse(cls, body: Body, *, shaft: Vector | None = None, through: Point | None = None,
-              planes: Values | None = None, radius: Values | None = None,
-              bearings: Values | None = None, grade: Quantity | None = None,
-              speed: Quantity | None = None, stiffness: Values | None = None,
-              damping: Values | None = None, omega: Vector | None = None,
-              pivot: Point | None = None, spin: Quantity | None = None,
-              theta: Quantity | None = None, theta_dot: Quantity | None = None,
-              phi_dot: Quantity | None = None, rim_radius: Quantity | None = None,
-              tyre_radius: Quantity | None = None, g: Quantity | None = None,
-              symmetry_tol: Quantity | None = None) -> ReportOptions:
-        """Read the keyword arguments of :func:`report` (see there) for ``body``.
 
-        Raises
-        ------
-        rbcli.InputError
-            naming the parameter at fault (``planes: ...``).
-        """
-        from rbcli.api import options as op
-        from rbcli.api import precess, top
-        from rbcli.api import whirl
-        from rbcli.api.whirlbearings import entries
+def _whirl_options(body: Body, kw: dict[str, Any], speed: Any) -> tuple[Any, Any, Any]:
+    """(whirl's options, the body's error, why it is left out): with a bearing stiffness,
+    given or the body's bearings."""
+    if kw.get("stiffness") is not None or entries(body) is not None:
+        opts, err = _section_parse(lambda: whirl.parse(
+            body, bearings=kw.get("bearings"), stiffness=kw.get("stiffness"),
+            damping=kw.get("damping"), speed=speed, shaft=kw.get("shaft"),
+            through=kw.get("through"), symmetry_tol=kw.get("symmetry_tol")))
+        return opts, err, None
+    if kw.get("damping") is not None:
+        raise ParamError("damping", "needs {stiffness}, the bearings' stiffness (the whirl "
+                         "section)")
+    return None, None, Note("whirl: no {stiffness} given (the bearings' stiffness, with "
+                            "{bearings})")
 
-        kw = dict(shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
-                  grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega,
-                  pivot=pivot, spin=spin, theta=theta,
-                  theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
-                  tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol)
-        given = tuple((k, _text(kw[k])) for k in _OPTIONS if kw[k] is not None)
-        date = _date()
-        # speed: its unit says whose it is (the report's own rule)
-        rotor_speed = roll_speed = None
-        if speed is not None:
-            rotor_speed, roll_speed = _speed(speed)
-        if grade is not None:
-            if rotor_speed is None:
-                raise ParamError("grade", "needs an angular {speed}, the maximum service speed "
-                                 "(e.g. {speed} '3000 rpm')")
-            if bearings is None:
-                raise ParamError("grade", "needs {bearings} z1,z2, the planes ISO 21940-11 "
-                                 "allocates the tolerance to")
-        # the options the report names differently from rollcheck (shaft for axle, rim_radius
-        # for radius), read under the report's names
-        axle = op.direction(shaft, "shaft") if shaft is not None else None
-        rim = (op.Units.of(body).positive(rim_radius, "length", "rim_radius", "the rim radius")
-               if rim_radius is not None else None)
 
-        # balance
-        b_opts = balance.parse(body, shaft=shaft, through=through, planes=planes, radius=radius,
-                               speed=rotor_speed, bearings=bearings, g=g, grade=grade)
-        asked = planes is not None or bearings is not None or grade is not None or rotor_speed is not None
-        b_skip = None
-        if shaft is None and body.shaft is None and not asked:
-            b_opts = None
-            b_skip = Note("balance: no shaft in the body file and no {shaft}, {planes}, {bearings} "
-                          "or rotation {speed} option")
-        # the rotor on its bearings: with a bearing stiffness
-        w_opts = w_err = w_skip = None
-        if stiffness is not None or entries(body) is not None:  # options, or the body's bearings:
-            w_opts, w_err = _section_parse(lambda: whirl.parse(
-                body, bearings=bearings, stiffness=stiffness, damping=damping, speed=rotor_speed,
-                shaft=shaft, through=through, symmetry_tol=symmetry_tol))
-        elif damping is not None:
-            raise ParamError("damping", "needs {stiffness}, the bearings' stiffness (the whirl section)")
-        else:
-            w_skip = Note("whirl: no {stiffness} given (the bearings' stiffness, with {bearings})")
-        # free precession
-        p_opts = precess.parse(body, omega=omega) if omega is not None else None
-        # heavy top: every value given is checked, the section needs a pivot, spin and theta
-        t_opts = top.parse(
-            body, pivot=pivot, spin=_TOP_STAND_INS["spin"] if spin is None else spin,
-            theta=_TOP_STAND_INS["theta"] if theta is None else theta, theta_dot=theta_dot,
-            phi_dot=phi_dot, g=g, symmetry_tol=symmetry_tol)
-        t_skip = None
-        if pivot is None and body.pivot is None:
-            t_skip = Note("heavy top: no pivot in the body file and no {pivot} option")
-        elif spin is None or theta is None:
-            missing = " and ".join(x for x, v in (("{spin}", spin), ("{theta}", theta)) if v is None)
-            t_skip = Note(f"heavy top: the body has a pivot, but no {missing} given (the spin "
+def _top_options(body: Body, kw: dict[str, Any]) -> tuple[Any, Any]:
+    """(top's options, why it is left out): every value given is checked, the section needs
+    a pivot, spin and theta."""
+    spin, theta = kw.get("spin"), kw.get("theta")
+    opts = top.parse(body, pivot=kw.get("pivot"),
+                     spin=_TOP_STAND_INS["spin"] if spin is None else spin,
+                     theta=_TOP_STAND_INS["theta"] if theta is None else theta,
+                     theta_dot=kw.get("theta_dot"), phi_dot=kw.get("phi_dot"), g=kw.get("g"),
+                     symmetry_tol=kw.get("symmetry_tol"))
+    if kw.get("pivot") is None and body.pivot is None:
+        return None, Note("heavy top: no pivot in the body file and no {pivot} option")
+    if spin is None or theta is None:
+        missing = " and ".join(x for x, v in (("{spin}", spin), ("{theta}", theta)) if v is None)
+        return None, Note(f"heavy top: the body has a pivot, but no {missing} given (the spin "
                           "about the symmetry axis and the start tilt from the vertical)")
-        if t_skip is not None:
-            t_opts = None
-        # rolling stability
-        r_opts = rollcheck.parse(body, shaft=axle, through=through, rim_radius=rim,
-                                 tyre_radius=tyre_radius, g=g, rolling_speed=roll_speed,
-                                 spin=rotor_speed, symmetry_tol=symmetry_tol)
-        r_skip = None
-        if rim is None and body.rim_radius is None and not rollcheck.round_parts(body):
-            r_opts = None
-            r_skip = Note("rolling stability: no rim radius: none in the body file (rim_radius), "
-                          "no {rim_radius} option and no round part")
-        return cls(given=given, balance=b_opts, whirl=w_opts, precess=p_opts, top=t_opts,
-                   rollcheck=r_opts, date=date, balance_skip=b_skip, whirl_skip=w_skip,
-                   whirl_error=w_err, top_skip=t_skip, rolling_skip=r_skip)
+    return opts, None
+
+
+def parse(body: Body, **kwargs: Any) -> ReportOptions:
+    """The keyword arguments of :func:`report` (see there) read for ``body``, each section's
+    by its command's ``parse``.
+
+    Raises
+    ------
+    rbcli.InputError
+        naming the parameter at fault (``planes: ...``).
+    """
+    kw = {k: v for k, v in kwargs.items() if v is not None}
+    # the header lists the options in the table's order, the tolerance last
+    order = sorted((p.name for p in REPORT), key=lambda n: n == "symmetry_tol")
+    given = tuple((k, _text(kw[k])) for k in order if k in kw)
+    date = _date()
+    # speed: its unit says whose it is (the report's own rule)
+    rotor_speed, roll_speed = _speed(kw["speed"]) if "speed" in kw else (None, None)
+    if "grade" in kw and rotor_speed is None:
+        raise ParamError("grade", "needs an angular {speed}, the maximum service speed (e.g. "
+                         "{speed} '3000 rpm')")
+    if "grade" in kw and "bearings" not in kw:
+        raise ParamError("grade", "needs {bearings} z1,z2, the planes ISO 21940-11 allocates the "
+                         "tolerance to")
+    # read under the report's names what rollcheck names differently
+    axle = op.direction(kw["shaft"], "shaft") if "shaft" in kw else None
+    rim = (op.Units.of(body).positive(kw["rim_radius"], "length", "rim_radius", "the rim radius")
+           if "rim_radius" in kw else None)
+    b_opts = balance.parse(body, shaft=kw.get("shaft"), through=kw.get("through"),
+                           planes=kw.get("planes"), radius=kw.get("radius"), speed=rotor_speed,
+                           bearings=kw.get("bearings"), g=kw.get("g"), grade=kw.get("grade"))
+    b_skip = None
+    asked = {"shaft", "planes", "bearings", "grade"} & set(kw) or rotor_speed is not None
+    if body.shaft is None and not asked:
+        b_opts, b_skip = None, Note("balance: no shaft in the body file and no {shaft}, {planes}, "
+                                    "{bearings} or rotation {speed} option")
+    w_opts, w_err, w_skip = _whirl_options(body, kw, rotor_speed)
+    p_opts = precess.parse(body, omega=kw["omega"]) if "omega" in kw else None
+    t_opts, t_skip = _top_options(body, kw)
+    r_opts = rollcheck.parse(body, shaft=axle, through=kw.get("through"), rim_radius=rim,
+                             tyre_radius=kw.get("tyre_radius"), g=kw.get("g"),
+                             rolling_speed=roll_speed, spin=rotor_speed,
+                             symmetry_tol=kw.get("symmetry_tol"))
+    r_skip = None
+    if rim is None and body.rim_radius is None and not rollcheck.round_parts(body):
+        r_opts, r_skip = None, Note("rolling stability: no rim radius: none in the body file "
+                                    "(rim_radius), no {rim_radius} option and no round part")
+    return ReportOptions(given=given, balance=b_opts, whirl=w_opts, precess=p_opts, top=t_opts,
+                         rollcheck=r_opts, date=date, balance_skip=b_skip, whirl_skip=w_skip,
+                         whirl_error=w_err, top_skip=t_skip, rolling_skip=r_skip)
 
 
 # ----------------------------------------------------------------------------- the result
@@ -258,20 +221,10 @@ class ReportOptions:
 
 @dataclass(frozen=True)
 class Section:
-    """One section of the report: its result, or the one-line reason it is left out.
-
-    Attributes
-    ----------
-    key : str — the anchor (``"balance"``)
-    title : str — ``"Balance"``
-    result : Any — the command's result (``BalanceResult``, ...; for ``"parts"`` the
-        body's mass properties), None when skipped
-    skipped : str or None — why the section is not there, in one line
-    options : Any — the command's options (its "options" table), or None
-    figure : Any — what the section's figure draws, computed: the balance diagram, the top's
-        sampled path ``(states, duration)``, the rolling curves, the parts' contributions
-    warnings : tuple of str — the section's warnings
-    """
+    """One section of the report: ``key`` (the anchor), ``title``, ``result`` (the command's
+    result; for "parts" the body's mass properties) or ``skipped`` (why not, one line),
+    ``options`` (the command's, for its "options" table), ``figure`` (what its figure draws,
+    computed) and ``warnings``."""
 
     key: str
     title: str
@@ -289,21 +242,9 @@ class Section:
 
 @dataclass(frozen=True)
 class ReportResult(Result):
-    """The report of a body: each section's result and the checks that failed.
-
-    Attributes
-    ----------
-    name : str — the body's name
-    body : Body — the body
-    options : ReportOptions — the options, as read
-    sections : tuple of Section — in the report's order
-    failed : tuple of str — the checks asked for that failed, in words (the grade, rolling at
-        the speed); the report is complete all the same
-    warnings : tuple of str — the sections' warnings (the report shows them in its sections)
-
-    ``to_json()`` lists the sections; ``return_code`` is 1 when a check failed. The
-    document: :func:`rbcli.report_text`, :func:`rbcli.write_report`.
-    """
+    """The report of a body: ``name``, ``body``, ``options`` (:class:`ReportOptions`),
+    ``sections``, ``failed`` (the checks asked for that failed, in words: ``return_code`` 1)
+    and ``warnings``. ``to_json()`` lists the sections."""
 
     name: str
     body: Body
@@ -316,10 +257,6 @@ class ReportResult(Result):
         """Every field made immutable (:func:`rbcli.api.result.frozen`) but the body, which
         is immutable where it is made (:mod:`rbcli.body.model`: read-only arrays, tuples and
         mappings): walking its parts again cost 9 s for 100 000 parts."""
-        import dataclasses
-
-        from rbcli.api.result import frozen
-
         for f in dataclasses.fields(self):
             if f.name == "body":
                 continue
@@ -347,15 +284,11 @@ class ReportResult(Result):
         for s in self.sections:
             if s.key == key:
                 return s
-        from rbcli.env import clean
-
         raise KeyError(f"no section {clean(repr(key), max_line=120)} (the sections: "
                        f"{', '.join(s.key for s in self.sections)})")
 
     def to_json(self) -> dict[str, Any]:
         """The sections (key, title, whether included, why not) and the failed checks."""
-        from rbcli.api.result import jsonable
-
         return jsonable({
             "name": self.name,
             "sections": [s.to_json() for s in self.sections],
@@ -371,8 +304,6 @@ class _Ctx:
     """What the section builders share: the body, the options, the failed checks."""
 
     def __init__(self, body: Body, opts: ReportOptions) -> None:
-        from rbcli.core.inertia import body_mass_props
-
         self.body = body
         self.opts = opts
         self.failed: list[str] = []
@@ -380,23 +311,17 @@ class _Ctx:
 
 
 def _parts(ctx: _Ctx) -> Section:
-    from rbcli.core.inertia import part_contributions
-
     return Section("parts", "Parts", ctx.mp, figure=part_contributions(ctx.body.parts, ctx.mp.com))
 
 
 def _massprops(ctx: _Ctx) -> Section:
-    from rbcli.api import inertia as api
-
-    o = api.parse(ctx.body)
-    return Section("mass-properties", "Mass properties", api.run(ctx.body, o), options=o)
+    o = api_inertia.parse(ctx.body)
+    return Section("mass-properties", "Mass properties", api_inertia.run(ctx.body, o), options=o)
 
 
 def _principal(ctx: _Ctx) -> Section:
-    from rbcli.api import principal as api
-
-    o = api.parse(ctx.body)
-    return Section("principal-axes", "Principal axes", api.run(ctx.body, o), options=o)
+    o = api_principal.parse(ctx.body)
+    return Section("principal-axes", "Principal axes", api_principal.run(ctx.body, o), options=o)
 
 
 def _skip(key: str, title: str, reason: str) -> Section:
@@ -430,10 +355,8 @@ def _whirl(ctx: _Ctx) -> Section:
         return _skip(key, title, o.whirl_skip)
     if o.whirl_error is not None:
         return _skip(key, title, _not_computed("whirl", o.whirl_error))
-    from rbcli.api import whirl as api
-
     try:
-        res = api.run(ctx.body, o.whirl)
+        res = whirl.run(ctx.body, o.whirl)
     except InputError as exc:
         return _skip(key, title, _not_computed("whirl", exc))
     if res.return_code:
@@ -446,10 +369,8 @@ def _precess(ctx: _Ctx) -> Section:
     if ctx.opts.precess is None:
         return _skip(key, title, Note("free precession: no {omega} given (the initial angular "
                                       "velocity, body frame)"))
-    from rbcli.api import precess as api
-
     try:
-        res = api.run(ctx.body, ctx.opts.precess)
+        res = precess.run(ctx.body, ctx.opts.precess)
     except InputError as exc:
         return _skip(key, title, _not_computed("free precession", exc))
     return Section(key, title, res, options=ctx.opts.precess)
@@ -460,10 +381,8 @@ def _top(ctx: _Ctx) -> Section:
     o = ctx.opts
     if o.top is None:
         return _skip(key, title, o.top_skip or "heavy top: not computed")
-    from rbcli.api import top as at
-
     try:
-        res = at.run(ctx.body, o.top)
+        res = top.run(ctx.body, o.top)
         span = res.default_duration()
         path = res.sample(span)
     except InputError as exc:
@@ -505,8 +424,6 @@ def _without_part_rows(result: Any) -> Any:
     ``parts``), for the finiteness check: those are the body's own numbers (mass, centre,
     a mesh's volume and area), finite where the body was read, and checking every row
     again cost 3 s for each section of a 100 000-part body."""
-    import dataclasses
-
     if dataclasses.is_dataclass(result) and getattr(result, "parts", None) and \
             "parts" in {f.name for f in dataclasses.fields(result)}:
         return dataclasses.replace(result, parts=())
@@ -517,9 +434,6 @@ def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Se
     """``fn(ctx)``, the section, or one line saying why it is not there when its numbers are
     too large or too small to compute with (an arithmetic error, or inf/NaN in its JSON,
     which the commands refuse too): that is this body and these options, not a bug."""
-    from rbcli.api.result import jsonable
-    from rbcli.errors import NonFiniteResult
-
     n_failed = len(ctx.failed)
     try:
         s = fn(ctx)
@@ -537,7 +451,7 @@ def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Se
 
 def run(body: Body, options: ReportOptions,
         progress: Callable[[str, int, int], None] | None = None) -> ReportResult:
-    """The report of ``body`` with parsed ``options`` (:meth:`ReportOptions.parse`).
+    """The report of ``body`` with parsed ``options`` (:func:`parse`).
 
     ``progress(what, i, n)``, if given, is called before each of the ``n`` sections.
     A section that cannot be computed is one line in the report, never an error.
@@ -553,77 +467,30 @@ def run(body: Body, options: ReportOptions,
                         failed=tuple(Note(f) for f in ctx.failed), warnings=warnings)
 
 
-def report(body: Body, *, shaft: Vector | None = None, through: Point | None = None,
-           planes: Values | None = None, radius: Values | None = None,
-           bearings: Values | None = None, grade: Quantity | None = None,
-           speed: Quantity | None = None, stiffness: Values | None = None,
-           damping: Values | None = None, omega: Vector | None = None,
-           pivot: Point | None = None, spin: Quantity | None = None,
-           theta: Quantity | None = None, theta_dot: Quantity | None = None,
-           phi_dot: Quantity | None = None, rim_radius: Quantity | None = None,
-           tyre_radius: Quantity | None = None, g: Quantity | None = None,
-           symmetry_tol: Quantity | None = None) -> ReportResult:
-    """Every answer that applies to the body, computed for one report.
-
-    The sections ``rbcli report BODY -o FILE`` writes: a parts table, mass properties,
-    principal axes, and, where the body file or the options give what they need, balance,
-    free precession, the heavy top and rolling stability (each left-out section says why in
-    one line). :func:`rbcli.report_text` gives the document's text and
-    :func:`rbcli.write_report` writes it (the same bytes as the command line).
+@function(REPORT)
+def report(body: Body, **kwargs: Any) -> ReportResult:
+    """Every answer that applies to the body, computed for one report: the sections
+    ``rbcli report`` writes (:func:`rbcli.report_text`, :func:`rbcli.write_report`).
 
     Parameters
     ----------
-    body : rbcli.Body — from :func:`rbcli.load`
-    shaft : direction x,y,z — balance shaft and rolling axle (default: the body's shaft)
-    through : "com", "origin" or a point x,y,z (m) — a point of the shaft
-    planes : zA,zB (m) — balance correction planes along the shaft
-    radius : r or rA,rB (m) — balance correction radius (default: the body's rim_radius)
-    bearings : z1,z2 (m) — bearing positions along the shaft
-    grade : "G6.3" or a number (mm/s) — ISO 21940-11 grade; needs an angular ``speed`` and
-        ``bearings``
-    speed : quantity string with a unit — an angular speed ("3000 rpm", rad/s) is the
-        balance rotor speed, the whirl operating speed and the rolling spin; a speed
-        ("20 km/h", m/s) is the rolling speed; a bare number is refused
-    stiffness : N/m, one value or one per bearing — whirl: the bearings' stiffness (with
-        ``bearings``); the whirl section is there when it is given
-    damping : N s/m, one value or one per bearing — whirl: the bearings' damping
-    omega : x,y,z (rad/s) — free precession: the initial angular velocity, body frame
-    pivot : "com", "origin" or x,y,z (m) — heavy top: the fixed point (default: the body's)
-    spin : rad/s — heavy top: spin about the symmetry axis
-    theta : degrees (or a quantity string) — heavy top: start tilt from the vertical
-    theta_dot, phi_dot : rad/s — heavy top: start rates (default 0)
-    rim_radius : m — rolling: rim radius (default: the body's, else the largest round part)
-    tyre_radius : m — rolling: tube radius of a rounded rim (default 0)
-    g : m/s² — gravity for the top, rolling and static bearing loads (default 9.80665)
-    symmetry_tol : relative (0.01) or "1 %" — heavy top and rolling: how far the two moments
-        across the axis may differ (answered for the symmetrised body, with a warning)
+    body : rbcli.Body
+    {parameters}
 
     Returns
     -------
     ReportResult
-        ``sections`` (each with its result or the reason it is left out), ``failed`` (the
-        checks asked for that failed) and ``return_code`` (1 when one did).
+        ``sections`` (each with its result or why it is left out), ``failed``, ``return_code``.
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        naming the parameter, for a value a command refuses.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value a command refuses, naming the parameter.
 
     Examples
     --------
     >>> import rbcli
     >>> r = rbcli.report(rbcli.load("examples/top.yaml"), spin=150, theta=30)
     >>> [s.key for s in r.sections if s.skipped is None]
-    ['parts', 'mass-properties', 'principal-axes', 'heavy-top']
-    """
-    body = check.body(body)
-    kw = check.arguments(
-        KINDS, shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
-        grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega, pivot=pivot,
-        spin=spin, theta=theta, theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius,
-        tyre_radius=tyre_radius, g=g, symmetry_tol=symmetry_tol)
-    with check.arithmetic(kw):
-        return run(body, ReportOptions.parse(body, **kw))
+    ['parts', 'mass-properties', 'principal-axes', 'heavy-top']"""
+    return run(body, parse(body, **kwargs))

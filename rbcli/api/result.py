@@ -1,11 +1,6 @@
-"""What every service result shares: plain JSON data, one finiteness check, an exit status.
-
-A result is a frozen dataclass (:class:`Result` is the mixin) that knows its JSON form
-(``to_json()``: exactly the object ``rbcli <command> --json`` prints, less ``file``) and
-its own exit status (``return_code``: 0, or 1 when a check the user asked for failed; the
-model is black's ``Report.return_code``). The command line only renders a result and
-exits with its status.
-"""
+"""What every service result shares: a frozen dataclass (the :class:`Result` mixin) that
+knows its JSON (``to_json()``: ``rbcli <command> --json`` less ``file``), passed through the
+one finiteness check, and its exit status (``return_code``, as black's ``Report``)."""
 
 from __future__ import annotations
 
@@ -136,19 +131,9 @@ def freeze_fields(obj: Any, _depth: int = 0) -> None:
 
 
 def jsonable(obj: Any) -> Any:
-    """Plain JSON data from results: numpy arrays to lists, tuples to lists, -0.0 to 0.0.
-
-    This is the one finiteness check of a result's numbers: every JSON document and every
-    result of the Python API passes through it.
-
-    Raises
-    ------
-    NonFiniteResult
-        for an inf or NaN anywhere (an InputError, exit 2: the inputs were too large or too
-        small to compute with), naming the key it was found under.
-    TypeError
-        for a value that has no JSON form.
-    """
+    """Plain JSON data from results (arrays and tuples to lists, -0.0 to 0.0): the one
+    finiteness check of every JSON document and API result. NonFiniteResult (exit 2) naming the
+    key of an inf or NaN; TypeError for a value with no JSON form."""
     if obj is None or isinstance(obj, (str, bool, int)):  # a Note (a str) is kept as it is
         return obj
     if isinstance(obj, float):  # numpy's float64 too

@@ -1,13 +1,7 @@
-"""When does a rolling wheel, coin or hoop stay up? The service behind ``rbcli rollcheck``.
-
-:func:`rollcheck` reads its parameters once (:data:`rbcli.api.commands.ROLLCHECK`,
-:func:`parse`), makes the body a rolling wheel (:func:`wheel_setup`: the axle line, the rim
-radius and what the rim is, each with where it came from; mass, the moment I across the
-axle and Is about it, both about the centre of mass) and answers: the critical speed of
-straight upright rolling; with a speed, the verdict at that speed; with two of lean, circle
-and speed, the steady circle. The physics is :mod:`rbcli.core.rolling` (physics sheet
-``dynamics.md`` §3, in the repository's documentation).
-"""
+"""When does a rolling wheel, coin or hoop stay up? The service behind ``rbcli rollcheck``:
+the body made a rolling wheel (:func:`wheel_setup`: axle, rim radius and rim, each with
+where it came from), the straight-rolling threshold, the verdict at a speed and the steady
+circle (:mod:`rbcli.core.rolling`, physics sheet ``dynamics.md`` §3)."""
 
 from __future__ import annotations
 
@@ -50,16 +44,9 @@ def round_parts(body: Body) -> list[Part]:
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
-    """The keyword arguments of :func:`rollcheck` (see there) read for ``body`` and checked:
-    :class:`rbcli.api.params.Options` in SI (``g`` standard gravity unless given). What the
-    body's wheel cannot take is :func:`run`'s to refuse (:func:`wheel_setup`).
-
-    Raises
-    ------
-    rbcli.InputError
-        A value that is not what its parameter takes (naming it), or a steady circle without
-        two of lean, circle and speed.
-    """
+    """The keyword arguments of :func:`rollcheck` read for ``body`` (Options in SI, ``g``
+    standard gravity unless given); an InputError naming the parameter, or for a steady circle
+    without two of lean, circle and speed."""
     o = read(body, ROLLCHECK, kwargs)
     u = op.Units.of(body)
     for name, kind, what in (("rim_radius", "length", "the rim radius"), ("g", "acceleration", "gravity")):
@@ -85,28 +72,17 @@ class WheelSetup:
 
     Attributes
     ----------
-    axle : (3,) tuple — unit axle direction, body frame
-    through : (3,) tuple — m, a point of the axle line, body frame
-    axle_source : Note — where the axle and its point came from, in words (``"the body's
-        shaft, through the body's shaft"``, ``"{shaft}, through the origin"``, ...)
+    axle, through : (3,) tuple — the unit axle and a point of its line (m), body frame
+    axle_source : Note — where they came from, in words (``"{shaft}, through the origin"``)
     radius : float — m, the rim radius a (centre to floor when upright)
-    radius_source : Note — where a came from, in words: ``{rim_radius}``, ``"the body's
-        rim_radius"`` or ``"the largest round part 'rim' (ring, coaxial with the axle)"``
-    radius_kind : Note — ``{rim_radius}``, ``"rim_radius"`` (the body's) or
-        ``"largest_round_part"`` (JSON ``radius_source``)
+    radius_source, radius_kind : Note — where a came from, in words and as the JSON's
+        ``radius_source`` (``{rim_radius}``, ``"rim_radius"`` or ``"largest_round_part"``)
     radius_part : str or None — the part's name for ``"largest_round_part"``
-    tyre_radius : float — m, tube radius r of a rounded rim: 0 is a knife edge (or a flat
-        band), a a sphere; given, else from the rim's shape (a torus's tube, a sphere's radius)
-    tyre_radius_kind : Note — ``{tyre_radius}`` (given), ``"shape"`` or ``"knife_edge"``
-        (JSON ``tyre_radius_source``)
-    band : (float, float) or None — m, for a rim that is a flat band (a cylinder on its side,
-        rim circles in two planes) and no ``tyre_radius``: its edges' distances from the plane
-        of the centre of mass, one each side
-    rim : rbcli.core.rim.Rim or None — what the rim is and where it lies along the axle,
-        from the parts whose outer radius is the rim radius; None when no part has it
-    warnings : tuple of str — a rim slightly off the plane of the centre of mass, values far
-        outside the body's scale
-    """
+    tyre_radius : float — m, tube radius r: 0 a knife edge (or a flat band), a a sphere
+    tyre_radius_kind : Note — ``{tyre_radius}``, ``"shape"`` or ``"knife_edge"``
+    band : (float, float) or None — m, a flat band's edges from the plane of the com
+    rim : rbcli.core.rim.Rim or None — the rim's parts and where it lies along the axle
+    warnings : tuple of str — a rim slightly off the com's plane, values far outside the body"""
 
     axle: tuple[float, float, float]
     through: tuple[float, float, float]
@@ -123,16 +99,10 @@ class WheelSetup:
 
 
 def wheel_setup(body: Body, o: Options) -> WheelSetup:
-    """The wheel ``body`` makes with the parameters ``o`` (:func:`parse`): the axle, else the
-    body's shaft, else body z; the rim radius, else the body's ``rim_radius``, else the
-    largest round part coaxial with the axle; the rim's shape (:func:`rbcli.core.rim.rim_of`).
-
-    Raises
-    ------
-    rbcli.InputError
-        a tyre radius larger than the rim radius, a steady circle on a rim that is not a
-        knife edge (naming the parameter); a body with no rim radius (located).
-    """
+    """The wheel ``body`` makes with ``o``: the axle (else the body's shaft, else z), the rim
+    radius (else the body's, else the largest coaxial round part) and the rim
+    (:func:`rbcli.core.rim.rim_of`). An InputError for a tyre radius above the rim radius, a
+    steady circle on a rim that is not a knife edge, or no rim radius (located)."""
     mp = body_mass_props(body)
     axis, axis_from = shaft_axis(body, o.shaft)
     n = np.asarray(axis, dtype=float)
@@ -242,39 +212,10 @@ def _wheel(body: Body, mp: Any, axle: Any, through: Any, radius: Any, tol: float
 
 @dataclass(frozen=True)
 class RollcheckResult(Result):
-    """The answer of :func:`rollcheck`.
-
-    Attributes
-    ----------
-    name : str
-        The body's name.
-    source : str
-        The body's file (``"<expr>"``, ``"<text>"`` for bodies given as text).
-    units : dict
-        The body's units block (what a bare number meant; the options table echoes in it).
-    options : rbcli.api.params.Options
-        The parameters as read (:func:`parse`).
-    setup : WheelSetup
-        The axle and the rim as used, with where each came from.
-    wheel : rbcli.core.wheel.Wheel
-        mass (kg), ``A`` = I across the axle and ``C`` = Is about it (kg m², about the
-        centre of mass), ``com`` (m) and unit ``axle``; for a nearly symmetric wheel the
-        symmetrised one (``A`` the mean of the two moments across; ``wheel.asymmetry``).
-    straight : rbcli.core.rolling.StraightRolling
-        The threshold of straight upright rolling: ``critical_spin`` (rad/s),
-        ``critical_speed`` (m/s), ``C_contact`` = Is + m a², ``A_contact`` = I + m a²
-        (kg m²), ``nu2(spin)``.
-    verdict : rbcli.core.rolling.Verdict or None
-        With a speed or spin: ``speed`` (m/s), ``spin`` (rad/s), ``stable``, ``margin``
-        (``|speed|`` / critical speed), ``nu2`` (rad²/s²), ``lean_frequency`` (rad/s),
-        ``lean_frequency_hz``, ``growth_rate`` (1/s), ``backwards``.
-    circle : rbcli.core.rollcircle.CircleMotion or None
-        With a steady circle: ``lean`` (rad), ``lean_deg``, ``radius`` R_G (m),
-        ``turn_rate`` (rad/s), ``spin`` (rad/s), ``speed`` (m/s), ``contact_radius`` (m),
-        ``kappa`` (N m), ``stable``, ``lean_frequency`` (rad/s), ``growth_rate`` (1/s).
-    warnings : tuple of str
-        Located one-line warnings (the command line prints them on standard error).
-    """
+    """The answer of :func:`rollcheck`: ``name``, ``source``, ``units`` (the body's, for the
+    echo), ``options`` (:func:`parse`), ``setup`` (:class:`WheelSetup`), ``wheel``
+    (:class:`rbcli.core.wheel.Wheel`), ``straight`` (the threshold), ``verdict`` (at the speed
+    given), ``circle`` (the steady circle asked for) and ``warnings``."""
 
     name: str
     source: str
@@ -447,17 +388,10 @@ def _renamed(exc: InputError) -> InputError:
 
 
 def run(body: Body, options: Options) -> RollcheckResult:
-    """The rolling check of ``body`` with the parameters ``options`` (:func:`parse`).
-
-    Raises
-    ------
-    rbcli.InputError
-        The body is not of revolution about the axle or its centre of mass is off it, or its
-        rim circle is more than :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` of the radius
-        off the plane of the centre of mass (a cone or hemisphere on its base rim: upright
-        rolling is no equilibrium) — located at the body; or the parameters ask for a circle
-        that does not exist (naming them).
-    """
+    """The rolling check of ``body`` with ``options`` (:func:`parse`). An InputError located at
+    the body when it is not of revolution about the axle, or its rim is more than
+    :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` off the com's plane (no upright equilibrium); or
+    naming the parameters of a circle that does not exist."""
     o = options
     s = wheel_setup(body, o)
     wheel = _wheel(body, body_mass_props(body), s.axle, s.through, s.radius, o.symmetry_tol)
@@ -482,21 +416,16 @@ def run(body: Body, options: Options) -> RollcheckResult:
 def rollcheck(body: Body, **kwargs: Any) -> RollcheckResult:
     """Stability of a wheel, disk or hoop rolling without slipping on a rough level floor.
 
-    The body must be of revolution about its axle with its centre of mass on it (to
-    ``symmetry_tol``, default 1 %: a nearly symmetric wheel is answered for its
-    symmetrised form, with a warning, ``asymmetry`` in the JSON and
-    ``result.asymmetry_effect``, the relative amount the critical speed may be off). Straight
-    upright rolling is (neutrally) stable when the spin s satisfies
-    s² > m g (a − r) I / (Is (Is + m a²)), I across the axle and Is about it, both about
-    the centre of mass (physics sheet ``dynamics.md`` §3.2; thin disk v_c = sqrt(g a/3),
-    hoop sqrt(g a/4)). Every value may be a number in SI units or a string as typed on the
-    command line (``"5 km/h"``, ``"300 rpm"``, ``"20 deg"``); the command line's ``--axle``,
-    ``--radius`` and ``--speed`` are ``shaft``, ``rim_radius`` and ``rolling_speed``.
+    The body must be of revolution about its axle with its com on it (to ``symmetry_tol``:
+    a nearly symmetric wheel is answered for its symmetrised form, with a warning and
+    ``result.asymmetry_effect``). Straight upright rolling is (neutrally) stable when
+    s² > m g (a − r) I / (Is (Is + m a²)), I across the axle and Is about it, about the com
+    (physics sheet ``dynamics.md`` §3.2). The command line's ``--axle``, ``--radius`` and
+    ``--speed`` are ``shaft``, ``rim_radius`` and ``rolling_speed``.
 
     Parameters
     ----------
     body : rbcli.Body
-        From :func:`rbcli.load` or :func:`rbcli.load_text`.
     {parameters}
 
     Returns
@@ -506,12 +435,9 @@ def rollcheck(body: Body, **kwargs: Any) -> RollcheckResult:
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        Naming the parameter (``rolling_speed: ...``), or located in the body's file for a
-        body that cannot roll.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; located in
+        the body's file for a body that cannot roll.
 
     Examples
     --------
@@ -519,6 +445,5 @@ def rollcheck(body: Body, **kwargs: Any) -> RollcheckResult:
     >>> penny = rbcli.load("examples/penny.yaml")
     >>> r = rbcli.rollcheck(penny, rolling_speed="10 cm/s")
     >>> round(r.critical_speed, 6), r.verdict.stable, r.return_code
-    (0.176454, False, 1)
-    """
+    (0.176454, False, 1)"""
     return run(body, parse(body, **kwargs))

@@ -1,12 +1,6 @@
-"""The heavy top as a service: :func:`top` (``rbcli top``).
-
-``rbcli.top(body, spin=..., theta=...)`` is ``rbcli top BODY --spin ... --theta ...``:
-the exact closed-form motion of a symmetric top on a fixed pivot (Goldstein, Poole and
-Safko, *Classical Mechanics*, 3rd ed., §5.7), optionally checked against a numerical
-integration (``verify=True``). The gyrocompass is :mod:`rbcli.api.gyrocompass`. Values
-are read by :mod:`rbcli.api.options` (SI numbers, or strings as typed on the command
-line); errors are :class:`rbcli.errors.InputError` with the command line's message.
-"""
+"""The heavy top as a service: :func:`top` (``rbcli top``): the exact closed-form motion
+of a symmetric top on a fixed pivot (Goldstein, Poole and Safko §5.7), optionally checked
+against a numerical integration (``verify=True``)."""
 
 from __future__ import annotations
 
@@ -108,27 +102,10 @@ def _pivot(body: Body, given: Any) -> tuple[tuple[float, float, float], Note]:
 
 @dataclass(frozen=True)
 class TopResult(Result):
-    """The heavy top's motion from the given start, and the numerical check if asked for.
-
-    Attributes
-    ----------
-    body : Body — the body (its name and source label the result)
-    options : rbcli.api.params.Options — the inputs as understood (SI, :func:`parse`)
-    pivot_source : Note — where the pivot came from: ``{pivot}``, ``{pivot} com``, ``{pivot}
-        origin`` (the parameter, spelled by the caller), ``"the body's pivot"`` or ``"the
-        origin, as no pivot was given"``
-    motion : TopMotion — the exact motion: mass (kg), length l (m), I and Is about the pivot
-        (kg m²) in ``motion.params``; steady precession rates, critical spin, nutation limits
-        θ1, θ2 (rad), nutation period (s), mean rates (rad/s), the kind of path, ...
-    verify : VerifyResult | None — with ``verify=True``: the largest differences of the axis
-        (rad) and the Euler angles from a DOP853 integration, the drift of the energy and of
-        the two conserved momenta, and the verdict (``verify.passed``)
-    real_body : RealBodyCheck | None — with ``verify=True`` for a nearly symmetric body:
-        the real (unsymmetrised) body integrated from the same start, and how far its axis
-        (rad), θ and φ get from the closed form (information: not part of the verdict)
-    warnings : tuple[str, ...] — located one-line warnings: a pivot or a rim speed far outside
-        the body's scale, a nearly symmetric body
-    """
+    """The heavy top's motion from the given start: ``body``, ``options`` (:func:`parse`),
+    ``pivot_source`` (``{pivot}``, ``"the body's pivot"``...), ``motion``
+    (:class:`rbcli.core.top.TopMotion`), with ``verify`` the DOP853 comparison ``verify`` and,
+    for a nearly symmetric body, ``real_body`` (not in the verdict), and ``warnings``."""
 
     body: Body = field(repr=False)
     options: Options
@@ -292,41 +269,31 @@ def run(body: Body, options: Options) -> TopResult:
 def top(body: Body, **kwargs: Any) -> TopResult:
     """A heavy symmetric top or gyroscope on a fixed pivot: precession, nutation, sleeping.
 
-    The body stands on ``pivot``; its symmetry axis runs from the pivot through the centre
-    of mass, and it must be symmetric about that axis. It spins at ``spin`` about the axis
-    and starts tilted by ``theta`` from the upward vertical, released from rest unless
-    ``theta_dot`` or ``phi_dot`` is given. Exact closed form (Goldstein, Poole and Safko,
-    *Classical Mechanics*, 3rd ed., §5.7). With ``verify``, a nearly symmetric body's real
-    (unsymmetrised) motion is integrated too (``result.real_body``); ``duration`` and
-    ``samples`` are those of :meth:`TopResult.sample` and the command line's ``--csv``.
+    The symmetry axis runs from ``pivot`` through the com; the top spins at ``spin`` and starts
+    tilted by ``theta`` from the upward vertical (released from rest unless ``theta_dot`` or
+    ``phi_dot``). Exact closed form (Goldstein, Poole and Safko, *Classical Mechanics*, 3rd
+    ed., §5.7); ``duration`` and ``samples`` are those of :meth:`TopResult.sample`.
 
     Parameters
     ----------
     body : Body
-        From :func:`rbcli.load` or :func:`rbcli.load_text`.
     {parameters}
 
     Returns
     -------
     TopResult
-        ``result.motion`` (the numbers), ``result.at(t)`` (the angles and rates at times
-        ``t``), ``result.to_json()`` (as ``rbcli top --json``), ``result.return_code``.
+        ``motion``, ``at(t)``, ``to_json()`` (as ``rbcli top --json``), ``return_code``.
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        Naming the parameter: a value out of range, a body that is not a top
-        about this pivot (asymmetric, the pivot at the com, a point mass), values that
-        overflow the top's equations.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a body that
+        is not a top about this pivot.
 
     Examples
     --------
     >>> import rbcli
     >>> r = rbcli.top(rbcli.load("examples/top.yaml"), spin=150, theta=30, g=9.81)
     >>> round(r.motion.nutation_period, 6), r.motion.path
-    (0.142133, 'cusps')
-    """
+    (0.142133, 'cusps')"""
     return run(body, parse(body, **kwargs))

@@ -1,15 +1,10 @@
 """The rotor on its bearings: the service behind ``rbcli whirl``.
 
-:func:`whirl` reads its parameters once (:data:`rbcli.api.commands.WHIRL`, :func:`parse`: SI numbers or
-quantity strings, the bare-number rule of :mod:`rbcli.api.options`), builds the rigid rotor from
-the body (mass, com, the moments about the com in shaft axes, its unbalance: what
-:mod:`rbcli.core.balance` computes) on linear spring-damper bearings, and runs the physics
-of :mod:`rbcli.core.whirl`: the Campbell diagram over a speed range, the critical speeds
-(undamped: an eigenproblem in the speed; damped: a root solve), the stability, the
-unbalance response with its peaks and amplification factors, and at an operating speed
-the API 617 / 684 separation margins. The result (:class:`WhirlResult`) is frozen; its
-attribute names are its JSON keys and its arrays are read-only.
-"""
+:func:`parse` reads the parameters (:data:`rbcli.api.commands.WHIRL`); :func:`run` builds
+the rigid rotor from the body (mass, com, moments in shaft axes, its unbalance) on linear
+bearings and runs :mod:`rbcli.core.whirl`: the Campbell diagram, critical speeds,
+stability, the unbalance response and, at an operating speed, the API 617 / 684
+separation margins, in a frozen :class:`WhirlResult` whose attributes are its JSON keys."""
 
 from __future__ import annotations
 
@@ -564,30 +559,24 @@ def whirl(body: Body, **kwargs: Any) -> WhirlResult:
     """The rigid rotor on linear bearings: Campbell diagram, critical speeds, stability,
     unbalance response and API separation margins.
 
-    Every value may be an SI number (a sequence for lists) or a string as typed on the
-    command line (``"0,400 mm"``, ``"0,6000 rpm"``, ``"2e7 N/m"``): the rules of
-    ``rbcli whirl`` (bare lengths in the body's length unit, bare speeds in rad/s unless
-    the body's units name an angular_speed, stiffness N/m, damping N s/m).
+    Values are SI numbers or strings as typed on the command line (``"0,400 mm"``,
+    ``"0,6000 rpm"``, ``"2e7 N/m"``), read by the rules of ``rbcli whirl``.
 
     Parameters
     ----------
     body : Body
-        The rotor (:func:`rbcli.load`).
     {parameters}
 
     Returns
     -------
     WhirlResult
-        ``return_code`` 1 when ``speed`` fails the separation-margin rule or a mode grows
-        there.
+        ``return_code`` 1 when ``speed`` fails the separation margin or a mode grows there.
 
     Raises
     ------
-    TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
-    rbcli.InputError
-        A bad or missing value (``bearings: ...``), or a rotor the model does not fit.
+    TypeError, rbcli.InputError
+        A wrong type (:mod:`rbcli.api.check`) or value, naming the parameter; a rotor the
+        model does not fit.
 
     Examples
     --------
@@ -595,6 +584,5 @@ def whirl(body: Body, **kwargs: Any) -> WhirlResult:
     >>> body = rbcli.load_text("{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}")
     >>> r = rbcli.whirl(body, bearings="-0.2,0.2", stiffness=1e6)
     >>> [round(c.speed, 3) for c in r.critical_speeds]
-    [200.0, 200.0, 206.559, 241.209]
-    """
+    [200.0, 200.0, 206.559, 241.209]"""
     return run(body, parse(body, **kwargs))

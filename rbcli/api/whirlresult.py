@@ -1,10 +1,6 @@
-"""The result of :func:`rbcli.whirl`: frozen values whose attribute names are the JSON keys.
-
-Every array is read-only; ``to_json()`` is built from the attributes (each nested value
-the same way), so ``WhirlResult.to_json()`` is exactly what ``rbcli whirl --json`` prints
-less ``file``. Units: SI (m, kg, s, N, rad/s, N/m, N s/m); angles in degrees under keys
-ending in ``_deg``; margins in % under keys ending in ``_percent``.
-"""
+"""The result of :func:`rbcli.whirl`: frozen values whose attribute names are the JSON keys
+(read-only arrays; ``to_json()`` is ``rbcli whirl --json`` less ``file``): SI, degrees under
+``_deg`` keys, % under ``_percent`` keys."""
 
 from __future__ import annotations
 

@@ -20,22 +20,13 @@ __all__ = ["app", "main"]
 def main(argv: list[str] | None = None) -> int:
     """Run the command line with ``argv`` (default ``sys.argv[1:]``); the exit status.
 
-    The one place where everything that ends a run becomes one of SPEC §4's exit codes
-    (typer runs with ``standalone_mode=False``, so all of it comes back here): a usage error
-    (click's) or bad input (InputError, a result too large or too small to compute with) is
-    one line on standard error and exit 2; a failed check returns 1 from the command;
-    SIGINT (Ctrl-C), SIGTERM and SIGHUP are 130, 143 and 129 with the line ``rbcli:
-    interrupted by SIGINT`` (each raised as an exception, so that no temporary file is
-    left: :mod:`rbcli.interrupts`); anything else is a bug (70), with a traceback under
-    ``--debug`` or ``RBCLI_DEBUG=1``. The ``rbcli`` console script and ``python -m rbcli``
-    (:mod:`rbcli.__main__`) exit with the status returned; a caller in Python gets it as
-    an int (the values of :class:`rbcli.errors.ExitStatus`, or 128 + a signal).
-
-    Streams: a pipe closed early (``| head -1``) is quiet; standard output closed or full
-    (``>&-``, ``> /dev/full``) is exit 2 with a message; standard error closed or full
-    changes nothing but the message; a terminal that cannot show ``·`` or ``²`` gets ASCII.
-    Every message is made safe to print once, here (:func:`rbcli.env.clean`).
-    """
+    The one place where everything that ends a run becomes one of SPEC §4's exit codes (typer
+    runs with ``standalone_mode=False``): a usage error or bad input is one line and 2; a
+    failed check 1; SIGINT, SIGTERM, SIGHUP 130, 143, 129 (raised as exceptions, so no
+    temporary file is left: :mod:`rbcli.interrupts`); anything else a bug, 70 (a traceback
+    under ``--debug`` or ``RBCLI_DEBUG=1``). A pipe closed early is quiet; standard output
+    closed or full is 2 with a message; a terminal that cannot show ``²`` gets ASCII; every
+    message is made safe once, here (:func:`rbcli.env.clean`)."""
     from rbcli import env as _env
 
     _env.prepare_streams()

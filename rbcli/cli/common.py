@@ -56,9 +56,9 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
     (:class:`rbcli.api.params.Param`) where it has a parameter ``args = PARAMS``. The
     function receives ``args``: the table's values as typed (None: not given), by parameter.
 
-    Each table option's flag is ``--`` + its name with dashes (or its ``flag``, ``short``, or
-    this command's own word: rollcheck's ``rim_radius`` is ``--radius``, its man page's
-    metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
+    Each table option's flag is ``--`` + its name with dashes, or this command's own word
+    (:data:`rbcli.errors.COMMAND_OPTIONS`: rollcheck's ``rim_radius`` is ``--radius``, its man
+    page's metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
     options; a parameter of ``form`` "argument" is a positional argument, of "options" an
     option given once per item (a list; not given: None)."""
     import inspect
@@ -73,13 +73,12 @@ def command(params: Any, *, name: str | None = None, help: str | None = None):
         at = [q.name for q in own].index("args")
         opts, words = [], {}
         for p in table:
-            flag = p.flag or spelled(p.name)
-            decls = [d for d in (p.short, flag) if d]
+            flag = spelled(p.name)
             kind = list[str] if p.form == "options" else \
                 p.cli_type or {"count": int, "flag": bool}.get(p.kind, str)
             how = dict(help=spell(p.help, spelled), metavar=p.metavar, show_default=p.default is not None)
             info = (typer.Argument(p.default, **how) if p.form == "argument"
-                    else typer.Option(p.default, *decls, **how))
+                    else typer.Option(p.default, flag, **how))
             words[p.name] = p.name if p.form == "argument" else flag.lstrip("-").replace("-", "_")
             opts.append(inspect.Parameter(words[p.name], inspect.Parameter.KEYWORD_ONLY,
                                           default=info, annotation=kind))
@@ -259,28 +258,14 @@ def each_body(srcs: list[str], expr: str | None, e: Any) -> Iterator[tuple[str, 
             yield src, exc
 
 
-# ----------------------------------------------------------------------------- option values
-
-# The readers are rbcli.api.options' (one rule for the command line and the Python API).
-from rbcli.api.options import (  # noqa: E402,F401
-    NUMBER, UNIT_RULE, degrees, direction, distinct, finite, grade, numbers, point,
-    positive, quantity, vector,
-)
-
-
 # ----------------------------------------------------------------------------- output
 
 
-def check_finite_doc(doc: Any) -> None:
-    """Refuse a table that would show inf or NaN as a number
-    (:func:`rbcli.render.text.check_finite_doc`)."""
-    from rbcli.render.text import check_finite_doc as check
-
-    check(doc)
-
-
 def write_doc(e: Any, doc: Any) -> None:
-    """Render a document of tables to standard output, after :func:`check_finite_doc`."""
+    """Render a document of tables to standard output, refusing inf and NaN
+    (:func:`rbcli.render.text.check_finite_doc`)."""
+    from rbcli.render.text import check_finite_doc
+
     check_finite_doc(doc)
     e.write(doc.render())
 
@@ -306,12 +291,10 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
     Lines); that JSON as one CSV table (:mod:`rbcli.render.tablecsv`: a ``file`` column when
     ``file`` is given, the header row only with ``header``); or the tables ``doc_fn(doc)``
     puts in a Doc, as text. All refuse inf and NaN (one line, exit 2):
-    :func:`rbcli.api.result.jsonable` and :func:`check_finite_doc`. Only the one that is
-    printed is built. ``given`` (option, value, unit) rows are the options as understood
-    (an XOptions' ``given``), or a function that makes them (called only for a table): the
-    text output shows them first (after the title), in a table titled "options" (JSON and
-    CSV stay as they are). ``plain``: ``data_fn()`` returns
-    jsonable's result already (a result's ``to_json()``), not converted again."""
+    :func:`rbcli.api.result.jsonable` and :func:`rbcli.render.text.check_finite_doc`. Only the
+    one printed is built. ``given``: the (option, value, unit) rows of the options as
+    understood (:func:`rbcli.render.echo.echo_rows`), or a function making them, shown first
+    in a table "options" (tables only). ``plain``: ``data_fn()`` is already jsonable's."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
     if fmt in ("json", "csv"):
         data = data_fn()
@@ -325,10 +308,14 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
 
             e.write(dumps(data, lines=lines))
         else:
+            from rbcli.api.commands import TABLES
+            from rbcli.api.params import si_unit
             from rbcli.render import tablecsv
 
             command, digits = _invocation()
-            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header))
+            units = {p.name: si_unit(p) for p in TABLES.get(command, ())}
+            e.write(tablecsv.render(data, command, digits=digits, file=file, header=header,
+                                    params=units))
         return
     from rbcli.render.text import Doc
 

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import typer
 
+from rbcli.api.commands import REPORT
 from rbcli.cli import common as c
-from rbcli.cli.app import MANUAL, app
+from rbcli.cli.app import MANUAL
 
 HELP = """One document with every answer that applies to the body, its tables and figures.
 
@@ -25,31 +26,13 @@ report is written first.
 """
 
 
-@app.command(help=HELP)
+@c.command(REPORT, help=HELP)
 def report(
     body: str = c.BodyArg,
     expr: str = c.ExprOpt,
     output: str = typer.Option(None, "-o", "--output", help="The report file: .html (self-contained) or .md (figures in FILE_files/). Required.", show_default=False),
     force: bool = typer.Option(False, "--force", help="Replace an existing report (never an input: the body file, a file it includes or a mesh it reads)."),
-    shaft: str = typer.Option(None, "--shaft", help="Balance and rolling: shaft (axle) direction x,y,z (or x, y, z). Default: the body's shaft; without either there is no balance section.", show_default=False),
-    through: str = typer.Option(None, "--through", help="Balance and rolling: a point of the shaft: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,50 mm'). Default: the body's shaft point, else the origin.", show_default=False),
-    planes: str = typer.Option(None, "--planes", help="Balance: correction planes zA,zB along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-100,100 mm').", show_default=False),
-    radius: str = typer.Option(None, "--radius", help="Balance: correction radius r, or rA,rB (a bare number in the body's length unit, m by default; or with units as for --planes). Default: the body's rim_radius.", show_default=False),
-    bearings: str = typer.Option(None, "--bearings", help="Balance: bearing positions z1,z2 along the shaft (a bare number in the body's length unit, m by default; a unit after the last number applies to both, e.g. '-50,150 mm').", show_default=False),
-    grade: str = typer.Option(None, "--grade", help="Balance: ISO 21940-11 grade, e.g. G6.3; needs an angular --speed and --bearings.", show_default=False),
-    speed: str = typer.Option(None, "--speed", help="With a unit: an angular speed ('3000 rpm', rad/s) is the balance rotor speed, the whirl operating speed and the rolling spin; a speed ('20 km/h', m/s) is the rolling speed.", show_default=False),
-    stiffness: str = typer.Option(None, "--stiffness", help="Whirl: the bearings' stiffness (N/m, or with units, e.g. '200 N/mm'), one value for every bearing or one per --bearings position; the report then has a whirl section (critical speeds, Campbell diagram, unbalance response).", show_default=False),
-    damping: str = typer.Option(None, "--damping", help="Whirl: the bearings' damping (N s/m, or with units), one value or one per bearing. Default: none.", show_default=False),
-    omega: str = typer.Option(None, "--omega", help="Free precession: initial angular velocity x,y,z, body frame (rad/s; a unit after the last number applies to all, e.g. '0,0,300 rpm').", show_default=False),
-    pivot: str = typer.Option(None, "--pivot", help="Heavy top: the fixed point: com, origin or x,y,z (a bare number in the body's length unit, m by default; a unit after the last number applies to all, e.g. '0,0,-20 mm'). Default: the body's pivot; without either there is no top section.", show_default=False),
-    spin: str = typer.Option(None, "--spin", help="Heavy top: spin about the symmetry axis (a bare number is rad/s, or the body's units' angular_speed; or e.g. '3000 rpm').", show_default=False),
-    theta: str = typer.Option(None, "--theta", help="Heavy top: start tilt of the axis from the upward vertical (degrees, or with units).", show_default=False),
-    theta_dot: str = typer.Option(None, "--theta-dot", help="Heavy top: start rate theta' (rad/s, or with units). Default: 0.", show_default=False),
-    phi_dot: str = typer.Option(None, "--phi-dot", help="Heavy top: start precession rate phi' (rad/s, or with units). Default: 0.", show_default=False),
-    rim_radius: str = typer.Option(None, "--rim-radius", help="Rolling: rim radius (a bare number in the body's length unit, m by default; or with units). Default: the body's rim_radius, else the largest round part coaxial with the axle.", show_default=False),
-    tyre_radius: str = typer.Option(None, "--tyre-radius", help="Rolling: tube radius of a rounded rim (a bare number in the body's length unit, m by default; or with units). Default: 0, a knife edge.", show_default=False),
-    symmetry_tol: str = c.SymmetryTolOpt,
-    g: str = typer.Option(None, "--g", help="Gravity for the top, rolling and static bearing loads (m/s^2, or with units). Default: 9.80665 m/s^2.", show_default=False),
+    args: dict = c.PARAMS,
     digits: int = c.DigitsOpt,
     units: str = c.UnitsOpt,
 ) -> None:
@@ -66,12 +49,7 @@ def report(
     progress = _Progress(t0)
     try:
         result = write_report(
-            b, output, force=force, digits=digits, units=units, progress=progress.step,
-            shaft=shaft, through=through, planes=planes, radius=radius, bearings=bearings,
-            grade=grade, speed=speed, stiffness=stiffness, damping=damping, omega=omega,
-            pivot=pivot, spin=spin, theta=theta,
-            theta_dot=theta_dot, phi_dot=phi_dot, rim_radius=rim_radius, tyre_radius=tyre_radius,
-            g=g, symmetry_tol=symmetry_tol)
+            b, output, force=force, digits=digits, units=units, progress=progress.step, **args)
     finally:
         progress.stop()
     if result.failed:

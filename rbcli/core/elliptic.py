@@ -1,39 +1,16 @@
 """Elliptic integrals and Jacobi elliptic functions in plain numpy, from (m, 1 − m).
 
-One module for every elliptic function rbcli uses (the free motion of ``precess``, the heavy
-top). Nothing here imports scipy: ``scipy.special`` costs ~0.3 s of CPU at import
-(numpy.f2py, numpy.testing, unittest, numpy.ma), more than a whole ``precess`` one-liner.
+Every elliptic function rbcli uses (free motion, the heavy top), without scipy
+(``scipy.special`` costs ~0.3 s of CPU at import). A function of the parameter takes ``m``
+and, optionally, ``mc = 1 − m`` from the caller's cancellation-free formula: near the
+separatrix ``1 − m`` rounded from ``m`` has lost its digits (``scipy.special.ellipj``
+returns ``cn(2K) = −2`` for ``1 − m = 1e-10``); here K, sn, cn, dn keep full relative
+precision down to ``mc`` ~ 1e-300.
 
-Every function that depends on the parameter takes ``m`` AND, optionally, its complement
-``mc = 1 − m`` computed by the caller from a cancellation-free formula. Near the separatrix
-(``mc`` → 0) ``1 − m`` rounded from ``m`` has lost all its digits (``scipy.special.ellipj``
-takes only ``m`` and returns ``cn(2K) = −2`` for ``1 − m = 1e-10``); here the complement is
-used as given, so ``K``, ``sn``, ``cn``, ``dn`` keep full relative precision down to
-``mc`` ~ 1e-300.
-
-Functions
----------
-Carlson symmetric forms (real arguments), by Carlson's duplication theorem:
-    :func:`elliprf` R_F, :func:`elliprj` R_J (p > 0), :func:`elliprd` R_D, :func:`elliprc`
-    R_C (also its Cauchy principal value for y < 0).
-Legendre forms:
-    :func:`ellipk` K(m), :func:`ellipf` F(φ|m) (any real φ), :func:`ellippi` Π(n|m) (n < 1),
-    :func:`ellippi_sc` Π(n; φ|m) for |φ| <= π/2 from sin φ, cos φ.
-Jacobi functions:
-    :func:`ellipj` sn, cn, dn, am (u any real), :func:`jacobi_reduced` (the same with the
-    half-period reduction exposed, for callers that also need Π(n; am u)).
-
-Sources
--------
-* B. C. Carlson, "Numerical computation of real or complex elliptic integrals", Numerical
-  Algorithms 10 (1995) 13–26, https://arxiv.org/abs/math/9409227 — the duplication
-  algorithms and the series for R_F, R_C, R_J.
-* NIST DLMF §19.2, §19.7, §19.20, §19.25, https://dlmf.nist.gov/19 — Legendre forms in
-  Carlson form (19.25.5, 19.25.14), the Cauchy principal value of R_C (19.2.20), the
-  transformation for n < −1 (19.7.9), R_C in elementary functions (19.2.17–19).
-* Abramowitz & Stegun §16.4 (descending Landen / AGM), §16.8 (quarter-period shift),
-  §16.14–16.15 (ascending Landen and the m → 1 expansions), https://personal.math.ubc.ca/~cbm/aands/
-"""
+Sources: B. C. Carlson, "Numerical computation of real or complex elliptic integrals",
+Numer. Algorithms 10 (1995) 13–26 (duplication, the series of R_F, R_C, R_J); DLMF §19.2,
+§19.7, §19.20, §19.25 (Legendre forms in Carlson form, principal values, n < −1); Abramowitz
+& Stegun §16.4 (AGM), §16.8 (quarter-period shift), §16.14–16.15 (m → 1)."""
 
 from __future__ import annotations
 
@@ -46,9 +23,7 @@ __all__ = [
     "elliprc",
     "elliprf",
     "elliprj",
-    "elliprd",
     "ellipk",
-    "ellipf",
     "ellippi",
     "ellippi_sc",
     "ellipj",
@@ -97,17 +72,8 @@ def _rc_pos(x: np.ndarray, y: np.ndarray) -> np.ndarray:
 
 
 def elliprc(x: Any, y: Any) -> Any:
-    """Carlson's degenerate integral R_C(x, y) = R_F(x, y, y).
-
-    Parameters
-    ----------
-    x : float or array_like — >= 0
-    y : float or array_like — != 0; for y < 0 the Cauchy principal value (DLMF 19.2.20)
-
-    Returns
-    -------
-    float or ndarray — R_C(x, y) = ½ ∫₀^∞ (t + x)^(−1/2) (t + y)^(−1) dt
-    """
+    """Carlson's R_C(x, y) = R_F(x, y, y) = ½ ∫₀^∞ (t + x)^(−1/2) (t + y)^(−1) dt, x >= 0,
+    y != 0 (y < 0: the Cauchy principal value, DLMF 19.2.20)."""
     x = _arr(x)
     y = _arr(y)
     neg = y < 0.0
@@ -120,24 +86,10 @@ def elliprc(x: Any, y: Any) -> Any:
 
 
 def elliprf(x: Any, y: Any, z: Any) -> Any:
-    """Carlson's symmetric integral of the first kind R_F(x, y, z).
-
-    Parameters
-    ----------
-    x, y, z : float or array_like — >= 0, at most one of them 0 (broadcast together)
-
-    Returns
-    -------
-    float or ndarray — R_F = ½ ∫₀^∞ [(t + x)(t + y)(t + z)]^(−1/2) dt; ``inf`` when two
-    arguments are 0.
-
-    Notes
-    -----
-    Carlson (1995) §2: duplicate ``x ← (x + λ)/4`` (λ = √x√y + √x√z + √y√z) until the three
-    arguments agree to 1e-3 of their mean, then the series
-    ``(1 − E2/10 + E3/14 + E2²/24 − 3 E2 E3/44) / √A`` (truncation ~1e-18 relative).
-    Relative error a few ulp (tests: against mpmath at 50 digits).
-    """
+    """Carlson's R_F(x, y, z) = ½ ∫₀^∞ [(t + x)(t + y)(t + z)]^(−1/2) dt, arguments >= 0, at most
+    one 0 (``inf`` when two are). Carlson (1995) §2: duplicate ``x ← (x + λ)/4`` until the
+    arguments agree to 1e-3, then ``(1 − E2/10 + E3/14 + E2²/24 − 3 E2 E3/44) / √A``; a few ulp
+    (tested against mpmath)."""
     x, y, z = np.broadcast_arrays(_arr(x), _arr(y), _arr(z))
     x = x.astype(float, copy=True)
     y = y.astype(float, copy=True)
@@ -170,26 +122,13 @@ def elliprf(x: Any, y: Any, z: Any) -> Any:
 
 
 def elliprj(x: Any, y: Any, z: Any, p: Any) -> Any:
-    """Carlson's symmetric integral of the third kind R_J(x, y, z, p), p > 0.
+    """Carlson's R_J(x, y, z, p) = (3/2) ∫₀^∞ [(t + x)(t + y)(t + z)]^(−1/2) (t + p)^(−1) dt,
+    x, y, z >= 0 (at most one 0), p > 0 (p < 0 gives NaN).
 
-    Parameters
-    ----------
-    x, y, z : float or array_like — >= 0, at most one of them 0
-    p : float or array_like — > 0 (the principal value for p < 0 is not needed by rbcli;
-        it gives NaN)
-
-    Returns
-    -------
-    float or ndarray — R_J = (3/2) ∫₀^∞ [(t + x)(t + y)(t + z)]^(−1/2) (t + p)^(−1) dt
-
-    Notes
-    -----
-    Carlson (1995) §2, algorithm for R_J: duplication, accumulating
-    ``3 Σ 4^(−k) R_C(α_k, β_k)`` with ``α_k = (p_k(√x_k + √y_k + √z_k) + √x_k√y_k√z_k)²``,
-    ``β_k = p_k (p_k + λ_k)²`` (the form of Carlson's earlier algorithm, "Computing elliptic
-    integrals by duplication", Numer. Math. 33 (1979) 1–16: both sums of positive terms,
-    where 1995's ``R_C(1, 1 + δ/d²)`` cancels for p ≪ x, y, z), then the degree-5 series in X, Y, Z, P.
-    """
+    Carlson (1995) §2 duplication, accumulating ``3 Σ 4^(−k) R_C(α_k, β_k)`` with
+    ``α_k = (p_k(√x_k + √y_k + √z_k) + √x_k√y_k√z_k)²``, ``β_k = p_k (p_k + λ_k)²`` (Carlson,
+    Numer. Math. 33 (1979) 1–16: positive terms, where 1995's form cancels for p ≪ x, y, z),
+    then the degree-5 series."""
     x, y, z, p = np.broadcast_arrays(_arr(x), _arr(y), _arr(z), _arr(p))
     x = x.astype(float, copy=True)
     y = y.astype(float, copy=True)
@@ -234,11 +173,6 @@ def elliprj(x: Any, y: Any, z: Any, p: Any) -> Any:
     return _out(np.asarray(out))
 
 
-def elliprd(x: Any, y: Any, z: Any) -> Any:
-    """Carlson's R_D(x, y, z) = R_J(x, y, z, z) (z > 0)."""
-    return elliprj(x, y, z, z)
-
-
 # ----------------------------------------------------------------------------------------
 # Legendre forms
 # ----------------------------------------------------------------------------------------
@@ -253,62 +187,22 @@ def _params(m: float, mc: float | None) -> tuple[float, float]:
 
 
 def ellipk(m: float, mc: float | None = None) -> float:
-    """Complete elliptic integral of the first kind K(m) = R_F(0, 1 − m, 1) (DLMF 19.25.1).
-
-    Parameters
-    ----------
-    m : float — parameter m = k², 0 <= m <= 1
-    mc : float, optional — 1 − m computed by the caller (keeps its digits near m = 1);
-        default ``1 − m``
-
-    Returns
-    -------
-    float — K(m); ``inf`` at m = 1 (mc = 0)
-    """
+    """K(m) = R_F(0, 1 − m, 1) (DLMF 19.25.1), 0 <= m <= 1, ``mc`` = 1 − m from the caller
+    (default ``1 − m``); ``inf`` at mc = 0."""
     _, mc = _params(m, mc)
     if mc == 0.0:
         return math.inf
     return float(elliprf(0.0, mc, 1.0))
 
 
-def ellipf(phi: Any, m: float, mc: float | None = None) -> Any:
-    """Incomplete elliptic integral of the first kind F(φ|m), φ any real (radians).
-
-    ``F(φ + jπ|m) = F(φ|m) + 2 j K(m)`` reduces φ to |φ| <= π/2, where
-    ``F = sin φ R_F(cos²φ, cos²φ + (1 − m) sin²φ, 1)`` (DLMF 19.25.5, with 1 − m sin²φ
-    written as a sum of non-negative terms). At m = 1 (mc = 0) and |φ| >= π/2 the integral
-    diverges (``inf``).
-    """
-    m, mc = _params(m, mc)
-    ph = _arr(phi)
-    j = np.rint(ph / math.pi)
-    r = ph - math.pi * j
-    s, c = np.sin(r), np.cos(r)
-    c2 = c * c
-    out = s * _arr(elliprf(c2, c2 + mc * s * s, 1.0))
-    if np.any(j != 0.0):
-        out = out + 2.0 * j * ellipk(m, mc)
-    return _out(np.asarray(out))
-
-
 def ellippi_sc(n: float, s: Any, c: Any, m: float, mc: float | None = None,
                n1: float | None = None) -> Any:
-    """Incomplete Π(n; φ|m) for |φ| <= π/2, from s = sin φ and c = cos φ >= 0.
+    """Incomplete Π(n; φ|m) for |φ| <= π/2, from s = sin φ and c = cos φ >= 0 (n < 1; ``mc``,
+    ``n1`` the caller's 1 − m and 1 − n).
 
-    Parameters
-    ----------
-    n : float — characteristic, n < 1 (n sin²φ < 1)
-    s, c : float or array_like — sin φ and cos φ (c >= 0); for φ = am u these are sn u, cn u
-    m, mc : float — parameter and (optionally) its complement 1 − m as computed by the caller
-    n1 : float, optional — 1 − n computed by the caller; default ``1 − n``
-
-    Returns
-    -------
-    float or ndarray — ``Π = s R_F(c², Δ², 1) + (n/3) s³ R_J(c², Δ², 1, c² + (1 − n) s²)``
-    with ``Δ² = c² + (1 − m) s²`` (DLMF 19.25.14). For n < −1 the two terms nearly cancel;
-    there ``n ω = m`` (DLMF 19.7.9) turns it into two positive terms:
-    ``Π = −(ω/3) s³ R_J(c², Δ², 1, 1 − ω s²) + s R_C(c² Δ², (1 − n s²)(1 − ω s²))``.
-    """
+    ``Π = s R_F(c², Δ², 1) + (n/3) s³ R_J(c², Δ², 1, c² + (1 − n) s²)``, ``Δ² = c² + (1 − m) s²``
+    (DLMF 19.25.14); for n < −1, ``n ω = m`` (DLMF 19.7.9) gives positive terms:
+    ``Π = −(ω/3) s³ R_J(c², Δ², 1, 1 − ω s²) + s R_C(c² Δ², (1 − n s²)(1 − ω s²))``."""
     m, mc = _params(m, mc)
     n = float(n)
     n1 = 1.0 - n if n1 is None else float(n1)
@@ -351,16 +245,9 @@ def ellippi(n: float, m: float, mc: float | None = None, n1: float | None = None
 
 
 def _sncndn_half(u: np.ndarray, m: float, mc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """sn, cn, dn(u | m) for 0 <= u <= K/2, from m AND its complement mc = 1 - m.
-
-    * mc > 1e-4: the AGM / descending Landen scheme (A&S 16.4) started from b0 = sqrt(mc)
-      (``scipy.special.ellipj`` starts from sqrt(1 - m) with m rounded, which fails as
-      m -> 1), with ``dn = sqrt(cn^2 + mc sn^2)``.
-    * mc <= 1e-4: one ascending Landen (Gauss) step (A&S 16.14) to the parameter
-      mu = 1 - r^2, r = (1 - k)/(1 + k) = mc/(1 + k)^2, then the m -> 1 expansions
-      (A&S 16.15) whose error O(r^4 e^{4v}) is below round-off for v <= K/2. The AGM loses
-      ~eps/sqrt(k') in cn near K/2 (an asin of an argument near 1); this route does not.
-    """
+    """sn, cn, dn(u | m) for 0 <= u <= K/2, from m and mc = 1 - m: the AGM (A&S 16.4) from
+    b0 = sqrt(mc) for mc > 1e-4, else one ascending Landen step (A&S 16.14) and the m -> 1
+    expansions (A&S 16.15), whose error is below round-off for v <= K/2."""
     if mc > 1e-4:
         a = [1.0]
         c = [math.sqrt(m)]
@@ -397,23 +284,12 @@ def _sncndn_half(u: np.ndarray, m: float, mc: float) -> tuple[np.ndarray, np.nda
 
 
 def jacobi_reduced(tau: Any, K: float, m: float, mc: float) -> tuple[np.ndarray, ...]:
-    """sn, cn, dn(τ | m) with the half-period reduction exposed (0 <= m < 1).
+    """sn, cn, dn(τ | m) with the half-period reduction exposed (0 <= m < 1; ``K`` from
+    :func:`ellipk` with the same ``mc``; keep |τ| a few K).
 
-    Parameters
-    ----------
-    tau : array_like — argument (any real; accuracy is that of τ − 2Kj, so keep |τ| of the
-        order of a few K when τ comes from a larger phase: reduce it modulo 4K first)
-    K : float — K(m) (:func:`ellipk` with the same ``mc``)
-    m, mc : float — the parameter and its complement 1 − m, each from its own formula
-
-    Returns
-    -------
-    ``sn, cn, dn, j, snu, cnu`` (ndarrays): τ = u + 2Kj with |u| <= K, ``snu = sn(u)``,
-    ``cnu = cn(u) >= 0`` (so ``am(u) = atan2(snu, cnu)`` is in [−π/2, π/2] and
-    ``am(τ) = am(u) + jπ``). On (K/2, K] the values come from ``u' = K − u`` through
-    ``sn = cn'/dn'``, ``cn = k' sn'/dn'``, ``dn = k'/dn'`` (A&S 16.8), which keeps cn and dn
-    accurate where they are small.
-    """
+    Returns ``sn, cn, dn, j, snu, cnu``: τ = u + 2Kj, |u| <= K, ``cnu >= 0`` (so
+    ``am(τ) = atan2(snu, cnu) + jπ``). On (K/2, K] through ``u' = K − u`` (A&S 16.8), which keeps
+    small cn and dn accurate."""
     tau = _arr(tau)
     j = np.rint(tau / (2.0 * K))
     u = tau - 2.0 * K * j
@@ -431,27 +307,10 @@ def jacobi_reduced(tau: Any, K: float, m: float, mc: float) -> tuple[np.ndarray,
 
 
 def ellipj(u: Any, m: float, mc: float | None = None) -> tuple[Any, Any, Any, Any]:
-    """Jacobi elliptic functions sn, cn, dn and the amplitude am of u (any real) at m.
-
-    Parameters
-    ----------
-    u : float or array_like — argument
-    m : float — parameter m = k², 0 <= m <= 1
-    mc : float, optional — 1 − m computed by the caller; give it near m = 1 (the reason this
-        function exists: ``scipy.special.ellipj`` rounds 1 − m from m)
-
-    Returns
-    -------
-    sn, cn, dn, am : float or ndarray — am in radians, continuous in u
-        (am(u + 2K) = am(u) + π). At mc = 0: tanh, sech, sech and the Gudermannian; at
-        m = 0: sin, cos, 1 and u.
-
-    Notes
-    -----
-    The argument is reduced to |u| <= K/2 by the half-period and quarter-period relations
-    (A&S 16.8), then descending Landen / AGM (A&S 16.4) for mc > 1e-4, or one ascending
-    Landen step and the m → 1 expansions (A&S 16.14–16.15) for mc <= 1e-4.
-    """
+    """Jacobi sn, cn, dn and the amplitude am (rad, continuous: am(u + 2K) = am(u) + π) of u at
+    m (0 <= m <= 1; ``mc`` = 1 − m from the caller near m = 1, which ``scipy.special.ellipj``
+    rounds). At mc = 0: tanh, sech, sech, the Gudermannian; at m = 0: sin, cos, 1, u. Reduced to
+    |u| <= K/2 (A&S 16.8), then :func:`_sncndn_half`."""
     m, mc = _params(m, mc)
     uu = _arr(u)
     if mc == 0.0:

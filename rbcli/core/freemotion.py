@@ -1,28 +1,15 @@
 """Exact torque-free motion of a rigid body (Euler–Poinsot) — the physics of ``rbcli precess``.
 
-Inputs are the inertia tensor about the centre of mass in the BODY frame (tensor convention,
-off-diagonals ``-sum m x y``) and the initial angular velocity in the body frame.
-:func:`analyse` classifies the motion and returns a :class:`FreeMotion` with every number
-``precess`` reports; :mod:`rbcli.core.freepath` evaluates the exact motion at any array of
-times (cost independent of ``t``: no numerical integration);
-:func:`rbcli.core.freeverify.verify` checks the closed forms against
-``scipy.integrate.solve_ivp``.
+Input: the inertia tensor about the com (body frame, tensor convention) and the initial
+angular velocity (body frame). :func:`analyse` classifies the motion (:class:`FreeMotion`);
+:mod:`rbcli.core.freepath` evaluates it at any times (no integration);
+:func:`rbcli.core.freeverify.verify` checks it against ``solve_ivp``.
 
-Conventions
------------
-* Principal frame: :func:`rbcli.core.principal.principal_axes` — moments ascending
-  ``I1 <= I2 <= I3``, ``axes`` rows are the unit axes in the body frame, ``axes`` is a proper
-  rotation taking body to principal coordinates (``w_p = axes @ w_b``). "Axis 1" is the
-  smallest moment, "axis 3" the largest (the labels of SPEC's ``circles_axis``).
-* Attitude: ``R(t)`` maps body coordinates at time ``t`` to space coordinates, and the space
-  frame IS the body frame at ``t = 0`` (``R(0) = 1``). Quaternions are ``[w, x, y, z]``
-  (scalar first, Hamilton, ``R(q) v = q v q*``), canonicalised to ``w >= 0``.
-* Angles in radians inside this module; ``to_json`` gives degrees under keys ending ``_deg``.
-
-Sources: physics sheet ``/work/shared/physics/dynamics.md`` §1 (formulas, signs, pitfalls
-§4b) — Landau & Lifshitz §37; Celledoni, Fassò, Säfström & Zanna (2008) with Leroy's
-corrections (Principia, ``documentation/Celledoni.tex``).
-"""
+Conventions: principal moments ascending (axis 1 the smallest), ``axes`` rows the unit
+axes in the body frame (``w_p = axes @ w_b``); ``R(t)`` maps body to space coordinates and
+``R(0) = 1``; quaternions ``[w, x, y, z]``, ``w >= 0``; radians (``to_json``: ``_deg``
+keys). Sources: physics sheet ``dynamics.md`` §1; Landau & Lifshitz §37; Celledoni, Fassò,
+Säfström & Zanna (2008) with Leroy's corrections."""
 
 from __future__ import annotations
 
@@ -91,24 +78,15 @@ class EllipticSolution:
 
     Attributes
     ----------
-    kind : str — "3" (omega circles axis 3: w = (A1 cn, s A2 sn, s A3 dn)), "1" (circles
-        axis 1: w = (s A1 dn, s A2 sn, A3 cn)) or "separatrix"
-        (w = (s1 A1 sech, s1 s3 Omega0 tanh, s3 A3 sech))
-    m, mc : float — elliptic parameter m = k^2 and 1 - m, each from its own Delta form
-        (separatrix: 1 and 0)
-    lam : float — 1/s, the rate lambda in tau = lambda t + tau0
-    K : float | None — complete integral K(m) (None for the separatrix)
-    tau0 : float — phase at t = 0
-    signs : tuple[float, float] — (s, s) for "3"/"1" (s = sign of the dn component), (s1, s3)
-        for the separatrix
-    amplitudes : (3,) ndarray — rad/s, (A1, A2, A3); separatrix: (A1, Omega0, A3)
-    pole : int — principal index (2 or 0) of the Landau–Lifshitz pole axis (the dn axis;
-        axis 3 for the separatrix)
-    n : float — characteristic of Pi (-r^2 for the separatrix)
-    coeff : float — rad, the coefficient of Pi (or of atan for the separatrix) in phi(t)
-    pi_complete : float | None — Pi(n | m)
-    precession_per_period : float | None — rad, Delta phi over one period of omega
-    """
+    kind : str — "3" (w = (A1 cn, s A2 sn, s A3 dn)), "1" (w = (s A1 dn, s A2 sn, A3 cn)) or
+        "separatrix" (w = (s1 A1 sech, s1 s3 Omega0 tanh, s3 A3 sech))
+    m, mc : float — m = k^2 and 1 - m, each from its own Delta form
+    lam, tau0 : float — tau = lambda t + tau0 (1/s, -)
+    K : float or None — K(m) (None on the separatrix)
+    signs, amplitudes — (s, s) or (s1, s3); (A1, A2, A3) rad/s (separatrix: A2 = Omega0)
+    pole : int — principal index of the Landau–Lifshitz pole (the dn axis)
+    n, coeff, pi_complete — Pi's characteristic, its coefficient in phi(t) (rad), Pi(n | m)
+    precession_per_period : float or None — rad, Delta phi over one period"""
 
     kind: str
     m: float
@@ -134,77 +112,42 @@ class EllipticSolution:
 
 @dataclass(frozen=True, eq=False)
 class FreeMotion:
-    """Classification and constants of a torque-free motion (SI units, radians).
+    """Classification and constants of a torque-free motion (SI units, radians); the JSON
+    keys of ``precess`` (their meaning: the man page's JSON section).
 
     Attributes
     ----------
-    inertia : (3, 3) ndarray — kg m^2, the tensor the motion uses (body frame), rebuilt from
-        the principal moments and axes (so a symmetric average shows)
-    omega0 : (3,) ndarray — rad/s, initial angular velocity in the body frame (as given)
-    moments : (3,) ndarray — kg m^2, principal moments, ascending (pairs averaged when equal)
-    axes : (3, 3) ndarray — rows = unit principal axes in the body frame (proper rotation)
+    inertia : (3, 3) ndarray — kg m^2, the tensor used (body frame, rebuilt from the principal
+        moments and axes, so a symmetric average shows)
+    omega0 : (3,) ndarray — rad/s, initial angular velocity, body frame
+    moments : (3,) ndarray — kg m^2, principal moments, ascending (equal pairs averaged)
+    axes : (3, 3) ndarray — rows: unit principal axes, body frame (a proper rotation)
     symmetry : str — "asymmetric", "symmetric" or "spherical"
-    omega0_principal : (3,) ndarray — rad/s, omega0 in the principal frame (round-off snapped)
-    angular_momentum : (3,) ndarray — kg m^2/s, L = I omega0 in the body frame at t = 0
-        (the constant L in space, since space = body frame at t = 0)
-    angular_momentum_norm : float — kg m^2/s, G = |L|
-    kinetic_energy : float — J, T = omega.I.omega / 2
-    case : str — one of the ``CASE_*`` constants
-    description : str — the case in one plain sentence
-    circles_axis : int | None — 3 (largest moment) or 1 (smallest) for motions circling that
-        axis or steady about it; None at rest, spherical, separatrix, steady about the
-        intermediate axis or about a transverse axis of a symmetric body
-    period : float | None — s, period of omega in the body frame (None: not periodic — rest,
-        spherical, steady, separatrix)
-    stable : bool | None — is the motion reported stable: a small change of omega0 changes
-        it only a little, and the body keeps wobbling about the principal axis it circles.
-        True when omega circles (or spins steadily about) the largest or the smallest axis,
-        or a symmetric body's symmetry axis, without flipping; False when the body flips
-        (L passes nearer to the intermediate axis: the tennis-racket motion, however long
-        its period), spins steadily about the intermediate axis, or is on the separatrix;
-        None at rest, for a spherical body (nothing to be stable about) and for a steady
-        spin about a transverse axis of a symmetric body (neutral: a small disturbance makes
-        the spin axis wander round the symmetry axis)
-    linear_coefficients : (3,) ndarray — sqrt|k_j|, k_j = (Ij-Ik)(Ij-Il)/(Ik Il): a small
-        deviation from steady rotation at rate W about axis j oscillates at W sqrt(k_j)
-        (k_j > 0) or grows as exp(W sqrt(-k_j) t) (k_j < 0)
-    linear_kinds : tuple[str, str, str] — "oscillation", "growth" or "neutral" per axis
-    linear_rates : (3,) ndarray — rad/s (or 1/s for growth), the above at W = G/I_j, i.e.
-        for steady rotation about axis j with this |L|
-    elliptic : EllipticSolution | None — asymmetric non-steady motions
-    flip_interval : float | None — s, time between flips (= 2K/lambda, the time between sign
-        changes of w2) when the body flips: when the motion carries the intermediate axis
-        through a reversal relative to L, i.e. L (seen in the body) passes nearer to the
-        intermediate axis than to any other principal axis, and then nearer to its opposite
-        (the tennis-racket / Dzhanibekov flip). None near the largest or smallest axis (w2
-        still changes sign there, but as a wobble about that axis: no flip) and when not
-        periodic
-    first_flip : float | None — s, first t > 0 at which w2 changes sign (the middle of a
-        flip), when the body flips; separatrix: the single flip if it is still ahead
-    flip_interval_estimate : float | None — s, near-separatrix estimate (2/sigma) ln(4/k'),
-        sigma = (G/I2) sqrt((I2-I1)(I3-I2)/(I1 I3)), k' = sqrt(1 - m), when the body flips
-    precession_per_period : float | None — rad, angle R(T) turns about L in one period T
-        (R(T) = Rot(L, this)); None when not periodic
-    mean_precession_rate : float | None — rad/s, mean rate of turning about L: the above / T;
-        |omega| for steady / spherical motion; 0 at rest; None for the separatrix
-    symmetry_axis : (3,) ndarray | None — body-frame unit axis of symmetry (spherical: along
-        omega0, or axis 3 at rest); None for an asymmetric body
-    symmetry_index : int | None — principal index of the symmetry axis (2 oblate, 0 prolate)
-    oblate : bool | None — Is > I (None: spherical or asymmetric)
-    spin : float | None — rad/s, omega3 = omega0 . symmetry_axis (signed)
-    transverse_rate : float | None — rad/s, |omega perpendicular to the axis|
-    precession_rate : float | None — rad/s, body-frame precession rate W = omega3 (Is/I - 1)
-        (signed: positive = anticlockwise about +symmetry_axis)
-    space_precession_rate : float | None — rad/s, phi' = |L|/I, the axis turns about L
-    spin_rate : float | None — rad/s, psi' = -W, spin relative to the precessing plane
-    body_cone : float | None — rad, alpha = angle(omega, axis line), in [0, pi/2]
-    nutation : float | None — rad, theta = angle(L, axis line), tan theta = (I/Is) tan alpha
-    space_cone : float | None — rad, |theta - alpha| = angle(omega, L)
-    wobble_to_spin : float | None — |phi'/psi'| (None when W = 0)
-    wobble_period : float | None — s, 2 pi/|W| (also for steady rotation about the axis: the
-        period of a small wobble; the Earth's rigid "Euler period"); None when W = 0
-    space_precession_period : float | None — s, 2 pi/phi'
-    """
+    omega0_principal : (3,) ndarray — rad/s, omega0 in the principal frame
+    angular_momentum : (3,) ndarray — kg m^2/s, L = I omega0 (constant in space)
+    angular_momentum_norm, kinetic_energy : float — G = |L| (kg m^2/s), T (J)
+    case, description : str — a ``CASE_*`` constant; the case in one sentence
+    circles_axis : int or None — 3 or 1 for a motion circling (or steady about) that axis
+    period : float or None — s, period of omega in the body frame (None: not periodic)
+    stable : bool or None — the motion circles the largest or smallest axis (or a symmetric
+        body's axis) without flipping; False when it flips or is steady about the intermediate
+        axis or on the separatrix; None at rest, spherical, or neutral
+    linear_coefficients, linear_kinds, linear_rates — sqrt|k_j|, k_j = (Ij-Ik)(Ij-Il)/(Ik Il):
+        a deviation from steady rotation about axis j oscillates (k_j > 0) or grows; the rates
+        at W = G/I_j
+    elliptic : EllipticSolution or None — asymmetric non-steady motions
+    flip_interval, first_flip, flip_interval_estimate : float or None — s, when the body flips
+        (L passes nearer to the intermediate axis: the tennis-racket flip): 2K/lambda, the
+        first sign change of w2, and (2/sigma) ln(4/k')
+    precession_per_period, mean_precession_rate : float or None — rad and rad/s about L
+    symmetry_axis, symmetry_index, oblate — a symmetric body's axis (body frame), its principal
+        index, Is > I
+    spin, transverse_rate, precession_rate, space_precession_rate, spin_rate : float or None —
+        rad/s: omega3, |omega across|, W = omega3 (Is/I - 1), phi' = G/I, psi' = -W
+    body_cone, nutation, space_cone : float or None — rad: angle(omega, axis),
+        tan theta = (I/Is) tan alpha, |theta - alpha|
+    wobble_to_spin, wobble_period, space_precession_period : float or None — |phi'/psi'|,
+        2 pi/|W| (s), 2 pi/phi' (s)"""
 
     inertia: np.ndarray
     omega0: np.ndarray
@@ -338,12 +281,9 @@ def analyse(
 
     Parameters
     ----------
-    inertia : (3, 3) array_like — kg m^2, inertia tensor about the centre of mass, body
-        frame, tensor convention; must be positive definite
-    omega0 : (3,) array_like — rad/s, angular velocity at t = 0 in the body frame
-    symmetric_rtol : float — two principal moments closer than this times the largest are
-        treated as equal (and averaged); ``principal_axes`` already merges at 1e-9, so a
-        smaller value has no effect
+    inertia : (3, 3) array_like — kg m^2, about the centre of mass, body frame; positive definite
+    omega0 : (3,) array_like — rad/s, angular velocity at t = 0, body frame
+    symmetric_rtol : float — principal moments closer than this times the largest are equal
 
     Returns
     -------
@@ -352,39 +292,19 @@ def analyse(
     Raises
     ------
     ValueError
-        shapes wrong; :class:`rbcli.core.inertia.InputOverflow` (a ValueError whose
-        ``param`` is ``"inertia"`` or ``"omega"``) for non-finite numbers, a principal
-        moment <= 0, or an omega whose |L|^2 or energy overflows or underflows.
+        wrong shapes; :class:`rbcli.core.inertia.InputOverflow` (``param`` ``"inertia"`` or
+        ``"omega"``) for non-finite numbers, a moment <= 0, or |L|^2 or T out of range.
 
     Notes
     -----
-    Physics sheet §1. With M = (I1 w1, I2 w2, I3 w3) in the principal frame, G^2 = |M|^2,
-    2T = w.M, and the cancellation-free forms
-    ``Delta1 = M2^2 (I2-I1)/I2 + M3^2 (I3-I1)/I3``,
-    ``Delta3 = -(M1^2 (I3-I1)/I1 + M2^2 (I3-I2)/I2)``,
-    ``Delta2 = M3^2 (I3-I2)/I3 - M1^2 (I2-I1)/I1``:
-
-    * Delta2 > 0: omega circles axis 3 (sheet case "3"); Delta2 < 0: circles axis 1 ("1");
-      lambda, m, 1 - m, amplitudes and tau0 as in §1.2; period 4K/lambda; w2 changes sign
-      every 2K/lambda, first at (2K floor(tau0/2K + 1) - tau0)/lambda. These are flips
-      (``flip_interval``) only when L passes nearer to the intermediate axis than to the
-      others: I2 A2 > Ic Ac k' (the components of M at sn = +-1; c the dn axis).
-    * Separatrix when |Delta2| <= SEPARATRIX_RTOL (= 1e-14) times the sum of its two terms,
-      i.e. when round-off decides the sign of Delta2. The sheet suggests switching at
-      |Delta2| < 1e-12 G^2 because ``scipy.special.ellipj`` fails as m -> 1 (it takes m, not
-      1 - m: for 1 - m = 1e-10 it returns cn(2K) = -2). Here sn, cn, dn come from our own
-      AGM started from sqrt(1 - m) with 1 - m from the Delta forms, plus the quarter-period
-      reflection, so the elliptic solution stays accurate (checked to 1 - m = 1e-15 in the
-      tests) and its finite period is right; the sech/tanh form is used only where the data
-      cannot tell the two sides apart. On the separatrix tau0 = asinh(tanh/sech) from the
-      initial w (robust when w2 is near +-Omega0).
-    * Symmetric (I1 = I2 or I2 = I3): §1.1, W = w3 (Is/I - 1), phi' = G/I,
-      tan theta = (I/Is) tan alpha; the body period is 2 pi/|W|.
-    * Steady rotation (omega0 along a principal axis, after zeroing components below
-      SNAP_RTOL |omega0|, the round-off of projecting on the principal axes), rest and
-      spherical bodies are closed forms. Stability of steady rotation: the linearisation
-      ``e'' = -k_j W^2 e`` with ``k_j = (Ij-Ik)(Ij-Il)/(Ik Il)``.
-    """
+    Physics sheet §1. With M = (I1 w1, I2 w2, I3 w3) (principal frame), G^2 = |M|^2, 2T = w.M
+    and the cancellation-free ``Delta2 = M3^2 (I3-I2)/I3 - M1^2 (I2-I1)/I1`` (Delta1, Delta3
+    alike): Delta2 > 0, omega circles axis 3; < 0, axis 1 (period 4K/lambda, §1.2); the body
+    flips only when I2 A2 > Ic Ac k'. Separatrix when |Delta2| <= SEPARATRIX_RTOL times the sum
+    of its terms (round-off decides its sign): sn, cn, dn from our own AGM started from
+    sqrt(1 - m) stay accurate to 1 - m = 1e-15, where scipy's ellipj fails. Symmetric bodies
+    §1.1: W = w3 (Is/I - 1), phi' = G/I, tan theta = (I/Is) tan alpha. Steady rotation (after
+    snapping components below SNAP_RTOL |omega0|): ``e'' = -k_j W^2 e``."""
     J = np.asarray(inertia, dtype=float)
     w0 = np.asarray(omega0, dtype=float)
     if J.shape != (3, 3):

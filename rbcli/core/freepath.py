@@ -1,6 +1,6 @@
 """The exact torque-free motion in time: ω(t), the attitude R(t) and the precession angle.
 
-:func:`omega_at`, :func:`attitude_at` and :func:`precession_angle_at` evaluate the closed
+:func:`omega_at` and :func:`attitude_at` evaluate the closed
 forms whose constants :func:`rbcli.core.freemotion.analyse` computes, at any array of times
 (the cost does not grow with ``t``: no numerical integration; the phase is reduced modulo
 the period). Conventions as in :mod:`rbcli.core.freemotion` (principal frame, ``R(0) = 1``,
@@ -26,7 +26,7 @@ from rbcli.core.rotation import quat_multiply as _qmul
 if TYPE_CHECKING:
     from rbcli.core.freemotion import FreeMotion
 
-__all__ = ["omega_at", "attitude_at", "precession_angle_at", "big_phase", "ll_quat", "CASE_REST",
+__all__ = ["omega_at", "attitude_at", "big_phase", "ll_quat", "CASE_REST",
            "CASE_SPHERICAL", "CASE_STEADY", "CASE_MAX", "CASE_MIN", "CASE_SEPARATRIX"]
 
 #: ``FreeMotion.case`` values: the kinds of motion :func:`rbcli.core.freemotion.analyse` tells
@@ -82,25 +82,10 @@ def _elliptic_state(motion: FreeMotion, t: np.ndarray) -> dict[str, np.ndarray]:
 
 
 def omega_at(motion: FreeMotion, t: Any, *, frame: str = "body") -> np.ndarray:
-    """Exact angular velocity at the times ``t``.
-
-    Parameters
-    ----------
-    motion : FreeMotion — from :func:`analyse`
-    t : float or (N,) array_like — s (any sign, any size: the phase is reduced modulo the
-        period, so t = 1e9 s costs what t = 1 s does)
-    frame : str — "body" (default) or "principal"
-
-    Returns
-    -------
-    (N, 3) ndarray — rad/s, omega(t) in the body (or principal) frame
-
-    Notes
-    -----
-    Sheet §1.1–1.2: Jacobi sn, cn, dn with tau = lambda t + tau0; sech/tanh on the
-    separatrix; omega1 + i omega2 = w_perp exp(i (W t + delta)) for a symmetric body;
-    constant for steady motion, rest and spherical bodies.
-    """
+    """Exact angular velocity (rad/s, (N, 3)) at the times ``t`` (s, any size: the phase is
+    reduced modulo the period) in the body frame, or ``frame="principal"``. Sheet §1.1–1.2:
+    sn, cn, dn of tau = lambda t + tau0; sech/tanh on the separatrix; w_perp exp(i (W t +
+    delta)) for a symmetric body."""
     tt = _times(t)
     if frame not in ("body", "principal"):
         raise ValueError("frame must be 'body' or 'principal'")
@@ -122,39 +107,6 @@ def omega_at(motion: FreeMotion, t: Any, *, frame: str = "body") -> np.ndarray:
     return wp if frame == "principal" else wp @ axes
 
 
-def precession_angle_at(motion: FreeMotion, t: Any) -> np.ndarray:
-    """Unwrapped precession angle phi(t) - phi(0) about L (Landau–Lifshitz angles).
-
-    Parameters
-    ----------
-    motion : FreeMotion
-    t : float or (N,) array_like — s
-
-    Returns
-    -------
-    (N,) ndarray — rad. The pole is the dn axis (axis 3 when omega circles axis 3 or on the
-    separatrix, axis 1 when it circles axis 1), the symmetry axis for a symmetric body, and
-    omega0 for steady / spherical motion. After a whole period the value is convention-free:
-    R(T) = Rot(L, phi(T) - phi(0)).
-
-    Notes
-    -----
-    Sheet §1.2 "Orientation": phi(t) = phi(0) + (G/Ic) t + sigma_c G (I3-I1)/(lambda I1 I3)
-    [Pi(n_c; am tau | m) - Pi(n_c; am tau0 | m)], Pi through Carlson's RF, RJ, with
-    am(tau + 2Kj) = am(u) + j pi and Pi(n; phi + j pi) = Pi(n; phi) + 2 j Pi(n). On the
-    separatrix (derived here by u = tanh tau, partial fractions):
-    phi = (G/I2) t + G (I3-I2) r/(I2 I3 lambda) [atan(r tanh tau) - atan(r tanh tau0)],
-    r^2 = I3 (I2-I1)/(I1 (I3-I2)). Symmetric: phi' = G/I.
-    """
-    tt = _times(t)
-    el = motion.elliptic
-    if el is None:
-        return float(motion.mean_precession_rate or 0.0) * tt
-    big, local = _phi_parts(motion, tt, None)
-    per = el.precession_per_period
-    return local + (0.0 if per is None else big * per)
-
-
 def _phi_parts(
     motion: FreeMotion, t: np.ndarray, st: dict[str, np.ndarray] | None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -173,30 +125,15 @@ def _phi_parts(
 
 
 def attitude_at(motion: FreeMotion, t: Any) -> np.ndarray:
-    """Exact orientation: quaternions of the body-to-space rotation R(t), R(0) = 1.
-
-    Parameters
-    ----------
-    motion : FreeMotion
-    t : float or (N,) array_like — s (cost independent of the size of t)
-
-    Returns
-    -------
-    (N, 4) ndarray — ``[w, x, y, z]``, scalar first, unit, ``w >= 0``. ``R(q)`` maps body
-    coordinates at time t to space coordinates; the space frame is the body frame at t = 0,
-    so L (constant in space) = ``motion.angular_momentum`` and
-    ``R(t) @ (I omega(t)) = L`` for every t.
+    """Exact orientation: quaternions ``[w, x, y, z]`` (N, 4), ``w >= 0``, of the body-to-space
+    R(t), R(0) = 1, so ``R(t) @ (I omega(t)) = motion.angular_momentum`` for every t.
 
     Notes
     -----
-    Asymmetric (sheet §1.2): with the principal axes relabelled cyclically so the dn axis c
-    is last (a proper permutation Pm), R_ZL(t) = Rz(phi) Rx(theta) Rz(psi) Pm maps principal
-    coordinates to a frame with Z along L, M_c = G cos theta, psi = atan2(M_a, M_b), phi from
-    :func:`precession_angle_at` reduced as j4 * Delta phi (mod 2 pi) + local. Then
-    R(t) = P^T R_ZL(0)^T R_ZL(t) P with P = ``motion.axes``.
-    Symmetric: R(t) = Rot(L^, (G/I) t) Rot(e_s, -W t) (omega = phi' L^ + psi' e_s with
-    psi' = -W). Steady and spherical: Rot(omega^, |omega| t). Rest: identity.
-    """
+    Asymmetric (sheet §1.2): with the dn axis c last (a proper permutation Pm),
+    R_ZL(t) = Rz(phi) Rx(theta) Rz(psi) Pm (Z along L, M_c = G cos theta, psi = atan2(M_a, M_b),
+    phi reduced as j4 Delta phi + local), R(t) = P^T R_ZL(0)^T R_ZL(t) P, P = ``motion.axes``.
+    Symmetric: Rot(L^, (G/I) t) Rot(e_s, -W t). Steady, spherical: Rot(omega^, |omega| t)."""
     tt = _times(t)
     el = motion.elliptic
     if el is not None:

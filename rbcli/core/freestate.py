@@ -254,18 +254,9 @@ def plot_span(motion: FreeMotion, duration: float | None) -> tuple[float, float]
 
 @dataclass(frozen=True)
 class PlotSamples:
-    """What the precess figure draws, sampled from the exact motion.
-
-    Attributes
-    ----------
-    t0, t1 : float — s, the span drawn
-    t : (n,) ndarray — s, the sample times
-    omega : (n, 3) ndarray — rad/s, ω(t) in the body frame
-    polhode : (n, 3) ndarray — L/|L| in the principal frame (empty when L = 0)
-    start : (3,) ndarray — L/|L| at t = 0, principal frame
-    family : list of (k, 3) ndarray — polhodes at a few energies and the separatrix
-    flips : (j,) ndarray — s, the flip times inside the span (empty when nothing flips)
-    """
+    """What the precess figure draws: ``t0``, ``t1``, ``t`` (s), ``omega`` (n, 3) rad/s (body
+    frame), ``polhode`` (L/|L|, principal frame), ``start``, ``family`` (polhodes at a few
+    energies and the separatrix) and ``flips`` (s, the flip times drawn)."""
 
     t0: float
     t1: float

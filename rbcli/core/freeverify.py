@@ -24,23 +24,10 @@ _TWO_PI = 2.0 * math.pi
 
 @dataclass(frozen=True, eq=False)
 class VerifyResult:
-    """Exact solution against a numerical integration (:func:`verify`).
-
-    Attributes
-    ----------
-    t_end : float — s, span integrated (from 0)
-    samples : int — number of comparison times
-    rtol : float — DOP853 relative tolerance used
-    nfev : int — right-hand-side evaluations of the integrator
-    omega_error : float — max_t |w_exact - w_num| / |w_exact(t)| (0 at rest)
-    attitude_error : float — rad, max_t angle of R_exact^T R_num
-    numeric_energy_drift, numeric_momentum_drift, numeric_L_drift : float — along the
-        numerical solution: max |T - T0|/T0, max ||L| - |L0||/|L0|, max |R M - L0|/|L0|
-    exact_energy_drift, exact_momentum_drift, exact_L_drift : float — the same along the exact
-        solution (round-off only)
-    tol : float — threshold of ``ok``
-    ok : bool — omega_error, attitude_error and the three exact drifts all <= tol
-    """
+    """Exact solution against a numerical integration (:func:`verify`): ``t_end`` (s),
+    ``samples``, ``rtol``, ``nfev``; ``omega_error`` (max relative), ``attitude_error`` (rad);
+    the drifts of T, |L| and L in space along the numerical (``numeric_*``) and the exact
+    (``exact_*``: round-off only) solutions; ``tol`` and ``ok`` (all of the exact's within it)."""
 
     t_end: float
     samples: int
@@ -102,29 +89,15 @@ def verify(
 ) -> VerifyResult:
     """Compare the exact motion with a DOP853 integration of Euler's equations and attitude.
 
-    Parameters
-    ----------
-    motion : FreeMotion
-    periods : float — span in periods of omega (or, when not periodic, in characteristic
-        times: 2 pi/lambda on the separatrix, 2 pi/|omega| for steady motion, 1 s at rest)
-    rtol : float — relative tolerance of ``solve_ivp(method="DOP853")``; atol = rtol/100
-        times the scale of each state component
-    samples_per_period : int — comparison times per period
-    tol : float — threshold for ``ok``
-
-    Returns
-    -------
-    VerifyResult
+    ``periods`` of omega (or characteristic times when not periodic), ``solve_ivp`` at ``rtol``
+    (atol rtol/100 of each component's scale), ``samples_per_period`` comparison times, ``tol``
+    the threshold of ``ok``: a VerifyResult.
 
     Notes
     -----
-    Integrates, in the BODY frame and with the full tensor (independent of the principal
-    decomposition): ``J w' = (J w) x w`` and ``R' = R [w]x``, R(0) = 1 (sheet §1, Euler's
-    equations; invariants 2T, G^2, L = R M). Near the separatrix the integrator's own error
-    is amplified by about 1/k' per passage (sheet §1.2, table footnote), so a large
-    omega_error there is the integrator's, not the closed form's (the exact drifts stay at
-    round-off).
-    """
+    Body frame, full tensor (independent of the principal decomposition): ``J w' = (J w) x w``,
+    ``R' = R [w]x``, R(0) = 1 (sheet §1). Near the separatrix the integrator's own error grows
+    by about 1/k' per passage, so a large omega_error there is the integrator's."""
     from scipy.integrate import solve_ivp
 
     J = motion.inertia

@@ -25,22 +25,10 @@ EARTH_RATE = 7.2921150e-5
 
 @dataclass(frozen=True)
 class Gyrocompass:
-    """Small oscillation of a gyrocompass about the meridian (see the module docstring).
-
-    Attributes
-    ----------
-    C_over_A : float — axial moment over the moment about the vertical (flat disk: 2)
-    spin : float — rad/s, rotor spin about its axis
-    latitude : float — rad
-    earth_rate : float — rad/s, Ω_E
-    directive : float — 1/s², C S Ω_E cos λ / A (the gyroscopic restoring coefficient)
-    omega0 : float | None — rad/s, sqrt(|directive| - Ω_E² cos² λ); None when there is
-        no restoring torque (at a pole, or a spin too slow to beat the Ω_E² term)
-    omega0_approx : float | None — rad/s, sqrt(|directive|), the usual approximation
-    period : float | None — s, 2π/omega0
-    settles_to : str | None — where the rotor's +axis settles: "north" for S > 0 (the
-        spin vector points north, along the Earth's rotation), "south" for S < 0
-    """
+    """Small oscillation of a gyrocompass about the meridian: ``C_over_A``, ``spin`` (rad/s),
+    ``latitude`` (rad), ``earth_rate`` Ω_E (rad/s), ``directive`` C S Ω_E cos λ / A (1/s²),
+    ``omega0`` sqrt(|directive| - Ω_E² cos² λ) and ``omega0_approx`` sqrt(|directive|) (rad/s;
+    None without a restoring torque), ``period`` (s) and ``settles_to`` ("north" for S > 0)."""
 
     C_over_A: float
     spin: float
@@ -85,29 +73,13 @@ def gyrocompass(
 ) -> Gyrocompass:
     """Period of small oscillation of a gyrocompass about north.
 
-    Parameters
-    ----------
-    C_over_A : float — axial moment C over the moment A about the vertical, > 0
-    spin_rad_s : float — rad/s, rotor spin S, nonzero
-    latitude_rad : float — rad, in [-π/2, π/2]
-    earth_rate : float — rad/s, Ω_E > 0 (default sidereal 7.2921150e-5)
-
-    Returns
-    -------
-    Gyrocompass
-
-    Raises
-    ------
-    ValueError
-        for inputs out of range, or so large that the directive C S Ω_E cos λ / A (or
-        Ω_E² cos²λ) overflows to inf or NaN.
+    ``C_over_A`` > 0, spin S (rad/s, nonzero), latitude λ (rad, [-π/2, π/2]), Earth rate Ω_E
+    (rad/s, default sidereal): a Gyrocompass; ValueError out of range or on overflow.
 
     Notes
     -----
-    Model: axis held horizontal, free in azimuth α from north,
-    A α'' = -C S Ω_E cos λ sin α + A Ω_E² cos²λ sin α cos α. Linearised about α = 0
-    (S > 0) or α = π (S < 0): ω0² = |C S Ω_E cos λ|/A - Ω_E² cos²λ, T = 2π/ω0.
-    """
+    Axis horizontal, free in azimuth α: A α'' = -C S Ω_E cos λ sin α + A Ω_E² cos²λ sin α cos α;
+    about α = 0 (S > 0) or π (S < 0): ω0² = |C S Ω_E cos λ|/A - Ω_E² cos²λ, T = 2π/ω0."""
     r = finite("C_over_A", C_over_A)
     S = finite("spin", spin_rad_s)
     lat = finite("latitude", latitude_rad)
@@ -165,26 +137,10 @@ class Rotor:
 
 
 def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e-6) -> Rotor:
-    """C and A of a body (nearly) symmetric about its spin axis, both about the com.
-
-    Parameters
-    ----------
-    mass : float — kg, > 0
-    com : (3,) array_like — m, the centre of mass (the spin axis runs through it)
-    inertia_com : (3, 3) array_like — kg m², about the com (tensor convention)
-    axis : (3,) array_like — the spin axis in the body frame (need not be unit)
-    sym_rtol : float — the tolerance of :func:`rbcli.core.symmetry.require` (the
-        ``--symmetry-tol``): the two transverse moments may differ by this fraction of
-        their mean, and the products coupling the axis to the plane across it may be this
-        fraction of it; A is their mean
-
-    Raises
-    ------
-    rbcli.core.symmetry.Asymmetric
-        a body not symmetric about the axis within ``sym_rtol`` (with the numbers)
-    ValueError
-        a zero or non-finite axis, a zero inertia tensor, zero moments.
-    """
+    """C and A (the mean of the two moments across) of a body (nearly) symmetric about its spin
+    ``axis``, about the com; ``sym_rtol`` as :func:`rbcli.core.symmetry.require`.
+    :class:`rbcli.core.symmetry.Asymmetric` beyond it; ValueError for a zero or non-finite
+    axis or zero moments."""
     m = finite("the mass", mass)
     if m <= 0.0:
         raise ValueError(f"the mass must be positive, got {m:.6g}")

@@ -1,22 +1,11 @@
 """The numbers of a robot description's ``<inertial>`` element (URDF, SDF, MJCF).
 
-Every format states the same thing: the mass, the centre of mass in the link frame, and
-the inertia tensor about the centre of mass in the axes of an *inertial frame* whose
-orientation in the link frame is given (URDF ``rpy``, SDF ``<pose>``, MJCF ``quat``).
-rbcli's link frame is the body frame. Two choices of inertial frame:
-
-- the body axes (orientation the identity): the full tensor about the com;
-- the principal axes (``principal=True``): a diagonal tensor (the principal moments,
-  ascending) and the rotation whose columns are the principal axes.
-
-Conventions: the tensor is the tensor (off-diagonal ``Jxy = −∫ x y dm``), which is what
-URDF's and SDF's ``ixy`` and MJCF's ``fullinertia`` hold. ``quat`` is (w, x, y, z) with
-w ≥ 0 (MJCF's order). ``rpy`` is URDF's/SDF's fixed-axis roll-pitch-yaw: the rotation
-``R = Rz(yaw) Ry(pitch) Rx(roll)`` (roll about the link's x first, then pitch about its
-y, then yaw about its z); see the URDF ``<origin>`` specification,
-http://wiki.ros.org/urdf/XML/link, and MuJoCo's ``<inertial>``,
-https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial.
-"""
+Each states the mass, the com in the link frame (rbcli's body frame) and the tensor about
+the com in an inertial frame: the body axes, or with ``principal=True`` the principal axes
+(a diagonal tensor, ascending). The tensor is the tensor (``Jxy = −∫ x y dm``: URDF's and
+SDF's ``ixy``, MJCF's ``fullinertia``); ``quat`` is (w, x, y, z), w ≥ 0; ``rpy`` is URDF's
+fixed-axis ``R = Rz(yaw) Ry(pitch) Rx(roll)`` (http://wiki.ros.org/urdf/XML/link;
+https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial)."""
 
 from __future__ import annotations
 
@@ -30,18 +19,9 @@ from rbcli.core.principal import principal_axes
 
 @dataclass(frozen=True)
 class Inertial:
-    """An ``<inertial>`` element's numbers, SI.
-
-    Attributes
-    ----------
-    mass : float — kg
-    com : (3,) ndarray — m, the centre of mass in the link (body) frame
-    inertia : (3, 3) ndarray — kg m², about the com, in the inertial frame's axes
-    rotation : (3, 3) ndarray — columns are the inertial frame's axes in the link frame
-    quat_wxyz : (4,) ndarray — the same rotation as a unit quaternion, w ≥ 0
-    rpy : (3,) ndarray — rad, the same rotation as fixed-axis roll, pitch, yaw
-    principal : bool — the inertial frame is the principal axes (``inertia`` diagonal)
-    """
+    """An ``<inertial>`` element's numbers, SI: ``mass`` (kg), ``com`` (m, link frame),
+    ``inertia`` (kg m², about the com in the inertial frame), ``rotation`` (columns: the
+    inertial frame's axes), the same as ``quat_wxyz`` (w ≥ 0) and ``rpy`` (rad), ``principal``."""
 
     mass: float
     com: np.ndarray

@@ -1,15 +1,8 @@
 """Validation and exact mass properties of closed triangle meshes (pure numpy).
 
-A mesh is ``vertices`` (V, 3) and ``faces`` (F, 3) vertex indices; a triangle's
-corners in counter-clockwise order seen from outside give its outward normal
-(right-hand rule). The solid it bounds is taken to be uniform; the caller turns
-volume and per-unit-mass inertia into mass and inertia.
-
-:func:`check_mesh` checks that the surface bounds a solid (closed, manifold,
-consistently oriented, non-zero volume) and :func:`mass_properties` integrates
-over that solid exactly (to rounding), about a point near the mesh so that a part
-far from the origin keeps its digits.
-"""
+A mesh is ``vertices`` (V, 3) and ``faces`` (F, 3), counter-clockwise seen from outside;
+the solid is uniform. :func:`mass_properties` checks that the surface bounds a solid and
+integrates over it exactly, about a point near the mesh (digits kept far from the origin)."""
 
 from __future__ import annotations
 
@@ -18,7 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = [
-    "MeshError", "MeshProps", "check_mesh", "mass_properties", "weld_gaps", "VOLUME_RTOL",
+    "MeshError", "MeshProps", "mass_properties", "weld_gaps", "VOLUME_RTOL",
     "WELD_MAX",
 ]
 
@@ -57,22 +50,15 @@ class MeshProps:
 
     Attributes
     ----------
-    volume : float — (mesh unit)^3, positive
-    area : float — (mesh unit)^2, surface area
+    volume, area : float — (mesh unit)^3, (mesh unit)^2
     centroid : (3,) ndarray — mesh unit, centre of volume (= centre of mass)
-    unit_inertia : (3, 3) ndarray — (mesh unit)^2, inertia tensor about the centroid
-        per unit mass, tensor convention: diagonal ``∫(y²+z²) dV / V``, off-diagonal
-        ``-∫xy dV / V`` (coordinates relative to the centroid, mesh axes). Multiply by
-        the mass (and by scale² for a scaled mesh) to get kg m².
-    n_triangles : int — number of faces given (including any dropped as degenerate)
-    flipped : bool — the mesh faced inwards everywhere (negative signed volume) and was
-        taken as turned outwards
-    warnings : tuple[str, ...] — lower-case notes on what was tolerated or repaired
-    welded : int — vertices merged into another one by the tolerance weld (0 when the
-        exactly welded mesh was closed, or welding was off)
-    gap : float — (mesh unit) the largest coordinate difference inside a group of
-        vertices the tolerance weld merged (0 when none were)
-    """
+    unit_inertia : (3, 3) ndarray — (mesh unit)^2, about the centroid per unit mass, tensor
+        convention (times the mass, and scale², gives kg m²)
+    n_triangles : int — faces given (with any dropped as degenerate)
+    flipped : bool — the mesh faced inwards everywhere and was turned outwards
+    warnings : tuple of str — what was tolerated or repaired
+    welded, gap — vertices the tolerance weld merged, and the largest coordinate difference
+        inside a merged group (mesh unit; 0 when none)"""
 
     volume: float
     area: float
@@ -99,62 +85,6 @@ class MeshProps:
         }
 
 
-def check_mesh(
-    vertices: np.ndarray,
-    faces: np.ndarray,
-    *,
-    allow_open: bool = False,
-    weld: float = 0.0,
-    unit: str = "",
-) -> list[str]:
-    """Check that a triangle mesh bounds a solid; return warnings, raise on fatal problems.
-
-    Parameters
-    ----------
-    vertices : (V, 3) array_like — coordinates (any length unit)
-    faces : (F, 3) array_like of int — 0-based vertex indices
-    allow_open : bool
-        Accept boundary edges (holes) with a warning instead of an error. The volume of
-        an open mesh is then that of the surface closed by cones to the reference point
-        (the bounding-box centre): only meaningful for small holes.
-    weld : float
-        Weld tolerance (same unit as the vertices; 0: exact only). When the mesh as given
-        is not closed, the ends of its boundary edges whose coordinates all differ by at
-        most ``weld`` are merged and the edges checked again; see :func:`weld_gaps`.
-        It decides closedness and orientation only: the integrals use each triangle's
-        own coordinates.
-    unit : str
-        The vertices' length unit, for the messages only (e.g. ``"m"``).
-
-    Returns
-    -------
-    list of str
-        Warnings: triangles dropped because they repeat a vertex, zero-area triangles,
-        an inward-facing mesh (it is taken as turned outwards), an open mesh that
-        ``allow_open`` let through.
-
-    Raises
-    ------
-    MeshError
-        Wrong array shapes, no faces, NaN or infinite coordinates, face indices out of
-        range; every triangle degenerate; edges shared by more than two triangles
-        (non-manifold); edges traversed in the same direction by both their triangles
-        (inconsistent orientation); boundary edges (not closed) unless ``allow_open``;
-        zero volume (``|V| <= VOLUME_RTOL * L^3``, L the largest bounding-box side).
-
-    Notes
-    -----
-    Edge checks are sorts of int64 edge keys ``i * V + j``. For a closed, consistently
-    oriented, edge-manifold mesh every directed edge ``(i, j)`` appears once and its
-    reverse ``(j, i)`` appears once; so the sorted keys of the edges with ``i < j``
-    equal the sorted keys of the reversed edges with ``i > j``, with no repeats. That
-    one comparison (two sorts of 1.5 F keys) accepts a good mesh; only a failing mesh is
-    analysed further (one sort of the 3 F undirected keys, counting uses per edge).
-    """
-    props = _analyse(vertices, faces, allow_open=allow_open, inertia=False, weld=weld, unit=unit)
-    return list(props.warnings)
-
-
 def mass_properties(
     vertices: np.ndarray,
     faces: np.ndarray,
@@ -168,9 +98,12 @@ def mass_properties(
     Parameters
     ----------
     vertices : (V, 3) array_like — coordinates (any length unit)
-    faces : (F, 3) array_like of int — 0-based vertex indices, counter-clockwise seen
-        from outside (a mesh that is inward-facing everywhere is accepted and flipped)
-    allow_open, weld, unit — see :func:`check_mesh`
+    faces : (F, 3) array_like of int — 0-based, counter-clockwise seen from outside (a mesh
+        inward-facing everywhere is flipped)
+    allow_open : bool — accept holes with a warning (closed by cones to the box centre)
+    weld : float — merge the ends of boundary edges within this (:func:`weld_gaps`; for
+        closedness and orientation only)
+    unit : str — the vertices' length unit, for messages
 
     Returns
     -------
@@ -178,30 +111,24 @@ def mass_properties(
 
     Raises
     ------
-    MeshError — see :func:`check_mesh` (the same checks are made)
+    MeshError
+        Wrong shapes, no faces, non-finite coordinates, indices out of range; every triangle
+        degenerate; non-manifold or inconsistently oriented edges; holes unless
+        ``allow_open``; zero volume (``|V| <= VOLUME_RTOL * L^3``).
 
     Notes
     -----
-    Divergence theorem: the solid is the signed sum of the tetrahedra (o, a, b, c) that
-    each triangle (a, b, c) makes with a reference point o. With coordinates relative
-    to o, ``d = a · ((b - a) × (c - a)) = a · (b × c)`` (six times the signed volume)
-    and ``s = a + b + c``, the exact tetrahedron integrals are (Tonon 2004, J. Math.
-    Stat. 1, 8-11; Eberly, "Polyhedral mass properties")::
+    Divergence theorem over the tetrahedra (o, a, b, c): with ``d = a · (b × c)`` and
+    ``s = a + b + c`` (Tonon 2004, J. Math. Stat. 1, 8-11; Eberly, "Polyhedral mass
+    properties")::
 
-        ∫ dV       = d / 6
-        ∫ x_i dV   = d s_i / 24
+        ∫ dV = d / 6,   ∫ x_i dV = d s_i / 24,
         ∫ x_i x_j dV = d (a_i a_j + b_i b_j + c_i c_j + s_i s_j) / 120
 
-    summed over triangles. o is the centre of the bounding box of the used vertices,
-    subtracted in float64 before anything else, so that the relative rounding error is
-    that of the mesh's own size, not of its distance from the origin (trimesh
-    integrates about the origin: relative inertia error ~0.2 for a part 10 km away).
-    With ``g = ∫x dV / V`` the centroid offset from o, the second moments about the
-    centroid are ``C = ∫x xᵀ dV - V g gᵀ`` and the inertia per unit mass is
-    ``(tr(C) E - C) / V``. The sums run in blocks of 65536 triangles with BLAS
-    products (3 × m)(m × 3), so temporaries stay small.
-    """
-    return _analyse(vertices, faces, allow_open=allow_open, inertia=True, weld=weld, unit=unit)
+    o is the bounding box's centre, subtracted first, so the rounding error is relative to the
+    mesh's size, not its distance from the origin (trimesh: ~0.2 for a part 10 km away). About
+    the centroid ``C = ∫x xᵀ dV - V g gᵀ``; per unit mass ``(tr(C) E - C) / V``."""
+    return _analyse(vertices, faces, allow_open=allow_open, weld=weld, unit=unit)
 
 
 def weld_gaps(
@@ -209,46 +136,17 @@ def weld_gaps(
 ) -> tuple[np.ndarray, float, int]:
     """Group points whose coordinates all differ by at most ``tol``, safely.
 
-    Parameters
-    ----------
-    points : (n, 3) ndarray — distinct points (the ends of a mesh's boundary edges)
-    tol : float — the tolerance, > 0 (same unit as the points)
-    max_group : int — at most this many points may share one cell of side ``2 tol``
-    unit : str — the points' length unit, for the message only
-
-    Returns
-    -------
-    label : (n,) ndarray of int64
-        ``label[i]`` is the index of the point ``i`` is merged into (``i`` itself when
-        it stays alone).
-    gap : float
-        The largest coordinate difference inside a merged group (0 if none merged).
-    chained : int
-        Groups left unmerged because they were chains (see Notes).
-
-    Raises
-    ------
-    MeshError
-        More than ``max_group`` points within ``2 tol`` of each other: the tolerance is
-        far too large for this mesh.
+    ``points`` (n, 3), distinct (a mesh's boundary-edge ends); ``tol`` > 0; at most ``max_group``
+    points per cell of side ``2 tol`` (else a MeshError: the tolerance is far too large);
+    ``unit`` for the message. Returns (label: the index each point merges into, gap: the
+    largest coordinate difference in a merged group, chained: groups left unmerged).
 
     Notes
     -----
-    "Closer than ``tol``" (every coordinate differs by at most ``tol``, the Chebyshev
-    distance) is not transitive: a chain of points each ``tol`` from the next would,
-    merged, collapse a length of many ``tol`` into one point. So the groups are the
-    connected components of the "closer than tol" graph (single linkage, independent
-    of the order of the points), and a group whose extent along some axis exceeds
-    ``tol`` — not every pair in it is within ``tol`` — is a chain and is left
-    unmerged: welding never moves a point by more than ``tol``.
-
-    The pairs are found by sorting, not by comparing all pairs: with cells of side
-    ``s`` slightly above ``2 tol``, two points within ``tol`` share a cell in at least
-    one of the 8 grids shifted by 0 or ``s/2`` along each axis (along one axis, the
-    two points' interval is shorter than ``s/2``, so at most one of the two grids
-    has a cell border inside it). Each grid costs one lexicographic sort of the cell
-    indices; points in one cell are compared in pairs.
-    """
+    "Within tol" (Chebyshev) is not transitive, so the groups are the connected components of
+    that graph, and a group wider than ``tol`` is a chain and left alone: welding never moves
+    a point by more than ``tol``. Pairs come from sorting cell indices in 8 grids shifted by 0
+    or ``s/2`` per axis (two points within ``tol`` share a cell in one of them)."""
     pts = np.asarray(points, dtype=np.float64)
     n = len(pts)
     label = np.arange(n, dtype=np.int64)
@@ -374,9 +272,8 @@ def _plural(n: int, one: str, many: str) -> str:
     return f"{n} {one if n == 1 else many}"
 
 
-def _integrals(
-    v: np.ndarray, faces: np.ndarray, inertia: bool
-) -> tuple[float, float, np.ndarray, np.ndarray, int]:
+def _integrals(v: np.ndarray, faces: np.ndarray
+               ) -> tuple[float, float, np.ndarray, np.ndarray, int]:
     """(volume, area, first moment (3,), second moments (3, 3), n zero-area) about 0."""
     vt = np.ascontiguousarray(v.T)  # (3, V): gathers give contiguous rows
     vol6 = 0.0
@@ -404,12 +301,11 @@ def _integrals(
         area2 += float(np.sqrt(nn).sum())
         d = np.einsum("ij,ij->j", a, n)
         vol6 += float(d.sum())
-        if inertia:
-            s = a + b
-            s += c
-            first += s @ d
-            for p in (a, b, c, s):
-                second += (p * d) @ p.T
+        s = a + b
+        s += c
+        first += s @ d
+        for p in (a, b, c, s):
+            second += (p * d) @ p.T
     volume = vol6 / 6.0
     return volume, area2 / 2.0, first / 24.0, (second + second.T) / 240.0, zero
 
@@ -460,7 +356,6 @@ def _analyse(
     faces: np.ndarray,
     *,
     allow_open: bool,
-    inertia: bool,
     weld: float = 0.0,
     unit: str = "",
 ):
@@ -491,7 +386,7 @@ def _analyse(
     origin = (lo + hi) / 2.0
     size = float((hi - lo).max())
 
-    volume, area, first, second, n_zero = _integrals(v - origin, f, inertia)
+    volume, area, first, second, n_zero = _integrals(v - origin, f)
     if area == 0.0 or n_zero == len(f):
         raise MeshError(f"all {len(f)} triangles are degenerate (zero area): no surface")
     if n_zero:
@@ -562,12 +457,9 @@ def _analyse(
     # geometry: a mirror-symmetric mesh gets its exact centre, as a primitive does.
     g[np.abs(g) <= _SNAP * size] = 0.0
     centroid = origin + g
-    if inertia:
-        c = second - volume * np.outer(g, g)
-        unit = (np.trace(c) * np.eye(3) - c) / volume
-        unit = (unit + unit.T) / 2.0
-    else:
-        unit = np.full((3, 3), np.nan)
+    c = second - volume * np.outer(g, g)
+    unit = (np.trace(c) * np.eye(3) - c) / volume
+    unit = (unit + unit.T) / 2.0
     return MeshProps(
         volume=float(volume),
         area=float(area),

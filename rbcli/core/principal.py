@@ -1,13 +1,9 @@
 """Principal moments and axes of an inertia tensor, with deterministic conventions.
 
-Conventions: moments ascending; rows of ``axes`` are the unit axes, a right-handed set
-(``axes`` is a proper rotation matrix); their signs are chosen so that this rotation is
-the one nearest the body frame (largest trace, i.e. smallest rotation angle), so a body
-tilted 0.5° has principal axes 0.5° from its body axes (issue 13, item 6; this replaces
-SPEC §3's "largest component positive", which is kept only to break exact ties). Where
-moments coincide (to a relative ``DEGENERATE_RTOL``) the eigenspace is a plane or all of
-space, and the axes are chosen aligned with the body axes where that is possible.
-"""
+Moments ascending; ``axes`` rows the unit axes, a proper rotation whose signs make it the
+one nearest the body frame (a body tilted 0.5° has axes 0.5° from its body axes; SPEC §3's
+"largest component positive" only breaks exact ties). Where moments coincide (to
+``DEGENERATE_RTOL``) the axes are aligned with the body axes where possible."""
 
 from __future__ import annotations
 
@@ -25,18 +21,10 @@ TILT_ROUND_OFF = 8.0 * float(np.finfo(float).eps)
 
 @dataclass(frozen=True)
 class PrincipalAxes:
-    """Principal decomposition of an inertia tensor.
-
-    Attributes
-    ----------
-    moments : (3,) ndarray — kg m^2, ascending
-    axes : (3, 3) ndarray — row i is the unit axis of ``moments[i]`` (body frame);
-        ``axes`` is a proper rotation matrix (det +1) taking body to principal coordinates,
-        with signs making it the one nearest the identity
-    symmetry : str — "asymmetric", "symmetric" or "spherical"
-    unique_axis : int | None — for "symmetric", the index (0 or 2) of the moment that differs
-    free_axes : tuple[int, ...] — indices of axes that are free to choose (a degenerate eigenspace)
-    """
+    """Principal decomposition of an inertia tensor: ``moments`` (kg m^2, ascending), ``axes``
+    (rows, a proper rotation nearest the identity), ``symmetry`` ("asymmetric", "symmetric",
+    "spherical"), ``unique_axis`` (for "symmetric", the index of the moment that differs) and
+    ``free_axes`` (the axes free to choose)."""
 
     moments: np.ndarray
     axes: np.ndarray
@@ -55,27 +43,10 @@ def _close(a: float, b: float, scale: float) -> bool:
 
 
 def principal_axes(inertia: np.ndarray) -> PrincipalAxes:
-    """Principal moments (ascending) and axes of a symmetric 3x3 inertia tensor.
-
-    Parameters
-    ----------
-    inertia : (3, 3) array_like — kg m^2, tensor convention, symmetric
-
-    Returns
-    -------
-    PrincipalAxes
-
-    Raises
-    ------
-    ValueError
-        If ``inertia`` is not a 3x3 matrix of finite numbers.
-
-    Notes
-    -----
-    ``numpy.linalg.eigh`` gives an orthonormal eigenbasis. For a degenerate pair the
-    basis of the shared plane is re-chosen: the body axis with the largest projection
-    on the plane is projected and normalised, and the other completes the plane.
-    """
+    """Principal moments (ascending) and axes of a symmetric 3x3 inertia tensor (kg m^2):
+    :class:`PrincipalAxes`; ValueError for anything but a finite 3x3 matrix. ``eigh`` gives the
+    eigenbasis; in a degenerate plane the body axis projecting most on it is projected and
+    normalised, the other completes the plane."""
     J = np.asarray(inertia, dtype=float)
     if J.shape != (3, 3) or not np.all(np.isfinite(J)):
         raise ValueError("the inertia tensor must be a 3x3 matrix of finite numbers")
@@ -152,27 +123,12 @@ def _right_handed(axes: np.ndarray) -> np.ndarray:
 
 
 def axis_tilts(axes: np.ndarray) -> tuple[np.ndarray, tuple[int, int, int]]:
-    """Each principal axis's tilt from its nearest body axis.
+    """Each principal axis's tilt from its nearest body axis: (tilt_deg, degrees in
+    [0, 54.7356°]; nearest, 0 = x, 1 = y, 2 = z).
 
-    Parameters
-    ----------
-    axes : (3, 3) array_like — row i is the unit principal axis i (body frame)
-
-    Returns
-    -------
-    tilt_deg : (3,) ndarray — degrees, the angle between axis line i and the nearest body
-        axis line (the sign of the direction ignored), in [0, 54.7356°]
-    nearest : tuple of 3 int — the body axis (0 = x, 1 = y, 2 = z) each is nearest to
-
-    Notes
-    -----
-    With j the largest |component| of the unit axis u, the tilt is
-    atan2(sqrt(Σ_{k≠j} u_k²), |u_j|): exact near 0° where arccos(|u_j|) loses half its
-    digits; a sideways part below :data:`TILT_ROUND_OFF` (round-off) reads 0. A line is at most arccos(1/√3) from all three body axes. This is the headline of
-    a body whose principal axes are near its body axes: the ascending order of the moments
-    may put axis 1 along body z, so the rotation taking the body axes to the principal
-    axes 1, 2, 3 can be ~90° for a body tilted 0.5° (issue 24).
-    """
+    With j the largest |component| of the unit axis u: atan2(sqrt(Σ_{k≠j} u_k²), |u_j|) (exact
+    near 0°; below :data:`TILT_ROUND_OFF` it reads 0). The headline of a nearly aligned body,
+    whose rotation to axes 1, 2, 3 may be ~90° (issue 24)."""
     a = np.asarray(axes, dtype=float)
     nearest = tuple(int(k) for k in np.argmax(np.abs(a), axis=1))
     tilt = np.empty(3)
@@ -191,23 +147,14 @@ class PrincipalResult:
 
     Attributes
     ----------
-    mass : float — kg
-    reference : (3,) ndarray — m, the point the moments are about
-    axes_info : PrincipalAxes — moments (kg m^2, ascending) and axes (rows)
-    stable : tuple[bool, bool, bool] — is free rotation about each axis stable (a neutral
-        axis is not: see ``stability``)
-    stability : tuple[str, str, str] — "stable", "unstable" or "neutral" per axis
-    equivalent_box : (3,) ndarray — m, side along each principal axis of the uniform box
-        with the same mass and principal moments
-    equivalent_ellipsoid : (3,) ndarray — m, semi-axes of the same for a uniform ellipsoid
-    rotation_axis : (3,) ndarray — unit axis of the rotation taking the body axes to the
-        principal axes 1, 2, 3 in ascending order of the moments
-    rotation_angle_deg : float — its angle (~90° or more when the ascending order permutes
-        the body axes, however small the tilts)
-    tilt_deg : (3,) ndarray — degrees, each principal axis from its nearest body axis
-        (:func:`axis_tilts`)
-    tilt_axis : tuple[int, int, int] — that body axis, 0 = x, 1 = y, 2 = z
-    """
+    mass, reference — kg; m, the point the moments are about
+    axes_info : PrincipalAxes
+    stable, stability — free rotation about each axis: stable (bool); "stable", "unstable" or
+        "neutral"
+    equivalent_box, equivalent_ellipsoid : (3,) ndarray — m, the uniform box's sides and
+        ellipsoid's semi-axes with the same mass and moments
+    rotation_axis, rotation_angle_deg — the rotation taking the body axes to axes 1, 2, 3
+    tilt_deg, tilt_axis — :func:`axis_tilts`"""
 
     mass: float
     reference: np.ndarray
@@ -255,20 +202,10 @@ class PrincipalResult:
 def principal_report(mass: float, inertia: np.ndarray, reference: np.ndarray) -> PrincipalResult:
     """Principal moments and axes of ``inertia`` (about ``reference``) with what they mean.
 
-    Notes
-    -----
-    Stability of free rotation: about the largest and the smallest principal moment
-    it is stable, about the intermediate one unstable (Euler's equations linearised,
-    e'' = -k W² e with k = (Ij - Ik)(Ij - Il)/(Ik Il); Landau & Lifshitz §37). Where two
-    moments are equal the body is symmetric and every axis of the equal pair is equally
-    principal: rotation about the symmetry axis is stable, about an axis of the pair
-    neutral (k = 0: a small disturbance makes the spin axis wander round the symmetry axis,
-    through the whole plane of the pair; not stable); spherical: every axis is principal
-    and any rotation steady, so stable.
-    Equivalent uniform box of sides (a, b, c) along the principal axes:
-    ``I₁ = m (b² + c²)/12`` … so ``a² = 6 (I₂ + I₃ − I₁)/m``; ellipsoid of semi-axes
-    (a, b, c): ``I₁ = m (b² + c²)/5`` so ``a² = 5 (I₂ + I₃ − I₁)/(2 m)``.
-    """
+    Free rotation about the largest and smallest moment is stable, about the intermediate one
+    unstable (e'' = -k W² e, k = (Ij - Ik)(Ij - Il)/(Ik Il); Landau & Lifshitz §37); about an
+    axis of a symmetric body's equal pair neutral (k = 0), spherical stable. Equivalent box:
+    ``a² = 6 (I₂ + I₃ − I₁)/m``; ellipsoid: ``a² = 5 (I₂ + I₃ − I₁)/(2 m)``."""
     pa = principal_axes(inertia)
     I1, I2, I3 = pa.moments
     words: tuple[str, str, str]

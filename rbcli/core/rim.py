@@ -1,19 +1,11 @@
 """What a rolling body's rim is and where it lies (``rollcheck``, issues 14.3 and 24).
 
-The rim is made by the round parts (the shape registry's ``round`` shapes) coaxial with the
-axle whose outer radius is the rim radius a. What each touches the floor with is the
-registry's :class:`rbcli.core.shapes.RimRule`: a knife edge (a disk, a ring, a cone's base, a
-hemisphere's flat face), a torus (tube radius r), a sphere (r = a) or a flat band (a cylinder
-on its side: width along the axle). :func:`rim_of` gathers them into one :class:`Rim`:
-
-- its kind and tube radius (the largest of the parts': the tube that reaches lowest);
-- where it lies along the axle from the centre of mass: one plane (``low == high``) or a
-  band from ``low`` to ``high`` (a cylinder's width, or several rim circles in different
-  planes: two wheels on an axle stand on both, as a can stands on its band).
-
-A rim circle off the plane of the centre of mass (a band that does not hold that plane)
-makes upright rolling no equilibrium: the centre of mass is to the side of the contact.
-"""
+The rim is made by the round parts coaxial with the axle whose outer radius is the rim
+radius, each touching the floor as its :class:`rbcli.core.shapes.RimRule` says (a knife edge,
+a torus, a sphere, a flat band). :func:`rim_of` gathers them into a :class:`Rim`: its kind,
+tube radius (the largest: it reaches lowest) and where it lies along the axle (one plane or
+a band; two wheels on an axle stand on both). A rim off the com's plane makes upright
+rolling no equilibrium."""
 
 from __future__ import annotations
 
@@ -107,19 +99,10 @@ def _tube_and_width(part: Any) -> tuple[float, float]:
 
 @dataclass(frozen=True)
 class Rim:
-    """What the rim is and where it lies along the axle, from the parts that make it.
-
-    Attributes
-    ----------
-    offset : float — m, signed distance along the axle from the centre of mass to the
-        rim's middle (its circle's plane, a band's middle)
-    radius : float — m, the rim radius a
-    parts : tuple of (name, shape) — the parts whose outer radius is the rim
-    kind : str — ``"edge"``, ``"torus"``, ``"sphere"`` or ``"band"``
-    tube_radius : float — m, r: 0 for an edge or a band, a for a sphere
-    low, high : float — m, the band's ends along the axle from the centre of mass (equal
-        for a rim in one plane)
-    """
+    """What the rim is and where it lies along the axle: ``offset`` (m, from the com to its
+    middle), ``radius`` (m), ``parts`` ((name, shape)), ``kind`` (``"edge"``, ``"torus"``,
+    ``"sphere"``, ``"band"``), ``tube_radius`` (m) and ``low``, ``high`` (m, the band's ends from
+    the com; equal for one plane)."""
 
     offset: float
     radius: float
@@ -177,19 +160,9 @@ class Rim:
 
 def rim_of(parts: Any, com: Any, axle: Any, through: Any, radius: float,
            rtol: float = 1e-9, tol: float = 1e-6) -> Rim | None:
-    """The rim of rim radius ``radius`` (m) about the axle, measured from the centre of mass
-    ``com`` (m).
-
-    The rim is made by the :func:`rim_candidates` whose outer radius is ``radius`` (to
-    ``rtol``; ``tol`` as for :func:`rim_candidates`); each lies on the circle of
-    :func:`rim_circle_centre`, a cylinder's band half its length each side of it. Its kind:
-    a sphere if a part is one; else a band if the parts span a width along the axle (a
-    cylinder, or rim circles in different planes: the body stands on all of them); else a
-    torus if a part has a tube, else a knife edge. Its tube radius is the largest of the
-    parts' (at a lean the largest tube reaches lowest). None when no part has that radius
-    (a rim radius given as a number for a body whose rim is not a round part: nothing to
-    measure).
-    """
+    """The rim of radius ``radius`` about the axle, from the com: the :func:`rim_candidates`
+    with that outer radius (to ``rtol``), a sphere if one is, else a band if they span a width,
+    else a torus if one has a tube, else a knife edge. None when no part has that radius."""
     n = np.asarray(axle, dtype=float)
     G = np.asarray(com, dtype=float)
     a = float(radius)

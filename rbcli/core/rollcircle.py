@@ -1,16 +1,10 @@
 """Steady circular rolling of a knife-edge wheel leaning into the turn (``rollcheck --lean/--circle``).
 
-Model (physics sheet ``dynamics.md`` §3.3): the wheel of :mod:`rbcli.core.wheel` rolls
-without slipping on a circle, its centre G at radius R_G, leaning inwards by beta from the
-vertical, turning at Omega about the vertical. :func:`circle` gives the motion for a lean
-and a circle radius, :func:`lean_for` the lean for a circle radius and a speed,
-:func:`radius_for` the circle radius for a lean and a speed; each with the lean stiffness
-kappa of the steady motion (> 0: neutrally stable, undamped). :func:`stability_map` and
-:func:`circle_arrays` give kappa and the rates on grids for figures. Knife edge only (tyre
-radius 0): the sheet gives the relation and its stability for r = 0.
-
-Angles are in radians; SI units throughout.
-"""
+Physics sheet ``dynamics.md`` §3.3: the wheel rolls on a circle, its centre G at radius R_G,
+leaning inwards by beta, turning at Omega. :func:`circle` (lean and radius),
+:func:`lean_for` (radius and speed), :func:`radius_for` (lean and speed) give the motion and
+its lean stiffness kappa (> 0: neutrally stable); :func:`stability_map` and
+:func:`circle_arrays` grids for figures. Knife edge only; radians, SI."""
 
 from __future__ import annotations
 
@@ -31,20 +25,13 @@ class CircleMotion:
 
     Attributes
     ----------
-    lean : float — rad, beta, inward lean of the wheel plane from the vertical, [0, pi/2)
-    radius : float — m, R_G, radius of the circle of the centre G
-    turn_rate : float — rad/s, Omega >= 0, heading (precession) rate about the vertical
-    spin : float — rad/s, omega_3 = Omega R_G / a, spin about the axle (same sense as the
-        travel)
-    speed : float — m/s, v = Omega R_G = a omega_3, speed of the centre
-    contact_radius : float — m, R_P = R_G + a sin(beta), circle of the contact point
-    kappa : float — N m (kg m^2/s^2), lean stiffness of the steady motion (sheet §3.3)
-    stable : bool — kappa > 0 (neutral stability, undamped; kappa = 0 counts as not stable)
-    lean_frequency : float or None — rad/s, sqrt(kappa / (A + m a^2)) when stable
-    growth_rate : float or None — 1/s, sqrt(-kappa / (A + m a^2)) when not stable
-    rim_radius : float — m, a
-    g : float — m/s^2
-    """
+    lean : float — rad, beta, in [0, pi/2)
+    radius, contact_radius : float — m, R_G and R_P = R_G + a sin(beta)
+    turn_rate, spin : float — rad/s, Omega >= 0 and omega_3 = Omega R_G / a
+    speed : float — m/s, v = Omega R_G
+    kappa : float — N m, lean stiffness (sheet §3.3); stable : bool — kappa > 0
+    lean_frequency, growth_rate — sqrt(±kappa / (A + m a^2)) (rad/s, 1/s), or None
+    rim_radius, g : float — m, m/s^2"""
 
     lean: float
     radius: float
@@ -188,11 +175,10 @@ def circle(
     ----------
     wheel : Wheel — A and C about the centre G
     a : float — m, rim radius
-    lean_rad : float — rad, beta, inward lean from the vertical, 0 <= beta < pi/2
-    R_G : float — m, radius of the centre's circle, >= 0 (0 = spinning in place, Euler's
-        disk)
+    lean_rad : float — rad, inward lean from the vertical, 0 <= beta < pi/2
+    R_G : float — m, radius of the centre's circle, >= 0 (0: spinning in place)
     g : float — m/s^2
-    r : float — m, tyre radius; only 0 (knife edge) is accepted, else ValueError
+    r : float — m, tyre radius; only 0 (knife edge)
 
     Returns
     -------
@@ -200,24 +186,14 @@ def circle(
 
     Notes
     -----
-    Sheet §3.3 (knife edge):
-    m g a sin(beta) = A Omega^2 sin(beta) cos(beta) + (C + m a^2) Omega omega_3 cos(beta),
-    with v = a omega_3 = Omega R_G, i.e.
-    Omega^2 = m g a^2 tan(beta) / (A a sin(beta) + (C + m a^2) R_G);
-    R_P = R_G + a sin(beta). Stability (neutral, undamped) iff
+    Sheet §3.3 (knife edge), with v = a omega_3 = Omega R_G:
+    Omega^2 = m g a^2 tan(beta) / (A a sin(beta) + (C + m a^2) R_G), R_P = R_G + a sin(beta);
+    stable (neutrally) iff
     kappa = A Omega^2 cos 2beta - (C + m a^2) Omega omega_3 sin beta - m g a cos beta
             + (2 A Omega sin beta + (C + m a^2) omega_3)(2 A Omega sin beta + C omega_3)/A
             + m a^2 Omega^2 cos^2 beta > 0,
-    the lean then oscillating at sqrt(kappa / (A + m a^2)). A, C about G; C + m a^2 and
-    A + m a^2 about the contact point. Limits: R_G = 0 gives
-    Omega^2 = m g a / (A cos beta) and kappa = (3 A sin^2 beta + m a^2 cos^2 beta) Omega^2;
-    beta = 0, Omega = 0 gives sheet §3.2.
-
-    beta = 0 exactly gives Omega = 0, omega_3 = 0, v = 0: the wheel standing upright at
-    rest (kappa = -m g a, unstable). Straight rolling at speed v is the limit R_G -> oo
-    (use :func:`at_speed`). At R_G = 0 and beta = 0 any turn rate is steady; Omega = 0 is
-    reported (the R_G = 0 family tends to Omega^2 = m g a / A as beta -> 0+).
-    """
+    the lean oscillating at sqrt(kappa / (A + m a^2)). beta = 0 is the wheel upright at rest
+    (kappa = -m g a); straight rolling is the limit R_G -> oo (:func:`at_speed`)."""
     _knife_edge_only(r)
     a, _, g = check_geometry(a, 0.0, g)
     return _make_circle(wheel, a, g, _check_lean(lean_rad), _check_RG(R_G))
@@ -233,22 +209,12 @@ def lean_for(
     r: float = 0.0,
     params: tuple[str, ...] = ("circle", "speed"),
 ) -> CircleMotion:
-    """The steady circle with its centre moving at speed v on a circle of radius R_G.
+    """The steady circle with its centre moving at speed v on a circle of radius R_G: the lean
+    solving Omega(beta) R_G = |v| (monotonic in beta for R_G > 0: one root, by Brent).
 
-    Solves Omega(beta) R_G = |v| for the lean beta in (0, pi/2) by ``scipy.optimize.brentq``
-    (Omega from :func:`circle`). For R_G > 0 the left side increases monotonically from 0
-    (beta -> 0) to infinity (beta -> pi/2), so exactly one lean exists for every v > 0.
-    The direction of travel does not matter (a mirror image): |v| is used, and the result
-    reports the positive speed.
-
-    Special cases: v = 0 with R_G > 0 returns beta = 0 (standing upright at rest);
-    R_G = 0 (spinning in place, the centre does not move) with v != 0 has no lean — a
-    :class:`rbcli.errors.InputError` says so; R_G = 0 with v = 0 is satisfied by every lean —
-    an InputError asks for the lean. A lean so close to 90° that it cannot be resolved, or so
-    close to 0 that it is below the smallest float (a speed like 1e-300 m/s), also raises.
-    These errors name ``params``, the parameters that gave the circle radius and the speed
-    (default ``("circle", "speed")``). Knife edge only (r must be 0). Sheet §3.3.
-    """
+    v = 0 with R_G > 0 is upright at rest; R_G = 0 with v != 0 has no lean, and with v = 0 every
+    lean: an InputError naming ``params`` (default ``("circle", "speed")``), as for a lean too
+    near 90° or 0 to resolve. Knife edge only. Sheet §3.3."""
     from scipy.optimize import brentq
 
     _knife_edge_only(r)
@@ -346,21 +312,8 @@ def radius_for(
 
 
 def stability_map(wheel: Wheel, a: float, g: float, leans: Any, radii: Any) -> np.ndarray:
-    """kappa (N m) of steady circles on a (lean, circle radius) grid, for plots.
-
-    Parameters
-    ----------
-    wheel : Wheel
-    a : float — m, rim radius (knife edge)
-    g : float — m/s^2
-    leans : (N,) array_like — rad, each in [0, pi/2)
-    radii : (M,) array_like — m, R_G, each >= 0
-
-    Returns
-    -------
-    (N, M) ndarray — kappa[i, j] for leans[i], radii[j]; > 0 stable (neutral, undamped).
-    Same formula as :func:`circle` (sheet §3.3).
-    """
+    """kappa (N m) of steady circles, (N, M) for ``leans`` (rad) and ``radii`` R_G (m), as
+    :func:`circle` (> 0 stable)."""
     a, _, g = check_geometry(a, 0.0, g)
     b = np.asarray(leans, dtype=float).reshape(-1)
     R = np.asarray(radii, dtype=float).reshape(-1)

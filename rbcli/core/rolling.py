@@ -1,23 +1,11 @@
 """Rolling stability of a wheel, disk or hoop on a rough horizontal floor (``rollcheck``).
 
-Model (physics sheet ``dynamics.md`` §3): a rigid body of revolution of mass m, centre of
-mass G on its axle, rolls without slipping (and without pivot friction or rolling
-resistance) on a horizontal floor. It touches the floor along a circle of radius a in its
-mid-plane (a *knife-edge* rim), or, generalised, along a toroidal rim whose tube radius is
-r (0 <= r < a; r = 0 is the knife edge). Energy is conserved; there is no damping, so
-"stable" always means **neutral stability (undamped)**: a small lean oscillates with
-bounded amplitude, it does not decay.
-
-Which moments enter (sheet §3.2 and checklist §4b.8):
-
-- A — the diametral moment of inertia, across the axle, **about the centre G**;
-- C — the axial moment, about the axle, **about the centre G**;
-- C + m a^2 — the axial-direction moment **about the contact point** (parallel axis);
-- A + m a^2 — the fore-aft moment about the contact point; it sets only the rates.
-
-Angles are in radians in every argument and attribute; ``to_json`` adds ``*_deg`` keys.
-All quantities are SI (m, kg, s, rad/s).
-"""
+Physics sheet ``dynamics.md`` §3: a rigid body of revolution (mass m, com G on its axle)
+rolls without slipping on a floor, touching it along a circle of radius a (a *knife-edge*
+rim) or a toroidal rim of tube radius r (0 <= r < a). No damping: "stable" means
+neutral stability (undamped): a small lean oscillates, it does not decay. A and C are
+about the centre G; C + m a^2 and A + m a^2 about the contact point (sheet §3.2, §4b.8).
+Angles in radians; SI throughout."""
 
 from __future__ import annotations
 
@@ -36,9 +24,6 @@ MODEL_NOTE = (
     "centre G, C + m a^2 about the contact point; neutral stability (undamped)"
 )
 
-#: what a rim is (:attr:`StraightRolling.rim`): a knife edge, a torus, a sphere, a flat band
-RIMS = ("edge", "torus", "sphere", "band")
-
 
 # --------------------------------------------------------------------------- straight
 
@@ -49,26 +34,15 @@ class StraightRolling:
 
     Attributes
     ----------
-    wheel : Wheel
-    radius : float — m, rim radius a (G to contact point when upright)
-    tyre_radius : float — m, tube radius r of a rounded rim (0 = knife edge or flat band,
-        a = a sphere)
-    g : float — m/s^2
-    critical_spin : float — rad/s: edge, torus: s_c = sqrt(m g (a - r) A / (C (C + m a^2)));
-        sphere: 0 (no lean instability); band: the larger of the edges' thresholds
-        (:func:`edge_critical_spin`)
-    critical_speed : float — m/s, a times the critical spin
-    C_contact : float — kg m^2, C + m a^2 (axial direction, about the contact point)
-    A_contact : float — kg m^2, A + m a^2 (fore-aft axis, about the contact point)
-    rim : str — ``"edge"`` (r = 0), ``"torus"`` (0 < r < a), ``"sphere"`` (r = a) or
-        ``"band"`` (a flat band: a cylinder on its side, a thick coin, two wheels on an axle)
-    band : tuple of 2 floats or None — m, the band's edges' distances c1, c2 >= 0 from the
-        plane of G, one each side (band only)
-    static_lean_limit : float or None — rad, atan(min(c1, c2)/a): the band holds the body up
-        by its weight alone for leans below this, at any speed (band only)
-    knife_edge_critical_spin : float or None — rad/s, the knife-edge idealisation at the
-        plane of G, for comparison (band only)
-    """
+    wheel : Wheel; radius, tyre_radius : float — m, a and r; g : float — m/s^2
+    critical_spin : float — rad/s, s_c = sqrt(m g (a - r) A / (C (C + m a^2))) (sphere: 0;
+        band: the larger edge's, :func:`edge_critical_spin`)
+    critical_speed : float — m/s, a s_c
+    C_contact, A_contact : float — kg m^2, C + m a^2 and A + m a^2
+    rim : str — ``"edge"``, ``"torus"``, ``"sphere"`` or ``"band"`` (a cylinder on its side)
+    band : tuple of 2 floats or None — m, the band's edges from the plane of G
+    static_lean_limit : float or None — rad, atan(min(c1, c2)/a): the band's weight holds it
+    knife_edge_critical_spin : float or None — rad/s, for comparison (band only)"""
 
     wheel: Wheel
     radius: float
@@ -135,33 +109,16 @@ class StraightRolling:
 def straight(wheel: Wheel, a: float, r: float = 0.0, g: float = STANDARD_GRAVITY) -> StraightRolling:
     """Critical spin and speed for stable straight upright rolling on a round rim.
 
-    Parameters
-    ----------
-    wheel : Wheel — A and C about the centre G
-    a : float — m, rim radius (centre to contact point when upright), > 0
-    r : float — m, tube radius of a rounded (toroidal) rim, 0 <= r <= a; 0 = knife edge,
-        a = a sphere
-    g : float — m/s^2, > 0
-
-    Returns
-    -------
-    StraightRolling — ``rim`` "edge", "torus" or "sphere"
+    ``wheel`` (A and C about G), rim radius ``a`` > 0, tube radius ``r`` (0 <= r <= a: 0 knife
+    edge, a sphere), ``g`` (m/s^2): a :class:`StraightRolling`.
 
     Notes
     -----
-    Sheet §3.2: linearising about upright rolling at spin s gives
-    lambda^2 [A (A + m a^2) lambda^2 + C (C + m a^2) s^2 - A m g (a - r)] = 0, so the lean
-    stays bounded (neutral stability, undamped) iff
-    s^2 > s_c^2 = m g (a - r) A / [C (C + m a^2)], and v_c = a s_c.
-    A and C are about the centre G; C + m a^2 is the axial moment about the contact
-    point. A rounded rim only weakens gravity (a -> a - r in the gravity term): the
-    contact-to-G vector is (a - r) u + r z (u the wheel plane's upward direction), whose
-    horizontal part, the lever of the weight, is (a - r) sin(lean). Thin disk:
-    s_c^2 = g/(3a); hoop: s_c^2 = g/(4a). A sphere (r = a) has no lever at any lean: no
-    lean instability, s_c = 0, and nu^2 = C (C + m a^2) s^2 / (A (A + m a^2)) >= 0. Checked
-    against the eigenvalues and integrations of the vector equations of a toroidal rim
-    (tests/test_rollcheck_rims.py).
-    """
+    Sheet §3.2: lambda^2 [A (A + m a^2) lambda^2 + C (C + m a^2) s^2 - A m g (a - r)] = 0, so the
+    lean stays bounded iff s^2 > s_c^2 = m g (a - r) A / [C (C + m a^2)]; v_c = a s_c. A rounded
+    rim only shortens the weight's lever to (a - r) sin(lean). Thin disk s_c^2 = g/(3a), hoop
+    g/(4a); a sphere has none (s_c = 0). Checked against the vector equations of a toroidal rim
+    (tests/test_rollcheck_rims.py)."""
     a, r, g = check_geometry(a, r, g)
     m, A, C = wheel.mass, wheel.A, wheel.C
     Cc = C + m * a * a
@@ -183,21 +140,12 @@ def _edge_terms(wheel: Wheel, a: float, c: float, g: float) -> tuple[float, floa
 
 
 def edge_nu2(wheel: Wheel, a: float, c: float, g: float, spin: Any) -> Any:
-    """Squared lean frequency (rad^2/s^2) of straight rolling balanced on an edge circle.
-
-    A body of revolution rolling on a sharp edge, a circle of radius a whose plane is c
-    (>= 0) along the axle from the centre of mass G, leaning atan(c/a) onto it so that G is
-    straight above the contact point (l = sqrt(a^2 + c^2) up): that is straight rolling at
-    any spin s, and linearising about it (derived here from the vector equations of sheet
-    §3.1 with the contact-to-G vector a u - c n) gives
-    lambda^4 (lambda^2 + nu^2) = 0 with nu^2 = k2 s^2 + k0,
-    k2 = C (C + m a^2)(C + m l^2) / [Delta (A + m l^2)],
-    k0 = -m g l / (A + m l^2),
-    Delta = (C + m a^2)(A + m c^2) - m^2 a^2 c^2.
-    A + m l^2 is the moment about the fore-aft axis through the contact point; at c = 0 it
-    is the knife edge of sheet §3.2. Checked against the eigenvalues and integrations of the
-    vector equations (tests/test_rollcheck_rims.py).
-    """
+    """Squared lean frequency (rad^2/s^2) of straight rolling balanced on an edge circle of
+    radius a, c (>= 0) along the axle from G, leaning atan(c/a) so that G is above the contact
+    (l = sqrt(a^2 + c^2)). Linearising the vector equations of sheet §3.1 (contact-to-G
+    a u - c n): nu^2 = k2 s^2 + k0, k2 = C (C + m a^2)(C + m l^2) / [Delta (A + m l^2)],
+    k0 = -m g l / (A + m l^2), Delta = (C + m a^2)(A + m c^2) - m^2 a^2 c^2; c = 0 is §3.2's
+    knife edge (tests/test_rollcheck_rims.py)."""
     k2, k0 = _edge_terms(wheel, a, c, g)
     s = np.asarray(spin, dtype=float)
     out = k2 * s * s + k0
@@ -212,34 +160,14 @@ def edge_critical_spin(wheel: Wheel, a: float, c: float, g: float = STANDARD_GRA
 
 
 def band_rolling(wheel: Wheel, a: float, c1: float, c2: float, g: float = STANDARD_GRAVITY) -> StraightRolling:
-    """Straight rolling on a flat band: a cylinder on its side, a thick coin, two coaxial
-    wheels on an axle.
+    """Straight rolling on a flat band (a cylinder on its side, a thick coin, two wheels on
+    an axle): ``a`` the band's radius, ``c1``, ``c2`` >= 0 its edges' distances from the plane of
+    the com. A :class:`StraightRolling` with ``rim`` "band".
 
-    Parameters
-    ----------
-    wheel : Wheel
-    a : float — m, the band's radius
-    c1, c2 : float — m, >= 0, the distances of the band's two edges from the plane of the
-        centre of mass, one each side (a band of width c1 + c2 that holds that plane)
-    g : float — m/s^2
-
-    Returns
-    -------
-    StraightRolling — ``rim`` "band"; ``critical_spin`` the larger of the edges'
-    :func:`edge_critical_spin`, ``static_lean_limit`` atan(min(c1, c2)/a),
-    ``knife_edge_critical_spin`` the knife edge at G's plane for comparison.
-
-    Notes
-    -----
-    Upright the body stands on a line of contact across the band. Leaning by less than
-    atan(c/a) towards an edge at c it pivots on that edge with its weight's line still
-    inside the band, and the weight rights it: the band holds it up statically, at any
-    speed, against leans below the smaller limit (at speed a lean within it rolls the
-    body along a curve on its edge; it never leans further: tests/test_rollcheck_rims.py).
-    Tipped further it balances on one edge circle, where straight rolling is stable
-    only above that edge's critical spin: above the larger of the two it stays up
-    however it is tipped onto its band's edges. At c1 = c2 = 0 this is the knife edge.
-    """
+    Leaning less than atan(c/a) towards an edge, the weight rights it at any speed; tipped
+    further it balances on one edge circle, stable above that edge's critical spin, so above
+    the larger of the two it stays up (tests/test_rollcheck_rims.py). c1 = c2 = 0 is the knife
+    edge."""
     a, _, g = check_geometry(a, 0.0, g)
     for name, c in (("c1", c1), ("c2", c2)):
         if not (math.isfinite(c) and c >= 0.0):
@@ -258,20 +186,13 @@ class Verdict:
 
     Attributes
     ----------
-    speed : float — m/s, speed of the centre as given (negative = rolling backwards)
-    spin : float — rad/s, spin about the axle, speed / a (same sign as speed)
-    stable : bool — |spin| > s_c: the lean stays bounded (neutral stability, undamped).
-        Exactly at s_c the lean drifts (a repeated zero root): **not stable**. A sphere is
-        stable at every speed (no lean instability); a band above the larger edge threshold
-    margin : float or None — |speed| / v_c (> 1 stable); None for a sphere (v_c = 0)
+    speed, spin : float — m/s and rad/s (speed / a), as given (negative: backwards)
+    stable : bool — |spin| > s_c (exactly at s_c the lean drifts: not stable)
+    margin : float or None — |speed| / v_c; None for a sphere
     nu2 : float — rad^2/s^2, squared lean-oscillation frequency (sheet §3.2)
-    lean_frequency : float or None — rad/s, sqrt(nu2) when nu2 > 0, else None
-    lean_frequency_hz : float or None — Hz, lean_frequency / (2 pi)
-    growth_rate : float or None — 1/s, sqrt(-nu2) when nu2 <= 0 (0.0 exactly at the
-        threshold, where the lean grows linearly, not exponentially), else None
-    backwards : bool — the speed (or spin) was negative; |spin| was used (the stability
-        of straight rolling does not depend on the direction)
-    """
+    lean_frequency, lean_frequency_hz — sqrt(nu2) (rad/s, Hz) when nu2 > 0, else None
+    growth_rate : float or None — 1/s, sqrt(-nu2) when nu2 <= 0
+    backwards : bool — the speed was negative (stability does not depend on it)"""
 
     speed: float
     spin: float
@@ -302,23 +223,10 @@ class Verdict:
 def at_speed(
     straight: StraightRolling, v: float | None = None, spin: float | None = None
 ) -> Verdict:
-    """Verdict on straight upright rolling at speed v (m/s) or spin (rad/s).
-
-    Parameters
-    ----------
-    straight : StraightRolling
-    v : float or None — m/s, speed of the centre
-    spin : float or None — rad/s, spin about the axle (omega_3); v = a * spin
-
-    Give one of them, or both when they agree (v = a spin to a relative 1e-9).
-    A negative value means rolling backwards: the verdict uses |spin|.
-
-    Notes
-    -----
-    nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] / [A (A + m a^2)] (sheet §3.2), with A, C about
-    the centre G and C + m a^2, A + m a^2 about the contact point. nu^2 > 0: the lean
-    oscillates at nu (neutral stability, undamped); nu^2 < 0: it grows at sqrt(-nu^2).
-    """
+    """Verdict on straight upright rolling at speed ``v`` (m/s) or ``spin`` (rad/s; v = a spin:
+    one, or both when they agree to 1e-9; negative is backwards, |spin| is used).
+    nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] / [A (A + m a^2)] (sheet §3.2): > 0 the lean
+    oscillates at nu, < 0 it grows at sqrt(-nu^2)."""
     a = straight.radius
     if v is None and spin is None:
         raise ValueError("give a speed or a spin")
@@ -354,26 +262,6 @@ def at_speed(
         growth_rate=growth,
         backwards=(spin < 0.0),
     )
-
-
-def margin_curve(wheel: Wheel, a: float, r: float, g: float, speeds: Any) -> np.ndarray:
-    """Squared lean-oscillation frequency nu^2 (rad^2/s^2) against speed, for plots.
-
-    Parameters
-    ----------
-    wheel : Wheel
-    a, r : float — m, rim and tyre radius
-    g : float — m/s^2
-    speeds : (N,) array_like — m/s (sign ignored)
-
-    Returns
-    -------
-    (N,) ndarray — nu^2 at each speed; > 0 stable (oscillation at sqrt(nu^2)),
-    < 0 unstable (growth at sqrt(-nu^2)). Zero at +-v_c. Sheet §3.2.
-    """
-    st = straight(wheel, a, r, g)
-    v = np.asarray(speeds, dtype=float)
-    return np.asarray(st.nu2(v / a), dtype=float).reshape(v.shape)
 
 
 def nu2_curve(st: StraightRolling, speeds: Any) -> np.ndarray:
@@ -425,19 +313,10 @@ def rollcheck(
     circle_radius: float | None = None,
     band: tuple[float, float] | None = None,
 ) -> RollCheck:
-    """Assemble a :class:`RollCheck`.
-
-    - always: :func:`straight` (or :func:`band_rolling` for a ``band`` (c1, c2), m: then
-      ``r`` must be 0);
-    - ``speed`` and/or ``spin``: :func:`at_speed` (straight rolling at that speed);
-    - ``lean_rad`` and ``circle_radius``: :func:`circle`;
-    - ``circle_radius`` and a speed, no lean: :func:`lean_for`;
-    - ``lean_rad`` and a speed, no circle radius: :func:`radius_for`;
-    - ``lean_rad`` or ``circle_radius`` alone: :class:`rbcli.errors.ParamError`.
-    A circle with a rounded rim (r > 0) raises a ParamError (knife edge only), as does a
-    circle on a band (naming ``lean`` or ``circle``). Errors of the circle name the
-    parameters given (``lean``, ``circle``, ``speed``, ``spin``).
-    """
+    """Assemble a :class:`RollCheck`: :func:`straight` (or :func:`band_rolling` for a ``band``,
+    r = 0); with a speed or spin :func:`at_speed`; with lean and circle :func:`circle`, circle
+    and speed :func:`lean_for`, lean and speed :func:`radius_for`. A lean or circle alone, or
+    a circle on a rounded rim or a band, is a ParamError naming the parameters given."""
     st = straight(wheel, a, r, g) if band is None else band_rolling(wheel, a, band[0], band[1], g)
     if band is not None and (lean_rad is not None or circle_radius is not None):
         raise blame(("lean",) if lean_rad is not None else ("circle",),
@@ -474,22 +353,10 @@ def rollcheck(
 
 @dataclass(frozen=True)
 class Curves:
-    """The arrays of the ``rollcheck`` figure (:func:`curves`), ready to draw.
-
-    Attributes
-    ----------
-    speeds : (N,) ndarray — m/s, speed of the centre from 0 to ``max(2.5 v_c, 1.25 |v|)``
-    nu2 : (N,) ndarray — rad^2/s^2, squared lean frequency of straight rolling at each speed
-    lean_frequency : (N,) ndarray — rad/s, sqrt(nu2) where nu2 > 0, else 0
-    growth_rate : (N,) ndarray — 1/s, sqrt(-nu2) where nu2 < 0, else 0
-    critical_speed : float — m/s, v_c
-    circle_radii : (M,) ndarray or None — m, R_G from 0 to ``max(10 a, 2 R_G asked)``
-        (only with a circle)
-    circle_leans_deg : (K,) ndarray or None — degrees, 0.25 to 85
-    circle_kappa : (K, M) ndarray or None — N m, lean stiffness of each steady circle
-        (> 0 stable)
-    circle_speed : (K, M) ndarray or None — m/s, speed of the centre Omega R_G on each
-    """
+    """The arrays of the ``rollcheck`` figure (:func:`curves`): ``speeds`` (m/s, 0 to
+    ``max(2.5 v_c, 1.25 |v|)``), ``nu2``, ``lean_frequency``, ``growth_rate`` at each,
+    ``critical_speed``; with a circle ``circle_radii`` (m), ``circle_leans_deg`` (0.25 to 85),
+    ``circle_kappa`` (N m) and ``circle_speed`` (m/s) on that grid."""
 
     speeds: np.ndarray
     nu2: np.ndarray
@@ -503,7 +370,7 @@ class Curves:
 
 
 def curves(check: RollCheck, n_speeds: int = 501, n_leans: int = 200, n_radii: int = 220) -> Curves:
-    """The figure's arrays for a :class:`RollCheck`: nu^2 against speed (:func:`margin_curve`)
+    """The figure's arrays for a :class:`RollCheck`: nu^2 against speed
     and, when a circle was asked for, kappa and the speed of the centre on a (lean, circle
     radius) grid (:func:`stability_map`, sheet §3.3)."""
     st = check.straight

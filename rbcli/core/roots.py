@@ -17,25 +17,9 @@ from typing import Callable
 
 def brentq(f: Callable[[float], float], xa: float, xb: float, *, xtol: float = 2e-12,
            rtol: float = 8.881784197001252e-16, maxiter: int = 100) -> float:
-    """A root of ``f`` in [xa, xb], where f(xa) and f(xb) have opposite signs.
-
-    Parameters
-    ----------
-    f : callable float -> float
-    xa, xb : float — the bracket
-    xtol, rtol : float — absolute and relative tolerance: stops when the bracket's half-width
-        is below (xtol + rtol |x|) / 2
-    maxiter : int — iterations before giving up
-
-    Returns
-    -------
-    float — the root (the end point whose |f| is smaller when converged)
-
-    Raises
-    ------
-    ValueError — f(xa) and f(xb) have the same sign
-    RuntimeError — not converged in ``maxiter`` iterations
-    """
+    """A root of ``f`` in [xa, xb] (f changes sign there), by Brent's method, to a bracket
+    half-width below (xtol + rtol |x|) / 2: the end point whose |f| is smaller. ValueError
+    when f(xa) and f(xb) have the same sign; RuntimeError after ``maxiter`` iterations."""
     xpre, xcur = float(xa), float(xb)
     xblk = fblk = spre = scur = 0.0
     fpre = float(f(xpre))

@@ -1,26 +1,11 @@
 """Rotation matrices from the ways a user can write an orientation.
 
-Convention
-----------
-A rotation matrix ``R`` maps a part's LOCAL coordinates to the BODY frame::
-
-    x_body = at + R @ x_local
-
-so the columns of ``R`` are the part's local x, y and z axes written in the body frame.
-Every constructor here returns a (3, 3) float ndarray that is a proper rotation
-(det = +1, orthonormal to round-off, ~1e-15) and raises :class:`ValueError` with a
-lower-case message for input that cannot describe one.
-
-The second half is the one quaternion and axis-angle kit of rbcli (free motion's attitude,
-the principal frame's axis and angle, ``precess --at``): quaternions are ``[w, x, y, z]``
-(scalar first, Hamilton product, ``R(q) v = q v q*``), arrays of shape (..., 4), and the
-canonical sign is ``w >= 0``.
-
-The module uses numpy only: ``scipy.spatial.transform`` costs ~270 ms of start-up
-(see FACTS.md), and the few formulas needed are short. scipy's ``Rotation`` is the
-test oracle: :func:`euler` agrees with ``Rotation.from_euler(seq, angles).as_matrix()``
-for every sequence scipy accepts.
-"""
+A rotation ``R`` maps a part's LOCAL coordinates to the BODY frame, ``x_body = at + R @
+x_local`` (its columns are the local axes in the body frame). Every constructor returns a
+proper (3, 3) rotation (orthonormal to ~1e-15) or raises ValueError with a lower-case
+message. Quaternions are ``[w, x, y, z]`` (scalar first, Hamilton, ``R(q) v = q v q*``),
+shape (..., 4), canonical sign ``w >= 0``. numpy only (scipy's ``Rotation`` costs ~270 ms of
+start-up); scipy is the test oracle."""
 
 from __future__ import annotations
 
@@ -45,7 +30,6 @@ __all__ = [
     "nearest_rotation_rows",
     "surely_rotation",
     "from_specs",
-    "rotate_tensor",
     "quat_multiply",
     "quat_conjugate",
     "quat_about_axis",
@@ -72,47 +56,17 @@ def _vector(v: object, n: int, what: str, message: str | None = None) -> np.ndar
 
 
 def identity() -> np.ndarray:
-    """The identity rotation.
-
-    Returns
-    -------
-    (3, 3) ndarray
-    """
+    """The identity rotation, (3, 3)."""
     return np.eye(3)
 
 
 def axis_to_z(direction: Sequence[float] | np.ndarray) -> np.ndarray:
-    """The rotation that turns local +z onto the direction ``direction``.
+    """The rotation that turns local +z onto ``direction`` (a part's ``axis: [x, y, z]``).
 
-    This is what a part's ``axis: [x, y, z]`` means: the part's symmetry axis (local z)
-    is pointed along ``direction`` in the body frame.
-
-    Parameters
-    ----------
-    direction : (3,) array_like — any non-zero length (only the direction matters)
-
-    Returns
-    -------
-    (3, 3) ndarray
-        ``R`` with ``R @ [0, 0, 1] == direction / |direction|``.
-
-    Raises
-    ------
-    ValueError
-        ``"axis must be a non-zero vector"`` for a zero or non-finite vector.
-
-    Notes
-    -----
-    The choice of the rotation about the new axis is fixed so that the result is
-    deterministic: it is the *minimal* rotation, about the axis ``n = e_z x d / |e_z x d|``
-    by the angle between ``e_z`` and ``d``, by Rodrigues' formula
-    ``R = cos θ I + sin θ [n]x + (1 − cos θ) n nᵀ`` with ``cos θ = d_z`` and
-    ``sin θ = |e_z x d| = hypot(d_x, d_y)``. Working with the unit axis ``n`` (rather
-    than ``I + [v]x + [v]x²/(1 + c)``) keeps the result orthonormal to round-off even
-    for ``d`` within 1e-12 of −z. For ``d`` exactly along +z this is the identity; for
-    ``d`` exactly along −z (where the minimal axis is undefined) it is the half turn
-    about +x, ``diag(1, −1, −1)``.
-    """
+    The minimal rotation, about ``n = e_z x d / |e_z x d|`` by the angle between them (Rodrigues,
+    with ``cos θ = d_z``, ``sin θ = hypot(d_x, d_y)``: orthonormal even for ``d`` within 1e-12
+    of −z); the identity along +z, the half turn about +x, ``diag(1, −1, −1)``, along −z.
+    ValueError for a zero or non-finite vector."""
     v = _vector(direction, 3, "axis", "axis must be a non-zero vector")
     if not v.any():
         raise ValueError("axis must be a non-zero vector")
@@ -120,28 +74,10 @@ def axis_to_z(direction: Sequence[float] | np.ndarray) -> np.ndarray:
 
 
 def axis_angle(axis: Sequence[float] | np.ndarray, angle_rad: float) -> np.ndarray:
-    """The rotation by ``angle_rad`` about ``axis`` (right-hand rule).
+    """The rotation by ``angle_rad`` about ``axis`` (right-hand rule; any non-zero length).
 
-    Parameters
-    ----------
-    axis : (3,) array_like — any non-zero length
-    angle_rad : float — rad; positive turns counter-clockwise looking down the axis
-
-    Returns
-    -------
-    (3, 3) ndarray
-
-    Raises
-    ------
-    ValueError
-        For a zero or non-finite axis, or a non-finite angle.
-
-    Notes
-    -----
-    Rodrigues' formula ``R = cos θ I + sin θ [n]x + (1 − cos θ) n nᵀ`` with
-    ``n = axis / |axis|``; ``1 − cos θ`` is evaluated as ``2 sin²(θ/2)`` to avoid
-    cancellation at small angles. Equal to scipy's ``Rotation.from_rotvec(θ n)``.
-    """
+    Rodrigues' formula with ``1 − cos θ = 2 sin²(θ/2)`` (no cancellation at small angles); equal
+    to scipy's ``Rotation.from_rotvec(θ n)``. ValueError for a zero or non-finite axis or angle."""
     a = _vector(axis, 3, "axis", "axis must be a non-zero vector")
     if not a.any():
         raise ValueError("axis must be a non-zero vector")
@@ -184,36 +120,19 @@ def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndar
 
     Parameters
     ----------
-    angles_rad : float or (len(seq),) array_like — rad, one angle per letter of ``seq``
-        (a bare number is allowed for a one-letter sequence)
-    seq : str
-        1 to 3 letters from ``xyz`` (extrinsic: every turn is about the fixed body
-        axes) or from ``XYZ`` (intrinsic: every turn is about the part's axes as already
-        turned); no mixing of cases; consecutive letters must differ. Covers proper
-        Euler sequences (``ZXZ``, ``zyz``, ...) and Tait–Bryan ones (``ZYX``, ``xyz``, ...).
+    angles_rad : float or (len(seq),) array_like — rad, one per letter
+    seq : str — 1 to 3 letters from ``xyz`` (extrinsic, fixed axes) or ``XYZ`` (intrinsic,
+        turned axes), consecutive letters different
 
     Returns
     -------
-    (3, 3) ndarray
-        Identical (to round-off) to
-        ``scipy.spatial.transform.Rotation.from_euler(seq, angles_rad).as_matrix()``.
-
-    Raises
-    ------
-    ValueError
-        For an invalid sequence (the message says what is allowed), a wrong number of
-        angles, or a non-finite angle.
+    (3, 3) ndarray — ``Rotation.from_euler(seq, angles_rad).as_matrix()`` to round-off
 
     Notes
     -----
-    With elementary rotations ``R_a(θ)`` about the coordinate axis ``a``:
-    intrinsic ``"ABC"`` is ``R_A(α) R_B(β) R_C(γ)`` (each later turn about the already
-    turned axes, so it multiplies on the right); extrinsic ``"abc"`` is
-    ``R_c(γ) R_b(β) R_a(α)`` (each later turn about the fixed axes, multiplying on the
-    left). The two are the same rotation when the letters and angles are reversed — the
-    standard equivalence (Shuster, "A survey of attitude representations", 1993, §2).
-    The sequence rules are scipy's.
-    """
+    Intrinsic ``"ABC"`` is ``R_A(α) R_B(β) R_C(γ)``, extrinsic ``"abc"`` ``R_c(γ) R_b(β) R_a(α)``
+    (Shuster, "A survey of attitude representations", 1993, §2). ValueError for an invalid
+    sequence, a wrong number of angles or a non-finite angle."""
     euler_intrinsic(seq)
     try:
         a = np.asarray(angles_rad, dtype=float)
@@ -232,31 +151,10 @@ def euler(angles_rad: float | Sequence[float] | np.ndarray, seq: str) -> np.ndar
 
 
 def quaternion(q_wxyz: Sequence[float] | np.ndarray) -> np.ndarray:
-    """The rotation of a quaternion written scalar-first, ``[w, x, y, z]``.
-
-    Parameters
-    ----------
-    q_wxyz : (4,) array_like — ``w + x i + y j + z k``; any non-zero norm
-
-    Returns
-    -------
-    (3, 3) ndarray
-
-    Raises
-    ------
-    ValueError
-        For a zero, non-finite or wrongly sized quaternion.
-
-    Notes
-    -----
-    The quaternion is always divided by its norm first, so a quaternion that is not
-    quite unit (e.g. typed with 6 digits) — or not unit at all — is accepted as the
-    rotation it points to; ``q`` and ``−q`` give the same matrix. Beware that scipy's
-    ``Rotation.from_quat`` is scalar-LAST (``[x, y, z, w]``) by default; this one is
-    scalar-first, as in the body file. The matrix is the standard
-    ``R = (w² − v·v) I + 2 v vᵀ + 2 w [v]x`` with ``v = (x, y, z)``, written out in
-    components in :func:`quaternion_rows`.
-    """
+    """The rotation of a quaternion written scalar-first, ``[w, x, y, z]`` (any non-zero norm:
+    it is normalised first; ``q`` and ``−q`` are the same rotation; scipy's ``from_quat`` is
+    scalar-LAST). ``R = (w² − v·v) I + 2 v vᵀ + 2 w [v]x``. ValueError for a zero, non-finite or
+    wrongly sized quaternion."""
     q = _vector(q_wxyz, 4, "quaternion")
     if not q.any():
         raise ValueError("quaternion must be non-zero")
@@ -270,35 +168,13 @@ def _short(x: float) -> str:
 
 
 def from_matrix(m: Sequence[Sequence[float]] | np.ndarray, tol: float = 1e-6) -> np.ndarray:
-    """Accept a user's 3x3 matrix as a rotation, and return the nearest exact one.
+    """Accept a user's 3x3 matrix as a rotation and return the nearest exact one.
 
-    Parameters
-    ----------
-    m : (3, 3) array_like — the matrix as written (columns = local axes in the body frame)
-    tol : float — largest accepted ``max |MᵀM − I|``; the default 1e-6 admits a matrix
-        typed with about 6-7 significant figures
-
-    Returns
-    -------
-    (3, 3) ndarray
-        The proper rotation nearest to ``m`` in the Frobenius norm, orthonormal to
-        round-off, so the user's rounding does not leak into later results.
-
-    Raises
-    ------
-    ValueError
-        ``"rotation matrix is not orthonormal (|MᵀM − I| = 3.2e-2)"`` if the columns are
-        not orthonormal within ``tol``; ``"rotation matrix is a reflection (det = -1),
-        not a rotation"`` if it is orthonormal but has a negative determinant; also for
-        a wrong shape or non-finite entries.
-
-    Notes
-    -----
-    Nearest rotation by the polar decomposition: with the SVD ``M = U Σ Vᵀ`` the
-    orthogonal polar factor ``U Vᵀ`` minimises ``|M − R|_F`` over orthogonal ``R``
-    (Higham, "Computing the polar decomposition", 1986). For an accepted ``M``
-    (``det M > 0`` and every singular value within ~tol of 1) it is a proper rotation.
-    """
+    ``tol`` is the largest accepted ``max |MᵀM − I|`` (1e-6: typed with 6-7 figures). The result
+    is the orthogonal polar factor ``U Vᵀ`` of the SVD, nearest in the Frobenius norm (Higham
+    1986), so the user's rounding does not leak into later results. ValueError: "rotation matrix
+    is not orthonormal (|MᵀM − I| = 3.2e-2)", "... is a reflection (det = -1), not a rotation",
+    a wrong shape or non-finite entries."""
     try:
         a = np.asarray(m, dtype=float)
     except (TypeError, ValueError):
@@ -319,36 +195,6 @@ def from_matrix(m: Sequence[Sequence[float]] | np.ndarray, tol: float = 1e-6) ->
     if np.linalg.det(r) < 0:  # cannot happen for err <= tol < 1 and det > 0; be safe
         raise ValueError(f"rotation matrix is a reflection (det = {det:.3g}), not a rotation")
     return r
-
-
-def rotate_tensor(R: np.ndarray, I: np.ndarray) -> np.ndarray:  # noqa: E741, N803
-    """A tensor given in a part's local axes, expressed in the body axes: ``R I Rᵀ``.
-
-    Parameters
-    ----------
-    R : (3, 3) ndarray — local-to-body rotation (see the module convention)
-    I : (3, 3) ndarray — e.g. an inertia tensor about some point, local axes, kg·m²
-
-    Returns
-    -------
-    (3, 3) ndarray
-        ``R @ I @ R.T``, the same tensor in body axes (about the same point). If ``I``
-        is exactly symmetric the result is made exactly symmetric too (the average with
-        its transpose, a change of round-off size only).
-
-    Raises
-    ------
-    ValueError
-        For arrays that are not 3x3.
-    """
-    r = np.asarray(R, dtype=float)
-    t = np.asarray(I, dtype=float)
-    if r.shape != (3, 3) or t.shape != (3, 3):
-        raise ValueError(f"rotate_tensor needs two 3x3 arrays, got {r.shape} and {t.shape}")
-    out = r @ t @ r.T
-    if np.array_equal(t, t.T):
-        out = 0.5 * (out + out.T)
-    return out
 
 
 # ----------------------------------------------------------------------------------------

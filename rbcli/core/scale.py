@@ -1,15 +1,9 @@
 """How big a body is: the yardstick of the plausibility warnings (issue 13).
 
-A number typed in the wrong unit (``--radius 180`` meant in mm, read in m) is usually
-off by a factor of 25 to 1000, so a value far outside the body's own size is worth a
-warning. The size used is the body's bounding box built from its parts: each part
-counts as a ball around its centre of mass whose radius is the part's outer radius (a
-round part) or the half-diagonal of its equivalent uniform box, ``sqrt(1.5 tr(J) / m)``
-(a box of sides a, b, c has ``tr(J) = m (a² + b² + c²) / 6``; its half-diagonal is
-``sqrt(a² + b² + c²) / 2``). Holes are left out (they lie inside the material).
-
-Only numpy.
-"""
+A number typed in the wrong unit is off by 25 to 1000, so a value far outside the body's
+size is worth a warning. The size is the bounding box of the parts, each a ball about its
+com of its outer radius (a round part) or its equivalent box's half-diagonal
+``sqrt(1.5 tr(J) / m)``; holes are left out."""
 
 from __future__ import annotations
 
@@ -50,11 +44,6 @@ class BodyScale:
         smallest size used is 1e-300 m, and nothing is then 'far' only by comparison)."""
         return max(float(np.max(self.high - self.low)), 1e-300)
 
-    @property
-    def half_diagonal(self) -> float:
-        """m, half the diagonal of the box: no point of the body is farther from its centre."""
-        return 0.5 * float(np.linalg.norm(self.high - self.low))
-
     def far(self, point: Sequence[float]) -> float | None:
         """The distance (m) of ``point`` from the box's centre when it is more than
         :data:`FAR` sizes, else None."""
@@ -82,48 +71,13 @@ def body_scale(parts: Sequence[Any]) -> BodyScale:
 
 
 def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[float]) -> float:
-    """The largest distance (m) of the body's material from a spin axis line.
+    """The largest distance (m) of the body's material (holes left out) from the line along
+    ``axis`` through ``through`` (body frame): the fastest point moves at |omega| times it.
 
-    Parameters
-    ----------
-    parts : sequence of :class:`rbcli.body.partmodel.Part` — holes (``subtract``) are left out: they
-        lie inside the material
-    axis : (3,) array_like — the line's direction, body frame (need not be unit)
-    through : (3,) array_like — m, a point of the line, body frame
-
-    Returns
-    -------
-    float — m; a point of the body farthest from the line moves at |omega| times this when
-    the body turns about it.
-
-    Notes
-    -----
-    The distance from a line is a convex function of the point, so over a part it is
-    largest at an extreme point of the part's convex hull, which lies on the part. Each part
-    is read from its placement (``part.outline``: kind, dimensions, local origin ``at`` and
-    axes ``R``; local frames as ``rbcli shapes`` states them) and measured exactly:
-
-    - point, rod, box, plate, triangle: the largest distance of their corners;
-    - ring, disk, cylinder (its two end circles), cone (base circle and apex), torus (its
-      centre circle plus the tube radius: a torus is that circle swept by a ball): a circle
-      c + r (cos t u1 + sin t u2) projected on the plane across the line is an ellipse
-      y(t) = p + L (cos t, sin t); |y(t)|² is a trigonometric polynomial of degree 2, whose
-      stationary points are the roots of a quartic in z = exp(i t) (all evaluated);
-    - sphere: the centre's distance plus the radius; hemisphere: that when the direction
-      away from the line points into the dome, else the rim circle;
-    - ellipsoid: its projection is the ellipse p + U S (cos t, sin t) (M = E R diag(a, b, c)
-      = U S Vᵀ), measured as a circle's; a ``given`` part (measured mass properties) as its
-      equivalent uniform ellipsoid (the outline's semi-axes): an estimate, its real extent
-      being unknown;
-    - mesh: the largest distance of the outline's vertices (the drawing's copy, decimated
-      by vertex clustering: its vertices are means of the file's, so this is within one
-      clustering cell below the file's own);
-    - a part without an outline: its centre of mass plus the ball of :func:`body_scale`
-      (an estimate).
-
-    Parts whose bounding ball (centre ``at``, radius the shape's local circumradius) cannot
-    beat the largest reach found so far are skipped, farthest balls first.
-    """
+    The distance is convex, so it is largest at an extreme point of each part's outline:
+    corners; circles (a quartic in exp(i t)); a sphere's centre plus radius; an ellipsoid's
+    projected ellipse (a ``given`` part's equivalent one); a mesh outline's vertices; else the
+    com plus the ball of :func:`body_scale`."""
     n = np.asarray(axis, dtype=float).reshape(3)
     n = n / np.linalg.norm(n)
     P = np.asarray(through, dtype=float).reshape(3)

@@ -1,23 +1,11 @@
 """Geometry of the primitive shapes: measure, centre of mass and inertia per unit mass.
 
-Every shape lives in its own LOCAL frame (symmetry axis = local z). :func:`geometry`
-returns, in that frame and in SI units,
-
-- the *measure* a density multiplies (volume, area, length, or 1 for a point),
-- the centre of mass (the local origin is the centroid unless the shape says otherwise:
-  ``hemisphere`` — centre of the flat face; ``cone`` — centre of the base;
-  ``triangle`` — the frame the vertices are given in),
-- the inertia tensor about the centre of mass, local axes, per unit mass (m²), in the
-  *tensor* convention: diagonal ``∫(y² + z²) dm / m``, off-diagonal ``−∫x y dm / m``.
-
-The mass itself (``mass`` or ``density × measure``) and the placement (``at``,
-``axis``, ``rotate``) are the io layer's business, as are the shapes ``mesh``,
-``given`` and ``include``. Parameters arrive as SI floats (vectors as sequences).
-
-Formulas are the standard ones of any table of moments of inertia (e.g. Meriam &
-Kraige, *Engineering Mechanics: Dynamics*, Appendix B; Beer & Johnston, *Vector
-Mechanics for Engineers*, inside back cover); the catalogue :data:`SHAPES` prints them.
-"""
+Each shape lives in its LOCAL frame (symmetry axis local z). :func:`geometry` gives, in SI,
+the *measure* a density multiplies (volume, area, length or 1), the com (the local origin
+is the centroid but for ``hemisphere`` and ``cone``, the centre of the flat face or base,
+and ``triangle``) and the inertia about the com per unit mass (m², tensor convention). Mass
+and placement are the body's business. Formulas: Meriam & Kraige, *Engineering Mechanics:
+Dynamics*, Appendix B; the catalogue :data:`SHAPES` prints them."""
 
 from __future__ import annotations
 
@@ -71,19 +59,9 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class ShapeGeometry:
-    """What a primitive shape contributes, per unit of mass, in its local frame.
-
-    Attributes
-    ----------
-    measure : float — what a density multiplies: m³ (volume), m² (area), m (length),
-        or 1.0 (point)
-    measure_kind : str — ``"volume"``, ``"area"``, ``"length"`` or ``"point"``
-    com : (3,) ndarray — centre of mass in the local frame, m
-    unit_inertia : (3, 3) ndarray — inertia tensor about the com, local axes, per unit
-        mass, m² (tensor convention: off-diagonals ``−∫x y dm / m``); symmetric
-
-    The arrays are read-only.
-    """
+    """What a primitive shape contributes in its local frame (read-only): ``measure`` (m³, m²,
+    m or 1) and its ``measure_kind``, ``com`` (m) and ``unit_inertia`` (m², about the com per
+    unit mass, tensor convention)."""
 
     measure: float
     measure_kind: str
@@ -117,20 +95,10 @@ DIAMETERS = {"diameter": "radius", "inner_diameter": "inner_radius"}
 
 @dataclass(frozen=True)
 class RimRule:
-    """How a round shape touches a level floor when it rolls on its outer rim (``rollcheck``).
-
-    Attributes
-    ----------
-    kind : str — ``"edge"`` (a circle: a knife edge), ``"torus"`` (a circle swept by a ball:
-        a rounded tyre), ``"sphere"`` or ``"band"`` (a flat band: a cylinder on its side)
-    plane_from_com : callable ``(outer radius m, measure) -> m`` — where the rim circle (a
-        band's middle) lies along the local z axis from the part's centre of mass
-    tube_radius : callable ``(params) -> m`` — the rim's tube (tyre) radius r: 0 for an
-        edge or a band, the tube's for a torus, the radius for a sphere
-    width : callable ``(params) -> m`` — a band's width along local z (0 for the others)
-
-    ``params`` are the shape's checked parameters in SI (a part's ``outline.dims``).
-    """
+    """How a round shape touches a level floor when it rolls on its outer rim: ``kind``
+    (``"edge"``, ``"torus"``, ``"sphere"``, ``"band"``), ``plane_from_com(outer radius,
+    measure)`` (m, the rim's plane along local z from the com), ``tube_radius(params)`` and
+    ``width(params)`` (m; ``params`` the checked SI parameters)."""
 
     kind: str
     plane_from_com: Callable[[float, float | None], float]
@@ -144,28 +112,20 @@ def _in_plane(radius: float, measure: float | None) -> float:
 
 @dataclass(frozen=True)
 class ShapeInfo:
-    """One entry of the shape catalogue (for ``rbcli shapes`` and for validation).
+    """One entry of the shape catalogue (``rbcli shapes``, validation, the schema, the rim search).
 
     Attributes
     ----------
-    name : str — the ``shape:`` value
-    summary : str — one line
+    name, summary : str — the ``shape:`` value, one line
     required, optional : tuple of str — parameter names
-    measure_kind : str — what a density multiplies; for shapes where an option changes
-        it (``plate`` with ``thickness``, ``shell: true``) the default case
-    density_keys : str — which density keys make sense, as human text
-    origin : str — where the local origin is
-    formulas : str — the formulas, plain text, m = mass
+    measure_kind : str — what a density multiplies (the default case)
+    density_keys, origin, formulas : str — as human text (m = mass)
     kinds : mapping — the :class:`Kind` of each parameter that is not a single length
-    round : str or None — ``"z"``: round about local z (a wheel's rim can be one);
-        ``"any"``: round about every axis through its centre (a sphere); None: not round
-    outer_radius : callable or None — ``outer_radius(params) -> m``, the largest distance of
-        the shape from its local z axis, for a round shape
-    rim : RimRule or None — how a round shape rolls on that outer rim
+    round : str or None — ``"z"`` round about local z, ``"any"`` about every axis
+    outer_radius : callable or None — ``outer_radius(params) -> m``, of a round shape
+    rim : RimRule or None — how a round shape rolls on that rim
 
-    A new shape is one entry in :data:`SHAPES` and its builder in ``_BUILDERS``: the loader,
-    the schema, the catalogue and ``rollcheck``'s rim search read these facts from here.
-    """
+    A new shape is one entry in :data:`SHAPES` and its builder in ``_BUILDERS``."""
 
     name: str
     summary: str
@@ -593,41 +553,13 @@ FORMULA_SHAPES = frozenset(_BUILDERS)
 def geometry(shape: str, **params: Any) -> ShapeGeometry:
     """Measure, centre of mass and inertia per unit mass of a primitive shape.
 
-    Parameters
-    ----------
-    shape : str — one of :data:`SHAPES` (``point``, ``rod``, ``ring``, ``disk``,
-        ``plate``, ``triangle``, ``box``, ``cylinder``, ``sphere``, ``hemisphere``,
-        ``cone``, ``ellipsoid``, ``torus``)
-    **params
-        The shape's parameters in SI units: lengths in m as floats, vectors as sequences
-        (``size``, ``semi_axes``: 2 or 3 positive lengths; ``vertices``: three 3-vectors),
-        ``shell`` a bool. An optional parameter passed as ``None`` counts as absent.
-
-    Returns
-    -------
-    ShapeGeometry
-        ``measure`` (m³, m², m or 1), ``measure_kind``, ``com`` (3,) m in the local
-        frame, ``unit_inertia`` (3, 3) m² about the com per unit mass.
-
-    Raises
-    ------
-    ShapeError
-        (a ValueError) naming the parameter at fault: a missing or unknown parameter,
-        a length that is not finite and > 0 (``inner_radius`` and ``thickness`` may be
-        0), ``inner_radius`` not less than ``radius``, a vector with the wrong number of
-        components, collinear triangle vertices, ``minor_radius > major_radius``,
-        ``inner_radius`` with ``shell: true``. An unknown shape, or one of the shapes
-        the io layer handles (``mesh``, ``given``, ``include``), raises a ShapeError
-        with ``param = "shape"``.
-
-    Notes
-    -----
-    The formulas are listed per shape in :data:`SHAPES` (``formulas``); sources: Meriam
-    & Kraige, *Engineering Mechanics: Dynamics*, Appendix B, Table D/4; the triangle by
-    exact integration of a quadratic over a simplex. The hollow sphere's ratio
-    ``(R⁵ − r⁵)/(R³ − r³)`` is evaluated as ``R²(1 + q + … + q⁴)/(1 + q + q²)`` with
-    ``q = r/R`` so it stays accurate as the wall gets thin.
-    """
+    ``shape`` one of :data:`SHAPES`; ``**params`` in SI (lengths in m, vectors as sequences,
+    ``shell`` a bool; None counts as absent). A ShapeGeometry: ``measure`` (m³, m², m or 1),
+    ``measure_kind``, ``com`` (3,) m local, ``unit_inertia`` (3, 3) m² about the com.
+    A ShapeError (a ValueError) names the parameter at fault (``param = "shape"`` for an
+    unknown shape or ``mesh``, ``given``, ``include``). The hollow sphere's
+    ``(R⁵ − r⁵)/(R³ − r³)`` is ``R²(1 + q + … + q⁴)/(1 + q + q²)``, ``q = r/R``, accurate for
+    thin walls."""
     raw = local_geometry(shape, params)
     inertia = raw.unit_inertia
     return ShapeGeometry(raw.measure, raw.measure_kind, raw.com,
@@ -635,34 +567,15 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
 
 
 def builder(shape: str) -> Callable[[dict[str, Any]], _Raw]:
-    """:func:`local_geometry` of the primitive ``shape`` for parameters already checked as it
-    checks them (none unknown, the required ones present and not None): the body loader's,
-    one call a part.
-
-    Raises
-    ------
-    KeyError
-        ``shape`` is not a primitive shape.
-    ShapeError
-        (from the function returned) as :func:`geometry` for impossible values.
-    """
+    """:func:`local_geometry` of the primitive ``shape`` for parameters already checked: the
+    body loader's, one call a part. KeyError for a shape that is not a primitive; ShapeError
+    as :func:`geometry`."""
     return _BUILDERS[shape]
 
 
 def local_geometry(shape: str, params: dict[str, Any]) -> _Raw:
-    """:func:`geometry` without its arrays, for the body loader (one call a part).
-
-    Returns
-    -------
-    (measure, measure_kind, com, unit_inertia)
-        As :class:`ShapeGeometry`, but ``com`` may be a 3-tuple and ``unit_inertia`` the
-        3-tuple of the diagonal of a diagonal tensor (else a (3, 3) array).
-
-    Raises
-    ------
-    ShapeError
-        As :func:`geometry`.
-    """
+    """:func:`geometry` without its arrays, for the body loader: (measure, measure_kind, com,
+    unit_inertia), ``com`` possibly a 3-tuple and ``unit_inertia`` a diagonal's 3-tuple."""
     if shape in IO_SHAPES:
         raise ShapeError(
             "shape",

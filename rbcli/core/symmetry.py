@@ -1,32 +1,17 @@
 """How nearly a body is symmetric about an axis: the test behind "nearly symmetric" bodies.
 
-Pure physics, SI units. A heavy top, a gyrocompass rotor and a rolling wheel are modelled
-as bodies of revolution about an axis: the two moments of inertia across the axis equal
-(I1 = I2), the axis a principal axis (no product of inertia couples it to the plane
-across it), and the centre of mass on the axis. A body from CAD is symmetric only to its
-modelling accuracy (a bolt hole, a key way, a balancing mark: 0.01 % is typical). This
-module measures the three departures, relative to the body's own scale, so a command can
-accept a body within a tolerance and answer for the *symmetrised* body (the two moments
-across replaced by their mean; the products coupling the axis dropped), say how far the
-answer may then be off, and refuse a body beyond it with the numbers.
+A heavy top, a gyrocompass rotor and a rolling wheel are modelled as bodies of revolution;
+a body from CAD is one only to its modelling accuracy. This module measures the departures,
+so a command can answer for the *symmetrised* body (the moments across averaged, the
+coupling dropped) within a tolerance, say how far that may be off, and refuse beyond it.
 
-Definitions (the inertia tensor J about the point, tensor convention, n the unit axis,
-(e1, e2) an orthonormal basis across it):
-
-- axial moment C = n·J·n; the moments across, I1 <= I2, are the eigenvalues of the 2×2
-  block [ei·J·ej]; their mean Ī = (I1 + I2)/2 is the symmetrised body's moment across;
-- ``relative`` = (I2 - I1)/Ī;
-- ``coupling`` = |[e1·J·n, e2·J·n]| (kg m²), ``coupling_relative`` = coupling/Ī; the
-  nearest principal axis is ``principal_tilt`` = ½ atan2(2 coupling, |C - Ī|) rad away;
-- ``com_offset`` = the distance of the centre of mass from the axis line (m) and
-  ``com_offset_relative`` = com_offset/size, with size the radius of gyration about the
-  com, sqrt(trace(J_com)/(2 m)), unless the caller gives a length scale (a rim radius).
-
-The body passes ``tolerance`` when all three relative numbers are at most it. Below
-:data:`ROUND_OFF` a body is symmetric to rounding and nothing is said. The moments,
-products and parallel-axis shift are the textbook ones (e.g. Goldstein, Poole and Safko,
-*Classical Mechanics*, 3rd ed., §5.3 and §5.4).
-"""
+With J about the point (tensor convention), n the unit axis, (e1, e2) across it:
+C = n·J·n; I1 <= I2 the eigenvalues of [ei·J·ej], Ī their mean; ``relative`` = (I2 - I1)/Ī;
+``coupling`` = |[e1·J·n, e2·J·n]|, ``coupling_relative`` = coupling/Ī, ``principal_tilt`` =
+½ atan2(2 coupling, |C - Ī|); ``com_offset`` the com's distance from the axis,
+``com_offset_relative`` over the radius of gyration sqrt(trace(J_com)/(2 m)) or a given
+size. A body passes ``tolerance`` when all three are at most it; below :data:`ROUND_OFF`
+nothing is said (Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed., §5.3-5.4)."""
 
 from __future__ import annotations
 
@@ -58,25 +43,10 @@ def inertia_about(mass: float, com, inertia_com, point) -> np.ndarray:
 
 @dataclass(frozen=True)
 class AxialSymmetry:
-    """How symmetric a body is about an axis through a point (see the module docstring).
-
-    Attributes
-    ----------
-    axis : tuple[float, float, float] — the unit axis n, body frame
-    point : tuple[float, float, float] — m, the point the moments are about, body frame
-    inertia : tuple[tuple[float, ...], ...] — kg m², the full tensor J about the point
-    axial : float — kg m², C = n·J·n
-    transverse : tuple[float, float] — kg m², I1 <= I2, the moments across the axis
-    mean : float — kg m², (I1 + I2)/2, the symmetrised body's moment across
-    transverse_axes : tuple[tuple[float, float, float], tuple[float, float, float]] — the
-        unit directions (across n) of I1 and I2, body frame
-    relative : float — (I2 - I1)/mean
-    coupling : float — kg m², the products of inertia coupling n to the plane across it
-    coupling_relative : float — coupling/mean
-    com_offset : float — m, the centre of mass's distance from the axis line
-    com_offset_relative : float — com_offset/size
-    size : float — m, the length scale of com_offset_relative
-    """
+    """How symmetric a body is about an axis through a point (the module docstring's
+    quantities): ``axis`` n, ``point`` (m), ``inertia`` J about it, ``axial`` C, ``transverse``
+    (I1, I2), ``mean``, ``transverse_axes``, ``relative``, ``coupling``, ``coupling_relative``,
+    ``com_offset`` (m), ``com_offset_relative`` and its ``size`` (m)."""
 
     axis: tuple[float, float, float]
     point: tuple[float, float, float]
@@ -173,25 +143,9 @@ def across(n: np.ndarray) -> np.ndarray:
 def about_axis(mass: float, com, inertia_com, point, axis, *, size: float | None = None) -> AxialSymmetry:
     """Measure how symmetric a body is about the line through ``point`` along ``axis``.
 
-    Parameters
-    ----------
-    mass : float — kg, > 0
-    com : (3,) array_like — m, centre of mass, body frame
-    inertia_com : (3, 3) array_like — kg m², about the com (tensor convention)
-    point : (3,) array_like — m, the point the moments are taken about (a pivot, the com)
-    axis : (3,) array_like — the axis direction (need not be unit)
-    size : float, optional — m, the length scale of the com offset (default: the radius of
-        gyration about the com)
-
-    Returns
-    -------
-    AxialSymmetry
-
-    Raises
-    ------
-    ValueError
-        a zero or non-finite axis, non-finite inputs, or a moment across the axis of zero.
-    """
+    ``mass`` (kg), ``com`` (m), ``inertia_com`` (kg m², tensor), ``point`` (m), ``axis`` (any
+    length), ``size`` (m, default the radius of gyration): an :class:`AxialSymmetry`.
+    ValueError for a zero or non-finite axis or input, or a zero moment across the axis."""
     n = np.asarray(axis, dtype=float).reshape(3)
     nn = float(np.linalg.norm(n))
     if not (math.isfinite(nn) and nn > 0.0):

@@ -1,38 +1,22 @@
 """Heavy symmetric top on a fixed pivot: the exact closed form of its motion.
 
-Everything here is pure physics in SI units: no I/O, no printing. The model and its
-notation are Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed., §5.7 ("the heavy
-symmetrical top with one point fixed"); "sheet §n" in the comments names the sections of
-rbcli's physics notes that follow that text (the formulas are restated where they are used).
-The elliptic integrals are in Carlson's symmetric form, DLMF §19.25
-(https://dlmf.nist.gov/19.25). This module computes the constants of the motion
-(:func:`analyse`); a body is reduced to a top by :mod:`rbcli.core.topbody`, the motion is
-evaluated at any times by :mod:`rbcli.core.toppath`, checked against a numerical
-integration (``--verify``) by :mod:`rbcli.core.topverify`; the gyrocompass is
-:mod:`rbcli.core.gyrocompass`.
+Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed., §5.7; "sheet §n" names the
+sections of rbcli's physics notes; elliptic integrals in Carlson's form (DLMF §19.25).
+:func:`analyse` computes the constants; :mod:`rbcli.core.topbody` reduces a body to a top,
+:mod:`rbcli.core.toppath` evaluates the motion, :mod:`rbcli.core.topverify` checks it.
 
 Conventions
 -----------
-- ``theta`` is the tilt of the symmetry axis from the upward vertical, ``phi`` the
-  azimuth of the axis about the vertical (from the space x axis towards y), ``psi``
-  the spin angle. The attitude is ``R = Rz(phi) Ry(theta) Rz(psi)``, so the axis
-  (body z) points along ``(sin θ cos φ, sin θ sin φ, cos θ)`` and the angular velocity
-  is ``ω = φ' ẑ + θ' Rz(φ)ŷ + ψ' e3``.
-- ``spin`` S is the component of the angular velocity along the symmetry axis
-  (ω3 = ψ' + φ' cos θ), never the Euler-angle rate ψ'.
-- ``u = cos θ``. The turning points of the cubic are ``u1 <= u2 <= 1 < u3``; the axis
-  moves between ``θ1 = arccos u2`` (least tilt) and ``θ2 = arccos u1`` (greatest tilt).
+- ``theta`` is the tilt of the axis from the upward vertical, ``phi`` its azimuth (from
+  space x towards y), ``psi`` the spin angle: ``R = Rz(phi) Ry(theta) Rz(psi)``.
+- ``spin`` S is ω3 = ψ' + φ' cos θ, never ψ'.
+- ``u = cos θ``; the roots of the cubic are ``u1 <= u2 <= 1 < u3``; the axis moves between
+  ``θ1 = arccos u2`` and ``θ2 = arccos u1``.
 
-Numerics
---------
-The cubic ``f(u)`` is solved in the shifted variable ``x = u - u0`` whose coefficients
-come straight from the initial data (``f(u0) = sin²θ0 θ0'²``). Near steady precession
-the two lower roots are then as well conditioned as the data, so no separate "steady"
-branch is needed and nothing turns into NaN as the band closes (the elliptic formulas
-tend smoothly to m = 0). Incomplete and complete integrals of the first and third
-kinds are built from Carlson's ``elliprf``/``elliprj`` with the complementary
-quantities (1 - m, 1 - n, 1 - u) carried separately so that no digits are lost.
-"""
+The cubic is solved in ``x = u - u0`` (coefficients straight from the initial data), so
+near steady precession the lower roots are as well conditioned as the data and the
+elliptic formulas tend smoothly to m = 0; complementary quantities (1 - m, 1 - n, 1 - u)
+are carried separately."""
 
 from __future__ import annotations
 
@@ -66,18 +50,10 @@ class TopInputError(ParamError, ValueError):
 
 @dataclass(frozen=True)
 class FastTop:
-    """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top").
-
-    Attributes
-    ----------
-    nutation_frequency : float — rad/s, |a| = Is|S|/I
-    nutation_amplitude : float | None — rad, θ2 - θ1 ≈ (2 I m g l/(Is S)²) sin θ0; only
-        for release from rest (θ0' = φ0' = 0), else None
-    mean_precession_rate : float — rad/s, m g l/(Is S) = β/(2a)
-    nutation_frequency_rel_error, nutation_amplitude_rel_error,
-    mean_precession_rate_rel_error : float | None — (estimate - exact)/exact; None where
-        the exact value is zero or undefined
-    """
+    """Fast-top (a² ≫ β) estimates beside the exact values (sheet §2 "Fast top"):
+    ``nutation_frequency`` |a| (rad/s), ``nutation_amplitude`` (2 I m g l/(Is S)²) sin θ0 (rad,
+    released from rest only), ``mean_precession_rate`` β/(2a) (rad/s), and each one's
+    ``..._rel_error`` (estimate - exact)/exact (None where the exact value is 0 or undefined)."""
 
     nutation_frequency: float
     nutation_amplitude: float | None
@@ -100,24 +76,12 @@ class FastTop:
 
 @dataclass(frozen=True)
 class EllipticSolution:
-    """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t).
-
-    Attributes
-    ----------
-    m, m1 : float — elliptic parameter (u2-u1)/(u3-u1) and its complement 1 - m
-    lam : float — 1/s, λ = ½ sqrt(β (u3 - u1))
-    tau0 : float — the phase at t = 0, in [-K, K] (τ = 0 is the greatest tilt, u = u1)
-    am0 : float — rad, am(τ0 | m)
-    K : float — K(m)
-    band : float — u2 - u1
-    one_minus_u1, one_plus_u1, one_minus_u2 : float — 1 - u1, 1 + u1, 1 - u2
-    cp, cm : float — 1/s, (b - a)/(2(1 - u1)) and (b + a)/(2(1 + u1))
-    n_plus, n_plus1 : float — n+ = (u2-u1)/(1-u1) and 1 - n+
-    n_minus, n_minus1 : float — the characteristic -(u2-u1)/(1+u1) and 1 minus it
-    Pi_plus, Pi_minus : float — Π(n+|m), Π(n-|m) (with n- the negative characteristic)
-    top_jump, bottom_jump : float — ±1 when the axis passes exactly through the upward
-        (u2 = 1) or downward (u1 = -1) vertical, where φ jumps by ±π at each passage; else 0
-    """
+    """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t): ``m``, ``m1``
+    ((u2-u1)/(u3-u1), 1 - m), ``lam`` (1/s, ½ sqrt(β (u3 - u1))), ``tau0`` (in [-K, K]; τ = 0
+    at the greatest tilt), ``am0``, ``K``, ``band`` (u2 - u1), ``one_minus_u1``,
+    ``one_plus_u1``, ``one_minus_u2``, ``cp``, ``cm`` (1/s), ``n_plus``, ``n_minus`` and their
+    complements, ``Pi_plus``, ``Pi_minus`` (Π(n±|m)), and ``top_jump``, ``bottom_jump`` (±1
+    when the axis passes exactly through a pole: φ jumps by ±π there)."""
 
     m: float
     m1: float
@@ -148,36 +112,24 @@ class TopMotion:
     Attributes
     ----------
     params : TopParams — mass (kg), length l (m), I and Is (kg m², about the pivot)
-    spin : float — rad/s, S = ω3 (component of ω along the axis)
-    theta0 : float — rad, initial tilt from the upward vertical, in (0, π)
-    theta_dot0, phi_dot0 : float — rad/s, initial θ' and φ'
-    g : float — m/s²
-    a, b : float — 1/s, Goldstein's a = Is S/I and b = p_φ/I
-    alpha, beta : float — 1/s², Goldstein's α = 2E'/I and β = 2 m g l/I
-    u1, u2, u3 : float — roots of f(u), u1 <= u2 <= 1 < u3 (u = cos θ)
-    theta1, theta2 : float — rad, least and greatest tilt (arccos u2, arccos u1)
-    nutation_period : float | None — s, T_n = 2 K(m)/λ (None if infinite)
-    nutation_frequency : float | None — rad/s, 2π/T_n
-    precession_per_nutation, spin_per_nutation : float | None — rad, Δφ and Δψ per T_n
-    mean_precession_rate, mean_spin_rate : float | None — rad/s, <φ'> and <ψ'>
-    steady_precession_rates : tuple[float, ...] — rad/s, (slow, fast) at θ0; () when
-        |S| is below ``minimum_spin_for_steady``; (slow,) for a horizontal axis, where
-        the fast root is infinite
-    steady_nutation_frequencies : tuple[float, ...] — rad/s, small-nutation frequency
-        about each steady precession, same order
+    spin : float — rad/s, S = ω3
+    theta0, theta_dot0, phi_dot0, g — the start (rad, rad/s) and gravity (m/s²)
+    a, b, alpha, beta : float — Goldstein's a = Is S/I, b = p_φ/I (1/s), α = 2E'/I,
+        β = 2mgl/I (1/s²)
+    u1, u2, u3 : float — roots of f(u) (u = cos θ); theta1, theta2 : rad, least and greatest tilt
+    nutation_period, nutation_frequency : float or None — T_n = 2 K(m)/λ (s), 2π/T_n (rad/s)
+    precession_per_nutation, spin_per_nutation : float or None — rad, Δφ and Δψ per T_n
+    mean_precession_rate, mean_spin_rate : float or None — rad/s, <φ'> and <ψ'>
+    steady_precession_rates, steady_nutation_frequencies : tuple of float — rad/s, (slow, fast)
+        at θ0 and the small-nutation frequency about each (() below the minimum spin)
     minimum_spin_for_steady : float — rad/s, sqrt(4 I m g l cos θ0)/Is (0 for θ0 >= 90°)
-    horizontal_precession_rate : float — rad/s, m g l/(Is S)
-    critical_spin : float — rad/s, sleeping-top threshold S_c = sqrt(4 I m g l)/Is
-    sleeps : bool — |S| > S_c (a top started upright would stay up)
-    apex_u : float — the u at which φ' = 0, b/a
-    path : str — "waves" (φ' keeps its sign), "loops" (φ' reverses inside the band),
-        "cusps" (φ' = 0 at a turning point) or "steady" (θ stays at θ0: ``steady`` true)
-    steady : bool — θ1 = θ2 to round-off: u2 - u1 <= STEADY_ULPS · eps ·
-        (β sin²θ0 + 2|u0|(θ0'² + φ0'² sin²θ0) + 2|a φ0'| sin²θ0) / (|c2| + β(1 - u0)),
-        the band that round-off of the linear coefficient c1 alone would open
+    horizontal_precession_rate, critical_spin : float — rad/s, m g l/(Is S); sqrt(4 I m g l)/Is
+    sleeps : bool — |S| > S_c
+    apex_u : float — b/a, where φ' = 0
+    path : str — "waves", "loops", "cusps" or "steady"
+    steady : bool — θ1 = θ2 to round-off (the band round-off of c1 alone would open)
     fast_top : FastTop — the a² ≫ β estimates and their relative errors
-    elliptic : EllipticSolution — constants used by :func:`path_at`
-    """
+    elliptic : EllipticSolution — constants used by :func:`path_at`"""
 
     params: TopParams
     spin: float
@@ -474,9 +426,9 @@ def analyse(
     Parameters
     ----------
     params : TopParams — mass (kg), l (m), I and Is about the pivot (kg m²)
-    spin : float — rad/s, S = ω3, nonzero (either sign)
-    theta0 : float — rad, initial tilt of the axis from the upward vertical, in (0, π)
-    theta_dot0, phi_dot0 : float — rad/s, initial θ' and φ' (default 0: release from rest)
+    spin : float — rad/s, S = ω3, nonzero
+    theta0 : float — rad, initial tilt from the upward vertical, in (0, π)
+    theta_dot0, phi_dot0 : float — rad/s, initial θ' and φ' (default 0)
     g : float — m/s², > 0
 
     Returns
@@ -486,35 +438,21 @@ def analyse(
     Raises
     ------
     TopInputError
-        (a :class:`rbcli.errors.ParamError` and a ValueError) θ0 not in (0, π), g <= 0,
-        spin = 0 (that is a spherical pendulum, not a top), or a non-finite input; its
-        ``param`` is ``"theta"``, ``"g"``, ``"spin"``, ``"theta_dot"`` or ``"phi_dot"``.
+        (a ParamError) θ0 outside (0, π), g <= 0, spin 0 or a non-finite input.
 
     Notes
     -----
-    Sheet §2. a = Is S/I, β = 2 m g l/I, b = φ0' sin²θ0 + a u0,
-    α = θ0'² + φ0'² sin²θ0 + β u0; f(u) = (1-u²)(α-βu) - (b-au)². The roots are found
-    in x = u - u0: P(x) = βx³ + c2 x² + c1 x + c0 with c0 = sin²θ0 θ0'²,
-    c1 = -β sin²θ0 - 2u0(θ0'² + φ0'² sin²θ0) + 2a φ0' sin²θ0,
-    c2 = 2u0β - θ0'² - φ0'² sin²θ0 - a². For θ0' = 0 the root x = 0 is exact and the
-    other two come from the quadratic (cancellation-free pair); otherwise x1 and x2 are
-    bracketed by u = -1, u0, 1 and found by Brent's method to 4 ulp, and x3 by Vieta
-    plus Newton. Then m = (u2-u1)/(u3-u1), λ = ½ sqrt(β(u3-u1)), T_n = 2K(m)/λ,
-    <φ'> = [cp Π(n+|m) + cm Π(-n-|m)]/K and <ψ'> = S - a - [cp Π(n+|m) - cm Π(-n-|m)]/K
-    with cp = (b-a)/(2(1-u1)), cm = (b+a)/(2(1+u1)), n± = (u2-u1)/(1∓u1).
-    Steady rates: q = ½(Is S + sign(Is S) sqrt(Is²S² - 4 I m g l cos θ0)),
-    φ'_slow = m g l/q, φ'_fast = q/(I cos θ0); small nutation about each:
-    ω² = (a - 2φ' cos θ)² + φ'² sin²θ. Path (sheet §2 "Locus"): the apex point u' = b/a,
-    where φ' = 0, is compared with [u1, u2]: within CUSP_RTOL·(u2 - u1) of a turning
-    point → "cusps"; strictly inside → "loops"; outside → "waves". Steady precession
-    (``steady`` true) is "steady"; an apex at a pole (b = ±a, where φ' = ±a/(1 ± u) cannot
-    vanish) is "waves". The relative errors of the fast-top estimates are (estimate - exact)/exact.
-    Near a pole, 1 - u2 (1 + u1) is re-solved from f expanded about u = 1 (u = -1), since
-    it is ~(b - a)² and may be far below the spacing of floats near u = 1. If the axis
-    passes exactly through the vertical (b = a) or the bottom (b = -a), the azimuth of the
-    axis jumps by π at each passage and that is counted in φ(t) and <φ'> (sign of b ∓ a;
-    + when it is exactly zero).
-    """
+    Sheet §2. a = Is S/I, β = 2 m g l/I, b = φ0' sin²θ0 + a u0, α = θ0'² + φ0'² sin²θ0 + β u0;
+    f(u) = (1-u²)(α-βu) - (b-au)², solved in x = u - u0 (P(x) = βx³ + c2 x² + c1 x + c0,
+    c0 = sin²θ0 θ0'²): x = 0 is exact for θ0' = 0, else x1, x2 by Brent to 4 ulp, x3 by Vieta
+    and Newton. m = (u2-u1)/(u3-u1), λ = ½ sqrt(β(u3-u1)), T_n = 2K(m)/λ,
+    <φ'> = [cp Π(n+|m) + cm Π(-n-|m)]/K, <ψ'> = S - a - [cp Π(n+|m) - cm Π(-n-|m)]/K with
+    cp = (b-a)/(2(1-u1)), cm = (b+a)/(2(1+u1)), n± = (u2-u1)/(1∓u1). Steady rates:
+    q = ½(Is S + sign(Is S) sqrt(Is²S² - 4 I m g l cos θ0)), φ'_slow = m g l/q,
+    φ'_fast = q/(I cos θ0); small nutation ω² = (a - 2φ' cos θ)² + φ'² sin²θ. The path
+    compares b/a with [u1, u2] (within CUSP_RTOL: cusps; inside: loops; else waves). Near a
+    pole 1 - u2 is re-solved from f expanded about u = ±1; an axis through the pole (b = ±a)
+    adds the azimuth's jump of π to φ."""
     S, th0, thd, w, gg = _checked_start(spin, theta0, theta_dot0, phi_dot0, g)
     m_, l_, I, Is = params.mass, params.length, params.I, params.Is
     mgl = m_ * gg * l_

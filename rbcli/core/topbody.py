@@ -47,23 +47,10 @@ def _num(x: float) -> str:
 
 @dataclass(frozen=True)
 class TopParams:
-    """Mass properties of a symmetric top about its pivot.
-
-    Attributes
-    ----------
-    mass : float — kg
-    length : float — m, distance l from the pivot to the centre of mass
-    I : float — kg m^2, moment about the pivot across the symmetry axis (I_cm + m l²)
-    Is : float — kg m^2, moment about the symmetry axis
-    axis : tuple[float, float, float] | None — unit symmetry axis e3 in the body frame,
-        pointing from the pivot to the com (None when built from numbers)
-    pivot : tuple[float, float, float] | None — m, body frame
-    com : tuple[float, float, float] | None — m, body frame
-    asymmetry : AxialSymmetry | None — for a body accepted as nearly symmetric (departures
-        above rounding, within the tolerance): how far it departs, and its real inertia
-        tensor about the pivot; I is then the mean of the two moments across (None for a
-        body symmetric to rounding)
-    """
+    """Mass properties of a symmetric top about its pivot: ``mass`` (kg), ``length`` l from the
+    pivot to the com (m), ``I`` across the axis (I_cm + m l²) and ``Is`` about it (kg m^2);
+    with a body, ``axis`` e3 (pivot to com), ``pivot``, ``com`` (body frame) and ``asymmetry``
+    (a nearly symmetric body's departures and real tensor; I is then the mean across)."""
 
     mass: float
     length: float
@@ -101,14 +88,12 @@ def top_from_body(
     Parameters
     ----------
     mass : float — kg, > 0
-    com : (3,) array_like — m, centre of mass in the body frame
-    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com (tensor
-        convention: off-diagonals are -∫xy dm)
+    com : (3,) array_like — m, centre of mass, body frame
+    inertia_com : (3, 3) array_like — kg m^2, about the com (tensor convention)
     pivot : (3,) array_like — m, the fixed point, body frame
-    sym_rtol : float — relative tolerance for "symmetric about the pivot–com axis" (the
-        ``--symmetry-tol`` of :mod:`rbcli.core.symmetry`); a body within it but above
-        rounding is symmetrised (I the mean of the two moments across) and its departures
-        are kept in ``TopParams.asymmetry``
+    sym_rtol : float — tolerance of "symmetric about the pivot–com axis"
+        (:mod:`rbcli.core.symmetry`); within it, above rounding, the top is symmetrised and its
+        departures kept in ``TopParams.asymmetry``
 
     Returns
     -------
@@ -117,24 +102,16 @@ def top_from_body(
     Raises
     ------
     PivotAtCom
-        The pivot is at the com (to ``PIVOT_AT_COM_RTOL`` of the body's size): there is
-        no gravity torque; the motion is free precession (``rbcli precess``).
+        the pivot at the com (to ``PIVOT_AT_COM_RTOL``): free precession, not a top.
     rbcli.core.symmetry.Asymmetric
-        The two moments across the axis differ by more than ``sym_rtol`` (relative to
-        their mean), the axis is not a principal axis (its products of inertia with the
-        transverse plane exceed ``sym_rtol`` of the transverse moment), the moment
-        about the axis is zero (a pendulum).
+        not symmetric about the axis within ``sym_rtol``, or no moment about it (a pendulum).
     ValueError
-        an input is not finite, or the mass is not positive.
+        a non-finite input or a mass <= 0.
 
     Notes
     -----
-    The symmetry axis is e3 = (com - pivot)/l, l = |com - pivot| (SPEC §2 ``top``).
-    Parallel-axis theorem: I_pivot = I_com + m (l² E - d dᵀ), d = com - pivot.
-    Is = e3·I_pivot·e3 (= e3·I_com·e3); the moments across are the eigenvalues of the
-    2x2 block of I_pivot on a basis (e1, e2) of the plane normal to e3
-    (sheet §2 "Setup", §4b item 6).
-    """
+    e3 = (com - pivot)/l (SPEC §2 ``top``); I_pivot = I_com + m (l² E - d dᵀ); Is = e3·I·e3, the
+    moments across the eigenvalues of I_pivot's block across e3 (sheet §2 "Setup", §4b item 6)."""
     m = finite("mass", mass)
     if m <= 0.0:
         raise ValueError(f"the mass of a top must be positive, not {m}")

@@ -1,14 +1,9 @@
 """The heavy top's motion in time: its Euler angles and their rates at any times.
 
-:func:`path_at` and :func:`state_at` evaluate the exact closed form whose constants
-:func:`rbcli.core.top.analyse` computes (:class:`rbcli.core.top.EllipticSolution`): Jacobi
-elliptic functions for the tilt and incomplete elliptic integrals of the third kind for the
-precession and spin angles, so a time 10^6 periods ahead costs what the first period costs.
-The integrals are in Carlson's symmetric form, DLMF §19.25 (https://dlmf.nist.gov/19.25),
-with the complementary quantities (1 - m, 1 - n) given separately so that no digits are
-lost; :func:`complete_Pi` and :func:`carlson_F` serve the analysis too. Goldstein, Poole and
-Safko, *Classical Mechanics*, 3rd ed., §5.7; physics sheet ``dynamics.md`` §2 "Closed form".
-"""
+:func:`path_at` and :func:`state_at` evaluate the closed form of :func:`rbcli.core.top.analyse`
+(Jacobi functions for the tilt, Π in Carlson's form, DLMF §19.25, for the angles), so a time
+10^6 periods ahead costs what the first period costs (Goldstein, Poole and Safko §5.7;
+physics sheet ``dynamics.md`` §2)."""
 
 from __future__ import annotations
 
@@ -66,27 +61,12 @@ def complete_Pi(n: float, n1: float, m1: float) -> float:
 
 
 def path_at(motion: TopMotion, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The exact Euler angles of the top at times ``t``.
+    """The exact Euler angles (θ, φ, ψ) of the top at times ``t`` (s, any shape): θ from the
+    upward vertical, φ and ψ continuous from 0 at t = 0.
 
-    Parameters
-    ----------
-    motion : TopMotion
-    t : array_like — s, any shape (negative times are fine)
-
-    Returns
-    -------
-    theta, phi, psi : ndarray, shape of ``t`` — rad; θ is the tilt from the upward
-        vertical; φ and ψ are continuous (not wrapped) and start at 0 at t = 0.
-
-    Notes
-    -----
-    Sheet §2 "Closed form": u(t) = u1 + (u2-u1) sn²(τ|m), τ = λ t + τ0, and with
-    ∫dt/(1 - n sn²(λt)) = Π(n; am(λt)|m)/λ:
-    φ(t) = [cp ΔΠ(n+) + cm ΔΠ(n-)]/λ, ψ(t) = (S - a) t - [cp ΔΠ(n+) - cm ΔΠ(n-)]/λ,
-    where ΔΠ(n) = Π(n; am τ|m) - Π(n; am τ0|m). τ is reduced to τr in [-K, K] with
-    τ = τr + 2Kj, so am τ = am τr + jπ and Π(n; am τ) = Π(n; am τr) + 2j Π(n|m)
-    (quasi-periodicity).
-    """
+    u(t) = u1 + (u2-u1) sn²(τ|m), τ = λ t + τ0; φ(t) = [cp ΔΠ(n+) + cm ΔΠ(n-)]/λ,
+    ψ(t) = (S - a) t - [cp ΔΠ(n+) - cm ΔΠ(n-)]/λ, ΔΠ(n) = Π(n; am τ|m) - Π(n; am τ0|m), with
+    τ = τr + 2Kj and Π(n; am τ) = Π(n; am τr) + 2j Π(n|m) (sheet §2 "Closed form")."""
     theta, phi, psi, _sn, _cn = _path(motion, t)
     return theta, phi, psi
 
@@ -162,16 +142,9 @@ class TopState:
 
 
 def state_at(motion: TopMotion, t: np.ndarray) -> TopState:
-    """The exact Euler angles and their rates at times ``t`` (s, any shape).
-
-    Notes
-    -----
-    Angles from :func:`path_at`. With u = cos θ = u1 + (u2 - u1) sn²(τ|m), τ = λ t + τ0:
-    u' = 2 λ (u2 - u1) sn cn dn, θ' = -u'/sin θ, and from the two conserved momenta
-    (Goldstein §5.7) φ' = (b - a u)/(1 - u²), ψ' = S - φ' u. At an instant where the axis
-    is exactly vertical (only when it passes through a pole) φ' and θ' are not defined
-    (NaN there).
-    """
+    """The exact Euler angles and their rates at times ``t`` (s): u' = 2 λ (u2 - u1) sn cn dn,
+    θ' = -u'/sin θ, φ' = (b - a u)/(1 - u²), ψ' = S - φ' u (Goldstein §5.7); NaN where the axis
+    passes exactly through a pole."""
     e = motion.elliptic
     tt = np.asarray(t, dtype=float)
     theta, phi, psi, sn, cn = _path(motion, tt)

@@ -35,22 +35,15 @@ class VerifyResult:
 
     Attributes
     ----------
-    t_end : float — s, length of the integration (``periods`` nutation periods)
-    samples : int — number of comparison times
-    rtol : float — relative tolerance given to DOP853
-    max_axis_error : float — rad (chord), max |e3_closed - e3_numeric|; well conditioned
-        even where the axis passes near the vertical
-    max_theta_error, max_phi_error, max_psi_error : float — rad, largest differences of
-        the Euler angles (φ and ψ compared modulo 2π)
-    energy_drift : float — max |E - E0| / (T0 + m g l) along the numerical path
-    p_phi_drift, p_psi_drift : float — max relative drift of L·ẑ and L·e3 (the exact
-        invariants p_φ and p_ψ), relative to |L0|
-    theta_min, theta_max : float — rad, tilt range seen by the integrator (at the samples)
-    mean_precession_rate : float — rad/s, (φ(t_end) - φ(0))/t_end from the integrator
-    nfev : int — right-hand-side evaluations
-    axis_tolerance : float — rad, the largest axis difference that passes
-    energy_tolerance : float — the largest relative energy drift that passes
-    """
+    t_end, samples, rtol, nfev — s integrated (``periods`` nutation periods), comparison times,
+        DOP853's tolerance, right-hand-side evaluations
+    max_axis_error : float — rad (chord), max |e3_closed - e3_numeric|
+    max_theta_error, max_phi_error, max_psi_error : float — rad (φ, ψ modulo 2π)
+    energy_drift : float — max |E - E0| / (T0 + m g l)
+    p_phi_drift, p_psi_drift : float — max drift of L·ẑ and L·e3, relative to |L0|
+    theta_min, theta_max : float — rad, the tilt range the integrator saw
+    mean_precession_rate : float — rad/s, from the integrator
+    axis_tolerance, energy_tolerance : float — what passes"""
 
     t_end: float
     samples: int
@@ -110,18 +103,9 @@ def _what(motion: TopMotion, T: float) -> str:
 
 def integrate(rhs, y0: np.ndarray, T: float, ts: np.ndarray, *, rtol: float, atol: float,
               max_steps: int | None = None, what: str = "") -> tuple[np.ndarray, int]:
-    """DOP853 from t = 0 to ``T`` with at most ``max_steps`` steps: the state at the times
-    ``ts`` (increasing, within [0, T]; shape ``(len(ts), len(y0))``) and the number of
-    right-hand-side evaluations.
-
-    The same steps and dense output as ``scipy.integrate.solve_ivp(..., method="DOP853",
-    t_eval=ts)``, with a bound on the work.
-
-    Raises
-    ------
-    TooLong
-        more than ``max_steps`` steps would be needed; ``what`` describes the span.
-    """
+    """DOP853 from t = 0 to ``T`` (the steps and dense output of ``solve_ivp(...,
+    method="DOP853", t_eval=ts)``) with at most ``max_steps`` steps: the states at ``ts``
+    (len(ts), len(y0)) and the right-hand-side evaluations. :class:`TooLong` beyond it."""
     from scipy.integrate import DOP853
 
     limit = MAX_STEPS if max_steps is None else int(max_steps)
@@ -162,38 +146,17 @@ def verify(
 ) -> VerifyResult:
     """Integrate the top's equations of motion numerically and compare with the closed form.
 
-    Parameters
-    ----------
-    motion : TopMotion
-    periods : float — number of nutation periods to integrate (> 0)
-    rtol : float — DOP853 relative tolerance (absolute tolerance rtol/10 on a state of
-        order 1: unit vectors and L/|L0|)
-    samples_per_period : int — comparison times per nutation period
-    axis_tol, energy_tol : float, optional — the verdict's tolerances (default
-        :data:`AXIS_TOL`, :data:`ENERGY_TOL`)
-    max_steps : int, optional — the most integrator steps allowed (default
-        :data:`MAX_STEPS`)
-
-    Raises
-    ------
-    TooLong
-        when the integration would need more than ``max_steps`` steps (a slow nutation
-        with a fast spin: e.g. a top at exactly its critical spin started near upright).
-
-    Returns
-    -------
-    VerifyResult
+    ``periods`` nutation periods at DOP853 ``rtol`` (absolute rtol/10 on a state of order 1),
+    ``samples_per_period`` comparison times; the verdict's ``axis_tol`` and ``energy_tol``
+    (default :data:`AXIS_TOL`, :data:`ENERGY_TOL`). :class:`TooLong` beyond ``max_steps``
+    (default :data:`MAX_STEPS`). Returns a :class:`VerifyResult`.
 
     Notes
     -----
-    Singularity-free form, no Euler angles: the state is the axis e3 (unit vector), a
-    body-fixed unit vector e1 normal to it, and the angular momentum L about the pivot,
-    all in space axes (z up). For a symmetric top ω = (L - (L·e3)e3)/I + (L·e3/Is) e3;
-    e3' = ω × e3 = (L × e3)/I, e1' = ω × e1, L' = l e3 × (-m g ẑ) = m g l ẑ × e3.
-    Initial state from R0 = Ry(θ0) (φ = ψ = 0) and ω0 = φ0' ẑ + θ0' ŷ + (S - φ0' cos θ0) e3.
-    The angles are read back as θ = atan2(|e3 × ẑ|, e3·ẑ), φ = atan2(e3y, e3x) (unwrapped),
-    ψ = atan2(e1·n2, e1·n1) with n1 = Rz(φ)Ry(θ)x̂, n2 = Rz(φ)ŷ.
-    """
+    No Euler angles: the state is the axis e3, a body-fixed e1 across it and L about the pivot,
+    in space axes (z up): ω = (L - (L·e3)e3)/I + (L·e3/Is) e3, e3' = (L × e3)/I, e1' = ω × e1,
+    L' = m g l ẑ × e3, from R0 = Ry(θ0) and ω0 = φ0' ẑ + θ0' ŷ + (S - φ0' cos θ0) e3. Angles are
+    read back as θ = atan2(|e3 × ẑ|, e3·ẑ), φ = atan2(e3y, e3x), ψ = atan2(e1·n2, e1·n1)."""
     if not (periods > 0 and math.isfinite(periods)):
         raise ValueError(f"periods must be a positive number, not {periods}")
     if motion.nutation_period is None:
@@ -280,21 +243,10 @@ def verify(
 
 @dataclass(frozen=True)
 class RealBodyCheck:
-    """A nearly symmetric body integrated as it is, against the symmetrised closed form.
-
-    The closed form answers for the body with its two moments across the axis replaced by
-    their mean; this integrates the real body (its full inertia tensor about the pivot) from
-    the same start and measures how far its motion is from that answer.
-
-    Attributes
-    ----------
-    t_end : float — s, the span integrated (that of :func:`verify`)
-    samples : int — comparison times
-    max_axis_error : float — rad (chord), max |e3_closed - e3_real|
-    max_theta_error, max_phi_error : float — rad, largest differences of θ and φ
-    energy_drift : float — max |E - E0|/(T0 + m g l) of the integration (its accuracy)
-    nfev : int — right-hand-side evaluations
-    """
+    """The real (unsymmetrised) body integrated from the same start, against the symmetrised
+    closed form: ``t_end`` (s), ``samples``, ``max_axis_error`` (rad, chord),
+    ``max_theta_error``, ``max_phi_error`` (rad), ``energy_drift`` (the integration's
+    accuracy) and ``nfev``."""
 
     t_end: float
     samples: int
@@ -326,27 +278,11 @@ def verify_real_body(
 ) -> RealBodyCheck:
     """Integrate the real body of a nearly symmetric top and compare with the closed form.
 
-    ``motion.params.asymmetry`` (a :class:`rbcli.core.symmetry.AxialSymmetry` about the
-    pivot) holds the real inertia tensor J about the pivot in body axes and the axis e3
-    (pivot to com).
-
-    Notes
-    -----
-    The full rigid-body equations about a fixed point, in body axes (Euler's equations
-    with the gravity torque; Goldstein §5.5): J ω' = τ - ω × (J ω), τ = r × (-m g Rᵀ ẑ), r
-    = l e3 the com from the pivot, and the attitude as a unit quaternion q (body to space,
-    Hamilton convention), q' = ½ q ⊗ (0, ω). DOP853 at ``rtol`` (absolute rtol/10 on q and
-    ω/|ω0|). The start is the closed form's: R0 takes e3 to (sin θ0, 0, cos θ0) and the
-    direction of the smaller moment across to (cos θ0, 0, -sin θ0); ω0 = φ0' ẑ + θ0' ŷ +
-    (S - φ0' cos θ0) e3 in space. The axis is R e3.
-
-    Raises
-    ------
-    ValueError
-        the motion has no asymmetry record or no finite nutation period.
-    TooLong
-        more than ``max_steps`` steps would be needed.
-    """
+    ``motion.params.asymmetry`` holds the real tensor J about the pivot (body axes) and e3.
+    Euler's equations with the gravity torque (Goldstein §5.5): J ω' = τ - ω × (J ω),
+    τ = l e3 × (-m g Rᵀ ẑ), and the attitude quaternion q' = ½ q ⊗ (0, ω), by DOP853 from the
+    closed form's start. ValueError without an asymmetry record or a finite nutation period;
+    :class:`TooLong` beyond ``max_steps``."""
     sym = motion.params.asymmetry
     if sym is None:
         raise ValueError("the top has no record of its real inertia (it is symmetric)")

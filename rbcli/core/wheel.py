@@ -101,20 +101,13 @@ class Wheel:
     Attributes
     ----------
     mass : float — kg, > 0
-    A : float — kg m^2, the diametral moment (across the axle) about the centre of mass G
-    C : float — kg m^2, the axial moment (about the axle) about G; 0 < C <= 2 A
-    com : tuple of 3 floats — m, the centre of mass in the body frame
-    axle : tuple of 3 floats — the unit axle direction in the body frame
+    A, C : float — kg m^2, the moments across and about the axle, about the com; 0 < C <= 2 A
+    com, axle : tuple of 3 floats — m, the com; the unit axle (body frame)
     com_offset : float — m, distance of the com from the axle line (below tolerance)
-    asymmetry : AxialSymmetry or None — for a wheel accepted as nearly of revolution
-        (departures above rounding, within the tolerance of :func:`wheel_from_body`): the
-        two moments across the axle about the com, the products coupling the axle to the
-        plane across it and the com's offset from the axle relative to the rim radius
-        (:mod:`rbcli.core.symmetry`); None for a wheel of revolution to rounding
+    asymmetry : AxialSymmetry or None — the departures of a wheel accepted as nearly of
+        revolution (:mod:`rbcli.core.symmetry`); None for one of revolution to rounding
 
-    Construct directly for textbook bodies (``Wheel(mass=1, A=0.25, C=0.5)`` is a thin
-    disk of unit mass and radius 1) or from a general body with :func:`wheel_from_body`.
-    """
+    ``Wheel(mass=1, A=0.25, C=0.5)`` is a thin disk of unit mass and radius 1."""
 
     mass: float
     A: float
@@ -164,63 +157,36 @@ def wheel_from_body(
     Parameters
     ----------
     mass : float — kg
-    com : (3,) array_like — m, centre of mass in the body frame
-    inertia_com : (3, 3) array_like — kg m^2, inertia tensor about the com
-        (tensor convention: off-diagonals are the negated products)
-    axle : (3,) array_like — axle direction in the body frame (need not be unit);
-        default body z
-    sym_rtol : float — how far from a body of revolution the wheel may be (the
-        ``--symmetry-tol``, a fraction; default 1e-6, rounding): the two moments across
-        the axle may differ by this fraction of their mean, and the products of inertia
-        coupling the axle to the plane across it may be this fraction of it
-    axle_through : (3,) array_like or None — m, a point of the axle line in the body
-        frame. **Default: the body origin** (the natural place to centre a wheel when it is
-        modelled), so a wheel whose com is off the origin — an unbalanced wheel, or a
-        wheel modelled away from the origin — is refused unless the axle point is given.
-    radius : float or None — m, the rim radius; the length scale of the com test
-        (default: the radius of gyration sqrt(C/m) about the axle)
-    off_axis_rtol : float or None — the com may be off the axle line by at most
-        ``off_axis_rtol * radius`` (default: ``sym_rtol``)
+    com : (3,) array_like — m, centre of mass, body frame
+    inertia_com : (3, 3) array_like — kg m^2, about the com (tensor convention)
+    axle : (3,) array_like — axle direction, body frame (any length); default body z
+    sym_rtol : float — how far from a body of revolution it may be (a fraction; default 1e-6):
+        of the mean moment across, the spread of the two moments across and the coupling
+    axle_through : (3,) array_like or None — m, a point of the axle line; default the origin
+    radius : float or None — m, the rim radius, the scale of the com test (default sqrt(C/m))
+    off_axis_rtol : float or None — the com may be this times ``radius`` off the axle line
+        (default ``sym_rtol``)
 
     Returns
     -------
-    Wheel
-        With ``asymmetry`` set when a departure is above rounding (1e-6) but within the
-        tolerance: the wheel is then the *symmetrised* one.
+    Wheel — the symmetrised wheel, with ``asymmetry`` set, when a departure is above 1e-6
 
     Raises
     ------
     rbcli.core.symmetry.Asymmetric (a ValueError)
-        not a body of revolution about the axle within the tolerance (the moments across
-        it differ, or the axle is not a principal axis, or the com is off the axle line),
-        with the numbers and the option ``--symmetry-tol``.
+        not of revolution about the axle within the tolerance, with the numbers.
     ValueError
         zero axle, zero or negative moments.
 
     Notes
     -----
-    With n the unit axle: C = n.I.n; the two moments across the axle are the eigenvalues of
-    I restricted to the plane normal to n, A1 <= A2, with mean Ā = (A1 + A2)/2 and
-    relative spread δ = (A2 - A1)/Ā; the coupling is |(1 - n n^T) I n|; the com's offset
-    e is its distance from the axle line (:func:`rbcli.core.symmetry.about_axis`, about
-    the com, e relative to the rim radius). Rolling depends on the body only through m,
-    G and the inertia (sheet §3), so a body within the tolerance is answered for the
-    **symmetrised wheel**: A = Ā, C as measured, the products dropped and the com taken on
-    the axle (the rim centre; the model has no place for an offset).
-
-    How far that may be off (the bound :attr:`RollcheckResult.asymmetry_effect` reports;
-    first order in the departures). The threshold is s_c² = m g (a - r) A / (C (C + m a²))
-    (:func:`straight`), so s_c ∝ sqrt(A) with everything else fixed. As the real wheel
-    turns, its moment about the horizontal fore-aft diameter swings between A1 and A2, so
-    its threshold lies between the ones computed with A = A1 and A = A2, and
-    |s_c(A_i)/s_c(Ā) - 1| = |sqrt(1 ± δ/2) - 1| <= 1 - sqrt(1 - δ/2) <= δ/(4 - δ) ≈ δ/4
-    (using sqrt(1 - x) >= 1 - x); the critical speed a s_c alike. The products change the
-    principal moments by at most the coupling (Weyl's inequality) and tilt the principal
-    axis by about coupling/|C - Ā| (the wheel wobbles): of the order of the coupling
-    relative to Ā. A com e off the axle makes the gravity lever swing between a - r - e
-    and a - r + e: s_c by about e/(2 (a - r)). Sheet §3; the eigenvalue bound: Horn and
-    Johnson, *Matrix Analysis*, 2nd ed., Theorem 4.3.1.
-    """
+    With n the unit axle: C = n.I.n; A1 <= A2 the eigenvalues of I across n, Ā their mean,
+    δ = (A2 - A1)/Ā; the coupling |(1 - n nᵀ) I n|; e the com's distance from the axle.
+    Rolling depends on m, G and I only (sheet §3), so the answer is for the symmetrised wheel
+    (A = Ā, products dropped, com on the axle). Its error, first order: s_c ∝ sqrt(A)
+    (:func:`straight`) and the real A swings between A1 and A2, so s_c is off by at most
+    1 - sqrt(1 - δ/2) <= δ/(4 - δ); the coupling moves the moments by at most itself (Weyl;
+    Horn and Johnson, *Matrix Analysis*, Theorem 4.3.1); e moves s_c by about e/(2 (a - r))."""
     m = _positive("the mass", mass)
     G = np.asarray(com, dtype=float).reshape(3)
     J = np.asarray(inertia_com, dtype=float).reshape(3, 3)

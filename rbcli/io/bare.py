@@ -1,14 +1,9 @@
 """The bare-number rule: which unit a number typed without one is in, for one body.
 
-A bare number typed for an option (``--radius 180``, ``radius="180"``) means what it would
-mean in that body's file: lengths and masses in the file's ``units`` (SI for ``-e``, for
-standard input without ``units`` and for files without ``units``), angles in degrees,
-angular speeds in rad/s unless the file's ``units`` name another (``angular_speed: rpm``);
-every other kind (a speed in m/s, gravity in m/s², a time in s) is SI, since a body file
-has no bare speed or gravity to follow. The API reads values by it
-(:class:`rbcli.api.options.Units`); tables echo options in it
-(:class:`rbcli.render.units.BodyUnits`).
-"""
+A bare number for an option (``--radius 180``) means what it would in the body's file:
+lengths and masses in its ``units`` (SI without them), angles in degrees, angular speeds in
+rad/s unless ``units`` names another; any other kind is SI. The API reads by it
+(:class:`rbcli.api.options.Units`), tables echo in it (:class:`rbcli.render.units.BodyUnits`)."""
 
 from __future__ import annotations
 

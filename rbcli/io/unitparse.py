@@ -1,17 +1,11 @@
-"""The grammar of units and quantities: a unit expression or a quantity read into its
-exact factor (:mod:`rbcli.io.unittable`'s rationals and powers of pi). Standard library only.
+"""The grammar of units and quantities, read into exact factors (:mod:`rbcli.io.unittable`'s
+rationals and powers of pi). Standard library only.
 
-A quantity is a number (Python float syntax without underscores: sign, decimals,
-exponent; ``inf`` and ``nan`` refused), optional white space, then an optional unit
-expression; the number is read exactly (``7.85`` is 157/20). A unit expression is unit
-names joined by ``*`` (or ``·``) and ``/``, read left to right (``kg/m/s`` = kg m^-1
-s^-1); each name or parenthesised group may carry an integer power ``^n``, ``**n`` or a
-superscript (``m²``, ``s⁻¹``), from -12 to 12; the power of any one unit in the whole
-expression (``(mm^2)^3`` is mm^6) stays in the same range, checked at every step while
-reading, so nested powers cost nothing. ``1/s`` is allowed at the start. A digit string
-directly after a name is its power (``kg/m3``, ``mm4``; a name in the table that ends in
-a digit, ``g0``, is that unit).
-"""
+A quantity is a number (Python float syntax; ``inf``, ``nan`` refused; read exactly:
+``7.85`` is 157/20), optional space and an optional unit expression: names joined by ``*``
+(``·``) and ``/``, left to right, each name or group with an integer power (``^n``, ``**n``,
+``m²``, or digits after a name: ``kg/m3``) from -12 to 12, checked for each unit at every
+step; ``1/s`` may start it."""
 
 from __future__ import annotations
 

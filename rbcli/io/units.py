@@ -1,15 +1,7 @@
-"""Units: read ``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"`` into SI floats.
-
-Standard library only (this module sits on every command's start-up path).
-
-Model
------
-The unit table (dimensions, kinds, exact factors) is :mod:`rbcli.io.unittable`; the
-grammar of units and quantities :mod:`rbcli.io.unitparse`; this module the conversions
-the rest of rbcli calls. Every factor is exact and the product of a quantity's number and
-its unit is rounded to a float once, at the very end, so ``"7.85 g/cm^3"`` gives exactly
-7850.0, ``"1 in"`` exactly 0.0254 and ``"12 deg"`` the float nearest to 12 pi / 180.
-"""
+"""Units: read ``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"`` into SI floats (standard
+library only). The table is :mod:`rbcli.io.unittable`, the grammar :mod:`rbcli.io.unitparse`;
+factors are exact and a quantity is rounded to a float once, so ``"7.85 g/cm^3"`` is exactly
+7850.0 and ``"1 in"`` exactly 0.0254."""
 
 from __future__ import annotations
 
@@ -69,25 +61,9 @@ def canonical_unit(text: str) -> str:
 
 
 def parse_unit(text: str) -> tuple[float, Dim]:
-    """Read a unit expression: its factor to SI and its dimension.
-
-    Parameters
-    ----------
-    text : str
-        E.g. ``"g/cm^3"``, ``"kg*m^2"``, ``"rev/min"``.
-
-    Returns
-    -------
-    factor : float
-        What one of this unit is in SI (m, kg, s, rad), computed exactly and rounded
-        once: ``parse_unit("g/cm^3") == (1000.0, Dim(M=1, L=-3))``.
-    dim : Dim
-
-    Raises
-    ------
-    UnitError
-        Unknown names (with a "did you mean"), bad syntax, powers beyond +-12.
-    """
+    """Read a unit expression (``"g/cm^3"``, ``"kg*m^2"``, ``"rev/min"``): (its factor to SI,
+    exact and rounded once, its Dim); ``parse_unit("g/cm^3") == (1000.0, Dim(M=1, L=-3))``.
+    UnitError for unknown names (with a "did you mean"), bad syntax, powers beyond +-12."""
     text = check_text(text, "a unit")
     q, p, d = parse_unit_exact(text)
     return to_float(q, p, text.strip()), d
@@ -95,28 +71,9 @@ def parse_unit(text: str) -> tuple[float, Dim]:
 
 @lru_cache(maxsize=4096)
 def parse_quantity(text: str) -> tuple[float, Dim]:
-    """Read a quantity: its value in SI units and its dimension.
-
-    Parameters
-    ----------
-    text : str
-        A number, optional white space, an optional unit expression: ``"30 cm"``,
-        ``"7850 kg/m^3"``, ``"1200 rpm"``, ``"12 deg"``, ``"4e-4 kg*m^2"``, ``"-3.5 mm"``.
-        A bare number (``"2.5"``) is dimensionless.
-
-    Returns
-    -------
-    value : float
-        In m, kg, s, rad and their products (``"30 cm"`` -> 0.3), rounded once from the
-        exact product of the number and the unit's factor.
-    dim : Dim
-
-    Raises
-    ------
-    UnitError
-        Anything that is not such a quantity, including ``inf``, ``nan`` and numbers
-        whose SI value overflows a float.
-    """
+    """Read a quantity (``"30 cm"``, ``"7850 kg/m^3"``, ``"1200 rpm"``; a bare number is
+    dimensionless): (its value in SI, rounded once from the exact product, its Dim).
+    UnitError for anything else, ``inf``, ``nan`` and values that overflow."""
     number, q, p, d, _ = parse_quantity_exact(text)
     return to_float(number * q, p, text.strip()), d
 
@@ -127,31 +84,12 @@ def _format_float(x: float) -> str:
 
 @lru_cache(maxsize=4096)  # see parse_quantity
 def to_si(text: str, kind: str) -> float:
-    """Read a quantity that must be of a given kind; return its value in SI.
+    """Read a quantity of kind ``kind`` (a key of :data:`KINDS`) in SI (an angle in rad).
 
-    Parameters
-    ----------
-    text : str
-        A quantity with a unit (``"30 cm"``). A bare number is allowed only for
-        ``kind="dimensionless"``; bare numbers in body files go through
-        :func:`unit_for_kind` instead.
-    kind : str
-        A key of :data:`KINDS`.
-
-    Returns
-    -------
-    float
-        The value in SI units of that kind (an angle in rad, an angular speed in rad/s).
-
-    Raises
-    ------
-    UnitError
-        Unreadable text, a missing unit, or a unit of the wrong dimension; the message
-        names both dimensions and suggests units of the right one. A frequency (Hz)
-        given for an angular speed gets its own hint: it is never taken as rad/s.
-    ValueError
-        ``kind`` is not a known kind (a programming error).
-    """
+    A bare number only for ``"dimensionless"`` (a body file's bare numbers:
+    :func:`unit_for_kind`). UnitError for unreadable text, a missing unit or one of the wrong
+    dimension (naming both and suggesting units; a frequency in Hz is never taken as rad/s);
+    ValueError for an unknown kind."""
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     want = KINDS[kind]
@@ -186,41 +124,14 @@ def to_si(text: str, kind: str) -> float:
 
 
 def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
-    """What a bare number of a given kind means in a body file.
+    """What a bare number of ``kind`` means in a body file with ``units:`` block ``base_units``
+    (length, mass, time, angle, angular_speed; default m, kg, s, deg, rad/s): (the factor to
+    SI, the unit's text, ``""`` for dimensionless).
 
-    Parameters
-    ----------
-    base_units : dict
-        The file's ``units:`` block: keys among ``length``, ``mass``, ``time``,
-        ``angle``, ``angular_speed``, values unit texts; missing keys default to m, kg,
-        s, deg and rad/s.
-    kind : str
-        A key of :data:`KINDS`.
-
-    Returns
-    -------
-    factor : float
-        Multiply a bare number by this to get SI.
-    unit : str
-        The unit the bare number is in, e.g. ``"g/mm^3"``; ``""`` for dimensionless.
-
-    Notes
-    -----
-    The kind's dimension is built from the base units (density with
-    ``{length: mm, mass: g}`` is g/mm^3, factor 1e6; force is mass*length/time^2 in
-    those units); an angle is in the angle unit (default deg). Angular speeds are the
-    exception: a bare angular speed is in the file's ``angular_speed`` unit when it names
-    one (``angular_speed: rpm``), else rad/s (SPEC §1: "bare angles are degrees, bare
-    angular speeds rad/s"), whatever the angle and time units.
-
-    Raises
-    ------
-    UnitError
-        An unknown key, an unknown unit, or a unit of the wrong dimension
-        (``{length: kg}``).
-    ValueError
-        ``kind`` is not a known kind (a programming error).
-    """
+    The kind's dimension is built from the base units (density with ``{length: mm, mass: g}`` is
+    g/mm^3); a bare angular speed is in ``angular_speed`` when given, else rad/s, whatever the
+    angle and time units (SPEC §1). UnitError for an unknown key or unit, or one of the wrong
+    dimension; ValueError for an unknown kind."""
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; kinds are: {', '.join(KINDS)}")
     speed = base_units.get("angular_speed")

@@ -1,24 +1,13 @@
 """The unit table: exact numbers, dimensions, the kinds rbcli reads, and every unit's
 exact factor to SI. Standard library only (on every command's start-up path).
 
-Four base dimensions: length ``L``, mass ``M``, time ``T`` and angle ``A``. The angle
-is a dimension of its own, not "dimensionless": ``"12 deg"`` is an angle, ``"rpm"`` and
-``"rad/s"`` are angle/time, and ``"Hz"`` is 1/time, so a frequency is never silently
-taken for an angular speed (pint, which treats the radian as dimensionless, converts
-``1 Hz`` to ``1 rad/s`` without a word).
-
-Every unit's factor to SI (m, kg, s, rad) is held exactly, as a
-:class:`fractions.Fraction` times an integer power of pi (``deg = pi/180``, ``rpm = 2 pi /
-60``); :func:`to_float` rounds such a factor to a float once, with pi taken to 60 digits.
-
-Names are matched exactly first; a name that is not in the table is matched ignoring
-case only when exactly one unit matches that way and the change of case cannot turn an
-SI prefix or a unit symbol into another (``RPM``, ``Kg``, ``KG``, ``hz`` are read; ``Mm``,
-``MM``, ``G``, ``Nm``, ``MS`` are refused: mega, giga and newton are not milli, gram and
-nano). There is no general SI-prefix machinery, only the explicit entries of the table
-(:func:`format_unit_table`). The grammar of unit expressions and quantities is
-:mod:`rbcli.io.unitparse`; the public functions are in :mod:`rbcli.io.units`.
-"""
+Four base dimensions: length, mass, time and angle (an angle is not dimensionless, so
+``Hz`` is never silently taken for rad/s, as pint does). Factors are exact, a
+:class:`fractions.Fraction` times a power of pi, rounded once by :func:`to_float`. Names
+match exactly, else ignoring case when exactly one unit matches and no prefix or symbol
+changes meaning (``RPM``, ``Kg`` are read; ``Mm``, ``G``, ``MS`` refused). No general
+SI-prefix machinery: the table's entries only (:func:`format_unit_table`). The grammar is
+:mod:`rbcli.io.unitparse`; the public functions :mod:`rbcli.io.units`."""
 
 from __future__ import annotations
 
@@ -57,10 +46,6 @@ class Dim(NamedTuple):
         if not isinstance(n, int) or isinstance(n, bool):
             return NotImplemented
         return Dim(*(a * n for a in self))
-
-    @property
-    def is_dimensionless(self) -> bool:
-        return not any(self)
 
     def describe(self) -> str:
         """E.g. ``"length"``, ``"mass/length^3"``, ``"angle/time"``, ``"1/time"``."""

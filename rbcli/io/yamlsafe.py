@@ -1,24 +1,13 @@
 """The safe YAML loader that every body file goes through.
 
-``load`` turns the text of a body file into a small tree of :class:`Node` objects,
-each carrying the 1-based line and column where it starts, so that later layers can
-report ``file:line:col: message`` for any value. It refuses, with a located
-:class:`~rbcli.errors.InputError` and never any other exception:
-
-- files over :data:`MAX_BYTES`, text that is not UTF-8, control characters;
-- nesting deeper than :data:`MAX_DEPTH` (checked on libyaml's iterative event
-  stream; the tree is built from those events, so PyYAML's recursive composer,
-  which crashes at ~30 000 levels, is never used);
-- anchors and aliases (the "billion laughs" file), explicit tags (``!!python/...``),
-  more than one document, an empty document;
-- keys that are not names, duplicate keys, merge keys (``<<``);
-- integers with more than 300 digits.
-
-Plain (unquoted) scalars are resolved by the YAML 1.2 *core* schema, not by
-PyYAML's YAML 1.1 resolver: ``1e3`` is the float 1000.0, ``no``/``off``/``yes`` are
-strings, ``1:30`` is a string, ``017`` is the integer 17. Quoted and block scalars
-are always strings.
-"""
+:func:`load` turns a body file into a tree of :class:`Node` objects, each with its 1-based
+line and column (for ``file:line:col: message``). It refuses with a located
+:class:`~rbcli.errors.InputError`, never another exception: files over :data:`MAX_BYTES`,
+text not UTF-8, control characters; nesting deeper than :data:`MAX_DEPTH` (on libyaml's
+iterative event stream: PyYAML's recursive composer, which crashes at ~30 000 levels, is
+never used); anchors, aliases, explicit tags, several or empty documents; keys that are not
+names, duplicate and merge keys; integers over 300 digits. Plain scalars follow the YAML
+1.2 *core* schema (``1e3`` a float, ``no`` and ``1:30`` strings, ``017`` the integer 17)."""
 
 from __future__ import annotations
 
@@ -91,17 +80,10 @@ class Mark(NamedTuple):
 
 
 class Node:
-    """Base of the loaded tree. Every node has ``.mark`` and ``.tag``; nodes are frozen.
-
-    ``tag`` is one of ``"map"``, ``"seq"``, ``"str"``, ``"int"``, ``"float"``,
-    ``"bool"``, ``"null"``.
-
-    A node keeps where it starts as given: a :class:`Mark` (or a
-    :class:`rbcli.io.loadctx.DataMark` in a tree made from Python data), or the loader's
-    0-based ``line << 32 | column`` (an int, which the garbage collector does not track: a
-    large body's tree holds millions of nodes, and most marks are never read — they locate
-    errors), which ``.mark`` gives as the 1-based :class:`Mark`.
-    """
+    """Base of the loaded tree (frozen): ``.tag`` (``"map"``, ``"seq"``, ``"str"``, ``"int"``,
+    ``"float"``, ``"bool"``, ``"null"``) and ``.mark``, the 1-based :class:`Mark` of where it
+    starts, kept as given or as the loader's 0-based ``line << 32 | column`` int (untracked by
+    the garbage collector: a large body's tree holds millions of nodes)."""
 
     __slots__ = ("_mark",)
 
@@ -619,39 +601,14 @@ def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
 
 
 def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> Node:
-    """Parse a body file safely.
+    """Parse a body file safely: the root :class:`Node` (every node with its 1-based
+    :class:`Mark`), or an InputError located at ``filename:line:col``.
 
-    Parameters
-    ----------
-    text : str or bytes
-        The file's contents (bytes are decoded as UTF-8; a leading BOM is dropped).
-    filename : str
-        Used only in error locations.
-    list_cap : (key, n, make_error), optional
-        A budget checked while the tree is built: the list under the root mapping's
-        ``key`` holds at most ``n`` items; the start of the next one raises
-        ``make_error(mark)`` (an InputError at its :class:`Mark`) at once, before the rest
-        of the file is read (a body's part cap: a file far over it costs no more than the
-        cap's worth of parsing).
-
-    Returns
-    -------
-    Node
-        The root node; every node carries its 1-based :class:`Mark`.
-
-    Raises
-    ------
-    InputError
-        For every problem, located at ``filename:line:col`` (1-based).
-
-    Notes
-    -----
-    Steps: size limit, UTF-8 decoding, then one pass over libyaml's event stream
-    (libyaml's ``CParser``, which is iterative) that refuses anchors, aliases,
-    tags, deep nesting and extra documents as their events arrive and builds the
-    tree, resolving plain scalars by the YAML 1.2 core schema. PyYAML's composer
-    (recursive in C, and resolving by YAML 1.1) is never used.
-    """
+    ``text`` is str or bytes (UTF-8, a leading BOM dropped); ``filename`` is for locations only.
+    ``list_cap`` ``(key, n, make_error)``: the list under the root's ``key`` holds at most ``n``
+    items, the next one raising ``make_error(mark)`` before the rest of the file is read.
+    One pass over libyaml's (iterative) event stream refuses what the module docstring lists
+    as its events arrive and builds the tree; PyYAML's recursive composer is never used."""
     text = _decode(text, filename)
     try:
         root = _parse(text, filename, list_cap)

@@ -1,36 +1,23 @@
 """The SI unit of every number in each command's JSON: the ``unit`` column of ``--format csv``.
 
-The JSON of a command is the contract (SPEC §3: SI units, angles in degrees under keys
-ending in ``_deg``); its man page states each key's unit in prose (the JSON section, from
-``MANUAL[command]["json"]`` in ``rbcli/cli/*.py``). This module is the same statement as
-data, so that the CSV (:mod:`rbcli.render.tablecsv`) can put a unit beside each number.
+The man page states each JSON key's unit in prose; this is the same statement as data. A
+unit is ASCII as pint reads it (``kg*m^2``, ``N*s/m``); ``1`` for a dimensionless number.
+Two depend on the data (field-balance): ``{reading}``, the readings' SI unit (or
+``reading`` for bare readings), and ``{planes}``, the number of planes.
 
-A unit is written in ASCII as pint and most unit libraries read it (``kg*m^2``, ``N*s/m``,
-``rad/s``); ``1`` is the unit of a dimensionless number (a ratio, a count, a component of a
-unit vector or of a rotation matrix). Two units depend on the data:
+A key is looked up by its ``path`` (list indices dropped: ``corrections[].mass``):
 
-- ``{reading}`` (field-balance): the SI unit of the vibration readings, the JSON's
-  ``readings.unit`` (``m``, ``m/s`` or ``m/s^2``), or ``reading`` when they were given as bare
-  numbers (the instrument's own unit, whatever it was);
-- ``{planes}`` (field-balance): the number of correction planes (the power in the unit of the
-  influence matrix's determinant).
+1. ``path``, then the key's own name, in the command's table;
+2. a parameter's name: its SI unit (:func:`rbcli.api.params.si_unit`, passed by the cli);
+3. ``path``, then the name, in :data:`COMMON` (``mass`` is kg wherever it sits);
+4. the name's ending (:data:`SUFFIXES`: ``_deg`` is degrees).
 
-A key is looked up in this order, ``path`` being its JSON path with list indices dropped
-(``corrections[1].mass`` -> ``corrections[].mass``):
-
-1. ``path`` in the command's table, then in :data:`COMMON`;
-2. the key's own name (the last name in the path) in the command's table, then in
-   :data:`COMMON` — so ``mass`` is kg wherever it sits in a command's JSON;
-3. the name's ending (:data:`SUFFIXES`: ``_deg`` is degrees).
-
-A number found nowhere gets an empty unit; ``tests/test_csv_table.py`` runs every command
-on its documented cases and fails on such a number, so a key added to a JSON without its
-unit here does not go unnoticed.
-"""
+``tests/test_csv_table.py`` fails on a number found nowhere."""
 
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from typing import Any
 
 ONE = "1"
@@ -75,8 +62,8 @@ _ASYMMETRY = {
 UNITS: dict[str, dict[str, str]] = {
     "inertia": {
         "com": M, "reference": M, "inertia": KGM2, "inertia_com": KGM2,
-        "axis": ONE, "axis_moment": KGM2,
-        "omega": RADS, "angular_momentum": L_UNIT, "kinetic_energy": J,
+        "axis_moment": KGM2,
+        "angular_momentum": L_UNIT, "kinetic_energy": J,
     },
     "principal": {
         "reference": M, "moments": KGM2, "axes": ONE, "free_axes": ONE,
@@ -88,10 +75,10 @@ UNITS: dict[str, dict[str, str]] = {
         "tolerances.eccentricity": M, "tolerances.couple_unbalance": KGM2, "rtol": ONE,
         "com_shaft": M, "shaft.axis": ONE, "shaft.through": M, "shaft.x_axis": ONE,
         "shaft.y_axis": ONE,
-        "plane": M, "radius": M, "unbalance": KGM, "force": N, "equivalent_unbalance": KGM,
-        "static_load": N, "mass_step": KG, "narrow_ratio": ONE, "narrow_reference": M,
+        "plane": M, "unbalance": KGM, "force": N, "equivalent_unbalance": KGM,
+        "static_load": N, "narrow_ratio": ONE, "narrow_reference": M,
         "position": ONE, "n_positions": ONE,
-        "dynamics.speed": RADS, "g": MS2, "centrifugal_force": N,
+        "dynamics.speed": RADS, "centrifugal_force": N,
         "dynamics.angular_momentum": L_UNIT, "torque": NM, "torque_magnitude": NM,
         "torque_origin": NM,
         "iso.grade": "mm/s", "grade_si": MS, "iso.speed": RADS,
@@ -101,22 +88,22 @@ UNITS: dict[str, dict[str, str]] = {
         "apply.parts[].at": M,
     },
     "field-balance": {
-        "planes": ONE, "radius": M, "mass_trial_on": KG, "trial_radius": M,
+        "planes": ONE, "mass_trial_on": KG,
         "influence[][].magnitude": "{reading}/kg", "alpha[][].magnitude": "{reading}/kg",
         "cond": ONE, "det_magnitude": "({reading}/kg)^{planes}",
         "predicted_residual": "{reading}", "residual_values": "{reading}",
         "residual_max": "{reading}", "residual_rms": "{reading}",
         "amplitude": "{reading}", "initial": "{reading}",
         "factor": ONE, "significance_limit": ONE,
-        "speed": RADS, "mass_step": KG, "positions": ONE, "position": ONE,
+        "position": ONE,
         "severity.boundaries": "m/s", "severity.group": ONE,
         "severity.readings[].before": "m/s", "severity.readings[].after": "m/s",
-        "bearing_load": N, "fraction": ONE, "force": N,
+        "fraction": ONE, "force": N,
         "expected_change": "{reading}",
-        "readings.g": MS2, "count": ONE, "weights": ONE,
+        "readings.g": MS2, "count": ONE,
     },
     "precess": {
-        "omega": RADS, "angular_momentum": L_UNIT, "angular_momentum_norm": L_UNIT,
+        "angular_momentum": L_UNIT, "angular_momentum_norm": L_UNIT,
         "kinetic_energy": J, "period": S, "circles_axis": ONE,
         "precession_rate": RADS, "space_precession_rate": RADS,
         "flip_interval": S, "first_flip": S, "flip_interval_estimate": S,
@@ -128,7 +115,7 @@ UNITS: dict[str, dict[str, str]] = {
         "linear_rates": PER_S,
         "at.t": S, "quaternion": ONE, "rotation_axis": ONE, "rotation_matrix": ONE,
         "periods": ONE,
-        "verify.t_end": S, "samples": ONE, "rtol": ONE, "nfev": ONE,
+        "verify.t_end": S, "rtol": ONE, "nfev": ONE,
         "omega_error": ONE, "attitude_error": RAD,
         "numeric_energy_drift": ONE, "numeric_momentum_drift": ONE, "numeric_L_drift": ONE,
         "exact_energy_drift": ONE, "exact_momentum_drift": ONE, "exact_L_drift": ONE,
@@ -136,26 +123,26 @@ UNITS: dict[str, dict[str, str]] = {
         "csv.duration": S,
     },
     "top": {
-        "length": M, "I": KGM2, "Is": KGM2, "I_com": KGM2, "spin": RADS,
+        "length": M, "I": KGM2, "Is": KGM2, "I_com": KGM2,
         "steady_precession_rates": RADS, "horizontal_precession_rate": RADS,
         "critical_spin": RADS, "nutation_period": S, "mean_precession_rate": RADS,
-        "g": MS2, "theta_dot0": RADS, "phi_dot0": RADS, "minimum_spin_for_steady": RADS,
+        "theta_dot0": RADS, "phi_dot0": RADS, "minimum_spin_for_steady": RADS,
         "steady_nutation_frequencies": RADS, "steady_precession_estimates": RADS,
         "nutation_frequency": RADS, "mean_spin_rate": RADS,
         "precession_per_nutation": RAD, "spin_per_nutation": RAD,
         "goldstein.a": PER_S, "goldstein.b": PER_S, "goldstein.alpha": PER_S2,
         "goldstein.beta": PER_S2,
         "turning_points": ONE, "elliptic_parameter": ONE, "apex_u": ONE,
-        "axis": ONE, "pivot": M, "com": M,
+        "axis": ONE, "com": M,
         **_ASYMMETRY,
-        "t_end": S, "samples": ONE, "rtol": ONE, "nfev": ONE, "max_axis_error": RAD,
+        "t_end": S, "rtol": ONE, "nfev": ONE, "max_axis_error": RAD,
         "energy_drift": ONE, "p_phi_drift": ONE, "p_psi_drift": ONE,
         "axis_tolerance": RAD, "energy_tolerance": ONE,
         "csv.rows": ONE, "csv.duration": S,
     },
     "gyrocompass": {
         "A": KGM2, "C": KGM2, "I": KGM2, "Is": KGM2, "C_over_A": ONE, "Is_over_I": ONE,
-        "spin": RADS, "earth_rate": RADS, "directive": PER_S2,
+        "directive": PER_S2,
         "omega0": RADS, "omega0_approx": RADS, "period": S, "period_approx": S,
         "axis": ONE,
         **_ASYMMETRY,
@@ -163,20 +150,19 @@ UNITS: dict[str, dict[str, str]] = {
     "rollcheck": {
         "radius": M, "I": KGM2, "Is": KGM2, "I_contact": KGM2, "Is_contact": KGM2,
         "critical_spin": RADS, "critical_speed": MS, "speed": MS, "margin": ONE,
-        "circle.radius": M, "turn_rate": RADS, "spin": RADS, "contact_radius": M,
+        "circle.radius": M, "turn_rate": RADS, "contact_radius": M,
         "kappa": NM, "lean_frequency": RADS, "growth_rate": PER_S,
         "lean_frequency_squared": "rad^2/s^2",
-        "tyre_radius": M, "g": MS2, "axle": ONE, "axle_through": M, "com": M,
+        "axle": ONE, "axle_through": M, "com": M,
         "band_width": M, "band_edges": M, "knife_edge_critical_spin": RADS,
         "knife_edge_critical_speed": MS,
         **_ASYMMETRY,
     },
     "whirl": {
-        "bearings[].plane": M, "stiffness": "N/m", "cross_stiffness": "N/m",
-        "damping": "N*s/m",
+        "bearings[].plane": M,
         "speeds": RADS, "frequencies": RADS, "frequency": RADS,
         "damping_ratio": ONE, "log_decrement": ONE,
-        "speed": RADS, "damped_speed": RADS, "node": M, "order": ONE, "orders": ONE,
+        "damped_speed": RADS, "node": M, "order": ONE,
         "amplification_factor": ONE, "bearing": ONE, "plane": M,
         "operating_speed": RADS, "modes_speed": RADS,
         "polar_moment": KGM2, "transverse_moment": KGM2, "transverse_moments": KGM2,
@@ -184,9 +170,8 @@ UNITS: dict[str, dict[str, str]] = {
         "amplitude": M, "half_power": RADS, "amount": KGM,
         "rotor.asymmetry": ONE, "rotor.com": M, "couple_unbalance": KGM2,
         "eccentricity": M, "static_unbalance": KGM,
-        "shaft": ONE, "through": M, "speed_range": RADS,
         "least_damping_ratio": ONE, "least_damping_speed": RADS, "onset_speeds": RADS,
-        "symmetry_tol": ONE, "cross_damping": "N*s/m", "forward_share": ONE,
+        "cross_damping": "N*s/m", "forward_share": ONE,
         "bearing_forward_share": ONE, "branch": ONE, "threshold_speed": RADS,
         "stability.thresholds[].mode": ONE, "searched": RADS,
         **dict.fromkeys(("kxx", "kxy", "kyx", "kyy"), "N/m"),
@@ -203,28 +188,27 @@ def _name(pattern: str) -> str:
     return pattern.replace("[]", "").rsplit(".", 1)[-1]
 
 
-def lookup(command: str, path: str) -> str | None:
+def lookup(command: str, path: str, params: Mapping[str, str] | None = None) -> str | None:
     """The unit template of the number at JSON ``path`` of ``command``'s JSON (see the
-    module docstring), or None when no table or rule gives one."""
+    module docstring; ``params``: the SI unit of each of its parameters), or None when no
+    table or rule gives one."""
     pattern = _INDEX.sub("[]", path)
     while pattern.endswith("[]"):
         pattern = pattern[:-2]
-    table = UNITS.get(command, {})
-    for key in (pattern, _name(pattern)):
-        for t in (table, COMMON):
-            u = t.get(key)
-            if u is not None:
-                return u
-    name = _name(pattern)
+    table, name = UNITS.get(command, {}), _name(pattern)
+    for u in (table.get(pattern), table.get(name), (params or {}).get(name) or None,
+              COMMON.get(pattern), COMMON.get(name)):
+        if u is not None:
+            return u
     for end, u in SUFFIXES:
         if name.endswith(end):
             return u
     return None
 
 
-def unit(command: str, path: str, data: Any) -> str:
+def unit(command: str, path: str, data: Any, params: Mapping[str, str] | None = None) -> str:
     """The unit of the number at ``path`` in ``data`` (the command's JSON), or ``""``."""
-    u = lookup(command, path)
+    u = lookup(command, path, params)
     if u is None:
         return ""
     if "{" in u:

@@ -1,16 +1,11 @@
 """The "options" table: each parameter the caller gave, as understood.
 
-Made from the command's parameter table (:class:`rbcli.api.params.Options` carries it):
-one row (option, value, unit) per parameter given, in the table's order, shown as its
-:attr:`~rbcli.api.params.Param.shows` says — a quantity kind (``"length"``,
-``"angular_speed"``...: the value in the unit the caller typed, else in the body's bare
-unit, :class:`rbcli.render.units.BodyUnits`), ``"direction"``, ``"point"`` (``com`` and
-``origin`` as words), ``"deg"``, ``"count"``, ``"grade"`` (``G6.3``), ``"percent"``,
-``"text"``, ``"=UNIT"`` (a plain number in UNIT), ``"each:UNIT"`` (one value per bearing,
-said once when they are all equal), ``"list:UNIT"`` (whole numbers), or a name the command
-renders itself (``custom``). A parameter with ``echo_default`` shows the value the service
-used when it was not given, marked "(default)".
-"""
+One row (option, value, unit) per parameter given, in its table's order, shown as
+:attr:`~rbcli.api.params.Param.shows` says: a quantity kind (in the unit typed, else the
+body's bare unit), ``"direction"``, ``"point"``, ``"deg"``, ``"count"``, ``"grade"``,
+``"percent"``, ``"text"``, ``"=UNIT"``, ``"each:UNIT"`` (one per bearing, said once when
+equal), ``"list:UNIT"`` or a name the command renders itself (``custom``); with
+``echo_default`` the value used when not given, marked "(default)"."""
 
 from __future__ import annotations
 

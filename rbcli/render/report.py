@@ -1,33 +1,23 @@
 """``rbcli report``: one document with every answer and its figures, as HTML or Markdown.
 
-A :class:`Report` is a list of :class:`Section` objects, each holding the same neutral
-items (:class:`~rbcli.render.text.Heading`, :class:`~rbcli.render.text.Note`,
-:class:`~rbcli.render.text.Table`) that the terminal commands fill, plus
-:class:`Figure` items (SVG text). A section that does not apply to the body holds
-only a one-line reason (``skipped``). This module writes a Report out:
-
-- :func:`html` — one self-contained HTML5 file: inline CSS, figures as inline SVG
-  (each figure's ids prefixed so that figures cannot collide), no scripts and no
-  network references; prints to PDF from a browser (page breaks avoid splitting
-  tables and figures).
-- :func:`markdown` — GitHub-flavoured Markdown with the figures as SVG files beside it
-  (``FILE_files/<name>.svg``, linked relatively).
-
-Every piece of user text (names, descriptions, the input file) is escaped: control and
-bidirectional characters shown as visible escapes (:func:`rbcli.render.safe.escape`; the
-input file keeps its newlines and tabs), then HTML's or Markdown's own escaping. The same
-Report gives the same bytes.
-"""
+A :class:`Report` is a list of :class:`Section` objects holding the terminal's items
+(Heading, Note, Table) and :class:`Figure` items (SVG), or a one-line ``skipped`` reason.
+:func:`html` writes one self-contained HTML5 file (inline CSS and SVG with prefixed ids, no
+scripts, no network; prints to PDF); :func:`markdown` GitHub-flavoured Markdown with the
+figures in ``FILE_files/``. User text is escaped (:func:`rbcli.render.safe.escape`, then
+HTML's or Markdown's own); the same Report gives the same bytes."""
 
 from __future__ import annotations
 
 import html as _html
 import re
 from dataclasses import dataclass, field
+from urllib.parse import quote
 
 import numpy as np
 
 from rbcli.render.fmt import num
+from rbcli.render.massprops import kept_parts, more_parts, rest_centre, rest_of
 from rbcli.render.safe import escape
 from rbcli.render.units import DisplayUnits
 from rbcli.render.text import Doc, Heading, Note, Table
@@ -98,8 +88,6 @@ def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int
     one row that sums the others (their mass, share, centre of mass and contributions), so
     that the rows still add up to the total; a mesh part's note only for the parts shown.
     """
-    from rbcli.render.massprops import kept_parts, more_parts, rest_centre, rest_of
-
     m_unit, L, I_unit = du.unit("mass"), du.unit("length"), du.unit("inertia")
     fI, _ = du.factor("inertia")
     parts = body.parts
@@ -381,8 +369,6 @@ def markdown(report: Report, files_dir: str) -> tuple[str, dict[str, str]]:
 
     Figures are linked as ``files_dir/<section>-<name>.svg`` (a relative link, URL-quoted).
     """
-    from urllib.parse import quote
-
     files: dict[str, str] = {}
     out = [f"# {md_para(report.title)}", ""]
     out += ["| | |", "|---|---|"]

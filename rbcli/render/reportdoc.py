@@ -14,12 +14,21 @@ import shlex
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from rbcli.errors import NonFiniteResult
-from rbcli.render import echo
+from rbcli import __version__
+from rbcli.errors import NonFiniteResult, option_name
+from rbcli.render import balance as rb
+from rbcli.render import balanceplot, echo
+from rbcli.render import massprops as rm
+from rbcli.render import precess as rp
+from rbcli.render import rollcheck as rr
+from rbcli.render import top as rt
+from rbcli.render import bodyplot
 from rbcli.render.fmt import said
-from rbcli.render.report import Figure, Report, Section
+from rbcli.render.plots import figure_bytes
+from rbcli.render.report import Figure, Report, Section, parts_table
 from rbcli.render.text import Doc, Heading, Note, check_finite_doc
-from rbcli.render.units import DisplayUnits, ShopUnits, echo_rows
+from rbcli.render.units import DisplayUnits, ShopUnits
+from rbcli.render.whirl import report_section
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.report import ReportResult
@@ -38,8 +47,6 @@ def _options_table(doc: Doc, rows: tuple) -> None:
 
 def _figure(s: Section, name: str, fig: Any, caption: str) -> None:
     """Add a figure (what a command's --plot draws) as inline SVG: in memory, no file."""
-    from rbcli.render.plots import figure_bytes
-
     s.items.append(Figure(name, caption, figure_bytes(fig, "svg").decode("utf-8")))
 
 
@@ -52,8 +59,6 @@ def _section(c: Computed, doc: Doc, body: Any) -> Section:
 
 
 def _parts(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render.report import parts_table
-
     doc = Doc()
     parts_table(doc, body, c.result, c.figure, du, digits)
     s = Section(c.key, c.title)
@@ -62,30 +67,22 @@ def _parts(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
 
 def _massprops(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render import massprops as r
-
     doc = Doc()
-    r.inertia_doc(doc, body, c.result, du, digits, "tensor", c.result.reference_label, parts=False)
+    rm.inertia_doc(doc, body, c.result, du, digits, "tensor", c.result.reference_label, parts=False)
     return _section(c, doc, body)
 
 
 def _principal(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render import massprops as r
-    from rbcli.render.bodyplot import body_figure, caption
-
     doc = Doc()
-    r.principal_doc(doc, body, c.result, du, digits, "the com", parts=False)
+    rm.principal_doc(doc, body, c.result, du, digits, "the com", parts=False)
     s = _section(c, doc, body)
-    fig = body_figure(body, c.result.reference, c.result, du,
+    fig = bodyplot.body_figure(body, c.result.reference, c.result, du,
                       f"principal: {body.name} — the body as built, centre of mass and principal axes")
-    _figure(s, "body", fig, caption(body))
+    _figure(s, "body", fig, bodyplot.caption(body))
     return s
 
 
 def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render import balance as rb
-    from rbcli.render import balanceplot
-
     res, bo = c.result, c.options
     su = ShopUnits(None if du.si else ",".join(u for _, u in (du.length, du.mass, du.time)))
     doc = Doc()
@@ -103,14 +100,10 @@ def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
 
 def _whirl(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render.whirl import report_section
-
     return report_section(c.result, du, digits, key=c.key, title=c.title)
 
 
 def _precess(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render import precess as rp
-
     doc = Doc()
     rp.document(doc, body, c.result, du, digits)
     _options_table(doc, echo.echo_rows(c.options, body.units))
@@ -121,8 +114,6 @@ def _precess(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
 
 def _top(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render import top as rt
-
     doc = Doc()
     rt.document(doc, c.result, du, digits)
     _options_table(doc, echo.echo_rows(c.options, body.units))
@@ -135,8 +126,6 @@ def _top(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
 
 def _rollcheck(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    from rbcli.render import rollcheck as rr
-
     doc = Doc()
     rr.document(doc, c.result, du, digits)
     _options_table(doc, rr.echo_rows(c.result))
@@ -177,8 +166,6 @@ def _built(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
 def options_text(result: ReportResult) -> str:
     """The options given, as a shell would take them (the header's "options" line)."""
-    from rbcli.errors import option_name
-
     return " ".join(f"{option_name(k)} {shlex.quote(v)}" for k, v in result.options.given)
 
 
@@ -188,8 +175,6 @@ def document(result: ReportResult, units: DisplayUnits | None = None, digits: in
     rbcli version, date) and each section's tables and figure; ``units`` the tables' units
     (default SI), ``digits`` their significant figures. ``progress(what, i, n)`` is called
     before each section is drawn."""
-    from rbcli import __version__
-
     du = units or DisplayUnits()
     body = result.body
     sections = []

@@ -1,44 +1,25 @@
 """``--format csv``: a command's result as one table a spreadsheet or a script reads in one go.
 
-The layout (a contract, documented in rbcli(1) and the README) is *long* ("tidy"): one row
-per value of the command's JSON, with the columns
+The layout (a contract, documented in rbcli(1) and the README) is *long*: one row per value
+of the command's JSON, with the columns ``quantity,value,text,unit``:
 
-    quantity,value,text,unit
+- ``quantity`` — the value's JSON path (``com[2]``, ``corrections[0].mass``), unique;
+- ``value`` — a number only: ``repr`` of the float (or ``--digits N`` significant figures),
+  an integer as it is; empty for a number its ``<name>_defined`` sibling marks undefined;
+- ``text`` — a string or a boolean, made safe for spreadsheets
+  (:func:`rbcli.render.safe.csv_text`);
+- ``unit`` — the SI unit of a number (:mod:`rbcli.render.csvunits`; ``1`` when it has none).
 
-- ``quantity`` — the value's JSON path: keys joined by ``.``, list positions in brackets,
-  counted from 0 (``mass``, ``com[2]``, ``inertia[1][2]``, ``corrections[0].mass``,
-  ``iso.before.residual[1]``), so that every row says what it is and the names are unique;
-- ``value`` — a number (and only a number): Python's ``repr`` of the float (it reads back to
-  the same double) unless ``--digits N`` was given, then N significant figures; an integer
-  as it is. Empty when the value is not a number, and for a number the JSON marks as not
-  defined: a key ``<name>_deg`` whose sibling ``<name>_defined`` is false (the angle of a
-  zero unbalance, which the tables show as "—");
-- ``text`` — a string (names, verdicts, notes, warnings) or a boolean (``true``/``false``);
-  text is escaped and neutralised for spreadsheets (:func:`rbcli.render.safe.csv_text`);
-- ``unit`` — the SI unit of a number (:mod:`rbcli.render.csvunits`; ``1`` when it has none),
-  empty for text.
-
-A ``null`` of the JSON, an empty list and an empty mapping are a row with ``value`` and
-``text`` both empty. With several bodies (``inertia``/``principal`` on many files) a
-``file`` column comes first and the header is written once. Quoting follows RFC 4180
-(Python's csv module, ``\\n`` line ends): ``csv.reader(open(f, newline=""))`` and
-``pandas.read_csv(f)`` read it in one call; ``df.pivot(columns="quantity", values="value")``
-or a filter on ``quantity`` gives the numbers back.
-
-Why long, not wide. The JSON is the contract (SI units, full precision, the same keys every
-time); a long table is that JSON, value by value, for every command alike: one header that
-never changes, names that are unique by construction, one number per cell, a unit for each.
-A wide layout (one row per body, one column per value) would need its own column list per
-command and per option set (corrections only with ``--planes``, a row per plane and
-bearing), and could not hold the lists of varying length (Campbell diagrams, residuals per
-reading) without inventing one naming scheme per list. The text tables stay for people.
-"""
+A ``null``, an empty list or mapping has both ``value`` and ``text`` empty. With several
+bodies a ``file`` column comes first, the header once. RFC 4180 quoting, ``\n`` line ends:
+``pandas.read_csv(f)`` reads it in one call. Long, not wide: the JSON value by value, one
+header for every command, lists of any length; the text tables stay for people."""
 
 from __future__ import annotations
 
 import csv
 import io
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from typing import Any
 
 from rbcli.render.csvunits import unit
@@ -88,13 +69,15 @@ def values(data: Any, path: str = "", defined: Any = True) -> Iterator[tuple[str
         yield path, data, defined is not False
 
 
-def rows(data: dict, command: str, digits: int | None = None) -> Iterator[list[str]]:
-    """The CSV rows (quantity, value, text, unit) of a command's JSON ``data``."""
+def rows(data: dict, command: str, digits: int | None = None,
+         params: Mapping[str, str] | None = None) -> Iterator[list[str]]:
+    """The CSV rows (quantity, value, text, unit) of a command's JSON ``data`` (``params``:
+    the SI unit of each of the command's parameters, :func:`rbcli.render.csvunits.lookup`)."""
     for path, v, ok in values(data):
         if isinstance(v, bool):
             yield [path, "", "true" if v else "false", ""]
         elif isinstance(v, (int, float)):
-            yield [path, number(v, digits) if ok else "", "", unit(command, path, data)]
+            yield [path, number(v, digits) if ok else "", "", unit(command, path, data, params)]
         elif isinstance(v, str):
             yield [path, "", csv_text(v), ""]
         else:  # None, [] or {}: not defined
@@ -102,7 +85,7 @@ def rows(data: dict, command: str, digits: int | None = None) -> Iterator[list[s
 
 
 def render(data: dict, command: str, *, digits: int | None = None, file: str | None = None,
-           header: bool = True) -> str:
+           header: bool = True, params: Mapping[str, str] | None = None) -> str:
     """The CSV text of one result's JSON (see the module docstring for the layout).
 
     ``file``: add the leading ``file`` column (several bodies); ``header``: write the header
@@ -112,5 +95,5 @@ def render(data: dict, command: str, *, digits: int | None = None, file: str | N
     lead = [] if file is None else [csv_text(file)]
     if header:
         w.writerow((["file"] if file is not None else []) + list(COLUMNS))
-    w.writerows(lead + r for r in rows(data, command, digits))
+    w.writerows(lead + r for r in rows(data, command, digits, params))
     return buf.getvalue()

@@ -6,7 +6,8 @@ JSON is always SI; tables show
   composed from them, inertia in g·mm² for ``mm,g``); SI by default;
 - :class:`ShopUnits` — the balance tables' shop units (g, mm, g·mm, µm) unless ``--units``;
 - :class:`BodyUnits` — a body's bare units (its file's ``units``, :mod:`rbcli.io.bare`), in
-  which the "options" table echoes the options as understood (:func:`echo_rows`).
+  which the "options" table echoes the options as understood
+  (:func:`rbcli.render.echo.echo_rows`).
 
 :data:`RPM` is the one rad/s → rev/min factor.
 """
@@ -14,7 +15,7 @@ JSON is always SI; tables show
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping
+from collections.abc import Mapping
 from typing import Any
 
 from rbcli.errors import ParamError, literal, option_name
@@ -22,7 +23,7 @@ from rbcli.io import bare
 from rbcli.io import units as un
 from rbcli.render.fmt import num
 
-__all__ = ["RPM", "DisplayUnits", "ShopUnits", "BodyUnits", "echo_rows"]
+__all__ = ["RPM", "DisplayUnits", "ShopUnits", "BodyUnits"]
 
 #: rad/s -> rev/min
 RPM = 30.0 / math.pi
@@ -206,43 +207,3 @@ def _typed(typed: str | None, kind: str) -> tuple[float, str] | None:
         return un.to_si(f"1 {typed}", kind), un.canonical_unit(typed)
     except un.UnitError:
         return None
-
-
-def echo_rows(options: Any, body: Any, spec: Iterable[tuple[str, str, str]]) -> tuple[tuple[str, str, str], ...]:
-    """The "options" table of a command: one row per parameter the caller gave
-    (``options.given``), in the order of ``spec``.
-
-    ``spec`` rows are (parameter, attribute of ``options``, how to show it): a quantity kind
-    (``"length"``, ``"angular_speed"``, ...: the value in the body's bare unit),
-    ``"direction"``, ``"point"`` (``com``/``origin`` as words, else a length), ``"deg"``
-    (degrees), ``"count"``, ``"grade"`` (``G6.3``), ``"text"`` or ``"=UNIT"`` (a plain number
-    in ``UNIT``, e.g. ``"=C/A"``).
-    """
-    bu = BodyUnits.of(body)
-    rows = []
-    given = set(options.given)
-    typed = dict(getattr(options, "typed", ()))
-    for param, attr, how in spec:
-        if param not in given:
-            continue
-        v = options
-        for part in attr.split("."):
-            v = getattr(v, part)
-        opt = option_name(param)
-        if how == "direction":
-            rows.append((opt, bu.show(v, "dimensionless"), "direction"))
-        elif how == "point":
-            rows.append((opt, v, "") if isinstance(v, str) else bu.echo(param, v, "length", typed.get(param)))
-        elif how == "deg":
-            rows.append((opt, f"{v:.6g}", "deg"))
-        elif how == "count":
-            rows.append((opt, str(v), ""))
-        elif how == "grade":
-            rows.append((opt, f"G{v:g}", "mm/s"))
-        elif how == "text":
-            rows.append((opt, str(v), ""))
-        elif how.startswith("="):  # a plain number in the unit after "="
-            rows.append((opt, f"{v:.6g}", how[1:]))
-        else:
-            rows.append(bu.echo(param, v, how, typed.get(param)))
-    return tuple(rows)

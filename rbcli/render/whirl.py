@@ -1,14 +1,7 @@
 """Tables, figures and the report section of ``rbcli whirl`` (the JSON is the result's
-own ``to_json()``).
-
-Everything here is formatting: every number comes finished from
-:class:`rbcli.api.whirlresult.WhirlResult`, and every display row (the echo of the
-options as understood included) is built here from it. Tables show speeds and critical
-speeds in rpm and rad/s, whirl frequencies in rad/s and cpm (cycles per minute: on the
-Campbell diagram the 1× line is the diagonal), positions in the display length unit (m
-unless ``--units``), displacements in µm, forces in N, stiffness in N/m and damping in
-N s/m.
-"""
+``to_json()``): formatting only, from :class:`rbcli.api.whirlresult.WhirlResult`. Speeds
+in rpm and rad/s, whirl frequencies in rad/s and cpm, positions in the display length
+unit, displacements in µm, forces in N."""
 
 from __future__ import annotations
 
@@ -19,13 +12,14 @@ import numpy as np
 
 from rbcli.core.whirl.response import phase_deg
 from rbcli.render import echo
-from rbcli.render.fmt import num
-from rbcli.render.text import Doc
-from rbcli.render.units import RPM, BodyUnits, DisplayUnits
+from rbcli.render.fmt import num, said
+from rbcli.render.plots import figure, figure_bytes, style
+from rbcli.render.report import Figure, Section
+from rbcli.render.text import Doc, Note
+from rbcli.render.units import RPM, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.whirlresult import WhirlResult
-    from rbcli.render.report import Section
 
 __all__ = ["document", "echo_rows", "campbell_figure", "response_figure", "map_figure",
            "report_section", "conventions_note"]
@@ -372,8 +366,6 @@ def campbell_figure(res: WhirlResult):
     critical speeds marked (filled, on top: the unbalance drives it; coincident ones one mark,
     one label); the operating speed; growing modes crossed; the legend below the axes. A
     matplotlib Figure."""
-    from rbcli.render.plots import figure
-
     cb = res.campbell
     sp = np.asarray(cb.speeds) * RPM
     fr = np.asarray(cb.frequencies) * RPM
@@ -431,8 +423,6 @@ def map_figure(res: WhirlResult):
     bearings' stiffness (N/m), log-log; each bearing's kxx and kyy against speed over the
     speed range drawn on it (where they meet a branch: that critical speed); the operating
     speed. A matplotlib Figure."""
-    from rbcli.render.plots import figure, style
-
     cm = res.critical_speed_map
     k = np.asarray(cm.stiffness)
     fig, axes = figure(f"whirl: {res.name} — undamped critical speed map", size=(7.5, 5.0))
@@ -470,8 +460,6 @@ def response_figure(res: WhirlResult):
     """The unbalance response: per bearing the displacement amplitude (µm; log scale
     without damping) and its phase (high spot, rotor frame) against speed (rpm), peaks
     and half-power points marked, the operating speed. A matplotlib Figure."""
-    from rbcli.render.plots import figure, style
-
     resp = res.response
     sp = np.asarray(resp.speeds) * RPM
     fig, axes = figure(f"whirl: {res.name} — unbalance response", nrows=2, ncols=1, size=(7.5, 6.0))
@@ -542,10 +530,6 @@ def report_section(res: WhirlResult, du: DisplayUnits, digits: int, *, figures: 
     ``rbcli.render.reportdoc`` would build it from a computed section ``c`` (``c.result`` a
     :class:`rbcli.api.whirlresult.WhirlResult`) as
     ``report_section(c.result, du, digits, key=c.key, title=c.title)``."""
-    from rbcli.render.fmt import said
-    from rbcli.render.plots import figure_bytes
-    from rbcli.render.report import Figure, Section
-    from rbcli.render.text import Note
 
     doc = Doc()
     document(doc, res, du, digits, heading=False)

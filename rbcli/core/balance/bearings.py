@@ -16,23 +16,15 @@ class BearingForces:
 
     Attributes
     ----------
-    speed : float — rad/s, as given (omega = speed e_z)
-    bearings : (float, float) | None — m, bearing positions along the shaft
-    forces : (complex, complex) | () — N, force the rotor exerts on each bearing, rotor-fixed
-        shaft frame ('with' sense)
-    plane_unbalances : (complex, complex) | () — kg m, equivalent unbalance in each bearing
-        plane, F_i / Omega^2 (the ISO tolerance quantity)
-    static_loads : (float, float) | () — N, gravity loads (shaft horizontal), positive =
-        the bearing carries the rotor's weight downward; negative = hold-down (overhung)
-    g : float — m/s^2
-    centrifugal_force : complex — N, total rotating force Omega^2 U (= F_1 + F_2)
-    angular_momentum : (3,) ndarray — kg m^2/s, L = J_G omega about the com, shaft frame
-    torque : (3,) ndarray — N m, omega x L about the com, shaft frame (rotor-fixed): the
-        torque the supports must apply to keep the rotor turning about the shaft
-    torque_origin : (3,) ndarray — N m, the same about the shaft point z = 0 (sheet §2.6 N_O)
-    tol_force : float — N, tolerance used for the angle flags
-    angle_sense : str
-    """
+    speed : float — rad/s (omega = speed e_z); bearings : (float, float) or None — m
+    forces : (complex, complex) or () — N, on each bearing, rotor-fixed shaft frame
+    plane_unbalances : (complex, complex) or () — kg m, F_i / Omega^2 (the ISO quantity)
+    static_loads : (float, float) or () — N, gravity with the shaft horizontal (negative:
+        hold-down)
+    g : float — m/s^2; centrifugal_force : complex — N, Omega^2 U = F_1 + F_2
+    angular_momentum, torque, torque_origin : (3,) ndarray — L = J_G omega (kg m^2/s) and
+        omega x L about the com and about z = 0 (N m), shaft frame
+    tol_force : float — N, for the angle flags; angle_sense : str"""
 
     speed: float
     bearings: tuple[float, float] | None
@@ -54,30 +46,12 @@ def bearing_forces(
     *,
     g: float = STANDARD_GRAVITY,
 ) -> BearingForces:
-    """Rotating bearing forces (rotor-fixed), static loads and the torque omega x L.
+    """Rotating bearing forces (rotor-fixed), static loads and the torque omega x L, at speed
+    Omega (rad/s), with bearings (z_1, z_2) m and g (m/s^2): a :class:`BearingForces`.
 
-    Parameters
-    ----------
-    unb : Unbalance
-    speed : float — rad/s, Omega (sign irrelevant for the forces; omega = Omega e_z)
-    bearings : (z_1, z_2), optional — m, z_1 != z_2
-    g : float — m/s^2, for the static loads
-
-    Returns
-    -------
-    BearingForces
-
-    Notes
-    -----
-    Sheet §2.6: ``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``,
-    ``F_2 = Omega^2 (P - z_1 U)/(z_2 - z_1)``,
-    the force each bearing receives from the rotor, fixed in the rotor frame (it turns with
-    the rotor in the lab). Static loads by the lever rule on M g:
-    ``W_1 = M g (z_2 - z_G)/(z_2 - z_1)``, ``W_2 = M g (z_G - z_1)/(z_2 - z_1)`` (shaft
-    horizontal; W_i < 0 on the far bearing of an overhung rotor). Torque: L = J_G omega,
-    N_G = omega x L about the com; about z = 0, N_O = omega x (J_O omega) =
-    Omega^2 (D_yz, -D_xz, 0) with D about z = 0 (i.e. N_x + i N_y = -i Omega^2 P).
-    """
+    Sheet §2.6: ``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``, ``F_2 = Omega^2 (P - z_1 U)/(z_2 -
+    z_1)``; ``W_1 = M g (z_2 - z_G)/(z_2 - z_1)``, ``W_2 = M g (z_G - z_1)/(z_2 - z_1)``;
+    N_G = omega x (J_G omega); about z = 0, N_x + i N_y = -i Omega^2 P."""
     W = finite(speed, "speed")
     gg = finite(g, "g")
     U, P = unb.static, unb.moment

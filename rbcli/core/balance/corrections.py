@@ -23,20 +23,10 @@ from rbcli.core.balance.frame import Unbalance, add_point_masses, plane_unbalanc
 
 @dataclass(frozen=True, eq=False)
 class PlaneCorrection:
-    """One correction mass to ADD (remove it at ``remove_angle_deg``).
-
-    Attributes
-    ----------
-    name : str — "A", "B" or "static"
-    z : float | None — m, plane position along the shaft (None for the static correction,
-        which may go in any plane)
-    radius : float — m
-    unbalance : complex — kg m, the correction C (shaft frame, 'with rotation' sense)
-    mass : float — kg, |C| / radius
-    angle_deg : float — deg, reported sense, [0, 360); 0.0 when undefined
-    angle_defined : bool — False when the correction is zero (to tolerance)
-    remove_angle_deg : float — deg, angle_deg + 180 (mod 360)
-    """
+    """One correction mass to ADD (or remove at ``remove_angle_deg``): ``name`` ("A", "B",
+    "static"), ``z`` (m; None for the static one), ``radius`` (m), ``unbalance`` C (kg m),
+    ``mass`` |C|/radius (kg), ``angle_deg`` (reported sense; ``angle_defined`` False when
+    zero)."""
 
     name: str
     z: float | None
@@ -65,21 +55,10 @@ def _plane_correction(
 
 @dataclass(frozen=True, eq=False)
 class Residual:
-    """Unbalance of the rotor with corrections added (sheet §1.5 step 4).
-
-    Attributes
-    ----------
-    mass : float — kg, rotor plus correction masses
-    static : complex — kg m, U + sum C
-    moment : complex — kg m^2, P + sum z C, about z = 0
-    couple : complex — kg m^2, about the com of the corrected rotor
-    planes : (float, float) — m, the correction planes
-    plane_unbalances : (complex, complex) — kg m, equivalent residual unbalances in the
-        correction planes (sheet §2.5)
-    eccentricity : float — m, |static| / mass
-    tol_static, tol_couple, tol_plane : float — tolerances used for the angle flags
-    angle_sense : str
-    """
+    """Unbalance of the rotor with corrections added (sheet §1.5 step 4): ``mass`` (kg),
+    ``static`` U + sum C (kg m), ``moment`` about z = 0 and ``couple`` about the new com
+    (kg m^2), ``planes``, ``plane_unbalances`` (kg m, §2.5), ``eccentricity`` (m), the
+    tolerances of the angle flags and ``angle_sense``."""
 
     mass: float
     static: complex
@@ -100,24 +79,15 @@ class Corrections:
     Attributes
     ----------
     source : Unbalance — the rotor corrected
-    planes : (float, float) — m, z_A, z_B
-    radii : (float, float) — m, r_A, r_B
+    planes, radii : (float, float) — m, z_A, z_B and r_A, r_B
     a, b : PlaneCorrection — masses to add in planes A and B
-    static : PlaneCorrection — single-plane (static) correction C = -U at radius r_A; it
-        leaves the moment P + z C uncorrected
-    narrow_planes : bool — |z_B - z_A| < NARROW_PLANE_FRACTION * narrow_reference
-    narrow_ratio : float | None — |z_B - z_A| / narrow_reference (None if the reference is 0)
-    narrow_reference : float — m, the bearing span if bearings were given, else the rotor's
-        equivalent axial length (Unbalance.axial_length)
-    narrow_reference_kind : str — "bearing span" or "rotor axial length"
-    bearings : (float, float) | None — m, the bearings given for the narrow-plane rule
-    residual : Residual — the rotor with a and b added (zero to round-off unless rounded)
-    rounded : bool
-    mass_step : float | None — kg
-    angle_step_deg : float | None — deg
-    ideal : Corrections | None — the unrounded corrections (when rounded)
-    warnings : tuple[str, ...]
-    """
+    static : PlaneCorrection — the single-plane correction C = -U at r_A
+    narrow_planes, narrow_ratio, narrow_reference, narrow_reference_kind — the narrow-plane rule:
+        |z_B - z_A| against NARROW_PLANE_FRACTION of the bearing span or the rotor's length
+    bearings : (float, float) or None — m, as given for that rule
+    residual : Residual — the rotor with a and b added
+    rounded, mass_step, angle_step_deg, ideal — the rounding (kg, deg) and the unrounded
+    warnings : tuple of str"""
 
     source: Unbalance
     planes: tuple[float, float]
@@ -246,33 +216,16 @@ def corrections(
 ) -> Corrections:
     """Two-plane correction masses and angles to ADD, and the single-plane static correction.
 
-    Parameters
-    ----------
-    unb : Unbalance
-    planes : (z_A, z_B) — m, correction planes along the shaft, z_A != z_B
-    radii : float or (r_A, r_B) — m, > 0, radius at which each mass is fixed
-    bearings : (z_1, z_2), optional — m; only used for the narrow-plane rule
-
-    Returns
-    -------
-    Corrections
-
-    Raises
-    ------
-    ValueError
-        z_A == z_B; a radius <= 0; non-finite numbers.
+    ``unb`` the Unbalance; ``planes`` (z_A, z_B) m, distinct; ``radii`` r or (r_A, r_B) m, > 0;
+    ``bearings`` (z_1, z_2) m for the narrow-plane rule only. ValueError for equal planes, a
+    radius <= 0, non-finite numbers.
 
     Notes
     -----
-    Sheet §2.5: cancel force and moment, ``U + C_A + C_B = 0``, ``P + z_A C_A + z_B C_B = 0``:
-
-    ``C_A = (P - z_B U)/(z_B - z_A)``, ``C_B = (z_A U - P)/(z_B - z_A)``,
-    ``m = |C|/r`` at ``arg C`` (remove at +180 deg). Static correction ``C = -U`` at r_A.
-
-    Narrow planes (sheet §7.9): warned when ``|z_B - z_A| < 0.2 L`` with L the bearing span
-    when bearings are given, else the rotor's equivalent axial length
-    ``sqrt(6 (J_xx + J_yy - J_zz)/M)`` (never narrow for a rotor of zero axial extent).
-    """
+    Sheet §2.5: ``U + C_A + C_B = 0``, ``P + z_A C_A + z_B C_B = 0``, so
+    ``C_A = (P - z_B U)/(z_B - z_A)``, ``C_B = (z_A U - P)/(z_B - z_A)``, ``m = |C|/r`` at
+    ``arg C``. Narrow planes (§7.9): ``|z_B - z_A| < 0.2 L``, L the bearing span or
+    ``sqrt(6 (J_xx + J_yy - J_zz)/M)``."""
     zA, zB = pair(planes, "planes")
     if zA == zB:
         raise BalanceValueError("planes", "the two correction planes must be at different positions (z_A == z_B)")
@@ -344,23 +297,10 @@ def round_corrections(
     *,
     bearings: object | None = None,
 ) -> Corrections:
-    """Round correction masses and angles, and recompute the residual.
-
-    Parameters
-    ----------
-    corr : Corrections — ideal (or already rounded: the ideal ones are rounded again)
-    mass_step : float, optional — kg, > 0; masses go to the nearest multiple
-    angle_step_deg : float, optional — deg, in (0, 360]; reported angles go to the nearest
-        multiple (in the reported sense, so "against" shops get their own multiples)
-    bearings : (z_1, z_2), optional — for the narrow-plane rule, as in :func:`corrections`;
-        default: the bearings the ideal corrections were computed with
-
-    Returns
-    -------
-    Corrections — ``rounded=True``, ``ideal`` = the unrounded corrections, and
-    ``residual`` = the unbalance of the rotor with the ROUNDED masses added (sheet §1.5
-    step 4): ``U_res = U + C_A' + C_B'``, ``P_res = P + z_A C_A' + z_B C_B'``.
-    """
+    """Round correction masses (to ``mass_step`` kg) and reported angles (to ``angle_step_deg``,
+    in the reported sense) of ``corr`` (its ideal ones), and recompute the residual with the
+    ROUNDED masses (sheet §1.5 step 4: ``U_res = U + C_A' + C_B'``, ``P_res = P + z_A C_A' +
+    z_B C_B'``); ``bearings`` as :func:`corrections`."""
     if mass_step is not None:
         mass_step = positive(mass_step, "mass step", "mass_step")
     if angle_step_deg is not None:
@@ -468,24 +408,9 @@ def _plain_wrap(a: float) -> float:
 def split_to_positions(
     mass: float, angle_deg: float, n_positions: int, offset_deg: float = 0.0
 ) -> Split:
-    """Split a mass onto the two neighbouring of n equally spaced positions (blades, holes).
-
-    Parameters
-    ----------
-    mass : float — any unit, >= 0
-    angle_deg : float — deg, where the mass should go
-    n_positions : int — >= 3, positions at ``offset_deg + k * 360/n``, k = 0..n-1
-    offset_deg : float — deg, angle of position 0
-
-    Returns
-    -------
-    Split — masses (both >= 0) at positions k and k+1 (mod n) with angle between them.
-
-    Notes
-    -----
-    Sheet §2.5, T22: 18 g @ 100 deg onto 8 positions (every 45 deg) -> 14.6009 g @ 90 deg,
-    4.4204 g @ 135 deg.
-    """
+    """Split a mass onto the two neighbouring of n equally spaced positions at
+    ``offset_deg + k * 360/n``: a Split, both masses >= 0 (sheet §2.5, T22: 18 g @ 100 deg onto 8
+    positions -> 14.6009 g @ 90 deg, 4.4204 g @ 135 deg)."""
     m = finite(mass, "mass")
     if m < 0.0:
         raise BalanceValueError("mass", "mass to split must not be negative")
@@ -523,22 +448,10 @@ def split_to_positions(
 
 @dataclass(frozen=True, eq=False)
 class PositionCorrections:
-    """Two-plane corrections split onto n equally spaced positions (holes, blades).
-
-    Attributes
-    ----------
-    ideal : Corrections — the unrounded two-plane corrections that were split
-    n_positions : int
-    pitch_deg : float — deg, 360 / n
-    offset_deg : float — deg, reported angle of position 1 (default 0: on the mark)
-    splits : (Split, Split) — planes A and B: masses (kg, rounded if ``mass_step``) at
-        reported angles; ``positions`` are 1-based position numbers (position k sits at
-        offset + (k - 1) pitch in the reported sense)
-    mass_step : float | None — kg
-    corrections : Corrections — each plane's net correction (the vector sum of its two
-        masses) with the residual of the rotor with all four masses added (their real
-        masses in the com shift); ``rounded`` iff ``mass_step`` was given
-    """
+    """Two-plane corrections split onto n equally spaced positions: ``ideal``, ``n_positions``,
+    ``pitch_deg``, ``offset_deg`` (position 1's angle), ``splits`` (per plane, the masses at
+    1-based ``positions``), ``mass_step`` and ``corrections`` (each plane's net and the
+    residual with all four masses)."""
 
     ideal: Corrections
     n_positions: int
@@ -569,27 +482,12 @@ def split_corrections(
     mass_step: float | None = None,
     offset_deg: float = 0.0,
 ) -> PositionCorrections:
-    """Split each plane's correction onto the two neighbouring of n fixed positions.
+    """Split each plane's correction onto the two neighbouring of ``n_positions`` fixed positions
+    (position 1 at ``offset_deg``), each mass rounded to ``mass_step`` when given.
 
-    Parameters
-    ----------
-    corr : Corrections — ideal (or rounded: its ideal corrections are split)
-    n_positions : int — >= 3, equally spaced positions per plane (holes, blades)
-    mass_step : float, optional — kg, > 0; each split mass rounded half-up to a multiple
-    offset_deg : float — deg, reported angle of position 1 (default 0: on the reference mark)
-
-    Returns
-    -------
-    PositionCorrections
-
-    Notes
-    -----
-    Sheet §2.5 ("fixed positions"): ``m1 = |C| sin(a2 - phi)/sin(a2 - a1)``,
-    ``m2 = |C| sin(phi - a1)/sin(a2 - a1)`` (:func:`split_to_positions`), in the reported
-    angle sense (the set of positions is the same in either sense). The two masses sum to C
-    exactly; after rounding, each plane's net correction is their vector sum and the residual
-    (sheet §1.5 step 4) is that of the rotor with all the masses added.
-    """
+    Sheet §2.5: ``m1 = |C| sin(a2 - phi)/sin(a2 - a1)``, ``m2 = |C| sin(phi - a1)/sin(a2 - a1)``;
+    after rounding each plane's net correction is their vector sum and the residual that of
+    the rotor with all the masses added."""
     if mass_step is not None:
         mass_step = positive(mass_step, "mass step", "mass_step")
     ideal = corr.ideal if corr.ideal is not None else corr

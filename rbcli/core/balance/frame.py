@@ -42,11 +42,6 @@ class ShaftFrame:
         """(3,) unit shaft direction e_z, body frame."""
         return self.rotation[2]
 
-    def to_shaft(self, points: object) -> np.ndarray:
-        """Body-frame point(s) (..., 3) -> shaft-frame coordinates (..., 3), m."""
-        p = np.asarray(points, dtype=float)
-        return (p - self.origin) @ self.rotation.T
-
     def to_body(self, points: object) -> np.ndarray:
         """Shaft-frame coordinates (..., 3) -> body-frame point(s) (..., 3), m."""
         s = np.asarray(points, dtype=float)
@@ -59,38 +54,14 @@ def shaft_frame(
     reference: object | None = None,
     zero_mark_deg: float = 0.0,
 ) -> ShaftFrame:
-    """The rotor-fixed shaft frame (e_x, e_y, e_z) of a shaft.
+    """The rotor-fixed shaft frame (e_x, e_y, e_z) of a shaft along ``axis`` through ``through``
+    (z = 0 there), with the 0° mark along ``reference`` (its part across the shaft; default the
+    rule below) turned by ``zero_mark_deg`` about +e_z. ValueError for a zero or non-finite
+    axis, or a reference along the shaft.
 
-    Parameters
-    ----------
-    axis : (3,) array_like — shaft direction, body frame, any non-zero length
-    through : (3,) array_like — m, a point of the shaft, body frame; z = 0 there
-    reference : (3,) array_like, optional — direction of the reference mark (body frame);
-        only its part at right angles to the shaft is used. Default: the rule below.
-    zero_mark_deg : float — deg; the reference mark is turned this far about +e_z from
-        the direction the rule (or ``reference``) gives
-
-    Returns
-    -------
-    ShaftFrame
-
-    Raises
-    ------
-    ValueError
-        zero or non-finite axis; ``reference`` parallel to the shaft.
-
-    Notes
-    -----
-    Rule (deterministic, continuous near every body axis):
-    ``e_z = axis/|axis|``; ``e_x`` = body x projected at right angles to e_z and
-    normalised, unless ``|e_z . x| > 0.9`` (the shaft within 25.8 deg of body x), when body
-    y projected is used instead; ``e_y = e_z x e_x``. The projection used always has length
-    >= 0.436, so e_x is well conditioned, and the switch lies away from the body axes and
-    the 45-degree diagonals. Consequences: shaft along +z -> the body frame exactly;
-    shaft along x -> e_x = body y, e_y = body z; shaft along y -> e_x = body x,
-    e_y = -body z. Sheet §2.1 asks for the mark to be explicit for a general shaft: pass
-    ``reference`` to fix it.
-    """
+    ``e_x`` is body x projected across e_z, or body y when ``|e_z . x| > 0.9`` (projection
+    >= 0.436, the switch away from the axes and diagonals); ``e_y = e_z x e_x``. A shaft along
+    +z gives the body frame."""
     a = vec3(axis, "shaft axis", "axis")
     n = float(np.linalg.norm(a))
     if not n > 0.0:
@@ -129,34 +100,21 @@ class Unbalance:
 
     Attributes
     ----------
-    mass : float — kg
-    com : (3,) ndarray — m, body frame (input, kept so corrections can be applied)
-    inertia_com : (3, 3) ndarray — kg m^2, tensor about the com, body frame (input)
+    mass, com, inertia_com — kg, m, kg m^2: the input (body frame, tensor about the com)
     frame : ShaftFrame
-    angle_sense : str — "with" or "against" (how ``*_deg`` angles are reported)
-    com_shaft : (3,) ndarray — m, (x_G, y_G, z_G) of the com in the shaft frame
-    inertia_shaft : (3, 3) ndarray — kg m^2, tensor about the com in shaft axes
-    static : complex — kg m, U = M (x_G + i y_G)
-    moment : complex — kg m^2, P about z = 0
-    couple : complex — kg m^2, P_G = P - z_G U, about the com
-    eccentricity : float — m, distance of the com from the shaft, |U|/M
-    tilt_deg : float — deg, angle between the shaft and the nearest principal axis (about the com)
-    tilt_azimuth_deg : float — deg, direction (shaft frame, reported sense) the +z end of
-        that principal axis leans toward; 0.0 when undefined
-    tilt_azimuth_defined : bool
-    tilt_well_defined : bool — False when the rotor is (nearly) isotropic about the com:
-        the moment of the nearest principal axis is within TILT_GAP_RTOL of another, its
-        principal axes are ill-defined and tilt_deg says nothing useful
-    principal_gap : float — kg m^2, distance of the nearest axis's principal moment from
-        the other principal moments (0.0 when all are equal)
+    angle_sense : str — "with" or "against" (the ``*_deg`` angles)
+    com_shaft, inertia_shaft — (x_G, y_G, z_G) (m) and the tensor about the com, shaft axes
+    static, moment, couple : complex — U (kg m), P about z = 0 and P_G about the com (kg m^2)
+    eccentricity : float — m, |U|/M
+    tilt_deg, tilt_azimuth_deg : float — deg, from the shaft to the nearest principal axis, and
+        where its +z end leans (shaft frame; 0.0 when undefined: ``tilt_azimuth_defined``)
+    tilt_well_defined : bool — False when that axis's moment is within TILT_GAP_RTOL of another
+    principal_gap : float — kg m^2, its moment's distance from the others
     length_scale : float — m, max(sqrt(trace J_G / M), |com - through|)
-    tol_eccentricity : float — m, BALANCE_RTOL * length_scale (rtol as given)
-    tol_couple : float — kg m^2, rtol * trace(J_G)
-    statically_balanced : bool — eccentricity <= tol_eccentricity
-    dynamically_balanced : bool — statically balanced and |P_G| <= tol_couple
+    tol_eccentricity, tol_couple — BALANCE_RTOL * length_scale (m), rtol * trace(J_G) (kg m^2)
+    statically_balanced, dynamically_balanced : bool — e <= tol; and |P_G| <= tol_couple
     rtol : float
-    warnings : tuple[str, ...]
-    """
+    warnings : tuple of str"""
 
     mass: float
     com: np.ndarray
@@ -246,9 +204,6 @@ class Unbalance:
         s = max(float(J[0, 0] + J[1, 1] - J[2, 2]), 0.0)
         return math.sqrt(6.0 * s / self.mass)
 
-    def moment_about(self, z0: float) -> complex:
-        """kg m^2 — moment unbalance about z = z0: ``P(z0) = P - z0 U`` (sheet §7.2)."""
-        return self.moment - float(z0) * self.static
 
 def _tilt(J_body: np.ndarray, frame: ShaftFrame) -> tuple[float, complex, float, float]:
     """Tilt (rad) of the nearest principal axis, its shaft-frame lean (complex), gap, max |moment|.
@@ -309,10 +264,8 @@ def unbalance(
     ----------
     mass : float — kg, > 0
     com : (3,) array_like — m, centre of mass, body frame
-    inertia_com : (3, 3) array_like — kg m^2, inertia TENSOR about the com, body frame
-        (off-diagonals -∫xy dm)
-    axis : (3,) array_like — shaft direction, body frame (default body z)
-    through : (3,) array_like — m, a point of the shaft, body frame (default origin); z = 0
+    inertia_com : (3, 3) array_like — kg m^2, TENSOR about the com, body frame
+    axis, through : (3,) array_like — the shaft (default body z) and its point z = 0 (m)
     reference, zero_mark_deg : see :func:`shaft_frame`
     angle_sense : {"with", "against"} — report angles with or against rotation
     rtol : float — relative tolerance of the ideal balanced verdicts (default 1e-9)
@@ -328,23 +281,12 @@ def unbalance(
 
     Notes
     -----
-    Sheet §2.3 with the parallel-axis theorem: in shaft axes, with (x_G, y_G, z_G) the com
-    and J the tensor about the com, ``D_xz,G = -J[0, 2]``, ``D_yz,G = -J[1, 2]``,
-
-    ``U = M (x_G + i y_G)``, ``P_G = D_xz,G + i D_yz,G``, ``P = P_G + z_G U`` (about z = 0).
-
-    Tilt (sheet §2.4): eigenvectors of J_G; the one with the largest |e_z| component
-    (a degenerate eigenspace is handled as a whole: the tilt is the angle from the shaft to
-    the eigenspace). ``tilt = atan2(|e_perp|, e_z)``; its azimuth is arg(e_x + i e_y) with e
-    oriented so that e_z > 0.
-
-    Verdicts (one rule, here): with ``l = max(sqrt(trace J_G / M), |com - through|)`` —
-    a size of the rotor that also bounds the round-off of the shaft-frame coordinates —
-    statically balanced iff ``e <= rtol * l``; dynamically balanced iff also
-    ``|P_G| <= rtol * trace(J_G)`` (= rtol M l_g^2). These are ideal (geometric) verdicts:
-    "balanced to the accuracy of the arithmetic and the input". Tolerances for real
-    rotors come from an ISO grade (:func:`iso_check`).
-    """
+    Sheet §2.3, in shaft axes: ``D_xz,G = -J[0, 2]``, ``D_yz,G = -J[1, 2]``,
+    ``U = M (x_G + i y_G)``, ``P_G = D_xz,G + i D_yz,G``, ``P = P_G + z_G U``. Tilt (§2.4): the
+    eigenvector (or eigenspace) of J_G nearest the shaft, ``tilt = atan2(|e_perp|, e_z)``.
+    Verdicts, ideal (to the arithmetic and the input): statically balanced iff
+    ``e <= rtol * l``, dynamically iff also ``|P_G| <= rtol * trace(J_G)``, with
+    ``l = max(sqrt(trace J_G / M), |com - through|)``; real tolerances: :func:`iso_check`."""
     M = positive(mass, "mass")
     c = vec3(com, "com")
     J = np.asarray(inertia_com, dtype=float)
@@ -417,24 +359,9 @@ def unbalance(
 def plane_unbalances(
     static: complex, moment: complex, z1: float, z2: float
 ) -> tuple[complex, complex]:
-    """Equivalent unbalances in two planes (what a balancing machine shows), kg m.
-
-    Parameters
-    ----------
-    static : complex — kg m, U
-    moment : complex — kg m^2, P about z = 0
-    z1, z2 : float — m, plane positions, z1 != z2
-
-    Returns
-    -------
-    (U_1, U_2) : complex — kg m, with U_1 + U_2 = U and z1 U_1 + z2 U_2 = P
-
-    Notes
-    -----
-    Sheet §2.5: ``U_1 = (z2 U - P)/(z2 - z1)``, ``U_2 = (P - z1 U)/(z2 - z1)``. The same
-    numbers are the bearing forces divided by Omega^2 (sheet §2.6) and the ISO tolerance
-    quantity (sheet §1.5).
-    """
+    """Equivalent unbalances (U_1, U_2) in planes z1 != z2 (kg m; what a balancing machine
+    shows) of U (kg m) and P about z = 0 (kg m^2): U_1 + U_2 = U, z1 U_1 + z2 U_2 = P (sheet §2.5;
+    also the bearing forces over Omega^2, §2.6, and the ISO quantity, §1.5)."""
     z1 = finite(z1, "plane position", "planes")
     z2 = finite(z2, "plane position", "planes")
     if z1 == z2:
@@ -444,22 +371,9 @@ def plane_unbalances(
 
 
 def add_point_masses(unb: Unbalance, points: Sequence[tuple[float, object]]) -> Unbalance:
-    """Unbalance of the rotor with point masses added.
-
-    Parameters
-    ----------
-    unb : Unbalance
-    points : sequence of (mass kg, (3,) position m, body frame)
-
-    Returns
-    -------
-    Unbalance — same shaft, reference mark, angle sense and rtol.
-
-    Notes
-    -----
-    Mass, com and the tensor about the new com by the parallel-axis theorem (sheet §2.2,
-    a point mass has J = 0 about itself).
-    """
+    """Unbalance of the rotor with point masses (kg, position m in the body frame) added: the
+    same shaft, mark, angle sense and rtol; mass, com and tensor by the parallel-axis theorem
+    (sheet §2.2)."""
     M = unb.mass
     c = np.array(unb.com)
     pts = [(float(m), vec3(p, "point position", "points")) for m, p in points]

@@ -14,23 +14,9 @@ from rbcli.core.balance.frame import Unbalance, plane_unbalances
 
 
 def permissible_unbalance(grade: float, speed: float, mass: float) -> tuple[float, float]:
-    """ISO 21940-11 permissible specific and total residual unbalance.
-
-    Parameters
-    ----------
-    grade : float — G in mm/s (the number in "G 6.3"), 0.4 <= G <= 4000
-    speed : float — rad/s, maximum service speed Omega, > 0
-    mass : float — kg, rotor mass
-
-    Returns
-    -------
-    (e_per, U_per) : (float, float) — m and kg m
-
-    Notes
-    -----
-    Sheet §1.2: ``e_per = G / Omega`` with G in m/s (G[mm/s] * 1e-3), ``U_per = e_per M``.
-    Shop form: U_per[g mm] = 9549.2966 G M[kg] / n[rpm].
-    """
+    """ISO 21940-11 permissible residual unbalance (e_per m, U_per kg m) of grade G (mm/s,
+    0.4 to 4000) at speed Omega (rad/s) for mass M (kg): ``e_per = G / Omega`` (G in m/s),
+    ``U_per = e_per M`` (sheet §1.2; shop form U_per[g mm] = 9549.2966 G M[kg] / n[rpm])."""
     G = finite(grade, "grade")
     if not ISO_GRADE_MIN <= G <= ISO_GRADE_MAX:
         raise BalanceValueError(
@@ -45,18 +31,8 @@ def permissible_unbalance(grade: float, speed: float, mass: float) -> tuple[floa
 
 
 def achieved_grade(residual_unbalance: float, mass: float, speed: float) -> float:
-    """Achieved balance grade of a residual unbalance, mm/s.
-
-    Parameters
-    ----------
-    residual_unbalance : float — kg m
-    mass : float — kg
-    speed : float — rad/s
-
-    Notes
-    -----
-    Sheet §1.2: ``G = |U| / M * Omega`` (m/s), times 1e3 for mm/s.
-    """
+    """Achieved balance grade (mm/s) of a residual unbalance (kg m) for mass (kg) at speed
+    (rad/s): ``G = |U| / M * Omega`` (sheet §1.2)."""
     U = abs(finite(residual_unbalance, "unbalance", "residual_unbalance"))
     return U / positive(mass, "mass") * abs(finite(speed, "speed")) * 1e3
 
@@ -88,28 +64,13 @@ def allocate_permissible(
     clamp: tuple[float, float] = ISO_CLAMP,
     outboard_floor: float = ISO_OUTBOARD_FLOOR,
 ) -> Allocation:
-    """Split U_per between two tolerance planes by the lever rule (sheet §1.4).
+    """Split U_per (any unit) between two tolerance planes (z_1, z_2) by the lever rule on the com
+    at ``com_z`` (sheet §1.4): an Allocation.
 
-    Parameters
-    ----------
-    u_per : float — kg m (any unit; the shares come out in the same unit)
-    com_z : float — m, com position along the shaft
-    planes : (z_1, z_2) — m, z_1 != z_2 (normally the bearings)
-    clamp : (lo, hi) — inboard limits as fractions of U_per (default 0.3, 0.7)
-    outboard_floor : float — floor of the far share for outboard rotors, fraction of U_per
-
-    Returns
-    -------
-    Allocation
-
-    Notes
-    -----
-    Inboard (com between the planes, ends included), ISO 21940-11 / CEMB / Vibromera:
-    ``U_1 = U_per L_2/L``, ``U_2 = U_per L_1/L`` (L_i = |z_G - z_i|, L = |z_2 - z_1|), then
-    each clamped to [0.3, 0.7] U_per. Outboard (sheet §1.4c, rbcli's own rule): each plane
-    gets the load U_per at the com would put on it, ``U_near = U_per L_far/L``,
-    ``U_far = U_per L_near/L``, the far share floored at 0.3 U_per.
-    """
+    Inboard (ISO 21940-11): ``U_1 = U_per L_2/L``, ``U_2 = U_per L_1/L`` (L_i = |z_G - z_i|),
+    each clamped to ``clamp`` (0.3, 0.7) U_per. Outboard (§1.4c, rbcli's own rule):
+    ``U_near = U_per L_far/L``, ``U_far = U_per L_near/L``, the far share floored at
+    ``outboard_floor`` U_per."""
     Up = finite(u_per, "permissible unbalance", "u_per")
     zg = finite(com_z, "com position", "com_z")
     z1, z2 = pair(planes, "tolerance planes", "planes")
@@ -167,23 +128,15 @@ class IsoCheck:
 
     Attributes
     ----------
-    grade : float — mm/s (the G number)
-    speed : float — rad/s, maximum service speed
-    mass : float — kg, rotor mass U_per is based on (the uncorrected rotor)
-    permissible_eccentricity : float — m, e_per
-    permissible_unbalance : float — kg m, U_per
-    planes : (float, float) — m, tolerance planes
-    planes_are : str — "bearing" or "correction"
+    grade, speed, mass — mm/s, rad/s (maximum service speed), kg (the uncorrected rotor)
+    permissible_eccentricity, permissible_unbalance — e_per (m), U_per (kg m)
+    planes, planes_are — the tolerance planes (m): "bearing" or "correction"
     allocation : Allocation
     before : IsoState — the rotor as given: what ``passed`` judges
-    after : IsoState | None — a prediction: the rotor with the corrections added (rounded
-        ones if rounded); it never sets the verdict
-    after_state : str | None — "after corrections" or "after rounded corrections"
-    passed : bool — the verdict on the rotor as given (``before.passed``)
+    after, after_state — the prediction with the corrections added, never the verdict
+    passed : bool — ``before.passed``
     tol_plane : float — kg m, for the angle flags
-    angle_sense : str
-    warnings : tuple[str, ...]
-    """
+    angle_sense : str; warnings : tuple of str"""
 
     grade: float
     speed: float
@@ -240,30 +193,16 @@ def iso_check(
 ) -> IsoCheck:
     """ISO 21940-11 pass/fail of a rotor with exact residuals in two tolerance planes.
 
-    Parameters
-    ----------
-    unb : Unbalance
-    grade : float — G in mm/s, 0.4 <= G <= 4000 (else ValueError)
-    speed : float — rad/s, maximum service speed, > 0
-    planes : (z_1, z_2) — m, tolerance planes: the bearings (ISO 21940-11) or, with
-        ``planes_are="correction"``, the correction planes (older practice, sheet §1.4b)
-    corrections : Corrections, optional — if given, the rotor with these (ideal or
-        rounded) corrections added is evaluated too (``after``, a prediction); the verdict
-        stays that of the rotor as given
-    clamp, outboard_floor : see :func:`allocate_permissible`
-
-    Returns
-    -------
-    IsoCheck
+    ``unb`` the Unbalance, ``grade`` G (mm/s, 0.4 to 4000), ``speed`` (rad/s, > 0), ``planes``
+    (z_1, z_2) m: the bearings, or with ``planes_are="correction"`` the correction planes
+    (§1.4b); ``corrections`` adds the prediction ``after``; ``clamp``, ``outboard_floor`` as
+    :func:`allocate_permissible`. An :class:`IsoCheck`.
 
     Notes
     -----
-    Sheet §1.5: U_per = e_per M (uncorrected mass); allocation by the lever rule on the com
-    (§1.4); the exact residual unbalance in each plane is
-    ``U_1 = (z_2 U - P)/(z_2 - z_1)``, ``U_2 = (P - z_1 U)/(z_2 - z_1)`` (= F_i / Omega^2);
-    ratio_i = |U_i| / U_per,i; PASS iff both <= 1. Achieved grade per plane
-    ``G |U_i| / U_per,i``; whole-rotor static ``|U|/M Omega`` (both mm/s).
-    """
+    Sheet §1.5: U_per = e_per M; the residual in each plane ``U_1 = (z_2 U - P)/(z_2 - z_1)``,
+    ``U_2 = (P - z_1 U)/(z_2 - z_1)``; PASS iff both |U_i| <= U_per,i. Achieved grade
+    ``G |U_i| / U_per,i``; whole-rotor static ``|U|/M Omega``."""
     if planes_are not in ("bearing", "correction"):
         raise BalanceValueError("planes_are", "planes_are must be 'bearing' or 'correction'")
     e_per, U_per = permissible_unbalance(grade, speed, unb.mass)

@@ -1,28 +1,14 @@
 """Critical speeds: where a whirl frequency equals an order n of the speed.
 
-Undamped critical speeds are those of the rotor's conservative part: its dampers removed
-and its cross-coupled stiffness kxy, kyx both their mean (the follower part, kxy = -kyx,
-which feeds energy into a whirl, removed with the damping; API 684's undamped analysis
-takes the bearings' direct stiffness). The damped critical speeds, where the whirl
-frequency of the rotor as it is meets the n× line, carry the damping and the whole
-cross-coupling; 1 N/m of cross-coupled stiffness moves them by ~1e-12 of themselves.
-
-- on constant bearings: exactly, an eigenproblem in the speed, no grid. With ``q = Q e^{i n Omega t}`` the equations
-  become ``(K - Omega^2 (n^2 M - i n G)) Q = 0``: the eigenvalues nu = 1/Omega^2 of
-  ``K^-1 B``, ``B = n^2 M - i n G``; each real nu > 0 is a critical speed. Isotropic
-  bearings split it by whirl direction (the physics sheet ``whirl.md``): forward
-  ``K_c U = Omega^2 diag(n^2 m, n^2 It - n Ip) U``, backward with ``+ n Ip``. With K_c
-  positive definite the forward crossings are as many as the positive entries of the
-  forward matrix (Sylvester's law of inertia): when ``n It <= Ip`` the forward conical
-  branch stays above the n× line at every speed (for n = 1: a disk-like rotor).
-- on bearings tabled against speed: the undamped modes are followed by their shapes over
-  the speeds the tables cover (:func:`rbcli.core.whirl.modes.track`) and each root of
-  ``|Im lambda(Omega)| - n Omega`` is solved by Brent's method.
-
-Damped: where the damped whirl frequency |Im lambda| of the mode equals n Omega, a root
-of ``|Im lambda(Omega)| - n Omega`` by Brent's method, the mode followed by its shape
-from the undamped critical speed.
-"""
+Undamped critical speeds are those of the conservative rotor (no dampers, kxy and kyx both
+their mean: API 684's undamped analysis). On constant bearings exactly, an eigenproblem in
+the speed: ``(K - Omega^2 (n^2 M - i n G)) Q = 0``, nu = 1/Omega^2 the eigenvalues of
+``K^-1 (n^2 M - i n G)``; isotropic bearings split it by whirl direction (forward
+``K_c U = Omega^2 diag(n^2 m, n^2 It - n Ip) U``, backward ``+ n Ip``), and when
+``n It <= Ip`` the forward conical branch never meets the n× line (Sylvester's law of
+inertia). On tabled bearings, and for the damped critical speeds (the rotor as it is), the
+roots of ``|Im lambda(Omega)| - n Omega`` along a mode followed by its shape, by Brent's
+method."""
 
 from __future__ import annotations
 
@@ -45,17 +31,8 @@ SEARCH_POINTS = 121
 
 @dataclass(frozen=True, eq=False)
 class CriticalSpeed:
-    """An undamped critical speed.
-
-    Attributes
-    ----------
-    speed : float — rad/s
-    order : int — n: the whirl frequency is n times the speed
-    shape : ModeShape — whirl (forward/backward), kind and node of the mode there
-    vector : (4,) complex ndarray — the weighted shape (as Mode.vector)
-    eigenvalue : complex — 1/s, the undamped mode's lambda there (i n Omega when
-        conservative; real coordinates: Im > 0; directional: the sign is the whirl)
-    """
+    """An undamped critical speed: ``speed`` (rad/s), ``order`` n, ``shape`` (ModeShape),
+    ``vector`` (as Mode.vector) and ``eigenvalue`` (the undamped lambda there, 1/s)."""
 
     speed: float
     order: int
@@ -70,19 +47,10 @@ class CriticalSpeed:
 
 @dataclass(frozen=True, eq=False)
 class Missing:
-    """A branch that never meets the n× line, and why.
-
-    Attributes
-    ----------
-    order : int
-    whirl : str — "forward" or "backward"
-    kind : str — "conical" (the tilt branch) or the branch's kind
-    reason : str — "gyroscopic" (n It < Ip: the forward conical whirl outruns the line),
-        "coincident" (n It = Ip exactly: met at infinite speed) or "range" (no crossing
-        between ``lo`` and ``hi``, the speeds searched)
-    It, Ip : float — kg m²
-    lo, hi : float — rad/s, the speeds searched (reason "range")
-    """
+    """A branch that never meets the n× line, and why: ``order``, ``whirl`` ("forward",
+    "backward"), ``kind``, ``reason`` ("gyroscopic": n It < Ip, the forward conical whirl
+    outruns the line; "coincident": n It = Ip; "range": no crossing between ``lo`` and ``hi``,
+    rad/s), ``It``, ``Ip`` (kg m²)."""
 
     order: int
     whirl: str
@@ -148,18 +116,8 @@ def _solved(rotor: Rotor, orders: tuple[int, ...], span: tuple[float, float]):
 
 
 def critical_speeds(rotor: Rotor, orders: tuple[int, ...] = (1,)) -> tuple[list[CriticalSpeed], list[Missing]]:
-    """The undamped critical speeds of ``orders`` (see the module docstring), and the
-    branches that never meet their line.
-
-    Parameters
-    ----------
-    rotor : Rotor — its conservative part is taken here
-    orders : tuple of int — n >= 1
-
-    Returns
-    -------
-    (list of CriticalSpeed sorted by speed, list of Missing)
-    """
+    """The undamped critical speeds of ``orders`` (n >= 1) of the rotor's conservative part,
+    sorted by speed, and the branches that never meet their line (``Missing``)."""
     r = rotor.conservative_part()
     out, missing = _solved(r, orders, r.speed_span()) if r.varying else _exact(r, orders)
     out.sort(key=lambda c: (c.speed, c.order))
@@ -212,19 +170,10 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
 
 
 def critical_map(rotor: Rotor, stiffness) -> tuple[np.ndarray, list[tuple[str, str]]]:
-    """The undamped critical speed map (API 684's first look at a rotor): the order-1
-    critical speeds of the rotor on its bearing positions with every bearing an isotropic
-    spring k and no damping, for each k of ``stiffness`` (N/m, (K,)).
-
-    ``(k S - Omega^2 B) U = 0`` with ``S = sum [[1, a_i], [a_i, a_i^2]]`` and B the
-    forward or backward mass matrix of :func:`critical_speeds`, so each critical speed is
-    ``c sqrt(k)``: a straight line of slope 1/2 on log-log axes (a rigid rotor: no shaft
-    bending flattens it).
-
-    Returns
-    -------
-    ((K, B) ndarray rad/s, [(whirl, kind)] of the B branches, by speed at k = 1)
-    """
+    """The undamped critical speed map (API 684): the order-1 critical speeds with every bearing
+    an isotropic spring k, for each k of ``stiffness`` (N/m, (K,)): ``(k S - Omega^2 B) U = 0``,
+    ``S = sum [[1, a_i], [a_i, a_i^2]]``, so each is ``c sqrt(k)``. Returns ((K, B) rad/s, the
+    B branches' (whirl, kind) by speed at k = 1)."""
     unit = Rotor(rotor.mass, rotor.It, rotor.Ip, rotor.z_com,
                  tuple(Bearing(b.z, 1.0, 1.0) for b in rotor.bearings))
     crits, _ = _exact(unit, (1,))

@@ -1,38 +1,20 @@
 """The rigid rotor on linear bearings: its matrices and its mode shapes.
 
-Coordinates (the physics sheet ``physics/whirl.md``, written out here). The shaft frame
-is :mod:`rbcli.core.balance`'s: z along the shaft, x the 0° mark, y = z × x; the bearings
-do not turn, and their x and y are the shaft frame's x and y with the rotor at angle 0.
-The rotor spins at Omega about +z. Its small motion is
-
-    q = [x, y, theta_x, theta_y]
-
-x, y: the displacement of the shaft axis at the centre of mass (m); theta_x, theta_y:
-its small rotations about x and y (rad), so that the axis at z (a = z - z_G from the com)
-is displaced by ``d_x = x + a theta_y``, ``d_y = y - a theta_x``. Bearing i at z_i pushes
-back with ``F_i = -K_i d_i - C_i d_i'``, K_i = [[kxx, kxy], [kyx, kyy]] and C_i likewise
-(N/m, N s/m), constant or interpolated in a table against the speed (:class:`BearingTable`).
-With ``T_i = [[1, 0, 0, a_i], [0, 1, -a_i, 0]]`` (d_i = T_i q) the equations of motion are
+Coordinates (physics sheet ``whirl.md``): the shaft frame of :mod:`rbcli.core.balance` (z
+along the shaft, x the 0° mark), the rotor spinning at Omega about +z, small motion
+``q = [x, y, theta_x, theta_y]`` of the shaft axis at the com (m, rad); the axis at
+a = z - z_G moves by ``d = T q``, ``T = [[1, 0, 0, a], [0, 1, -a, 0]]``. Bearing i pushes
+back with ``F_i = -K_i d_i - C_i d_i'`` (2x2, N/m and N s/m, constant or tabled against
+speed: :class:`BearingTable`), so
 
     M q'' + (C + Omega G) q' + K q = f,
     M = diag(m, m, It, It),  K = sum T_i^T K_i T_i,  C = sum T_i^T C_i T_i,
-    G = Ip [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1], [0, 0, -1, 0]],
+    G = Ip [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1], [0, 0, -1, 0]]
 
-the last from the angular momentum about the com to first order (Euler's equations of a
-symmetric rotor at constant spin; Friswell, Penny, Garvey and Lees, *Dynamics of Rotating
-Machines*, Cambridge 2010, §3.5; Genta, *Dynamics of Rotating Systems*, §4). Gravity is
-left out: it sets a static deflection (and, for an oil film, the coefficients), not the
-linear modes.
-
-Complex (directional) coordinates, for isotropic bearings (kxx = kyy, kxy = -kyx, cxx =
-cyy, cxy = -cyx at every bearing and speed): ``r = x + i y``, ``phi = theta_y - i
-theta_x``, so that the axis at a moves by ``r + a phi``; a bearing then pushes with
-``-(kxx - i kxy) d - (cxx - i cxy) d'`` and the four real equations become two complex
-ones whose roots ``e^{lambda t}`` with Im lambda > 0 whirl forwards (with the spin) and
-Im lambda < 0 backwards.
-
-Pure functions on SI floats and numpy arrays; no I/O, no units.
-"""
+(Friswell, Penny, Garvey and Lees, *Dynamics of Rotating Machines*, 2010, §3.5). Gravity
+sets a static deflection, not the linear modes. For isotropic bearings ``r = x + i y``,
+``phi = theta_y - i theta_x`` give two complex equations whose roots with Im lambda > 0
+whirl forwards (with the spin)."""
 
 from __future__ import annotations
 
@@ -90,18 +72,10 @@ class Bearing:
 
 @dataclass(frozen=True, eq=False)
 class BearingTable:
-    """A bearing whose coefficients change with the speed (an oil film, a seal): a table as
-    bearing programs print it, interpolated linearly in the speed between its rows.
-
-    Attributes
-    ----------
-    z : float — m
-    speeds : (S,) ndarray — rad/s, strictly ascending, S >= 2
-    values : (S, 8) ndarray — the coefficients at each speed, :data:`COEFFICIENTS` order
-
-    Outside ``speeds`` the end rows hold (the service refuses such speeds: a table is
-    never extrapolated silently).
-    """
+    """A bearing whose coefficients change with speed (an oil film, a seal), interpolated
+    linearly between rows: ``z`` (m), ``speeds`` (S,) rad/s ascending (S >= 2), ``values``
+    (S, 8) in :data:`COEFFICIENTS` order; the end rows hold outside (the service refuses such
+    speeds)."""
 
     z: float
     speeds: np.ndarray
@@ -270,20 +244,10 @@ class Rotor:
 
 @dataclass(frozen=True, eq=False)
 class ModeShape:
-    """What a mode looks like along the shaft.
-
-    Attributes
-    ----------
-    whirl : str — "forward" (the same sense as the spin), "backward", "linear" (a
-        straight-line orbit, forward and backward parts equal to :data:`LINEAR_TOL`: e.g.
-        anisotropic bearings at rest) or "none" (a non-oscillating, overdamped motion)
-    forward_share : float — the forward part of the mode's whirl, by kinetic weight
-        ``(m |r_f|^2 + It |phi_f|^2) / (... forward + backward)``, 0..1 (1 for a forward
-        circular whirl, 0.5 for motion in a line): its forward/backward index
-    kind : str — "cylindrical", "conical" or "mixed" (see :func:`shapes`)
-    node : float | None — m, position along the shaft where the (dominant whirl
-        component of the) motion is least; None for pure translation (node at infinity)
-    """
+    """What a mode looks like along the shaft: ``whirl`` ("forward", "backward", "linear" or
+    "none"), ``forward_share`` (the forward part by kinetic weight, 0..1), ``kind``
+    ("cylindrical", "conical", "mixed": :func:`shapes`) and ``node`` (m; None for pure
+    translation)."""
 
     whirl: str
     forward_share: float
@@ -294,29 +258,14 @@ class ModeShape:
 def shapes(rotor: Rotor, parts: np.ndarray, oscillating: np.ndarray) -> dict[str, np.ndarray]:
     """Classify modes from their forward and backward parts.
 
-    Parameters
-    ----------
-    rotor : Rotor
-    parts : (..., 4) complex ndarray — ``[r_f, phi_f, r_b, phi_b]``: the forward circular
-        part of the motion of the axis at the com (m) and of its slope (rad) (the axis at a
-        moves forward by ``r_f + a phi_f``), then the backward part
-    oscillating : (...) bool ndarray — False for a real eigenvalue (no whirl: "none")
+    ``parts`` (..., 4) complex: ``[r_f, phi_f, r_b, phi_b]``, the forward and backward circular
+    parts of the axis's motion at the com (m) and of its slope (rad); ``oscillating`` False
+    for a real eigenvalue. Returns arrays ``share`` (forward share), ``whirl`` (index in
+    :data:`WHIRLS`), ``kind`` (index in :data:`KINDS`), ``node`` (m, NaN for none).
 
-    Returns
-    -------
-    dict of arrays of the leading shape of ``parts``: ``share`` (forward share), ``whirl``
-    (index in :data:`WHIRLS`), ``kind`` (index in :data:`KINDS`), ``node`` (m, NaN for none)
-
-    Notes
-    -----
-    The dominant part (forward or backward, by kinetic weight) is ``u(a) = r + a phi``
-    along the shaft. Its node is where |u| is least, ``a* = -Re(r conj(phi)) / |phi|^2``
-    (exact for a real ratio r/phi, the undamped isotropic case). The outermost bearings
-    move by u_1 and u_2: the mode is *conical* when they move out of phase (Re(u_1
-    conj(u_2)) < 0: a node between them), *cylindrical* when they move in phase with the
-    smaller at least half the larger (a node farther than one bearing span outside them,
-    or none), and *mixed* in between.
-    """
+    The dominant part u(a) = r + a phi has its node at ``a* = -Re(r conj(phi)) / |phi|^2``;
+    the mode is *conical* when the outermost bearings move out of phase, *cylindrical* when in
+    phase with the smaller at least half the larger, else *mixed*."""
     m, It = rotor.mass, rotor.It
     ef = m * cabs(parts[..., 0]) ** 2 + It * cabs(parts[..., 1]) ** 2
     eb = m * cabs(parts[..., 2]) ** 2 + It * cabs(parts[..., 3]) ** 2

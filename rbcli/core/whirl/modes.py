@@ -1,31 +1,15 @@
 """Whirl modes of the rigid rotor over speeds, each followed by its shape; the roots of a
-mode's frequency or growth rate along the speed (:mod:`rbcli.core.whirl.model` has the
-equations).
+mode's frequency or growth rate along the speed.
 
-At a speed Omega the free motion ``q = Q e^{lambda t}`` solves the quadratic eigenproblem
-``(lambda^2 M + lambda (C + Omega G) + K) Q = 0``, solved through its companion (first-
-order) form ``A = [[0, I], [-M^-1 K, -M^-1 (C + Omega G)]]`` for every speed at once (a
-stack of matrices, one ``numpy.linalg.eig``):
-
-- isotropic bearings: the 4×4 complex companion of the directional coordinates [r, phi];
-  each of its four eigenvalues is one mode, forward when Im lambda > 0, backward when
-  Im lambda < 0 (frequency |Im lambda|);
-- otherwise: the 8×8 real companion of q; each complex pair is one mode (the root with
-  Im lambda > 0), each two real roots one non-oscillating (overdamped) mode.
-
-Whirl frequencies are in the fixed (bearing) frame. Damping ratio ``zeta = -Re lambda /
-|lambda|``, logarithmic decrement ``delta = -2 pi Re lambda / |Im lambda|``. A
-conservative rotor (no damping, symmetric stiffness) has every lambda on the imaginary
-axis (Thomson-Tait-Chetaev; Meirovitch, *Methods of Analytical Dynamics*, §7.9): Re lambda
-is set to 0 there instead of carrying the eigensolver's round-off.
-
-At each speed the modes are numbered by frequency (``Campbell``); a mode is followed from
-one speed to the next by its shape (:func:`track`: the assignment with the largest summed
-modal assurance criterion, the step halved where it is not clear), never by its rank, so
-that two modes whose frequencies cross keep their identities (a growing mode crossing a
-decaying one is not a change of stability). Where a followed quantity changes sign
-between two speeds, its root is solved by Brent's method (:func:`branch_roots`).
-"""
+``(lambda^2 M + lambda (C + Omega G) + K) Q = 0`` is solved through its companion form for
+every speed at once (one ``numpy.linalg.eig`` of a stack): for isotropic bearings the 4×4
+complex companion of [r, phi] (each eigenvalue a mode, forward when Im lambda > 0), else
+the 8×8 real companion of q (each complex pair a mode, two real roots an overdamped one).
+Frequencies are in the fixed frame; ``zeta = -Re lambda / |lambda|``, ``delta = -2 pi Re
+lambda / |Im lambda|``; a conservative rotor's Re lambda is set to 0 (Meirovitch, *Methods
+of Analytical Dynamics*, §7.9). A mode is followed from speed to speed by its shape
+(:func:`track`, the largest summed modal assurance criterion), never by its rank, and a
+followed quantity's sign changes are roots by Brent's method (:func:`branch_roots`)."""
 
 from __future__ import annotations
 
@@ -56,20 +40,10 @@ _PERMS = np.array(list(itertools.permutations(range(4))))
 
 @dataclass(frozen=True, eq=False)
 class Mode:
-    """One whirl mode at one speed.
-
-    Attributes
-    ----------
-    eigenvalue : complex — 1/s, lambda (the root with Im lambda >= 0 for real-coordinate
-        modes; the directional root, sign of Im = whirl, for isotropic bearings)
-    frequency : float — rad/s, |Im lambda|, fixed frame (0 for a non-oscillating mode)
-    damping_ratio : float — -Re lambda/|lambda|
-    log_decrement : float | None — -2 pi Re lambda/|Im lambda| (None when not oscillating)
-    shape : ModeShape — whirl direction, forward/backward index, kind and node
-    vector : (4,) complex ndarray — the shape weighted for comparisons between modes of one
-        rotor (MAC), unit norm: [sqrt(m) r_f, sqrt(It) phi_f, sqrt(m) r_b, sqrt(It) phi_b]
-    growing : bool — Re lambda > GROWTH_RTOL |lambda|
-    """
+    """One whirl mode at one speed: ``eigenvalue`` lambda (1/s), ``frequency`` |Im lambda|
+    (rad/s, fixed frame), ``damping_ratio``, ``log_decrement``, ``shape`` (:class:`ModeShape`),
+    ``vector`` (unit, mass-weighted [r_f, phi_f, r_b, phi_b] for the MAC) and ``growing``
+    (Re lambda > GROWTH_RTOL |lambda|)."""
 
     eigenvalue: complex
     frequency: float
@@ -150,17 +124,9 @@ def _order(lam: np.ndarray, code: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True, eq=False)
 class Campbell:
-    """Whirl modes over speeds, numbered by frequency at each speed (lowest first).
-
-    Attributes
-    ----------
-    speeds : (N,) ndarray — rad/s
-    eigenvalues : (N, 4) complex ndarray
-    vectors : (N, 4, 4) complex ndarray — each mode's weighted unit shape (Mode.vector)
-    whirl, kind : (N, 4) int ndarrays — indices in :data:`WHIRLS` and :data:`KINDS`
-    share, node : (N, 4) ndarrays — forward share; node (m, NaN for none)
-    growing : (N, 4) bool ndarray
-    """
+    """Whirl modes over speeds, numbered by frequency at each: ``speeds`` (N,) rad/s,
+    ``eigenvalues`` (N, 4), ``vectors`` (N, 4, 4) (Mode.vector), ``whirl``, ``kind`` (indices
+    in :data:`WHIRLS`, :data:`KINDS`), ``share``, ``node`` (m, NaN for none), ``growing``."""
 
     speeds: np.ndarray
     eigenvalues: np.ndarray

@@ -1,47 +1,24 @@
 """Unbalance response of the rigid rotor, its peaks, amplification factors and the
 API separation margins.
 
-Forcing. A static unbalance U = M (x_G + i y_G) (kg m) and a couple unbalance about the
-com P_G = D_xz + i D_yz (kg m², D = -J_xz of the tensor in shaft axes), both fixed in the
-rotor (angles from the 0° mark in the direction of rotation, as ``rbcli balance`` gives
-them), turning at Omega: the centre of mass runs U/M off the shaft axis and the rotor's
-angular momentum has a turning part Omega (J_xz, J_yz), so (physics sheet ``whirl.md``)
+Forcing (physics sheet ``whirl.md``): a static unbalance U (kg m) and a couple unbalance
+P_G = D_xz + i D_yz (kg m², about the com), fixed in the rotor and turning at Omega, force
+(x, y, theta_x, theta_y) with complex amplitudes ``Omega^2 (U, -i U, i P_G, P_G)``; plane
+unbalances U_k at z_k add up to U = sum U_k and P_G = sum (z_k - z_G) U_k.
 
-    m r'' + ... = Omega^2 U e^{i Omega t},    It phi'' - ... = Omega^2 P_G e^{i Omega t}
+Steady state: ``(K - Omega^2 M + i Omega (C + Omega G)) Q = F``. At bearing i the axis
+moves by ``D = T_i Q`` and pushes it with ``F_i = (K_i + i Omega C_i) D``; the orbit's
+forward and backward parts are ``D_f = (D_x + i D_y)/2``, ``D_b = conj(D_x - i D_y)/2``,
+its amplitude the semi-major axis ``|D_f| + |D_b|``, its phase arg D_f (the high spot,
+from the 0° mark with the rotation). Stiff bearings tend to balance's rigid forces
+``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``, ``F_2 = Omega^2 (P - z_1 U)/(z_2 - z_1)``.
 
-in the directional coordinates; in the real ones, with ``q = Re(Q e^{i Omega t})``,
-the complex amplitudes of the forces and moments on (x, y, theta_x, theta_y) are
-``Omega^2 (U, -i U, i P_G, P_G)``. Correction-plane unbalances U_k at z_k (kg m) are a
-static unbalance sum U_k and a couple sum (z_k - z_G) U_k.
-
-Steady state: ``(K - Omega^2 M + i Omega (C + Omega G)) Q = F`` at each speed. At bearing
-i the axis moves by ``D = T_i Q`` (complex amplitudes of d_x, d_y) and the rotor pushes
-the bearing with ``F_i = (K_i + i Omega C_i) D``. An orbit ``Re(D e^{i Omega t})`` is an
-ellipse with forward part ``D_f = (D_x + i D_y)/2`` and backward part
-``D_b = conj(D_x - i D_y)/2``; its semi-major axis ``|D_f| + |D_b|`` is the amplitude
-reported, and the phase is arg D_f, the angle of the high spot in the rotor frame (from
-the 0° mark, in the direction of rotation, as balance's angles): the displacement is
-largest when it points there. Isotropic bearings: a circle, D_b = 0.
-
-Rigid-support limit: as every stiffness grows without bound the bearing forces tend to
-balance's rigid-bearing forces ``F_1 = Omega^2 (z_2 U - P)/(z_2 - z_1)``, ``F_2 =
-Omega^2 (P - z_1 U)/(z_2 - z_1)`` (P about z = 0) for two bearings.
-
-Peaks and amplification factor (API 684, 2nd ed. 2005, SP6.8.2.1; API 617, 8th ed. 2014,
-§6.8.2.4): at each local maximum Nc of a bearing's amplitude, ``AF = Nc / (N2 - N1)``
-with N1 < Nc < N2 the speeds where the amplitude is the peak's 1/sqrt(2) (the half-power
-points). The peak is the root of the amplitude's exact slope (:func:`amplitude_slope`)
-and N1, N2 the roots of amplitude - peak/sqrt 2, each by Brent's method to ~1e-12 of the
-speed or better.
-
-Separation margin (API 617 8th ed. §6.8.2.5 / API 684 SP6.8.2.10, as implemented in
-ROSS, ``ross/api_report.py`` of github.com/petrobras/ross): AF < 2.5 needs no margin;
-otherwise a critical speed below the minimum operating speed N_min needs
-``SM = min(16, 17 (1 - 1/(AF - 1.5)))`` % of N_min, one above the maximum continuous
-speed N_max ``SM = min(26, 10 + 17 (1 - 1/(AF - 1.5)))`` % of N_max. The actual margin is
-``(N_min - Nc)/N_min`` or ``(Nc - N_max)/N_max``. (Check the clause against a licensed
-copy of the standard before claiming conformity.)
-"""
+Amplification factor (API 684, 2nd ed., SP6.8.2.1; API 617, 8th ed., §6.8.2.4):
+``AF = Nc / (N2 - N1)`` with N1, N2 the half-power points, all roots by Brent's method.
+Separation margin (API 617 §6.8.2.5 / API 684 SP6.8.2.10, as ROSS's ``api_report.py``): none
+for AF < 2.5; else ``min(16, 17 (1 - 1/(AF - 1.5)))`` % below N_min and
+``min(26, 10 + 17 (1 - 1/(AF - 1.5)))`` % above N_max (check against a licensed copy
+before claiming conformity)."""
 
 from __future__ import annotations
 
@@ -51,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbcli.core.roots import brentq
 from rbcli.core.whirl.model import Rotor
 
 __all__ = ["Forcing", "Response", "response", "Peak", "peaks", "required_margin", "Margin",
@@ -120,17 +98,9 @@ def _orbit(Dx: np.ndarray, Dy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
 
 @dataclass(frozen=True, eq=False)
 class Response:
-    """Unbalance response at each speed, per bearing.
-
-    Attributes
-    ----------
-    speeds : (N,) ndarray — rad/s
-    displacement : (n_b, N) ndarray — m, semi-major axis of each bearing's orbit
-    displacement_minor : (n_b, N) ndarray — m, semi-minor axis
-    displacement_phase_deg : (n_b, N) ndarray — deg, high spot in the rotor frame
-    force : (n_b, N) ndarray — N, semi-major axis of the force the rotor exerts on it
-    force_phase_deg : (n_b, N) ndarray — deg, its direction when largest, rotor frame
-    """
+    """Unbalance response at each speed, per bearing: ``speeds`` (N,) rad/s; ``displacement``
+    and ``displacement_minor`` (n_b, N) m (the orbit's semi-axes), ``displacement_phase_deg``
+    (the high spot, rotor frame); ``force`` (N) and ``force_phase_deg``."""
 
     speeds: np.ndarray
     displacement: np.ndarray
@@ -220,18 +190,11 @@ def forcing_vector(forcing: Forcing) -> np.ndarray:
 
 
 def excitation(rotor: Rotor, forcing: Forcing, speed: float, eigenvalue: complex, whirl: str) -> float:
-    """How much the unbalance drives the undamped mode of eigenvalue ``eigenvalue`` at its
-    critical speed ``speed`` (order 1; of the rotor's conservative part, as
-    :func:`rbcli.core.whirl.critical.critical_speeds` finds them), relative: |y^H f| /
-    (|y| |f|) with y the mode's left null vector (smallest left singular vector) of the
-    dynamic stiffness Z(lambda) = lambda^2 M + lambda Omega G + K.
-
-    Forces and moments weigh alike (tilts scaled by the radius of gyration sqrt(It/m)). A
-    conservative Z(i Omega) is Hermitian: y is the mode itself. On isotropic bearings Z is
-    taken in the directional coordinates, where the unbalance is a forward circular forcing
-    [U, P_G]: it has no part along a backward mode (exactly 0), and a forward and a backward
-    mode at one speed (a symmetric rotor's cylindrical pair) are told apart. 0 when there is
-    no unbalance."""
+    """How much the unbalance drives the undamped order-1 mode of ``eigenvalue`` at its critical
+    ``speed``, relative: |y^H f| / (|y| |f|), y the left null vector of
+    Z(lambda) = lambda^2 M + lambda Omega G + K (tilts scaled by sqrt(It/m)). On isotropic
+    bearings Z is taken in directional coordinates, where the unbalance is forward forcing:
+    0 along a backward mode. 0 without unbalance."""
     r = rotor.at(speed).conservative_part()
     rho = math.sqrt(r.It / r.mass)
     if r.isotropic:
@@ -264,18 +227,9 @@ EXCITED_RTOL = 1e-8
 
 @dataclass(frozen=True, eq=False)
 class Peak:
-    """A resonance peak of one bearing's response.
-
-    Attributes
-    ----------
-    bearing : int — index of the bearing
-    speed : float — rad/s, Nc (the peak)
-    amplitude : float — m, the peak's semi-major axis
-    half_power : (float, float) | None — rad/s, (N1, N2) where the amplitude is the
-        peak's 1/sqrt(2); None when the curve does not fall that far on both sides before
-        rising into another peak (AF not defined)
-    amplification_factor : float | None — Nc/(N2 - N1)
-    """
+    """A resonance peak of one bearing's response: ``bearing`` (index), ``speed`` Nc (rad/s),
+    ``amplitude`` (m, semi-major axis), ``half_power`` (N1, N2) rad/s (None when the curve does
+    not fall to 1/sqrt(2) on both sides) and ``amplification_factor`` Nc/(N2 - N1) or None."""
 
     bearing: int
     speed: float
@@ -307,8 +261,6 @@ def _peak(rotor: Rotor, forcing: Forcing, i: int, lo: float, hi: float) -> float
     """The speed of the amplitude's maximum in [lo, hi]: the root of its exact slope by
     Brent's method when the slope changes sign there (to ~1e-15 of the speed), else
     golden-section search on the amplitude (to ~1e-8: the maximum is flat)."""
-    from rbcli.core.roots import brentq
-
     slope = lambda x: amplitude_slope(rotor, forcing, i, x)[1]  # noqa: E731
     s_lo, s_hi = slope(lo), slope(hi)
     if s_lo > 0.0 > s_hi:
@@ -320,8 +272,6 @@ def _half_power(f, Nc: float, level: float, grid: np.ndarray, amps: np.ndarray, 
                 direction: int, limit: float) -> float | None:
     """The speed beside the peak (grid index j) where f = level, going down (direction -1)
     or up (+1); None when the curve turns up again first."""
-    from rbcli.core.roots import brentq
-
     g = lambda x: f(x) - level  # noqa: E731
     prev_x, prev_a = Nc, f(Nc)
     k = j + direction
@@ -393,17 +343,9 @@ def required_margin(af: float | None, position: str) -> float:
 
 @dataclass(frozen=True, eq=False)
 class Margin:
-    """One critical speed judged against the operating speed range.
-
-    Attributes
-    ----------
-    speed : float — rad/s, the critical (peak) speed Nc
-    amplification_factor : float | None — None when undamped (infinite)
-    position : str — "below", "above" or "within" the operating range
-    margin_percent : float — % of N_min (below) or N_max (above); 0 within
-    required_percent : float — % (within: the API rule allows none when AF >= 2.5)
-    passed : bool
-    """
+    """One critical speed judged against the operating range: ``speed`` Nc (rad/s),
+    ``amplification_factor`` (None: undamped), ``position`` ("below", "above", "within"),
+    ``margin_percent`` and ``required_percent`` (%), ``passed``."""
 
     speed: float
     amplification_factor: float | None
