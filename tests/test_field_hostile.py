@@ -174,7 +174,7 @@ def test_bad_holes_limits_and_drawers_are_located(tmp_path, plane, drawer, says)
     ("sensors: [S1, {name: S2, limit: -2}, S3, S4]", "a limit must be a positive amplitude"),
     ("sensors: [S1, {name: S2, limit: 2 mm/s}, S3, S4]", "is velocity; the readings are bare"),
     ("sensors: [S1, {name: S2, limit: [2]}, S3, S4]", "limit must be a value"),
-    ("sensors: [S1, {name: S2, limit: 2 rms}, S3, S4]", "says rms; the readings say no measure"),
+    ("sensors: [S1, {name: S2, limit: 2 rms}, S3, S4]", "is a bare number rms; the readings are bare numbers with no"),
     ("speeds: [{name: run, limit: 1e400}]", "limit"),
     ("speeds: [{name: run, limit: .nan}]", "limit"),
     ("robust: hubber", "robust must be huber"),

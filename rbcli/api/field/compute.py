@@ -214,15 +214,15 @@ def _drawer(job: Job, alpha: np.ndarray, V0: np.ndarray, rows: Rows, sol: FieldS
     planes = []
     for j, ws in enumerate(ch.weights):
         pl = d.planes[j]
-        masses = tuple(FittedMass(d.drawers[pl.drawer][s][0], d.angles[j][h], h + 1) for h, s in ws)
+        masses = tuple(FittedMass(d.drawers[pl.drawer][s][0], d.holes[j].angles[h], h + 1) for h, s in ws)
         net = sum((m.mass * cmath.rect(1.0, math.radians(m.angle_deg)) for m in masses), 0j)
-        planes.append(FittedPlane(job.plane_names[j], len(d.angles[j]), abs(net), deg(net) if net else 0.0, masses))
+        planes.append(FittedPlane(job.plane_names[j], len(d.holes[j].angles), abs(net), deg(net), masses))
     r = V0 + matvec(alpha, ch.corrections)
     info = DrawerFit(ch.objective, ch.violation, ch.examined,
                      tuple(tuple({"mass": m, "count": c} for m, c in x) for x in d.drawers),
-                     tuple(DrawerPlane(job.plane_names[j], d.angles[j], d.radii[j], d.numbering[j], pl.per_hole,
+                     tuple(DrawerPlane(job.plane_names[j], h.angles, h.radius, h.numbering, pl.per_hole,
                                        pl.most, pl.max_mass if math.isfinite(pl.max_mass) else None, pl.drawer)
-                           for j, pl in enumerate(d.planes)))
+                           for j, (pl, h) in enumerate(zip(d.planes, d.holes))))
     return Fitted(None, None, tuple(planes), tuple(_residual(rows[k], r[k], V0[k], job.flipped)
                                                    for k in range(len(rows))), info)
 

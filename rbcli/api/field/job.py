@@ -115,6 +115,11 @@ def make(o: Options) -> Job:
         with the message the command line prints (``--trial: ...``), located in the job
         file for a job file's value.
     """
+    for param in ("initial", "trial", "run", "trial_radius", "radius") if o.job is not None else ():
+        if getattr(o, param) is not None:
+            raise ParamError(param, "the job file holds the readings; give the {job} file or the readings on the "
+                                    "command line, not both" if param in ("initial", "trial", "run") else
+                                    "give the radii in the job file's planes (radius, correction_radius)")
     jf = load_job(str(o.job)) if o.job is not None else None
     try:
         o2 = o if jf is None else _settings(o, jf)
@@ -227,13 +232,6 @@ def _weights(weights: Any, n: int) -> tuple[float, ...] | None:
 
 def from_file(o: Options, job: FieldJob) -> Job:
     """The job the job file ``job`` describes, with the parameters' settings it leaves open."""
-    for param in ("initial", "trial", "run"):
-        if getattr(o, param) is not None:
-            raise ParamError(param, "the job file holds the readings; give the {job} file or the "
-                                    "readings on the command line, not both")
-    for param in ("trial_radius", "radius"):
-        if getattr(o, param) is not None:
-            raise ParamError(param, "give the radii in the job file's planes (radius, correction_radius)")
     o = _settings(o, job)
     if job.rotor is not None and job.rotor.body is not None:
         _rotor_body(job.rotor, job.source)

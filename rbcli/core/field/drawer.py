@@ -1,23 +1,19 @@
 """The best weights from a drawer at a rotor's holes: an exact search.
 
-Each plane has holes (angles), a radius factor (hole radius over the radius the coefficients
-were measured at), at most ``most`` weights, at most ``per_hole`` in one hole and the most
-mass it takes; the drawer has sizes (masses) and counts, shared by the planes that use it.
-A choice puts a multiset of (hole, size) weights in each plane; its correction is
-``W_j = Σ m_s ρ_j e^{i θ_h}`` and it leaves ``r = V0 + alpha W``. The objective is the
-method's, on the readings (not the distance to the continuous correction): least squares
-``F(W) = Σ_k (w_k |r_k|)²``, min-max ``G(W) = max_k w_k |r_k|``; reading limits
-``|r_k| <= L_k`` must hold (if no choice meets them, the one that violates them least,
-``max_k |r_k| / L_k``, is returned and said).
+A plane takes at most ``most`` weights, ``per_hole`` in a hole, ``max_mass`` in all; a weight
+of mass m at hole angle θ is ``m ρ e^{iθ}`` at the trial radius (ρ: hole radius / trial
+radius); drawers have sizes and counts shared by the planes that use them. The objective is
+the method's on the readings ``r = V0 + alpha W`` (least squares ``F = Σ (w_k |r_k|)²``,
+min-max ``G = max w_k |r_k|``), under ``|r_k| <= L_k`` (if no choice meets them, the one
+exceeding them least, ``max |r_k|/L_k``).
 
-Search (a sphere decoder; Agrell et al., IEEE Trans. Inf. Theory 48(8), 2002): with
-``D alpha = Q R`` and the least-squares optimum ``W*``, ``F(W) = F* + |R (W - W*)|²``, and
-``G(W)² >= F(W)/N``; so every choice better than one found lies in the ellipsoid
-``|R (W - W*)|² <= δ``. Each plane's choices within that ellipsoid's shadow are enumerated
-(two halves of at most two weights each met in a k-d tree: up to 4 weights a plane), then the
-planes are searched from the last, each plane's term bounding the rest. ``δ`` grows from a
-small guess until the best found is proven optimal (its own bound within ``δ``) or the
-ellipsoid holds every choice: the answer is exact, not a rounding of the continuous one.
+A sphere decoder (Agrell et al., IEEE Trans. Inf. Theory 48(8), 2002): for weights μ (1, or
+min-max's multipliers with a little of 1/N) ``Σ μ_k (w_k |r_k|)² = F_μ* + |R (W - W_μ)|²``
+(QR of the weighted alpha) is ``F``, or at most ``G²``; so every choice better than one
+found lies in an ellipsoid ``|R (W - W_μ)|² <= δ``. Each plane's choices in its shadow are
+enumerated (halves of at most two weights met in a k-d tree), the planes searched from the
+last, each term bounding the rest; δ grows until the best found is proven (its bound within
+δ) or every choice is inside.
 """
 
 from __future__ import annotations
@@ -30,17 +26,14 @@ import numpy as np
 from rbcli.core.balance.common import BalanceValueError
 from rbcli.core.field.solve import householder_qr, least_squares
 
-#: the most weights a plane may take (the search meets two halves of at most two)
-MOST_WEIGHTS = 4
-#: the most choices the search examines (per plane, and in all): beyond it, refused
-MAX_CHOICES = 20_000_000
+#: the most weights a plane takes; the most choices examined (per plane, and in all)
+MOST_WEIGHTS, MAX_CHOICES = 4, 20_000_000
 
 
 @dataclass(frozen=True)
 class Plane:
-    """What one plane can take: hole angles (rad), ``factor`` = hole radius / trial radius,
-    at most ``most`` weights, ``per_hole`` in one hole, ``max_mass`` kg in all (inf: any),
-    and ``drawer``: which drawer (an index) its weights come from."""
+    """A plane: hole angles (rad), hole radius / trial radius, at most ``most`` weights,
+    ``per_hole`` in a hole, ``max_mass`` kg, the drawer (index) its weights come from."""
 
     angles: tuple[float, ...]
     factor: float
@@ -52,9 +45,8 @@ class Plane:
 
 @dataclass(frozen=True)
 class Choice:
-    """The weights chosen: per plane a tuple of (hole index, size index); ``corrections``
-    (P,) complex kg at the trial radius; ``objective`` (the method's: sqrt F or G);
-    ``violation`` max |r_k|/L_k (<= 1: every limit met); ``examined``: choices evaluated."""
+    """Per plane its (hole, size) indices; the corrections (P,) kg at the trial radius; the
+    objective (sqrt F or G); max |r_k|/L_k; the choices evaluated."""
 
     weights: tuple[tuple[tuple[int, int], ...], ...]
     corrections: np.ndarray
@@ -63,128 +55,110 @@ class Choice:
     examined: int
 
 
-def _combos(units: np.ndarray, k: int) -> np.ndarray:
-    """(m, k) sorted index tuples of ``k`` of the ``units`` (repeats allowed), k <= 2."""
-    u = np.arange(units.size)
-    if k == 0:
-        return np.zeros((1, 0), dtype=int)
-    if k == 1:
-        return u[:, None]
-    i, j = np.triu_indices(units.size)
-    return np.stack([i, j], axis=1)
+def _budget(n: int) -> None:
+    if n > MAX_CHOICES:
+        raise BalanceValueError("drawer", f"the drawer search examines more than {MAX_CHOICES} choices; give fewer "
+                                          "weights a plane, holes or sizes")
 
 
-def _plane_choices(pl: Plane, masses: np.ndarray, counts: np.ndarray, centre: complex,
-                   radius: float) -> tuple[np.ndarray, np.ndarray]:
-    """The choices of plane ``pl`` whose correction lies within ``radius`` of ``centre``:
-    ((m, most) unit indices, -1 for none; (m,) corrections). A unit is hole h * S + size s."""
+def _choices(pl: Plane, masses: np.ndarray, counts: np.ndarray, centre: complex, radius: float) -> tuple:
+    """Plane ``pl``'s choices within ``radius`` of ``centre``: ((m, most) units, -1 for none;
+    (m,) corrections). Unit ``h * S + s`` is size s at hole h."""
     from scipy.spatial import cKDTree
 
     S = masses.size
     units = np.array([m * pl.factor * complex(math.cos(a), math.sin(a)) for a in pl.angles for m in masses])
-    out, total = [np.full((0, pl.most), -1)], 0
+    i, j = np.triu_indices(units.size)
+    halves = [np.zeros((1, 0), int), np.arange(units.size)[:, None], np.stack([i, j], axis=1)]
+    out, total = [], 0
     for k in range(pl.most + 1):
-        A, B = _combos(units, (k + 1) // 2), _combos(units, k // 2)
-        sa, sb = units[A].sum(axis=1), units[B].sum(axis=1)
-        tree = cKDTree(np.stack([sa.real, sa.imag], axis=1))
-        q = centre - sb
-        hits = tree.query_ball_point(np.stack([q.real, q.imag], axis=1), radius, return_sorted=True)
-        nb = np.fromiter((len(h) for h in hits), int, len(hits))
-        total += int(nb.sum())
-        if total > MAX_CHOICES:
-            raise BalanceValueError("drawer", f"the drawer offers more than {MAX_CHOICES} choices near the "
-                                              "correction; give fewer weights a plane, holes or sizes")
-        ia = np.concatenate([np.asarray(h, dtype=int) for h in hits]) if nb.sum() else np.zeros(0, int)
-        ib = np.repeat(np.arange(len(hits)), nb)
-        c = np.concatenate([A[ia], B[ib]], axis=1)
-        if k >= 2:  # each multiset once: the first half's last index at most the second's first
-            c = c[A[ia][:, -1] <= B[ib][:, 0]]
-        hole, size = c // S, c % S
+        A, B = halves[(k + 1) // 2], halves[k // 2]
+        sa, q = units[A].sum(axis=1), centre - units[B].sum(axis=1)
+        hits = cKDTree(np.stack([sa.real, sa.imag], axis=1)).query_ball_point(
+            np.stack([q.real, q.imag], axis=1), radius, return_sorted=True)
+        nb = np.fromiter(map(len, hits), int, len(hits))
+        _budget(total := total + int(nb.sum()))
+        ia, ib = np.array([x for h in hits for x in h], dtype=int), np.repeat(np.arange(len(hits)), nb)
+        c = np.concatenate([A[ia], B[ib]], axis=1)[(A[ia][:, -1] <= B[ib][:, 0]) if k >= 2 else slice(None)]
+        hole, size = c // S, c % S  # each multiset once (sorted halves); its holes, counts and mass
         ok = np.sum(masses[size], axis=1) <= pl.max_mass * (1 + 1e-12)
-        for j in range(k):
-            ok &= np.sum(hole == hole[:, j:j + 1], axis=1) <= pl.per_hole
-            ok &= np.sum(size == size[:, j:j + 1], axis=1) <= counts[size[:, j]]
+        for x in range(k):
+            ok &= (np.sum(hole == hole[:, x:x + 1], axis=1) <= pl.per_hole) & (
+                np.sum(size == size[:, x:x + 1], axis=1) <= counts[size[:, x]])
         out.append(np.pad(c[ok], ((0, 0), (0, pl.most - k)), constant_values=-1))
     c = np.concatenate(out)
     return c, np.where(c >= 0, units[np.maximum(c, 0)], 0).sum(axis=1)
 
 
+def _mu(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, start: np.ndarray | None) -> np.ndarray:
+    """Min-max's weights of the bound: its multipliers λ on the largest readings at the
+    continuous optimum ``start`` (``Σ λ_k w_k conj(α_k) u_k = 0``, ``Σ λ = 1``, λ >= 0, by
+    NNLS), 0.999 λ + 0.001/N; 1/N without ``start``."""
+    from scipy.optimize import nnls
+
+    n, p = alpha.shape
+    if start is None:
+        return np.full(n, 1.0 / n)
+    r = v0 + np.einsum("kj,j->k", alpha, start)
+    top = np.flatnonzero(w * np.abs(r) >= np.max(w * np.abs(r)) * (1 - 1e-6))
+    g = w[top, None] * alpha[top].conj() * (r[top] / np.maximum(np.abs(r[top]), 1e-300))[:, None]
+    big = 1e3 * np.max(np.abs(g))
+    lam = np.zeros(n)
+    lam[top] = nnls(np.vstack([g.real.T, g.imag.T, np.full((1, top.size), big)]), np.append(np.zeros(2 * p), big))[0]
+    return (1 - 1e-3) * lam / np.sum(lam) + 1e-3 / n if np.sum(lam) > 0.0 else np.full(n, 1.0 / n)
+
+
 def best_weights(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, method: str, planes: list[Plane],
                  drawers: list[tuple[np.ndarray, np.ndarray]], limits: np.ndarray | None = None,
                  start: np.ndarray | None = None) -> Choice:
-    """The best choice of weights (see the module notes).
-
-    Parameters
-    ----------
-    alpha : (N, P) complex, per kg at the trial radius; v0 : (N,); w : (N,) weights
-    method : "least-squares" or "min-max" (an exact job is judged by least squares)
-    planes : P Plane
-    drawers : per drawer (masses kg (S,), counts (S,) int)
-    limits : (N,) largest |r_k| (inf: none), or None
-    start : (P,) complex — min-max: the continuous optimum; its multipliers λ weigh the
-        bound ``G² >= Σ μ_k (w_k |r_k|)²``, ``μ = 0.999 λ + 0.001/N`` (without it 1/N)
-
-    Raises
-    ------
-    BalanceValueError
-        ``drawer``: more choices near the correction than :data:`MAX_CHOICES`.
-    """
-    from scipy.optimize import nnls
+    """The best choice of weights (the module notes): ``alpha`` (N, P) per kg at the trial
+    radius, ``v0`` (N,), weights ``w`` (N,), method "least-squares" or "min-max", the planes,
+    the drawers ((masses kg, counts)), the largest |r_k| (inf: none) and, for min-max, the
+    continuous optimum (it tightens the bound). Raises ``drawer`` beyond :data:`MAX_CHOICES`."""
     from scipy.spatial import cKDTree
 
     n, p = alpha.shape
-    w0 = w
-    s = float(np.max(np.abs(alpha)))  # readings and limits scaled alike: the same choice, no overflow
-    alpha, v0, w = alpha / s, v0 / s, w / np.max(w)
+    s, w0 = float(np.max(np.abs(alpha))), float(np.max(w))  # scaled alike: the same choice, no overflow
+    alpha, v0, w = alpha / s, v0 / s, w / w0
     L = np.full(n, np.inf) if limits is None else np.asarray(limits, dtype=float) / s
-    wq = w / math.sqrt(n) if method == "min-max" else w
-    if method == "min-max" and start is not None:  # μ: the min-max multipliers, a little of 1/N
-        r = v0 + np.einsum("kj,j->k", alpha, start)
-        a = w * np.abs(r)
-        top = np.flatnonzero(a >= np.max(a) * (1 - 1e-6))
-        g = w[top, None] * alpha[top].conj() * (r[top] / np.maximum(np.abs(r[top]), 1e-300))[:, None]
-        lam = np.zeros(n)
-        lam[top] = nnls(np.vstack([g.real.T, g.imag.T, np.full((1, top.size), 1e3 * np.max(np.abs(g)))]),
-                        np.append(np.zeros(2 * p), 1e3 * np.max(np.abs(g))))[0]
-        if np.sum(lam) > 0.0:
-            wq = w * np.sqrt((1 - 1e-3) * lam / np.sum(lam) + 1e-3 / n)
+    wq = w * np.sqrt(_mu(alpha, v0, w, start)) if method == "min-max" else w
     R = np.array(householder_qr(wq[:, None] * alpha, np.zeros(n, dtype=complex))[0])
     Wq = least_squares(alpha, v0, wq)
     F0 = float(np.sum((wq * np.abs(v0 + np.einsum("kj,j->k", alpha, Wq))) ** 2))
     shadow = np.sqrt(np.sum(np.abs(np.linalg.inv(R)) ** 2, axis=1))  # plane j's disc: sqrt(δ (Q⁻¹)_jj)
     mm = [drawers[pl.drawer][0] * pl.factor for pl in planes]
-    reach = [abs(Wq[j]) + sum(sorted(mm[j])[-planes[j].most:]) for j in range(p)]
-    everything = float(np.sum(np.abs(R) ** 2)) * sum(x * x for x in reach)
+    everything = float(np.sum(np.abs(R) ** 2)) * sum((abs(Wq[j]) + sum(sorted(mm[j])[-pl.most:])) ** 2
+                                                   for j, pl in enumerate(planes))
     a0 = w * np.abs(v0)  # no weights at all: every better choice is within its bound
     empty = (float(np.sum(a0 ** 2)) if method == "least-squares" else float(np.max(a0)) ** 2) - F0
-    delta = min(float(sum(np.sum(np.abs(R[:, j]) ** 2) * min(mm[j]) ** 2 for j in range(p))) / 1024.0, empty)
+    delta = min(sum(float(np.sum(np.abs(R[:, j]) ** 2)) * min(mm[j]) ** 2 for j in range(p)) / 1024.0, empty)
+    cap, offs = np.concatenate([d[1] for d in drawers]), np.cumsum([0] + [d[0].size for d in drawers])
     for _ in range(200):
         cands = []
         for j, pl in enumerate(planes):
             masses, counts = drawers[pl.drawer]
-            c, vec = _plane_choices(pl, masses, counts, complex(Wq[j]), shadow[j] * math.sqrt(delta) * (1 + 1e-12))
-            usage = np.zeros((len(c), sum(d[0].size for d in drawers)), dtype=int)
-            off = sum(d[0].size for d in drawers[:pl.drawer])
+            c, vec = _choices(pl, masses, counts, complex(Wq[j]), shadow[j] * math.sqrt(delta) * (1 + 1e-12))
+            usage = np.zeros((len(c), cap.size), dtype=np.int8)
             for col in c.T:
-                np.add.at(usage, (np.flatnonzero(col >= 0), off + col[col >= 0] % masses.size), 1)
+                np.add.at(usage, (np.flatnonzero(col >= 0), offs[pl.drawer] + col[col >= 0] % masses.size), 1)
             cands.append((c, vec, usage, cKDTree(np.stack([vec.real, vec.imag], axis=1))))
-        found = _search(alpha, v0, w, method, L, R, Wq, F0, delta, cands, np.concatenate([d[1] for d in drawers]))
-        if delta >= everything or found is not None and found[3] <= 1.0 and found[4] <= delta:
-            picks, W, g, viol, _, examined = found
-            weights = tuple(tuple((int(u) // drawers[planes[j].drawer][0].size,
-                                   int(u) % drawers[planes[j].drawer][0].size) for u in cands[j][0][m] if u >= 0)
-                            for j, m in enumerate(picks))
-            return Choice(weights, W, g * s * float(np.max(w0)), max(viol, 0.0), examined)
-        delta = max(4.0 * delta, found[4] if found is not None and found[3] <= 1.0 else 0.0)
+        best = _search(alpha, v0, w, method, L, R, Wq, F0, delta, cands, cap)
+        if delta >= everything or best[0] is not None and best[3] <= 1.0 and best[4] <= delta:
+            picks, W, _, viol, _, examined = best
+            r = w * np.abs(v0 + np.einsum("kj,j->k", alpha, W))
+            g = math.sqrt(float(np.sum(r * r))) if method == "least-squares" else float(np.max(r))
+            return Choice(tuple(tuple(divmod(int(u), drawers[planes[j].drawer][0].size) for u in cands[j][0][m]
+                                      if u >= 0) for j, m in enumerate(picks)), W, g * s * w0, max(viol, 0.0), examined)
+        delta = max(4.0 * delta, best[4] if best[3] <= 1.0 else 0.0)
     raise BalanceValueError("drawer", "no choice of the drawer's weights was found in reach of the correction; "
                                       "check the drawer's masses against the trial masses")
 
 
-def _search(alpha, v0, w, method, L, R, Wq, F0, delta, cands, cap):
-    """One search within ``δ``: (picks per plane, W, objective, violation, its bound,
-    examined) of the best choice found, or None."""
-    n, p = alpha.shape
-    best: list = [None, None, math.inf, math.inf, math.inf, 0]  # picks, W, key, violation, bound, examined
+def _search(alpha, v0, w, method, L, R, Wq, F0, delta, cands, cap) -> list:
+    """One search within ``δ``: [picks per plane, W, objective, violation, its bound,
+    examined] of the best choice found (picks None: none)."""
+    p = alpha.shape[1]
+    best: list = [None, None, math.inf, math.inf, math.inf, 0]
 
     def level(i: int, W: np.ndarray, used: np.ndarray, spent: float, picks: list) -> None:
         c, vec, usage, tree = cands[i]
@@ -204,25 +178,18 @@ def _search(alpha, v0, w, method, L, R, Wq, F0, delta, cands, cap):
                 level(i - 1, W, used + usage[m], spent + t, [m] + picks)
             return
         best[5] += keep.size
-        if best[5] > MAX_CHOICES:
-            raise BalanceValueError("drawer", f"the drawer search examines more than {MAX_CHOICES} choices; "
-                                              "give fewer weights a plane, holes or sizes")
-        if not keep.size:
-            return
-        Ws = np.repeat(W[None, :], keep.size, axis=0)
-        Ws[:, 0] = vec[keep]
-        r = v0[None, :] + np.einsum("kj,mj->mk", alpha, Ws)
-        a = w * np.abs(r)
-        g = np.sqrt(np.sum(a * a, axis=1)) if method == "least-squares" else np.max(a, axis=1)
-        viol = np.max(np.abs(r) / L, axis=1)
-        key = np.where(viol <= 1.0, g, math.inf)
-        k = int(np.argmin(key)) if np.isfinite(key).any() else int(np.argmin(viol))
-        if ((key[k], viol[k]) < (best[2], best[3])) if best[3] > 1.0 else key[k] < best[2]:
-            best[:5] = [[keep[k]] + picks, Ws[k].copy(), key[k], viol[k], float(g[k] ** 2 - F0)]
+        _budget(best[5])
+        if keep.size:
+            Ws = np.repeat(W[None, :], keep.size, axis=0)
+            Ws[:, 0] = vec[keep]
+            r = v0[None, :] + np.einsum("kj,mj->mk", alpha, Ws)
+            a = w * np.abs(r)
+            g = np.sqrt(np.sum(a * a, axis=1)) if method == "least-squares" else np.max(a, axis=1)
+            viol = np.max(np.abs(r) / L, axis=1)
+            key = np.where(viol <= 1.0, g, math.inf)
+            k = int(np.argmin(key)) if np.isfinite(key).any() else int(np.argmin(viol))
+            if ((key[k], viol[k]) < (best[2], best[3])) if best[3] > 1.0 else key[k] < best[2]:
+                best[:5] = [[keep[k]] + picks, Ws[k].copy(), key[k], viol[k], float(g[k] ** 2 - F0)]
 
     level(p - 1, np.array(Wq, dtype=complex), np.zeros(cap.size, dtype=int), 0.0, [])
-    if best[0] is None:
-        return None
-    a = w * np.abs(v0 + np.einsum("kj,j->k", alpha, best[1]))
-    g = float(np.sqrt(np.sum(a * a))) if method == "least-squares" else float(np.max(a))
-    return best[0], best[1], g, float(best[3]), best[4], best[5]
+    return best

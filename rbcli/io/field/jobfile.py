@@ -419,19 +419,26 @@ def _holes(ctx: _Ctx, node: ys.Node, what: str) -> JobHoles:
                     ctx.where(node))
 
 
+def mass_or_unbalance(text: str, bare: float) -> tuple[float, str] | str | None:
+    """``'50 g'`` -> (kg, "mass"), ``'5000 g*mm'`` -> (kg m, "unbalance"), a bare number
+    times ``bare``; None for anything not positive and finite, the unit's error in words."""
+    try:
+        value, dim = un.parse_quantity(text)
+    except un.UnitError as exc:
+        return str(exc)
+    kind = {un.Dim(): "mass", un.Dim(M=1): "mass", un.Dim(M=1, L=1): "unbalance"}.get(dim)
+    value *= bare if dim == un.Dim() else 1.0
+    return (value, kind) if kind is not None and 0.0 < value < math.inf else None
+
+
 def _mass_or_unbalance(ctx: _Ctx, node: ys.Node, what: str) -> tuple[float, str]:
     """A positive mass (kg; bare: the file's mass unit) or mass x radius (kg m)."""
-    if isinstance(node, ys.ScalarNode) and isinstance(node.value, str):
-        try:
-            value, dim = un.parse_quantity(node.value)
-        except un.UnitError as exc:
-            raise ctx.error(node, f"{what}: {exc}") from None
-        kind = "mass" if dim == un.Dim(M=1) else "unbalance" if dim == un.Dim(M=1, L=1) else None
-        if kind is None or not 0.0 < value < math.inf:
-            raise ctx.error(node, f"{what} must be a positive mass ('50 g') or mass x radius ('5000 g*mm'), "
-                                  f"not {fl.describe(node)}")
-        return value, kind
-    return fl.positive(ctx, node, "mass", what), "mass"
+    got = mass_or_unbalance(node.value, ctx.factor("mass", node)[0]) if isinstance(node, ys.ScalarNode) and \
+        isinstance(node.value, str) else (fl.positive(ctx, node, "mass", what), "mass")
+    if not isinstance(got, tuple):
+        raise ctx.error(node, f"{what} must be a positive mass ('50 g') or mass x radius ('5000 g*mm'), not "
+                              f"{fl.describe(node)}" + (f": {got}" if got else ""))
+    return got
 
 
 def _speeds(ctx: _Ctx, items: dict) -> tuple[JobSpeed, ...]:
