@@ -168,83 +168,52 @@ def _date() -> str:
 
 MANUAL["field-balance"] = {
     "notes": [
-        "The model (physics notes balance.md §5): readings V = amplitude e^{i phase}, masses W = "
-        "m e^{i angle}; V = V0 + alpha W, alpha (N readings x P planes) from one trial run per "
-        "plane, alpha_kj = (V_kj - V_k0)/T_j (V_kj - V_k,j-1 with --cumulative). One plane, one "
-        "sensor: W = -V0/H, H = (V1 - V0)/T; W - T with the trial left on. N = P: alpha W = -V0. "
-        "N > P: least squares, min sum (w_k |r_k|)^2 over r = V0 + alpha W (Goodman 1964; a QR "
-        "factorisation), or min-max, min max w_k |r_k| (as hsbalance's Min_max; a log-barrier "
-        "method polished by Newton on its optimality conditions). Every sum is in a fixed order: "
-        "the same bytes for any number of BLAS threads.",
-        "Limits: --max-mass (one for all planes or one per plane; a mass x radius such as "
-        "'5000 g*mm' limits the unbalance) and --limit (the largest predicted reading, for all or "
-        "SENSOR=amplitude) make the solve a second-order cone program, in least squares and "
-        "min-max alike; the output lists each limit, whether it binds and the objective without "
-        "it. Limits that cannot all be met give the correction that exceeds them least (every "
-        "reading within s times its limit, s as small as can be), said. --robust huber: least "
-        "squares reweighted by Huber's rule (weight c/|r_k| beyond c = 2.448 s, s = median|r|/"
-        "sqrt(ln 4)), the readings it discounts named.",
-        "A drawer: --drawer 'mass[:count],...' (a bare mass is grams) and --max-weights K (1 to 4, "
-        "default 2) choose the best weights at each plane's holes (--positions N, hole 1 on the "
-        "0° mark, at --radius; in a job file a plane's holes: count and zero or angles, radius, "
-        "numbering with or against the angles, per_hole) by the method's objective on the "
-        "predicted readings, under the limits, by an exact search (every choice that could be "
-        "better is examined, none rounded from the continuous answer): a hole takes one weight "
-        "unless per_hole says more; a weight at the hole radius r_h counts r_h/r_trial at the "
-        "trial radius; --max-mass is then the weights' total.",
-        "Checks: cond(alpha) > 50; Darlow's plane-significance factor at or below 0.2 (the part of "
-        "a plane's influence column not explained by the larger columns before it; Darlow, ASME "
-        "82-GT-269, 1982); a trial run that changed no reading by 25 % or 25°; a reading the "
-        "correction makes larger.",
-        "Angles: corrections come out in the sense of the trial angles; the phases must be counted "
-        "in that sense, or give --phase lag|lead and --angle-sense with|against: lag with angles "
-        "counted with the rotation, or lead against it, are mirrored (phase -> -phase) and back in "
-        "the predicted readings. --rotation cw|ccw draws the dial as the rotor is seen.",
-        "Readings: all bare (one relative scale) or all with units of one kind, converted exactly "
-        "to SI: displacement µm, mm, mil; velocity mm/s, in/s; acceleration g (standard gravity), "
-        "m/s². A measure after the unit (pk, pk-pk, rms) is kept; mixed measures are converted to "
-        "the first reading's (rms with --severity); a mix with and without is refused unless "
-        "--measure names the others'. Amplitudes and trial masses are 0 or 1e-100 to 1e100 (SI). "
-        "A bare trial mass is in grams; --trial-radius and --radius are metres unless a unit is "
-        "given. Tables show µm, mm/s, m/s², or mil, in/s, g with --units in,... .",
-        "Rounding: --mass-step and --angle-step round each correction (half up), --positions N "
-        "splits it onto the two neighbouring of N equally spaced positions; the readings those "
-        "masses leave are predicted (JSON fitted).",
-        "Severity: --severity iso20816-3 --group 1|2 --foundation rigid|flexible gives each "
-        "reading's zone (r.m.s. velocity; displacement and acceleration converted at --speed) "
-        "before and after: boundaries A/B, B/C, C/D in mm/s r.m.s. group 1 rigid 2.3, 4.5, 7.1; "
-        "flexible 3.5, 7.1, 11.0; group 2 rigid 1.4, 2.8, 4.5; flexible 2.3, 4.5, 7.1 (ISO "
-        "20816-3:2022 Annex A). The standard judges the broadband velocity, so the machine's zone "
-        "is at least the one shown.",
-        "Job file (--job-schema prints its JSON Schema): rbcli: 1, job: field-balance, name, units "
-        "{length, mass, angular_speed} (bare lengths m, masses g, speeds rad/s), conventions, "
-        "readings {measure}, sensors [names, or {name, weight, limit}], planes [{name, radius "
-        "(trial), correction_radius, positions or holes, at, max_mass, max_weights, drawer}], "
-        "speeds [{name, speed, limit}], initial {speed: [a reading per sensor]}, trials [{plane, "
-        "mass, readings}], cumulative, method, mass_step, angle_step, severity {group, "
-        "foundation}, rotor {mass or body, bearings, com, bearing_load, g, trial_fraction}, "
-        "coefficients, drawer, max_weights, robust. Several speeds stack into one solve. Errors "
-        "are located at their key (file:line:col); a setting given in the file and on the command "
-        "line is refused. A job of more than 20 000 influence coefficients (readings per run x "
-        "planes) is refused (RBCLI_MAX_FIELD_COEFFICIENTS raises it).",
-        "Stored coefficients: --save-coefficients FILE.json writes the influence coefficients "
-        "(re, im exact, read back bit for bit) with units, conventions, sensors, speeds, planes, "
-        "a row per reading (every sensor at every speed) and a sha256 fingerprint of it all. "
-        "--coefficients FILE with --initial alone is a trim run; a file changed since it was "
-        "written, rows out of order, or sensors, speeds, planes, units or measure that do not "
-        "match the job are refused, saying what differs.",
-        "Trial mass: --suggest-trial sizes m_T = f F / (r Omega^2), F the static load on the "
-        "bearing nearest the plane (lever rule with the job's rotor; else half the rotor's weight, "
-        "or --bearing-load), f = 10 % (--trial-fraction).",
-        "--plot FILE draws the polar diagrams: per reading O, each run O+T in its colour and its "
-        "change, the prediction; per plane the trial, the correction and the masses fitted (a "
-        "drawer's holes numbered on the rim); a legend per dial; at most 12 readings (the largest) "
-        "and 6 planes. --report FILE.html|FILE.md writes the job sheet: readings, trial masses, "
-        "diagram, coefficients, corrections, limits, masses fitted, predicted readings against "
-        "limits, severity, warnings and the job file; wide tables show 12 planes.",
-        "One- and two-plane jobs with one reading per plane, given with --initial, --trial, --run, "
-        "--cumulative, --radius and --trial-radius only, print what rbcli always printed; anything "
-        "more gives the extended output.",
+        "The model (physics notes balance.md §5): V = V0 + alpha W, readings V = amplitude "
+        "e^{i phase}, masses W = m e^{i angle}; alpha_kj = (V_kj - V_k0)/T_j (V_kj - V_k,j-1 with "
+        "--cumulative). N = P: alpha W = -V0 (one plane: W = -V0/H; W - T with the trial on). N > P: "
+        "least squares, min sum (w_k |r_k|)^2, r = V0 + alpha W (Goodman 1964; a QR), or min-max, "
+        "min max w_k |r_k| (as hsbalance's Min_max; a log-barrier method polished by Newton on its "
+        "optimality conditions). Sums in a fixed order: the same bytes for any BLAS thread count.",
+        "Limits: --max-mass (for all planes or per plane; a mass x radius such as '5000 g*mm' limits "
+        "the unbalance) and --limit (the largest predicted reading, for all or SENSOR=amplitude) make "
+        "a second-order cone program, in least squares and min-max; the output lists each limit, "
+        "whether it binds, the objective without it; limits that cannot all be met give the "
+        "correction exceeding them least (every reading within s times its limit), said. --robust "
+        "huber reweights least squares by Huber's rule (c/|r_k| beyond c = 2.448 median|r|/sqrt(ln "
+        "4)), naming the readings it discounts.",
+        "A drawer: --drawer 'mass[:count],...' (bare: grams) and --max-weights K (1-4, default 2) "
+        "choose the best weights at each plane's holes (--positions N from 0°, at --radius; a job "
+        "file's holes: count and zero or angles, radius, numbering with or against the angles, "
+        "per_hole) by the method's objective on the predicted readings, under the limits, by an "
+        "exact search (never rounded from the continuous answer). A weight at hole radius r_h counts "
+        "r_h/r_trial; --max-mass is then the weights' total.",
+        "Checks: cond(alpha) > 50; Darlow's plane-significance factor at or below 0.2 (Darlow, ASME "
+        "82-GT-269, 1982); a trial that changed no reading by 25 % or 25°; a reading made larger.",
+        "Angles: corrections are in the sense of the trial angles; give --phase lag|lead and "
+        "--angle-sense with|against to mirror phases counted the other way. Readings: all bare or "
+        "all of one kind (displacement, velocity, acceleration; g is gravity there, the gram in a "
+        "trial mass), measures pk, pk-pk, rms converted; amplitudes and trial masses 0 or 1e-100 to "
+        "1e100 (SI). Rounding: --mass-step, --angle-step, --positions N (split onto the two "
+        "neighbouring positions).",
+        "Severity: --severity iso20816-3 --group 1|2 --foundation rigid|flexible: zones before and "
+        "after (r.m.s. velocity), boundaries A/B, B/C, C/D mm/s: group 1 rigid 2.3, 4.5, 7.1; flexible "
+        "3.5, 7.1, 11.0; group 2 rigid 1.4, 2.8, 4.5; flexible 2.3, 4.5, 7.1 (ISO 20816-3 Annex A).",
+        "Job file (--job-schema): units, conventions, readings {measure}, sensors [{name, weight, "
+        "limit}], planes [{name, radius, correction_radius, positions or holes, at, max_mass, "
+        "max_weights, drawer}], speeds [{name, speed, limit}], initial, trials, cumulative, method, "
+        "mass_step, angle_step, severity, rotor, coefficients, drawer, max_weights, robust. Errors "
+        "are located at their key; a setting in the file and on the command line is refused; more "
+        "than 20 000 influence coefficients (readings x planes) is refused unless "
+        "RBCLI_MAX_FIELD_COEFFICIENTS says more.",
+        "Stored coefficients: --save-coefficients FILE.json (re, im exact; units, conventions, "
+        "sensors, speeds, planes, a row per reading, a sha256 fingerprint); --coefficients FILE "
+        "with --initial alone is a trim run. A file changed since written, rows out of order, or "
+        "names, units or measure that do not match the job are refused, saying what differs.",
+        "--suggest-trial: m_T = f F / (r Omega^2), F the static load on the bearing nearest the plane, "
+        "f = 10 % (--trial-fraction). --plot: polar diagrams, a legend per dial, at most 12 readings "
+        "and 6 planes. --report FILE.html|FILE.md: the job sheet (wide tables show 12 planes).",
+        "One- and two-plane jobs given with --initial, --trial, --run, --cumulative, --radius and "
+        "--trial-radius only print what rbcli always printed.",
     ],
     "json": [
         ("planes, corrections", "P; [{name, mass (kg), angle_deg, mass_trial_on, angle_trial_on_deg, radius (m or null)}]."),

@@ -31,7 +31,6 @@ from rbcli.core.field.significance import SIGNIFICANCE_LIMIT, plane_significance
 from rbcli.core.field.solve import (
     HUBER_C, FieldSolution, classic, deg, influence_matrix, matvec, small_response, solve,
 )
-from rbcli.errors import ParamError, literal
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.job import Job
@@ -144,7 +143,7 @@ def _extended(job: Job) -> FieldBalanceResult:
             job, V0, after, rows, "fitted" if fitted else "computed"),
         suggested_trial=trial.suggestions(job, alpha, V0), limits=_limits(job, sol, rows, scales),
         robust=None if sol.robust is None else Robust("huber", HUBER_C, tuple(float(x) for x in sol.robust), tuple(
-            f"{s}{' at ' + v if v else ''}" for (s, v), h in zip(rows, sol.robust) if h < 1.0)),
+            name for name, h in zip(_names(rows), sol.robust) if h < 1.0)),
         warnings=_warnings(job, sol, sig, small, V0, rows) + _shop_warnings(job, sol, fitted, rows),
         **_described(job))
 
@@ -172,16 +171,8 @@ def _solve(job: Job, V0: np.ndarray) -> tuple[np.ndarray, FieldSolution, tuple[b
 
 def _max_mass(job: Job) -> list[float] | None:
     """Each plane's largest |W| (kg at the trial radius; inf: none)."""
-    if not any(job.max_mass):
-        return None
-    out = []
-    for lim, rr, name in zip(job.max_mass, job.plane_radii, job.plane_names):
-        if lim is not None and lim[1] == "unbalance" and rr is None:
-            raise ParamError("max_mass", f"plane {literal(name)}: a mass x radius limit needs the radius the "
-                                         "trial sat at")
-        out.append(math.inf if lim is None else lim[0] * (1.0 if rr is None else rr[1] / rr[0])
-                   if lim[1] == "mass" else lim[0] / rr[0])
-    return out
+    return [math.inf if m is None else m[0] * (rr[1] / rr[0] if rr else 1.0) if m[1] == "mass" else m[0] / rr[0]
+            for m, rr in zip(job.max_mass, job.plane_radii)] if any(job.max_mass) else None
 
 
 def _limits(job: Job, sol: FieldSolution, rows: Rows, scales: list[float]) -> Limits | None:
@@ -229,17 +220,17 @@ def _drawer(job: Job, alpha: np.ndarray, V0: np.ndarray, rows: Rows, sol: FieldS
 
 def _shop_warnings(job: Job, sol: FieldSolution, fitted: Fitted | None, rows: Rows) -> tuple[str, ...]:
     """Limits that cannot be met, readings a robust fit discounted."""
-    out = []
-    if not sol.feasible:
-        out.append(f"the limits cannot all be met: the correction is the one that exceeds them least (each "
-                   f"reading within {sol.violation:.4g} times its limit)")
-    if fitted is not None and fitted.drawer is not None and fitted.drawer.violation > 1.0:
-        out.append(f"no choice of the drawer's weights meets the limits: the one chosen exceeds them least "
-                   f"({fitted.drawer.violation:.4g} times a limit)")
-    if sol.robust is not None:
-        out += [f"reading {s}{' at ' + v if v else ''} discounted by the robust fit (weight {h:.3g}): check it"
-                for (s, v), h in zip(rows, sol.robust) if h < 1.0]
-    return tuple(out)
+    d = fitted.drawer if fitted is not None else None
+    return tuple(([f"the limits cannot all be met: the correction exceeds them least (each reading within "
+                   f"{sol.violation:.4g} times its limit)"] if not sol.feasible else [])
+                 + ([f"no choice of the drawer's weights meets the limits: the one chosen exceeds them least "
+                     f"({d.violation:.4g} times a limit)"] if d and d.violation > 1.0 else [])
+                 + [f"reading {name} discounted by the robust fit (weight {h:.3g}): check it"
+                    for name, h in zip(_names(rows), () if sol.robust is None else sol.robust) if h < 1.0])
+
+
+def _names(rows: Rows) -> list[str]:
+    return [f"{s}{' at ' + v if v else ''}" for s, v in rows]
 
 
 def _correction(job: Job, j: int, w: complex, scale: float) -> FieldCorrection:

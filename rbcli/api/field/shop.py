@@ -55,6 +55,9 @@ def read(job: Job) -> Job:
     if len(items) not in (0, 1, p):
         raise ParamError("max_mass", f"give one largest mass for every plane or one per plane ({p}), not {len(items)}")
     mm = tuple(_max_mass(items[0 if len(items) == 1 else j]) if items else x and x.max_mass for j, x in enumerate(pl))
+    for m, rr, name in zip(mm, job.plane_radii, job.plane_names):
+        if m is not None and m[1] == "unbalance" and rr is None:
+            raise ParamError("max_mass", f"plane {literal(name)}: a mass x radius limit needs the plane's radius")
     job = replace(job, max_mass=mm, limits=_limits(job, o.limit))
     drawers = [_texts(o.drawer) or (src and src.drawer) or []] + [x.drawer for x in pl if x and x.drawer]
     if not any(drawers):
@@ -82,8 +85,6 @@ def read(job: Job) -> Job:
         if not 1 <= most <= MOST_WEIGHTS:
             raise ParamError("max_weights", f"must be from 1 to {MOST_WEIGHTS}, not {most}")
         lim = mm[j]
-        if lim is not None and lim[1] == "unbalance" and r is None:
-            raise ParamError("max_mass", f"plane {name}: a mass x radius limit needs the radius the weights go at")
         own += bool(x and x.drawer)
         planes.append(Plane(tuple(math.radians(a) for a in h.angles), 1.0 if r is None else r / rr[0], most,
                             h.per_hole, math.inf if lim is None else lim[0] / (1.0 if lim[1] == "mass" else r),

@@ -1,14 +1,12 @@
 """Corrections under limits: least squares and min-max with second-order cone constraints.
 
-Variables ``z`` (real), objective ``½|B z + b|² + c·z``, constraints
-``|G_i z + h_i| <= a_i·z + β_i`` (2-vectors: a reading's or a mass's real and imaginary
-parts). Solved by a log-barrier method (Boyd and Vandenberghe, *Convex Optimization*, 2004,
-§11.3, barrier ``-log((a·z + β)² - |G z + h|²)``) from a strictly feasible start, then
-polished by Newton's method on the Karush-Kuhn-Tucker equations of its active set
-(``|G_i z + h_i|² = (a_i·z + β_i)²`` on the set), exact to round-off where it is regular.
-
-Every product and solve here is elementwise numpy with fixed-order sums (``einsum``, no BLAS,
-:func:`lu_solve`): the answer is the same bits for any number of BLAS threads.
+Minimise ``½|B z + b|² + c·z`` subject to ``|G_i z + h_i| <= a_i·z + β_i`` (2-vectors: a
+reading's or a mass's real and imaginary parts) by a log-barrier method (Boyd and
+Vandenberghe, *Convex Optimization*, 2004, §11.3; barrier ``-log ψ_i``, ``ψ_i = (a_i·z +
+β_i)² - |G_i z + h_i|²``) from a strictly feasible start, then Newton's method on the KKT
+equations of its active set, exact to round-off where it is regular. Every product and solve
+is elementwise numpy with fixed-order sums (``einsum``, :func:`lu_solve`; no BLAS): the same
+bits for any number of BLAS threads.
 """
 
 from __future__ import annotations
@@ -23,12 +21,11 @@ def mm(x: np.ndarray, y: np.ndarray) -> np.ndarray:
 
 def lu_solve(m: np.ndarray, v: np.ndarray) -> np.ndarray | None:
     """``m⁻¹ v`` by Gaussian elimination with partial pivoting (Golub and Van Loan §3.4),
-    elementwise: None when ``m`` is singular to round-off."""
+    elementwise; None when ``m`` is singular to round-off."""
     a = np.array(m, dtype=np.result_type(m, v, float))
     x = np.array(v, dtype=a.dtype)
-    n = x.size
-    big = float(np.max(np.abs(a))) if n else 0.0
-    for k in range(n):
+    big = float(np.max(np.abs(a))) if x.size else 0.0
+    for k in range(x.size):
         p = k + int(np.argmax(np.abs(a[k:, k])))
         if not abs(a[p, k]) > 1e-14 * big:
             return None
@@ -36,18 +33,16 @@ def lu_solve(m: np.ndarray, v: np.ndarray) -> np.ndarray | None:
         f = a[k + 1:, k] / a[k, k]
         a[k + 1:, k:] -= f[:, None] * a[k, k:]
         x[k + 1:] -= f * x[k]
-    for k in range(n - 1, -1, -1):
+    for k in range(x.size - 1, -1, -1):
         x[k] = (x[k] - np.sum(a[k, k + 1:] * x[k + 1:])) / a[k, k]
     return x if np.all(np.isfinite(x)) else None
 
 
 def singular_values(r: np.ndarray) -> np.ndarray:
-    """The singular values of a complex matrix, largest first: one-sided Jacobi (Hestenes
-    1958; Demmel and Veselić 1992), columns rotated in round-robin pairs, elementwise."""
-    u = np.array(r, dtype=complex)
-    p = u.shape[1]
-    if p % 2:
-        u = np.hstack([u, np.zeros((u.shape[0], 1))])
+    """A complex matrix's singular values, largest first: one-sided Jacobi (Hestenes 1958;
+    Demmel and Veselić 1992), columns rotated in round-robin pairs, elementwise."""
+    p = r.shape[1]
+    u = np.hstack([np.array(r, dtype=complex), np.zeros((r.shape[0], p % 2))])
     q = u.shape[1]
     order = list(range(q))
     for _ in range(60):
@@ -55,16 +50,14 @@ def singular_values(r: np.ndarray) -> np.ndarray:
         for _ in range(q - 1):
             i, j = np.array(order[: q // 2]), np.array(order[q // 2:][::-1])
             x, y = u[:, i], u[:, j]
-            al, be = np.sum(abs(x) ** 2, axis=0), np.sum(abs(y) ** 2, axis=0)
-            ga = np.sum(x.conj() * y, axis=0)
+            al, be, ga = np.sum(abs(x) ** 2, axis=0), np.sum(abs(y) ** 2, axis=0), np.sum(x.conj() * y, axis=0)
             g = np.abs(ga)
             go = g > 1e-14 * np.sqrt(al * be)
             done = done and not np.any(go)
-            ph = np.where(go, ga / np.where(g > 0, g, 1.0), 1.0)
             zeta = (be - al) / (2.0 * np.where(go, g, 1.0))
             t = np.where(go, np.sign(zeta + (zeta == 0)) / (np.abs(zeta) + np.sqrt(1.0 + zeta**2)), 0.0)
             c = 1.0 / np.sqrt(1.0 + t**2)
-            y = y * ph.conj()
+            y = y * np.where(go, ga / np.where(g > 0, g, 1.0), 1.0).conj()
             u[:, i], u[:, j] = c * x - c * t * y, c * t * x + c * y
             order = order[:1] + order[-1:] + order[1:-1]
         if done:
@@ -73,14 +66,12 @@ def singular_values(r: np.ndarray) -> np.ndarray:
 
 
 class Cones:
-    """The constraints ``|G_i z + h_i| <= a_i·z + β_i``: ``G`` (C, 2, n), ``h`` (C, 2),
-    ``a`` (C, n), ``beta`` (C,)."""
+    """``|G_i z + h_i| <= a_i·z + β_i``: ``G`` (C, 2, n), ``h`` (C, 2), ``a`` (C, n), ``beta`` (C,)."""
 
     def __init__(self, G: np.ndarray, h: np.ndarray, a: np.ndarray, beta: np.ndarray):
         self.G, self.h, self.a, self.beta = G, h, a, beta
 
     def parts(self, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(u_i = G_i z + h_i, s_i = a_i·z + β_i)."""
         return np.einsum("ckn,n->ck", self.G, z) + self.h, np.einsum("cn,n->c", self.a, z) + self.beta
 
     def slack(self, z: np.ndarray) -> np.ndarray:
@@ -88,7 +79,7 @@ class Cones:
         return s - np.sqrt(np.sum(u * u, axis=1))
 
     def grad(self, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """ψ_i = s_i² - |u_i|² and ∇ψ_i (C, n)."""
+        """ψ_i and ∇ψ_i (C, n)."""
         u, s = self.parts(z)
         return s * s - np.sum(u * u, axis=1), 2.0 * (s[:, None] * self.a - np.einsum("ck,ckn->cn", u, self.G))
 
@@ -98,91 +89,75 @@ class Cones:
                       - np.einsum("c,ckm,ckn->mn", w, self.G, self.G, optimize=False))
 
 
-def _objective(B: np.ndarray, b: np.ndarray, c: np.ndarray, z: np.ndarray) -> float:
+def _f(B, b, c, z) -> float:
     r = np.einsum("kn,n->k", B, z) + b
     return 0.5 * float(np.sum(r * r)) + float(np.sum(c * z))
 
 
-def _gradient(B: np.ndarray, b: np.ndarray, c: np.ndarray, z: np.ndarray) -> np.ndarray:
+def _df(B, b, c, z) -> np.ndarray:
     return np.einsum("kn,k->n", B, np.einsum("kn,n->k", B, z) + b) + c
 
 
 def _barrier(B, b, c, cones: Cones, z: np.ndarray) -> tuple[np.ndarray, float]:
-    """The barrier method's last point and its ``t`` (the duality gap is ``C/t``)."""
-    H0 = mm(B.T, B)
-    t = 1.0
-    m = cones.beta.size
+    """The barrier method's last point and its ``t`` (the duality gap is about ``C/t``)."""
+    H0, t = mm(B.T, B), 1.0
     for _ in range(40):
         for _ in range(60):
             psi, g = cones.grad(z)
-            grad = t * _gradient(B, b, c, z) - np.sum(g / psi[:, None], axis=0)
-            hess = t * H0 - cones.weighted(1.0 / psi) + mm(g.T / psi, g / psi[:, None])
-            dz = lu_solve(hess, -grad)
+            grad = t * _df(B, b, c, z) - np.sum(g / psi[:, None], axis=0)
+            dz = lu_solve(t * H0 - cones.weighted(1.0 / psi) + mm(g.T / psi, g / psi[:, None]), -grad)
             if dz is None:
                 return z, t
-            dec = -float(np.sum(grad * dz))
+            dec = -float(np.sum(grad * dz))  # the Newton decrement, squared
             if dec <= 1e-11:
                 break
-            step, f0 = 1.0, t * _objective(B, b, c, z) - float(np.sum(np.log(psi)))
-            while step > 1e-12:
+            step, f0 = 1.0, t * _f(B, b, c, z) - float(np.sum(np.log(psi)))
+            while step > 1e-12:  # backtracking, inside the cones
                 zn = z + step * dz
-                psn, _ = cones.grad(zn)
+                psn = cones.grad(zn)[0]
                 if np.all(cones.slack(zn) > 0.0) and np.all(psn > 0.0) and \
-                        t * _objective(B, b, c, zn) - np.sum(np.log(psn)) <= f0 - 0.25 * step * dec:
+                        t * _f(B, b, c, zn) - np.sum(np.log(psn)) <= f0 - 0.25 * step * dec:
                     break
                 step *= 0.5
             else:
                 break
             z = zn
-        if m / t < 1e-12:
+        if cones.beta.size / t < 1e-12:
             break
         t *= 10.0
     return z, t
 
 
 def _polish(B, b, c, cones: Cones, z: np.ndarray, t: float) -> np.ndarray:
-    """Newton's method on the KKT equations of the active set at the barrier's ``z``:
-    ``∇f - Σ μ_i ∇ψ_i = 0``, ``ψ_i = 0`` on the set. Kept if it converges with ``μ >= 0``,
-    every constraint met and the objective no worse; else ``z`` as it was."""
-    psi, g = cones.grad(z)
-    S = np.flatnonzero(psi * psi * t < 1.0)  # the barrier's multiplier 1/(t ψ) above ψ
+    """Newton on ``∇f - Σ μ_i ∇ψ_i = 0``, ``ψ_i = 0`` over the barrier's active set (its
+    multiplier 1/(t ψ) above ψ); kept if it converges with μ >= 0, every constraint met
+    and the objective no worse, else ``z``."""
+    psi, _ = cones.grad(z)
+    S = np.flatnonzero(psi * psi * t < 1.0)
     if S.size == 0:
         return z
-    n, k = z.size, S.size
-    mu = 1.0 / (t * psi[S])
-    H0 = mm(B.T, B)
+    n, k, H0 = z.size, S.size, mm(B.T, B)
     sub = Cones(cones.G[S], cones.h[S], cones.a[S], cones.beta[S])
-    y = np.concatenate([z, mu])
+    y = np.concatenate([z, 1.0 / (t * psi[S])])
     for _ in range(30):
         zz, mu = y[:n], y[n:]
         psi_s, gs = sub.grad(zz)
-        F = np.concatenate([_gradient(B, b, c, zz) - np.sum(mu[:, None] * gs, axis=0), psi_s])
         J = np.zeros((n + k, n + k))
-        J[:n, :n] = H0 - sub.weighted(mu)
-        J[:n, n:] = -gs.T
-        J[n:, :n] = gs
-        step = lu_solve(J, -F)
+        J[:n, :n], J[:n, n:], J[n:, :n] = H0 - sub.weighted(mu), -gs.T, gs
+        step = lu_solve(J, -np.concatenate([_df(B, b, c, zz) - np.sum(mu[:, None] * gs, axis=0), psi_s]))
         if step is None:
             return z
         y = y + step
         if np.max(np.abs(step)) <= 1e-15 * max(1.0, float(np.max(np.abs(y)))):
             break
     zz, mu = y[:n], y[n:]
-    ok = np.all(mu >= -1e-9) and np.all(np.isfinite(y)) and np.all(cones.slack(zz) >= -1e-12 * (
-        1.0 + np.abs(cones.parts(zz)[1])))
-    if ok and _objective(B, b, c, zz) <= _objective(B, b, c, z) + 1e-12 * (1.0 + abs(_objective(B, b, c, z))):
-        return zz
-    return z
+    ok = np.all(mu >= -1e-9) and np.all(np.isfinite(y)) and np.all(
+        cones.slack(zz) >= -1e-12 * (1.0 + np.abs(cones.parts(zz)[1])))
+    return zz if ok and _f(B, b, c, zz) <= _f(B, b, c, z) + 1e-12 * (1.0 + abs(_f(B, b, c, z))) else z
 
 
 def socp(B: np.ndarray, b: np.ndarray, c: np.ndarray, cones: Cones, z: np.ndarray) -> np.ndarray:
-    """``argmin ½|B z + b|² + c·z`` subject to ``cones``, from ``z`` strictly inside them.
-
-    Parameters
-    ----------
-    B : (K, n), b : (K,), c : (n,) — the objective (``B`` may have no rows)
-    cones : Cones
-    z : (n,) — a start with every constraint strictly met
-    """
+    """``argmin ½|B z + b|² + c·z`` subject to ``cones`` (``B`` (K, n) may have no rows), from
+    ``z`` (n,) strictly inside them."""
     z, t = _barrier(B, b, c, cones, np.array(z, dtype=float))
     return _polish(B, b, c, cones, z, t)

@@ -1,28 +1,12 @@
 """Read a file of influence coefficients written by ``rbcli field-balance --save-coefficients``.
 
-The file is JSON (:data:`FORMAT`, version 2; version 1, without a fingerprint, is read too)::
-
-    {
-      "format": "rbcli field-balance influence coefficients",
-      "version": 2,
-      "fingerprint": "sha256:...",   # of everything below: the file as rbcli wrote it
-      "influence": {"reading_kind": "velocity", "reading_unit": "m/s", "measure": "rms",
-                    "per": "kg of trial mass at the plane's trial radius", ...},
-      "conventions": {"phase": "lag", "angle_sense": "against", "rotation": "cw", ...},
-      "sensors": ["NDE-H", "NDE-V"],
-      "speeds": [{"name": "run", "speed": 154.985}],            # rad/s, or null
-      "planes": [{"name": "A", "trial_radius": 0.25}],          # m, or null
-      "rows": [{"sensor": "NDE-H", "speed": "run"}, ...],       # one per reading
-      "coefficients": [[{"re": ..., "im": ..., "magnitude": ..., "angle_deg": ...}, ...], ...]
-    }
-
-``re`` and ``im`` are the coefficients exactly (JSON numbers are written with Python's
-shortest round-trip repr, so they read back bit for bit); ``magnitude`` and ``angle_deg``
-are for people and are not read. The rows are every sensor at every speed, speed by speed,
-in the file's sensor order; a file whose rows are in another order, repeated or missing, or
-whose content does not match its fingerprint (changed after rbcli wrote it), is refused:
-never read in another order. Every problem is an :class:`rbcli.errors.InputError` naming
-the file.
+JSON (:data:`FORMAT`, version 2; version 1, without a fingerprint, is read too): format,
+version, fingerprint (``sha256:`` of :data:`FINGERPRINTED`), influence {reading_kind,
+reading_unit, measure}, conventions {phase, angle_sense, rotation}, sensors, speeds [{name,
+speed rad/s}], planes [{name, trial_radius m}], rows [{sensor, speed}] (every sensor at every
+speed, speed by speed), coefficients [[{re, im, ...}]] (exact: they read back bit for bit).
+A file changed since rbcli wrote it, or whose rows are out of order, repeated or missing, is
+refused (never read in another order), naming the file.
 """
 
 from __future__ import annotations
@@ -52,11 +36,7 @@ MAX_COEFF_BYTES = 8 * 1024 * 1024
 
 @dataclass(frozen=True)
 class SavedCoefficients:
-    """What a coefficients file holds (SI: rad/s, m; coefficients per kg).
-
-    ``coefficients`` is row-major: ``coefficients[k][j]`` for reading ``k`` (``rows[k]``)
-    and plane ``j``.
-    """
+    """What a coefficients file holds (SI; ``coefficients[k][j]``: reading k, plane j, per kg)."""
 
     source: str
     reading_kind: str | None

@@ -1,30 +1,8 @@
 """Read a field-balancing job file (YAML) into a checked :class:`FieldJob`, every problem
-located at ``file:line:col``.
-
-A job names its sensors, planes (radius, positions), speeds and runs; the readings and
-trial masses stay located texts (``"6.2 mm/s@112"``, ``"50 g@0"``) that
-:mod:`rbcli.api.field.service` reads as the command line reads ``--initial`` and
-``--trial``, so a bad reading is reported at its place in the file. The format::
-
-    rbcli: 1
-    job: field-balance
-    name: ID fan 3
-    units: {length: mm, mass: g}     # bare lengths and masses (default m, and g for masses)
-    conventions: {phase: lag, angle_sense: against, rotation: cw}
-    readings: {measure: rms}         # the measure of readings that state none
-    sensors: [NDE-H, {name: NDE-V, weight: 2}]
-    planes:
-      - {name: A, radius: 250, positions: 8}
-      - {name: B, radius: 250, correction_radius: 300, at: 900}
-    speeds: [{name: run, speed: 1480 rpm}]
-    initial: {run: ["6.2 mm/s@112", "3.9 mm/s@200"]}
-    trials:
-      - {plane: A, mass: "50 g@0", readings: {run: [...]}}
-      - {plane: B, mass: "50 g@0", readings: {run: [...]}}
-
-With one speed, ``speeds`` may be left out and ``initial`` and each trial's ``readings``
-written as plain lists. Its keys are declared in its JSON Schema,
-``rbcli/data/fieldjob.schema.json`` (:func:`schema_text`).
+located at ``file:line:col``. Its keys are declared in its JSON Schema
+(``rbcli/data/fieldjob.schema.json``, :func:`schema_text`); readings, trial masses, limits
+and drawers stay located texts that :mod:`rbcli.api.field` reads as it reads the parameters.
+With one speed, ``speeds`` may be left out and runs written as plain lists.
 """
 
 from __future__ import annotations
@@ -61,7 +39,7 @@ HOLE_KEYS = tuple(_P["planes"]["items"]["properties"]["holes"]["properties"])
 
 @dataclass(frozen=True)
 class Text:
-    """A value as written in the file (a reading, a trial mass) and where."""
+    """A value as written (a reading, a mass, a limit) and where."""
 
     text: str
     where: Location
@@ -69,8 +47,7 @@ class Text:
 
 @dataclass(frozen=True)
 class JobHoles:
-    """A plane's holes: angles (degrees, hole 1 first, in the numbering's order), their
-    radius (m or None: the correction radius), how many weights one takes."""
+    """A plane's holes: angles (deg, hole 1 first), radius (m or None), numbering, per_hole."""
 
     angles: tuple[float, ...]
     radius: float | None
@@ -81,8 +58,7 @@ class JobHoles:
 
 @dataclass(frozen=True)
 class JobPlane:
-    """name; radius, correction_radius, at: m or None; positions: int or None; holes;
-    max_mass: (kg, "mass") or (kg m, "unbalance"); max_weights; drawer: texts 'mass:count'."""
+    """A plane: lengths m (or None); max_mass (kg, "mass") or (kg m, "unbalance")."""
 
     name: str
     radius: float | None
@@ -98,7 +74,7 @@ class JobPlane:
 
 @dataclass(frozen=True)
 class JobSpeed:
-    """name; speed: rad/s or None (not given); limit: the largest reading at it."""
+    """A speed: rad/s or None; the largest reading at it."""
 
     name: str
     speed: float | None
@@ -108,7 +84,7 @@ class JobSpeed:
 
 @dataclass(frozen=True)
 class JobTrial:
-    """The trial run of one plane: its mass@angle and readings per speed, per sensor."""
+    """A plane's trial run: its mass@angle, readings per speed per sensor."""
 
     plane: str
     mass: Text
@@ -118,8 +94,7 @@ class JobTrial:
 
 @dataclass(frozen=True)
 class JobRotor:
-    """What sizes a trial mass: the rotor's mass (kg) or body file (a path), bearings and com
-    (m, along the shaft), an explicit bearing load (N), g (m/s²), the fraction."""
+    """What sizes a trial mass (kg, a path, m, N, m/s²)."""
 
     mass: float | None
     body: str | None
@@ -133,13 +108,8 @@ class JobRotor:
 
 @dataclass(frozen=True)
 class FieldJob:
-    """A checked job file. Lengths m, masses kg, speeds rad/s; readings as located texts.
-
-    ``initial`` and each trial's ``readings`` hold one tuple per speed (in ``speeds``
-    order), each one Text per sensor (in ``sensors`` order). ``keys`` maps every top-level
-    key given to where it is (to locate a conflict with a command-line option); ``units``
-    the file's bare units (a bare trial mass is in ``units["mass"]``, grams by default).
-    """
+    """A checked job file (SI; readings as located texts, per speed per sensor); ``keys``:
+    where each top-level key is; ``units``: the file's bare units (masses g by default)."""
 
     source: str
     name: str | None

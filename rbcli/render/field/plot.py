@@ -1,14 +1,10 @@
-"""The polar diagrams of ``rbcli field-balance --plot`` and of the job sheet.
-
-One dial per reading — O without trial (black), each run O+T and the change T it made (in
-the run's colour, from O's tip), the predicted reading (grey) — then one per plane: each
-trial mass (its run's colour), the correction to add (black) and the masses to fit; a
-drawer's holes are drawn on the rim, numbered, with the weights chosen in them. 0° on the
-right; angles counted with the rotation run counterclockwise as the rotor is seen (the job's
-``rotation`` and ``angle_sense`` say which). Each dial has its own legend; colours differ by
-run and line styles by role, so a grey print still reads. A large job draws the
-:data:`MAX_DIALS` largest readings, each with the :data:`MAX_RUNS` runs that changed it most,
-and the first :data:`MAX_PLANES` planes, and says so.
+"""The polar diagrams of ``rbcli field-balance --plot`` and of the job sheet: a dial per
+reading (O black, each run O+T and its change in the run's colour, the prediction grey) and
+per plane (its trial, the correction, the masses fitted; a drawer's holes numbered on the
+rim), each with its legend; 0° on the right, angles running as the rotor is seen. Colours
+differ by run, line styles by role (a grey print reads). A large job draws the
+:data:`MAX_DIALS` largest readings with the :data:`MAX_RUNS` runs that changed each most and
+the first :data:`MAX_PLANES` planes, and says so.
 """
 
 from __future__ import annotations
@@ -32,8 +28,7 @@ RUN_COLOURS = ("#E69F00", "#0072B2", "#009E73", "#CC79A7", "#D55E00", "#56B4E9",
 
 
 def _sense(res: FieldBalanceResult) -> int:
-    """+1: angles drawn counterclockwise; -1: clockwise (angles counted against a
-    counterclockwise rotation, or with a clockwise one)."""
+    """+1: angles drawn counterclockwise; -1: clockwise (against a ccw rotation, with a cw one)."""
     c = res.conventions
     if c is None or c.rotation is None:
         return 1
@@ -113,8 +108,7 @@ def plot(res: FieldBalanceResult, su: ShopUnits, reading: tuple[float, str]):
 
 
 def _plane(ax, res: FieldBalanceResult, j: int, name: str, sense: int, ms: float, mu: str) -> None:
-    """Plane ``j``'s dial: its trial, the correction and the masses fitted (a drawer's holes
-    on the rim, numbered, the weights in them)."""
+    """Plane ``j``'s dial (a drawer's holes numbered on the rim, the weights in them)."""
     items = []
     if j < len(res.trial_masses):
         t = res.trial_masses[j] / ms

@@ -134,8 +134,6 @@ def _reported(z: complex, res: FieldBalanceResult) -> complex:
 def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
     """The tables of an extended job: readings, coefficients, corrections as computed and as
     fitted, the predicted readings, significance and severity."""
-    m = su.unit("mass")
-    L = su.unit("length")
     scale, ru = reading_display(res.reading_kind, su)
     rows = res.row_names()
     n_sp = len(res.run_speeds)
@@ -146,9 +144,7 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     if res.name:
         head = f"{res.name} — {head}"
     doc.heading(head)
-    doc.note(res.conventions.text if res.conventions is not None else
-             "angles in degrees, counted in the same sense as the trial angles and the phase readings "
-             "(they must agree)")
+    doc.note(res.angle_convention.replace("angles and phases in degrees", "angles in degrees"))
     doc.note("a correction is a mass to add; each plane's trial removed before the next run"
              if not res.cumulative else "a correction is a mass to add; each trial was left on for the later runs")
     readings_note(doc, res, ru)
@@ -157,7 +153,6 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
                   [[n or "—", "—" if w is None else num(w * 30.0 / 3.141592653589793, digits),
                     "—" if w is None else num(w, digits)] for n, w in res.run_speeds], right=(1, 2))
     readings_table(doc, res, scale, ru, rows, digits)
-    trials_table(doc, res, su, digits)
     influence_table(doc, res, scale, ru, rows, su, digits)
     corrections_table(doc, res, su, digits)
     limits_table(doc, res, su, scale, ru, digits)
