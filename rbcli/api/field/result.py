@@ -322,8 +322,7 @@ class FieldBalanceResult(Result):
 
     @property
     def reading_unit(self) -> str | None:
-        """The SI unit the readings (and the influence coefficients per kg) are in: "m",
-        "m/s" or "m/s^2"; None for bare readings (a relative scale)."""
+        """The readings' SI unit ("m", "m/s", "m/s^2"; None: bare)."""
         return None if self.reading_kind is None else SI_UNITS[self.reading_kind]
 
     @property
@@ -399,9 +398,7 @@ class FieldBalanceResult(Result):
     # ------------------------------------------------------------------ stored coefficients
 
     def coefficients_document(self) -> dict[str, Any]:
-        """The influence coefficients as the file ``--save-coefficients`` writes (see
-        :mod:`rbcli.io.field.coefficients` for the format): exact (re, im) per reading and plane,
-        with their units, speeds, sensor and plane names and conventions."""
+        """The file ``--save-coefficients`` writes (:mod:`rbcli.io.field.coefficients`)."""
         rows = self.row_names()
         speeds = list(self.run_speeds) or [("", None)]
         sensors = list(self.sensors) or [str(k + 1) for k in range(len(self.initial))]
@@ -415,13 +412,10 @@ class FieldBalanceResult(Result):
             "written_by": f"rbcli {__version__} field-balance",
             "job": self.name,
             "description": (
-                "Influence coefficients alpha[k][j]: the change of reading k per kg of trial mass "
-                "added in plane j at that plane's trial radius, as the complex number re + i im "
-                "(magnitude, angle_deg for people). Readings in the SI unit of their kind (m, "
-                "m/s, m/s^2), or a relative scale when bare, in the measure given; phases "
-                "counted in the sense of the trial angles (see conventions). Reuse with "
-                "rbcli field-balance --coefficients FILE --initial ... (a trim run) on the same "
-                "machine (or the same machine type) at the same speeds, sensors and radii."),
+                "alpha[k][j] = re + i im: the change of reading k (SI, or the relative scale; in the "
+                "measure given; phases in the trial angles' sense) per kg of trial mass in plane j at its "
+                "trial radius. Reuse: rbcli field-balance --coefficients FILE --initial ... (a trim run) "
+                "at the same speeds, sensors and radii. Edited, it is refused (fingerprint)."),
             "influence": {
                 "reading_kind": self.reading_kind,
                 "reading_unit": self.reading_unit,

@@ -1,28 +1,16 @@
 """Influence-coefficient balancing for any number of planes and readings (sheet §5.1).
 
-P correction planes, N >= P readings (sensors at one or more speeds, stacked: row ``k``
-is one sensor at one speed); readings ``V = amplitude e^{i phase}`` and masses
-``W = m e^{i angle}``, phases and angles counted in one sense. The linear model of a rotor
-on linear supports is ``V = V0 + alpha W`` (alpha (N, P), from one trial run per plane,
-:func:`influence_matrix`); :func:`solve` gives the correction W (kg at the trial radius, to
-ADD):
-
-* ``exact`` — N = P: ``alpha W = -V0``.
-* ``least-squares`` — N > P: minimise ``sum_k (w_k |r_k|)^2``, ``r = V0 + alpha W``
-  (Goodman 1964, J. Eng. Ind. 86(3):273-279; hsbalance's ``LeastSquares``), by a Householder
-  QR of ``D alpha`` (never the normal equations). ``robust``: iteratively reweighted with
-  Huber's weights ``min(1, c/|r_k|)``, ``c`` = 2.448 s, ``s = median |r_k| / sqrt(ln 4)``
-  (a Rayleigh scale: 95 % of a complex Gaussian's residuals lie within c).
-* ``min-max`` — N > P: minimise ``max_k w_k |r_k|`` (Foiles, Allaire and Gunter's min-max
-  balancing; hsbalance's ``Min_max``), a second-order cone program (:mod:`.cone`).
-
-Limits — a largest mass per plane, ``|W_j| <= U_j``, and a largest predicted reading,
-``|r_k| <= L_k`` — make both a cone program; limits that cannot all be met give the
-least-violating correction (the smallest ``s`` with ``|r_k| <= s L_k``), said.
-
-Pure functions, numpy arrays in, frozen results out. Every sum is in a fixed order (no
-BLAS): the same bits for any number of BLAS threads. Errors are
-:class:`~rbcli.core.balance.common.BalanceValueError` naming the parameter at fault.
+Readings ``V = amplitude e^{i phase}`` (row k: a sensor at a speed), masses ``W = m e^{i
+angle}``, counted in one sense; ``V = V0 + alpha W``, alpha (N, P) from one trial run per
+plane (:func:`influence_matrix`). :func:`solve` gives the correction W to ADD (kg at the
+trial radius): ``exact`` (N = P, ``alpha W = -V0``); ``least-squares`` (N > P, min
+``sum (w_k |r_k|)^2``, Goodman 1964, J. Eng. Ind. 86(3):273-279, by a Householder QR;
+``robust``: Huber's weights ``min(1, c/|r_k|)``, c = 2.448 s, s = median |r_k|/sqrt(ln 4),
+a Rayleigh scale: 95 % of a complex Gaussian's residuals lie within c); ``min-max`` (min
+``max w_k |r_k|``, Foiles, Allaire and Gunter; hsbalance's ``Min_max``), a cone program
+(:mod:`.cone`). Limits ``|W_j| <= U_j`` and ``|r_k| <= L_k`` make either a cone program;
+limits that cannot all be met give the least-violating correction (min s, ``|r_k| <= s
+L_k``). Every sum is in a fixed order (no BLAS): the same bits for any BLAS thread count.
 """
 
 from __future__ import annotations
@@ -318,22 +306,9 @@ def matvec(alpha: np.ndarray, w: object) -> np.ndarray:
 
 
 def least_squares(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> np.ndarray:
-    """``argmin_W sum_k (w_k |v0_k + (alpha W)_k|)^2`` by a Householder QR of ``D alpha``.
-
-    Plain Python complex arithmetic with exactly rounded sums (the matrices are small: N
-    readings by P planes): the answer is the same to the last bit on any machine, so golden
-    outputs and trim runs from stored coefficients reproduce it exactly.
-
-    Parameters
-    ----------
-    alpha : (N, P) complex, full column rank
-    v0 : (N,) complex
-    weights : (N,) positive
-
-    Returns
-    -------
-    (P,) complex ndarray
-    """
+    """``argmin_W sum_k (w_k |v0_k + (alpha W)_k|)^2`` (alpha (N, P) of full rank) by a
+    Householder QR of ``D alpha``, in Python complex arithmetic with exactly rounded sums:
+    the same bits on any machine (golden outputs and trim runs reproduce it)."""
     R, c = householder_qr(weights[:, None] * alpha, -weights * v0)
     p = len(R)
     W = [0j] * p
