@@ -28,12 +28,9 @@ from rbcli.errors import NonFiniteResult, ParamError, literal
 
 __all__ = ["FieldBalanceResult", "field_balance", "parse", "run"]
 
-#: the core's parameter names -> the parameters of :func:`field_balance`
-_CORE_PARAMS = {"v0": "initial", "v1": "run", "va": "run", "vb": "run", "trial": "trial",
-                "trial_a": "trial", "trial_b": "trial", "runs": "run", "trials": "trial",
-                "weights": "weights", "method": "method", "mass_step": "mass_step",
-                "angle_step": "angle_step", "positions": "positions", "bearing_load": "bearing_load",
-                "trial_radius": "trial_radius", "speed": "speed", "trial_fraction": "trial_fraction"}
+#: the core's parameter names that are not the parameters of :func:`field_balance` (any other
+#: name the core gives is "run")
+_CORE_PARAMS = {"v0": "initial", "trials": "trial", "limits": "limit", **{p.name: p.name for p in FIELD_BALANCE}}
 
 
 def parse(body: None = None, **kwargs: Any) -> Job:

@@ -169,13 +169,8 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     name = fl.string(ctx, items["name"][1], "name") if "name" in items else None
     if "description" in items:
         fl.string(ctx, items["description"][1], "description")
-    conv = _conventions(ctx, items)
-    measure = None
-    if "readings" in items:
-        rm = fl.mapping(ctx, items["readings"][1], "readings")
-        fl.check_keys(ctx, rm, ("measure",), "readings")
-        if "measure" in rm.items:
-            measure = _choice(ctx, rm.items["measure"][1], "measure", "readings: measure")
+    conv = _choices(ctx, items, "conventions", CONVENTION_KEYS)
+    measure = _choices(ctx, items, "readings", ("measure",)).get("measure")
     sensors, weights, limits = _sensors(ctx, items)
     planes = _planes(ctx, items)
     speeds = _speeds(ctx, items)
@@ -202,15 +197,12 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
 
 def _header(ctx: _Ctx, items: dict) -> None:
     """``rbcli: 1`` and ``job: field-balance``, when given."""
-    if "rbcli" in items:
-        v = items["rbcli"][1]
-        if not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
-            raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
-    if "job" in items:
-        v = items["job"][1]
-        if fl.string(ctx, v, "job") != "field-balance":
-            raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, "
-                               f"not {fl.describe(v)}")
+    v = items.get("rbcli", (None, None))[1]
+    if v is not None and not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
+        raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
+    if "job" in items and fl.string(ctx, v := items["job"][1], "job") != "field-balance":
+        raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, not "
+                           f"{fl.describe(v)}")
 
 
 def _units(ctx: _Ctx, items: dict) -> dict[str, str]:
@@ -277,12 +269,13 @@ def _choice(ctx: _Ctx, node: ys.Node, key: str, what: str) -> str:
     return word
 
 
-def _conventions(ctx: _Ctx, items: dict) -> dict[str, str]:
-    if "conventions" not in items:
+def _choices(ctx: _Ctx, items: dict, key: str, keys: tuple[str, ...]) -> dict[str, str]:
+    """A mapping of words (``conventions``, ``readings``), each one of its key's choices."""
+    if key not in items:
         return {}
-    cm = fl.mapping(ctx, items["conventions"][1], "conventions")
-    fl.check_keys(ctx, cm, CONVENTION_KEYS, "conventions")
-    return {k: _choice(ctx, node, k, f"conventions: {k}") for k, (_, node) in cm.items.items()}
+    cm = fl.mapping(ctx, items[key][1], key)
+    fl.check_keys(ctx, cm, keys, key)
+    return {k: _choice(ctx, node, k, f"{key}: {k}") for k, (_, node) in cm.items.items()}
 
 
 def _name(ctx: _Ctx, node: ys.Node, what: str, seen: set[str]) -> str:
