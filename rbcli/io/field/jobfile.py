@@ -524,19 +524,15 @@ def _rotor(ctx: _Ctx, items: dict, source: str) -> JobRotor | None:
     it = rm.items
     if ("mass" in it) == ("body" in it):
         raise ctx.error(rm, "rotor needs its 'mass' or a 'body' file (one of them)")
-    mass = fl.positive(ctx, it["mass"][1], "mass", "rotor: mass") if "mass" in it else None
-    body = _relative(source, fl.string(ctx, it["body"][1], "rotor: body")) if "body" in it else None
-    bearings = None
-    if "bearings" in it:
-        b = fl.floats(ctx, it["bearings"][1], "length", "rotor: bearings", n=2)
-        if b[0] == b[1]:
-            raise ctx.error(it["bearings"][1], "rotor: bearings: the two bearings must be at different positions")
-        bearings = (b[0], b[1])
-    com = fl.number(ctx, it["com"][1], "length", "rotor: com") if "com" in it else None
-    load = fl.positive(ctx, it["bearing_load"][1], "force", "rotor: bearing_load") if "bearing_load" in it else None
-    g = fl.positive(ctx, it["g"][1], "acceleration", "rotor: g") if "g" in it else None
-    frac = fl.positive(ctx, it["trial_fraction"][1], "dimensionless", "rotor: trial_fraction") if "trial_fraction" in it else None
-    return JobRotor(mass, body, bearings, com, load, g, frac, ctx.where(rm))
+    b = fl.floats(ctx, it["bearings"][1], "length", "rotor: bearings", n=2) if "bearings" in it else None
+    if b and b[0] == b[1]:
+        raise ctx.error(it["bearings"][1], "rotor: bearings: the two bearings must be at different positions")
+    read = {k: (fl.number if k == "com" else fl.positive)(ctx, it[k][1], kind, f"rotor: {k}") if k in it else None
+            for k, kind in (("mass", "mass"), ("com", "length"), ("bearing_load", "force"), ("g", "acceleration"),
+                            ("trial_fraction", "dimensionless"))}
+    return JobRotor(read["mass"], _relative(source, fl.string(ctx, it["body"][1], "rotor: body")) if "body" in it
+                    else None, b and (b[0], b[1]), read["com"], read["bearing_load"], read["g"], read["trial_fraction"],
+                    ctx.where(rm))
 
 
 def schema_text() -> str:

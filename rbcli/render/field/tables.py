@@ -112,22 +112,17 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
 # ----------------------------------------------------------------------------- extended
 
 
-def _speed_column(res: FieldBalanceResult) -> bool:
-    """Whether the tables need a speed column (several speeds, or one named)."""
-    return len(res.run_speeds) > 1 or bool(res.run_speeds and res.run_speeds[0][0])
-
-
 def _row_label(sensor: str, speed: str, res: FieldBalanceResult) -> list[str]:
-    return [sensor, speed or "—"] if _speed_column(res) else [sensor]
+    """A reading's label cells: a speed column with several speeds, or one named."""
+    return [sensor, speed or "—"] if len(res.run_speeds) > 1 or res.run_speeds and res.run_speeds[0][0] else [sensor]
 
 
 def _head(res: FieldBalanceResult) -> list[str]:
-    return ["sensor", "speed"] if _speed_column(res) else ["sensor"]
+    return ["sensor", "speed"][:len(_row_label("", "", res))]
 
 
 def _reported(z: complex, res: FieldBalanceResult) -> complex:
-    """A reading in the instrument's phase convention (the result keeps them in the angles'
-    sense)."""
+    """A reading in the instrument's phase convention (the result's are in the angles' sense)."""
     return z.conjugate() if (res.conventions is not None and res.conventions.converted) else z
 
 
