@@ -49,28 +49,10 @@ def fit_plane(
     positions: int | None = None,
     offset_deg: float = 0.0,
 ) -> FittedPlane:
-    """The masses to fit for one plane's correction.
-
-    Parameters
-    ----------
-    correction : complex — mass (kg) e^{i angle}, the computed correction
-    mass_step : float, optional — kg, > 0: each mass rounded half up to a multiple
-    angle_step_deg : float, optional — deg, in (0, 360]: the angle rounded to a multiple
-        (not with ``positions``: the positions fix the angles)
-    positions : int, optional — >= 3 equally spaced positions (holes, blades), position 1
-        at ``offset_deg``: the correction split onto the two either side of it
-    offset_deg : float — deg, the angle of position 1
-
-    Returns
-    -------
-    FittedPlane
-
-    Raises
-    ------
-    BalanceValueError
-        a step <= 0 (``mass_step``, ``angle_step``), fewer than 3 positions
-        (``positions``), an angle step with positions.
-    """
+    """The masses to fit for ``correction`` (kg e^{i angle}): each mass rounded half up to a
+    multiple of ``mass_step`` (kg), the angle to ``angle_step_deg`` (in (0, 360]; not with
+    positions), or split onto the two of ``positions`` (>= 3, equally spaced, position 1 at
+    ``offset_deg``) either side of it. A BalanceValueError names the step or positions at fault."""
     C = complex(correction)
     if mass_step is not None:
         mass_step = positive(mass_step, "mass step", "mass_step")
