@@ -69,7 +69,12 @@ def read(job: Job) -> Job:
     sizes = tuple(tuple(read_at(t, lambda s: _size(s, bare)) for t in d) for d in drawers)
     if any(len({m for m, _ in d}) != len(d) for d in sizes):
         raise ParamError("drawer", "a drawer lists a mass twice; give each size once, with its count")
-    planes, holes, own = [], [], 0
+    return replace(job, drawer=Drawer(*_planes(job, pl, mm), sizes))
+
+
+def _planes(job: Job, pl: list, mm: tuple) -> tuple[tuple[Plane, ...], tuple[JobHoles, ...]]:
+    """Each plane's search :class:`Plane` and holes."""
+    o, planes, holes, own = job.options, [], [], 0
     for j, x in enumerate(pl):
         name, rr = literal(job.plane_names[j]), job.plane_radii[j]
         h = x.holes if x is not None else None
@@ -90,7 +95,7 @@ def read(job: Job) -> Job:
                             h.per_hole, math.inf if lim is None else lim[0] / (1.0 if lim[1] == "mass" else r),
                             own if x and x.drawer else 0))
         holes.append(replace(h, radius=r))
-    return replace(job, drawer=Drawer(tuple(planes), tuple(holes), sizes))
+    return tuple(planes), tuple(holes)
 
 
 def _size(text: str, bare: str) -> tuple[float, int | None]:

@@ -188,7 +188,12 @@ def solve(alpha: object, v0: object, method: str | None = None, weights: object 
     if np.all(np.abs(W) <= U) and np.all(np.abs(r) <= L):
         return FieldSolution(_ro(W), _ro(r), name, objective=_measure(name, wr, r), violation=_violation(r, L),
                              **common)
-    name = "min-max" if method == "min-max" else "least-squares"
+    return _limited(A, V0, method, weights, wr, U, L, robust, costs, common)
+
+
+def _limited(A, V0, method, weights, wr, U, L, robust, costs, common) -> FieldSolution:
+    """The solution under the limits, the limits it meets with equality and what each costs."""
+    (n, p), name = A.shape, "min-max" if method == "min-max" else "least-squares"
     W = cone_solve(A, V0, wr, name, U, L)
     r = V0 + matvec(A, W)
     act = tuple([("mass", j) for j in range(p) if abs(W[j]) >= U[j] * (1 - 1e-9)]
