@@ -75,7 +75,8 @@ def plot(res: FieldBalanceResult, su: ShopUnits, reading: tuple[float, str]):
     dials = len(keep) + len(shown)
     cols = min(dials, 4)
     fig, axes = figure("field balancing" + (f": {res.name}" if res.name else ""), nrows=-(-dials // cols),
-                       ncols=cols, size=(4.0 * cols, 5.2 * -(-dials // cols)))
+                       ncols=cols, size=(4.0 * cols, (4.8 + 0.2 * (2 + 2 * min(len(res.runs), MAX_RUNS)))
+                                         * -(-dials // cols)))
     for ax in axes.flat:
         fig.delaxes(ax)
     sense = _sense(res)
