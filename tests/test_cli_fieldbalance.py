@@ -320,7 +320,7 @@ def test_job_sheet_html_and_markdown(cli, tmp_path):
                   "Severity (ISO 20816-3)"):
         assert f"<h2>{title}</h2>" in text
     assert text.count("<svg") == 1 and "2026-01-01" in text and "ID fan 3" in text
-    assert "masses to fit" in text and "zones of the 1× readings" in text
+    assert "masses to fit" in text and "zones of the 1× readings" in text and "trial masses" in text
     # the same job gives the same bytes (SOURCE_DATE_EPOCH)
     again = tmp_path / "again.html"
     cli("field-balance", FAN, "--report", str(again), env={"SOURCE_DATE_EPOCH": "1767225600"})
@@ -425,7 +425,10 @@ def test_readme_field_balancing_commands_print_what_it_says(cli, tmp_path):
     want = [["9.79831"], ["9.07998", "36.5937", "6.05332", "116.594"], ["1.97947", "236.17", "1.07051", "121.844", "2.701"],
             [r"A +\| +— +\| +1 \|", r"B +\| +— +\| +1\.8 \|", r"\| +0\.4 \|"],
             ["29.4325", "21.1288", "18.9552", "246.941", r"A +\| +— +\| +21\.1288 \| +29\n", r"B +\| +6 +\| +225 +\| +10\n"],
-            ["29.4325", "18.9552"]]
+            ["29.4325", "18.9552"],
+            ["25", r"20\.4031", "20.4255", "265.146", r"0\.396521", r"A +\| +1 +\| +15 +\| +20\n",
+             r"A +\| +12 +\| +45 +\| +5\n", r"B +\| +7 +\| +270 +\| +20\n", r"B +\| +8 +\| +315 +\| +5\n"],
+            [r"A +\| +— +\| +0\.9 \|", r"B +\| +— +\| +1\.64 \|", r"0\.42 ", r"plane A +\| +0\.9 g .*yes +\| +0\.4\n"]]
     assert len(commands) == len(want)
     for line, says in zip(commands, want):
         args = shlex.split(line)[1:]

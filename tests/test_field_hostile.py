@@ -278,3 +278,57 @@ def test_the_unedited_file_trims_the_job_exactly(saved, tmp_path):
     a = rbcli.field_balance(job="examples/jobs/fan.yaml")
     for b in (rbcli.field_balance(job=str(job)), rbcli.field_balance(coefficients=str(saved), initial=TRIM)):
         assert [c.correction for c in b.corrections] == [c.correction for c in a.corrections]
+
+
+# --------------------------------------------------------------------- job-file messages, big jobs
+
+
+@pytest.mark.parametrize("text, says", [
+    ("sensors: [S1, S2, S3]\nplanes: [{name: A}, {name: B}]\ninitial: ['1@0', '1@180', '0@0']\ntrials:\n"
+     "  - {plane: A, mass: '1@0', readings: ['2@0', '2@180', '1@0']}\n"
+     "  - {plane: B, mass: '1@0', readings: ['2@0', '2@180', '1@0']}\n", ":4:1: a trial run: the influence matrix is singular"),
+    ("initial: ['1@0', '1@180', '0@0']\ntrials:\n  - {mass: '1@0', readings: ['4@0', '4@0', '5@0']}\n"
+     "  - {mass: '1@0', readings: ['1@180', '3@180', '3@180']}\nmethod: exact\n", ":5:1: method: an exact solve needs"),
+    ("initial: ['1@0', '1@180', '0@0']\ntrials:\n  - {mass: '1@0', readings: ['4@0', '4@0', '5@0']}\n"
+     "severity: {group: 1, foundation: rigid}\n", ":4:1: severity: the ISO 20816-3 zones judge velocities"),
+    ("initial: ['1e-320@0', '1@180']\ntrials:\n  - {mass: '1@0', readings: ['4@0', '4@0']}\n",
+     "initial: '1e-320@0': the amplitude must be 0 or from 1e-100"),
+    ("initial: ['1@0']\ntrials:\n  - {mass: '1@0', readings: ['4@0']}\nrotor: {body: job.yaml}\n",
+     "rotor: body is the job file itself"),
+    ("initial: ['1@0']\ntrials:\n  - {mass: '1@0', readings: ['4@0']}\nrotor: {body: nope.yaml}\n",
+     ":4:8: rotor: body: no such file"),
+    ("initial: ['1@0']\ntrials:\n  - {mass: '1@0', readings: ['4@0']}\nrotor: {body: /dev/zero}\n",
+     ":4:8: rotor: body: /dev/zero: is a device"),
+    ("initial: ['1@0']\ntrials:\n  - {mass: '1@0', readings: ['4@0']}\nrotor: {body: .}\n", ":4:8: rotor: body:"),
+], ids=lambda v: str(v)[-30:])
+def test_job_file_problems_are_located_in_the_job_file(tmp_path, cli, text, says):
+    path = tmp_path / "job.yaml"
+    path.write_text(text)
+    r = cli("field-balance", str(path))
+    assert r.code == 2 and r.err.startswith(f"rbcli: {path}") and says in r.err, r.err
+    assert "--" not in r.err  # never an option that was not given
+
+
+def test_a_job_beyond_the_budget_is_refused_naming_its_variable(cli):
+    r = cli("field-balance", "--initial", "1@0,1@180,0@0", "--trial", "1@0", "--run", "4@0,4@0,5@0", "--trial",
+            "1@0", "--run", "1@180,3@180,3@180", env={"RBCLI_MAX_FIELD_COEFFICIENTS": "5"})
+    assert r.code == 2 and "3 readings per run x 2 planes = 6 influence coefficients, above the limit of 5" in r.err
+    assert "RBCLI_MAX_FIELD_COEFFICIENTS" in r.err and len(r.err.splitlines()) == 1
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("p", [80, 120])
+def test_large_square_jobs_are_computed_not_refused(tmp_path, p):
+    """80 x 80 and 120 x 120 were refused as "the result overflows": only |det| overflowed
+    (now null in the JSON)."""
+    import numpy as np
+
+    rng = np.random.default_rng(p)
+    A = rng.normal(size=(p, p)) + 1j * rng.normal(size=(p, p))
+    v0 = A @ (rng.normal(size=p) + 1j * rng.normal(size=p))
+    fmt = lambda z: f"'{abs(z):.9g}@{np.degrees(np.angle(z)) % 360:.9g}'"  # noqa: E731
+    lines = ["initial: [" + ", ".join(fmt(z) for z in v0) + "]", "trials:"]
+    lines += [f"  - {{mass: '1 g@0', readings: [{', '.join(fmt(z) for z in v0 + A[:, j])}]}}" for j in range(p)]
+    (tmp_path / "big.yaml").write_text("\n".join(lines) + "\n")
+    res = rbcli.field_balance(job=str(tmp_path / "big.yaml"))
+    assert json.dumps(res.to_json(), allow_nan=False) and res.to_json()["det_magnitude"] is None

@@ -47,7 +47,7 @@ def cvx(A, v, method, U=None, L=None):
     cons = [cp.abs(W[j]) <= U[j] for j in range(p) if U is not None and np.isfinite(U[j])]
     cons += [cp.abs(r[k]) <= L[k] for k in range(n) if L is not None and np.isfinite(L[k])]
     prob = cp.Problem(cp.Minimize(cp.norm(r, "inf") if method == "min-max" else cp.norm(r, 2)), cons)
-    prob.solve()
+    prob.solve(solver="CLARABEL")  # not Xpress where installed: it changes the floating-point state
     return float(prob.value), W.value
 
 
@@ -69,9 +69,10 @@ def test_limits_against_cvxpy(seed, method):
         assert s.violation > 1.0 and s.without == ()
         return
     obj, W = cvx(A, v, method, U, L)
-    # cvxpy's objective is optimal to ~1e-8 relative: they agree to 1e-6; rbcli's is exact to
-    # round-off, so never worse by more than that
-    assert s.objective == pytest.approx(obj, rel=1e-6) and s.objective <= obj * (1 + 1e-9)
+    # cvxpy's objective is optimal to ~1e-8 relative: they agree to 1e-6; its answer may
+    # overstep the limits by its feasibility tolerance (~1e-8), lowering its objective by as much
+    # times the multipliers: rbcli's (exact, the limits met to round-off) is no worse by 1e-7
+    assert s.objective == pytest.approx(obj, rel=1e-6) and s.objective <= obj * (1 + 1e-7)
     assert np.all(np.abs(s.corrections) <= U * (1 + 1e-12)) and np.all(np.abs(s.residuals) <= L * (1 + 1e-12))
     assert s.active and len(s.without) == len(s.active)
     for (kind, i), without in zip(s.active, s.without):  # the cost: the objective without that limit
@@ -105,8 +106,16 @@ def test_a_mass_limit_is_not_the_unconstrained_correction_clipped():
 
 
 @pytest.fixture
-def hs():
-    return pytest.importorskip("hsbalance")
+def hs(monkeypatch):
+    """hsbalance, its cvxpy problems solved by CLARABEL (cvxpy's open-source default):
+    cvxpy picks Xpress first where it is installed, whose community build changes the
+    process's floating-point state (later golden outputs differ in their last digits)."""
+    hsb = pytest.importorskip("hsbalance")
+    import cvxpy
+
+    solve = cvxpy.Problem.solve
+    monkeypatch.setattr(cvxpy.Problem, "solve", lambda self, *a, **k: solve(self, *a, **{"solver": "CLARABEL", **k}))
+    return hsb
 
 
 @pytest.mark.parametrize("seed", range(3))
@@ -118,8 +127,9 @@ def test_min_max_under_mass_limits_agrees_with_hsbalance(hs, seed):
     W = hs.Min_max(v[:, None], alpha, weight_const={j: U[j] for j in range(3)}).solve()[:, 0]
     s = solve(A, v, "min-max", max_mass=U)
     t_hs = float(np.max(np.abs(v + A @ W)))
-    # hsbalance solves with cvxpy (optimal to ~1e-8): the same optimum to 1e-6, rbcli's no worse
-    assert s.objective == pytest.approx(t_hs, rel=1e-6) and s.objective <= t_hs * (1 + 1e-9)
+    # hsbalance solves with cvxpy (optimal and feasible to ~1e-8): the same optimum to 1e-6,
+    # rbcli's no worse than by what cvxpy may overstep a mass limit (see above)
+    assert s.objective == pytest.approx(t_hs, rel=1e-6) and s.objective <= t_hs * (1 + 1e-7)
 
 
 # --------------------------------------------------------------------- the drawer
@@ -242,7 +252,7 @@ def test_a_realistic_drawer_is_searched_within_a_second(cli):
     for m in f.planes[0].masses:
         assert m.angle_deg == pytest.approx((15.0 - 30.0 * (m.position - 1)) % 360.0)
     # its predicted readings are those of the masses chosen, the limits met
-    lim = {(r.sensor, r.speed): r.limit for r in res.limits.rows if r.kind == "reading"}
+    lim = {(r.sensor, r.speed): r.limit for r in res.limits.readings}
     for r in f.residuals:
         assert r.amplitude <= lim.get((r.sensor, r.speed), math.inf) * (1 + 1e-12)
 
@@ -305,3 +315,12 @@ def test_the_same_bytes_for_any_blas_thread_count_and_from_the_api(cli_proc):
     assert r.returncode == 0, r.stderr
     assert len(outs) == 1, "the CLI's bytes differ with the thread count"
     assert r.stdout.strip() == outs.pop().strip()  # the API's to_json() is the CLI's --json
+
+
+def test_the_job_sheet_shows_the_limits_and_the_drawer(cli, tmp_path):
+    html = tmp_path / "sheet.html"
+    assert cli("field-balance", FAN_DRAWER, "--report", str(html)).code == 0
+    text = html.read_text()
+    for what in ("trial masses", "limits (met)", "weights from the drawer", "numbered against the angles",
+                 "objective without it", "12 holes at 240 mm", "limit [mm/s]"):
+        assert what in text, what

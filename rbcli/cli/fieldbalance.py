@@ -225,7 +225,7 @@ MANUAL["field-balance"] = {
         ("residuals, residual_max, residual_rms", "extended: [{sensor, speed, amplitude, angle_deg, initial}]."),
         ("significance, significance_limit", "extended: [{plane, factor, flagged}], 0.2."),
         ("fitted", "extended: {mass_step, angle_step_deg, planes [{name, positions, mass, angle_deg, masses [{mass, angle_deg, position}]}], residuals, drawer {objective, violation, examined, drawers, planes [{name, holes_deg, radius, numbering, per_hole, max_weights, max_mass, drawer}]}}."),
-        ("limits", "with limits: {feasible, violation, objective, rows [{kind, plane, sensor, speed, limit, value, active, objective_without}]}."),
+        ("limits", "with limits: {feasible, violation, objective, planes [{plane, max_mass, max_unbalance, mass, unbalance, active, objective_without}], readings [{sensor, speed, limit, amplitude, active, objective_without}]}."),
         ("robust", "with --robust: {method, threshold, weights, discounted}."),
         ("severity", "{standard, group, foundation, boundaries (m/s rms), after_is, readings [{sensor, speed, before, before_zone, after, after_zone}]}."),
         ("suggested_trial", "[{plane, mass, radius, speed, bearing_load, bearing_load_from, fraction, force, expected_change, expected_change_ratio}]."),

@@ -21,7 +21,7 @@ import numpy as np
 from rbcli.api.field import shop, trial
 from rbcli.api.field.result import (
     SI_UNITS, Conventions, DrawerFit, DrawerPlane, FieldBalanceResult, FieldCorrection, FieldResidual,
-    Fitted, FittedPlane, LimitRow, Limits, Robust, Severity, SeverityRow, convention_text, row_names,
+    Fitted, FittedPlane, Limits, PlaneLimit, ReadingLimit, Robust, Severity, SeverityRow, convention_text, row_names,
 )
 from rbcli.core.balance.common import FIELD_COND_WARN
 from rbcli.core.field.drawer import best_weights
@@ -180,18 +180,14 @@ def _limits(job: Job, sol: FieldSolution, rows: Rows, scales: list[float]) -> Li
     if job.limits is None and not any(job.max_mass):
         return None
     cost = dict(zip(sol.active, sol.without))
-    out = []
-    for j, lim in enumerate(job.max_mass):
-        if lim is not None:
-            w = abs(complex(sol.corrections[j]))
-            value = w * scales[j] if lim[1] == "mass" else w * job.plane_radii[j][0]
-            out.append(LimitRow(lim[1], job.plane_names[j], None, None, lim[0], value, ("mass", j) in sol.active,
-                                cost.get(("mass", j))))
-    for k, lim in enumerate(job.limits or ()):
-        if math.isfinite(lim):
-            out.append(LimitRow("reading", None, *rows[k], lim, abs(complex(sol.residuals[k])),
-                                ("reading", k) in sol.active, cost.get(("reading", k))))
-    return Limits(bool(sol.feasible), float(sol.violation), float(sol.objective), tuple(out))
+    planes = tuple(PlaneLimit(job.plane_names[j], m[0] if m[1] == "mass" else None, m[0] if m[1] == "unbalance"
+                              else None, abs(complex(sol.corrections[j])) * scales[j],
+                              job.plane_radii[j] and abs(complex(sol.corrections[j])) * job.plane_radii[j][0],
+                              ("mass", j) in sol.active, cost.get(("mass", j)))
+                   for j, m in enumerate(job.max_mass) if m is not None)
+    readings = tuple(ReadingLimit(*rows[k], lim, abs(complex(sol.residuals[k])), ("reading", k) in sol.active,
+                                  cost.get(("reading", k))) for k, lim in enumerate(job.limits or ()) if math.isfinite(lim))
+    return Limits(bool(sol.feasible), float(sol.violation), float(sol.objective), planes, readings)
 
 
 def _drawer(job: Job, alpha: np.ndarray, V0: np.ndarray, rows: Rows, sol: FieldSolution) -> Fitted:

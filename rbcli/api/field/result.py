@@ -22,7 +22,7 @@ from rbcli.io.field.coefficients import FORMAT, VERSION, fingerprint
 
 __all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedPlane", "Fitted",
     "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "DrawerPlane",
-    "DrawerFit", "LimitRow", "Limits", "Robust",
+    "DrawerFit", "PlaneLimit", "ReadingLimit", "Limits", "Robust",
     "row_names", "CONVENTION", "SI_UNITS"]
 
 #: the angle convention of field balancing, in words (as it always was)
@@ -152,30 +152,42 @@ class Fitted(Plain):
 
 
 @dataclass(frozen=True)
-class LimitRow(Plain):
-    """One limit: ``kind`` "mass" (kg, at the correction radius), "unbalance" (kg m) or
-    "reading" (the readings' unit); the plane's or the reading's names; the limit, what the
-    correction gives, whether it binds, and the objective without it (None: not binding)."""
+class PlaneLimit(Plain):
+    """A plane's limit (kg at the correction radius, or kg m), what the correction puts there
+    (kg; kg m when the trial radius is known), whether it binds, the objective without it."""
 
-    kind: str
-    plane: str | None
-    sensor: str | None
-    speed: str | None
+    plane: str
+    max_mass: float | None
+    max_unbalance: float | None
+    mass: float
+    unbalance: float | None
+    active: bool
+    objective_without: float | None
+
+
+@dataclass(frozen=True)
+class ReadingLimit(Plain):
+    """A reading's limit and its predicted amplitude (the readings' unit), whether it binds,
+    the objective without it."""
+
+    sensor: str
+    speed: str
     limit: float
-    value: float
+    amplitude: float
     active: bool
     objective_without: float | None
 
 
 @dataclass(frozen=True)
 class Limits(Plain):
-    """The limits given (JSON ``limits``): met (``feasible``) or the least violation ``s``
-    (every reading within s times its limit), the method's objective with them, each limit."""
+    """The limits given (JSON ``limits``): met (``feasible``) or not, max |r_k|/L_k, the
+    method's objective with them, each plane's and reading's limit."""
 
     feasible: bool
     violation: float
     objective: float
-    rows: tuple[LimitRow, ...]
+    planes: tuple[PlaneLimit, ...]
+    readings: tuple[ReadingLimit, ...]
 
 
 @dataclass(frozen=True)

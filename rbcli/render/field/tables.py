@@ -9,7 +9,7 @@ or speeds, rounding, conventions, severity...) gets :func:`extended_document`.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rbcli.core.field.solve import deg
 from rbcli.render.fmt import num
@@ -267,15 +267,20 @@ def limits_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, scale: float,
     if lim is None:
         return
     u = f" [{ru}]" if ru else ""
-    shown = {"mass": ("mass", su.factor("mass"), su.unit("mass")),
-             "unbalance": ("unbalance", su.factor("unbalance"), su.unit("unbalance")), "reading": ("", scale, ru)}
-    table = []
-    for r in lim.rows:
-        _, f, unit = shown[r.kind]
-        what = f"plane {r.plane}" if r.plane is not None else f"{r.sensor}{' at ' + r.speed if r.speed else ''}"
-        table.append([r.kind, what, f"{num(r.limit / f, digits)} {unit}".strip(), f"{num(r.value / f, digits)} {unit}".strip(),
-                      "yes" if r.active else "no", "—" if r.objective_without is None else
-                      num(r.objective_without / scale, digits)])
+
+    def shown(x: float, f: float, unit: str) -> str:
+        return f"{num(x / f, digits)} {unit}".strip()
+
+    def row(kind: str, on: str, limit: str, value: str, r: Any) -> list[str]:
+        return [kind, on, limit, value, "yes" if r.active else "no",
+                "—" if r.objective_without is None else num(r.objective_without / scale, digits)]
+
+    mu, uu = (su.factor("mass"), su.unit("mass")), (su.factor("unbalance"), su.unit("unbalance"))
+    table = [row("mass", f"plane {r.plane}", shown(r.max_mass, *mu), shown(r.mass, *mu), r) if r.max_mass is not None
+             else row("unbalance", f"plane {r.plane}", shown(r.max_unbalance, *uu), shown(r.unbalance, *uu), r)
+             for r in lim.planes]
+    table += [row("reading", f"{r.sensor}{' at ' + r.speed if r.speed else ''}", shown(r.limit, scale, ru),
+                  shown(r.amplitude, scale, ru), r) for r in lim.readings]
     how = "met" if lim.feasible else (f"cannot all be met: the correction exceeds them least, each reading within "
                                       f"{num(lim.violation, 4)} times its limit")
     doc.table(f"limits ({how})", ["limit", "on", "at most", "the correction", "binds", f"objective without it{u}"],
@@ -347,7 +352,7 @@ def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
     fitted = res.fitted.residuals if res.fitted is not None else None
     if fitted is not None:
         cols += [f"with the masses fitted{u}", "phase [°]"]
-    limits = {(r.sensor, r.speed): r.limit for r in res.limits.rows if r.kind == "reading"} if res.limits else {}
+    limits = {(r.sensor, r.speed): r.limit for r in res.limits.readings} if res.limits else {}
     if limits:
         cols.append(f"limit{u}")
     table = []
