@@ -112,15 +112,16 @@ def prepare_streams() -> None:
                 pass
 
 
-def write_error(text: str) -> bool:
-    """Write a message line to standard error; False (and nothing raised) when it cannot
-    take it (closed, full, a closed pipe): an exit status never depends on stderr."""
+def write_error(text: str, stream: IO[str] | None = None) -> bool:
+    """Write a message line, made safe (:func:`clean`), to ``stream`` (standard error); False
+    (nothing raised) when it cannot take it (closed, full): no exit status depends on it."""
+    stream = sys.stderr if stream is None else stream
     try:
-        sys.stderr.write(clean(text.rstrip("\n")) + "\n")
-        sys.stderr.flush()
+        stream.write(clean(text.rstrip("\n")) + "\n")
+        stream.flush()
         return True
     except Exception:  # noqa: BLE001 - closed, full, broken: nothing else to tell
-        silence(sys.stderr, 2)
+        silence(stream, 2)
         return False
 
 
@@ -195,16 +196,10 @@ def restore_signals(old: dict) -> None:
 
 
 def prepare_blas() -> None:
-    """One BLAS thread for the command line, unless the user chose (``OPENBLAS_NUM_THREADS``).
-
-    numpy's OpenBLAS starts a worker thread per core at ``import numpy``; each busy-waits
-    ~0.1 s before sleeping, and on a 2-core machine that wait cost every run ~50 ms of
-    start-up (CPU and wall: ``rbcli inertia`` on a small body 0.20 -> 0.15 s CPU). rbcli
-    gains nothing from BLAS threads: its products are 3 x 3, and a mesh's moment sums
-    (3 x n) run on one thread anyway (OpenBLAS splits them over 3 outputs); the numbers are
-    bit for bit the same (tests/test_env.py, bench/mesh_vs_trimesh.py). Only before numpy
-    is imported, so a program that uses rbcli as a library keeps its own setting.
-    """
+    """One BLAS thread for the command line unless the user chose (``OPENBLAS_NUM_THREADS``),
+    before numpy is imported (a library user keeps theirs): each worker thread busy-waits
+    ~0.1 s after ``import numpy`` (~50 ms a run on 2 cores), and rbcli's 3 x 3 and 3 x n
+    products gain nothing; the numbers are the same bytes (tests/test_same_bytes.py)."""
     if "numpy" not in sys.modules:
         os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
@@ -278,11 +273,6 @@ class Env:
         self.debug = debug
         self.pipe_closed = pipe_closed
 
-    def __repr__(self) -> str:
-        return (f"Env(stdout={self.stdout!r}, stderr={self.stderr!r}, stdout_isatty={self.stdout_isatty!r}, "
-                f"color={self.color!r}, width={self.width!r}, debug={self.debug!r}, "
-                f"pipe_closed={self.pipe_closed!r})")
-
     @classmethod
     def from_process(cls) -> "Env":
         try:
@@ -308,10 +298,5 @@ class Env:
             raise _stdout_error(exc) from None
 
     def warn(self, text: str) -> None:
-        """One warning line on standard error, made safe (:func:`clean`); nothing is raised
-        when standard error cannot take it."""
-        try:
-            self.stderr.write(clean(text.rstrip("\n")) + "\n")
-            self.stderr.flush()
-        except Exception:  # noqa: BLE001 - closed, full or broken stderr
-            silence(self.stderr, 2)
+        """One warning line on this run's standard error (:func:`write_error`)."""
+        write_error(text, self.stderr)

@@ -194,6 +194,20 @@ class RbcliError(Exception):
     def __str__(self) -> str:
         return self.spelled()
 
+    def __reduce__(self):  # errors cross processes: no __init__ again (ParamError's takes others)
+        state = dict(self.__dict__)
+        if isinstance(self, OSError):  # (rbcli.io.reader's MissingFile...)
+            state.update(errno=self.errno, strerror=self.strerror, filename=self.filename)
+        return _remade, (type(self), self.args, state)
+
+
+def _remade(cls: type, args: tuple, state: dict) -> BaseException:
+    """An unpickled error: made by its layout's ``__new__``, its attributes put back."""
+    exc = (OSError if issubclass(cls, OSError) else Exception).__new__(cls, *args)
+    exc.args = args  # (an OSError subclass with an __init__ of its own leaves them to it)
+    exc.__setstate__(state)
+    return exc
+
 
 class InputError(RbcliError, ValueError):
     """Bad input: a body file, an option value, a mesh file. Exit 2.

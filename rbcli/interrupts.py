@@ -4,43 +4,30 @@
 Standard library only, and only what the interpreter has already loaded (``_signal`` and
 ``sys`` are built in; ``signal`` would import ``enum``, ~3 ms): ``rbcli.__main__`` calls
 :func:`install` before anything else is imported, so the handlers are in place for every
-import that follows (typer, numpy, matplotlib), not only once a command runs.
+import that follows (typer, numpy, matplotlib).
 
-How a signal is handled (:func:`_handler`):
+A signal (:func:`_handler`) is *recorded* first, always: the run ends with 128 + the first
+signal and the line ``rbcli: interrupted by SIGINT`` (:func:`exit_process`), even when a
+``KeyboardInterrupt`` is swallowed somewhere (a ``__del__``, an ``except BaseException``).
+While a module is being imported (a frame of ``importlib._bootstrap`` on the stack) it is
+*deferred*: raising there leaves a half-initialised module behind, and the run then fails
+for that reason (``'3d' is not a valid value for projection``, native aborts in extension
+modules); a 5 ms timer (``SIGALRM``) looks again until no import runs (the longest,
+matplotlib's, ~0.2 s). The entry point's own lines wait the same way, so the interrupt is
+raised inside ``rbcli.cli.main``, which turns it into an exit status, or not at all.
+Otherwise it is *raised* in the main thread (``KeyboardInterrupt``; :class:`Terminated`
+for SIGTERM and SIGHUP), so every ``finally`` and cleanup runs; a further signal while that
+exception is handled is only recorded, and once the run is over, every signal is.
 
-- It is *recorded* first, always: whatever happens next, the run ends with 128 + the first
-  signal and the line ``rbcli: interrupted by SIGINT`` (:func:`exit_process`). A
-  ``KeyboardInterrupt`` swallowed somewhere (in a ``__del__``, a weakref callback, an
-  ``except BaseException``) cannot turn an interrupted run into exit 0.
-- While a module is being imported (a frame of ``importlib._bootstrap`` is on the stack)
-  it is *deferred*: raising there leaves a half-initialised module behind, and the run
-  then fails later for that reason, not for the signal (``'3d' is not a valid value for
-  projection`` when ``mpl_toolkits.mplot3d`` stopped halfway; ``RuntimeError: Error
-  calling __set_name__`` when a class was being built; native aborts in extension
-  modules). A 5 ms timer (``SIGALRM``) looks again and raises as soon as no import is
-  running. An import is short (the longest, matplotlib's, ~0.2 s), so Ctrl-C still acts
-  at once for a person. The entry point's own lines wait the same way (the console
-  script's ``sys.argv[0] = re.sub(...)``, ``rbcli.__main__.main`` around the call of
-  :func:`rbcli.cli.main`), so that the interrupt is raised inside ``rbcli.cli.main``,
-  which turns it into an exit status, or not at all.
-- Otherwise it is *raised* in the main thread: ``KeyboardInterrupt`` for SIGINT,
-  :class:`Terminated` (a ``KeyboardInterrupt``) for SIGTERM and SIGHUP, so every
-  ``finally`` and cleanup of the run happens (``io.outfile`` removes its temporary file;
-  click turns it into ``Abort``). A further signal while that exception is being handled
-  is only recorded, so it cannot cut a cleanup short.
-- Once the run is over (:func:`exit_process`) it is only recorded.
-
-:func:`exit_process` ends the process without finalising the interpreter: it runs the
-``atexit`` functions, flushes the standard streams and calls ``os._exit``. The native
-aborts ("Fatal Python error: PyThreadState_Get ... finalizing", exit -6) happened in
-finalisation — modules being torn down after an interrupt, with an extension module left
-half-imported or a progress thread still running — and there is nothing in it that a
-finished run needs.
+:func:`exit_process` ends the process without finalising the interpreter (``atexit``
+functions, the streams flushed, ``os._exit``): the native aborts ("Fatal Python error:
+PyThreadState_Get ... finalizing", exit -6) happened in finalisation, after an interrupt left
+an extension module half-imported or a progress thread running.
 
 A library caller of :func:`rbcli.cli.main` (tests, embedding) gets the in-process subset
 (:func:`install` with ``process=False``): SIGTERM and SIGHUP raise :class:`Terminated`
-while ``main`` runs, SIGINT stays the host's, nothing is deferred (the timer's signal
-belongs to the host) and the process is never ended.
+while ``main`` runs, SIGINT stays the host's, nothing is deferred and the process is never
+ended.
 """
 
 import sys

@@ -447,3 +447,172 @@ def test_eight_threads_get_the_answers_of_one_hostile_or_not(tmp_path):
         t.join(timeout=600)
     assert not errors, errors
     assert len(results) == 8 and all(got == expected for got in results.values())
+
+
+# ----------------------------------------------------------------------------- hand-made bodies
+
+
+def _handmade() -> dict[str, tuple[rbcli.Body, str]]:
+    """Bodies made in code that hold what no loaded body holds (issue 34 item 3), and what
+    the refusal must say."""
+    import dataclasses
+
+    b = body("top.yaml")
+    p = b.parts[0]
+
+    def with_part(**kw):
+        return dataclasses.replace(b, parts=(dataclasses.replace(p, **kw), *b.parts[1:]))
+
+    return {
+        "no-parts": (dataclasses.replace(b, parts=()), "no parts"),
+        "nan-mass": (with_part(mass=math.nan), "part 1: its mass is nan"),
+        "negative-mass": (with_part(mass=-1.0), "part 1: its mass is -1.0"),
+        "text-mass": (with_part(mass="1"), "part 1: its mass is '1'"),
+        "2x2-tensor": (with_part(inertia_com=np.eye(2)), "part 1: its inertia_com is not a finite (3, 3)"),
+        "nan-com": (with_part(com=np.array([math.nan, 0, 0])), "part 1: its com is not a finite (3,)"),
+        "None-part": (dataclasses.replace(b, parts=(None,)), "part 1 is NoneType, not a Part"),
+        "nan-reference": (dataclasses.replace(b, reference=np.array([0, math.nan, 0])), "reference"),
+        "2-pivot": (dataclasses.replace(b, pivot=np.zeros(2)), "pivot"),
+        "text-shaft": (dataclasses.replace(b, shaft="z"), "shaft"),
+        "nan-rim": (dataclasses.replace(b, rim_radius=math.nan), "rim_radius is nan"),
+    }
+
+
+@pytest.mark.parametrize("case", list(_handmade()))
+def test_a_hand_made_body_is_refused_at_the_door_saying_what_is_wrong(case):
+    bad, says = _handmade()[case]
+    for name, (src, kw, _) in CALLS.items():
+        if src is None:
+            continue
+        args = [bad] + ([EXAMPLES / "never-written.md"] if name == "write_report" else [])
+        with pytest.raises((TypeError, rbcli.InputError)) as info:
+            getattr(rbcli, name)(*args, **kw)
+        text = str(info.value)
+        assert text.startswith("body: ") and says in text, (name, text)
+        assert isinstance(info.value, TypeError) == (case == "None-part"), (name, text)
+    assert not (EXAMPLES / "never-written.md").exists()
+
+
+# ----------------------------------------------------------------------------- numbers
+
+
+#: a valid value of each numeric parameter; each number in it is replaced in turn by each
+#: of NUMBERS (a count by each of COUNTS), so that the value reaches the reader and the
+#: physics in the shape the parameter takes (issue 34 item 3: no exit 70 from any number)
+SAMPLES = {
+    "about": [0.01, 0.02, 0.03], "axis": [0, 0, 1], "omega": [0.01, 1, 0.01], "shaft": [0, 0, 1],
+    "through": [0, 0, 0.1], "mark": [1, 0, 0], "zero_mark_deg": 10, "planes": [0, 0.4],
+    "radius": [0.1, 0.1], "mass_step": 0.001, "angle_step": 15, "positions": 8,
+    "speed": "3000 rpm", "bearings": [-0.05, 0.45], "g": 9.8, "grade": "G6.3", "at": 2,
+    "duration": 1, "samples": 11, "pivot": [0, 0, 0], "spin": 150, "theta": 30,
+    "theta_dot": 0.1, "phi_dot": 0.1, "ratio": 2, "latitude": 30, "earth_rate": 7.29e-5,
+    "symmetry_tol": 0.01, "rim_radius": 0.01, "tyre_radius": 0.001, "rolling_speed": 0.1,
+    "lean": 10, "circle": 1, "stiffness": [1e6, 2e6], "damping": [500, 600], "digits": 6,
+}
+NUMBERS = {"0": 0.0, "-0": -0.0, "tiny": 5e-324, "-tiny": -5e-324, "huge": 1.7976931348623157e308,
+           "-huge": -1.7976931348623157e308, "inf": math.inf, "-inf": -math.inf, "nan": math.nan}
+COUNTS = {"0": 0, "-1": -1, "2^63": 2**63, "10^18": 10**18}
+
+#: the calls the numbers go into (whirl and field_balance: tests/test_whirl_hostile.py and
+#: the field-balance suites); the report twice, so that every section runs: the heavy top's,
+#: and a rotor's balance, whirl and free precession
+NUMBER_CALLS = {
+    **{f: CALLS[f][:2] for f in ("inertia", "principal", "precess", "top", "gyrocompass", "rollcheck",
+                                 "report", "report_text")},
+    "balance": ("two_disk_rotor.yaml", dict(planes="0,400 mm", radius="100 mm", speed="3000 rpm",
+                                            bearings="-50,450 mm")),
+    "report-rotor": ("two_disk_rotor.yaml", dict(planes="0,400 mm", radius="100 mm", bearings="-50,450 mm",
+                                                 stiffness=1e6, damping=500, speed="3000 rpm",
+                                                 omega=[0, 0, 10], grade="G6.3")),
+    "gyrocompass-ratio": (None, dict(spin="6000 rpm", latitude=30)),  # the ratio instead of a body
+}
+
+
+#: a base argument a driven parameter replaces (a rolling wheel's speed follows from its spin)
+INSTEAD = {("rollcheck", "spin"): "rolling_speed"}
+
+
+def _number_call(call: str, param: str, value):
+    src, kw = NUMBER_CALLS[call]
+    kw = {k: v for k, v in kw.items() if INSTEAD.get((call, param)) != k}
+    return getattr(rbcli, call.split("-")[0])(body(src) if src else None, **{**kw, param: value})
+
+
+def numbers_in(sample):
+    """(name, value): ``sample`` with its numbers replaced — every one at once and each on its
+    own, as numbers and as text."""
+    if isinstance(sample, int):
+        yield from COUNTS.items()
+        return
+    for key, x in NUMBERS.items():
+        if isinstance(sample, str):  # the number in a quantity text
+            yield f"'{key}'", re.sub(r"[0-9.]+", repr(x), sample, count=1)
+        elif isinstance(sample, list):
+            yield f"all {key}", [x] * len(sample)
+            yield f"'all {key}'", ",".join([repr(x)] * len(sample))
+            for i in range(len(sample)):
+                yield f"[{i}] {key}", [*sample[:i], x, *sample[i + 1:]]
+        else:
+            yield key, x
+            yield f"'{key}'", repr(x)
+
+
+#: the report's parameters driven through the heavy top's report (the others: the rotor's)
+TOP_REPORT = {"pivot", "spin", "theta", "theta_dot", "phi_dot", "g", "symmetry_tol", "rim_radius", "tyre_radius"}
+NUMBER_PAIRS = [(call, p) for call in NUMBER_CALLS
+                for p in inspect.signature(getattr(rbcli, call.split("-")[0])).parameters
+                if p in SAMPLES and (p == "ratio") == (NUMBER_CALLS[call][0] is None)
+                and (not call.startswith("report") or (p in TOP_REPORT) == (call == "report"))]
+
+
+@pytest.mark.parametrize("pair", sampled_params(NUMBER_PAIRS, lambda v: not v[0].startswith("report") or v[1] in (
+    "speed", "through", "stiffness", "spin", "digits"), ids=lambda v: f"{v[0]}-{v[1]}"))
+def test_zero_tiny_huge_inf_and_nan_in_every_parameter_give_an_answer_or_an_input_error(pair):
+    call, param = pair
+    bad = []
+    for key, value in numbers_in(SAMPLES[param]):
+        try:
+            r = _number_call(call, param, value)
+            text = " | ".join(str(w) for w in getattr(r, "warnings", ()) or ())
+        except (TypeError, rbcli.InputError) as exc:
+            text = str(exc)
+        except BaseException as exc:  # noqa: BLE001 - what the test is looking for
+            bad.append(f"{call}({param}={key}): {type(exc).__name__}: {str(exc)[:300]}")
+            continue
+        if "--" in _quoted_out(text) or len(text) > 3000 or "has a unit on some" in text:  # (numbers only)
+            bad.append(f"{call}({param}={key}): {text[:300]}")
+    assert not bad, "\n".join(bad)
+
+
+@pytest.mark.sampled
+def test_the_number_samples_are_valid_values():
+    # each sample is a value its functions take as it is: the replacements are the only change
+    for call, param in NUMBER_PAIRS[: sample(len([p for p in NUMBER_PAIRS if "report" not in p[0]]), None)]:
+        _number_call(call, param, SAMPLES[param])
+    assert {p for _, p in NUMBER_PAIRS} == set(SAMPLES)
+
+
+#: the report's options on the command line, each with the numbers as typed (a unit where
+#: the option needs one); the rotor's report runs every section but the heavy top's
+REPORT_ARGS = ["examples/two_disk_rotor.yaml", "--planes", "0,400 mm", "--radius", "100 mm", "--bearings",
+               "-50,450 mm", "--stiffness", "1e6", "--damping", "500", "--speed", "3000 rpm",
+               "--omega", "0,0,10", "--grade", "G6.3"]
+TYPED = ["0", "5e-324", "1e308", "1e160", "inf", "nan"]
+REPORT_OPTIONS = [("--shaft", "0,0,{}"), ("--through", "{},0,0"), ("--planes", "0,{}"), ("--radius", "{}"),
+                  ("--bearings", "{},0.45"), ("--grade", "G{}"), ("--speed", "{} rpm"), ("--stiffness", "{}"),
+                  ("--damping", "{}"), ("--omega", "0,{},1"), ("--g", "{}"), ("--rim-radius", "{}"),
+                  ("--tyre-radius", "{}"), ("--symmetry-tol", "{}"), ("--digits", "{}")]
+
+
+@pytest.mark.parametrize("option", sampled_params(REPORT_OPTIONS, lambda o: o[0] == "--speed", ids=lambda o: o[0]))
+def test_the_report_options_take_any_number_without_exit_70(cli, tmp_path, option):
+    flag, form = option
+    for n in TYPED:
+        args = list(REPORT_ARGS)
+        if flag in args:
+            args[args.index(flag) + 1] = form.format(n)
+        else:
+            args += [flag, form.format(n)]
+        r = cli("report", *args, "-o", str(tmp_path / "r.html"), "--force")
+        assert r.code in (0, 1, 2), (flag, n, r.code, r.err[-1000:])
+        assert r.code != 2 or r.err.count("\n") == 1, (flag, n, r.err[-1000:])  # one line

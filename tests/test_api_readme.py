@@ -89,6 +89,32 @@ def test_the_readme_sweep_built_with_parts_gives_the_numbers_of_the_same_yaml_bo
     assert again.parts[1].com.tolist() == rbcli.load_text(ROTOR_YAML.format(e=0.1)).parts[1].com.tolist()
 
 
+def test_the_readme_notebook_sweep_collects_json_records(monkeypatch):
+    """The pandas sweep runs as written (pandas is not a dependency: a stand-in checks what
+    json_normalize is given), and the repr it quotes is the one a result has."""
+    import json
+    import sys
+    import types
+
+    got = []
+    fake = types.ModuleType("pandas")
+    fake.json_normalize = lambda records: got.append(json.loads(json.dumps(records))) or {  # JSON records
+        k: [r.get(k) for r in records] for k in records[0]}
+    monkeypatch.setitem(sys.modules, "pandas", fake)
+    code = [c for c in _examples() if "json_normalize" in c][0].replace('df[["stiffness", "critical_speeds"]]', "")
+    _, ns = _run(code)
+    assert [r["stiffness"] for r in got[0]] == [2e6, 5e6, 1e7, 2e7] and all("critical_speeds" in r for r in got[0])
+    shown = re.search(r"`(<BalanceResult [^`]*)…>`", (ROOT / "README.md").read_text(encoding="utf-8")).group(1)
+    r = rbcli_balance_of_fan()
+    assert repr(r).startswith(shown)
+
+
+def rbcli_balance_of_fan():
+    import rbcli
+
+    return rbcli.balance(rbcli.load(ROOT / "examples/fan_rotor.yaml"))
+
+
 def test_import_rbcli_is_cheap():
     import subprocess
     import sys

@@ -463,7 +463,7 @@ def test_units_everywhere_in_an_extended_job(cli):
     """--units in,oz: masses in oz, radii in inches, readings and zones in in/s."""
     out = cli("field-balance", FAN, "--units", "in,oz").out
     flat = " ".join(out.split())
-    assert "mass [oz]" in flat and "radius [in]" in flat and "initial [in/s]" in flat
+    assert "mass [oz]" in flat and "radius [in]" in flat and "initial [in/s rms]" in flat
     assert "before [in/s rms]" in flat and "mm/s" not in out and "[g]" not in out
     # 4.41 mm/s is 0.173622 in/s
     assert f"{4.41 / 25.4:.6g}" in out

@@ -644,5 +644,5 @@ def test_a_mesh_over_the_size_limit_is_refused(tmp_path, cli):
     write_stl_binary(tmp_path / "box.stl", V, F)
     f = body_file(tmp_path, mesh_part("box.stl"))
     r = cli("inertia", f, env={"RBCLI_MAX_MESH_BYTES": "100"})
-    assert r.code == 2 and "over the mesh size limit of 100 bytes" in r.err
+    assert r.code == 2 and "mesh files are limited to 100 bytes (set RBCLI_MAX_MESH_BYTES" in r.err
     assert cli("inertia", f, env={"RBCLI_MAX_MESH_BYTES": "1M"}).code == 0

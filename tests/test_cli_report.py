@@ -169,7 +169,7 @@ SAMPLE = ("housing", "bicycle_wheel", "rotor_mm", "top")
                                                    ids=lambda p: p.stem))
 def test_every_example_builds_a_report_with_the_commands_numbers(cli, tmp_path, example):
     src = str(example.relative_to(ROOT))
-    out, err = report(cli, tmp_path, src)
+    out, err = report(cli, tmp_path, src, "--units", "si")  # SI tables, to compare with --json
     text = out.read_text(encoding="utf-8")
     page = Page(text)
     # every section is there, as a section or as one line saying why not

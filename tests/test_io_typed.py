@@ -56,10 +56,22 @@ def test_solidworks_names_read_as_the_tensor_names():
     assert np.array_equal(ref.parts[0].inertia_com, J)  # exactly the typed tensor
 
 
+def test_a_full_cad_matrix_with_mirrored_entries_that_agree_is_read():
+    # SolidWorks's report lists all nine entries (issue 32): Lxy and Lyx are one product; they
+    # agree to the printed digits (here exactly, or within 1e-9 of the largest entry)
+    ref = _given("{Lxx: 0.3, Lyy: 0.2, Lzz: 0.4, Lxy: -0.05, Lyz: -0.01, Lxz: 0.02, convention: tensor}")
+    for lyx in ("-0.05", "-0.05000000008"):
+        full = _given("{Lxx: 0.3, Lxy: -0.05, Lxz: 0.02, Lyx: %s, Lyy: 0.2, Lyz: -0.01, Lzx: 0.02, "
+                      "Lzy: -0.01, Lzz: 0.4, convention: tensor}" % lyx)
+        assert np.allclose(full.parts[0].inertia_com, ref.parts[0].inertia_com, rtol=0, atol=1e-10)
+    with pytest.raises(InputError, match="'Lxy' and 'Lyx' differ"):  # beyond the printed digits
+        _given("{Lxx: 0.3, Lxy: -0.05, Lyx: -0.051, Lyy: 0.2, Lzz: 0.4, convention: tensor}")
+
+
 @pytest.mark.parametrize("text, twice", [
-    ("{Ixx: 1, Iyy: 1, Izz: 1, Izx: 0.1, Ixz: 0.1, convention: tensor}", ("Izx", "Ixz")),
+    ("{Ixx: 1, Iyy: 1, Izz: 1, Izx: 0.1, Lxz: 0.1, convention: tensor}", ("Izx", "Lxz")),
     ("{Lxx: 1, Ixx: 1, Iyy: 1, Izz: 1}", ("Lxx", "Ixx")),
-    ("{Ixx: 1, Iyy: 1, Izz: 1, Lxy: 0, Lyx: 0}", ("Lxy", "Lyx")),
+    ("{Ixx: 1, Iyy: 1, Izz: 1, Lxy: 0, Ixy: 0}", ("Lxy", "Ixy")),
 ])
 def test_an_entry_given_under_two_names_is_an_error(text, twice):
     with pytest.raises(InputError, match=f"'{twice[0]}' and '{twice[1]}'") as exc:

@@ -228,7 +228,7 @@ def mixed(tmp_path_factory):
 def test_the_reports_parts_table_shows_the_largest_contributions_and_adds_up(cli, mixed, tmp_path):
     digits = 12
     j = cli("inertia", str(mixed), "--json").json()
-    r = cli("report", str(mixed), "-o", str(tmp_path / "r.md"), "--digits", str(digits))
+    r = cli("report", str(mixed), "-o", str(tmp_path / "r.md"), "--digits", str(digits), "--units", "si")
     assert r.code == 0, r.err
     text = (tmp_path / "r.md").read_text(encoding="utf-8")
     body = rbcli.load(mixed)
@@ -259,7 +259,7 @@ def test_a_table_of_every_part_up_to_the_limit(cli, tmp_path):
 def test_inertias_terminal_table_shows_the_heaviest_and_their_rest(cli, mixed):
     digits = 12
     j = cli("inertia", str(mixed), "--json").json()
-    out = cli("inertia", str(mixed), "--digits", str(digits), env={"COLUMNS": "250"}).out  # no folded cells
+    out = cli("inertia", str(mixed), "--digits", str(digits), "--units", "si").out
     rows = _terminal_table(out, "parts")
     parts = j["parts"]
     m = np.array([abs(p["mass"]) for p in parts])
@@ -409,7 +409,7 @@ def _report_within(cli_proc, body: Path, seconds: float, mib: float, json_parts:
     HTML of at most 4 MiB (the figure ~1.5 MB at its caps, tables of at most 102 rows, the
     input file at most INPUT_MAX_CHARS); its parts table adds up to ``rbcli inertia --json``."""
     out = body.parent / "r.html"
-    wall, peak, r = _run_peak(cli_proc, ["report", str(body), "-o", str(out), "--digits", "12"],
+    wall, peak, r = _run_peak(cli_proc, ["report", str(body), "-o", str(out), "--digits", "12", "--units", "si"],
                               body.parent, timeout=4 * seconds)
     assert r.code == 0, r.err[-2000:]
     assert wall < seconds, f"{wall:.1f} s"

@@ -200,7 +200,9 @@ def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | N
     TypeError saying how to get one (a path is not a body: ``rbcli.load(path)`` reads it)."""
     from rbcli.body.model import Body  # (numpy: this module is on the command line's import path)
 
-    if isinstance(value, Body) or (optional and value is None):
+    if isinstance(value, Body):
+        return value.checked(param)
+    if optional and value is None:
         return value
     hint = ""
     if isinstance(value, (str, os.PathLike)):

@@ -9,8 +9,8 @@ options and ``--help``, how each value is read, the options echo and the CSV uni
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import replace
+from functools import partial
 from typing import Any
 
 from rbcli.api.check import MAX_ITEMS
@@ -39,11 +39,35 @@ def _given(given: Any) -> str:
     return literal(as_text(given))
 
 
-def _distinct(what: str):
-    """The check of two positions along the shaft that must differ."""
-    def valid(v: tuple[float, float], given: Any) -> str | None:
-        return None if v[0] != v[1] else f"the two {what} are both at z = {v[0]:.6g} m; they must differ"
-    return valid
+# the checks of values (a Param's ``valid``) are module-level functions, or partials of them,
+# so that the options a result holds pickle (issue 34: results cross processes)
+
+def _distinct(what: str, v: tuple[float, float], given: Any) -> str | None:
+    """Two positions along the shaft that must differ."""
+    return None if v[0] != v[1] else f"the two {what} are both at z = {v[0]:.6g} m; they must differ"
+
+
+def _finite(v: float, given: Any, what: str = "number") -> str | None:
+    return None if math.isfinite(v) else f"must be a finite {what}"
+
+
+def _not_negative(what: str, r: float, given: Any) -> str | None:
+    return None if 0.0 <= r < math.inf else f"{what}, got {_given(given)}"
+
+
+def _positive(what: str, unit: str, x: float, given: Any) -> str | None:
+    return None if x > 0.0 and math.isfinite(x) else f"{what} must be a positive number, got {x:.6g} {unit}"
+
+
+def _angle_step(x: float, given: Any) -> str | None:
+    return _positive("the angle step", "deg", x, given) or (
+        "must not exceed 360 degrees" if x > 360.0 else None)
+
+
+def _positions(n: int, given: Any) -> str | None:
+    return None if 3 <= n <= 100_000 else \
+        f"must be a whole number from 3 to 100000 (holes or blades), not {literal(given)}"
+
 
 # ----------------------------------------------------------------------------- inertia, principal
 
@@ -74,27 +98,26 @@ BALANCE = (
           "vector", "dimensionless", echo="direction"),
     Param("zero_mark_deg", "Turn the 0° mark this far about the shaft, in the direction of rotation "
           "(degrees, or with units, e.g. '0.5 rad'). Default: 0.", "degrees",
-          valid=lambda v, _: None if math.isfinite(v) else "must be a finite angle"),
+          valid=partial(_finite, what="angle")),
     Param("angle_sense", "Count angles with the rotation (with) or against it (against).", "choice",
           choices=("with", "against"), default="with"),
     Param("planes", f"Correction planes zA,zB along the shaft ({_BARE_LENGTH}; a unit after the last "
           "number applies to both, e.g. '-100,100 mm').", "values", "length", (2,),
-          valid=_distinct("correction planes")),
+          valid=partial(_distinct, "correction planes")),
     Param("radius", f"Correction radius r, or rA,rB per plane ({_BARE_LENGTH}; or with units as for "
           "{planes}). Default: the body's rim_radius.", "values", "length", (1, 2)),
     Param("mass_step", "Round correction masses to multiples of this (e.g. '1 g'; a bare number is in "
           "the body's mass unit, kg by default).", "quantity", "mass"),
     Param("angle_step", "Round correction angles to multiples of this (degrees, or with units).",
-          "degrees", valid=lambda v, given: None if 0.0 < v <= 360.0 else
-          f"must be more than 0 and at most 360 degrees, got {_given(given)}"),
+          "degrees", valid=_angle_step),
     Param("positions", "N equally spaced fixed positions (holes, blades), position 1 on the 0° mark: "
           "split each correction onto the two neighbouring ones.", "count",
-          valid=lambda n, _: None if n >= 3 else f"needs at least 3 equally spaced positions, got {n}"),
+          valid=_positions),
     Param("speed", "Rotor speed (rad/s, or the body's units' angular_speed; or e.g. '1500 rpm'); with "
           "{grade} the maximum service speed.", "quantity", "angular_speed"),
     Param("bearings", f"Bearing positions z1,z2 along the shaft ({_BARE_LENGTH}; a unit after the "
           "last number applies to both, e.g. '-50,150 mm').", "values", "length", (2,),
-          valid=_distinct("bearings")),
+          valid=partial(_distinct, "bearings")),
     replace(G, help="Gravity for the static bearing loads (m/s^2, or with units). "
                         "Default: 9.80665 m/s^2."),
     Param("grade", "ISO 21940-11 balance quality grade, e.g. G6.3 (G0.4 to G4000); needs {speed} "
@@ -107,25 +130,10 @@ BALANCE = (
 # ----------------------------------------------------------------------------- field-balance
 
 
-def _positive(what: str, unit: str) -> Callable[[float, Any], str | None]:
-    return lambda x, given: (None if x > 0.0 and math.isfinite(x) else
-                             f"{what} must be a positive number, got {x:.6g} {unit}")
-
-
-def _one_of(key: str) -> Callable[[str, Any], str | None]:
+def _one_of(key: str, word: str, given: Any) -> str | None:
     allowed = CHOICES[key]
     ways = " or ".join(filter(None, (", ".join(allowed[:-1]), allowed[-1])))
-    return lambda word, given: None if word in allowed else f"must be {ways}, not '{literal(word)}'"
-
-
-def _angle_step(x: float, given: Any) -> str | None:
-    return _positive("the angle step", "deg")(x, given) or (
-        "must not exceed 360 degrees" if x > 360.0 else None)
-
-
-def _positions(n: int, given: Any) -> str | None:
-    return None if 3 <= n <= 100_000 else \
-        f"must be a whole number from 3 to 100000 (holes or blades), not {literal(given)}"
+    return None if word in allowed else f"must be {ways}, not '{literal(word)}'"
 
 
 def _group(g: Any, given: Any) -> str | None:
@@ -148,15 +156,15 @@ FIELD_BALANCE = (
           "nested", form="options"),
     Param("cumulative", "Every trial was left on for the later runs.", "flag", default=False),
     Param("trial_radius", "Radius the trials sat at (m, or with units); with {radius}, and for "
-          "{suggest_trial}.", "quantity", "length", valid=_positive("the trial radius", "m")),
+          "{suggest_trial}.", "quantity", "length", valid=partial(_positive, "the trial radius", "m")),
     Param("radius", "Radius the corrections go at (m, or with units); needs {trial_radius}.",
-          "quantity", "length", valid=_positive("the correction radius", "m")),
+          "quantity", "length", valid=partial(_positive, "the correction radius", "m")),
     Param("method", "least-squares (the default with more readings than planes) or min-max (the "
-          "largest predicted reading as small as it can be).", valid=_one_of("method")),
+          "largest predicted reading as small as it can be).", valid=partial(_one_of, "method")),
     Param("weights", "One weight per reading, w1,...,wN (least squares and min-max): a reading "
           "that matters more weighs more.", "numbers"),
     Param("mass_step", "Round correction masses to multiples of this, e.g. '0.5 g' (a bare number "
-          "is kg).", "quantity", "mass", valid=_positive("the mass step", "kg")),
+          "is kg).", "quantity", "mass", valid=partial(_positive, "the mass step", "kg")),
     Param("angle_step", "Round correction angles to multiples of this (degrees, or with units).",
           "degrees", valid=_angle_step),
     Param("positions", "N equally spaced positions (holes, blades), position 1 on the 0° mark: "
@@ -169,23 +177,23 @@ FIELD_BALANCE = (
           "number is kg), or mass x radius ('5000 g*mm').", "texts", counts=(MAX_ITEMS,)),
     Param("limit", "The largest predicted reading, for all or SENSOR=amplitude, e.g. '1=2.8 mm/s'.",
           "texts", counts=(MAX_ITEMS,)),
-    Param("robust", "huber: least squares that discounts a bad reading (named).", valid=_one_of("robust")),
+    Param("robust", "huber: least squares that discounts a bad reading (named).", valid=partial(_one_of, "robust")),
     Param("phase", "The instrument's phase: lag (grows against the rotation; most analysers) or "
-          "lead. Needs {angle_sense}.", valid=_one_of("phase")),
+          "lead. Needs {angle_sense}.", valid=partial(_one_of, "phase")),
     Param("angle_sense", "How the trial and correction angles are counted from the mark: with or "
-          "against the rotation.", valid=_one_of("angle_sense")),
+          "against the rotation.", valid=partial(_one_of, "angle_sense")),
     Param("rotation", "How the rotor turns, seen from where the angles are read: cw or ccw (for "
-          "the dial and the sheet).", valid=_one_of("rotation")),
+          "the dial and the sheet).", valid=partial(_one_of, "rotation")),
     Param("measure", "The measure of readings that state none: pk, pk-pk or rms.",
-          valid=_one_of("measure")),
+          valid=partial(_one_of, "measure")),
     Param("severity", "Judge the readings: iso20816-3 (with {group} and {foundation}; velocity "
-          "readings, or displacement and acceleration at {speed}).", valid=_one_of("standard")),
+          "readings, or displacement and acceleration at {speed}).", valid=partial(_one_of, "standard")),
     Param("group", "ISO 20816-3 machine group: 1 (above 300 kW, or shaft height >= 315 mm) or 2 "
           "(15 kW to 300 kW).", "ints", valid=_group),
-    Param("foundation", "ISO 20816-3 support: rigid or flexible.", valid=_one_of("foundation")),
+    Param("foundation", "ISO 20816-3 support: rigid or flexible.", valid=partial(_one_of, "foundation")),
     Param("speed", "The balancing speed (a bare number is rad/s; or e.g. '1480 rpm'): for "
           "{suggest_trial}, for {severity} with displacement or acceleration readings, and saved "
-          "with the coefficients.", "quantity", "angular_speed", valid=_positive("the speed", "rad/s")),
+          "with the coefficients.", "quantity", "angular_speed", valid=partial(_positive, "the speed", "rad/s")),
     Param("coefficients", "Influence coefficients saved by {save_coefficients}: with {initial} "
           "alone, a trim run.", "path"),
     Param("save_coefficients", "Write the influence coefficients to this JSON file (never over an "
@@ -193,11 +201,11 @@ FIELD_BALANCE = (
     Param("suggest_trial", "Size a trial mass before the first run (with {rotor_mass}, {rotor} or "
           "{bearing_load}, {speed} and {trial_radius}).", "flag", default=False),
     Param("rotor_mass", "The rotor's mass, for {suggest_trial} (a bare number is kg); half its "
-          "weight on each bearing.", "quantity", "mass", valid=_positive("the rotor's mass", "kg")),
+          "weight on each bearing.", "quantity", "mass", valid=partial(_positive, "the rotor's mass", "kg")),
     Param("rotor", "The rotor's body file, for {suggest_trial}: its mass.", "path"),
     Param("bearing_load", "The static load on the bearing nearest the trial plane, for "
           "{suggest_trial} (N, or with units).", "quantity", "force",
-          valid=_positive("the bearing load", "N")),
+          valid=partial(_positive, "the bearing load", "N")),
     Param("trial_fraction", "The trial's centrifugal force as a fraction of that bearing load, "
           "e.g. 0.05 or '5 %'. Default: 10 %.", "fraction"),
     Param("full", "The extended result (method, residuals, significance...) even for a classic "
@@ -205,10 +213,6 @@ FIELD_BALANCE = (
 )
 
 # ----------------------------------------------------------------------------- precess
-
-def _finite(v: float, given: Any) -> str | None:
-    return None if math.isfinite(v) else "must be a finite number"
-
 
 #: the most rows of a time series (precess and top --csv): 10^6 rows is ~100 MB of CSV,
 #: about what a spreadsheet holds (1 048 576 rows)
@@ -265,22 +269,22 @@ PRECESS = (
 TOP_SAMPLES = 600
 
 
-def _above_zero(why: str) -> Any:
-    """The check of a positive finite number: ``<why>, got <the value as given>``."""
-    def check(v: float, given: Any) -> str | None:
-        if not math.isfinite(v):
-            return "must be a finite number"
-        return None if v > 0.0 else f"{why}, got {literal(as_text(given))}"
-    return check
+def _above_zero(why: str, v: float, given: Any) -> str | None:
+    """A positive finite number: ``<why>, got <the value as given>``."""
+    if not math.isfinite(v):
+        return "must be a finite number"
+    return None if v > 0.0 else f"{why}, got {literal(as_text(given))}"
+
+
+def _nonzero(zero: str, v: float, given: Any) -> str | None:
+    return _finite(v, given) or (f"must not be 0: {zero}" if v == 0.0 else None)
 
 
 def _spin(what: str, eg: str, zero: str) -> Param:
     """The spin of top and gyrocompass (its help and its refusal of 0 differ)."""
-    def valid(v: float, given: Any) -> str | None:
-        return _finite(v, given) or (f"must not be 0: {zero}" if v == 0.0 else None)
-
     return Param("spin", f"Required. {what} (rad/s, or the body's units' angular_speed; or e.g. "
-                 f"'{eg}'); negative = the other way.", "quantity", "angular_speed", valid=valid)
+                 f"'{eg}'); negative = the other way.", "quantity", "angular_speed",
+                 valid=partial(_nonzero, zero))
 
 
 def _tilt(v: float, given: Any) -> str | None:
@@ -320,7 +324,7 @@ TOP = (
           "name an angular_speed; or with units). Default: 0.", "quantity", "angular_speed",
           valid=_finite),
     Param("g", "Gravity (m/s^2, or with units). Default: 9.80665.", "quantity", "acceleration",
-          valid=_above_zero("gravity must be positive (it points down, towards -z)")),
+          valid=partial(_above_zero, "gravity must be positive (it points down, towards -z)")),
     Param("verify", "Integrate the equations of motion numerically (no Euler angles, DOP853, rtol "
           "1e-12) over 3 nutation periods and compare with the closed form; exit 1 if they differ "
           "by more than 1e-6 rad or the energy drifts by more than 1e-9.", "flag", echo="-",
@@ -341,7 +345,7 @@ TOP = (
 #: :func:`rbcli.gyrocompass` and ``rbcli gyrocompass``
 GYROCOMPASS = (
     Param("ratio", "C/A, the axial moment over the moment about the vertical (a flat disk: 2), "
-          "instead of a body.", "quantity", "dimensionless", valid=_above_zero("C/A must be positive"),
+          "instead of a body.", "quantity", "dimensionless", valid=partial(_above_zero, "C/A must be positive"),
           echo="=C/A"),
     Param("shaft", "The rotor's spin axis x,y,z (or x, y, z) in the body frame. Default: the body's "
           "shaft axis, else z.", "direction"),
@@ -349,11 +353,16 @@ GYROCOMPASS = (
     Param("latitude", "Required. Latitude, -90 to 90 (degrees, or with units); negative = south.",
           "quantity", "angle", valid=_latitude),
     Param("earth_rate", "The Earth's (sidereal) rotation rate (rad/s, or with units). Default: "
-          "7.2921150e-5.", "quantity", "angular_speed", valid=_above_zero("must be positive")),
+          "7.2921150e-5.", "quantity", "angular_speed", valid=partial(_above_zero, "must be positive")),
     _NO_SYMMETRY_ECHO,
 )
 
 # ----------------------------------------------------------------------------- rollcheck
+
+def _lean(b: float, given: Any) -> str | None:
+    return None if 0.0 <= b < 0.5 * math.pi else ("the inward lean from the vertical must be from 0 up to "
+                                                   f"(not including) 90 degrees, got {_given(given)}")
+
 
 #: :func:`rbcli.rollcheck` and ``rbcli rollcheck`` (its options ``--axle``, ``--radius`` and
 #: ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)
@@ -371,8 +380,7 @@ ROLLCHECK = (
     Param("tyre_radius", "Tube radius r of a rounded rim, 0 <= r <= a (a bare number is in the body's "
           "length unit, else give one); 0 = knife edge, a = a sphere. Default: the rim's shape: a "
           "torus's tube radius, a sphere's radius, a flat band for a cylinder, else 0.", "quantity",
-          "length", valid=lambda r, given: None if 0.0 <= r < math.inf else
-          f"must be 0 (knife edge) or a positive length, got {_given(given)}"),
+          "length", valid=partial(_not_negative, "must be 0 (knife edge) or a positive length")),
     replace(G, help="Gravity (m/s^2, or with units, e.g. '1 g0'). Default: 9.80665."),
     Param("rolling_speed", "Speed of the centre (a bare number is m/s, whatever the body's units: a "
           "body file has no speeds; or with a unit, e.g. '20 km/h', '10 mph'); negative = "
@@ -380,13 +388,10 @@ ROLLCHECK = (
     Param("spin", "Spin about the axle (rad/s, or the body's units' angular_speed; or e.g. '300 "
           "rpm'); speed = a x spin.", "quantity", "angular_speed", valid=_finite),
     Param("lean", "Steady circle: inward lean from the vertical (degrees, or with units), 0 to <90.",
-          "quantity", "angle", valid=lambda b, given: None if 0.0 <= b < 0.5 * math.pi else
-          "the inward lean from the vertical must be from 0 up to (not including) 90 degrees, got "
-          f"{_given(given)}"),
+          "quantity", "angle", valid=_lean),
     Param("circle", "Steady circle: radius of the circle the centre runs on (a bare number in the "
           "body's length unit, m by default; or with units); 0 = spinning in place.", "quantity",
-          "length", valid=lambda r, given: None if 0.0 <= r < math.inf else
-          f"the circle radius must be 0 (spinning in place) or positive, got {_given(given)}"),
+          "length", valid=partial(_not_negative, "the circle radius must be 0 (spinning in place) or positive")),
     _NO_SYMMETRY_ECHO,
 )
 

@@ -95,13 +95,11 @@ def quantity(text: Value, kind: str, option: str, *, bare: str | None = None) ->
         value, dim = un.parse_quantity(s)
     except un.UnitError as exc:
         raise _error(option, literal(exc)) from None
-    if dim == un.Dim() and _bare(s):
-        if bare is None:
-            return value
-        factor, _ = un.parse_unit(bare)
-        return value * factor
-    try:
-        return un.to_si(s, kind)
+    plain = dim == un.Dim() and _bare(s)
+    if plain and bare is None:
+        return value
+    try:  # a bare number in ``bare`` as if typed with it: one route, one rounding
+        return un.to_si(f"{s} {bare}" if plain else s, kind)
     except un.UnitError as exc:
         raise _error(option, literal(exc)) from None
 
@@ -135,6 +133,9 @@ def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3
         raise _error(option, f"expected {want} comma-separated value{'s' if counts != (1,) else ''}, "
                          f"got '{literal(text)}'")
     last = quantity(parts[-1], kind, option, bare=bare)  # its own errors first
+    for p in parts[:-1]:
+        if not _bare(p):  # ('inf', '1e999', 'x mm': said as such, not as a unit left unclear)
+            quantity(p, kind, option, bare=bare)
     m = NUMBER.match(parts[-1])
     unit = parts[-1][m.end():].strip() if m else ""
     if unit:

@@ -77,7 +77,7 @@ class Param:
     counts: tuple[int, ...] = (1,)
     choices: tuple[str, ...] = ()
     form: str = "option"
-    valid: Callable[[Any, Any], str | None] | None = field(default=None, repr=False)
+    valid: Callable[[Any, Any], str | None] | None = field(default=None, repr=False, compare=False)
     echo: str = ""
     echo_default: bool = False
     default: Any = None

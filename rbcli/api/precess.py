@@ -22,7 +22,7 @@ from rbcli.api.commands import MAX_SAMPLES, PRECESS
 from rbcli.api.commands import PRECESS_SAMPLES as DEFAULT_SAMPLES
 from rbcli.api.inertia import rim_note
 from rbcli.api.params import Options, function, read
-from rbcli.api.result import Result, jsonable
+from rbcli.api.result import Result, frozen, jsonable
 from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
 from rbcli.core import freeverify
@@ -77,7 +77,7 @@ class PrecessResult(Result):
         matrix (body → space). TypeError or InputError naming ``t``."""
         t = check.times(t, "t", ndim=1)
         fs.check_phase(self.motion, float(np.max(np.abs(t), initial=0.0)), "t")
-        return self.motion.at(t)
+        return frozen(self.motion.at(t))  # read-only arrays, as every result's
 
     def series_blocks(self, duration: Quantity | None = None,
                       samples: int | None = None) -> Iterator[np.ndarray]:

@@ -7,11 +7,11 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Iterable, Iterator, Mapping
-from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
+from rbcli.body.partspec import ReadOnly
 from rbcli.errors import ExitStatus, NonFiniteResult
 
 __all__ = ["Result", "Record", "record", "frozen", "freeze_fields", "jsonable"]
@@ -28,8 +28,31 @@ class Result:
     #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
     warnings: tuple[str, ...] = ()
 
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        cls.__repr__ = Result.__repr__  # type: ignore[method-assign]  # set before @dataclass, which keeps it
+
     def __post_init__(self) -> None:
         freeze_fields(self)
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        """Unpickled: the fields frozen again (pickle makes arrays writable)."""
+        self.__dict__.update(state)
+        freeze_fields(self)
+
+    def __repr__(self) -> str:
+        """One line: the class and the first numbers and words of the JSON."""
+        data = self.to_json()
+        shown = [f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v!r}" for k, v in data.items()
+                 if isinstance(v, (str, int, float)) and k != "warnings"][:4]
+        return f"<{type(self).__name__} {' '.join(shown)}{' …' if len(data) > len(shown) else ''}>"
+
+    def _repr_html_(self) -> str:
+        """The command's tables as HTML (units in the headers) and its figure as SVG, for
+        notebooks. The one import of render from api (tests/test_architecture.py)."""
+        from rbcli.render import notebook
+
+        return notebook.html(self)
 
     def to_json(self) -> dict[str, Any]:  # pragma: no cover - every result defines it
         raise NotImplementedError
@@ -56,35 +79,20 @@ class Result:
         return int(ExitStatus.OK)
 
 
-class Record(Mapping):
+class Record(ReadOnly):
     """A read-only JSON object whose keys are also attributes: ``rec.angle_deg`` is
     ``rec["angle_deg"]``. What a mapping inside a result's JSON is, seen as an attribute."""
 
-    __slots__ = ("_data",)
-
-    def __init__(self, data: Mapping[str, Any]) -> None:
-        object.__setattr__(self, "_data", dict(data))
+    __slots__ = ()
 
     def __getitem__(self, key: str) -> Any:
         return record(self._data[key])
-
-    def __iter__(self):
-        return iter(self._data)
-
-    def __len__(self) -> int:
-        return len(self._data)
 
     def __getattr__(self, name: str) -> Any:
         try:
             return record(self._data[name])
         except KeyError:
             raise AttributeError(f"no key {name!r} (keys: {', '.join(self._data)})") from None
-
-    def __setattr__(self, name: str, value: Any) -> None:
-        raise AttributeError("a Record is read-only")
-
-    def __repr__(self) -> str:
-        return f"Record({self._data!r})"
 
     def to_json(self) -> dict[str, Any]:
         return self._data
@@ -111,8 +119,10 @@ def frozen(value: Any, _depth: int = 0) -> Any:
             value = value.copy()
             value.setflags(write=False)
         return value
-    if type(value) is dict:
-        return MappingProxyType({k: frozen(v, _depth + 1) for k, v in value.items()})
+    if type(value) is dict or isinstance(value, ReadOnly):
+        items = {k: frozen(v, _depth + 1) for k, v in value.items()}
+        same = isinstance(value, ReadOnly) and all(items[k] is v for k, v in value.items())
+        return value if same else ReadOnly(items)
     if type(value) in (list, tuple):
         items = tuple(frozen(v, _depth + 1) for v in value)
         return value if type(value) is tuple and all(a is b for a, b in zip(items, value)) else items

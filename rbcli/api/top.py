@@ -17,7 +17,7 @@ from rbcli.api.commands import MAX_SAMPLES, TOP
 from rbcli.api.commands import TOP_SAMPLES as DEFAULT_SAMPLES
 from rbcli.api.inertia import rim_note
 from rbcli.api.params import Options, function, read
-from rbcli.api.result import Result, jsonable
+from rbcli.api.result import Result, frozen, jsonable
 from rbcli.core import top as core
 from rbcli.core import topbody, topverify
 from rbcli.core.inertia import body_mass_props
@@ -158,7 +158,7 @@ class TopResult(Result):
         rbcli.InputError
             a time that is not finite, too many times.
         """
-        return self.motion.at(check.times(t, "t"))
+        return frozen(self.motion.at(check.times(t, "t")))  # read-only arrays, as every result's
 
     def default_duration(self) -> float:
         """s, the span ``--csv`` and ``--plot`` cover by default: 3 nutation periods.

@@ -363,6 +363,8 @@ def _at_speed(rotor, forcing, speed, planes) -> tuple[AtSpeed, ...]:
         return ()
     Wop = speed[-1]
     one = W.response(rotor, forcing, np.array([Wop]))
+    if not one.speeds.size:  # unbounded there, or beyond floats: run() says so
+        raise OverflowError("the response at the operating speed")
     rigid = None
     if len(planes) == 2:
         P0 = forcing.couple + rotor.z_com * forcing.static  # about z = 0

@@ -3,7 +3,7 @@ report, a data sheet), checked to be a physically possible inertia.
 
 The inertia is a 3x3 matrix or a map of its entries, named as CAD reports name them:
 ``Ixx ... Izx`` (most tools), ``Lxx ... Lzx`` (SolidWorks), a product's letters in either
-order (``Izx`` or ``Ixz``); an entry given under two names is an error. The sign of the
+order (``Izx`` or ``Ixz``; both, as a full 3x3 report lists them, when they agree). The sign of the
 products differs between tools, so ``convention`` (tensor or positive) is needed as soon
 as a product is non-zero. A matrix copied from a report is symmetric only to the digits
 printed: within 1e-9 of its largest entry its symmetric part is used, with a note.
@@ -37,22 +37,36 @@ SYMMETRY_RTOL = 1e-9
 
 def _entries(ctx: Ctx, inode: ys.MapNode) -> dict[str, float]:
     """The map form's six entries (SI; absent products 0), each read under whichever of its
-    names was given; a diagonal entry missing, or any entry given twice, is an error."""
+    names was given; a product given in both orders (a full 3x3 report: ``Lxy`` and ``Lyx``)
+    is their mean when they agree within :data:`SYMMETRY_RTOL` of the largest entry; a
+    diagonal entry missing, or any other entry given twice, is an error."""
     yv.check_keys(ctx, inode, INERTIA_MAP_KEYS, "inertia")
     items = inode.items
-    g = {}
+    g, pairs = {}, []
     for entry, names in INERTIA_NAMES.items():
         given = [k for k in items if k in names]  # in file order
-        if len(given) > 1:
+        if len(given) > 2 or len(given) == 2 and given[1] != given[0][0] + given[0][:0:-1]:
             raise ctx.error(items[given[1]][0], f"inertia gives {entry} twice, as '{given[0]}' and "
                             f"'{given[1]}'; give each entry once")
-        if not given:
-            if entry in ("Ixx", "Iyy", "Izz"):
-                raise ctx.error(inode, f"inertia needs '{entry}'")
-            g[entry] = 0.0
-        else:
-            g[entry] = yv.number(ctx, items[given[0]][1], "inertia", given[0])
+        if not given and entry in ("Ixx", "Iyy", "Izz"):
+            raise ctx.error(inode, f"inertia needs '{entry}'")
+        vals = [yv.number(ctx, items[k][1], "inertia", k) for k in given]
+        g[entry] = sum(vals) / len(vals) if vals else 0.0
+        pairs += [(given, vals)] if len(vals) == 2 else []
+    for (a, b), (x, y) in pairs:
+        if abs(x - y) > SYMMETRY_RTOL * max(abs(v) for v in g.values()):
+            raise ctx.error(items[b][0], f"inertia's '{a}' and '{b}' differ ({items[a][1].raw} and "
+                            f"{items[b][1].raw}): a tensor is symmetric; give each product once")
     return g
+
+
+def _convention(ctx: Ctx, m: ys.MapNode) -> str:
+    """The ``convention`` of mapping ``m``: 'tensor' or 'positive'."""
+    node = m.items["convention"][1]
+    conv = yv.string(ctx, node, "convention")
+    if conv not in ("tensor", "positive"):
+        raise ctx.error(node, f"convention must be 'tensor' or 'positive', not '{conv}'")
+    return conv
 
 
 def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> Part:
@@ -62,15 +76,14 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
     com = yv.vector(ctx, m.items["com"][1], "length", "com") if "com" in m.items else np.zeros(3)
     inode = m.items["inertia"][1]
     if isinstance(inode, ys.MapNode):
+        if "convention" in m.items:  # (before the products ask for one: it is there, misplaced)
+            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
+                            "convention inside 'inertia'; move 'convention' into the inertia mapping")
         g = _entries(ctx, inode)
         has_products = any(g[k] != 0.0 for k in ("Ixy", "Iyz", "Izx"))
         sign = -1.0
         if "convention" in inode.items:
-            conv_node = inode.items["convention"][1]
-            conv = yv.string(ctx, conv_node, "convention")
-            if conv not in ("tensor", "positive"):
-                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
-            sign = 1.0 if conv == "tensor" else -1.0
+            sign = 1.0 if _convention(ctx, inode) == "tensor" else -1.0
         elif has_products:
             raise ctx.error(
                 inode,
@@ -84,18 +97,11 @@ def given_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> 
                 [sign * g["Izx"], sign * g["Iyz"], g["Izz"]],
             ]
         )
-        if "convention" in m.items:
-            raise ctx.error(m.items["convention"][0], f"{what}: the Ixx... form states its "
-                            "convention inside 'inertia'; remove the part's 'convention'")
     else:
         J = yv.matrix(ctx, inode, "inertia", "inertia")
         off = J[~np.eye(3, dtype=bool)]
         if "convention" in m.items:
-            conv_node = m.items["convention"][1]
-            conv = yv.string(ctx, conv_node, "convention")
-            if conv not in ("tensor", "positive"):
-                raise ctx.error(conv_node, f"convention must be 'tensor' or 'positive', not '{conv}'")
-            if conv == "positive":
+            if _convention(ctx, m) == "positive":
                 J = np.where(np.eye(3, dtype=bool), J, -J)
         elif np.any(off != 0.0):
             raise ctx.error(

@@ -14,19 +14,22 @@ pydata -> bodyfile -> the part readers -> partmodel.
 
 from __future__ import annotations
 
+import math
+import numbers
 import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from rbcli.body import bodyfile, document, pydata
 from rbcli.body.bodyfile import Built
-from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only
-from rbcli.core.inertia import remember_mass_props
+from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only, rebuilt
+from rbcli.body.partspec import ReadOnly
+from rbcli.core.inertia import body_mass_props, remember_mass_props, remembered
+from rbcli.errors import ParamError, literal
 
 __all__ = ["Body", "load_body", "load_text", "load_expr", "load_data", "with_points"]
 
@@ -73,13 +76,25 @@ class Body:
     description: str = ""
     warnings: tuple[str, ...] = ()
     inputs: tuple[str, ...] = ()
-    units: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
+    units: ReadOnly = field(default_factory=lambda: EMPTY_MAPPING)
 
     def __post_init__(self) -> None:
         freeze_arrays(self, ("reference", "pivot"))
         for name in ("parts", "warnings", "inputs"):
             object.__setattr__(self, name, tuple(getattr(self, name)))
         object.__setattr__(self, "units", read_only(self.units))
+
+    __reduce__ = rebuilt
+
+    def __repr__(self) -> str:
+        return f"<Body {self.name!r} from {self.source}: {len(self.parts)} parts>"
+
+    def _repr_html_(self) -> str:
+        """Its mass, com and parts as an HTML table, for notebooks (the render import: see
+        :meth:`rbcli.api.result.Result._repr_html_`)."""
+        from rbcli.render import notebook
+
+        return notebook.html(self)
 
     # ------------------------------------------------------------------ built in code
 
@@ -286,6 +301,39 @@ class Body:
         0.005
         """
         return _made(pydata.move_part(self, which, at, axis, rotate))
+
+    def checked(self, param: str = "body") -> Body:
+        """This body, if it holds what a loaded body holds; else a TypeError or an InputError
+        naming ``param`` and what is wrong (one made in code, ``dataclasses.replace(body,
+        parts=())``, may hold anything). The API's door; parts are looked at once per body."""
+        def finite(a: Any, shape: tuple = (3,)) -> bool:
+            return isinstance(a, np.ndarray) and a.shape == shape and bool(np.isfinite(a).all())
+
+        for key in ("reference", "pivot", "shaft"):
+            v = getattr(self, key)
+            if v is not None and not all(map(finite, (v.axis, v.through) if isinstance(v, Shaft) else (v,))):
+                raise ParamError(param, f"the body's {key} is not a finite (3,) vector")
+        r = self.rim_radius
+        if r is not None and not (isinstance(r, numbers.Real) and 0.0 < r < math.inf):
+            raise ParamError(param, f"the body's rim_radius is {literal(repr(r))}, not a positive length (m)")
+        if remembered(self):  # (a loaded body's parts were checked when it was read)
+            return self
+        if not isinstance(self.parts, tuple) or not self.parts:
+            raise ParamError(param, "the body has no parts; a body needs at least one")
+        for i, p in enumerate(self.parts, 1):
+            if type(p) is not Part:
+                raise TypeError(f"{param}: part {i} is {type(p).__name__}, not a Part (rbcli.parts and "
+                                "Body.from_parts make parts)")
+            if not (isinstance(p.mass, numbers.Real) and not isinstance(p.mass, bool) and 0.0 < p.mass < math.inf):
+                raise ParamError(param, f"part {i}: its mass is {literal(repr(p.mass))}, not a positive number (kg)")
+            for key, shape in (("com", (3,)), ("axis", (3,)), ("inertia_com", (3, 3))):
+                if not finite(getattr(p, key), shape):
+                    raise ParamError(param, f"part {i}: its {key} is not a finite {shape} array")
+        try:
+            body_mass_props(self)  # (remembered from now on)
+        except ValueError as exc:  # the parts' total
+            raise ParamError(param, literal(exc)) from None
+        return self
 
 
 def _made(built: Built) -> Body:

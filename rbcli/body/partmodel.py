@@ -10,15 +10,16 @@ holds them is made by :mod:`rbcli.body.model`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from types import MappingProxyType
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from rbcli.body.partspec import ReadOnly
 from rbcli.errors import Location
 
+
 #: the empty read-only mapping (most parts' ``extra``, an SI body's ``units``)
-EMPTY_MAPPING: MappingProxyType = MappingProxyType({})
+EMPTY_MAPPING = ReadOnly()
 
 
 def frozen(a, dtype=float) -> np.ndarray:
@@ -44,9 +45,17 @@ def freeze_arrays(obj: object, names: tuple[str, ...]) -> None:
             object.__setattr__(obj, name, frozen(a))
 
 
-def read_only(m) -> MappingProxyType:
+def rebuilt(obj: object) -> tuple:
+    """``__reduce__`` of a body's values: their fields, unpickled through ``__init__`` (arrays
+    read-only again: pickle makes them writable), and the rest (a body's mass properties)."""
+    names = [f.name for f in fields(obj)]
+    state = {k: v for k, v in getattr(obj, "__dict__", {}).items() if k not in names}
+    return type(obj), tuple(getattr(obj, n) for n in names), state or None
+
+
+def read_only(m) -> ReadOnly:
     """A read-only mapping of its own with the items of ``m``."""
-    return MappingProxyType(dict(m)) if m else EMPTY_MAPPING
+    return ReadOnly(m) if m else EMPTY_MAPPING
 
 
 def equivalent_ellipsoid(mass: float, inertia) -> tuple[np.ndarray, np.ndarray]:
@@ -102,6 +111,8 @@ class Outline:
         if self.faces is not None:
             object.__setattr__(self, "faces", frozen(self.faces, np.int64))
 
+    __reduce__ = rebuilt
+
 
 @dataclass(frozen=True, slots=True)
 class Part:
@@ -138,7 +149,7 @@ class Part:
     measure_kind: str = "point"
     radius: float | None = None
     axis: np.ndarray = field(default_factory=lambda: frozen(np.array([0.0, 0.0, 1.0])))
-    extra: MappingProxyType = field(default_factory=lambda: EMPTY_MAPPING)
+    extra: ReadOnly = field(default_factory=lambda: EMPTY_MAPPING)
     where: Location | None = None
     outline: Outline | None = None
 
@@ -146,6 +157,8 @@ class Part:
         freeze_arrays(self, ("com", "inertia_com", "axis"))
         if self.extra is not EMPTY_MAPPING:
             object.__setattr__(self, "extra", read_only(self.extra))
+
+    __reduce__ = rebuilt
 
     @property
     def signed_mass(self) -> float:
@@ -162,3 +175,5 @@ class Shaft:
 
     def __post_init__(self) -> None:
         freeze_arrays(self, ("axis", "through"))
+
+    __reduce__ = rebuilt

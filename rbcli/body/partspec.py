@@ -15,19 +15,45 @@ from __future__ import annotations
 
 import numbers
 import sys
-from collections.abc import Iterator, Mapping, Sequence
-from types import MappingProxyType
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from rbcli.errors import InputError, Location
 from rbcli.io.yamlsafe import MAX_DEPTH
 
-__all__ = ["PartSpec", "freeze", "thaw"]
+__all__ = ["ReadOnly", "PartSpec", "freeze", "thaw"]
 
 _MAX_DIGITS = 300  # as a body file's integers (rbcli.io.yamlsafe)
 _TOO_DEEP = (f"nesting is too deep: more than {MAX_DEPTH} levels of lists and mappings; "
              f"body files allow at most {MAX_DEPTH}")
 _KINDS = "numbers, texts, booleans, None, lists and mappings with text keys"
+
+
+class ReadOnly(Mapping):
+    """A read-only mapping of its own that pickles (``MappingProxyType`` does not)."""
+
+    __slots__ = ("_data",)
+
+    def __init__(self, data=()) -> None:
+        object.__setattr__(self, "_data", dict(data))
+
+    def __getitem__(self, key):
+        return self._data[key]
+
+    def __iter__(self):
+        return iter(self._data)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    def __setattr__(self, name, value) -> None:
+        raise AttributeError(f"a {type(self).__name__} is read-only")
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self._data!r})"
+
+    def __reduce__(self):
+        return type(self), (self._data,)
 
 
 def freeze(value: object, where: str = "") -> object:
@@ -123,7 +149,7 @@ def _container(v: Any, where: str, depth: int, open_ids: set[int], is_map: bool)
                                     f"{type(key).__name__} ({_short(key)})")
                 key = str(key)
                 out[_text(key, where)] = _freeze(v[key], _path(where, key), depth + 1, open_ids)
-            return MappingProxyType(out)
+            return ReadOnly(out)
         return tuple(_freeze(x, _path(where, i), depth + 1, open_ids) for i, x in enumerate(v))
     finally:
         open_ids.discard(me)
@@ -146,7 +172,7 @@ def thaw(v: object) -> object:
     return v
 
 
-class PartSpec(Mapping):
+class PartSpec(ReadOnly):
     """One part of a body as the body file writes it: a read-only mapping of its keys
     (``shape``, ``name``, sizes, mass, placement), made by the constructors of
     :mod:`rbcli.parts`.
@@ -162,7 +188,7 @@ class PartSpec(Mapping):
     name : str | None — the ``name:`` key, if given
     """
 
-    __slots__ = ("_data", "_hash")
+    __slots__ = ("_hash",)
 
     def __init__(self, mapping: Mapping[str, object], /) -> None:
         if not isinstance(mapping, Mapping):
@@ -176,15 +202,6 @@ class PartSpec(Mapping):
 
     def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"a part spec is frozen; use .replace({name}=...) for a new one")
-
-    def __getitem__(self, key: str) -> object:
-        return self._data[key]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._data)
-
-    def __len__(self) -> int:
-        return len(self._data)
 
     def __eq__(self, other: object) -> bool:
         if isinstance(other, PartSpec):

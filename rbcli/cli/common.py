@@ -17,7 +17,7 @@ BODY_HELP = "Body file(s) (YAML); '-' reads standard input."
 EXPR_HELP = "Inline YAML body, e.g. -e '{shape: box, mass: 2, size: [0.1, 0.2, 0.3]}'."
 JSON_HELP = "Print JSON (SI units) instead of tables."
 DIGITS_HELP = "Significant figures in tables; with --format csv, of its numbers (full precision unless given)."
-UNITS_HELP = "Units for tables, e.g. mm,g or in,lb (JSON is always SI)."
+UNITS_HELP = "Units for tables, e.g. mm,g, in,lb or si (default: the body file's units:; JSON is always SI)."
 
 BodiesArg = typer.Argument(None, metavar="BODY...", help=BODY_HELP, show_default=False)
 BodyArg = typer.Argument(None, metavar="BODY", help="Body file (YAML); '-' reads standard input.", show_default=False)

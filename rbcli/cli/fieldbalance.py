@@ -122,7 +122,7 @@ def _figure(res, su, plot_path, report_path) -> str | None:
     from rbcli.render.field.tables import reading_display
     from rbcli.render.plots import figure_bytes
 
-    fig = plot(res, su, reading_display(res.reading_kind, su))
+    fig = plot(res, su, reading_display(res.reading_kind, su, res.measure))
     if plot_path is not None:
         c.save_plot(fig, plot_path)
     return None if report_path is None else figure_bytes(fig, "svg").decode("utf-8")
@@ -188,7 +188,8 @@ MANUAL["field-balance"] = {
         "exact search (never rounded from the continuous answer). A weight at hole radius r_h counts "
         "r_h/r_trial; --max-mass is then the weights' total.",
         "Checks: cond(alpha) > 50; Darlow's plane-significance factor at or below 0.2 (Darlow, ASME "
-        "82-GT-269, 1982); a trial that changed no reading by 25 % or 25°; a reading made larger.",
+        "82-GT-269, 1982: the Gram-Schmidt factor, 0 to 1; hsbalance 0.5.5 projects on the previous "
+        "column only); a trial that changed no reading by 25 % or 25°; a reading made larger.",
         "Angles: corrections are in the sense of the trial angles; give --phase lag|lead and "
         "--angle-sense with|against to mirror phases counted the other way. Readings: all bare or "
         "all of one kind (displacement, velocity, acceleration; g is gravity there, the gram in a "
@@ -235,8 +236,6 @@ MANUAL["field-balance"] = {
     "examples": [
         ("rbcli field-balance --initial '6.0 mm/s@30' --trial '10 g@0' --run '4.0 mm/s@110'",
          "One plane: add 9.07998 g at 36.594° (trial removed)."),
-        ("rbcli field-balance --initial '170@112,53@78' --trial '1.15 g@0' --run '235@94,58@68' --trial '1.15 g@0' --run '185@115,77@104'",
-         "The B&K two-plane example: 1.979 g at 236.2° and 1.071 g at 121.8°, cond 2.70."),
         ("rbcli field-balance --initial '1@0,1@180,0@0' --trial '1@0' --run '4@0,4@0,5@0' --trial '1@0' --run '1@180,3@180,3@180'",
          "Goodman 1964, 3 sensors, 2 planes: 17/21 g and 31/21 g; with --method min-max 1 g and 1.8 g."),
         ("rbcli field-balance examples/jobs/fan.yaml --report sheet.html",

@@ -164,8 +164,9 @@ MANUAL["inertia"] = {
     "notes": [
         "The inertia tensor is the tensor: its off-diagonal entries are the negated products "
         "(Ixy = -sum m x y). --products positive shows the positive engineering products "
-        "instead, and says so. Tables use six significant figures (--digits) and SI units "
-        "unless --units is given; JSON is always SI with full precision.",
+        "instead, and says so. Tables use six significant figures (--digits) and the body "
+        "file's units (SI without units:) unless --units is given; JSON is always SI with full "
+        "precision.",
         "--format table (default), json (the same as --json) or csv (the JSON as one table, "
         "quantity,value,text,unit, one row per value; several bodies add a file column; layout "
         "in rbcli(1)).",

@@ -117,13 +117,16 @@ def body_mass_props(body: Any) -> MassProps:
     :class:`rbcli.body.model.Body`; a body made otherwise gets them on first use. The result's
     arrays are the caller's own copies.
     """
-    cached = getattr(body, "_mass_props", None)
-    if cached is not None and cached[0] is body.parts:
-        mp = cached[1]
-    else:
-        mp = combine(body.parts)
-        remember_mass_props(body, mp)
+    if not remembered(body):
+        remember_mass_props(body, combine(body.parts))
+    mp = body._mass_props[1]
     return MassProps(mp.mass, mp.com.copy(), mp.inertia_com.copy())
+
+
+def remembered(body: Any) -> bool:
+    """Whether ``body`` holds its parts' mass properties (the loader's, or an earlier call's)."""
+    cached = getattr(body, "_mass_props", None)
+    return cached is not None and cached[0] is body.parts
 
 
 def remember_mass_props(body: Any, mp: MassProps) -> None:

@@ -5,10 +5,11 @@ long token shortened)."""
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
-__all__ = ["MeshFileError", "read_all", "numbers", "line_of", "cut", "odd_number"]
+__all__ = ["MeshFileError", "read_all", "numbers", "floats", "line_of", "cut", "odd_number"]
 
 _DECIMAL_CHARS = b"0123456789.+-eE"
 _NON_FINITE = re.compile(rb"[+-]?(?:inf(?:inity)?|nan)", re.IGNORECASE)
@@ -50,6 +51,24 @@ def numbers(text: bytes, dtype: type = np.float64) -> np.ndarray | None:
     except ValueError:
         return None
     return out if out.size == len(text.split()) else None
+
+
+def floats(tokens: Sequence[bytes], bad: Callable[[int, bytes], MeshFileError]) -> np.ndarray:
+    """The coordinate texts ``tokens`` as float64, or ``bad(i, token)`` raised for the first
+    that is not a number of the formats (:func:`odd_number`): the line readers' numbers."""
+    if not any(map(odd_number, tokens)):
+        try:
+            return np.array(tokens, dtype=np.float64)
+        except ValueError:  # one that is not a number after all: found below
+            pass
+    for i, t in enumerate(tokens):
+        try:
+            if odd_number(t):
+                raise ValueError
+            float(t)
+        except ValueError:
+            raise bad(i, t) from None
+    raise AssertionError("numpy and float() disagree")  # pragma: no cover
 
 
 def line_of(text: bytes, offset: int) -> int:

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import os
 import re
-import stat
 from typing import NamedTuple
 
 import numpy as np
@@ -34,6 +33,7 @@ from rbcli.io.meshbase import MeshFileError, read_all
 from rbcli.io.meshobj import read_obj
 from rbcli.io.meshstl import read_stl
 from rbcli.io.meshweld import weld
+from rbcli.io.reader import ReadError, open_regular
 
 __all__ = [
     "MeshFileError", "MeshFile", "read_mesh", "weld", "default_weld", "max_mesh_bytes",
@@ -172,8 +172,13 @@ def read_mesh(path: str | os.PathLike[str], *, max_bytes: int | None = None) -> 
             max_bytes = max_mesh_bytes()
         except ValueError as exc:
             raise MeshFileError(name, str(exc)) from None
-    fd, size = _open_regular(name, max_bytes)
+    try:
+        fd, size = open_regular(name, max_bytes, "mesh file", env="RBCLI_MAX_MESH_BYTES")
+    except ReadError as exc:
+        raise MeshFileError(exc.path, exc.reason) from None
     with open(fd, "rb", closefd=True) as fh:
+        if not size:
+            raise MeshFileError(name, "empty file (no triangles)")
         try:
             if suffix == ".obj":
                 vertices, faces = read_obj(name, read_all(name, fh, size))
@@ -181,77 +186,5 @@ def read_mesh(path: str | os.PathLike[str], *, max_bytes: int | None = None) -> 
             else:
                 vertices, faces, fmt = read_stl(name, fh, size)
         except OSError as exc:
-            raise _os_error(name, exc) from None
+            raise MeshFileError(name, f"cannot read the file: {(exc.strerror or str(exc)).lower()}") from None
     return MeshFile(vertices, faces, fmt, default_weld(fmt, vertices))
-
-
-# --------------------------------------------------------------------------- helpers
-
-
-def _shown(name: str) -> str:
-    return name.replace("\0", "\\0")
-
-
-def _os_error(name: str, exc: OSError) -> MeshFileError:
-    if isinstance(exc, FileNotFoundError):
-        return MeshFileError(name, "no such file")
-    if isinstance(exc, IsADirectoryError):
-        return MeshFileError(name, "is a directory, not a mesh file")
-    if isinstance(exc, PermissionError):
-        return MeshFileError(name, "permission denied")
-    reason = (exc.strerror or str(exc)).lower()
-    return MeshFileError(name, f"cannot read the file: {reason}")
-
-
-def _open_fd(name: str) -> int:
-    """``os.open`` for reading without blocking (a FIFO opens at once, then is refused)."""
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
-    return os.open(name, flags)
-
-
-_KINDS = (
-    (stat.S_ISDIR, "is a directory, not a mesh file"),
-    (stat.S_ISFIFO, "is a FIFO (named pipe), not a regular file: rbcli reads meshes from files"),
-    (stat.S_ISCHR, "is a character device, not a regular file"),
-    (stat.S_ISBLK, "is a block device, not a regular file"),
-    (stat.S_ISSOCK, "is a socket, not a regular file"),
-)
-
-
-def _open_regular(name: str, max_bytes: int) -> tuple[int, int]:
-    """Open a regular file no larger than ``max_bytes``: (descriptor, size)."""
-    if "\0" in name:
-        raise MeshFileError(_shown(name), "a file name cannot contain a NUL character")
-    try:
-        fd = _open_fd(name)
-    except OSError as exc:
-        if getattr(exc, "errno", None) == 6:  # ENXIO: a socket
-            raise MeshFileError(name, "is a socket, not a regular file") from None
-        raise _os_error(name, exc) from None
-    try:
-        st = os.fstat(fd)
-        for test, message in _KINDS:
-            if test(st.st_mode):
-                raise MeshFileError(name, message)
-        if not stat.S_ISREG(st.st_mode):
-            raise MeshFileError(name, "is not a regular file")
-        if st.st_size > max_bytes:
-            raise MeshFileError(
-                name,
-                f"the file is {st.st_size} bytes ({_gib(st.st_size)}), over the mesh size "
-                f"limit of {max_bytes} bytes ({_gib(max_bytes)}); set RBCLI_MAX_MESH_BYTES "
-                "(e.g. RBCLI_MAX_MESH_BYTES=4G) to read it",
-            )
-        if st.st_size == 0:
-            raise MeshFileError(name, "empty file (no triangles)")
-        os.set_blocking(fd, True)
-    except BaseException:
-        os.close(fd)
-        raise
-    return fd, int(st.st_size)
-
-
-def _gib(n: int) -> str:
-    return f"{n / 2**30:.3g} GiB" if n >= 2**30 else f"{n / 2**20:.3g} MiB"
-
-

@@ -14,7 +14,7 @@ import re
 
 import numpy as np
 
-from rbcli.io.meshbase import MeshFileError, line_of, numbers, odd_number, read_all
+from rbcli.io.meshbase import MeshFileError, floats, line_of, numbers, read_all
 from rbcli.io.meshweld import distinct_spans, join_ranges, weld_blocks, weld_points
 
 # One binary STL record: normal (ignored), three vertices, "attribute byte count".
@@ -257,22 +257,7 @@ def _read_stl_ascii(name: str, data: bytes) -> np.ndarray:
         raise fail_at(pos, f"malformed ascii stl: expected '{word.decode()}', found '{got}'")
     if n_tok != 21 * n:
         raise fail_at(21 * n, "malformed ascii stl: incomplete facet")
-    cols = []
-    for k in _FACET_COORDS:
-        column = tokens[k::21]
-        try:
-            if any(map(odd_number, column)):
-                raise ValueError  # a Python-only spelling such as 1_000: say where
-            cols.append(np.array(column, dtype=np.float64))
-        except ValueError:
-            for i, t in enumerate(column):
-                try:
-                    if odd_number(t):
-                        raise ValueError
-                    float(t)
-                except ValueError:
-                    got = t.decode("ascii", "replace")
-                    raise fail_at(21 * i + k, f"malformed ascii stl: '{got}' is not a number")
-            raise  # pragma: no cover - numpy and float() disagree
+    cols = [floats(tokens[k::21], lambda i, t, k=k: fail_at(
+        21 * i + k, f"malformed ascii stl: '{t.decode('ascii', 'replace')}' is not a number")) for k in _FACET_COORDS]
     return np.stack(cols, axis=1).reshape(-1, 3)
 

@@ -1,33 +1,20 @@
-"""Output files: one check and one atomic writer for every file rbcli writes.
+"""Output files: one check and one atomic writer for every file rbcli writes (README
+"Output, exit status and speed"; SPEC §3).
 
-The policy (README "Output, exit status and speed"; SPEC §3 "no input file is ever
-overwritten"):
-
-- No output ever replaces an input: the body file, any file it includes at any depth,
-  any mesh it reads (``Body.inputs``), compared by real path and, for a file that
-  exists, by identity (a hard link or a second mount of the same file) — with or
-  without ``--force``.
-- Documents and bodies (``report -o``, ``balance --apply``) replace an existing file
-  only with ``--force``; figures and data (``--plot``, ``--csv``) replace an existing
-  file, as plotting tools do (``replace_ok=True``).
-- Only a regular file or a new name is ever written. A symbolic link at the target is
-  never followed (nor replaced: it is refused), a device node, a FIFO, a socket or a
-  folder is refused with a message — as root too (``--csv /dev/null`` never replaces
-  /dev/null).
-- Every output is written atomically: to a temporary file in the same folder (created
-  with ``O_EXCL | O_NOFOLLOW``), then renamed over the target, so a failed or interrupted
-  run leaves the old file (or none) and no temporary file behind. Without replacing
-  (documents and bodies without ``--force``) the rename is a no-clobber one
-  (``renameat2(RENAME_NOREPLACE)``, else ``link(2)``): the existence check and the write
-  are one step, so of 20 parallel ``report -o new.html`` exactly one succeeds.
-- A document with a folder of figures (``report -o r.md``: ``r_files/``) is written all
-  or nothing: the figures go into a temporary folder, and the folder and the document
-  are renamed into place together, with SIGINT and SIGTERM held off for those few
-  renames. An existing ``r_files/`` is treated like the ``-o`` file: replaced as a whole
-  (never written into, so a link planted inside it leads nowhere) and only with
-  ``--force``.
-- Interrupted (Ctrl-C, SIGTERM: :mod:`rbcli.cli` turns both into an exception) or
-  failed, a write removes what it made: no ``.rbcli-XXXX.tmp`` file or folder is left.
+- No output ever replaces an input (``Body.inputs``: the body file, its includes, its
+  meshes), by real path or file identity (hard links, mounts), with or without ``--force``.
+- Documents and bodies replace an existing file only with ``--force``; figures and data
+  (``--plot``, ``--csv``) replace it (``replace_ok=True``).
+- Only a regular file or a new name is written: a symbolic link, a device, a FIFO, a
+  socket or a folder is refused, as root too.
+- Every output goes to a temporary file in its folder (``O_EXCL | O_NOFOLLOW``) renamed over
+  the target; without replacing, the rename is no-clobber (``renameat2(RENAME_NOREPLACE)``,
+  else ``link(2)``): of 20 parallel ``report -o new.html`` exactly one writes.
+- A document with a folder of figures (``r.md``: ``r_files/``) is written all or nothing:
+  the old pair stays whole until the new pair is whole, then both are swapped with SIGINT,
+  SIGTERM and SIGHUP held off (:func:`write_document`). An existing ``r_files/`` is replaced
+  whole, never written into, and only with ``--force``.
+- Interrupted or failed, a write leaves no ``.rbcli-XXXX.tmp`` file or folder.
 
 Errors are :class:`rbcli.errors.InputError` (exit 2), one line starting with the option.
 """
@@ -38,7 +25,7 @@ import errno
 import os
 import stat
 from collections.abc import Iterable, Iterator, Mapping
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import IO, Protocol
 
@@ -132,9 +119,7 @@ def check(
     """
     option = _opt(option)
     text = os.fspath(path)
-    if "\x00" in text:
-        raise InputError(f"{option}: the file name contains a NUL character")
-    _probe(text, option)
+    _probe(text, option)  # (a NUL in the name too)
     p = Path(text)
     if not text or text.endswith(("/", os.sep)) or p.is_dir():
         raise InputError(f"{option}: '{literal(text)}' is a folder; give a file name")
@@ -181,6 +166,15 @@ def _shown_name(text: str, limit: int = 80) -> str:
     return text if len(text) <= limit else f"{text[:limit // 2]}… ({len(text)} characters)"
 
 
+#: what rbcli never writes, and why
+_NOT_WRITTEN = (
+    (stat.S_ISLNK, "a symbolic link; rbcli never writes through a link (give its target or a new name)"),
+    (stat.S_ISDIR, "a folder; give a file name"),
+    (lambda m: stat.S_ISCHR(m) or stat.S_ISBLK(m), "a device, not a regular file; rbcli writes only regular files"),
+    (stat.S_ISFIFO, "a FIFO (named pipe), not a regular file; rbcli writes only regular files"),
+)
+
+
 def _kind(path: str | Path, option: str) -> os.stat_result | None:
     """The ``lstat`` of an existing output that may be replaced (a regular file), None for a
     new name; anything else is refused."""
@@ -191,19 +185,10 @@ def _kind(path: str | Path, option: str) -> os.stat_result | None:
         return None
     except (OSError, ValueError) as exc:
         raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
-    mode = st.st_mode
-    if stat.S_ISREG(mode):
+    if stat.S_ISREG(st.st_mode):
         return st
-    if stat.S_ISLNK(mode):
-        what = "a symbolic link; rbcli never writes through a link (give its target or a new name)"
-    elif stat.S_ISDIR(mode):
-        what = "a folder; give a file name"
-    elif stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        what = "a device, not a regular file; rbcli writes only regular files"
-    elif stat.S_ISFIFO(mode):
-        what = "a FIFO (named pipe), not a regular file; rbcli writes only regular files"
-    else:
-        what = "not a regular file; rbcli writes only regular files"
+    what = next((w for test, w in _NOT_WRITTEN if test(st.st_mode)),
+                "not a regular file; rbcli writes only regular files")
     raise InputError(f"{option}: '{literal(text)}' is {what}")
 
 
@@ -213,68 +198,55 @@ def _reason(exc: BaseException) -> str:
     return (getattr(exc, "strerror", None) or str(exc)).lower() if isinstance(exc, OSError) else str(exc)
 
 
-def _mode_for(st: os.stat_result | None) -> int:
-    """Permission bits for the new file: the old file's, else 0o666 less the umask."""
+def _mode_for(st: os.stat_result | None, new: int = 0o666) -> int:
+    """Permission bits for a new file (or folder: ``new=0o777``): the old file's, else
+    ``new`` less the umask."""
     if st is not None:
         return st.st_mode & 0o7777
     mask = os.umask(0)
     os.umask(mask)
-    return 0o666 & ~mask
+    return new & ~mask
 
 
 # ----------------------------------------------------------------------------- signals
 
 
-class _held_signals:
-    """SIGINT, SIGTERM and SIGHUP held off for a few steps (creating a temporary file,
-    renaming outputs into place, cleaning up), so that an interrupt can split neither a
-    write that must be all or nothing nor its cleanup; a signal that arrives meanwhile is
-    delivered when the block ends.
+#: the main thread's open :func:`_held_signals` blocks, and the signals they held off
+_depth = 0
+_pending: list[int] = []
 
-    Held at the Python level (the handlers are swapped for one that only records the
-    signal): blocking with ``pthread_sigmask`` would not do, since the kernel may hand the
-    signal to another thread (a BLAS worker), whose C handler still makes the main thread
-    raise at its next step. Outside the main thread this does nothing (no handler runs
-    there).
-    """
 
-    _depth = 0
+@contextmanager
+def _held_signals() -> Iterator[None]:
+    """SIGINT, SIGTERM and SIGHUP held off for a few steps (a temporary file made, outputs
+    renamed into place, a cleanup), so that no interrupt splits them; one that arrives is
+    delivered when the outermost block ends. Held by swapping the handlers for one that
+    records (``pthread_sigmask`` would not do: the kernel may hand the signal to a BLAS
+    thread, whose C handler still makes the main thread raise); outside the main thread,
+    nothing (no handler runs there)."""
+    import signal
+    import threading
 
-    def __enter__(self):
-        import signal
-        import threading
-
-        self.old: dict = {}
-        self.pending: list[int] = []
-        if _held_signals._depth or threading.current_thread() is not threading.main_thread():
-            _held_signals._depth += 1
-            return self
-        _held_signals._depth += 1
-        for name in ("SIGINT", "SIGTERM", "SIGHUP"):
-            signum = getattr(signal, name, None)
-            if signum is None:
-                continue
-            try:
-                self.old[signum] = signal.signal(signum, self._record)
-            except (ValueError, OSError, TypeError):
-                pass
-        return self
-
-    def _record(self, signum, frame):  # noqa: ARG002
-        self.pending.append(signum)
-
-    def __exit__(self, *exc):
-        import signal
-
-        _held_signals._depth -= 1
-        for signum, handler in self.old.items():
-            try:
+    global _depth, _pending
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = {}
+    _depth += 1
+    try:  # (from here: whatever happens, the count and the handlers are put back)
+        if _depth == 1:
+            _pending = []  # (what an interrupted block's end left: a later signal ended it)
+            for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+                with suppress(ValueError, OSError, TypeError, AttributeError):
+                    old[getattr(signal, name)] = signal.signal(getattr(signal, name), lambda n, _: _pending.append(n))
+        yield
+    finally:
+        _depth -= 1
+        for signum, handler in old.items():
+            with suppress(ValueError, OSError, TypeError):
                 signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
-            except (ValueError, OSError, TypeError):
-                pass
-        for signum in dict.fromkeys(self.pending):  # now, to the handlers that were there
+        for signum in dict.fromkeys(_pending if old else ()):  # now, to the handlers that were there
             signal.raise_signal(signum)
-        return False
 
 
 # ----------------------------------------------------------------------------- renames
@@ -402,9 +374,7 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
     """
     option = _opt(option)
     text = os.fspath(path)
-    if "\x00" in text:
-        raise InputError(f"{option}: the file name contains a NUL character")
-    _kind(text, option)  # refuse a link, device, FIFO or folder before writing anything
+    _kind(text, option)  # refuse a NUL, a link, device, FIFO or folder before writing anything
     folder = os.path.dirname(text) or "."
     tmp = None
     try:
@@ -501,12 +471,9 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
                    files: Mapping[str, str | bytes] | None = None) -> None:
     """Write a document and (when ``files``) its folder of figures, all or nothing.
 
-    The figures are written into a new temporary folder beside ``path``, the document into
-    a temporary file; then, with SIGINT and SIGTERM held off, an existing ``folder`` is
-    moved aside (``replace`` only: see :func:`check_folder`), the new folder renamed into
-    place (no-clobber), the document renamed into place (replacing a regular file when
-    ``replace``, else no-clobber), and the old folder removed. A failure at any step undoes
-    the earlier ones; nothing temporary is left.
+    The figures go into a new temporary folder beside ``path``, the document into a temporary
+    file; the old pair stays whole until the new pair is, then :func:`_swap` replaces both or
+    neither, signals held off (one that arrives is raised after). Nothing temporary is left.
 
     Raises
     ------
@@ -521,8 +488,7 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
     folder = os.fspath(folder if folder is not None else files_dir(text))
     parent = os.path.dirname(text) or "."
     _kind(text, option)
-    stage = doc_tmp = aside = None
-    placed = False
+    stage = doc_tmp = old = None
     try:
         with _held_signals():
             stage = _tmp_name(parent)
@@ -539,46 +505,53 @@ def write_document(path: str | Path, data: str | bytes, option: str, *, replace:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data.encode("utf-8") if isinstance(data, str) else data)
         with _held_signals():
-            os.chmod(stage, 0o777 & ~_umask())
-            if os.path.lexists(folder):
-                if not replace:
-                    raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it")
-                if os.path.islink(folder) or not os.path.isdir(folder):
-                    raise InputError(f"{option}: '{folder}' (for the figures) is not a folder")
-                aside = _tmp_name(parent, ".old")
-                os.rename(folder, aside)
-            try:
-                rename_noreplace(stage, folder)
-            except FileExistsError:
-                raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it") from None
-            stage, placed = None, True
-            _commit(doc_tmp, text, option, replace)
-            doc_tmp = None
-            if aside is not None:
-                import shutil
-
-                shutil.rmtree(aside, ignore_errors=True)  # unlinks links; never follows them
-                aside = None
+            old = _swap(stage, doc_tmp, folder, text, option, replace)
+            stage = doc_tmp = None  # in place: a signal raised as the block ends undoes nothing
+            _step("clean")
+            _remove(old)
     except BaseException as exc:
         with _held_signals():
-            import shutil
-
-            if placed:  # the new folder is in place but the document is not: take it back
-                shutil.rmtree(folder, ignore_errors=True)
-            if aside is not None:
-                try:
-                    os.rename(aside, folder)
-                except OSError:
-                    pass
-            if stage is not None:
-                shutil.rmtree(stage, ignore_errors=True)
-            _remove(doc_tmp)
+            for name in (stage, doc_tmp, old):
+                _remove(name)
         if isinstance(exc, OSError):
             raise InputError(f"{option}: cannot write '{literal(text)}': {literal(_reason(exc))}") from None
         raise
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
+def _step(name: str) -> None:
+    """A step of :func:`_swap` or the cleanup after it: nothing (tests interrupt there)."""
+
+
+def _swap(stage: str, doc_tmp: str, folder: str, path: str, option: str, replace: bool) -> str | None:
+    """Put the finished ``stage`` and ``doc_tmp`` in place of ``folder`` and ``path``, all or
+    nothing (signals held): the old folder moved aside, the new one in, the document committed;
+    a failure undoes the steps before it. Returns the old folder's temporary name, or None."""
+    os.chmod(stage, _mode_for(None, 0o777))
+    aside = None
+    placed = False
+    try:
+        if os.path.lexists(folder):
+            if not replace:
+                raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it")
+            if os.path.islink(folder) or not os.path.isdir(folder):
+                raise InputError(f"{option}: '{literal(folder)}' (for the figures) is not a folder")
+            _step("aside")
+            aside = _tmp_name(os.path.dirname(path) or ".", ".old")
+            os.rename(folder, aside)
+        _step("place")
+        try:
+            rename_noreplace(stage, folder)
+        except FileExistsError:
+            raise InputError(f"{option}: '{literal(folder)}' exists; use {{force}} to replace it") from None
+        placed = True
+        _step("commit")
+        _commit(doc_tmp, path, option, replace)
+    except BaseException:
+        if placed:
+            with suppress(OSError):
+                os.rename(folder, stage)  # the new folder back where it was made
+        if aside is not None:
+            with suppress(OSError):
+                os.rename(aside, folder)  # the old one back
+        raise
+    return aside

@@ -1,21 +1,14 @@
 """The one input reader: regular files and standard input, type and size checked first.
 
-Every file rbcli reads (a body, a file it includes, a mesh) goes through
-:func:`read_regular`; standard input (BODY ``-``) through :func:`read_stream`.
+Every file rbcli reads (a body, an include) goes through :func:`read_regular` (a mesh
+through :func:`open_regular`, to read it in blocks), standard input (BODY ``-``) through
+:func:`read_stream`. Only a regular file is read: a FIFO, a device or a directory is refused
+before a byte is read, without blocking (opened ``O_NONBLOCK``, its type taken from the open
+descriptor); the size is checked before and while reading, standard input's as it comes.
 
-- Only a regular file is read. A FIFO, a device (``/dev/zero``, ``/dev/urandom``), a
-  socket or a directory is refused with a message, before a byte is read, and without
-  blocking: the file is opened with ``O_NONBLOCK``, so opening a FIFO with no writer does
-  not hang, and its type is taken from the open descriptor (``fstat``), so what is
-  checked is what is read.
-- The size is checked before reading (``st_size``), and the read stops at the limit
-  anyway (a file that grows while it is read).
-- Standard input is read in chunks and refused as soon as it passes the same limit, so
-  ``rbcli inertia - < /dev/zero`` stops at the limit instead of filling memory.
-
-Errors are :class:`ReadError` (an :class:`rbcli.errors.InputError`, exit 2) carrying the
-bare ``reason`` (``"no such file"``, ``"is a FIFO (named pipe), not a regular file"``...),
-so each caller words its own message around it.
+Errors are :class:`ReadError` (an InputError, exit 2) with the bare ``reason`` (``"no such
+file"``...) for callers to word; a missing file is also a FileNotFoundError, a forbidden
+one a PermissionError, a directory an IsADirectoryError (``errno``, ``filename`` set).
 """
 
 from __future__ import annotations
@@ -27,7 +20,7 @@ from typing import BinaryIO
 
 from rbcli.errors import InputError, Location
 
-__all__ = ["ReadError", "read_regular", "read_stream", "size_text", "limit_from_env"]
+__all__ = ["ReadError", "open_regular", "read_regular", "read_stream", "size_text", "limit_from_env"]
 
 _CHUNK = 1 << 16
 
@@ -44,6 +37,26 @@ class ReadError(InputError):
         self.reason = reason
         text = f"no such file: {path}" if reason == "no such file" else f"{path}: {reason}"
         super().__init__(text, where)
+
+
+class MissingFile(ReadError, FileNotFoundError): ...  # noqa: E701 - each an InputError and an OSError
+
+
+class DeniedFile(ReadError, PermissionError): ...  # noqa: E701
+
+
+class FolderFile(ReadError, IsADirectoryError): ...  # noqa: E701
+
+
+_ERRNO = {errno.ENOENT: MissingFile, errno.EACCES: DeniedFile, errno.EPERM: DeniedFile, errno.EISDIR: FolderFile}
+
+
+def _error(name: str, reason: str, where: Location | None, code: int | None = None) -> ReadError:
+    """The ReadError of ``reason``; with the OSError subclass of ``code`` (an errno)."""
+    exc = _ERRNO.get(code, ReadError)(name, reason, where)  # type: ignore[arg-type]
+    if code in _ERRNO:
+        exc.errno, exc.strerror, exc.filename = code, os.strerror(code), name  # type: ignore[attr-defined]
+    return exc
 
 
 def size_text(n: int) -> str:
@@ -106,77 +119,65 @@ def _os_reason(exc: OSError) -> str:
 _READ_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
-def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
-                 where: Location | None = None, env: str | None = None) -> bytes:
-    """The bytes of the regular file ``path``, at most ``limit`` of them.
-
-    Parameters
-    ----------
-    path : the file (followed if it is a symbolic link: reading through a link is safe)
-    limit : the largest size accepted, in bytes
-    what : the noun for messages, e.g. ``"body file"``, ``"mesh file"``
-    where : the location of the reference to the file (an include's ``file:``), if any
-    env : the environment variable that raises ``limit``, named in the message
-
-    Raises
-    ------
-    ReadError
-        (exit 2) a missing or unreadable file, a name with a NUL character, a directory,
-        a FIFO, a device or a socket (refused before reading, without blocking), or a file
-        over ``limit`` bytes (checked before reading, and again while reading).
-    """
+def open_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
+                 where: Location | None = None, env: str | None = None) -> tuple[int, int]:
+    """(a descriptor, the size) of the regular file ``path``, checked and opened as
+    :func:`read_regular` says, for a reader that reads it its own way (a mesh, in blocks)."""
     name = os.fspath(path)
     if "\x00" in name:
         raise ReadError(name.replace("\x00", "\\0"), "the file name contains a NUL character", where)
-    flags = _READ_FLAGS
+    fd = None
     try:
         st = os.stat(name)  # refuse a FIFO or device before opening it at all
-        reason = _kind(st.st_mode)
+        if not _kind(st.st_mode):
+            fd = os.open(name, _READ_FLAGS)
+            st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
+        reason = _kind(st.st_mode) or (_too_big(st.st_size, limit, what, env) if st.st_size > limit else None)
         if reason:
-            raise ReadError(name, reason, where)
-        fd = os.open(name, flags)
-    except ReadError:
+            raise _error(name, reason, where, errno.EISDIR if stat.S_ISDIR(st.st_mode) else None)
+        return fd, st.st_size
+    except BaseException as exc:
+        if fd is not None:
+            os.close(fd)
+        if isinstance(exc, OSError) and not isinstance(exc, ReadError):
+            raise _error(name, _os_reason(exc), where, exc.errno) from None
+        if isinstance(exc, ValueError) and not isinstance(exc, ReadError):  # a name the OS cannot take
+            raise ReadError(name, f"cannot read the file: {exc}", where) from None
         raise
-    except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
-    except ValueError as exc:  # e.g. a name the OS cannot take
-        raise ReadError(name, f"cannot read the file: {exc}", where) from None
+
+
+def read_regular(path: str | os.PathLike[str], limit: int, what: str = "file", *,
+                 where: Location | None = None, env: str | None = None) -> bytes:
+    """The bytes of the regular file ``path`` (a link followed), at most ``limit``; ``what``
+    names it in messages (``"mesh file"``), ``where`` locates the reference to it (an
+    include's ``file:``), ``env`` is the variable that raises ``limit``.
+
+    ReadError (exit 2): a missing or unreadable file, a NUL in the name, a directory, FIFO,
+    device or socket (refused before reading, without blocking), more than ``limit`` bytes
+    (checked before and while reading)."""
+    fd, size = open_regular(path, limit, what, where=where, env=env)
     try:
-        st = os.fstat(fd)  # what was opened (the name may have changed since the stat)
-        reason = _kind(st.st_mode)
-        if reason:
-            raise ReadError(name, reason, where)
-        if st.st_size > limit:
-            raise ReadError(name, _too_big(st.st_size, limit, what, env), where)
         chunks = []
         total = 0
         while True:
-            chunk = os.read(fd, min(max(st.st_size - total, _CHUNK), limit + 1 - total) or 1)
+            chunk = os.read(fd, min(max(size - total, _CHUNK), limit + 1 - total) or 1)
             if not chunk:
                 break
             chunks.append(chunk)
             total += len(chunk)
             if total > limit:
-                raise ReadError(name, _too_big(None, limit, what, env), where)
+                raise ReadError(os.fspath(path), _too_big(None, limit, what, env), where)
         return b"".join(chunks)
-    except ReadError:
-        raise
     except OSError as exc:
-        raise ReadError(name, _os_reason(exc), where) from None
+        raise _error(os.fspath(path), _os_reason(exc), where, exc.errno) from None
     finally:
         os.close(fd)
 
 
 def read_stream(stream: BinaryIO | None, limit: int, what: str = "file", *,
                 name: str = "standard input", env: str | None = None) -> bytes:
-    """All of a byte stream (standard input), read in chunks, at most ``limit`` bytes.
-
-    Raises
-    ------
-    ReadError
-        (exit 2) a closed stream (``<&-``), a stream that cannot be read, or more than
-        ``limit`` bytes (found while reading: never more than ``limit`` + 64 KiB is held).
-    """
+    """All of a byte stream (standard input), in chunks, at most ``limit`` bytes; ReadError
+    (exit 2): closed (``<&-``), unreadable, or over ``limit`` (never more than 64 KiB over held)."""
     if stream is None:
         raise ReadError(name, "is closed; give a BODY file instead of '-', or pipe a body in")
     chunks = []

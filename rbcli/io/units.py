@@ -41,6 +41,7 @@ __all__ = [
     "format_unit_table",
     "plain_decimal",
     "canonical_unit",
+    "bare_to_si",
 ]
 
 
@@ -121,6 +122,25 @@ def to_si(text: str, kind: str) -> float:
             f"(e.g. {KIND_EXAMPLES[kind]})"
         )
     return to_float(number * q, p, shown)
+
+
+@lru_cache(maxsize=256)
+def _exact_unit(unit: str) -> tuple[Fraction, int]:
+    q, p, _ = parse_unit_exact(unit)
+    return q, p
+
+
+def bare_to_si(x: float, unit: str) -> float:
+    """A bare number ``x`` in ``unit`` (a body's, :func:`unit_for_kind`) in SI: the same bits
+    as the text ``f"{x!r} {unit}"`` read by :func:`to_si` (the one route: the decimal that
+    prints ``x``, times the unit's exact factor, rounded once)."""
+    if not unit or not math.isfinite(x):
+        return x * (parse_unit(unit)[0] if unit else 1.0)
+    q, p = _exact_unit(unit)
+    try:
+        return x if (q, p) == (1, 0) else to_float(Fraction(repr(float(x))) * q, p)
+    except UnitError:  # beyond a float: the caller's range check says so
+        return math.copysign(math.inf, x)
 
 
 def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:

@@ -107,7 +107,7 @@ def number(ctx: Any, node: ys.Node, kind: str, what: str) -> float:
         except un.UnitError as exc:
             raise ctx.error(node, f"{what}: {exc}") from None
     else:
-        x = float(value) * ctx.factor(kind, node)[0]
+        x = un.bare_to_si(float(value), ctx.factor(kind, node)[1])
     if not math.isfinite(x):
         raise ctx.error(node, f"{what} must be finite, not {node.raw}")
     if abs(x) > HUGE:

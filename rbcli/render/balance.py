@@ -1,10 +1,8 @@
 """Tables of ``rbcli balance`` (the JSON is the result's own; ``field-balance``'s tables are
 :mod:`rbcli.render.field.tables`).
 
-Tables use shop units unless ``--units`` is given: unbalance in g·mm, couple in g·mm²,
-correction masses in g, positions and radii in mm, eccentricity in µm, the rotor mass in kg,
-forces in N, speeds in rpm (and rad/s). With ``--units`` (e.g. ``in,oz``) lengths and masses
-follow it (unbalance in oz·in, the rotor mass in oz); forces stay in N. JSON is always SI.
+In :class:`rbcli.render.units.ShopUnits` (g·mm, g·mm², g, mm, µm, the rotor in kg; or the
+body's or ``--units``' in, oz...); forces in N, speeds in rpm and rad/s. JSON is SI.
 """
 
 from __future__ import annotations
@@ -30,7 +28,7 @@ def echo_rows(r: BalanceResult) -> list[tuple[str, str, str]]:
 
 
 def angle(value: float, defined: bool, digits: int) -> str:
-    return num(value, digits) if defined else "—"
+    return num(value, digits, 360.0) if defined else "—"
 
 
 def mag(su: "ShopUnits", x: float, defined: bool, kind: str, digits: int) -> str:
@@ -72,7 +70,7 @@ def frame_sentence(r: BalanceResult) -> str | None:
 def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,
              applied: tuple[str, list[dict]] | None = None) -> None:
     """The tables of ``rbcli balance``; ``applied`` = (path, parts) that ``--apply`` wrote."""
-    u = r.unbalance
+    u, su = r.unbalance, su.of(r.body)
     doc.heading(f"{r.body.name}  ({r.body.source})")
     fr = u.frame
     doc.note(
@@ -177,7 +175,7 @@ def _corrections(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int) -> None
         p = r.position_split
         prow = []
         for pc, sp in zip(ideal.pair, p.splits):
-            for mass, a, k in zip(sp.masses, sp.angles_deg, sp.positions):
+            for mass, a, k in ((m, a, k) for m, a, k in zip(sp.masses, sp.angles_deg, sp.positions) if m > 0):
                 prow.append([pc.name, str(k), num(a, digits), su.show(mass, "mass", digits)])
         rtxt = f", rounded to {su.show(p.mass_step, 'mass', digits)} {m}" if p.mass_step else ""
         doc.table(

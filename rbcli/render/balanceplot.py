@@ -1,19 +1,18 @@
 """Polar balancing diagrams: the rotor's clock face with the vectors of a balancing job.
 
-Draws a :class:`rbcli.api.diagram.Diagram` (finished numbers: magnitudes in SI and angles
-as the command prints them) and returns the matplotlib Figure; the command line writes it.
-Each panel is a polar plot with 0° (the mark) on the right. Angles counted with the
-rotation go counterclockwise, angles counted against it (``--angle-sense against``)
-clockwise, so every vector sits where it is on the rotor and the dial reads the printed
-angles. Grey-scale safe: roles differ by line style as well as shade.
+A :class:`rbcli.api.diagram.Diagram` (magnitudes in SI, angles as printed) as a Figure of
+polar panels, 0° (the mark) on the right, angles with the rotation counterclockwise (against
+it, ``--angle-sense against``, clockwise): each vector where it is on the rotor. Roles
+differ by line style as well as shade.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
-from rbcli.render.fmt import num
+from rbcli.render.fmt import ROUNDOFF, num
 from rbcli.render.plots import figure
 
 #: how each role is drawn: (colour, line style, legend order)
@@ -40,15 +39,10 @@ def _units(panel: Any, su: Any, reading: tuple[float, str]) -> tuple[float, str]
 
 
 def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
-    """The figure of ``diagram`` (one polar panel each), tables' display units ``su``
-    (:class:`rbcli.render.balance.ShopUnits`) and ``reading`` = (SI per display unit,
-    unit) for readings (a relative scale: (1, "")).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-    """
+    """The Figure of ``diagram`` (a polar panel each) in the tables' units ``su``
+    (:class:`rbcli.render.units.ShopUnits`), readings in ``reading`` = (SI per unit, unit)."""
     from matplotlib.lines import Line2D
+    from matplotlib.ticker import MaxNLocator
 
     n = len(diagram.panels)
     cols = n if n <= 4 else 4  # a field job's many readings: rows of four dials
@@ -68,10 +62,15 @@ def plot(diagram: Any, su: Any, reading: tuple[float, str] = (1.0, "")):
         rmax = big * 1.12 if big > 0 else 1.0
         ax.set_ylim(0.0, rmax)
         ax.set_rlabel_position(22.5)
+        ax.yaxis.set_major_locator(MaxNLocator(3))  # few radial labels: they share one ray
         ax.tick_params(axis="y", labelsize=7)
         handles = []
         seen: dict[str, int] = {}
+        tiny = ROUNDOFF * max([a.magnitude for a in panel.arrows] + [0.0])  # round-off: no length, no angle
         for a in panel.arrows:
+            if a.mass == 0.0 and a.role in ("correction", "residual"):
+                continue  # no weight of nothing at a position
+            a = replace(a, defined=a.defined and a.magnitude > tiny)
             colour, ls = ROLE_STYLE.get(a.role, ("black", "-"))
             repeat = seen[a.role] = seen.get(a.role, -1) + 1
             if repeat:  # a second run or correction in one panel: another dash pattern

@@ -3,19 +3,11 @@ parts, its holes, its centre of mass and principal axes, in a 3-D view and three
 orthographic views (top, front, side) of the body frame.
 
 Each part is drawn from its :class:`rbcli.body.partmodel.Outline` through
-:mod:`rbcli.render.outline` (which does the geometry: surfaces, silhouettes, creases):
-
-- solid parts: light-grey shadows ("0.88") with black outlines (silhouettes and borders),
-  thin grey near-side creases and dashed inner surfaces (a tube's bore); rods, rings and
-  a triangle's edges as black lines; point masses as black dots; a part given by its
-  mass properties as its equivalent uniform ellipsoid with its centre marked ×;
-- subtracted parts (holes, pockets), drawn after every solid: white with a dashed
-  outline;
-- over them the centre of mass (+), the principal axes 1, 2, 3 (ascending moments) as
-  arrows from the com, and the body's equivalent uniform ellipsoid as a dotted outline.
-
-The three flat views share one scale, so lengths can be compared between them. Grey
-scale only. matplotlib is imported only when a figure is drawn.
+:mod:`rbcli.render.outline` (the geometry): solids grey with black outlines, thin creases
+and dashed inner surfaces; holes white, dashed, after every solid; point masses as dots; a
+given part as its equivalent ellipsoid, its centre ×; over them the com (+), the principal
+axes 1, 2, 3 as arrows and the body's equivalent ellipsoid dotted. The flat views share
+one scale. Grey scale only.
 """
 
 from __future__ import annotations
@@ -66,19 +58,10 @@ FIGURE_MAX_DOTS = 2000
 
 @dataclass(frozen=True)
 class Drawn:
-    """Which parts the body figure draws (indices into ``body.parts``, in file order).
-
-    Attributes
-    ----------
-    outlined : tuple of int — drawn by their outline (the heaviest, within
-        :data:`FIGURE_MAX_PARTS`, that have an outline)
-    dotted : tuple of int — drawn as a dot at their centre: those among the heaviest
-        without an outline, and the next heaviest (within :data:`FIGURE_MAX_DOTS`)
-    left_out : int — parts not drawn at all (the lightest)
-    left_out_mass : float — kg, their mass (holes counted by their mass too)
-    total : int — parts of the body
-    mass : float — kg, the mass of every part (holes counted by their mass too)
-    """
+    """Which parts the body figure draws (indices into ``body.parts``, in file order):
+    ``outlined`` the heaviest with an outline (:data:`FIGURE_MAX_PARTS`), ``dotted`` those
+    without and the next heaviest (:data:`FIGURE_MAX_DOTS`); ``left_out`` the lightest, of
+    ``left_out_mass`` kg; ``total`` parts of ``mass`` kg (holes by their mass too)."""
 
     outlined: tuple[int, ...]
     dotted: tuple[int, ...]
@@ -167,23 +150,12 @@ def segments(n_parts: int) -> int:
 
 
 def body_figure(body, com, principal, du: DisplayUnits, title: str):
-    """The figure (matplotlib Figure) of the body's parts, com and principal axes.
-
-    Parameters
-    ----------
-    body : Body — its parts, each drawn from its ``outline`` (a part without one as a dot
-        at its com)
-    com : (3,) ndarray — m, the centre of mass
-    principal : PrincipalResult — about the com (``axes`` as rows, ``equivalent_ellipsoid``
-        semi-axes in m)
-    du : DisplayUnits — the length unit of the axes
-    title : str — the figure title (with the body name)
-
-    Returns
-    -------
-    matplotlib.figure.Figure — 2 × 2 axes: 3-D view, top, front and side views
-    """
-    f, L = du.factor("length")
+    """The Figure (3-D view, top, front and side views) of ``body``'s parts (a part without
+    ``outline`` as a dot), its ``com`` ((3,) m) and ``principal`` axes about the com (a
+    PrincipalResult), lengths in ``du``'s unit of the body."""
+    f, L = du.of(body).factor("length")
+    if L == "m" and np.max(np.abs(np.asarray(com))) + max(principal.equivalent_ellipsoid) > 1e4:
+        f, L = 1e-3, "km"  # a planet in km: tick labels without a 1e6 multiplier
     ell = np.asarray(principal.equivalent_ellipsoid, dtype=float)
     N = np.asarray(principal.axes, dtype=float)
     c = np.asarray(com, dtype=float)
@@ -387,11 +359,11 @@ def _three_d(ax3, solids, holes, dots, c, N, arrow, f, mid, half, L):
     ax3.set_xlim((mid[0] - half) * f, (mid[0] + half) * f)
     ax3.set_ylim((mid[1] - half) * f, (mid[1] + half) * f)
     ax3.set_zlim((mid[2] - half) * f, (mid[2] + half) * f)
-    ax3.set_box_aspect((1, 1, 1), zoom=0.82)
+    ax3.set_box_aspect((1, 1, 1), zoom=0.76)  # its labels inside its cell (the layout sees a 3-D cell's box only)
     ax3.view_init(elev=ELEV, azim=AZIM)
-    ax3.set_xlabel(f"x [{L}]")
-    ax3.set_ylabel(f"y [{L}]")
-    ax3.set_zlabel(f"z [{L}]")
+    ax3.set_xlabel(f"x [{L}]", labelpad=8)  # clear of the tick labels
+    ax3.set_ylabel(f"y [{L}]", labelpad=8)
+    ax3.set_zlabel(f"z [{L}]", labelpad=2)
     ax3.set_title("3-D view")
     ax3.tick_params(labelsize=7)
     for a in (ax3.xaxis, ax3.yaxis, ax3.zaxis):

@@ -1,16 +1,9 @@
 """The one CSV writer of rbcli's time series (``top --csv``, ``precess --csv``).
 
-A header line, then one row per time; every number is Python's shortest round-trip
-``repr`` (reads back exactly, the same bytes every run), with no negative zeros. Rows come
-in blocks (2-D arrays) so that millions of rows never sit in memory at once. The cli sends
-them to a file (atomically, rbcli.io.outfile) or to standard output.
-
-The header's names go through :func:`rbcli.render.safe.csv_text` (escaped, formula starters
-neutralised) like every CSV text cell; the rows are numbers only.
-
-Plain ``repr`` (~0.5 µs a number) is the goal's measure: 10^5 rows within 2x Python's csv
-module writing ``repr`` floats (bench/csv_rows.py); a vectorised shortest-digits formatter
-once saved 0.38 s on a 22 MB CSV and was retired (issue 23).
+A header line (names through :func:`rbcli.render.safe.csv_text`), then one row per time,
+every number Python's shortest round-trip ``repr`` (no negative zeros), written in blocks
+(2-D arrays) so that millions of rows never sit in memory. Plain ``repr`` is the goal's
+measure: 10^5 rows within 2x Python's csv module (bench/csv_rows.py).
 """
 
 from __future__ import annotations

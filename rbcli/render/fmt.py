@@ -9,17 +9,28 @@ import numpy as np
 from rbcli.errors import option_name, spelled
 
 
-def num(x: float | None, digits: int = 6) -> str:
-    """``x`` to ``digits`` significant figures; "—" for None; no "-0"."""
+#: a value at most this fraction of its scale is round-off, printed 0 (README, "Round-off")
+ROUNDOFF = 1e-12
+
+
+def num(x: float | None, digits: int = 6, scale: float = 0.0) -> str:
+    """``x`` to ``digits`` significant figures; "—" for None; "0" for round-off (``|x| <=
+    ROUNDOFF * scale``); no "-0"."""
     if x is None:
         return "—"
     x = float(x)
-    if not math.isfinite(x):
-        return str(x)
+    if not math.isfinite(x) or abs(x) <= ROUNDOFF * scale:
+        return str(x) if not math.isfinite(x) else "0"
     s = f"{x:.{digits}g}"
     if s.startswith("-") and float(s) == 0.0:
         s = s[1:]
     return s
+
+
+def polar(amplitude: float, angle_deg: float, digits: int = 6, scale: float = 0.0) -> tuple[str, str]:
+    """A vector's amplitude and angle as printed: round-off is 0, with no angle ("—")."""
+    shown = num(amplitude, digits, scale)
+    return shown, "—" if shown == "0" else num(angle_deg, digits)
 
 
 def vec(v, digits: int = 6) -> str:

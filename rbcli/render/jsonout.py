@@ -4,10 +4,8 @@
 numbers are checked finite: :func:`rbcli.api.result.jsonable`). ``json.dumps`` refuses NaN
 and infinity here too (``allow_nan=False``), so nothing else can slip through.
 
-Strings are written as UTF-8 text, except the characters that could reorder or forge what a
-terminal shows (C1 controls, DEL, line and paragraph separators, bidirectional controls, and
-what UTF-8 or XML cannot hold): those are ``\\uXXXX`` escapes (:func:`rbcli.render.safe.json_escape`),
-which a JSON parser reads back as the very same string. C0 controls JSON escapes itself.
+Strings are UTF-8 text; what could reorder or forge what a terminal shows is written as
+``\\uXXXX`` escapes (:func:`rbcli.render.safe.json_escape`), which read back the same.
 """
 
 from __future__ import annotations

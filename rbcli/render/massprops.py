@@ -1,9 +1,5 @@
-"""Tables for ``inertia`` and ``principal`` (the JSON is the results' ``to_json()``).
-
-The functions take a result of :mod:`rbcli.api.inertia` or :mod:`rbcli.api.principal`
-(``InertiaResult``, ``PrincipalResult``); the report also passes :mod:`rbcli.core` results, which have the
-same attributes.
-"""
+"""Tables for ``inertia`` and ``principal``: of an ``InertiaResult`` or ``PrincipalResult``
+(or the :mod:`rbcli.core` results with the same attributes the report passes)."""
 
 from __future__ import annotations
 
@@ -11,11 +7,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.body.model import Body
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
 AXES = ("x", "y", "z")
@@ -30,16 +26,9 @@ PARTS_TABLE_ROWS = 100
 
 
 def kept_parts(*scores, limit: int = PARTS_TABLE_ROWS) -> np.ndarray | None:
-    """Which parts a summarised table shows: None when all ``n`` fit in ``limit`` rows,
-    else the indices (ascending, so in file order) of the ``limit`` parts of largest
-    score.
-
-    Parameters
-    ----------
-    *scores : (n,) arrays — the first decides, each later one breaks the ties left by the
-        ones before it; remaining ties go to the earlier part
-    limit : int — the most rows
-    """
+    """Which parts a summarised table shows: None when all fit in ``limit`` rows, else the
+    indices (in file order) of the ``limit`` of largest score (``scores``: (n,) arrays, each
+    breaking the ties of those before it; then the earlier part)."""
     n = len(scores[0])
     if n <= limit:
         return None
@@ -124,6 +113,7 @@ def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, pro
                 ref_label: str, *, parts: bool = True) -> None:
     """The tables of ``rbcli inertia``; ``parts=False`` leaves out the parts table (the
     report has its own, with each part's contribution)."""
+    du = du.of(body)
     doc.heading(f"{body.name}  ({body.source})")
     rows = [("mass", du.show(r.mass, "mass", digits), du.unit("mass"))]
     rows += vec_rows("com", r.com, du, "length", digits)
@@ -222,6 +212,7 @@ def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, r
                   *, parts: bool = True) -> None:
     """The tables of ``rbcli principal``; ``parts=False`` leaves out the mesh parts table
     (the report has its own parts table, with the mesh facts)."""
+    du = du.of(body)
     doc.heading(f"{body.name}  ({body.source})")
     f, unit = du.factor("inertia")
     rows = []
@@ -232,7 +223,7 @@ def principal_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, r
                 str(i + 1),
                 num(r.moments[i] * f, digits),
                 ", ".join(num(x, digits) for x in snap(r.axes[i], scale=1.0, rtol=1e-15)),
-                ", ".join(num(x, 4) for x in angles[i]),
+                ", ".join(num(x, 4, 360.0) for x in angles[i]),
                 r.stability[i],
             )
         )

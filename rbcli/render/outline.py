@@ -6,26 +6,17 @@ placement) becomes a :class:`Sketch` — vertices on the shape's true surface, t
 between them, and the lines drawn whatever the view (a rod, a ring, a triangle's edges).
 :func:`shadow` projects a sketch orthographically on the (i, j) plane of the body frame:
 
-- the *fill* is the union of the triangles not seen edge-on (the shape's shadow, holes
-  of a tube or torus included, for any surface, closed or not), given compactly as the
-  polygons bounding it (:func:`fill_loops`), or the convex hull for a convex shape;
-- the *outline* is every edge between a triangle facing the viewer and one facing away
-  or seen edge-on (the silhouette, the contour generator of a tessellated surface), every
-  edge of an open surface's border, and the always-drawn lines (a surface seen wholly
-  edge-on, like a flat ellipsoid from its side, is drawn by all its edges);
-- the *creases* are sharp edges (dihedral angle over :data:`CREASE_DEG`) on the viewer's
-  side that are not outline: a box's near edges, a cylinder's end circles;
-- *hidden* outline segments are those that come only from inner surfaces (a tube's bore,
-  a hollow sphere's cavity), for dashed drawing.
+- the *fill*: the union of the triangles not seen edge-on (holes of a tube included), as
+  the polygons bounding it (:func:`fill_loops`), or the convex hull of a convex shape;
+- the *outline*: every edge between a triangle facing the viewer and one facing away or
+  edge-on (the silhouette), an open surface's border, and the always-drawn lines;
+- the *creases*: sharp edges (over :data:`CREASE_DEG`) on the viewer's side, not outline;
+- *hidden* outline segments: those only of inner surfaces (a bore, a cavity), dashed.
 
-Circles are sampled with :data:`SEGMENTS` points; every vertex lies on the exact surface,
-so outlines are inscribed polygons (the shape's boundary to within ``R (1 − cos(π/n))``).
-Meshes are drawn from a decimated copy (:func:`decimate`: vertex clustering, Rossignac &
-Borrel, "Multi-resolution 3D approximations for rendering complex scenes", 1993) of at
-most :data:`MESH_MAX_TRIANGLES` triangles, made here when a figure is drawn (the body
-keeps its file's mesh); a part given by its mass properties is drawn as its equivalent
-uniform ellipsoid (:func:`rbcli.body.partmodel.equivalent_ellipsoid`, which the loader keeps on its
-outline: the plausibility warnings measure it too).
+Circles have :data:`SEGMENTS` points, every vertex on the exact surface (outlines within
+``R (1 − cos(π/n))``). Meshes are drawn from a copy decimated by vertex clustering
+(:func:`decimate`; Rossignac & Borrel 1993) to :data:`MESH_MAX_TRIANGLES`; a given part as
+its equivalent uniform ellipsoid (:func:`rbcli.body.partmodel.equivalent_ellipsoid`).
 """
 
 from __future__ import annotations
@@ -59,18 +50,14 @@ class Sketch:
     Attributes
     ----------
     vertices : (n, 3) ndarray — m, on the shape's surface
-    faces : (m, 3) int ndarray — triangles, consistently oriented (outward for a closed
-        surface)
-    inner : (m,) bool ndarray — the triangle belongs to an inner surface (bore, cavity)
+    faces : (m, 3) int ndarray — triangles, oriented alike (outward for a closed surface)
+    inner : (m,) bool ndarray — the triangle is of an inner surface (bore, cavity)
     lines : (k, 2) int ndarray — vertex pairs always drawn (rod, ring, thin triangle edges)
     points : (p, 3) ndarray — m, marked points (a point mass, a given part's centre)
-    closed : bool — the triangles bound a solid (then "facing the viewer" is meaningful)
-    fill : str — how a shadow's fill is found: ``"hull"`` (a convex shape: the convex hull
-        of the projected vertices, one polygon), ``"front"`` (a closed surface: the
-        triangles facing the viewer cover its shadow) or ``"all"`` (every triangle not
-        seen edge-on)
-    rough : bool — a decimated mesh: its folds are artefacts, so a shadow keeps only the
-        outline with empty space beside it and no creases
+    closed : bool — the triangles bound a solid
+    fill : str — a shadow's fill: ``"hull"`` (convex), ``"front"`` (the triangles facing the
+        viewer, of a closed surface) or ``"all"`` (every triangle not seen edge-on)
+    rough : bool — a decimated mesh: a shadow keeps only the outline, no creases
     """
 
     vertices: np.ndarray
@@ -102,17 +89,9 @@ class Sketch:
 
 @dataclass(frozen=True)
 class Shadow:
-    """A sketch projected on a coordinate plane (m, in the plane's two coordinates).
-
-    Attributes
-    ----------
-    fill : list of (n, 2) ndarray — closed polygons (first point repeated) whose union by
-        the nonzero winding rule is the shadow (holes turn the other way)
-    outline : (s, 2, 2) ndarray — silhouette, border and always-drawn segments
-    hidden : (h, 2, 2) ndarray — silhouette segments of inner surfaces only
-    creases : (c, 2, 2) ndarray — sharp edges on the viewer's side
-    points : (p, 2) ndarray — marked points
-    """
+    """A sketch projected on a coordinate plane (m): ``fill`` closed (n, 2) polygons whose
+    nonzero-rule union is the shadow; (k, 2, 2) segments ``outline`` (silhouette, border,
+    always-drawn lines), ``hidden`` (inner surfaces'), ``creases``; (p, 2) ``points``."""
 
     fill: list
     outline: np.ndarray
@@ -225,17 +204,9 @@ _CONVEX = {"box", "plate", "triangle", "ellipsoid", "given", "hemisphere", "cone
 
 
 def local_sketch(kind: str, dims: dict, vertices=None, faces=None, n: int = SEGMENTS) -> Sketch:
-    """The sketch of a shape in its LOCAL frame (that of :mod:`rbcli.core.shapes`), m.
-
-    Parameters
-    ----------
-    kind : str — a primitive shape name, ``"given"`` (an ellipsoid of ``semi_axes`` with
-        its centre marked) or ``"mesh"``
-    dims : dict — the shape's parameters in m, as :func:`rbcli.core.shapes.geometry` takes
-        them
-    vertices, faces : arrays — a mesh's (m; indices), for ``kind == "mesh"``
-    n : int — points around a full circle (at least 8)
-    """
+    """The sketch (m) of a shape in its local frame (:mod:`rbcli.core.shapes`'): ``kind`` a
+    primitive, ``"given"`` (an ellipsoid of ``semi_axes``, centre marked) or ``"mesh"``
+    (``vertices``, ``faces``); ``dims`` its parameters in m; ``n`` points a circle (>= 8)."""
     s = _local(kind, dims, vertices, faces, max(8, int(n)))
     r_in = float(dims.get("inner_radius") or 0.0)
     solid_round = (kind == "cylinder" and not dims.get("shell")) or kind == "disk"
@@ -325,13 +296,9 @@ def sketch(outline, n: int = SEGMENTS, max_triangles: int | None = None) -> Sket
 def decimate(vertices, faces, max_triangles: int = MESH_MAX_TRIANGLES) -> tuple[np.ndarray, np.ndarray]:
     """A mesh of at most ``max_triangles`` triangles that looks like ``(vertices, faces)``.
 
-    Vertex clustering: the vertices in one cell of a g × g × g grid over the bounding box
-    merge into their mean; triangles that collapse are dropped, duplicates kept once, the
-    orientation of the rest kept. g starts at √max_triangles; while too many triangles
-    are left it shrinks as the square root of the excess (a surface's triangle count goes
-    as g²), so two or three passes of O(n) work suffice. A mesh already small enough is
-    returned as is (its unused vertices dropped).
-    """
+    Vertex clustering: a g × g × g grid's cell's vertices merge into their mean; collapsed
+    triangles dropped, duplicates kept once. g starts at √max_triangles and shrinks as the
+    square root of the excess (triangles go as g²): two or three O(n) passes."""
     V = np.asarray(vertices, dtype=float)
     F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if len(F) <= max_triangles:
@@ -379,15 +346,9 @@ def normals(s: Sketch) -> np.ndarray:
 
 
 def shadow(s: Sketch, i: int, j: int, toward: float = 1.0) -> Shadow:
-    """The sketch seen along the third body axis, on the (i, j) plane.
-
-    Parameters
-    ----------
-    s : Sketch — in the body frame
-    i, j : int — the body axes (0, 1, 2 = x, y, z) drawn across and up
-    toward : ±1 — the sign of the third axis pointing at the viewer (top view from +z: +1;
-        front view from −y: −1); decides which creases are on the near side
-    """
+    """Sketch ``s`` (body frame) seen along the third body axis, body axes ``i`` across and
+    ``j`` up; ``toward`` (±1) the sign of the third axis at the viewer (top view from +z: +1,
+    front view from −y: −1), which decides the near creases."""
     k = 3 - i - j
     p2 = s.vertices[:, [i, j]]
     nz = normals(s)[:, k] * toward
@@ -509,23 +470,12 @@ def _covered_both_sides(segs: np.ndarray, tris: np.ndarray, eps: float) -> np.nd
 def fill_loops(faces, points2) -> list[np.ndarray]:
     """Closed polygons whose nonzero-rule fill is the union of the projected triangles.
 
-    Each triangle ``points2[faces[k]]`` is turned counter-clockwise (zero-area ones are
-    dropped); their directed edges are summed, an edge cancelling its reverse, and what
-    remains is chained into loops. The winding number of the loops about any point is the
-    number of triangles covering it (the boundary of a sum of triangles is the sum of their
-    boundaries), so a nonzero fill paints exactly the union, uncovered holes left empty;
-    a patch of many triangles becomes one polygon along its border.
+    The triangles turned counter-clockwise (zero-area ones dropped), their directed edges
+    summed (an edge cancels its reverse) and chained into loops: the loops' winding number
+    about a point is the number of triangles covering it, so a nonzero fill is the union.
 
-    Parameters
-    ----------
-    faces : (m, 3) int array — indices into ``points2``; triangles sharing a vertex must
-        share its index for their common edges to cancel
-    points2 : (n, 2) array — projected vertices
-
-    Returns
-    -------
-    list of (k, 2) ndarray — closed (first point repeated)
-    """
+    ``faces``: (m, 3) indices into ``points2`` ((n, 2) projected vertices; a shared vertex
+    has one index, so that common edges cancel). Returns closed (k, 2) loops."""
     P = np.asarray(points2, dtype=float)
     F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if not len(F):

@@ -1,20 +1,15 @@
 """The one look of every rbcli figure, and its bytes in memory (the cli writes them).
 
-matplotlib is imported only inside these functions (it costs ~400 ms), through its
-Figure API without pyplot, so nothing is ever drawn on screen. Figures are readable
-in print and in grey scale: black and dark greys with distinct line styles and
-markers rather than colour alone. SVG and PDF are written without dates (and honour
-SOURCE_DATE_EPOCH), so the same input gives the same bytes.
-
-Every text of a figure (titles, axis labels, legends, annotations: names of bodies, parts,
-planes and sensors among them) is made safe before it is drawn (:func:`label`): control,
-bidirectional and XML-illegal characters shown as visible escapes, so that an SVG stays
-well-formed XML (matplotlib copies each text into an SVG comment) whatever a name holds.
+matplotlib (~400 ms) is imported only inside these functions, its Figure API without
+pyplot. Grey scale with distinct line styles; SVG and PDF without dates (the same input,
+the same bytes). Every text is made safe before it is drawn (:func:`label`: control,
+bidirectional and XML-illegal characters as visible escapes, so an SVG stays valid XML).
 """
 
 from __future__ import annotations
 
 import io
+import textwrap
 
 from rbcli.errors import clean
 from rbcli.render.safe import escape
@@ -46,7 +41,10 @@ RC = {
     # labels are text, never mathtext or TeX: a body named '$\\frac{$' is shown as written
     "text.parse_math": False,
     "text.usetex": False,
+    "axes.formatter.useoffset": False,  # ticks read as numbers, never "1e-5+3.14159e1"
 }
+#: characters of a suptitle per inch of figure width (~11 pt): longer titles wrap at spaces
+TITLE_CHARS_PER_INCH = 11
 
 
 def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (7.0, 4.2)):
@@ -61,7 +59,7 @@ def figure(title: str, *, nrows: int = 1, ncols: int = 1, size: tuple[float, flo
 
     fig = Figure(figsize=size, layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False)
-    fig.suptitle(label(title))
+    fig.suptitle("\n".join(textwrap.wrap(label(title), int(size[0] * TITLE_CHARS_PER_INCH), break_long_words=False)))
     return fig, axes
 
 
@@ -80,7 +78,7 @@ def sanitise(fig) -> None:
     for t in fig.findobj(Text):
         s = t.get_text()
         if s:
-            safe = label(s)
+            safe = "\n".join(label(line) for line in s.split("\n"))  # the figure's own line breaks kept
             if safe != s:
                 t.set_text(safe)
 

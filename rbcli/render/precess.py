@@ -9,13 +9,13 @@ import numpy as np
 
 from rbcli.core import freemotion as fm
 from rbcli.core import freestate as fs
-from rbcli.body.model import Body
 from rbcli.render.fmt import num, snap
 from rbcli.render.massprops import AXES, vec_rows
 from rbcli.render.plots import figure, style
 from rbcli.render.units import DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
+    from rbcli.body.model import Body
     from rbcli.render.text import Doc  # hints only: --json never loads render.text
 
 #: the CSV header of ``--csv`` (the columns of :func:`rbcli.core.freestate.series`)
@@ -58,7 +58,7 @@ def document(doc: Doc, body: Body, result: Any, du: DisplayUnits, digits: int, *
              csv: dict | None = None, plot: str | None = None) -> None:
     """The tables a person reads, from a :class:`rbcli.api.precess.PrecessResult`; ``csv``
     ({file, samples, duration}) and ``plot`` (a file name) say what was written."""
-    motion = result.motion
+    motion, du = result.motion, du.of(body)
     doc.heading(f"{body.name}  ({body.source})")
     f, iu = du.factor("inertia")
     rows = [(str(i + 1), num(motion.moments[i] * f, digits),
@@ -213,7 +213,7 @@ def _verify(doc: Doc, motion: fm.FreeMotion, v: Any, du: DisplayUnits, digits: i
 def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits):
     """w(t) in the body frame (three panels) and the polhode seen along axes 3 and 1; the
     samples come from the exact motion (:func:`rbcli.core.freestate.plot_samples`)."""
-    ps = fs.plot_samples(motion, duration)
+    ps, du = fs.plot_samples(motion, duration), du.of(body)
     t0, t1, t, w = ps.t0, ps.t1, ps.t, ps.omega
     ft, tu = du.factor("time")
 

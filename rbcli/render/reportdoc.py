@@ -84,7 +84,7 @@ def _principal(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section
 
 def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
     res, bo = c.result, c.options
-    su = ShopUnits(None if du.si else ",".join(u for _, u in (du.length, du.mass, du.time)))
+    su = ShopUnits(",".join(u for _, u in (du.length, du.mass, du.time)) if du.chosen else None, body)
     doc = Doc()
     rb.document(doc, res, su, digits)
     _options_table(doc, rb.echo_rows(res))
@@ -173,10 +173,10 @@ def document(result: ReportResult, units: DisplayUnits | None = None, digits: in
              progress: Callable[[str, int, int], None] | None = None) -> Report:
     """The report's document: the header (body, input file and its SHA-256, options, units,
     rbcli version, date) and each section's tables and figure; ``units`` the tables' units
-    (default SI), ``digits`` their significant figures. ``progress(what, i, n)`` is called
+    (default: the body file's), ``digits`` their significant figures. ``progress(what, i, n)`` is called
     before each section is drawn."""
-    du = units or DisplayUnits()
     body = result.body
+    du = (units or DisplayUnits()).of(body)
     sections = []
     for i, c in enumerate(result.sections):
         if progress is not None:

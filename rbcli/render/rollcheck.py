@@ -42,7 +42,7 @@ def document(doc: Doc, res: RollcheckResult, du: DisplayUnits, digits: int) -> N
     """The tables of a rolling check, into ``doc``."""
     st = res.straight
     w = st.wheel
-    o = res.options
+    o, du = res.options, du.of(res.units)
     L, M, I = du.unit("length"), du.unit("mass"), du.unit("inertia")
     doc.heading(f"{res.name}  ({res.source})")
     rim_label = {"edge": " (knife edge)", "torus": " (rounded rim)", "sphere": " (a sphere)",

@@ -4,25 +4,15 @@ Names, labels and file names are data that came from a file or a command line. I
 output they must stay data: they may not forge lines or cells, reorder what a reader sees,
 break the format's syntax or become a spreadsheet formula. The rules, one for every format:
 
-- **Escaped everywhere** (:func:`escape`, the escapes of :func:`rbcli.env.clean` without
-  its cutting of long words): C0 controls (NUL, ESC, CR, LF, TAB...), DEL, C1 controls
-  (NEL ``\\x85``...), the line and paragraph separators U+2028/U+2029, the bidirectional
-  controls U+200E/U+200F, U+202A-U+202E (embeddings and overrides) and U+2066-U+2069
-  (isolates), the byte-order mark U+FEFF, and what XML 1.0 forbids in a document (the
-  noncharacters U+FFFE/U+FFFF and lone surrogates, which UTF-8 cannot even encode). Each
-  becomes visible text: ``\\n``, ``\\r``, ``\\t``, ``\\e`` (ESC), ``\\xNN``, ``\\uNNNN``.
-- **Spreadsheet formulas** (:func:`csv_text`): a CSV text cell that starts with ``=``, ``+``,
-  ``-``, ``@``, TAB or CR is prefixed with an apostrophe ``'`` — the OWASP "CSV Injection"
-  advice (https://owasp.org/www-community/attacks/CSV_Injection; OWASP ASVS 5.0 requirement
-  1.2.10): Excel, LibreOffice and Google Sheets then show the cell as text
-  (the apostrophe is their "this is text" mark), and a script sees the apostrophe and can
-  strip it. Numbers are never text cells, so ``-0.5`` stays a number.
-- **JSON** (:func:`json_escape`): JSON itself escapes C0 controls; the other characters above
-  are written as ``\\uXXXX`` escapes too. That is lossless (a JSON parser gives back the very
-  same string), and the raw characters never reach a terminal that shows the JSON or a
-  JavaScript engine that reads it as a literal (U+2028 ends a line there).
-
-Stdlib only; patterns compiled on first use.
+- **Escaped everywhere** (:func:`escape`, :func:`rbcli.env.clean`'s escapes without its
+  cutting): C0 and C1 controls, DEL, U+2028/U+2029, the bidirectional controls (U+200E/F,
+  U+202A-E, U+2066-9), U+FEFF and what XML 1.0 forbids (U+FFFE/U+FFFF, lone surrogates),
+  each as visible text: ``\\n``, ``\\r``, ``\\t``, ``\\e`` (ESC), ``\\xNN``, ``\\uNNNN``.
+- **Spreadsheet formulas** (:func:`csv_text`): a CSV text cell starting with ``=``, ``+``,
+  ``-``, ``@``, TAB or CR gets an apostrophe in front (OWASP "CSV Injection"; ASVS 5.0
+  1.2.10): spreadsheets show it as text. Numbers are never text cells (``-0.5`` stays one).
+- **JSON** (:func:`json_escape`): the characters above that JSON leaves raw are written as
+  ``\\uXXXX`` escapes too: lossless, and never raw on a terminal or in a JavaScript literal.
 """
 
 from __future__ import annotations

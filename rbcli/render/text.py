@@ -2,15 +2,13 @@
 by :mod:`rbcli.render.report`, as HTML or Markdown.
 
 A command's render module fills a :class:`Doc` with neutral items; how they look is
-decided only when the document is rendered. Text from the user (names, titles, cells) is
-made safe for a terminal there, once (:func:`rbcli.errors.clean`). Tables for people: units in headers,
-plain ASCII without colour when not a terminal.
+decided when it is rendered, where text from the user is made safe once (:func:`clean`).
 """
 
 from __future__ import annotations
 
 import io
-import os
+import math
 import re
 import shutil
 from collections.abc import Sequence
@@ -55,9 +53,6 @@ class Doc:
         self.env = env
         self.items: list = [] if items is None else items
 
-    def __repr__(self) -> str:
-        return f"Doc(env={self.env!r}, items={self.items!r})"
-
     def heading(self, text: str) -> None:
         self.items.append(Heading(text))
 
@@ -81,71 +76,77 @@ class Doc:
         self.table(title, ("quantity", "value", "unit"), rows, right=(1,))
 
     def render(self) -> str:
-        """The document for a terminal or a pipe (rich's tables): plain ASCII tables without
-        colour when not a terminal, with colour on one."""
+        """The document as text (rich; colour on a terminal). No word is ever split: on a
+        terminal cells wrap at spaces to its width (a table that cannot fit, wider); not on
+        one, a table is as wide as its rows; notes wrap at spaces (``COLUMNS``, else 100)."""
         env = self.env
-        color = bool(env and env.color)
-        width = env.width if env and env.width else None
-        if width is None:
-            width = shutil.get_terminal_size((100, 24)).columns if env and env.stdout_isatty else _columns()
-        rich_print = _rich_printer(color, width)
+        tty = bool(env and env.stdout_isatty)
+        width = (env.width if env and env.width else None) or \
+            max(40, shutil.get_terminal_size((100, 24)).columns)  # not a terminal: COLUMNS, else 100
+        rich_print = _rich_printer(bool(env and env.color), width, tty)
         return "".join(rich_print(item) for item in self.items)
 
 
-def _rich_printer(color: bool, width: int):
+def _fit(hi: list[int], lo: list[int], room: float) -> list[int]:
+    """Column widths: each column's widest cell, the widest shrunk one character at a time
+    (never below its longest word) until the row fits ``room``."""
+    w = list(hi)
+    while sum(w) > room:
+        i = max(range(len(w)), key=lambda j: (w[j] > lo[j], w[j]))
+        if w[i] <= lo[i]:
+            break
+        w[i] -= 1
+    return w
+
+
+def _rich_printer(color: bool, width: int, tty: bool):
     """A function that renders one document item with rich (imported here, when needed)."""
     from rich import box
+    from rich.cells import cell_len
     from rich.console import Console
     from rich.table import Table as RichTable
     from rich.text import Text
 
     buf = io.StringIO()
-    console = Console(
-        file=buf,
-        force_terminal=color,
-        no_color=not color,
-        color_system="standard" if color else None,
-        width=width,
-        highlight=False,
-        emoji=False,
-        markup=False,
-        legacy_windows=False,
-    )
+    console = Console(file=buf, force_terminal=color, no_color=not color, color_system="standard" if color else None,
+                      width=1 << 20, highlight=False, emoji=False, markup=False, legacy_windows=False)
+
+    def longest(texts) -> int:
+        return max((cell_len(w) for t in texts for w in t.split()), default=0)
 
     def render(item) -> str:
         buf.seek(0)
         buf.truncate()
         # every piece of text is made safe once, here: control characters and line
-        # separators escaped, runs over 200 characters cut (rbcli.env.clean)
-        if isinstance(item, Heading):
-            console.print(Text(clean(item.text, keep_newlines=True, max_line=None), style="bold" if color else ""))
-        elif isinstance(item, Note):
-            console.print(Text(clean(item.text, keep_newlines=True, max_line=None)))
-        else:
-            t = RichTable(
-                title=clean(item.title) or None,
-                title_justify="left",
-                box=box.SIMPLE_HEAD if color else box.ASCII2,
-                show_edge=False,
-                pad_edge=False,
-                title_style="bold" if color else None,
-                header_style="bold" if color else None,
-            )
-            for i, c in enumerate(item.columns):
-                t.add_column(clean(c), justify="right" if i in item.right else "left", overflow="fold")
-            for r in item.rows:
-                t.add_row(*(clean(x) for x in r))
-            console.print(t)
+        # separators escaped, runs over 200 characters cut (rbcli.errors.clean)
+        if isinstance(item, (Heading, Note)):
+            text = clean(item.text, keep_newlines=True, max_line=None)
+            style = "bold" if color and isinstance(item, Heading) else ""
+            console.print(Text(text, style=style), width=max(width, longest([text])))
+            return buf.getvalue()
+        cols = [clean(c) for c in item.columns]
+        rows = [[clean(x) for x in r] for r in item.rows]
+        cells = [[c, *(r[i] for r in rows if i < len(r))] for i, c in enumerate(cols)]
+        hi = [max(cell_len(line) for x in col for line in x.split("\n")) for col in cells]
+        widths = _fit(hi, [longest(col) for col in cells], width - 3 * (len(cols) - 1) if tty else math.inf)
+        title = clean(item.title)
+        room = sum(widths) + 3 * (len(cols) - 1)
+        # a title with a word wider than its table, or wider than a terminal its table overflows: apart
+        apart = longest([title]) > room or (tty and room > width and cell_len(title) > width)
+        if apart:
+            console.print(Text(title, style="bold" if color else ""), width=max(width if tty else 100, longest([title])))
+        t = RichTable(title=None if apart else title or None, title_justify="left",
+                      box=box.SIMPLE_HEAD if color else box.ASCII2, show_edge=False, pad_edge=False,
+                      title_style="bold" if color else None, header_style="bold" if color else None)
+        for i, c in enumerate(cols):
+            t.add_column(c, justify="right" if i in item.right else "left",
+                         width=None if widths == hi else widths[i])
+        for r in rows:
+            t.add_row(*r)
+        console.print(t)
         return buf.getvalue()
 
     return render
-
-
-def _columns() -> int:
-    try:
-        return max(40, int(os.environ.get("COLUMNS", "100")))
-    except ValueError:
-        return 100
 
 
 # ----------------------------------------------------------------------------- checks
@@ -157,17 +158,9 @@ _CELL_SPLIT = re.compile(r"[\s\[\](),;=]+")
 
 
 def check_finite_doc(doc: Doc) -> None:
-    """Refuse a table that would show inf or NaN as a number.
-
-    Looks at the numeric (right-aligned) columns of every table: a whole word there that
-    reads inf or nan is what ``num()`` prints for a result that overflowed. Names, notes
-    and left-aligned text are not looked at (a part may be called "nan").
-
-    Raises
-    ------
-    NonFiniteResult
-        (exit 2, one line) naming the table and the row.
-    """
+    """Refuse (NonFiniteResult, exit 2, naming the table and the row) a table whose numeric
+    (right-aligned) columns hold a word inf or nan: what ``num()`` prints for an overflow.
+    Names, notes and left-aligned text are not looked at (a part may be called "nan")."""
     for item in doc.items:
         if not isinstance(item, Table):
             continue

@@ -1,9 +1,5 @@
-"""Tables, the figure and the CSV rows of ``rbcli top``; tables of ``rbcli gyrocompass``.
-
-Render only formats and draws what :mod:`rbcli.api.top` computed (its TopResult and
-GyrocompassResult, and the sampled motion, a :class:`rbcli.core.toppath.TopState`); the JSON is
-the result's own ``to_json()``.
-"""
+"""Tables, the figure and the CSV rows of ``rbcli top`` (a TopResult and its sampled
+:class:`rbcli.core.toppath.TopState`); tables of ``rbcli gyrocompass``."""
 
 from __future__ import annotations
 
@@ -51,7 +47,7 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
     motion = result.motion
     check = result.verify
     p = motion.params
-    b = result.body
+    b, du = result.body, du.of(result.body)
     M, L, J = du.unit("mass"), du.unit("length"), du.unit("inertia")
     d = digits
     doc.heading(f"{b.name}  ({b.source})")
@@ -165,10 +161,10 @@ def document(doc: Doc, result: TopResult, du: DisplayUnits, digits: int, *, plot
 
     doc.kv("closed form (Goldstein §5.7; u = cos θ)", [
         ("a = Is S/I", num(motion.a, d), "1/s"),
-        ("b = p_φ/I", num(motion.b, d), "1/s"),
-        ("α = 2E'/I", num(motion.alpha, d), "1/s²"),
+        ("b = p_φ/I", num(motion.b, d, abs(motion.a)), "1/s"),  # round-off: of a, and of a² + β
+        ("α = 2E'/I", num(motion.alpha, d, motion.a ** 2 + abs(motion.beta)), "1/s²"),
         ("β = 2 m g l/I", num(motion.beta, d), "1/s²"),
-        ("turning points u1, u2, u3", ", ".join(num(x, d) for x in (motion.u1, motion.u2, motion.u3)), ""),
+        ("turning points u1, u2, u3", ", ".join(num(x, d, 1.0) for x in (motion.u1, motion.u2, motion.u3)), ""),
         ("elliptic parameter m", num(motion.elliptic.m, d), ""),
     ])
 
@@ -301,8 +297,7 @@ def plot(result: TopResult, state: TopState, duration: float):
 
 def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits: int) -> None:
     """The tables of ``rbcli gyrocompass``."""
-    d = digits
-    res = result.swing
+    d, res, du = digits, result.swing, du.of(result.body)
     if result.body is not None:
         b = result.body
         J = du.unit("inertia")

@@ -58,6 +58,7 @@ def conventions_note(res: WhirlResult) -> str:
 def document(doc: Doc, res: WhirlResult, du: DisplayUnits, digits: int, *, echo: bool = True,
              heading: bool = True) -> None:
     """The tables of a whirl analysis, into ``doc``."""
+    du = du.of(res.units, (res.rotor.mass, max(abs(b.plane) for b in res.bearings)))
     if heading:
         doc.heading(f"{res.name}  ({res.source})" if res.source else res.name)
     if echo:
@@ -470,6 +471,7 @@ def response_figure(res: WhirlResult):
         kw = style(i)
         ax.plot(sp, amp, label=f"bearing {i + 1} (z = {b.plane:.4g} m)", **kw)
         axp.plot(sp, _continuous_phase(np.asarray(b.displacement_phase_deg), amp), **kw)
+    said: list[tuple[float, str]] = []  # AF labels placed: a twin peak's goes below, the same one once
     for p in resp.peaks:
         if p.undamped:
             ax.axvline(p.speed * RPM, color="0.5", linewidth=0.7, linestyle=":")
@@ -478,9 +480,12 @@ def response_figure(res: WhirlResult):
         if p.half_power is not None:
             lvl = p.amplitude * UM / math.sqrt(2.0)
             ax.plot([p.half_power[0] * RPM, p.half_power[1] * RPM], [lvl, lvl], color="0.4", linewidth=0.8)
-        if p.amplification_factor is not None:
-            ax.annotate(f"AF {p.amplification_factor:.3g}" + (" (1/2ζ)" if p.basis == "damping ratio" else ""),
-                        (p.speed * RPM, p.amplitude * UM), textcoords="offset points", xytext=(5, 3), fontsize=7)
+        text = f"AF {p.amplification_factor:.3g}" + (" (1/2ζ)" if p.basis == "damping ratio" else "")
+        near = [t for s, t in said if abs(s - p.speed) < 0.05 * (sp[-1] - sp[0]) / RPM]
+        if p.amplification_factor is not None and text not in near:
+            ax.annotate(text, (p.speed * RPM, p.amplitude * UM), textcoords="offset points",
+                        xytext=(5, 3 - 12 * len(near)), fontsize=7)
+            said.append((p.speed, text))
     if res.speed is not None:
         lo, hi = res.speed
         for a in (ax, axp):
@@ -492,7 +497,7 @@ def response_figure(res: WhirlResult):
         ax.set_yscale("log")
     ax.set_xlim(float(sp[0]), float(sp[-1]))
     axp.set_xlim(float(sp[0]), float(sp[-1]))
-    ax.set_ylabel("displacement, orbit semi-major axis [µm]")
+    ax.set_ylabel("displacement [µm]\n(orbit semi-major axis)")
     src = "the body's own unbalance" if resp.source == "body" else "the unbalances given"
     ax.set_title(f"response to {src}; half-power points marked", fontsize=9)
     fig.legend(loc="outside lower center", ncols=3, fontsize=7)
@@ -500,7 +505,7 @@ def response_figure(res: WhirlResult):
 
     axp.yaxis.set_major_locator(MultipleLocator(90.0))
     axp.set_xlabel("rotor speed [rpm]")
-    axp.set_ylabel("phase of the high spot [°] (rotor frame)")
+    axp.set_ylabel("high-spot phase [°]\n(rotor frame)")
     return fig
 
 

@@ -1,10 +1,6 @@
-"""A trim run: a job solved with stored influence coefficients (``coefficients``, a file
-written by ``--save-coefficients``, read by :mod:`rbcli.io.field.coefficients`).
-
-The file's coefficients are checked against the job (as many readings, of the same kind, at
-the same speeds; a job file's sensors) and brought into its measure and angle sense; the
-job takes the file's planes, their trial radii and, when it says none, its conventions.
-"""
+"""A trim run: a job solved with stored influence coefficients (``coefficients``), checked
+against the job (readings, kind, speeds, sensors, planes) and brought into its measure and
+angle sense; the job takes the file's planes, trial radii and, when it says none, conventions."""
 
 from __future__ import annotations
 

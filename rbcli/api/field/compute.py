@@ -1,14 +1,6 @@
-"""The result of a field-balancing job (:func:`result`: the work of
-:func:`rbcli.api.field.service.run`).
-
-A one- or two-plane job given the classic way is solved and reported as it always was
-(:func:`rbcli.core.field.solve.classic`). Every other job is extended: square one- and
-two-plane jobs are still solved by the classic solves (the same bits), the rest by
-:func:`rbcli.core.field.solve.solve`; then come the corrections at their radii, the masses as
-fitted (:func:`rbcli.core.field.fit.fit_plane`) and the readings they leave, Darlow's
-significance (:mod:`rbcli.core.field.significance`), the ISO 20816-3 zones
-(:mod:`rbcli.core.field.severity`) and a trial mass to start with (:mod:`rbcli.api.field.trial`).
-"""
+"""The result of a field-balancing job (:func:`result`): a classic job as it always was, any
+other solved (square one- and two-plane jobs with the classic bits), fitted (rounded, split
+or from a drawer), judged (limits, significance, ISO 20816-3) and a trial mass sized."""
 
 from __future__ import annotations
 

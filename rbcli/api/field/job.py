@@ -1,12 +1,8 @@
-"""A field-balancing job, read once: what :func:`rbcli.api.field.service.parse` returns.
-
-A job comes from the parameters (the command line's shorthand for a one-speed job:
-``initial``, ``trial``, ``run``; sensors 1..N, planes A, B, ...) or from a job file, whose
-settings are the parameters' (one given in both is refused). Then every reading is of one
-kind, in one measure, its phase in the sense of the trial angles; stored coefficients are
-brought in (:mod:`.coefficients`), the shop's limits and drawer read (:mod:`.shop`), a trial
-mass sized (:mod:`.trial`).
-"""
+"""A field-balancing job, read once (:func:`make`): from the parameters (a one-speed job:
+sensors 1..N, planes A, B, ...) or a job file, whose settings are the parameters' (one given
+in both is refused); the readings in one kind and measure, phases in the angles' sense; a
+trim run's coefficients (:mod:`.coefficients`), the shop's limits and drawer (:mod:`.shop`),
+a trial mass sized (:mod:`.trial`)."""
 
 from __future__ import annotations
 
@@ -48,15 +44,11 @@ PER_ITEM = ("weights", "positions", "speed", "max_mass", "limit", "drawer")
 
 @dataclass(frozen=True)
 class Job:
-    """A field-balancing job, read and checked: the parameters (a job file's settings among
-    them; the conventions the solve uses), the readings' sensors and speeds ((name, rad/s or
-    None): reading k is sensor ``k % len(sensors)`` at speed ``k // len(sensors)``), per plane
-    its name, (trial, correction) radius (m), positions and place (m); trial masses (kg
-    e^{i angle}); readings (SI of ``reading_kind``, or bare; in ``measure``, phases in the
-    angles' sense, ``flipped`` if mirrored there); stored coefficients (per kg, a trim run);
-    ``classic``: given with :data:`CLASSIC` only; ``extended``: reported with ``method`` and
-    the rest; ``source``: the job file as read; the shop's ``max_mass`` (per plane (kg,
-    "mass") or (kg m, "unbalance")), ``limits`` (per reading) and ``drawer``."""
+    """A job, read and checked: the parameters (with a job file's settings), readings' sensors
+    and speeds (reading k: sensor ``k % len(sensors)`` at speed ``k // len(sensors)``), per
+    plane name, (trial, correction) radius, positions, place; trials (kg e^{i angle}); readings
+    (SI of ``reading_kind`` or bare, in ``measure``, phases in the angles' sense); a trim run's
+    ``alpha``; the job file as read (``source``); the shop's ``max_mass``, ``limits``, ``drawer``."""
 
     options: Options
     sensors: tuple[str, ...]

@@ -1,11 +1,7 @@
-"""How field-balancing readings and trial masses are read: ``"6 mm/s rms@30"``, ``"10 g@0"``.
-
-A reading is ``amplitude [unit] [measure]@phase``: bare (one relative scale for every
-reading) or with a unit of vibration converted exactly to SI — displacement (µm, mm, mil =
-25.4 µm, m), velocity (mm/s, in/s, m/s), acceleration (``g`` = standard gravity, m/s²) —
-and optionally its measure (``pk``, ``pk-pk``, ``rms``, or ``peak``, ``0-pk``, ``p-p``,
-``pp``); the phase in degrees (or with an angle unit). A trial mass is ``mass@angle``, a
-bare mass in grams (there ``g`` is the gram). Messages name parameters as ``{param}``.
+"""Readings ``amplitude [unit] [measure]@phase`` — bare (one relative scale) or converted
+exactly to SI: displacement (µm, mm, mil, m), velocity (mm/s, in/s, m/s), acceleration (g =
+standard gravity, m/s²); measure pk, pk-pk, rms (or peak, 0-pk, p-p, pp) — and trial masses
+``mass@angle`` (bare: grams; there g is the gram). Messages name parameters as ``{param}``.
 """
 
 from __future__ import annotations

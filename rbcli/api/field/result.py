@@ -1,9 +1,6 @@
-"""The result of ``rbcli field-balance`` (:func:`rbcli.field_balance`): values, their JSON
-(the keys: rbcli-field-balance(1)) and the coefficients file's document.
-
-One- and two-plane jobs given with the options rbcli always had are written as they always
-were, byte for byte (:attr:`FieldBalanceResult.method` None); anything else is an extended
-result, whose JSON adds ``method``, ``residuals`` and the rest.
+"""The result of ``rbcli field-balance``: values, their JSON (rbcli-field-balance(1)) and
+the coefficients file's document; a classic one- or two-plane job's as it always was
+(``method`` None), any other's with ``method``, ``residuals`` and the rest.
 """
 
 from __future__ import annotations
@@ -282,13 +279,9 @@ def convention_text(phase: str | None, angle_sense: str | None, rotation: str | 
 
 @dataclass(frozen=True)
 class FieldBalanceResult(Result):
-    """What ``rbcli field-balance`` reports (JSON keys: rbcli-field-balance(1)).
-
-    Readings (``initial``, ``runs``, ``residual_values``) are complex, SI of ``reading_kind``
-    (or bare), in the angles' sense; ``alpha[k][j]`` is reading k per kg at plane j's trial
-    radius; masses kg, radii m; reading k is sensor ``k % len(sensors)`` at speed
-    ``k // len(sensors)``. ``method`` None: a classic one- or two-plane job.
-    """
+    """What ``rbcli field-balance`` reports: readings complex (SI or bare, the angles' sense),
+    ``alpha[k][j]`` per kg at plane j's trial radius, masses kg, radii m; ``method`` None: a
+    classic job."""
 
     planes: int
     initial: tuple[complex, ...]

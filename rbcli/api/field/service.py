@@ -1,15 +1,7 @@
-"""Field (trial-weight) balancing: the service behind ``rbcli field-balance``.
-
-The influence-coefficient method (physics sheet ``physics/balance.md`` §5; the two-plane
-example is Brüel & Kjær application note 17-227, "Static and dynamic balancing of rigid
-rotors"): P correction planes, N >= P readings per run (sensors at one or more speeds),
-one trial run per plane. :func:`field_balance` reads its parameters once
-(:data:`rbcli.api.commands.FIELD_BALANCE`, :func:`parse`: the job, from the parameters or a
-job file, :mod:`rbcli.api.field.job`) and returns a frozen
-:class:`~rbcli.api.field.result.FieldBalanceResult` (:func:`run`,
-:mod:`rbcli.api.field.compute`) whose ``to_json()`` is what ``rbcli field-balance --json``
-prints. No body is needed.
-"""
+"""Field (trial-weight) balancing, the service behind ``rbcli field-balance`` (physics sheet
+``balance.md`` §5; the two-plane example is Brüel & Kjær's note 17-227): :func:`parse` reads
+the job once, :func:`run` computes the result (:mod:`.compute`), whose ``to_json()`` is
+``--json``. No body is needed."""
 
 from __future__ import annotations
 
@@ -77,13 +69,10 @@ def run(body: None, job: Job) -> FieldBalanceResult:
 def field_balance(body: None = None, **kwargs: Any) -> FieldBalanceResult:
     """Field (trial-weight) balancing from vibration readings: influence coefficients.
 
-    Readings are ``"amplitude@phase"`` strings (phases in degrees from the keyphasor):
-    either all bare numbers (``"6.0@30"``: one relative scale, the corrections do not depend
-    on it) or all with units of one kind, converted exactly: displacement (``"40 um@30"``,
-    µm, mm, mil), velocity (``"6 mm/s@30"``, mm/s, in/s) or acceleration (``"0.5 g@30"``,
-    g = standard gravity, m/s²); a measure may follow the unit (``"6 mm/s rms@30"``: pk,
-    pk-pk or rms). Trial masses are ``"mass@angle"`` (``"10 g@0"``; a bare mass is in grams,
-    as balancing sheets write it). A number given for a quantity is SI (m, kg, rad/s, N).
+    Readings are ``"amplitude@phase"`` (degrees from the keyphasor), all bare (``"6.0@30"``,
+    one relative scale) or all of one kind (``"40 um@30"``, ``"6 mm/s rms@30"``, ``"0.5
+    g@30"``: g is gravity); trial masses ``"mass@angle"`` (``"10 g@0"``, bare: grams). A
+    number given for a quantity is SI (m, kg, rad/s, N).
 
     Parameters
     ----------
@@ -97,10 +86,9 @@ def field_balance(body: None = None, **kwargs: Any) -> FieldBalanceResult:
     Raises
     ------
     TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
+        An argument of the wrong type, naming the parameter.
     rbcli.InputError
-        naming the parameter and ``param``.
+        naming the parameter (``param``), or located in a job file.
 
     Examples
     --------

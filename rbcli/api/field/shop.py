@@ -1,8 +1,6 @@
-"""What the shop has and allows (:func:`read`): the most mass a plane takes, the largest
-reading allowed, each plane's holes and the weights in the drawer — from the parameters
-(``max_mass``, ``limit``, ``drawer``, ``max_weights``, ``positions``) or the job file (a
-plane's ``max_mass``, ``holes``, ``max_weights``, ``drawer``; a sensor's or speed's
-``limit``; the job's ``drawer``, ``max_weights``), never both.
+"""The shop's limits and drawer (:func:`read`): ``max_mass``, ``limit``, ``drawer``,
+``max_weights``, ``positions`` from the parameters, or a job file's plane ``max_mass``,
+``holes``, ``max_weights``, ``drawer``, sensor or speed ``limit`` — never both.
 """
 
 from __future__ import annotations

@@ -1,12 +1,9 @@
-"""Corrections under limits: least squares and min-max with second-order cone constraints.
-
-Minimise ``½|B z + b|² + c·z`` subject to ``|G_i z + h_i| <= a_i·z + β_i`` (2-vectors: a
-reading's or a mass's real and imaginary parts) by a log-barrier method (Boyd and
-Vandenberghe, *Convex Optimization*, 2004, §11.3; barrier ``-log ψ_i``, ``ψ_i = (a_i·z +
-β_i)² - |G_i z + h_i|²``) from a strictly feasible start, then Newton's method on the KKT
-equations of its active set, exact to round-off where it is regular. Every product and solve
-is elementwise numpy with fixed-order sums (``einsum``, :func:`lu_solve`; no BLAS): the same
-bits for any number of BLAS threads.
+"""Least squares and min-max under second-order cone constraints: minimise ``½|B z + b|² +
+c·z`` subject to ``|G_i z + h_i| <= a_i·z + β_i`` by a log-barrier method (Boyd and
+Vandenberghe, *Convex Optimization*, §11.3; ``-log ψ_i``, ``ψ_i = (a_i·z + β_i)² - |G_i z +
+h_i|²``), then Newton on the KKT equations of its active set (exact to round-off). Elementwise
+numpy with fixed-order sums (``einsum``, :func:`lu_solve`; no BLAS): the same bits for any
+BLAS thread count.
 """
 
 from __future__ import annotations

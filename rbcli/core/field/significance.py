@@ -26,16 +26,8 @@ SIGNIFICANCE_LIMIT = 0.2
 
 @dataclass(frozen=True, eq=False)
 class Significance:
-    """Darlow's significance factor of each plane.
-
-    Attributes
-    ----------
-    factors : (P,) float ndarray — per plane, in the planes' own order, in [0, 1], read-only
-    order : (P,) int ndarray — the order the test takes the planes in (largest column
-        first), read-only
-    flagged : tuple of int — planes (indices) with factor <= SIGNIFICANCE_LIMIT
-    limit : float
-    """
+    """Darlow's factor of each plane (in [0, 1], the planes' order), the order the test takes
+    them in (largest column first), the planes flagged (factor <= limit) and the limit."""
 
     factors: np.ndarray
     order: np.ndarray

@@ -1,16 +1,13 @@
-"""Influence-coefficient balancing for any number of planes and readings (sheet §5.1).
+"""Influence-coefficient balancing, any number of planes and readings (sheet §5.1).
 
-Readings ``V = amplitude e^{i phase}`` (row k: a sensor at a speed), masses ``W = m e^{i
-angle}``, counted in one sense; ``V = V0 + alpha W``, alpha (N, P) from one trial run per
-plane (:func:`influence_matrix`). :func:`solve` gives the correction W to ADD (kg at the
-trial radius): ``exact`` (N = P, ``alpha W = -V0``); ``least-squares`` (N > P, min
-``sum (w_k |r_k|)^2``, Goodman 1964, J. Eng. Ind. 86(3):273-279, by a Householder QR;
-``robust``: Huber's weights ``min(1, c/|r_k|)``, c = 2.448 s, s = median |r_k|/sqrt(ln 4),
-a Rayleigh scale: 95 % of a complex Gaussian's residuals lie within c); ``min-max`` (min
-``max w_k |r_k|``, Foiles, Allaire and Gunter; hsbalance's ``Min_max``), a cone program
-(:mod:`.cone`). Limits ``|W_j| <= U_j`` and ``|r_k| <= L_k`` make either a cone program;
-limits that cannot all be met give the least-violating correction (min s, ``|r_k| <= s
-L_k``). Every sum is in a fixed order (no BLAS): the same bits for any BLAS thread count.
+``V = V0 + alpha W`` (readings ``amplitude e^{i phase}``, row k a sensor at a speed; masses
+``m e^{i angle}``; alpha from a trial run per plane, :func:`influence_matrix`). :func:`solve`:
+``exact`` (N = P); ``least-squares`` (min ``sum (w_k |r_k|)^2``, Goodman 1964, J. Eng. Ind.
+86(3):273-279, by a Householder QR; ``robust``: Huber's ``min(1, c/|r_k|)``, c = 2.448 s, s =
+median |r_k|/sqrt(ln 4): 95 % of a complex Gaussian's residuals within c); ``min-max`` (min
+``max w_k |r_k|``, Foiles, Allaire and Gunter; hsbalance's ``Min_max``; :mod:`.cone`). Limits
+``|W_j| <= U_j``, ``|r_k| <= L_k`` make a cone program; unmeetable, the least-violating
+correction. Sums in a fixed order (no BLAS): the same bits for any BLAS thread count.
 """
 
 from __future__ import annotations
@@ -94,13 +91,11 @@ def classic(v0: list[complex], runs: list[list[complex]], trials: list[complex],
 
 @dataclass(frozen=True, eq=False)
 class FieldSolution:
-    """A correction and what it leaves: ``corrections`` (P,) mass e^{i angle} to add (the
-    trial masses' unit and radius) and ``residuals`` (N,) ``V0 + alpha W``, read-only; the
-    method ("exact", "least-squares", "min-max"); cond and |det| (square; None when it
-    overflows) of alpha; the objective (``max_k w_k |r_k|``, ``sqrt(sum (w_k |r_k|)^2)`` or 0);
-    the limits met with equality (("mass", plane) or ("reading", row)) and the objective
-    without each; ``violation`` max |r_k|/L_k (above 1: the least-violating correction);
-    ``robust`` Huber's weight of each reading."""
+    """A correction (P,) mass e^{i angle} to add and the readings it leaves, ``V0 + alpha W``
+    (read-only); the method; cond and |det| (square; None: it overflows); the objective
+    (``max w_k |r_k|``, ``sqrt(sum (w_k |r_k|)^2)`` or 0); the limits met with equality
+    (("mass", plane), ("reading", row)) and the objective without each; max |r_k|/L_k; Huber's
+    weights."""
 
     corrections: np.ndarray
     residuals: np.ndarray
@@ -141,23 +136,12 @@ def _positive(v: object | None, n: int, name: str, none: float) -> np.ndarray:
 def solve(alpha: object, v0: object, method: str | None = None, weights: object | None = None, *,
           max_mass: object | None = None, limits: object | None = None, robust: bool = False,
           costs: bool = True) -> FieldSolution:
-    """The correction W for the readings ``v0`` of a rotor with influence matrix ``alpha``.
-
-    Parameters
-    ----------
-    alpha : (N, P) complex — influence coefficients, N >= P
-    v0 : (N,) complex — readings to cancel
-    method : "exact" (N = P), "least-squares" or "min-max"; default exact when N = P, else
-        least squares (with N = P every method is exact unless a limit binds)
-    weights : (N,) float w_k > 0; max_mass : (P,) largest |W_j|; limits : (N,) largest
-        predicted |r_k| (inf: none); robust : Huber's weights (least squares)
-    costs : solve again without each active limit (:attr:`FieldSolution.without`)
-
-    Raises
-    ------
-    BalanceValueError
-        naming the parameter at fault: ``runs`` for columns that do not separate the planes.
-    """
+    """The correction W for readings ``v0`` (N,) and influence ``alpha`` (N, P), N >= P: by
+    ``method`` ("exact" for N = P, "least-squares" the default, "min-max"; with N = P exact
+    unless a limit binds), reading ``weights`` w_k > 0, ``max_mass`` (P,) largest |W_j| and
+    ``limits`` (N,) largest |r_k| (inf: none), ``robust`` (Huber); ``costs``: solve again
+    without each active limit. A BalanceValueError names the parameter (``runs``: columns that
+    do not separate the planes)."""
     A, V0 = _complex_array(alpha, "alpha", 2), _complex_array(v0, "v0", 1)
     n, p = A.shape
     if V0.shape != (n,) or not 1 <= p <= n:

@@ -1,12 +1,8 @@
-"""Read a file of influence coefficients written by ``rbcli field-balance --save-coefficients``.
-
-JSON (:data:`FORMAT`, version 2; version 1, without a fingerprint, is read too): format,
-version, fingerprint (``sha256:`` of :data:`FINGERPRINTED`), influence {reading_kind,
-reading_unit, measure}, conventions {phase, angle_sense, rotation}, sensors, speeds [{name,
-speed rad/s}], planes [{name, trial_radius m}], rows [{sensor, speed}] (every sensor at every
-speed, speed by speed), coefficients [[{re, im, ...}]] (exact: they read back bit for bit).
-A file changed since rbcli wrote it, or whose rows are out of order, repeated or missing, is
-refused (never read in another order), naming the file.
+"""Read a file of influence coefficients written by ``--save-coefficients``: JSON (version 2;
+version 1, without a fingerprint, is read too) with a ``sha256:`` fingerprint of
+:data:`FINGERPRINTED`, rows every sensor at every speed, speed by speed, and ``re``, ``im``
+exact (they read back bit for bit). A file changed since written, or whose rows are out of
+order, repeated or missing, is refused — never read in another order.
 """
 
 from __future__ import annotations

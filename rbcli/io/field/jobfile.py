@@ -1,8 +1,6 @@
-"""Read a field-balancing job file (YAML) into a checked :class:`FieldJob`, every problem
-located at ``file:line:col``. Its keys are declared in its JSON Schema
-(``rbcli/data/fieldjob.schema.json``, :func:`schema_text`); readings, trial masses, limits
-and drawers stay located texts that :mod:`rbcli.api.field` reads as it reads the parameters.
-With one speed, ``speeds`` may be left out and runs written as plain lists.
+"""Read a field-balancing job file (YAML) into a checked :class:`FieldJob`, every problem at
+``file:line:col``; its keys are declared in ``rbcli/data/fieldjob.schema.json``. Readings,
+masses, limits and drawers stay located texts, read by :mod:`rbcli.api.field` as parameters.
 """
 
 from __future__ import annotations

@@ -1,10 +1,8 @@
-"""The polar diagrams of ``rbcli field-balance --plot`` and of the job sheet: a dial per
-reading (O black, each run O+T and its change in the run's colour, the prediction grey) and
-per plane (its trial, the correction, the masses fitted; a drawer's holes numbered on the
-rim), each with its legend; 0° on the right, angles running as the rotor is seen. Colours
-differ by run, line styles by role (a grey print reads). A large job draws the
-:data:`MAX_DIALS` largest readings with the :data:`MAX_RUNS` runs that changed each most and
-the first :data:`MAX_PLANES` planes, and says so.
+"""The polar diagrams of ``field-balance --plot`` and the job sheet: a dial per reading (O
+black, each run O+T and its change in the run's colour, the prediction grey) and per plane
+(trial, correction, masses fitted; a drawer's holes numbered on the rim), each with a legend,
+angles running as the rotor is seen. At most :data:`MAX_DIALS` readings (the largest) with
+the :data:`MAX_RUNS` runs that moved each most, and :data:`MAX_PLANES` planes; said.
 """
 
 from __future__ import annotations

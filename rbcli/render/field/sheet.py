@@ -1,12 +1,6 @@
-"""The job sheet of ``rbcli field-balance --report sheet.html|sheet.md``: one document for the
-customer with the readings, the polar diagram, the influence coefficients, the
-corrections as computed and as fitted, the predicted readings and the severity verdicts.
-
-Built from the blocks of :mod:`rbcli.render.report` (:class:`~rbcli.render.report.Report`,
-sections, figures, :func:`~rbcli.render.report.html` and
-:func:`~rbcli.render.report.markdown`) and the tables of :mod:`rbcli.render.field.tables`;
-it never writes a file (the command line does, through :mod:`rbcli.io.outfile`).
-"""
+"""The job sheet of ``rbcli field-balance --report``: the tables of
+:mod:`rbcli.render.field.tables` and the polar diagrams in a :class:`rbcli.render.report.Report`
+(the command line writes it)."""
 
 from __future__ import annotations
 
@@ -26,7 +20,7 @@ def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list
     """The job sheet of an extended result ``res`` (``rbcli.field_balance(..., full=True)``):
     ``meta`` the (label, value) rows under the title, the job file (or the command line)
     shown at the end, the polar diagrams as SVG text (:mod:`rbcli.render.field.plot`) or None."""
-    scale, ru = fb.reading_display(res.reading_kind, su)
+    scale, ru = fb.reading_display(res.reading_kind, su, res.measure)
     rows = res.row_names()
 
     def section(key: str, title: str, *fill) -> Section:

@@ -1,18 +1,13 @@
-"""Tables of ``rbcli field-balance`` (the JSON is the result's own).
-
-Masses in g (or the ``--units`` mass), radii in mm (or the ``--units`` length); readings
-in µm, mm/s or m/s² — or, when ``--units`` names an inch-based length, in mil, in/s and g
-(standard gravity), the units of US practice. A classic one- or two-plane job keeps the
-tables it always had (:func:`classic_document`); an extended job (more readings, planes
-or speeds, rounding, conventions, severity...) gets :func:`extended_document`.
-"""
+"""Tables of ``rbcli field-balance``: masses in g, radii in mm, readings in µm, mm/s or m/s²
+(or the ``--units`` ones; with an inch length, mil, in/s and g). A classic one- or two-plane
+job keeps its tables (:func:`classic_document`); any other gets :func:`extended_document`."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
 from rbcli.core.field.solve import deg
-from rbcli.render.fmt import num
+from rbcli.render.fmt import num, polar
 from rbcli.render.text import Doc
 from rbcli.render.units import ShopUnits
 
@@ -31,12 +26,13 @@ READING_DISPLAY_US = {"displacement": (25.4e-6, "mil"), "velocity": (0.0254, "in
 _US_LENGTHS = ("in", "inch", "inches", "ft", "foot", "feet", "mil", "mils", "thou", "yd", "yard")
 
 
-def reading_display(kind: str | None, su: ShopUnits) -> tuple[float, str]:
-    """(SI per display unit, unit) of readings of ``kind`` in the tables (bare: (1, ""))."""
+def reading_display(kind: str | None, su: ShopUnits, measure: str | None = None) -> tuple[float, str]:
+    """(SI per display unit, unit and ``measure``: "µm pk-pk") of readings of ``kind`` in the
+    tables (bare: (1, ""))."""
     if kind is None:
         return 1.0, ""
-    table = READING_DISPLAY_US if su.length[1] in _US_LENGTHS else READING_DISPLAY
-    return table[kind]
+    f, u = (READING_DISPLAY_US if su.length[1] in _US_LENGTHS else READING_DISPLAY)[kind]
+    return f, f"{u} {measure}" if measure else u
 
 
 def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
@@ -64,7 +60,7 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
     )
     names = ["A", "B"][:n]
     kind = d["readings"]["kind"]
-    scale, ru = reading_display(res.reading_kind, su)
+    scale, ru = reading_display(res.reading_kind, su, res.measure)
     if ru:
         doc.note(f"readings: {kind}, shown in {ru} (JSON: SI, {d['readings']['unit']})")
     rows = []
@@ -105,7 +101,8 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
         )
     doc.note(
         "predicted residual reading after the corrections (linear model, 0 up to round-off): "
-        + ", ".join(num(v / scale, 3) for v in d["predicted_residual"]) + (f" {ru}" if ru else "")
+        + ", ".join(num(v / scale, 3, max(map(abs, res.initial)) / scale) for v in d["predicted_residual"])
+        + (f" {ru}" if ru else "")
     )
 
 
@@ -129,7 +126,7 @@ def _reported(z: complex, res: FieldBalanceResult) -> complex:
 def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
     """The tables of an extended job: readings, coefficients, corrections as computed and as
     fitted, the predicted readings, significance and severity."""
-    scale, ru = reading_display(res.reading_kind, su)
+    scale, ru = reading_display(res.reading_kind, su, res.measure)
     rows = res.row_names()
     n_sp = len(res.run_speeds)
     label = {"exact": "exact solve", "least-squares": "least squares", "min-max": "min-max"}[res.method or "exact"]
@@ -199,10 +196,11 @@ def _wide(doc: Doc, n: int, what: str) -> int:
 
 
 def readings_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
-    cols = [*_head(res), f"initial{' [' + ru + ']' if ru else ''}", "phase [°]"]
+    u = f" [{ru}]" if ru else ""
+    cols = [*_head(res), f"initial{u}", "phase [°]"]
     runs = res.runs[:_wide(doc, len(res.runs), "readings")]
     for j, _ in enumerate(runs):
-        cols += [f"trial {res.plane_names[j]} on", "phase [°]"]
+        cols += [f"trial {res.plane_names[j]} on{u}", "phase [°]"]
     table = []
     for k, (s, v) in enumerate(rows):
         z = _reported(res.initial[k], res)
@@ -314,7 +312,7 @@ def fitted_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) 
         how.append("split onto positions (position 1 on the 0° mark)")
     table = []
     for p in f.planes:
-        for fm in p.masses:
+        for fm in (fm for fm in p.masses if fm.mass > 0):  # no weight of nothing at a position
             table.append([p.name, "—" if fm.position is None else str(fm.position), num(fm.angle_deg, digits),
                           su.show(fm.mass, "mass", digits)])
     doc.table(f"masses to fit ({'; '.join(how)})", ["plane", "position", "angle [°]", f"mass [{m}]"], table,
@@ -355,14 +353,14 @@ def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
     limits = {(r.sensor, r.speed): r.limit for r in res.limits.readings} if res.limits else {}
     if limits:
         cols.append(f"limit{u}")
-    table = []
+    table, big = [], max(r.initial for r in res.residuals)  # round-off: of the largest initial reading
     for k, (s, v) in enumerate(rows):
         r = res.residuals[k]
         change = "—" if r.initial == 0 else num(100.0 * (r.amplitude - r.initial) / r.initial, 3)
-        cells = [*_row_label(s, v, res), num(r.initial / scale, digits), num(r.amplitude / scale, digits),
-                 num(r.angle_deg, digits), change]
+        cells = [*_row_label(s, v, res), num(r.initial / scale, digits),
+                 *polar(r.amplitude / scale, r.angle_deg, digits, big / scale), change]
         if fitted is not None:
-            cells += [num(fitted[k].amplitude / scale, digits), num(fitted[k].angle_deg, digits)]
+            cells += polar(fitted[k].amplitude / scale, fitted[k].angle_deg, digits, big / scale)
         if limits:
             cells.append("—" if (s, v) not in limits else num(limits[s, v] / scale, digits))
         table.append(cells)
@@ -374,8 +372,9 @@ def severity_table(doc: Doc, res: FieldBalanceResult, rows, digits: int, su: Sho
     sv = res.severity
     assert sv is not None
     f, u = reading_display("velocity", su) if su is not None else READING_DISPLAY["velocity"]
+    big = max(r.before for r in sv.readings) / f  # round-off: of the largest reading
     table = [[*_row_label(r.sensor, r.speed, res), num(r.before / f, digits), r.before_zone,
-              num(r.after / f, digits), r.after_zone] for r in sv.readings]
+              num(r.after / f, digits, big), r.after_zone] for r in sv.readings]
     after = "with the masses fitted" if sv.after_is == "fitted" else "after the correction"
     doc.table(f"{sv.standard}, group {sv.group}, {sv.foundation} support: zones of the 1× readings",
               [*_head(res), f"before [{u} rms]", "zone", f"{after} [{u} rms]", "zone"], table,
