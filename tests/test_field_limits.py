@@ -322,5 +322,5 @@ def test_the_job_sheet_shows_the_limits_and_the_drawer(cli, tmp_path):
     assert cli("field-balance", FAN_DRAWER, "--report", str(html)).code == 0
     text = html.read_text()
     for what in ("trial masses", "limits (met)", "weights from the drawer", "numbered against the angles",
-                 "objective without it", "12 holes at 240 mm", "limit [mm/s]"):
+                 "objective without it", "12 holes at 240 mm", "limit [mm/s rms]"):
         assert what in text, what
