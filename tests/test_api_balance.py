@@ -139,12 +139,13 @@ def test_field_typed_fields():
     assert u.reading_kind == "displacement" and u.reading_unit == "m"
     assert u.initial[0] == pytest.approx(0.006 * complex(math.cos(math.pi / 6), 0.5), rel=1e-15)
     assert u.corrections[0].mass == pytest.approx(c.mass, rel=1e-14)
-    # the diagram: readings O, O+T and the trial's effect (from O's tip), then the masses
-    d = u.diagram()
-    assert [p.quantity for p in d.panels] == ["reading", "mass"]
-    o, run, effect = d.panels[0].arrows
-    assert (o.magnitude, o.angle_deg) == pytest.approx((0.006, 30.0))
-    assert effect.tail == (o.magnitude, o.angle_deg)
+    # the polar diagrams: a dial of readings (O, O+T, the trial's effect, the prediction), then the masses
+    from rbcli.render.field.plot import plot
+    from rbcli.render.units import ShopUnits
+
+    fig = plot(u, ShopUnits(None), (1e-6, "µm"))
+    assert [ax.get_title() for ax in fig.axes] == ["reading 1 [µm]", "plane A: masses [g]"]
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()][0] == "O: 6000 µm at 30°"
 
 
 @pytest.mark.parametrize("kwargs, param", [

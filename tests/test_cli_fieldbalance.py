@@ -114,7 +114,7 @@ def test_a_trim_run_from_saved_coefficients_reproduces_the_job(cli, tmp_path, fi
     coeffs = tmp_path / "coeffs.json"
     a = run_json(cli, *first, "--save-coefficients", str(coeffs))
     doc = json.loads(coeffs.read_text())
-    assert doc["format"] == "rbcli field-balance influence coefficients" and doc["version"] == 1
+    assert doc["format"] == "rbcli field-balance influence coefficients" and doc["version"] == 2
     if trim == [FAN]:
         # the same job's initial readings, on the command line, in the file's row order
         import yaml
@@ -320,7 +320,7 @@ def test_job_sheet_html_and_markdown(cli, tmp_path):
                   "Severity (ISO 20816-3)"):
         assert f"<h2>{title}</h2>" in text
     assert text.count("<svg") == 1 and "2026-01-01" in text and "ID fan 3" in text
-    assert "masses to fit" in text and "zones of the 1× readings" in text
+    assert "masses to fit" in text and "zones of the 1× readings" in text and "trial masses" in text
     # the same job gives the same bytes (SOURCE_DATE_EPOCH)
     again = tmp_path / "again.html"
     cli("field-balance", FAN, "--report", str(again), env={"SOURCE_DATE_EPOCH": "1767225600"})
@@ -340,9 +340,16 @@ def test_polar_diagram_of_a_multi_sensor_job(cli, tmp_path):
     import xml.etree.ElementTree as ET
 
     assert ET.parse(path).getroot().tag.endswith("svg")
-    d = rbcli.field_balance(job=FAN).diagram()
-    assert [p.quantity for p in d.panels] == ["reading"] * 8 + ["mass"] * 2
-    assert d.angle_sense == "with"  # angles against a clockwise rotation run counterclockwise
+    from rbcli.render.field.plot import _sense, plot
+    from rbcli.render.units import ShopUnits
+
+    res = rbcli.field_balance(job=FAN)
+    fig = plot(res, ShopUnits(None), (1e-3, "mm/s"))
+    titles = [ax.get_title() for ax in fig.axes]
+    assert titles[:2] == ["reading NDE-H at low [mm/s]", "reading NDE-V at low [mm/s]"] and len(titles) == 10
+    assert titles[8:] == ["plane A: masses [g]", "plane B: masses [g]"]
+    assert all(ax.get_legend() is not None for ax in fig.axes)  # a legend per dial
+    assert _sense(res) == 1  # angles against a clockwise rotation run counterclockwise
 
 
 # ------------------------------------------------------------------ errors
@@ -418,7 +425,10 @@ def test_readme_field_balancing_commands_print_what_it_says(cli, tmp_path):
     want = [["9.79831"], ["9.07998", "36.5937", "6.05332", "116.594"], ["1.97947", "236.17", "1.07051", "121.844", "2.701"],
             [r"A +\| +— +\| +1 \|", r"B +\| +— +\| +1\.8 \|", r"\| +0\.4 \|"],
             ["29.4325", "21.1288", "18.9552", "246.941", r"A +\| +— +\| +21\.1288 \| +29\n", r"B +\| +6 +\| +225 +\| +10\n"],
-            ["29.4325", "18.9552"]]
+            ["29.4325", "18.9552"],
+            ["25", r"20\.4031", "20.4255", "265.146", r"0\.396521", r"A +\| +1 +\| +15 +\| +20\n",
+             r"A +\| +12 +\| +45 +\| +5\n", r"B +\| +7 +\| +270 +\| +20\n", r"B +\| +8 +\| +315 +\| +5\n"],
+            [r"A +\| +— +\| +0\.9 \|", r"B +\| +— +\| +1\.64 \|", r"0\.42 ", r"plane A +\| +0\.9 g .*yes +\| +0\.4\n"]]
     assert len(commands) == len(want)
     for line, says in zip(commands, want):
         args = shlex.split(line)[1:]

@@ -12,7 +12,7 @@ import pytest
 
 import rbcli
 from rbcli.errors import InputError
-from rbcli.io.field.jobfile import SCHEMA_PATH, job_schema, load_job, load_job_text, schema_text
+from rbcli.io.field.jobfile import PLANE_KEYS, TOP_KEYS, load_job, load_job_text, schema_text
 
 ROOT = Path(__file__).resolve().parent.parent
 FAN = ROOT / "examples" / "jobs" / "fan.yaml"
@@ -27,9 +27,15 @@ trials:
 """
 
 
-def test_installed_schema_file_is_current():
-    assert SCHEMA_PATH.read_text(encoding="utf-8") == schema_text()
-    assert json.loads(schema_text()) == job_schema()
+def job_schema() -> dict:
+    return json.loads(schema_text())
+
+
+def test_the_schema_declares_the_keys_the_loader_reads():
+    """The loader's keys are the schema's: a key the schema has is read, one it lacks refused."""
+    assert TOP_KEYS == tuple(job_schema()["properties"]) and "drawer" in TOP_KEYS and "holes" in PLANE_KEYS
+    with pytest.raises(InputError, match="unknown key 'drawers'.*did you mean 'drawer'"):
+        load_job_text(ONE + "drawers: ['1 g']\n")
 
 
 def test_the_example_job_is_valid_by_the_schema_and_the_loader(cli):

@@ -181,6 +181,15 @@ FIELD_BALANCE = (
           "degrees", valid=_angle_step),
     Param("positions", "N equally spaced positions (holes, blades), position 1 on the 0° mark: "
           "split each correction onto the two neighbouring ones.", "count", valid=_positions),
+    Param("drawer", "The weights there are, mass[:count] each, e.g. '2 g:8,5 g:4,10 g' (a bare mass is "
+          "grams): the best of them at the {positions} holes (at {radius}).", "texts", counts=(MAX_ITEMS,)),
+    Param("max_weights", "With {drawer}: the most weights a plane takes, 1 to 4. Default: 2.", "count",
+          valid=lambda n, _: None if 1 <= n <= 4 else f"must be from 1 to 4, not {n}"),
+    Param("max_mass", "The most mass a plane takes, for all or m1,m2,... per plane (e.g. '50 g'; a bare "
+          "number is kg), or mass x radius ('5000 g*mm').", "texts", counts=(MAX_ITEMS,)),
+    Param("limit", "The largest predicted reading, for all or SENSOR=amplitude, e.g. '1=2.8 mm/s'.",
+          "texts", counts=(MAX_ITEMS,)),
+    Param("robust", "huber: least squares that discounts a bad reading (named).", valid=partial(_one_of, "robust")),
     Param("phase", "The instrument's phase: lag (grows against the rotation; most analysers) or "
           "lead. Needs {angle_sense}.", valid=partial(_one_of, "phase")),
     Param("angle_sense", "How the trial and correction angles are counted from the mark: with or "

@@ -1,10 +1,9 @@
-"""The numbers of a polar balancing diagram (``balance --plot``, ``field-balance --plot``).
+"""The numbers of a polar balancing diagram (``balance --plot``; field balancing draws its
+own, :mod:`rbcli.render.field.plot`).
 
 A diagram is a few panels, each a clock face of the rotor with arrows on it: a vector's
-magnitude (SI) and its angle as the command prints it. The results build them
-(:meth:`rbcli.api.balance.BalanceResult.diagram`,
-:meth:`rbcli.api.field.service.FieldBalanceResult.diagram`); :mod:`rbcli.render.balanceplot`
-only draws them.
+magnitude (SI) and its angle as the command prints it. :meth:`rbcli.api.balance.BalanceResult.diagram`
+builds them; :mod:`rbcli.render.balanceplot` only draws them.
 """
 
 from __future__ import annotations

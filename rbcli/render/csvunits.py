@@ -101,6 +101,11 @@ UNITS: dict[str, dict[str, str]] = {
         "fraction": ONE, "force": N,
         "expected_change": "{reading}",
         "readings.g": MS2, "count": ONE,
+        "fitted.drawer.objective": "{reading}", "violation": ONE, "examined": ONE,
+        "fitted.drawer.planes[].radius": M, "per_hole": ONE, "max_weights": ONE, "max_mass": KG,
+        "fitted.drawer.planes[].drawer": ONE, "limits.objective": "{reading}", "max_unbalance": KGM,
+        "limits.planes[].unbalance": KGM, "limits.readings[].limit": "{reading}",
+        "objective_without": "{reading}", "robust.threshold": ONE, "robust.weights": ONE,
     },
     "precess": {
         "angular_momentum": L_UNIT, "angular_momentum_norm": L_UNIT,

@@ -11,6 +11,7 @@ from typing import Any
 
 from rbcli.core.inertia import body_mass_props
 from rbcli.render import balance, balanceplot, massprops, precess, rollcheck, top, whirl
+from rbcli.render.field.plot import plot as field_plot
 from rbcli.render.field.tables import field_document, reading_display
 from rbcli.render.plots import figure_bytes
 from rbcli.render.text import Doc, Heading, Note, Table
@@ -43,8 +44,8 @@ _BUILD = {
     "GyrocompassResult": lambda d, r: top.gyro_document(d, r, DU, D),
     "RollcheckResult": lambda d, r: rollcheck.document(d, r, DU, D) or rollcheck.plot(r, r.curves()),
     "WhirlResult": lambda d, r: whirl.document(d, r, DU, D) or whirl.campbell_figure(r),
-    "FieldBalanceResult": lambda d, r: field_document(d, r, SU, D) or balanceplot.plot(
-        r.diagram(), SU, reading_display(r.reading_kind, SU, r.measure)),
+    "FieldBalanceResult": lambda d, r: field_document(d, r, SU, D) or field_plot(
+        r, SU, reading_display(r.reading_kind, SU, r.measure)),
     "Body": _body,
 }
 

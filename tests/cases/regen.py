@@ -128,6 +128,14 @@ def cases() -> dict[str, list[list[str]]]:
         "1.5 mil@110", "--units", "in,oz")
     add("field-balance", "error-measure-mix", "--initial", "6 mm/s rms@30", "--trial", "10 g@0",
         "--run", "4 mm/s@110")
+    # the shop's limits, a drawer and a bad reading (issue 36)
+    add("field-balance", "job-fan-drawer", "examples/jobs/fan-drawer.yaml")
+    add("field-balance", "job-fan-drawer-json", "examples/jobs/fan-drawer.yaml", "--json")
+    add("field-balance", "goodman-limits", *goodman, "--method", "min-max", "--max-mass", "0.9 g,2 g",
+        "--limit", "1=0.5")
+    add("field-balance", "robust", "--initial", "1@0,1@180,0@0,2@90,9@45", "--trial", "1 g@0", "--run",
+        "4@0,4@0,5@0,1@0,9@45", "--trial", "1 g@0", "--run", "1@180,3@180,3@180,2@0,9@40", "--robust", "huber")
+    add("field-balance", "error-drawer-no-holes", *goodman, "--drawer", "1 g:4")
     add("precess", "book", "examples/book.yaml", "--omega", "0.01,1,0.01")
     add("precess", "book-at-json", "examples/book.yaml", "--omega", "0.01,1,0.01", "--at", "1e9", "--json")
     add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5")

@@ -1,10 +1,6 @@
-"""A trim run: a job solved with stored influence coefficients (``coefficients``, a file
-written by ``--save-coefficients``, read by :mod:`rbcli.io.field.coefficients`).
-
-The file's coefficients are checked against the job (as many readings, of the same kind, at
-the same speeds; a job file's sensors) and brought into its measure and angle sense; the
-job takes the file's planes, their trial radii and, when it says none, its conventions.
-"""
+"""A trim run: a job solved with stored influence coefficients (``coefficients``), checked
+against the job (readings, kind, speeds, sensors, planes) and brought into its measure and
+angle sense; the job takes the file's planes, trial radii and, when it says none, conventions."""
 
 from __future__ import annotations
 
@@ -12,6 +8,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from rbcli.api import options as op
+from rbcli.api.field.readings import budget
 from rbcli.api.params import Options
 from rbcli.core.field.severity import convert_measure
 from rbcli.errors import ParamError, literal
@@ -38,6 +35,7 @@ def apply(job: Job) -> Job:
     with op.naming("coefficients"):
         c = load_coefficients(path)
     here = f"'{literal(path)}'"
+    budget(len(c.rows), len(c.planes), None)
     if len(c.rows) != len(job.initial):
         raise ParamError("coefficients", f"{here} holds {len(c.rows)} readings per run ({len(c.sensors)} "
                                          f"sensors x {len(c.speeds)} speeds); the initial readings are "
@@ -74,9 +72,13 @@ def _speeds(job: Job, c: SavedCoefficients, here: str) -> tuple[tuple[str, float
         if c.sensors != job.sensors:
             raise ParamError("coefficients", f"{here} is for sensors {literal(', '.join(c.sensors))}, "
                                              f"not {literal(', '.join(job.sensors))}")
-        if len(c.speeds) != len(mine):
-            raise ParamError("coefficients", f"{here} is for {len(c.speeds)} speeds, the job has "
-                                             f"{len(mine)}")
+        if len(c.speeds) != len(mine) or any(jn and jn != cn for (cn, _), (jn, _) in zip(c.speeds, mine)):
+            raise ParamError("coefficients", f"{here} is for speeds {literal(', '.join(n for n, _ in c.speeds))}, "
+                                             f"the job has {literal(', '.join(n for n, _ in mine))}")
+        named = tuple(pl.name for pl in job.source.planes) if job.source is not None else ()
+        if named and named != tuple(n for n, _ in c.planes):
+            raise ParamError("coefficients", f"{here} is for planes {literal(', '.join(n for n, _ in c.planes))}, "
+                                             f"the job has {literal(', '.join(named))}")
     else:  # the command line: the readings in the file's order, its sensors and speeds
         if len(c.speeds) > 1 and mine[0][1] is not None:
             raise ParamError("speed", f"{here} holds {len(c.speeds)} speeds; the readings are at those "

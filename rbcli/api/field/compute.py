@@ -1,14 +1,6 @@
-"""The result of a field-balancing job (:func:`result`: the work of
-:func:`rbcli.api.field.service.run`).
-
-A one- or two-plane job given the classic way is solved by :mod:`rbcli.core.field.classic`
-and reported as it always was. Every other job is extended: square one- and two-plane jobs
-are still solved by the classic solves (the same bits), the rest by
-:mod:`rbcli.core.field.solve`; then come the corrections at their radii, the masses as
-fitted (:func:`rbcli.core.field.fit.fit_plane`) and the readings they leave, Darlow's
-significance (:mod:`rbcli.core.field.significance`), the ISO 20816-3 zones
-(:mod:`rbcli.core.field.severity`) and a trial mass to start with (:mod:`rbcli.api.field.trial`).
-"""
+"""The result of a field-balancing job (:func:`result`): a classic job as it always was, any
+other solved (square one- and two-plane jobs with the classic bits), fitted (rounded, split
+or from a drawer), judged (limits, significance, ISO 20816-3) and a trial mass sized."""
 
 from __future__ import annotations
 
@@ -18,17 +10,19 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbcli.api.field import trial
+from rbcli.api.field import shop, trial
 from rbcli.api.field.result import (
-    SI_UNITS, Conventions, FieldBalanceResult, FieldCorrection, FieldResidual, Fitted, FittedPlane,
-    Severity, SeverityRow, convention_text, row_names,
+    SI_UNITS, Conventions, DrawerFit, DrawerPlane, FieldBalanceResult, FieldCorrection, FieldResidual,
+    Fitted, FittedPlane, Limits, PlaneLimit, ReadingLimit, Robust, Severity, SeverityRow, convention_text, row_names,
 )
 from rbcli.core.balance.common import FIELD_COND_WARN
-from rbcli.core.field.classic import field_single_plane, field_two_plane, small_response
-from rbcli.core.field.fit import fit_plane
+from rbcli.core.field.drawer import best_weights
+from rbcli.core.field.fit import FittedMass, fit_plane
 from rbcli.core.field.severity import to_velocity, zone, zone_boundaries
 from rbcli.core.field.significance import SIGNIFICANCE_LIMIT, plane_significance
-from rbcli.core.field.solve import FieldSolution, deg, influence_matrix, matvec, solve
+from rbcli.core.field.solve import (
+    HUBER_C, FieldSolution, classic, deg, influence_matrix, matvec, small_response, solve,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.job import Job
@@ -36,6 +30,9 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["result", "significance_warning"]
 
 Rows = list[tuple[str, str]]
+
+#: the largest job (readings x planes) whose active limits are each solved without too (their cost)
+COST_SIZE = 4000
 
 
 def result(job: Job) -> FieldBalanceResult:
@@ -66,28 +63,36 @@ def _classic(job: Job) -> FieldBalanceResult:
     """The one- or two-plane job as rbcli always solved and reported it."""
     s = 1.0 if job.radii is None else job.radii[0] / job.radii[1]
     rc = None if job.radii is None else job.radii[1]
-    common = dict(initial=job.initial, runs=job.runs, trial_masses=job.trials, radii=job.radii,
-                  reading_kind=job.reading_kind)
-    if job.planes == 1:
-        f = field_single_plane(job.initial[0], job.runs[0][0], job.trials[0])
-        return FieldBalanceResult(
-            planes=1, corrections=(FieldCorrection("A", f.correction * s, f.correction_trial_on * s, rc),),
-            alpha=((f.influence,),), cond=None, det=None, ill_conditioned=False,
-            small_response=(bool(f.small_response),), residual_values=(f.predicted_residual,),
-            cumulative=False, warnings=f.warnings, **common)
-    f2 = field_two_plane(job.initial, job.runs[0], job.runs[1], job.trials[0], job.trials[1],
-                         cumulative=bool(job.options.cumulative))
-    sig = plane_significance(f2.influence)  # Darlow's test: a warning when it flags a plane
+    p, cumulative = job.planes, bool(job.options.cumulative)
+    alpha, W, resid, det, cond = classic(job.initial, job.runs, job.trials, cumulative)
+    small = _small(job, cumulative)
+    warnings = [f"trial {job.plane_names[j]} changed no reading by 25 % in amplitude or 25 deg in phase: "
+                "use a larger trial mass" for j in range(p) if small[j]]
+    if p == 1:
+        warnings = ["the trial changed the reading by less than 25 % in amplitude and 25 deg in phase: use "
+                    "a larger trial mass"] * small[0]
+    sig = plane_significance(alpha) if p == 2 else None
+    if p == 2 and cond > FIELD_COND_WARN:
+        warnings.insert(0, f"the influence matrix is ill-conditioned (cond = {cond:.3g} > {FIELD_COND_WARN:g}): "
+                           "the planes are not well separated")
     return FieldBalanceResult(
-        planes=2, corrections=tuple(FieldCorrection(name, complex(w) * s, complex(w_on) * s, rc) for
-                                    name, w, w_on in zip("AB", f2.corrections, f2.corrections_trials_on)),
-        alpha=tuple(tuple(complex(a) for a in row) for row in f2.influence), cond=float(f2.cond),
-        det=complex(f2.det), ill_conditioned=bool(f2.ill_conditioned),
-        small_response=tuple(bool(x) for x in f2.small_response),
-        residual_values=tuple(complex(v) for v in f2.predicted_residual), cumulative=bool(f2.cumulative),
-        warnings=tuple(f2.warnings) + tuple(significance_warning("AB"[j], float(sig.factors[j]))
-                                            for j in sig.flagged),
-        significance_factors=tuple(float(x) for x in sig.factors), **common)
+        planes=p, corrections=tuple(FieldCorrection(name, complex(w) * s, (complex(w) - t) * s, rc)
+                                    for name, w, t in zip("AB", W, job.trials)),
+        alpha=tuple(tuple(complex(a) for a in row) for row in alpha), cond=cond, det=det,
+        ill_conditioned=p == 2 and cond > FIELD_COND_WARN, small_response=small,
+        residual_values=tuple(complex(v) for v in resid), cumulative=cumulative,
+        warnings=tuple(warnings) + (() if sig is None else tuple(
+            significance_warning("AB"[j], float(sig.factors[j])) for j in sig.flagged)),
+        significance_factors=() if sig is None else tuple(float(x) for x in sig.factors),
+        initial=job.initial, runs=job.runs, trial_masses=job.trials, radii=job.radii,
+        reading_kind=job.reading_kind)
+
+
+def _small(job: Job, cumulative: bool) -> tuple[bool, ...]:
+    """Per trial run, whether it changed every reading too little."""
+    return tuple(all(small_response(complex((job.runs[j - 1] if cumulative and j else job.initial)[k]),
+                                    complex(job.runs[j][k])) for k in range(len(job.initial)))
+                 for j in range(job.planes))
 
 
 # ----------------------------------------------------------------------------- extended
@@ -116,7 +121,7 @@ def _extended(job: Job) -> FieldBalanceResult:
                         for j in range(job.planes))
     rows = row_names(job.sensors, job.speeds, len(job.initial))
     sig = plane_significance(alpha)
-    fitted = _fitted(job, corrections, scales, alpha, V0, rows)
+    fitted = _drawer(job, alpha, V0, rows, sol) if job.drawer else _fitted(job, corrections, scales, alpha, V0, rows)
     after = [r.amplitude for r in fitted.residuals] if fitted else [abs(complex(r)) for r in resid]
     return FieldBalanceResult(
         planes=job.planes, initial=job.initial, runs=job.runs, corrections=corrections,
@@ -128,8 +133,11 @@ def _extended(job: Job) -> FieldBalanceResult:
         significance_factors=tuple(float(x) for x in sig.factors), significance_limit=SIGNIFICANCE_LIMIT,
         fitted=fitted, severity=None if job.severity is None else _severity(
             job, V0, after, rows, "fitted" if fitted else "computed"),
-        suggested_trial=trial.suggestions(job, alpha, V0),
-        warnings=_warnings(job, sol, sig, small, V0, rows), **_described(job))
+        suggested_trial=trial.suggestions(job, alpha, V0), limits=_limits(job, sol, rows, scales),
+        robust=None if sol.robust is None else Robust("huber", HUBER_C, tuple(float(x) for x in sol.robust), tuple(
+            name for name, h in zip(_names(rows), sol.robust) if h < 1.0)),
+        warnings=_warnings(job, sol, sig, small, V0, rows) + _shop_warnings(job, sol, fitted, rows),
+        **_described(job))
 
 
 def _solve(job: Job, V0: np.ndarray) -> tuple[np.ndarray, FieldSolution, tuple[bool, ...]]:
@@ -137,26 +145,80 @@ def _solve(job: Job, V0: np.ndarray) -> tuple[np.ndarray, FieldSolution, tuple[b
     readings too little."""
     n, p = V0.size, job.planes
     runs, cumulative = job.runs, bool(job.options.cumulative)
-    if job.alpha is None and n == p and p in (1, 2):
+    o = job.options
+    if job.alpha is None and n == p and p in (1, 2) and not (job.max_mass != (None,) * p or job.limits or o.robust):
         # the classic solves: the same arithmetic, the same bits as the classic output
-        if p == 1:
-            f1 = field_single_plane(job.initial[0], runs[0][0], job.trials[0])
-            alpha, W, small = np.array([[f1.influence]]), np.array([f1.correction]), (bool(f1.small_response),)
-        else:
-            f2 = field_two_plane(job.initial, runs[0], runs[1], job.trials[0], job.trials[1],
-                                 cumulative=cumulative)
-            alpha, W = np.array(f2.influence), np.array(f2.corrections)
-            small = tuple(bool(x) for x in f2.small_response)
+        alpha, W = classic(job.initial, runs, job.trials, cumulative)[:2]
         sol = solve(alpha, V0)  # for cond and det; W is the classic one
-        return alpha, FieldSolution(W, V0 + alpha @ W, "exact", sol.cond, sol.det, 0.0), small
+        return alpha, FieldSolution(W, V0 + alpha @ W, "exact", sol.cond, sol.det, 0.0), _small(job, cumulative)
     if job.alpha is not None:
         alpha, small = np.array(job.alpha, dtype=complex), ()
     else:
         alpha = influence_matrix(V0, np.array(runs, dtype=complex), np.array(job.trials, dtype=complex),
                                  cumulative=cumulative)
-        small = tuple(all(small_response(complex((runs[j - 1] if cumulative and j else job.initial)[k]),
-                                         complex(runs[j][k])) for k in range(n)) for j in range(p))
-    return alpha, solve(alpha, V0, job.options.method, job.weights), small
+        small = _small(job, cumulative)
+    return alpha, solve(alpha, V0, o.method, job.weights, max_mass=_max_mass(job), limits=job.limits,
+                        robust=o.robust is not None, costs=len(job.initial) * p <= COST_SIZE), small
+
+
+def _max_mass(job: Job) -> list[float] | None:
+    """Each plane's largest |W| (kg at the trial radius; inf: none)."""
+    return [math.inf if m is None else m[0] * (rr[1] / rr[0] if rr else 1.0) if m[1] == "mass" else m[0] / rr[0]
+            for m, rr in zip(job.max_mass, job.plane_radii)] if any(job.max_mass) else None
+
+
+def _limits(job: Job, sol: FieldSolution, rows: Rows, scales: list[float]) -> Limits | None:
+    """The limits given, what the correction gives against each, and what each costs."""
+    if job.limits is None and not any(job.max_mass):
+        return None
+    cost = dict(zip(sol.active, sol.without))
+    planes = tuple(PlaneLimit(job.plane_names[j], m[0] if m[1] == "mass" else None, m[0] if m[1] == "unbalance"
+                              else None, abs(complex(sol.corrections[j])) * scales[j],
+                              job.plane_radii[j] and abs(complex(sol.corrections[j])) * job.plane_radii[j][0],
+                              ("mass", j) in sol.active, cost.get(("mass", j)))
+                   for j, m in enumerate(job.max_mass) if m is not None)
+    readings = tuple(ReadingLimit(*rows[k], lim, abs(complex(sol.residuals[k])), ("reading", k) in sol.active,
+                                  cost.get(("reading", k))) for k, lim in enumerate(job.limits or ()) if math.isfinite(lim))
+    return Limits(bool(sol.feasible), float(sol.violation), float(sol.objective), planes, readings)
+
+
+def _drawer(job: Job, alpha: np.ndarray, V0: np.ndarray, rows: Rows, sol: FieldSolution) -> Fitted:
+    """The best weights of the drawer at the holes, and the readings they leave."""
+    d = job.drawer
+    w = np.ones(V0.size) if job.weights is None else np.array(job.weights)
+    method = "min-max" if sol.method == "min-max" else "least-squares"
+    ch = best_weights(alpha, V0, w if sol.robust is None else w * sol.robust, method, list(d.planes),
+                      [shop.counts(x) for x in d.drawers], None if job.limits is None else np.array(job.limits),
+                      start=np.asarray(sol.corrections) if method == "min-max" else None)
+    planes = []
+    for j, ws in enumerate(ch.weights):
+        pl = d.planes[j]
+        masses = tuple(FittedMass(d.drawers[pl.drawer][s][0], d.holes[j].angles[h], h + 1) for h, s in ws)
+        net = sum((m.mass * cmath.rect(1.0, math.radians(m.angle_deg)) for m in masses), 0j)
+        planes.append(FittedPlane(job.plane_names[j], len(d.holes[j].angles), abs(net), deg(net), masses))
+    r = V0 + matvec(alpha, ch.corrections)
+    info = DrawerFit(ch.objective, ch.violation, ch.examined,
+                     tuple(tuple({"mass": m, "count": c} for m, c in x) for x in d.drawers),
+                     tuple(DrawerPlane(job.plane_names[j], h.angles, h.radius, h.numbering, pl.per_hole,
+                                       pl.most, pl.max_mass if math.isfinite(pl.max_mass) else None, pl.drawer)
+                           for j, (pl, h) in enumerate(zip(d.planes, d.holes))))
+    return Fitted(None, None, tuple(planes), tuple(_residual(rows[k], r[k], V0[k], job.flipped)
+                                                   for k in range(len(rows))), info)
+
+
+def _shop_warnings(job: Job, sol: FieldSolution, fitted: Fitted | None, rows: Rows) -> tuple[str, ...]:
+    """Limits that cannot be met, readings a robust fit discounted."""
+    d = fitted.drawer if fitted is not None else None
+    return tuple(([f"the limits cannot all be met: the correction exceeds them least (each reading within "
+                   f"{sol.violation:.4g} times its limit)"] if not sol.feasible else [])
+                 + ([f"no choice of the drawer's weights meets the limits: the one chosen exceeds them least "
+                     f"({d.violation:.4g} times a limit)"] if d and d.violation > 1.0 else [])
+                 + [f"reading {name} discounted by the robust fit (weight {h:.3g}): check it"
+                    for name, h in zip(_names(rows), () if sol.robust is None else sol.robust) if h < 1.0])
+
+
+def _names(rows: Rows) -> list[str]:
+    return [f"{s}{' at ' + v if v else ''}" for s, v in rows]
 
 
 def _correction(job: Job, j: int, w: complex, scale: float) -> FieldCorrection:

@@ -1,31 +1,25 @@
-"""A field-balancing job, read once: what :func:`rbcli.api.field.service.parse` returns.
-
-A job comes either from the parameters (the command line's shorthand for a one-speed job:
-``initial``, ``trial``, ``run``; sensors numbered 1..N, planes lettered A, B, ...) or from
-a job file (:func:`rbcli.io.field.jobfile.load_job`), never both. A job file's settings are
-the parameters of :data:`rbcli.api.commands.FIELD_BALANCE` (method, weights, rounding,
-conventions, measure, severity, coefficients, speed): a setting comes from the file or from
-the parameters, and one given in both is refused. Every reading is read by
-:mod:`rbcli.api.field.readings`; then all of them are of one kind, in one measure, with
-their phases in the sense of the trial angles; stored coefficients are checked against the
-job and converted the same way (:mod:`rbcli.api.field.coefficients`); a trial mass to start
-with is sized from the rotor (:mod:`rbcli.api.field.trial`).
-"""
+"""A field-balancing job, read once (:func:`make`): from the parameters (a one-speed job:
+sensors 1..N, planes A, B, ...) or a job file, whose settings are the parameters' (one given
+in both is refused); the readings in one kind and measure, phases in the angles' sense; a
+trim run's coefficients (:mod:`.coefficients`), the shop's limits and drawer (:mod:`.shop`),
+a trial mass sized (:mod:`.trial`)."""
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, replace
 from typing import Any
 
 from rbcli.api import options as op
-from rbcli.api.field import coefficients, trial
+from rbcli.api.field import coefficients, shop, trial
 from rbcli.api.field.readings import (
-    Reading, at, common_measure, one_kind, reading, readings, trial_mass,
+    Reading, at, budget, common_measure, one_kind, read_at, reading, readings, trial_mass,
 )
+from rbcli.api.load import load
 from rbcli.api.params import Options
 from rbcli.errors import InputError, Location, ParamError, literal
 from rbcli.io.field import plane_names
-from rbcli.io.field.jobfile import JobRotor, Text, load_job
+from rbcli.io.field.jobfile import FieldJob, JobRotor, load_job
 
 __all__ = ["Job", "make"]
 
@@ -41,49 +35,20 @@ SETTINGS = {"cumulative": "cumulative", "weights": "sensors", "positions": "plan
             "speed": "speeds", "phase": "conventions", "angle_sense": "conventions",
             "rotation": "conventions", "severity": "severity", "coefficients": "coefficients",
             "method": "method", "mass_step": "mass_step", "angle_step": "angle_step",
-            "measure": "readings"}
+            "measure": "readings", "max_mass": "planes", "limit": "sensors", "drawer": "drawer",
+            "max_weights": "max_weights", "robust": "robust"}
 #: settings a job file gives per sensor, plane or speed: the job keeps them (a parameter
 #: applies to all)
-PER_ITEM = ("weights", "positions", "speed")
+PER_ITEM = ("weights", "positions", "speed", "max_mass", "limit", "drawer")
 
 
 @dataclass(frozen=True)
 class Job:
-    """A field-balancing job, read and checked.
-
-    Attributes
-    ----------
-    options : Options — the parameters (:data:`rbcli.api.commands.FIELD_BALANCE`), a job
-        file's settings among them; ``phase``, ``angle_sense`` and ``rotation`` those the
-        solve uses (a coefficients file's when the job says none)
-    name : str | None — the job file's name
-    sensors, speeds : the readings' sensors (names) and speeds ((name, rad/s or None)); a
-        reading k is sensor ``k % len(sensors)`` at speed ``k // len(sensors)``
-    plane_names : tuple of str
-    plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius), m
-    positions : tuple of (int | None) — per plane, the positions a correction is split onto
-    plane_at : tuple of (float | None) — per plane, its place along the shaft (m)
-    rotor : JobRotor | None — the job file's rotor (what sizes a trial mass)
-    radii : (float, float) | None — m, the command line's (trial radius, correction radius)
-    initial : tuple of complex — the readings without trial, N of them (reading unit, in
-        :attr:`measure`, phases in the sense of the trial angles)
-    runs : tuple of tuple of complex — the readings of each trial run
-    trials : tuple of complex — trial mass (kg) e^{i angle}, one per plane
-    reading_kind : str | None — "displacement", "velocity" or "acceleration" (readings in m,
-        m/s or m/s²), None for bare readings (a relative scale)
-    measure : str | None — the measure every amplitude is in (None: unsaid)
-    measures_converted : tuple of (str, str, int) — (from, to, how many readings)
-    gravity : bool — a reading's ``g`` was read as standard gravity
-    weights : tuple of float | None — one per reading
-    alpha : tuple of tuple of complex | None — stored influence coefficients (a trim run),
-        per kg, in this job's measure and angle sense
-    flipped : bool — the phases were mirrored into the angles' sense
-    suggest : TrialRequest | None — what sizes a trial mass (``suggest_trial``)
-    notes : tuple of str — what was converted on the way
-    classic : bool — given with the classic parameters only (:data:`CLASSIC`)
-    extended : bool — anything beyond the classic one- or two-plane job (the output then
-        has ``method``, ``residuals``...)
-    """
+    """A job, read and checked: the parameters (with a job file's settings), readings' sensors
+    and speeds (reading k: sensor ``k % len(sensors)`` at speed ``k // len(sensors)``), per
+    plane name, (trial, correction) radius, positions, place; trials (kg e^{i angle}); readings
+    (SI of ``reading_kind`` or bare, in ``measure``, phases in the angles' sense); a trim run's
+    ``alpha``; the job file as read (``source``); the shop's ``max_mass``, ``limits``, ``drawer``."""
 
     options: Options
     sensors: tuple[str, ...]
@@ -109,6 +74,10 @@ class Job:
     notes: tuple[str, ...] = ()
     classic: bool = False
     extended: bool = True
+    source: FieldJob | None = None
+    max_mass: tuple[tuple[float, str] | None, ...] = ()
+    limits: tuple[float, ...] | None = None
+    drawer: shop.Drawer | None = None
 
     @property
     def planes(self) -> int:
@@ -138,15 +107,39 @@ def make(o: Options) -> Job:
         with the message the command line prints (``--trial: ...``), located in the job
         file for a job file's value.
     """
-    if (o.group is not None or o.foundation is not None) and o.severity is None:
-        raise ParamError("severity", "{group} and {foundation} go with {severity} iso20816-3")
-    if o.severity is not None and (o.group is None or o.foundation is None):
-        raise ParamError("severity", "needs the machine {group} (1 or 2) and its {foundation} "
-                                     "(rigid or flexible)")
-    job = from_file(o) if o.job is not None else from_options(o)
-    if job.options.coefficients is not None:
-        job = coefficients.apply(job)
-    return _finish(job)
+    for param in ("initial", "trial", "run", "trial_radius", "radius") if o.job is not None else ():
+        if getattr(o, param) is not None:
+            raise ParamError(param, "the job file holds the readings; give the {job} file or the readings on the "
+                                    "command line, not both" if param in ("initial", "trial", "run") else
+                                    "give the radii in the job file's planes (radius, correction_radius)")
+    jf = load_job(str(o.job)) if o.job is not None else None
+    try:
+        o2 = o if jf is None else _settings(o, jf)
+        if (o2.group is not None or o2.foundation is not None) and o2.severity is None:
+            raise ParamError("severity", "{group} and {foundation} go with {severity} iso20816-3")
+        if o2.severity is not None and (o2.group is None or o2.foundation is None):
+            raise ParamError("severity", "needs the machine {group} (1 or 2) and its {foundation} "
+                                         "(rigid or flexible)")
+        job = from_file(o, jf) if jf is not None else from_options(o)
+        if job.options.coefficients is not None:
+            job = coefficients.apply(job)
+        return shop.read(_finish(job))
+    except ParamError as exc:
+        raise located(exc, o.given, jf) from None
+
+
+#: where in a job file a parameter's value comes from (the key a message about it points at)
+WHERE = {**SETTINGS, "initial": "initial", "run": "trials", "trial": "trials", "group": "severity",
+         "foundation": "severity", "rotor_mass": "rotor", "bearing_load": "rotor", "trial_fraction": "rotor",
+         "trial_radius": "planes", "radius": "planes"}
+
+
+def located(exc: ParamError, given: tuple[str, ...], jf: FieldJob | None) -> InputError:
+    """An error about a parameter a job file gave, located at its key there (in the job
+    file's words); one about a parameter the caller gave, as it is."""
+    if jf is None or exc.param in given:
+        return exc
+    return at(jf.keys.get(WHERE.get(exc.param, ""), Location(jf.source)), exc)
 
 
 # ----------------------------------------------------------------------------- two sources
@@ -156,6 +149,7 @@ def from_options(o: Options) -> Job:
     """The job the parameters describe (one speed)."""
     trials_t, runs_t = _texts(o.trial), _texts(o.run)
     _check_options(o, trials_t, runs_t)
+    budget(0 if o.initial is None else ",".join(_texts(o.initial)).count(",") + 1, len(trials_t), None)
     initial = [] if o.initial is None else readings(",".join(_texts(o.initial)), "initial", None)
     n, p = len(initial), len(trials_t)
     _check_counts(o, n, p, len(runs_t))
@@ -228,23 +222,19 @@ def _weights(weights: Any, n: int) -> tuple[float, ...] | None:
     return tuple(vals)
 
 
-def from_file(o: Options) -> Job:
-    """The job a job file describes, with the parameters' settings that it leaves open."""
-    for param in ("initial", "trial", "run"):
-        if getattr(o, param) is not None:
-            raise ParamError(param, "the job file holds the readings; give the {job} file or the "
-                                    "readings on the command line, not both")
-    for param in ("trial_radius", "radius"):
-        if getattr(o, param) is not None:
-            raise ParamError(param, "give the radii in the job file's planes (radius, correction_radius)")
-    job = load_job(str(o.job))
+def from_file(o: Options, job: FieldJob) -> Job:
+    """The job the job file ``job`` describes, with the parameters' settings it leaves open."""
     o = _settings(o, job)
+    if job.rotor is not None and job.rotor.body is not None:
+        _rotor_body(job.rotor, job.source)
     if o.coefficients is not None and job.trials:
         raise ParamError("coefficients", "a trim run takes the initial readings alone; the job file has "
                                          "trial runs")
-    initial = [_reading(t, "initial") for per_speed in job.initial or () for t in per_speed]
-    runs = [[_reading(t, "run") for per_speed in tr.readings for t in per_speed] for tr in job.trials]
-    trials = tuple(_trial(tr.mass, job.units.get("mass", "g")) for tr in job.trials)
+    budget(sum(len(x) for x in job.initial or ()), len(job.trials) or len(job.planes), Location(job.source))
+    initial = [read_at(t, lambda x: reading(x, "initial", t.where)) for s in job.initial or () for t in s]
+    runs = [[read_at(t, lambda x: reading(x, "run", t.where)) for s in tr.readings for t in s] for tr in job.trials]
+    trials = tuple(read_at(tr.mass, lambda x: trial_mass(x, "trial", job.units.get("mass", "g")))
+                   for tr in job.trials)
     p = len(job.planes) if job.planes else len(job.trials)
     n = len(initial)
     if o.coefficients is None and n < p:
@@ -257,7 +247,7 @@ def from_file(o: Options) -> Job:
     return _measured(Job(
         o, job.sensors, speeds if o.speed is None else ((speeds[0][0], o.speed),), names, radii,
         positions if o.positions is None else (o.positions,) * p, at, trials, name=job.name,
-        rotor=job.rotor, weights=weights), initial, runs)
+        rotor=job.rotor, weights=weights, source=job), initial, runs)
 
 
 def _planes(job: Any, p: int) -> tuple[tuple, tuple, tuple, tuple]:
@@ -277,7 +267,9 @@ def _settings(o: Options, job: Any) -> Options:
     refused (located at the job file's key)."""
     theirs = {name: getattr(job, name, None) for name in SETTINGS}
     theirs.update(positions=next((pl.positions for pl in job.planes if pl.positions is not None), None),
-                  speed=next((s.speed for s in job.speeds if s.speed is not None), None))
+                  speed=next((s.speed for s in job.speeds if s.speed is not None), None),
+                  max_mass=next((pl.max_mass for pl in job.planes if pl.max_mass is not None), None),
+                  limit=next((x for x in job.limits + tuple(s.limit for s in job.speeds) if x), None))
     for name, key in SETTINGS.items():
         mine = getattr(o, name)
         if theirs[name] is not None and mine is not None and mine is not False:
@@ -290,18 +282,16 @@ def _settings(o: Options, job: Any) -> Options:
     return o.replace(**{k: v for k, v in theirs.items() if v is not None and k not in PER_ITEM})
 
 
-def _reading(t: Text, param: str) -> Reading:
+def _rotor_body(rotor: JobRotor, source: str) -> None:
+    """The job's rotor body file, loaded when the job is read (not only to size a trial)."""
+    if os.path.realpath(rotor.body) == os.path.realpath(source):
+        raise InputError("rotor: body is the job file itself; give the rotor's body file", rotor.where)
     try:
-        return reading(t.text, param, t.where)
+        load(rotor.body)
     except InputError as exc:
-        raise at(t.where, exc) from None
-
-
-def _trial(t: Text, bare: str) -> complex:
-    try:
-        return trial_mass(t.text, "trial", bare=bare)
-    except InputError as exc:
-        raise at(t.where, exc) from None
+        if exc.where is not None and exc.where.line > 0:
+            raise  # located in the body file
+        raise InputError(f"rotor: body: {literal(exc.message)}", rotor.where) from None
 
 
 # ----------------------------------------------------------------------------- one job

@@ -1,15 +1,7 @@
-"""How field-balancing readings and trial masses are read: ``"6 mm/s rms@30"``, ``"10 g@0"``.
-
-A reading is ``amplitude [unit] [measure]@phase``: the amplitude a number, bare (one
-relative scale for every reading) or with a unit of vibration converted exactly to SI —
-displacement (µm, um, mm, mil = 25.4 µm, m), velocity (mm/s, in/s, m/s) or acceleration
-(``g`` = standard gravity 9.80665 m/s², m/s²) — optionally followed by its measure
-``pk``, ``pk-pk`` or ``rms`` (also ``peak``, ``0-pk``, ``p-p``, ``pp``); the phase in
-degrees (or with an angle unit). A trial mass is ``mass@angle``; a bare mass is grams,
-as balancing sheets write it, and there ``g`` is the gram — in a reading it is gravity.
-
-Messages name the parameter as ``{param}`` (:mod:`rbcli.errors`); the text a user typed
-goes in through :func:`rbcli.errors.literal`.
+"""Readings ``amplitude [unit] [measure]@phase`` — bare (one relative scale) or converted
+exactly to SI: displacement (µm, mm, mil, m), velocity (mm/s, in/s, m/s), acceleration (g =
+standard gravity, m/s²); measure pk, pk-pk, rms (or peak, 0-pk, p-p, pp) — and trial masses
+``mass@angle`` (bare: grams; there g is the gram). Messages name parameters as ``{param}``.
 """
 
 from __future__ import annotations
@@ -19,14 +11,16 @@ import math
 import re
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 from rbcli.api import options as op
 from rbcli.core.field.severity import convert_measure
 from rbcli.errors import InputError, Location, ParamError, literal, spell
 from rbcli.io import units as un
+from rbcli.io.reader import limit_from_env
 
-__all__ = ["Reading", "reading", "trial_mass", "readings", "one_kind", "at", "Measures",
-    "common_measure", "READING_KINDS", "READING_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
+__all__ = ["Reading", "reading", "split_measure", "amplitude", "trial_mass", "readings", "one_kind", "at", "read_at", "Measures",
+    "common_measure", "budget", "READING_KINDS", "READING_UNITS", "MEASURE_WORDS", "JOB_WORDS"]
 
 #: what a reading's unit may measure -> its kind; readings are converted to SI
 READING_KINDS = {"displacement": (1, 0), "velocity": (1, -1), "acceleration": (1, -2)}
@@ -41,19 +35,9 @@ _READING = re.compile(r"\s*(?P<num>[^@]+?)\s*@\s*(?P<ang>.+?)\s*")
 
 @dataclass(frozen=True)
 class Reading:
-    """One reading as read.
-
-    Attributes
-    ----------
-    value : complex — amplitude e^{i phase}: SI of ``kind`` (m, m/s, m/s²), or the bare
-        number (kind None); in its own ``measure``
-    kind : str | None — "displacement", "velocity", "acceleration"; None for bare
-    measure : str | None — "pk", "pk-pk", "rms" as the reading says, or None
-    gravity : bool — its unit was ``g``, read as standard gravity
-    param : str — the parameter it was given for ("initial", "run")
-    text : str — as typed
-    where : Location | None — its place in a job file
-    """
+    """One reading as read: ``value`` amplitude e^{i phase} (SI of ``kind``, or the bare
+    number when ``kind`` is None) in its own ``measure`` (or None); ``gravity``: its unit was
+    ``g``; the parameter it was given for, its text, its place in a job file."""
 
     value: complex
     kind: str | None
@@ -64,7 +48,7 @@ class Reading:
     where: Location | None = None
 
 
-def _split_measure(amp: str) -> tuple[str, str | None]:
+def split_measure(amp: str) -> tuple[str, str | None]:
     """``"6 mm/s rms"`` -> ``("6 mm/s", "rms")``; no measure word -> ``(amp, None)``."""
     parts = amp.rsplit(None, 1)
     if len(parts) == 2 and parts[1].lower() in MEASURE_WORDS:
@@ -76,7 +60,7 @@ def _split_measure(amp: str) -> tuple[str, str | None]:
     return amp, None
 
 
-def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bool]:
+def amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bool]:
     """A reading's amplitude: (value, kind, read g as gravity) - SI for a unit of
     vibration, the number for a bare one (kind None)."""
     num = op.NUMBER.match(text)
@@ -86,12 +70,11 @@ def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bo
                                 f"({READING_UNITS})")
     number = text[: num.end()].strip().replace("\u2212", "-")
     unit = text[num.end():].strip()
-    option = param
     try:
         if not unit:
-            return op.quantity(number, "dimensionless", option), None, False
+            return op.quantity(number, "dimensionless", param), None, False
         if unit in ("mil", "mils"):
-            op.quantity(number, "dimensionless", option)  # its checks (range, digits)
+            op.quantity(number, "dimensionless", param)  # its checks (range, digits)
             return float(Fraction(number) * Fraction(254, 10**7)), "displacement", False
         if unit == "g":
             return un.to_si(f"{number} g0", "acceleration"), "acceleration", True
@@ -106,44 +89,37 @@ def _amplitude(text: str, param: str, whole: str) -> tuple[float, str | None, bo
 
 
 def reading(text: str, param: str, where: Location | None = None) -> Reading:
-    """``'6.0@30'``, ``'6 mm@30'``, ``'4.0 in/s pk@110'`` -> a :class:`Reading` (the phase in
-    degrees).
-
-    Raises
-    ------
-    rbcli.ParamError
-        naming ``param``.
-    """
+    """``'6.0@30'``, ``'6 mm@30'``, ``'4.0 in/s pk@110'`` -> a :class:`Reading`; a
+    :class:`rbcli.ParamError` naming ``param``."""
     m = _READING.fullmatch(text)
     lit = literal(text)
     if not m:
         raise ParamError(param, f"'{lit}' is not amplitude@phase, e.g. '6.0@30' or '6 mm/s@30'")
-    amp_text, measure = _split_measure(m["num"])
-    amp, kind, gravity = _amplitude(amp_text, param, text)
+    amp_text, measure = split_measure(m["num"])
+    amp, kind, gravity = amplitude(amp_text, param, text)
     ang = math.degrees(op.quantity(m["ang"], "angle", param, bare="deg"))
-    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
-        raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
+    _check(amp, ang, param, lit, "amplitude")
     return Reading(complex(cmath.rect(amp, math.radians(ang))), kind, measure, gravity, param, text, where)
 
 
-def trial_mass(text: str, param: str = "trial", bare: str = "g") -> complex:
-    """``'10 g@0'`` or ``'10@0'`` (a bare mass in ``bare``, grams by default) -> kg e^{i angle}.
+def _check(amp: float, ang: float, param: str, lit: str, what: str) -> None:
+    """An amplitude 0 or from 1e-100 to 1e100 (SI; bare readings alike) and a finite angle:
+    nothing a balancing job measures lies beyond, and the solve stays within floats."""
+    if not (math.isfinite(ang) and (amp == 0.0 or 1e-100 <= amp <= 1e100)):
+        raise ParamError(param, f"'{lit}': the {what} must be {'0 or ' * (what == 'amplitude')}from 1e-100 to "
+                                "1e100 (SI) and the angle finite")
 
-    Raises
-    ------
-    rbcli.ParamError
-        naming ``param``.
-    """
+
+def trial_mass(text: str, param: str = "trial", bare: str = "g") -> complex:
+    """``'10 g@0'`` or ``'10@0'`` (a bare mass in ``bare``) -> kg e^{i angle}."""
     m = _READING.fullmatch(text)
     lit = literal(text)
     if not m:
         raise ParamError(param, f"'{lit}' is not mass@angle, e.g. '10 g@0' (a bare mass is grams)")
-    option = param
     with op.naming(param):
-        amp = op.quantity(m["num"], "mass", option, bare=bare)
-        ang = math.degrees(op.quantity(m["ang"], "angle", option, bare="deg"))
-    if not (math.isfinite(amp) and math.isfinite(ang)) or amp < 0:
-        raise ParamError(param, f"'{lit}': amplitude must be a finite number >= 0 and the angle finite")
+        amp = op.quantity(m["num"], "mass", param, bare=bare)
+        ang = math.degrees(op.quantity(m["ang"], "angle", param, bare="deg"))
+    _check(amp, ang, param, lit, "mass")
     value = complex(cmath.rect(amp, math.radians(ang)))
     if value == 0:
         raise ParamError(param, "the trial mass must not be zero")
@@ -161,18 +137,17 @@ def readings(text: str, param: str, n: int | None, *, what: str = "") -> list[Re
 
 
 def one_kind(rs: list[Reading]) -> str | None:
-    """The one kind every reading has (None: all bare), else a ParamError saying what was
-    found."""
+    """The one kind every reading has (None: all bare); else refused, saying what was found."""
     first = rs[0]
     for r in rs[1:]:
         if (r.kind is None) != (first.kind is None):
             b, u = (r, first) if r.kind is None else (first, r)
-            raise _located(r, ParamError(r.param, (
+            raise at(r.where, ParamError(r.param, (
                 f"'{literal(b.text)}' ({{{b.param}}}) is a bare number but '{literal(u.text)}' "
                 f"({{{u.param}}}) has a unit ({u.kind}): give every reading a unit of one kind "
                 f"({READING_UNITS}) or none (all bare: a relative scale)")))
         if r.kind != first.kind:
-            raise _located(r, ParamError(r.param, (
+            raise at(r.where, ParamError(r.param, (
                 f"'{literal(r.text)}' ({{{r.param}}}) is a {r.kind} but '{literal(first.text)}' "
                 f"({{{first.param}}}) is a {first.kind}: every reading must be of one kind "
                 f"({READING_UNITS})")))
@@ -182,6 +157,15 @@ def one_kind(rs: list[Reading]) -> str | None:
 #: how a message about a job file's reading names what the command line calls a parameter
 JOB_WORDS = {"initial": "initial", "run": "a trial run", "measure": "readings: measure",
              "trial": "a trial mass"}
+
+
+def read_at(item: Any, fn: Any) -> Any:
+    """``fn(text)`` of a parameter's item, or of a job file's located Text (errors located
+    there)."""
+    try:
+        return fn(getattr(item, "text", item))
+    except InputError as exc:
+        raise at(getattr(item, "where", None), exc) from None
 
 
 def at(where: Location | None, exc: InputError) -> InputError:
@@ -197,45 +181,38 @@ def at(where: Location | None, exc: InputError) -> InputError:
     return InputError(literal(text), where)
 
 
-def _located(r: Reading, exc: ParamError) -> InputError:
-    """A job file's reading: the reason at its place; a command line's: the ParamError."""
-    return at(r.where, exc)
+#: the most influence coefficients (readings per run x planes) a job may have unless
+#: RBCLI_MAX_FIELD_COEFFICIENTS says otherwise: the solve grows as readings x planes²
+MAX_COEFFICIENTS = 20_000
+
+
+def budget(n: int, p: int, where: Location | None) -> None:
+    """Refuse a job beyond :data:`MAX_COEFFICIENTS` (README, "Budgets"), before reading it."""
+    limit = limit_from_env("RBCLI_MAX_FIELD_COEFFICIENTS", MAX_COEFFICIENTS)
+    if n * p > limit:
+        raise InputError(f"the job has {n} readings per run x {p} planes = {n * p} influence coefficients, "
+                         f"above the limit of {limit}; set RBCLI_MAX_FIELD_COEFFICIENTS to raise it (the "
+                         "solve's time grows as readings x planes²)", where)
 
 
 @dataclass(frozen=True)
 class Measures:
-    """How the readings' measures were reconciled.
-
-    Attributes
-    ----------
-    measure : str | None — the measure every amplitude is now in (None: unknown, as given)
-    converted : tuple of (str, str, int) — (from, to, how many readings) converted
-    """
+    """The measure every amplitude is now in (None: unsaid) and the conversions made
+    ((from, to, how many readings))."""
 
     measure: str | None
     converted: tuple[tuple[str, str, int], ...]
 
 
 def common_measure(rs: list[Reading], default: str | None, want: str | None) -> tuple[list[complex], Measures]:
-    """Every reading in one measure (sinusoidal conversion: pk-pk = 2 pk, rms = pk/sqrt 2).
-
-    Parameters
-    ----------
-    rs : the readings, in order
-    default : the measure of a reading that states none (``measure``), or None
-    want : the measure wanted (severity: "rms"), or None: the first reading's
-
-    Raises
-    ------
-    rbcli.ParamError
-        a reading with a measure and one without, and no default: which measure the other
-        is in is a guess (``measure``).
-    """
+    """Every reading in one measure (a sinusoid: pk-pk = 2 pk, rms = pk/sqrt 2): ``want``
+    (severity: "rms"), else the first reading's; ``default`` the measure of those that say
+    none. A mix of readings with and without a measure and no default is refused."""
     stated = [r for r in rs if r.measure is not None]
     bare = [r for r in rs if r.measure is None]
     if stated and bare and default is None:
         s, b = stated[0], bare[0]
-        raise _located(b, ParamError("measure", (
+        raise at(b.where, ParamError("measure", (
             f"'{literal(s.text)}' ({{{s.param}}}) says {s.measure} but '{literal(b.text)}' "
             f"({{{b.param}}}) says no measure: say the measure (pk, pk-pk or rms) of every "
             "reading or of none, or give the measure of those that say none ({measure})")))
@@ -243,13 +220,6 @@ def common_measure(rs: list[Reading], default: str | None, want: str | None) -> 
     if all(m is None for m in each):
         return [r.value for r in rs], Measures(None, ())
     target = want or each[0]
-    counts: dict[tuple[str, str], int] = {}
-    out = []
-    for r, m in zip(rs, each):
-        assert m is not None
-        if m != target:
-            counts[(m, target)] = counts.get((m, target), 0) + 1
-            out.append(r.value * convert_measure(1.0, m, target))
-        else:
-            out.append(r.value)
-    return out, Measures(target, tuple((a, b, n) for (a, b), n in counts.items()))
+    moved = [m for m in each if m != target]
+    out = [r.value * convert_measure(1.0, m, target) if m != target else r.value for r, m in zip(rs, each)]
+    return out, Measures(target, tuple((a, target, moved.count(a)) for a in dict.fromkeys(moved)))

@@ -1,31 +1,25 @@
-"""The result of ``rbcli field-balance`` (:func:`rbcli.field_balance`): values, their JSON,
-the polar diagram's numbers and the coefficients file's document.
-
-One- and two-plane jobs given with the options rbcli always had (``initial``, ``trial``,
-``run``, ``cumulative``, ``radius``, ``trial_radius``) are solved and written as they
-always were, byte for byte (:attr:`FieldBalanceResult.method` is None). Anything else — more
-readings than planes, more planes, a job file, stored coefficients, a method, weights,
-rounding, conventions, measures, severity, a trial suggestion — is an extended result: its
-JSON adds ``method``, ``residuals`` and the keys below.
+"""The result of ``rbcli field-balance``: values, their JSON (rbcli-field-balance(1)) and
+the coefficients file's document; a classic one- or two-plane job's as it always was
+(``method`` None), any other's with ``method``, ``residuals`` and the rest.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields, is_dataclass
 from typing import Any
 
 from rbcli import __version__
-from rbcli.api.diagram import Arrow, Diagram, Panel
 from rbcli.api.result import Result
 from rbcli.core.field.fit import FittedMass
 from rbcli.core.field.solve import deg
 from rbcli.io.field import plane_names
-from rbcli.io.field.coefficients import FORMAT, VERSION
+from rbcli.io.field.coefficients import FORMAT, VERSION, fingerprint
 
 __all__ = ["FieldBalanceResult", "FieldCorrection", "FieldResidual", "FittedPlane", "Fitted",
-    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text",
+    "SeverityRow", "Severity", "SuggestedTrial", "Conventions", "convention_text", "DrawerPlane",
+    "DrawerFit", "PlaneLimit", "ReadingLimit", "Limits", "Robust",
     "row_names", "CONVENTION", "SI_UNITS"]
 
 #: the angle convention of field balancing, in words (as it always was)
@@ -44,8 +38,12 @@ class Plain:
 
 
 def _plain(v: Any) -> Any:
+    if isinstance(v, float) and not math.isfinite(v):
+        return None  # an unlimited mass
     if isinstance(v, tuple):
         return [_plain(x) for x in v]
+    if isinstance(v, Mapping):
+        return {k: _plain(x) for k, x in v.items()}
     if hasattr(v, "to_json"):
         return v.to_json()
     return {f.name: _plain(getattr(v, f.name)) for f in fields(v)} if is_dataclass(v) else v
@@ -53,40 +51,19 @@ def _plain(v: Any) -> Any:
 
 @dataclass(frozen=True)
 class FieldCorrection:
-    """One plane's correction.
-
-    Attributes
-    ----------
-    name : str — the plane's name ("A", "B", ... or the job file's)
-    correction : complex — kg e^{i angle}, to add with the trial removed (at the correction
-        radius when radii are given), angles in the sense of the trial angles
-    correction_trial_on : complex — kg, to add with that plane's trial left on
-    radius : float | None — m, the radius the correction goes at (None: the trial's, unsaid)
-    """
+    """One plane's correction: ``correction`` kg e^{i angle} to add with the trial removed (at
+    ``radius``, m, when given; angles in the trial angles' sense), ``correction_trial_on``
+    with that plane's trial left on."""
 
     name: str
     correction: complex
     correction_trial_on: complex
     radius: float | None = None
 
-    @property
-    def mass(self) -> float:
-        """kg"""
-        return abs(self.correction)
-
-    @property
-    def angle_deg(self) -> float:
-        """deg, [0, 360), the sense of the trial angles"""
-        return deg(self.correction) if self.correction != 0 else 0.0
-
-    @property
-    def mass_trial_on(self) -> float:
-        """kg, with that plane's trial left on"""
-        return abs(self.correction_trial_on)
-
-    @property
-    def angle_trial_on_deg(self) -> float:
-        return deg(self.correction_trial_on) if self.correction_trial_on != 0 else 0.0
+    mass = property(lambda self: abs(self.correction), doc="kg")
+    angle_deg = property(lambda self: deg(self.correction), doc="deg, [0, 360)")
+    mass_trial_on = property(lambda self: abs(self.correction_trial_on), doc="kg")
+    angle_trial_on_deg = property(lambda self: deg(self.correction_trial_on), doc="deg, [0, 360)")
 
     def to_json(self) -> dict[str, Any]:
         return {"name": self.name, "mass": self.mass, "angle_deg": self.angle_deg,
@@ -96,15 +73,8 @@ class FieldCorrection:
 
 @dataclass(frozen=True)
 class FieldResidual(Plain):
-    """A predicted reading after the correction (JSON ``residuals[k]``).
-
-    Attributes
-    ----------
-    sensor, speed : str — the reading's sensor and speed names
-    amplitude : float — in the readings' unit and measure (SI, or bare for bare readings)
-    angle_deg : float — deg, [0, 360), in the readings' own phase convention
-    initial : float — the reading's amplitude before, same unit
-    """
+    """A predicted reading (the readings' unit and measure; its angle in the instrument's
+    phase convention) and the reading before."""
 
     sensor: str
     speed: str
@@ -134,21 +104,98 @@ class FittedPlane(Plain):
 
 
 @dataclass(frozen=True)
-class Fitted(Plain):
-    """The corrections as fitted — rounded and/or split — and the readings they leave.
+class DrawerPlane(Plain):
+    """A plane's holes as the drawer search took them: angles (deg, hole 1 first), radius
+    (m; None: the trial radius), numbering ("with" or "against" the angles), how many
+    weights a hole and the plane take, its most mass (kg; inf: any), its drawer (index)."""
 
-    Attributes
-    ----------
-    mass_step : float | None — kg
-    angle_step_deg : float | None — deg
-    planes : tuple of FittedPlane
-    residuals : tuple of FieldResidual — the readings predicted with these masses
-    """
+    name: str
+    holes_deg: tuple[float, ...]
+    radius: float | None
+    numbering: str
+    per_hole: int
+    max_weights: int
+    max_mass: float | None
+    drawer: int
+
+
+@dataclass(frozen=True)
+class DrawerFit(Plain):
+    """The weights chosen from the drawer (:mod:`rbcli.core.field.drawer`): the method's
+    objective and the largest reading over its limit (<= 1: every limit met), how many
+    choices the search evaluated, the drawers ([{mass kg, count or None}]) and the planes."""
+
+    objective: float
+    violation: float
+    examined: int
+    drawers: tuple[tuple[dict, ...], ...]
+    planes: tuple[DrawerPlane, ...]
+
+
+@dataclass(frozen=True)
+class Fitted(Plain):
+    """The corrections as fitted — rounded, split or from a drawer (kg, deg) — and the
+    readings they leave."""
 
     mass_step: float | None
     angle_step_deg: float | None
     planes: tuple[FittedPlane, ...]
     residuals: tuple[FieldResidual, ...]
+    drawer: DrawerFit | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        d = super().to_json()
+        return d if self.drawer is not None else {k: v for k, v in d.items() if k != "drawer"}
+
+
+@dataclass(frozen=True)
+class PlaneLimit(Plain):
+    """A plane's limit (kg at the correction radius, or kg m), what the correction puts there
+    (kg; kg m when the trial radius is known), whether it binds, the objective without it."""
+
+    plane: str
+    max_mass: float | None
+    max_unbalance: float | None
+    mass: float
+    unbalance: float | None
+    active: bool
+    objective_without: float | None
+
+
+@dataclass(frozen=True)
+class ReadingLimit(Plain):
+    """A reading's limit and its predicted amplitude (the readings' unit), whether it binds,
+    the objective without it."""
+
+    sensor: str
+    speed: str
+    limit: float
+    amplitude: float
+    active: bool
+    objective_without: float | None
+
+
+@dataclass(frozen=True)
+class Limits(Plain):
+    """The limits given (JSON ``limits``): met (``feasible``) or not, max |r_k|/L_k, the
+    method's objective with them, each plane's and reading's limit."""
+
+    feasible: bool
+    violation: float
+    objective: float
+    planes: tuple[PlaneLimit, ...]
+    readings: tuple[ReadingLimit, ...]
+
+
+@dataclass(frozen=True)
+class Robust(Plain):
+    """A robust fit (JSON ``robust``): Huber's weight of each reading and the readings it
+    discounted ("sensor" or "sensor at speed"); ``threshold`` in Rayleigh scales."""
+
+    method: str
+    threshold: float
+    weights: tuple[float, ...]
+    discounted: tuple[str, ...]
 
 
 @dataclass(frozen=True)
@@ -165,17 +212,8 @@ class SeverityRow(Plain):
 
 @dataclass(frozen=True)
 class Severity(Plain):
-    """ISO 20816-3 zones of the readings (JSON ``severity``).
-
-    Attributes
-    ----------
-    standard : str — "ISO 20816-3"
-    group : int — 1 or 2
-    foundation : str — "rigid" or "flexible"
-    boundaries : (float, float, float) — A/B, B/C, C/D, m/s r.m.s.
-    after_is : str — "fitted" (the rounded or split masses) or "computed"
-    readings : tuple of SeverityRow
-    """
+    """ISO 20816-3 zones of the readings: group, foundation, the A/B, B/C, C/D boundaries (m/s
+    r.m.s.), whether "after" is of the masses "fitted" or "computed"."""
 
     standard: str
     group: int
@@ -187,22 +225,9 @@ class Severity(Plain):
 
 @dataclass(frozen=True)
 class SuggestedTrial(Plain):
-    """A trial mass sized before the run (JSON ``suggested_trial``).
-
-    Attributes
-    ----------
-    plane : str
-    mass : float — kg at ``radius``
-    radius : float — m
-    speed : float — rad/s
-    bearing_load : float — N, the static load of the bearing nearest the plane
-    bearing_load_from : str — how it was found, in words
-    fraction : float — the trial's force / bearing_load
-    force : float — N
-    expected_change : tuple of float | None — per reading, the change the trial should make
-        (its influence coefficients times the trial), reading unit; None without coefficients
-    expected_change_ratio : tuple of float | None — that change over the initial reading
-    """
+    """A trial mass sized before the run: kg at ``radius`` (m) and ``speed`` (rad/s), a
+    ``fraction`` of the static ``bearing_load`` (N) as its ``force`` (N); with coefficients, the
+    change it should make to each reading (reading unit) and that over the reading."""
 
     plane: str
     mass: float
@@ -218,20 +243,9 @@ class SuggestedTrial(Plain):
 
 @dataclass(frozen=True)
 class Conventions(Plain):
-    """How angles and readings were counted (JSON ``conventions``).
-
-    Attributes
-    ----------
-    phase : str | None — the instrument's phase: "lag" (grows against the rotation) or
-        "lead"; None: not said (the phases are taken in the sense of the trial angles)
-    angle_sense : str | None — the trial and correction angles are counted "with" or
-        "against" the rotation; None: not said
-    rotation : str | None — the rotor turns "cw" or "ccw" (seen from where the angles are
-        read); None: not said
-    converted : bool — the phases were mirrored into the angles' sense (lag with angles
-        counted with the rotation, or lead against it)
-    text : str — all of it in words
-    """
+    """How angles and readings were counted: the instrument's ``phase`` ("lag", "lead"),
+    ``angle_sense`` ("with", "against" the rotation), ``rotation`` ("cw", "ccw"; None: unsaid
+    each), whether the phases were mirrored into the angles' sense, all of it in words."""
 
     phase: str | None
     angle_sense: str | None
@@ -265,53 +279,9 @@ def convention_text(phase: str | None, angle_sense: str | None, rotation: str | 
 
 @dataclass(frozen=True)
 class FieldBalanceResult(Result):
-    """What ``rbcli field-balance`` reports.
-
-    Attributes
-    ----------
-    planes : int — the number of correction planes P
-    initial : tuple of complex — the readings without trial, N of them (SI, or the relative
-        scale), in the angles' sense (after any conversion)
-    runs : tuple of tuple of complex — the readings of each trial run (none for a trim run
-        from stored coefficients)
-    corrections : tuple of FieldCorrection — per plane (kg)
-    alpha : tuple of tuple of complex — the influence coefficients: reading (SI, or the
-        relative scale) per kg at the trial radius; row = reading, column = plane (JSON
-        ``influence``: their magnitudes and angles)
-    trial_masses : tuple of complex — kg e^{i angle} (JSON ``trials``)
-    radii : (float, float) | None — m, (trial radius, correction radius) (the command line's)
-    cond : float | None — 2-norm condition number of the influence matrix
-    det : complex | None — its determinant (square)
-    ill_conditioned : bool — cond > 50
-    small_response : tuple of bool — per trial run
-    residual_values : tuple of complex — per reading, after the correction (reading unit; JSON
-        ``predicted_residual``: their magnitudes)
-    cumulative : bool
-    reading_kind : str | None — "displacement", "velocity", "acceleration", or None (bare)
-    warnings : tuple of str
-    method : str | None — "exact", "least-squares" or "min-max"; None: a one- or two-plane
-        job given the classic way, reported as it always was
-    sensors, run_speeds : the readings' sensors (names) and speeds ((name, rad/s or None);
-        JSON ``speeds``); a reading k is sensor ``k % len(sensors)`` at speed
-        ``k // len(sensors)``
-    plane_names : tuple of str
-    plane_radii : tuple of ((float, float) | None) — per plane (trial, correction radius) m
-    residuals : tuple of FieldResidual — the predicted readings, in the instrument's phase
-        convention (extended results)
-    weights : tuple of float | None
-    significance_factors : tuple of float — Darlow's factor per plane (JSON ``significance``)
-    significance_limit : float
-    measure : str | None — "pk", "pk-pk" or "rms": what every amplitude is in
-    measures_converted : tuple of (str, str, int)
-    gravity : bool — a reading's "g" was read as standard gravity
-    conventions : Conventions | None
-    fitted : Fitted | None
-    severity : Severity | None
-    suggested_trial : tuple of SuggestedTrial
-    coefficients_from : str | None — the file the coefficients were read from (trim run)
-    job : str | None — the job file; name: its name
-    notes : tuple of str — what was converted on the way (coefficients' measure or sense)
-    """
+    """What ``rbcli field-balance`` reports: readings complex (SI or bare, the angles' sense),
+    ``alpha[k][j]`` per kg at plane j's trial radius, masses kg, radii m; ``method`` None: a
+    classic job."""
 
     planes: int
     initial: tuple[complex, ...]
@@ -348,6 +318,8 @@ class FieldBalanceResult(Result):
     job: str | None = None
     name: str | None = None
     notes: tuple[str, ...] = ()
+    limits: Limits | None = None
+    robust: Robust | None = None
 
     @property
     def extended(self) -> bool:
@@ -355,8 +327,7 @@ class FieldBalanceResult(Result):
 
     @property
     def reading_unit(self) -> str | None:
-        """The SI unit the readings (and the influence coefficients per kg) are in: "m",
-        "m/s" or "m/s^2"; None for bare readings (a relative scale)."""
+        """The readings' SI unit ("m", "m/s", "m/s^2"; None: bare)."""
         return None if self.reading_kind is None else SI_UNITS[self.reading_kind]
 
     @property
@@ -367,62 +338,6 @@ class FieldBalanceResult(Result):
     def row_names(self) -> list[tuple[str, str]]:
         """(sensor, speed) of each reading, in order."""
         return row_names(self.sensors, self.run_speeds, len(self.initial))
-
-    # ------------------------------------------------------------------ the polar diagram
-
-    def diagram(self):
-        """The polar diagram of a balancing sheet (what ``--plot`` draws), an
-        :class:`rbcli.api.diagram.Diagram`: per reading the reading O without trial, each
-        run O+T and the change T made (from O's tip to O+T's); then per plane the trial
-        mass and the correction to add (trial removed). Angles as given and printed."""
-        panels = []
-        n = self.planes
-        names = self.plane_names or tuple("AB"[:n])
-        rows = self.row_names()
-        for i in range(len(self.initial)):
-            o = self.initial[i]
-            arrows = [Arrow("initial", "O, no trial", abs(o), deg(o))]
-            for j, run in enumerate(self.runs):
-                name = names[j] if n > 1 else ""
-                v = run[i]
-                arrows.append(Arrow("run", f"O+T{name}, trial {name or ''} on".replace("  ", " "),
-                                    abs(v), deg(v)))
-                ref = self.runs[j - 1][i] if (j >= 1 and self.cumulative) else o
-                d = v - ref
-                arrows.append(Arrow("effect", f"T{name}: the trial's effect", abs(d), deg(d),
-                                    d != 0, tail=(abs(ref), deg(ref))))
-            if self.extended and self.residuals:
-                r = self.residual_values[i]
-                arrows.append(Arrow("residual", "predicted after the correction", abs(r), deg(r), abs(r) > 0))
-            if self.extended:
-                sensor, speed = rows[i]
-                title = f"readings {sensor}" + (f" at {speed}" if speed else "")
-            else:
-                title = "readings" if len(self.initial) == 1 else f"sensor {i + 1} readings"
-            panels.append(Panel(title, "reading", tuple(arrows)))
-        for j, c in enumerate(self.corrections):
-            arrows_m = []
-            if j < len(self.trial_masses):
-                t = self.trial_masses[j]
-                arrows_m.append(Arrow("trial", "trial mass", abs(t), deg(t), t != 0, mass=abs(t)))
-            arrows_m.append(Arrow("correction", "add (trial removed)", c.mass, c.angle_deg, c.correction != 0,
-                                  mass=c.mass))
-            if self.fitted is not None:
-                for fm in self.fitted.planes[j].masses:
-                    label = "fit" + (f" at position {fm.position}" if fm.position else "")
-                    arrows_m.append(Arrow("residual", label, fm.mass, fm.angle_deg, fm.mass > 0, mass=fm.mass))
-            panels.append(Panel(f"plane {c.name}: masses", "mass", tuple(arrows_m)))
-        sense = "with"
-        note = "angles as given: the trial angles and the phases in the same sense"
-        if self.conventions is not None and self.conventions.rotation is not None:
-            # the dial as the rotor is seen from where the angles are read: angles counted
-            # with a counterclockwise rotation run counterclockwise
-            ccw = (self.conventions.rotation == "ccw") == (self.conventions.angle_sense != "against")
-            sense = "with" if ccw else "against"
-            note = self.conventions.text
-        elif self.conventions is not None:
-            note = self.conventions.text
-        return Diagram("field balancing", tuple(panels), sense, note, self.reading_kind)
 
     # ------------------------------------------------------------------ JSON
 
@@ -464,6 +379,8 @@ class FieldBalanceResult(Result):
                        suggested_trial=[s.to_json() for s in self.suggested_trial],
                        coefficients_from=self.coefficients_from, conventions=conventions, job=self.job,
                        name=self.name, notes=list(self.notes))
+            if self.limits is not None or self.robust is not None:
+                out.update(limits=_plain(self.limits), robust=_plain(self.robust))
         out.update(angle_convention=self.angle_convention, warnings=list(self.warnings))
         return out
 
@@ -486,28 +403,24 @@ class FieldBalanceResult(Result):
     # ------------------------------------------------------------------ stored coefficients
 
     def coefficients_document(self) -> dict[str, Any]:
-        """The influence coefficients as the file ``--save-coefficients`` writes (see
-        :mod:`rbcli.io.field.coefficients` for the format): exact (re, im) per reading and plane,
-        with their units, speeds, sensor and plane names and conventions."""
+        """The file ``--save-coefficients`` writes (:mod:`rbcli.io.field.coefficients`)."""
         rows = self.row_names()
         speeds = list(self.run_speeds) or [("", None)]
         sensors = list(self.sensors) or [str(k + 1) for k in range(len(self.initial))]
         radii = self.plane_radii or (self.radii,) * self.planes
         names = self.plane_names or plane_names(self.planes)
         conv = self.conventions
-        return {
+        doc = {
             "format": FORMAT,
             "version": VERSION,
+            "fingerprint": "",
             "written_by": f"rbcli {__version__} field-balance",
             "job": self.name,
             "description": (
-                "Influence coefficients alpha[k][j]: the change of reading k per kg of trial mass "
-                "added in plane j at that plane's trial radius, as the complex number re + i im "
-                "(magnitude, angle_deg for people). Readings in the SI unit of their kind (m, "
-                "m/s, m/s^2), or a relative scale when bare, in the measure given; phases "
-                "counted in the sense of the trial angles (see conventions). Reuse with "
-                "rbcli field-balance --coefficients FILE --initial ... (a trim run) on the same "
-                "machine (or the same machine type) at the same speeds, sensors and radii."),
+                "alpha[k][j] = re + i im: the change of reading k (SI, or the relative scale; in the "
+                "measure given; phases in the trial angles' sense) per kg of trial mass in plane j at its "
+                "trial radius. Reuse: rbcli field-balance --coefficients FILE --initial ... (a trim run) "
+                "at the same speeds, sensors and radii. Edited, it is refused (fingerprint)."),
             "influence": {
                 "reading_kind": self.reading_kind,
                 "reading_unit": self.reading_unit,
@@ -528,3 +441,4 @@ class FieldBalanceResult(Result):
             "coefficients": [[{"re": a.real, "im": a.imag, "magnitude": abs(a), "angle_deg": deg(a)}
                               for a in row] for row in self.alpha],
         }
+        return {**doc, "fingerprint": fingerprint(doc)}

@@ -1,15 +1,7 @@
-"""Field (trial-weight) balancing: the service behind ``rbcli field-balance``.
-
-The influence-coefficient method (physics sheet ``physics/balance.md`` §5; the two-plane
-example is Brüel & Kjær application note 17-227, "Static and dynamic balancing of rigid
-rotors"): P correction planes, N >= P readings per run (sensors at one or more speeds),
-one trial run per plane. :func:`field_balance` reads its parameters once
-(:data:`rbcli.api.commands.FIELD_BALANCE`, :func:`parse`: the job, from the parameters or a
-job file, :mod:`rbcli.api.field.job`) and returns a frozen
-:class:`~rbcli.api.field.result.FieldBalanceResult` (:func:`run`,
-:mod:`rbcli.api.field.compute`) whose ``to_json()`` is what ``rbcli field-balance --json``
-prints. No body is needed.
-"""
+"""Field (trial-weight) balancing, the service behind ``rbcli field-balance`` (physics sheet
+``balance.md`` §5; the two-plane example is Brüel & Kjær's note 17-227): :func:`parse` reads
+the job once, :func:`run` computes the result (:mod:`.compute`), whose ``to_json()`` is
+``--json``. No body is needed."""
 
 from __future__ import annotations
 
@@ -19,7 +11,7 @@ import numpy as np
 
 from rbcli.api.commands import FIELD_BALANCE
 from rbcli.api.field import compute
-from rbcli.api.field.job import Job, make
+from rbcli.api.field.job import Job, located, make
 from rbcli.api.field.result import FieldBalanceResult
 from rbcli.api.params import function, read
 from rbcli.api.result import jsonable
@@ -28,12 +20,9 @@ from rbcli.errors import NonFiniteResult, ParamError, literal
 
 __all__ = ["FieldBalanceResult", "field_balance", "parse", "run"]
 
-#: the core's parameter names -> the parameters of :func:`field_balance`
-_CORE_PARAMS = {"v0": "initial", "v1": "run", "va": "run", "vb": "run", "trial": "trial",
-                "trial_a": "trial", "trial_b": "trial", "runs": "run", "trials": "trial",
-                "weights": "weights", "method": "method", "mass_step": "mass_step",
-                "angle_step": "angle_step", "positions": "positions", "bearing_load": "bearing_load",
-                "trial_radius": "trial_radius", "speed": "speed", "trial_fraction": "trial_fraction"}
+#: the core's parameter names that are not the parameters of :func:`field_balance` (any other
+#: name the core gives is "run")
+_CORE_PARAMS = {"v0": "initial", "trials": "trial", "limits": "limit", **{p.name: p.name for p in FIELD_BALANCE}}
 
 
 def parse(body: None = None, **kwargs: Any) -> Job:
@@ -68,10 +57,11 @@ def run(body: None, job: Job) -> FieldBalanceResult:
                 raise ParamError("run", literal(exc)) from None
             jsonable(res.to_json())  # the one finiteness check: refuses inf and NaN
     except (OverflowError, ZeroDivisionError, NonFiniteResult):
-        raise NonFiniteResult(
-            "{initial}, {trial}, {run}: the result overflows (a number beyond 1e308); "
-            "the readings or trial masses are too large or too small"
-        ) from None
+        why = "the result overflows (a number beyond 1e308): the readings or trial masses are too large or too small"
+        raise (located(ParamError("run", why), (), job.source) if job.source is not None else
+               NonFiniteResult("{initial}, {trial}, {run}: " + why)) from None
+    except ParamError as exc:
+        raise located(exc, job.options.given, job.source) from None
     return res
 
 
@@ -79,13 +69,10 @@ def run(body: None, job: Job) -> FieldBalanceResult:
 def field_balance(body: None = None, **kwargs: Any) -> FieldBalanceResult:
     """Field (trial-weight) balancing from vibration readings: influence coefficients.
 
-    Readings are ``"amplitude@phase"`` strings (phases in degrees from the keyphasor):
-    either all bare numbers (``"6.0@30"``: one relative scale, the corrections do not depend
-    on it) or all with units of one kind, converted exactly: displacement (``"40 um@30"``,
-    µm, mm, mil), velocity (``"6 mm/s@30"``, mm/s, in/s) or acceleration (``"0.5 g@30"``,
-    g = standard gravity, m/s²); a measure may follow the unit (``"6 mm/s rms@30"``: pk,
-    pk-pk or rms). Trial masses are ``"mass@angle"`` (``"10 g@0"``; a bare mass is in grams,
-    as balancing sheets write it). A number given for a quantity is SI (m, kg, rad/s, N).
+    Readings are ``"amplitude@phase"`` (degrees from the keyphasor), all bare (``"6.0@30"``,
+    one relative scale) or all of one kind (``"40 um@30"``, ``"6 mm/s rms@30"``, ``"0.5
+    g@30"``: g is gravity); trial masses ``"mass@angle"`` (``"10 g@0"``, bare: grams). A
+    number given for a quantity is SI (m, kg, rad/s, N).
 
     Parameters
     ----------
@@ -99,10 +86,9 @@ def field_balance(body: None = None, **kwargs: Any) -> FieldBalanceResult:
     Raises
     ------
     TypeError
-        An argument of the wrong type, naming the parameter and the type expected
-        (:mod:`rbcli.api.check`).
+        An argument of the wrong type, naming the parameter.
     rbcli.InputError
-        naming the parameter and ``param``.
+        naming the parameter (``param``), or located in a job file.
 
     Examples
     --------

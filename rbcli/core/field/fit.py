@@ -1,13 +1,7 @@
-"""Field corrections as they are fitted: weights from the drawer, holes and blades (sheet
-§2.5).
-
-A computed correction ``W = m e^{i angle}`` is rarely fitted as computed: masses come in
-steps (clip-on weights, washers), angles are marked to a few degrees, and on a fan the
-mass goes onto blades or bolt holes. :func:`fit_plane` gives what is fitted — rounded as
-``rbcli balance`` rounds (half up to a multiple of the step; angles in the reported sense)
-or split onto the two neighbouring of n equally spaced positions with
-:func:`rbcli.core.balance.corrections.split_to_positions` (sheet §2.5, T22) — and the net
-correction those masses make, from which the caller predicts the residual readings.
+"""Field corrections as they are fitted (sheet §2.5): rounded as ``rbcli balance`` rounds
+(half up to a multiple of the step) or split onto the two neighbouring of n equally spaced
+positions (:func:`rbcli.core.balance.corrections.split_to_positions`, sheet §2.5, T22), with
+the net correction those masses make. (A drawer's weights: :mod:`rbcli.core.field.drawer`.)
 """
 
 from __future__ import annotations
@@ -21,15 +15,7 @@ from rbcli.core.balance.corrections import split_to_positions
 
 @dataclass(frozen=True)
 class FittedMass:
-    """One mass to fit.
-
-    Attributes
-    ----------
-    mass : float — kg (rounded when a step was asked)
-    angle_deg : float — deg, [0, 360), in the sense of the correction's angles
-    position : int | None — 1-based position number (position 1 at the offset angle) when
-        split onto positions
-    """
+    """One mass to fit: kg, deg [0, 360) and its 1-based position (or hole), if any."""
 
     mass: float
     angle_deg: float
@@ -38,14 +24,8 @@ class FittedMass:
 
 @dataclass(frozen=True)
 class FittedPlane:
-    """What is fitted in one plane, and the correction it makes.
-
-    Attributes
-    ----------
-    masses : tuple of FittedMass — one (rounded) or two (split onto positions)
-    net : complex — kg e^{i angle}: the vector sum of the masses (the correction fitted)
-    rounded : bool — a mass or angle step was applied
-    """
+    """The masses fitted in one plane, their vector sum (kg e^{i angle}) and whether a step
+    was applied."""
 
     masses: tuple[FittedMass, ...]
     net: complex
@@ -69,28 +49,10 @@ def fit_plane(
     positions: int | None = None,
     offset_deg: float = 0.0,
 ) -> FittedPlane:
-    """The masses to fit for one plane's correction.
-
-    Parameters
-    ----------
-    correction : complex — mass (kg) e^{i angle}, the computed correction
-    mass_step : float, optional — kg, > 0: each mass rounded half up to a multiple
-    angle_step_deg : float, optional — deg, in (0, 360]: the angle rounded to a multiple
-        (not with ``positions``: the positions fix the angles)
-    positions : int, optional — >= 3 equally spaced positions (holes, blades), position 1
-        at ``offset_deg``: the correction split onto the two either side of it
-    offset_deg : float — deg, the angle of position 1
-
-    Returns
-    -------
-    FittedPlane
-
-    Raises
-    ------
-    BalanceValueError
-        a step <= 0 (``mass_step``, ``angle_step``), fewer than 3 positions
-        (``positions``), an angle step with positions.
-    """
+    """The masses to fit for ``correction`` (kg e^{i angle}): each mass rounded half up to a
+    multiple of ``mass_step`` (kg), the angle to ``angle_step_deg`` (in (0, 360]; not with
+    positions), or split onto the two of ``positions`` (>= 3, equally spaced, position 1 at
+    ``offset_deg``) either side of it. A BalanceValueError names the step or positions at fault."""
     C = complex(correction)
     if mass_step is not None:
         mass_step = positive(mass_step, "mass step", "mass_step")

@@ -1,25 +1,11 @@
-"""Vibration readings: amplitude measures, kinds at a speed, and ISO 20816-3 severity zones.
-
-Measures of one sinusoid (a reading filtered at the running speed, 1x, is one): peak
-``A``, peak-to-peak ``2 A``, rms ``A / sqrt(2)``. Kinds of one sinusoid at angular
-frequency ``omega``: velocity ``v = omega x``, acceleration ``a = omega v``.
-
-ISO 20816-3:2022 ("Mechanical vibration — Measurement and evaluation of machine vibration
-— Part 3: Industrial machinery with a power rating above 15 kW and operating speeds between
-120 r/min and 30 000 r/min") judges the broadband r.m.s. velocity on bearing housings
-(10 Hz to 1 kHz; 2 Hz to 1 kHz below 600 r/min) against four zones: A newly commissioned,
-B unrestricted long-term operation, C restricted operation, D damage. The boundaries
-below (mm/s r.m.s., Annex A) are those of ISO 10816-3:2009, Tables A.1 and A.2, kept by
-ISO 20816-3:2022; rbcli had no licensed copy of the standard: they are taken from
-LGDiMaggio/predictive-maintenance-mcp ``src/diagnostics/iso20816.py`` (group and support
-table, "boundary values belong to the lower zone") and agree with Beckhoff's TF3600
-condition-monitoring manual (group 1 rigid: 2.3, 4.5, 7.1 mm/s). Check them against your
-copy of the standard before you rely on a verdict.
-
-Group 1: large machines, rated power above 300 kW, or electrical machines with shaft
-height H >= 315 mm. Group 2: medium machines, 15 kW to 300 kW, or 160 mm <= H < 315 mm.
-A support is flexible when the lowest natural frequency of machine and support in the
-direction measured is below the running frequency by at least 25 %; otherwise rigid.
+"""Vibration readings: measures (peak A, peak-to-peak 2A, rms A/sqrt 2 of one sinusoid),
+kinds at a speed (v = omega x, a = omega v), ISO 20816-3 zones: A (newly commissioned), B
+(long-term operation), C (restricted), D (damage) of the broadband r.m.s. velocity. The
+boundaries (mm/s r.m.s., Annex A; ISO 10816-3:2009's Tables A.1, A.2) come from
+LGDiMaggio/predictive-maintenance-mcp ``src/diagnostics/iso20816.py`` ("boundary values
+belong to the lower zone") and agree with Beckhoff's TF3600 manual; rbcli had no licensed
+copy: check them against yours. Group 1: above 300 kW; group 2: 15 to 300 kW; a support is
+flexible when its lowest natural frequency is 25 % or more below the running frequency.
 """
 
 from __future__ import annotations

@@ -1,29 +1,13 @@
 """Darlow's plane-significance factors: which correction planes add nothing new (sheet §5.1).
 
-A balance plane whose influence column is (nearly) a combination of the other planes'
-columns moves the readings in no new direction: the solve then puts large, opposing
-masses in it and its neighbours, and the condition number of alpha grows. Darlow's test
-finds such a plane (M. S. Darlow, "The identification and elimination of non-independent
-balance planes in influence coefficient balancing", ASME paper 82-GT-269, 1982; and
-*Balancing of High-Speed Machinery*, Springer 1989, ch. 6), as implemented by hsbalance
-(``hsbalance.tools.ill_condition``, which flags a factor <= 0.2):
-
-1. order the planes by the 2-norm of their influence columns, largest first;
-2. orthogonalise the columns in that order (Gram-Schmidt);
-3. the significance factor of a plane is the norm of what is left of its column after
-   removing its projection on the planes before it, divided by the column's norm:
-   ``SF_k = |u_k - Q_{k-1} Q_{k-1}^H u_k| / |u_k|`` (1 for the first plane, 0 for a column
-   that is a combination of the earlier ones, 1 for one orthogonal to them all).
-
-Notes
------
-hsbalance's loop subtracts the running sum of projections of the previous column rather
-than projecting each new column onto all earlier ones: from the third plane on, its factor is
-the distance of a column from the one before it, never smaller than the distance from the span
-of all of them that this module measures. The two agree for two planes, and every plane
-hsbalance flags is flagged here too (a test checks both).
-The factor equals ``|R_kk| / |u_k|`` of a QR factorisation of the reordered matrix, which
-the tests use as an independent check.
+A plane whose influence column is (nearly) a combination of the others' moves the readings
+in no new direction: the solve puts large, opposing masses in it. Darlow's test (ASME paper
+82-GT-269, 1982; *Balancing of High-Speed Machinery*, 1989, ch. 6) orders the columns by
+norm, largest first, orthogonalises them in that order, and calls a plane's factor
+``SF_k = |u_k - Q_{k-1} Q_{k-1}^H u_k| / |u_k|`` (= |R_kk|/|u_k| of a QR, the tests' check);
+flagged at or below 0.2, as hsbalance's ``ill_condition``. hsbalance 0.5.5 subtracts only
+the previous column's projection, so from the third plane on its factor is never smaller
+than this one (above 1 at times); every plane it flags is flagged here too.
 """
 
 from __future__ import annotations
@@ -42,16 +26,8 @@ SIGNIFICANCE_LIMIT = 0.2
 
 @dataclass(frozen=True, eq=False)
 class Significance:
-    """Darlow's significance factor of each plane.
-
-    Attributes
-    ----------
-    factors : (P,) float ndarray — per plane, in the planes' own order, in [0, 1], read-only
-    order : (P,) int ndarray — the order the test takes the planes in (largest column
-        first), read-only
-    flagged : tuple of int — planes (indices) with factor <= SIGNIFICANCE_LIMIT
-    limit : float
-    """
+    """Darlow's factor of each plane (in [0, 1], the planes' order), the order the test takes
+    them in (largest column first), the planes flagged (factor <= limit) and the limit."""
 
     factors: np.ndarray
     order: np.ndarray

@@ -1,38 +1,13 @@
-"""Influence-coefficient balancing for any number of planes and readings (sheet §5.1).
+"""Influence-coefficient balancing, any number of planes and readings (sheet §5.1).
 
-P correction planes, N >= P readings (sensors at one or more speeds, stacked: row ``k``
-is one sensor at one speed). A reading is a complex number ``V = amplitude e^{i phase}``
-and a mass ``W = m e^{i angle}``, the phases and angles counted in one sense (the caller
-converts them first). The linear model of a rotor on linear supports is
-
-    V = V0 + alpha W                                    alpha (N, P), W (P,)
-
-``alpha`` comes from one trial run per plane (:func:`influence_matrix`), and the
-correction ``W`` (kg at the trial radius, to ADD) from :func:`solve`:
-
-* ``exact`` — N = P: ``alpha W = -V0`` (``W = -V0/alpha`` for one plane, as
-  :func:`rbcli.core.field.classic.field_single_plane` computes it, else LAPACK's LU solve,
-  as :func:`rbcli.core.field.classic.field_two_plane`: the same arithmetic, so the same
-  bits).
-* ``least-squares`` — N > P: minimise ``sum_k (w_k |r_k|)^2`` over the residuals
-  ``r = V0 + alpha W`` with weights ``w_k`` (Goodman 1964, "A least-squares method for
-  computing balance corrections", J. Eng. Ind. 86(3):273-279; hsbalance's ``LeastSquares``
-  and its ``WLS`` weighting). Solved by a Householder QR of ``D alpha`` (``D = diag w``):
-  ``W = R^-1 Q^H (-D V0)``, which never forms the squared condition number of the normal
-  equations.
-* ``min-max`` — N > P: minimise ``max_k w_k |r_k|`` (Foiles, Allaire and Gunter's min-max
-  balancing, as hsbalance's ``Min_max``: ``minimize norm(alpha W + A, inf)``), a convex
-  second-order cone problem. Solved as the smooth epigraph problem ``min t`` subject to
-  ``t^2 - |w_k r_k|^2 >= 0`` by SLSQP from the least-squares answer, then polished by
-  Newton's method on the Karush-Kuhn-Tucker equations of its active set
-  (``|w_k r_k| = t`` on the set, ``sum_k lambda_k M_k^T w_k r_k = 0``,
-  ``sum_k lambda_k = 1``, ``lambda >= 0``), which makes the answer exact to round-off
-  where the active set is regular (checked by the tests against a linear program and
-  against cvxpy).
-
-Every function is pure: numpy arrays in, frozen results out, no units, no text for a
-terminal. Errors are :class:`~rbcli.core.balance.common.BalanceValueError` naming the
-parameter at fault.
+``V = V0 + alpha W`` (readings ``amplitude e^{i phase}``, row k a sensor at a speed; masses
+``m e^{i angle}``; alpha from a trial run per plane, :func:`influence_matrix`). :func:`solve`:
+``exact`` (N = P); ``least-squares`` (min ``sum (w_k |r_k|)^2``, Goodman 1964, J. Eng. Ind.
+86(3):273-279, by a Householder QR; ``robust``: Huber's ``min(1, c/|r_k|)``, c = 2.448 s, s =
+median |r_k|/sqrt(ln 4): 95 % of a complex Gaussian's residuals within c); ``min-max`` (min
+``max w_k |r_k|``, Foiles, Allaire and Gunter; hsbalance's ``Min_max``; :mod:`.cone`). Limits
+``|W_j| <= U_j``, ``|r_k| <= L_k`` make a cone program; unmeetable, the least-violating
+correction. Sums in a fixed order (no BLAS): the same bits for any BLAS thread count.
 """
 
 from __future__ import annotations
@@ -43,7 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli.core.balance.common import BalanceValueError
+from rbcli.core.balance.common import SMALL_RESPONSE_AMPLITUDE, SMALL_RESPONSE_PHASE_DEG, BalanceValueError
+from rbcli.core.field.cone import Cones, lu_solve, singular_values, socp
 
 #: the solve methods, in the words the command line uses
 METHODS = ("exact", "least-squares", "min-max")
@@ -51,6 +27,9 @@ METHODS = ("exact", "least-squares", "min-max")
 #: a square or tall influence matrix whose smallest singular value is below this fraction of
 #: its largest has columns that do not separate the planes: no correction can be computed
 SINGULAR_RTOL = 1e-14
+
+#: Huber's threshold in Rayleigh scales: exp(-c²/2) = 5 % of good readings beyond it
+HUBER_C = math.sqrt(-2.0 * math.log(0.05))
 
 
 def _complex_array(v: object, name: str, ndim: int) -> np.ndarray:
@@ -65,28 +44,20 @@ def _complex_array(v: object, name: str, ndim: int) -> np.ndarray:
     return a
 
 
+def small_response(v0: complex, v1: complex) -> bool:
+    """Whether a trial changed a reading too little to trust (sheet §5.1; ACOEM asks 30 %):
+    small unless the amplitude changed by >= 25 % or the phase by >= 25 deg."""
+    a0, a1 = abs(v0), abs(v1)
+    if a0 == 0.0 or a1 == 0.0:
+        return a1 == a0
+    return (abs(a1 - a0) / a0 < SMALL_RESPONSE_AMPLITUDE
+            and abs(math.degrees(cmath.phase(v1 / v0))) < SMALL_RESPONSE_PHASE_DEG)
+
+
 def influence_matrix(v0: object, runs: object, trials: object, *, cumulative: bool = False) -> np.ndarray:
-    """The influence coefficients of P trial runs (sheet §5.1).
-
-    Parameters
-    ----------
-    v0 : (N,) complex — the readings without trial masses
-    runs : (P, N) complex — the readings of run j, with trial j on
-    trials : (P,) complex — trial mass e^{i angle} of run j (any mass unit; the
-        coefficients are per that unit)
-    cumulative : bool — every trial was left on for the later runs: run j's change is
-        counted from run j-1 (for two planes, sheet §5.1's "trial A left on during run B")
-
-    Returns
-    -------
-    (N, P) complex ndarray — ``alpha[:, j] = (runs[j] - ref_j) / trials[j]``, ``ref_j = v0``
-    (or ``runs[j - 1]`` for ``cumulative``, j > 0).
-
-    Raises
-    ------
-    BalanceValueError
-        shapes that do not match; a zero trial (``trials``).
-    """
+    """(N, P) ``alpha[:, j] = (runs[j] - ref_j) / trials[j]``, ``ref_j = v0`` (or ``runs[j-1]``
+    when every trial was left on, ``cumulative``); ``v0`` (N,), ``runs`` (P, N), ``trials``
+    (P,) mass e^{i angle} (the coefficients are per its unit)."""
     V0 = _complex_array(v0, "v0", 1)
     R = _complex_array(runs, "runs", 2)
     T = _complex_array(trials, "trials", 1)
@@ -95,129 +66,218 @@ def influence_matrix(v0: object, runs: object, trials: object, *, cumulative: bo
                                         f"got shape {R.shape}")
     if np.any(T == 0):
         raise BalanceValueError("trials", "trial masses must not be zero")
-    cols = []
-    for j in range(T.shape[0]):
-        ref = R[j - 1] if (cumulative and j > 0) else V0
-        cols.append((R[j] - ref) / T[j])
-    return np.column_stack(cols)
+    return np.column_stack([(R[j] - (R[j - 1] if cumulative and j else V0)) / T[j] for j in range(T.size)])
+
+
+def classic(v0: list[complex], runs: list[list[complex]], trials: list[complex], cumulative: bool) -> tuple:
+    """The one- and two-plane solves rbcli always did (their outputs are golden, bit for bit):
+    (alpha, W, residual, det, cond). One plane: ``H = (V1 - V0)/T``, ``W = -V0/H`` in Python's
+    complex arithmetic; two: numpy's columns and LAPACK's solve."""
+    if len(trials) == 1:
+        H = (complex(runs[0][0]) - complex(v0[0])) / complex(trials[0])
+        if H == 0:
+            raise BalanceValueError("run", "the trial run gave the same reading as the initial run; no "
+                                           "influence coefficient")
+        W = -complex(v0[0]) / H
+        return np.array([[H]]), np.array([W]), np.array([complex(v0[0]) + H * W]), None, None
+    A = influence_matrix(v0, runs, trials, cumulative=cumulative)
+    det = complex(A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0])
+    if not np.max(np.abs(A)) > 0.0 or abs(det) <= 1e-14 * float(np.max(np.abs(A))) ** 2:
+        raise BalanceValueError("run", "the influence matrix is singular: the trial runs do not separate the "
+                                       "two planes")
+    W = np.linalg.solve(A, -np.array(v0))
+    return A, W, np.array(v0) + A @ W, det, float(np.linalg.cond(A))
 
 
 @dataclass(frozen=True, eq=False)
 class FieldSolution:
-    """A correction and what it leaves.
-
-    Attributes
-    ----------
-    corrections : (P,) complex ndarray — mass e^{i angle} to add in each plane (the unit
-        and radius of the trial masses the coefficients are per), read-only
-    residuals : (N,) complex ndarray — ``V0 + alpha W``, the readings predicted after the
-        correction (the linear model), read-only
-    method : str — "exact", "least-squares" or "min-max"
-    cond : float — 2-norm condition number of alpha (largest / smallest singular value)
-    det : complex | None — determinant of alpha when it is square
-    objective : float — ``max_k w_k |r_k|`` (min-max), ``sqrt(sum (w_k |r_k|)^2)``
-        (least squares) or 0 (exact)
-    """
+    """A correction (P,) mass e^{i angle} to add and the readings it leaves, ``V0 + alpha W``
+    (read-only); the method; cond and |det| (square; None: it overflows); the objective
+    (``max w_k |r_k|``, ``sqrt(sum (w_k |r_k|)^2)`` or 0); the limits met with equality
+    (("mass", plane), ("reading", row)) and the objective without each; max |r_k|/L_k; Huber's
+    weights."""
 
     corrections: np.ndarray
     residuals: np.ndarray
     method: str
     cond: float
-    det: complex | None
+    det: float | None
     objective: float
+    active: tuple[tuple[str, int], ...] = ()
+    without: tuple[float, ...] = ()
+    violation: float = 0.0
+    robust: np.ndarray | None = None
+
+    @property
+    def feasible(self) -> bool:
+        return self.violation <= 1.0 + 1e-9
 
 
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=complex)
+def _ro(a: np.ndarray, dtype: type = complex) -> np.ndarray:
+    a = np.array(a, dtype=dtype)
     a.setflags(write=False)
     return a
 
 
-def check_weights(weights: object | None, n: int) -> np.ndarray:
-    """(n,) positive finite weights (all 1 for None)."""
-    if weights is None:
-        return np.ones(n)
+def _positive(v: object | None, n: int, name: str, none: float) -> np.ndarray:
+    """(n,) positive numbers (``weights``; a limit may be inf: none), ``none`` each for None."""
     try:
-        w = np.asarray(weights, dtype=float)
+        x = np.full(n, none) if v is None else np.asarray(v, dtype=float)
     except (TypeError, ValueError):
-        raise BalanceValueError("weights", "weights must be numbers") from None
-    if w.shape != (n,):
-        raise BalanceValueError("weights", f"give one weight per reading ({n}), not {w.size}")
-    if not np.all(np.isfinite(w)) or not np.all(w > 0):
-        raise BalanceValueError("weights", "weights must be positive finite numbers")
-    return w
+        raise BalanceValueError(name, f"{name} must be numbers") from None
+    if x.shape != (n,):
+        raise BalanceValueError(name, f"give one {name} value per {'plane' if name == 'max_mass' else 'reading'} "
+                                      f"({n}), not {x.size}")
+    if not np.all(x > 0) or not np.all(x < np.inf if name == "weights" else x == x):
+        raise BalanceValueError(name, f"{name} must be positive finite numbers")
+    return x
 
 
-def solve(alpha: object, v0: object, method: str | None = None, weights: object | None = None) -> FieldSolution:
-    """The correction W for the readings ``v0`` of a rotor with influence matrix ``alpha``.
-
-    Parameters
-    ----------
-    alpha : (N, P) complex — influence coefficients, N >= P
-    v0 : (N,) complex — readings to cancel
-    method : str, optional — "exact" (N = P only), "least-squares" or "min-max" (N > P);
-        default: exact when N = P, else least squares. With N = P every method is exact
-        (the residual is zero) and "exact" is reported.
-    weights : (N,) float, optional — w_k > 0 per reading (least squares and min-max)
-
-    Returns
-    -------
-    FieldSolution
-
-    Raises
-    ------
-    BalanceValueError
-        fewer readings than planes (``v0``); an unknown method (``method``); columns that
-        do not separate the planes (``runs``: the matrix is singular to round-off).
-    """
-    A = _complex_array(alpha, "alpha", 2)
-    V0 = _complex_array(v0, "v0", 1)
+def solve(alpha: object, v0: object, method: str | None = None, weights: object | None = None, *,
+          max_mass: object | None = None, limits: object | None = None, robust: bool = False,
+          costs: bool = True) -> FieldSolution:
+    """The correction W for readings ``v0`` (N,) and influence ``alpha`` (N, P), N >= P: by
+    ``method`` ("exact" for N = P, "least-squares" the default, "min-max"; with N = P exact
+    unless a limit binds), reading ``weights`` w_k > 0, ``max_mass`` (P,) largest |W_j| and
+    ``limits`` (N,) largest |r_k| (inf: none), ``robust`` (Huber); ``costs``: solve again
+    without each active limit. A BalanceValueError names the parameter (``runs``: columns that
+    do not separate the planes)."""
+    A, V0 = _complex_array(alpha, "alpha", 2), _complex_array(v0, "v0", 1)
     n, p = A.shape
-    if V0.shape != (n,):
-        raise BalanceValueError("v0", f"v0 must hold {n} readings, got {V0.shape[0]}")
-    if p < 1:
-        raise BalanceValueError("alpha", "at least one plane is needed")
-    if n < p:
-        raise BalanceValueError("v0", f"{p} planes need at least {p} readings per run, got {n}")
-    if method is not None and method not in METHODS:
-        raise BalanceValueError("method", f"method must be one of {', '.join(METHODS)}, not {method!r}")
-    if method == "exact" and n != p:
-        raise BalanceValueError("method", f"an exact solve needs as many readings as planes ({p}), got {n}")
-    w = check_weights(weights, n)
-    sv = np.linalg.svd(A, compute_uv=False)
-    if not sv[0] > 0.0 or sv[-1] <= SINGULAR_RTOL * sv[0]:
-        raise BalanceValueError(
-            "runs", "the influence matrix is singular: the trial runs do not separate the planes")
-    cond = float(sv[0] / sv[-1])
-    if n == p:
-        if p == 1:
-            # field_single_plane's W = -V0/H, in Python's complex division (numpy's differs in
-            # the last bit): a trim run from stored coefficients gives the classic bits
-            W = np.array([-complex(V0[0]) / complex(A[0, 0])])
-        else:
-            W = np.linalg.solve(A, -V0)  # field_two_plane's solve
-        det = complex(A[0, 0]) if p == 1 else complex(np.linalg.det(A))
-        return FieldSolution(_ro(W), _ro(V0 + (A @ W if p <= 2 else matvec(A, W))), "exact", cond, det, 0.0)
-    W = least_squares(A, V0, w)
-    # the condition number of alpha is that of its R (A = QR, Q with orthonormal columns), a
-    # P x P matrix: the printed number is the same everywhere (LAPACK's kernels on a tall
-    # matrix can differ in the last bits from machine to machine)
+    if V0.shape != (n,) or not 1 <= p <= n:
+        raise BalanceValueError("v0", f"{p} planes need at least {p} readings per run, got {V0.size}")
+    if method not in (None, *METHODS) or method == "exact" and n != p:
+        raise BalanceValueError("method", f"an exact solve needs as many readings as planes ({p}), got {n}"
+                                if method == "exact" else f"method must be one of {', '.join(METHODS)}")
+    if robust and (method == "min-max" or n <= p + 1):
+        raise BalanceValueError("robust", "a robust fit is a least-squares fit with more readings than planes + 1")
+    w = _positive(weights, n, "weights", 1.0)
+    U, L = _positive(max_mass, p, "max_mass", np.inf), _positive(limits, n, "limits", np.inf)
     R, _ = householder_qr(A, np.zeros(n, dtype=complex))
-    svr = np.linalg.svd(np.array(R), compute_uv=False)
-    cond = float(svr[0] / svr[-1])
-    if method == "min-max":
-        W = min_max(A, V0, w, start=W)
-        r = V0 + matvec(A, W)
-        return FieldSolution(_ro(W), _ro(r), "min-max", cond, None, float(np.max(w * np.abs(r))))
+    sv = singular_values(np.array(R))
+    if not sv[0] > 0.0 or sv[-1] <= SINGULAR_RTOL * sv[0]:
+        raise BalanceValueError("runs", "the influence matrix is singular: the trial runs do not separate the planes")
+    det = (abs(complex(A[0, 0])) if p == 1 else abs(complex(np.linalg.det(A))) if p == 2 else
+           math.prod(abs(R[k][k]) for k in range(p))) if n == p else None
+    common = dict(cond=float(sv[0] / sv[-1]), det=det if det is None or math.isfinite(det) else None,
+                  robust=huber(A, V0, w) if robust else None)
+    wr = w if common["robust"] is None else w * common["robust"]
+    if n == p:  # Python's complex division and LAPACK's 2 x 2 solve: the classic solves' bits
+        W = np.array([-complex(V0[0]) / complex(A[0, 0])]) if p == 1 else \
+            np.linalg.solve(A, -V0) if p == 2 else lu_solve(A, -V0)
+    else:
+        W = cone_solve(A, V0, w, "min-max", None, None) if method == "min-max" else least_squares(A, V0, wr)
+    name = "exact" if n == p else method or "least-squares"
+    r = V0 + (A @ W if n == p <= 2 else matvec(A, W))
+    if np.all(np.abs(W) <= U) and np.all(np.abs(r) <= L):
+        return FieldSolution(_ro(W), _ro(r), name, objective=_measure(name, wr, r), violation=_violation(r, L),
+                             **common)
+    return _limited(A, V0, method, weights, wr, U, L, robust, costs, common)
+
+
+def _limited(A, V0, method, weights, wr, U, L, robust, costs, common) -> FieldSolution:
+    """The solution under the limits, the limits it meets with equality and what each costs."""
+    (n, p), name = A.shape, "min-max" if method == "min-max" else "least-squares"
+    W = cone_solve(A, V0, wr, name, U, L)
     r = V0 + matvec(A, W)
-    return FieldSolution(_ro(W), _ro(r), "least-squares", cond, None, float(np.linalg.norm(w * r)))
+    act = tuple([("mass", j) for j in range(p) if abs(W[j]) >= U[j] * (1 - 1e-9)]
+                + [("reading", k) for k in range(n) if abs(r[k]) >= L[k] * (1 - 1e-9)])
+    v = _violation(r, L)
+    without = tuple(solve(A, V0, method, weights, robust=robust, costs=False,
+                          max_mass=np.where(np.arange(p) == i, np.inf, U) if kind == "mass" else U,
+                          limits=np.where(np.arange(n) == i, np.inf, L) if kind == "reading" else L).objective
+                    for kind, i in act) if costs and v <= 1.0 + 1e-9 else ()
+    return FieldSolution(_ro(W), _ro(r), name, objective=_measure(name, wr, r), active=act, without=without,
+                         violation=v, **common)
+
+
+def _violation(r: np.ndarray, L: np.ndarray) -> float:
+    """max_k |r_k| / L_k over the readings with a limit (0: none)."""
+    lim = np.isfinite(L)
+    return float(np.max(np.abs(r[lim]) / L[lim])) if lim.any() else 0.0
+
+
+def _measure(method: str, w: np.ndarray, r: np.ndarray) -> float:
+    a = w * np.abs(r)
+    return float(np.max(a)) if method == "min-max" else 0.0 if method == "exact" else math.sqrt(math.fsum(a * a))
+
+
+def huber(A: np.ndarray, V0: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """Huber's weight of each reading, by iteratively reweighted least squares (the module
+    notes): 1 for a reading within ``c`` of the fit, ``c/|r_k|`` beyond."""
+    h = np.ones(V0.size)
+    for _ in range(100):
+        r = np.abs(V0 + matvec(A, least_squares(A, V0, w * h)))
+        c = HUBER_C * float(np.median(r)) / math.sqrt(math.log(4.0))
+        new = np.minimum(1.0, c / np.maximum(r, 1e-300)) if c > 0.0 else np.ones(V0.size)
+        if np.max(np.abs(new - h)) <= 1e-12:
+            break
+        h = new
+    return _ro(h, float)
+
+
+def cone_solve(A: np.ndarray, V0: np.ndarray, w: np.ndarray, method: str, U: np.ndarray | None,
+               L: np.ndarray | None) -> np.ndarray:
+    """W: least squares or min-max under ``|W_j| <= U_j`` and ``|r_k| <= L_k`` (None: no
+    limits); when the limits cannot all be met, the correction that violates them least,
+    ``min s`` with ``|r_k| <= s L_k``.
+
+    Solved in scaled real variables ``y``, ``W_j = y_j sv / cn_j`` (readings O(1), each
+    plane's weighted column of unit norm): ``r_k / sv = M_k y + c_k``."""
+    n, p = A.shape
+    sv = float(np.max(w * np.abs(V0)))
+    if not sv > 0.0:
+        return np.zeros(p, dtype=complex)
+    U = np.full(p, np.inf) if U is None else U
+    L = np.full(n, np.inf) if L is None else L
+    cn = np.sqrt(np.sum(np.abs(w[:, None] * A) ** 2, axis=0))
+    As, vs = A / cn, V0 / sv
+    M = np.zeros((n, 2, 2 * p))
+    M[:, 0, :p], M[:, 0, p:], M[:, 1, :p], M[:, 1, p:] = As.real, -As.imag, As.imag, As.real
+    c = np.stack([vs.real, vs.imag], axis=1)
+    mj = np.flatnonzero(np.isfinite(U))
+    Gm = np.zeros((mj.size, 2, 2 * p))
+    Gm[np.arange(mj.size), 0, mj], Gm[np.arange(mj.size), 1, p + mj] = 1.0, 1.0
+    lk = np.flatnonzero(np.isfinite(L))
+    Lk = L[lk] / sv
+
+    def cones(G, h, a, beta, extra: int) -> list:
+        """the constraints with ``extra`` variables after y (zero columns)"""
+        return [np.concatenate([G, np.zeros(G.shape[:2] + (extra,))], axis=2), h,
+                np.concatenate([np.zeros((G.shape[0], 2 * p)), a], axis=1), beta]
+
+    def stack(*parts) -> Cones:
+        return Cones(*(np.concatenate(x) for x in zip(*parts)))
+
+    def mass(extra: int, shrink: float = 1.0) -> list:
+        return cones(Gm, np.zeros((mj.size, 2)), np.zeros((mj.size, extra)), U[mj] * cn[mj] / sv * shrink, extra)
+
+    y = np.zeros(2 * p)
+    if lk.size:  # phase 1: the least violation s, |M_k y + c_k| <= s L_k (strictly inside the masses)
+        z = socp(np.zeros((0, 2 * p + 1)), np.zeros(0), np.eye(2 * p + 1)[-1],
+                 stack(mass(1, 1.0 - 1e-6), cones(M[lk], c[lk], Lk[:, None], np.zeros(lk.size), 1)),
+                 np.append(y, 2.0 * float(np.max(np.linalg.norm(c[lk], axis=1) / Lk)) + 1.0))
+        y, s = z[:-1], float(np.max(np.linalg.norm(np.einsum("nkj,j->nk", M[lk], z[:-1]) + c[lk], axis=1) / Lk))
+        if s >= 1.0 - 1e-9:
+            return (y[:p] + 1j * y[p:]) * sv / cn
+    limit = cones(M[lk], c[lk], np.zeros((lk.size, 1 if method == "min-max" else 0)), Lk,
+                  1 if method == "min-max" else 0)
+    if method == "min-max":
+        r = np.linalg.norm(np.einsum("nkj,j->nk", M, y) + c, axis=1)
+        obj = cones(w[:, None, None] * M, w[:, None] * c, np.ones((n, 1)), np.zeros(n), 1)
+        z = socp(np.zeros((0, 2 * p + 1)), np.zeros(0), np.eye(2 * p + 1)[-1], stack(obj, mass(1), limit),
+                 np.append(y, 2.0 * float(np.max(w * r)) + 1.0))[:-1]
+    else:
+        B = (w[:, None, None] * M).reshape(2 * n, 2 * p)
+        z = socp(B, (w[:, None] * c).reshape(2 * n), np.zeros(2 * p), stack(mass(0), limit), y)
+    return (z[:p] + 1j * z[p:]) * sv / cn
 
 
 def deg(z: complex) -> float:
     """arg z in degrees in [0, 360) (within 1e-9° below 360 is 0; never -0.0): the angle of
     a reading or a mass."""
     a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
-    return 0.0 if a >= 360.0 - 1e-9 else a + 0.0
+    return 0.0 if a >= 360.0 - 1e-9 or z == 0 else a + 0.0
 
 
 def dot(a: list[complex], b: list[complex]) -> complex:
@@ -235,22 +295,9 @@ def matvec(alpha: np.ndarray, w: object) -> np.ndarray:
 
 
 def least_squares(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> np.ndarray:
-    """``argmin_W sum_k (w_k |v0_k + (alpha W)_k|)^2`` by a Householder QR of ``D alpha``.
-
-    Plain Python complex arithmetic with exactly rounded sums (the matrices are small: N
-    readings by P planes): the answer is the same to the last bit on any machine, so golden
-    outputs and trim runs from stored coefficients reproduce it exactly.
-
-    Parameters
-    ----------
-    alpha : (N, P) complex, full column rank
-    v0 : (N,) complex
-    weights : (N,) positive
-
-    Returns
-    -------
-    (P,) complex ndarray
-    """
+    """``argmin_W sum_k (w_k |v0_k + (alpha W)_k|)^2`` (alpha (N, P) of full rank) by a
+    Householder QR of ``D alpha``, in Python complex arithmetic with exactly rounded sums:
+    the same bits on any machine (golden outputs and trim runs reproduce it)."""
     R, c = householder_qr(weights[:, None] * alpha, -weights * v0)
     p = len(R)
     W = [0j] * p
@@ -288,125 +335,3 @@ def householder_qr(A: np.ndarray, b: np.ndarray) -> tuple[list[list[complex]], l
             y[i] -= f * u[i - k]
     R = [[M[i][j] if j >= i else 0j for j in range(p)] for i in range(p)]
     return R, y[:p]
-
-
-# ----------------------------------------------------------------------------------------
-# min-max
-# ----------------------------------------------------------------------------------------
-
-
-def _real_form(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Row k of ``D (alpha W + v0)`` as ``M_k x + c_k`` (2-vectors) with ``x = [Re W, Im W]``.
-
-    Returns (M (N, 2, 2P), c (N, 2))."""
-    A = weights[:, None] * alpha
-    b = weights * v0
-    n, p = A.shape
-    M = np.zeros((n, 2, 2 * p))
-    M[:, 0, :p], M[:, 0, p:] = A.real, -A.imag
-    M[:, 1, :p], M[:, 1, p:] = A.imag, A.real
-    return M, np.stack([b.real, b.imag], axis=1)
-
-
-def min_max(alpha: np.ndarray, v0: np.ndarray, weights: np.ndarray, *, start: np.ndarray) -> np.ndarray:
-    """``argmin_W max_k w_k |v0_k + (alpha W)_k|`` (see the module notes).
-
-    Parameters
-    ----------
-    alpha : (N, P) complex, full column rank, N > P
-    v0 : (N,) complex
-    weights : (N,) positive
-    start : (P,) complex — a starting point (the least-squares answer)
-
-    Returns
-    -------
-    (P,) complex ndarray
-    """
-    from scipy.optimize import minimize
-
-    n, p = alpha.shape
-    # scale: readings to O(1), each plane's column to unit norm (SLSQP's tolerances are absolute)
-    sv = float(np.max(weights * np.abs(v0)))
-    if not sv > 0.0:
-        return np.zeros(p, dtype=complex)  # nothing to cancel: the zero correction is optimal
-    cn = np.linalg.norm(weights[:, None] * alpha, axis=0)
-    As = alpha / cn  # W = y sv / cn: As y + vs = (alpha W + v0) / sv
-    vs = v0 / sv
-    M, c = _real_form(As, vs, weights)
-    y0 = start * cn / sv
-    x0 = np.concatenate([y0.real, y0.imag])
-    t0 = float(np.max(np.linalg.norm(np.einsum("nkj,j->nk", M, x0) + c, axis=1)))
-
-    def cons(z: np.ndarray) -> np.ndarray:
-        r = np.einsum("nkj,j->nk", M, z[:-1]) + c
-        return z[-1] ** 2 - np.sum(r * r, axis=1)
-
-    def cons_jac(z: np.ndarray) -> np.ndarray:
-        r = np.einsum("nkj,j->nk", M, z[:-1]) + c
-        return np.hstack([-2.0 * np.einsum("nk,nkj->nj", r, M), np.full((n, 1), 2.0 * z[-1])])
-
-    grad = np.zeros(2 * p + 1)
-    grad[-1] = 1.0
-    res = minimize(lambda z: z[-1], np.append(x0, t0), jac=lambda z: grad, method="SLSQP",
-                   constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
-                   options={"ftol": 1e-15, "maxiter": 2000})
-    x = res.x[:-1] if np.all(np.isfinite(res.x)) else x0
-    best = _max_norm(M, c, x)
-    if best > t0:  # SLSQP made it worse (it never should): keep the start
-        x, best = x0, t0
-    x = _polish(M, c, x, best)
-    y = x[:p] + 1j * x[p:]
-    return y * sv / cn
-
-
-def _max_norm(M: np.ndarray, c: np.ndarray, x: np.ndarray) -> float:
-    return float(np.max(np.linalg.norm(np.einsum("nkj,j->nk", M, x) + c, axis=1)))
-
-
-def _polish(M: np.ndarray, c: np.ndarray, x: np.ndarray, t: float) -> np.ndarray:
-    """Newton's method on the KKT equations of the active set of a near-optimal ``x``.
-
-    Unknowns ``(x, t, lambda_S)``; equations ``|r_k|^2 - t^2 = 0`` (k in S),
-    ``sum_S lambda_k M_k^T r_k = 0`` and ``sum_S lambda_k = 1``. Kept only if it converges
-    to multipliers >= 0 with every other residual below t and a max no larger than before;
-    otherwise ``x`` is returned as it was.
-    """
-    n, _, m = M.shape
-    r = np.einsum("nkj,j->nk", M, x) + c
-    norms = np.linalg.norm(r, axis=1)
-    if not t > 0.0:
-        return x
-    S = np.flatnonzero(norms >= t * (1.0 - 1e-6))
-    k = S.size
-    G = np.einsum("sk,skj->sj", r[S], M[S])  # rows: M_k^T r_k
-    # multipliers from the stationarity equations (least squares, then normalised)
-    lam, *_ = np.linalg.lstsq(np.vstack([G.T, np.ones((1, k))]),
-                              np.concatenate([np.zeros(m), [1.0]]), rcond=None)
-    z = np.concatenate([x, [t], lam])
-    for _ in range(30):
-        xx, tt, ll = z[:m], z[m], z[m + 1:]
-        rr = np.einsum("skj,j->sk", M[S], xx) + c[S]
-        GG = np.einsum("sk,skj->sj", rr, M[S])
-        F = np.concatenate([np.sum(rr * rr, axis=1) - tt * tt, GG.T @ ll, [np.sum(ll) - 1.0]])
-        J = np.zeros((k + m + 1, m + 1 + k))
-        J[:k, :m] = 2.0 * GG
-        J[:k, m] = -2.0 * tt
-        J[k:k + m, :m] = np.einsum("s,skj,ski->ij", ll, M[S], M[S])
-        J[k:k + m, m + 1:] = GG.T
-        J[k + m, m + 1:] = 1.0
-        try:
-            step = np.linalg.lstsq(J, -F, rcond=None)[0]
-        except np.linalg.LinAlgError:
-            return x
-        z = z + step
-        if not np.all(np.isfinite(z)):
-            return x
-        if np.max(np.abs(step)) <= 1e-15 * max(1.0, float(np.max(np.abs(z)))):
-            break
-    xx, tt, ll = z[:m], z[m], z[m + 1:]
-    if np.any(ll < -1e-9) or not tt > 0.0:
-        return x
-    new = _max_norm(M, c, xx)
-    if new > t * (1.0 + 1e-12) or abs(new - tt) > 1e-9 * tt:
-        return x
-    return xx

@@ -1,14 +1,9 @@
 """The trial mass to start with (sheet §5.1).
 
-:func:`suggest_trial` sizes a trial mass before the first run: its centrifugal force
-``m r omega^2`` is a set fraction (default 10 %) of the static load on the bearing
-nearest the trial plane, ``m_T = f F_bearing / (r omega^2)``. The rule is the one rbcli's
-formula sheet records (physics/balance.md §5.1: "the trial's centrifugal force is about
-10 % of the rotor weight (or bearing load), m_T = 0.1 M g/(r omega^2)"; 100 kg, r = 200 mm,
-1500 rpm give 19.9 g), the common shop rule a fraction of 5-10 % of the bearing load;
-ACOEM's "Balancing How To #2 - Selecting a Proper Trial Weight" states what the trial must
-achieve (a change of 30 % in amplitude or 30 degrees in phase) and that the mass follows
-from the rotor's weight and speed.
+:func:`suggest_trial`: a trial whose centrifugal force ``m r omega^2`` is a fraction f
+(default 10 %) of the static load on the bearing nearest its plane, ``m_T = f F / (r
+omega^2)`` (physics/balance.md §5.1; the shop rule is 5-10 %; ACOEM's "Balancing How To #2"
+asks the trial to change a reading by 30 % or 30 degrees).
 """
 
 from __future__ import annotations
@@ -26,17 +21,8 @@ TRIAL_FRACTION_RANGE = (0.01, 0.30)
 
 @dataclass(frozen=True)
 class TrialSuggestion:
-    """A trial mass sized before the first run.
-
-    Attributes
-    ----------
-    mass : float — kg, at ``radius``
-    radius : float — m
-    speed : float — rad/s
-    bearing_load : float — N, the static load on the bearing nearest the plane
-    fraction : float — the trial's centrifugal force / ``bearing_load``
-    force : float — N, ``mass radius speed^2`` = fraction x bearing_load
-    """
+    """A trial mass (kg) at ``radius`` (m) and ``speed`` (rad/s) whose force ``m r w²`` (N) is
+    ``fraction`` of the static ``bearing_load`` (N) on the bearing nearest its plane."""
 
     mass: float
     radius: float
@@ -58,20 +44,8 @@ def static_bearing_loads(mass: float, g: float, z_com: float, bearings: tuple[fl
 
 
 def suggest_trial(bearing_load: float, radius: float, speed: float, fraction: float = TRIAL_FRACTION) -> TrialSuggestion:
-    """The trial mass whose centrifugal force at ``speed`` is ``fraction`` of
-    ``bearing_load``: ``m_T = fraction F / (r omega^2)`` (see the module notes).
-
-    Parameters
-    ----------
-    bearing_load : float — N, > 0: the static load on the bearing nearest the trial plane
-    radius : float — m, > 0: where the trial sits
-    speed : float — rad/s, > 0: the balancing speed
-    fraction : float — in [0.01, 0.30]
-
-    Returns
-    -------
-    TrialSuggestion
-    """
+    """``m_T = fraction F / (r omega^2)``: a trial at ``radius`` (m) whose force at ``speed``
+    (rad/s) is ``fraction`` (0.01 to 0.30) of ``bearing_load`` (N)."""
     F = positive(bearing_load, "bearing load", "bearing_load")
     r = positive(radius, "trial radius", "trial_radius")
     w = positive(speed, "speed", "speed")

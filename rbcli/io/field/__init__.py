@@ -11,6 +11,8 @@ CHOICES = {
     "measure": ("pk", "pk-pk", "rms"),
     "standard": ("iso20816-3",),
     "foundation": ("rigid", "flexible"),
+    "robust": ("huber",),
+    "numbering": ("with", "against"),
 }
 
 

@@ -1,30 +1,14 @@
-"""Read a file of influence coefficients written by ``rbcli field-balance --save-coefficients``.
-
-The file is JSON (:data:`FORMAT`, version 1)::
-
-    {
-      "format": "rbcli field-balance influence coefficients",
-      "version": 1,
-      "influence": {"reading_kind": "velocity", "reading_unit": "m/s", "measure": "rms",
-                    "per": "kg of trial mass at the plane's trial radius", ...},
-      "conventions": {"phase": "lag", "angle_sense": "against", "rotation": "cw", ...},
-      "sensors": ["NDE-H", "NDE-V"],
-      "speeds": [{"name": "run", "speed": 154.985}],            # rad/s, or null
-      "planes": [{"name": "A", "trial_radius": 0.25}],          # m, or null
-      "rows": [{"sensor": "NDE-H", "speed": "run"}, ...],       # one per reading
-      "coefficients": [[{"re": ..., "im": ..., "magnitude": ..., "angle_deg": ...}, ...], ...]
-    }
-
-``re`` and ``im`` are the coefficients exactly (JSON numbers are written with Python's
-shortest round-trip repr, so they read back bit for bit); ``magnitude`` and ``angle_deg``
-are for people and are not read. Every problem is an :class:`rbcli.errors.InputError`
-naming the file.
+"""Read a file of influence coefficients written by ``--save-coefficients``: JSON (version 2;
+version 1, without a fingerprint, is read too) with a ``sha256:`` fingerprint of
+:data:`FINGERPRINTED`, rows every sensor at every speed, speed by speed, and ``re``, ``im``
+exact (they read back bit for bit). A file changed since written, or whose rows are out of
+order, repeated or missing, is refused — never read in another order.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
-import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -33,17 +17,21 @@ from rbcli.io.field import CHOICES
 from rbcli.io.reader import read_regular
 
 FORMAT = "rbcli field-balance influence coefficients"
-VERSION = 1
+VERSION = 2
+#: the keys the fingerprint covers (everything the file says of its job and coefficients)
+FINGERPRINTED = ("influence", "conventions", "sensors", "speeds", "planes", "rows", "coefficients")
+
+
+def fingerprint(doc: dict) -> str:
+    """``sha256:`` of the fingerprinted keys of a coefficients document, as canonical JSON."""
+    text = json.dumps({k: doc.get(k) for k in FINGERPRINTED}, sort_keys=True, separators=(",", ":"))
+    return "sha256:" + hashlib.sha256(text.encode("utf-8")).hexdigest()
 MAX_COEFF_BYTES = 8 * 1024 * 1024
 
 
 @dataclass(frozen=True)
 class SavedCoefficients:
-    """What a coefficients file holds (SI: rad/s, m; coefficients per kg).
-
-    ``coefficients`` is row-major: ``coefficients[k][j]`` for reading ``k`` (``rows[k]``)
-    and plane ``j``.
-    """
+    """What a coefficients file holds (SI; ``coefficients[k][j]``: reading k, plane j, per kg)."""
 
     source: str
     reading_kind: str | None
@@ -77,7 +65,7 @@ def _opt_str(v: Any, allowed: tuple[str, ...], source: str, what: str) -> str | 
 
 
 def _number(v: Any, source: str, what: str, *, positive: bool = False) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not abs(v) < 1e308:
         raise _err(source, f"{what} must be a finite number, not {v!r}")
     if positive and not v > 0:
         raise _err(source, f"{what} must be positive, not {v!r}")
@@ -109,13 +97,18 @@ def parse_coefficients(doc: Any, source: str = "<coefficients>") -> SavedCoeffic
     """Check a coefficients document (parsed JSON)."""
     if not isinstance(doc, dict) or doc.get("format") != FORMAT:
         raise _err(source, f"not a coefficients file: its 'format' is not '{FORMAT}'")
-    if doc.get("version") != VERSION:
-        raise _err(source, f"coefficients file version {doc.get('version')!r}; this rbcli reads version {VERSION}")
+    if doc.get("version") not in (1, VERSION):
+        raise _err(source, f"coefficients file version {doc.get('version')!r}; this rbcli reads versions 1 and {VERSION}")
+    if doc["version"] == VERSION and doc.get("fingerprint") != fingerprint(doc):
+        raise _err(source, "the file does not match its fingerprint: its rows, names, units or coefficients "
+                           "were changed after rbcli wrote it; save the coefficients again (--save-coefficients)")
     inf = _get(doc, "influence", source, "the file")
     kind = _opt_str(_get(inf, "reading_kind", source, "influence"), ("displacement", "velocity", "acceleration"),
                     source, "influence.reading_kind")
     measure = _opt_str(inf.get("measure"), CHOICES["measure"], source, "influence.measure")
     conv = _get(doc, "conventions", source, "the file")
+    if not isinstance(inf, dict) or not isinstance(conv, dict):
+        raise _err(source, "influence and conventions must be objects {key: value}")
     words = {k: _opt_str(conv.get(k), CHOICES[k], source, f"conventions.{k}")
              for k in ("phase", "angle_sense", "rotation")}
     sensors = _get(doc, "sensors", source, "the file")
@@ -149,16 +142,19 @@ def _named(doc: dict, keys: tuple[str, str], words: tuple[str, str],
 
 
 def _rows(rows: Any, sensors: list[str], speeds: tuple, source: str) -> tuple[tuple[str, str], ...]:
-    """(sensor, speed) of each reading: every sensor at every speed."""
-    if not isinstance(rows, list) or len(rows) != len(sensors) * len(speeds):
-        raise _err(source, f"rows must list {len(sensors) * len(speeds)} readings (every sensor at every speed)")
-    out = []
-    for r in rows:
-        s, v = _get(r, "sensor", source, "a row"), _get(r, "speed", source, "a row")
-        if s not in sensors or v not in [x[0] for x in speeds]:
-            raise _err(source, f"a row names sensor {s!r} at speed {v!r}, not among the file's sensors and speeds")
-        out.append((s, v))
-    return tuple(out)
+    """(sensor, speed) of each reading: every sensor at every speed, speed by speed."""
+    want = [(s, v) for v, _ in speeds for s in sensors]
+    if len(set(sensors)) != len(sensors) or len({v for v, _ in speeds}) != len(speeds):
+        raise _err(source, "the sensors' names and the speeds' names must each differ")
+    if not isinstance(rows, list) or len(rows) != len(want):
+        raise _err(source, f"rows must list {len(want)} readings (every sensor at every speed)")
+    for k, (r, (s, v)) in enumerate(zip(rows, want)):
+        got = (_get(r, "sensor", source, "a row"), _get(r, "speed", source, "a row"))
+        if got != (s, v):
+            raise _err(source, f"row {k + 1} is sensor {got[0]!r} at speed {got[1]!r} where sensor {s!r} at "
+                               f"speed {v!r} belongs (every sensor at every speed, speed by speed): rows out of "
+                               "order, repeated or missing are never read in another order")
+    return tuple(want)
 
 
 def _coefficients(rows: Any, n: int, p: int, source: str) -> tuple[tuple[complex, ...], ...]:

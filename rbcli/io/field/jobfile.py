@@ -1,30 +1,6 @@
-"""Read a field-balancing job file (YAML) into a checked :class:`FieldJob`, every problem
-located at ``file:line:col``.
-
-A job names its sensors, planes (radius, positions), speeds and runs; the readings and
-trial masses stay located texts (``"6.2 mm/s@112"``, ``"50 g@0"``) that
-:mod:`rbcli.api.field.service` reads as the command line reads ``--initial`` and
-``--trial``, so a bad reading is reported at its place in the file. The format::
-
-    rbcli: 1
-    job: field-balance
-    name: ID fan 3
-    units: {length: mm, mass: g}     # bare lengths and masses (default m, and g for masses)
-    conventions: {phase: lag, angle_sense: against, rotation: cw}
-    readings: {measure: rms}         # the measure of readings that state none
-    sensors: [NDE-H, {name: NDE-V, weight: 2}]
-    planes:
-      - {name: A, radius: 250, positions: 8}
-      - {name: B, radius: 250, correction_radius: 300, at: 900}
-    speeds: [{name: run, speed: 1480 rpm}]
-    initial: {run: ["6.2 mm/s@112", "3.9 mm/s@200"]}
-    trials:
-      - {plane: A, mass: "50 g@0", readings: {run: [...]}}
-      - {plane: B, mass: "50 g@0", readings: {run: [...]}}
-
-With one speed, ``speeds`` may be left out and ``initial`` and each trial's ``readings``
-written as plain lists. The JSON Schema is :func:`job_schema` (installed as
-``rbcli/data/fieldjob.schema.json``).
+"""Read a field-balancing job file (YAML) into a checked :class:`FieldJob`, every problem at
+``file:line:col``; its keys are declared in ``rbcli/data/fieldjob.schema.json``. Readings,
+masses, limits and drawers stay located texts, read by :mod:`rbcli.api.field` as parameters.
 """
 
 from __future__ import annotations
@@ -49,31 +25,38 @@ SCHEMA_PATH = Path(__file__).resolve().parents[2] / "data" / "fieldjob.schema.js
 #: a job file is refused above this size (bytes): a job holds a few hundred readings
 MAX_JOB_BYTES = 4 * 1024 * 1024
 
-TOP_KEYS = ("rbcli", "job", "name", "description", "units", "conventions", "readings", "sensors",
-            "planes", "speeds", "initial", "trials", "cumulative", "method", "mass_step",
-            "angle_step", "severity", "rotor", "coefficients")
-UNIT_KEYS = ("length", "mass", "angular_speed")
-CONVENTION_KEYS = ("phase", "angle_sense", "rotation")
-PLANE_KEYS = ("name", "radius", "correction_radius", "positions", "at")
-SPEED_KEYS = ("name", "speed")
-SENSOR_KEYS = ("name", "weight")
-TRIAL_KEYS = ("plane", "mass", "readings")
-SEVERITY_KEYS = ("standard", "group", "foundation")
-ROTOR_KEYS = ("mass", "body", "bearings", "com", "bearing_load", "g", "trial_fraction")
-
+#: the job file's keys, declared once in its JSON Schema (:func:`schema_text`)
+_P = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))["properties"]
+TOP_KEYS = tuple(_P)
+UNIT_KEYS, CONVENTION_KEYS, SEVERITY_KEYS, ROTOR_KEYS = (tuple(_P[k]["properties"]) for k in
+                                                         ("units", "conventions", "severity", "rotor"))
+PLANE_KEYS, TRIAL_KEYS = (tuple(_P[k]["items"]["properties"]) for k in ("planes", "trials"))
+SENSOR_KEYS, SPEED_KEYS = (tuple(_P[k]["items"]["anyOf"][1]["properties"]) for k in ("sensors", "speeds"))
+HOLE_KEYS = tuple(_P["planes"]["items"]["properties"]["holes"]["properties"])
 
 
 @dataclass(frozen=True)
 class Text:
-    """A value as written in the file (a reading, a trial mass) and where."""
+    """A value as written (a reading, a mass, a limit) and where."""
 
     text: str
     where: Location
 
 
 @dataclass(frozen=True)
+class JobHoles:
+    """A plane's holes: angles (deg, hole 1 first), radius (m or None), numbering, per_hole."""
+
+    angles: tuple[float, ...]
+    radius: float | None
+    numbering: str
+    per_hole: int
+    where: Location
+
+
+@dataclass(frozen=True)
 class JobPlane:
-    """name; radius, correction_radius, at: m or None; positions: int or None."""
+    """A plane: lengths m (or None); max_mass (kg, "mass") or (kg m, "unbalance")."""
 
     name: str
     radius: float | None
@@ -81,20 +64,25 @@ class JobPlane:
     positions: int | None
     at: float | None
     where: Location
+    holes: JobHoles | None = None
+    max_mass: tuple[float, str] | None = None
+    max_weights: int | None = None
+    drawer: tuple[Text, ...] | None = None
 
 
 @dataclass(frozen=True)
 class JobSpeed:
-    """name; speed: rad/s or None (not given)."""
+    """A speed: rad/s or None; the largest reading at it."""
 
     name: str
     speed: float | None
     where: Location
+    limit: Text | None = None
 
 
 @dataclass(frozen=True)
 class JobTrial:
-    """The trial run of one plane: its mass@angle and readings per speed, per sensor."""
+    """A plane's trial run: its mass@angle, readings per speed per sensor."""
 
     plane: str
     mass: Text
@@ -104,8 +92,7 @@ class JobTrial:
 
 @dataclass(frozen=True)
 class JobRotor:
-    """What sizes a trial mass: the rotor's mass (kg) or body file (a path), bearings and com
-    (m, along the shaft), an explicit bearing load (N), g (m/s²), the fraction."""
+    """What sizes a trial mass (kg, a path, m, N, m/s²)."""
 
     mass: float | None
     body: str | None
@@ -119,18 +106,14 @@ class JobRotor:
 
 @dataclass(frozen=True)
 class FieldJob:
-    """A checked job file. Lengths m, masses kg, speeds rad/s; readings as located texts.
-
-    ``initial`` and each trial's ``readings`` hold one tuple per speed (in ``speeds``
-    order), each one Text per sensor (in ``sensors`` order). ``keys`` maps every top-level
-    key given to where it is (to locate a conflict with a command-line option); ``units``
-    the file's bare units (a bare trial mass is in ``units["mass"]``, grams by default).
-    """
+    """A checked job file (SI; readings as located texts, per speed per sensor); ``keys``:
+    where each top-level key is; ``units``: the file's bare units (masses g by default)."""
 
     source: str
     name: str | None
     sensors: tuple[str, ...]
     weights: tuple[float, ...] | None
+    limits: tuple[Text | None, ...]
     planes: tuple[JobPlane, ...]
     speeds: tuple[JobSpeed, ...]
     initial: tuple[tuple[Text, ...], ...] | None
@@ -148,6 +131,9 @@ class FieldJob:
     coefficients: str | None
     keys: dict[str, Location]
     units: dict[str, str]
+    drawer: tuple[Text, ...] | None = None
+    max_weights: int | None = None
+    robust: str | None = None
 
 
 def load_job(path: str) -> FieldJob:
@@ -181,14 +167,9 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
     name = fl.string(ctx, items["name"][1], "name") if "name" in items else None
     if "description" in items:
         fl.string(ctx, items["description"][1], "description")
-    conv = _conventions(ctx, items)
-    measure = None
-    if "readings" in items:
-        rm = fl.mapping(ctx, items["readings"][1], "readings")
-        fl.check_keys(ctx, rm, ("measure",), "readings")
-        if "measure" in rm.items:
-            measure = _choice(ctx, rm.items["measure"][1], "measure", "readings: measure")
-    sensors, weights = _sensors(ctx, items)
+    conv = _choices(ctx, items, "conventions", CONVENTION_KEYS)
+    measure = _choices(ctx, items, "readings", ("measure",)).get("measure")
+    sensors, weights, limits = _sensors(ctx, items)
     planes = _planes(ctx, items)
     speeds = _speeds(ctx, items)
     coefficients = None
@@ -201,24 +182,25 @@ def load_job_text(text: str, source: str = "<job>") -> FieldJob:
                                              f"{n} readings per speed")
     return FieldJob(
         source=source, name=name, sensors=sensors or tuple(str(i + 1) for i in range(n)),
-        weights=weights, planes=planes, speeds=speeds, initial=initial, trials=trials,
+        weights=weights, limits=limits or (None,) * n, planes=planes, speeds=speeds, initial=initial, trials=trials,
         measure=measure, phase=conv.get("phase"), angle_sense=conv.get("angle_sense"),
         rotation=conv.get("rotation"), severity=_severity(ctx, items), rotor=_rotor(ctx, items, source),
         coefficients=coefficients, keys={k: ctx.where(mark) for k, (mark, _) in items.items()},
-        units=dict(ctx.base_units), **_settings(ctx, items))
+        units=dict(ctx.base_units), drawer=_texts(ctx, items["drawer"][1], "drawer", "mass:count, e.g. "
+                                                  "'5 g:4'") if "drawer" in items else None,
+        max_weights=_count(ctx, items["max_weights"][1], "max_weights", 1, 4) if "max_weights" in items else None,
+        robust=_choice(ctx, items["robust"][1], "robust", "robust") if "robust" in items else None,
+        **_settings(ctx, items))
 
 
 def _header(ctx: _Ctx, items: dict) -> None:
     """``rbcli: 1`` and ``job: field-balance``, when given."""
-    if "rbcli" in items:
-        v = items["rbcli"][1]
-        if not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
-            raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
-    if "job" in items:
-        v = items["job"][1]
-        if fl.string(ctx, v, "job") != "field-balance":
-            raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, "
-                               f"not {fl.describe(v)}")
+    v = items.get("rbcli", (None, None))[1]
+    if v is not None and not (isinstance(v, ys.ScalarNode) and v.value == 1 and not isinstance(v.value, bool)):
+        raise ctx.error(v, f"rbcli: this rbcli reads format 1, not {fl.describe(v)}")
+    if "job" in items and fl.string(ctx, v := items["job"][1], "job") != "field-balance":
+        raise ctx.error(v, f"job: this is rbcli field-balance's job file; 'job' must be field-balance, not "
+                           f"{fl.describe(v)}")
 
 
 def _units(ctx: _Ctx, items: dict) -> dict[str, str]:
@@ -285,12 +267,13 @@ def _choice(ctx: _Ctx, node: ys.Node, key: str, what: str) -> str:
     return word
 
 
-def _conventions(ctx: _Ctx, items: dict) -> dict[str, str]:
-    if "conventions" not in items:
+def _choices(ctx: _Ctx, items: dict, key: str, keys: tuple[str, ...]) -> dict[str, str]:
+    """A mapping of words (``conventions``, ``readings``), each one of its key's choices."""
+    if key not in items:
         return {}
-    cm = fl.mapping(ctx, items["conventions"][1], "conventions")
-    fl.check_keys(ctx, cm, CONVENTION_KEYS, "conventions")
-    return {k: _choice(ctx, node, k, f"conventions: {k}") for k, (_, node) in cm.items.items()}
+    cm = fl.mapping(ctx, items[key][1], key)
+    fl.check_keys(ctx, cm, keys, key)
+    return {k: _choice(ctx, node, k, f"{key}: {k}") for k, (_, node) in cm.items.items()}
 
 
 def _name(ctx: _Ctx, node: ys.Node, what: str, seen: set[str]) -> str:
@@ -306,29 +289,37 @@ def _name(ctx: _Ctx, node: ys.Node, what: str, seen: set[str]) -> str:
     return name
 
 
-def _sensors(ctx: _Ctx, items: dict) -> tuple[tuple[str, ...], tuple[float, ...] | None]:
+def _sensors(ctx: _Ctx, items: dict) -> tuple[tuple[str, ...], tuple[float, ...] | None, tuple]:
+    """The sensors' names, weights (None: none given) and limits (a Text or None each)."""
     if "sensors" not in items:
-        return (), None
+        return (), None, ()
     node = items["sensors"][1]
     if not isinstance(node, ys.SeqNode) or not node.items:
         raise ctx.error(node, f"sensors must be a list of sensor names, not {fl.describe(node)}")
-    names: list[str] = []
-    weights: list[float] = []
-    any_weight = False
-    seen: set[str] = set()
+    names, weights, limits, seen = [], [], [], set()
     for item in node.items:
+        it = item.items if isinstance(item, ys.MapNode) else {}
         if isinstance(item, ys.MapNode):
             fl.check_keys(ctx, item, SENSOR_KEYS, "a sensor", required=("name",))
-            names.append(_name(ctx, item.items["name"][1], "sensor name", seen))
-            if "weight" in item.items:
-                any_weight = True
-                weights.append(fl.positive(ctx, item.items["weight"][1], "dimensionless", "weight"))
-            else:
-                weights.append(1.0)
-        else:
-            names.append(_name(ctx, item, "sensor name", seen))
-            weights.append(1.0)
-    return tuple(names), (tuple(weights) if any_weight else None)
+        names.append(_name(ctx, it["name"][1] if it else item, "sensor name", seen))
+        weights.append(fl.positive(ctx, it["weight"][1], "dimensionless", "weight") if "weight" in it else None)
+        limits.append(_text(ctx, it["limit"][1], f"sensor {names[-1]}: limit") if "limit" in it else None)
+    return (tuple(names), None if weights == [None] * len(weights) else tuple(w or 1.0 for w in weights),
+            tuple(limits))
+
+
+def _text(ctx: _Ctx, node: ys.Node, what: str, eg: str = "'2.8 mm/s'") -> Text:
+    """A value kept as written (a reading, a limit, a mass) and where it is."""
+    if not isinstance(node, ys.ScalarNode) or node.value is None or isinstance(node.value, bool):
+        raise ctx.error(node, f"{what} must be a value such as {eg}, not {fl.describe(node)}")
+    return Text(node.raw if not isinstance(node.value, str) else node.value, ctx.where(node))
+
+
+def _count(ctx: _Ctx, node: ys.Node, what: str, low: int, high: int) -> int:
+    if not (isinstance(node, ys.ScalarNode) and isinstance(node.value, int) and not isinstance(node.value, bool)
+            and low <= node.value <= high):
+        raise ctx.error(node, f"{what} must be a whole number from {low} to {high}, not {fl.describe(node)}")
+    return int(node.value)
 
 
 def _planes(ctx: _Ctx, items: dict) -> tuple[JobPlane, ...]:
@@ -351,17 +342,64 @@ def _planes(ctx: _Ctx, items: dict) -> tuple[JobPlane, ...]:
             if radius is None:
                 raise ctx.error(it["correction_radius"][0], f"plane {name}: correction_radius needs the "
                                                             "trial radius, 'radius'")
-        positions = None
-        if "positions" in it:
-            pn = it["positions"][1]
-            if not (isinstance(pn, ys.ScalarNode) and isinstance(pn.value, int)
-                    and not isinstance(pn.value, bool) and 3 <= pn.value <= 100_000):
-                raise ctx.error(pn, f"plane {name}: positions must be a whole number from 3 to "
-                                    f"100000 (holes or blades), not {fl.describe(pn)}")
-            positions = int(pn.value)
+        if "positions" in it and "holes" in it:
+            raise ctx.error(it["holes"][0], f"plane {name}: give its holes or its positions, not both")
+        positions = _count(ctx, it["positions"][1], f"plane {name}: positions", 3,
+                           100_000) if "positions" in it else None
         at = fl.number(ctx, it["at"][1], "length", f"plane {name}: at") if "at" in it else None
-        out.append(JobPlane(name, radius, rc, positions, at, ctx.where(item)))
+        out.append(JobPlane(
+            name, radius, rc, positions, at, ctx.where(item),
+            _holes(ctx, it["holes"][1], f"plane {name}: holes") if "holes" in it else None,
+            _mass_or_unbalance(ctx, it["max_mass"][1], f"plane {name}: max_mass") if "max_mass" in it else None,
+            _count(ctx, it["max_weights"][1], f"plane {name}: max_weights", 1, 4) if "max_weights" in it else None,
+            _texts(ctx, it["drawer"][1], f"plane {name}: drawer", "mass:count, e.g. '5 g:4'")
+            if "drawer" in it else None))
     return tuple(out)
+
+
+def _holes(ctx: _Ctx, node: ys.Node, what: str) -> JobHoles:
+    """``{count, zero}`` or ``{angles}``, with radius, numbering and per_hole."""
+    hm = fl.mapping(ctx, node, what)
+    fl.check_keys(ctx, hm, HOLE_KEYS, what)
+    it = hm.items
+    if ("count" in it) == ("angles" in it):
+        raise ctx.error(hm, f"{what} needs 'count' (equally spaced from 'zero') or 'angles' (a list), one of them")
+    numbering = _choice(ctx, it["numbering"][1], "numbering", f"{what}: numbering") if "numbering" in it else "with"
+    sign = 1.0 if numbering == "with" else -1.0
+    if "count" in it:
+        n = _count(ctx, it["count"][1], f"{what}: count", 1, 3600)
+        zero = math.degrees(fl.number(ctx, it["zero"][1], "angle", f"{what}: zero")) if "zero" in it else 0.0
+        angles = tuple((zero + sign * 360.0 * k / n) % 360.0 for k in range(n))
+    else:
+        an = it["angles"][1]
+        if not isinstance(an, ys.SeqNode) or not 1 <= len(an.items) <= 3600:
+            raise ctx.error(an, f"{what}: angles must be a list of 1 to 3600 angles, not {fl.describe(an)}")
+        angles = tuple(math.degrees(fl.number(ctx, a, "angle", f"{what}: angles")) % 360.0 for a in an.items)
+    return JobHoles(angles, fl.positive(ctx, it["radius"][1], "length", f"{what}: radius") if "radius" in it else None,
+                    numbering, _count(ctx, it["per_hole"][1], f"{what}: per_hole", 1, 4) if "per_hole" in it else 1,
+                    ctx.where(node))
+
+
+def mass_or_unbalance(text: str, bare: float) -> tuple[float, str] | str | None:
+    """``'50 g'`` -> (kg, "mass"), ``'5000 g*mm'`` -> (kg m, "unbalance"), a bare number
+    times ``bare``; None for anything not positive and finite, the unit's error in words."""
+    try:
+        value, dim = un.parse_quantity(text)
+    except un.UnitError as exc:
+        return str(exc)
+    kind = {un.Dim(): "mass", un.Dim(M=1): "mass", un.Dim(M=1, L=1): "unbalance"}.get(dim)
+    value *= bare if dim == un.Dim() else 1.0
+    return (value, kind) if kind is not None and 0.0 < value < math.inf else None
+
+
+def _mass_or_unbalance(ctx: _Ctx, node: ys.Node, what: str) -> tuple[float, str]:
+    """A positive mass (kg; bare: the file's mass unit) or mass x radius (kg m)."""
+    got = mass_or_unbalance(node.value, ctx.factor("mass", node)[0]) if isinstance(node, ys.ScalarNode) and \
+        isinstance(node.value, str) else (fl.positive(ctx, node, "mass", what), "mass")
+    if not isinstance(got, tuple):
+        raise ctx.error(node, f"{what} must be a positive mass ('50 g') or mass x radius ('5000 g*mm'), not "
+                              f"{fl.describe(node)}" + (f": {got}" if got else ""))
+    return got
 
 
 def _speeds(ctx: _Ctx, items: dict) -> tuple[JobSpeed, ...]:
@@ -373,28 +411,25 @@ def _speeds(ctx: _Ctx, items: dict) -> tuple[JobSpeed, ...]:
     out = []
     seen: set[str] = set()
     for i, item in enumerate(node.items):
+        limit = None
         if isinstance(item, ys.MapNode):
             fl.check_keys(ctx, item, SPEED_KEYS, "a speed", required=("name",))
             name = _name(ctx, item.items["name"][1], "speed name", seen)
             w = (fl.positive(ctx, item.items["speed"][1], "angular_speed", f"speed {name}")
                  if "speed" in item.items else None)
+            if "limit" in item.items:
+                limit = _text(ctx, item.items["limit"][1], f"speed {name}: limit")
         else:  # a bare speed: named by its text
             w = fl.positive(ctx, item, "angular_speed", "speed")
             name = _name(ctx, item, "speed name", seen) if isinstance(item, ys.ScalarNode) else str(i + 1)
-        out.append(JobSpeed(name, w, ctx.where(item)))
+        out.append(JobSpeed(name, w, ctx.where(item), limit))
     return tuple(out)
 
 
-def _texts(ctx: _Ctx, node: ys.Node, what: str) -> tuple[Text, ...]:
+def _texts(ctx: _Ctx, node: ys.Node, what: str, form: str = "readings amplitude@phase, one per sensor") -> tuple[Text, ...]:
     if not isinstance(node, ys.SeqNode) or not node.items:
-        raise ctx.error(node, f"{what} must be a list of readings amplitude@phase, one per sensor, "
-                              f"not {fl.describe(node)}")
-    out = []
-    for item in node.items:
-        if not isinstance(item, ys.ScalarNode) or item.value is None or isinstance(item.value, bool):
-            raise ctx.error(item, f"{what}: a reading is amplitude@phase, e.g. '6.2 mm/s@112', not {fl.describe(item)}")
-        out.append(Text(item.raw if not isinstance(item.value, str) else item.value, ctx.where(item)))
-    return tuple(out)
+        raise ctx.error(node, f"{what} must be a list of {form}, not {fl.describe(node)}")
+    return tuple(_text(ctx, item, what, "'6.2 mm/s@112'" if "@" in form else "'5 g:4'") for item in node.items)
 
 
 def _runs(ctx: _Ctx, node: ys.Node, speeds: tuple[JobSpeed, ...], what: str) -> tuple[tuple[Text, ...], ...]:
@@ -487,93 +522,18 @@ def _rotor(ctx: _Ctx, items: dict, source: str) -> JobRotor | None:
     it = rm.items
     if ("mass" in it) == ("body" in it):
         raise ctx.error(rm, "rotor needs its 'mass' or a 'body' file (one of them)")
-    mass = fl.positive(ctx, it["mass"][1], "mass", "rotor: mass") if "mass" in it else None
-    body = _relative(source, fl.string(ctx, it["body"][1], "rotor: body")) if "body" in it else None
-    bearings = None
-    if "bearings" in it:
-        b = fl.floats(ctx, it["bearings"][1], "length", "rotor: bearings", n=2)
-        if b[0] == b[1]:
-            raise ctx.error(it["bearings"][1], "rotor: bearings: the two bearings must be at different positions")
-        bearings = (b[0], b[1])
-    com = fl.number(ctx, it["com"][1], "length", "rotor: com") if "com" in it else None
-    load = fl.positive(ctx, it["bearing_load"][1], "force", "rotor: bearing_load") if "bearing_load" in it else None
-    g = fl.positive(ctx, it["g"][1], "acceleration", "rotor: g") if "g" in it else None
-    frac = fl.positive(ctx, it["trial_fraction"][1], "dimensionless", "rotor: trial_fraction") if "trial_fraction" in it else None
-    return JobRotor(mass, body, bearings, com, load, g, frac, ctx.where(rm))
-
-
-# ----------------------------------------------------------------------------- schema
-
-
-def job_schema() -> dict:
-    """The JSON Schema (draft-07) of a job file, for editors (yaml-language-server)."""
-    quantity = {"description": "a number in the file's units, or a string with a unit such as '250 mm'",
-                "anyOf": [{"type": "number"}, {"type": "string", "pattern": "^\\s*[-+]?[0-9.]"}]}
-    reading = {"type": "string", "pattern": "@",
-               "description": "amplitude@phase: '6.2 mm/s@112', '40 um pk-pk@30', '0.5 g rms@10' or bare '6.2@112'"}
-    readings = {"type": "array", "items": reading, "minItems": 1,
-                "description": "one reading per sensor, in the sensors' order"}
-    per_speed = {"anyOf": [readings, {"type": "object", "additionalProperties": readings,
-                                      "description": "speed name -> readings"}]}
-    name = {"anyOf": [{"type": "string", "minLength": 1}, {"type": "number"}]}
-
-    def enum(key: str) -> dict:
-        return {"enum": list(CHOICES[key])}
-
-    return {
-        "$schema": "http://json-schema.org/draft-07/schema#",
-        "$id": "https://rbcli.invalid/fieldjob.schema.json",
-        "title": "rbcli field-balance job file",
-        "description": "Sensors, planes, speeds and runs of a field-balancing job (rbcli field-balance JOB.yaml).",
-        "type": "object",
-        "properties": {
-            "rbcli": {"const": 1},
-            "job": {"const": "field-balance"},
-            "name": {"type": "string"},
-            "description": {"type": "string"},
-            "units": {"type": "object", "properties": {k: {"type": "string"} for k in UNIT_KEYS},
-                      "additionalProperties": False,
-                      "description": "what bare lengths, masses and speeds mean (default m, g, rad/s)"},
-            "conventions": {"type": "object", "properties": {k: enum(k) for k in CONVENTION_KEYS},
-                            "additionalProperties": False},
-            "readings": {"type": "object", "properties": {"measure": enum("measure")},
-                         "additionalProperties": False},
-            "sensors": {"type": "array", "minItems": 1, "items": {"anyOf": [
-                name, {"type": "object", "properties": {"name": name, "weight": quantity},
-                       "required": ["name"], "additionalProperties": False}]}},
-            "planes": {"type": "array", "minItems": 1, "items": {
-                "type": "object",
-                "properties": {"name": name, "radius": quantity, "correction_radius": quantity,
-                               "positions": {"type": "integer", "minimum": 3}, "at": quantity},
-                "required": ["name"], "additionalProperties": False}},
-            "speeds": {"type": "array", "minItems": 1, "items": {"anyOf": [
-                quantity, {"type": "object", "properties": {"name": name, "speed": quantity},
-                           "required": ["name"], "additionalProperties": False}]}},
-            "initial": per_speed,
-            "trials": {"type": "array", "minItems": 1, "items": {
-                "type": "object",
-                "properties": {"plane": name, "mass": {"type": "string", "pattern": "@"}, "readings": per_speed},
-                "required": ["mass", "readings"], "additionalProperties": False}},
-            "cumulative": {"type": "boolean"},
-            "method": enum("method"),
-            "mass_step": quantity,
-            "angle_step": quantity,
-            "severity": {"type": "object",
-                         "properties": {"standard": enum("standard"), "group": {"enum": [1, 2]},
-                                        "foundation": enum("foundation")},
-                         "required": ["group", "foundation"], "additionalProperties": False},
-            "rotor": {"type": "object",
-                      "properties": {"mass": quantity, "body": {"type": "string"},
-                                     "bearings": {"type": "array", "items": quantity, "minItems": 2, "maxItems": 2},
-                                     "com": quantity, "bearing_load": quantity, "g": quantity,
-                                     "trial_fraction": quantity},
-                      "additionalProperties": False},
-            "coefficients": {"type": "string", "description": "a file written by --save-coefficients (trim run)"},
-        },
-        "additionalProperties": False,
-    }
+    b = fl.floats(ctx, it["bearings"][1], "length", "rotor: bearings", n=2) if "bearings" in it else None
+    if b and b[0] == b[1]:
+        raise ctx.error(it["bearings"][1], "rotor: bearings: the two bearings must be at different positions")
+    read = {k: (fl.number if k == "com" else fl.positive)(ctx, it[k][1], kind, f"rotor: {k}") if k in it else None
+            for k, kind in (("mass", "mass"), ("com", "length"), ("bearing_load", "force"), ("g", "acceleration"),
+                            ("trial_fraction", "dimensionless"))}
+    return JobRotor(read["mass"], _relative(source, fl.string(ctx, it["body"][1], "rotor: body")) if "body" in it
+                    else None, b and (b[0], b[1]), read["com"], read["bearing_load"], read["g"], read["trial_fraction"],
+                    ctx.where(rm))
 
 
 def schema_text() -> str:
-    """The JSON Schema, as ``--job-schema`` prints it and ``rbcli/data`` holds it."""
-    return json.dumps(job_schema(), indent=2, ensure_ascii=False) + "\n"
+    """The JSON Schema of a job file (``rbcli/data/fieldjob.schema.json``, the declaration of
+    its keys), as ``--job-schema`` prints it."""
+    return SCHEMA_PATH.read_text(encoding="utf-8")

@@ -1,12 +1,6 @@
-"""The job sheet of ``rbcli field-balance --report sheet.html|sheet.md``: one document for the
-customer with the readings, the polar diagram, the influence coefficients, the
-corrections as computed and as fitted, the predicted readings and the severity verdicts.
-
-Built from the blocks of :mod:`rbcli.render.report` (:class:`~rbcli.render.report.Report`,
-sections, figures, :func:`~rbcli.render.report.html` and
-:func:`~rbcli.render.report.markdown`) and the tables of :mod:`rbcli.render.field.tables`;
-it never writes a file (the command line does, through :mod:`rbcli.io.outfile`).
-"""
+"""The job sheet of ``rbcli field-balance --report``: the tables of
+:mod:`rbcli.render.field.tables` and the polar diagrams in a :class:`rbcli.render.report.Report`
+(the command line writes it)."""
 
 from __future__ import annotations
 
@@ -23,84 +17,44 @@ if TYPE_CHECKING:  # pragma: no cover
 
 def job_sheet(res: FieldBalanceResult, su: ShopUnits, digits: int, *, meta: list[tuple[str, str]],
               input_name: str, input_text: str, figure_svg: str | None) -> Report:
-    """The job sheet of an extended result ``res``.
-
-    Parameters
-    ----------
-    res : the result (extended: ``rbcli.field_balance(..., full=True)``)
-    su : display units; digits : significant figures
-    meta : (label, value) rows under the title (job, date, rbcli version...)
-    input_name, input_text : the job file (or the command line) shown at the end
-    figure_svg : the polar diagram as SVG text (rbcli.render.plots.figure_bytes of
-        rbcli.render.balanceplot.plot), or None
-    """
+    """The job sheet of an extended result ``res`` (``rbcli.field_balance(..., full=True)``):
+    ``meta`` the (label, value) rows under the title, the job file (or the command line)
+    shown at the end, the polar diagrams as SVG text (:mod:`rbcli.render.field.plot`) or None."""
     scale, ru = fb.reading_display(res.reading_kind, su, res.measure)
     rows = res.row_names()
-    title = f"Field balancing job sheet{': ' + res.name if res.name else ''}"
-    sections = []
 
-    s = Section("readings", "Readings")
-    d = Doc()
-    d.note(res.conventions.text if res.conventions is not None else
-           "angles in degrees, counted in the same sense as the trial angles and the phase readings "
-           "(they must agree)")
-    fb.readings_note(d, res, ru)
-    fb.readings_table(d, res, scale, ru, rows, digits)
-    s.add_doc(d)
-    sections.append(s)
+    def section(key: str, title: str, *fill) -> Section:
+        s, d = Section(key, title), Doc()
+        for f in fill:
+            f(d)
+        s.add_doc(d)
+        return s
 
+    sections = [section("readings", "Readings", lambda d: d.note(res.angle_convention),
+                        lambda d: fb.readings_note(d, res, ru),
+                        lambda d: fb.readings_table(d, res, scale, ru, rows, digits),
+                        lambda d: fb.trials_table(d, res, su, digits))]
     if figure_svg is not None:
-        s = Section("polar", "Polar diagram")
-        s.items.append(Figure("polar", "per reading the reading without trial (O), with each trial (O+T), "
-                              "the trial's effect and the predicted reading; per plane the trial mass, "
-                              "the correction and the masses to fit", figure_svg))
-        sections.append(s)
-
-    s = Section("coefficients", "Influence coefficients")
-    d = Doc()
-    fb.influence_table(d, res, scale, ru, rows, su, digits)
-    fb.significance_note(d, res)
-    if res.coefficients_from is not None:
-        d.note(f"from {res.coefficients_from} (a trim run)")
-    s.add_doc(d)
-    sections.append(s)
-
-    s = Section("corrections", "Corrections")
-    d = Doc()
-    d.note(f"method: {res.method}; a correction is a mass to add")
-    fb.corrections_table(d, res, su, digits)
-    if res.fitted is not None:
-        fb.fitted_table(d, res, su, digits)
-    s.add_doc(d)
-    sections.append(s)
-
-    s = Section("residuals", "Predicted readings")
-    d = Doc()
-    fb.residuals_table(d, res, scale, ru, rows, digits)
-    s.add_doc(d)
-    sections.append(s)
-
-    if res.severity is not None:
-        s = Section("severity", "Severity (ISO 20816-3)")
-        d = Doc()
-        fb.severity_table(d, res, rows, digits, su)
-        s.add_doc(d)
-        sections.append(s)
-    else:
-        sections.append(Section.skip("severity", "Severity (ISO 20816-3)",
-                                     "Severity: not judged (give --severity iso20816-3 --group 1|2 "
-                                     "--foundation rigid|flexible with velocity readings)."))
+        sections.append(Section("polar", "Polar diagram", [Figure(
+            "polar", "per reading the reading without trial (O), with each trial (O+T, in the run's colour), "
+            "the trial's effect and the predicted reading; per plane the trial mass, the correction and the "
+            "masses to fit (a drawer's holes numbered on the rim)", figure_svg)]))
+    sections += [
+        section("coefficients", "Influence coefficients", lambda d: fb.influence_table(d, res, scale, ru, rows, su, digits),
+                lambda d: fb.significance_note(d, res),
+                lambda d: res.coefficients_from and d.note(f"from {res.coefficients_from} (a trim run)")),
+        section("corrections", "Corrections", lambda d: d.note(f"method: {res.method}; a correction is a mass to add"),
+                lambda d: fb.corrections_table(d, res, su, digits),
+                lambda d: fb.limits_table(d, res, su, scale, ru, digits), lambda d: fb.robust_note(d, res),
+                lambda d: res.fitted and fb.fitted_table(d, res, su, digits)),
+        section("residuals", "Predicted readings", lambda d: fb.residuals_table(d, res, scale, ru, rows, digits)),
+        section("severity", "Severity (ISO 20816-3)", lambda d: fb.severity_table(d, res, rows, digits, su))
+        if res.severity is not None else Section.skip(
+            "severity", "Severity (ISO 20816-3)", "Severity: not judged (give --severity iso20816-3 --group 1|2 "
+            "--foundation rigid|flexible with velocity readings).")]
     if res.suggested_trial:
-        s = Section("trial", "Trial mass")
-        d = Doc()
-        fb.suggestion_table(d, res, su, scale, ru, rows, digits)
-        s.add_doc(d)
-        sections.append(s)
+        sections.append(section("trial", "Trial mass", lambda d: fb.suggestion_table(d, res, su, scale, ru, rows, digits)))
     if res.warnings:
-        s = Section("warnings", "Warnings")
-        for w in res.warnings:
-            s.items.append(Note(w))
-        sections.append(s)
-    return Report(title, meta, sections, input_name, input_text, generator="rbcli field-balance")
-
-
+        sections.append(Section("warnings", "Warnings", [Note(w) for w in res.warnings]))
+    return Report(f"Field balancing job sheet{': ' + res.name if res.name else ''}", meta, sections, input_name,
+                  input_text, generator="rbcli field-balance")

@@ -1,15 +1,10 @@
-"""Tables of ``rbcli field-balance`` (the JSON is the result's own).
-
-Masses in g (or the ``--units`` mass), radii in mm (or the ``--units`` length); readings
-in µm, mm/s or m/s² — or, when ``--units`` names an inch-based length, in mil, in/s and g
-(standard gravity), the units of US practice. A classic one- or two-plane job keeps the
-tables it always had (:func:`classic_document`); an extended job (more readings, planes
-or speeds, rounding, conventions, severity...) gets :func:`extended_document`.
-"""
+"""Tables of ``rbcli field-balance``: masses in g, radii in mm, readings in µm, mm/s or m/s²
+(or the ``--units`` ones; with an inch length, mil, in/s and g). A classic one- or two-plane
+job keeps its tables (:func:`classic_document`); any other gets :func:`extended_document`."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rbcli.core.field.solve import deg
 from rbcli.render.fmt import num, polar
@@ -18,6 +13,9 @@ from rbcli.render.units import ShopUnits
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.field.result import FieldBalanceResult
+
+#: the most planes a wide table (readings, influence coefficients) shows: the JSON has the rest
+MAX_PLANE_COLUMNS = 12
 
 #: how the tables show readings of each kind: (SI per display unit, display unit)
 READING_DISPLAY = {"displacement": (1e-6, "µm"), "velocity": (1e-3, "mm/s"), "acceleration": (1.0, "m/s²")}
@@ -111,30 +109,23 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
 # ----------------------------------------------------------------------------- extended
 
 
-def _speed_column(res: FieldBalanceResult) -> bool:
-    """Whether the tables need a speed column (several speeds, or one named)."""
-    return len(res.run_speeds) > 1 or bool(res.run_speeds and res.run_speeds[0][0])
-
-
 def _row_label(sensor: str, speed: str, res: FieldBalanceResult) -> list[str]:
-    return [sensor, speed or "—"] if _speed_column(res) else [sensor]
+    """A reading's label cells: a speed column with several speeds, or one named."""
+    return [sensor, speed or "—"] if len(res.run_speeds) > 1 or res.run_speeds and res.run_speeds[0][0] else [sensor]
 
 
 def _head(res: FieldBalanceResult) -> list[str]:
-    return ["sensor", "speed"] if _speed_column(res) else ["sensor"]
+    return ["sensor", "speed"][:len(_row_label("", "", res))]
 
 
 def _reported(z: complex, res: FieldBalanceResult) -> complex:
-    """A reading in the instrument's phase convention (the result keeps them in the angles'
-    sense)."""
+    """A reading in the instrument's phase convention (the result's are in the angles' sense)."""
     return z.conjugate() if (res.conventions is not None and res.conventions.converted) else z
 
 
 def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
     """The tables of an extended job: readings, coefficients, corrections as computed and as
     fitted, the predicted readings, significance and severity."""
-    m = su.unit("mass")
-    L = su.unit("length")
     scale, ru = reading_display(res.reading_kind, su, res.measure)
     rows = res.row_names()
     n_sp = len(res.run_speeds)
@@ -145,9 +136,7 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     if res.name:
         head = f"{res.name} — {head}"
     doc.heading(head)
-    doc.note(res.conventions.text if res.conventions is not None else
-             "angles in degrees, counted in the same sense as the trial angles and the phase readings "
-             "(they must agree)")
+    doc.note(res.angle_convention.replace("angles and phases in degrees", "angles in degrees"))
     doc.note("a correction is a mass to add; each plane's trial removed before the next run"
              if not res.cumulative else "a correction is a mass to add; each trial was left on for the later runs")
     readings_note(doc, res, ru)
@@ -158,6 +147,8 @@ def extended_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     readings_table(doc, res, scale, ru, rows, digits)
     influence_table(doc, res, scale, ru, rows, su, digits)
     corrections_table(doc, res, su, digits)
+    limits_table(doc, res, su, scale, ru, digits)
+    robust_note(doc, res)
     if res.fitted is not None:
         fitted_table(doc, res, su, digits)
     residuals_table(doc, res, scale, ru, rows, digits)
@@ -197,16 +188,24 @@ def readings_note(doc: Doc, res: FieldBalanceResult, ru: str) -> None:
     doc.note("; ".join(parts))
 
 
+def _wide(doc: Doc, n: int, what: str) -> int:
+    """How many planes a wide table shows (a note says what is left out)."""
+    if n > MAX_PLANE_COLUMNS:
+        doc.note(f"{what}: the first {MAX_PLANE_COLUMNS} of {n} planes (the JSON has them all)")
+    return min(n, MAX_PLANE_COLUMNS)
+
+
 def readings_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
     u = f" [{ru}]" if ru else ""
     cols = [*_head(res), f"initial{u}", "phase [°]"]
-    for j, _ in enumerate(res.runs):
+    runs = res.runs[:_wide(doc, len(res.runs), "readings")]
+    for j, _ in enumerate(runs):
         cols += [f"trial {res.plane_names[j]} on{u}", "phase [°]"]
     table = []
     for k, (s, v) in enumerate(rows):
         z = _reported(res.initial[k], res)
         cells = [*_row_label(s, v, res), num(abs(z) / scale, digits), num(deg(z), digits)]
-        for run in res.runs:
+        for run in runs:
             y = _reported(run[k], res)
             cells += [num(abs(y) / scale, digits), num(deg(y), digits)]
         table.append(cells)
@@ -217,12 +216,13 @@ def influence_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
                      digits: int) -> None:
     m = su.unit("mass")
     cols = _head(res)
-    for name in res.plane_names:
+    p = _wide(doc, len(res.plane_names), "influence coefficients")
+    for name in res.plane_names[:p]:
         cols += [f"plane {name}: {ru + ' ' if ru else ''}per {m}", "phase [°]"]
     table = []
     for k, (s, v) in enumerate(rows):
         cells = [*_row_label(s, v, res)]
-        for a in res.alpha[k]:
+        for a in res.alpha[k][:p]:
             cells += [num(abs(a) * su.mass[0] / scale, digits), num(deg(a), digits)]
         table.append(cells)
     doc.table("influence coefficients (at each plane's trial radius; phases in the angles' sense)",
@@ -248,10 +248,61 @@ def corrections_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: 
     doc.table("corrections to add (as computed)", cols, table, right=tuple(range(1, len(cols))))
 
 
+def trials_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The trial mass of each run, at its plane's trial radius."""
+    if not res.trial_masses:
+        return
+    radii = res.plane_radii or (res.radii,) * res.planes
+    doc.table("trial masses", ["plane", f"mass [{su.unit('mass')}]", "angle [°]", f"radius [{su.unit('length')}]"],
+              [[n, su.show(abs(t), "mass", digits), num(deg(t), digits), "—" if r is None else
+                su.show(r[0], "length", digits)] for n, t, r in zip(res.plane_names, res.trial_masses, radii)],
+              right=(1, 2, 3))
+
+
+def limits_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, scale: float, ru: str, digits: int) -> None:
+    """Each limit, what the correction gives against it, whether it binds and its cost."""
+    lim = res.limits
+    if lim is None:
+        return
+    u = f" [{ru}]" if ru else ""
+
+    def shown(x: float, f: float, unit: str) -> str:
+        return f"{num(x / f, digits)} {unit}".strip()
+
+    def row(kind: str, on: str, limit: str, value: str, r: Any) -> list[str]:
+        return [kind, on, limit, value, "yes" if r.active else "no",
+                "—" if r.objective_without is None else num(r.objective_without / scale, digits)]
+
+    mu, uu = (su.factor("mass"), su.unit("mass")), (su.factor("unbalance"), su.unit("unbalance"))
+    table = [row("mass", f"plane {r.plane}", shown(r.max_mass, *mu), shown(r.mass, *mu), r) if r.max_mass is not None
+             else row("unbalance", f"plane {r.plane}", shown(r.max_unbalance, *uu), shown(r.unbalance, *uu), r)
+             for r in lim.planes]
+    table += [row("reading", f"{r.sensor}{' at ' + r.speed if r.speed else ''}", shown(r.limit, scale, ru),
+                  shown(r.amplitude, scale, ru), r) for r in lim.readings]
+    how = "met" if lim.feasible else (f"cannot all be met: the correction exceeds them least, each reading within "
+                                      f"{num(lim.violation, 4)} times its limit")
+    doc.table(f"limits ({how})", ["limit", "on", "at most", "the correction", "binds", f"objective without it{u}"],
+              table, right=(2, 3, 5))
+    doc.note(f"objective with the limits: {num(lim.objective / scale, digits)}{' ' + ru if ru else ''} ("
+             + ("the largest weighted predicted reading" if res.method == "min-max" else
+                "the root sum of squares of the weighted predicted readings") + ")")
+
+
+def robust_note(doc: Doc, res: FieldBalanceResult) -> None:
+    rb = res.robust
+    if rb is not None:
+        doc.note("robust fit (Huber): " + (f"discounted {', '.join(rb.discounted)}" if rb.discounted else
+                                           "no reading discounted")
+                 + f"; a reading beyond {num(rb.threshold, 4)} times the Rayleigh scale of the residuals "
+                 "(median/√ln 4) weighs less, in proportion")
+
+
 def fitted_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
     f = res.fitted
     assert f is not None
     m = su.unit("mass")
+    if f.drawer is not None:
+        return drawer_table(doc, res, su, digits)
     how = []
     if f.mass_step is not None:
         how.append(f"masses to {su.show(f.mass_step, 'mass', digits)} {m}")
@@ -268,12 +319,40 @@ def fitted_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) 
               right=(1, 2, 3))
 
 
+def drawer_table(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
+    """The weights chosen from the drawer, and how each plane's holes were taken."""
+    f = res.fitted
+    d = f.drawer
+    m, L = su.unit("mass"), su.unit("length")
+    table = [[p.name, str(fm.position), num(fm.angle_deg, digits), su.show(fm.mass, "mass", digits)]
+             for p in f.planes for fm in p.masses]
+    judged = "least squares" if res.method != "min-max" else "min-max"
+    doc.table(f"weights from the drawer (the best choice by {judged} on the predicted readings)",
+              ["plane", "hole", "angle [°]", f"mass [{m}]"], table, right=(1, 2, 3))
+    for pl in d.planes:
+        h = pl.holes_deg
+        doc.note(f"plane {pl.name}: {len(h)} hole{'s' if len(h) != 1 else ''}"
+                 + (f" at {su.show(pl.radius, 'length', digits)} {L}" if pl.radius is not None else
+                    " at the trial radius") + f", hole 1 at {num(h[0], digits)}°"
+                 + (f", numbered {pl.numbering} the angles" if len(h) > 1 else "")
+                 + f"; at most {pl.per_hole} weight{'s' if pl.per_hole > 1 else ''} a hole and {pl.max_weights} "
+                 f"in the plane" + ("" if pl.max_mass is None else f", {su.show(pl.max_mass, 'mass', digits)} {m} in all"))
+    sizes = "; ".join(", ".join(f"{su.show(x['mass'], 'mass', digits)} {m}"
+                                + ("" if x["count"] is None else f" × {x['count']}") for x in dr) for dr in d.drawers)
+    doc.note(f"drawer: {sizes}; {d.examined} choice{'s' if d.examined != 1 else ''} evaluated (an exact search)"
+             + ("" if d.violation <= 1.0 else f"; no choice meets the limits: this one exceeds them least "
+                                              f"({num(d.violation, 4)} times a limit)"))
+
+
 def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, rows, digits: int) -> None:
     u = f" [{ru}]" if ru else ""
     cols = [*_head(res), f"initial{u}", f"predicted{u}", "phase [°]", "change [%]"]
     fitted = res.fitted.residuals if res.fitted is not None else None
     if fitted is not None:
         cols += [f"with the masses fitted{u}", "phase [°]"]
+    limits = {(r.sensor, r.speed): r.limit for r in res.limits.readings} if res.limits else {}
+    if limits:
+        cols.append(f"limit{u}")
     table, big = [], max(r.initial for r in res.residuals)  # round-off: of the largest initial reading
     for k, (s, v) in enumerate(rows):
         r = res.residuals[k]
@@ -282,6 +361,8 @@ def residuals_table(doc: Doc, res: FieldBalanceResult, scale: float, ru: str, ro
                  *polar(r.amplitude / scale, r.angle_deg, digits, big / scale), change]
         if fitted is not None:
             cells += polar(fitted[k].amplitude / scale, fitted[k].angle_deg, digits, big / scale)
+        if limits:
+            cells.append("—" if (s, v) not in limits else num(limits[s, v] / scale, digits))
         table.append(cells)
     doc.table("readings predicted after the correction (the linear model)", cols, table,
               right=tuple(range(len(_head(res)), len(cols))))
