@@ -1,33 +1,21 @@
 """SIGINT, SIGTERM and SIGHUP at any moment: one line on standard error and exit status
 128 + the signal (130, 143, 129), no traceback, no half-written file, no native abort.
 
-Standard library only, and only what the interpreter has already loaded (``_signal`` and
-``sys`` are built in; ``signal`` would import ``enum``, ~3 ms): ``rbcli.__main__`` calls
-:func:`install` before anything else is imported, so the handlers are in place for every
-import that follows (typer, numpy, matplotlib).
+Only what the interpreter has already loaded (``signal`` would import ``enum``, ~3 ms):
+``rbcli.__main__`` calls :func:`install` before any other import.
 
-A signal (:func:`_handler`) is *recorded* first, always: the run ends with 128 + the first
-signal and the line ``rbcli: interrupted by SIGINT`` (:func:`exit_process`), even when a
-``KeyboardInterrupt`` is swallowed somewhere (a ``__del__``, an ``except BaseException``).
-While a module is being imported (a frame of ``importlib._bootstrap`` on the stack) it is
-*deferred*: raising there leaves a half-initialised module behind, and the run then fails
-for that reason (``'3d' is not a valid value for projection``, native aborts in extension
-modules); a 5 ms timer (``SIGALRM``) looks again until no import runs (the longest,
-matplotlib's, ~0.2 s). The entry point's own lines wait the same way, so the interrupt is
-raised inside ``rbcli.cli.main``, which turns it into an exit status, or not at all.
-Otherwise it is *raised* in the main thread (``KeyboardInterrupt``; :class:`Terminated`
-for SIGTERM and SIGHUP), so every ``finally`` and cleanup runs; a further signal while that
-exception is handled is only recorded, and once the run is over, every signal is.
+A signal (:func:`_handler`) is always *recorded* first: the run ends with 128 + the first
+signal and ``rbcli: interrupted by SIGINT`` even when a ``KeyboardInterrupt`` is swallowed.
+While a module is being imported it is *deferred* (raising there leaves a half-initialised
+module: ``'3d' is not a valid value for projection``, native aborts); a 5 ms ``SIGALRM``
+timer looks again until no import runs. Otherwise it is *raised* in the main thread
+(``KeyboardInterrupt``; :class:`Terminated` for SIGTERM and SIGHUP), so every ``finally``
+runs; a further signal meanwhile, or after the run, is only recorded.
 
-:func:`exit_process` ends the process without finalising the interpreter (``atexit``
-functions, the streams flushed, ``os._exit``): the native aborts ("Fatal Python error:
-PyThreadState_Get ... finalizing", exit -6) happened in finalisation, after an interrupt left
-an extension module half-imported or a progress thread running.
-
-A library caller of :func:`rbcli.cli.main` (tests, embedding) gets the in-process subset
-(:func:`install` with ``process=False``): SIGTERM and SIGHUP raise :class:`Terminated`
-while ``main`` runs, SIGINT stays the host's, nothing is deferred and the process is never
-ended.
+:func:`exit_process` ends the process without finalising the interpreter (``os._exit``):
+the native aborts ("Fatal Python error: PyThreadState_Get ... finalizing") happened there.
+A library caller of :func:`rbcli.cli.main` gets ``install(process=False)``: SIGTERM and
+SIGHUP raise :class:`Terminated` while ``main`` runs, SIGINT stays the host's.
 """
 
 import sys
@@ -137,14 +125,11 @@ def install(process: bool = True, quiet=()) -> dict:
     """Handle SIGINT, SIGTERM and SIGHUP as the module docstring says; returns the handlers
     replaced (for :func:`restore`).
 
-    ``process=True`` (rbcli's own process, from ``rbcli.__main__``): all three signals, the
-    deferral timer, and the record kept until :func:`exit_process`; until :func:`start`
-    and in the frames of ``quiet`` (code objects: the entry point's own) a signal waits
-    for the next safe point, as during an import. ``process=False`` (a
-    run of :func:`rbcli.cli.main` inside another program): SIGTERM and SIGHUP only, a fresh
-    record for this run, nothing done when rbcli's process handlers are already there or
-    outside the main thread. A signal the process was started with ignored (``nohup``,
-    ``&`` in a script) stays ignored.
+    ``process=True`` (``rbcli.__main__``): all three, the deferral timer, the record kept
+    until :func:`exit_process`; until :func:`start` and in the frames of ``quiet`` (the entry
+    point's code objects) a signal waits as during an import. ``process=False`` (a run of
+    :func:`rbcli.cli.main` inside another program): SIGTERM and SIGHUP only, a fresh record,
+    nothing when rbcli's process handlers are there. A signal ignored at start stays ignored.
     """
     old: dict = {}
     if STATE.process and not process:

@@ -44,9 +44,8 @@ def round_parts(body: Body) -> list[Part]:
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
-    """The keyword arguments of :func:`rollcheck` read for ``body`` (Options in SI, ``g``
-    standard gravity unless given); an InputError naming the parameter, or for a steady circle
-    without two of lean, circle and speed."""
+    """The keyword arguments of :func:`rollcheck` read for ``body`` (Options in SI); an
+    InputError naming the parameter, or for a steady circle without two of lean, circle, speed."""
     o = read(body, ROLLCHECK, kwargs)
     u = op.Units.of(body)
     for name, kind, what in (("rim_radius", "length", "the rim radius"), ("g", "acceleration", "gravity")):
@@ -100,9 +99,8 @@ class WheelSetup:
 
 def wheel_setup(body: Body, o: Options) -> WheelSetup:
     """The wheel ``body`` makes with ``o``: the axle (else the body's shaft, else z), the rim
-    radius (else the body's, else the largest coaxial round part) and the rim
-    (:func:`rbcli.core.rim.rim_of`). An InputError for a tyre radius above the rim radius, a
-    steady circle on a rim that is not a knife edge, or no rim radius (located)."""
+    radius (else the body's, else the largest coaxial round part) and the rim; an InputError
+    as :func:`_tyre` says, or for no rim radius (located)."""
     mp = body_mass_props(body)
     axis, axis_from = shaft_axis(body, o.shaft)
     n = np.asarray(axis, dtype=float)
@@ -196,8 +194,7 @@ def _plausibility(body: Body, o: Options, a: float) -> tuple[str, ...]:
 
 
 def _wheel(body: Body, mp: Any, axle: Any, through: Any, radius: Any, tol: float) -> Wheel:
-    """The body reduced to a rolling wheel; a body that cannot roll is an InputError
-    located at the body."""
+    """The body reduced to a rolling wheel; else an InputError located at the body."""
     try:
         return wheel_from_body(mp.mass, mp.com, mp.inertia_com, axle, axle_through=through,
                                radius=radius, sym_rtol=tol)
@@ -238,13 +235,10 @@ class RollcheckResult(Result):
 
     @property
     def asymmetry_effect(self) -> float | None:
-        """The relative amount by which the critical spin and speed (and the verdicts near
-        them) may be off from symmetrising the wheel; None when symmetric. The largest of
-        δ/(4 - δ), δ the relative spread of the moments across (the real threshold lies
-        between the ones computed with either moment: s_c ∝ sqrt(I)); the coupling relative
-        to the mean moment across (the principal moments move by at most the coupling, and
-        the wheel wobbles); e/(2 (a - r)) for a com e off the axle (the gravity lever swings
-        by ±e). Derivation: :func:`rbcli.core.wheel.wheel_from_body`, Notes."""
+        """How far the critical spin and speed may be off from symmetrising the wheel (None
+        when symmetric): the largest of δ/(4 - δ) (δ the relative spread of the moments
+        across; s_c ∝ sqrt(I)), the coupling over the mean moment across, and e/(2 (a - r))
+        for a com e off the axle. Derivation: :func:`rbcli.core.wheel.wheel_from_body`."""
         a = self.asymmetry
         if a is None:
             return None
@@ -300,9 +294,7 @@ class RollcheckResult(Result):
         return 1 if failed else 0
 
     def curves(self) -> Curves:
-        """The arrays of the command's figure (:class:`rbcli.core.rolling.Curves`): the
-        squared lean frequency, lean frequency and growth rate against speed and, with a
-        circle, the lean stiffness and speed of steady circles on a (lean, radius) grid."""
+        """The arrays of the command's figure (:class:`rbcli.core.rolling.Curves`)."""
         return rl.curves(rl.RollCheck(self.straight, self.verdict, self.circle))
 
     def to_json(self) -> dict[str, Any]:
@@ -338,14 +330,8 @@ _SPEC_SPEED = ("speed", "stable", "margin")
 
 
 class OffCentreRim(InputError):
-    """The rim circle is too far off the plane of the centre of mass to roll upright
-    (:data:`rbcli.core.rim.RIM_OFFSET_LIMIT`): no straight-rolling threshold, no steady
-    circle. Exit 2, like any bad input.
-
-    Attributes
-    ----------
-    rim : rbcli.core.rim.Rim — the rim and its measured offset
-    reason : str — the short reason, one line (the report's)
+    """The rim is more than :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` off the plane of the com to
+    roll upright (exit 2); ``rim`` (with its offset) and ``reason`` (one line, the report's).
     """
 
     def __init__(self, message: str, where: Any, rim: Rim, reason: str) -> None:
@@ -355,9 +341,8 @@ class OffCentreRim(InputError):
 
 
 def _refuse_off_centre_rim(body: Body, rim: Rim, circle_asked: bool) -> None:
-    """A rim off the plane of the centre of mass (a cone or hemisphere on its base rim, a
-    top): upright rolling is not an equilibrium, so there is no straight-rolling threshold,
-    and the circle model (rim in that plane) does not describe its curves either."""
+    """A rim off the com's plane (a cone on its base rim, a top): upright rolling is no
+    equilibrium, and the circle model (rim in that plane) does not describe its curves."""
     asked = ("the steady circle asked for ({lean}/{circle}) is not computed either: the circle "
              "model takes the rim in that plane" if circle_asked else
              "the steady-circle model, which takes the rim in that plane, does not apply either")
@@ -374,9 +359,8 @@ _CORE_PARAMS = {"radius": "rim_radius", "speed": "rolling_speed"}
 
 
 def _renamed(exc: InputError) -> InputError:
-    """A core error (:mod:`rbcli.core.rolling`) naming the rim radius and the speed by the
-    parameters of :func:`rollcheck` (``rim_radius``, ``rolling_speed``); the command line
-    spells them as its options (``--radius``, ``--speed``: :data:`rbcli.errors.COMMAND_OPTIONS`)."""
+    """A core error naming the rim radius and the speed by the parameters of
+    :func:`rollcheck` (``rim_radius``, ``rolling_speed``)."""
     template = exc.template
     for core, param in _CORE_PARAMS.items():
         template = template.replace("{%s}" % core, "{%s}" % param)
@@ -388,10 +372,9 @@ def _renamed(exc: InputError) -> InputError:
 
 
 def run(body: Body, options: Options) -> RollcheckResult:
-    """The rolling check of ``body`` with ``options`` (:func:`parse`). An InputError located at
-    the body when it is not of revolution about the axle, or its rim is more than
-    :data:`rbcli.core.rim.RIM_OFFSET_LIMIT` off the com's plane (no upright equilibrium); or
-    naming the parameters of a circle that does not exist."""
+    """The rolling check of ``body`` with ``options`` (:func:`parse`); an InputError located
+    at the body (not of revolution, rim off the com's plane) or naming the parameters of a
+    circle that does not exist."""
     o = options
     s = wheel_setup(body, o)
     wheel = _wheel(body, body_mass_props(body), s.axle, s.through, s.radius, o.symmetry_tol)

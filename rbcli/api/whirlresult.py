@@ -289,12 +289,10 @@ class ResponseBearing(_Json):
 @dataclass(frozen=True, eq=False)
 class PeakRow(_Json):
     """A response peak: bearing (1-based) and its plane, speed (rad/s), amplitude (m),
-    amplification_factor (by basis; null when not defined or undamped), half_power
-    [N1, N2] rad/s (null when not defined), mode and whirl of the nearest critical speed,
-    undamped (the peak is an undamped critical speed: infinite response), basis (how the
-    AF was found: "half-power", "damping ratio" (AF = 1/(2 zeta) of the nearest driven
-    critical speed's mode, where the half-power band runs into another peak), "undamped",
-    "undefined")."""
+    amplification_factor (null when not defined or undamped), half_power [N1, N2] rad/s,
+    mode and whirl of the nearest critical speed, undamped (infinite response), basis (how
+    the AF was found: "half-power"; "damping ratio", 1/(2 zeta) of the nearest driven mode,
+    where the half-power band runs into another peak; "undamped"; "undefined")."""
 
     bearing: int
     plane: float
@@ -341,12 +339,8 @@ class ResponseData(_Json):
 class MarginCheck(_Json):
     """A critical speed (a response peak) judged by the API rule: bearing (1-based, null
     for an undamped critical speed) and plane, speed (rad/s), mode, amplification_factor,
-    basis (how the AF was found: "half-power"; "damping ratio": AF = 1/(2 zeta), the
-    response not falling to 1/sqrt(2) of the peak before the next one; "undamped": no
-    damping, AF infinite; "undefined": neither, judged as AF infinite, the full margin),
-    position ("below",
-    "above" or "within" the operating range), margin_percent, required_margin_percent,
-    passed."""
+    basis (as :class:`PeakRow`'s; "undefined" is judged as AF infinite), position ("below",
+    "above" or "within" the operating range), margin_percent, required_margin_percent, passed."""
 
     bearing: int | None
     plane: float | None
@@ -396,12 +390,9 @@ API_RULE = ("API 617 (8th ed.) 6.8.2.4-6.8.2.5 / API 684 (2nd ed.) SP6.8.2.1, SP
 
 @dataclass(frozen=True, eq=False)
 class WhirlResult(Result):
-    """The rotor on its bearings (see :func:`rbcli.whirl`); attribute names are the JSON
-    keys (plus ``name``), arrays read-only.
-
-    Hidden from the JSON (for the tables): ``units`` (the body's units block: what bare
-    numbers meant), ``source`` (the body's file), ``isotropic``, ``options`` (the parameters
-    as read, :class:`rbcli.api.params.Options`: the options table echoes those given).
+    """The rotor on its bearings (see :func:`rbcli.whirl`); attribute names are the JSON keys
+    (plus ``name``). Not in the JSON (for the tables): ``units`` (the body's), ``source``,
+    ``isotropic``, ``options`` (:class:`rbcli.api.params.Options`, echoed in the tables).
     """
 
     name: str
@@ -443,8 +434,8 @@ class WhirlResult(Result):
         return int(ExitStatus.OK)
 
     def to_json(self) -> dict[str, Any]:
-        """The document ``rbcli whirl --json`` prints, less ``file`` (built and checked once:
-        its lists are shared by every call, its top level is a new dict each time)."""
+        """``rbcli whirl --json`` less ``file`` (built once: its lists are shared by every
+        call, its top level is a new dict each time)."""
         return dict(self._document)
 
     @functools.cached_property

@@ -1,15 +1,9 @@
-"""The body model: :class:`Body`, and every way to make one — a body file
-(:func:`load_body`, :func:`load_text`, :func:`load_expr`), Python data (:func:`load_data`),
-parts (:meth:`Body.from_parts`), another body (:meth:`Body.replace`, :meth:`Body.moved`,
-:func:`with_points`) — and to write one (:meth:`Body.to_yaml`).
+"""The body model: :class:`Body`, the ways to make one (a body file, Python data, parts,
+another body) and to write one (:meth:`Body.to_yaml`).
 
-A body is a value, deeply immutable whatever path built it: its parts are
-:mod:`rbcli.body.partmodel`'s read-only values, ``units`` is a read-only mapping of its own,
-the sequences are tuples. One body, one answer.
-
-The builders below return a body's components (:class:`rbcli.body.bodyfile.Built`); this
-module alone makes the :class:`Body` of them, so that its imports go one way: model ->
-pydata -> bodyfile -> the part readers -> partmodel.
+A body is a deeply immutable value (read-only parts and ``units``, tuples). The builders
+return a body's components (:class:`rbcli.body.bodyfile.Built`); only this module makes the
+:class:`Body`, so imports go one way: model -> pydata -> bodyfile -> part readers -> partmodel.
 """
 
 from __future__ import annotations
@@ -59,9 +53,8 @@ class Body:
     units : Mapping[str, str] — the file's ``units`` (``{"length": "mm", ...}``): what its
         bare numbers mean; empty for SI; read-only
 
-    The loader also leaves the body's combined mass properties on it (not a field: a
-    ``dataclasses.replace`` with other parts does not carry them); commands read them with
-    :func:`rbcli.core.inertia.body_mass_props` instead of combining the parts again.
+    The loader remembers the combined mass properties beside the body (not a field, so a
+    ``dataclasses.replace`` does not carry them): :func:`rbcli.core.inertia.body_mass_props`.
     """
 
     name: str
@@ -90,8 +83,7 @@ class Body:
         return f"<Body {self.name!r} from {self.source}: {len(self.parts)} parts>"
 
     def _repr_html_(self) -> str:
-        """Its mass, com and parts as an HTML table, for notebooks (the render import: see
-        :meth:`rbcli.api.result.Result._repr_html_`)."""
+        """Mass, com and parts as an HTML table, for notebooks."""
         from rbcli.render import notebook
 
         return notebook.html(self)
@@ -104,17 +96,14 @@ class Body:
                    reference: Sequence[Any] | str | None = None, pivot: Sequence[Any] | None = None,
                    rim_radius: float | str | None = None, description: str | None = None,
                    base_dir: str | os.PathLike[str] | None = None) -> Body:
-        """A body made of ``parts``, checked as a body file is.
-
-        Each argument is the body file's key of that name, with the values the file takes:
-        numbers in SI or in the body's ``units``, or quantity strings such as ``"25 mm"``.
+        """A body made of ``parts``, checked as a body file is; each argument is the body
+        file's key of that name (SI, the body's ``units``, or strings such as ``"25 mm"``).
 
         Parameters
         ----------
         parts : sequence of PartSpec or mapping
-            The parts, in order: :mod:`rbcli.parts` makes them (``rbcli.parts.disk(...)``);
-            a mapping of a part's keys (``{"shape": "disk", "radius": 0.1, ...}``) is taken
-            too.
+            The parts, in order: :mod:`rbcli.parts` makes them; a mapping of a part's keys
+            (``{"shape": "disk", "radius": 0.1, ...}``) is taken too.
         name : str
             The body's name.
         units : mapping, optional
@@ -172,20 +161,13 @@ class Body:
             rim_radius=rim_radius, description=description, base_dir=base_dir))
 
     def to_yaml(self, *, base_dir: str | os.PathLike[str] | None = None) -> str:
-        """The body as a body file (YAML text) that reads back to the same body.
+        """The body as a body file (YAML text) that reads back to the same body, bit for bit
+        (every value written as read, a float as its ``repr``, in the body's ``units``).
 
-        :func:`rbcli.load_text` (and ``rbcli.load`` of the text saved in ``base_dir``) reads
-        it back to the same mass, centre of mass and inertia tensor, bit for bit, and the
-        same name, units, shaft, reference, pivot and rim radius: every value is written as
-        it was read (a float as Python's ``repr``), in the body's ``units``.
-
-        What is kept: the document's data — its keys, values and their order, strings with
-        units (``"25 mm"``) as written, ``include`` and ``mesh`` parts as references to their
-        files (an included file's parts are not copied in; the files must still be there
-        when the text is read). What is not: comments, layout, quoting and number spelling
-        of a file (``1e3`` is written ``1000.0``); a one-part shorthand becomes a ``parts:``
-        list, and the body's ``name`` and ``units`` are written even when the file left them
-        to defaults (its stem, the caller's ``units=``).
+        Kept: the document's keys, values and order, quantity strings as written, ``include``
+        and ``mesh`` parts as references to their files (which must still be there). Not
+        kept: comments, layout, quoting, number spelling (``1e3`` becomes ``1000.0``); a
+        one-part shorthand becomes a ``parts:`` list; ``name`` and ``units`` are always written.
 
         Parameters
         ----------
@@ -226,10 +208,8 @@ class Body:
 
     def replace(self, which: str | int, part: Mapping[str, Any] | None = None, /,
                 **keys: Any) -> Body:
-        """The body with one of its parts replaced, or some of the part's keys changed.
-
-        The body's document is changed and read again, with every check; the body itself
-        is not changed (it is a value).
+        """The body with one of its parts replaced or some of its keys changed (the document
+        is changed and read again, with every check).
 
         Parameters
         ----------
@@ -303,9 +283,8 @@ class Body:
         return _made(pydata.move_part(self, which, at, axis, rotate))
 
     def checked(self, param: str = "body") -> Body:
-        """This body, if it holds what a loaded body holds; else a TypeError or an InputError
-        naming ``param`` and what is wrong (one made in code, ``dataclasses.replace(body,
-        parts=())``, may hold anything). The API's door; parts are looked at once per body."""
+        """This body, if it holds what a loaded body holds (one made in code may hold
+        anything); else a TypeError or an InputError naming ``param``. Parts are checked once."""
         def finite(a: Any, shape: tuple = (3,)) -> bool:
             return isinstance(a, np.ndarray) and a.shape == shape and bool(np.isfinite(a).all())
 
@@ -337,8 +316,7 @@ class Body:
 
 
 def _made(built: Built) -> Body:
-    """The :class:`Body` of ``built``, its mass properties and its document's folder kept
-    beside it (:func:`rbcli.core.inertia.body_mass_props`, :func:`rbcli.body.document.origin`)."""
+    """The :class:`Body` of ``built``, its mass properties and document folder remembered."""
     body = Body(**built.fields)
     remember_mass_props(body, built.mass_props)
     document.remember_origin(body, built.origin)

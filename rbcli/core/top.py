@@ -236,11 +236,6 @@ class TopMotion:
         }
 
 
-# --------------------------------------------------------------------------------------
-# the analysis
-
-
-
 def _cubic_roots_shifted(
     c0: float, c1: float, c2: float, beta: float, lo: float, hi: float, f_lo: float, f_hi: float
 ) -> tuple[float, float, float]:
@@ -331,15 +326,10 @@ def _require_representable(
     thd: float, w_s0: float, a: float, beta: float, g: float, given: tuple[float, float, float],
     c0: float, c1: float, c2: float, bpa: float, bma: float,
 ) -> None:
-    """Refuse, naming the parameter, a start whose turning-point cubic is beyond doubles.
-
-    The cubic is evaluated on |x| <= 2 (u in [-1, 1]), so its terms must stay below the
-    largest double: |c0| + 2|c1| + 4|c2| + 8β and (b ± a)² finite; its large root
-    u3 ≈ -c2/β must be finite too (the energy more than ~1e308 times gravity's range).
-    The parameter blamed is the one whose rate dominates the energy per unit moment
-    (θ0', φ0' sin θ0, a = Is S/I, sqrt(β)), or g when β = 2 m g l/I itself underflows.
-    Found by the audit of issue 27: ``top --theta-dot 1e300`` ran Brent's method on
-    infinite coefficients, and θ0' = 1e66..1e153 overflowed the Newton polish of u3.
+    """Refuse, naming the parameter, a start whose turning-point cubic is beyond doubles:
+    |c0| + 2|c1| + 4|c2| + 8β, (b ± a)² and u3 ≈ -c2/β must be finite (the cubic is evaluated
+    on |x| <= 2). Blamed: the dominant rate (θ0', φ0' sin θ0, a, sqrt(β)), or g when β
+    underflows. Issue 27: ``--theta-dot 1e300`` ran Brent's method on infinite coefficients.
     """
     size = abs(c0) + 2.0 * abs(c1) + 4.0 * abs(c2) + 8.0 * beta + bpa * bpa + bma * bma
     tiny = not beta >= np.finfo(float).tiny
@@ -516,11 +506,9 @@ def analyse(
     theta1 = tilt(omu2, opu2)
     theta2 = tilt(omu1, opu1)
 
-    # The axis passing exactly through the upward (u2 = 1, b = a) or downward (u1 = -1,
-    # b = -a) vertical: the tip crosses the pole, so its azimuth φ jumps by π once per
-    # nutation period (and ψ by ∓π, keeping the attitude continuous). The Π term of that
-    # pole is then dropped (it would be 0 × ∞). The sign of the jump is the sign of b - a
-    # (resp. b + a), the limit from that side; + when it is exactly zero.
+    # The axis through the upward (u2 = 1, b = a) or downward (u1 = -1, b = -a) vertical:
+    # φ jumps by π once per nutation period (ψ by ∓π) and that pole's Π term (0 × ∞) is
+    # dropped. The jump's sign is that of b - a (resp. b + a); + when it is exactly zero.
     top_pass = omu2 <= 0.0
     bottom_pass = opu1 <= 0.0
     top_sign = -1.0 if bma < 0.0 else 1.0
@@ -636,10 +624,8 @@ def _fast_top(a: float, precession: float, amplitude: float | None, nut_freq: fl
 
 def _mean_rates(K: float, lam: float, term_p: float, term_m: float, jt: float, jb: float,
                 spin_less_a: float) -> tuple[float | None, float | None, float | None, float | None]:
-    """The nutation period and frequency and the mean precession and spin rates: T_n =
-    2K/λ, <φ'> = [cp Π(n+|m) + cm Π(-n-|m)]/K, <ψ'> = S - a - [cp Π(n+|m) - cm Π(-n-|m)]/K
-    (``term_p``, ``term_m``: the bracket's terms), with the jumps ``jt``, ``jb`` of a path
-    through a pole; all None on the separatrix (m = 1: K infinite, no finite period)."""
+    """T_n, 2π/T_n, <φ'> and <ψ'> as in :func:`analyse` (``term_p``, ``term_m``: cp Π(n+|m)
+    and cm Π(-n-|m)), with the pole jumps ``jt``, ``jb``; all None on the separatrix (K = ∞)."""
     if not math.isfinite(K):
         return None, None, None, None
     T_n = 2.0 * K / lam

@@ -1,24 +1,13 @@
 """Readers for triangle-mesh files: STL (binary and ASCII) and Wavefront OBJ.
 
-:func:`read_mesh` returns an *indexed* mesh, ``(vertices, faces)``, with vertices that
-have exactly the same coordinates merged ("welded"), and the weld tolerance that suits
-the file's own precision (:func:`default_weld`): :mod:`rbcli.core.mesh` uses it, only
-when the exactly welded surface is not closed, to close gaps left by coordinate noise.
-Everything is vectorised with numpy: the text formats are read in blocks of whole lines,
-tokenised with numpy and their numbers read by :func:`rbcli.io.meshbase.numbers` (an
-ASCII STL block's repeated ``vertex`` texts only once); the per-token and per-line
-Python readers are kept to say where a file the fast path refuses is wrong, and to read
-the unusual layouts it leaves to them; the numbers are the same bits either way, which
-the tests check.
-
-Before anything is read the file's type and size are checked: a directory, FIFO,
-device or socket is refused, and so is a file larger than :func:`max_mesh_bytes`
-(``RBCLI_MAX_MESH_BYTES``, default 1 GiB).
-
-Errors are :class:`MeshFileError` (a ``ValueError``) with a lower-case message that
-starts with the file name, says what is wrong and, for text formats, on which line.
-The formats are read by :mod:`rbcli.io.meshstl` and :mod:`rbcli.io.meshobj`; points are
-welded by :mod:`rbcli.io.meshweld`.
+:func:`read_mesh` returns an *indexed* mesh (exactly equal vertices merged) and the weld
+tolerance that suits the file's precision (:func:`default_weld`), which
+:mod:`rbcli.core.mesh` uses only to close the gaps of a surface that is not closed.
+Text formats are read in blocks with numpy; the per-line Python readers remain to locate
+what the fast path refuses and to read the unusual layouts (the same bits either way, as
+the tests check). Formats: :mod:`rbcli.io.meshstl`, :mod:`rbcli.io.meshobj`; welding:
+:mod:`rbcli.io.meshweld`. Errors are :class:`MeshFileError` (a ``ValueError``), lower
+case, starting with the file name (and the line, for text).
 """
 
 from __future__ import annotations
@@ -75,11 +64,8 @@ class MeshFile(NamedTuple):
 
 
 def max_mesh_bytes() -> int:
-    """The mesh-file size limit in bytes: ``RBCLI_MAX_MESH_BYTES`` or :data:`MAX_MESH_BYTES`.
-
-    The variable holds a number of bytes, optionally with a suffix ``k``, ``M``, ``G``
-    (powers of 1024, e.g. ``4G``). A value that is not such a number is an error.
-    """
+    """The mesh-file size limit in bytes: ``RBCLI_MAX_MESH_BYTES`` (bytes, optionally with
+    ``k``, ``M``, ``G``: powers of 1024) or :data:`MAX_MESH_BYTES`."""
     text = os.environ.get("RBCLI_MAX_MESH_BYTES", "").strip()
     if not text:
         return MAX_MESH_BYTES
@@ -135,19 +121,15 @@ def read_mesh(path: str | os.PathLike[str], *, max_bytes: int | None = None) -> 
     Returns
     -------
     MeshFile
-        ``(vertices, faces, format, weld)``: distinct vertex positions (float64, the
-        file's unit), triangles as vertex indices in file order (so the file's
-        orientation is kept), the format and its default weld tolerance. Vertices with
-        exactly equal coordinates are merged (``-0.0`` equals ``0.0``); polygons with
-        more than three corners (OBJ) are fanned into triangles.
+        Vertices with equal coordinates merged (``-0.0`` equals ``0.0``), triangles in
+        file order (its orientation kept; OBJ polygons fanned), format, weld tolerance.
 
     Raises
     ------
     MeshFileError
-        Unknown extension; a file that is missing, not a regular file (directory, FIFO,
-        device, socket), over the size limit, unreadable, or whose name holds a NUL; a
-        truncated or malformed file (with the line, for text formats); NaN or infinite
-        coordinates; a face index out of range (OBJ); a file without triangles.
+        Unknown extension; a file missing, not regular, over the size limit, unreadable;
+        a truncated or malformed file (with the line); non-finite coordinates; a face
+        index out of range (OBJ); no triangles.
 
     Notes
     -----

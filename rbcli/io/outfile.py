@@ -1,19 +1,14 @@
 """Output files: one check and one atomic writer for every file rbcli writes (README
 "Output, exit status and speed"; SPEC §3).
 
-- No output ever replaces an input (``Body.inputs``: the body file, its includes, its
-  meshes), by real path or file identity (hard links, mounts), with or without ``--force``.
+- No output ever replaces an input (``Body.inputs``), by real path or file identity.
 - Documents and bodies replace an existing file only with ``--force``; figures and data
-  (``--plot``, ``--csv``) replace it (``replace_ok=True``).
-- Only a regular file or a new name is written: a symbolic link, a device, a FIFO, a
-  socket or a folder is refused, as root too.
+  (``--plot``, ``--csv``) do (``replace_ok=True``).
+- Only a regular file or a new name is written (no link, device, FIFO, socket, folder).
 - Every output goes to a temporary file in its folder (``O_EXCL | O_NOFOLLOW``) renamed over
-  the target; without replacing, the rename is no-clobber (``renameat2(RENAME_NOREPLACE)``,
-  else ``link(2)``): of 20 parallel ``report -o new.html`` exactly one writes.
-- A document with a folder of figures (``r.md``: ``r_files/``) is written all or nothing:
-  the old pair stays whole until the new pair is whole, then both are swapped with SIGINT,
-  SIGTERM and SIGHUP held off (:func:`write_document`). An existing ``r_files/`` is replaced
-  whole, never written into, and only with ``--force``.
+  the target, no-clobber without replacing (``renameat2(RENAME_NOREPLACE)``, else ``link``).
+- A document with a folder of figures (``r.md``: ``r_files/``) is written all or nothing
+  (:func:`write_document`); an existing ``r_files/`` is replaced whole, only with ``--force``.
 - Interrupted or failed, a write leaves no ``.rbcli-XXXX.tmp`` file or folder.
 
 Errors are :class:`rbcli.errors.InputError` (exit 2), one line starting with the option.
@@ -147,10 +142,8 @@ def check(
 
 
 def _probe(text: str, option: str) -> None:
-    """Refuse a name the system cannot take at all (ENAMETOOLONG: a component over 255
-    bytes or a path over 4096; ELOOP; EACCES on a folder on the way), as an output error,
-    before any other check asks the system about it. A name that does not exist yet, or
-    whose folder is missing or a file, is for the checks after (their own messages)."""
+    """Refuse, before any other check, a name the system cannot take at all (ENAMETOOLONG,
+    ELOOP, EACCES on the way); a missing name or folder is for the checks after."""
     if not text:
         return
     try:
@@ -218,12 +211,10 @@ _pending: list[int] = []
 
 @contextmanager
 def _held_signals() -> Iterator[None]:
-    """SIGINT, SIGTERM and SIGHUP held off for a few steps (a temporary file made, outputs
-    renamed into place, a cleanup), so that no interrupt splits them; one that arrives is
-    delivered when the outermost block ends. Held by swapping the handlers for one that
-    records (``pthread_sigmask`` would not do: the kernel may hand the signal to a BLAS
-    thread, whose C handler still makes the main thread raise); outside the main thread,
-    nothing (no handler runs there)."""
+    """SIGINT, SIGTERM and SIGHUP held off for a few steps, delivered when the outermost
+    block ends. Held by swapping the handlers for one that records (``pthread_sigmask`` would
+    not do: the kernel may hand the signal to a BLAS thread, whose C handler still makes the
+    main thread raise); outside the main thread, nothing (no handler runs there)."""
     import signal
     import threading
 
@@ -273,11 +264,9 @@ def _renameat2_noreplace(src: str, dst: str) -> bool:
 
 
 def rename_noreplace(src: str, dst: str) -> None:
-    """Rename ``src`` to ``dst`` only if ``dst`` does not exist, in one step.
-
-    ``renameat2(RENAME_NOREPLACE)`` where the system has it; for a file, ``link(2)`` then
-    unlink (``link`` fails if the name exists); otherwise a check then a rename (a window
-    only on file systems with neither).
+    """Rename ``src`` to ``dst`` only if ``dst`` does not exist, in one step:
+    ``renameat2(RENAME_NOREPLACE)``, else for a file ``link(2)`` then unlink, else a check
+    then a rename (a window only on file systems with neither).
 
     Raises
     ------
@@ -353,9 +342,8 @@ def _remove(tmp: str | None) -> None:
 @contextmanager
 def atomic_open(path: str | Path, option: str, *, binary: bool = False,
                 replace: bool = True) -> Iterator[IO]:
-    """A file to write ``path`` through: a new temporary file in the same folder, renamed
-    onto ``path`` when the block ends without an error, removed when it does not (an
-    exception, Ctrl-C, SIGTERM).
+    """A temporary file beside ``path``, renamed onto it when the block ends without an
+    error, removed when it does not (an exception, Ctrl-C, SIGTERM).
 
     Parameters
     ----------
@@ -368,9 +356,8 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
     Raises
     ------
     InputError
-        ``option: cannot write 'path': reason`` (the folder or the file cannot be written,
-        a full disk), ``option: 'path' exists; use --force ...`` (``replace`` False), or
-        ``option: 'path' is a device ...`` (found at write time).
+        ``option: cannot write 'path': reason``, ``'path' exists`` (``replace`` False), or
+        ``'path' is a device ...`` (found at write time).
     """
     option = _opt(option)
     text = os.fspath(path)
@@ -399,14 +386,8 @@ def atomic_open(path: str | Path, option: str, *, binary: bool = False,
 
 def write_atomic(path: str | Path, data: str | bytes, option: str = "output", *,
                  replace: bool = True) -> None:
-    """Write ``data`` (text as UTF-8 with ``\n`` line ends, or bytes) to ``path`` atomically;
-    see :func:`atomic_open` (``replace=False``: only if ``path`` is a new name).
-
-    Raises
-    ------
-    InputError
-        ``option: cannot write 'path': reason``, or ``path`` exists and ``replace`` is False.
-    """
+    """Write ``data`` (text as UTF-8 with ``\n`` line ends, or bytes) to ``path`` atomically:
+    :func:`atomic_open`."""
     with atomic_open(path, option, binary=isinstance(data, bytes), replace=replace) as fh:
         fh.write(data)
 
@@ -422,15 +403,8 @@ def files_dir(path: str | Path) -> Path:
 
 def check_folder(folder: str | Path, body_or_inputs: Body | Iterable[str] | None, option: str,
                  *, force: bool = False) -> Path:
-    """An output folder (a Markdown report's figures), checked the way :func:`check` checks
-    a file: it holds no input (the body, its includes, its meshes), it is a real folder (not
-    a link) holding only files, and it is replaced only with ``force``.
-
-    Raises
-    ------
-    InputError
-        (exit 2, one line naming ``option``).
-    """
+    """An output folder (a Markdown report's figures), checked as :func:`check` checks a file:
+    no input in it, a real folder holding only files, replaced only with ``force``."""
     folder = Path(folder)
     option = _opt(option)
     text = os.fspath(folder)
@@ -469,17 +443,8 @@ def check_folder(folder: str | Path, body_or_inputs: Body | Iterable[str] | None
 def write_document(path: str | Path, data: str | bytes, option: str, *, replace: bool,
                    folder: str | Path | None = None,
                    files: Mapping[str, str | bytes] | None = None) -> None:
-    """Write a document and (when ``files``) its folder of figures, all or nothing.
-
-    The figures go into a new temporary folder beside ``path``, the document into a temporary
-    file; the old pair stays whole until the new pair is, then :func:`_swap` replaces both or
-    neither, signals held off (one that arrives is raised after). Nothing temporary is left.
-
-    Raises
-    ------
-    InputError
-        ``option: cannot write ...``, ``option: '...' exists; use --force ...``.
-    """
+    """Write a document and (when ``files``) its folder of figures, all or nothing: both are
+    made under temporary names, then :func:`_swap` replaces the old pair, signals held off."""
     option = _opt(option)
     text = os.fspath(path)
     if not files:

@@ -120,15 +120,9 @@ class Node:
 
 
 class ScalarNode(Node):
-    """A scalar: ``ScalarNode(mark, value, raw, quoted)``.
-
-    value : the resolved value (YAML 1.2 core schema for plain scalars; ``str`` for
-        quoted and block scalars).
-    raw : the scalar's text before type resolution (quotes removed, escapes and
-        folding applied), e.g. ``"1e3"`` for the value 1000.0.
-    quoted : True for quoted (``'...'``, ``"..."``) and block (``|``, ``>``)
-        scalars, which are always strings; False for plain scalars.
-    """
+    """A scalar, ``ScalarNode(mark, value, raw, quoted)``: ``value`` resolved (core schema
+    for plain scalars, else str), ``raw`` its text before resolution (``"1e3"``), ``quoted``
+    True for quoted and block scalars (always strings)."""
 
     __slots__ = ("value", "raw", "quoted")
     __match_args__ = ("mark", "value", "raw", "quoted")
@@ -409,8 +403,8 @@ def _resolve_plain(raw: str, filename: str, mark: object) -> str | int | float |
 
 
 def plain_value(raw: str) -> str | int | float | bool | None:
-    """The value of the plain scalar ``raw`` by the YAML 1.2 core schema, as :func:`load`
-    gives it (an integer of more than 300 digits raises an InputError located at 1:1)."""
+    """The value of the plain scalar ``raw`` as :func:`load` gives it (an integer of more than
+    300 digits: an InputError at 1:1)."""
     return _resolve_plain(raw, "", Mark(1, 1))
 
 
@@ -558,13 +552,8 @@ class _Tree:
 
 
 def _parse(text: str, filename: str, cap: tuple | None = None) -> Node | None:
-    """Build the node tree from libyaml's (iterative) event stream in one pass.
-
-    Anchors, aliases, tags, nesting deeper than MAX_DEPTH and a second document are
-    refused as soon as their event arrives, so a hostile file costs milliseconds and
-    no recursive composer ever sees it. Returns None for a stream with no document.
-    A mapping or sequence node is made (with its still empty dict or list) and put in
-    its parent when its start event arrives; its items are added as they come.
+    """Build the node tree from libyaml's event stream in one pass (None for no document),
+    refusing what is refused as soon as its event arrives: a hostile file costs milliseconds.
     """
     if cap is not None and text.count("-") + text.count(",") >= cap[1]:
         _count_first(text, cap)
@@ -617,14 +606,10 @@ def _count_first(text: str, cap: tuple) -> None:
 
 
 def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> Node:
-    """Parse a body file safely: the root :class:`Node` (every node with its 1-based
-    :class:`Mark`), or an InputError located at ``filename:line:col``.
-
-    ``text`` is str or bytes (UTF-8, a leading BOM dropped); ``filename`` is for locations only.
-    ``list_cap`` ``(key, n, make_error)``: the list under the root's ``key`` holds at most ``n``
-    items, the next one raising ``make_error(mark)`` before the rest of the file is read.
-    One pass over libyaml's (iterative) event stream refuses what the module docstring lists
-    as its events arrive and builds the tree; PyYAML's recursive composer is never used."""
+    """Parse a body file safely: the root :class:`Node`, or an InputError located at
+    ``filename:line:col``. ``text`` is str or bytes (UTF-8, a BOM dropped); ``list_cap``
+    ``(key, n, make_error)``: the list under the root's ``key`` holds at most ``n`` items,
+    the next one raising ``make_error(mark)`` before the rest of the file is read."""
     text = _decode(text, filename)
     try:
         root = _parse(text, filename, list_cap)

@@ -1,22 +1,14 @@
 """Outlines of the parts for drawings: each shape as surface triangles in the body frame,
 and its shadow (filled triangles and outline segments) on a coordinate plane.
 
-Geometry only, no physics: a part's :class:`rbcli.body.partmodel.Outline` (shape, dimensions,
-placement) becomes a :class:`Sketch` — vertices on the shape's true surface, triangles
-between them, and the lines drawn whatever the view (a rod, a ring, a triangle's edges).
-:func:`shadow` projects a sketch orthographically on the (i, j) plane of the body frame:
+Geometry only: a part's :class:`rbcli.body.partmodel.Outline` becomes a :class:`Sketch`
+(vertices on the shape's true surface, triangles, always-drawn lines); :func:`shadow`
+projects it orthographically on a body-frame plane (:class:`Shadow`: fill, silhouette,
+creases over :data:`CREASE_DEG`, dashed hidden inner surfaces).
 
-- the *fill*: the union of the triangles not seen edge-on (holes of a tube included), as
-  the polygons bounding it (:func:`fill_loops`), or the convex hull of a convex shape;
-- the *outline*: every edge between a triangle facing the viewer and one facing away or
-  edge-on (the silhouette), an open surface's border, and the always-drawn lines;
-- the *creases*: sharp edges (over :data:`CREASE_DEG`) on the viewer's side, not outline;
-- *hidden* outline segments: those only of inner surfaces (a bore, a cavity), dashed.
-
-Circles have :data:`SEGMENTS` points, every vertex on the exact surface (outlines within
-``R (1 − cos(π/n))``). Meshes are drawn from a copy decimated by vertex clustering
-(:func:`decimate`; Rossignac & Borrel 1993) to :data:`MESH_MAX_TRIANGLES`; a given part as
-its equivalent uniform ellipsoid (:func:`rbcli.body.partmodel.equivalent_ellipsoid`).
+Circles have :data:`SEGMENTS` points (outlines within ``R (1 − cos(π/n))``). Meshes are drawn
+decimated by vertex clustering (:func:`decimate`; Rossignac & Borrel 1993); a given part
+as its equivalent uniform ellipsoid.
 """
 
 from __future__ import annotations
@@ -137,12 +129,9 @@ def _circle(n: int = SEGMENTS) -> np.ndarray:
 
 
 def _revolve(profile, *, loop: bool, inner=(), n: int = SEGMENTS) -> Sketch:
-    """The surface swept by the (r, z) ``profile`` turning about local z.
-
-    Profile points on the axis (r = 0) become one vertex; ``loop`` joins the last profile
-    point to the first. Triangles turn the same way everywhere (consistent orientation).
-    ``inner``: the profile segments (k from point k to k + 1) that sweep an inner surface,
-    or True for all of them.
+    """The surface swept by the (r, z) ``profile`` turning about local z, consistently
+    oriented; points on the axis become one vertex; ``loop`` closes the profile; ``inner``:
+    the profile segments (k: point k to k + 1) that sweep an inner surface, or True for all.
     """
     prof = np.asarray(profile, dtype=float)
     cs = _circle(n)
@@ -294,11 +283,9 @@ def sketch(outline, n: int = SEGMENTS, max_triangles: int | None = None) -> Sket
 
 
 def decimate(vertices, faces, max_triangles: int = MESH_MAX_TRIANGLES) -> tuple[np.ndarray, np.ndarray]:
-    """A mesh of at most ``max_triangles`` triangles that looks like ``(vertices, faces)``.
-
-    Vertex clustering: a g × g × g grid's cell's vertices merge into their mean; collapsed
-    triangles dropped, duplicates kept once. g starts at √max_triangles and shrinks as the
-    square root of the excess (triangles go as g²): two or three O(n) passes."""
+    """A mesh of at most ``max_triangles`` triangles that looks like ``(vertices, faces)``:
+    vertex clustering on a g³ grid (cell means; collapsed triangles dropped, duplicates once),
+    g from √max_triangles shrinking as the square root of the excess (two or three passes)."""
     V = np.asarray(vertices, dtype=float)
     F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if len(F) <= max_triangles:
@@ -422,12 +409,9 @@ def facing(s: Sketch, direction) -> np.ndarray:
 
 
 def ellipse_shadow(semi_axes, axes, i: int, j: int, n: int = 181) -> np.ndarray:
-    """(n, 2) outline of the shadow of an ellipsoid on the (i, j) coordinate plane.
-
-    The ellipsoid centred at 0 with semi-axes ``a_k`` along the unit rows ``axes[k]`` is
-    ``{x : xᵀ M⁻¹ x ≤ 1}`` with ``M = Σ a_k² n_k n_kᵀ``; its orthographic shadow on the
-    (i, j) plane is the ellipse of the 2×2 block of M, traced as ``S [cos t, sin t]``
-    with ``S = M₂^{1/2}`` (symmetric square root, so a flat ellipsoid gives a segment).
+    """(n, 2) outline of the shadow on the (i, j) plane of the ellipsoid ``{x : xᵀ M⁻¹ x ≤ 1}``,
+    ``M = Σ a_k² n_k n_kᵀ`` (semi-axes ``a_k`` along rows ``axes[k]``): ``S [cos t, sin t]``,
+    ``S`` the symmetric square root of M's (i, j) block (a flat ellipsoid gives a segment).
     """
     a = np.asarray(semi_axes, dtype=float)
     N = np.asarray(axes, dtype=float)
@@ -468,14 +452,10 @@ def _covered_both_sides(segs: np.ndarray, tris: np.ndarray, eps: float) -> np.nd
 
 
 def fill_loops(faces, points2) -> list[np.ndarray]:
-    """Closed polygons whose nonzero-rule fill is the union of the projected triangles.
-
-    The triangles turned counter-clockwise (zero-area ones dropped), their directed edges
-    summed (an edge cancels its reverse) and chained into loops: the loops' winding number
-    about a point is the number of triangles covering it, so a nonzero fill is the union.
-
-    ``faces``: (m, 3) indices into ``points2`` ((n, 2) projected vertices; a shared vertex
-    has one index, so that common edges cancel). Returns closed (k, 2) loops."""
+    """Closed (k, 2) loops whose nonzero-rule fill is the union of the projected triangles
+    ``faces`` ((m, 3) indices into the (n, 2) ``points2``): the counter-clockwise triangles'
+    directed edges summed (an edge cancels its reverse) and chained; the loops' winding number
+    about a point is the number of triangles covering it."""
     P = np.asarray(points2, dtype=float)
     F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if not len(F):
@@ -533,10 +513,8 @@ def hull(points) -> np.ndarray:
 
 
 def polylines(segments: np.ndarray) -> list[np.ndarray]:
-    """The (s, 2, d) segments joined end to end into polylines (a list of (n, d) arrays),
-    so that a dashed line flows along a curve instead of restarting its dashes at every
-    segment. Endpoints join where they are equal (segments cut from one set of vertices);
-    each segment is used once, in either direction.
+    """The (s, 2, d) segments joined at equal endpoints into polylines (a list of (n, d)
+    arrays), so that dashes flow along a curve; each segment used once, either way round.
     """
     segs = np.asarray(segments, dtype=float)
     if not len(segs):

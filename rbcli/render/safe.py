@@ -1,8 +1,7 @@
 """User text made safe inside every output: CSV, JSON, reports, robot XML, figures.
 
-Names, labels and file names are data that came from a file or a command line. In an
-output they must stay data: they may not forge lines or cells, reorder what a reader sees,
-break the format's syntax or become a spreadsheet formula. The rules, one for every format:
+Names, labels and file names from a file or a command line must stay data in an output (no
+forged lines or cells, reordering, broken syntax or spreadsheet formula):
 
 - **Escaped everywhere** (:func:`escape`, :func:`rbcli.env.clean`'s escapes without its
   cutting): C0 and C1 controls, DEL, U+2028/U+2029, the bidirectional controls (U+200E/F,
@@ -58,11 +57,8 @@ def _json_u(m: re.Match) -> str:
 
 
 def json_escape(encoded: str) -> str:
-    """Encoded JSON text with the unsafe characters JSON leaves raw written as ``\\uXXXX``.
-
-    They can stand only inside strings (JSON's own syntax is ASCII), so this is safe on the
-    whole document. Plain ASCII without DEL has none of them: returned as it is, without
-    compiling the pattern (~2 ms, on every ``--json`` run)."""
+    """Encoded JSON text with the unsafe characters JSON leaves raw (only in strings) written
+    as ``\\uXXXX``; plain ASCII without DEL is returned as it is (no pattern compiled: ~2 ms)."""
     if encoded.isascii() and "\x7f" not in encoded:
         return encoded
     return re.sub(_JSON_UNSAFE, _json_u, encoded)

@@ -12,8 +12,7 @@ of the command's JSON, with the columns ``quantity,value,text,unit``:
 
 A ``null``, an empty list or mapping has both ``value`` and ``text`` empty. With several
 bodies a ``file`` column comes first, the header once. RFC 4180 quoting, ``\n`` line ends:
-``pandas.read_csv(f)`` reads it in one call. Long, not wide: the JSON value by value, one
-header for every command, lists of any length; the text tables stay for people."""
+``pandas.read_csv(f)`` reads it in one call."""
 
 from __future__ import annotations
 
@@ -49,10 +48,8 @@ def _undefined(d: dict, key: str) -> Any:
 
 
 def values(data: Any, path: str = "", defined: Any = True) -> Iterator[tuple[str, Any, bool]]:
-    """(path, leaf value, defined) for every leaf of JSON ``data``, in the JSON's order.
-
-    A leaf is a number, a string, a bool or None; an empty list or mapping is a leaf too
-    (its value None). ``defined`` is False for a number its ``_defined`` sibling flags."""
+    """(path, leaf value, defined) for every leaf of JSON ``data``, in order (an empty list or
+    mapping is a leaf, value None; ``defined`` False where a ``_defined`` sibling says so)."""
     if isinstance(data, dict):
         if not data:
             yield path, None, True
@@ -86,10 +83,8 @@ def rows(data: dict, command: str, digits: int | None = None,
 
 def render(data: dict, command: str, *, digits: int | None = None, file: str | None = None,
            header: bool = True, params: Mapping[str, str] | None = None) -> str:
-    """The CSV text of one result's JSON (see the module docstring for the layout).
-
-    ``file``: add the leading ``file`` column (several bodies); ``header``: write the header
-    row (the first body of several only)."""
+    """The CSV text of one result's JSON; ``file``: add the leading ``file`` column;
+    ``header``: write the header row."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     lead = [] if file is None else [csv_text(file)]
