@@ -17,7 +17,7 @@ from rbcli import interrupts
 from rbcli.errors import MAX_LINE, MAX_WORD, InputError, clean  # noqa: F401 - clean is env's to callers
 from rbcli.interrupts import Terminated  # noqa: F401 - raised for SIGTERM and SIGHUP
 
-# ----------------------------------------------------------------------------- ASCII terminals
+# --- ASCII terminals
 
 #: what a unit symbol or a sign becomes on a terminal that cannot show it (PYTHONIOENCODING=ascii)
 ASCII_FALLBACK = {
@@ -63,7 +63,7 @@ def _needs_fallback(stream: object) -> bool:
         return True
 
 
-# ----------------------------------------------------------------------------- streams
+# --- streams
 
 
 class _Closed:
@@ -168,7 +168,7 @@ def finish_stdout(code: int) -> int:
     return code
 
 
-# ----------------------------------------------------------------------------- signals
+# --- signals
 
 
 # SIGINT, SIGTERM and SIGHUP: rbcli.interrupts (stdlib only, installed by rbcli.__main__ before
@@ -192,7 +192,7 @@ def restore_signals(old: dict) -> None:
     interrupts.restore(old)
 
 
-# ----------------------------------------------------------------------------- matplotlib
+# --- matplotlib
 
 
 def prepare_blas() -> None:
@@ -253,7 +253,7 @@ def show_warning(message, category, filename, lineno, file=None, line=None) -> N
     write_error(f"rbcli: warning: {text}")
 
 
-# ----------------------------------------------------------------------------- Env
+# --- Env
 
 
 class Env:

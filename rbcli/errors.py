@@ -108,7 +108,7 @@ def spelled_data(data: object, name: Callable[[str], str]) -> object:
 _SPELLED = (dict, list, Note)
 
 
-# ----------------------------------------------------------------------------- user text
+# --- user text
 
 #: the longest run of non-blank characters shown whole in a message or a table cell; longer
 #: ones (a 5-million-digit number) are cut with "…"

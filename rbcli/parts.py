@@ -137,7 +137,7 @@ def _spec(shape: str, args: dict[str, Any]) -> PartSpec:
     return PartSpec(data)
 
 
-# ----------------------------------------------------------------------------- shapes
+# --- shapes
 
 
 point = _constructor(
@@ -377,7 +377,7 @@ minor_radius : float or str, optional
 """)
 
 
-# ----------------------------------------------------------------------------- the special parts
+# --- the special parts
 
 
 mesh = _constructor(

@@ -56,7 +56,7 @@ def _num(x: float) -> str:
     return s[1:] if s.startswith("-") and float(s) == 0.0 else s
 
 
-# ----------------------------------------------------------------------------- options
+# --- options
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
@@ -112,7 +112,7 @@ def _radius(body: Body, o: Options) -> Any:
     return float(body.rim_radius)
 
 
-# ----------------------------------------------------------------------------- result
+# --- result
 
 
 @dataclass(frozen=True)
@@ -307,7 +307,7 @@ class BalanceResult(Result):
         return jsonable(d)
 
 
-# ----------------------------------------------------------------------------- the service
+# --- the service
 
 
 def _param_error(exc: ValueError, rename: dict[str, str] | None = None) -> InputError:

@@ -192,7 +192,7 @@ def _total(value: Any, param: str) -> Any:
     return value
 
 
-# ----------------------------------------------------------------------------- the checkers
+# --- the checkers
 
 
 def body(value: Any, param: str = "body", *, optional: bool = False) -> Body | None:

@@ -21,7 +21,7 @@ from rbcli.io.field import CHOICES
 __all__ = ["BODY", "INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS", "TOP",
            "GYROCOMPASS", "ROLLCHECK", "WHIRL", "REPORT", "TABLES"]
 
-# ----------------------------------------------------------------------------- shared
+# --- shared
 
 #: the shaft's direction (balance, rollcheck; ``replace(SHAFT, help=...)`` to word it)
 SHAFT = Param("shaft", "Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's "
@@ -79,7 +79,7 @@ def _positions(n: int, given: Any) -> str | None:
         f"must be a whole number from 3 to 100000 (holes or blades), not {literal(given)}"
 
 
-# ----------------------------------------------------------------------------- inertia, principal
+# --- inertia, principal
 
 _ABOUT = Param("about", "Point: com, origin or x,y,z (a bare number in the body's length unit, m by "
                "default; a unit after the last number applies to all, e.g. '10,0,5 mm').", "point")
@@ -96,7 +96,7 @@ INERTIA = (
 #: :func:`rbcli.principal` and ``rbcli principal``: about the com unless told
 PRINCIPAL = (*BODY, replace(_ABOUT, default="com"))
 
-# ----------------------------------------------------------------------------- balance
+# --- balance
 
 _BARE_LENGTH = "a bare number in the body's length unit, m by default"
 
@@ -139,7 +139,7 @@ BALANCE = (
           choices=("bearings", "corrections")),
 )
 
-# ----------------------------------------------------------------------------- field-balance
+# --- field-balance
 
 
 def _one_of(key: str, word: str, given: Any) -> str | None:
@@ -224,7 +224,7 @@ FIELD_BALANCE = (
           "one- or two-plane job (what a job sheet shows).", "flag", cli=False),
 )
 
-# ----------------------------------------------------------------------------- precess
+# --- precess
 
 #: the most rows of a time series (precess and top --csv): 10^6 rows is ~100 MB of CSV,
 #: about what a spreadsheet holds (1 048 576 rows)
@@ -276,7 +276,7 @@ PRECESS = (
           "more than 1e-8.", "flag", echo="-", default=False),
 )
 
-# ----------------------------------------------------------------------------- top, gyrocompass
+# --- top, gyrocompass
 
 #: rows of top's time series when ``samples`` is not given
 TOP_SAMPLES = 600
@@ -372,7 +372,7 @@ GYROCOMPASS = (
     _NO_SYMMETRY_ECHO,
 )
 
-# ----------------------------------------------------------------------------- rollcheck
+# --- rollcheck
 
 def _lean(b: float, given: Any) -> str | None:
     return None if 0.0 <= b < 0.5 * math.pi else ("the inward lean from the vertical must be from 0 up to "
@@ -411,7 +411,7 @@ ROLLCHECK = (
     _NO_SYMMETRY_ECHO,
 )
 
-# ----------------------------------------------------------------------------- whirl
+# --- whirl
 
 #: the default number of speeds of the Campbell diagram and the response
 DEFAULT_POINTS = 201
@@ -513,7 +513,7 @@ WHIRL = (
 
 
 
-# ----------------------------------------------------------------------------- report
+# --- report
 
 
 def _worded(table: tuple[Param, ...], name: str, help: str, **changes: Any) -> Param:

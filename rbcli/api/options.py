@@ -257,7 +257,7 @@ def symmetry_tolerance(value: Any, option: str = "symmetry_tol") -> float:
     return x
 
 
-# ----------------------------------------------------------------------------- the bare-number rule
+# --- the bare-number rule
 
 
 class Units:

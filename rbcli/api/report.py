@@ -43,7 +43,7 @@ __all__ = ["ReportOptions", "ReportResult", "Section", "parse", "report", "run"]
 _TOP_STAND_INS = {"spin": 1.0, "theta": 90.0}
 
 
-# ----------------------------------------------------------------------------- options
+# --- options
 
 
 def _text(v: Any) -> str:
@@ -216,7 +216,7 @@ def parse(body: Body, **kwargs: Any) -> ReportOptions:
                          whirl_error=w_err, top_skip=t_skip, rolling_skip=r_skip)
 
 
-# ----------------------------------------------------------------------------- the result
+# --- the result
 
 
 @dataclass(frozen=True)
@@ -297,7 +297,7 @@ class ReportResult(Result):
         })
 
 
-# ----------------------------------------------------------------------------- the sections
+# --- the sections
 
 
 class _Ctx:

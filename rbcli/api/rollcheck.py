@@ -40,7 +40,7 @@ def round_parts(body: Body) -> list[Part]:
     return [p for p in body.parts if not p.subtract and p.radius is not None and p.shape in ROUND_SHAPES]
 
 
-# ----------------------------------------------------------------------------- options
+# --- options
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
@@ -62,7 +62,7 @@ def parse(body: Body, **kwargs: Any) -> Options:
     return o.replace(g=STANDARD_GRAVITY if o.g is None else o.g)
 
 
-# ----------------------------------------------------------------------------- the wheel
+# --- the wheel
 
 
 @dataclass(frozen=True)
@@ -204,7 +204,7 @@ def _wheel(body: Body, mp: Any, axle: Any, through: Any, radius: Any, tol: float
         raise InputError(str(exc), Location(body.source)) from None
 
 
-# ----------------------------------------------------------------------------- result
+# --- result
 
 
 @dataclass(frozen=True)

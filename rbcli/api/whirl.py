@@ -42,7 +42,7 @@ __all__ = ["WhirlResult", "whirl", "parse", "run", "CONVENTIONS"]
 
 RPM = 30.0 / math.pi  # rpm per rad/s, for messages
 
-# ----------------------------------------------------------------------------- options
+# --- options
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
@@ -138,7 +138,7 @@ def _unbalance(body: Body, unbalance: Any, planes: Any) -> tuple[tuple[float, co
     return tuple(out)
 
 
-# ----------------------------------------------------------------------------- the service
+# --- the service
 
 
 def run(body: Body, options: Options) -> WhirlResult:

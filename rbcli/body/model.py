@@ -88,7 +88,7 @@ class Body:
 
         return notebook.html(self)
 
-    # ------------------------------------------------------------------ built in code
+    # --- built in code
 
     @classmethod
     def from_parts(cls, parts: Sequence[Mapping[str, Any]], *, name: str = "body",

@@ -44,7 +44,7 @@ def tree(data: object, mark: DataMark) -> ys.Node:
     return ys.ScalarNode(mark, data, data if text else repr(data), text)  # type: ignore[arg-type]
 
 
-# --------------------------------------------------------------------------- bodies
+# --- bodies
 
 
 def _base(base_dir: object, param: str = "base_dir") -> Path:
@@ -157,7 +157,7 @@ def from_parts(parts: Sequence[Mapping[str, object]], *, base_dir: object = None
     return _load(MappingProxyType(data), "Body.from_parts", base, name=name, labels=labels)
 
 
-# --------------------------------------------------------------------------- from a body
+# --- from a body
 
 
 def _rebuilt(body, data: dict) -> Built:

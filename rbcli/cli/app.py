@@ -18,7 +18,7 @@ scripts. Exit status: 0 done, 1 a check you asked for failed, 2 bad usage or
 input, 70 internal error (a bug).
 """
 
-# ----------------------------------------------------------------------------- commands
+# --- commands
 # Each command lives in a module of rbcli.cli that registers it on ``app`` when imported.
 # Importing them all (and having typer build every command's parameters) cost ~11 ms CPU on
 # every run; a run needs one command. So the root group's ``commands`` is a mapping whose
@@ -155,7 +155,7 @@ def debug() -> bool:
     return bool(STATE["debug"]) or os.environ.get("RBCLI_DEBUG", "").strip() not in ("", "0")
 
 
-# ----------------------------------------------------------------------------- start-up
+# --- start-up
 # typer 0.29 coerces the value of every non-flag parameter of the invoked command
 # (and its -h/--help) through a pydantic TypeAdapter. Building the first one imports
 # pydantic.fields/types/main/json_schema and pydantic's plug-in loader

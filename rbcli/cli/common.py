@@ -278,7 +278,7 @@ def each_body(srcs: list[str], expr: str | None, e: Any) -> Iterator[tuple[str, 
             yield src, exc
 
 
-# ----------------------------------------------------------------------------- output
+# --- output
 
 
 def write_doc(e: Any, doc: Any) -> None:

@@ -94,7 +94,7 @@ def top(
     c.finish(r.return_code)
 
 
-# ----------------------------------------------------------------------------- gyrocompass
+# --- gyrocompass
 
 
 @c.command(GYROCOMPASS, help=GYRO_HELP)
@@ -121,7 +121,7 @@ def gyrocompass(
            given=echo.echo_rows(opts, b.units if b is not None else None))
 
 
-# ----------------------------------------------------------------------------- manual
+# --- manual
 
 MANUAL["top"] = {
     "notes": [

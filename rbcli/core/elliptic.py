@@ -47,9 +47,7 @@ def _out(x: np.ndarray) -> Any:
     return float(x) if x.ndim == 0 else x
 
 
-# ----------------------------------------------------------------------------------------
-# Carlson symmetric forms
-# ----------------------------------------------------------------------------------------
+# --- Carlson symmetric forms
 
 
 def _rc_pos(x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -173,9 +171,7 @@ def elliprj(x: Any, y: Any, z: Any, p: Any) -> Any:
     return _out(np.asarray(out))
 
 
-# ----------------------------------------------------------------------------------------
-# Legendre forms
-# ----------------------------------------------------------------------------------------
+# --- Legendre forms
 
 
 def _params(m: float, mc: float | None) -> tuple[float, float]:
@@ -239,9 +235,7 @@ def ellippi(n: float, m: float, mc: float | None = None, n1: float | None = None
     return out
 
 
-# ----------------------------------------------------------------------------------------
-# Jacobi elliptic functions
-# ----------------------------------------------------------------------------------------
+# --- Jacobi elliptic functions
 
 
 def _sncndn_half(u: np.ndarray, m: float, mc: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -65,9 +65,7 @@ class VerifyResult:
 
 
 
-# ----------------------------------------------------------------------------------------
-# verification against numerical integration
-# ----------------------------------------------------------------------------------------
+# --- verification against numerical integration
 
 
 def _char_time(motion: FreeMotion) -> float:

@@ -204,7 +204,7 @@ def weld_gaps(
     return label, gap, int(chain.size)
 
 
-# --------------------------------------------------------------------------- internals
+# --- internals
 
 
 def _as_arrays(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

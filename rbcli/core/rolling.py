@@ -25,7 +25,7 @@ MODEL_NOTE = (
 )
 
 
-# --------------------------------------------------------------------------- straight
+# --- straight
 
 
 @dataclass(frozen=True)
@@ -270,7 +270,7 @@ def nu2_curve(st: StraightRolling, speeds: Any) -> np.ndarray:
     return np.asarray(st.nu2(v / st.radius), dtype=float).reshape(v.shape)
 
 
-# --------------------------------------------------------------------------- the whole check
+# --- the whole check
 
 
 @dataclass(frozen=True)
@@ -348,7 +348,7 @@ def rollcheck(
     return RollCheck(st, verdict, circ)
 
 
-# --------------------------------------------------------------------------- figure data
+# --- figure data
 
 
 @dataclass(frozen=True)

@@ -197,12 +197,10 @@ def from_matrix(m: Sequence[Sequence[float]] | np.ndarray, tol: float = 1e-6) ->
     return r
 
 
-# ----------------------------------------------------------------------------------------
-# many rotations at once: each ``*_rows`` function returns the (k, 3, 3) stack of its
+# --- many rotations at once: each ``*_rows`` function returns the (k, 3, 3) stack of its
 # one-rotation namesake (which calls it with one row); the body loader makes all its parts'
 # rotations of one kind in one call. Inputs are float arrays already checked finite and
 # non-zero. sin, cos and hypot are math's, per row (numpy's may differ in the last bit).
-# ----------------------------------------------------------------------------------------
 
 
 #: the identity, made once (read-only)
@@ -358,9 +356,7 @@ def _kind_rows(kind: str, seq: str, specs: list) -> np.ndarray:
     return nearest_rotation_rows(vectors)
 
 
-# ----------------------------------------------------------------------------------------
-# quaternions and axis-angle ([w, x, y, z], scalar first; arrays broadcast over (..., 4))
-# ----------------------------------------------------------------------------------------
+# --- quaternions and axis-angle ([w, x, y, z], scalar first; arrays broadcast over (..., 4))
 
 
 def quat_multiply(p: np.ndarray, q: np.ndarray) -> np.ndarray:

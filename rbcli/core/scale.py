@@ -67,7 +67,7 @@ def body_scale(parts: Sequence[Any]) -> BodyScale:
     return BodyScale((coms - reach).min(axis=0), (coms + reach).max(axis=0))
 
 
-# ----------------------------------------------------------------------------- reach from an axis
+# --- reach from an axis
 
 
 def axis_reach(parts: Sequence[Any], axis: Sequence[float], through: Sequence[float]) -> float:

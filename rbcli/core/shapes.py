@@ -268,8 +268,7 @@ IO_SHAPES = {
 }
 
 
-# ---------------------------------------------------------------------------------------
-# parameter checks
+# --- parameter checks
 
 
 def _number(param: str, value: Any, label: str | None = None) -> float:
@@ -357,8 +356,7 @@ class _Raw(NamedTuple):
     unit_inertia: Any
 
 
-# ---------------------------------------------------------------------------------------
-# the shapes; each takes the checked dict of parameters (required present, none unknown)
+# --- the shapes; each takes the checked dict of parameters (required present, none unknown)
 
 
 def _point(p: dict[str, Any]) -> _Raw:

@@ -237,8 +237,7 @@ def verify(
     )
 
 
-# --------------------------------------------------------------------------------------
-# the real (unsymmetrised) body
+# --- the real (unsymmetrised) body
 
 
 @dataclass(frozen=True)

@@ -91,7 +91,7 @@ def opt_float(x: float | None) -> float | None:
     return None if x is None else float(x)
 
 
-# --------------------------------------------------------------------------- the wheel
+# --- the wheel
 
 
 @dataclass(frozen=True)

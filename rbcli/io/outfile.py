@@ -201,7 +201,7 @@ def _mode_for(st: os.stat_result | None, new: int = 0o666) -> int:
     return new & ~mask
 
 
-# ----------------------------------------------------------------------------- signals
+# --- signals
 
 
 #: the main thread's open :func:`_held_signals` blocks, and the signals they held off
@@ -240,7 +240,7 @@ def _held_signals() -> Iterator[None]:
             signal.raise_signal(signum)
 
 
-# ----------------------------------------------------------------------------- renames
+# --- renames
 
 
 def _renameat2_noreplace(src: str, dst: str) -> bool:
@@ -392,7 +392,7 @@ def write_atomic(path: str | Path, data: str | bytes, option: str = "output", *,
         fh.write(data)
 
 
-# ----------------------------------------------------------------------------- document + folder
+# --- document + folder
 
 
 def files_dir(path: str | Path) -> Path:

@@ -15,7 +15,7 @@ from fractions import Fraction
 
 from rbcli.io.unittable import BY_NAME, NAME_RE, Dim, UnitError, known_units, lookup
 
-# --------------------------------------------------------------------------- parsing
+# --- parsing
 
 _MAX_TEXT = 200  # characters; keeps exact arithmetic on hostile input cheap
 _MAX_EXPONENT = 12  # largest |n| in a written unit power

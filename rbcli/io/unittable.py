@@ -15,7 +15,7 @@ import re
 from fractions import Fraction
 from typing import NamedTuple
 
-# --------------------------------------------------------------------------- dimensions
+# --- dimensions
 
 DIM_ORDER = (("M", "mass"), ("L", "length"), ("T", "time"), ("A", "angle"))
 
@@ -172,7 +172,7 @@ def noun_for_kind(kind: str) -> str:
     return f"{noun} ({dim.describe()})"
 
 
-# --------------------------------------------------------------------------- the table
+# --- the table
 
 # pi to 60 decimals: enough that rounding q * pi^k to a float is the correctly rounded
 # value (the error, ~1e-60 relative, is far below half an ulp, 1.1e-16).
@@ -353,7 +353,7 @@ def format_unit_table() -> str:
     return "\n".join(lines) + "\n"
 
 
-# --------------------------------------------------------------------------- base units
+# --- base units
 
 BASE_KEYS = {"length": "L", "mass": "M", "time": "T", "angle": "A"}
 BASE_DEFAULTS = {"length": "m", "mass": "kg", "time": "s", "angle": "deg"}

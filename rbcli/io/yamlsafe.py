@@ -55,7 +55,7 @@ _LOADER: type = (
 _EMPTY = "the file is empty; a body needs `parts:` or a single part"
 
 
-# --------------------------------------------------------------------------- nodes
+# --- nodes
 
 
 class Mark(NamedTuple):
@@ -213,7 +213,7 @@ def to_python(node: Node) -> object:
     raise TypeError(f"not a yamlsafe node: {node!r}")
 
 
-# ------------------------------------------------------------- positions and errors
+# --- positions and errors
 
 _BREAK = re.compile("\r\n|[\r\n\x85\u2028\u2029]")  # the line breaks libyaml counts
 
@@ -286,7 +286,7 @@ def _reader_error(exc: ReaderError, text: str, filename: str) -> InputError:
     return _error(message, filename, _mark_of_prefix(prefix))
 
 
-# ---------------------------------------------------------------------- decoding
+# --- decoding
 
 
 def max_bytes() -> int:
@@ -339,7 +339,7 @@ def _decode(text: str | bytes, filename: str) -> str:
 
 
 
-# ------------------------------------------------------------- YAML 1.2 core schema
+# --- YAML 1.2 core schema
 
 # The null and bool words (the empty scalar is null too); each starts with _WORD_START.
 _WORDS: dict[str, bool | None] = {
@@ -411,7 +411,7 @@ def plain_value(raw: str) -> str | int | float | bool | None:
 _KIND = {type(None): "null", bool: "a boolean", int: "a number", float: "a number"}
 
 
-# ---------------------------------------------------------------- event-driven build
+# --- event-driven build
 
 
 def _show_tag(tag: str) -> str:
@@ -602,7 +602,7 @@ def _count_first(text: str, cap: tuple) -> None:
         loader.dispose()
 
 
-# ----------------------------------------------------------------------------- load
+# --- load
 
 
 def load(text: str | bytes, filename: str, *, list_cap: tuple | None = None) -> Node:

@@ -45,7 +45,7 @@ def yes(b: bool) -> str:
     return "yes" if b else "no"
 
 
-# ----------------------------------------------------------------------------- conventions
+# --- conventions
 
 
 def _vec(v, digits: int = 6) -> str:
@@ -64,7 +64,7 @@ def frame_sentence(r: BalanceResult) -> str | None:
     )
 
 
-# ----------------------------------------------------------------------------- tables
+# --- tables
 
 
 def document(doc: Doc, r: BalanceResult, su: ShopUnits, digits: int,

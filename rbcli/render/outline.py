@@ -92,7 +92,7 @@ class Shadow:
     points: np.ndarray
 
 
-# ----------------------------------------------------------------------------- building blocks
+# --- building blocks
 
 _NO_LINES = np.zeros((0, 2), dtype=np.int64)
 _NO_POINTS = np.zeros((0, 3))
@@ -185,7 +185,7 @@ def _ellipsoid(a: float, b: float, c: float, n: int) -> Sketch:
     return _make(s.vertices * np.array([a, b, c]), s.faces)
 
 
-# ----------------------------------------------------------------------------- shapes
+# --- shapes
 
 
 #: shapes whose solid is convex: their shadow is the convex hull of their vertices' shadows
@@ -318,7 +318,7 @@ def decimate(vertices, faces, max_triangles: int = MESH_MAX_TRIANGLES) -> tuple[
     return V2[used_v], F3.reshape(-1, 3)
 
 
-# ----------------------------------------------------------------------------- projection
+# --- projection
 
 
 def normals(s: Sketch) -> np.ndarray:

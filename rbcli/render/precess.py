@@ -31,7 +31,7 @@ def notes(motion: fm.FreeMotion, du: DisplayUnits | None = None, digits: int = 6
                     number=lambda x: num(x, digits))
 
 
-# ----------------------------------------------------------------------------- tables
+# --- tables
 
 
 def _time(x: float | None, du: DisplayUnits, digits: int) -> tuple[str, str]:
@@ -207,7 +207,7 @@ def _verify(doc: Doc, motion: fm.FreeMotion, v: Any, du: DisplayUnits, digits: i
                  "intermediate axis; the drifts along the exact solution show whether it is exact.")
 
 
-# ----------------------------------------------------------------------------- figure
+# --- figure
 
 
 def plot(body: Body, motion: fm.FreeMotion, duration: float | None, du: DisplayUnits):

@@ -74,7 +74,7 @@ class Report:
 
 INPUT_KEY = "input-file"
 
-# ----------------------------------------------------------------------------- parts table
+# --- parts table
 
 
 def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int) -> None:
@@ -139,7 +139,7 @@ def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int
     )
 
 
-# ----------------------------------------------------------------------------- SVG for HTML
+# --- SVG for HTML
 
 _XML_DECL = re.compile(r"<\?xml[^>]*\?>\s*")
 _DOCTYPE = re.compile(r"<!DOCTYPE[^>]*>\s*", re.S)
@@ -167,7 +167,7 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
     return s.strip()
 
 
-# ----------------------------------------------------------------------------- HTML
+# --- HTML
 
 CSS = """
 :root { color-scheme: light; }
@@ -326,7 +326,7 @@ def html(report: Report) -> str:
     return "\n".join(out) + "\n"
 
 
-# ----------------------------------------------------------------------------- Markdown
+# --- Markdown
 
 _MD_INLINE = re.compile(r"([\\`*_\[\]<>|&~#!])")
 _MD_BLOCKSTART = re.compile(r"^(\s*)([-+=>]|\d+[.)])")

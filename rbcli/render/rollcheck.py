@@ -27,7 +27,7 @@ def echo_rows(res: RollcheckResult) -> list[tuple[str, str, str]]:
     return echo.echo_rows(res.options, res.units)
 
 
-# ----------------------------------------------------------------------------- tables
+# --- tables
 
 
 def _rate(du: DisplayUnits, x: float | None, digits: int) -> tuple[str, str]:
@@ -206,7 +206,7 @@ def _circle_how(res: RollcheckResult) -> str:
     return f"circle radius solved from {sp} and --lean"
 
 
-# ----------------------------------------------------------------------------- plot
+# --- plot
 
 
 def plot(res: RollcheckResult, cv: Curves):

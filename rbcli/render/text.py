@@ -149,7 +149,7 @@ def _rich_printer(color: bool, width: int, tty: bool):
     return render
 
 
-# ----------------------------------------------------------------------------- checks
+# --- checks
 
 
 #: what :func:`rbcli.render.fmt.num` prints for a number that is not finite

@@ -29,7 +29,7 @@ PATHS = {
 }
 
 
-# ----------------------------------------------------------------------------- tables
+# --- tables
 
 
 def _deg(x: float | None, digits: int) -> str:
@@ -235,7 +235,7 @@ _TAILS = {
 }
 
 
-# ----------------------------------------------------------------------------- CSV
+# --- CSV
 
 
 #: the columns of ``top --csv``
@@ -247,7 +247,7 @@ def csv_block(state: TopState) -> np.ndarray:
     return np.column_stack([state.t, np.degrees(state.theta), np.degrees(state.phi), np.degrees(state.psi)])
 
 
-# ----------------------------------------------------------------------------- plot
+# --- plot
 
 
 def plot(result: TopResult, state: TopState, duration: float):
@@ -292,7 +292,7 @@ def plot(result: TopResult, state: TopState, duration: float):
     return fig
 
 
-# ----------------------------------------------------------------------------- gyrocompass
+# --- gyrocompass
 
 
 def gyro_document(doc: Doc, result: GyrocompassResult, du: DisplayUnits, digits: int) -> None:

@@ -35,7 +35,7 @@ WHIRL_STYLE = {
 }
 
 
-# ----------------------------------------------------------------------------- tables
+# --- tables
 
 
 def echo_rows(res: WhirlResult) -> list[tuple[str, str, str]]:
@@ -308,7 +308,7 @@ def _stability_note(res: WhirlResult, digits: int) -> str:
     return "".join(parts) + "."
 
 
-# ----------------------------------------------------------------------------- figures
+# --- figures
 
 
 def _segments(x: np.ndarray, y: np.ndarray, labels: tuple[str, ...]):
@@ -522,7 +522,7 @@ def _continuous_phase(deg: np.ndarray, amp: np.ndarray) -> np.ndarray:
     return out
 
 
-# ----------------------------------------------------------------------------- report
+# --- report
 
 
 def report_section(res: WhirlResult, du: DisplayUnits, digits: int, *, figures: bool = True,

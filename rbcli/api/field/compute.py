@@ -56,7 +56,7 @@ def significance_warning(plane: str, factor: float) -> str:
             "do not), so its correction is unreliable; consider balancing without it")
 
 
-# ----------------------------------------------------------------------------- classic
+# --- classic
 
 
 def _classic(job: Job) -> FieldBalanceResult:
@@ -95,7 +95,7 @@ def _small(job: Job, cumulative: bool) -> tuple[bool, ...]:
                  for j in range(job.planes))
 
 
-# ----------------------------------------------------------------------------- extended
+# --- extended
 
 
 def _described(job: Job) -> dict[str, Any]:

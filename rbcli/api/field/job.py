@@ -142,7 +142,7 @@ def located(exc: ParamError, given: tuple[str, ...], jf: FieldJob | None) -> Inp
     return at(jf.keys.get(WHERE.get(exc.param, ""), Location(jf.source)), exc)
 
 
-# ----------------------------------------------------------------------------- two sources
+# --- two sources
 
 
 def from_options(o: Options) -> Job:
@@ -294,7 +294,7 @@ def _rotor_body(rotor: JobRotor, source: str) -> None:
         raise InputError(f"rotor: body: {literal(exc.message)}", rotor.where) from None
 
 
-# ----------------------------------------------------------------------------- one job
+# --- one job
 
 
 def _measured(job: Job, initial: list[Reading], runs: list[list[Reading]]) -> Job:

@@ -339,7 +339,7 @@ class FieldBalanceResult(Result):
         """(sensor, speed) of each reading, in order."""
         return row_names(self.sensors, self.run_speeds, len(self.initial))
 
-    # ------------------------------------------------------------------ JSON
+    # --- JSON
 
     def to_json(self) -> dict[str, Any]:
         """The document ``rbcli field-balance --json`` prints."""
@@ -400,7 +400,7 @@ class FieldBalanceResult(Result):
             out["weights"] = list(self.weights)
         return out
 
-    # ------------------------------------------------------------------ stored coefficients
+    # --- stored coefficients
 
     def coefficients_document(self) -> dict[str, Any]:
         """The file ``--save-coefficients`` writes (:mod:`rbcli.io.field.coefficients`)."""

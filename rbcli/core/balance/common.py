@@ -66,9 +66,7 @@ class BalanceValueError(ValueError):
         self.param = param
 
 
-# ----------------------------------------------------------------------------------------
-# small helpers
-# ----------------------------------------------------------------------------------------
+# --- small helpers
 
 
 def vec3(v: object, name: str, param: str | None = None) -> np.ndarray:

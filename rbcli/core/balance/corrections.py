@@ -351,9 +351,7 @@ def apply_corrections(corr: Corrections) -> Unbalance:
 
 
 
-# ----------------------------------------------------------------------------------------
-# splitting and radius change
-# ----------------------------------------------------------------------------------------
+# --- splitting and radius change
 
 
 @dataclass(frozen=True)

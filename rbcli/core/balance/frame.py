@@ -89,9 +89,7 @@ def shaft_frame(
     return ShaftFrame(readonly(np.vstack([ex, ey, ez])), readonly(o))
 
 
-# ----------------------------------------------------------------------------------------
-# unbalance of a rotor
-# ----------------------------------------------------------------------------------------
+# --- unbalance of a rotor
 
 
 @dataclass(frozen=True, eq=False)

@@ -192,7 +192,7 @@ class Rotor:
         zs = [b.z for b in self.bearings]
         return min(zs), max(zs)
 
-    # ------------------------------------------------------------------ the matrices
+    # --- the matrices
 
     def M(self) -> np.ndarray:
         """(4, 4) ndarray — the mass matrix diag(m, m, It, It)."""
@@ -239,7 +239,7 @@ class Rotor:
         return Kc, Cc
 
 
-# ---------------------------------------------------------------------- mode shapes
+# --- mode shapes
 
 
 @dataclass(frozen=True, eq=False)

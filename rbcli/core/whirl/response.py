@@ -222,7 +222,7 @@ def excitation(rotor: Rotor, forcing: Forcing, speed: float, eigenvalue: complex
 EXCITED_RTOL = 1e-8
 
 
-# ---------------------------------------------------------------------- peaks
+# --- peaks
 
 
 @dataclass(frozen=True, eq=False)
@@ -328,7 +328,7 @@ def peaks(rotor: Rotor, forcing: Forcing, res: Response) -> list[Peak]:
     return out
 
 
-# ---------------------------------------------------------------------- API margins
+# --- API margins
 
 
 def required_margin(af: float | None, position: str) -> float:

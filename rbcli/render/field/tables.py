@@ -45,7 +45,7 @@ def field_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int
         classic_document(doc, res, su, digits)
 
 
-# ----------------------------------------------------------------------------- classic
+# --- classic
 
 
 def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: int) -> None:
@@ -106,7 +106,7 @@ def classic_document(doc: Doc, res: FieldBalanceResult, su: ShopUnits, digits: i
     )
 
 
-# ----------------------------------------------------------------------------- extended
+# --- extended
 
 
 def _row_label(sensor: str, speed: str, res: FieldBalanceResult) -> list[str]:
