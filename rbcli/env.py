@@ -94,11 +94,9 @@ class _Closed:
 
 
 def prepare_streams() -> None:
-    """Make standard streams safe to use: a stream closed at start (``>&-``, ``2>&-``)
-    becomes a stand-in that fails like a closed descriptor (stdout: exit 2 with a message;
-    stderr: messages dropped; stdin: BODY '-' refused as closed), and a stream whose
-    encoding cannot show rbcli's unit symbols (``PYTHONIOENCODING=ascii``, a C locale)
-    gets ASCII fallbacks (``·`` -> ``*``, ``²`` -> ``^2``) instead of an encoding error."""
+    """Make standard streams safe: one closed at start (``>&-``) becomes a :class:`_Closed`
+    stand-in, and one whose encoding cannot show rbcli's unit symbols (a C locale) gets
+    ASCII fallbacks (``²`` -> ``^2``) instead of an encoding error."""
     if sys.stdout is None:
         sys.stdout = _Closed("stdout")  # type: ignore[assignment]
     if sys.stderr is None:
@@ -257,11 +255,8 @@ def show_warning(message, category, filename, lineno, file=None, line=None) -> N
 
 
 class Env:
-    """A run's streams and terminal (a plain class, not a dataclass: every run makes one).
-
-    ``pipe_closed`` is set once standard output has been closed by its reader (``| head
-    -1``): there is no one left to read, so a batch may stop early.
-    """
+    """A run's streams and terminal (a plain class: every run makes one); ``pipe_closed``:
+    standard output's reader has gone (``| head -1``), so a batch may stop early."""
 
     def __init__(self, stdout: IO[str], stderr: IO[str], stdout_isatty: bool, color: bool,
                  width: int | None = None, debug: bool = False, pipe_closed: bool = False) -> None:

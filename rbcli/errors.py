@@ -46,13 +46,9 @@ _PARAM_REF = re.compile(r"\{\{|\{([a-z][a-z0-9_]*)\}")
 
 
 def spell(template: str, name: Callable[[str], str] | None = None) -> str:
-    """A message template with each ``{param}`` spelled by ``name``.
-
-    api and core write messages that mention a parameter as ``{param}``
-    (``"needs the correction planes, {planes} zA,zB"``). The Python API spells it as the
-    parameter (``name`` None: :func:`param_name`, ``planes``); the command line as its option
-    (``name=option_name``: ``--planes``). ``{{`` is one brace (text a user typed goes in
-    through :func:`literal`); other braces (``{shape: box}``) are left as they are.
+    """A message template with each ``{param}`` spelled by ``name``: :func:`param_name` by
+    default (``planes``), :func:`option_name` on the command line (``--planes``). ``{{`` is one
+    brace (user text goes in through :func:`literal`); other braces are left as they are.
     """
     if "{" not in template:
         return template
@@ -66,12 +62,9 @@ def literal(text: object) -> str:
 
 
 class Note(str):
-    """A warning or remark from api or core: the text with parameters spelled as the Python
-    API spells them, keeping its :attr:`template` so the command line can spell options.
-
-    ``Note("{omega}: the rim would move faster than sound")`` is the string
-    ``"omega: the rim would move faster than sound"``; :func:`spell` of its ``template``
-    with :func:`option_name` gives ``"--omega: ..."``.
+    """A warning or remark from api or core: a string with parameters spelled as the Python
+    API spells them (``"omega: ..."``), keeping its :attr:`template` for the command line's
+    spelling (``"--omega: ..."``).
     """
 
     template: str
@@ -91,9 +84,8 @@ def spelled(text: str, name: Callable[[str], str]) -> str:
 
 
 def spelled_data(data: object, name: Callable[[str], str]) -> object:
-    """JSON data (a result's ``to_json()``) with every :class:`Note` in it spelled by ``name``:
-    ``spelled_data(r.to_json(), option_name)`` is what the command's ``--json`` prints. The
-    rows under ``parts`` are passed over (no text of rbcli's in them)."""
+    """JSON data (a result's ``to_json()``) with every :class:`Note` in it spelled by ``name``
+    (the rows under ``parts`` are passed over: no text of rbcli's in them)."""
     if isinstance(data, dict):
         return {k: spelled_data(v, name) if k != "parts" and isinstance(v, _SPELLED) else v
                 for k, v in data.items()}
@@ -139,14 +131,10 @@ def _cut_word(m: re.Match) -> str:
 
 
 def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = MAX_LINE) -> str:
-    """``text`` made safe to print as (part of) one line on a terminal.
-
-    Control characters (ESC sequences, CR, NUL, NEL ``\\x85``...), the line and paragraph
-    separators ``\\u2028``/``\\u2029`` and bidirectional controls are escaped as ``\\e``,
-    ``\\r``, ``\\x85``, ``\\u2028``, so a file can neither forge a second ``rbcli:`` line nor
-    send escape sequences to the terminal; a run of more than :data:`MAX_WORD` non-blank
-    characters is cut with "…", and the whole to ``max_line`` characters. ``keep_newlines``
-    keeps ``\\n`` (notes of several lines).
+    """``text`` safe to print as (part of) one line on a terminal: controls, line separators
+    and bidirectional controls escaped (``\\e``, ``\\r``, ``\\x85``, ``\\u2028``), so no forged
+    ``rbcli:`` line or escape sequence; runs over :data:`MAX_WORD` non-blank characters cut
+    with "…", the whole to ``max_line``. ``keep_newlines`` keeps ``\\n``.
     """
     s = text if isinstance(text, str) else str(text)
     if max_line is not None and len(s) > 4 * max_line:  # do not scan megabytes
@@ -160,12 +148,8 @@ def clean(text: object, *, keep_newlines: bool = False, max_line: int | None = M
 
 
 class RbcliError(Exception):
-    """Base of every error rbcli reports to the user.
-
-    ``message`` may name parameters as ``{param}`` (see :func:`spell`): :attr:`message` and
-    ``str()`` spell them as Python parameters; :meth:`spelled` spells them for the command
-    line.
-    """
+    """Base of every error rbcli reports to the user; ``{param}`` in the message is spelled
+    as the Python parameter by ``str()``, for the command line by :meth:`spelled`."""
 
     exit_status: ExitStatus = ExitStatus.INTERNAL
 
@@ -176,9 +160,7 @@ class RbcliError(Exception):
 
     @property
     def message(self) -> str:
-        """The message, parameters spelled as the Python API's keyword arguments, made safe to
-        show as the command line shows it (:func:`clean`: control characters such as
-        ESC and newlines in a name or a value escaped, long words cut)."""
+        """The message, parameters spelled as the Python API's, made safe by :func:`clean`."""
         return clean(spell(self.template))
 
     @message.setter
@@ -233,13 +215,9 @@ class InputError(RbcliError, ValueError):
 
 
 class ParamError(InputError):
-    """A value given for one parameter is wrong; the message is prefixed with its name.
-
-    Raised by the physics (``core``) and the services with the parameter's Python name
-    (``ParamError("planes", "the two planes must differ")``); ``str()`` and ``message``
-    read ``planes: the two planes must differ``, and the command line prints
-    ``--planes: the two planes must differ`` (:meth:`spelled` with :func:`option_name`).
-    No code ever reads the message text to find the parameter: it is ``param``.
+    """A value given for one parameter is wrong; the message is prefixed with its name:
+    ``ParamError("planes", "the two planes must differ")`` reads ``planes: the two planes
+    must differ``, on the command line ``--planes: ...``. Code reads ``param``, never the text.
     """
 
     def __init__(self, param: str, message: str, where: Location | None = None) -> None:

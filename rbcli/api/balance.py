@@ -1,11 +1,8 @@
 """Rotor balance about a shaft: the service behind ``rbcli balance``.
 
-:func:`parse` reads the parameters (:data:`rbcli.api.commands.BALANCE`), :func:`run` the
-physics of :mod:`rbcli.core.balance` (physics sheet ``balance.md``; ISO 21940-11:2016): the
-unbalance about the shaft, two-plane corrections (rounded or on fixed positions) and their
-residual, bearing forces and the ISO check, in a :class:`BalanceResult` (its JSON is
-``rbcli balance --json`` less ``file``; exit status 1 when the rotor fails the grade).
-Trial-weight balancing is :mod:`rbcli.api.field`."""
+:func:`parse` reads the parameters, :func:`run` computes with :mod:`rbcli.core.balance`
+(sheet ``balance.md``; ISO 21940-11:2016) a :class:`BalanceResult`. Trial-weight
+balancing is :mod:`rbcli.api.field`."""
 
 from __future__ import annotations
 
@@ -60,10 +57,9 @@ def _num(x: float) -> str:
 
 
 def parse(body: Body, **kwargs: Any) -> Options:
-    """The keyword arguments of :func:`balance` read for ``body``: Options in SI, ``radius``
-    (rA, rB) (the body's ``rim_radius`` when not given), the defaults of ``g``,
-    ``angle_sense``, ``tolerance_planes`` and ``zero_mark_deg`` filled in; an InputError naming
-    the parameter."""
+    """The keyword arguments of :func:`balance` read for ``body`` (Options in SI, ``radius``
+    (rA, rB) or the body's ``rim_radius``, defaults filled in); an InputError names the
+    parameter."""
     if kwargs.get("angle_sense") == "with":  # the default (the command line always passes it)
         kwargs = {**kwargs, "angle_sense": None}
     o = read(body, BALANCE, kwargs)
@@ -203,11 +199,9 @@ class BalanceResult(Result):
         return int(ExitStatus.OK)
 
     def diagram(self):
-        """The polar balancing diagram (what ``--plot`` draws), an
-        :class:`rbcli.api.diagram.Diagram`: with ``planes`` one clock face per correction
-        plane with the rotor's unbalance in that plane as given, the masses to add (as
-        unbalances m r, with their masses) and the residual after adding them; without, the
-        static unbalance U and the couple unbalance P_G. Angles as the command prints them."""
+        """The polar balancing diagram ``--plot`` draws (:class:`rbcli.api.diagram.Diagram`):
+        with ``planes`` a clock face per plane (the unbalance there, the masses to add as m r,
+        the residual); without, U and P_G. Angles as the command prints them."""
         u = self.unbalance
         panels = []
         if self.installed is None:
@@ -319,14 +313,8 @@ def _param_error(exc: ValueError, rename: dict[str, str] | None = None) -> Input
 
 
 def run(body: Body, options: Options) -> BalanceResult:
-    """Balance ``body`` with ``options`` (:func:`parse`; see :func:`balance`).
-
-    Raises
-    ------
-    rbcli.InputError
-        a value the physics cannot use, named (``positions: ...``);
-        :class:`rbcli.NonFiniteResult` when the result overflows.
-    """
+    """Balance ``body`` with ``options`` (:func:`parse`): an InputError names a value the
+    physics cannot use; :class:`rbcli.NonFiniteResult` when the result overflows."""
     try:
         with np.errstate(all="ignore"):
             res = _run(body, options)

@@ -116,15 +116,12 @@ def degrees(text: Value, option: str) -> float:
 
 def numbers(text: Value, kind: str, option: str, *, counts: tuple[int, ...] = (3,),
             bare: str | None = None) -> list[float]:
-    """Comma-separated quantities of one kind, in SI: the one rule for list options.
+    """Comma-separated finite quantities of one kind, in SI: the one rule for list options.
 
-    A unit after the LAST number applies to every bare number before it: ``1,1,1 mm`` is
-    all millimetres, ``100,0,300 rpm`` all rpm, ``-100,100 mm`` both. A number with its own
-    unit keeps it (``10 mm,0,2 cm``). A list with no unit at all is in the option's bare
-    unit: ``bare`` (e.g. ``"deg"``), else SI. A list whose last number is bare but which has
-    a unit elsewhere is refused unless its bare numbers are 0 (``10 mm,0,0``): which unit a
-    bare 5 in ``10 mm,5,0`` means is a guess. Every value must be finite. A Python
-    sequence of numbers is taken as SI; a single number as a list of one.
+    A unit after the LAST number applies to every bare number before it (``1,1,1 mm``); a
+    number with its own unit keeps it (``10 mm,0,2 cm``); no unit at all: ``bare``, else SI.
+    A bare last number with a unit elsewhere is refused unless the bare numbers are 0 (the
+    unit of 5 in ``10 mm,5,0`` is a guess). A Python sequence is SI; a number, a list of one.
     """
     text = _text(text, option)
     parts = [p.strip() for p in text.split(",")]

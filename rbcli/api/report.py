@@ -1,14 +1,11 @@
 """Every answer that applies to a body, computed for one document: the service behind
 ``rbcli report``.
 
-:func:`parse` reads the report's parameters (:data:`rbcli.api.commands.REPORT`) through each
-command's own ``parse``, so a value means what it means to the command; :func:`run`
-computes each section (its result, or the one-line reason it is left out). Parts, mass
-properties and principal axes are always there; balance with a shaft or a balance
-parameter; whirl with ``stiffness`` or the body's bearings; free precession with
-``omega``; the heavy top with a pivot, ``spin`` and ``theta``; rolling with a rim radius or
-a round part. A value its command refuses is an :class:`rbcli.InputError`, as on the
-command line."""
+:func:`parse` reads each section's parameters by its command's own ``parse`` (a value means
+what it means to the command); :func:`run` computes each section, or the one-line reason it
+is left out. Parts, mass properties and principal axes are always there; balance with a
+shaft or a balance parameter; whirl with bearings; precession with ``omega``; the top with a
+pivot, ``spin`` and ``theta``; rolling with a rim radius or a round part."""
 
 from __future__ import annotations
 
@@ -107,15 +104,9 @@ def _date() -> str:
 
 @dataclass(frozen=True)
 class ReportOptions:
-    """The report's parameters (:func:`parse`), each section's read by its command.
-
-    Attributes
-    ----------
-    given : tuple of (str, str) — the parameters given, as (parameter, text), for the header
-    balance, whirl, precess, top, rollcheck : Options or None — each section's options; None
-        when it is left out (its ``..._skip`` says why; ``whirl_error``: the body cannot
-        have one)
-    date : str — the report's date, UTC: SOURCE_DATE_EPOCH when set, else now
+    """The report's parameters (:func:`parse`): ``given`` ((parameter, text) pairs, for the
+    header); each section's options (``balance``, ``whirl``, ...; None when left out, its
+    ``..._skip`` says why, ``whirl_error`` the body's); ``date`` (UTC, :func:`_date`).
     """
 
     given: tuple[tuple[str, str], ...]
@@ -167,14 +158,8 @@ def _top_options(body: Body, kw: dict[str, Any]) -> tuple[Any, Any]:
 
 
 def parse(body: Body, **kwargs: Any) -> ReportOptions:
-    """The keyword arguments of :func:`report` (see there) read for ``body``, each section's
-    by its command's ``parse``.
-
-    Raises
-    ------
-    rbcli.InputError
-        naming the parameter at fault (``planes: ...``).
-    """
+    """The keyword arguments of :func:`report` read for ``body``, each section's by its
+    command's ``parse``; an InputError names the parameter at fault."""
     kw = {k: v for k, v in kwargs.items() if v is not None}
     # the header lists the options in the table's order, the tolerance last
     order = sorted((p.name for p in REPORT), key=lambda n: n == "symmetry_tol")
@@ -254,9 +239,8 @@ class ReportResult(Result):
     warnings: tuple[str, ...] = field(default=())
 
     def __post_init__(self) -> None:
-        """Every field made immutable (:func:`rbcli.api.result.frozen`) but the body, which
-        is immutable where it is made (:mod:`rbcli.body.model`: read-only arrays, tuples and
-        mappings): walking its parts again cost 9 s for 100 000 parts."""
+        """Every field made immutable but the body (immutable already: walking its parts
+        again cost 9 s for 100 000 parts)."""
         for f in dataclasses.fields(self):
             if f.name == "body":
                 continue
@@ -420,10 +404,8 @@ STEPS = (
 
 
 def _without_part_rows(result: Any) -> Any:
-    """``result`` without its rows of the body's parts (``inertia``'s and ``principal``'s
-    ``parts``), for the finiteness check: those are the body's own numbers (mass, centre,
-    a mesh's volume and area), finite where the body was read, and checking every row
-    again cost 3 s for each section of a 100 000-part body."""
+    """``result`` without its rows of the body's parts, for the finiteness check: those were
+    checked as the body was read, and again cost 3 s a section for 100 000 parts."""
     if dataclasses.is_dataclass(result) and getattr(result, "parts", None) and \
             "parts" in {f.name for f in dataclasses.fields(result)}:
         return dataclasses.replace(result, parts=())
@@ -431,9 +413,8 @@ def _without_part_rows(result: Any) -> Any:
 
 
 def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Section]) -> Section:
-    """``fn(ctx)``, the section, or one line saying why it is not there when its numbers are
-    too large or too small to compute with (an arithmetic error, or inf/NaN in its JSON,
-    which the commands refuse too): that is this body and these options, not a bug."""
+    """``fn(ctx)``, the section, or one line saying why not when its numbers are too large or
+    too small to compute with (an arithmetic error, inf/NaN in its JSON): not a bug."""
     n_failed = len(ctx.failed)
     try:
         s = fn(ctx)
@@ -451,11 +432,8 @@ def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Se
 
 def run(body: Body, options: ReportOptions,
         progress: Callable[[str, int, int], None] | None = None) -> ReportResult:
-    """The report of ``body`` with parsed ``options`` (:func:`parse`).
-
-    ``progress(what, i, n)``, if given, is called before each of the ``n`` sections.
-    A section that cannot be computed is one line in the report, never an error.
-    """
+    """The report of ``body`` with parsed ``options``; ``progress(what, i, n)``, if given, is
+    called before each of the ``n`` sections."""
     ctx = _Ctx(body, options)
     sections = []
     for i, (what, key, title, fn) in enumerate(STEPS):

@@ -19,13 +19,10 @@ input, 70 internal error (a bug).
 """
 
 # --- commands
-# Each command lives in a module of rbcli.cli that registers it on ``app`` when imported.
-# Importing them all (and having typer build every command's parameters) cost ~11 ms CPU on
-# every run; a run needs one command. So the root group's ``commands`` is a mapping whose
-# names come from COMMANDS and whose click command is built the first time it is looked up,
-# after importing its module. `rbcli --help` lists COMMANDS' one-line help without importing
-# anything (tests/test_cli_options.py checks the table against the real commands' help);
-# anything that iterates the mapping (man pages, completion of command names) builds them all.
+# Each command's module registers it on ``app`` when imported; importing them all cost
+# ~11 ms CPU a run. So the root group's ``commands`` is a mapping that builds a command the
+# first time it is looked up; `rbcli --help` lists COMMANDS' one-line help without importing
+# anything (tests/test_cli_options.py checks it against the commands' real help).
 
 #: command -> (the module that registers it, the one-line help `rbcli --help` lists: the
 #: first sentence of its help text), in the order `rbcli --help` lists them
@@ -156,16 +153,12 @@ def debug() -> bool:
 
 
 # --- start-up
-# typer 0.29 coerces the value of every non-flag parameter of the invoked command
-# (and its -h/--help) through a pydantic TypeAdapter. Building the first one imports
-# pydantic.fields/types/main/json_schema and pydantic's plug-in loader
-# (importlib.metadata, email, zipfile, ...): ~50 ms of CPU on every `rbcli <command>`,
-# a quarter of `import typer, numpy, yaml, pydantic` — while rbcli's parameters are
-# only str, list[str], int, float and bool (bench/README.md, "Start-up").
-# _Plain gives the value typer's adapter gives in the cases where that value is
-# obvious (a str; a plain decimal number inside its min/max; None) and hands every
-# other value to typer's own pydantic coercion, built lazily, so the result and every
-# error message stay typer's. Any other typer layout leaves typer untouched.
+# typer 0.29 coerces every non-flag value of the invoked command through a pydantic
+# TypeAdapter, whose first build imports much of pydantic: ~50 ms of CPU on every run,
+# for parameters that are only str, list[str], int, float and bool (bench/README.md,
+# "Start-up"). _Plain gives the value typer's adapter gives where it is obvious (a str,
+# a plain decimal number inside its min/max, None) and hands every other value to typer's
+# own coercion, built lazily, so results and messages stay typer's.
 
 _INT = None  # compiled on first use: re is imported by typer already, but keep it lazy
 _FLOAT = None

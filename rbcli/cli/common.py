@@ -52,16 +52,11 @@ PARAMS = object()
 
 
 def command(params: Any, *, name: str | None = None, help: str | None = None):
-    """Register the decorated function on the app as a typer command whose options are its
-    own parameters, with the options of the parameter table ``params``
-    (:class:`rbcli.api.params.Param`) where it has a parameter ``args = PARAMS``. The
-    function receives ``args``: the table's values as typed (None: not given), by parameter.
-
-    Each table option's flag is ``--`` + its name with dashes, or this command's own word
-    (:data:`rbcli.errors.COMMAND_OPTIONS`: rollcheck's ``rim_radius`` is ``--radius``, its man
-    page's metavar ``RADIUS``), its help the table's text with parameters spelled as this command's
-    options; a parameter of ``form`` "argument" is a positional argument, of "options" an
-    option given once per item (a list; not given: None)."""
+    """Register the decorated function as a typer command: its own parameters, plus, in
+    place of a parameter ``args = PARAMS``, the options of the table ``params``, which it
+    receives as ``args`` (values as typed, None when not given). A flag is ``--`` + the name
+    with dashes or the command's own word (:data:`rbcli.errors.COMMAND_OPTIONS`); its help
+    spells parameters as options; ``form`` "argument" is positional, "options" a list."""
     import inspect
 
     from rbcli.cli.app import app
@@ -129,12 +124,9 @@ def with_file(data: dict, source: str) -> dict:
 
 def start(json_: bool, fmt: str | None, units: str | None, *, shop: bool = False,
           extra: tuple[str, ...] = ()):
-    """What every command does first: (the environment, the output format, the table units).
-
-    The output format from ``--json``/``--format`` (:func:`output_format`, ``extra`` formats
-    allowed), the units of the tables from ``--units`` (:class:`rbcli.render.units.DisplayUnits`,
-    or the balance tables' :class:`~rbcli.render.units.ShopUnits` with ``shop``). Bad values
-    are one line, exit 2, before any body is read."""
+    """What every command does first: (the environment, :func:`output_format`, the table
+    units of ``--units``: :class:`rbcli.render.units.DisplayUnits`, or
+    :class:`~rbcli.render.units.ShopUnits` with ``shop``); bad values exit 2 before any body."""
     from rbcli.render.units import DisplayUnits, ShopUnits
 
     e = env()
@@ -174,12 +166,9 @@ def load(source: str, expr: str | None, e: Any):
     from rbcli.api.load import load as load_file
     from rbcli.body.model import load_expr
 
-    # The command line's own choice, not the library's (gc is process-wide): no cyclic
-    # collection while the body is read (the loader's tree is acyclic; a full collection
-    # rescans all of it as it grows: 60 % of the CPU time of a 100 000-part body), and a
-    # command keeps its body to the end, so the collector need not scan it again later
-    # (gc.freeze). Objects frozen are still freed when unreferenced (a batch's earlier
-    # bodies); only cycles among them stay.
+    # The command line's choice, not the library's (gc is process-wide): no cyclic collection
+    # while the (acyclic) body is read: rescans were 60 % of the CPU of a 100 000-part body;
+    # then gc.freeze, as a command keeps its body to the end (frozen objects are still freed).
     was = gc.isenabled()
     gc.disable()
     try:
@@ -216,10 +205,7 @@ def load_one(body: str | None, expr: str | None, e: Any):
 
 
 def output_paths(b: Any, *, plot: str | None = None, csv: str | None = None) -> tuple:
-    """(plot path, csv path), each checked against the body's inputs before any computing.
-
-    ``--csv -`` (standard output) gives None; a CSV may not be the plot file.
-    """
+    """(plot path, csv path), checked before any computing; ``--csv -`` (stdout) gives None."""
     plot_path = csv_path = None
     if plot is not None:
         plot_path = check_plot(plot, b)
@@ -307,14 +293,11 @@ def output_format(json_: bool, fmt: str | None, extra: tuple[str, ...] = ()) -> 
 def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = False,
          file: str | None = None, given: Any = (), plain: bool = False, header: bool = True) -> None:
     """Print a command's result in format ``fmt`` (:func:`output_format`; True = "json",
-    False = "table"): JSON of ``data_fn()`` (one compact line with ``lines``, for JSON
-    Lines); that JSON as one CSV table (:mod:`rbcli.render.tablecsv`: a ``file`` column when
-    ``file`` is given, the header row only with ``header``); or the tables ``doc_fn(doc)``
-    puts in a Doc, as text. All refuse inf and NaN (one line, exit 2):
-    :func:`rbcli.api.result.jsonable` and :func:`rbcli.render.text.check_finite_doc`. Only the
-    one printed is built. ``given``: the (option, value, unit) rows of the options as
-    understood (:func:`rbcli.render.echo.echo_rows`), or a function making them, shown first
-    in a table "options" (tables only). ``plain``: ``data_fn()`` is already jsonable's."""
+    False = "table"), building only that one: JSON of ``data_fn()`` (one line with ``lines``),
+    that JSON as a CSV table (:mod:`rbcli.render.tablecsv`; ``file``, ``header``), or the
+    tables ``doc_fn(doc)`` makes. inf and NaN are refused (exit 2). ``given``: the options
+    table's rows (:func:`rbcli.render.echo.echo_rows`) or a function making them; ``plain``:
+    ``data_fn()`` is already jsonable."""
     fmt = {True: "json", False: "table"}.get(fmt, fmt) if isinstance(fmt, bool) else fmt
     if fmt in ("json", "csv"):
         data = data_fn()
@@ -353,10 +336,8 @@ def emit(e: Any, fmt: bool | str, data_fn: Any, doc_fn: Any, *, lines: bool = Fa
 
 
 def _invocation() -> tuple[str, int | None]:
-    """(the command's name, ``--digits`` if it was typed, else None) of the command running.
-
-    The CSV's numbers are at full precision unless ``--digits`` was given (its default, 6,
-    is for the tables); typer's context (its vendored click) says where a value came from."""
+    """(the command's name, ``--digits`` if it was typed, else None): the CSV's numbers are
+    at full precision unless ``--digits`` was typed (its default, 6, is for the tables)."""
     from typer._click.core import ParameterSource
     from typer._click.globals import get_current_context
 

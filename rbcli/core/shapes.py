@@ -28,9 +28,8 @@ class ShapeError(ValueError):
     ----------
     param : str — the parameter at fault (e.g. ``"inner_radius"``), for the io layer to
         point at the right line of the body file
-    lengths : tuple[float, ...] — m, the lengths the message quotes, at its ``{0}``, ``{1}``
-        ... places, so that the io layer can quote them in the file's own length unit
-        (:meth:`format`); ``str()`` quotes them in metres
+    lengths : tuple[float, ...] — m, the lengths the message quotes at ``{0}``, ``{1}``...,
+        which the io layer shows in the file's length unit (:meth:`format`)
     """
 
     def __init__(self, param: str, message: str, lengths: tuple[float, ...] = ()) -> None:
@@ -556,9 +555,7 @@ def geometry(shape: str, **params: Any) -> ShapeGeometry:
     ``shell`` a bool; None counts as absent). A ShapeGeometry: ``measure`` (m³, m², m or 1),
     ``measure_kind``, ``com`` (3,) m local, ``unit_inertia`` (3, 3) m² about the com.
     A ShapeError (a ValueError) names the parameter at fault (``param = "shape"`` for an
-    unknown shape or ``mesh``, ``given``, ``include``). The hollow sphere's
-    ``(R⁵ − r⁵)/(R³ − r³)`` is ``R²(1 + q + … + q⁴)/(1 + q + q²)``, ``q = r/R``, accurate for
-    thin walls."""
+    unknown shape or ``mesh``, ``given``, ``include``)."""
     raw = local_geometry(shape, params)
     inertia = raw.unit_inertia
     return ShapeGeometry(raw.measure, raw.measure_kind, raw.com,

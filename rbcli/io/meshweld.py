@@ -27,16 +27,11 @@ def weld(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     Notes
     -----
-    ``-0.0`` is first turned into ``0.0`` (by adding zero), so equal floats have equal
-    bit patterns. Each point's three bit patterns are hashed into one 64-bit number whose
-    low bits are replaced by the point's index, and that array is sorted by value
-    (``np.sort``, not an argsort: several times faster); equal points are then adjacent.
-    Points whose hashes collide (equal high bits, different coordinates) are found by
-    comparing neighbours and put in order by a lexicographic sort of their own, so the
-    result is exact whatever the hash does. One sort of N keys, against two or three
-    for a lexicographic sort of the coordinates; and a large array is first welded in
-    blocks of :data:`_WELD_BLOCK` points (small sorts, in cache), then the blocks'
-    distinct points together (:func:`weld_blocks`: the same result, in half the time).
+    ``-0.0`` becomes ``0.0`` (adding zero). Each point's bit patterns are hashed into a
+    64-bit key whose low bits hold its index, and the keys sorted (``np.sort``, several
+    times faster than an argsort): equal points are adjacent; colliding hashes are found
+    among neighbours and sorted lexicographically, so the result is exact. A large array
+    is welded in blocks of :data:`_WELD_BLOCK` first (:func:`weld_blocks`: half the time).
     """
     return weld_blocks(np.asarray(points) + 0.0)  # canonical +0.0, a private contiguous copy
 
@@ -155,16 +150,11 @@ _SPAN_WORDS = 16  # text keys of at most 128 bytes; longer 'vertex' lines are no
 def distinct_spans(a: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Group equal byte strings ``a[lo[i]:hi[i]]``: (first, inverse), exact.
 
-    ``first`` holds, in increasing order, the index of the first string of each group
-    found and ``inverse[i]`` the position in ``first`` of string i's group, so
-    ``a[lo[first[inverse[i]]]:hi[...]] == a[lo[i]:hi[i]]``. Each string is read as up to
-    :data:`_SPAN_WORDS` little-endian 64-bit words (the bytes past its end masked off,
-    its length in the last word's place is implied by the mask: strings of different
-    lengths differ in a word or in the length compared first), hashed, and the hashes
-    sorted with the index in their low bits; neighbours are merged only when every word
-    and the length are equal, so unequal strings are never merged (a hash collision only
-    leaves two groups of the same text, each read on its own). Strings longer than
-    ``8 * _SPAN_WORDS`` bytes are not merged at all.
+    ``first``: ascending, the first string of each group; ``inverse[i]``: the position in
+    ``first`` of string i's group. Each string is read as up to :data:`_SPAN_WORDS`
+    little-endian 64-bit words (bytes past its end masked off), hashed, and sorted with
+    its index in the low bits; neighbours merge only when every word and the length are
+    equal (a collision only leaves two groups of one text). Longer strings are not merged.
     """
     m = lo.size
     length = hi - lo

@@ -206,12 +206,10 @@ class Unbalance:
 def _tilt(J_body: np.ndarray, frame: ShaftFrame) -> tuple[float, complex, float, float]:
     """Tilt (rad) of the nearest principal axis, its shaft-frame lean (complex), gap, max |moment|.
 
-    The eigenspace (a line, a plane or all of space when moments coincide to
-    DEGENERATE_RTOL, as in :func:`rbcli.core.principal.principal_axes`) with the largest
-    projection of e_z is the nearest principal direction; v is the projection of e_z onto it
-    (so v . e_z >= 0). tilt = atan2(|v_perp|, v_z) is exact and accurate for small angles.
-    numpy's eigh basis is used directly: principal_axes snaps an axis within 1e-12 of a body
-    axis in |cos| (1.4e-6 rad) onto it, which would hide small tilts.
+    v is the projection of e_z onto the eigenspace (moments equal to DEGENERATE_RTOL merged)
+    nearest it; tilt = atan2(|v_perp|, v_z), accurate for small angles. numpy's eigh basis
+    is used directly: principal_axes snaps an axis within 1.4e-6 rad of a body axis onto it,
+    which would hide small tilts.
     """
     w, V = np.linalg.eigh(0.5 * (J_body + J_body.T))
     axes = V.T  # rows: unit eigenvectors, moments ascending
