@@ -1,13 +1,8 @@
 """The ``rbcli`` process: ``python -m rbcli`` and the ``rbcli`` console script.
 
-Importing this module starts rbcli's process: the first thing it does is install the
-signal handlers (:mod:`rbcli.interrupts`), before typer, numpy or the command line are
-imported, so that SIGINT, SIGTERM and SIGHUP at any moment end the run with one line and
-exit status 130, 143 or 129. Then it imports the command line; an installation so broken
-that it cannot be imported ends the process with its traceback and exit status 70.
-
-:func:`main` runs :func:`rbcli.cli.main` (which returns the exit status) and ends the
-process with that status (:func:`rbcli.interrupts.exit_process`).
+Importing it installs the signal handlers (:mod:`rbcli.interrupts`) before anything else,
+then imports the command line (one that cannot be imported: its traceback, exit 70).
+:func:`main` runs :func:`rbcli.cli.main` and ends the process with its exit status.
 """
 
 from rbcli import interrupts

@@ -1,16 +1,11 @@
 """The arguments of the public API, checked at the door (issue 27 item 1).
 
-Every public function and result method passes its arguments through these checkers first,
-so only two errors come out: a :class:`TypeError` naming the parameter and the type
-expected, and an :class:`rbcli.InputError` naming it for a value of the right type that
-cannot be used (too large for a float, far longer than the parameter takes — refused by its
-length before it is read —, NaN where a time is asked for).
-
-A checker returns plain Python types (numpy scalars become floats, 1-D arrays tuples), so
-the readers of :mod:`rbcli.api.options` never see a numpy subclass, a cyclic list or a
-failing ``__float__``; a user's object is asked as little as possible (``len()`` first,
-never walked deeper than the parameter's nesting). :data:`Quantity`, :data:`Vector`,
-:data:`Point` and :data:`Values` are the types of the public signatures."""
+Only two errors come out: a :class:`TypeError` naming the parameter and the type expected,
+and an :class:`rbcli.InputError` naming it for a value that cannot be used (too large, too
+long: refused by length before it is read, NaN). A checker returns plain Python types, so
+:mod:`rbcli.api.options` never sees a numpy subclass, a cyclic list or a failing
+``__float__``; a user's object is asked as little as possible (``len()`` first).
+:data:`Quantity`, :data:`Vector`, :data:`Point` and :data:`Values` type the signatures."""
 
 from __future__ import annotations
 

@@ -24,16 +24,6 @@ BodiesArg = typer.Argument(None, metavar="BODY...", help=BODY_HELP, show_default
 BodyArg = typer.Argument(None, metavar="BODY", help=BODY_HELP.replace("(s)", ""), show_default=False)
 ExprOpt = typer.Option(None, "-e", "--expr", help=EXPR_HELP, show_default=False)
 JsonOpt = typer.Option(False, "--json", help=JSON_HELP)
-
-#: ``--symmetry-tol``, shared by top, gyrocompass and rollcheck
-SymmetryTolOpt = typer.Option(
-    None, "--symmetry-tol",
-    help="How far from symmetric about its axis the body may be: the two moments across the "
-         "axis may differ, and the products of inertia coupling the axis to the plane across "
-         "it may be, up to this fraction of their mean (0.01 or '1 %'; at most 10 %). Within "
-         "it the answer is for the symmetrised body (the mean moment across) with a warning; "
-         "beyond it the body is refused. Default: 1 %.",
-    show_default=False)
 FORMAT_HELP = ("Output: table (for people), json (= --json) or csv (the JSON as one table for "
                "spreadsheets: quantity,value,text,unit; full precision unless --digits).")
 FormatOpt = typer.Option(None, "--format", metavar="table|json|csv", help=FORMAT_HELP, show_default=False)

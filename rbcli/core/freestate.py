@@ -1,11 +1,6 @@
 """Sampling an exact torque-free motion: the state at any times, the time series, notes.
 
-:func:`evaluate` gives ω, L (body frame) and the attitude quaternion at any array of times
-(``FreeMotion.at(t)`` calls it); :func:`series` the rows of ``precess --csv`` with the
-quaternion's sign kept continuous; :func:`state_json` the ``--at`` object; :func:`notes`
-what the numbers mean in words; :func:`plot_span` and :func:`polhode_family` the time span
-and the reference curves of ``precess --plot``. Every formula of the motion itself is in
-:mod:`rbcli.core.freemotion` and :mod:`rbcli.core.freepath`; every rotation formula in :mod:`rbcli.core.rotation`.
+The formulas of the motion are in :mod:`rbcli.core.freemotion` and :mod:`rbcli.core.freepath`.
 """
 
 from __future__ import annotations

@@ -33,11 +33,8 @@ _SNAP = 1e-14
 
 
 class MeshError(ValueError):
-    """A mesh that does not bound a solid, or bad vertex/face arrays.
-
-    ``boundary`` is the number of boundary edges left (after welding) when the mesh was
-    refused for not being closed, else 0.
-    """
+    """A mesh that does not bound a solid, or bad vertex/face arrays; ``boundary``: the
+    boundary edges left after welding when refused for not being closed, else 0."""
 
     def __init__(self, message: str, *, boundary: int = 0) -> None:
         super().__init__(message)
@@ -232,11 +229,8 @@ def _as_arrays(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.
 def _edge_problems(
     faces: np.ndarray, n_vertices: int, ends: list | None = None
 ) -> tuple[int, int, int]:
-    """(boundary, non-manifold, mis-oriented) edge counts; (0, 0, 0) for a good mesh.
-
-    If ``ends`` is a list, the vertex indices of the boundary edges' ends are appended
-    to it (one array).
-    """
+    """(boundary, non-manifold, mis-oriented) edge counts; (0, 0, 0) for a good mesh. The
+    boundary edges' end vertices are appended to ``ends`` if it is a list (one array)."""
     u = faces.ravel()
     w = faces[:, [1, 2, 0]].ravel()
     fwd = u < w
@@ -317,12 +311,9 @@ def _length(x: float, unit: str) -> str:
 def _weld_boundary(
     v: np.ndarray, f: np.ndarray, ends: np.ndarray, tol: float, unit: str
 ) -> tuple[int, float, str, tuple[int, int, int]]:
-    """Weld the ends of the boundary edges within ``tol``; check the edges again.
-
-    Returns (vertices merged, largest gap closed, the warning, edge problem counts).
-    Triangles two of whose corners merge are left out of the edge check (their edges
-    are shorter than the tolerance); the integrals still count them.
-    """
+    """Weld the ends of the boundary edges within ``tol`` and check the edges again: (vertices
+    merged, largest gap closed, the warning, edge problem counts). Triangles two of whose
+    corners merge are left out of the edge check, not the integrals."""
     label, gap, chained = weld_gaps(v[ends], tol, unit=unit)
     merged = int((label != np.arange(len(ends))).sum())
     if not merged:

@@ -224,9 +224,8 @@ def at_speed(
     straight: StraightRolling, v: float | None = None, spin: float | None = None
 ) -> Verdict:
     """Verdict on straight upright rolling at speed ``v`` (m/s) or ``spin`` (rad/s; v = a spin:
-    one, or both when they agree to 1e-9; negative is backwards, |spin| is used).
-    nu^2 = [C (C + m a^2) s^2 - A m g (a - r)] / [A (A + m a^2)] (sheet §3.2): > 0 the lean
-    oscillates at nu, < 0 it grows at sqrt(-nu^2)."""
+    one, or both when they agree to 1e-9; negative is backwards, |spin| is used): nu^2
+    (:meth:`StraightRolling.nu2`) > 0 the lean oscillates at nu, < 0 it grows at sqrt(-nu^2)."""
     a = straight.radius
     if v is None and spin is None:
         raise ValueError("give a speed or a spin")
@@ -275,15 +274,9 @@ def nu2_curve(st: StraightRolling, speeds: Any) -> np.ndarray:
 
 @dataclass(frozen=True)
 class RollCheck:
-    """Everything ``rbcli rollcheck`` answers: the threshold, and optionally a verdict at a
-    speed and a steady circle.
-
-    Attributes
-    ----------
-    straight : StraightRolling
-    verdict : Verdict or None — when a speed or spin was given
-    circle : CircleMotion or None — when a circle was asked for
-    """
+    """Everything ``rbcli rollcheck`` answers: ``straight`` (:class:`StraightRolling`),
+    ``verdict`` (:class:`Verdict`, with a speed or spin) and ``circle`` (:class:`CircleMotion`,
+    when asked for) or None."""
 
     straight: StraightRolling
     verdict: Verdict | None = None
@@ -370,9 +363,8 @@ class Curves:
 
 
 def curves(check: RollCheck, n_speeds: int = 501, n_leans: int = 200, n_radii: int = 220) -> Curves:
-    """The figure's arrays for a :class:`RollCheck`: nu^2 against speed
-    and, when a circle was asked for, kappa and the speed of the centre on a (lean, circle
-    radius) grid (:func:`stability_map`, sheet §3.3)."""
+    """The figure's :class:`Curves` for a :class:`RollCheck` (circles: :func:`stability_map`,
+    sheet §3.3)."""
     st = check.straight
     w = st.wheel
     vc = st.critical_speed

@@ -78,10 +78,10 @@ class FastTop:
 class EllipticSolution:
     """The constants of u(t) = u1 + (u2 - u1) sn²(λ t + τ0 | m) and of φ(t), ψ(t): ``m``, ``m1``
     ((u2-u1)/(u3-u1), 1 - m), ``lam`` (1/s, ½ sqrt(β (u3 - u1))), ``tau0`` (in [-K, K]; τ = 0
-    at the greatest tilt), ``am0``, ``K``, ``band`` (u2 - u1), ``one_minus_u1``,
-    ``one_plus_u1``, ``one_minus_u2``, ``cp``, ``cm`` (1/s), ``n_plus``, ``n_minus`` and their
-    complements, ``Pi_plus``, ``Pi_minus`` (Π(n±|m)), and ``top_jump``, ``bottom_jump`` (±1
-    when the axis passes exactly through a pole: φ jumps by ±π there)."""
+    at the greatest tilt), ``am0``, ``K``, ``band`` (u2 - u1), ``one_plus_u1``,
+    ``one_minus_u2``, ``cp``, ``cm`` (1/s), ``n_plus``, ``n_minus`` and their complements,
+    ``Pi_plus``, ``Pi_minus`` (Π(n±|m)), and ``top_jump``, ``bottom_jump`` (±1 when the axis
+    passes exactly through a pole: φ jumps by ±π there)."""
 
     m: float
     m1: float
@@ -90,7 +90,6 @@ class EllipticSolution:
     am0: float
     K: float
     band: float
-    one_minus_u1: float
     one_plus_u1: float
     one_minus_u2: float
     cp: float
@@ -534,8 +533,8 @@ def analyse(
 
     am0, F0 = _phase(x1, x2, m1, thd)
     ell = EllipticSolution(
-        m=m, m1=m1, lam=lam, tau0=F0, am0=am0, K=K, band=band, one_minus_u1=omu1,
-        one_plus_u1=opu1, one_minus_u2=omu2, cp=cp, cm=cm, n_plus=n_plus, n_plus1=n_plus1, n_minus=n_minus,
+        m=m, m1=m1, lam=lam, tau0=F0, am0=am0, K=K, band=band, one_plus_u1=opu1,
+        one_minus_u2=omu2, cp=cp, cm=cm, n_plus=n_plus, n_plus1=n_plus1, n_minus=n_minus,
         n_minus1=n_minus1, Pi_plus=Pi_p, Pi_minus=Pi_m, top_jump=jt, bottom_jump=jb,
     )  # fmt: skip
 

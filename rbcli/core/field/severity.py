@@ -23,17 +23,6 @@ ISO_20816_3 = {
     (2, "flexible"): (2.3e-3, 4.5e-3, 7.1e-3),
 }
 
-#: what each zone means (ISO 20816-3, 6.2.1)
-ZONES = {
-    "A": "newly commissioned machines",
-    "B": "acceptable for unrestricted long-term operation",
-    "C": "not acceptable for long-term operation; run only until a suitable opportunity for remedial action",
-    "D": "severe enough to cause damage",
-}
-
-GROUPS = (1, 2)
-FOUNDATIONS = ("rigid", "flexible")
-
 
 def convert_measure(amplitude: float, measure: str, to: str) -> float:
     """An amplitude of a sinusoid given as ``measure`` ("pk", "pk-pk", "rms") in ``to``."""
