@@ -323,3 +323,23 @@ def test_thresholds_and_critical_speeds_do_not_move_with_points():
     assert a.stability.threshold_speed == pytest.approx(b.stability.threshold_speed, rel=1e-11)
     assert [t.change for t in a.stability.thresholds] == [t.change for t in b.stability.thresholds] == ["onset"]
     assert [c.speed for c in a.critical_speeds] == pytest.approx([c.speed for c in b.critical_speeds], rel=1e-11)
+
+
+def test_an_undamped_rotor_exactly_at_a_critical_speed():
+    # sqrt(2k/m) = sqrt(2e6/50) = 200 rad/s exactly: the cylindrical criticals (forward and
+    # backward) of CYL on two 1e6 N/m bearings, where the dynamic stiffness is singular
+    body = rbcli.load_text(CYL)
+    kw = dict(bearings="-0.2,0.2", stiffness=1e6, speed=200)
+    balanced = rbcli.whirl(body, **kw)  # nothing drives the mode: the response is zero
+    assert all(a.displacement == 0.0 for a in balanced.response.at_speed)
+    assert any("no critical speed is judged" in str(w) for w in balanced.warnings)
+    with pytest.raises(InputError, match="200 rad/s is an undamped critical speed that the unbalance drives"):
+        rbcli.whirl(body, unbalance="10 g*mm@0", unbalance_planes="0", **kw)
+    # the fan's backward conical critical: synchronous unbalance does not drive a backward
+    # mode, so the response there is finite and continuous with its neighbours'
+    fan = rbcli.load(FAN)
+    fkw = dict(bearings="0,500mm", stiffness="5 N/um")
+    back = [c.speed for c in rbcli.whirl(fan, **fkw).critical_speeds if c.whirl == "backward"]
+    at = rbcli.whirl(fan, speed=back[0], **fkw).response.at_speed[0].displacement
+    near = rbcli.whirl(fan, speed=back[0] * (1 + 1e-9), **fkw).response.at_speed[0].displacement
+    assert at == pytest.approx(near, rel=1e-6)  # 1e-9 off the critical moves a smooth response ~1e-9

@@ -363,8 +363,9 @@ def _at_speed(rotor, forcing, speed, planes) -> tuple[AtSpeed, ...]:
         return ()
     Wop = speed[-1]
     one = W.response(rotor, forcing, np.array([Wop]))
-    if not one.speeds.size:  # unbounded there, or beyond floats: run() says so
-        raise OverflowError("the response at the operating speed")
+    if not one.speeds.size:
+        raise InputError(f"{{speed}}: {Wop:.6g} rad/s is an undamped critical speed that the unbalance "
+                         "drives: the response there is unbounded; give {damping}, or a speed off it")
     rigid = None
     if len(planes) == 2:
         P0 = forcing.couple + rotor.z_com * forcing.static  # about z = 0
@@ -385,8 +386,10 @@ def _response(rotor, forcing, speeds, o: Options, crit_rows, warnings) -> Respon
                              "left out of the response"))
     if forcing.zero:
         warnings.append(Note("the rotor is balanced (no static or couple unbalance about "
-                             "the shaft): its unbalance response is zero; give {unbalance} and "
-                             "{unbalance_planes} to see the response to a test unbalance"))
+                             "the shaft): its unbalance response is zero and no critical speed is "
+                             "judged against the operating speed; give {unbalance} and "
+                             "{unbalance_planes} to see the response to a test unbalance (API 684's "
+                             "is 4W/N) and judge the separation margins"))
     planes = tuple(b.z for b in rotor.bearings)
     return ResponseData(
         source="body" if o.unbalance is None else "planes",

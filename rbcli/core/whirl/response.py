@@ -65,8 +65,10 @@ class Forcing:
 
 
 def _amplitudes(rotor: Rotor, forcing: Forcing, speeds: np.ndarray) -> np.ndarray:
-    """(N, 4) complex ndarray: Q at each speed; NaN at a speed where the dynamic stiffness
-    is singular (an undamped critical speed: the response is unbounded there)."""
+    """(N, 4) complex ndarray: Q at each speed. Where the dynamic stiffness is singular (an
+    undamped critical speed) the response is unbounded (NaN) if the unbalance drives that
+    mode; if it does not (a backward mode, a balanced rotor) the driven response is finite:
+    the least-norm solution (the undriven mode's free amplitude left at 0)."""
     W = np.asarray(speeds, dtype=float)
     M, G = rotor.M(), rotor.G()
     K, C = rotor.matrices(W)
@@ -81,7 +83,11 @@ def _amplitudes(rotor: Rotor, forcing: Forcing, speeds: np.ndarray) -> np.ndarra
             try:
                 out[j] = np.linalg.solve(Z[j], F[j])
             except np.linalg.LinAlgError:
-                pass
+                x = np.linalg.lstsq(Z[j], F[j], rcond=None)[0]
+                # F in the range of Z to round-off (1e-9 of the terms' scale, far above the
+                # ~1e-16 of an exact solve, far below a driven mode's residual ~|F|)
+                if np.linalg.norm(Z[j] @ x - F[j]) <= 1e-9 * (np.linalg.norm(Z[j]) * np.linalg.norm(x) + np.linalg.norm(F[j])):
+                    out[j] = x
         return out
 
 
