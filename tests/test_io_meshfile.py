@@ -15,6 +15,7 @@ import trimesh
 
 from rbcli.core.mesh import mass_properties
 from rbcli.io.meshfile import SUFFIXES, MeshFileError, read_mesh, weld
+from rbcli.io.reader import ReadError
 
 # ---------------------------------------------------------------------------- writers
 
@@ -379,9 +380,10 @@ def test_unknown_extension_lists_the_allowed_ones(tmp_path):
 def test_directory_and_missing_file(tmp_path):
     d = tmp_path / "dir.stl"
     d.mkdir()
-    with pytest.raises(MeshFileError, match=r"dir\.stl: is a directory"):
+    # the reader's errors: an InputError and the OSError open() would raise
+    with pytest.raises(IsADirectoryError, match=r"dir\.stl: is a directory"):
         read_mesh(d)
-    with pytest.raises(MeshFileError, match=r"missing\.obj: no such file"):
+    with pytest.raises(FileNotFoundError, match=r"no such file: .*missing\.obj"):
         read_mesh(tmp_path / "missing.obj")
 
 
@@ -390,7 +392,7 @@ def test_unreadable_file(tmp_path):
     path = write_binary_stl(tmp_path / "locked.stl", *box_arrays())
     path.chmod(0)
     try:
-        with pytest.raises(MeshFileError, match="permission denied"):
+        with pytest.raises(PermissionError, match="permission denied"):
             read_mesh(path)
     finally:
         path.chmod(0o644)
@@ -403,7 +405,7 @@ def test_unreadable_file(tmp_path):
         (OSError(5, "Input/output error"), "cannot read the file: input/output error"),
     ],
 )
-def test_os_errors_become_mesh_file_errors(tmp_path, monkeypatch, exc, message):
+def test_os_errors_become_read_errors(tmp_path, monkeypatch, exc, message):
     # Works as root too (where chmod 0 does not stop reading): the reader's open fails.
     import rbcli.io.reader as reader
 
@@ -412,7 +414,7 @@ def test_os_errors_become_mesh_file_errors(tmp_path, monkeypatch, exc, message):
 
     path = write_binary_stl(tmp_path / "p.stl", *box_arrays())
     monkeypatch.setattr(reader.os, "open", failing_open)
-    with pytest.raises(MeshFileError, match=rf"p\.stl: {message}"):
+    with pytest.raises(reader.ReadError, match=rf"p\.stl: {message}"):
         read_mesh(path)
 
 
@@ -577,14 +579,14 @@ def test_a_huge_obj_face_index_is_a_located_message(tmp_path):
 def test_a_fifo_is_refused_without_waiting(tmp_path):
     fifo = tmp_path / "pipe.stl"
     os.mkfifo(fifo)
-    with pytest.raises(MeshFileError, match=r"pipe\.stl: is a FIFO \(named pipe\), not a regular file"):
+    with pytest.raises(ReadError, match=r"pipe\.stl: is a FIFO \(named pipe\), not a regular file"):
         read_mesh(fifo)
 
 
 def test_a_device_is_refused(tmp_path):
     link = tmp_path / "null.obj"
     link.symlink_to("/dev/null")
-    with pytest.raises(MeshFileError, match=r"null\.obj: is a device, not a regular file"):
+    with pytest.raises(ReadError, match=r"null\.obj: is a device, not a regular file"):
         read_mesh(link)
 
 
@@ -594,13 +596,13 @@ def test_a_large_sparse_file_is_refused_before_it_is_read(tmp_path, monkeypatch)
     path = tmp_path / "huge.stl"
     with open(path, "wb") as fh:
         fh.truncate(2 << 30)  # 2 GiB of holes: no disk used
-    with pytest.raises(MeshFileError, match=r"huge\.stl: is 2147483648 bytes; mesh files are limited to "
+    with pytest.raises(ReadError, match=r"huge\.stl: is 2147483648 bytes; mesh files are limited to "
                        r"1 GiB \(set RBCLI_MAX_MESH_BYTES to raise it\)"):
         read_mesh(path)
     assert MAX_MESH_BYTES == 1 << 30
     small = write_binary_stl(tmp_path / "box.stl", *box_arrays())
     monkeypatch.setenv("RBCLI_MAX_MESH_BYTES", "500")
-    with pytest.raises(MeshFileError, match=r"mesh files are limited to 500 bytes"):
+    with pytest.raises(ReadError, match=r"mesh files are limited to 500 bytes"):
         read_mesh(small)
     monkeypatch.setenv("RBCLI_MAX_MESH_BYTES", "1k")
     assert len(read_mesh(small).faces) == 12
@@ -611,7 +613,7 @@ def test_a_large_sparse_file_is_refused_before_it_is_read(tmp_path, monkeypatch)
 
 
 def test_a_nul_in_the_file_name_is_a_clear_message():
-    with pytest.raises(MeshFileError, match=r"a\\0b\.stl: the file name contains a NUL character"):
+    with pytest.raises(ReadError, match=r"a\\0b\.stl: the file name contains a NUL character"):
         read_mesh("a\0b.stl")
 
 

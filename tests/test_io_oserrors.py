@@ -51,8 +51,39 @@ def test_the_error_keeps_its_kind_when_pickled(tmp_path):
     try:
         rbcli.load(tmp_path / "nope.yaml")
     except rbcli.InputError as exc:
-        try:
-            back = pickle.loads(pickle.dumps(exc))
-        except TypeError:
-            pytest.skip("errors pickle by issue 34 item 4 (another branch)")
+        back = pickle.loads(pickle.dumps(exc))
         assert isinstance(back, FileNotFoundError) and str(back) == str(exc)
+
+
+@pytest.mark.parametrize("part, file", [
+    ("{shape: include, file: missing.yaml}", "missing.yaml"),
+    ("{shape: mesh, file: missing.stl, density: 1000}", "missing.stl"),
+    ("{shape: mesh, file: missing.obj, mass: 1}", "missing.obj"),
+])
+def test_a_missing_include_or_mesh_is_file_not_found_at_its_line(tmp_path, part, file):
+    body = tmp_path / "b.yaml"
+    body.write_text(f"name: b\nparts:\n  - {part}\n")
+    with pytest.raises(FileNotFoundError) as exc:
+        rbcli.load(body)
+    e = exc.value
+    assert isinstance(e, rbcli.InputError) and e.errno == errno.ENOENT and e.filename == str(tmp_path / file)
+    assert str(e).startswith(f"{body}:3:") and str(tmp_path / file) in str(e)  # located where it is named
+    assert isinstance(pickle.loads(pickle.dumps(e)), FileNotFoundError)
+
+
+def test_a_folder_named_as_a_mesh_is_an_is_a_directory_error(tmp_path):
+    (tmp_path / "d.stl").mkdir()
+    body = tmp_path / "b.yaml"
+    body.write_text("name: b\nparts:\n  - {shape: mesh, file: d.stl, density: 1000}\n")
+    with pytest.raises(IsADirectoryError) as exc:
+        rbcli.load(body)
+    assert str(exc.value).startswith(f"{body}:3:")
+
+
+def test_a_missing_step_file_is_file_not_found(tmp_path):
+    pytest.importorskip("OCP")
+    body = tmp_path / "b.yaml"
+    body.write_text("name: b\nparts:\n  - {shape: step, file: gone.step, density: 1000}\n")
+    with pytest.raises(FileNotFoundError) as exc:
+        rbcli.load(body)
+    assert str(exc.value).startswith(f"{body}:3:") and "gone.step" in str(exc.value)

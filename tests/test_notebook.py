@@ -19,7 +19,7 @@ def _results():
         "inertia": (rbcli.inertia(fan), False),
         "principal": (rbcli.principal(fan), False),
         "balance": (rbcli.balance(fan, planes="-100,100", radius="100", speed="1500 rpm"), True),
-        "precess": (rbcli.precess(fan, omega="0.3,1,0.2"), False),
+        "precess": (rbcli.precess(fan, omega="0.3,1,0.2"), True),
         "whirl": (rbcli.whirl(fan, bearings="-150,150", stiffness=5e6, speed="1480 rpm"), True),
         "top": (rbcli.top(rbcli.load("examples/top.yaml"), spin=150, theta=30), True),
         "rollcheck": (rbcli.rollcheck(rbcli.load("examples/penny.yaml")), True),

@@ -16,6 +16,7 @@ from rbcli.body.plausible import note_density
 from rbcli.io import units as un
 from rbcli.io import yamlsafe as ys
 from rbcli.io import yamlvalues as yv
+from rbcli.io.reader import ReadError, relabelled
 from rbcli.io.yamlvalues import HUGE
 
 MESH_KEYS = (
@@ -56,6 +57,8 @@ def mesh_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict) -> P
         vertices, faces, _fmt, file_weld = meshfile.read_mesh(path)
     except meshfile.MeshFileError as exc:  # its message starts with the path
         raise ctx.error(fnode, f"{what}: {exc}") from None
+    except ReadError as exc:  # missing, denied, a folder: also the OSError
+        raise relabelled(exc, f"{what}: {exc.path}: {exc.reason}", ctx.where(fnode)) from None
     ctx.inputs.append(os.path.realpath(path))
     k = scale * factor
     if k != 1.0:

@@ -21,7 +21,7 @@ from rbcli.body.plausible import note_density
 from rbcli.errors import InputError, Location, literal
 from rbcli.io import yamlsafe as ys
 from rbcli.io import yamlvalues as yv
-from rbcli.io.reader import ReadError
+from rbcli.io.reader import ReadError, relabelled
 from rbcli.io.stepfile import StepError, read_step
 
 STEP_KEYS = ("name", "shape", "file", "part", "units", "scale", "solids", "subtract", "cut_from",
@@ -50,7 +50,7 @@ def step_part(ctx: Ctx, m: ys.MapNode, name: str, prefix: str, known: dict, name
         raise ctx.error(fnode, f"{what}: reading STEP needs OpenCascade: pip install "
                         "'rbcli[cad]'") from None
     except ReadError as exc:
-        raise ctx.error(fnode, f"{what}: {exc}") from None
+        raise relabelled(exc, f"{what}: {exc}", ctx.where(fnode)) from None
     except StepError as exc:
         said = literal(str(exc)) if ctx.file == str(path) else f"{what}: {literal(str(exc))}"
         raise InputError(said, Location(str(path), exc.line or 0)) from None

@@ -16,7 +16,7 @@ _NON_FINITE = re.compile(rb"[+-]?(?:inf(?:inity)?|nan)", re.IGNORECASE)
 
 
 class MeshFileError(ValueError):
-    """A mesh file that cannot be read: missing, unreadable, malformed or empty.
+    """A mesh file that is malformed or empty (one missing or unreadable: a ReadError).
 
     The message is lower case, starts with the file name and says what is wrong.
     ``path`` is the file and ``line`` the 1-based line (0 when not applicable).

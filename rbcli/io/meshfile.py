@@ -22,7 +22,7 @@ from rbcli.io.meshbase import MeshFileError, read_all
 from rbcli.io.meshobj import read_obj
 from rbcli.io.meshstl import read_stl
 from rbcli.io.meshweld import weld
-from rbcli.io.reader import ReadError, open_regular
+from rbcli.io.reader import open_regular
 
 __all__ = [
     "MeshFileError", "MeshFile", "read_mesh", "weld", "default_weld", "max_mesh_bytes",
@@ -126,10 +126,11 @@ def read_mesh(path: str | os.PathLike[str], *, max_bytes: int | None = None) -> 
 
     Raises
     ------
+    ReadError
+        A file missing, not regular, over the size limit, unreadable (rbcli.io.reader).
     MeshFileError
-        Unknown extension; a file missing, not regular, over the size limit, unreadable;
-        a truncated or malformed file (with the line); non-finite coordinates; a face
-        index out of range (OBJ); no triangles.
+        Unknown extension; a truncated or malformed file (with the line); non-finite
+        coordinates; a face index out of range (OBJ); no triangles.
 
     Notes
     -----
@@ -154,10 +155,7 @@ def read_mesh(path: str | os.PathLike[str], *, max_bytes: int | None = None) -> 
             max_bytes = max_mesh_bytes()
         except ValueError as exc:
             raise MeshFileError(name, str(exc)) from None
-    try:
-        fd, size = open_regular(name, max_bytes, "mesh file", env="RBCLI_MAX_MESH_BYTES")
-    except ReadError as exc:
-        raise MeshFileError(exc.path, exc.reason) from None
+    fd, size = open_regular(name, max_bytes, "mesh file", env="RBCLI_MAX_MESH_BYTES")
     with open(fd, "rb", closefd=True) as fh:
         if not size:
             raise MeshFileError(name, "empty file (no triangles)")

@@ -59,6 +59,13 @@ def _error(name: str, reason: str, where: Location | None, code: int | None = No
     return exc
 
 
+def relabelled(exc: ReadError, text: str, where: Location | None) -> ReadError:
+    """``exc`` saying ``text`` at ``where``, of its class (a MissingFile stays an OSError)."""
+    new = _error(exc.path, exc.reason, where, getattr(exc, "errno", None))
+    new.message = text
+    return new
+
+
 def size_text(n: int) -> str:
     """``8 MiB``, ``512 KiB`` or ``100 bytes``."""
     for unit, size in (("GiB", 1 << 30), ("MiB", 1 << 20), ("KiB", 1 << 10)):

@@ -39,7 +39,7 @@ _BUILD = {
     "InertiaResult": lambda d, r: massprops.inertia_doc(d, _named(r), r, DU, D, "tensor", r.reference_label, parts=False),
     "PrincipalResult": lambda d, r: massprops.principal_doc(d, _named(r), r, DU, D, r.reference_label, parts=False),
     "BalanceResult": lambda d, r: balance.document(d, r, SU, D) or balanceplot.plot(r.diagram(), SU.of(r.body)),
-    "PrecessResult": lambda d, r: precess.document(d, _named(r), r, DU, D),
+    "PrecessResult": lambda d, r: precess.document(d, _named(r), r, DU, D) or precess.plot(_named(r), r.motion, None, DU),
     "TopResult": lambda d, r: top.document(d, r, DU, D) or top.plot(r, r.sample(r.default_duration()), r.default_duration()),
     "GyrocompassResult": lambda d, r: top.gyro_document(d, r, DU, D),
     "RollcheckResult": lambda d, r: rollcheck.document(d, r, DU, D) or rollcheck.plot(r, r.curves()),
