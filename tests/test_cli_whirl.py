@@ -97,14 +97,15 @@ def test_csv_and_help(cli):
 
 
 def test_report_section_from_a_result():
-    from rbcli.render import whirl as rw
+    from rbcli.api import report
+    from rbcli.render import reportdoc
     from rbcli.render.units import DisplayUnits
     from rbcli.render.report import Figure, Section
     from rbcli.render.text import Table
 
-    res = rbcli.whirl(rbcli.load(EXAMPLES / "fan_rotor.yaml"), bearings="0,500mm", stiffness="5 N/um",
-                      damping="1 N*s/mm", speed="1480 rpm")
-    s = rw.report_section(res, DisplayUnits(), 6)
+    body = rbcli.load(EXAMPLES / "fan_rotor.yaml")
+    res = rbcli.whirl(body, bearings="0,500mm", stiffness="5 N/um", damping="1 N*s/mm", speed="1480 rpm")
+    s = reportdoc._whirl(report.Section("whirl", "Whirl", res, warnings=res.warnings), body, DisplayUnits(), 6)
     assert isinstance(s, Section) and s.key == "whirl" and s.skipped is None
     titles = [i.title for i in s.items if isinstance(i, Table)]
     assert any(t.startswith("critical speeds") for t in titles)

@@ -150,7 +150,14 @@ def jsonable(obj: Any) -> Any:
         if not math.isfinite(obj):
             raise _NonFinite(float(obj))
         return 0.0 if obj == 0.0 else float(obj)
-    if hasattr(obj, "tolist"):  # numpy arrays and scalars
+    if isinstance(obj, np.ndarray) and obj.dtype.kind in "biuU":  # whole arrays at once
+        return obj.tolist()
+    if isinstance(obj, np.ndarray) and obj.dtype.kind == "f":
+        bad = np.argwhere(~np.isfinite(obj))
+        if len(bad):
+            raise _NonFinite(float(obj[tuple(bad[0])]), bad[0].tolist())
+        return (obj + 0.0).tolist()  # -0.0 + 0.0 is 0.0
+    if hasattr(obj, "tolist"):  # other numpy arrays and scalars
         return jsonable(obj.tolist())
     if hasattr(obj, "to_json"):
         return jsonable(obj.to_json())
@@ -175,9 +182,9 @@ def _items(pairs: Iterable[tuple[Any, Any]]) -> Iterator[tuple[Any, Any]]:
 class _NonFinite(NonFiniteResult):
     """NonFiniteResult that collects the key path on its way up through :func:`jsonable`."""
 
-    def __init__(self, value: float) -> None:
+    def __init__(self, value: float, path: list[str | int] | None = None) -> None:
         self.value = value
-        self.path: list[str | int] = []
+        self.path = path or []
         super().__init__("")
 
     @property

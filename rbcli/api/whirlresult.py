@@ -52,8 +52,8 @@ def readonly(a: Any):
 
 
 def to_json(obj: Any) -> Any:
-    """Plain JSON data of a result value: dataclasses by their fields (then the extra
-    keys of ``_json_extra``), arrays and tuples as lists."""
+    """The JSON tree of a result value, arrays kept (:func:`jsonable` makes it plain):
+    dataclasses by their fields (then the extra keys of ``_json_extra``), tuples as lists."""
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
         d = {f.name: to_json(getattr(obj, f.name)) for f in dataclasses.fields(obj)
              if not f.name.startswith("_") and f.metadata.get("json", True)}
@@ -63,8 +63,6 @@ def to_json(obj: Any) -> Any:
         return d
     if isinstance(obj, (list, tuple)):
         return [to_json(x) for x in obj]
-    if hasattr(obj, "tolist"):
-        return obj.tolist()
     return obj
 
 
@@ -72,7 +70,7 @@ class _Json:
     """A nested value of the result: its JSON is its fields (``to_json()``)."""
 
     def to_json(self) -> Any:
-        return to_json(self)
+        return jsonable(to_json(self))
 
 
 def _hidden(**default: Any) -> Any:

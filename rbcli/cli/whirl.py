@@ -87,7 +87,7 @@ def whirl(
             if path is not None:
                 doc.note(f"{opt}: figure written to {path}")
 
-    c.emit(e, out, lambda: {**res.to_json(), "file": b.source}, tables)
+    c.emit(e, out, lambda: {**res.to_json(), "file": b.source}, tables, plain=True)
     for w in res.warnings:  # after the output: a result that cannot be printed says only that
         e.warn(f"rbcli: {b.source}: warning: {c.said(w)}")
     c.finish(res.return_code)

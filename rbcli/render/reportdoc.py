@@ -22,13 +22,13 @@ from rbcli.render import massprops as rm
 from rbcli.render import precess as rp
 from rbcli.render import rollcheck as rr
 from rbcli.render import top as rt
+from rbcli.render import whirl as rw
 from rbcli.render import bodyplot
 from rbcli.render.fmt import said
 from rbcli.render.plots import figure_bytes
 from rbcli.render.report import Figure, Report, Section, parts_table
 from rbcli.render.text import Doc, Heading, Note, check_finite_doc
 from rbcli.render.units import DisplayUnits, ShopUnits
-from rbcli.render.whirl import report_section
 
 if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.report import ReportResult
@@ -100,7 +100,16 @@ def _balance(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
 
 
 def _whirl(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:
-    return report_section(c.result, du, digits, key=c.key, title=c.title)
+    doc = Doc()
+    rw.document(doc, c.result, du, digits, heading=False)
+    s = _section(c, doc, body)
+    _figure(s, "whirl-campbell", rw.campbell_figure(c.result),
+            "Campbell diagram: whirl frequencies against speed, the n× lines and the critical speeds.")
+    _figure(s, "whirl-response", rw.response_figure(c.result),
+            "Unbalance response at each bearing: amplitude and phase against speed.")
+    _figure(s, "whirl-map", rw.map_figure(c.result), "Undamped critical speed map: critical speeds "
+            "against bearing stiffness, with the bearings' own stiffness against speed.")
+    return s
 
 
 def _precess(c: Computed, body: Any, du: DisplayUnits, digits: int) -> Section:

@@ -1,7 +1,7 @@
-"""Tables, figures and the report section of ``rbcli whirl`` (the JSON is the result's
-``to_json()``): formatting only, from :class:`rbcli.api.whirlresult.WhirlResult`. Speeds
-in rpm and rad/s, whirl frequencies in rad/s and cpm, positions in the display length
-unit, displacements in µm, forces in N."""
+"""Tables and figures of ``rbcli whirl`` (the JSON is the result's ``to_json()``; the
+report's section is :mod:`rbcli.render.reportdoc`'s): formatting only, from
+:class:`rbcli.api.whirlresult.WhirlResult`. Speeds in rpm and rad/s, whirl frequencies in
+rad/s and cpm, positions in the display length unit, displacements in µm, forces in N."""
 
 from __future__ import annotations
 
@@ -14,7 +14,6 @@ from rbcli.core.whirl.response import phase_deg
 from rbcli.render import echo
 from rbcli.render.fmt import num, said
 from rbcli.render.plots import figure, figure_bytes, style
-from rbcli.render.report import Figure, Section
 from rbcli.render.text import Doc, Note
 from rbcli.render.units import RPM, DisplayUnits
 
@@ -22,7 +21,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from rbcli.api.whirlresult import WhirlResult
 
 __all__ = ["document", "echo_rows", "campbell_figure", "response_figure", "map_figure",
-           "report_section", "conventions_note"]
+           "conventions_note"]
 
 UM = 1e6  # m -> µm
 
@@ -521,35 +520,3 @@ def _continuous_phase(deg: np.ndarray, amp: np.ndarray) -> np.ndarray:
     out[ok] = un - shift
     return out
 
-
-# --- report
-
-
-def report_section(res: WhirlResult, du: DisplayUnits, digits: int, *, figures: bool = True,
-                   key: str = "whirl", title: str = "Whirl: critical speeds and unbalance response") -> Section:
-    """The report's whirl section: the tables of :func:`document` (the options as
-    understood first, no heading), the result's warnings as notes (options spelled as the
-    command line spells them) and, with ``figures``, the Campbell diagram and the response as
-    SVG :class:`rbcli.render.report.Figure` items.
-
-    ``rbcli.render.reportdoc`` would build it from a computed section ``c`` (``c.result`` a
-    :class:`rbcli.api.whirlresult.WhirlResult`) as
-    ``report_section(c.result, du, digits, key=c.key, title=c.title)``."""
-
-    doc = Doc()
-    document(doc, res, du, digits, heading=False)
-    s = Section(key, title)
-    s.add_doc(doc)
-    for w in res.warnings:
-        s.items.append(Note("warning: " + said(w)))
-    if figures:
-        s.items.append(Figure("whirl-campbell", "Campbell diagram: whirl frequencies against speed, "
-                              "the n× lines and the critical speeds.",
-                              figure_bytes(campbell_figure(res), "svg").decode("utf-8")))
-        s.items.append(Figure("whirl-response", "Unbalance response at each bearing: amplitude and "
-                              "phase against speed.",
-                              figure_bytes(response_figure(res), "svg").decode("utf-8")))
-        s.items.append(Figure("whirl-map", "Undamped critical speed map: critical speeds against "
-                              "bearing stiffness, with the bearings' own stiffness against speed.",
-                              figure_bytes(map_figure(res), "svg").decode("utf-8")))
-    return s
