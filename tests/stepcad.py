@@ -112,8 +112,8 @@ def write(path: str | Path, tree: list, unit: str = "MM") -> Path:
     for p in printers:  # the writer prints statistics
         messenger.RemovePrinter(p)
     try:
+        w = STEPCAFControl_Writer()  # first: it registers the static that the next line sets
         Interface_Static.SetCVal_s("write.step.unit", unit)
-        w = STEPCAFControl_Writer()
         w.Transfer(doc, STEPControl_AsIs)
         w.Write(str(path))
     finally:

@@ -153,9 +153,9 @@ def jsonable(obj: Any) -> Any:
     if isinstance(obj, np.ndarray) and obj.dtype.kind in "biuU":  # whole arrays at once
         return obj.tolist()
     if isinstance(obj, np.ndarray) and obj.dtype.kind == "f":
-        bad = np.argwhere(~np.isfinite(obj))
-        if len(bad):
-            raise _NonFinite(float(obj[tuple(bad[0])]), bad[0].tolist())
+        if not np.isfinite(obj).all():
+            bad = np.argwhere(~np.isfinite(obj))[0]
+            raise _NonFinite(float(obj[tuple(bad)]), bad.tolist())
         return (obj + 0.0).tolist()  # -0.0 + 0.0 is 0.0
     if hasattr(obj, "tolist"):  # other numpy arrays and scalars
         return jsonable(obj.tolist())

@@ -125,25 +125,47 @@ def to_si(text: str, kind: str) -> float:
 
 
 @lru_cache(maxsize=256)
-def _exact_unit(unit: str) -> tuple[Fraction, int]:
+def _exact_unit(unit: str) -> tuple[Fraction, int, int | None]:
+    """(q, p) of ``unit`` (:func:`parse_unit_exact`), and k when it is exactly 10^k."""
     q, p, _ = parse_unit_exact(unit)
-    return q, p
+    k = len(str(q.numerator)) - 1 if q.denominator == 1 else 1 - len(str(q.denominator))
+    return q, p, k if p == 0 and q == Fraction(10) ** k else None
 
 
 def bare_to_si(x: float, unit: str) -> float:
     """A bare number ``x`` in ``unit`` (a body's, :func:`unit_for_kind`) in SI: the same bits
     as the text ``f"{x!r} {unit}"`` read by :func:`to_si` (the one route: the decimal that
-    prints ``x``, times the unit's exact factor, rounded once)."""
+    prints ``x``, times the unit's exact factor, rounded once). A unit of 10^k (mm, g, km)
+    moves the decimal point of that text, which float() rounds once: the same bits, without
+    Fractions (bench/batch.py's goal; tests/test_units_route.py checks the two agree)."""
     if not unit or not math.isfinite(x):
         return x * (parse_unit(unit)[0] if unit else 1.0)
-    q, p = _exact_unit(unit)
+    q, p, k = _exact_unit(unit)
+    if k == 0:
+        return x
+    if k is not None:  # (+ 0.0: the text route's -0.0 is 0.0)
+        digits, _, exponent = repr(float(x)).partition("e")
+        return float(f"{digits}e{int(exponent or 0) + k}") + 0.0
     try:
-        return x if (q, p) == (1, 0) else to_float(Fraction(repr(float(x))) * q, p)
+        return to_float(Fraction(repr(float(x))) * q, p)
     except UnitError:  # beyond a float: the caller's range check says so
         return math.copysign(math.inf, x)
 
 
 def unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
+    """:func:`_unit_for_kind`, remembered for units blocks of text (a batch of body files
+    parses the same block over and over: bench/batch.py's goal needs it)."""
+    if all(isinstance(v, str) for v in base_units.values()):
+        return _remembered(tuple(base_units.items()), kind)
+    return _unit_for_kind(base_units, kind)
+
+
+@lru_cache(maxsize=256)
+def _remembered(items: tuple[tuple[str, str], ...], kind: str) -> tuple[float, str]:
+    return _unit_for_kind(dict(items), kind)
+
+
+def _unit_for_kind(base_units: dict[str, str], kind: str) -> tuple[float, str]:
     """What a bare number of ``kind`` means in a body file with ``units:`` block ``base_units``
     (length, mass, time, angle, angular_speed; default m, kg, s, deg, rad/s): (the factor to
     SI, the unit's text, ``""`` for dimensionless).

@@ -17,9 +17,9 @@ kg m², rad), each element preceded by a comment that states its frame:
 
 from __future__ import annotations
 
+import html
 from textwrap import indent
 from typing import Any
-from xml.sax.saxutils import quoteattr
 
 from rbcli.render.safe import escape
 
@@ -117,7 +117,7 @@ def links(fmt: str, name: str, source: str, items: Any) -> str:
     out = [comment(fmt, name, source, items[0][1])]
     for link, inertial in items:
         element = {"urdf": urdf, "sdf": sdf, "mjcf": mjcf}[fmt](inertial)
-        out.append(f"<{tag} name={quoteattr(escape(link))}>\n{indent(element, '  ')}</{tag}>\n")
+        out.append(f'<{tag} name="{html.escape(escape(link), quote=True)}">\n{indent(element, "  ")}</{tag}>\n')
     return "".join(out)
 
 
