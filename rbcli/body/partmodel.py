@@ -10,7 +10,9 @@ holds them is made by :mod:`rbcli.body.model`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields, is_dataclass
 
 import numpy as np
 
@@ -51,6 +53,37 @@ def rebuilt(obj: object) -> tuple:
     names = [f.name for f in fields(obj)]
     state = {k: v for k, v in getattr(obj, "__dict__", {}).items() if k not in names}
     return type(obj), tuple(getattr(obj, n) for n in names), state or None
+
+
+def same(a: object, b: object) -> bool:
+    """Plain value equality: dataclass instances of one type with :func:`same` fields (those
+    with ``compare=True``), arrays of one shape and equal elements, mappings, tuples and lists
+    item by item; NaN equals NaN; else ``==``."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.shape == b.shape
+                and np.array_equal(a, b, equal_nan=a.dtype.kind in "fc" and b.dtype.kind in "fc"))
+    if is_dataclass(a) and not isinstance(a, type):
+        return type(a) is type(b) and all(same(getattr(a, f.name), getattr(b, f.name))
+                                           for f in fields(a) if f.compare)
+    if isinstance(a, Mapping):
+        return isinstance(b, Mapping) and a.keys() == b.keys() and all(same(v, b[k]) for k, v in a.items())
+    if isinstance(a, (tuple, list)):
+        return type(a) is type(b) and len(a) == len(b) and all(map(same, a, b))
+    if isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b):
+        return True
+    return bool(a == b)
+
+
+def same_fields(self: object, other: object) -> bool:
+    """``__eq__`` of a body, its values and every result: :func:`same` (the same type, equal
+    fields; what is remembered beside the fields, such as a body's mass properties, aside)."""
+    return same(self, other) if type(self) is type(other) else NotImplemented
+
+
+def unhashable(self: object) -> int:
+    """``__hash__`` of a body, its values and every result: they hold arrays, so they are not
+    hashable (as an ndarray is not); use them as values, not as keys."""
+    raise TypeError(f"unhashable type: {type(self).__name__!r} (compare it; do not hash it)")
 
 
 def read_only(m) -> ReadOnly:
@@ -104,6 +137,8 @@ class Outline:
             object.__setattr__(self, "faces", frozen(self.faces, np.int64))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable
 
 
 @dataclass(frozen=True, slots=True)
@@ -150,6 +185,8 @@ class Part:
             object.__setattr__(self, "extra", read_only(self.extra))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable
 
     @property
     def signed_mass(self) -> float:
@@ -168,3 +205,5 @@ class Shaft:
         freeze_arrays(self, ("axis", "through"))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable
