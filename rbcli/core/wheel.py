@@ -218,7 +218,8 @@ def wheel_from_body(
     sym = about_axis(m, G, J, G, n, size=L)  # the moments about the com
     sym = dataclasses.replace(sym, com_offset=offset, com_offset_relative=offset / L)
     _require(sym, sym_rtol, sym_rtol if off_axis_rtol is None else off_axis_rtol, n, P,
-             axle_through is None)
+             axle_through is None, "the rim radius" if radius is not None else
+             "the radius of gyration about the axle, sqrt(C/m),")
     return Wheel(mass=m, A=A, C=C, com=_vec(G), axle=_vec(n), com_offset=offset,
                  asymmetry=None if sym.exact else sym)
 
@@ -227,9 +228,10 @@ def _pct(x: float) -> str:
     return f"{100.0 * x:.2g} %"
 
 
-def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, origin: bool) -> None:
+def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, origin: bool,
+             scale: str) -> None:
     """Refuse a wheel beyond the tolerance: :class:`Asymmetric` with the numbers, in the
-    order products, moments, com (the first that fails)."""
+    order products, moments, com (the first that fails); ``scale`` names ``sym.size``."""
     opt = "{symmetry_tol}"  # the parameter, spelled by whoever shows the message (rbcli.errors.spell)
     tol_r, off_r = max(tol, ROUND_OFF), max(off_tol, ROUND_OFF)
     if sym.coupling_relative > tol_r:
@@ -254,6 +256,6 @@ def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, ori
         where = "the body origin" if origin else f"{_pt(P)} m"
         raise Asymmetric(
             f"the centre of mass is {_fmt_length(sym.com_offset)} off the axle (the axle line "
-            f"runs along {_pt(n)} through {where}; {_pct(sym.com_offset_relative)} of the rim "
-            f"radius {_fmt_length(sym.size)}); a rolling wheel needs its centre of mass on the "
-            f"axle, within {opt} ({_pct(off_tol)}) of the rim radius", sym, off_tol)
+            f"runs along {_pt(n)} through {where}; {_pct(sym.com_offset_relative)} of {scale} "
+            f"{_fmt_length(sym.size)}); a rolling wheel needs its centre of mass on the axle, "
+            f"within {opt} ({_pct(off_tol)}) of {scale.rstrip(',')}", sym, off_tol)
