@@ -61,18 +61,13 @@ class _Loaded:
     cost: int = 0  # what one use of this file spends of the parts budget
 
 
-#: the shapes whose ``units`` key is their file's length unit (a text, not the body's mapping)
-FILE_UNIT_SHAPES = ("mesh", "step")
-
-
 def _units(ctx: Ctx, m: ys.MapNode) -> None:
     if "units" not in m.items:
         return
     unode = m.items["units"][1]
     if isinstance(unode, ys.ScalarNode) and isinstance(unode.value, str):
-        raise ctx.error(unode, f"units: the body's units are a mapping of kinds, e.g. 'units: "
-                        f"{{length: {unode.raw}}}', not '{unode.raw}' (a text units is a mesh or STEP "
-                        "part's: its file's length unit)")
+        raise ctx.error(unode, f"units: the body's are a mapping, e.g. 'units: {{length: "
+                        f"{unode.raw}}}' (a text units is a mesh or STEP file's length unit)")
     unode = yv.mapping(ctx, unode, "units")
     yv.check_keys(ctx, unode, UNIT_KEYS, "units")
     base = {}
@@ -134,11 +129,10 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
         vnode = root.items["rbcli"][1]
         if not (isinstance(vnode, ys.ScalarNode) and vnode.value == FORMAT_VERSION and not isinstance(vnode.value, bool)):
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
-    # a one-part mesh or STEP body's text ``units: mm`` is the part's (its file's length unit)
-    # as inside ``parts:``; a mapping is the body's units
+    # a one-part mesh or STEP body's text units (``mm``) is the part's, as inside parts:
     shape, unode = (root.items.get(k, (None, None))[1] for k in ("shape", "units"))
     part_units = "parts" not in root.items and isinstance(unode, ys.ScalarNode) and \
-        isinstance(shape, ys.ScalarNode) and shape.value in FILE_UNIT_SHAPES
+        isinstance(shape, ys.ScalarNode) and shape.value in ("mesh", "step")
     if not part_units:
         _units(ctx, root)
     _materials(ctx, root)

@@ -56,7 +56,7 @@ class Body:
 
     The loader remembers the combined mass properties beside the body (not a field, so a
     ``dataclasses.replace`` does not carry them): :func:`rbcli.core.inertia.body_mass_props`.
-    A body is a value: ``==`` compares the fields (arrays by value); it is not hashable.
+    ``==`` compares the fields by value (:func:`rbcli.body.partmodel.same`); unhashable.
     """
 
     name: str
@@ -80,7 +80,7 @@ class Body:
         object.__setattr__(self, "units", read_only(self.units))
 
     __reduce__ = rebuilt
-    __eq__ = same_fields  # a value: equal fields (arrays by value); unhashable
+    __eq__ = same_fields
     __hash__ = unhashable
 
     def __repr__(self) -> str:

@@ -56,9 +56,8 @@ def rebuilt(obj: object) -> tuple:
 
 
 def same(a: object, b: object) -> bool:
-    """Plain value equality: dataclass instances of one type with :func:`same` fields (those
-    with ``compare=True``), arrays of one shape and equal elements, mappings, tuples and lists
-    item by item; NaN equals NaN; else ``==``."""
+    """Value equality: dataclasses of one type field by field (``compare=True``), arrays by
+    shape and elements, mappings and sequences item by item, NaN equal to NaN; else ``==``."""
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.shape == b.shape
                 and np.array_equal(a, b, equal_nan=a.dtype.kind in "fc" and b.dtype.kind in "fc"))
@@ -75,15 +74,13 @@ def same(a: object, b: object) -> bool:
 
 
 def same_fields(self: object, other: object) -> bool:
-    """``__eq__`` of a body, its values and every result: :func:`same` (the same type, equal
-    fields; what is remembered beside the fields, such as a body's mass properties, aside)."""
+    """``__eq__`` of a body, its parts and every result: :func:`same` (fields only)."""
     return same(self, other) if type(self) is type(other) else NotImplemented
 
 
 def unhashable(self: object) -> int:
-    """``__hash__`` of a body, its values and every result: they hold arrays, so they are not
-    hashable (as an ndarray is not); use them as values, not as keys."""
-    raise TypeError(f"unhashable type: {type(self).__name__!r} (compare it; do not hash it)")
+    """``__hash__`` of the same: they hold arrays, so they are not hashable."""
+    raise TypeError(f"unhashable type: {type(self).__name__!r}")
 
 
 def read_only(m) -> ReadOnly:

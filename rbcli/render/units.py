@@ -55,8 +55,7 @@ class DisplayUnits:
 
     @classmethod
     def parse(cls, spec: str | None) -> "DisplayUnits":
-        """``--units``: None (the body's), ``si``, or one unit per base dimension (``mm,g``);
-        an empty value or item, two units of one kind or ``si`` with others is a ParamError."""
+        """``--units``: None (the body's), ``si``, or one unit per base dimension (``mm,g``)."""
         if spec is None:
             return cls()
         names = [name.strip() for name in spec.split(",")]
@@ -65,9 +64,9 @@ class DisplayUnits:
         bases: dict[str, tuple[float, str]] = {}
         for name in names:
             if name.lower() in ("", "si"):
-                why = "si stands alone" if name else "an empty item" if spec.strip() else "an empty value"
-                where = f" in '{literal(spec)}'" if spec.strip() else ""
-                raise ParamError("units", f"{why}{where}: give e.g. {{units}} mm,g or {{units}} si")
+                why = "si stands alone" if name else f"an empty item in '{literal(spec)}'" \
+                    if spec.strip() else "an empty value"
+                raise ParamError("units", f"{why}: give e.g. {{units}} mm,g or {{units}} si")
             try:
                 factor, dim = un.parse_unit(name)
             except un.UnitError as exc:
@@ -78,7 +77,7 @@ class DisplayUnits:
                                  "(give e.g. {units} mm,g or {units} in,lb, or {units} si)")
             if base in bases:
                 raise ParamError("units", f"two {base} units, '{literal(bases[base][1])}' and "
-                                 f"'{literal(name)}': give one unit of each kind (e.g. {{units}} mm,g)")
+                                 f"'{literal(name)}': give one of each kind")
             bases[base] = (factor, name)
         return cls(**bases, chosen=True)
 
