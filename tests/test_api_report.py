@@ -133,6 +133,8 @@ def test_html_contents_link_only_included_sections():
     (["--omega", "1,2"], {"omega": "1,2"}),
     (["--rim-radius", "-1"], {"rim_radius": -1}),
     (["--units", "furlong,kg"], {"units": "furlong,kg"}),
+    (["--units", "mm,in"], {"units": "mm,in"}),  # two length units
+    (["--units", ""], {"units": ""}),
 ])
 def test_bad_options_raise_the_clis_message(cli, tmp_path, args, kw):
     r = cli("report", "examples/cube.yaml", *args, "-o", tmp_path / "r.html")

@@ -244,6 +244,33 @@ def test_scale_and_units_give_the_same_body(tmp_path):
     assert mp.mass == pytest.approx(ref.mass, rel=1e-13)
 
 
+def test_a_one_part_mesh_body_reads_a_text_units_as_its_files_and_a_mapping_as_the_bodys(tmp_path, cli):
+    import rbcli
+
+    # a tetrahedron with legs 10 (file units): volume 1000/6, com at 2.5 on each axis
+    write_obj(tmp_path / "tet.obj", np.array([[0, 0, 0], [10, 0, 0], [0, 10, 0], [0, 0, 10]]),
+              [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
+    one = "{shape: mesh, file: tet.obj, mass: 1, units: mm}"
+    r = cli("inertia", "-e", one, "--json", cwd=tmp_path)
+    assert r.code == 0, r.err
+    # mm -> m: one product per coordinate, a few ulp
+    assert r.json()["com"] == pytest.approx([2.5e-3] * 3, rel=1e-14)
+    inside = cli("inertia", "-e", "{parts: [" + one + "]}", "--json", cwd=tmp_path).json()
+    assert inside["inertia_com"] == r.json()["inertia_com"]  # the same part, the same numbers
+    body = rbcli.load_text(one, base_dir=tmp_path)
+    again = rbcli.load_text(body.to_yaml(base_dir=tmp_path), base_dir=tmp_path)  # as written
+    for other in (again, body.replace(0, mass=2)):
+        assert not body.units and other.parts[0].com.tolist() == body.parts[0].com.tolist()
+    # the body's units as a mapping: the file's coordinates and the bare numbers in mm
+    r = cli("inertia", "-e", "{shape: mesh, file: tet.obj, mass: 1, units: {length: mm}}", "--json",
+            cwd=tmp_path)
+    assert r.json()["com"] == pytest.approx([2.5e-3] * 3, rel=1e-14)
+    for text, words in (("{shape: mesh, file: tet.obj, mass: 1, units: kg}", "length unit"),
+                        ("{shape: disk, radius: 1, mass: 1, units: mm}", "'units: {length: mm}'")):
+        r = cli("inertia", "-e", text, cwd=tmp_path)
+        assert r.code == 2 and words in r.err and r.err.count("\n") == 1, r.err
+
+
 def test_bad_scale_and_units_are_located_errors(tmp_path, cli):
     V, F, _ = box_mesh(A, B, C)
     write_obj(tmp_path / "m.obj", V, F)

@@ -447,6 +447,13 @@ def test_com_off_the_axle(cli):
     rc, out, err = r.code, r.out, r.err
     assert rc == 2 and "2.5 mm off the axle" in err and "0.83 % of the rim radius 300 mm" in err
     assert "--symmetry-tol (0.5 %)" in err
+    # the penny (a = 9.525 mm) on an axle 1 mm off its centre: no round part is coaxial, so
+    # no rim radius is known; the offset is quoted against what is used, sqrt(C/m) = a/sqrt(2)
+    err = cli("rollcheck", str(EX / "penny.yaml"), "--through", "0.001,0,0").err
+    assert "15 % of the radius of gyration about the axle, sqrt(C/m), 6.74 mm" in err
+    assert "rim radius" not in err
+    err = cli("rollcheck", str(EX / "penny.yaml"), "--through", "0.001,0,0", "--radius", "9.525 mm").err
+    assert "10 % of the rim radius 9.53 mm" in err  # 1/9.525 = 10.5 %, printed to 2 digits
     # the axle placed through the com is accepted (--through com) if the body is of revolution
     r = cli("rollcheck", "-e", "{shape: ring, radius: 0.3, mass: 1, at: [0.01, 0, 0]}", "--through", "com")
     rc, out, err = r.code, r.out, r.err

@@ -100,3 +100,10 @@ def test_the_schema_refuses_what_the_loader_refuses(validator, text):
     with pytest.raises(InputError):
         load_text(text, "t.yaml", Path.cwd())
     assert list(validator.iter_errors(data(text)))
+
+
+def test_a_one_part_mesh_body_may_write_its_files_units_as_a_text(validator):
+    mesh = {"shape": "mesh", "file": "tet.obj", "mass": 1}
+    for units in ("mm", {"length": "mm"}):  # the file's length unit, or the body's units
+        assert not list(validator.iter_errors({**mesh, "units": units})), units
+    assert list(validator.iter_errors({"shape": "box", "size": [1, 2, 3], "mass": 1, "units": "mm"}))

@@ -162,6 +162,19 @@ def test_far_values_warn_with_the_option_named(cli):
     assert r.err == ""
 
 
+def test_a_lone_point_mass_has_no_size_to_judge_a_distance_by_and_points_apart_have_one(cli):
+    point = "{shape: point, mass: 1, at: [0.1, 0, 0]}"
+    r = cli("balance", "-e", point, "--planes", "0,1", "--radius", "0.1", "--bearings", "0,1")
+    assert r.code == 0 and "body's size" not in r.err and "1e-300" not in r.err
+    r = cli("inertia", "-e", point, "--about", "5,0,0")
+    assert r.code == 0 and r.err == ""
+    # two points 10 mm apart: the size is their extent, 10 mm; 0.5 m and 1 m are beyond 10x it
+    two = "{parts: [{shape: point, mass: 1, at: [0.01, 0, 0]}, {shape: point, mass: 1, at: [0, 0, 0]}]}"
+    lines = cli("balance", "-e", two, "--planes", "0,1", "--radius", "0.5", "--bearings", "0,1").err.splitlines()
+    for opt in ("--radius", "--planes", "--bearings"):
+        assert any(x.startswith(f"rbcli: warning: {opt}:") and "body's size (0.01 m)" in x for x in lines), opt
+
+
 def test_angular_speed_unit_of_the_body(cli):
     body = rbcli.load_text("units: {angular_speed: RPM}\nparts:\n  - {shape: box, mass: 1, size: [0.1, 0.2, 0.3]}\n")
     res = rbcli.inertia(body, omega="0,0,60")

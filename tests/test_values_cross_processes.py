@@ -38,6 +38,22 @@ CALLS = {
     "report": lambda: rbcli.report(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=30),
 }
 
+#: each call of CALLS with one option changed (a different value: an unequal result)
+CHANGED = {
+    "inertia": lambda: rbcli.inertia(rbcli.load(EXAMPLES / "cube.yaml"), omega="0,0,301 rpm"),
+    "principal": lambda: rbcli.principal(rbcli.load(EXAMPLES / "square_lamina.yaml"), about="origin"),
+    "balance": lambda: rbcli.balance(rbcli.load(EXAMPLES / "two_disk_rotor.yaml"), planes="0,400 mm",
+                                     radius="101 mm", speed="3000 rpm", bearings="-50,450 mm", grade="G6.3"),
+    "field_balance": lambda: rbcli.field_balance(initial="6.0@30", trial="10 g@0", run="4.0@111"),
+    "precess": lambda: rbcli.precess(rbcli.load(EXAMPLES / "book.yaml"), omega=[0.01, 1, 0.01], at=3),
+    "top": lambda: rbcli.top(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=31),
+    "gyrocompass": lambda: rbcli.gyrocompass(rbcli.load(EXAMPLES / "gyroscope.yaml"), spin="6000 rpm",
+                                             latitude=31),
+    "rollcheck": lambda: rbcli.rollcheck(rbcli.load(EXAMPLES / "penny.yaml"), rolling_speed="11 cm/s"),
+    "whirl": lambda: rbcli.whirl(rbcli.load_text(CYLINDER), bearings="-0.2,0.2", stiffness=2e6, points=11),
+    "report": lambda: rbcli.report(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=31),
+}
+
 #: bodies of every kind of part: primitives, a given tensor, a mesh, includes, units
 BODIES = ["cube.yaml", "two_disk_rotor.yaml", "cad_block.yaml", "housing.yaml", "rotor_mm.yaml",
           "spoked_wheel.yaml", "top.yaml"]
@@ -96,6 +112,43 @@ def test_every_result_pickles_to_an_equal_frozen_value(name):
     for f in dataclasses.fields(back):  # still deeply immutable
         with pytest.raises(dataclasses.FrozenInstanceError):
             setattr(back, f.name, None)
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in EXAMPLES.glob("*.yaml")))
+def test_a_body_equals_itself_pickled_and_loaded_again_and_not_a_changed_one(name):
+    body = rbcli.load(EXAMPLES / name)
+    assert body == roundtrip(body) and body == rbcli.load(EXAMPLES / name)
+    assert not body != rbcli.load(EXAMPLES / name)
+    part = body.parts[0]  # one array element changed by 1e-12 m: unequal (arrays by value)
+    nudged = dataclasses.replace(part, com=part.com + [1e-12, 0, 0])
+    assert body != dataclasses.replace(body, parts=(nudged, *body.parts[1:]))
+    with pytest.raises(TypeError, match="unhashable"):
+        hash(body)
+
+
+def test_a_body_changed_by_replace_is_unequal():
+    body = rbcli.load(EXAMPLES / "two_disk_rotor.yaml")
+    assert body.replace(0) == body.replace(0) and body.replace(0, mass=3) != body.replace(0)
+
+
+@pytest.mark.parametrize("name", list(CALLS))
+def test_a_result_equals_itself_pickled_and_made_again_and_not_one_of_another_option(name):
+    result = CALLS[name]()
+    assert result == roundtrip(result) and result == CALLS[name]()
+    assert result != CHANGED[name]() and not result == CHANGED[name]()
+    assert result != rbcli.load(EXAMPLES / "cube.yaml")  # another type
+    with pytest.raises(TypeError, match="unhashable"):
+        hash(result)
+
+
+def test_value_equality_takes_nan_as_nan_and_arrays_by_shape_and_value():
+    from rbcli.body.partmodel import same
+
+    nan = float("nan")
+    assert same((nan, np.array([1.0, nan])), (nan, np.array([1.0, nan])))
+    assert not same(np.zeros(3), np.zeros((1, 3))) and not same(np.zeros(3), (0.0, 0.0, 0.0))
+    assert same({"a": [np.arange(2)]}, {"a": [np.arange(2)]}) and not same({"a": 1}, {"b": 1})
+    assert same(np.array(["x"]), np.array(["x"]))  # a text array: no NaN test (it would raise)
 
 
 def test_a_read_only_mapping_in_a_result_stays_read_only_and_pickles():

@@ -22,7 +22,7 @@ from rbcli.api.shaft import shaft_axis, shaft_point
 from rbcli.body.model import with_points
 from rbcli.core import balance as B
 from rbcli.core.inertia import body_mass_props
-from rbcli.core.scale import FAR, SPEED_OF_SOUND, axis_reach, body_scale
+from rbcli.core.scale import SPEED_OF_SOUND, axis_reach, body_scale
 from rbcli.errors import ExitStatus, InputError, NonFiniteResult, Note, ParamError
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -415,7 +415,7 @@ def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
     n = n / np.linalg.norm(n)
     out = []
     radii = () if o.radius is None else (o.radius if isinstance(o.radius, tuple) else (o.radius,))
-    if "radius" in o.given and max(radii) > FAR * sc.size:
+    if "radius" in o.given and sc.beyond(max(radii)):
         out.append(u.far("radius", "the correction radius", max(radii), sc.size))
     for opt, zs, what in (("planes", o.planes, "correction plane"), ("bearings", o.bearings, "bearing")):
         for z in zs or ():

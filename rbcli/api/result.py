@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from rbcli.body.partmodel import same_fields, unhashable
 from rbcli.body.partspec import ReadOnly
 from rbcli.errors import ExitStatus, NonFiniteResult
 
@@ -22,7 +23,7 @@ class Result:
 
     A result is a value: after it is made, every field is :func:`frozen` (arrays read-only,
     mappings read-only, lists as tuples, nested dataclasses likewise), so nothing a caller
-    does to it changes what it says.
+    does to it changes what it says. ``==`` is :func:`rbcli.body.partmodel.same`; unhashable.
     """
 
     #: located one-line warnings the command prints on standard error (``rbcli: warning: ...``)
@@ -31,6 +32,7 @@ class Result:
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
         cls.__repr__ = Result.__repr__  # type: ignore[method-assign]  # set before @dataclass, which keeps it
+        cls.__eq__, cls.__hash__ = same_fields, unhashable  # type: ignore[method-assign,assignment]
 
     def __post_init__(self) -> None:
         freeze_fields(self)

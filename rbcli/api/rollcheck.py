@@ -19,7 +19,7 @@ from rbcli.api.shaft import shaft_axis, shaft_point
 from rbcli.core import rolling as rl
 from rbcli.core.inertia import body_mass_props
 from rbcli.core.rim import RIM_OFFSET_LIMIT, ROUND_SHAPES, Rim, rim_candidates, rim_of
-from rbcli.core.scale import FAR, SPEED_OF_SOUND, body_scale
+from rbcli.core.scale import SPEED_OF_SOUND, body_scale
 from rbcli.core.wheel import STANDARD_GRAVITY, Wheel, wheel_from_body
 from rbcli.errors import InputError, Location, Note, ParamError, literal
 
@@ -181,7 +181,7 @@ def _plausibility(body: Body, o: Options, a: float) -> tuple[str, ...]:
     u = op.Units.of(body)
     sc = body_scale(body.parts)
     out = []
-    if o.rim_radius is not None and o.rim_radius > FAR * sc.size:
+    if o.rim_radius is not None and sc.beyond(o.rim_radius):
         out.append(u.far("rim_radius", "the rim radius", o.rim_radius, sc.size))
     if o.through is not None and not isinstance(o.through, str) and sc.far(o.through):
         out.append(u.far("through", "the point", sc.far(o.through), sc.size))

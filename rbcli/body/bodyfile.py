@@ -64,7 +64,11 @@ class _Loaded:
 def _units(ctx: Ctx, m: ys.MapNode) -> None:
     if "units" not in m.items:
         return
-    unode = yv.mapping(ctx, m.items["units"][1], "units")
+    unode = m.items["units"][1]
+    if isinstance(unode, ys.ScalarNode) and isinstance(unode.value, str):
+        raise ctx.error(unode, f"units: the body's are a mapping, e.g. 'units: {{length: "
+                        f"{unode.raw}}}' (a text units is a mesh or STEP file's length unit)")
+    unode = yv.mapping(ctx, unode, "units")
     yv.check_keys(ctx, unode, UNIT_KEYS, "units")
     base = {}
     for key, (_km, vnode) in unode.items.items():
@@ -125,14 +129,19 @@ def _load(data: bytes | str | None, filename: str, base_dir: Path, stack: tuple[
         vnode = root.items["rbcli"][1]
         if not (isinstance(vnode, ys.ScalarNode) and vnode.value == FORMAT_VERSION and not isinstance(vnode.value, bool)):
             raise ctx.error(vnode, f"this rbcli reads body format version {FORMAT_VERSION}, not {vnode.raw if isinstance(vnode, ys.ScalarNode) else '?'}")
-    _units(ctx, root)
+    # a one-part mesh or STEP body's text units (``mm``) is the part's, as inside parts:
+    shape, unode = (root.items.get(k, (None, None))[1] for k in ("shape", "units"))
+    part_units = "parts" not in root.items and isinstance(unode, ys.ScalarNode) and \
+        isinstance(shape, ys.ScalarNode) and shape.value in ("mesh", "step")
+    if not part_units:
+        _units(ctx, root)
     _materials(ctx, root)
     if "parts" in root.items:
         yv.check_keys(ctx, root, BODY_KEYS, "the body")
         parts = pt.parts(ctx, root.items["parts"][1], stacked=stacked)
     elif "shape" in root.items:
         # one-part shorthand: the mapping is the part (plus the body's units/version)
-        items = {k: v for k, v in root.items.items() if k not in ("units", "rbcli")}
+        items = {k: v for k, v in root.items.items() if k != "rbcli" and (k != "units" or part_units)}
         stripped = ys.MapNode(root.mark, items)  # the public constructor: (mark, items)
         one = [pt.part(ctx, stripped, 0, set(), {}, "")]
         parts = to_stack(one)[0] if stacked else parts_of(finish(one))

@@ -60,9 +60,10 @@ def document(body) -> dict:
     data = ys.to_python(ys.load(body.text, body.source))
     if not isinstance(data, dict):  # the loader accepted it, so this cannot happen
         raise InputError("the body's document is not a mapping", Location(body.source))
-    if "parts" not in data:  # one-part shorthand: the mapping is the part
-        part = {k: v for k, v in data.items() if k not in ("rbcli", "units")}
-        head = {k: data[k] for k in ("rbcli", "units") if k in data}
+    if "parts" not in data:  # one-part shorthand: the mapping is the part (a text units too)
+        mine = ("rbcli", "units") if isinstance(data.get("units"), dict) else ("rbcli",)
+        part = {k: v for k, v in data.items() if k not in mine}
+        head = {k: data[k] for k in mine if k in data}
         data = {**({"rbcli": head["rbcli"]} if "rbcli" in head else {}), "name": body.name,
                 **({"units": head["units"]} if "units" in head else {}), "parts": [part]}
     if "name" not in data:

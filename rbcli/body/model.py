@@ -20,7 +20,8 @@ import numpy as np
 
 from rbcli.body import bodyfile, document, pydata
 from rbcli.body.bodyfile import Built
-from rbcli.body.partmodel import EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only, rebuilt
+from rbcli.body.partmodel import (EMPTY_MAPPING, Part, Shaft, freeze_arrays, read_only, rebuilt,
+                                  same_fields, unhashable)
 from rbcli.body.partspec import ReadOnly
 from rbcli.core.inertia import body_mass_props, remember_mass_props, remembered
 from rbcli.errors import ParamError, literal
@@ -55,6 +56,7 @@ class Body:
 
     The loader remembers the combined mass properties beside the body (not a field, so a
     ``dataclasses.replace`` does not carry them): :func:`rbcli.core.inertia.body_mass_props`.
+    ``==`` compares the fields by value (:func:`rbcli.body.partmodel.same`); unhashable.
     """
 
     name: str
@@ -78,6 +80,8 @@ class Body:
         object.__setattr__(self, "units", read_only(self.units))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable
 
     def __repr__(self) -> str:
         return f"<Body {self.name!r} from {self.source}: {len(self.parts)} parts>"

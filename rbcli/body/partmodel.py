@@ -10,7 +10,9 @@ holds them is made by :mod:`rbcli.body.model`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields, is_dataclass
 
 import numpy as np
 
@@ -51,6 +53,34 @@ def rebuilt(obj: object) -> tuple:
     names = [f.name for f in fields(obj)]
     state = {k: v for k, v in getattr(obj, "__dict__", {}).items() if k not in names}
     return type(obj), tuple(getattr(obj, n) for n in names), state or None
+
+
+def same(a: object, b: object) -> bool:
+    """Value equality: dataclasses of one type field by field (``compare=True``), arrays by
+    shape and elements, mappings and sequences item by item, NaN equal to NaN; else ``==``."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.shape == b.shape
+                and np.array_equal(a, b, equal_nan=a.dtype.kind in "fc" and b.dtype.kind in "fc"))
+    if is_dataclass(a) and not isinstance(a, type):
+        return type(a) is type(b) and all(same(getattr(a, f.name), getattr(b, f.name))
+                                           for f in fields(a) if f.compare)
+    if isinstance(a, Mapping):
+        return isinstance(b, Mapping) and a.keys() == b.keys() and all(same(v, b[k]) for k, v in a.items())
+    if isinstance(a, (tuple, list)):
+        return type(a) is type(b) and len(a) == len(b) and all(map(same, a, b))
+    if isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b):
+        return True
+    return bool(a == b)
+
+
+def same_fields(self: object, other: object) -> bool:
+    """``__eq__`` of a body, its parts and every result: :func:`same` (fields only)."""
+    return same(self, other) if type(self) is type(other) else NotImplemented
+
+
+def unhashable(self: object) -> int:
+    """``__hash__`` of the same: they hold arrays, so they are not hashable."""
+    raise TypeError(f"unhashable type: {type(self).__name__!r}")
 
 
 def read_only(m) -> ReadOnly:
@@ -104,6 +134,8 @@ class Outline:
             object.__setattr__(self, "faces", frozen(self.faces, np.int64))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable
 
 
 @dataclass(frozen=True, slots=True)
@@ -150,6 +182,8 @@ class Part:
             object.__setattr__(self, "extra", read_only(self.extra))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable
 
     @property
     def signed_mass(self) -> float:
@@ -168,3 +202,5 @@ class Shaft:
         freeze_arrays(self, ("axis", "through"))
 
     __reduce__ = rebuilt
+    __eq__ = same_fields
+    __hash__ = unhashable

@@ -115,7 +115,10 @@ def _variants(extra: dict) -> list[dict]:
         variants.append(variant)
     for shape in SPECIAL_SHAPES:  # their keys: the loader's, each as SPECIAL_KEYS says
         props = {k: {**COMMON, **SPECIAL_KEYS}[k] for k in part_keys(shape) if k != "shape"}
-        variants.append(_part_variant(shape, {**props, **extra, "shape": {"const": shape}},
+        both = {**props, **extra, "shape": {"const": shape}}
+        if "units" in props and "units" in extra:  # a one-part mesh/STEP body: a text is the file's
+            both["units"] = {"anyOf": [props["units"], extra["units"]]}
+        variants.append(_part_variant(shape, both,
                                       ["shape", *(("mass", "inertia") if shape == "given" else ("file",))]))
     return variants
 

@@ -40,15 +40,18 @@ class BodyScale:
 
     @property
     def size(self) -> float:
-        """m, the largest side of the box (never 0: a single point mass has size 0, so the
-        smallest size used is 1e-300 m, and nothing is then 'far' only by comparison)."""
-        return max(float(np.max(self.high - self.low)), 1e-300)
+        """m, the largest side of the box: 0 for a lone point mass (or points at one place)."""
+        return float(np.max(self.high - self.low))
+
+    def beyond(self, distance: float) -> bool:
+        """Whether ``distance`` (m) is more than :data:`FAR` sizes; never for a body of size
+        0 (a lone point mass has no size to judge a distance by)."""
+        return 0.0 < FAR * self.size < distance
 
     def far(self, point: Sequence[float]) -> float | None:
-        """The distance (m) of ``point`` from the box's centre when it is more than
-        :data:`FAR` sizes, else None."""
+        """The distance (m) of ``point`` from the box's centre when :meth:`beyond`, else None."""
         d = float(np.linalg.norm(np.asarray(point, dtype=float) - self.centre))
-        return d if d > FAR * self.size else None
+        return d if self.beyond(d) else None
 
 
 def body_scale(parts: Sequence[Any]) -> BodyScale:

@@ -98,12 +98,12 @@ class AxialSymmetry:
     def percent(self, size_name: str = "the body's size") -> str:
         """The departures in words: 'the moments across it differ by 0.012 %, ...';
         ``size_name`` names the length scale of the com offset (``"the rim radius"``)."""
-        parts = [f"the moments across it differ by {_pct(self.relative)}"]
+        parts = [f"the moments across it differ by {pct(self.relative)}"]
         if self.coupling_relative > ROUND_OFF:
-            parts.append(f"its products of inertia with the plane across are {_pct(self.coupling_relative)} "
+            parts.append(f"its products of inertia with the plane across are {pct(self.coupling_relative)} "
                          "of the moment across")
         if self.com_offset_relative > ROUND_OFF:
-            parts.append(f"the centre of mass is {_pct(self.com_offset_relative)} of {size_name} "
+            parts.append(f"the centre of mass is {pct(self.com_offset_relative)} of {size_name} "
                          "off it")
         return ", ".join(parts)
 
@@ -125,7 +125,8 @@ class Asymmetric(ValueError):
         self.tolerance = tolerance
 
 
-def _pct(x: float) -> str:
+def pct(x: float) -> str:
+    """``x`` as a percentage, 2 digits (messages)."""
     return f"{100.0 * x:.2g} %"
 
 
@@ -201,30 +202,30 @@ def require(sym: AxialSymmetry, tolerance: float, subject: str, needs: str) -> N
     """
     tol = max(tolerance, ROUND_OFF)
     opt = "{symmetry_tol}"  # the parameter, spelled by whoever shows the message (rbcli.errors.spell)
-    allowed = f"{needs} needs them within {opt} ({_pct(tolerance)})"
+    allowed = f"{needs} needs them within {opt} ({pct(tolerance)})"
     I1, I2 = sym.transverse
     # enough digits that the two moments print differently
     digits = 3 if not 0.0 < sym.relative < 0.01 else min(17, math.ceil(-math.log10(sym.relative)) + 2)
     if sym.relative > tol:
         raise Asymmetric(
             f"the body is not symmetric about {subject}: the moments across it are "
-            f"{_num(I1, digits)} and {_num(I2, digits)} kg m² (differ by {_pct(sym.relative)}); {allowed}",
+            f"{short_num(I1, digits)} and {short_num(I2, digits)} kg m² (differ by {pct(sym.relative)}); {allowed}",
             sym, tolerance)
     if sym.coupling_relative > tol:
         tilt = math.degrees(sym.principal_tilt)
         raise Asymmetric(
             f"{subject} is not a principal axis of the body: its products of inertia with the "
-            f"plane across it are {_num(sym.coupling)} kg m² ({_pct(sym.coupling_relative)} of the "
-            f"moment across, {_num(sym.mean)} kg m²; the nearest principal axis is {tilt:.3g}° "
+            f"plane across it are {short_num(sym.coupling)} kg m² ({pct(sym.coupling_relative)} of the "
+            f"moment across, {short_num(sym.mean)} kg m²; the nearest principal axis is {tilt:.3g}° "
             f"away); {allowed}", sym, tolerance)
     if sym.com_offset_relative > tol:
         raise Asymmetric(
-            f"the centre of mass is {_num(sym.com_offset)} m off {subject} "
-            f"({_pct(sym.com_offset_relative)} of the body's size, {_num(sym.size)} m); {allowed}",
+            f"the centre of mass is {short_num(sym.com_offset)} m off {subject} "
+            f"({pct(sym.com_offset_relative)} of the body's size, {short_num(sym.size)} m); {allowed}",
             sym, tolerance)
 
 
-def _num(x: float, digits: int = 3) -> str:
+def short_num(x: float, digits: int = 3) -> str:
     """A short number for messages: 1.2e-3, 0.04, 22 (``digits`` significant figures)."""
     x = float(x)
     if x == 0.0:

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbcli.core.checks import finite
-from rbcli.core.symmetry import AxialSymmetry, about_axis, require
+from rbcli.core.symmetry import AxialSymmetry, about_axis, require, short_num
 
 #: Pivot closer to the com than this fraction of the body's size: no top.
 PIVOT_AT_COM_RTOL = 1e-9
@@ -30,19 +30,6 @@ class PivotAtCom(ValueError):
 class NotATop(ValueError):
     """The body is not a symmetric top about the pivot–com axis (asymmetric, the axis not
     principal, or no moment about the axis); the message says how, with the numbers."""
-
-
-
-def _num(x: float) -> str:
-    """A short number for messages: 1.2e-3, 0.04, 22."""
-    x = float(x)
-    if x == 0.0:
-        return "0"
-    if 1e-2 <= abs(x) < 1e4:
-        return f"{x:.3g}"
-    mant, exp = f"{x:.2e}".split("e")
-    mant = mant.rstrip("0").rstrip(".")
-    return f"{mant}e{int(exp)}"
 
 
 @dataclass(frozen=True)
@@ -127,7 +114,7 @@ def top_from_body(
     size = max(r_gyr, float(np.linalg.norm(c)), float(np.linalg.norm(p)))
     if length == 0.0 or length <= PIVOT_AT_COM_RTOL * size:
         raise PivotAtCom(
-            f"the pivot is at the centre of mass (they are {_num(length)} m apart): gravity "
+            f"the pivot is at the centre of mass (they are {short_num(length)} m apart): gravity "
             "exerts no torque about it, so this is not a heavy top; for torque-free motion "
             "use `rbcli precess`"
         )
@@ -146,7 +133,7 @@ def top_from_body(
     require(sym, sym_rtol, "the pivot–com axis", "a top")
     if Is <= 1e-12 * mean:
         raise NotATop(
-            f"the body has no moment of inertia about the pivot–com axis (Is = {_num(Is)} "
+            f"the body has no moment of inertia about the pivot–com axis (Is = {short_num(Is)} "
             "kg m²: a point mass or a thin rod along the axis): it cannot carry spin, so it "
             "is a spherical pendulum, not a top"
         )

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from rbcli.core.rim import fmt_length as _fmt_length
-from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis, across
+from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis, across, pct
 from rbcli.errors import InputError, ParamError
 
 __all__ = ["STANDARD_GRAVITY", "Wheel", "wheel_from_body", "check_geometry", "param_finite",
@@ -218,35 +218,33 @@ def wheel_from_body(
     sym = about_axis(m, G, J, G, n, size=L)  # the moments about the com
     sym = dataclasses.replace(sym, com_offset=offset, com_offset_relative=offset / L)
     _require(sym, sym_rtol, sym_rtol if off_axis_rtol is None else off_axis_rtol, n, P,
-             axle_through is None)
+             axle_through is None, "the rim radius" if radius is not None else
+             "the radius of gyration about the axle, sqrt(C/m),")
     return Wheel(mass=m, A=A, C=C, com=_vec(G), axle=_vec(n), com_offset=offset,
                  asymmetry=None if sym.exact else sym)
 
 
-def _pct(x: float) -> str:
-    return f"{100.0 * x:.2g} %"
-
-
-def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, origin: bool) -> None:
+def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, origin: bool,
+             scale: str) -> None:
     """Refuse a wheel beyond the tolerance: :class:`Asymmetric` with the numbers, in the
-    order products, moments, com (the first that fails)."""
+    order products, moments, com (the first that fails); ``scale`` names ``sym.size``."""
     opt = "{symmetry_tol}"  # the parameter, spelled by whoever shows the message (rbcli.errors.spell)
     tol_r, off_r = max(tol, ROUND_OFF), max(off_tol, ROUND_OFF)
     if sym.coupling_relative > tol_r:
         raise Asymmetric(
             "not a body of revolution about the axle: the axle is not a principal axis "
-            f"(product of inertia {sym.coupling:.6g} kg m², {_pct(sym.coupling_relative)} of the "
+            f"(product of inertia {sym.coupling:.6g} kg m², {pct(sym.coupling_relative)} of the "
             f"moment across, {sym.mean:.6g} kg m²; the nearest principal axis is "
             f"{math.degrees(sym.principal_tilt):.3g}° away); a rolling wheel needs it within "
-            f"{opt} ({_pct(tol)})", sym, tol)
+            f"{opt} ({pct(tol)})", sym, tol)
     if sym.relative > tol_r:
         I1, I2 = sym.transverse
         # enough digits that the two moments print differently
         digits = 6 if not 0.0 < sym.relative < 1e-4 else min(17, math.ceil(-math.log10(sym.relative)) + 2)
         raise Asymmetric(
             "not a body of revolution about the axle: the moments across it are "
-            f"{I1:.{digits}g} and {I2:.{digits}g} kg m² (differ by {_pct(sym.relative)}); a "
-            f"rolling wheel needs them within {opt} ({_pct(tol)})", sym, tol)
+            f"{I1:.{digits}g} and {I2:.{digits}g} kg m² (differ by {pct(sym.relative)}); a "
+            f"rolling wheel needs them within {opt} ({pct(tol)})", sym, tol)
     if sym.com_offset_relative > off_r:
         def _pt(v: Any) -> str:
             return "[" + ", ".join(f"{float(x):.6g}" for x in v) + "]"
@@ -254,6 +252,6 @@ def _require(sym: AxialSymmetry, tol: float, off_tol: float, n: Any, P: Any, ori
         where = "the body origin" if origin else f"{_pt(P)} m"
         raise Asymmetric(
             f"the centre of mass is {_fmt_length(sym.com_offset)} off the axle (the axle line "
-            f"runs along {_pt(n)} through {where}; {_pct(sym.com_offset_relative)} of the rim "
-            f"radius {_fmt_length(sym.size)}); a rolling wheel needs its centre of mass on the "
-            f"axle, within {opt} ({_pct(off_tol)}) of the rim radius", sym, off_tol)
+            f"runs along {_pt(n)} through {where}; {pct(sym.com_offset_relative)} of {scale} "
+            f"{_fmt_length(sym.size)}); a rolling wheel needs its centre of mass on the axle, "
+            f"within {opt} ({pct(off_tol)}) of {scale.rstrip(',')}", sym, off_tol)

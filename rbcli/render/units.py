@@ -55,21 +55,31 @@ class DisplayUnits:
 
     @classmethod
     def parse(cls, spec: str | None) -> "DisplayUnits":
-        """``--units``: None (the body's), ``si``, or a unit per base dimension (``mm,g``)."""
-        bases = {}
-        for name in (spec or "").split(","):
-            if name.strip().lower() in ("", "si"):
-                continue
+        """``--units``: None (the body's), ``si``, or one unit per base dimension (``mm,g``)."""
+        if spec is None:
+            return cls()
+        names = [name.strip() for name in spec.split(",")]
+        if [name.lower() for name in names] == ["si"]:
+            return cls(chosen=True)
+        bases: dict[str, tuple[float, str]] = {}
+        for name in names:
+            if name.lower() in ("", "si"):
+                why = "si stands alone" if name else f"an empty item in '{literal(spec)}'" \
+                    if spec.strip() else "an empty value"
+                raise ParamError("units", f"{why}: give e.g. {{units}} mm,g or {{units}} si")
             try:
-                factor, dim = un.parse_unit(name.strip())
+                factor, dim = un.parse_unit(name)
             except un.UnitError as exc:
                 raise ParamError("units", literal(exc)) from None
             base = {un.Dim(L=1): "length", un.Dim(M=1): "mass", un.Dim(T=1): "time"}.get(dim)
             if base is None:
-                raise ParamError("units", f"'{literal(name.strip())}' is not a length, mass or time unit "
+                raise ParamError("units", f"'{literal(name)}' is not a length, mass or time unit "
                                  "(give e.g. {units} mm,g or {units} in,lb, or {units} si)")
-            bases[base] = (factor, name.strip())
-        return cls(**bases, chosen=spec is not None and bool(spec.strip()))
+            if base in bases:
+                raise ParamError("units", f"two {base} units, '{literal(bases[base][1])}' and "
+                                 f"'{literal(name)}': give one of each kind")
+            bases[base] = (factor, name)
+        return cls(**bases, chosen=True)
 
     def of(self, body: Any, scale: tuple[float, float] | None = None) -> "DisplayUnits":
         """These units for ``body`` (a Body, or a body's ``units`` mapping): its file's units
