@@ -352,8 +352,8 @@ def _run(body: Body, o: Options) -> BalanceResult:
         u = op.Units.of(body)
         warnings.append(Note(
             f"{{mass_step}} {u.show(o.mass_step, 'mass')} {u.label('mass')} is larger than the largest "
-            f"correction ({biggest * 1e3:.4g} g): the masses round to 0 or one step (a bare number "
-            f"is {u.label('mass')}: did you mean grams, e.g. '1 g'?)"))
+            f"correction ({biggest * 1e3:.4g} g): the masses round to 0 or one step (if a unit is "
+            f"missing: a bare number is {u.label('mass')}; did you mean grams, e.g. '1 g'?)"))
     through = f"{{through}} {where}" if isinstance(where, str) else \
         {"given": "{through}", "body": "the body's shaft", "default": "the origin, the default"}[point_from]
     return BalanceResult(
