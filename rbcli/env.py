@@ -25,6 +25,9 @@ ASCII_FALLBACK = {
     "μ": "u", "—": "--", "–": "-", "−": "-", "…": "...", "±": "+/-", "×": "x", "≈": "~",
     "≤": "<=", "≥": ">=", "→": "->", "θ": "theta", "ω": "omega", "φ": "phi", "ψ": "psi",
     "Ω": "Omega", "π": "pi", "Δ": "Delta", "‘": "'", "’": "'", "“": '"', "”": '"',
+    "§": "section ", "∫": "int ", "√": "sqrt", "∞": "inf", "≫": ">>", "≪": "<<", "∓": "-/+",
+    "∝": "~", "≠": "!=", "←": "<-", "⊗": "(x)", "½": "1/2", "ᵀ": "^T", "λ": "lambda",
+    **{c: f"^{d}" for c, d in zip("⁰⁴⁵⁶⁷⁸⁹⁺", "0456789+")},
 }
 _ERRORS = "rbcli-fallback"
 
@@ -36,7 +39,15 @@ def _fallback(exc: UnicodeError):
     out = []
     for c in bad:
         rep = ASCII_FALLBACK.get(c)
-        if rep is None:
+        if rep is None:  # a Greek letter by its name (ζ: zeta), an accented one without it (ä: a)
+            import unicodedata
+
+            name = unicodedata.name(c, "").split()
+            if name[:1] == ["GREEK"] and len(name) == 4:  # GREEK SMALL LETTER ZETA
+                rep = name[3].lower() if name[1] == "SMALL" else name[3].capitalize()
+            else:
+                rep = unicodedata.normalize("NFKD", c).encode("ascii", "ignore").decode()
+        if not rep:
             n = ord(c)
             rep = f"\\x{n:02x}" if n < 0x100 else f"\\u{n:04x}" if n < 0x10000 else f"\\U{n:08x}"
         out.append(rep)

@@ -144,3 +144,15 @@ def test_sigint_during_a_markdown_report_leaves_no_figures_folder(cli_proc, tmp_
     assert (r.code, r.err) in ((0, ""), (130, "rbcli: interrupted by SIGINT\n")), r
     assert names == (["b.yaml", "r.md", "r_files"] if r.code == 0 else ["b.yaml"]) or (
         r.code == 130 and names == ["b.yaml", "r.md", "r_files"]), (r.code, names)
+
+
+@pytest.mark.parametrize("args, shown", [
+    (("inertia", "examples/cube.yaml"), "-int xy dm"),  # the tensor's convention line
+    (("whirl", "-e", "{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}", "--bearings=-0.2,0.2",
+      "--stiffness", "1e6", "--damping", "200", "--speed", "100"), "zeta"),
+    (("top", "examples/top.yaml", "--spin", "150", "--theta", "30"), "beta"),
+])
+def test_an_ascii_terminal_reads_words_not_escapes(cli_proc, args, shown):
+    # a Greek letter by its name, a sign by its ASCII form: no \u escapes in the text
+    r = cli_proc(*args, env={"PYTHONIOENCODING": "ascii"})
+    assert r.code in (0, 1) and "\\u" not in r.out + r.err and shown in r.out + r.err, (r.out[-600:], r.err)
