@@ -370,3 +370,17 @@ def as_cli(data):
     from rbcli.errors import option_name, spelled_data
 
     return spelled_data(data, option_name)
+
+
+# hsbalance (an optional oracle) for the field-balancing tests
+@pytest.fixture
+def hs(monkeypatch):
+    """hsbalance, its cvxpy problems solved by CLARABEL (cvxpy's open-source default):
+    cvxpy picks Xpress first where it is installed, whose community build changes the
+    process's floating-point state (later golden outputs differ in their last digits)."""
+    hsb = pytest.importorskip("hsbalance")
+    import cvxpy
+
+    solve = cvxpy.Problem.solve
+    monkeypatch.setattr(cvxpy.Problem, "solve", lambda self, *a, **k: solve(self, *a, **{"solver": "CLARABEL", **k}))
+    return hsb

@@ -105,19 +105,6 @@ def test_a_mass_limit_is_not_the_unconstrained_correction_clipped():
     assert ("mass", 0) in s.active
 
 
-@pytest.fixture
-def hs(monkeypatch):
-    """hsbalance, its cvxpy problems solved by CLARABEL (cvxpy's open-source default):
-    cvxpy picks Xpress first where it is installed, whose community build changes the
-    process's floating-point state (later golden outputs differ in their last digits)."""
-    hsb = pytest.importorskip("hsbalance")
-    import cvxpy
-
-    solve = cvxpy.Problem.solve
-    monkeypatch.setattr(cvxpy.Problem, "solve", lambda self, *a, **k: solve(self, *a, **{"solver": "CLARABEL", **k}))
-    return hsb
-
-
 @pytest.mark.parametrize("seed", range(3))
 def test_min_max_under_mass_limits_agrees_with_hsbalance(hs, seed):
     A, v = case(seed + 20, 10, 3)

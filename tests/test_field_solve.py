@@ -269,19 +269,6 @@ def test_min_max_optimality_certificate():
 # ------------------------------------------------------------------------ hsbalance
 
 
-@pytest.fixture
-def hs(monkeypatch):
-    """hsbalance, its cvxpy problems solved by CLARABEL (cvxpy's open-source default):
-    cvxpy picks Xpress first where it is installed, whose community build changes the
-    process's floating-point state (later golden outputs differ in their last digits)."""
-    hsb = pytest.importorskip("hsbalance")
-    import cvxpy
-
-    solve = cvxpy.Problem.solve
-    monkeypatch.setattr(cvxpy.Problem, "solve", lambda self, *a, **k: solve(self, *a, **{"solver": "CLARABEL", **k}))
-    return hsb
-
-
 # cvxpy may pick a solver that announces its community licence
 quiet = pytest.mark.filterwarnings("ignore:Using the Community license")
 

@@ -22,37 +22,29 @@ from rbcli.errors import InputError, Location, NonFiniteResult, ParamError, Rbcl
 
 CYLINDER = "{shape: cylinder, radius: 0.1, length: 0.6, mass: 50}"
 
-#: every public function that returns a result, called as a user would
-CALLS = {
-    "inertia": lambda: rbcli.inertia(rbcli.load(EXAMPLES / "cube.yaml"), omega="0,0,300 rpm"),
-    "principal": lambda: rbcli.principal(rbcli.load(EXAMPLES / "square_lamina.yaml")),
-    "balance": lambda: rbcli.balance(rbcli.load(EXAMPLES / "two_disk_rotor.yaml"), planes="0,400 mm",
-                                     radius="100 mm", speed="3000 rpm", bearings="-50,450 mm", grade="G6.3"),
-    "field_balance": lambda: rbcli.field_balance(initial="6.0@30", trial="10 g@0", run="4.0@110"),
-    "precess": lambda: rbcli.precess(rbcli.load(EXAMPLES / "book.yaml"), omega=[0.01, 1, 0.01], at=2),
-    "top": lambda: rbcli.top(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=30),
-    "gyrocompass": lambda: rbcli.gyrocompass(rbcli.load(EXAMPLES / "gyroscope.yaml"), spin="6000 rpm",
-                                             latitude=30),
-    "rollcheck": lambda: rbcli.rollcheck(rbcli.load(EXAMPLES / "penny.yaml"), rolling_speed="10 cm/s"),
-    "whirl": lambda: rbcli.whirl(rbcli.load_text(CYLINDER), bearings="-0.2,0.2", stiffness=1e6, points=11),
-    "report": lambda: rbcli.report(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=30),
+#: every public function that returns a result, called as a user would: (function, body file
+#: or inline body or None, options, one option changed: a different value, an unequal result)
+CASES = {
+    "inertia": (rbcli.inertia, "cube.yaml", dict(omega="0,0,300 rpm"), dict(omega="0,0,301 rpm")),
+    "principal": (rbcli.principal, "square_lamina.yaml", {}, dict(about="origin")),
+    "balance": (rbcli.balance, "two_disk_rotor.yaml", dict(planes="0,400 mm", radius="100 mm", speed="3000 rpm",
+                                                        bearings="-50,450 mm", grade="G6.3"), dict(radius="101 mm")),
+    "field_balance": (rbcli.field_balance, None, dict(initial="6.0@30", trial="10 g@0", run="4.0@110"),
+                      dict(run="4.0@111")),
+    "precess": (rbcli.precess, "book.yaml", dict(omega=[0.01, 1, 0.01], at=2), dict(at=3)),
+    "top": (rbcli.top, "top.yaml", dict(spin=150, theta=30), dict(theta=31)),
+    "gyrocompass": (rbcli.gyrocompass, "gyroscope.yaml", dict(spin="6000 rpm", latitude=30), dict(latitude=31)),
+    "rollcheck": (rbcli.rollcheck, "penny.yaml", dict(rolling_speed="10 cm/s"), dict(rolling_speed="11 cm/s")),
+    "whirl": (rbcli.whirl, CYLINDER, dict(bearings="-0.2,0.2", stiffness=1e6, points=11), dict(stiffness=2e6)),
+    "report": (rbcli.report, "top.yaml", dict(spin=150, theta=30), dict(theta=31)),
 }
 
-#: each call of CALLS with one option changed (a different value: an unequal result)
-CHANGED = {
-    "inertia": lambda: rbcli.inertia(rbcli.load(EXAMPLES / "cube.yaml"), omega="0,0,301 rpm"),
-    "principal": lambda: rbcli.principal(rbcli.load(EXAMPLES / "square_lamina.yaml"), about="origin"),
-    "balance": lambda: rbcli.balance(rbcli.load(EXAMPLES / "two_disk_rotor.yaml"), planes="0,400 mm",
-                                     radius="101 mm", speed="3000 rpm", bearings="-50,450 mm", grade="G6.3"),
-    "field_balance": lambda: rbcli.field_balance(initial="6.0@30", trial="10 g@0", run="4.0@111"),
-    "precess": lambda: rbcli.precess(rbcli.load(EXAMPLES / "book.yaml"), omega=[0.01, 1, 0.01], at=3),
-    "top": lambda: rbcli.top(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=31),
-    "gyrocompass": lambda: rbcli.gyrocompass(rbcli.load(EXAMPLES / "gyroscope.yaml"), spin="6000 rpm",
-                                             latitude=31),
-    "rollcheck": lambda: rbcli.rollcheck(rbcli.load(EXAMPLES / "penny.yaml"), rolling_speed="11 cm/s"),
-    "whirl": lambda: rbcli.whirl(rbcli.load_text(CYLINDER), bearings="-0.2,0.2", stiffness=2e6, points=11),
-    "report": lambda: rbcli.report(rbcli.load(EXAMPLES / "top.yaml"), spin=150, theta=31),
-}
+
+def call(name: str, changed: bool = False):
+    fn, src, kwargs, change = CASES[name]
+    body = () if src is None else (rbcli.load_text(src) if src.startswith("{") else rbcli.load(EXAMPLES / src),)
+    return fn(*body, **{**kwargs, **(change if changed else {})})
+
 
 #: bodies of every kind of part: primitives, a given tensor, a mesh, includes, units
 BODIES = ["cube.yaml", "two_disk_rotor.yaml", "cad_block.yaml", "housing.yaml", "rotor_mm.yaml",
@@ -102,9 +94,9 @@ def test_a_body_pickles_to_an_equal_read_only_body(name):
     assert rbcli.inertia(back).to_json() == rbcli.inertia(body).to_json()
 
 
-@pytest.mark.parametrize("name", list(CALLS))
+@pytest.mark.parametrize("name", list(CASES))
 def test_every_result_pickles_to_an_equal_frozen_value(name):
-    result = CALLS[name]()
+    result = call(name)
     back = roundtrip(result)
     same(result, back)
     assert json.dumps(back.to_json()) == json.dumps(result.to_json())
@@ -131,11 +123,11 @@ def test_a_body_changed_by_replace_is_unequal():
     assert body.replace(0) == body.replace(0) and body.replace(0, mass=3) != body.replace(0)
 
 
-@pytest.mark.parametrize("name", list(CALLS))
+@pytest.mark.parametrize("name", list(CASES))
 def test_a_result_equals_itself_pickled_and_made_again_and_not_one_of_another_option(name):
-    result = CALLS[name]()
-    assert result == roundtrip(result) and result == CALLS[name]()
-    assert result != CHANGED[name]() and not result == CHANGED[name]()
+    result = call(name)
+    assert result == roundtrip(result) and result == call(name)
+    assert result != call(name, changed=True) and not result == call(name, changed=True)
     assert result != rbcli.load(EXAMPLES / "cube.yaml")  # another type
     with pytest.raises(TypeError, match="unhashable"):
         hash(result)
