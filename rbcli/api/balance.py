@@ -347,6 +347,15 @@ def _run(body: Body, o: Options) -> BalanceResult:
     except B.BalanceValueError as exc:
         raise _param_error(exc) from None
     warnings += [*unb.warnings, *(installed.warnings if installed else ()), *(iso.warnings if iso else ())]
+    span = None if o.bearings is None else abs(o.bearings[1] - o.bearings[0])
+    if span is not None and span < B.NARROW_PLANE_FRACTION * unb.axial_length:
+        u = op.Units.of(body)
+        warnings.append(Note(
+            f"{{bearings}} {u.show(span, 'length')} {u.label('length')} apart, less than "
+            f"{B.NARROW_PLANE_FRACTION:g} of the rotor's length along the shaft "
+            f"({u.show(unb.axial_length, 'length')} {u.label('length')}): the couple unbalance (and the "
+            "weight, with the centre of mass outside them) loads them as large opposite forces, "
+            "divided by the span; check the positions"))
     biggest = max(pc.mass for pc in ideal.pair) if ideal is not None else math.inf
     if o.mass_step is not None and o.mass_step > biggest:
         u = op.Units.of(body)
