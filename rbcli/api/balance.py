@@ -417,7 +417,7 @@ def _iso(unb: B.Unbalance, installed: Any, o: Options) -> B.IsoCheck:
 def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
     """One-line warnings for values far outside the body's scale (issue 13): a correction
     radius, a correction plane or a bearing more than 10 body sizes away; a correction
-    radius moving faster than sound."""
+    radius moving faster than sound at a speed typed without its unit."""
     u = op.Units.of(body)
     sc = body_scale(body.parts)
     n = np.asarray(axis, dtype=float)
@@ -433,7 +433,7 @@ def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
                 out.append(u.far(opt, f"the {what} at z = {u.show(z, 'length')} {u.label('length')}",
                                  d, sc.size))
                 break
-    if o.speed is not None:
+    if o.speed is not None and "speed" not in dict(o.typed):
         r = max([*radii, axis_reach(body.parts, n, P)])  # the farthest material from the shaft
         if SPEED_OF_SOUND < o.speed * r < math.inf:
             out.append(Note(f"{{speed}}: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "
