@@ -206,3 +206,17 @@ def test_field_errors(cli, kwargs, param):
             args += [f"--{k}", x]
     r = cli("field-balance", *args)
     assert r.code == 2 and r.err == f"rbcli: {exc.value.spelled(option_name)}\n"
+
+
+def test_bearings_close_together_warn():
+    """Bearings closer than 0.2 of the rotor's length are named with their span and that
+    length (the forces are right, only large); the README's bearing sets are not."""
+    b = rbcli.load(EXAMPLES / "fan_rotor.yaml")
+    near = rbcli.balance(b, bearings="0,0.001 mm", speed="1480 rpm")
+    (w,) = [str(x) for x in near.warnings if "apart" in str(x)]
+    assert w.startswith("bearings 0.001 mm apart, less than 0.2 of the rotor's length along the shaft (")
+    assert abs(near.bearing_forces[0].force) > 1e7  # ~1.1e8 N: the couple over 1 µm
+    for name, _, kwargs in DOCUMENTED:
+        if "bearings" in kwargs:
+            r = rbcli.balance(rbcli.load(EXAMPLES / name), **kwargs)
+            assert not [x for x in r.warnings if "apart" in str(x)], name

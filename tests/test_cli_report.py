@@ -230,6 +230,9 @@ def test_balance_section_has_the_numbers_of_rbcli_balance(cli, tmp_path):
         cells_have(page, num(f["force"]), num(f["angle_deg"]))
     # the numbers the example file's header states (physics notes Example A)
     cells_have(page, "8.5", "208.072", "12.2577", "258.232", "83.8916", "120.978")
+    # an option's name is one unbreakable cell (the browser broke --mass-step at its hyphen)
+    assert '<td class="o">--planes</td>' in out.read_text(encoding="utf-8")
+    assert "td.r, td.o { white-space: nowrap; }" in out.read_text(encoding="utf-8")
 
 
 def test_precess_section_has_the_numbers_of_rbcli_precess(cli, tmp_path):

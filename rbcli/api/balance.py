@@ -347,6 +347,15 @@ def _run(body: Body, o: Options) -> BalanceResult:
     except B.BalanceValueError as exc:
         raise _param_error(exc) from None
     warnings += [*unb.warnings, *(installed.warnings if installed else ()), *(iso.warnings if iso else ())]
+    span = None if o.bearings is None else abs(o.bearings[1] - o.bearings[0])
+    if span is not None and span < B.NARROW_PLANE_FRACTION * unb.axial_length:
+        u = op.Units.of(body)
+        warnings.append(Note(
+            f"{{bearings}} {u.show(span, 'length')} {u.label('length')} apart, less than "
+            f"{B.NARROW_PLANE_FRACTION:g} of the rotor's length along the shaft "
+            f"({u.show(unb.axial_length, 'length')} {u.label('length')}): the couple unbalance (and the "
+            "weight, with the centre of mass outside them) loads them as large opposite forces, "
+            "divided by the span; check the positions"))
     biggest = max(pc.mass for pc in ideal.pair) if ideal is not None else math.inf
     if o.mass_step is not None and o.mass_step > biggest:
         u = op.Units.of(body)
@@ -408,7 +417,7 @@ def _iso(unb: B.Unbalance, installed: Any, o: Options) -> B.IsoCheck:
 def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
     """One-line warnings for values far outside the body's scale (issue 13): a correction
     radius, a correction plane or a bearing more than 10 body sizes away; a correction
-    radius moving faster than sound."""
+    radius moving faster than sound at a speed typed without its unit."""
     u = op.Units.of(body)
     sc = body_scale(body.parts)
     n = np.asarray(axis, dtype=float)
@@ -424,7 +433,7 @@ def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
                 out.append(u.far(opt, f"the {what} at z = {u.show(z, 'length')} {u.label('length')}",
                                  d, sc.size))
                 break
-    if o.speed is not None:
+    if o.speed is not None and "speed" not in dict(o.typed):
         r = max([*radii, axis_reach(body.parts, n, P)])  # the farthest material from the shaft
         if SPEED_OF_SOUND < o.speed * r < math.inf:
             out.append(Note(f"{{speed}}: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "

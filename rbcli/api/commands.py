@@ -352,7 +352,7 @@ TOP = (
     Param("duration", "Time span of {csv} and {plot} (s, or with units). Default: 3 nutation "
           "periods.", "quantity", "time", valid=_time_span, echo="-"),
     Param("samples", f"Rows of {{csv}}, evenly spaced from t = 0 to {{duration}} inclusive (2 to "
-          f"{MAX_SAMPLES}).", "count", valid=_rows, echo="-", default=TOP_SAMPLES),
+          f"{MAX_SAMPLES}). Default {TOP_SAMPLES}.", "count", valid=_rows, echo="-"),
     _NO_SYMMETRY_ECHO,
 )
 

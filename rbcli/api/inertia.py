@@ -112,10 +112,11 @@ def with_parts(out: dict, parts: tuple[dict, ...]) -> dict:
     return jsonable({**out, "parts": list(parts)})
 
 
-def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any) -> Note | None:
+def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any, typed: bool = False) -> Note | None:
     """The warning of ``body`` turning at ``speed`` (rad/s, given as ``param``) about ``axis``
-    through ``through`` when its rim would be faster than sound (issue 24: a unit missing?)."""
-    w = abs(speed)
+    through ``through`` when its rim would be faster than sound (issue 24: a unit missing?);
+    none when the speed was ``typed`` with its unit (a turbine's blade tips, a planet)."""
+    w = 0.0 if typed else abs(speed)
     v = w * axis_reach(body.parts, axis, through) if 0.0 < w < math.inf else 0.0
     if not SPEED_OF_SOUND < v < math.inf:
         return None
@@ -124,7 +125,7 @@ def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any) -> N
                 f"{op.Units.of(body).label('angular_speed')}: is a unit missing?")
 
 
-def plausibility(body: Body | None, ref: Reference, omega: Any = None) -> tuple[str, ...]:
+def plausibility(body: Body | None, ref: Reference, omega: Any = None, typed: bool = False) -> tuple[str, ...]:
     """One-line warnings for values far outside the body's scale (issue 13): a reference
     point more than 10 body sizes away, a rotation about it whose rim is faster than sound."""
     far_point = ref.param == "about" and ref.point is not None
@@ -139,7 +140,7 @@ def plausibility(body: Body | None, ref: Reference, omega: Any = None) -> tuple[
     if omega is not None:
         # the body turning about omega through the reference point: its farthest material
         through = ci.body_mass_props(body).com if ref.point is None else ref.point
-        out.append(rim_note(body, "omega", math.sqrt(sum(x * x for x in omega)), omega, through))
+        out.append(rim_note(body, "omega", math.sqrt(sum(x * x for x in omega)), omega, through, typed))
     return tuple(x for x in out if x is not None)
 
 
@@ -237,7 +238,7 @@ def run(body: Body, options: Options) -> InertiaResult:
         axis=res.axis, axis_moment=res.axis_moment, omega=res.omega,
         angular_momentum=res.angular_momentum, kinetic_energy=res.kinetic_energy,
         angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body),
-        warnings=plausibility(body, ref, o.omega))
+        warnings=plausibility(body, ref, o.omega, "omega" in dict(o.typed)))
 
 
 @function(INERTIA)

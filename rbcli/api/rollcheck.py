@@ -185,11 +185,14 @@ def _plausibility(body: Body, o: Options, a: float) -> tuple[str, ...]:
         out.append(u.far("rim_radius", "the rim radius", o.rim_radius, sc.size))
     if o.through is not None and not isinstance(o.through, str) and sc.far(o.through):
         out.append(u.far("through", "the point", sc.far(o.through), sc.size))
-    v, s = abs(o.rolling_speed or 0.0), abs(o.spin or 0.0) * a
+    typed = dict(o.typed)  # a speed typed with its unit is meant (see api.inertia.rim_note)
+    v = 0.0 if "rolling_speed" in typed else abs(o.rolling_speed or 0.0)
+    s = 0.0 if "spin" in typed else abs(o.spin or 0.0) * a
     if SPEED_OF_SOUND < max(v, s) < math.inf:
+        kind = "speed" if v >= s else "angular_speed"
         out.append(Note(f"{{{'rolling_speed' if v >= s else 'spin'}}}: the rim moves at {max(v, s):.4g} "
                         f"m/s relative to the centre, faster than sound ({SPEED_OF_SOUND:g} m/s); "
-                        f"bare angular speeds are in {u.label('angular_speed')}: is a unit missing?"))
+                        f"bare {kind.replace('_', ' ')}s are in {u.label(kind)}: is a unit missing?"))
     return tuple(out)
 
 

@@ -68,7 +68,7 @@ def parse(body: Body | None, **kwargs: Any) -> Options:
 
 
 def plausibility(body: Body, point: Any, spin: float, option: str, axis: Any = None,
-                 through: Any = None) -> tuple[str, ...]:
+                 through: Any = None, typed: bool = False) -> tuple[str, ...]:
     """Located one-line warnings for values far outside the body's scale (issue 13): a pivot
     more than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
     ``through``, default the com; a top's axis runs from ``through``, its pivot, to the com)."""
@@ -80,7 +80,7 @@ def plausibility(body: Body, point: Any, spin: float, option: str, axis: Any = N
     if axis is None:
         axis = com - np.asarray(through, dtype=float)
     if float(np.linalg.norm(axis)) > 0.0:  # (the pivot at the com: refused later)
-        out.append(rim_note(body, "spin", spin, axis, com if through is None else through))
+        out.append(rim_note(body, "spin", spin, axis, com if through is None else through, typed))
     return tuple(Note(f"{literal(body.source)}: warning: {n.template}") for n in out if n)
 
 
@@ -224,7 +224,7 @@ def run(body: Body, options: Options) -> TopResult:
     for."""
     o = options
     P, source = _pivot(body, o.pivot)
-    warnings = plausibility(body, o.pivot, o.spin, "pivot", through=P)
+    warnings = plausibility(body, o.pivot, o.spin, "pivot", through=P, typed="spin" in dict(o.typed))
     mp = body_mass_props(body)
     try:
         with np.errstate(over="ignore", invalid="ignore"):

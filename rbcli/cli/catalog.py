@@ -237,8 +237,8 @@ MANUAL[""] = {
         "a body (field-balance, gyrocompass --ratio) state their defaults in --help. Tables start "
         "with the options as understood, each in the unit typed (--mass-step '0.5 g' shows "
         "0.5 g) or, for a bare number, the unit it was read in (angular speeds also in rpm or "
-        "rad/s; JSON stays SI); an error quotes the value with its unit (got -180 mm); a value more than 10 body sizes away or a rim faster than sound gets a "
-        "one-line warning naming the option.",
+        "rad/s; JSON stays SI); an error quotes the value with its unit (got -180 mm); a value more than 10 body sizes away or a rim faster than sound (at a speed typed "
+        "without its unit) gets a one-line warning naming the option.",
         "Errors are one line on standard error, 'rbcli: file:line:column: message', with no "
         "traceback.",
         "Output formats: every command that prints tables takes --format table (the default), "

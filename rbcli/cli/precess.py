@@ -136,7 +136,7 @@ MANUAL["precess"] = {
     "examples": [
         ("rbcli precess examples/frisbee.yaml --omega 0.871557,0,9.96195",
          "A thin disk spinning at 10 rad/s, 5 degrees off its axis: the wobble is about twice the spin (wobble/spin 2.00191), W = 9.96195 rad/s, space cone 2.49523 degrees."),
-        ("rbcli precess examples/earth.yaml --omega 0,0,7.292115855e-5",
+        ("rbcli precess examples/earth.yaml --omega '0,0,7.292115855e-5 rad/s'",
          "The rigid Earth: a small wobble has the period 2.63499e7 s = 304.975 days (not the observed 433-day Chandler wobble)."),
         ("rbcli precess examples/book.yaml --omega 0.01,1,0.01",
          "Spin about the intermediate axis: the book flips every 19.5529 s, first at 10.9169 s."),

@@ -60,6 +60,8 @@ def top(
     e, out, du = c.start(json_, fmt, units)
     csv, plot = args.pop("csv"), args.pop("plot")
     read(None, TOP, {k: args[k] for k in ("duration", "samples")})  # bad values: before the body
+    if args["samples"] is not None and csv is None:
+        raise InputError("--samples: sets the rows of the --csv time series; add --csv FILE")
     if csv == "-" and out != "table":
         raise InputError(f"--csv -: the CSV would go to standard output together with --{'json' if json_ else 'format ' + out}; write it to a file")
 

@@ -213,6 +213,7 @@ _UNITS: tuple[_Unit, ...] = (
     _Unit(("kg",), Fraction(1), 0, Dim(M=1), "kilogram"),
     _Unit(("g",), Fraction(1, 1000), 0, Dim(M=1), "gram"),
     _Unit(("mg",), Fraction(1, 10**6), 0, Dim(M=1), "milligram"),
+    _Unit(("ug", "µg", "μg"), Fraction(1, 10**9), 0, Dim(M=1), "microgram"),
     _Unit(("t", "tonne"), Fraction(1000), 0, Dim(M=1), "tonne (metric ton)"),
     _Unit(("lb", "lbm", "lbs", "pound", "pounds"), _LB, 0, Dim(M=1),
           "avoirdupois pound, exactly 0.45359237 kg"),

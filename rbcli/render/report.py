@@ -184,7 +184,7 @@ caption { text-align: left; font-weight: 600; padding: 0 0 .25rem; width: max-co
 th, td { padding: .18rem .65rem .18rem 0; border-bottom: 1px solid #ddd; text-align: left; vertical-align: top; }
 th { border-bottom: 1.5px solid #333; font-weight: 600; }
 .r { text-align: right; font-variant-numeric: tabular-nums; }
-td.r { white-space: nowrap; }
+td.r, td.o { white-space: nowrap; }
 table.meta td { border: none; padding: .05rem 1rem .05rem 0; }
 table.meta td:first-child { color: #444; white-space: nowrap; }
 code, .mono { font-family: ui-monospace, "DejaVu Sans Mono", Menlo, Consolas, monospace; font-size: .88em; }
@@ -245,13 +245,13 @@ def _html_table(t: Table) -> list[str]:
     if t.title:
         out.append(f"<caption>{_e(t.title)}</caption>")
 
-    def cls(i: int) -> str:
-        return ' class="r"' if i in t.right else ""
+    def cls(i: int, x: str = "") -> str:  # an option's name (--speed-range) is not broken at its hyphens
+        return ' class="r"' if i in t.right else ' class="o"' if i == 0 and x.startswith("--") else ""
 
     out.append("<thead><tr>" + "".join(f"<th{cls(i)}>{_e(c)}</th>" for i, c in enumerate(t.columns)) + "</tr></thead>")
     out.append("<tbody>")
     for row in t.rows:
-        out.append("<tr>" + "".join(f"<td{cls(i)}>{_e(x)}</td>" for i, x in enumerate(row)) + "</tr>")
+        out.append("<tr>" + "".join(f"<td{cls(i, x)}>{_e(x)}</td>" for i, x in enumerate(row)) + "</tr>")
     out.append("</tbody></table></div>")
     return out
 

@@ -138,7 +138,7 @@ def cases() -> dict[str, list[list[str]]]:
     add("field-balance", "error-drawer-no-holes", *goodman, "--drawer", "1 g:4")
     add("precess", "book", "examples/book.yaml", "--omega", "0.01,1,0.01")
     add("precess", "book-at-json", "examples/book.yaml", "--omega", "0.01,1,0.01", "--at", "1e9", "--json")
-    add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5")
+    add("precess", "earth", "examples/earth.yaml", "--omega", "7.292115858e-11,0,7.292115858e-5 rad/s")
     add("precess", "frisbee", "examples/frisbee.yaml", "--omega", "0.8715574275,0,9.961946981")
     add("precess", "frisbee-json", "examples/frisbee.yaml", "--omega", "0.8715574275,0,9.961946981", "--json")
     add("precess", "football-csv", "examples/football.yaml", "--omega", "1.73648,0,9.84808",
@@ -150,6 +150,10 @@ def cases() -> dict[str, list[list[str]]]:
     add("top", "csv", "examples/top.yaml", "--spin", "150", "--theta", "30", "--csv", "-", "--samples", "5")
     add("top", "verify-json", "examples/top.yaml", "--spin", "150", "--theta", "30", "--verify", "--json")
     add("top", "sleeping", "examples/top.yaml", "--spin", "1000", "--theta", "0.5")
+    add("top", "error-samples-without-csv", "examples/top.yaml", "--spin", "150", "--theta", "30",
+        "--samples", "50")
+    add("precess", "error-samples-without-csv", "examples/book.yaml", "--omega", "0.01,1,0.01",
+        "--samples", "50")
     add("gyrocompass", "ratio", "--ratio", "2", "--spin", "6000 rpm", "--latitude", "30")
     add("gyrocompass", "ratio-json", "--ratio", "2", "--spin", "20000 rpm", "--latitude", "45", "--json")
     add("gyrocompass", "expr", "-e", "{shape: disk, radius: 0.1, mass: 1}", "--spin", "6000 rpm",
