@@ -7,7 +7,6 @@ body's or ``--units``' in, oz...); forces in N, speeds in rpm and rad/s. JSON is
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
 import numpy as np

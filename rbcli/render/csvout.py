@@ -26,10 +26,7 @@ def times(duration: float, samples: int, chunk: int = CHUNK) -> Iterator[np.ndar
 
 
 def rows_text(block: np.ndarray) -> str:
-    """The CSV lines of a (rows, columns) block, each ending in a newline.
-
-    Every number is ``repr`` of the float (shortest round trip), with no negative zeros.
-    """
+    """The CSV lines of a (rows, columns) block, each ending in a newline (see the module)."""
     a = np.asarray(block, dtype=float) + 0.0  # + 0.0: no negative zeros
     if a.ndim != 2:
         raise ValueError(f"a CSV block is 2-D (rows, columns), not {a.shape}")

@@ -14,7 +14,7 @@ from rbcli.render import balance, balanceplot, massprops, precess, rollcheck, to
 from rbcli.render.field.plot import plot as field_plot
 from rbcli.render.field.tables import field_document, reading_display
 from rbcli.render.plots import figure_bytes
-from rbcli.render.text import Doc, Heading, Note, Table
+from rbcli.render.text import Doc, Heading, Table
 from rbcli.render.units import DisplayUnits, ShopUnits
 
 __all__ = ["html"]

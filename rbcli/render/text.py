@@ -64,17 +64,9 @@ class Doc:
     def note(self, text: str) -> None:
         self.items.append(Note(text))
 
-    def table(
-        self,
-        title: str,
-        columns: Sequence[str],
-        rows: Sequence[Sequence[str]],
-        *,
-        right: Sequence[int] = (),
-    ) -> None:
-        self.items.append(
-            Table(title, tuple(columns), tuple(tuple(str(x) for x in r) for r in rows), tuple(right))
-        )
+    def table(self, title: str, columns: Sequence[str], rows: Sequence[Sequence[str]], *,
+              right: Sequence[int] = ()) -> None:
+        self.items.append(Table(title, tuple(columns), tuple(tuple(map(str, r)) for r in rows), tuple(right)))
 
     def kv(self, title: str, rows: Sequence[tuple[str, str, str]]) -> None:
         """A quantity / value / unit table."""
@@ -86,8 +78,7 @@ class Doc:
         one, a table is as wide as its rows; notes wrap at spaces (``COLUMNS``, else 100)."""
         env = self.env
         tty, color = bool(env and env.stdout_isatty), bool(env and env.color)
-        width = (env.width if env and env.width else None) or \
-            max(40, shutil.get_terminal_size((100, 24)).columns)  # not a terminal: COLUMNS, else 100
+        width = (env and env.width) or max(40, shutil.get_terminal_size((100, 24)).columns)  # else COLUMNS, 100
         out, rich_print = [], None
         for item in map(_clean, self.items):
             text = None if tty or color else _plain(item, width)

@@ -40,10 +40,9 @@ class DisplayUnits:
     """Units that tables show; JSON is always SI.
 
     Each base dimension (length, mass, time) has one unit, as (factor from SI, name): the
-    body file's ``units`` unless ``--units`` chose (``mm,g``; ``si``); any kind's unit is
-    composed from them (inertia in ``g·mm²`` for ``mm,g``). ``scale`` (kg, m) is the body's
-    mass and reach from the origin: a value of a kind made of mass and length that is at
-    most :data:`ROUNDOFF` of that kind's scale shows as 0 (angles: of a turn)."""
+    body file's ``units`` unless ``--units`` chose (``mm,g``; ``si``). ``scale`` (kg, m) is
+    the body's mass and reach from the origin: a value of a kind made of mass and length that
+    is at most :data:`ROUNDOFF` of that kind's scale shows as 0 (angles: of a turn)."""
 
     __slots__ = ("length", "mass", "time", "si", "chosen", "scale")
 

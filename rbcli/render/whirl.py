@@ -14,7 +14,7 @@ from rbcli.core.whirl.response import phase_deg
 from rbcli.render import echo
 from rbcli.render.fmt import num, said
 from rbcli.render.plots import figure, figure_bytes, style
-from rbcli.render.text import Doc, Note
+from rbcli.render.text import Doc
 from rbcli.render.units import RPM, DisplayUnits
 
 if TYPE_CHECKING:  # pragma: no cover
