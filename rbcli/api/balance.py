@@ -433,7 +433,7 @@ def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
                 out.append(u.far(opt, f"the {what} at z = {u.show(z, 'length')} {u.label('length')}",
                                  d, sc.size))
                 break
-    if o.speed is not None and "speed" not in dict(o.typed):
+    if o.speed is not None and not o.unit_typed("speed"):
         r = max([*radii, axis_reach(body.parts, n, P)])  # the farthest material from the shaft
         if SPEED_OF_SOUND < o.speed * r < math.inf:
             out.append(Note(f"{{speed}}: at {u.show(o.speed, 'angular_speed')} {u.label('angular_speed')} "

@@ -122,7 +122,7 @@ def run(body: Body | None, options: Options) -> GyrocompassResult:
     n, came = shaft_axis(body, o.shaft)
     axis = tuple(float(x) for x in np.asarray(n) / np.linalg.norm(n))
     source = Note(_SOURCES[came])
-    warnings = plausibility(body, None, o.spin, "spin", axis=axis, typed="spin" in dict(o.typed))
+    warnings = plausibility(body, None, o.spin, "spin", axis=axis, typed=o.unit_typed("spin"))
     mp = body_mass_props(body)
     try:
         rotor = core.rotor_from_body(mp.mass, mp.com, mp.inertia_com, axis, sym_rtol=o.symmetry_tol)

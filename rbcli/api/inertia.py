@@ -238,7 +238,7 @@ def run(body: Body, options: Options) -> InertiaResult:
         axis=res.axis, axis_moment=res.axis_moment, omega=res.omega,
         angular_momentum=res.angular_momentum, kinetic_energy=res.kinetic_energy,
         angle_L_omega_deg=res.angle_L_omega_deg, parts=part_rows(body),
-        warnings=plausibility(body, ref, o.omega, "omega" in dict(o.typed)))
+        warnings=plausibility(body, ref, o.omega, o.unit_typed("omega")))
 
 
 @function(INERTIA)

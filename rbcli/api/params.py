@@ -180,6 +180,10 @@ class Options:
         return Options(self.params, tuple((k, values.get(k, v)) for k, v in self.values),
                        self.given, self.typed, self.raw)
 
+    def unit_typed(self, name: str) -> bool:
+        """The value of ``name`` was typed with its unit (``"3000 rpm"``, not ``3000``)."""
+        return name in dict(self.typed)
+
     def as_given(self, name: str) -> Any:
         """The value of ``name`` as the caller gave it (None: not given)."""
         return dict(self.raw).get(name)

@@ -137,7 +137,7 @@ def run(body: Body, options: Options) -> PrecessResult:
     at = o.at is not None
     # free rotation: about omega through the com
     rim = rim_note(body, "omega", math.sqrt(sum(x * x for x in o.omega)), o.omega, mp.com,
-                    "omega" in dict(o.typed))
+                    o.unit_typed("omega"))
     return PrecessResult(
         name=body.name, motion=motion, options=o, state=fs.evaluate(motion, o.at) if at else None,
         at_json=fs.state_json(motion, o.at) if at else None,

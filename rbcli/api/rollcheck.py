@@ -185,9 +185,9 @@ def _plausibility(body: Body, o: Options, a: float) -> tuple[str, ...]:
         out.append(u.far("rim_radius", "the rim radius", o.rim_radius, sc.size))
     if o.through is not None and not isinstance(o.through, str) and sc.far(o.through):
         out.append(u.far("through", "the point", sc.far(o.through), sc.size))
-    typed = dict(o.typed)  # a speed typed with its unit is meant (see api.inertia.rim_note)
-    v = 0.0 if "rolling_speed" in typed else abs(o.rolling_speed or 0.0)
-    s = 0.0 if "spin" in typed else abs(o.spin or 0.0) * a
+    # a speed typed with its unit is meant (see api.inertia.rim_note)
+    v = 0.0 if o.unit_typed("rolling_speed") else abs(o.rolling_speed or 0.0)
+    s = 0.0 if o.unit_typed("spin") else abs(o.spin or 0.0) * a
     if SPEED_OF_SOUND < max(v, s) < math.inf:
         kind = "speed" if v >= s else "angular_speed"
         out.append(Note(f"{{{'rolling_speed' if v >= s else 'spin'}}}: the rim moves at {max(v, s):.4g} "

@@ -224,7 +224,7 @@ def run(body: Body, options: Options) -> TopResult:
     for."""
     o = options
     P, source = _pivot(body, o.pivot)
-    warnings = plausibility(body, o.pivot, o.spin, "pivot", through=P, typed="spin" in dict(o.typed))
+    warnings = plausibility(body, o.pivot, o.spin, "pivot", through=P, typed=o.unit_typed("spin"))
     mp = body_mass_props(body)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
