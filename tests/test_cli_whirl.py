@@ -74,6 +74,17 @@ def test_figures_are_written_and_deterministic(cli, tmp_path):
     assert files[1] == files[2]
 
 
+def test_response_figure_of_peaks_without_an_amplification_factor(cli, tmp_path):
+    # bearings of 1e160 N/m: every peak's AF is undefined (JSON null); the figure drew
+    # "AF {None:.3g}" and exited 70 (found by the slow hostile report sweep)
+    args = ["examples/two_disk_rotor.yaml", "--bearings=-50,450 mm", "--stiffness", "1e160", "--damping", "500"]
+    peaks = cli("whirl", *args, "--json").json()["response"]["peaks"]
+    assert peaks and all(p["amplification_factor"] is None for p in peaks)
+    r = cli("whirl", *args, "--plot-response", str(tmp_path / "r.svg"))
+    assert r.code == 0, r.err
+    assert "AF " not in (tmp_path / "r.svg").read_text(encoding="utf-8")
+
+
 def test_undamped_response_spikes_are_left_out_with_a_warning(cli):
     # 0..250 rad/s in 201 points puts 200 rad/s (the cylindrical critical speed) on the grid
     r = cli("whirl", *CYL, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--unbalance", "1 g*mm@0",

@@ -479,9 +479,11 @@ def response_figure(res: WhirlResult):
         if p.half_power is not None:
             lvl = p.amplitude * UM / math.sqrt(2.0)
             ax.plot([p.half_power[0] * RPM, p.half_power[1] * RPM], [lvl, lvl], color="0.4", linewidth=0.8)
+        if p.amplification_factor is None:  # no AF defined (e.g. a peak without half-power points)
+            continue
         text = f"AF {p.amplification_factor:.3g}" + (" (1/2ζ)" if p.basis == "damping ratio" else "")
         near = [t for s, t in said if abs(s - p.speed) < 0.05 * (sp[-1] - sp[0]) / RPM]
-        if p.amplification_factor is not None and text not in near:
+        if text not in near:
             ax.annotate(text, (p.speed * RPM, p.amplitude * UM), textcoords="offset points",
                         xytext=(5, 3 - 12 * len(near)), fontsize=7)
             said.append((p.speed, text))
