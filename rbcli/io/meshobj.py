@@ -1,9 +1,8 @@
 """The Wavefront OBJ reader: ``v`` and ``f`` lines into an indexed, welded mesh.
 
 A plain file is read in blocks of whole lines with numpy (:func:`_read_obj_fast`); the
-line-by-line reader (:func:`_read_obj_lines`) says where a file the fast path refuses is
-wrong, and reads the unusual layouts it leaves to it. The numbers are the same bits
-either way, which the tests check. Numbers follow the format's grammar (C's decimal
+line-by-line reader (:func:`_read_obj_lines`) reads what it refuses and says which line is
+wrong (the same bits either way, tested). Numbers follow the format's grammar (C's decimal
 numbers; indices ``[+-]digits``), not Python's (no ``1_000``). A file without a face line
 is refused before any number is read (a cloud of 10^7 vertices costs a scan of its bytes,
 not its numbers), and so is a face of more than :data:`MAX_FACE_CORNERS` corners.
@@ -46,11 +45,8 @@ def read_obj(name: str, text: bytes) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _has_face_line(text: bytes) -> bool:
-    """Whether a line of ``text`` starts with the word ``f`` (what the line reader reads as
-    a face; a false yes only leaves the refusal to it). The common answers are found by
-    ``bytes`` searches (C's memchr/memmem): a face line at the start of a line, or no ``f``
-    at all; only a file with an ``f`` elsewhere and no plain face line is scanned by
-    :data:`_FACE_LINE`."""
+    """Whether a line of ``text`` starts with the word ``f`` (a false yes leaves the refusal
+    to the line reader); plain ``bytes`` searches first, :data:`_FACE_LINE` only if needed."""
     if b"\nf " in text or text.startswith(b"f "):
         return True
     return b"f" in text and _FACE_LINE.search(text) is not None
@@ -60,11 +56,7 @@ def _read_obj_fast(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     """Vertices and triangles of a plain OBJ file without a per-line Python parser.
 
     Accepts what :func:`_read_obj_lines` accepts when every ``v`` line holds exactly
-    three numbers and every ``f`` item's index is a plain integer; returns None for
-    anything else (and for any error), so that the line parser reads it or says where
-    it is wrong. The file is read in blocks of whole lines (about 2 MiB, so the
-    temporaries stay small); in each, lines are classified by their first two bytes
-    with numpy and the ``v`` and ``f`` lines are gathered and read by ``np.fromstring``.
+    three numbers and every ``f`` item's index is a plain integer; None for anything else.
     """
     points, tris = [], []
     nv = 0

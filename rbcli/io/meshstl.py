@@ -1,10 +1,8 @@
 """The STL reader (binary and ASCII): a file's triangles welded into an indexed mesh.
 
-The ASCII text is read in blocks of whole facets, tokenised with numpy and its numbers read
-by :func:`rbcli.io.meshbase.numbers`, each block's repeated ``vertex`` texts only once;
-the token-by-token reader (:func:`_read_stl_ascii`) is kept to say where a file the fast
-path refuses is wrong, and to read the unusual layouts it leaves to it. The numbers are
-the same bits either way, which the tests check.
+ASCII text is read in blocks of whole facets, tokenised with numpy, each block's distinct
+``vertex`` texts read once; the token-by-token reader (:func:`_read_stl_ascii`) reads what
+the fast path refuses and says which line is wrong. Both give the same bits (tested).
 """
 
 from __future__ import annotations
@@ -33,10 +31,7 @@ _TOKEN = re.compile(rb"\S+")
 _CHUNK = 1 << 21  # text files are parsed in blocks of about 2 MiB (cache-sized: 30 % faster than 16)
 
 def _finish(name: str, corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Check a (3F, 3) array of triangle corners and weld it into an indexed mesh.
-
-    ``corners`` is a private C-contiguous float32/float64 array (it is modified).
-    """
+    """Check (3F, 3) triangle corners (C-contiguous, modified in place) and weld them."""
     if corners.shape[0] == 0:
         raise MeshFileError(name, "the file holds no triangles")
     finite = np.isfinite(corners)
@@ -107,16 +102,10 @@ def _looks_like_text(first: bytes) -> bool:
 def _read_stl_ascii_fast(fh, size: int) -> tuple[np.ndarray, np.ndarray] | None:
     """An ASCII STL read in blocks, or None if the file needs :func:`_read_stl_ascii`.
 
-    Returns ``(points, inverse)``: ``points[inverse]`` are the (3F, 3) triangle corners
-    in file order (float64), ``points`` holding each block's distinct corner texts once.
-    Each block ends with the line of its last ``endfacet``; ``solid``/``endsolid`` lines
-    are blanked as in the line reader. A block is accepted only if its tokens are exactly
-    the 21-token facet pattern (:func:`_facets_of`) and its coordinates are finite; then
-    its coordinates are the same bits as the line reader's (Python's ``float``, numpy's
-    array conversion and ``np.fromstring`` all round correctly). Anything else returns
-    None, and the line reader reads the file or says which line is wrong. Peak memory is
-    one block's temporaries plus the distinct points and an index per corner, not the
-    file.
+    Returns ``(points, inverse)``: ``points[inverse]`` are the (3F, 3) corners in file order
+    (float64). A block (ending with the line of its last ``endfacet``) is accepted only if
+    its tokens are exactly the 21-token facet pattern and its coordinates finite. Peak
+    memory is one block's temporaries plus the distinct points, not the file.
     """
     blocks: list[np.ndarray] = []
     inverses: list[np.ndarray] = []
@@ -158,10 +147,8 @@ def _read_stl_ascii_fast(fh, size: int) -> tuple[np.ndarray, np.ndarray] | None:
 def _blank_solid_lines(text: bytes) -> tuple[bytes, bool]:
     """Blank out 'solid NAME' / 'endsolid NAME' lines; (text, whether an endsolid was seen).
 
-    Names may hold any words; the newlines stay, so offsets still give line numbers.
-    Several solids are allowed. The same as ``_SOLID_LINE.sub`` with spaces, but it only
-    looks at the lines where the word occurs (a regex anchored at every line start
-    would try each of a large file's lines).
+    The newlines stay, so offsets still give line numbers. Like ``_SOLID_LINE.sub`` with
+    spaces, but it only looks at the lines where the word occurs.
     """
     pos = text.find(b"solid")
     if pos < 0:
@@ -186,14 +173,8 @@ _KEYWORD_BYTES = {k: np.frombuffer(w, dtype=np.uint8) for k, w in _FACET_KEYWORD
 def _facets_of(text: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     """The corners of a block of whole facets, as (points, inverse), or None if not well formed.
 
-    Tokens are found with numpy (whitespace as ``bytes.split`` sees it); the keyword
-    tokens are compared byte by byte, column by column. Each ``vertex`` line's text (its
-    three coordinate tokens and the whitespace between them) is read only once per block
-    (:func:`distinct_spans`: a vertex of a closed mesh is written about six times, mostly
-    in nearby facets), with the whitespace byte after it, by ``np.fromstring``, which must
-    find exactly three numbers in each. ``points[inverse]`` are the (3n, 3) corners in
-    file order; equal text gives equal numbers, so these are the bits every token would
-    have been read to.
+    Each distinct ``x y z`` text is read once (a closed mesh writes a vertex about six
+    times); equal text gives equal numbers, so these are the bits every token would give.
     """
     a = np.frombuffer(text if text.endswith(b"\n") else text + b"\n", dtype=np.uint8)
     ws = (a == 32) | ((a >= 9) & (a <= 13))  # ASCII whitespace, as bytes.split()
