@@ -1,6 +1,8 @@
 """The result of :func:`rbcli.whirl`: frozen values whose attribute names are the JSON keys
 (read-only arrays; ``to_json()`` is ``rbcli whirl --json`` less ``file``): SI, degrees under
-``_deg`` keys, % under ``_percent`` keys."""
+``_deg`` keys, % under ``_percent`` keys. Each nested class is a JSON object; its keys, units
+and meaning are in one place, the man page's JSON section (``MANUAL["whirl"]``,
+:mod:`rbcli.cli.whirl`)."""
 
 from __future__ import annotations
 
@@ -80,14 +82,7 @@ def _hidden(**default: Any) -> Any:
 
 @dataclass(frozen=True, eq=False)
 class RotorData(_Json):
-    """The rigid rotor taken from the body (JSON ``rotor``).
-
-    mass : kg; com : m, the centre of mass along the shaft; polar_moment : kg m², Ip;
-    transverse_moment : kg m², It (the mean of the two moments across the shaft, about the
-    com); transverse_moments : [I1, I2] kg m²; asymmetry : (I2 - I1)/It; tilt_deg : the
-    nearest principal axis from the shaft; static_unbalance : kg m and its angle;
-    couple_unbalance : kg m² about the com and its angle; eccentricity : m
-    """
+    """The rigid rotor taken from the body (JSON ``rotor``)."""
 
     mass: float
     com: float
@@ -122,9 +117,7 @@ class BearingTableData(_Json):
 
 @dataclass(frozen=True, eq=False)
 class BearingData(_Json):
-    """One bearing: plane (m along the shaft), stiffness [kxx, kyy] N/m, cross_stiffness
-    [kxy, kyx] N/m, damping [cxx, cyy] N s/m (at modes_speed when they change with the
-    speed), name, cross_damping [cxy, cyx] N s/m, table (null when constant)."""
+    """One bearing (JSON ``bearings``); tabled coefficients at ``modes_speed``."""
 
     plane: float
     stiffness: tuple[float, float]
@@ -137,10 +130,7 @@ class BearingData(_Json):
 
 @dataclass(frozen=True, eq=False)
 class Mode(_Json):
-    """A whirl mode at one speed: frequency (rad/s, fixed frame), whirl, kind
-    (cylindrical, conical, mixed), node (m along the shaft, null for none), damping_ratio,
-    log_decrement (null when not oscillating), stable (it does not grow), forward_share
-    (overall) and bearing_forward_share (of each bearing's orbit)."""
+    """A whirl mode at one speed (JSON ``modes``)."""
 
     frequency: float
     whirl: str
@@ -155,10 +145,7 @@ class Mode(_Json):
 
 @dataclass(frozen=True, eq=False)
 class Campbell(_Json):
-    """The Campbell diagram: speeds (N, rad/s); per mode (numbered by frequency at each
-    speed, lowest first) frequencies (4 x N, rad/s), whirl, kind, damping_ratio,
-    log_decrement (null where a mode does not oscillate); branch (4 x N): the mode, followed
-    by its shape, that each entry belongs to (1-4, numbered by frequency at the first speed)."""
+    """The Campbell diagram (JSON ``campbell``)."""
 
     speeds: Any
     frequencies: Any
@@ -171,11 +158,7 @@ class Campbell(_Json):
 
 @dataclass(frozen=True, eq=False)
 class CriticalSpeed(_Json):
-    """A critical speed: speed (rad/s, undamped, exact), order (the n× line), mode (its
-    kind), whirl, node (m or null); damped_speed (rad/s, where the damped whirl frequency
-    crosses the line; null if it does not), damping_ratio and log_decrement there;
-    in_range (inside the speed range); excited (the unbalance drives it: order 1 only,
-    null otherwise); forward_share (of the mode there)."""
+    """A critical speed (JSON ``critical_speeds``)."""
 
     speed: float
     order: int
@@ -192,9 +175,8 @@ class CriticalSpeed(_Json):
 
 @dataclass(frozen=True, eq=False)
 class NoCrossing(_Json):
-    """A branch that never meets its n× line: order, whirl, mode, reason
-    ("gyroscopic": n It < Ip; "coincident": n It = Ip, met only at infinite speed;
-    "range": no crossing between the speeds searched [lo, hi] rad/s), and the moments."""
+    """A branch that never meets its n× line (JSON ``no_crossings``): ``reason`` "gyroscopic"
+    (n It < Ip), "coincident" (n It = Ip: met only at infinite speed) or "range"."""
 
     order: int
     whirl: str
@@ -227,10 +209,7 @@ class NoCrossing(_Json):
 
 @dataclass(frozen=True, eq=False)
 class ThresholdRow(_Json):
-    """A mode's growth rate crossing zero (Re lambda = 0, a root solve): speed (rad/s),
-    change ("onset": it starts growing as the speed rises; "recovery": it stops), mode
-    (1-4: the mode followed by its shape, numbered by frequency at the range's start),
-    whirl, kind and frequency (rad/s) there."""
+    """A mode's growth rate crossing zero, Re lambda = 0 (JSON ``stability.thresholds``)."""
 
     speed: float
     change: str
@@ -242,13 +221,8 @@ class ThresholdRow(_Json):
 
 @dataclass(frozen=True, eq=False)
 class Stability(_Json):
-    """stable_in_range: no mode grows anywhere in the speed range; onset_speeds: speeds
-    (rad/s) in the range where a mode starts or stops growing; least_damping_ratio and
-    least_damping_speed: the smallest damping ratio over the range and where;
-    stable_at_speed: no mode grows at the operating speed or in the operating range (null
-    without one); threshold_speed: the threshold speed of instability (the first onset,
-    or the range's start when a mode grows there; null when none grows); unstable_from_start;
-    thresholds: each onset and recovery."""
+    """Stability over the speed range (JSON ``stability``); ``threshold_speed`` is the first
+    onset, or the range's start when a mode grows there."""
 
     stable_in_range: bool
     onset_speeds: tuple[float, ...]
@@ -272,9 +246,7 @@ class UnbalanceRow(_Json):
 
 @dataclass(frozen=True, eq=False)
 class ResponseBearing(_Json):
-    """One bearing's response over the speeds: plane; displacement and displacement_minor
-    (m, the orbit's semi-axes), displacement_phase_deg (high spot, rotor frame); force (N,
-    semi-major axis of the force on the bearing), force_phase_deg."""
+    """One bearing's response over the speeds (JSON ``response.bearings``)."""
 
     plane: float
     displacement: Any
@@ -286,11 +258,9 @@ class ResponseBearing(_Json):
 
 @dataclass(frozen=True, eq=False)
 class PeakRow(_Json):
-    """A response peak: bearing (1-based) and its plane, speed (rad/s), amplitude (m),
-    amplification_factor (null when not defined or undamped), half_power [N1, N2] rad/s,
-    mode and whirl of the nearest critical speed, undamped (infinite response), basis (how
-    the AF was found: "half-power"; "damping ratio", 1/(2 zeta) of the nearest driven mode,
-    where the half-power band runs into another peak; "undamped"; "undefined")."""
+    """A response peak (JSON ``response.peaks``); ``basis``, how the AF was found: "half-power";
+    "damping ratio", 1/(2 zeta) of the nearest driven mode, where the half-power band runs into
+    another peak; "undamped"; "undefined"."""
 
     bearing: int
     plane: float
@@ -306,9 +276,7 @@ class PeakRow(_Json):
 
 @dataclass(frozen=True, eq=False)
 class AtSpeed(_Json):
-    """A bearing at the (maximum) operating speed: displacement (m) and its phase, force (N)
-    and its phase; rigid_force: the force on rigid bearings at that speed (balance's, two
-    bearings only; null otherwise)."""
+    """A bearing at the (maximum) operating speed (JSON ``response.at_speed``)."""
 
     plane: float
     displacement: float
@@ -320,10 +288,7 @@ class AtSpeed(_Json):
 
 @dataclass(frozen=True, eq=False)
 class ResponseData(_Json):
-    """The unbalance response: source ("body": its own static and couple unbalance, or
-    "planes": the unbalances given), unbalance (the rows given; empty for the body),
-    speeds (rad/s), bearings, peaks, at_speed (at the maximum operating speed; empty
-    without one)."""
+    """The unbalance response (JSON ``response``)."""
 
     source: str
     unbalance: tuple[UnbalanceRow, ...]
@@ -335,10 +300,8 @@ class ResponseData(_Json):
 
 @dataclass(frozen=True, eq=False)
 class MarginCheck(_Json):
-    """A critical speed (a response peak) judged by the API rule: bearing (1-based, null
-    for an undamped critical speed) and plane, speed (rad/s), mode, amplification_factor,
-    basis (as :class:`PeakRow`'s; "undefined" is judged as AF infinite), position ("below",
-    "above" or "within" the operating range), margin_percent, required_margin_percent, passed."""
+    """A critical speed (a response peak) judged by the API rule (JSON ``margins.checks``);
+    basis "undefined" is judged as AF infinite."""
 
     bearing: int | None
     plane: float | None
@@ -365,11 +328,9 @@ class Margins(_Json):
 
 @dataclass(frozen=True, eq=False)
 class CriticalMap(_Json):
-    """The undamped critical speed map: stiffness (K, N/m: every bearing isotropic, this
-    stiffness, no damping); speeds (B x K, rad/s), whirl and mode (B) of each branch;
-    bearings: each bearing's direct stiffness against speed [{plane, speeds, kxx, kyy}] over
-    the speed range (its two ends for constant bearings): where a curve meets a branch is
-    the map's estimate of that critical speed."""
+    """The undamped critical speed map (JSON ``critical_speed_map``): every bearing isotropic of
+    each ``stiffness``, undamped; where a bearing's stiffness curve meets a branch estimates
+    that critical speed."""
 
     stiffness: Any
     speeds: Any

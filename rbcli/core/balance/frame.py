@@ -3,8 +3,7 @@
 :func:`shaft_frame` fixes the rotor's frame (e_z along the shaft, e_x the 0° mark);
 :func:`unbalance` gives the static, moment and couple unbalance, the tilt of the nearest
 principal axis and the ideal balanced verdicts; :func:`add_point_masses` the same for the
-rotor with point masses added (the corrected rotor). "Sheet" is the physics sheet
-``physics/balance.md`` of the project's notes (see the package docstring).
+rotor with point masses added (the corrected rotor).
 """
 
 from __future__ import annotations
@@ -207,9 +206,8 @@ def _tilt(J_body: np.ndarray, frame: ShaftFrame) -> tuple[float, complex, float,
     """Tilt (rad) of the nearest principal axis, its shaft-frame lean (complex), gap, max |moment|.
 
     v is the projection of e_z onto the eigenspace (moments equal to DEGENERATE_RTOL merged)
-    nearest it; tilt = atan2(|v_perp|, v_z), accurate for small angles. numpy's eigh basis
-    is used directly: principal_axes snaps an axis within 1.4e-6 rad of a body axis onto it,
-    which would hide small tilts.
+    nearest it; tilt = atan2(|v_perp|, v_z). numpy's eigh basis, not principal_axes (its
+    snapping would hide small tilts).
     """
     w, V = np.linalg.eigh(0.5 * (J_body + J_body.T))
     axes = V.T  # rows: unit eigenvectors, moments ascending

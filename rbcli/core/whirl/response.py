@@ -65,10 +65,8 @@ class Forcing:
 
 
 def _amplitudes(rotor: Rotor, forcing: Forcing, speeds: np.ndarray) -> np.ndarray:
-    """(N, 4) complex ndarray: Q at each speed. Where the dynamic stiffness is singular (an
-    undamped critical speed) the response is unbounded (NaN) if the unbalance drives that
-    mode; if it does not (a backward mode, a balanced rotor) the driven response is finite:
-    the least-norm solution (the undriven mode's free amplitude left at 0)."""
+    """(N, 4) complex ndarray: Q at each speed. At a singular dynamic stiffness (an undamped
+    critical speed) NaN if the unbalance drives that mode, else the least-norm solution."""
     W = np.asarray(speeds, dtype=float)
     M, G = rotor.M(), rotor.G()
     K, C = rotor.matrices(W)
@@ -308,11 +306,8 @@ def _half_power(f, Nc: float, level: float, grid: np.ndarray, amps: np.ndarray, 
 
 def peaks(rotor: Rotor, forcing: Forcing, res: Response) -> list[Peak]:
     """The resonance peaks of every bearing's amplitude over ``res.speeds``, refined, with
-    their half-power points and amplification factors (see the module docstring).
-
-    A peak is a grid point higher than its neighbours (the range's end points are not
-    peaks). Without damping the response has no finite peak (it is infinite at an excited
-    critical speed): the caller judges those from the critical speeds instead.
+    their half-power points and amplification factors (module docstring). A peak is a grid
+    point higher than its neighbours (not the range's ends); undamped, there are none.
     """
     out = []
     W = res.speeds
