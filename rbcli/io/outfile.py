@@ -107,10 +107,9 @@ def check(
     Raises
     ------
     InputError
-        (exit 2, one line naming ``option``) for an unknown extension (listing the allowed
-        ones), an input file (never replaced, whatever ``force`` says), another output of
-        the run, a folder, a folder that does not exist, or an existing file without
-        ``force`` when ``replace_ok`` is False.
+        naming ``option``: an unknown extension, an input file (whatever ``force`` says),
+        another output of the run, a folder, a missing folder, an existing file without
+        ``force`` unless ``replace_ok``.
     """
     option = _opt(option)
     text = os.fspath(path)
@@ -212,9 +211,8 @@ _pending: list[int] = []
 @contextmanager
 def _held_signals() -> Iterator[None]:
     """SIGINT, SIGTERM and SIGHUP held off for a few steps, delivered when the outermost
-    block ends. Held by swapping the handlers for one that records (``pthread_sigmask`` would
-    not do: the kernel may hand the signal to a BLAS thread, whose C handler still makes the
-    main thread raise); outside the main thread, nothing (no handler runs there)."""
+    block ends, by swapping the handlers for one that records (not ``pthread_sigmask``: a
+    BLAS thread may take the signal); outside the main thread, nothing."""
     import signal
     import threading
 

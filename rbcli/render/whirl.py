@@ -361,11 +361,8 @@ MARKS = {"driven": ("o", "black", "critical speed (driven by the unbalance)", 6)
 
 
 def campbell_figure(res: WhirlResult):
-    """The Campbell diagram: whirl frequencies (cpm, Hz on the right) against speed (rpm),
-    each mode followed by its shape, forward solid, backward dashed; the n× lines; the
-    critical speeds marked (filled, on top: the unbalance drives it; coincident ones one mark,
-    one label); the operating speed; growing modes crossed; the legend below the axes. A
-    matplotlib Figure."""
+    """The Campbell diagram of ``--plot`` (what it draws: the man page's notes,
+    :mod:`rbcli.cli.whirl`). A matplotlib Figure."""
     cb = res.campbell
     sp = np.asarray(cb.speeds) * RPM
     fr = np.asarray(cb.frequencies) * RPM
@@ -419,10 +416,7 @@ def campbell_figure(res: WhirlResult):
 
 
 def map_figure(res: WhirlResult):
-    """The undamped critical speed map: each branch's critical speed (rpm) against the
-    bearings' stiffness (N/m), log-log; each bearing's kxx and kyy against speed over the
-    speed range drawn on it (where they meet a branch: that critical speed); the operating
-    speed. A matplotlib Figure."""
+    """The undamped critical speed map of ``--plot-map`` (the man page's notes). A matplotlib Figure."""
     cm = res.critical_speed_map
     k = np.asarray(cm.stiffness)
     fig, axes = figure(f"whirl: {res.name} — undamped critical speed map", size=(7.5, 5.0))
@@ -457,9 +451,7 @@ def map_figure(res: WhirlResult):
 
 
 def response_figure(res: WhirlResult):
-    """The unbalance response: per bearing the displacement amplitude (µm; log scale
-    without damping) and its phase (high spot, rotor frame) against speed (rpm), peaks
-    and half-power points marked, the operating speed. A matplotlib Figure."""
+    """The unbalance response of ``--plot-response`` (the man page's notes). A matplotlib Figure."""
     resp = res.response
     sp = np.asarray(resp.speeds) * RPM
     fig, axes = figure(f"whirl: {res.name} — unbalance response", nrows=2, ncols=1, size=(7.5, 6.0))
