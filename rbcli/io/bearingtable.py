@@ -15,10 +15,7 @@ The section (bare numbers in the body's units: positions in its length unit, spe
         table: bearing2.csv          # or rows [speed, kxx, kxy, kyx, kyy, cxx, cxy, cyx, cyy]
         units: {speed: rpm, stiffness: N/mm, damping: N*s/mm}   # what bare numbers mean
 
-A table gives the coefficients against speed, one row a speed, in ascending speed (a
-table is never reordered). As a CSV file (a path relative to the body file): a header row
-naming its columns, ``speed`` and any of the eight coefficients (the others are 0), each
-optionally with its unit in brackets (``kxx [N/mm]``); ``#`` starts a comment.
+Tables and their CSV files: the man page of ``rbcli whirl`` ("Bearings in the body file").
 """
 
 from __future__ import annotations

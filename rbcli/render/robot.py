@@ -1,19 +1,10 @@
 """A body's ``<inertial>`` element for robot and simulation models: URDF, SDF, MJCF.
 
-``inertia --format urdf|sdf|mjcf`` prints it; the numbers are an
-:class:`rbcli.core.inertial.Inertial` (from ``InertiaResult.inertial()``), written at full
-precision (``repr`` of each float: it reads back to the same double) in SI units (kg, m,
-kg m², rad), each element preceded by a comment that states its frame:
-
-- URDF (http://wiki.ros.org/urdf/XML/link): ``<origin xyz rpy>`` (com and the fixed-axis
-  roll-pitch-yaw of the inertial frame), ``<mass value>``, ``<inertia ixx ixy ixz iyy iyz
-  izz>`` (the tensor's entries: ``ixy = −∫ x y dm``);
-- SDF (http://sdformat.org/spec?elem=link): ``<pose>x y z roll pitch yaw</pose>``,
-  ``<mass>``, ``<inertia><ixx>…</izz></inertia>``, the same conventions;
-- MJCF (https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial):
-  ``pos``, ``mass`` and ``fullinertia="ixx iyy izz ixy ixz iyz"`` (body axes) or
-  ``quat="w x y z"`` with ``diaginertia`` (principal axes).
-"""
+``inertia --format urdf|sdf|mjcf`` prints it (the formats' attributes and conventions: the
+man page of ``rbcli inertia``) from an :class:`rbcli.core.inertial.Inertial`, at full precision
+in SI, each element after a comment that states its frame. References: URDF
+http://wiki.ros.org/urdf/XML/link, SDF http://sdformat.org/spec?elem=link, MJCF
+https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial."""
 
 from __future__ import annotations
 

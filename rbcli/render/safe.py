@@ -1,17 +1,12 @@
-"""User text made safe inside every output: CSV, JSON, reports, robot XML, figures.
+"""User text made safe inside every output: CSV, JSON, reports, robot XML, figures (the
+rule as users read it: rbcli(1), :mod:`rbcli.cli.catalog`). Names, labels and file names
+stay data: no forged lines or cells, broken syntax or spreadsheet formula.
 
-Names, labels and file names from a file or a command line must stay data in an output (no
-forged lines or cells, reordering, broken syntax or spreadsheet formula):
-
-- **Escaped everywhere** (:func:`escape`, :func:`rbcli.env.clean`'s escapes without its
-  cutting): C0 and C1 controls, DEL, U+2028/U+2029, the bidirectional controls (U+200E/F,
-  U+202A-E, U+2066-9), U+FEFF and what XML 1.0 forbids (U+FFFE/U+FFFF, lone surrogates),
-  each as visible text: ``\\n``, ``\\r``, ``\\t``, ``\\e`` (ESC), ``\\xNN``, ``\\uNNNN``.
-- **Spreadsheet formulas** (:func:`csv_text`): a CSV text cell starting with ``=``, ``+``,
-  ``-``, ``@``, TAB or CR gets an apostrophe in front (OWASP "CSV Injection"; ASVS 5.0
-  1.2.10): spreadsheets show it as text. Numbers are never text cells (``-0.5`` stays one).
-- **JSON** (:func:`json_escape`): the characters above that JSON leaves raw are written as
-  ``\\uXXXX`` escapes too: lossless, and never raw on a terminal or in a JavaScript literal.
+- :func:`escape`: every character of :data:`UNSAFE` (controls, separators, bidirectional
+  controls, what XML 1.0 forbids) as visible text (``\\n``, ``\\e``, ``\\xNN``, ``\\uNNNN``).
+- :func:`csv_text`: a text cell starting with ``=``, ``+``, ``-``, ``@``, TAB or CR gets an
+  apostrophe in front (OWASP "CSV Injection"; ASVS 5.0 1.2.10).
+- :func:`json_escape`: those JSON leaves raw written as ``\\uXXXX`` escapes (lossless).
 """
 
 from __future__ import annotations

@@ -1,18 +1,8 @@
 """``--format csv``: a command's result as one table a spreadsheet or a script reads in one go.
 
-The layout (a contract, documented in rbcli(1) and the README) is *long*: one row per value
-of the command's JSON, with the columns ``quantity,value,text,unit``:
-
-- ``quantity`` — the value's JSON path (``com[2]``, ``corrections[0].mass``), unique;
-- ``value`` — a number only: ``repr`` of the float (or ``--digits N`` significant figures),
-  an integer as it is; empty for a number its ``<name>_defined`` sibling marks undefined;
-- ``text`` — a string or a boolean, made safe for spreadsheets
-  (:func:`rbcli.render.safe.csv_text`);
-- ``unit`` — the SI unit of a number (:mod:`rbcli.render.csvunits`; ``1`` when it has none).
-
-A ``null``, an empty list or mapping has both ``value`` and ``text`` empty. With several
-bodies a ``file`` column comes first, the header once. RFC 4180 quoting, ``\n`` line ends:
-``pandas.read_csv(f)`` reads it in one call."""
+The layout is a contract, documented once in rbcli(1) (``rbcli.cli.catalog``) and the README:
+one row per value of the command's JSON, columns ``quantity,value,text,unit`` (text made safe
+by :func:`rbcli.render.safe.csv_text`, units from :mod:`rbcli.render.csvunits`)."""
 
 from __future__ import annotations
 
