@@ -79,12 +79,9 @@ def line_of(text: bytes, offset: int) -> int:
 def odd_number(token: bytes) -> bool:
     """Whether a coordinate's text holds a character the formats' numbers do not have.
 
-    STL and OBJ numbers are C's decimal floating-point numbers (a sign, digits with a
-    point, an exponent); ``inf`` and ``nan`` words are let through to the finiteness check,
-    which says what is wrong with them. Python's ``float()`` (and numpy's conversion of
-    bytes, which calls it) also takes ``1_000``, which no STL or OBJ reader does: the line
-    readers ask this before converting. A text of the right characters that is still not
-    a number (``1.2.3``) is left to the conversion, which refuses it.
+    STL and OBJ numbers are C's decimal numbers; ``float()`` also takes ``1_000``, which no
+    STL or OBJ reader does. ``inf`` and ``nan`` pass (the finiteness check refuses them), and
+    so does ``1.2.3`` (the conversion refuses it).
     """
     return bool(token.strip(_DECIMAL_CHARS)) and _NON_FINITE.fullmatch(token) is None
 

@@ -27,11 +27,9 @@ def weld(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     Notes
     -----
-    ``-0.0`` becomes ``0.0`` (adding zero). Each point's bit patterns are hashed into a
-    64-bit key whose low bits hold its index, and the keys sorted (``np.sort``, several
-    times faster than an argsort): equal points are adjacent; colliding hashes are found
-    among neighbours and sorted lexicographically, so the result is exact. A large array
-    is welded in blocks of :data:`_WELD_BLOCK` first (:func:`weld_blocks`: half the time).
+    ``-0.0`` becomes ``0.0``. Each point's bits are hashed into a 64-bit key whose low bits
+    hold its index, and the keys sorted: equal points are adjacent, colliding hashes are
+    sorted lexicographically, so the result is exact (:func:`weld_blocks`).
     """
     return weld_blocks(np.asarray(points) + 0.0)  # canonical +0.0, a private contiguous copy
 

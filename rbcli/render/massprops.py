@@ -66,8 +66,7 @@ def _mesh_cells(p, du: DisplayUnits, digits: int) -> list[str]:
 
 def mesh_table(doc: Doc, body: Body, du: DisplayUnits, digits: int) -> None:
     """A table of the body's mesh parts (name, volume, area, triangles), if it has any;
-    beyond :data:`PARTS_TABLE_ROWS` of them, the largest by volume and one row of the rest
-    (their volume, area and triangles summed)."""
+    summarised by volume as :data:`PARTS_TABLE_ROWS` says."""
     meshes = [p for p in body.parts if "volume" in p.extra]
     if not meshes:
         return
@@ -142,9 +141,8 @@ def inertia_doc(doc: Doc, body: Body, r: Any, du: DisplayUnits, digits: int, pro
 
 
 def _parts_table(doc: Doc, body: Body, du: DisplayUnits, digits: int) -> None:
-    """``inertia``'s parts table: each part's mass and centre (and a mesh's facts); beyond
-    :data:`PARTS_TABLE_ROWS` parts, the heaviest and one row that sums the rest (their
-    mass and their centre of mass; a mesh's volume, area and triangles summed)."""
+    """``inertia``'s parts table: each part's mass and centre (and a mesh's facts);
+    summarised by mass as :data:`PARTS_TABLE_ROWS` says."""
     L = du.unit("length")
     meshes = has_mesh(body)
     parts = body.parts

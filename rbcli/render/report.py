@@ -80,13 +80,9 @@ INPUT_KEY = "input-file"
 def parts_table(doc: Doc, body, mp, contributions, du: DisplayUnits, digits: int) -> None:
     """Each part's mass, centre and its contribution to the moments about the body's com.
 
-    ``contributions`` (kg m², one 3×3 per part, from
-    :func:`rbcli.core.inertia.part_contributions`) are shown as their diagonals; the total
-    row is the body (``mp``: mass, com, inertia about the com). Beyond
-    :data:`rbcli.render.massprops.PARTS_TABLE_ROWS` parts the table shows that many: the
-    largest contributions (``|Ixx + Iyy + Izz|``, then the heaviest), in file order, and
-    one row that sums the others (their mass, share, centre of mass and contributions), so
-    that the rows still add up to the total; a mesh part's note only for the parts shown.
+    ``contributions`` (kg m², one 3×3 per part: :func:`rbcli.core.inertia.part_contributions`)
+    shown as their diagonals; the total row is ``mp``. Summarised as
+    :data:`rbcli.render.massprops.PARTS_TABLE_ROWS` says, by ``|Ixx + Iyy + Izz|``, then mass.
     """
     m_unit, L, I_unit = du.unit("mass"), du.unit("length"), du.unit("inertia")
     fI, _ = du.factor("inertia")
