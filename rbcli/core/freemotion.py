@@ -281,10 +281,6 @@ def analyse(
     omega0 : (3,) array_like — rad/s, angular velocity at t = 0, body frame
     symmetric_rtol : float — principal moments closer than this times the largest are equal
 
-    Returns
-    -------
-    FreeMotion
-
     Raises
     ------
     ValueError

@@ -102,10 +102,6 @@ def mass_properties(
         closedness and orientation only)
     unit : str — the vertices' length unit, for messages
 
-    Returns
-    -------
-    MeshProps
-
     Raises
     ------
     MeshError

@@ -180,10 +180,6 @@ def circle(
     g : float — m/s^2
     r : float — m, tyre radius; only 0 (knife edge)
 
-    Returns
-    -------
-    CircleMotion
-
     Notes
     -----
     Sheet §3.3 (knife edge), with v = a omega_3 = Omega R_G:

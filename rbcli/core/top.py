@@ -420,10 +420,6 @@ def analyse(
     theta_dot0, phi_dot0 : float — rad/s, initial θ' and φ' (default 0)
     g : float — m/s², > 0
 
-    Returns
-    -------
-    TopMotion
-
     Raises
     ------
     TopInputError

@@ -82,10 +82,6 @@ def top_from_body(
         (:mod:`rbcli.core.symmetry`); within it, above rounding, the top is symmetrised and its
         departures kept in ``TopParams.asymmetry``
 
-    Returns
-    -------
-    TopParams
-
     Raises
     ------
     PivotAtCom

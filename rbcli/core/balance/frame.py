@@ -264,10 +264,6 @@ def unbalance(
     angle_sense : {"with", "against"} — report angles with or against rotation
     rtol : float — relative tolerance of the ideal balanced verdicts (default 1e-9)
 
-    Returns
-    -------
-    Unbalance
-
     Raises
     ------
     ValueError
