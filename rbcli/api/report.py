@@ -3,9 +3,7 @@
 
 :func:`parse` reads each section's parameters by its command's own ``parse`` (a value means
 what it means to the command); :func:`run` computes each section, or the one-line reason it
-is left out. Parts, mass properties and principal axes are always there; balance with a
-shaft or a balance parameter; whirl with bearings; precession with ``omega``; the top with a
-pivot, ``spin`` and ``theta``; rolling with a rim radius or a round part."""
+is left out (which sections apply when: ``rbcli report --help``)."""
 
 from __future__ import annotations
 

@@ -309,11 +309,9 @@ MAX_CWORD_DIGITS = 6
 def completion_state_ok(environ) -> bool:
     """Whether a shell's request for completions (``COMPLETE_VAR`` set) can be answered.
 
-    typer reads bash's ``COMP_WORDS`` and ``COMP_CWORD`` as given: a ``COMP_CWORD`` that is
-    not a word index (``x``, ``1.5``, ``-1``, 5000 digits, beyond the words) or a missing
-    variable was a ValueError or KeyError, an internal error (exit 70; issue 27). A shell
-    that sends malformed state gets no candidates, quietly (exit 0, nothing printed); the
-    other shells' variables (``_TYPER_COMPLETE_ARGS``...) are read with defaults by typer.
+    typer would fail (exit 70) on bash's ``COMP_CWORD`` that is not a word index (``x``,
+    ``-1``, beyond the words) or a missing ``COMP_WORDS``: such a shell gets no candidates,
+    quietly (exit 0). The other shells' variables typer reads with defaults.
     """
     instruction = environ.get(COMPLETE_VAR, "")
     if not (instruction.startswith("complete_") and instruction.endswith("_bash")):

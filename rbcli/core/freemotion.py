@@ -125,17 +125,11 @@ class FreeMotion:
     angular_momentum : (3,) ndarray — kg m^2/s, L = I omega0 (constant in space)
     angular_momentum_norm, kinetic_energy : float — G = |L| (kg m^2/s), T (J)
     case, description : str — a ``CASE_*`` constant; the case in one sentence
-    circles_axis : int or None — 3 or 1 for a motion circling (or steady about) that axis
-    period : float or None — s, period of omega in the body frame (None: not periodic)
-    stable : bool or None — the motion circles the largest or smallest axis (or a symmetric
-        body's axis) without flipping; False when it flips or is steady about the intermediate
-        axis or on the separatrix; None at rest, spherical, or neutral
+    circles_axis, period, stable — as the JSON keys (s for ``period``)
     linear_coefficients, linear_kinds, linear_rates — sqrt|k_j|, k_j = (Ij-Ik)(Ij-Il)/(Ik Il):
-        a deviation from steady rotation about axis j oscillates (k_j > 0) or grows; the rates
-        at W = G/I_j
+        oscillation (k_j > 0) or growth about steady rotation about axis j; rates at W = G/I_j
     elliptic : EllipticSolution or None — asymmetric non-steady motions
-    flip_interval, first_flip, flip_interval_estimate : float or None — s, when the body flips
-        (L passes nearer to the intermediate axis: the tennis-racket flip): 2K/lambda, the
+    flip_interval, first_flip, flip_interval_estimate : float or None — s: 2K/lambda, the
         first sign change of w2, and (2/sigma) ln(4/k')
     precession_per_period, mean_precession_rate : float or None — rad and rad/s about L
     symmetry_axis, symmetry_index, oblate — a symmetric body's axis (body frame), its principal
