@@ -45,10 +45,9 @@ def rim_candidates(parts: Any, axle: Any, through: Any, tol: float = 1e-6) -> li
     """The parts that can make a rim for this axle: round (:data:`ROUND_SHAPES`), not
     subtracted, coaxial with the axle (any orientation for a sphere) and centred on the
     axle line (to 1e-6 of their radius). ``parts`` are :class:`rbcli.body.partmodel.Part`; ``axle``
-    a unit vector and ``through`` a point of the axle line (m), body frame. ``tol`` (the
-    ``--symmetry-tol`` of a nearly symmetric wheel, a fraction) loosens both tests: a part
-    tilted from the axle by an angle whose sine is at most ``tol``, or centred off it by
-    at most ``tol`` of its radius, is still a rim (a CAD wheel tilted 0.005° on its axle)."""
+    a unit vector and ``through`` a point of the axle line (m), body frame. ``tol`` (a
+    nearly symmetric wheel's ``symmetry_tol``) loosens both tests: a tilt whose sine, or an
+    offset over the radius, is at most ``tol``."""
     n = np.asarray(axle, dtype=float)
     P = np.asarray(through, dtype=float)
     out = []
@@ -69,9 +68,7 @@ def rim_circle_centre(part: Any) -> np.ndarray:
     """Centre (m, body frame) of the circle of radius ``part.radius`` on which a round part
     touches the floor when it rolls on its outer rim (the middle of a cylinder's band): the
     part's centre of mass moved along its axis by the registry's
-    :attr:`rbcli.core.shapes.RimRule.plane_from_com` (0 for a disk, ring, sphere (its
-    equator), torus (its outer equator) and cylinder; a hemisphere's flat face 3R/8 from its
-    com, a cone's base h/4, h = 3 V/(pi R^2) from the part's volume)."""
+    :attr:`rbcli.core.shapes.RimRule.plane_from_com`."""
     com = np.asarray(part.com, dtype=float)
     n = np.asarray(part.axis, dtype=float)
     n = n / np.linalg.norm(n)

@@ -115,10 +115,8 @@ def straight(wheel: Wheel, a: float, r: float = 0.0, g: float = STANDARD_GRAVITY
     Notes
     -----
     Sheet §3.2: lambda^2 [A (A + m a^2) lambda^2 + C (C + m a^2) s^2 - A m g (a - r)] = 0, so the
-    lean stays bounded iff s^2 > s_c^2 = m g (a - r) A / [C (C + m a^2)]; v_c = a s_c. A rounded
-    rim only shortens the weight's lever to (a - r) sin(lean). Thin disk s_c^2 = g/(3a), hoop
-    g/(4a); a sphere has none (s_c = 0). Checked against the vector equations of a toroidal rim
-    (tests/test_rollcheck_rims.py)."""
+    lean stays bounded iff s^2 > s_c^2 = m g (a - r) A / [C (C + m a^2)]; v_c = a s_c (a rounded
+    rim shortens the weight's lever to (a - r) sin(lean); tests/test_rollcheck_rims.py)."""
     a, r, g = check_geometry(a, r, g)
     m, A, C = wheel.mass, wheel.A, wheel.C
     Cc = C + m * a * a
@@ -162,12 +160,8 @@ def edge_critical_spin(wheel: Wheel, a: float, c: float, g: float = STANDARD_GRA
 def band_rolling(wheel: Wheel, a: float, c1: float, c2: float, g: float = STANDARD_GRAVITY) -> StraightRolling:
     """Straight rolling on a flat band (a cylinder on its side, a thick coin, two wheels on
     an axle): ``a`` the band's radius, ``c1``, ``c2`` >= 0 its edges' distances from the plane of
-    the com. A :class:`StraightRolling` with ``rim`` "band".
-
-    Leaning less than atan(c/a) towards an edge, the weight rights it at any speed; tipped
-    further it balances on one edge circle, stable above that edge's critical spin, so above
-    the larger of the two it stays up (tests/test_rollcheck_rims.py). c1 = c2 = 0 is the knife
-    edge."""
+    the com. A :class:`StraightRolling` with ``rim`` "band", critical above the larger edge's
+    :func:`edge_critical_spin` (why: the man page of ``rbcli rollcheck``)."""
     a, _, g = check_geometry(a, 0.0, g)
     for name, c in (("c1", c1), ("c2", c2)):
         if not (math.isfinite(c) and c >= 0.0):
