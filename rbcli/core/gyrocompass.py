@@ -14,9 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
-from rbcli.core.symmetry import AxialSymmetry, about_axis, across, require
+from rbcli.core.symmetry import AxialSymmetry, about_axis, axial_moments, require
 from rbcli.core.checks import finite, json_float
 
 #: Earth's sidereal rotation rate, rad/s (IERS conventions).
@@ -144,26 +142,7 @@ def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e
     m = finite("the mass", mass)
     if m <= 0.0:
         raise ValueError(f"the mass must be positive, got {m:.6g}")
-    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
-    if not np.all(np.isfinite(J)):
-        raise ValueError("the centre of mass and the inertia tensor must be finite")
-    J = 0.5 * (J + J.T)
-    n = np.asarray(axis, dtype=float).reshape(3)
-    nn = float(np.linalg.norm(n))
-    if not math.isfinite(nn) or nn == 0.0:
-        raise ValueError("the spin axis direction must be a non-zero finite vector")
-    n = n / nn
-    C = float(n @ J @ n)
-    E = across(n)
-    A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
-    if not max(abs(A1), abs(A2), abs(C)) > 0.0:
-        raise ValueError("the inertia tensor is zero: a point mass cannot be a rotor")
-    A = 0.5 * (A1 + A2)
-    if C <= 0.0 or A <= 0.0:
-        raise ValueError(
-            f"the moments about and across the spin axis must be positive, got C = {C:.6g} "
-            f"and A = {A:.6g} kg m²"
-        )
+    J, n, C, A = axial_moments(inertia_com, axis, "spin axis", "cannot be a rotor")
     sym = about_axis(m, com, J, com, n)
     require(sym, sym_rtol, "its spin axis", "a gyrocompass rotor")
     return Rotor(C=C, A=A, mass=m, axis=tuple(float(x) for x in n),  # type: ignore[arg-type]

@@ -125,6 +125,34 @@ class Asymmetric(ValueError):
         self.tolerance = tolerance
 
 
+def axial_moments(inertia_com, axis, axis_name: str, zero: str) -> tuple[np.ndarray, np.ndarray, float, float]:
+    """(J, n, C, A) of a body's tensor about its com (symmetrised) and the unit ``axis``:
+    C = n·J·n, A the mean of the two moments across n. ValueError, naming the ``axis_name``
+    ("axle", "spin axis"), for a non-finite tensor or axis, a zero tensor (``zero`` says why
+    that cannot be) or a moment <= 0."""
+    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
+    if not np.all(np.isfinite(J)):
+        raise ValueError("the centre of mass and the inertia tensor must be finite")
+    J = 0.5 * (J + J.T)
+    n = np.asarray(axis, dtype=float).reshape(3)
+    nn = float(np.linalg.norm(n))
+    if not math.isfinite(nn) or nn == 0.0:
+        raise ValueError(f"the {axis_name} direction must be a non-zero finite vector")
+    n = n / nn
+    C = float(n @ J @ n)
+    E = across(n)
+    A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
+    if not max(abs(A1), abs(A2), abs(C)) > 0.0:
+        raise ValueError(f"the inertia tensor is zero: a point mass {zero}")
+    A = 0.5 * (A1 + A2)
+    if C <= 0.0 or A <= 0.0:
+        raise ValueError(
+            f"the moments about and across the {axis_name} must be positive, got C = {C:.6g} "
+            f"and A = {A:.6g} kg m²"
+        )
+    return J, n, C, A
+
+
 def pct(x: float) -> str:
     """``x`` as a percentage, 2 digits (messages)."""
     return f"{100.0 * x:.2g} %"

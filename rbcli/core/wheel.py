@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from rbcli.core.rim import fmt_length as _fmt_length
-from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis, across, pct
+from rbcli.core.symmetry import ROUND_OFF, AxialSymmetry, Asymmetric, about_axis, axial_moments, pct
 from rbcli.errors import InputError, ParamError
 
 __all__ = ["STANDARD_GRAVITY", "Wheel", "wheel_from_body", "check_geometry", "param_finite",
@@ -189,27 +189,9 @@ def wheel_from_body(
     Horn and Johnson, *Matrix Analysis*, Theorem 4.3.1); e moves s_c by about e/(2 (a - r))."""
     m = _positive("the mass", mass)
     G = np.asarray(com, dtype=float).reshape(3)
-    J = np.asarray(inertia_com, dtype=float).reshape(3, 3)
-    if not (np.all(np.isfinite(G)) and np.all(np.isfinite(J))):
+    if not np.all(np.isfinite(G)):
         raise ValueError("the centre of mass and the inertia tensor must be finite")
-    J = 0.5 * (J + J.T)
-    n = np.asarray(axle, dtype=float).reshape(3)
-    nn = float(np.linalg.norm(n))
-    if not math.isfinite(nn) or nn == 0.0:
-        raise ValueError("the axle direction must be a non-zero finite vector")
-    n = n / nn
-    C = float(n @ J @ n)
-    E = across(n)  # orthonormal basis of the plane across the axle
-    A1, A2 = (float(x) for x in np.linalg.eigvalsh(E @ J @ E.T))
-    scale = max(abs(A1), abs(A2), abs(C))
-    if not scale > 0.0:
-        raise ValueError("the inertia tensor is zero: a point mass cannot roll on a rim")
-    A = 0.5 * (A1 + A2)
-    if C <= 0.0 or A <= 0.0:
-        raise ValueError(
-            f"the moments about and across the axle must be positive, got C = {C:.6g} "
-            f"and A = {A:.6g} kg m²"
-        )
+    J, n, C, A = axial_moments(inertia_com, axle, "axle", "cannot roll on a rim")
     P = np.zeros(3) if axle_through is None else np.asarray(axle_through, dtype=float)
     P = P.reshape(3)
     d = G - P
