@@ -78,10 +78,6 @@ class AxialSymmetry:
         """Symmetric to rounding (every departure at most :data:`ROUND_OFF`)."""
         return self.departure <= ROUND_OFF
 
-    def within(self, tolerance: float) -> bool:
-        """Every departure at most ``tolerance`` (never stricter than :data:`ROUND_OFF`)."""
-        return self.departure <= max(tolerance, ROUND_OFF)
-
     def to_json(self, tolerance: float) -> dict:
         """The JSON ``asymmetry`` object of the commands that accept a nearly symmetric body."""
         return {
