@@ -13,7 +13,7 @@ import math
 import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from rbcli.api import balance, check, precess, rollcheck, top, whirl
 from rbcli.api import inertia as api_inertia
@@ -292,112 +292,119 @@ class _Ctx:
         self.mp = body_mass_props(body)
 
 
-def _parts(ctx: _Ctx) -> Section:
-    return Section("parts", "Parts", ctx.mp, figure=part_contributions(ctx.body.parts, ctx.mp.com))
+class _Step(NamedTuple):
+    """One section of the report: its progress text (and the prefix of its one-line
+    reasons), key, title and builder ``build(ctx, step)``."""
+
+    what: str
+    key: str
+    title: str
+    build: Callable[[_Ctx, _Step], Section]
+
+    def section(self, result: Any, **kw: Any) -> Section:
+        return Section(self.key, self.title, result, **kw)
+
+    def skip(self, reason: Any) -> Section:
+        return Section(self.key, self.title, skipped=reason)
+
+    def not_computed(self, why: Any) -> Section:
+        """``what: not computed: <why>`` (an InputError's parameters kept as parameters)."""
+        if isinstance(why, InputError):
+            why = f"{literal(why.where)}: {why.template}" if why.where else why.template
+        return self.skip(Note(f"{self.what}: not computed: {why}"))
 
 
-def _massprops(ctx: _Ctx) -> Section:
+def _parts(ctx: _Ctx, s: _Step) -> Section:
+    return s.section(ctx.mp, figure=part_contributions(ctx.body.parts, ctx.mp.com))
+
+
+def _massprops(ctx: _Ctx, s: _Step) -> Section:
     o = api_inertia.parse(ctx.body)
-    return Section("mass-properties", "Mass properties", api_inertia.run(ctx.body, o), options=o)
+    return s.section(api_inertia.run(ctx.body, o), options=o)
 
 
-def _principal(ctx: _Ctx) -> Section:
+def _principal(ctx: _Ctx, s: _Step) -> Section:
     o = api_principal.parse(ctx.body)
-    return Section("principal-axes", "Principal axes", api_principal.run(ctx.body, o), options=o)
+    return s.section(api_principal.run(ctx.body, o), options=o)
 
 
-def _skip(key: str, title: str, reason: str) -> Section:
-    return Section(key, title, skipped=reason)
-
-
-def _not_computed(what: str, exc: InputError) -> Note:
-    """``what: not computed: <the error>``, the error's parameters kept as parameters."""
-    where = f"{literal(exc.where)}: " if exc.where else ""
-    return Note(f"{what}: not computed: {where}{exc.template}")
-
-
-def _balance(ctx: _Ctx) -> Section:
-    key, title = "balance", "Balance"
+def _balance(ctx: _Ctx, s: _Step) -> Section:
     o = ctx.opts
     if o.balance_skip is not None:
-        return _skip(key, title, o.balance_skip)
+        return s.skip(o.balance_skip)
     try:
         res = balance.run(ctx.body, o.balance)
     except InputError as exc:
-        return _skip(key, title, _not_computed("balance", exc))
+        return s.not_computed(exc)
     if res.iso_check is not None and not res.iso_check.passed:
         ctx.failed.append(f"balance: the rotor as given fails ISO 21940-11 G{res.iso_check.grade:g}")
-    return Section(key, title, res, options=o.balance, figure=res.diagram(), warnings=res.warnings)
+    return s.section(res, options=o.balance, figure=res.diagram(), warnings=res.warnings)
 
 
-def _whirl(ctx: _Ctx) -> Section:
-    key, title = "whirl", "Whirl: critical speeds and unbalance response"
+def _whirl(ctx: _Ctx, s: _Step) -> Section:
     o = ctx.opts
     if o.whirl_skip is not None:
-        return _skip(key, title, o.whirl_skip)
+        return s.skip(o.whirl_skip)
     if o.whirl_error is not None:
-        return _skip(key, title, _not_computed("whirl", o.whirl_error))
+        return s.not_computed(o.whirl_error)
     try:
         res = whirl.run(ctx.body, o.whirl)
     except InputError as exc:
-        return _skip(key, title, _not_computed("whirl", exc))
+        return s.not_computed(exc)
     if res.return_code:
         ctx.failed.append("whirl: a separation margin fails, or a mode grows, at {speed}")
-    return Section(key, title, res, options=o.whirl, warnings=res.warnings)
+    return s.section(res, options=o.whirl, warnings=res.warnings)
 
 
-def _precess(ctx: _Ctx) -> Section:
-    key, title = "free-precession", "Free precession"
+def _precess(ctx: _Ctx, s: _Step) -> Section:
     if ctx.opts.precess is None:
-        return _skip(key, title, Note("free precession: no {omega} given (the initial angular "
-                                      "velocity, body frame)"))
+        return s.skip(Note("free precession: no {omega} given (the initial angular velocity, "
+                           "body frame)"))
     try:
         res = precess.run(ctx.body, ctx.opts.precess)
     except InputError as exc:
-        return _skip(key, title, _not_computed("free precession", exc))
-    return Section(key, title, res, options=ctx.opts.precess)
+        return s.not_computed(exc)
+    return s.section(res, options=ctx.opts.precess)
 
 
-def _top(ctx: _Ctx) -> Section:
-    key, title = "heavy-top", "Heavy top"
+def _top(ctx: _Ctx, s: _Step) -> Section:
     o = ctx.opts
     if o.top is None:
-        return _skip(key, title, o.top_skip or "heavy top: not computed")
+        return s.skip(o.top_skip or "heavy top: not computed")
     try:
         res = top.run(ctx.body, o.top)
         span = res.default_duration()
         path = res.sample(span)
     except InputError as exc:
-        return _skip(key, title, _not_computed("heavy top", exc))
-    return Section(key, title, res, options=o.top, figure=(path, span), warnings=res.warnings)
+        return s.not_computed(exc)
+    return s.section(res, options=o.top, figure=(path, span), warnings=res.warnings)
 
 
-def _rollcheck(ctx: _Ctx) -> Section:
-    key, title = "rolling-stability", "Rolling stability"
+def _rollcheck(ctx: _Ctx, s: _Step) -> Section:
     o = ctx.opts
     if o.rolling_skip is not None:
-        return _skip(key, title, o.rolling_skip)
+        return s.skip(o.rolling_skip)
     try:
         res = rollcheck.run(ctx.body, o.rollcheck)
     except rollcheck.OffCentreRim as exc:  # a cone or a top on its base rim: not a wheel
-        return _skip(key, title, Note(f"rolling stability: left out: {literal(exc.reason)}"))
+        return s.skip(Note(f"rolling stability: left out: {literal(exc.reason)}"))
     except InputError as exc:
-        return _skip(key, title, _not_computed("rolling stability", exc))
+        return s.not_computed(exc)
     if res.return_code:
         ctx.failed.append("rolling: straight rolling at {speed} is unstable")
-    return Section(key, title, res, options=o.rollcheck, figure=res.curves(), warnings=res.warnings)
+    return s.section(res, options=o.rollcheck, figure=res.curves(), warnings=res.warnings)
 
 
-#: (progress text, section key, title, builder), in the report's order
+#: the sections, in the report's order
 STEPS = (
-    ("parts", "parts", "Parts", _parts),
-    ("mass properties", "mass-properties", "Mass properties", _massprops),
-    ("principal axes", "principal-axes", "Principal axes", _principal),
-    ("balance", "balance", "Balance", _balance),
-    ("whirl", "whirl", "Whirl: critical speeds and unbalance response", _whirl),
-    ("free precession", "free-precession", "Free precession", _precess),
-    ("heavy top", "heavy-top", "Heavy top", _top),
-    ("rolling stability", "rolling-stability", "Rolling stability", _rollcheck),
+    _Step("parts", "parts", "Parts", _parts),
+    _Step("mass properties", "mass-properties", "Mass properties", _massprops),
+    _Step("principal axes", "principal-axes", "Principal axes", _principal),
+    _Step("balance", "balance", "Balance", _balance),
+    _Step("whirl", "whirl", "Whirl: critical speeds and unbalance response", _whirl),
+    _Step("free precession", "free-precession", "Free precession", _precess),
+    _Step("heavy top", "heavy-top", "Heavy top", _top),
+    _Step("rolling stability", "rolling-stability", "Rolling stability", _rollcheck),
 )
 
 
@@ -410,21 +417,19 @@ def _without_part_rows(result: Any) -> Any:
     return result
 
 
-def _guarded(ctx: _Ctx, what: str, key: str, title: str, fn: Callable[[_Ctx], Section]) -> Section:
-    """``fn(ctx)``, the section, or one line saying why not when its numbers are too large or
-    too small to compute with (an arithmetic error, inf/NaN in its JSON): not a bug."""
+def _guarded(ctx: _Ctx, step: _Step) -> Section:
+    """The section ``step`` builds, or one line saying why not when its numbers are too large
+    or too small to compute with (an arithmetic error, inf/NaN in its JSON): not a bug."""
     n_failed = len(ctx.failed)
     try:
-        s = fn(ctx)
+        s = step.build(ctx, step)
         if s.result is not None and hasattr(s.result, "to_json"):
             jsonable(_without_part_rows(s.result).to_json())  # the commands' one finiteness check
     except (OverflowError, ZeroDivisionError, FloatingPointError, NonFiniteResult) as exc:
         del ctx.failed[n_failed:]  # a check of a section that is not there has not failed
         if isinstance(exc, NonFiniteResult):  # its parameters stay parameters (spelled when shown)
-            reason = exc.template or literal(exc)
-        else:
-            reason = f"a value is too large or too small to compute with ({literal(exc)})"
-        return _skip(key, title, Note(f"{what}: not computed: {reason}"))
+            return step.not_computed(exc.template or literal(exc))
+        return step.not_computed(f"a value is too large or too small to compute with ({literal(exc)})")
     return s
 
 
@@ -434,10 +439,10 @@ def run(body: Body, options: ReportOptions,
     called before each of the ``n`` sections."""
     ctx = _Ctx(body, options)
     sections = []
-    for i, (what, key, title, fn) in enumerate(STEPS):
+    for i, step in enumerate(STEPS):
         if progress is not None:
-            progress(what, i, len(STEPS))
-        sections.append(_guarded(ctx, what, key, title, fn))
+            progress(step.what, i, len(STEPS))
+        sections.append(_guarded(ctx, step))
     warnings = tuple(w for s in sections for w in s.warnings)
     return ReportResult(name=body.name, body=body, options=options, sections=tuple(sections),
                         failed=tuple(Note(f) for f in ctx.failed), warnings=warnings)
