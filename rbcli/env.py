@@ -206,9 +206,8 @@ def restore_signals(old: dict) -> None:
 
 def prepare_blas() -> None:
     """One BLAS thread for the command line unless the user chose (``OPENBLAS_NUM_THREADS``),
-    before numpy is imported (a library user keeps theirs): each worker thread busy-waits
-    ~0.1 s after ``import numpy`` (~50 ms a run on 2 cores), and rbcli's 3 x 3 and 3 x n
-    products gain nothing; the numbers are the same bytes (tests/test_same_bytes.py)."""
+    before numpy is imported (a library user keeps theirs): idle worker threads busy-wait
+    (~50 ms a run) and 3 x n products gain nothing; the same bytes (tests/test_same_bytes.py)."""
     if "numpy" not in sys.modules:
         os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 

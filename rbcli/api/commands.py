@@ -23,7 +23,7 @@ __all__ = ["BODY", "INERTIA", "PRINCIPAL", "BALANCE", "FIELD_BALANCE", "PRECESS"
 
 # --- shared
 
-#: the shaft's direction (balance, rollcheck; ``replace(SHAFT, help=...)`` to word it)
+#: the shaft's direction (balance, whirl; ``replace(SHAFT, help=...)`` to word it)
 SHAFT = Param("shaft", "Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's "
               "shaft, else z.", "direction")
 #: a point of the shaft's line
@@ -504,8 +504,7 @@ WHIRL = (
           "texts", counts=(MAX_BEARINGS,), echo="unbalance"),
     Param("unbalance_planes", "Positions z1,z2[,...] along the shaft of the {unbalance} amounts "
           "(as {bearings}).", "values", "length", _UP_TO),
-    Param("shaft", "Shaft direction x,y,z (or x, y, z) in the body frame. Default: the body's "
-          "shaft, else z.", "direction"),
+    SHAFT,
     Param("through", "A point of the shaft (z = 0 there): com, origin or x,y,z (a bare number in "
           "the body's length unit). Default: the body's shaft point, else the origin.", "point"),
     SYMMETRY_TOL,

@@ -101,9 +101,8 @@ def _each(bodies, expr, e, one) -> None:
     """Run ``one(body, many, first)`` per body; go on past bad files, exit 2 at the end if any
     failed.
 
-    ``many`` is true when more than one body was named: ``--json`` then prints JSON Lines
-    (one compact object per body), ``--format csv`` one table with a ``file`` column.
-    ``first`` is true for the first body printed (the CSV's header row comes with it).
+    ``many``: more than one body named (JSON Lines, one CSV table); ``first``: the first
+    body printed (the CSV's header comes with it).
     """
     srcs = c.sources(bodies, expr)
     many = len(srcs) > 1

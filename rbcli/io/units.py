@@ -49,10 +49,8 @@ def canonical_unit(text: str) -> str:
     """A unit text as rbcli shows it: one name of the table, whatever alias or case was
     typed (``RPM``, ``r/min`` -> ``rpm``; ``inches``, ``in.`` -> ``in``; ``lbs``,
     ``pounds`` -> ``lb``; ``feet`` -> ``ft``), as the table's first name; anything else (an
-    expression such as ``g/cm^3``, a name with a power ``m3``) as written, stripped.
-
-    Raises nothing: a text that is not a unit comes back stripped (it is refused where it
-    is read)."""
+    expression such as ``g/cm^3``, a name with a power ``m3``, or no unit) as written,
+    stripped."""
     t = text.strip()
     found = BY_NAME.get(t)
     if found is None and NAME_RE.fullmatch(t.rstrip(".")):

@@ -23,10 +23,8 @@ _NOT_STR = re.compile(
 def dump(data: object) -> str:
     """YAML text of plain data that rbcli's YAML 1.2 loader reads back identically.
 
-    PyYAML quotes strings by the YAML 1.1 rules, so it would leave ``1e3`` (a string that
-    YAML 1.2 reads as a number) bare; every string that could be read as something else
-    (it starts like a number, null or boolean) is double-quoted here. libyaml's emitter
-    (``CSafeDumper``) writes what PyYAML's own does, about three times as fast.
+    PyYAML quotes by the YAML 1.1 rules and would leave ``1e3`` (a number in YAML 1.2)
+    bare: every string that starts like a number, null or boolean is double-quoted here.
     """
     return yaml.dump(data, Dumper=_Dumper, sort_keys=False, allow_unicode=True,
                      default_flow_style=None, width=100)

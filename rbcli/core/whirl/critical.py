@@ -130,10 +130,8 @@ def damped_crossing(rotor: Rotor, crit: CriticalSpeed) -> tuple[float, Mode] | N
     whirl); None when no such speed lies within [crit/4, 4 crit] (a heavily damped mode) or
     the bearing tables' speeds.
 
-    Without damping and cross-coupling it is ``crit.speed`` itself (exact). Otherwise the
-    root of ``g(Omega) = |Im lambda(Omega)| - n Omega`` is bracketed by stepping out from
-    the undamped speed (steps growing by 1.5 from 1e-3 of it) and solved by Brent's method
-    to the last bits (xtol 1e-12 of the speed).
+    Without damping and cross-coupling it is ``crit.speed`` itself; otherwise the root of
+    ``g(Omega) = |Im lambda(Omega)| - n Omega`` bracketed from the undamped speed (Brent).
     """
     n, W0 = crit.order, crit.speed
     lo, hi = rotor.speed_span()
