@@ -1,13 +1,8 @@
-"""A body reduced to a heavy symmetric top on a fixed pivot (``rbcli top``).
-
-:func:`top_from_body` takes a body's mass, centre of mass and inertia tensor about it and a
-pivot, and returns the :class:`TopParams` the closed form of :mod:`rbcli.core.top` needs:
-the distance l from the pivot to the centre of mass, the moment I across the symmetry axis
-about the pivot (parallel-axis theorem) and the moment Is about the axis. A body that is not
-a symmetric top about the pivot–com axis is refused with the numbers
-(:mod:`rbcli.core.symmetry`). Pure physics in SI units; sources: Goldstein, Poole and Safko,
-*Classical Mechanics*, 3rd ed., §5.7; physics sheet ``dynamics.md`` §2 "Setup", §4b item 6.
-"""
+"""A body reduced to a heavy symmetric top on a fixed pivot (``rbcli top``): :func:`top_from_body`
+gives the :class:`TopParams` (l, I about the pivot, Is) the closed form of :mod:`rbcli.core.top`
+needs, or refuses a body that is not a symmetric top about the pivot–com axis with the numbers
+(:mod:`rbcli.core.symmetry`). SI; Goldstein, Poole and Safko, *Classical Mechanics*, 3rd ed.,
+§5.7; physics sheet ``dynamics.md`` §2 "Setup", §4b item 6."""
 
 from __future__ import annotations
 

@@ -1,13 +1,7 @@
-"""A body of revolution reduced to what rolling needs, and the checks of the rolling inputs.
-
-:class:`Wheel` holds the mass and the moments A (across the axle) and C (about it), both
-about the centre of mass G; :func:`wheel_from_body` reduces a general body's mass
-properties to one, symmetrising a nearly symmetric wheel within a tolerance and refusing
-one beyond it with the numbers (:mod:`rbcli.core.symmetry`). :func:`check_geometry`,
-:func:`param_finite` and :func:`blame` check the rim radius, tyre radius, gravity and the
-motion's values for :mod:`rbcli.core.rolling` and :mod:`rbcli.core.rollcircle` and name
-the parameter at fault. Physics sheet ``dynamics.md`` §3. SI units throughout.
-"""
+"""A body of revolution reduced to what rolling needs (:class:`Wheel`: the mass, A across the
+axle and C about it, both about the com; :func:`wheel_from_body`), and the checks of the
+rolling inputs that name the parameter at fault (:func:`check_geometry`, :func:`param_finite`,
+:func:`blame`). Physics sheet ``dynamics.md`` §3; SI."""
 
 from __future__ import annotations
 
