@@ -363,8 +363,8 @@ class FieldBalanceResult(Result):
             out.update(self._residuals_json())
         if self.planes == 2 or (ext and self.cond is not None):
             out["cond"] = float(self.cond)
-            if self.det is not None:
-                out["det_magnitude"] = float(abs(self.det))
+            if len(self.alpha) == len(self.alpha[0]):  # square: |det|, null when it overflows
+                out["det_magnitude"] = None if self.det is None else float(abs(self.det))
             out["ill_conditioned"] = bool(self.ill_conditioned)
         if ext:
             out.update(significance=[{"plane": n, "factor": f, "flagged": f <= self.significance_limit}
