@@ -1,12 +1,9 @@
 """The bearings of a whirl analysis: the body file's ``bearings:`` section
 (:mod:`rbcli.io.bearingtable`) with the options given over it.
 
-Each option sets some of a bearing's eight coefficients (kxx, kxy, kyx, kyy, cxx, cxy,
-cyx, cyy) at every speed, one value for every bearing or one per bearing, in the order of
-:data:`OPTIONS` (so ``stiffness_xy`` overrides the kxy a follower stiffness sets); what no
-option sets comes from the section (a constant or its table against speed), else 0. ``bearings``
-(positions) replaces the section's positions; when it gives another number of bearings the
-section is not used at all.
+The override rule is the man page's ("The options override the section"); the options apply
+in the order of :data:`OPTIONS` (``stiffness_xy`` overrides the kxy a follower stiffness sets),
+what none sets comes from the section, else 0.
 """
 
 from __future__ import annotations

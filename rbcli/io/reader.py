@@ -2,9 +2,9 @@
 
 Every file rbcli reads (a body, an include) goes through :func:`read_regular` (a mesh
 through :func:`open_regular`, to read it in blocks), standard input (BODY ``-``) through
-:func:`read_stream`. Only a regular file is read: a FIFO, a device or a directory is refused
-before a byte is read, without blocking (opened ``O_NONBLOCK``, its type taken from the open
-descriptor); the size is checked before and while reading, standard input's as it comes.
+:func:`read_stream`. A FIFO, a device or a directory is refused before a byte is read,
+without blocking (``O_NONBLOCK``, the type of the open descriptor); the size is checked
+before and while reading.
 
 Errors are :class:`ReadError` (an InputError, exit 2) with the bare ``reason`` (``"no such
 file"``...) for callers to word; a missing file is also a FileNotFoundError, a forbidden

@@ -3,11 +3,10 @@ parts, its holes, its centre of mass and principal axes, in a 3-D view and three
 orthographic views (top, front, side) of the body frame.
 
 Each part is drawn from its :class:`rbcli.body.partmodel.Outline` through
-:mod:`rbcli.render.outline` (the geometry): solids grey with black outlines, thin creases
-and dashed inner surfaces; holes white, dashed, after every solid; point masses as dots; a
-given part as its equivalent ellipsoid, its centre ×; over them the com (+), the principal
-axes 1, 2, 3 as arrows and the body's equivalent ellipsoid dotted. The flat views share
-one scale. Grey scale only.
+:mod:`rbcli.render.outline` (the geometry): solids grey, holes white and dashed after every
+solid, point masses as dots, a given part as its equivalent ellipsoid; over them the com (+),
+the principal axes as arrows and the body's equivalent ellipsoid dotted. One scale for the
+flat views; grey scale only.
 """
 
 from __future__ import annotations

@@ -1,12 +1,10 @@
 """Thresholds of instability: the speeds where a mode's growth rate Re lambda crosses zero.
 
-Each mode is followed by its shape over the speeds (:func:`rbcli.core.whirl.modes.track`),
-never by its frequency rank: a growing mode whose frequency crosses a decaying one's is not
-a change of stability. Where a followed mode's Re lambda changes sign between two speeds
-(read with the growth tolerance :data:`rbcli.core.whirl.modes.GROWTH_RTOL`, which keeps
-the eigen-solve's round-off of a neutral mode from flickering), the threshold is the root
-of Re lambda = 0 itself, by Brent's method, independent of the grid. A root where the mode
-starts growing as the speed rises is an *onset*; one where it stops, a *recovery*.
+Each mode followed by its shape (:func:`rbcli.core.whirl.modes.track`: a growing mode whose
+frequency crosses a decaying one's is no change of stability); where its Re lambda changes
+sign between two speeds (read with :data:`rbcli.core.whirl.modes.GROWTH_RTOL`), the
+threshold is the root of Re lambda = 0 (Brent), independent of the grid: an *onset* where
+the mode starts growing as the speed rises, else a *recovery*.
 """
 
 from __future__ import annotations
