@@ -125,11 +125,10 @@ def install(process: bool = True, quiet=()) -> dict:
     """Handle SIGINT, SIGTERM and SIGHUP as the module docstring says; returns the handlers
     replaced (for :func:`restore`).
 
-    ``process=True`` (``rbcli.__main__``): all three, the deferral timer, the record kept
-    until :func:`exit_process`; until :func:`start` and in the frames of ``quiet`` (the entry
-    point's code objects) a signal waits as during an import. ``process=False`` (a run of
-    :func:`rbcli.cli.main` inside another program): SIGTERM and SIGHUP only, a fresh record,
-    nothing when rbcli's process handlers are there. A signal ignored at start stays ignored.
+    ``process=True``: the record is kept until :func:`exit_process`; until :func:`start` and
+    in the frames of ``quiet`` (the entry point's code objects) a signal waits as during an
+    import. ``process=False``: a fresh record; nothing when rbcli's process handlers are
+    there. A signal ignored at start stays ignored.
     """
     old: dict = {}
     if STATE.process and not process:
@@ -201,10 +200,9 @@ def say(signum: int) -> None:
 
 
 def exit_process(code: int, error: BaseException | None = None):
-    """End rbcli's process with ``code`` (128 + the signal if one was received at any
-    moment): ``atexit`` functions, the streams flushed, ``os._exit`` — never the
-    interpreter's finalisation (see the module docstring). ``error``: an exception that
-    escaped :func:`rbcli.cli.main` (a broken installation), shown with its traceback."""
+    """End rbcli's process with ``code`` (128 + the signal if one was received): ``atexit``
+    functions, the streams flushed, ``os._exit`` (module docstring). ``error``: an exception
+    that escaped :func:`rbcli.cli.main` (a broken installation), shown with its traceback."""
     STATE.exiting = True
     import os
 

@@ -153,12 +153,10 @@ def debug() -> bool:
 
 
 # --- start-up
-# typer 0.29 coerces every non-flag value of the invoked command through a pydantic
-# TypeAdapter, whose first build imports much of pydantic: ~50 ms of CPU on every run,
-# for parameters that are only str, list[str], int, float and bool (bench/README.md,
-# "Start-up"). _Plain gives the value typer's adapter gives where it is obvious (a str,
-# a plain decimal number inside its min/max, None) and hands every other value to typer's
-# own coercion, built lazily, so results and messages stay typer's.
+# typer 0.29 coerces every value through a pydantic TypeAdapter (~50 ms of CPU a run:
+# bench/README.md, "Start-up"). _Plain gives typer's value where it is obvious (a str, a
+# plain decimal number inside its min/max, None) and leaves every other to typer's own
+# coercion, built lazily, so results and messages stay typer's.
 
 _INT = None  # compiled on first use: re is imported by typer already, but keep it lazy
 _FLOAT = None

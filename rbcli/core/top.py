@@ -282,9 +282,8 @@ def _cubic_roots_shifted(
     def next_to_zero(lo_: float, hi_: float) -> float | None:
         # The root beside x = 0 when P is linear there to round-off: x0 = -c0/c1 with
         # |c2 x0| + |β x0²| <= eps/2 |c1| is the root to within rounding (P(x0)/c1 is below
-        # half an ulp of x0). θ0' tiny beside the other rates (c0 ~ 1e-300) put that root
-        # where P's values are subnormal, and Brent's method then crept in steps of
-        # xtol/2 (issue 27: θ0 = 1e-6°, θ0' = 1e-144 rad/s did not converge).
+        # half an ulp of x0): with θ0' tiny beside the other rates (c0 ~ 1e-300) P is
+        # subnormal there and Brent's method would creep in steps of xtol/2.
         if c1 == 0.0:
             return None
         x0 = -c0 / c1
@@ -328,7 +327,7 @@ def _require_representable(
     """Refuse, naming the parameter, a start whose turning-point cubic is beyond doubles:
     |c0| + 2|c1| + 4|c2| + 8β, (b ± a)² and u3 ≈ -c2/β must be finite (the cubic is evaluated
     on |x| <= 2). Blamed: the dominant rate (θ0', φ0' sin θ0, a, sqrt(β)), or g when β
-    underflows. Issue 27: ``--theta-dot 1e300`` ran Brent's method on infinite coefficients.
+    underflows.
     """
     size = abs(c0) + 2.0 * abs(c1) + 4.0 * abs(c2) + 8.0 * beta + bpa * bpa + bma * bma
     tiny = not beta >= np.finfo(float).tiny
