@@ -415,7 +415,7 @@ def _iso(unb: B.Unbalance, installed: Any, o: Options) -> B.IsoCheck:
 
 
 def _plausibility(body: Body, o: Options, axis: Any, P: Any) -> list[str]:
-    """One-line warnings for values far outside the body's scale (issue 13): a correction
+    """The plausibility warnings (:mod:`rbcli.core.scale`): a correction
     radius, a correction plane or a bearing more than 10 body sizes away; a correction
     radius moving faster than sound at a speed typed without its unit."""
     u = op.Units.of(body)

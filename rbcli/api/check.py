@@ -413,10 +413,9 @@ def arguments(kinds: Mapping[str, Callable[[Any, str], Any]], **given: Any) -> d
 def arithmetic(given: Mapping[str, Any]) -> Iterator[None]:
     """The other half of the door: an arithmetic error deep in a computation (a float that
     overflows, a division by zero) with values that passed every check comes out as a
-    :class:`rbcli.NonFiniteResult` (an InputError) naming the parameters ``given`` (those not
-    None or False), as the command line says it (exit 2), never as itself. numpy's warnings
-    of such values are not shown (the result's finiteness check refuses what they would
-    warn of); numpy's error state is the caller's again afterwards."""
+    :class:`rbcli.NonFiniteResult` (an InputError, exit 2) naming the parameters ``given``
+    (those not None or False). numpy's warnings of such values are not shown (the result's
+    finiteness check refuses what they warn of); its error state is restored afterwards."""
     import numpy as np
 
     try:

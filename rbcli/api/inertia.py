@@ -34,12 +34,11 @@ class Reference:
 
     Attributes
     ----------
-    point : tuple of 3 floats, or None — m, body frame; None means the body's centre of mass
-        (known only once the parts are combined)
-    label : str — how tables name it: ``"the com"``, ``"the origin"``, ``"the body's
-        reference point"`` or ``"[x,y,z]"`` (the text as given)
-    param : str — the parameter at fault if the point is impossible to compute with:
-        ``"about"`` (given) or ``"body_reference"`` (the body's default)
+    point : tuple of 3 floats, or None — m, body frame; None: the com (known once the parts
+        are combined)
+    label : str — how tables name it (``"the com"``, ``"[x,y,z]"`` as given)
+    param : str — the parameter at fault if the point cannot be computed with: ``"about"``
+        or ``"body_reference"`` (the body's default)
     """
 
     point: tuple[float, float, float] | None
@@ -82,9 +81,8 @@ class Reference:
 
 
 def snap(values: Any, scale: float | None = None, rtol: float = 1e-14) -> np.ndarray:
-    """``values`` as a float ndarray (a copy) with entries below ``rtol`` times the largest
-    magnitude (or ``scale``) set to exactly 0 (round-off, e.g. a product of inertia of 1e-18
-    next to moments of 1): what JSON and tables show. No negative zeros."""
+    """``values`` as a float ndarray (a copy) with entries at most ``rtol`` times the largest
+    magnitude (or ``scale``) set to 0 (round-off): what JSON and tables show. No -0.0."""
     a = np.array(values, dtype=float)
     mag = np.abs(a)
     a[mag <= rtol * (float(mag.max()) if scale is None else scale)] = 0.0
@@ -126,7 +124,7 @@ def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any, type
 
 
 def plausibility(body: Body | None, ref: Reference, omega: Any = None, typed: bool = False) -> tuple[str, ...]:
-    """One-line warnings for values far outside the body's scale (issue 13): a reference
+    """The plausibility warnings (:mod:`rbcli.core.scale`): a reference
     point more than 10 body sizes away, a rotation about it whose rim is faster than sound."""
     far_point = ref.param == "about" and ref.point is not None
     if body is None or not far_point and omega is None:

@@ -147,11 +147,10 @@ def _flag(value: Any, param: str) -> bool | None:
 class Options:
     """The parameters of one call, read once: each value in SI (None: not given).
 
-    ``o.speed`` is the value of parameter ``speed``; :attr:`given` names the parameters the
-    caller gave (a value equal to the command line's default is not given: the command line
-    cannot tell), :attr:`typed` the unit typed after a number (``"0.5 g"``: ``("mass_step",
-    "g")``), which the options table echoes, and :attr:`raw` each value as the caller gave it
-    (for labels that quote it). :attr:`params` is the command's table.
+    ``o.speed`` is the value of parameter ``speed``; :attr:`given` names those the caller gave
+    (one equal to the command line's default is not given), :attr:`typed` the unit typed
+    after a number (``("mass_step", "g")``), :attr:`raw` each value as given (for labels),
+    :attr:`params` the command's table.
     """
 
     params: tuple[Param, ...]

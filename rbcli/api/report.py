@@ -429,7 +429,8 @@ def _guarded(ctx: _Ctx, step: _Step) -> Section:
         del ctx.failed[n_failed:]  # a check of a section that is not there has not failed
         if isinstance(exc, NonFiniteResult):  # its parameters stay parameters (spelled when shown)
             return step.not_computed(exc.template or literal(exc))
-        return step.not_computed(f"a value is too large or too small to compute with ({literal(exc)})")
+        return step.not_computed(f"a value is too large or too small to compute with "
+                                 f"({literal(exc)})")
     return s
 
 

@@ -176,7 +176,7 @@ def _tyre(o: Options, rim: Rim | None, a: float, source: str) -> tuple[float, st
 
 
 def _plausibility(body: Body, o: Options, a: float) -> tuple[str, ...]:
-    """One-line warnings for values far outside the body's scale (issue 13): a rim radius
+    """The plausibility warnings (:mod:`rbcli.core.scale`): a rim radius
     or a point more than 10 body sizes away, a rim faster than sound."""
     u = op.Units.of(body)
     sc = body_scale(body.parts)
@@ -231,9 +231,8 @@ class RollcheckResult(Result):
     @property
     def asymmetry(self) -> AxialSymmetry | None:
         """How far a nearly symmetric wheel departs from a body of revolution about its
-        axle (:class:`rbcli.core.symmetry.AxialSymmetry`: the moments across about the com,
-        the coupling, the com's offset relative to the rim radius); None when it is one to
-        rounding (1e-6)."""
+        axle (:class:`rbcli.core.symmetry.AxialSymmetry`, the com's offset relative to the
+        rim radius); None when it is one to rounding (1e-6)."""
         return self.wheel.asymmetry
 
     @property

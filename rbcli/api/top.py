@@ -69,7 +69,7 @@ def parse(body: Body | None, **kwargs: Any) -> Options:
 
 def plausibility(body: Body, point: Any, spin: float, option: str, axis: Any = None,
                  through: Any = None, typed: bool = False) -> tuple[str, ...]:
-    """Located one-line warnings for values far outside the body's scale (issue 13): a pivot
+    """The plausibility warnings (:mod:`rbcli.core.scale`), located: a pivot
     more than 10 body sizes away, a rim faster than sound (the spin about ``axis`` through
     ``through``, default the com; a top's axis runs from ``through``, its pivot, to the com)."""
     sc = body_scale(body.parts)
@@ -124,8 +124,8 @@ class TopResult(Result):
     @property
     def asymmetry_effect(self) -> float | None:
         """The relative size of the answer's error from symmetrising the body: of the order
-        of its largest departure (the moments across differ by δ; the real body's moment
-        across swings between them as it spins). None when symmetric."""
+        of its largest departure (the real moment across swings between the two as it spins).
+        None when symmetric."""
         a = self.asymmetry
         return None if a is None else a.departure
 

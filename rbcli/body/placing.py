@@ -1,8 +1,8 @@
-"""Placing primitive parts in batches (issue 15: 100 000-part bodies): the loader keeps each
+"""Placing primitive parts in batches (100 000-part bodies): the loader keeps each
 checked part as a :class:`Pending`; :func:`finish` places a batch at once (``com = at + R c``,
 ``J = R (m U) Rᵀ`` as stacked products: the same numbers, bit for bit, as one by one) and makes
 their :class:`rbcli.body.partmodel.Part` s. An included file's parts stay arrays (a
-:class:`Stack`) that each use moves at once (issue 16).
+:class:`Stack`) that each use moves at once.
 """
 
 from __future__ import annotations

@@ -1,8 +1,5 @@
-"""Densities that matter has (issue 24): a density, areal density or linear density no
-matter has is warned, once a body, with its value in SI and the reading the user probably
-meant — most often an SI density typed as a bare number in a body whose bare numbers are
-in other units (``density: 7850`` in a mm body is 7850 kg/mm³, 7.85e12 kg/m³).
-
+"""Densities that matter has (issue 24): one no matter has is warned, once a body, with its
+value in SI and the reading probably meant (``density: 7850`` in a mm body is 7850 kg/mm³).
 The bounds are what matter has, not what is usual, so every warning is true:
 
 - no matter is denser than osmium, 22 590 kg/m³ (22.587 ± 0.009 g/cm³ from its lattice

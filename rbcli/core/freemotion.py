@@ -191,12 +191,8 @@ class FreeMotion:
         return evaluate(self, t)
 
     def to_json(self) -> dict[str, Any]:
-        """Plain-JSON form (SI, degrees under ``*_deg``); every key always present, null = n/a.
-
-        SPEC keys: ``angular_momentum``, ``kinetic_energy``, ``symmetric``, ``period``,
-        ``circles_axis``, ``precession_rate``, ``space_precession_rate``, ``body_cone_deg``,
-        ``space_cone_deg``, ``flip_interval``; the others are additions.
-        """
+        """Plain-JSON form (SI, degrees under ``*_deg``); every key always present, null = n/a
+        (which are SPEC §3's and which additions: SPEC)."""
 
         def f(x: float | None) -> float | None:
             return None if x is None else float(x)

@@ -135,10 +135,9 @@ class Rotor:
 
 
 def rotor_from_body(mass: float, com, inertia_com, axis, *, sym_rtol: float = 1e-6) -> Rotor:
-    """C and A (the mean of the two moments across) of a body (nearly) symmetric about its spin
-    ``axis``, about the com; ``sym_rtol`` as :func:`rbcli.core.symmetry.require`.
-    :class:`rbcli.core.symmetry.Asymmetric` beyond it; ValueError for a zero or non-finite
-    axis or zero moments."""
+    """C and A (:func:`rbcli.core.symmetry.axial_moments`, its ValueErrors) of a body (nearly)
+    symmetric about its spin ``axis``; :class:`rbcli.core.symmetry.Asymmetric` beyond
+    ``sym_rtol`` (:func:`rbcli.core.symmetry.require`)."""
     m = finite("the mass", mass)
     if m <= 0.0:
         raise ValueError(f"the mass must be positive, got {m:.6g}")

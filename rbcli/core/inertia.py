@@ -113,9 +113,8 @@ def combine(parts: Iterable[Part]) -> MassProps:
 def body_mass_props(body: Any) -> MassProps:
     """:func:`combine` of ``body.parts``, computed once per body.
 
-    The body loader leaves the mass properties it computed (to check the body) on the
-    :class:`rbcli.body.model.Body`; a body made otherwise gets them on first use. The result's
-    arrays are the caller's own copies.
+    The loader leaves them on the :class:`rbcli.body.model.Body`; a body made otherwise gets
+    them on first use. The arrays are the caller's own copies.
     """
     if not remembered(body):
         remember_mass_props(body, combine(body.parts))

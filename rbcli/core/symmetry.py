@@ -121,7 +121,8 @@ class Asymmetric(ValueError):
         self.tolerance = tolerance
 
 
-def axial_moments(inertia_com, axis, axis_name: str, zero: str) -> tuple[np.ndarray, np.ndarray, float, float]:
+def axial_moments(inertia_com, axis, axis_name: str,
+                  zero: str) -> tuple[np.ndarray, np.ndarray, float, float]:
     """(J, n, C, A) of a body's tensor about its com (symmetrised) and the unit ``axis``:
     C = n·J·n, A the mean of the two moments across n. ValueError, naming the ``axis_name``
     ("axle", "spin axis"), for a non-finite tensor or axis, a zero tensor (``zero`` says why

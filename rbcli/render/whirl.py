@@ -416,7 +416,8 @@ def campbell_figure(res: WhirlResult):
 
 
 def map_figure(res: WhirlResult):
-    """The undamped critical speed map of ``--plot-map`` (the man page's notes). A matplotlib Figure."""
+    """The undamped critical speed map of ``--plot-map`` (the man page's notes). A matplotlib
+    Figure."""
     cm = res.critical_speed_map
     k = np.asarray(cm.stiffness)
     fig, axes = figure(f"whirl: {res.name} — undamped critical speed map", size=(7.5, 5.0))
