@@ -118,6 +118,21 @@ def test_the_sheets_worked_examples_to_their_printed_digits():
     assert [(x.whirl, x.kind, x.reason) for x in missing] == [("forward", "conical", "gyroscopic")]
 
 
+def test_a_tiny_rotor_has_the_shapes_of_a_normal_one():
+    """A rotor of 1e-300 kg (its moments likewise) is the 1 kg rotor whirling 1e150 times
+    faster: the same unit shapes and the same mode following. Its eigenvectors' entries
+    (~1/|lambda|) times sqrt(m) once underflowed to zero shapes, so no step of the Campbell
+    diagram was clear and every one was halved 12 levels deep (2^12 eigen-solves a step)."""
+    a = W.Rotor(1.0, 0.3, 0.1, 0.0, (W.Bearing(-0.2, 1e6, 1e6), W.Bearing(0.3, 1e6, 1e6)))
+    b = W.Rotor(1e-300, 0.3e-300, 0.1e-300, 0.0, a.bearings)
+    ca, cb = W.campbell(a, np.linspace(0, 4e3, 9)), W.campbell(b, np.linspace(0, 4e153, 9))
+    assert np.allclose(np.linalg.norm(cb.vectors, axis=-1), 1.0, rtol=1e-12)  # unit shapes
+    # round-off of two eigen-solves of matrices that differ by scale only: ~1e-15
+    assert np.allclose(abs(cb.vectors), abs(ca.vectors), atol=1e-9)
+    assert (cb.whirl == ca.whirl).all() and (cb.kind == ca.kind).all()
+    assert (W.track(cb) == W.track(ca)).all()
+
+
 def test_orders_and_coincident_inertia():
     # order 2: B = diag(4m, 4It -/+ 2Ip); Ip = 2 It exactly: the 2x forward conical crossing is
     # at infinity ("coincident"), and 1x has none ("gyroscopic")

@@ -267,6 +267,7 @@ def shapes(rotor: Rotor, parts: np.ndarray, oscillating: np.ndarray) -> dict[str
     the mode is *conical* when the outermost bearings move out of phase, *cylindrical* when in
     phase with the smaller at least half the larger, else *mixed*."""
     m, It = rotor.mass, rotor.It
+    parts = _unit(parts)  # no underflow below in m |r|^2 and r conj(phi) (a tiny rotor's)
     ef = m * cabs(parts[..., 0]) ** 2 + It * cabs(parts[..., 1]) ** 2
     eb = m * cabs(parts[..., 2]) ** 2 + It * cabs(parts[..., 3]) ** 2
     total = ef + eb
@@ -311,9 +312,16 @@ def weighted(rotor: Rotor, parts: np.ndarray) -> np.ndarray:
     """(..., 4) complex: the unit shape weighted for comparisons between modes of one rotor
     (MAC), ``[sqrt(m) r_f, sqrt(It) phi_f, sqrt(m) r_b, sqrt(It) phi_b]`` scaled to 1."""
     sm, si = math.sqrt(rotor.mass), math.sqrt(rotor.It)
-    w = parts * np.array([sm, si, sm, si])
+    w = _unit(_unit(parts) * np.array([sm, si, sm, si]))  # a tiny rotor's does not underflow
     n = np.linalg.norm(w, axis=-1, keepdims=True)
     return w / np.where(n > 0.0, n, 1.0)
+
+
+def _unit(a: np.ndarray) -> np.ndarray:
+    """``a`` (..., 4) times the power of 2 (exact: no round-off) that brings its largest
+    |entry| into [0.5, 1)."""
+    e = np.frexp(np.max(cabs(a), axis=-1, keepdims=True))[1]
+    return a * np.ldexp(1.0, -np.clip(e, -1000, 1000))
 
 
 def cabs(z) -> np.ndarray:
