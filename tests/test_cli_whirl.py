@@ -85,6 +85,19 @@ def test_response_figure_of_peaks_without_an_amplification_factor(cli, tmp_path)
     assert "AF " not in (tmp_path / "r.svg").read_text(encoding="utf-8")
 
 
+@pytest.mark.parametrize("planes", ["-1e160,1e160", "-1e150,1e150"])
+def test_an_unbalance_moment_that_overflows_is_refused(cli, tmp_path, planes):
+    # 1e160 kg m at z = -1e160 m: its moment is inf, every response speed was left out as
+    # "an undamped critical speed on the grid" (with damping), and the response figure of no
+    # speeds exited 70 (IndexError); at --speed the damped rotor was said to sit on a critical
+    r = cli("whirl", *CYL, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--damping", "300",
+            "--points", "21", "--unbalance", "1e160@0,0@0", f"--unbalance-planes={planes}",
+            "--speed", "300", "--plot-response", str(tmp_path / "r.svg"))
+    assert r.code == 2 and len(r.err.splitlines()) == 1, r.err
+    assert r.err.startswith("rbcli: --unbalance, --unbalance-planes: the unbalance force")
+    assert not (tmp_path / "r.svg").exists()
+
+
 def test_undamped_response_spikes_are_left_out_with_a_warning(cli):
     # 0..250 rad/s in 201 points puts 200 rad/s (the cylindrical critical speed) on the grid
     r = cli("whirl", *CYL, "--bearings=-0.2,0.2", "--stiffness", "1e6", "--unbalance", "1 g*mm@0",

@@ -489,6 +489,11 @@ def _run(body: Body, o: Options) -> WhirlResult:
     ranks = W.track(cb)
     forcing = W.Forcing(unb.static, unb.couple) if o.unbalance is None else \
         W.Forcing.from_planes(rotor.z_com, list(o.unbalance))
+    top = max([rng[1], *(o.speed or ())])
+    if not math.isfinite(top * top * (abs(forcing.static) + abs(forcing.couple))):
+        what = "the body's unbalance" if o.unbalance is None else "{unbalance}, {unbalance_planes}"
+        raise InputError(f"{what}: the unbalance force at {top:.6g} rad/s, or its moment, overflows "
+                         "double precision (beyond 1e308); give values of a physical size")
     crit_rows = _criticals(rotor, crits, forcing, rng)
     stab = _stability(rotor, cb, ranks, o.speed)
     if not stab.stable_in_range or stab.stable_at_speed is False:
