@@ -346,6 +346,24 @@ def test_damped_single_mass_response_peak_half_power_and_af():
         assert p.amplification_factor == pytest.approx(Nc / (N2 - N1), rel=RTOL)
 
 
+@pytest.mark.parametrize("scale", [1e-300, 1e290])
+def test_peaks_of_a_tiny_or_huge_unbalance_scale_with_it(scale):
+    """The response is linear in the unbalance: U times 2^k (exact) gives the same peak
+    speeds, half-power points and AF, the amplitudes times 2^k. With U = 1e-300 kg m the
+    half-power root solve's products of amplitudes (~1e-300 each) underflowed to 0 and
+    divided by it (ZeroDivisionError: exit 2, 'the result overflows')."""
+    rotor = W.Rotor(30.0, 0.8, 0.3, 0.05, (W.Bearing(-0.3, 2e6, 2e6, cxx=400.0, cyy=400.0),
+                                          W.Bearing(0.3, 2e6, 2e6, cxx=400.0, cyy=400.0)))
+    s = 2.0 ** math.floor(math.log2(scale))
+    one, big = W.Forcing(2e-3 + 1e-3j, 1e-4j), W.Forcing(s * (2e-3 + 1e-3j), s * 1e-4j)
+    speeds = np.linspace(0.0, 800.0, 41)
+    want = W.peaks(rotor, one, W.response(rotor, one, speeds))
+    got = W.peaks(rotor, big, W.response(rotor, big, speeds))
+    assert len(want) == 2 and [(p.speed, p.half_power, p.amplification_factor) for p in got] == \
+        [(p.speed, p.half_power, p.amplification_factor) for p in want]
+    assert [p.amplitude for p in got] == [s * p.amplitude for p in want]
+
+
 def test_amplitude_slope_is_the_derivative():
     rotor = W.Rotor(30.0, 0.8, 0.5, 0.1, (W.Bearing(-0.3, 2e6, 3e6, 1e4, -1e4, 300.0, 500.0),
                                          W.Bearing(0.35, 1e6, 1e6, 0, 0, 200.0, 200.0)))

@@ -311,8 +311,14 @@ def peaks(rotor: Rotor, forcing: Forcing, res: Response) -> list[Peak]:
     """
     out = []
     W = res.speeds
+    # the response is linear in the forcing: solved for one scaled by a power of 2 (exact)
+    # to amplitudes near 1, so that the root solves' products of values neither under- nor
+    # overflow (an unbalance of 1e-300 kg m)
+    e = math.frexp(float(np.max(res.displacement, initial=0.0)))[1]
+    k = math.ldexp(1.0, -min(max(e, -1000), 1000))
+    forcing = Forcing(k * forcing.static, k * forcing.couple)
     for i in range(len(rotor.bearings)):
-        amps = res.displacement[i]
+        amps = k * res.displacement[i]
         f = lambda x, i=i: amplitude(rotor, forcing, i, x)  # noqa: E731
         for j in range(1, len(W) - 1):
             if not (amps[j] > amps[j - 1] and amps[j] >= amps[j + 1]):
@@ -323,9 +329,9 @@ def peaks(rotor: Rotor, forcing: Forcing, res: Response) -> list[Peak]:
             N1 = _half_power(f, Nc, level, W, amps, j, -1, 0.0)
             N2 = _half_power(f, Nc, level, W, amps, j, +1, 10.0 * Nc)
             if N1 is None or N2 is None or not N2 > N1:
-                out.append(Peak(i, Nc, A, None, None))
+                out.append(Peak(i, Nc, A / k, None, None))
             else:
-                out.append(Peak(i, Nc, A, (N1, N2), Nc / (N2 - N1)))
+                out.append(Peak(i, Nc, A / k, (N1, N2), Nc / (N2 - N1)))
     return out
 
 
