@@ -29,6 +29,10 @@ FAN = [str(EXAMPLES / "fan_rotor.yaml"), "--bearings", "0,500mm", "--stiffness",
     (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--plot", "a.png", "--plot-response", "a.png"],
      "--plot-response: 'a.png' is also the --plot file"),
     (["--bearings=-0.2,0.2", "--stiffness", "1e6", "--plot", "a.txt"], "--plot:"),
+    # bearings 1e-7 m apart, 5 m from the com: K singular to round-off (a singular solve, once
+    # the generic 'the result overflows' line naming nothing); 1e-10 m apart likewise
+    (["--bearings", "5,5.0000001", "--stiffness", "1e6"], "the bearings span 1e-07 m, too little"),
+    (["--bearings", "0.29,0.2900000001", "--stiffness", "1e6"], "give --bearings further apart"),
 ])
 def test_bad_input_is_one_located_line_exit_2(cli, args, says):
     r = cli("whirl", *CYL, *args)

@@ -279,6 +279,13 @@ def _check_scale(rotor, o: Options) -> None:
             f"{math.sqrt(np.max(w2)):.3g} rad/s and its damping rates reach {np.max(c):.3g} 1/s (a "
             f"spread above {SPREAD**2:.0e}, or damping above {SPREAD:.0e} times the frequencies, "
             "leaves the eigen-solve nothing of the slower modes); check the values and their units")
+    sv = np.linalg.svd(K / np.outer(m, m), compute_uv=False)  # coupled: translation and tilt
+    if np.min(sv) * SPREAD**4 < np.max(sv):
+        z = [b.z for b in rotor.bearings]
+        far = max(abs(x - rotor.z_com) for x in z)
+        raise InputError(f"whirl: the bearings span {max(z) - min(z):.3g} m, too little for their distance "
+                         f"from the centre of mass ({far:.3g} m): the rotor's tilt stiffness is lost in "
+                         "round-off; give {bearings} further apart")
     for p in o.params:  # the speeds given: the operating speed and the range
         v = getattr(o, p.name) if p.quantity == "angular_speed" else None
         if v is not None and max(v) > SPREAD * top:
