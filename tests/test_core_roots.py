@@ -27,3 +27,15 @@ def test_errors():
     with pytest.raises(RuntimeError):
         brentq(lambda x: x ** 3 - 2.0, 0.0, 3.0, xtol=0.0, rtol=0.0, maxiter=2)
     assert brentq(lambda x: x, 0.0, 1.0) == 0.0
+
+
+@pytest.mark.parametrize("fscale, xscale", [(1e-300, 1.0), (1.0, 1e200), (1e-200, 1e80)])
+def test_a_denominator_that_underflows_bisects_as_scipy_does(fscale, xscale):
+    # the extrapolation's denominator (a product of two slopes and a difference of values)
+    # underflows to 0 for tiny values or wide brackets (whirl on 1e160 N/m bearings): C's
+    # division gives inf or NaN and scipy bisects; the port raised ZeroDivisionError
+    f = lambda x: fscale * (np.exp(x / xscale - 1.0) - 1.5)  # noqa: E731
+    x = brentq(f, 0.0, 3.0 * xscale, xtol=1e-14 * xscale, rtol=8.881784197001252e-16)
+    assert x == pytest.approx(xscale * (1.0 + np.log(1.5)), rel=1e-13)  # xtol + rtol: ~1e-14
+    scipy_brentq = pytest.importorskip("scipy.optimize").brentq
+    assert x == scipy_brentq(f, 0.0, 3.0 * xscale, xtol=1e-14 * xscale, rtol=8.881784197001252e-16)

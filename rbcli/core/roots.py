@@ -48,7 +48,8 @@ def brentq(f: Callable[[float], float], xa: float, xb: float, *, xtol: float = 2
             else:  # extrapolate
                 dpre = (fpre - fcur) / (xpre - xcur)
                 dblk = (fblk - fcur) / (xblk - xcur)
-                stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+                den = dblk * dpre * (fblk - fpre)  # 0 when it underflows: C's x/0 is inf or
+                stry = -fcur * (fblk * dblk - fpre * dpre) / den if den else math.inf  # NaN: bisect
             if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta):
                 spre = scur  # good short step
                 scur = stry
