@@ -133,6 +133,20 @@ def test_a_tiny_rotor_has_the_shapes_of_a_normal_one():
     assert (W.track(cb) == W.track(ca)).all()
 
 
+@pytest.mark.parametrize("gap", [1e-7, 1e-6])
+def test_bearings_almost_at_one_point_are_not_unstable(gap):
+    """Bearings 0.1-1 um apart leave a nearly free pivot: a root of |lambda| ~1e-9 whose real
+    part (~1e-16 to 1e-14 of the largest |lambda|) is the eigen-solve's round-off. Positive
+    stiffness and damping with a skew gyroscopic matrix cannot make a mode grow; its sign
+    once read as growth (damping ratio -1, "UNSTABLE ... cross-coupled stiffness")."""
+    b = (W.Bearing(-0.3, 1e6, 1e6, cxx=100.0, cyy=100.0), W.Bearing(-0.3 + gap, 1e6, 1e6, cxx=100.0, cyy=100.0))
+    rotor = W.Rotor(50.0, 50 * (3 * 0.1**2 + 0.6**2) / 12, 0.5 * 50 * 0.1**2, 0.0, b)
+    cb = W.campbell(rotor, np.linspace(0.0, 1000.0, 201))
+    st = stability(cb, W.track(cb))
+    assert not cb.growing.any() and cb.damping_ratio.min() >= 0.0
+    assert st.threshold is None and not st.thresholds
+
+
 def test_orders_and_coincident_inertia():
     # order 2: B = diag(4m, 4It -/+ 2Ip); Ip = 2 It exactly: the 2x forward conical crossing is
     # at infinity ("coincident"), and 1x has none ("gyroscopic")

@@ -25,13 +25,17 @@ from rbcli.core.whirl.model import (
 )
 
 __all__ = ["Mode", "Campbell", "campbell", "modes_at", "track", "branch_roots", "follow",
-           "followed", "GROWTH_RTOL"]
+           "followed", "growth", "GROWTH_RTOL"]
 
 #: a mode grows when Re lambda exceeds this fraction of its |lambda| (well above the
 #: eigen-solve's round-off, ~1e-15 of the largest root; a growth this slow doubles in some
 #: 1e9 periods). Each root is judged against its own |lambda|: a slow mode's growth beside a
 #: fast one is still growth. Thresholds are the roots of Re lambda = 0 itself.
 GROWTH_RTOL = 1e-10
+#: a part of a root within this fraction of the largest |lambda| at its speed is the
+#: eigen-solve's round-off (~1e-16 to 1e-14 of it seen), read as 0: a mode whose |lambda|
+#: is itself that small (bearings almost at one point: a nearly free pivot) has no sign
+SOLVE_RTOL = 1e-12
 #: a step between two speeds is clear when every mode's shape at the first has a MAC of
 #: at least this with the mode it is assigned at the second (else the step is halved)
 CLEAR_MAC = 0.8
@@ -43,7 +47,7 @@ class Mode:
     """One whirl mode at one speed: ``eigenvalue`` lambda (1/s), ``frequency`` |Im lambda|
     (rad/s, fixed frame), ``damping_ratio``, ``log_decrement``, ``shape`` (:class:`ModeShape`),
     ``vector`` (unit, mass-weighted [r_f, phi_f, r_b, phi_b] for the MAC) and ``growing``
-    (Re lambda > GROWTH_RTOL |lambda|)."""
+    (:func:`growth` > 0)."""
 
     eigenvalue: complex
     frequency: float
@@ -73,7 +77,7 @@ def _isotropic(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
     if rotor.conservative:
         lam = 1j * lam.imag
     else:  # an overdamped root: its imaginary part is the eigen-solve's round-off, not a whirl
-        lam = np.where(np.abs(lam.imag) <= 1e-12 * scale, lam.real + 0j, lam)
+        lam = np.where(np.abs(lam.imag) <= SOLVE_RTOL * scale, lam.real + 0j, lam)
     u = np.swapaxes(V[:, :2, :], 1, 2)  # (n, 4 modes, [R, PHI])
     zero = np.zeros_like(u)
     fwd = (lam.imag >= 0.0)[..., None]
@@ -92,7 +96,7 @@ def _real(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     A[:, 4:, :4] = -Minv * K
     A[:, 4:, 4:] = -Minv * (C + sp[:, None, None] * rotor.G())
     lam8, V8 = np.linalg.eig(A)
-    tol = 0.0 if rotor.conservative else 1e-12 * np.max(np.abs(lam8), axis=1, keepdims=True)
+    tol = 0.0 if rotor.conservative else SOLVE_RTOL * np.max(np.abs(lam8), axis=1, keepdims=True)
     upper = lam8.imag > tol
     real = np.abs(lam8.imag) <= tol
     # roots whirling first (their order kept), then the real ones by value, the rest last
@@ -107,6 +111,14 @@ def _real(rotor: Rotor, sp: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     lam = np.where(osc, 1j * la.imag if rotor.conservative else la, np.maximum(la.real, lb.real) + 0j)
     q = np.take_along_axis(np.swapaxes(V8[:, :4, :], 1, 2), ia[..., None], 1)
     return lam, real_parts(np.where(osc[..., None], q, q.real + 0j)), osc
+
+
+def growth(lam: np.ndarray) -> np.ndarray:
+    """Re lambda of the modes (..., 4) at a speed, 0 where it is within GROWTH_RTOL of the
+    root's |lambda| or SOLVE_RTOL of the largest |lambda| there (a sign there means nothing)."""
+    a = cabs(lam)
+    tol = np.maximum(GROWTH_RTOL * a, SOLVE_RTOL * np.max(a, axis=-1, keepdims=True))
+    return np.where(np.abs(lam.real) <= tol, 0.0, lam.real)
 
 
 def _order(lam: np.ndarray, code: np.ndarray) -> np.ndarray:
@@ -145,15 +157,15 @@ class Campbell:
     @property
     def damping_ratio(self) -> np.ndarray:
         a = cabs(self.eigenvalues)
-        return np.divide(-self.eigenvalues.real, a, out=np.zeros(a.shape), where=a > 0.0)
+        return np.divide(-growth(self.eigenvalues), a, out=np.zeros(a.shape), where=a > 0.0)
 
     def mode(self, j: int, i: int) -> Mode:
         """Mode i (by frequency) at speed j."""
         lam = complex(self.eigenvalues[j, i])
-        node = float(self.node[j, i])
+        node, banded = float(self.node[j, i]), complex(growth(self.eigenvalues[j])[i], lam.imag)
         shape = ModeShape(WHIRLS[self.whirl[j, i]], float(self.share[j, i]), KINDS[self.kind[j, i]],
                           None if math.isnan(node) else node)
-        return Mode(lam, abs(lam.imag), damping_ratio(lam), log_decrement(lam), shape,
+        return Mode(lam, abs(lam.imag), damping_ratio(banded), log_decrement(banded), shape,
                     self.vectors[j, i], bool(self.growing[j, i]))
 
     def modes(self, j: int) -> list[Mode]:
@@ -175,7 +187,7 @@ def campbell(rotor: Rotor, speeds) -> Campbell:
     take = lambda a: np.take_along_axis(a, idx, 1)  # noqa: E731
     lam = take(lam)
     arrays = [sp, lam, np.take_along_axis(w, idx[..., None], 1), take(s["whirl"]), take(s["kind"]),
-              take(s["share"]), take(s["node"]), lam.real > GROWTH_RTOL * cabs(lam)]
+              take(s["share"]), take(s["node"]), growth(lam) > 0.0]
     for a in arrays:
         a.setflags(write=False)
     return Campbell(*arrays, rotor)

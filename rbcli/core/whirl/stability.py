@@ -2,7 +2,7 @@
 
 Each mode followed by its shape (:func:`rbcli.core.whirl.modes.track`: a growing mode whose
 frequency crosses a decaying one's is no change of stability); where its Re lambda changes
-sign between two speeds (read with :data:`rbcli.core.whirl.modes.GROWTH_RTOL`), the
+sign between two speeds (read by :func:`rbcli.core.whirl.modes.growth`), the
 threshold is the root of Re lambda = 0 (Brent), independent of the grid: an *onset* where
 the mode starts growing as the speed rises, else a *recovery*.
 """
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbcli.core.whirl.modes import GROWTH_RTOL, Campbell, Mode, branch_roots
+from rbcli.core.whirl.modes import Campbell, Mode, branch_roots, growth
 
 __all__ = ["Threshold", "Stability", "stability"]
 
@@ -62,8 +62,7 @@ class Stability:
 
 def stability(cb: Campbell, ranks: np.ndarray) -> Stability:
     """The thresholds of the modes of ``cb`` followed by ``ranks`` (see the module)."""
-    re = cb.eigenvalues.real
-    banded = np.where(np.abs(re) <= GROWTH_RTOL * np.abs(cb.eigenvalues), 0.0, re)
+    banded = growth(cb.eigenvalues)
     out = []
     for x, k, md, after in branch_roots(cb, ranks, banded, lambda lam, x: lam.real):
         out.append(Threshold(x, k, "onset" if after > 0.0 else "recovery", md))
