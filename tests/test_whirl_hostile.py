@@ -183,6 +183,7 @@ def test_a_bad_coefficient_table_is_one_located_line(cli, tmp_path, csv, says):
     assert r.code == 2, (r.code, r.err)
     lines = r.err.splitlines()
     assert len(lines) == 1 and says in lines[0] and "t.csv" in lines[0], r.err
+    assert lines[0].count("t.csv") == 1, r.err  # located once ('t.csv:3: t.csv: ...' before)
 
 
 def test_every_row_order_but_the_ascending_one_is_refused(tmp_path):

@@ -176,19 +176,19 @@ def _header(ctx: _Ctx, cells: list[str], path: str, override: dict) -> list[tupl
         name, _, unit = cell.strip().partition("[")
         name = name.strip().lower()
         if name not in COLUMNS:
-            raise InputError(f"{path}: unknown column '{cell.strip()}' in the header; columns: "
+            raise InputError(f"unknown column '{cell.strip()}' in the header; columns: "
                              f"{', '.join(COLUMNS)} (each optionally with its unit, 'kxx [N/mm]')",
                              Location(path, 1))
         if name in seen:
-            raise InputError(f"{path}: column '{name}' named twice in the header", Location(path, 1))
+            raise InputError(f"column '{name}' named twice in the header", Location(path, 1))
         seen.add(name)
         kind = _kind_of(name)
         unit = unit.rstrip().rstrip("]").strip()
-        f = ctx.value(f"1 {unit}", kind, f"{path}: column {name}", {}, None, 1) if unit else \
+        f = ctx.value(f"1 {unit}", kind, f"column {name}", {}, None, 1) if unit else \
             ctx.bare(kind, override)
         out.append((j, name, f))
     if "speed" not in seen or len(seen) < 2:
-        raise InputError(f"{path}: the header names the columns: speed and one or more of "
+        raise InputError(f"the header names the columns: speed and one or more of "
                          f"{', '.join(COLUMNS[1:])}", Location(path, 1))
     return out
 
@@ -200,7 +200,7 @@ def _csv_table(ctx: _Ctx, node: ys.ScalarNode, what: str, override: dict) -> tup
     try:
         lines = raw.decode("utf-8-sig").splitlines()
     except UnicodeDecodeError as exc:
-        raise InputError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})",
+        raise InputError(f"not UTF-8 text ({exc.reason} at byte {exc.start})",
                          Location(path)) from None
     head, rows, places, sub = None, [], [], _Ctx(path, ctx.units, ctx.base_dir)
     for n, line in enumerate(lines, 1):
@@ -212,26 +212,26 @@ def _csv_table(ctx: _Ctx, node: ys.ScalarNode, what: str, override: dict) -> tup
             head = _header(sub, cells, path, override)
             continue
         if len(cells) != len(head):
-            raise InputError(f"{path}: {len(cells)} cells where the header names {len(head)}",
+            raise InputError(f"{len(cells)} cells where the header names {len(head)}",
                              Location(path, n))
         if len(rows) >= MAX_ROWS:
-            raise InputError(f"{path}: more than {MAX_ROWS} rows", Location(path, n))
+            raise InputError(f"more than {MAX_ROWS} rows", Location(path, n))
         row = dict.fromkeys(COLUMNS, 0.0)
         for (_, name, f), cell in zip(head, cells):
             x = ys.plain_value(cell)  # a YAML number: 1e6, -3.5, .inf
             if isinstance(x, bool) or not isinstance(x, (int, float)):
-                raise InputError(f"{path}: '{cell[:40]}' in column {name} is not a number (units "
+                raise InputError(f"'{cell[:40]}' in column {name} is not a number (units "
                                  "go in the header: 'kxx [N/mm]')", Location(path, n))
             x = x * f
             if not math.isfinite(x) or abs(x) > HUGE:
-                raise InputError(f"{path}: column {name} must be finite and at most 1e60 in SI "
+                raise InputError(f"column {name} must be finite and at most 1e60 in SI "
                                  f"units, not {cell[:40]}", Location(path, n))
             row[name] = x
         rows.append([row[c] for c in COLUMNS])
         places.append((None, n))
     if head is None:
-        raise InputError(f"{path}: an empty table (a header row and two rows or more)", Location(path))
-    return (*_finish(sub, path, rows, places), path)
+        raise InputError(f"an empty table (a header row and two rows or more)", Location(path))
+    return (*_finish(sub, "the table", rows, places), path)
 
 
 def _entry(ctx: _Ctx, i: int, node: ys.Node) -> BearingEntry:
