@@ -114,8 +114,10 @@ def rim_note(body: Body, param: str, speed: float, axis: Any, through: Any, type
     """The warning of ``body`` turning at ``speed`` (rad/s, given as ``param``) about ``axis``
     through ``through`` when its rim would be faster than sound (issue 24: a unit missing?);
     none when the speed was ``typed`` with its unit (a turbine's blade tips, a planet)."""
-    w = 0.0 if typed else abs(speed)
-    v = w * axis_reach(body.parts, axis, through) if 0.0 < w < math.inf else 0.0
+    w = abs(speed)
+    if typed or not 0.0 < w < math.inf:
+        return None
+    v = w * axis_reach(body.parts, axis, through)
     if not SPEED_OF_SOUND < v < math.inf:
         return None
     return Note(f"{{{param}}}: the body's rim would move at {v:.4g} m/s, faster than sound "
